@@ -1,0 +1,36 @@
+// shadowmap.fxh: shadow-map addressing and filtering shared by the shadow effects.
+//
+// Texture conventions (D3D10 and OpenGL, which shadowfx follows): texel centres lie at (i + 0.5) / size, and
+// v = 0 is the top row of a render target. D3D9 put texel centres at integer coordinates, which is why the
+// thesis listing (seed 003, "Forráskódok") adds 0.5 / SHADOW_SIZE to its lookups; here that offset is gone.
+#ifndef SHADOWFX_SHADOWMAP_FXH
+#define SHADOWFX_SHADOWMAP_FXH
+
+// Light clip space -> shadow-map texture coordinates (x right, v down).
+float2 ShadowMapUV(float4 lightClip)
+{
+    return float2(0.5, -0.5) * lightClip.xy / lightClip.w + float2(0.5, 0.5);
+}
+
+// 1 where the stored occluder depth is not in front of `depth`, 0 where it is.
+float ShadowTest(sampler2D shadowMap, float2 uv, float depth)
+{
+    return tex2D(shadowMap, uv).x >= depth ? 1.0 : 0.0;
+}
+
+// Bilinear percentage-closer filtering (seed 003, "Percentage closer filtering"): the four nearest texels
+// are compared with `depth` and the results are weighted by the fractional texel position of `uv`.
+float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 mapSize)
+{
+    float2 texel = uv * mapSize - 0.5;
+    float2 weight = frac(texel);
+    float2 base = (floor(texel) + 0.5) / mapSize;
+    float2 step = 1.0 / mapSize;
+    float s00 = ShadowTest(shadowMap, base, depth);
+    float s10 = ShadowTest(shadowMap, base + float2(step.x, 0), depth);
+    float s01 = ShadowTest(shadowMap, base + float2(0, step.y), depth);
+    float s11 = ShadowTest(shadowMap, base + step, depth);
+    return lerp(lerp(s00, s10, weight.x), lerp(s01, s11, weight.x), weight.y);
+}
+
+#endif

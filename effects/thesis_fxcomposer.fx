@@ -1,0 +1,371 @@
+// thesis_fxcomposer.fx: the shadow-mapping effect of Lehőcz's thesis (seed 003, "Forráskódok"), written
+// for shadowfx in the form of that FX Composer 1.8 listing, which reached us with page-break damage.
+//
+// Technique `main` follows the listing: a float render target is cleared to ZMaxValue, the shadow map is
+// rendered from light0 into it with BlendOp=min (no depth buffer: the blend keeps the nearest occluder),
+// then the scene is rendered with the shadow test. `PCF` switches to bilinear percentage-closer filtering
+// and `JITTER` adds the listing's noise-texture jitter. Technique `hardware` renders a depth target instead
+// and samples it with depth comparison, as NVIDIA's D3D9 hardware shadow maps did.
+//
+// Depth conventions: the light's projection maps the scene into clip depth [0, 1]; the shadow map stores
+// that depth times ZMaxValue (the listing's fixed-range scaling, with ShadowRange = 1 for this range).
+
+#include "include/lighting.fxh"
+#include "include/shadowmap.fxh"
+
+#define ZMaxValue 130944/16.0
+#define ShadowRange 1.0
+#define ShadowRangeMultiplier (ZMaxValue/ShadowRange)
+#define SHADOW_MAP_SIZE 1024
+
+float Script : STANDARDSGLOBAL
+<
+    string UIWidget = "none";
+    string ScriptClass = "scene";
+    string ScriptOrder = "standard";
+    string ScriptOutput = "color";
+    string Script = "Technique=main;";
+> = 0.8;
+
+// [SECTION] Tweakables
+bool JITTER
+<
+    string UIName = "Jittered lookups";
+> = false;
+
+bool PCF
+<
+    string UIName = "Bilinear PCF";
+> = false;
+
+float Bias
+<
+    string UIWidget = "slider";
+    string UIName = "Depth bias";
+    float UIMin = 0.0;
+    float UIMax = 0.05;
+    float UIStep = 0.0005;
+> = 0.004;
+
+float JITTER_AMOUNT
+<
+    string UIWidget = "slider";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+> = 1.0;
+
+float SpecularPower
+<
+    string UIWidget = "slider";
+    float UIMin = 1.0;
+    float UIMax = 128.0;
+> = 32.0;
+
+float SpecularFactor = 0.4;
+
+float4 ClearColor
+<
+    string UIWidget = "color";
+> = {0.32, 0.36, 0.42, 1.0};
+
+float ClearDepth
+<
+    string UIWidget = "none";
+> = 1.0;
+
+float4 ShadowClearColor
+<
+    string UIWidget = "none";
+> = {ZMaxValue, ZMaxValue, ZMaxValue, ZMaxValue};
+
+float2 SHADOW_SIZE
+<
+    string UIWidget = "none";
+> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+
+// [SECTION] Matrices and lights bound by the runtime
+float4x4 WorldITMatrix : WorldInverseTranspose <string UIWidget = "None";>;
+float4x4 WorldViewProjectionMatrix : WorldViewProjection <string UIWidget = "None";>;
+float4x4 WorldMatrix : World <string UIWidget = "None";>;
+float4x4 ViewIMatrix : ViewInverse <string UIWidget = "None";>;
+
+float4x4 LightViewMatrix : View
+<
+    string frustum = "light0";
+>;
+
+float4x4 LightProjectionMatrix : Projection
+<
+    string frustum = "light0";
+>;
+
+float3 LightColor : LightColor
+<
+    string Object = "light0";
+    string UIWidget = "none";
+> = {1.0, 1.0, 1.0};
+
+float3 AmbientLightColor : Ambient
+<
+    string UIWidget = "color";
+> = {0.15, 0.15, 0.15};
+
+float3 SurfaceColor : Diffuse
+<
+    string UIWidget = "none";
+> = {0.8, 0.8, 0.8};
+
+// [SECTION] Textures and samplers
+texture ShadowMap : RENDERCOLORTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "R32F";
+    string UIWidget = "None";
+>;
+
+sampler ShadowMapSampler = sampler_state
+{
+    texture = <ShadowMap>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MipFilter = NONE;
+    MinFilter = POINT;
+    MagFilter = POINT;
+};
+
+texture ShadDepthTarget : RENDERDEPTHSTENCILTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "D24S8";
+    string UIWidget = "None";
+>;
+
+sampler ShadowDepthSampler = sampler_state
+{
+    Texture = <ShadDepthTarget>;
+    AddressU = Clamp;
+    AddressV = Clamp;
+    MinFilter = Linear;
+    MagFilter = Linear;
+    MipFilter = None;
+};
+
+texture NoiseTexture : noise;
+
+sampler NoiseSampler = sampler_state
+{
+    texture = <NoiseTexture>;
+    AddressU = WRAP;
+    AddressV = WRAP;
+    MIPFILTER = NONE;
+    MINFILTER = LINEAR;
+    MAGFILTER = LINEAR;
+};
+
+// [SECTION] Shaders
+struct VertexFormat
+{
+    float4 Position : POSITION;
+    float4 UV       : TEXCOORD0;
+    float3 Normal   : NORMAL;
+};
+
+struct RenderShadowMapVertexOutput
+{
+    float4 Position : POSITION;
+    float  Z        : TEXCOORD0;
+};
+
+RenderShadowMapVertexOutput RenderShadowMapVS(VertexFormat IN, uniform float4x4 WorldLightViewProjection)
+{
+    RenderShadowMapVertexOutput OUT;
+    float4 LightSpacePosition = mul(float4(IN.Position.xyz, 1.0), WorldLightViewProjection);
+    OUT.Position = LightSpacePosition;
+    OUT.Z = LightSpacePosition.z;
+    return OUT;
+}
+
+float4 RenderShadowMapPS(RenderShadowMapVertexOutput IN) : COLOR
+{
+    return float4(IN.Z * ShadowRangeMultiplier, 1, 1, 1);
+}
+
+struct VertexOutput
+{
+    float4 HPosition : POSITION;
+    float3 LightVec  : TEXCOORD0;
+    float3 WNormal   : TEXCOORD1;
+    float3 WView     : TEXCOORD2;
+    float4 LP        : TEXCOORD3;
+    float2 UV        : TEXCOORD4;
+};
+
+VertexOutput RenderSceneVS(VertexFormat IN, uniform float4x4 ShadowViewProjectionMatrix)
+{
+    VertexOutput OUT;
+    float4 Pos = float4(IN.Position.xyz, 1.0);
+    float4 Pw = mul(Pos, WorldMatrix);
+    OUT.WNormal = mul(IN.Normal, (float3x3)WorldITMatrix);
+    OUT.LP = mul(Pw, ShadowViewProjectionMatrix);  // "P" in light coords, for the pixel shader's test
+    OUT.WView = normalize(ViewIMatrix[3].xyz - Pw.xyz);
+    OUT.HPosition = mul(Pos, WorldViewProjectionMatrix);
+    // The light looks along its view's z axis: the third column of a row-vector view matrix.
+    OUT.LightVec = float3(-LightViewMatrix._13, -LightViewMatrix._23, -LightViewMatrix._33);
+    OUT.UV = IN.UV.xy;
+    return OUT;
+}
+
+float GetShadow(float4 LP)
+{
+    float2 nuv = ShadowMapUV(LP);
+    float4 noise = tex2D(NoiseSampler, LP.xy * 64);
+    if (JITTER)
+        nuv += JITTER_AMOUNT * (0.5 - noise.xy) / SHADOW_SIZE;
+
+    float depth = (LP.z / ShadowRange - Bias) * ZMaxValue;
+    if (JITTER)
+        depth -= (noise.z - 0.5) * 0.001 * ShadowRangeMultiplier;
+
+    if (PCF)
+        return ShadowTestBilinear(ShadowMapSampler, nuv, depth, SHADOW_SIZE);
+    return ShadowTest(ShadowMapSampler, nuv, depth);
+}
+
+float4 Shade(VertexOutput IN, float shadowed)
+{
+    float3 N = normalize(IN.WNormal);
+    float3 V = normalize(IN.WView);
+    float3 L = normalize(IN.LightVec);
+    float4 terms = BlinnPhongTerms(N, V, L, SpecularPower);
+
+    float3 ambient = SurfaceColor * AmbientLightColor;
+    float3 diffuse = terms.y * SurfaceColor * LightColor;
+    float3 specular = terms.z * SpecularFactor * LightColor;
+    if (JITTER)  // the listing fades the shadow out where the surface turns away from the light
+        shadowed *= 1 - max((1 - terms.y) - 0.8, 0) * 5;
+    return float4(shadowed * (diffuse + specular) + ambient, 1);
+}
+
+float4 RenderScenePS(VertexOutput IN) : COLOR
+{
+    return Shade(IN, GetShadow(IN.LP));
+}
+
+// Hardware shadow map: tex2Dproj on a depth target returns the filtered depth comparison.
+float4 RenderSceneHardwarePS(VertexOutput IN) : COLOR
+{
+    float4 lp = IN.LP;
+    float2 uv = ShadowMapUV(lp);
+    float4 coord = float4(uv * lp.w, lp.z - Bias * lp.w, lp.w);
+    return Shade(IN, tex2Dproj(ShadowDepthSampler, coord).x);
+}
+
+// [SECTION] Techniques
+technique main
+<
+    string Script = "Pass=ClearShadowMap;"
+                    "Pass=RenderShadowMap;"
+                    "Pass=RenderScene;";
+>
+{
+    pass ClearShadowMap
+    <
+        string Script = "RenderColorTarget0=ShadowMap;"
+                        "RenderDepthStencilTarget=ShadDepthTarget;"
+                        "RenderPort=light0;"
+                        "ClearSetColor=ShadowClearColor;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Color;"
+                        "Clear=Depth;";
+    >
+    {
+    }
+
+    pass RenderShadowMap
+    <
+        string Script = "RenderColorTarget0=ShadowMap;"
+                        "RenderDepthStencilTarget=ShadDepthTarget;"
+                        "RenderPort=light0;"
+                        "Draw=geometry;";
+    >
+    {
+        CullMode = None;
+        AlphaBlendEnable = true;
+        SrcBlend = one;
+        DestBlend = one;
+        BlendOp = min;
+        ZEnable = false;
+        ZWriteEnable = false;
+
+        VertexShader = compile vs_3_0 RenderShadowMapVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix)));
+        PixelShader = compile ps_3_0 RenderShadowMapPS();
+    }
+
+    pass RenderScene
+    <
+        string Script = "RenderColorTarget0=;"
+                        "RenderDepthStencilTarget=;"
+                        "RenderPort=;"
+                        "ClearSetColor=ClearColor;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Color;"
+                        "Clear=Depth;"
+                        "Draw=Geometry;";
+    >
+    {
+        CullMode = CCW;
+        AlphaBlendEnable = false;
+        ZEnable = true;
+        ZWriteEnable = true;
+        ZFunc = LessEqual;
+
+        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));
+        PixelShader = compile ps_3_0 RenderScenePS();
+    }
+}
+
+technique hardware
+<
+    string Script = "Pass=RenderShadowDepth;"
+                    "Pass=RenderScene;";
+>
+{
+    pass RenderShadowDepth
+    <
+        string Script = "RenderColorTarget0=ShadowMap;"
+                        "RenderDepthStencilTarget=ShadDepthTarget;"
+                        "RenderPort=light0;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Depth;"
+                        "Draw=Geometry;";
+    >
+    {
+        CullMode = None;
+        ZEnable = true;
+        ZWriteEnable = true;
+        ColorWriteEnable = 0;
+
+        VertexShader = compile vs_3_0 RenderShadowMapVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix)));
+        PixelShader = compile ps_3_0 RenderShadowMapPS();
+    }
+
+    pass RenderScene
+    <
+        string Script = "RenderColorTarget0=;"
+                        "RenderDepthStencilTarget=;"
+                        "RenderPort=;"
+                        "ClearSetColor=ClearColor;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Color;"
+                        "Clear=Depth;"
+                        "Draw=Geometry;";
+    >
+    {
+        CullMode = CCW;
+        ZEnable = true;
+        ZWriteEnable = true;
+
+        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));
+        PixelShader = compile ps_3_0 RenderSceneHardwarePS();
+    }
+}

@@ -1,0 +1,58 @@
+// Every diagnostic the fx library and the runtime can report, with a stable id, a severity and a
+// message template ({0}, {1}, ... are filled by Diagnostic::format). Kept in one table, in the manner of
+// Slang's *-diagnostic-defs.h, so that tests can name ids and the ids never silently change meaning.
+//
+// FX_DIAGNOSTIC(Id, Severity, "template")
+// Include this file with FX_DIAGNOSTIC defined; it undefines it at the end.
+
+// [SECTION] Input and preprocessing
+FX_DIAGNOSTIC(FileNotFound, Error, "cannot open file '{0}'")
+FX_DIAGNOSTIC(IncludeNotFound, Error, "cannot open include file '{0}'")
+FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
+FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
+FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
+
+// [SECTION] Effect syntax
+FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
+FX_DIAGNOSTIC(UnclosedBlock, Error, "'{0}' expected (to close '{1}' at line {2})")
+FX_DIAGNOSTIC(UnexpectedEndOfFile, Error, "unexpected end of file, expected {0}")
+FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
+FX_DIAGNOSTIC(Redefinition, Error, "redefinition of '{0}'")
+FX_DIAGNOSTIC(UnknownState, Error, "unknown state '{0}'")
+FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (expected one of: {2})")
+FX_DIAGNOSTIC(InvalidStateValue, Error, "invalid value for state '{0}': {1}")
+FX_DIAGNOSTIC(InvalidAnnotation, Error, "invalid annotation '{0}': {1}")
+FX_DIAGNOSTIC(InvalidInitializer, Error, "invalid initializer for '{0}': {1}")
+
+// [SECTION] SAS scripts
+FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
+FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
+FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
+FX_DIAGNOSTIC(ScriptUnknownTarget, Error, "script names render target '{0}', which is not a render-target texture")
+FX_DIAGNOSTIC(ScriptUnknownTechnique, Error, "script names technique '{0}', which the effect does not have")
+FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
+FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is accepted and ignored")
+
+// [SECTION] Compiling passes
+FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
+FX_DIAGNOSTIC(InvalidCompileExpression, Error, "invalid compile expression: {0}")
+FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
+FX_DIAGNOSTIC(HlslError, Error, "{0}")
+FX_DIAGNOSTIC(HlslWarning, Warning, "{0}")
+FX_DIAGNOSTIC(CrossCompileError, Error, "SPIR-V to GLSL: {0}")
+FX_DIAGNOSTIC(UnknownIdentifier, Error, "unknown identifier '{0}'")
+FX_DIAGNOSTIC(TypeMismatch, Error, "{0}")
+FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
+
+// [SECTION] Resources and execution
+FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
+FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
+FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
+FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
+FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
+FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
+FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
+FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
+FX_DIAGNOSTIC(Unused, Note, "{0}")
+
+#undef FX_DIAGNOSTIC

@@ -1,0 +1,258 @@
+// Effect: the syntax tree of one D3DX9-style effect file (.fx), as the parser builds it.
+//
+// The tree keeps what the effect *declares* (parameters, textures, samplers, structs, functions,
+// techniques, passes, annotations, states) with a SourceLoc on every node. HLSL code (struct and function
+// bodies, static globals) is kept as text sliced from the preprocessed source: the pass lowering emits it
+// verbatim, preceded by a #line directive, so glslang's diagnostics name the user's file and line.
+//
+// Nothing here knows about glslang, SPIR-V or OpenGL.
+#pragma once
+
+#include <fx/SourceLoc.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fx {
+
+// [SECTION] Types
+
+enum class BaseType {
+    Void,
+    Bool,
+    Int,
+    UInt,
+    Half,
+    Float,
+    Double,
+    String,
+    Texture,  // untyped D3D9 `texture`
+    Texture1D,
+    Texture2D,
+    Texture3D,
+    TextureCube,
+    Sampler,  // untyped `sampler`
+    Sampler1D,
+    Sampler2D,
+    Sampler3D,
+    SamplerCube,
+    SamplerState,            // D3D10 `SamplerState`
+    SamplerComparisonState,  // D3D10 `SamplerComparisonState`
+    VertexShader,            // `vertexshader vs = compile vs_3_0 ...;`
+    PixelShader,
+    Struct,
+};
+
+enum class Shape { Scalar, Vector, Matrix };
+
+struct TypeDesc {
+    BaseType base = BaseType::Float;
+    Shape shape = Shape::Scalar;
+    int rows = 1;               // matrices: rows (float4x3: 4)
+    int cols = 1;               // vectors: component count; matrices: columns (float4x3: 3)
+    std::vector<int> arrayDims;  // float4 a[3][2] -> {3, 2}; empty when not an array
+    std::string structName;     // base == Struct
+    bool rowMajor = false;      // declared `row_major` (HLSL default is column_major)
+
+    bool isNumeric() const;     // bool/int/uint/half/float/double
+    bool isTexture() const;     // Texture..TextureCube
+    bool isSampler() const;     // Sampler..SamplerComparisonState
+    int componentCount() const;  // rows*cols, times array elements
+    // HLSL spelling: "float4x4", "float3", "bool", "sampler2D", "MyStruct" (without array dims).
+    std::string hlslName() const;
+};
+
+// [SECTION] Expressions
+// One expression type serves initializers, annotation values, state values, compile arguments and
+// sampler_state bodies. The runtime's preshader evaluates them on the host.
+
+struct Expr {
+    enum class Kind {
+        Number,      // 1, 1.5, 2e3; `number`, `isInteger`
+        Bool,        // true / false; `number` is 0 or 1
+        String,      // "a" "b" (adjacent literals concatenated); `text`, `stringPieces`
+        Identifier,  // a parameter, a state enum value (CCW, Min) or NULL; `text`
+        Unary,       // `text` is the operator ("-", "!", "~", "+"); args[0]
+        Binary,      // `text` is the operator ("+", "*", "==", "&&", ...); args[0], args[1]
+        Ternary,     // args[0] ? args[1] : args[2]
+        Call,        // function or constructor: `text` is the callee ("mul", "float4"); `args`
+        Member,      // args[0] . `text`  (swizzles .xyz, matrix members ._13 / ._m02, struct fields)
+        Index,       // args[0] [ args[1] ]
+        InitList,    // { args... }
+        TextureRef,  // <Name> in `Texture = <Name>`; `text` is the name
+        Compile,     // compile `profile` `text`( args... ): a shader bound to a pass
+        Cast,        // (float3) args[0]; `castType`
+    };
+
+    // One piece of a (possibly concatenated) string literal: where its characters start in `text`, and
+    // where the literal's first character (after the quote) stands in the source.
+    struct StringPiece {
+        size_t offset = 0;
+        SourceLoc loc;
+    };
+
+    Kind kind = Kind::Number;
+    SourceLoc loc;
+    double number = 0.0;
+    bool isInteger = false;
+    std::string text;
+    std::string profile;  // Compile: "vs_3_0", "ps_2_0", "vs_5_0", ...
+    TypeDesc castType;    // Cast
+    std::vector<Expr> args;
+    std::vector<StringPiece> stringPieces;  // String
+
+    // Source-like spelling, for messages and tests: "mul(WorldMatrix, LightView)".
+    std::string str() const;
+};
+
+// [SECTION] Declarations
+
+struct Annotation {
+    TypeDesc type;
+    std::string name;
+    Expr value;
+    SourceLoc loc;
+};
+
+// `Name = value;` or `Name[index] = value;` inside a pass or a sampler_state block.
+struct StateAssignment {
+    std::string name;  // as written ("CullMode", "cullmode", "ColorWriteEnable1")
+    int index = -1;    // the [index], if any
+    Expr value;
+    SourceLoc loc;
+};
+
+// A global variable of the effect: a parameter (float, matrix, bool, ...), a texture, a sampler, a string
+// such as the `float Script : STANDARDSGLOBAL` header, or a shader variable.
+struct Parameter {
+    std::string name;
+    TypeDesc type;
+    std::string semantic;                  // "WorldViewProjection", "RENDERCOLORTARGET", "" if none
+    std::vector<Annotation> annotations;   // < ... >
+    std::optional<Expr> initializer;       // = expr / = { ... } / = compile ...
+    std::vector<StateAssignment> samplerState;  // sampler_state { ... }; empty for non-samplers
+    bool isStatic = false;    // `static`: a shader-private global, not a parameter
+    bool isConst = false;
+    bool isUniform = false;   // written `uniform`
+    bool isShared = false;
+    bool isExtern = false;
+    SourceLoc loc;            // the name's location
+    // For static globals only: the whole declaration as HLSL text from the preprocessed source.
+    std::string hlslText;
+    // Where hlslText starts: the user's file and line, but the column in the *preprocessed* text (glslang
+    // collapses whitespace), so that `#line` plus column padding keeps glslang's columns aligned with
+    // hlslText; map them back with Effect::sourceMap. The same holds for every hlslLoc below.
+    SourceLoc hlslLoc;
+
+    const Annotation* annotation(const std::string& annotationName) const;  // case-insensitive lookup
+};
+
+struct StructMember {
+    TypeDesc type;
+    std::string name;
+    std::string semantic;       // "POSITION", "TEXCOORD0", ... ("" if none)
+    std::string interpolation;  // "linear", "centroid", "nointerpolation", "noperspective", "sample", or ""
+    SourceLoc loc;
+};
+
+struct StructDecl {
+    std::string name;
+    std::vector<StructMember> members;
+    std::string hlslText;  // "struct Name { ... };" from the preprocessed source
+    SourceLoc hlslLoc;     // where hlslText starts
+    SourceLoc loc;         // the name's location
+};
+
+struct FunctionParam {
+    enum class Direction { In, Out, InOut };
+    TypeDesc type;
+    std::string name;
+    std::string semantic;
+    std::string interpolation;
+    Direction direction = Direction::In;
+    bool isUniform = false;               // `uniform`: given by the compile expression's arguments
+    std::optional<Expr> defaultValue;
+    SourceLoc loc;
+};
+
+struct FunctionDecl {
+    std::string name;
+    TypeDesc returnType;
+    std::string returnSemantic;  // float4 PS(...) : COLOR  ->  "COLOR"
+    std::vector<FunctionParam> params;
+    bool hasBody = true;         // false for a prototype
+    std::string hlslText;        // the whole definition (attributes, signature and body)
+    SourceLoc hlslLoc;           // where hlslText starts
+    SourceLoc loc;               // the name's location
+};
+
+// Top-level HLSL the effect compiler passes through verbatim: typedefs, cbuffers, and anything else that
+// is not a parameter, struct or function.
+struct VerbatimDecl {
+    std::string hlslText;
+    SourceLoc hlslLoc;
+};
+
+struct Pass {
+    std::string name;  // "" for an unnamed pass (then referred to by index)
+    std::vector<Annotation> annotations;
+    std::vector<StateAssignment> states;  // render states and VertexShader / PixelShader
+    SourceLoc loc;
+
+    const Annotation* annotation(const std::string& annotationName) const;
+};
+
+struct Technique {
+    std::string name;
+    std::vector<Annotation> annotations;
+    std::vector<Pass> passes;
+    SourceLoc loc;
+
+    const Annotation* annotation(const std::string& annotationName) const;
+};
+
+// Maps a position in the preprocessed text back to the user's column. glslang's preprocessor keeps
+// lines (and emits #line for includes) but collapses whitespace inside a line, so the columns it reports
+// are not the user's; the lexer records, per token, where it really stood.
+class SourceMap {
+public:
+    // Records that the token at (file, line, preprocessedColumn) starts at `column` in the user's file.
+    void add(const std::string& file, int line, int preprocessedColumn, int column);
+    // The user's location for a location in preprocessed text; the column is mapped to the nearest
+    // recorded token at or before it on that line (unchanged if the line has no record).
+    SourceLoc map(const SourceLoc& preprocessed) const;
+
+private:
+    // (file, line) -> sorted (preprocessedColumn, column) pairs
+    std::map<std::pair<std::string, int>, std::vector<std::pair<int, int>>> mColumns;
+};
+
+// Where a top-level declaration stands among the others: HLSL needs them emitted in source order.
+struct DeclRef {
+    enum class Kind { Parameter, Struct, Function, Verbatim };
+    Kind kind;
+    size_t index;  // into Effect::parameters / structs / functions / verbatim
+};
+
+struct Effect {
+    std::string path;  // the main file
+    std::vector<Parameter> parameters;
+    std::vector<StructDecl> structs;
+    std::vector<FunctionDecl> functions;
+    std::vector<VerbatimDecl> verbatim;
+    std::vector<Technique> techniques;
+    std::vector<DeclRef> order;  // parameters, structs, functions and verbatim declarations in source order
+    std::vector<std::string> includedFiles;  // every file the preprocessor opened, main file first
+    SourceMap sourceMap;
+
+    const Parameter* findParameter(const std::string& name) const;  // case-sensitive, as HLSL
+    const StructDecl* findStruct(const std::string& name) const;
+    const Technique* findTechnique(const std::string& name) const;
+    // All overloads of a function, in source order.
+    std::vector<const FunctionDecl*> findFunctions(const std::string& name) const;
+};
+
+}  // namespace fx

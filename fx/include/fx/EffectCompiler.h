@@ -1,0 +1,27 @@
+// EffectCompiler: Effect syntax tree -> CompiledEffect. For every pass: lower to one HLSL unit per stage
+// (PassLowering), HLSL -> SPIR-V (glslang), SPIR-V -> GLSL 4.50 + reflection (SPIRV-Cross). Also
+// resolves textures, samplers, initial values and scripts. Compiled stages are cached by the hash of
+// their generated source, so an unchanged pass is never recompiled.
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+
+#include <memory>
+#include <string>
+
+namespace fx {
+
+class CompileCache;  // fx/CompileCache.h
+
+struct CompileOptions {
+    std::string technique;          // compile only this technique ("" = all)
+    CompileCache* cache = nullptr;  // optional; shared across compiles (hot reload)
+};
+
+// Returns nullptr if any error was reported.
+std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect, const CompileOptions& options,
+                                              DiagnosticSink& diagnostics);
+
+}  // namespace fx

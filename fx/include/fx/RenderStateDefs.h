@@ -1,0 +1,186 @@
+// The D3D9 render and sampler states an effect pass or sampler_state block may set, one table for the
+// parser (names, value domains), the compiler (normalizing values) and the runtime (GL mapping, defaults).
+// Names and enum values are case-insensitive, as in D3DX. Numeric values are D3D9's.
+//
+// FX_RENDER_STATE(Name, Domain, DefaultValue)      pass states
+// FX_SAMPLER_STATE(Name, Domain, DefaultValue)     sampler_state states
+// FX_STATE_ALIAS(Alias, Name)                      another spelling of a state (pass or sampler)
+// FX_ENUM_VALUE(Domain, Name, Value)               the named values of an enum domain
+//
+// Domains: Bool, Int (unsigned/int), Float, ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
+// Shader (VertexShader/PixelShader), TextureRef (Texture = <t>), and the enum domains listed below.
+// Default values are D3D9's documented defaults. Define the macros you need; undefined ones expand to
+// nothing. This file undefines them all at the end.
+
+#ifndef FX_RENDER_STATE
+#define FX_RENDER_STATE(name, domain, def)
+#endif
+#ifndef FX_SAMPLER_STATE
+#define FX_SAMPLER_STATE(name, domain, def)
+#endif
+#ifndef FX_STATE_ALIAS
+#define FX_STATE_ALIAS(alias, name)
+#endif
+#ifndef FX_ENUM_VALUE
+#define FX_ENUM_VALUE(domain, name, value)
+#endif
+
+// [SECTION] Pass states
+FX_RENDER_STATE(VertexShader, Shader, 0)
+FX_RENDER_STATE(PixelShader, Shader, 0)
+FX_RENDER_STATE(ZEnable, Bool, 1)
+FX_RENDER_STATE(ZWriteEnable, Bool, 1)
+FX_RENDER_STATE(ZFunc, Cmp, 4)  // LESSEQUAL
+FX_RENDER_STATE(CullMode, Cull, 3)  // CCW
+FX_RENDER_STATE(FillMode, Fill, 3)  // SOLID
+FX_RENDER_STATE(AlphaBlendEnable, Bool, 0)
+FX_RENDER_STATE(SrcBlend, Blend, 2)   // ONE
+FX_RENDER_STATE(DestBlend, Blend, 1)  // ZERO
+FX_RENDER_STATE(BlendOp, BlendOp, 1)  // ADD
+FX_RENDER_STATE(SeparateAlphaBlendEnable, Bool, 0)
+FX_RENDER_STATE(SrcBlendAlpha, Blend, 2)
+FX_RENDER_STATE(DestBlendAlpha, Blend, 1)
+FX_RENDER_STATE(BlendOpAlpha, BlendOp, 1)
+FX_RENDER_STATE(BlendFactor, Color, 0xffffffff)
+FX_RENDER_STATE(ColorWriteEnable, ColorMask, 15)
+FX_RENDER_STATE(ColorWriteEnable1, ColorMask, 15)
+FX_RENDER_STATE(ColorWriteEnable2, ColorMask, 15)
+FX_RENDER_STATE(ColorWriteEnable3, ColorMask, 15)
+FX_RENDER_STATE(AlphaTestEnable, Bool, 0)
+FX_RENDER_STATE(AlphaFunc, Cmp, 8)  // ALWAYS
+FX_RENDER_STATE(AlphaRef, Int, 0)
+FX_RENDER_STATE(DepthBias, Float, 0)
+FX_RENDER_STATE(SlopeScaleDepthBias, Float, 0)
+FX_RENDER_STATE(ScissorTestEnable, Bool, 0)
+FX_RENDER_STATE(MultiSampleAntialias, Bool, 1)
+FX_RENDER_STATE(StencilEnable, Bool, 0)
+FX_RENDER_STATE(StencilFunc, Cmp, 8)  // ALWAYS
+FX_RENDER_STATE(StencilRef, Int, 0)
+FX_RENDER_STATE(StencilMask, Int, 0xffffffff)
+FX_RENDER_STATE(StencilWriteMask, Int, 0xffffffff)
+FX_RENDER_STATE(StencilFail, StencilOp, 1)  // KEEP
+FX_RENDER_STATE(StencilZFail, StencilOp, 1)
+FX_RENDER_STATE(StencilPass, StencilOp, 1)
+FX_RENDER_STATE(TwoSidedStencilMode, Bool, 0)
+FX_RENDER_STATE(CCW_StencilFunc, Cmp, 8)
+FX_RENDER_STATE(CCW_StencilFail, StencilOp, 1)
+FX_RENDER_STATE(CCW_StencilZFail, StencilOp, 1)
+FX_RENDER_STATE(CCW_StencilPass, StencilOp, 1)
+// Fixed-function states real FX Composer files set; accepted, and without effect on a shader pipeline.
+FX_RENDER_STATE(Lighting, Bool, 1)
+FX_RENDER_STATE(FogEnable, Bool, 0)
+FX_RENDER_STATE(ShadeMode, Shade, 2)  // GOURAUD
+FX_RENDER_STATE(DitherEnable, Bool, 0)
+FX_RENDER_STATE(SpecularEnable, Bool, 0)
+FX_RENDER_STATE(NormalizeNormals, Bool, 0)
+FX_RENDER_STATE(PointSpriteEnable, Bool, 0)
+FX_RENDER_STATE(SRGBWriteEnable, Bool, 0)
+
+FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
+FX_STATE_ALIAS(DepthEnable, ZEnable)
+FX_STATE_ALIAS(DepthWriteEnable, ZWriteEnable)
+FX_STATE_ALIAS(DepthFunc, ZFunc)
+FX_STATE_ALIAS(ColorWriteEnable0, ColorWriteEnable)
+FX_STATE_ALIAS(SlopeScaleBias, SlopeScaleDepthBias)
+
+// [SECTION] Sampler states (inside sampler_state { ... })
+FX_SAMPLER_STATE(Texture, TextureRef, 0)
+FX_SAMPLER_STATE(AddressU, Address, 1)  // WRAP
+FX_SAMPLER_STATE(AddressV, Address, 1)
+FX_SAMPLER_STATE(AddressW, Address, 1)
+FX_SAMPLER_STATE(BorderColor, Color, 0)
+FX_SAMPLER_STATE(MagFilter, TexFilter, 1)  // POINT
+FX_SAMPLER_STATE(MinFilter, TexFilter, 1)  // POINT
+FX_SAMPLER_STATE(MipFilter, TexFilter, 0)  // NONE
+FX_SAMPLER_STATE(MipMapLodBias, Float, 0)
+FX_SAMPLER_STATE(MaxMipLevel, Int, 0)
+FX_SAMPLER_STATE(MaxAnisotropy, Int, 1)
+FX_SAMPLER_STATE(SRGBTexture, Bool, 0)
+FX_SAMPLER_STATE(Filter, Filter10, 0x15)  // D3D10 MIN_MAG_MIP_LINEAR; decomposed by the compiler
+FX_SAMPLER_STATE(ComparisonFunc, Cmp, 0)  // D3D10 style; 0 = not a comparison sampler
+
+FX_STATE_ALIAS(AddressS, AddressU)
+FX_STATE_ALIAS(AddressT, AddressV)
+FX_STATE_ALIAS(AddressR, AddressW)
+FX_STATE_ALIAS(MipMapLODBias, MipMapLodBias)
+
+// [SECTION] Enum domains (D3D9 numeric values)
+FX_ENUM_VALUE(Bool, False, 0)
+FX_ENUM_VALUE(Bool, True, 1)
+FX_ENUM_VALUE(Cull, None, 1)
+FX_ENUM_VALUE(Cull, CW, 2)
+FX_ENUM_VALUE(Cull, CCW, 3)
+FX_ENUM_VALUE(Fill, Point, 1)
+FX_ENUM_VALUE(Fill, Wireframe, 2)
+FX_ENUM_VALUE(Fill, Solid, 3)
+FX_ENUM_VALUE(Shade, Flat, 1)
+FX_ENUM_VALUE(Shade, Gouraud, 2)
+FX_ENUM_VALUE(Shade, Phong, 3)
+FX_ENUM_VALUE(Cmp, Never, 1)
+FX_ENUM_VALUE(Cmp, Less, 2)
+FX_ENUM_VALUE(Cmp, Equal, 3)
+FX_ENUM_VALUE(Cmp, LessEqual, 4)
+FX_ENUM_VALUE(Cmp, Greater, 5)
+FX_ENUM_VALUE(Cmp, NotEqual, 6)
+FX_ENUM_VALUE(Cmp, GreaterEqual, 7)
+FX_ENUM_VALUE(Cmp, Always, 8)
+FX_ENUM_VALUE(Blend, Zero, 1)
+FX_ENUM_VALUE(Blend, One, 2)
+FX_ENUM_VALUE(Blend, SrcColor, 3)
+FX_ENUM_VALUE(Blend, InvSrcColor, 4)
+FX_ENUM_VALUE(Blend, SrcAlpha, 5)
+FX_ENUM_VALUE(Blend, InvSrcAlpha, 6)
+FX_ENUM_VALUE(Blend, DestAlpha, 7)
+FX_ENUM_VALUE(Blend, InvDestAlpha, 8)
+FX_ENUM_VALUE(Blend, DestColor, 9)
+FX_ENUM_VALUE(Blend, InvDestColor, 10)
+FX_ENUM_VALUE(Blend, SrcAlphaSat, 11)
+FX_ENUM_VALUE(Blend, BlendFactor, 14)
+FX_ENUM_VALUE(Blend, InvBlendFactor, 15)
+FX_ENUM_VALUE(BlendOp, Add, 1)
+FX_ENUM_VALUE(BlendOp, Subtract, 2)
+FX_ENUM_VALUE(BlendOp, RevSubtract, 3)
+FX_ENUM_VALUE(BlendOp, Min, 4)
+FX_ENUM_VALUE(BlendOp, Max, 5)
+FX_ENUM_VALUE(StencilOp, Keep, 1)
+FX_ENUM_VALUE(StencilOp, Zero, 2)
+FX_ENUM_VALUE(StencilOp, Replace, 3)
+FX_ENUM_VALUE(StencilOp, IncrSat, 4)
+FX_ENUM_VALUE(StencilOp, DecrSat, 5)
+FX_ENUM_VALUE(StencilOp, Invert, 6)
+FX_ENUM_VALUE(StencilOp, Incr, 7)
+FX_ENUM_VALUE(StencilOp, Decr, 8)
+FX_ENUM_VALUE(ColorMask, Red, 1)
+FX_ENUM_VALUE(ColorMask, Green, 2)
+FX_ENUM_VALUE(ColorMask, Blue, 4)
+FX_ENUM_VALUE(ColorMask, Alpha, 8)
+FX_ENUM_VALUE(Address, Wrap, 1)
+FX_ENUM_VALUE(Address, Mirror, 2)
+FX_ENUM_VALUE(Address, Clamp, 3)
+FX_ENUM_VALUE(Address, Border, 4)
+FX_ENUM_VALUE(Address, MirrorOnce, 5)
+FX_ENUM_VALUE(TexFilter, None, 0)
+FX_ENUM_VALUE(TexFilter, Point, 1)
+FX_ENUM_VALUE(TexFilter, Linear, 2)
+FX_ENUM_VALUE(TexFilter, Anisotropic, 3)
+FX_ENUM_VALUE(TexFilter, PyramidalQuad, 6)
+FX_ENUM_VALUE(TexFilter, GaussianQuad, 7)
+// D3D10_FILTER values: bits 4-5 min, 2-3 mag, 0-1 mip (1 = linear), 0x40 anisotropic, 0x80 comparison.
+FX_ENUM_VALUE(Filter10, MIN_MAG_MIP_POINT, 0x00)
+FX_ENUM_VALUE(Filter10, MIN_MAG_POINT_MIP_LINEAR, 0x01)
+FX_ENUM_VALUE(Filter10, MIN_POINT_MAG_LINEAR_MIP_POINT, 0x04)
+FX_ENUM_VALUE(Filter10, MIN_POINT_MAG_MIP_LINEAR, 0x05)
+FX_ENUM_VALUE(Filter10, MIN_LINEAR_MAG_MIP_POINT, 0x10)
+FX_ENUM_VALUE(Filter10, MIN_LINEAR_MAG_POINT_MIP_LINEAR, 0x11)
+FX_ENUM_VALUE(Filter10, MIN_MAG_LINEAR_MIP_POINT, 0x14)
+FX_ENUM_VALUE(Filter10, MIN_MAG_MIP_LINEAR, 0x15)
+FX_ENUM_VALUE(Filter10, ANISOTROPIC, 0x55)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_MIP_POINT, 0x80)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_LINEAR_MIP_POINT, 0x94)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_MIP_LINEAR, 0x95)
+FX_ENUM_VALUE(Filter10, COMPARISON_ANISOTROPIC, 0xd5)
+
+#undef FX_RENDER_STATE
+#undef FX_SAMPLER_STATE
+#undef FX_STATE_ALIAS
+#undef FX_ENUM_VALUE

@@ -1,0 +1,61 @@
+// SasScript: the FX Composer / NVIDIA SAS script language of `string Script = "...";` annotations on the
+// STANDARDSGLOBAL parameter, on techniques and on passes. A script is a list of `Command=Value;` pairs;
+// command names and enum values are case-insensitive ("Draw=geometry" and "Draw=Geometry").
+#pragma once
+
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+
+#include <string>
+#include <vector>
+
+namespace fx {
+
+struct ScriptCommand {
+    enum class Kind {
+        Technique,                 // STANDARDSGLOBAL: Technique=Name or Technique=Param?A:B
+        Pass,                      // Pass=Name
+        RenderColorTarget,         // RenderColorTarget0..3=Texture (empty = the frame's colour target)
+        RenderDepthStencilTarget,  // RenderDepthStencilTarget=Texture (empty = the frame's depth target)
+        ClearSetColor,             // ClearSetColor=float4Param
+        ClearSetDepth,             // ClearSetDepth=floatParam
+        ClearSetStencil,           // ClearSetStencil=intParam
+        Clear,                     // Clear=Color|Depth|Stencil
+        Draw,                      // Draw=Geometry|Buffer
+        RenderPort,                // RenderPort=light0 (empty = the camera)
+        LoopByCount,               // LoopByCount=intParam (or a literal count)
+        LoopGetIndex,              // LoopGetIndex=intParam
+        LoopEnd,                   // LoopEnd=
+        ScriptExternal,            // ScriptExternal=...: accepted, reported as ignored
+        ScriptOrder,               // SAS header commands, kept for completeness
+        ScriptClass,
+        ScriptOutput,
+        ScriptSignature,
+    };
+    enum class ClearWhat { Color, Depth, Stencil };
+    enum class DrawWhat { Geometry, Buffer };
+
+    Kind kind;
+    int index = 0;      // RenderColorTarget0..3
+    std::string value;  // the text after '=', trimmed ("" if empty)
+    SourceLoc loc;      // where the command's name stands in the user's file
+
+    // Technique=Cond?A:B
+    std::string selectorCondition;
+    std::string selectorTrue;
+    std::string selectorFalse;
+    ClearWhat clear = ClearWhat::Color;  // Clear
+    DrawWhat draw = DrawWhat::Geometry;  // Draw
+};
+
+// Parses the value of a Script annotation. `script` is the annotation's string expression, whose string
+// pieces give each command's source location. Unknown commands and bad values are reported; the commands
+// that parsed are returned.
+std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& diagnostics);
+
+// Same, from plain text starting at `loc` (tests, the CLI).
+std::vector<ScriptCommand> parseSasScript(const std::string& text, const SourceLoc& loc, DiagnosticSink& diagnostics);
+
+std::string_view scriptCommandName(ScriptCommand::Kind kind);
+
+}  // namespace fx

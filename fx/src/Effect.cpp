@@ -1,0 +1,204 @@
+// Effect: helper methods of the effect syntax tree (type names, expression spelling, source map, finders).
+#include <fx/Effect.h>
+#include <fx/RenderStates.h>
+
+#include <algorithm>
+#include <charconv>
+
+namespace fx {
+
+// [SECTION] TypeDesc
+
+bool TypeDesc::isNumeric() const {
+    switch (base) {
+        case BaseType::Bool:
+        case BaseType::Int:
+        case BaseType::UInt:
+        case BaseType::Half:
+        case BaseType::Float:
+        case BaseType::Double: return true;
+        default: return false;
+    }
+}
+
+bool TypeDesc::isTexture() const { return base >= BaseType::Texture && base <= BaseType::TextureCube; }
+bool TypeDesc::isSampler() const { return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState; }
+
+int TypeDesc::componentCount() const {
+    int count = rows * cols;
+    for (int dim : arrayDims) count *= std::max(dim, 1);
+    return count;
+}
+
+std::string TypeDesc::hlslName() const {
+    std::string name;
+    switch (base) {
+        case BaseType::Void: return "void";
+        case BaseType::Bool: name = "bool"; break;
+        case BaseType::Int: name = "int"; break;
+        case BaseType::UInt: name = "uint"; break;
+        case BaseType::Half: name = "half"; break;
+        case BaseType::Float: name = "float"; break;
+        case BaseType::Double: name = "double"; break;
+        case BaseType::String: return "string";
+        case BaseType::Texture: return "texture";
+        case BaseType::Texture1D: return "Texture1D";
+        case BaseType::Texture2D: return "Texture2D";
+        case BaseType::Texture3D: return "Texture3D";
+        case BaseType::TextureCube: return "TextureCube";
+        case BaseType::Sampler: return "sampler";
+        case BaseType::Sampler1D: return "sampler1D";
+        case BaseType::Sampler2D: return "sampler2D";
+        case BaseType::Sampler3D: return "sampler3D";
+        case BaseType::SamplerCube: return "samplerCUBE";
+        case BaseType::SamplerState: return "SamplerState";
+        case BaseType::SamplerComparisonState: return "SamplerComparisonState";
+        case BaseType::VertexShader: return "VertexShader";
+        case BaseType::PixelShader: return "PixelShader";
+        case BaseType::Struct: return structName;
+    }
+    if (shape == Shape::Vector) name += std::to_string(cols);
+    if (shape == Shape::Matrix) name += std::to_string(rows) + "x" + std::to_string(cols);
+    return name;
+}
+
+// [SECTION] Expr
+
+namespace {
+
+std::string numberText(double value, bool isInteger) {
+    if (isInteger && value >= -9.2e18 && value <= 9.2e18) return std::to_string(static_cast<long long>(value));
+    char buffer[64];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    std::string text(buffer, result.ptr);
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+    return text;
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (c == '\n') {
+            out += "\\n";
+            continue;
+        }
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string argList(const std::vector<Expr>& args, size_t first = 0) {
+    std::string out;
+    for (size_t i = first; i < args.size(); ++i) {
+        if (i > first) out += ", ";
+        out += args[i].str();
+    }
+    return out;
+}
+
+std::string operand(const Expr& e) {
+    bool wrap = e.kind == Expr::Kind::Binary || e.kind == Expr::Kind::Ternary;
+    return wrap ? "(" + e.str() + ")" : e.str();
+}
+
+}  // namespace
+
+std::string Expr::str() const {
+    switch (kind) {
+        case Kind::Number: return numberText(number, isInteger);
+        case Kind::Bool: return number != 0 ? "true" : "false";
+        case Kind::String: return quoted(text);
+        case Kind::Identifier: return text;
+        case Kind::Unary: return text + (args.empty() ? std::string() : operand(args[0]));
+        case Kind::Binary:
+            if (args.size() < 2) return text;
+            return operand(args[0]) + " " + text + " " + operand(args[1]);
+        case Kind::Ternary:
+            if (args.size() < 3) return "?:";
+            return operand(args[0]) + " ? " + operand(args[1]) + " : " + operand(args[2]);
+        case Kind::Call: return text + "(" + argList(args) + ")";
+        case Kind::Member: return (args.empty() ? std::string() : operand(args[0])) + "." + text;
+        case Kind::Index:
+            if (args.size() < 2) return "[]";
+            return operand(args[0]) + "[" + args[1].str() + "]";
+        case Kind::InitList: return "{" + argList(args) + "}";
+        case Kind::TextureRef: return "<" + text + ">";
+        case Kind::Compile: return "compile " + profile + " " + text + "(" + argList(args) + ")";
+        case Kind::Cast: return "(" + castType.hlslName() + ")" + (args.empty() ? std::string() : operand(args[0]));
+    }
+    return "?";
+}
+
+// [SECTION] SourceMap
+
+void SourceMap::add(const std::string& file, int line, int preprocessedColumn, int column) {
+    auto& columns = mColumns[{file, line}];
+    std::pair<int, int> entry{preprocessedColumn, column};
+    auto it = std::lower_bound(columns.begin(), columns.end(), entry,
+                               [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (it != columns.end() && it->first == preprocessedColumn)
+        it->second = column;
+    else
+        columns.insert(it, entry);
+}
+
+SourceLoc SourceMap::map(const SourceLoc& preprocessed) const {
+    SourceLoc out = preprocessed;
+    auto found = mColumns.find({preprocessed.file, preprocessed.line});
+    if (found == mColumns.end() || found->second.empty()) return out;
+    const auto& columns = found->second;
+    auto it = std::upper_bound(columns.begin(), columns.end(), preprocessed.column,
+                               [](int column, const auto& entry) { return column < entry.first; });
+    if (it == columns.begin()) return out;  // before the first token: leave as is
+    --it;
+    out.column = it->second + (preprocessed.column - it->first);  // keep the offset inside the token
+    return out;
+}
+
+// [SECTION] Finders
+
+namespace {
+const Annotation* findAnnotation(const std::vector<Annotation>& annotations, const std::string& name) {
+    for (const Annotation& annotation : annotations)
+        if (equalsIgnoreCase(annotation.name, name)) return &annotation;
+    return nullptr;
+}
+}  // namespace
+
+const Annotation* Parameter::annotation(const std::string& annotationName) const {
+    return findAnnotation(annotations, annotationName);
+}
+const Annotation* Pass::annotation(const std::string& annotationName) const {
+    return findAnnotation(annotations, annotationName);
+}
+const Annotation* Technique::annotation(const std::string& annotationName) const {
+    return findAnnotation(annotations, annotationName);
+}
+
+const Parameter* Effect::findParameter(const std::string& name) const {
+    for (const Parameter& parameter : parameters)
+        if (parameter.name == name) return &parameter;
+    return nullptr;
+}
+
+const StructDecl* Effect::findStruct(const std::string& name) const {
+    for (const StructDecl& decl : structs)
+        if (decl.name == name) return &decl;
+    return nullptr;
+}
+
+const Technique* Effect::findTechnique(const std::string& name) const {
+    for (const Technique& technique : techniques)
+        if (technique.name == name) return &technique;
+    return nullptr;
+}
+
+std::vector<const FunctionDecl*> Effect::findFunctions(const std::string& name) const {
+    std::vector<const FunctionDecl*> out;
+    for (const FunctionDecl& function : functions)
+        if (function.name == name) out.push_back(&function);
+    return out;
+}
+
+}  // namespace fx

@@ -1,0 +1,539 @@
+// EffectCompiler: orchestration (see EffectCompiler.h).
+//
+// [SECTION] Initial values
+// [SECTION] Textures and samplers
+// [SECTION] Scripts
+// [SECTION] Stages: lowering, cache, glslang, SPIRV-Cross, reflection
+// [SECTION] Passes and techniques
+#include <fx/CompileCache.h>
+#include <fx/EffectCompiler.h>
+#include <fx/Preshader.h>
+
+#include "HlslToSpirv.h"
+#include "PassLowering.h"
+#include "SpirvToGlsl.h"
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace fx {
+
+namespace {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool literalOnly(const Expr& e) {
+    if (e.kind == Expr::Kind::Identifier) return e.text == "true" || e.text == "false";
+    if (e.kind == Expr::Kind::TextureRef || e.kind == Expr::Kind::Compile) return false;
+    for (const Expr& a : e.args)
+        if (!literalOnly(a)) return false;
+    return true;
+}
+
+class Compiler {
+public:
+    Compiler(std::shared_ptr<const Effect> effect, const CompileOptions& options, DiagnosticSink& diagnostics)
+        : mEffect(*effect), mOptions(options), mDiagnostics(diagnostics) {
+        mOut = std::make_unique<CompiledEffect>();
+        mOut->effect = std::move(effect);
+    }
+
+    std::unique_ptr<CompiledEffect> run();
+
+private:
+    void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        mDiagnostics.report(id, loc, args);
+        mFailed = true;
+    }
+    std::optional<Value> eval(const Expr& e, const TypeDesc* type) {
+        auto v = evaluate(e, [this](std::string_view n) { return lookup(n); }, type, &mDiagnostics);
+        if (!v) mFailed = true;
+        return v;
+    }
+    const Value* lookup(std::string_view name) const {
+        auto it = mIndex.find(std::string(name));
+        return it == mIndex.end() || it->second >= mOut->initialValues.size() ? nullptr
+                                                                                : &mOut->initialValues[it->second];
+    }
+
+    void initialValues();
+    void textures();
+    void samplers();
+    void scripts();
+    std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
+    void validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique);
+    bool compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass);
+    void reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered);
+    SourceLoc userLocation(const HlslMessage& m, const LoweredStage& lowered) const;
+    void resolveReflection(StageProgram& program, const CompiledPass& pass);
+    const Expr* shaderExpr(const StateAssignment& s);
+    CompiledPass compilePass(const Pass& p);
+
+    const Effect& mEffect;
+    const CompileOptions& mOptions;
+    DiagnosticSink& mDiagnostics;
+    std::unique_ptr<CompiledEffect> mOut;
+    std::map<std::string, size_t> mIndex;  // parameter name -> index
+    std::map<std::string, int> mSamplerUnits;
+    bool mFailed = false;
+};
+
+// [SECTION] Initial values
+
+void Compiler::initialValues() {
+    // In order, so that later initializers see earlier values (`float4 c = {Z, Z, Z, Z}` after `float Z`).
+    for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
+        const Parameter& p = mEffect.parameters[i];
+        Value v = zeroValue(p.type);
+        if (p.initializer && p.initializer->kind != Expr::Kind::Compile &&
+            (p.type.isNumeric() || p.type.base == BaseType::String)) {
+            if (auto r = eval(*p.initializer, &p.type)) v = std::move(*r);
+        } else if (p.initializer && p.initializer->kind == Expr::Kind::String) {
+            v = Value::text(p.initializer->text);  // a texture's file name
+        }
+        mOut->initialValues.push_back(std::move(v));
+        mIndex[p.name] = i;
+    }
+}
+
+// [SECTION] Textures and samplers
+
+void Compiler::textures() {
+    std::filesystem::path base = std::filesystem::path(mEffect.path).parent_path();
+    for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
+        const Parameter& p = mEffect.parameters[i];
+        if (!p.type.isTexture()) continue;
+        TextureDesc t;
+        t.parameter = i;
+        t.loc = p.loc;
+        t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube : BaseType::Texture2D;
+        std::string semantic = upper(p.semantic);
+        t.kind = semantic == "RENDERCOLORTARGET"          ? TextureDesc::Kind::RenderColorTarget
+                 : semantic == "RENDERDEPTHSTENCILTARGET" ? TextureDesc::Kind::RenderDepthStencilTarget
+                                                          : TextureDesc::Kind::Runtime;
+        bool depth = t.kind == TextureDesc::Kind::RenderDepthStencilTarget;
+        t.format = depth ? TextureFormat::D24S8 : TextureFormat::RGBA8;
+        TypeDesc int2;
+        int2.base = BaseType::Float;
+        int2.shape = Shape::Vector;
+        int2.cols = 2;
+        TypeDesc scalar;
+        auto checkSize = [&](float w, float h, const SourceLoc& loc) {
+            if (w <= 0 || h <= 0 || w > 16384 || h > 16384) {
+                error(DiagId::InvalidDimensions, loc,
+                      {std::to_string(static_cast<long long>(w)) + "x" + std::to_string(static_cast<long long>(h)) +
+                       " (each side must be 1..16384)"});
+                return false;
+            }
+            return true;
+        };
+        if (const Annotation* a = p.annotation("Dimensions")) {
+            if (auto v = eval(a->value, &int2); v && checkSize(v->data[0], v->data[1], a->loc)) {
+                t.width = static_cast<int>(v->data[0]);
+                t.height = static_cast<int>(v->data[1]);
+            }
+        }
+        const Annotation* w = p.annotation("width");
+        const Annotation* h = p.annotation("height");
+        if (w || h) {
+            auto wv = w ? eval(w->value, &scalar) : std::optional<Value>(Value::scalar(1));
+            auto hv = h ? eval(h->value, &scalar) : wv;
+            if (wv && hv && checkSize(wv->asFloat(), hv->asFloat(), (w ? w : h)->loc)) {
+                t.width = static_cast<int>(wv->asFloat());
+                t.height = static_cast<int>(hv->asFloat());
+            }
+        }
+        if (const Annotation* a = p.annotation("ViewPortRatio")) {
+            if (auto v = eval(a->value, nullptr)) {
+                t.viewportRatio[0] = v->data.empty() ? 1.0f : v->data[0];
+                t.viewportRatio[1] = v->data.size() > 1 ? v->data[1] : t.viewportRatio[0];
+                if (t.viewportRatio[0] <= 0 || t.viewportRatio[1] <= 0 || t.viewportRatio[0] > 16 ||
+                    t.viewportRatio[1] > 16)
+                    error(DiagId::InvalidDimensions, a->loc, {"ViewPortRatio must be in (0, 16]"});
+            }
+        }
+        if (const Annotation* a = p.annotation("Format")) {
+            if (a->value.kind != Expr::Kind::String) {
+                error(DiagId::InvalidTextureFormat, a->value.loc, {a->value.str()});
+            } else if (auto f = parseTextureFormat(a->value.text)) {
+                t.format = *f;
+            } else {
+                error(DiagId::InvalidTextureFormat, a->value.loc, {a->value.text});
+            }
+        }
+        if (const Annotation* a = p.annotation("MipLevels")) {
+            if (auto v = eval(a->value, &scalar)) t.mipLevels = std::max(0, v->asInt());
+        }
+        std::string resource;
+        if (const Annotation* a = p.annotation("ResourceName"); a && a->value.kind == Expr::Kind::String)
+            resource = a->value.text;
+        else if (p.initializer && p.initializer->kind == Expr::Kind::String)
+            resource = p.initializer->text;
+        if (!resource.empty() && t.kind == TextureDesc::Kind::Runtime) {
+            t.kind = TextureDesc::Kind::File;
+            t.resourceName = resource;
+            std::filesystem::path path = base / resource;
+            std::error_code ec;
+            if (std::filesystem::exists(path, ec)) t.resolvedPath = path.string();
+            else mDiagnostics.report(DiagId::TextureFileNotFound, p.loc, {resource});
+        }
+        if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
+        mOut->textures.push_back(std::move(t));
+    }
+}
+
+void Compiler::samplers() {
+    int unit = 0;
+    for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
+        const Parameter& p = mEffect.parameters[i];
+        if (!(p.type.base >= BaseType::Sampler && p.type.base <= BaseType::SamplerCube)) continue;
+        mSamplerUnits[p.name] = unit++;
+        SamplerDesc s;
+        s.parameter = i;
+        s.loc = p.loc;
+        bool hasComparison = false;
+        for (const StateAssignment& a : p.samplerState) {
+            auto id = findSamplerState(a.name);
+            if (!id) {
+                error(DiagId::UnknownState, a.loc, {a.name});
+                continue;
+            }
+            const StateInfo& info = samplerStateInfo(*id);
+            if (*id == SamplerStateId::Texture) {
+                auto it = mIndex.find(a.value.text);
+                if (it == mIndex.end() || !mEffect.parameters[it->second].type.isTexture())
+                    error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
+                else
+                    s.texture = it->second;
+                continue;
+            }
+            std::vector<float> value;
+            if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
+                auto e = findEnumValue(info.domain, a.value.text);
+                if (!e) {
+                    error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
+                    continue;
+                }
+                value = {static_cast<float>(*e)};
+            } else if (auto v = eval(a.value, nullptr)) {
+                value = v->data;
+            } else {
+                continue;
+            }
+            if (value.empty()) continue;
+            int n = static_cast<int>(value[0]);
+            switch (*id) {
+                case SamplerStateId::AddressU: s.addressU = n; break;
+                case SamplerStateId::AddressV: s.addressV = n; break;
+                case SamplerStateId::AddressW: s.addressW = n; break;
+                case SamplerStateId::MinFilter: s.minFilter = n; break;
+                case SamplerStateId::MagFilter: s.magFilter = n; break;
+                case SamplerStateId::MipFilter: s.mipFilter = n; break;
+                case SamplerStateId::MaxAnisotropy: s.maxAnisotropy = n; break;
+                case SamplerStateId::MipMapLodBias: s.mipLodBias = value[0]; break;
+                case SamplerStateId::ComparisonFunc: s.comparisonFunc = n; break;
+                case SamplerStateId::BorderColor:
+                    if (value.size() >= 4) {
+                        for (int k = 0; k < 4; ++k) s.borderColor[k] = value[static_cast<size_t>(k)];
+                    } else {  // packed D3DCOLOR 0xAARRGGBB
+                        auto c = static_cast<uint32_t>(static_cast<int64_t>(value[0]));
+                        s.borderColor[0] = static_cast<float>((c >> 16) & 255) / 255.0f;
+                        s.borderColor[1] = static_cast<float>((c >> 8) & 255) / 255.0f;
+                        s.borderColor[2] = static_cast<float>(c & 255) / 255.0f;
+                        s.borderColor[3] = static_cast<float>((c >> 24) & 255) / 255.0f;
+                    }
+                    break;
+                case SamplerStateId::Filter: {
+                    // D3D10_FILTER bits: mip linear 0x1, mag linear 0x4, min linear 0x10, anisotropic 0x40,
+                    // comparison 0x80.
+                    auto tex = [&](int bit) { return (n & 0x40) ? 3 : ((n & bit) ? 2 : 1); };
+                    s.minFilter = tex(0x10);
+                    s.magFilter = tex(0x04);
+                    s.mipFilter = (n & 0x01) ? 2 : 1;
+                    hasComparison = (n & 0x80) != 0;
+                    break;
+                }
+                default: break;
+            }
+        }
+        if (hasComparison && s.comparisonFunc == 0) s.comparisonFunc = 4;  // LESSEQUAL
+        mOut->samplers.push_back(s);
+    }
+}
+
+// [SECTION] Scripts
+
+std::vector<ScriptCommand> Compiler::script(const std::vector<Annotation>& annotations, bool& has) {
+    has = false;
+    for (const Annotation& a : annotations) {
+        if (!equalsIgnoreCase(a.name, "Script") || a.value.kind != Expr::Kind::String) continue;
+        has = true;
+        DiagnosticList local;
+        auto commands = parseSasScript(a.value, local);
+        for (const Diagnostic& d : local.items()) {
+            if (d.severity == Severity::Error) mFailed = true;
+            mDiagnostics.report(d);
+        }
+        return commands;
+    }
+    return {};
+}
+
+void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique) {
+    int loops = 0;
+    for (const ScriptCommand& c : commands) {
+        switch (c.kind) {
+            case ScriptCommand::Kind::Pass: {
+                bool found = false;
+                if (technique)
+                    for (const Pass& p : technique->passes) found |= p.name == c.value;
+                if (!found) error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
+                break;
+            }
+            case ScriptCommand::Kind::RenderColorTarget:
+            case ScriptCommand::Kind::RenderDepthStencilTarget: {
+                if (c.value.empty()) break;
+                auto it = mIndex.find(c.value);
+                std::string semantic = it == mIndex.end() ? "" : upper(mEffect.parameters[it->second].semantic);
+                bool wantDepth = c.kind == ScriptCommand::Kind::RenderDepthStencilTarget;
+                if (semantic != (wantDepth ? "RENDERDEPTHSTENCILTARGET" : "RENDERCOLORTARGET"))
+                    error(DiagId::ScriptUnknownTarget, c.loc, {c.value});
+                break;
+            }
+            case ScriptCommand::Kind::Technique: {
+                for (const std::string& name : {c.selectorCondition.empty() ? c.value : c.selectorTrue,
+                                                c.selectorCondition.empty() ? std::string() : c.selectorFalse})
+                    if (!name.empty() && !mEffect.findTechnique(name))
+                        error(DiagId::ScriptUnknownTechnique, c.loc, {name});
+                break;
+            }
+            case ScriptCommand::Kind::LoopByCount: ++loops; break;
+            case ScriptCommand::Kind::LoopEnd:
+                if (--loops < 0) {
+                    error(DiagId::ScriptUnbalancedLoop, c.loc, {"LoopEnd without LoopByCount"});
+                    loops = 0;
+                }
+                break;
+            default: break;
+        }
+    }
+    if (loops > 0 && !commands.empty())
+        error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {"LoopByCount without LoopEnd"});
+}
+
+void Compiler::scripts() {
+    for (const Parameter& p : mEffect.parameters) {
+        if (upper(p.semantic) != "STANDARDSGLOBAL") continue;
+        mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);
+        validateScript(mOut->globalScript, nullptr);
+    }
+}
+
+// [SECTION] Stages: lowering, cache, glslang, SPIRV-Cross, reflection
+
+SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lowered) const {
+    if (m.file.empty() || m.file == kGeneratedFile || m.line <= 0) return lowered.compileLoc;
+    SourceLoc loc{m.file, m.line, m.column};
+    if (loc.column == 0) {
+        // glslang 12 gives no column: find the token the message quotes ('name' : ...) on that line of the
+        // unit, whose columns are the preprocessed text's (declarations are padded to their column).
+        std::string line, file;
+        int number = 0;
+        size_t pos = 0;
+        const std::string& text = lowered.hlsl;
+        while (pos < text.size()) {
+            size_t end = text.find('\n', pos);
+            if (end == std::string::npos) end = text.size();
+            std::string l = text.substr(pos, end - pos);
+            pos = end + 1;
+            if (l.rfind("#line ", 0) == 0) {
+                size_t q = l.find('"');
+                number = std::stoi(l.substr(6)) - 1;
+                file = q == std::string::npos ? file : l.substr(q + 1, l.rfind('"') - q - 1);
+            } else {
+                ++number;
+                if (file == m.file && number == m.line) {
+                    line = l;
+                    break;
+                }
+            }
+        }
+        size_t q1 = m.text.find('\''), q2 = q1 == std::string::npos ? q1 : m.text.find('\'', q1 + 1);
+        size_t column = std::string::npos;
+        if (q2 != std::string::npos && q2 > q1 + 1) column = line.find(m.text.substr(q1 + 1, q2 - q1 - 1));
+        if (column == std::string::npos) column = line.find_first_not_of(" \t");
+        loc.column = column == std::string::npos ? 0 : static_cast<int>(column) + 1;
+    }
+    return mEffect.sourceMap.map(loc);
+}
+
+void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered) {
+    for (const HlslMessage& m : messages) {
+        SourceLoc loc = userLocation(m, lowered);
+        std::string text = m.text;
+        if (m.file == kGeneratedFile) text += " (in the code generated for '" + lowered.entryPoint + "')";
+        if (m.error) error(DiagId::HlslError, loc, {text});
+        else if (m.file != kGeneratedFile) mDiagnostics.report(DiagId::HlslWarning, loc, {text});
+    }
+}
+
+void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass) {
+    // Indices are resolved on every compile, cache hit or not: an unchanged unit may belong to an effect
+    // whose parameter list changed elsewhere (a texture added before it).
+    for (UniformBinding& u : program.uniforms) {
+        for (size_t a = 0; a < pass.arguments.size(); ++a)
+            if (pass.arguments[a].memberName == u.name) {
+                u.source = UniformBinding::Source::CompileArgument;
+                u.index = a;
+                u.type = pass.arguments[a].type;
+            }
+        if (u.source == UniformBinding::Source::Parameter) {
+            auto it = mIndex.find(u.name);
+            if (it != mIndex.end()) {
+                u.index = it->second;
+                u.type = mEffect.parameters[it->second].type;
+            }
+        }
+    }
+    for (SamplerBinding& s : program.samplers) {
+        auto it = mIndex.find(s.glslName);
+        if (it != mIndex.end()) s.samplerParameter = it->second;
+    }
+}
+
+bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass) {
+    auto lowered = lowerStage(mEffect, compile, stage, pass.arguments, mDiagnostics);
+    if (!lowered) {
+        mFailed = true;
+        return false;
+    }
+    StageProgram& program = stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
+    std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
+    uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
+    const StageProgram* cached = mOptions.cache ? mOptions.cache->find(key) : nullptr;
+    if (cached) {
+        program = *cached;
+    } else {
+        HlslCompileResult spirv = compileHlslToSpirv(lowered->hlsl, stage, kWrapperEntryPoint);
+        reportHlslMessages(spirv.messages, *lowered);
+        if (!spirv.success) {
+            mFailed = true;
+            return false;
+        }
+        CrossOptions cross;
+        bool vertex = stage == ShaderStage::Vertex;
+        cross.uniformBlockName = vertex ? "fx_VsGlobals" : "fx_PsGlobals";
+        cross.uniformBlockBinding = vertex ? 0 : 1;
+        cross.samplerUnits = mSamplerUnits;
+        cross.depthSamplers = lowered->depthSamplers;
+        std::string crossError;
+        if (!spirvToGlsl(spirv.spirv, stage, cross, program, crossError)) {
+            error(DiagId::CrossCompileError, compile.loc, {crossError});
+            return false;
+        }
+        program.stage = stage;
+        program.entryPoint = lowered->entryPoint;
+        program.profile = lowered->profile;
+        program.hlsl = lowered->hlsl;
+        program.sourceHash = key;
+        if (mOptions.cache) mOptions.cache->store(key, program);
+    }
+    resolveReflection(program, pass);
+    return true;
+}
+
+// [SECTION] Passes and techniques
+
+const Expr* Compiler::shaderExpr(const StateAssignment& s) {
+    if (s.value.kind == Expr::Kind::Compile) return &s.value;
+    if (s.value.kind == Expr::Kind::Identifier) {
+        if (s.value.text == "NULL" || s.value.text == "null") return nullptr;
+        // `VertexShader = (vsVar);` with `vertexshader vsVar = compile vs_3_0 VS();`
+        if (const Parameter* p = mEffect.findParameter(s.value.text); p && p->initializer &&
+                                                                       p->initializer->kind == Expr::Kind::Compile)
+            return &*p->initializer;
+    }
+    error(DiagId::InvalidCompileExpression, s.value.loc, {"'" + s.value.str() + "' is not a compile expression"});
+    return nullptr;
+}
+
+CompiledPass Compiler::compilePass(const Pass& p) {
+    CompiledPass pass;
+    pass.name = p.name;
+    pass.loc = p.loc;
+    for (const StateAssignment& s : p.states) {
+        auto id = findRenderState(s.name);
+        if (!id) {
+            error(DiagId::UnknownState, s.loc, {s.name});
+            continue;
+        }
+        if (*id == RenderStateId::VertexShader || *id == RenderStateId::PixelShader) {
+            if (const Expr* compile = shaderExpr(s))
+                compileStage(*compile, *id == RenderStateId::VertexShader ? ShaderStage::Vertex : ShaderStage::Fragment,
+                             pass);
+            continue;
+        }
+        const StateInfo& info = renderStateInfo(*id);
+        RenderStateSetting setting{*id, s.value, s.loc};
+        if (s.value.kind == Expr::Kind::Identifier && !mIndex.count(s.value.text)) {
+            if (auto e = findEnumValue(info.domain, s.value.text)) {
+                setting.value.kind = Expr::Kind::Number;
+                setting.value.number = *e;
+                setting.value.isInteger = true;
+                setting.value.args.clear();
+            } else if (!equalsIgnoreCase(s.value.text, "true") && !equalsIgnoreCase(s.value.text, "false")) {
+                error(DiagId::UnknownStateValue, s.value.loc, {s.value.text, s.name, ""});
+                continue;
+            }
+        }
+        if (setting.value.kind != Expr::Kind::Number && literalOnly(setting.value)) {
+            if (auto v = eval(setting.value, nullptr); v && v->data.size() == 1) {
+                bool isBool = info.domain == StateDomain::Bool;
+                setting.value.kind = isBool ? Expr::Kind::Bool : Expr::Kind::Number;
+                setting.value.number = isBool ? (v->data[0] != 0.0f) : v->data[0];
+                setting.value.isInteger = !isBool && v->type.base != BaseType::Float;
+                setting.value.args.clear();
+            }
+        }
+        pass.states.push_back(std::move(setting));
+    }
+    pass.script = script(p.annotations, pass.hasScript);
+    validateScript(pass.script, nullptr);
+    return pass;
+}
+
+std::unique_ptr<CompiledEffect> Compiler::run() {
+    initialValues();
+    textures();
+    samplers();
+    scripts();
+    bool found = mOptions.technique.empty();
+    for (const Technique& t : mEffect.techniques) {
+        if (!mOptions.technique.empty() && t.name != mOptions.technique) continue;
+        found = true;
+        CompiledTechnique technique;
+        technique.name = t.name;
+        technique.loc = t.loc;
+        technique.script = script(t.annotations, technique.hasScript);
+        validateScript(technique.script, &t);
+        for (const Pass& p : t.passes) technique.passes.push_back(compilePass(p));
+        mOut->techniques.push_back(std::move(technique));
+    }
+    if (!found) error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
+    if (mFailed) return nullptr;
+    return std::move(mOut);
+}
+
+}  // namespace
+
+std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect, const CompileOptions& options,
+                                              DiagnosticSink& diagnostics) {
+    if (!effect) return nullptr;
+    return Compiler(std::move(effect), options, diagnostics).run();
+}
+
+}  // namespace fx

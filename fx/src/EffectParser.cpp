@@ -1,0 +1,1212 @@
+// EffectParser: recursive-descent parser for D3DX9 effect syntax (with the D3D10 forms FX Composer files
+// use) over the tokens of the preprocessed text. Every node gets the user's SourceLoc.
+//
+// Features:
+//  - global parameters with storage classes, semantics, annotations and initializers
+//  - textures, samplers with sampler_state blocks (validated against the sampler state table)
+//  - structs, functions (HLSL kept as text slices), typedefs and cbuffers (verbatim)
+//  - techniques (technique/technique10/technique11), passes, render states (validated, enums resolved)
+//  - error recovery per top-level declaration, at most kMaxErrors errors, bounded recursion
+#include <fx/EffectParser.h>
+#include <fx/RenderStates.h>
+
+#include "Lexer.h"
+#include "Preprocessor.h"
+
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace fx {
+
+namespace {
+
+using detail::Token;
+
+constexpr size_t kMaxErrors = 20;
+constexpr int kMaxDepth = 256;
+
+struct SyntaxError {};    // thrown after reporting; the top level recovers at the next declaration
+struct TooManyErrors {};  // thrown when kMaxErrors is reached
+
+// "float", "float3", "float4x4", "int2", "bool", "half3x3", "dword" ...
+bool parseScalarTypeName(const std::string& name, TypeDesc& type) {
+    static const std::pair<const char*, BaseType> kScalars[] = {
+        {"bool", BaseType::Bool},   {"int", BaseType::Int},     {"uint", BaseType::UInt},
+        {"dword", BaseType::UInt},  {"half", BaseType::Half},   {"float", BaseType::Float},
+        {"double", BaseType::Double}, {"min16float", BaseType::Half}, {"min16int", BaseType::Int},
+        {"min16uint", BaseType::UInt},
+    };
+    for (const auto& [spelling, base] : kScalars) {
+        size_t len = std::strlen(spelling);
+        if (name.compare(0, len, spelling) != 0) continue;
+        std::string rest = name.substr(len);
+        type = TypeDesc{};
+        type.base = base;
+        if (rest.empty()) return true;
+        if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') {
+            type.shape = Shape::Vector;
+            type.cols = rest[0] - '0';
+            return true;
+        }
+        if (rest.size() == 3 && rest[0] >= '1' && rest[0] <= '4' && rest[1] == 'x' && rest[2] >= '1' && rest[2] <= '4') {
+            type.shape = Shape::Matrix;
+            type.rows = rest[0] - '0';
+            type.cols = rest[2] - '0';
+            return true;
+        }
+    }
+    return false;
+}
+
+bool parseObjectTypeName(const std::string& name, TypeDesc& type) {
+    static const std::pair<const char*, BaseType> kObjects[] = {
+        {"texture", BaseType::Texture},
+        {"texture1D", BaseType::Texture1D},
+        {"texture2D", BaseType::Texture2D},
+        {"texture3D", BaseType::Texture3D},
+        {"textureCUBE", BaseType::TextureCube},
+        {"sampler", BaseType::Sampler},
+        {"sampler1D", BaseType::Sampler1D},
+        {"sampler2D", BaseType::Sampler2D},
+        {"sampler3D", BaseType::Sampler3D},
+        {"samplerCUBE", BaseType::SamplerCube},
+        {"SamplerState", BaseType::SamplerState},
+        {"SamplerComparisonState", BaseType::SamplerComparisonState},
+        {"VertexShader", BaseType::VertexShader},
+        {"PixelShader", BaseType::PixelShader},
+        {"string", BaseType::String},
+        {"void", BaseType::Void},
+    };
+    for (const auto& [spelling, base] : kObjects) {
+        if (equalsIgnoreCase(name, spelling)) {
+            type = TypeDesc{};
+            type.base = base;
+            return true;
+        }
+    }
+    return false;
+}
+
+class Parser {
+public:
+    Parser(std::vector<Token> tokens, const std::string& text, Effect& effect, detail::CountingSink& diagnostics)
+        : mTokens(std::move(tokens)), mText(text), mEffect(effect), mDiag(diagnostics) {}
+
+    void parseEffect() {
+        try {
+            while (!atEnd()) {
+                size_t start = mPos;
+                try {
+                    parseTopLevel();
+                } catch (const SyntaxError&) {
+                    synchronize(start);
+                }
+            }
+        } catch (const TooManyErrors&) {
+        }
+    }
+
+private:
+    // [SECTION] Tokens
+
+    const Token& peek(size_t ahead = 0) const {
+        size_t index = std::min(mPos + ahead, mTokens.size() - 1);
+        return mTokens[index];
+    }
+    const Token& advance() {
+        const Token& token = mTokens[mPos];
+        if (mPos + 1 < mTokens.size()) ++mPos;
+        return token;
+    }
+    bool atEnd() const { return peek().kind == Token::Kind::End; }
+    bool check(const char* spelling) const { return peek().is(spelling); }
+    bool accept(const char* spelling) {
+        if (!check(spelling)) return false;
+        advance();
+        return true;
+    }
+    static std::string describe(const Token& token) {
+        switch (token.kind) {
+            case Token::Kind::End: return "end of file";
+            case Token::Kind::String: return "\"" + token.text + "\"";
+            default: return token.text;
+        }
+    }
+
+    [[noreturn]] void fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        error(id, loc, args);
+        throw SyntaxError{};
+    }
+    void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        mDiag.report(id, loc, args);
+        if (mDiag.errors() >= kMaxErrors) throw TooManyErrors{};
+    }
+    [[noreturn]] void unexpected(const std::string& expected) {
+        const Token& token = peek();
+        if (token.kind == Token::Kind::End) fail(DiagId::UnexpectedEndOfFile, token.loc, {expected});
+        fail(DiagId::UnexpectedToken, token.loc, {expected, describe(token)});
+    }
+    const Token& expect(const char* spelling) {
+        if (!check(spelling)) unexpected(std::string("'") + spelling + "'");
+        return advance();
+    }
+    const Token& expectIdentifier(const char* what) {
+        if (peek().kind != Token::Kind::Identifier) unexpected(what);
+        return advance();
+    }
+    // '>' closing an annotation or template; splits ">=" and ">>" so the rest is seen next.
+    void expectCloseAngle() {
+        Token& token = mTokens[mPos];
+        if (token.is(">")) {
+            advance();
+            return;
+        }
+        if (token.is(">=") || token.is(">>") || token.is(">>=")) {
+            token.text.erase(0, 1);
+            token.begin += 1;
+            token.ppColumn += 1;
+            token.loc.column += 1;
+            return;
+        }
+        unexpected("'>'");
+    }
+    // A block's closing '}', naming the opener when the file ends or another block starts first.
+    void expectClose(const char* opener, const Token& openToken) {
+        if (check("}")) {
+            advance();
+            return;
+        }
+        unclosed(opener, openToken);
+    }
+    [[noreturn]] void unclosed(const char* opener, const Token& openToken) {
+        fail(DiagId::UnclosedBlock, peek().loc, {"}", opener, std::to_string(openToken.loc.line)});
+    }
+
+    struct DepthGuard {
+        Parser& parser;
+        explicit DepthGuard(Parser& p) : parser(p) {
+            if (++parser.mDepth > kMaxDepth) {
+                --parser.mDepth;
+                parser.fail(DiagId::UnsupportedFeature, parser.peek().loc, {"nesting too deep"});
+            }
+        }
+        ~DepthGuard() { --parser.mDepth; }
+    };
+
+    // Skips to the end of the declaration that started at `start`: after a ';' at brace depth 0, or after
+    // the '}' (and an optional ';') that closes its outermost block.
+    void synchronize(size_t start) {
+        size_t errorPos = mPos;
+        mPos = start;
+        int depth = 0;
+        while (!atEnd()) {
+            const Token& token = advance();
+            if (token.is("{")) ++depth;
+            if (token.is("}") && --depth <= 0) {
+                if (mPos > errorPos || depth == 0) {
+                    accept(";");
+                    break;
+                }
+                depth = 0;
+            }
+            if (token.is(";") && depth <= 0 && mPos > errorPos) break;
+        }
+    }
+
+    std::string sliceText(size_t firstToken, size_t lastToken) const {
+        const Token& first = mTokens[firstToken];
+        const Token& last = mTokens[lastToken];
+        return mText.substr(first.begin, last.end - first.begin);
+    }
+    SourceLoc sliceLoc(size_t firstToken) const {
+        SourceLoc loc = mTokens[firstToken].loc;
+        loc.column = mTokens[firstToken].ppColumn;  // see Effect.h: hlslLoc's column is the preprocessed one
+        return loc;
+    }
+
+    // [SECTION] Types
+
+    bool isTypeName(const Token& token) const {
+        if (token.kind != Token::Kind::Identifier) return false;
+        TypeDesc type;
+        return token.text == "vector" || token.text == "matrix" || parseScalarTypeName(token.text, type) ||
+               parseObjectTypeName(token.text, type) || mTypeNames.count(token.text) ||
+               isTemplatedObject(token.text);
+    }
+    static bool isTemplatedObject(const std::string& name) {
+        static const char* kNames[] = {"Texture2DArray", "TextureCubeArray", "Texture2DMS", "Texture1DArray",
+                                       "Buffer", "RWTexture2D", "RWBuffer", "StructuredBuffer"};
+        for (const char* n : kNames)
+            if (name == n) return true;
+        return false;
+    }
+
+    TypeDesc parseType() {
+        const Token& name = peek();
+        if (name.kind != Token::Kind::Identifier) unexpected("a type");
+        TypeDesc type;
+        if (name.text == "vector" || name.text == "matrix") {
+            bool isMatrix = name.text == "matrix";
+            advance();
+            type.base = BaseType::Float;
+            type.shape = isMatrix ? Shape::Matrix : Shape::Vector;
+            type.rows = isMatrix ? 4 : 1;
+            type.cols = 4;
+            if (accept("<")) {
+                const Token& scalar = expectIdentifier("a scalar type");
+                TypeDesc scalarType;
+                if (!parseScalarTypeName(scalar.text, scalarType) || scalarType.shape != Shape::Scalar)
+                    fail(DiagId::UnknownType, scalar.loc, {scalar.text});
+                type.base = scalarType.base;
+                expect(",");
+                int first = parseDimension();
+                if (isMatrix) {
+                    expect(",");
+                    type.rows = first;
+                    type.cols = parseDimension();
+                } else {
+                    type.cols = first;
+                }
+                expectCloseAngle();
+            }
+            return type;
+        }
+        if (parseScalarTypeName(name.text, type) || parseObjectTypeName(name.text, type)) {
+            advance();
+            if (type.isTexture() && check("<")) skipAngles();  // Texture2D<float4>
+            return type;
+        }
+        if (mTypeNames.count(name.text)) {
+            advance();
+            type.base = BaseType::Struct;
+            type.structName = name.text;
+            return type;
+        }
+        if (isTemplatedObject(name.text)) {
+            fail(DiagId::UnsupportedFeature, name.loc, {"type '" + name.text + "' is not supported in effects"});
+        }
+        fail(DiagId::UnknownType, name.loc, {name.text});
+    }
+    void skipAngles() {
+        expect("<");
+        int depth = 1;
+        while (depth > 0 && !atEnd()) {
+            if (check("<")) ++depth;
+            if (check(">")) --depth;
+            if (check(">>")) depth -= 2;
+            advance();
+        }
+    }
+    int parseDimension() {
+        const Token& token = peek();
+        Expr value = parseExpr(true);
+        double number = 0;
+        if (!constantValue(value, number) || number < 1 || number > 4)
+            fail(DiagId::UnexpectedToken, token.loc, {"a dimension 1..4", value.str()});
+        return static_cast<int>(number);
+    }
+    static bool constantValue(const Expr& e, double& out) {
+        switch (e.kind) {
+            case Expr::Kind::Number:
+            case Expr::Kind::Bool: out = e.number; return true;
+            case Expr::Kind::Unary: {
+                double a;
+                if (e.args.size() != 1 || !constantValue(e.args[0], a)) return false;
+                out = e.text == "-" ? -a : e.text == "+" ? a : e.text == "!" ? !a : 0;
+                return e.text != "~";
+            }
+            case Expr::Kind::Binary: {
+                double a, b;
+                if (e.args.size() != 2 || !constantValue(e.args[0], a) || !constantValue(e.args[1], b)) return false;
+                if (e.text == "+") out = a + b;
+                else if (e.text == "-") out = a - b;
+                else if (e.text == "*") out = a * b;
+                else if (e.text == "/" && b != 0) out = a / b;
+                else return false;
+                return true;
+            }
+            default: return false;
+        }
+    }
+    // [N][M]... after a name
+    void parseArrayDims(TypeDesc& type) {
+        while (check("[")) {
+            const Token& open = advance();
+            if (accept("]")) {
+                type.arrayDims.push_back(0);
+                continue;
+            }
+            Expr size = parseExpr();
+            double number = 0;
+            if (!constantValue(size, number) || number < 1 || number > (1 << 24))
+                fail(DiagId::UnexpectedToken, open.loc, {"a constant array size", size.str()});
+            type.arrayDims.push_back(static_cast<int>(number));
+            expect("]");
+        }
+    }
+    // ": SEMANTIC", skipping ": register(...)" and ": packoffset(...)".
+    std::string parseSemantics() {
+        std::string semantic;
+        while (check(":")) {
+            advance();
+            const Token& name = expectIdentifier("a semantic");
+            if ((name.text == "register" || name.text == "packoffset") && check("(")) {
+                skipBalanced("(", ")");
+                continue;
+            }
+            semantic = name.text;
+        }
+        return semantic;
+    }
+    void skipBalanced(const char* open, const char* close) {
+        const Token& opener = expect(open);
+        int depth = 1;
+        while (depth > 0) {
+            if (atEnd()) unclosed(open, opener);
+            if (check(open)) ++depth;
+            if (check(close)) --depth;
+            advance();
+        }
+    }
+
+    // [SECTION] Top level
+
+    void parseTopLevel() {
+        const Token& token = peek();
+        if (token.is(";")) {
+            advance();
+            return;
+        }
+        if (token.kind != Token::Kind::Identifier && !token.is("[")) unexpected("a declaration");
+        if (token.text == "technique" || token.text == "technique10" || token.text == "technique11") {
+            parseTechnique();
+            return;
+        }
+        if (token.text == "struct") {
+            parseStruct();
+            return;
+        }
+        if (token.text == "typedef") {
+            parseTypedef();
+            return;
+        }
+        if (token.text == "cbuffer" || token.text == "tbuffer") {
+            parseVerbatimBlock();
+            return;
+        }
+        parseDeclaration();
+    }
+
+    void parseTypedef() {
+        size_t first = mPos;
+        advance();
+        accept("const");
+        parseType();
+        const Token& name = expectIdentifier("a type name");
+        TypeDesc dummy;
+        parseArrayDims(dummy);
+        size_t last = mPos;
+        expect(";");
+        mTypeNames.insert(name.text);
+        addVerbatim(first, last);
+    }
+
+    void parseVerbatimBlock() {
+        size_t first = mPos;
+        const Token& keyword = advance();
+        expectIdentifier("a name");
+        parseSemantics();
+        if (!check("{")) unexpected("'{'");
+        const Token& open = advance();
+        int depth = 1;
+        while (depth > 0) {
+            if (atEnd()) unclosed(keyword.text == "cbuffer" ? "cbuffer" : "tbuffer", open);
+            if (check("{")) ++depth;
+            if (check("}")) --depth;
+            advance();
+        }
+        size_t last = mPos - 1;
+        if (check(";")) last = mPos, advance();
+        addVerbatim(first, last);
+    }
+
+    void addVerbatim(size_t first, size_t last) {
+        VerbatimDecl decl;
+        decl.hlslText = sliceText(first, last);
+        decl.hlslLoc = sliceLoc(first);
+        mEffect.verbatim.push_back(std::move(decl));
+        mEffect.order.push_back({DeclRef::Kind::Verbatim, mEffect.verbatim.size() - 1});
+    }
+
+    void parseStruct() {
+        size_t first = mPos;
+        const Token& keyword = advance();
+        const Token& name = expectIdentifier("a struct name");
+        if (mTypeNames.count(name.text) && mEffect.findStruct(name.text))
+            error(DiagId::Redefinition, name.loc, {name.text});
+        StructDecl decl;
+        decl.name = name.text;
+        decl.loc = name.loc;
+        mTypeNames.insert(name.text);  // members may not refer to it, but functions after it do
+        if (!check("{")) unexpected("'{'");
+        const Token& open = advance();
+        while (!check("}")) {
+            if (atEnd() || check("struct") || check("technique") || check("technique10") || check("technique11"))
+                unclosed("struct", keyword);
+            StructMember member;
+            static const char* kInterpolation[] = {"linear", "centroid", "nointerpolation", "noperspective", "sample"};
+            bool modifier = true;
+            while (modifier) {
+                modifier = false;
+                for (const char* m : kInterpolation)
+                    if (check(m)) {
+                        member.interpolation = advance().text;
+                        modifier = true;
+                    }
+                if (check("row_major") || check("column_major") || check("const") || check("precise")) {
+                    member.type.rowMajor = advance().text == "row_major" || member.type.rowMajor;
+                    modifier = true;
+                }
+            }
+            bool rowMajor = member.type.rowMajor;
+            TypeDesc type = parseType();
+            type.rowMajor = rowMajor;
+            for (;;) {
+                StructMember m = member;
+                m.type = type;
+                const Token& memberName = expectIdentifier("a member name");
+                m.name = memberName.text;
+                m.loc = memberName.loc;
+                parseArrayDims(m.type);
+                m.semantic = parseSemantics();
+                decl.members.push_back(std::move(m));
+                if (!accept(",")) break;
+            }
+            expect(";");
+        }
+        (void)open;
+        size_t last = mPos;
+        advance();  // '}'
+        if (check(";"))
+            last = mPos, advance();
+        else
+            unexpected("';' after struct");
+        decl.hlslText = sliceText(first, last);
+        decl.hlslLoc = sliceLoc(first);
+        mEffect.structs.push_back(std::move(decl));
+        mEffect.order.push_back({DeclRef::Kind::Struct, mEffect.structs.size() - 1});
+    }
+
+    struct Storage {
+        bool isStatic = false, isConst = false, isUniform = false, isShared = false, isExtern = false;
+        bool rowMajor = false;
+    };
+
+    void parseDeclaration() {
+        size_t first = mPos;
+        if (check("[")) {  // [numthreads(...)], [maxvertexcount(...)] before a function
+            while (check("[")) skipBalanced("[", "]");
+        }
+        Storage storage;
+        for (;;) {
+            const Token& token = peek();
+            if (token.is("static")) storage.isStatic = true;
+            else if (token.is("const")) storage.isConst = true;
+            else if (token.is("uniform")) storage.isUniform = true;
+            else if (token.is("shared")) storage.isShared = true;
+            else if (token.is("extern")) storage.isExtern = true;
+            else if (token.is("row_major")) storage.rowMajor = true;
+            else if (token.is("column_major")) storage.rowMajor = false;
+            else if (token.is("inline") || token.is("volatile") || token.is("precise") || token.is("groupshared")) {
+            } else break;
+            advance();
+        }
+        if (peek().kind == Token::Kind::Identifier && !isTypeName(peek()) && peek(1).kind == Token::Kind::Identifier)
+            fail(DiagId::UnknownType, peek().loc, {peek().text});
+        TypeDesc type = parseType();
+        type.rowMajor = storage.rowMajor;
+        const Token& name = expectIdentifier("a name");
+        if (check("(")) {
+            parseFunction(first, type, name);
+            return;
+        }
+        bool firstDeclarator = true;
+        std::vector<size_t> declared;
+        const Token* declName = &name;
+        for (;;) {
+            Parameter parameter;
+            parameter.name = declName->text;
+            parameter.loc = declName->loc;
+            parameter.type = type;
+            parameter.isStatic = storage.isStatic;
+            parameter.isConst = storage.isConst;
+            parameter.isUniform = storage.isUniform;
+            parameter.isShared = storage.isShared;
+            parameter.isExtern = storage.isExtern;
+            parseArrayDims(parameter.type);
+            parameter.semantic = parseSemantics();
+            if (check("<")) parameter.annotations = parseAnnotations();
+            if (parameter.type.isSampler() && check("{")) {
+                parameter.samplerState = parseSamplerStateBlock();  // D3D10: SamplerState s { ... };
+            } else if (accept("=")) {
+                if (check("sampler_state")) {
+                    advance();
+                    parameter.samplerState = parseSamplerStateBlock();
+                } else {
+                    parameter.initializer = parseExpr();
+                    normalizeCompileShader(*parameter.initializer);
+                }
+            }
+            if (mEffect.findParameter(parameter.name)) error(DiagId::Redefinition, parameter.loc, {parameter.name});
+            mEffect.parameters.push_back(std::move(parameter));
+            declared.push_back(mEffect.parameters.size() - 1);
+            mEffect.order.push_back({DeclRef::Kind::Parameter, mEffect.parameters.size() - 1});
+            firstDeclarator = false;
+            if (!accept(",")) break;
+            declName = &expectIdentifier("a name");
+        }
+        (void)firstDeclarator;
+        size_t last = mPos;
+        expect(";");
+        if (storage.isStatic && !declared.empty()) {
+            // The whole declaration goes with its first declarator; the others share it.
+            Parameter& p = mEffect.parameters[declared.front()];
+            p.hlslText = sliceText(first, last);
+            p.hlslLoc = sliceLoc(first);
+        }
+    }
+
+    void parseFunction(size_t first, const TypeDesc& returnType, const Token& name) {
+        FunctionDecl decl;
+        decl.name = name.text;
+        decl.loc = name.loc;
+        decl.returnType = returnType;
+        expect("(");
+        if (check("void") && peek(1).is(")")) advance();
+        while (!check(")")) {
+            if (!decl.params.empty()) expect(",");
+            FunctionParam param;
+            bool modifier = true;
+            while (modifier) {
+                modifier = true;
+                const Token& t = peek();
+                if (t.is("in")) param.direction = FunctionParam::Direction::In;
+                else if (t.is("out")) param.direction = FunctionParam::Direction::Out;
+                else if (t.is("inout")) param.direction = FunctionParam::Direction::InOut;
+                else if (t.is("uniform")) param.isUniform = true;
+                else if (t.is("linear") || t.is("centroid") || t.is("nointerpolation") || t.is("noperspective") ||
+                         t.is("sample"))
+                    param.interpolation = t.text;
+                else if (t.is("const") || t.is("point") || t.is("line") || t.is("triangle") || t.is("lineadj") ||
+                         t.is("triangleadj") || t.is("precise") || t.is("row_major") || t.is("column_major")) {
+                } else modifier = false;
+                if (modifier) advance();
+            }
+            param.type = parseType();
+            const Token& paramName = expectIdentifier("a parameter name");
+            param.name = paramName.text;
+            param.loc = paramName.loc;
+            parseArrayDims(param.type);
+            param.semantic = parseSemantics();
+            if (accept("=")) param.defaultValue = parseExpr();
+            decl.params.push_back(std::move(param));
+        }
+        advance();  // ')'
+        decl.returnSemantic = parseSemantics();
+        size_t last;
+        if (check(";")) {
+            decl.hasBody = false;
+            last = mPos;
+            advance();
+        } else {
+            if (!check("{")) unexpected("'{' or ';'");
+            const Token& open = advance();
+            int depth = 1;
+            while (depth > 0) {
+                if (atEnd()) unclosed("{", open);
+                if (check("{")) ++depth;
+                if (check("}")) --depth;
+                advance();
+            }
+            last = mPos - 1;
+        }
+        decl.hlslText = sliceText(first, last);
+        decl.hlslLoc = sliceLoc(first);
+        mEffect.functions.push_back(std::move(decl));
+        mEffect.order.push_back({DeclRef::Kind::Function, mEffect.functions.size() - 1});
+    }
+
+    // [SECTION] Annotations
+
+    std::vector<Annotation> parseAnnotations() {
+        std::vector<Annotation> annotations;
+        expect("<");
+        while (!check(">") && !check(">=") && !check(">>")) {
+            if (atEnd()) unexpected("'>' to close the annotations");
+            TypeDesc type = parseType();
+            for (;;) {
+                Annotation annotation;
+                annotation.type = type;
+                const Token& name = expectIdentifier("an annotation name");
+                annotation.name = name.text;
+                annotation.loc = name.loc;
+                parseArrayDims(annotation.type);
+                expect("=");
+                annotation.value = parseExpr(/*inAnnotation*/ true);
+                annotations.push_back(std::move(annotation));
+                if (!accept(",")) break;
+            }
+            expect(";");
+        }
+        expectCloseAngle();
+        return annotations;
+    }
+
+    // [SECTION] Techniques and passes
+
+    void parseTechnique() {
+        const Token& keyword = advance();
+        Technique technique;
+        technique.loc = keyword.loc;
+        if (peek().kind == Token::Kind::Identifier) {
+            technique.name = peek().text;
+            technique.loc = advance().loc;
+        }
+        if (check("<")) technique.annotations = parseAnnotations();
+        if (!check("{")) unexpected("'{'");
+        advance();
+        while (!check("}")) {
+            if (atEnd() || check("technique") || check("technique10") || check("technique11"))
+                unclosed("technique", keyword);
+            if (!check("pass")) unexpected("'pass' or '}'");
+            technique.passes.push_back(parsePass());
+        }
+        advance();
+        accept(";");
+        if (!technique.name.empty() && mEffect.findTechnique(technique.name))
+            error(DiagId::Redefinition, technique.loc, {technique.name});
+        mEffect.techniques.push_back(std::move(technique));
+    }
+
+    Pass parsePass() {
+        const Token& keyword = advance();
+        Pass pass;
+        pass.loc = keyword.loc;
+        if (peek().kind == Token::Kind::Identifier) {
+            pass.name = peek().text;
+            pass.loc = advance().loc;
+        }
+        if (check("<")) pass.annotations = parseAnnotations();
+        if (!check("{")) unexpected("'{'");
+        advance();
+        while (!check("}")) {
+            if (atEnd() || check("pass") || check("technique") || check("technique10") || check("technique11"))
+                unclosed("pass", keyword);
+            parsePassState(pass);
+        }
+        advance();
+        return pass;
+    }
+
+    void parsePassState(Pass& pass) {
+        const Token& name = expectIdentifier("a state name");
+        StateAssignment state;
+        state.name = name.text;
+        state.loc = name.loc;
+        // D3D10: SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(NULL);
+        if (name.text.size() > 3 && name.text.compare(0, 3, "Set") == 0 && check("(")) {
+            advance();
+            Expr value = parseExpr();
+            expect(")");
+            expect(";");
+            normalizeCompileShader(value);
+            std::string stage = name.text.substr(3);
+            if (stage == "VertexShader" || stage == "PixelShader") {
+                state.name = stage;
+                state.value = std::move(value);
+                validateShaderValue(state);
+                pass.states.push_back(std::move(state));
+                return;
+            }
+            if (stage == "GeometryShader" || stage == "HullShader" || stage == "DomainShader" ||
+                stage == "ComputeShader") {
+                if (!(value.kind == Expr::Kind::Identifier && value.text == "NULL") &&
+                    !(value.kind == Expr::Kind::Number && value.number == 0))
+                    error(DiagId::UnsupportedFeature, name.loc, {stage + " stages are not supported"});
+                return;  // NULL: nothing to do
+            }
+            error(DiagId::UnknownState, name.loc, {name.text});
+            return;
+        }
+        if (accept("[")) {
+            const Token& indexToken = peek();
+            Expr index = parseExpr();
+            double number = 0;
+            if (!constantValue(index, number) || number < 0)
+                fail(DiagId::UnexpectedToken, indexToken.loc, {"a constant index", index.str()});
+            state.index = static_cast<int>(number);
+            expect("]");
+        }
+        expect("=");
+        if (check("asm")) fail(DiagId::UnsupportedFeature, peek().loc, {"asm shaders are not supported"});
+        state.value = parseExpr();
+        normalizeCompileShader(state.value);
+        expect(";");
+        std::optional<RenderStateId> id = findRenderState(state.name);
+        if (!id) {
+            if (equalsIgnoreCase(state.name, "GeometryShader") && state.value.kind == Expr::Kind::Identifier &&
+                state.value.text == "NULL")
+                return;
+            error(DiagId::UnknownState, state.loc, {state.name});
+            return;
+        }
+        const StateInfo& info = renderStateInfo(*id);
+        if (info.domain == StateDomain::Shader)
+            validateShaderValue(state);
+        else
+            resolveStateValue(state.value, info.domain, state.name);
+        pass.states.push_back(std::move(state));
+    }
+
+    // CompileShader(vs_4_0, VS(args)) -> Compile expression, anywhere in `e`.
+    void normalizeCompileShader(Expr& e) {
+        for (Expr& arg : e.args) normalizeCompileShader(arg);
+        if (e.kind != Expr::Kind::Call || e.text != "CompileShader") return;
+        if (e.args.size() != 2 || e.args[0].kind != Expr::Kind::Identifier || e.args[1].kind != Expr::Kind::Call) {
+            error(DiagId::InvalidCompileExpression, e.loc, {"expected CompileShader(profile, Function(...))"});
+            return;
+        }
+        Expr compiled;
+        compiled.kind = Expr::Kind::Compile;
+        compiled.loc = e.loc;
+        compiled.profile = e.args[0].text;
+        compiled.text = e.args[1].text;
+        compiled.args = std::move(e.args[1].args);
+        e = std::move(compiled);
+    }
+
+    void validateShaderValue(StateAssignment& state) {
+        Expr& v = state.value;
+        if (v.kind == Expr::Kind::Compile) return;
+        if (v.kind == Expr::Kind::Identifier) {
+            if (v.text == "NULL") return;
+            const Parameter* p = mEffect.findParameter(v.text);
+            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader)) return;
+            if (!p) {
+                error(DiagId::UnknownIdentifier, v.loc, {v.text});
+                return;
+            }
+        }
+        if (v.kind == Expr::Kind::Number && v.number == 0) return;
+        error(DiagId::InvalidStateValue, v.loc, {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
+    }
+
+    static bool isEnumDomain(StateDomain domain) {
+        switch (domain) {
+            case StateDomain::Bool:
+            case StateDomain::Int:
+            case StateDomain::Float:
+            case StateDomain::Color:
+            case StateDomain::Shader:
+            case StateDomain::TextureRef: return false;
+            default: return true;
+        }
+    }
+
+    // Replaces enum names by their numbers, leaves parameter names, reports anything else.
+    void resolveStateValue(Expr& e, StateDomain domain, const std::string& stateName) {
+        switch (e.kind) {
+            case Expr::Kind::Identifier: {
+                if (isEnumDomain(domain) || domain == StateDomain::Bool) {
+                    if (std::optional<double> value = findEnumValue(domain, e.text)) {
+                        SourceLoc loc = e.loc;
+                        e = Expr{};
+                        e.kind = domain == StateDomain::Bool ? Expr::Kind::Bool : Expr::Kind::Number;
+                        e.number = *value;
+                        e.isInteger = true;
+                        e.loc = loc;
+                        return;
+                    }
+                }
+                if (mEffect.findParameter(e.text)) return;
+                if (isEnumDomain(domain) || domain == StateDomain::Bool) {
+                    std::string names;
+                    for (std::string_view n : enumValueNames(domain)) names += (names.empty() ? "" : ", ") + std::string(n);
+                    error(DiagId::UnknownStateValue, e.loc, {e.text, stateName, names});
+                } else {
+                    error(DiagId::UnknownIdentifier, e.loc, {e.text});
+                }
+                return;
+            }
+            case Expr::Kind::Unary:
+            case Expr::Kind::Binary:
+            case Expr::Kind::InitList:
+                for (Expr& arg : e.args) resolveStateValue(arg, domain, stateName);
+                break;
+            case Expr::Kind::Ternary:
+                if (e.args.size() == 3) {
+                    resolveStateValue(e.args[1], domain, stateName);
+                    resolveStateValue(e.args[2], domain, stateName);
+                }
+                break;
+            default: break;
+        }
+        // RED|GREEN|BLUE -> one number
+        if (e.kind == Expr::Kind::Binary && e.text == "|" && e.args.size() == 2 &&
+            e.args[0].kind == Expr::Kind::Number && e.args[1].kind == Expr::Kind::Number && e.args[0].isInteger &&
+            e.args[1].isInteger) {
+            double value = static_cast<double>(static_cast<long long>(e.args[0].number) |
+                                               static_cast<long long>(e.args[1].number));
+            SourceLoc loc = e.args[0].loc;
+            e = Expr{};
+            e.kind = Expr::Kind::Number;
+            e.number = value;
+            e.isInteger = true;
+            e.loc = loc;
+        }
+    }
+
+    std::vector<StateAssignment> parseSamplerStateBlock() {
+        if (!check("{")) unexpected("'{'");
+        const Token& open = advance();
+        std::vector<StateAssignment> states;
+        while (!check("}")) {
+            if (atEnd() || check("technique") || check("sampler_state")) unclosed("sampler_state", open);
+            const Token& name = expectIdentifier("a sampler state name");
+            StateAssignment state;
+            state.name = name.text;
+            state.loc = name.loc;
+            if (accept("[")) {
+                Expr index = parseExpr();
+                double number = 0;
+                if (constantValue(index, number)) state.index = static_cast<int>(number);
+                expect("]");
+            }
+            expect("=");
+            state.value = parseExpr();
+            expect(";");
+            std::optional<SamplerStateId> id = findSamplerState(state.name);
+            if (!id) {
+                error(DiagId::UnknownState, state.loc, {state.name});
+                continue;
+            }
+            const StateInfo& info = samplerStateInfo(*id);
+            if (info.domain == StateDomain::TextureRef) {
+                Expr& v = state.value;
+                if (v.kind == Expr::Kind::Identifier) v.kind = Expr::Kind::TextureRef;  // (t) and t
+                if (v.kind != Expr::Kind::TextureRef) {
+                    error(DiagId::InvalidStateValue, v.loc, {state.name, "expected <texture>"});
+                    continue;
+                }
+                const Parameter* texture = mEffect.findParameter(v.text);
+                if (!texture) {
+                    error(DiagId::UnknownIdentifier, v.loc, {v.text});
+                    continue;
+                }
+            } else {
+                resolveStateValue(state.value, info.domain, state.name);
+            }
+            states.push_back(std::move(state));
+        }
+        advance();
+        return states;
+    }
+
+    // [SECTION] Expressions
+
+    // `inAnnotation`: a top-level '>' ends the annotation block instead of comparing.
+    Expr parseExpr(bool inAnnotation = false) {
+        bool saved = mNoGreater;
+        mNoGreater = inAnnotation;
+        Expr e = parseTernary();
+        mNoGreater = saved;
+        return e;
+    }
+
+    Expr parseTernary() {
+        DepthGuard guard(*this);
+        Expr condition = parseBinary(0);
+        if (!check("?")) return condition;
+        const Token& question = advance();
+        Expr e;
+        e.kind = Expr::Kind::Ternary;
+        e.loc = condition.loc;
+        (void)question;
+        e.args.push_back(std::move(condition));
+        e.args.push_back(parseTernary());
+        expect(":");
+        e.args.push_back(parseTernary());
+        return e;
+    }
+
+    int binaryPrecedence(const Token& token) const {
+        if (token.kind != Token::Kind::Punct) return -1;
+        const std::string& op = token.text;
+        if (op == "||") return 1;
+        if (op == "&&") return 2;
+        if (op == "|") return 3;
+        if (op == "^") return 4;
+        if (op == "&") return 5;
+        if (op == "==" || op == "!=") return 6;
+        if (op == "<" || op == "<=" || op == ">=") return 7;
+        if (op == ">") return mNoGreater ? -1 : 7;
+        if (op == "<<" || op == ">>") return 8;
+        if (op == "+" || op == "-") return 9;
+        if (op == "*" || op == "/" || op == "%") return 10;
+        return -1;
+    }
+
+    Expr parseBinary(int minPrecedence) {
+        Expr left = parseUnary();
+        for (;;) {
+            int precedence = binaryPrecedence(peek());
+            if (precedence < 0 || precedence < minPrecedence) break;
+            const Token& op = advance();
+            DepthGuard guard(*this);
+            Expr right = parseBinary(precedence + 1);
+            Expr e;
+            e.kind = Expr::Kind::Binary;
+            e.text = op.text;
+            e.loc = left.loc;
+            e.args.push_back(std::move(left));
+            e.args.push_back(std::move(right));
+            left = std::move(e);
+        }
+        return left;
+    }
+
+    Expr parseUnary() {
+        DepthGuard guard(*this);
+        const Token& token = peek();
+        if (token.is("-") || token.is("+") || token.is("!") || token.is("~") || token.is("++") || token.is("--")) {
+            advance();
+            Expr operand = parseUnary();
+            if (token.text == "-" && operand.kind == Expr::Kind::Number) {  // fold literals: -1.0
+                operand.number = -operand.number;
+                operand.loc = token.loc;
+                return operand;
+            }
+            Expr e;
+            e.kind = Expr::Kind::Unary;
+            e.text = token.text;
+            e.loc = token.loc;
+            e.args.push_back(std::move(operand));
+            return e;
+        }
+        // Cast: (float3) x, (MyStruct) x
+        if (token.is("(") && isTypeName(peek(1)) && !isParameterName(peek(1).text)) {
+            size_t save = mPos;
+            advance();
+            TypeDesc type = parseType();
+            if (check(")")) {
+                advance();
+                Expr e;
+                e.kind = Expr::Kind::Cast;
+                e.castType = type;
+                e.loc = token.loc;
+                e.args.push_back(parseUnary());
+                return e;
+            }
+            mPos = save;
+        }
+        return parsePostfix(parsePrimary());
+    }
+
+    bool isParameterName(const std::string& name) const { return mEffect.findParameter(name) != nullptr; }
+
+    Expr parsePostfix(Expr e) {
+        for (;;) {
+            if (check(".")) {
+                advance();
+                const Token& member = expectIdentifier("a member name");
+                Expr m;
+                m.kind = Expr::Kind::Member;
+                m.text = member.text;
+                m.loc = e.loc;
+                m.args.push_back(std::move(e));
+                e = std::move(m);
+            } else if (check("[")) {
+                advance();
+                bool saved = mNoGreater;
+                mNoGreater = false;
+                Expr index = parseTernary();
+                mNoGreater = saved;
+                expect("]");
+                Expr m;
+                m.kind = Expr::Kind::Index;
+                m.loc = e.loc;
+                m.args.push_back(std::move(e));
+                m.args.push_back(std::move(index));
+                e = std::move(m);
+            } else if (check("++") || check("--")) {
+                advance();
+            } else {
+                return e;
+            }
+        }
+    }
+
+    std::vector<Expr> parseArguments() {
+        expect("(");
+        std::vector<Expr> args;
+        bool saved = mNoGreater;
+        mNoGreater = false;
+        while (!check(")")) {
+            if (!args.empty()) expect(",");
+            args.push_back(parseTernary());
+        }
+        advance();
+        mNoGreater = saved;
+        return args;
+    }
+
+    Expr parsePrimary() {
+        const Token& token = peek();
+        Expr e;
+        e.loc = token.loc;
+        switch (token.kind) {
+            case Token::Kind::Number:
+                advance();
+                e.kind = Expr::Kind::Number;
+                e.number = token.number;
+                e.isInteger = token.isInteger;
+                return e;
+            case Token::Kind::String:
+                e.kind = Expr::Kind::String;
+                while (peek().kind == Token::Kind::String) {
+                    const Token& piece = advance();
+                    SourceLoc pieceLoc = piece.loc;
+                    pieceLoc.column += 1;  // after the quote
+                    e.stringPieces.push_back({e.text.size(), pieceLoc});
+                    e.text += piece.text;
+                }
+                return e;
+            case Token::Kind::End: unexpected("an expression");
+            default: break;
+        }
+        if (token.is("(")) {
+            advance();
+            bool saved = mNoGreater;
+            mNoGreater = false;
+            Expr inner = parseTernary();
+            mNoGreater = saved;
+            expect(")");
+            return inner;
+        }
+        if (token.is("{")) {
+            const Token& open = advance();
+            e.kind = Expr::Kind::InitList;
+            bool saved = mNoGreater;
+            mNoGreater = false;
+            while (!check("}")) {
+                if (atEnd()) unclosed("{", open);
+                e.args.push_back(parseTernary());
+                if (!accept(",")) break;
+            }
+            mNoGreater = saved;
+            if (!check("}")) {
+                if (atEnd()) unclosed("{", open);
+                unexpected("',' or '}'");
+            }
+            advance();
+            return e;
+        }
+        if (token.is("<")) {  // <TextureName>
+            advance();
+            const Token& name = expectIdentifier("a texture name");
+            expectCloseAngle();
+            e.kind = Expr::Kind::TextureRef;
+            e.text = name.text;
+            return e;
+        }
+        if (token.kind != Token::Kind::Identifier) unexpected("an expression");
+        if (token.text == "compile") {
+            advance();
+            const Token& profile = expectIdentifier("a shader profile");
+            const Token& function = expectIdentifier("a function name");
+            e.kind = Expr::Kind::Compile;
+            e.profile = profile.text;
+            e.text = function.text;
+            if (check("(")) e.args = parseArguments();
+            return e;
+        }
+        if (token.text == "sampler_state")
+            fail(DiagId::UnexpectedToken, token.loc, {"an expression", token.text});
+        advance();
+        if (equalsIgnoreCase(token.text, "true") || equalsIgnoreCase(token.text, "false")) {
+            e.kind = Expr::Kind::Bool;
+            e.number = equalsIgnoreCase(token.text, "true") ? 1 : 0;
+            e.isInteger = true;
+            return e;
+        }
+        if (check("(")) {  // call or constructor
+            e.kind = Expr::Kind::Call;
+            e.text = token.text;
+            e.args = parseArguments();
+            return e;
+        }
+        if ((token.text == "vector" || token.text == "matrix") && check("<")) {
+            // vector<float,3>(...) constructor
+            mPos -= 1;
+            TypeDesc type = parseType();
+            e.kind = Expr::Kind::Call;
+            e.text = type.hlslName();
+            e.args = parseArguments();
+            return e;
+        }
+        e.kind = Expr::Kind::Identifier;
+        e.text = token.text;
+        return e;
+    }
+
+    std::vector<Token> mTokens;
+    size_t mPos = 0;
+    const std::string& mText;
+    Effect& mEffect;
+    detail::CountingSink& mDiag;
+    std::set<std::string> mTypeNames;
+    int mDepth = 0;
+    bool mNoGreater = false;
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::string& path,
+                                          const ParseOptions& options, DiagnosticSink& diagnostics) {
+    detail::CountingSink counted(diagnostics);
+    detail::PreprocessedSource pp;
+    auto effect = std::make_shared<Effect>();
+    effect->path = path;
+    if (!detail::preprocessEffect(source, path, options, counted, pp)) return nullptr;
+    effect->includedFiles = pp.includedFiles;
+    std::vector<Token> tokens = detail::lexEffect(pp.text, path, pp.files, effect->sourceMap, counted);
+    if (counted.errors() > 0) return nullptr;
+    Parser parser(std::move(tokens), pp.text, *effect, counted);
+    parser.parseEffect();
+    if (counted.errors() > 0) return nullptr;
+    return effect;
+}
+
+std::shared_ptr<Effect> parseEffectFile(const std::string& path, const ParseOptions& options,
+                                        DiagnosticSink& diagnostics) {
+    std::optional<std::string> text;
+    if (options.readFile) {
+        text = options.readFile(path);
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (in) {
+            std::ostringstream buffer;
+            buffer << in.rdbuf();
+            text = buffer.str();
+        }
+    }
+    if (!text) {
+        diagnostics.report(DiagId::FileNotFound, SourceLoc{path, 0, 0}, {path});
+        return nullptr;
+    }
+    return parseEffectSource(*text, path, options, diagnostics);
+}
+
+}  // namespace fx

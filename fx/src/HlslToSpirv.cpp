@@ -1,0 +1,106 @@
+// HlslToSpirv: glslang's HLSL front end, configured as TOOLCHAIN.md prescribes (see HlslToSpirv.h).
+#include "HlslToSpirv.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <algorithm>
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+namespace fx {
+
+namespace {
+
+// glslang keeps process-wide tables; initialised once, never finalised (tests and the runtime may compile
+// from several places).
+void initGlslang() {
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+constexpr EShMessages kMessages = static_cast<EShMessages>(
+    EShMsgReadHlsl |            // HLSL grammar and semantics
+    EShMsgHlslDX9Compatible |   // sampler2D is a combined sampler, tex2D/tex2Dproj exist
+    EShMsgSpvRules |            // SPIR-V output
+    EShMsgVulkanRules);         // HLSL input only works under Vulkan client semantics
+// glslang 12.0.0 has no EShMsgDisplayErrorColumn (later releases do): it reports file:line only, and the
+// effect compiler recovers the column from the token the message quotes.
+
+}  // namespace
+
+std::string hlslToSpirvOptionsKey() {
+    return "glslang-hlsl dx9 vulkan1.0 spv1.0 msgs=" + std::to_string(static_cast<int>(kMessages));
+}
+
+std::vector<HlslMessage> parseGlslangLog(const std::string& log) {
+    std::vector<HlslMessage> out;
+    // The file may itself contain ':' (a Windows path), so the numbers are matched from the right.
+    static const std::regex withColumn(R"(^(ERROR|WARNING): (.*):(\d+):(\d+): (.*)$)");
+    static const std::regex withLine(R"(^(ERROR|WARNING): (.*):(\d+): (.*)$)");
+    static const std::regex bare(R"(^(ERROR|WARNING): (.*)$)");
+    std::istringstream in(log);
+    std::string line;
+    std::smatch m;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        HlslMessage msg;
+        if (std::regex_match(line, m, withColumn)) {
+            msg = {m[1] == "ERROR", m[2], std::stoi(m[3]), std::stoi(m[4]), m[5]};
+        } else if (std::regex_match(line, m, withLine)) {
+            msg = {m[1] == "ERROR", m[2], std::stoi(m[3]), 0, m[4]};
+        } else if (std::regex_match(line, m, bare)) {
+            // "ERROR: 2 compilation errors.  No code generated." repeats what the lines above said.
+            if (line.find("compilation errors") != std::string::npos ||
+                line.find("compilation terminated") != std::string::npos)
+                continue;
+            msg = {m[1] == "ERROR", "", 0, 0, m[2]};
+        } else {
+            continue;
+        }
+        out.push_back(std::move(msg));
+    }
+    return out;
+}
+
+HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage, const std::string& entryPoint) {
+    initGlslang();
+    HlslCompileResult result;
+    EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+    glslang::TShader shader(language);
+    const char* text = source.c_str();
+    shader.setStrings(&text, 1);
+    shader.setEntryPoint(entryPoint.c_str());
+    shader.setSourceEntryPoint(entryPoint.c_str());
+    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    // Bindings are assigned later by SpirvToGlsl; auto-mapping keeps Vulkan rules satisfied meanwhile.
+    shader.setAutoMapBindings(true);
+    shader.setAutoMapLocations(true);
+
+    bool parsed = shader.parse(GetDefaultResources(), 100, false, kMessages);
+    result.log = shader.getInfoLog();
+    if (parsed) {
+        glslang::TProgram program;
+        program.addShader(&shader);
+        if (program.link(kMessages) && program.mapIO()) {
+            glslang::SpvOptions spvOptions;
+            spvOptions.validate = false;
+            spvOptions.disableOptimizer = true;
+            glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &spvOptions);
+            result.success = !result.spirv.empty();
+        } else {
+            result.log += program.getInfoLog();
+        }
+    }
+    result.messages = parseGlslangLog(result.log);
+    if (!result.success && std::none_of(result.messages.begin(), result.messages.end(),
+                                        [](const HlslMessage& m) { return m.error; }))
+        result.messages.push_back({true, "", 0, 0, "glslang failed: " + result.log});
+    return result;
+}
+
+}  // namespace fx

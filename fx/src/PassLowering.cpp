@@ -1,0 +1,719 @@
+// PassLowering: AST + compile expression -> HLSL unit (see PassLowering.h).
+//
+// [SECTION] Semantic tables
+// [SECTION] Types and literals
+// [SECTION] Effect declarations (verbatim, behind #line)
+// [SECTION] Depth-compare samplers
+// [SECTION] Entry-point wrapper
+// [SECTION] lowerStage()
+#include "PassLowering.h"
+
+#include <fx/Preshader.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <map>
+#include <set>
+
+namespace fx {
+
+namespace {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Splits "TEXCOORD3" into ("TEXCOORD", 3); no trailing digits -> index 0.
+std::pair<std::string, int> splitSemantic(const std::string& canonical) {
+    size_t end = canonical.size();
+    while (end > 0 && std::isdigit(static_cast<unsigned char>(canonical[end - 1]))) --end;
+    if (end == canonical.size()) return {canonical, 0};
+    return {canonical.substr(0, end), std::stoi(canonical.substr(end))};
+}
+
+}  // namespace
+
+// [SECTION] Semantic tables
+
+std::string canonicalSemantic(const std::string& semantic) {
+    std::string s = upper(semantic);
+    // Indexed semantics get their index spelled out so that TEXCOORD and TEXCOORD0 are one key.
+    static const char* kIndexed[] = {"TEXCOORD", "COLOR", "NORMAL", "TANGENT", "BINORMAL", "BLENDWEIGHT",
+                                     "BLENDINDICES", "POSITION", "PSIZE", "FOG", "DEPTH", "SV_TARGET"};
+    for (const char* name : kIndexed)
+        if (s == name) return s + "0";
+    return s;
+}
+
+std::optional<int> vertexInputLocation(const std::string& semantic) {
+    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
+    if ((name == "POSITION" || name == "SV_POSITION") && index == 0) return 0;
+    if (name == "NORMAL" && index == 0) return 1;
+    if (name == "TEXCOORD" && index < 8) return 2 + index;
+    if (name == "COLOR" && index < 2) return 10 + index;
+    if (name == "TANGENT" && index == 0) return 12;
+    if (name == "BINORMAL" && index == 0) return 13;
+    if (name == "BLENDWEIGHT" && index == 0) return 14;
+    if (name == "BLENDINDICES" && index == 0) return 15;
+    return std::nullopt;
+}
+
+std::string vertexInputSemantic(int location) {
+    if (location == 0) return "POSITION";
+    if (location == 1) return "NORMAL";
+    if (location >= 2 && location < 10) return "TEXCOORD" + std::to_string(location - 2);
+    if (location >= 10 && location < 12) return "COLOR" + std::to_string(location - 10);
+    if (location == 12) return "TANGENT";
+    if (location == 13) return "BINORMAL";
+    if (location == 14) return "BLENDWEIGHT";
+    if (location == 15) return "BLENDINDICES";
+    return "";
+}
+
+std::optional<int> varyingLocation(const std::string& semantic) {
+    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
+    if (name == "TEXCOORD" && index < 8) return index;
+    if (name == "COLOR" && index < 2) return 8 + index;
+    if (name == "NORMAL" && index == 0) return 10;
+    if (name == "TANGENT" && index == 0) return 11;
+    if (name == "BINORMAL" && index == 0) return 12;
+    if (name == "FOG" && index == 0) return 13;
+    return std::nullopt;
+}
+
+// [SECTION] Types and literals
+
+std::string hlslTypeName(const TypeDesc& type) {
+    std::string base;
+    switch (type.base) {
+        case BaseType::Bool: base = "bool"; break;
+        case BaseType::Int: base = "int"; break;
+        case BaseType::UInt: base = "uint"; break;
+        case BaseType::Half: base = "half"; break;
+        case BaseType::Double: base = "double"; break;
+        case BaseType::Float: base = "float"; break;
+        case BaseType::Sampler:
+        case BaseType::Sampler2D: return "sampler2D";
+        case BaseType::Sampler1D: return "sampler1D";
+        case BaseType::Sampler3D: return "sampler3D";
+        case BaseType::SamplerCube: return "samplerCUBE";
+        case BaseType::SamplerState: return "SamplerState";
+        case BaseType::SamplerComparisonState: return "SamplerComparisonState";
+        case BaseType::Texture:
+        case BaseType::Texture2D: return "Texture2D";
+        case BaseType::Texture1D: return "Texture1D";
+        case BaseType::Texture3D: return "Texture3D";
+        case BaseType::TextureCube: return "TextureCube";
+        case BaseType::Struct: return type.structName;
+        default: return "float";
+    }
+    if (type.shape == Shape::Vector) return base + std::to_string(type.cols);
+    if (type.shape == Shape::Matrix)
+        return std::string(type.rowMajor ? "row_major " : "") + base + std::to_string(type.rows) + "x" +
+               std::to_string(type.cols);
+    return base;
+}
+
+namespace {
+
+bool isNumericType(const TypeDesc& t) {
+    return t.base == BaseType::Bool || t.base == BaseType::Int || t.base == BaseType::UInt ||
+           t.base == BaseType::Half || t.base == BaseType::Float || t.base == BaseType::Double;
+}
+
+bool isSamplerType(const TypeDesc& t) {
+    return t.base == BaseType::Sampler || t.base == BaseType::Sampler1D || t.base == BaseType::Sampler2D ||
+           t.base == BaseType::Sampler3D || t.base == BaseType::SamplerCube;
+}
+
+std::string arraySuffix(const TypeDesc& t) {
+    std::string out;
+    for (int d : t.arrayDims) out += "[" + std::to_string(d) + "]";
+    return out;
+}
+
+std::string formatFloat(float x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(x));
+    std::string s = buf;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+// HLSL literal for a host value of type `type` ("float3(1.0, 2.0, 3.0)", "true", "4").
+std::string literalText(const Value& v, const TypeDesc& type) {
+    auto component = [&](float x) -> std::string {
+        if (type.base == BaseType::Bool) return x != 0.0f ? "true" : "false";
+        if (type.base == BaseType::Int || type.base == BaseType::UInt) return std::to_string(static_cast<long long>(x));
+        return formatFloat(x);
+    };
+    if (v.data.size() == 1 && type.shape == Shape::Scalar && type.arrayDims.empty()) return component(v.data[0]);
+    TypeDesc plain = type;
+    plain.rowMajor = false;
+    plain.arrayDims.clear();
+    std::string out = hlslTypeName(plain) + "(";
+    for (size_t i = 0; i < v.data.size(); ++i) out += (i ? ", " : "") + component(v.data[i]);
+    return out + ")";
+}
+
+// An expression with no parameter references: it can be folded into the HLSL as a literal.
+bool isLiteralOnly(const Expr& e) {
+    if (e.kind == Expr::Kind::Identifier) return e.text == "true" || e.text == "false";
+    if (e.kind == Expr::Kind::String || e.kind == Expr::Kind::TextureRef || e.kind == Expr::Kind::Compile) return false;
+    for (const Expr& a : e.args)
+        if (!isLiteralOnly(a)) return false;
+    return true;
+}
+
+const Parameter* findParam(const Effect& effect, const std::string& name) {
+    for (const Parameter& p : effect.parameters)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+const StructDecl* findStructDecl(const Effect& effect, const std::string& name) {
+    for (const StructDecl& s : effect.structs)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+// Identifiers of HLSL text, skipping comments and string literals.
+std::set<std::string> identifiersIn(const std::string& text) {
+    std::set<std::string> out;
+    for (size_t i = 0; i < text.size();) {
+        char c = text[i];
+        if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            while (i < text.size() && text[i] != '\n') ++i;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            size_t end = text.find("*/", i + 2);
+            i = end == std::string::npos ? text.size() : end + 2;
+        } else if (c == '"') {
+            ++i;
+            while (i < text.size() && text[i] != '"') i += text[i] == '\\' ? 2 : 1;
+            ++i;
+        } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+            size_t start = i;
+            while (i < text.size() && isIdentChar(text[i])) ++i;
+            out.insert(text.substr(start, i - start));
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+// [SECTION] Depth-compare samplers
+
+const Parameter* samplerTexture(const Effect& effect, const Parameter& sampler) {
+    for (const StateAssignment& s : sampler.samplerState) {
+        if (upper(s.name) != "TEXTURE") continue;
+        if (s.value.kind == Expr::Kind::TextureRef || s.value.kind == Expr::Kind::Identifier)
+            return findParam(effect, s.value.text);
+    }
+    return nullptr;
+}
+
+bool isDepthCompareSampler(const Effect& effect, const Parameter& sampler) {
+    const Parameter* texture = samplerTexture(effect, sampler);
+    if (!texture) return false;
+    if (upper(texture->semantic) == "RENDERDEPTHSTENCILTARGET") return true;
+    if (const Annotation* format = texture->annotation("Format"); format && format->value.kind == Expr::Kind::String) {
+        auto f = parseTextureFormat(format->value.text);
+        return f && isDepthFormat(*f);
+    }
+    return false;
+}
+
+namespace {
+
+// glslang 12.0 decomposes HLSL's lit() with n.h * m where HLSL specifies pow(n.h, m) (its specular term
+// then grows linearly with the exponent and saturates everything lit). Every unit gets a correct lit and
+// calls of lit( are renamed to it by rewriteIntrinsics. HLSL: lit(n.l, n.h, m) = (1, max(n.l, 0),
+// (n.l < 0 || n.h < 0) ? 0 : pow(n.h, m), 1).
+constexpr const char* kLitReplacement =
+    "float4 fx_lit(float n_dot_l, float n_dot_h, float m)\n"
+    "{ return float4(1, max(n_dot_l, 0), (n_dot_l < 0 || n_dot_h < 0) ? 0 : pow(max(n_dot_h, 0), m), 1); }\n";
+
+// Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
+// calls of the comparison helpers. A depth sampler reaching a function through a parameter is not
+// rewritten: the parameter's name is not S (and if it is, it names the global anyway).
+std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers) {
+    std::string out;
+    size_t i = 0;
+    auto skipSpace = [&](size_t j) {
+        while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+        return j;
+    };
+    while (i < text.size()) {
+        char c = text[i];
+        if (c == '/' && i + 1 < text.size() && (text[i + 1] == '/' || text[i + 1] == '*')) {
+            size_t end = text[i + 1] == '/' ? text.find('\n', i) : text.find("*/", i + 2);
+            end = end == std::string::npos ? text.size() : end + (text[i + 1] == '/' ? 0 : 2);
+            out.append(text, i, end - i);
+            i = end;
+            continue;
+        }
+        if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_') || (i > 0 && isIdentChar(text[i - 1]))) {
+            out += c;
+            ++i;
+            continue;
+        }
+        size_t start = i;
+        while (i < text.size() && isIdentChar(text[i])) ++i;
+        std::string word = text.substr(start, i - start);
+        if (word == "lit" && skipSpace(i) < text.size() && text[skipSpace(i)] == '(') {
+            out += "fx_lit";
+            continue;
+        }
+        if (word == "tex2D" || word == "tex2Dproj") {
+            size_t p = skipSpace(i);
+            if (p < text.size() && text[p] == '(') {
+                size_t s = skipSpace(p + 1), e = s;
+                while (e < text.size() && isIdentChar(text[e])) ++e;
+                std::string name = text.substr(s, e - s);
+                size_t comma = skipSpace(e);
+                if (depthSamplers.count(name) && comma < text.size() && text[comma] == ',') {
+                    out += "fx_" + word + "_" + name + "(";
+                    i = comma + 1;
+                    continue;
+                }
+            }
+        }
+        out += word;
+    }
+    return out;
+}
+
+// The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
+// the texel (filtered when the sampler filters linearly), in every component.
+std::string depthSamplerHelpers(const std::string& s) {
+    std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
+    return "Texture2D " + t + ";\nSamplerComparisonState " + c + ";\n" +
+           "float4 fx_tex2D_" + s + "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
+           "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
+           "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c +
+           ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
+}
+
+// [SECTION] Effect declarations (verbatim, behind #line)
+
+void emitAt(std::string& out, const std::string& text, const SourceLoc& loc) {
+    if (loc.line > 0) {
+        out += "#line " + std::to_string(loc.line) + " \"" + loc.file + "\"\n";
+        if (loc.column > 1) out.append(static_cast<size_t>(loc.column - 1), ' ');
+    }
+    out += text;
+    out += "\n";
+}
+
+// Functions the entry point reaches (by name, over-approximated by identifiers in the bodies), plus any
+// named by static initializers and verbatim declarations. Unreached functions are not emitted, so that
+// editing one function only changes the units (and cache keys) of the passes that use it.
+std::set<std::string> reachableFunctions(const Effect& effect, const std::string& entry) {
+    std::set<std::string> names;
+    for (const FunctionDecl& f : effect.functions) names.insert(f.name);
+    std::set<std::string> reached{entry};
+    std::vector<std::string> work{entry};
+    auto visitText = [&](const std::string& text) {
+        for (const std::string& id : identifiersIn(text))
+            if (names.count(id) && reached.insert(id).second) work.push_back(id);
+    };
+    for (const Parameter& p : effect.parameters)
+        if (p.isStatic) visitText(p.hlslText);
+    for (const VerbatimDecl& v : effect.verbatim) visitText(v.hlslText);
+    while (!work.empty()) {
+        std::string name = work.back();
+        work.pop_back();
+        for (const FunctionDecl& f : effect.functions)
+            if (f.name == name) visitText(f.hlslText);
+    }
+    return reached;
+}
+
+// [SECTION] Entry-point wrapper
+
+// One leaf of a (possibly nested) struct: where it lives and what semantic it carries.
+struct Field {
+    std::string lvalue;  // "fx_p0.Position"
+    TypeDesc type;
+    std::string semantic;  // canonical
+    std::string interpolation;
+    SourceLoc loc;
+};
+
+void gatherFields(const Effect& effect, const TypeDesc& type, const std::string& semantic,
+                  const std::string& interpolation, const std::string& lvalue, const SourceLoc& loc,
+                  std::vector<Field>& out, int depth = 0) {
+    if (type.base == BaseType::Struct && type.arrayDims.empty()) {
+        const StructDecl* decl = findStructDecl(effect, type.structName);
+        if (!decl || depth > 8) return;
+        for (const StructMember& m : decl->members)
+            gatherFields(effect, m.type, m.semantic, m.interpolation, lvalue + "." + m.name, m.loc, out, depth + 1);
+        return;
+    }
+    if (semantic.empty()) return;  // left zero, as an unbound D3D9 register reads
+    out.push_back(Field{lvalue, type, canonicalSemantic(semantic), interpolation, loc});
+}
+
+int fieldComponents(const Field& f) { return f.type.shape == Shape::Matrix ? f.type.rows * f.type.cols : f.type.cols; }
+
+// `expr` (a float4) narrowed to the field's type: ".x", ".xy", ".xyz", with a cast for ints/bools.
+std::string narrowTo(const Field& f, const std::string& expr) {
+    static const char* kSwizzle[] = {"", ".x", ".xy", ".xyz", ""};
+    int n = std::clamp(f.type.cols, 1, 4);
+    TypeDesc t = f.type;
+    t.arrayDims.clear();
+    return "(" + hlslTypeName(t) + ")(" + expr + kSwizzle[n] + ")";
+}
+
+class WrapperBuilder {
+public:
+    WrapperBuilder(const Effect& effect, const FunctionDecl& fn, const Expr& compile, ShaderStage stage,
+                   std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics)
+        : mEffect(effect), mFn(fn), mCompile(compile), mStage(stage), mArguments(arguments),
+          mDiagnostics(diagnostics) {}
+
+    bool build(std::string& globals, std::string& wrapper);
+
+private:
+    bool fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        mDiagnostics.report(id, loc, args);
+        return false;
+    }
+    bool uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value, std::string& globals);
+    bool vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body);
+    bool pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body);
+    bool vertexOutputs(const std::vector<Field>& fields, std::string& members, std::string& body);
+    bool pixelOutputs(const std::vector<Field>& fields, std::string& members, std::string& body);
+
+    const Effect& mEffect;
+    const FunctionDecl& mFn;
+    const Expr& mCompile;
+    ShaderStage mStage;
+    std::vector<CompileArgument>& mArguments;
+    DiagnosticSink& mDiagnostics;
+};
+
+bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value,
+                                     std::string& globals) {
+    const Expr* expr = nullptr;
+    if (argIndex < mCompile.args.size()) expr = &mCompile.args[argIndex];
+    else if (p.defaultValue) expr = &*p.defaultValue;
+    else
+        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
+                    {"no argument for uniform parameter '" + p.name + "' of '" + mFn.name + "'"});
+    if (isSamplerType(p.type) || p.type.base == BaseType::SamplerState) {
+        const Parameter* s = expr->kind == Expr::Kind::Identifier ? findParam(mEffect, expr->text) : nullptr;
+        if (!s || !isSamplerType(s->type))
+            return fail(DiagId::InvalidCompileExpression, expr->loc,
+                        {"argument for sampler parameter '" + p.name + "' must name an effect sampler"});
+        value = s->name;
+        return true;
+    }
+    if (!isNumericType(p.type))
+        return fail(DiagId::InvalidCompileExpression, expr->loc,
+                    {"uniform parameter '" + p.name + "' of type " + hlslTypeName(p.type) + " is not supported"});
+    if (isLiteralOnly(*expr)) {
+        // Folded, so that `if (PCF)` on a literal argument compiles away as in fxc.
+        auto v = evaluate(*expr, nullptr, &p.type, &mDiagnostics);
+        if (!v) return false;
+        value = literalText(*v, p.type);
+        return true;
+    }
+    std::string name = "fx_arg" + std::to_string(mArguments.size());
+    mArguments.push_back(CompileArgument{*expr, p.type, name});
+    globals += hlslTypeName(p.type) + " " + name + arraySuffix(p.type) + ";\n";
+    value = name;
+    return true;
+}
+
+bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
+    // One attribute per semantic, as wide as its widest use.
+    std::map<int, std::pair<TypeDesc, std::string>> attributes;  // location -> (type, semantic)
+    for (const Field& f : fields) {
+        auto location = vertexInputLocation(f.semantic);
+        if (!location || f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
+            return fail(DiagId::UnsupportedFeature, f.loc,
+                        {"vertex input semantic '" + f.semantic + "' is not supported"});
+        auto [it, inserted] = attributes.try_emplace(*location, f.type, f.semantic);
+        if (!inserted && f.type.cols > it->second.first.cols) it->second.first = f.type;
+    }
+    for (auto& [location, attr] : attributes) {
+        TypeDesc t = attr.first;
+        t.shape = t.cols == 1 ? Shape::Scalar : Shape::Vector;
+        if (!params.empty()) params += ",\n    ";
+        params += "[[vk::location(" + std::to_string(location) + ")]] " + hlslTypeName(t) + " fx_in" +
+                  std::to_string(location) + " : FX_IN" + std::to_string(location);
+    }
+    for (const Field& f : fields) {
+        int location = *vertexInputLocation(f.semantic);
+        const TypeDesc& declared = attributes[location].first;
+        std::string src = "fx_in" + std::to_string(location);
+        static const char* kSwizzle[] = {"", ".x", ".xy", ".xyz", ""};
+        if (f.type.cols < declared.cols) src += kSwizzle[std::clamp(f.type.cols, 1, 4)];
+        body += "    " + f.lvalue + " = " + src + ";\n";
+    }
+    return true;
+}
+
+bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
+    std::set<int> varyings;
+    std::map<int, std::string> interpolation;
+    bool fragCoord = false, frontFace = false;
+    for (const Field& f : fields) {
+        const std::string& s = f.semantic;
+        if (s == "VPOS0" || s == "VPOS") {
+            // D3D9 VPOS is the pixel's integer top-left corner; SV_Position is its centre.
+            fragCoord = true;
+            int n = fieldComponents(f);
+            std::string v = n == 1 ? "floor(fx_fragCoord.x)"
+                                   : n == 2 ? "floor(fx_fragCoord.xy)"
+                                            : "float" + std::to_string(n) + "(floor(fx_fragCoord.xy)" +
+                                                  (n == 3 ? ", 0)" : ", 0, 1)");
+            body += "    " + f.lvalue + " = " + v + ";\n";
+        } else if (s == "POSITION0" || s == "SV_POSITION") {
+            // ps_2_0 effects often reuse the vertex output struct; its POSITION reads the fragment position.
+            fragCoord = true;
+            body += "    " + f.lvalue + " = " + narrowTo(f, "fx_fragCoord") + ";\n";
+        } else if (s == "VFACE" || s == "SV_ISFRONTFACE") {
+            frontFace = true;
+            body += "    " + f.lvalue + " = " + (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
+        } else if (auto location = varyingLocation(s)) {
+            if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
+                return fail(DiagId::UnsupportedFeature, f.loc, {"matrix or array varying '" + f.lvalue + "'"});
+            varyings.insert(*location);
+            if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
+            body += "    " + f.lvalue + " = " + narrowTo(f, "fx_v" + std::to_string(*location)) + ";\n";
+        } else {
+            return fail(DiagId::UnsupportedFeature, f.loc, {"pixel input semantic '" + f.semantic + "' is not supported"});
+        }
+    }
+    auto add = [&](const std::string& p) { params += (params.empty() ? "" : ",\n    ") + p; };
+    // Varyings are float4 in both stages so that they link whatever width each stage declares.
+    for (int location : varyings) {
+        std::string interp = interpolation.count(location) ? interpolation[location] + " " : "";
+        add("[[vk::location(" + std::to_string(location) + ")]] " + interp + "float4 fx_v" + std::to_string(location) +
+            " : FX_V" + std::to_string(location));
+    }
+    if (fragCoord) add("float4 fx_fragCoord : SV_Position");
+    if (frontFace) add("bool fx_frontFace : SV_IsFrontFace");
+    return true;
+}
+
+bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string& members, std::string& body) {
+    bool position = false;
+    std::set<int> used;
+    for (const Field& f : fields) {
+        const std::string& s = f.semantic;
+        if (s == "POSITION0" || s == "SV_POSITION") {
+            if (position) continue;
+            position = true;
+            members += "    float4 fx_position : SV_Position;\n";
+            body += "    fx_out.fx_position = " + f.lvalue + ";\n";
+        } else if (s.rfind("PSIZE", 0) == 0) {
+            continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely rely on it
+        } else if (auto location = varyingLocation(s)) {
+            if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
+                return fail(DiagId::UnsupportedFeature, f.loc, {"matrix or array varying '" + f.lvalue + "'"});
+            if (!used.insert(*location).second) continue;
+            std::string name = "fx_v" + std::to_string(*location);
+            members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
+                       std::to_string(*location) + ";\n";
+            int n = std::clamp(f.type.cols, 1, 4);
+            std::string v = "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + f.lvalue + ")";
+            body += "    fx_out." + name + " = " +
+                    (n == 4 ? v : "float4(" + v + (n == 1 ? ", 0, 0, 1)" : n == 2 ? ", 0, 1)" : ", 1)")) + ";\n";
+        } else {
+            return fail(DiagId::UnsupportedFeature, f.loc, {"vertex output semantic '" + s + "' is not supported"});
+        }
+    }
+    return true;
+}
+
+bool WrapperBuilder::pixelOutputs(const std::vector<Field>& fields, std::string& members, std::string& body) {
+    std::set<std::string> used;
+    for (const Field& f : fields) {
+        auto [name, index] = splitSemantic(f.semantic);
+        if (name == "COLOR" || name == "SV_TARGET") {
+            if (!used.insert("c" + std::to_string(index)).second) continue;
+            TypeDesc t = f.type;
+            t.arrayDims.clear();
+            members += "    " + hlslTypeName(t) + " fx_c" + std::to_string(index) + " : SV_Target" +
+                       std::to_string(index) + ";\n";
+            body += "    fx_out.fx_c" + std::to_string(index) + " = " + f.lvalue + ";\n";
+        } else if (name == "DEPTH" || name == "SV_DEPTH") {
+            if (!used.insert("depth").second) continue;
+            members += "    float fx_depth : SV_Depth;\n";
+            body += "    fx_out.fx_depth = (float)(" + f.lvalue + ");\n";
+        } else {
+            return fail(DiagId::UnsupportedFeature, f.loc, {"pixel output semantic '" + f.semantic + "' is not supported"});
+        }
+    }
+    return true;
+}
+
+bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
+    std::vector<Field> inputs, outputs;
+    std::string locals, call, callArgs;
+    size_t uniformIndex = 0;
+    for (size_t i = 0; i < mFn.params.size(); ++i) {
+        const FunctionParam& p = mFn.params[i];
+        std::string arg;
+        if (p.isUniform) {
+            if (!uniformArgument(p, uniformIndex++, arg, globals)) return false;
+        } else {
+            arg = "fx_p" + std::to_string(i);
+            TypeDesc t = p.type;
+            std::string dims = arraySuffix(t);
+            t.arrayDims.clear();
+            locals += "    " + hlslTypeName(t) + " " + arg + dims + " = (" + hlslTypeName(t) + dims + ")0;\n";
+            if (p.direction != FunctionParam::Direction::Out)
+                gatherFields(mEffect, p.type, p.semantic, p.interpolation, arg, p.loc, inputs);
+            if (p.direction != FunctionParam::Direction::In)
+                gatherFields(mEffect, p.type, p.semantic, p.interpolation, arg, p.loc, outputs);
+        }
+        callArgs += (i ? ", " : "") + arg;
+    }
+    if (uniformIndex < mCompile.args.size())
+        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
+                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
+                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    bool hasReturn = mFn.returnType.base != BaseType::Void;
+    if (hasReturn) {
+        TypeDesc t = mFn.returnType;
+        locals += "    " + hlslTypeName(t) + " fx_r;\n";
+        call = "    fx_r = " + mFn.name + "(" + callArgs + ");\n";
+        gatherFields(mEffect, t, mFn.returnSemantic, "", "fx_r", mFn.loc, outputs);
+    } else {
+        call = "    " + mFn.name + "(" + callArgs + ");\n";
+    }
+    std::string params, inputBody, members, outputBody;
+    bool vertex = mStage == ShaderStage::Vertex;
+    if (!(vertex ? vertexInputs(inputs, params, inputBody) : pixelInputs(inputs, params, inputBody))) return false;
+    if (!(vertex ? vertexOutputs(outputs, members, outputBody) : pixelOutputs(outputs, members, outputBody)))
+        return false;
+    std::string outStruct = vertex ? "fx_VsOutput" : "fx_PsOutput";
+    if (members.empty()) members = vertex ? "    float4 fx_position : SV_Position;\n" : "    float4 fx_c0 : SV_Target0;\n";
+    wrapper += "struct " + outStruct + " {\n" + members + "};\n";
+    wrapper += outStruct + " " + std::string(kWrapperEntryPoint) + "(" + (params.empty() ? "" : "\n    " + params) + ")\n{\n";
+    wrapper += "    " + outStruct + " fx_out = (" + outStruct + ")0;\n";
+    wrapper += locals + inputBody + call + outputBody + "    return fx_out;\n}\n";
+    return true;
+}
+
+bool profileMatches(const std::string& profile, ShaderStage stage) {
+    static const char* kVersions[] = {"1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw",
+                                      "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"};
+    std::string prefix = stage == ShaderStage::Vertex ? "vs_" : "ps_";
+    std::string p = profile;
+    for (char& c : p) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (p.rfind(prefix, 0) != 0) return false;
+    std::string version = p.substr(3);
+    if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4")) return false;
+    if (stage == ShaderStage::Fragment && version == "1_1") return true;
+    return std::any_of(std::begin(kVersions), std::end(kVersions), [&](const char* v) { return version == v; });
+}
+
+}  // namespace
+
+// [SECTION] lowerStage()
+
+std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
+                                       std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics) {
+    if (!profileMatches(compile.profile, stage)) {
+        diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
+        return std::nullopt;
+    }
+    const FunctionDecl* fn = nullptr;
+    for (const FunctionDecl& f : effect.functions)
+        if (f.name == compile.text && f.hasBody) {
+            fn = &f;
+            break;
+        }
+    if (!fn) {
+        diagnostics.report(DiagId::MissingEntryPoint, compile.loc, {compile.text});
+        return std::nullopt;
+    }
+
+    LoweredStage out;
+    out.stage = stage;
+    out.entryPoint = fn->name;
+    out.profile = compile.profile;
+    out.compileLoc = compile.loc;
+
+    std::set<std::string> depth;
+    for (const Parameter& p : effect.parameters)
+        if (isSamplerType(p.type) && isDepthCompareSampler(effect, p)) depth.insert(p.name);
+
+    // Wrapper first (it may fail on arguments) but emitted last.
+    size_t firstArgument = arguments.size();
+    std::string argumentGlobals, wrapper;
+    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics);
+    if (!builder.build(argumentGlobals, wrapper)) {
+        arguments.resize(firstArgument);
+        return std::nullopt;
+    }
+
+    std::set<std::string> reached = reachableFunctions(effect, fn->name);
+    std::set<std::string> usedDepth;
+    std::string& hlsl = out.hlsl;
+    hlsl += "// shadowfx: " + std::string(stage == ShaderStage::Vertex ? "vertex" : "pixel") + " shader " +
+            fn->name + " (" + compile.profile + ")\n";
+    hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + kLitReplacement;
+    for (const DeclRef& ref : effect.order) {
+        switch (ref.kind) {
+            case DeclRef::Kind::Parameter: {
+                const Parameter& p = effect.parameters[ref.index];
+                if (p.isStatic) {
+                    emitAt(hlsl, rewriteIntrinsics(p.hlslText, depth), p.hlslLoc);
+                } else if (isNumericType(p.type) && p.type.base != BaseType::String) {
+                    // A plain global: it lands in the $Global block; the runtime fills it.
+                    hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
+                } else if (isSamplerType(p.type)) {
+                    if (depth.count(p.name)) {
+                        hlsl += depthSamplerHelpers(p.name);
+                        usedDepth.insert(p.name);
+                    } else {
+                        TypeDesc t = p.type;
+                        if (t.base == BaseType::Sampler) {
+                            const Parameter* tex = samplerTexture(effect, p);
+                            t.base = tex && tex->type.base == BaseType::TextureCube ? BaseType::SamplerCube
+                                     : tex && tex->type.base == BaseType::Texture3D ? BaseType::Sampler3D
+                                     : tex && tex->type.base == BaseType::Texture1D ? BaseType::Sampler1D
+                                                                                    : BaseType::Sampler2D;
+                        }
+                        hlsl += hlslTypeName(t) + " " + p.name + arraySuffix(p.type) + ";\n";
+                    }
+                }
+                break;  // textures, strings and shader variables have no HLSL counterpart
+            }
+            case DeclRef::Kind::Struct: {
+                const StructDecl& s = effect.structs[ref.index];
+                emitAt(hlsl, s.hlslText, s.hlslLoc);
+                break;
+            }
+            case DeclRef::Kind::Function: {
+                const FunctionDecl& f = effect.functions[ref.index];
+                if (reached.count(f.name)) emitAt(hlsl, rewriteIntrinsics(f.hlslText, depth), f.hlslLoc);
+                break;
+            }
+            case DeclRef::Kind::Verbatim: {
+                const VerbatimDecl& v = effect.verbatim[ref.index];
+                emitAt(hlsl, rewriteIntrinsics(v.hlslText, depth), v.hlslLoc);
+                break;
+            }
+        }
+    }
+    hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + argumentGlobals + wrapper;
+    out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
+    return out;
+}
+
+}  // namespace fx

@@ -1,0 +1,62 @@
+// PassLowering: one pass's compile expression -> one HLSL unit that glslang's HLSL front end accepts.
+//
+// The effect's declarations are emitted verbatim (each behind `#line`, so glslang names the user's file,
+// line and column); effect-only syntax (textures, sampler_state, techniques, strings) is dropped;
+// parameters become plain globals of the `$Global` block. The user's entry point is never rewritten:
+// a generated wrapper `fx_main` takes D3D9-semantic inputs at fixed locations, rebuilds the user's
+// structs, calls the user's function with the compile expression's uniform arguments, and writes the
+// results to SV_Position / fixed varying locations / SV_Target n, so that stages link by semantic as on
+// D3D9.
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fx {
+
+// [SECTION] Semantic tables
+// Vertex attribute locations: POSITION 0, NORMAL 1, TEXCOORD0..7 -> 2..9, COLOR0..1 -> 10..11,
+// TANGENT 12, BINORMAL 13, BLENDWEIGHT 14, BLENDINDICES 15.
+std::optional<int> vertexInputLocation(const std::string& semantic);
+std::string vertexInputSemantic(int location);  // the inverse ("TEXCOORD0"); "" if none
+// Varying locations shared by both stages: TEXCOORDn -> n, COLORn -> 8+n, NORMAL 10, TANGENT 11,
+// BINORMAL 12, FOG 13. Returns nullopt for semantics that are not varyings (POSITION, PSIZE, VPOS...).
+std::optional<int> varyingLocation(const std::string& semantic);
+// "texcoord" -> "TEXCOORD0", "COLOR" -> "COLOR0", "SV_Position" -> "SV_POSITION".
+std::string canonicalSemantic(const std::string& semantic);
+
+// The generated entry point's name in every unit.
+inline constexpr const char* kWrapperEntryPoint = "fx_main";
+// The #line file name of generated code: errors there are reported at the pass's compile expression.
+inline constexpr const char* kGeneratedFile = "<fx-generated>";
+
+struct LoweredStage {
+    ShaderStage stage = ShaderStage::Vertex;
+    std::string entryPoint;  // the user's function
+    std::string profile;
+    std::string hlsl;
+    SourceLoc compileLoc;                  // the compile expression: where generated-code errors go
+    std::vector<std::string> depthSamplers;  // effect samplers sampled with depth comparison
+};
+
+// Lowers the shader of one stage of a pass. `compile` is the state's Compile expression. Compile
+// arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
+// there). Returns nullopt after reporting an error.
+std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
+                                       std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics);
+
+// Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
+// they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.
+bool isDepthCompareSampler(const Effect& effect, const Parameter& sampler);
+// The texture parameter a sampler's sampler_state names (Texture = <t>), if any.
+const Parameter* samplerTexture(const Effect& effect, const Parameter& sampler);
+
+// HLSL spelling of a type for a declaration ("float4x4", "row_major float4x3", "sampler2D").
+std::string hlslTypeName(const TypeDesc& type);
+
+}  // namespace fx

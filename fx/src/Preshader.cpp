@@ -1,0 +1,628 @@
+// Preshader: a tree-walking evaluator for effect expressions with HLSL semantics.
+//
+// Values are flat float arrays plus a TypeDesc (see Value.h: matrices row by row). Every operator works
+// component-wise after HLSL's scalar broadcast; mul() follows HLSL's convention that a vector on the left
+// is a row vector and one on the right a column vector.
+//
+// [SECTION] Type helpers
+// [SECTION] Conversion
+// [SECTION] Operators
+// [SECTION] Intrinsics and constructors
+// [SECTION] Members and indexing
+// [SECTION] evaluate()
+#include <fx/Preshader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+namespace fx {
+
+namespace {
+
+// [SECTION] Type helpers
+
+bool isNumericBase(BaseType b) {
+    return b == BaseType::Bool || b == BaseType::Int || b == BaseType::UInt || b == BaseType::Half ||
+           b == BaseType::Float || b == BaseType::Double;
+}
+
+size_t elementCount(const TypeDesc& t) {
+    size_t n = 1;
+    for (int d : t.arrayDims) n *= static_cast<size_t>(d > 0 ? d : 1);
+    return n;
+}
+
+size_t componentCount(const TypeDesc& t) { return static_cast<size_t>(t.rows * t.cols) * elementCount(t); }
+
+int baseRank(BaseType b) {
+    switch (b) {
+        case BaseType::Bool: return 0;
+        case BaseType::Int: return 1;
+        case BaseType::UInt: return 2;
+        case BaseType::Half: return 3;
+        case BaseType::Float: return 4;
+        case BaseType::Double: return 5;
+        default: return 4;
+    }
+}
+
+TypeDesc makeType(BaseType base, Shape shape, int rows, int cols) {
+    TypeDesc t;
+    t.base = base;
+    t.shape = shape;
+    t.rows = rows;
+    t.cols = cols;
+    return t;
+}
+
+TypeDesc vectorType(BaseType base, int n) {
+    return makeType(base, n == 1 ? Shape::Scalar : Shape::Vector, 1, n);
+}
+
+Value makeValue(const TypeDesc& type, std::vector<float> data) {
+    Value v;
+    v.type = type;
+    v.data = std::move(data);
+    return v;
+}
+
+// Stores a component in the representation of its base type: bools 0/1, ints truncated.
+float normalizeComponent(BaseType base, float x) {
+    switch (base) {
+        case BaseType::Bool: return x != 0.0f ? 1.0f : 0.0f;
+        case BaseType::Int: return std::trunc(x);
+        case BaseType::UInt: return x < 0 ? static_cast<float>(static_cast<uint32_t>(static_cast<int64_t>(x)))
+                                          : std::trunc(x);
+        default: return x;
+    }
+}
+
+// Parses a type constructor name: "float4" -> (Float, 1, 4, Vector), "float4x3", "int", "bool2".
+std::optional<TypeDesc> parseTypeName(std::string_view name) {
+    static const std::pair<std::string_view, BaseType> kBases[] = {
+        {"float", BaseType::Float}, {"half", BaseType::Half}, {"double", BaseType::Double},
+        {"int", BaseType::Int},     {"uint", BaseType::UInt}, {"bool", BaseType::Bool},
+        {"dword", BaseType::UInt},
+    };
+    for (const auto& [prefix, base] : kBases) {
+        if (name.substr(0, prefix.size()) != prefix) continue;
+        std::string_view rest = name.substr(prefix.size());
+        if (rest.empty()) return makeType(base, Shape::Scalar, 1, 1);
+        if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return vectorType(base, rest[0] - '0');
+        if (rest.size() == 3 && rest[1] == 'x' && rest[0] >= '1' && rest[0] <= '4' && rest[2] >= '1' &&
+            rest[2] <= '4')
+            return makeType(base, Shape::Matrix, rest[0] - '0', rest[2] - '0');
+    }
+    return std::nullopt;
+}
+
+class Evaluator {
+public:
+    Evaluator(const ParameterLookup& lookup, DiagnosticSink* diagnostics)
+        : mLookup(lookup), mDiagnostics(diagnostics) {}
+
+    std::optional<Value> eval(const Expr& e);
+    std::optional<Value> convert(const Value& v, const TypeDesc& target, const SourceLoc& loc);
+
+private:
+    std::nullopt_t fail(DiagId id, const SourceLoc& loc, const std::string& text) {
+        if (mDiagnostics && !mFailed) mDiagnostics->report(id, loc, {text});
+        mFailed = true;
+        return std::nullopt;
+    }
+
+    std::optional<Value> unary(const Expr& e);
+    std::optional<Value> binary(const Expr& e);
+    std::optional<Value> ternary(const Expr& e);
+    std::optional<Value> call(const Expr& e);
+    std::optional<Value> intrinsic(const Expr& e, const std::string& name, std::vector<Value>& args);
+    std::optional<Value> member(const Expr& e);
+    std::optional<Value> index(const Expr& e);
+    std::optional<Value> initList(const Expr& e);
+
+    // Brings two operands to a common shape (scalar broadcast, or truncation to the smaller vector).
+    bool broadcast(Value& a, Value& b, const SourceLoc& loc);
+
+    const ParameterLookup& mLookup;
+    DiagnosticSink* mDiagnostics;
+    bool mFailed = false;
+};
+
+// [SECTION] Conversion
+
+std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, const SourceLoc& loc) {
+    if (target.base == BaseType::String) {
+        if (v.type.base != BaseType::String) return fail(DiagId::TypeMismatch, loc, "expected a string");
+        Value out = v;
+        out.type = target;
+        return out;
+    }
+    if (!isNumericBase(target.base)) return fail(DiagId::TypeMismatch, loc, "cannot evaluate a " + target.hlslName());
+    if (v.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, "expected a number, found a string");
+    size_t want = componentCount(target);
+    std::vector<float> out;
+    if (v.data.size() == 1) {
+        out.assign(want, v.data[0]);
+    } else if (target.shape == Shape::Matrix && v.type.shape == Shape::Matrix && target.arrayDims.empty() &&
+               v.type.arrayDims.empty()) {
+        // Matrix truncation keeps the upper-left block, as HLSL does.
+        if (target.rows > v.type.rows || target.cols > v.type.cols)
+            return fail(DiagId::TypeMismatch, loc, "cannot convert " + v.type.hlslName() + " to " + target.hlslName());
+        for (int r = 0; r < target.rows; ++r)
+            for (int c = 0; c < target.cols; ++c) out.push_back(v.data[static_cast<size_t>(r * v.type.cols + c)]);
+    } else if (v.data.size() >= want) {
+        out.assign(v.data.begin(), v.data.begin() + static_cast<std::ptrdiff_t>(want));
+    } else {
+        return fail(DiagId::TypeMismatch, loc,
+                    "cannot convert " + std::to_string(v.data.size()) + " components to " + target.hlslName() +
+                        " (" + std::to_string(want) + " components)");
+    }
+    for (float& x : out) x = normalizeComponent(target.base, x);
+    return makeValue(target, std::move(out));
+}
+
+bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
+    if (a.data.size() == b.data.size()) return true;
+    if (a.data.size() == 1) {
+        a.data.assign(b.data.size(), a.data[0]);
+        a.type = [&] { TypeDesc t = b.type; t.base = a.type.base; return t; }();
+        return true;
+    }
+    if (b.data.size() == 1) {
+        b.data.assign(a.data.size(), b.data[0]);
+        b.type = [&] { TypeDesc t = a.type; t.base = b.type.base; return t; }();
+        return true;
+    }
+    // HLSL truncates the longer vector (with a warning).
+    if (a.type.shape == Shape::Vector && b.type.shape == Shape::Vector) {
+        int n = std::min(a.type.cols, b.type.cols);
+        a.data.resize(static_cast<size_t>(n));
+        b.data.resize(static_cast<size_t>(n));
+        a.type.cols = b.type.cols = n;
+        return true;
+    }
+    fail(DiagId::TypeMismatch, loc, "operands " + a.type.hlslName() + " and " + b.type.hlslName() + " do not match");
+    return false;
+}
+
+// [SECTION] Operators
+
+std::optional<Value> Evaluator::unary(const Expr& e) {
+    auto a = eval(e.args[0]);
+    if (!a) return std::nullopt;
+    if (a->type.base == BaseType::String) return fail(DiagId::TypeMismatch, e.loc, "operator on a string");
+    for (float& x : a->data) {
+        if (e.text == "-") x = -x;
+        else if (e.text == "!") x = x == 0.0f ? 1.0f : 0.0f;
+        else if (e.text == "~") x = static_cast<float>(~static_cast<int32_t>(x));
+    }
+    if (e.text == "!") a->type.base = BaseType::Bool;
+    if (e.text == "-" && a->type.base == BaseType::Bool) a->type.base = BaseType::Int;
+    return a;
+}
+
+std::optional<Value> Evaluator::binary(const Expr& e) {
+    auto a = eval(e.args[0]);
+    if (!a) return std::nullopt;
+    auto b = eval(e.args[1]);
+    if (!b) return std::nullopt;
+    const std::string& op = e.text;
+    if (a->type.base == BaseType::String || b->type.base == BaseType::String) {
+        if (op == "==" || op == "!=")
+            return Value::boolean((a->string == b->string) == (op == "=="));
+        return fail(DiagId::TypeMismatch, e.loc, "operator '" + op + "' on a string");
+    }
+    if (!broadcast(*a, *b, e.loc)) return std::nullopt;
+    bool logical = op == "&&" || op == "||";
+    bool compare = op == "<" || op == ">" || op == "<=" || op == ">=" || op == "==" || op == "!=";
+    bool bitwise = op == "&" || op == "|" || op == "^" || op == "<<" || op == ">>";
+    TypeDesc type = a->type;
+    type.base = baseRank(a->type.base) >= baseRank(b->type.base) ? a->type.base : b->type.base;
+    if (logical || compare) type.base = BaseType::Bool;
+    if (bitwise && type.base == BaseType::Bool) type.base = BaseType::Int;
+    if (!logical && !compare && !bitwise && type.base == BaseType::Bool) type.base = BaseType::Int;
+    bool integer = type.base == BaseType::Int || type.base == BaseType::UInt;
+    std::vector<float> out(a->data.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        float x = a->data[i], y = b->data[i];
+        auto ix = static_cast<int64_t>(x), iy = static_cast<int64_t>(y);
+        float r = 0.0f;
+        if (op == "+") r = x + y;
+        else if (op == "-") r = x - y;
+        else if (op == "*") r = x * y;
+        else if (op == "/") {
+            if (integer) {
+                if (iy == 0) return fail(DiagId::TypeMismatch, e.loc, "integer division by zero");
+                r = static_cast<float>(ix / iy);
+            } else {
+                r = x / y;
+            }
+        } else if (op == "%") {
+            if (integer) {
+                if (iy == 0) return fail(DiagId::TypeMismatch, e.loc, "integer modulo by zero");
+                r = static_cast<float>(ix % iy);
+            } else {
+                r = std::fmod(x, y);
+            }
+        } else if (op == "<") r = x < y;
+        else if (op == ">") r = x > y;
+        else if (op == "<=") r = x <= y;
+        else if (op == ">=") r = x >= y;
+        else if (op == "==") r = x == y;
+        else if (op == "!=") r = x != y;
+        else if (op == "&&") r = (x != 0.0f) && (y != 0.0f);
+        else if (op == "||") r = (x != 0.0f) || (y != 0.0f);
+        else if (op == "&") r = static_cast<float>(ix & iy);
+        else if (op == "|") r = static_cast<float>(ix | iy);
+        else if (op == "^") r = static_cast<float>(ix ^ iy);
+        else if (op == "<<") r = static_cast<float>(ix << iy);
+        else if (op == ">>") r = static_cast<float>(ix >> iy);
+        else return fail(DiagId::UnsupportedFeature, e.loc, "operator '" + op + "' cannot be evaluated on the host");
+        out[i] = normalizeComponent(type.base, r);
+    }
+    return makeValue(type, std::move(out));
+}
+
+std::optional<Value> Evaluator::ternary(const Expr& e) {
+    auto c = eval(e.args[0]);
+    if (!c) return std::nullopt;
+    if (c->data.size() == 1) return eval(c->data[0] != 0.0f ? e.args[1] : e.args[2]);
+    // A vector condition selects per component (HLSL evaluates both sides).
+    auto a = eval(e.args[1]);
+    auto b = a ? eval(e.args[2]) : std::nullopt;
+    if (!a || !b || !broadcast(*a, *b, e.loc)) return std::nullopt;
+    if (c->data.size() != a->data.size()) return fail(DiagId::TypeMismatch, e.loc, "condition size does not match");
+    for (size_t i = 0; i < a->data.size(); ++i)
+        if (c->data[i] == 0.0f) a->data[i] = b->data[i];
+    return a;
+}
+
+// [SECTION] Intrinsics and constructors
+
+float determinantOf(const std::vector<float>& m, int n) {
+    if (n == 1) return m[0];
+    if (n == 2) return m[0] * m[3] - m[1] * m[2];
+    float det = 0.0f;
+    for (int c = 0; c < n; ++c) {
+        std::vector<float> minor;
+        for (int r = 1; r < n; ++r)
+            for (int k = 0; k < n; ++k)
+                if (k != c) minor.push_back(m[static_cast<size_t>(r * n + k)]);
+        float sign = (c % 2 == 0) ? 1.0f : -1.0f;
+        det += sign * m[static_cast<size_t>(c)] * determinantOf(minor, n - 1);
+    }
+    return det;
+}
+
+// Inverse by the adjugate: cofactor(r, c) / det, transposed. Fine for the 4x4s effects use.
+std::vector<float> inverseOf(const std::vector<float>& m, int n, float det) {
+    std::vector<float> out(static_cast<size_t>(n * n));
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            std::vector<float> minor;
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j)
+                    if (i != r && j != c) minor.push_back(m[static_cast<size_t>(i * n + j)]);
+            float cof = ((r + c) % 2 == 0 ? 1.0f : -1.0f) * (n == 1 ? 1.0f : determinantOf(minor, n - 1));
+            out[static_cast<size_t>(c * n + r)] = cof / det;
+        }
+    return out;
+}
+
+std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name, std::vector<Value>& args) {
+    auto need = [&](size_t n) -> bool {
+        if (args.size() == n) return true;
+        fail(DiagId::TypeMismatch, e.loc, name + "() takes " + std::to_string(n) + " argument(s)");
+        return false;
+    };
+    for (const Value& a : args)
+        if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, e.loc, name + "() of a string");
+    auto floatResult = [](Value v) {
+        if (!(v.type.base == BaseType::Half || v.type.base == BaseType::Double)) v.type.base = BaseType::Float;
+        return v;
+    };
+    using F1 = float (*)(float);
+    static const std::map<std::string, F1> kUnary = {
+        {"abs", [](float x) { return std::fabs(x); }},
+        {"sqrt", [](float x) { return std::sqrt(x); }},
+        {"rsqrt", [](float x) { return 1.0f / std::sqrt(x); }},
+        {"exp", [](float x) { return std::exp(x); }},
+        {"exp2", [](float x) { return std::exp2(x); }},
+        {"log", [](float x) { return std::log(x); }},
+        {"log2", [](float x) { return std::log2(x); }},
+        {"log10", [](float x) { return std::log10(x); }},
+        {"sin", [](float x) { return std::sin(x); }},
+        {"cos", [](float x) { return std::cos(x); }},
+        {"tan", [](float x) { return std::tan(x); }},
+        {"asin", [](float x) { return std::asin(x); }},
+        {"acos", [](float x) { return std::acos(x); }},
+        {"atan", [](float x) { return std::atan(x); }},
+        {"radians", [](float x) { return x * 0.017453292519943295f; }},
+        {"degrees", [](float x) { return x * 57.29577951308232f; }},
+        {"floor", [](float x) { return std::floor(x); }},
+        {"ceil", [](float x) { return std::ceil(x); }},
+        {"round", [](float x) { return std::round(x); }},
+        {"trunc", [](float x) { return std::trunc(x); }},
+        {"frac", [](float x) { return x - std::floor(x); }},
+        {"saturate", [](float x) { return std::clamp(x, 0.0f, 1.0f); }},
+        {"sign", [](float x) { return x > 0.0f ? 1.0f : (x < 0.0f ? -1.0f : 0.0f); }},
+    };
+    if (auto it = kUnary.find(name); it != kUnary.end()) {
+        if (!need(1)) return std::nullopt;
+        Value v = args[0];
+        for (float& x : v.data) x = it->second(x);
+        if (name == "sign") v.type.base = BaseType::Int;
+        else if (name != "abs") v = floatResult(std::move(v));
+        return v;
+    }
+    using F2 = float (*)(float, float);
+    static const std::map<std::string, F2> kBinary = {
+        {"min", [](float x, float y) { return std::min(x, y); }},
+        {"max", [](float x, float y) { return std::max(x, y); }},
+        {"pow", [](float x, float y) { return std::pow(x, y); }},
+        {"atan2", [](float y, float x) { return std::atan2(y, x); }},
+        {"fmod", [](float x, float y) { return std::fmod(x, y); }},
+        {"step", [](float edge, float x) { return x >= edge ? 1.0f : 0.0f; }},
+    };
+    if (auto it = kBinary.find(name); it != kBinary.end()) {
+        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        Value v = args[0];
+        if (baseRank(args[1].type.base) > baseRank(v.type.base)) v.type.base = args[1].type.base;
+        for (size_t i = 0; i < v.data.size(); ++i) v.data[i] = it->second(args[0].data[i], args[1].data[i]);
+        if (name != "min" && name != "max") v = floatResult(std::move(v));
+        return v;
+    }
+    if (name == "clamp" || name == "lerp" || name == "smoothstep") {
+        if (!need(3)) return std::nullopt;
+        // Broadcast all three to the widest.
+        if (!broadcast(args[0], args[1], e.loc) || !broadcast(args[1], args[2], e.loc) ||
+            !broadcast(args[0], args[2], e.loc) || !broadcast(args[0], args[1], e.loc))
+            return std::nullopt;
+        Value v = name == "smoothstep" ? args[2] : args[0];
+        for (size_t i = 0; i < v.data.size(); ++i) {
+            float a = args[0].data[i], b = args[1].data[i], c = args[2].data[i];
+            if (name == "clamp") v.data[i] = std::min(std::max(a, b), c);
+            else if (name == "lerp") v.data[i] = a + (b - a) * c;
+            else {
+                float t = std::clamp((c - a) / (b - a), 0.0f, 1.0f);
+                v.data[i] = t * t * (3.0f - 2.0f * t);
+            }
+        }
+        return name == "clamp" ? v : floatResult(std::move(v));
+    }
+    if (name == "dot") {
+        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        float s = 0.0f;
+        for (size_t i = 0; i < args[0].data.size(); ++i) s += args[0].data[i] * args[1].data[i];
+        return Value::scalar(s);
+    }
+    if (name == "length" || name == "normalize") {
+        if (!need(1)) return std::nullopt;
+        float s = 0.0f;
+        for (float x : args[0].data) s += x * x;
+        float len = std::sqrt(s);
+        if (name == "length") return Value::scalar(len);
+        Value v = floatResult(args[0]);
+        for (float& x : v.data) x /= len;
+        return v;
+    }
+    if (name == "distance") {
+        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        float s = 0.0f;
+        for (size_t i = 0; i < args[0].data.size(); ++i) {
+            float d = args[0].data[i] - args[1].data[i];
+            s += d * d;
+        }
+        return Value::scalar(std::sqrt(s));
+    }
+    if (name == "cross") {
+        if (!need(2)) return std::nullopt;
+        if (args[0].data.size() != 3 || args[1].data.size() != 3)
+            return fail(DiagId::TypeMismatch, e.loc, "cross() takes two float3");
+        const auto& a = args[0].data;
+        const auto& b = args[1].data;
+        return Value::vector({a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]});
+    }
+    if (name == "transpose") {
+        if (!need(1)) return std::nullopt;
+        const Value& m = args[0];
+        if (m.type.shape != Shape::Matrix) return m;
+        Value v = m;
+        std::swap(v.type.rows, v.type.cols);
+        for (int r = 0; r < m.type.rows; ++r)
+            for (int c = 0; c < m.type.cols; ++c)
+                v.data[static_cast<size_t>(c * m.type.rows + r)] = m.data[static_cast<size_t>(r * m.type.cols + c)];
+        return v;
+    }
+    if (name == "determinant" || name == "inverse") {
+        if (!need(1)) return std::nullopt;
+        const Value& m = args[0];
+        int n = m.type.rows;
+        if (m.type.shape != Shape::Matrix || m.type.rows != m.type.cols)
+            return fail(DiagId::TypeMismatch, e.loc, name + "() takes a square matrix");
+        float det = determinantOf(m.data, n);
+        if (name == "determinant") return Value::scalar(det);
+        if (det == 0.0f) return fail(DiagId::TypeMismatch, e.loc, "inverse() of a singular matrix");
+        return makeValue(m.type, inverseOf(m.data, n, det));
+    }
+    if (name == "mul") {
+        if (!need(2)) return std::nullopt;
+        const Value& a = args[0];
+        const Value& b = args[1];
+        if (a.data.size() == 1 || b.data.size() == 1) {
+            Value x = a, y = b;
+            broadcast(x, y, e.loc);
+            for (size_t i = 0; i < x.data.size(); ++i) x.data[i] *= y.data[i];
+            return x;
+        }
+        bool am = a.type.shape == Shape::Matrix, bm = b.type.shape == Shape::Matrix;
+        // A vector is a 1xN row on the left and an Nx1 column on the right.
+        int ar = am ? a.type.rows : 1, ac = am ? a.type.cols : a.type.cols;
+        int br = bm ? b.type.rows : b.type.cols, bc = bm ? b.type.cols : 1;
+        if (ac != br)
+            return fail(DiagId::TypeMismatch, e.loc,
+                        "mul(" + a.type.hlslName() + ", " + b.type.hlslName() + "): inner dimensions differ");
+        std::vector<float> out(static_cast<size_t>(ar * bc), 0.0f);
+        for (int r = 0; r < ar; ++r)
+            for (int c = 0; c < bc; ++c)
+                for (int k = 0; k < ac; ++k)
+                    out[static_cast<size_t>(r * bc + c)] +=
+                        a.data[static_cast<size_t>(r * ac + k)] * b.data[static_cast<size_t>(k * bc + c)];
+        if (am && bm) return makeValue(makeType(BaseType::Float, Shape::Matrix, ar, bc), std::move(out));
+        return makeValue(vectorType(BaseType::Float, static_cast<int>(out.size())), std::move(out));
+    }
+    return fail(DiagId::UnsupportedFeature, e.loc, "function '" + name + "' cannot be evaluated on the host");
+}
+
+std::optional<Value> Evaluator::call(const Expr& e) {
+    std::vector<Value> args;
+    for (const Expr& a : e.args) {
+        auto v = eval(a);
+        if (!v) return std::nullopt;
+        args.push_back(std::move(*v));
+    }
+    if (auto type = parseTypeName(e.text)) {
+        // Constructor: the arguments' components in order, or one scalar broadcast.
+        std::vector<float> flat;
+        for (const Value& a : args) flat.insert(flat.end(), a.data.begin(), a.data.end());
+        size_t want = componentCount(*type);
+        if (flat.size() == 1) flat.assign(want, flat[0]);
+        if (flat.size() != want)
+            return fail(DiagId::TypeMismatch, e.loc,
+                        e.text + " constructor needs " + std::to_string(want) + " components, got " +
+                            std::to_string(flat.size()));
+        for (float& x : flat) x = normalizeComponent(type->base, x);
+        return makeValue(*type, std::move(flat));
+    }
+    return intrinsic(e, e.text, args);
+}
+
+std::optional<Value> Evaluator::initList(const Expr& e) {
+    std::vector<float> flat;
+    for (const Expr& a : e.args) {
+        auto v = eval(a);
+        if (!v) return std::nullopt;
+        if (v->type.base == BaseType::String) return fail(DiagId::TypeMismatch, a.loc, "string in an initializer list");
+        flat.insert(flat.end(), v->data.begin(), v->data.end());
+    }
+    return makeValue(vectorType(BaseType::Float, static_cast<int>(flat.size())), std::move(flat));
+}
+
+// [SECTION] Members and indexing
+
+std::optional<Value> Evaluator::member(const Expr& e) {
+    auto base = eval(e.args[0]);
+    if (!base) return std::nullopt;
+    const std::string& m = e.text;
+    std::vector<float> out;
+    if (base->type.shape == Shape::Matrix) {
+        // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
+        size_t i = 0;
+        while (i < m.size()) {
+            if (m[i] != '_') return fail(DiagId::TypeMismatch, e.loc, "invalid matrix member '" + m + "'");
+            ++i;
+            int offset = 1;
+            if (i < m.size() && m[i] == 'm') {
+                offset = 0;
+                ++i;
+            }
+            if (i + 2 > m.size() || !std::isdigit(static_cast<unsigned char>(m[i])) ||
+                !std::isdigit(static_cast<unsigned char>(m[i + 1])))
+                return fail(DiagId::TypeMismatch, e.loc, "invalid matrix member '" + m + "'");
+            int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
+            i += 2;
+            if (r < 0 || c < 0 || r >= base->type.rows || c >= base->type.cols)
+                return fail(DiagId::TypeMismatch, e.loc, "matrix member '" + m + "' out of range");
+            out.push_back(base->data[static_cast<size_t>(r * base->type.cols + c)]);
+        }
+    } else {
+        if (m.empty() || m.size() > 4) return fail(DiagId::TypeMismatch, e.loc, "invalid swizzle '" + m + "'");
+        for (char ch : m) {
+            const char* xyzw = "xyzw";
+            const char* rgba = "rgba";
+            const char* p = std::strchr(xyzw, ch);
+            int idx = p ? static_cast<int>(p - xyzw) : -1;
+            if (idx < 0 && (p = std::strchr(rgba, ch))) idx = static_cast<int>(p - rgba);
+            int avail = base->type.shape == Shape::Scalar ? 1 : base->type.cols;
+            if (idx < 0 || ch == '\0' || idx >= avail)
+                return fail(DiagId::TypeMismatch, e.loc,
+                            "invalid swizzle '" + m + "' on " + base->type.hlslName());
+            out.push_back(base->data[static_cast<size_t>(idx)]);
+        }
+    }
+    return makeValue(vectorType(base->type.base, static_cast<int>(out.size())), std::move(out));
+}
+
+std::optional<Value> Evaluator::index(const Expr& e) {
+    auto base = eval(e.args[0]);
+    if (!base) return std::nullopt;
+    auto idx = eval(e.args[1]);
+    if (!idx) return std::nullopt;
+    int i = idx->asInt();
+    TypeDesc elem = base->type;
+    size_t stride = 1;
+    if (!elem.arrayDims.empty()) {
+        elem.arrayDims.erase(elem.arrayDims.begin());
+        stride = componentCount(elem);
+        if (i < 0 || i >= base->type.arrayDims[0]) return fail(DiagId::TypeMismatch, e.loc, "index out of range");
+    } else if (elem.shape == Shape::Matrix) {
+        // m[i] is row i, as in HLSL.
+        if (i < 0 || i >= elem.rows) return fail(DiagId::TypeMismatch, e.loc, "matrix row index out of range");
+        elem = vectorType(elem.base, elem.cols);
+        stride = static_cast<size_t>(elem.cols);
+    } else if (elem.shape == Shape::Vector) {
+        if (i < 0 || i >= elem.cols) return fail(DiagId::TypeMismatch, e.loc, "vector index out of range");
+        elem = vectorType(elem.base, 1);
+    } else {
+        return fail(DiagId::TypeMismatch, e.loc, "cannot index a scalar");
+    }
+    auto begin = base->data.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(i) * stride);
+    return makeValue(elem, std::vector<float>(begin, begin + static_cast<std::ptrdiff_t>(stride)));
+}
+
+// [SECTION] evaluate()
+
+std::optional<Value> Evaluator::eval(const Expr& e) {
+    switch (e.kind) {
+        case Expr::Kind::Number:
+            return e.isInteger ? Value::integer(static_cast<int>(e.number)) : Value::scalar(static_cast<float>(e.number));
+        case Expr::Kind::Bool: return Value::boolean(e.number != 0.0);
+        case Expr::Kind::String: return Value::text(e.text);
+        case Expr::Kind::Identifier: {
+            if (e.text == "true" || e.text == "false") return Value::boolean(e.text == "true");
+            const Value* v = mLookup ? mLookup(e.text) : nullptr;
+            if (!v) return fail(DiagId::UnknownIdentifier, e.loc, e.text);
+            return *v;
+        }
+        case Expr::Kind::Unary: return unary(e);
+        case Expr::Kind::Binary: return binary(e);
+        case Expr::Kind::Ternary: return ternary(e);
+        case Expr::Kind::Call: return call(e);
+        case Expr::Kind::Member: return member(e);
+        case Expr::Kind::Index: return index(e);
+        case Expr::Kind::InitList: return initList(e);
+        case Expr::Kind::Cast: {
+            auto v = eval(e.args[0]);
+            if (!v) return std::nullopt;
+            return convert(*v, e.castType, e.loc);
+        }
+        case Expr::Kind::TextureRef:
+        case Expr::Kind::Compile:
+            return fail(DiagId::UnsupportedFeature, e.loc, "'" + e.str() + "' is not a value");
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Value> evaluate(const Expr& expr, const ParameterLookup& lookup, const TypeDesc* targetType,
+                              DiagnosticSink* diagnostics) {
+    Evaluator evaluator(lookup, diagnostics);
+    auto v = evaluator.eval(expr);
+    if (!v || !targetType) return v;
+    return evaluator.convert(*v, *targetType, expr.loc);
+}
+
+}  // namespace fx

@@ -1,0 +1,111 @@
+// SpirvToGlsl: SPIRV-Cross GLSL backend and reflection (see SpirvToGlsl.h).
+#include "SpirvToGlsl.h"
+
+#include "PassLowering.h"
+
+#include <spirv_cross/spirv_glsl.hpp>
+
+#include <regex>
+
+namespace fx {
+
+std::string spirvToGlslOptionsKey() { return "spirv-cross glsl450 core novk"; }
+
+bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
+                 StageProgram& program, std::string& error) {
+    try {
+        spirv_cross::CompilerGLSL compiler(spirv);
+        spirv_cross::CompilerGLSL::Options glsl;
+        glsl.version = 450;
+        glsl.es = false;
+        glsl.vulkan_semantics = false;
+        // Clip space stays D3D's (z in [0,1], y up): the runtime sets glClipControl accordingly.
+        glsl.vertex.fixup_clipspace = false;
+        glsl.vertex.flip_vert_y = false;
+        glsl.enable_420pack_extension = true;
+        compiler.set_common_options(glsl);
+        // The runtime sets glClipControl(GL_UPPER_LEFT), which already makes gl_FragCoord top-down; an
+        // origin_upper_left redeclaration on top would flip it back.
+        if (stage == ShaderStage::Fragment) compiler.unset_execution_mode(spv::ExecutionModeOriginUpperLeft);
+
+        // DX9 sampler2D is already a combined sampler; the depth-compare pairs (Texture2D fx_depth_S +
+        // SamplerComparisonState fx_cmp_S) become one sampler2DShadow, renamed back to S.
+        compiler.build_combined_image_samplers();
+        program.samplers.clear();
+        for (const spirv_cross::CombinedImageSampler& c : compiler.get_combined_image_samplers()) {
+            std::string image = compiler.get_name(c.image_id);
+            std::string name = image.rfind("fx_depth_", 0) == 0 ? image.substr(9) : image;
+            compiler.set_name(c.combined_id, name);
+            auto unit = options.samplerUnits.find(name);
+            int binding = unit == options.samplerUnits.end() ? 0 : unit->second;
+            compiler.set_decoration(c.combined_id, spv::DecorationBinding, static_cast<uint32_t>(binding));
+            SamplerBinding s;
+            s.glslName = name;
+            s.unit = binding;
+            s.depthCompare = image.rfind("fx_depth_", 0) == 0;
+            program.samplers.push_back(s);
+        }
+        spirv_cross::ShaderResources resources = compiler.get_shader_resources();
+        for (const spirv_cross::Resource& r : resources.sampled_images) {
+            std::string name = compiler.get_name(r.id);
+            auto unit = options.samplerUnits.find(name);
+            int binding = unit == options.samplerUnits.end() ? 0 : unit->second;
+            compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(binding));
+            bool known = false;
+            for (const SamplerBinding& s : program.samplers) known |= s.glslName == name;
+            if (!known) program.samplers.push_back(SamplerBinding{name, binding, 0, false});
+        }
+
+        program.uniforms.clear();
+        program.uniformBlockName.clear();
+        program.uniformBlockBinding = -1;
+        program.uniformBlockSize = 0;
+        for (const spirv_cross::Resource& r : resources.uniform_buffers) {
+            const spirv_cross::SPIRType& type = compiler.get_type(r.base_type_id);
+            compiler.set_name(r.base_type_id, options.uniformBlockName);
+            compiler.set_name(r.id, options.uniformBlockName + "_");
+            compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(options.uniformBlockBinding));
+            program.uniformBlockName = options.uniformBlockName;
+            program.uniformBlockBinding = options.uniformBlockBinding;
+            program.uniformBlockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
+            for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+                const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
+                UniformBinding u;
+                u.name = compiler.get_member_name(type.self, i);
+                u.offset = compiler.type_struct_member_offset(type, i);
+                u.size = static_cast<uint32_t>(compiler.get_declared_struct_member_size(type, i));
+                if (!member.array.empty()) u.arrayStride = compiler.type_struct_member_array_stride(type, i);
+                if (member.columns > 1) {
+                    u.matrixStride = compiler.type_struct_member_matrix_stride(type, i);
+                    // glslang declares HLSL column_major matrices RowMajor (the GLSL matrix is the HLSL
+                    // one transposed, so its rows are HLSL's columns): RowMajor => HLSL columns contiguous.
+                    u.hlslColumnsContiguous = compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
+                }
+                program.uniforms.push_back(u);
+            }
+            break;  // one $Global block per unit
+        }
+
+        program.inputs.clear();
+        if (stage == ShaderStage::Vertex) {
+            for (const spirv_cross::Resource& r : resources.stage_inputs) {
+                if (!compiler.has_decoration(r.id, spv::DecorationLocation)) continue;
+                int location = static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation));
+                const spirv_cross::SPIRType& t = compiler.get_type(r.type_id);
+                program.inputs.push_back(VertexInput{vertexInputSemantic(location), location, static_cast<int>(t.vecsize)});
+                // Attribute names say their semantic, for anyone reading the GLSL or a GL debugger.
+                compiler.set_name(r.id, "fx_attr_" + vertexInputSemantic(location));
+            }
+        }
+
+        program.glsl = compiler.compile();
+        // Belt and braces for the comment above: SPIRV-Cross versions differ in when they emit this.
+        program.glsl = std::regex_replace(program.glsl, std::regex(R"(layout\(origin_upper_left\) in vec4 gl_FragCoord;\n)"), "");
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+}  // namespace fx

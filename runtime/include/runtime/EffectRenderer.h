@@ -1,0 +1,86 @@
+// EffectRenderer: runs a compiled effect on OpenGL. It links one GL program per pass, creates the
+// effect's textures, samplers and render targets, binds semantics (runtime/src/SemanticBinder.h) and
+// executes the SAS scripts (runtime/src/ScriptInterpreter.cpp) to render frames of a scene.
+//
+// Needs a current GL 4.5 context (runtime/GlContext.h) for its whole life.
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <runtime/Scene.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace runtime {
+
+struct FrameOptions {
+    int width = 640;
+    int height = 480;
+    std::string technique;  // "" = the STANDARDSGLOBAL script's choice, else the first technique
+    float time = 0.0f;      // seconds, for the Time semantic
+};
+
+// Counts of the work one frame did: what `render --stats` prints.
+struct FrameStats {
+    int passesRun = 0;
+    int draws = 0;
+    uint64_t triangles = 0;
+    int clears = 0;
+};
+
+// An RGBA image read back from the frame (8 bits per channel, rows top to bottom).
+struct FrameImage {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;
+
+    const uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+class EffectRenderer {
+public:
+    // Links every pass's program, creates textures and samplers. Returns nullptr if a program does not
+    // link or a resource cannot be created; the diagnostics say why.
+    static std::unique_ptr<EffectRenderer> create(std::shared_ptr<const fx::CompiledEffect> effect,
+                                                  fx::DiagnosticSink& diagnostics);
+    ~EffectRenderer();
+    EffectRenderer(const EffectRenderer&) = delete;
+    EffectRenderer& operator=(const EffectRenderer&) = delete;
+
+    const fx::CompiledEffect& effect() const;
+
+    // Parameters, by name. A parameter set here is pinned: semantics no longer overwrite it.
+    std::optional<size_t> findParameter(std::string_view name) const;
+    const fx::Value& parameter(size_t index) const;
+    void setParameter(size_t index, const fx::Value& value);
+    // Parses VALUE for the parameter's type ("0.5", "true", "1,0,0", "{1, 0, 0}") and sets it.
+    bool setParameterFromText(std::string_view name, std::string_view text, fx::DiagnosticSink& diagnostics);
+
+    // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
+    // GL error occurred.
+    bool render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
+                FrameStats* stats = nullptr);
+
+    // The frame's colour target as rendered by the last render().
+    FrameImage readFrame() const;
+    // A render-target texture's first channels as floats (rows top to bottom), for tests and debugging
+    // views; nullopt if the parameter is not an allocated render target.
+    std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
+                                                 int* channels) const;
+
+    struct Impl;  // opaque: the GL resources (runtime/src/EffectRenderer.cpp)
+
+private:
+    explicit EffectRenderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> mImpl;
+};
+
+// Writes `image` as a PNG; false (with a message in `error`) on failure.
+bool writePng(const FrameImage& image, const std::string& path, std::string& error);
+
+}  // namespace runtime

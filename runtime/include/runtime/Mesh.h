@@ -1,0 +1,37 @@
+// Mesh: triangle geometry on the CPU, with the vertex attributes effects bind by semantic.
+//
+// Conventions (D3D's, so effects written for D3D run unmodified): left-handed world space with +y up;
+// a triangle's front face is the one whose vertices appear *clockwise* when seen from the side its normal
+// points to (D3D9's default CullMode = CCW culls the others).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;    // empty or one per position
+    std::vector<glm::vec2> texcoords;  // empty or one per position (TEXCOORD0)
+    std::vector<glm::vec4> tangents;   // empty or one per position (TANGENT; w = handedness)
+    std::vector<uint32_t> indices;     // triangle list
+    bool closed = false;               // watertight: back-face shadow methods may rely on it
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    glm::vec3 boundsMin() const;
+    glm::vec3 boundsMax() const;
+};
+
+// Generators. Sizes are full extents; every shape is centred on the origin.
+Mesh makePlane(float sizeX, float sizeZ, int divisions = 1);  // y = 0, facing +y, not closed
+Mesh makeBox(glm::vec3 size);                                  // closed
+Mesh makeSphere(float radius, int slices = 32, int stacks = 16);  // closed
+Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments = 48, int minorSegments = 24);  // closed, in the xz plane
+Mesh makeTeapot(float size, int tessellation = 8);  // Newell's teapot from its Bezier patches; not closed
+
+}  // namespace runtime

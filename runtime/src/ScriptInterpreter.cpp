@@ -1,0 +1,204 @@
+#include "ScriptInterpreter.h"
+
+#include <fx/RenderStates.h>
+
+#include <cstdlib>
+#include <sstream>
+
+namespace runtime {
+
+namespace {
+
+using Command = fx::ScriptCommand;
+
+// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1").
+std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget& target) {
+    if (const fx::Value* value = target.parameter(text)) return *value;
+    std::vector<float> numbers;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        char* end = nullptr;
+        const float number = std::strtof(item.c_str(), &end);
+        if (end == item.c_str()) return std::nullopt;
+        numbers.push_back(number);
+    }
+    if (numbers.empty()) return std::nullopt;
+    return numbers.size() == 1 ? fx::Value::scalar(numbers[0]) : fx::Value::vector(numbers);
+}
+
+const fx::CompiledPass* findPass(const fx::CompiledTechnique& technique, const std::string& name) {
+    for (const fx::CompiledPass& pass : technique.passes)
+        if (fx::equalsIgnoreCase(pass.name, name)) return &pass;
+    return nullptr;
+}
+
+}  // namespace
+
+const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::CompiledEffect& effect,
+                                                                const std::string& requested,
+                                                                const ScriptTarget& target,
+                                                                fx::DiagnosticSink& diagnostics) {
+    std::string name = requested;
+    fx::SourceLoc loc;
+    if (name.empty()) {
+        for (const Command& command : effect.globalScript) {
+            if (command.kind != Command::Kind::Technique) continue;
+            loc = command.loc;
+            if (command.selectorCondition.empty()) {
+                name = command.value;
+            } else {
+                const fx::Value* condition = target.parameter(command.selectorCondition);
+                name = condition && condition->asBool() ? command.selectorTrue : command.selectorFalse;
+            }
+            break;
+        }
+    }
+    if (name.empty()) {
+        if (effect.techniques.empty()) {
+            diagnostics.report(fx::DiagId::UnknownTechnique, fx::SourceLoc{effect.effect->path, 0, 0}, {"(none)"});
+            return nullptr;
+        }
+        return &effect.techniques.front();
+    }
+    if (const fx::CompiledTechnique* technique = effect.findTechnique(name)) return technique;
+    if (!loc.valid()) loc.file = effect.effect->path;
+    diagnostics.report(fx::DiagId::UnknownTechnique, loc, {name});
+    return nullptr;
+}
+
+bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, ScriptTarget& target,
+                            fx::DiagnosticSink& diagnostics) {
+    if (technique.hasScript) return runCommands(technique.script, technique, nullptr, target, diagnostics);
+    // No script: every pass in order, as D3DX would run them.
+    for (const fx::CompiledPass& pass : technique.passes) {
+        Command passCommand;
+        passCommand.kind = Command::Kind::Pass;
+        passCommand.value = pass.name;
+        passCommand.loc = pass.loc;
+        if (!runCommands({passCommand}, technique, nullptr, target, diagnostics)) return false;
+    }
+    return true;
+}
+
+bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const fx::CompiledTechnique& technique,
+                                    const fx::CompiledPass* pass, ScriptTarget& target,
+                                    fx::DiagnosticSink& diagnostics) {
+    struct Loop {
+        size_t body;    // index of the first command inside the loop
+        int remaining;  // iterations still to run after this one
+        int index;      // current iteration
+        std::string indexParameter;
+    };
+    std::vector<Loop> loops;
+
+    for (size_t i = 0; i < commands.size(); ++i) {
+        const Command& command = commands[i];
+        switch (command.kind) {
+            case Command::Kind::Pass: {
+                const fx::CompiledPass* next = findPass(technique, command.value);
+                if (!next) {
+                    diagnostics.report(fx::DiagId::ScriptUnknownPass, command.loc, {command.value, technique.name});
+                    return false;
+                }
+                target.beginPass(*next);
+                if (next->hasScript) {
+                    if (!runCommands(next->script, technique, next, target, diagnostics)) return false;
+                } else {
+                    target.draw(*next, Command::DrawWhat::Geometry);
+                }
+                break;
+            }
+            case Command::Kind::RenderColorTarget: target.setColorTarget(command.index, command.value); break;
+            case Command::Kind::RenderDepthStencilTarget: target.setDepthTarget(command.value); break;
+            case Command::Kind::RenderPort: target.setRenderPort(command.value); break;
+            case Command::Kind::ClearSetColor:
+            case Command::Kind::ClearSetDepth:
+            case Command::Kind::ClearSetStencil: {
+                const std::optional<fx::Value> value = scriptValue(command.value, target);
+                if (!value) {
+                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
+                                       {std::string(fx::scriptCommandName(command.kind)),
+                                        "'" + command.value + "' is neither a parameter nor a number"});
+                    return false;
+                }
+                if (command.kind == Command::Kind::ClearSetColor) target.setClearColor(*value);
+                if (command.kind == Command::Kind::ClearSetDepth) target.setClearDepth(value->asFloat());
+                if (command.kind == Command::Kind::ClearSetStencil) target.setClearStencil(value->asInt());
+                break;
+            }
+            case Command::Kind::Clear: target.clear(command.clear); break;
+            case Command::Kind::Draw:
+                if (!pass) {
+                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
+                                       {"Draw", "a technique script draws through Pass=, not Draw="});
+                    return false;
+                }
+                target.draw(*pass, command.draw);
+                break;
+            case Command::Kind::LoopByCount: {
+                const std::optional<fx::Value> value = scriptValue(command.value, target);
+                int count = value ? value->asInt() : -1;
+                if (count < 0) {
+                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
+                                       {"LoopByCount", "'" + command.value + "' is not a non-negative count"});
+                    return false;
+                }
+                if (count > kMaxLoopCount) {
+                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
+                                       {"LoopByCount", std::to_string(count) + " iterations exceed the limit of " +
+                                                           std::to_string(kMaxLoopCount)});
+                    return false;
+                }
+                if (count == 0) {  // skip to the matching LoopEnd
+                    int depth = 1;
+                    while (depth > 0 && ++i < commands.size()) {
+                        if (commands[i].kind == Command::Kind::LoopByCount) ++depth;
+                        if (commands[i].kind == Command::Kind::LoopEnd) --depth;
+                    }
+                    break;
+                }
+                loops.push_back(Loop{i + 1, count - 1, 0, {}});
+                break;
+            }
+            case Command::Kind::LoopGetIndex:
+                if (loops.empty()) {
+                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc, {"LoopGetIndex outside a loop"});
+                    return false;
+                }
+                loops.back().indexParameter = command.value;
+                target.setParameter(command.value, fx::Value::integer(loops.back().index));
+                break;
+            case Command::Kind::LoopEnd:
+                if (loops.empty()) {
+                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc, {"LoopEnd without LoopByCount"});
+                    return false;
+                }
+                if (loops.back().remaining > 0) {
+                    Loop& loop = loops.back();
+                    --loop.remaining;
+                    ++loop.index;
+                    if (!loop.indexParameter.empty())
+                        target.setParameter(loop.indexParameter, fx::Value::integer(loop.index));
+                    i = loop.body - 1;
+                } else {
+                    loops.pop_back();
+                }
+                break;
+            case Command::Kind::ScriptExternal: target.reportIgnored(command); break;
+            case Command::Kind::Technique:
+            case Command::Kind::ScriptOrder:
+            case Command::Kind::ScriptClass:
+            case Command::Kind::ScriptOutput:
+            case Command::Kind::ScriptSignature: break;  // header commands: nothing to execute
+        }
+    }
+    if (!loops.empty()) {
+        diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, commands.empty() ? fx::SourceLoc{} : commands.back().loc,
+                           {"LoopByCount without LoopEnd"});
+        return false;
+    }
+    return true;
+}
+
+}  // namespace runtime

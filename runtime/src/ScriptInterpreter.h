@@ -1,0 +1,53 @@
+// ScriptInterpreter: executes SAS scripts (the STANDARDSGLOBAL, technique and pass `Script` annotations)
+// against a ScriptTarget that does the GL work. Keeping GL out of here makes the control flow (technique
+// selection, Pass=, loops, the defaults for effects without scripts) testable on its own.
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <fx/Value.h>
+
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+// What a script asks for. The interpreter calls these in script order.
+class ScriptTarget {
+public:
+    virtual ~ScriptTarget() = default;
+    virtual void beginPass(const fx::CompiledPass& pass) = 0;
+    virtual void setColorTarget(int index, const std::string& texture) = 0;  // "" = the frame's colour target
+    virtual void setDepthTarget(const std::string& texture) = 0;            // "" = the frame's depth target
+    virtual void setRenderPort(const std::string& light) = 0;               // "" = the camera
+    virtual void setClearColor(const fx::Value& color) = 0;
+    virtual void setClearDepth(float depth) = 0;
+    virtual void setClearStencil(int stencil) = 0;
+    virtual void clear(fx::ScriptCommand::ClearWhat what) = 0;
+    virtual void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) = 0;
+    virtual void reportIgnored(const fx::ScriptCommand& command) = 0;
+    // Parameter access for Loop*/ClearSet*/Technique= selectors.
+    virtual const fx::Value* parameter(const std::string& name) const = 0;
+    virtual void setParameter(const std::string& name, const fx::Value& value) = 0;
+};
+
+class ScriptInterpreter {
+public:
+    // The most iterations one LoopByCount may run; more is reported and clamped, never a hang.
+    static constexpr int kMaxLoopCount = 1024;
+
+    // The technique a frame runs: `requested` if given, else the STANDARDSGLOBAL script's Technique=
+    // (with Cond?A:B selectors), else the first. nullptr (with UnknownTechnique) if it does not exist.
+    static const fx::CompiledTechnique* selectTechnique(const fx::CompiledEffect& effect, const std::string& requested,
+                                                        const ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+
+    // Runs the technique's script (or, without one, every pass in order), each pass's script (or, without
+    // one, Draw=Geometry). Returns false if the script could not run to its end.
+    static bool run(const fx::CompiledTechnique& technique, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+
+private:
+    static bool runCommands(const std::vector<fx::ScriptCommand>& commands, const fx::CompiledTechnique& technique,
+                            const fx::CompiledPass* pass, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+};
+
+}  // namespace runtime

@@ -1,0 +1,199 @@
+#include "SemanticBinder.h"
+
+#include <fx/RenderStates.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cctype>
+
+namespace runtime {
+
+namespace {
+
+std::string upper(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
+bool consumeSuffix(std::string& text, std::string_view suffix) {
+    if (text.size() < suffix.size() || text.compare(text.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    text.resize(text.size() - suffix.size());
+    return true;
+}
+
+// The light an annotation names: `frustum = "light0"` or `Object = "light0"`.
+std::string annotatedLight(const fx::Parameter& parameter) {
+    for (const char* name : {"frustum", "Object"}) {
+        const fx::Annotation* a = parameter.annotation(name);
+        if (a && a->value.kind == fx::Expr::Kind::String) return a->value.text;
+    }
+    return {};
+}
+
+// Copies a rows x cols block of `source` (HLSL row order) into `value`, converting to its shape: a
+// float3x3 parameter receives the upper-left 3x3 of a 4x4 matrix, a float3 the first three components.
+void store(fx::Value& value, const float* source, int rows, int cols) {
+    const fx::TypeDesc& type = value.type;
+    if (type.shape == fx::Shape::Matrix) {
+        value.data.assign(static_cast<size_t>(type.rows * type.cols), 0.0f);
+        for (int r = 0; r < type.rows; ++r)
+            for (int c = 0; c < type.cols; ++c)
+                if (r < rows && c < cols) value.data[static_cast<size_t>(r * type.cols + c)] = source[r * cols + c];
+        return;
+    }
+    const int count = type.shape == fx::Shape::Vector ? type.cols : 1;
+    value.data.assign(static_cast<size_t>(count), 0.0f);
+    for (int i = 0; i < count && i < rows * cols; ++i) value.data[static_cast<size_t>(i)] = source[i];
+    if (count == 4 && rows * cols == 3) value.data[3] = 1.0f;
+}
+
+void storeMatrix(fx::Value& value, const glm::mat4& m) {
+    // A glm matrix's memory equals the D3DX (row-vector) matrix row by row: see fx/Value.h.
+    store(value, glm::value_ptr(m), 4, 4);
+}
+
+void storeVector(fx::Value& value, const glm::vec4& v) { store(value, glm::value_ptr(v), 1, 4); }
+
+}  // namespace
+
+bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose) {
+    std::string name = upper(semantic);
+    inverse = transpose = false;
+    if (consumeSuffix(name, "INVERSETRANSPOSE")) {
+        inverse = transpose = true;
+    } else if (consumeSuffix(name, "TRANSPOSE")) {
+        transpose = true;
+    } else if (consumeSuffix(name, "INVERSE")) {
+        inverse = true;
+    }
+    static const std::pair<const char*, Kind> kMatrices[] = {
+        {"WORLD", Kind::World},
+        {"VIEW", Kind::View},
+        {"PROJECTION", Kind::Projection},
+        {"WORLDVIEW", Kind::WorldView},
+        {"VIEWPROJECTION", Kind::ViewProjection},
+        {"WORLDVIEWPROJECTION", Kind::WorldViewProjection},
+    };
+    for (const auto& [text, matrixKind] : kMatrices) {
+        if (name == text) {
+            kind = matrixKind;
+            return true;
+        }
+    }
+    if (inverse || transpose) return false;
+    static const std::pair<const char*, Kind> kOthers[] = {
+        {"VIEWPORTPIXELSIZE", Kind::ViewportPixelSize},
+        {"TIME", Kind::Time},
+        {"CAMERAPOSITION", Kind::CameraPosition},
+        {"EYEPOSITION", Kind::CameraPosition},
+        {"OBJECTID", Kind::ObjectId},
+        {"POSITION", Kind::LightPosition},
+        {"LIGHTPOSITION", Kind::LightPosition},
+        {"DIRECTION", Kind::LightDirection},
+        {"LIGHTDIRECTION", Kind::LightDirection},
+        {"LIGHTCOLOR", Kind::LightColor},
+        {"DIFFUSE", Kind::ObjectColor},
+        {"MATERIALDIFFUSE", Kind::ObjectColor},
+        {"DIFFUSECOLOR", Kind::ObjectColor},
+        {"AMBIENT", Kind::Ambient},
+    };
+    for (const auto& [text, otherKind] : kOthers) {
+        if (name == text) {
+            kind = otherKind;
+            return true;
+        }
+    }
+    return false;
+}
+
+SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx::DiagnosticSink& diagnostics)
+    : mScene(scene), mSceneBounds(scene.bounds()) {
+    for (size_t i = 0; i < effect.parameters.size(); ++i) {
+        const fx::Parameter& parameter = effect.parameters[i];
+        if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
+        Binding binding{i, Kind::World};
+        if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
+
+        const std::string lightName = annotatedLight(parameter);
+        const bool isLightProperty = binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
+                                     binding.kind == Kind::LightColor;
+        // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
+        // LightPosition/LightDirection/LightColor default to light0.
+        const std::string upperSemantic = upper(parameter.semantic);
+        if (!lightName.empty() || (isLightProperty && upperSemantic.rfind("LIGHT", 0) == 0)) {
+            const std::string name = lightName.empty() ? std::string("light0") : lightName;
+            binding.light = scene.findLight(name);
+            if (!binding.light) {
+                diagnostics.report(fx::DiagId::Unused, parameter.loc,
+                                   {"parameter '" + parameter.name + "' names light '" + name +
+                                    "', which the scene does not have; it keeps its value"});
+                continue;
+            }
+            if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
+        } else if (isLightProperty) {
+            continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
+        }
+        mBindings.push_back(binding);
+    }
+}
+
+bool SemanticBinder::isBound(size_t parameter) const {
+    return std::any_of(mBindings.begin(), mBindings.end(),
+                       [parameter](const Binding& b) { return b.parameter == parameter; });
+}
+
+void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object, float time,
+                          std::vector<fx::Value>& values, const std::vector<bool>& pinned) const {
+    const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
+    for (const Binding& binding : mBindings) {
+        if (pinned[binding.parameter]) continue;
+        fx::Value& value = values[binding.parameter];
+
+        glm::mat4 view = port.view;
+        glm::mat4 projection = port.projection;
+        if (binding.light) {
+            view = binding.light->view(mSceneBounds);
+            projection = binding.light->projection(mSceneBounds);
+        }
+        // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
+        glm::mat4 matrix(1.0f);
+        switch (binding.kind) {
+            case Kind::World: matrix = world; break;
+            case Kind::View: matrix = view; break;
+            case Kind::Projection: matrix = projection; break;
+            case Kind::WorldView: matrix = view * world; break;
+            case Kind::ViewProjection: matrix = projection * view; break;
+            case Kind::WorldViewProjection: matrix = projection * view * world; break;
+            case Kind::ViewportPixelSize: storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f)); continue;
+            case Kind::Time: storeVector(value, glm::vec4(time)); continue;
+            case Kind::CameraPosition: {
+                const glm::mat4 viewInverse = glm::inverse(view);
+                storeVector(value, glm::vec4(glm::vec3(viewInverse[3]), 1.0f));
+                continue;
+            }
+            case Kind::ObjectId: storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f)); continue;
+            case Kind::LightPosition: {
+                const Light& light = *binding.light;
+                const glm::vec3 position = light.type == Light::Type::Directional
+                                               ? glm::vec3(glm::inverse(light.view(mSceneBounds))[3])
+                                               : light.position;
+                storeVector(value, glm::vec4(position, 1.0f));
+                continue;
+            }
+            case Kind::LightDirection: storeVector(value, glm::vec4(binding.light->direction, 0.0f)); continue;
+            case Kind::LightColor: storeVector(value, glm::vec4(binding.light->color, 1.0f)); continue;
+            case Kind::ObjectColor:
+                storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));
+                continue;
+            case Kind::Ambient: storeVector(value, glm::vec4(mScene.ambient, 1.0f)); continue;
+        }
+        if (binding.inverse) matrix = glm::inverse(matrix);
+        if (binding.transpose) matrix = glm::transpose(matrix);
+        storeMatrix(value, matrix);
+    }
+}
+
+}  // namespace runtime

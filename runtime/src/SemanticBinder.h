@@ -1,0 +1,78 @@
+// SemanticBinder: gives effect parameters with standard semantics their values for each draw.
+//
+// Matrices: World, View, Projection, WorldView, ViewProjection, WorldViewProjection, each also with the
+// suffixes Inverse, Transpose and InverseTranspose (case-insensitive, as in D3DX/SAS). A parameter
+// annotated `string frustum = "light0";` (or `string Object = "light0";`) sees that light's view and
+// projection instead of the current render port's. Other semantics: ViewportPixelSize, Time,
+// CameraPosition, ObjectId; light properties Position/LightPosition, Direction/LightDirection and
+// LightColor (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
+// object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
+#pragma once
+
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+#include <fx/Value.h>
+#include <runtime/Scene.h>
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+// What the current pass renders from (the camera, or a light for RenderPort=lightN) and into.
+struct RenderPortView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec2 viewportSize{1.0f};
+};
+
+class SemanticBinder {
+public:
+    // Classifies every parameter's semantic once. Parameters with semantics the runtime does not know
+    // are left alone (they are the user's own).
+    SemanticBinder(const fx::Effect& effect, const Scene& scene, fx::DiagnosticSink& diagnostics);
+
+    // Writes the values of every bound parameter that is not pinned into `values` (one per parameter).
+    // `object` may be null (Draw=Buffer), then World is the identity.
+    void bind(const RenderPortView& port, const SceneObject* object, float time,
+              std::vector<fx::Value>& values, const std::vector<bool>& pinned) const;
+
+    size_t boundCount() const { return mBindings.size(); }
+    bool isBound(size_t parameter) const;
+
+private:
+    enum class Kind {
+        World,
+        View,
+        Projection,
+        WorldView,
+        ViewProjection,
+        WorldViewProjection,
+        ViewportPixelSize,
+        Time,
+        CameraPosition,
+        ObjectId,
+        LightPosition,
+        LightDirection,
+        LightColor,
+        ObjectColor,
+        Ambient,
+    };
+    struct Binding {
+        size_t parameter;
+        Kind kind;
+        bool inverse = false;
+        bool transpose = false;
+        const Light* light = nullptr;  // frustum/Object annotation (matrices), or the light of a light property
+    };
+
+    static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
+
+    const Scene& mScene;
+    Bounds mSceneBounds;
+    std::vector<Binding> mBindings;
+};
+
+}  // namespace runtime

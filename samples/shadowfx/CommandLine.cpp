@@ -1,0 +1,107 @@
+#include "CommandLine.h"
+
+#include <algorithm>
+#include <charconv>
+#include <iostream>
+
+namespace shadowfx::cli {
+
+std::string Arguments::value(const std::string& name, const std::string& fallback) const {
+    auto it = mValues.find(name);
+    return it == mValues.end() || it->second.empty() ? fallback : it->second.back();
+}
+
+int Arguments::intValue(const std::string& name, int fallback) const {
+    const std::string text = value(name);
+    if (text.empty()) return fallback;
+    int result = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), result);
+    return error == std::errc() && end == text.data() + text.size() ? result : -1;
+}
+
+std::vector<std::string> Arguments::all(const std::string& name) const {
+    auto it = mValues.find(name);
+    return it == mValues.end() ? std::vector<std::string>{} : it->second;
+}
+
+struct Parser {
+    // Returns false and prints what is wrong on a usage error.
+    static bool parse(const Command& command, int argc, char** argv, Arguments& args) {
+        auto contains = [](const std::vector<std::string>& list, const std::string& s) {
+            return std::find(list.begin(), list.end(), s) != list.end();
+        };
+        for (int i = 2; i < argc; ++i) {
+            std::string arg = argv[i];
+            std::string attached;
+            // -Idir and -DNAME=VALUE, as compilers accept them; --name=value as well.
+            if (arg.size() > 2 && (arg.rfind("-I", 0) == 0 || arg.rfind("-D", 0) == 0) && arg[1] != '-') {
+                attached = arg.substr(2);
+                arg = arg.substr(0, 2);
+            } else if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
+                attached = arg.substr(arg.find('=') + 1);
+                arg = arg.substr(0, arg.find('='));
+            }
+            if (contains(command.valueOptions, arg) || contains(command.requiredOptions, arg)) {
+                if (attached.empty()) {
+                    if (i + 1 >= argc) {
+                        std::cerr << "shadowfx " << command.name << ": option " << arg << " needs a value\n";
+                        return false;
+                    }
+                    attached = argv[++i];
+                }
+                args.mValues[arg].push_back(attached);
+            } else if (contains(command.flags, arg)) {
+                args.mFlags[arg] = true;
+            } else if (arg.size() > 1 && arg[0] == '-') {
+                std::cerr << "shadowfx " << command.name << ": unknown option '" << arg << "' (see --help)\n";
+                return false;
+            } else {
+                args.mPositional.push_back(arg);
+            }
+        }
+        for (const std::string& required : command.requiredOptions) {
+            if (args.value(required).empty()) {
+                std::cerr << "shadowfx " << command.name << ": " << required << " is required (see --help)\n";
+                return false;
+            }
+        }
+        if (args.positionalCount() != 1) {
+            std::cerr << "shadowfx " << command.name << ": expected one effect file (see --help)\n";
+            return false;
+        }
+        return true;
+    }
+};
+
+namespace {
+void printOverview(std::span<const Command> commands) {
+    std::cout << "usage: shadowfx COMMAND [options]   (shadowfx COMMAND --help for its options)\n\ncommands:\n";
+    for (const Command& c : commands) std::cout << "  " << c.name << std::string(10 - std::string(c.name).size(), ' ') << c.summary << "\n";
+}
+}  // namespace
+
+int dispatch(int argc, char** argv, std::span<const Command> commands) {
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
+        std::string(argv[1]) == "help") {
+        printOverview(commands);
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string name = argv[1];
+    for (const Command& command : commands) {
+        if (name != command.name) continue;
+        for (int i = 2; i < argc; ++i) {
+            if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+                std::cout << command.summary << "\n" << command.usage;
+                return 0;
+            }
+        }
+        Arguments args;
+        if (!Parser::parse(command, argc, argv, args)) return 2;
+        return command.run(args);
+    }
+    std::cerr << "shadowfx: unknown command '" << name << "'\n";
+    printOverview(commands);
+    return 2;
+}
+
+}  // namespace shadowfx::cli

@@ -1,0 +1,42 @@
+// CommandLine: the subcommand table and argument parsing shared by the shadowfx subcommands.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace shadowfx::cli {
+
+class Arguments {
+public:
+    const std::string& positional(size_t index) const { return mPositional.at(index); }
+    size_t positionalCount() const { return mPositional.size(); }
+    bool flag(const std::string& name) const { return mFlags.count(name) > 0; }
+    // The last value given for an option, or `fallback`.
+    std::string value(const std::string& name, const std::string& fallback = "") const;
+    int intValue(const std::string& name, int fallback) const;
+    std::vector<std::string> all(const std::string& name) const;  // every value of a repeatable option
+
+private:
+    friend struct Parser;
+    std::vector<std::string> mPositional;
+    std::map<std::string, std::vector<std::string>> mValues;
+    std::map<std::string, bool> mFlags;
+};
+
+struct Command {
+    const char* name;
+    const char* summary;
+    const char* usage;
+    std::vector<std::string> requiredOptions;  // options that must be given (with a value)
+    std::vector<std::string> valueOptions;     // options that take a value
+    std::vector<std::string> flags;            // options without a value
+    std::function<int(const Arguments&)> run;
+};
+
+// Parses argv for the named subcommand and runs it. Exit codes: the command's; 2 for usage errors.
+int dispatch(int argc, char** argv, std::span<const Command> commands);
+
+}  // namespace shadowfx::cli

@@ -1,0 +1,209 @@
+// shadowfx: the command-line tool. Thin by design: parse arguments, call the fx and runtime libraries,
+// print. Subcommands are one table (kCommands); each has --help.
+//
+//   shadowfx render EFFECT.fx --out FILE.png [options]   render one frame headlessly
+//   shadowfx compile EFFECT.fx [--technique NAME]        print the generated GLSL, or the diagnostics
+//   shadowfx info EFFECT.fx                              list techniques, passes and parameters
+#include "CommandLine.h"
+
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+#include <runtime/EffectRenderer.h>
+#include <runtime/GlContext.h>
+#include <runtime/Scene.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using shadowfx::cli::Arguments;
+
+// Prints every diagnostic as "path:line:column: severity: message" with the source line and a caret.
+class StderrSink : public fx::DiagnosticSink {
+public:
+    using fx::DiagnosticSink::report;
+    explicit StderrSink(bool verbose) : mVerbose(verbose) {}
+    void report(const fx::Diagnostic& diagnostic) override {
+        if (diagnostic.severity == fx::Severity::Note && !mVerbose) return;
+        if (diagnostic.severity == fx::Severity::Error) ++mErrors;
+        std::cerr << fx::renderDiagnostic(diagnostic) << "\n";
+    }
+    int errors() const { return mErrors; }
+
+private:
+    bool mVerbose;
+    int mErrors = 0;
+};
+
+fx::ParseOptions parseOptions(const Arguments& args) {
+    fx::ParseOptions options;
+    options.includeDirs = args.all("-I");
+    for (const std::string& define : args.all("-D")) {
+        const size_t eq = define.find('=');
+        options.defines.emplace_back(define.substr(0, eq), eq == std::string::npos ? "1" : define.substr(eq + 1));
+    }
+    return options;
+}
+
+std::shared_ptr<fx::CompiledEffect> loadEffect(const Arguments& args, const std::string& technique,
+                                               fx::DiagnosticSink& sink) {
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(args.positional(0), parseOptions(args), sink);
+    if (!effect) return nullptr;
+    fx::CompileOptions options;
+    options.technique = technique;
+    return fx::compileEffect(effect, options, sink);
+}
+
+// [SECTION] render
+int renderCommand(const Arguments& args) {
+    const std::string out = args.value("--out");
+    const bool verbose = args.flag("--verbose");
+    StderrSink sink(verbose);
+    // A failed render must not leave an image behind that looks like a success.
+    std::error_code ignored;
+    std::filesystem::remove(out, ignored);
+
+    const int width = args.intValue("--width", 800);
+    const int height = args.intValue("--height", 600);
+    if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+        std::cerr << "shadowfx render: --width and --height must be between 1 and 16384\n";
+        return 2;
+    }
+    const std::string sceneName = args.value("--scene", "boxes");
+    std::optional<runtime::Scene> scene = runtime::makeBuiltinScene(sceneName);
+    if (!scene) {
+        std::cerr << "shadowfx render: unknown scene '" << sceneName << "' (built-in scenes:";
+        for (const std::string& name : runtime::builtinSceneNames()) std::cerr << " " << name;
+        std::cerr << ")\n";
+        return 2;
+    }
+    const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
+    if (!backend || *backend == runtime::Backend::GLFW) {
+        std::cerr << "shadowfx render: --backend must be auto, osmesa or egl\n";
+        return 2;
+    }
+
+    std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, args.value("--technique"), sink);
+    if (!compiled || sink.errors() > 0) return 1;
+
+    runtime::ContextOptions contextOptions;
+    contextOptions.backend = *backend;
+    contextOptions.debug = verbose;
+    std::string contextError;
+    std::unique_ptr<runtime::GlContext> context = runtime::createContext(contextOptions, contextError);
+    if (!context) {
+        std::cerr << "shadowfx render: " << contextError << "\n";
+        return 1;
+    }
+    if (verbose) {
+        std::cerr << "shadowfx: backend " << runtime::backendName(context->backend()) << ": " << context->renderer()
+                  << "\n";
+    }
+
+    std::unique_ptr<runtime::EffectRenderer> renderer = runtime::EffectRenderer::create(compiled, sink);
+    if (!renderer) return 1;
+    for (const std::string& assignment : args.all("--set")) {
+        const size_t eq = assignment.find('=');
+        if (eq == std::string::npos) {
+            std::cerr << "shadowfx render: --set expects PARAM=VALUE, got '" << assignment << "'\n";
+            return 2;
+        }
+        if (!renderer->setParameterFromText(assignment.substr(0, eq), assignment.substr(eq + 1), sink)) return 1;
+    }
+
+    runtime::FrameOptions frame;
+    frame.width = width;
+    frame.height = height;
+    frame.technique = args.value("--technique");
+    runtime::FrameStats stats;
+    if (!renderer->render(*scene, frame, sink, &stats) || sink.errors() > 0) return 1;
+
+    std::string writeError;
+    if (!runtime::writePng(renderer->readFrame(), out, writeError)) {
+        std::cerr << "shadowfx render: " << writeError << "\n";
+        std::filesystem::remove(out, ignored);
+        return 1;
+    }
+    if (args.flag("--stats") || verbose) {
+        std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws, " << stats.triangles
+                  << " triangles, " << stats.clears << " clears\n";
+    }
+    std::cout << out << "\n";
+    return 0;
+}
+
+// [SECTION] compile
+int compileCommand(const Arguments& args) {
+    StderrSink sink(args.flag("--verbose"));
+    std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, args.value("--technique"), sink);
+    if (!compiled || sink.errors() > 0) return 1;
+    const bool showHlsl = args.flag("--hlsl");
+    for (const fx::CompiledTechnique& technique : compiled->techniques) {
+        for (const fx::CompiledPass& pass : technique.passes) {
+            for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment}) {
+                if (stage->entryPoint.empty()) continue;
+                std::cout << "// technique " << technique.name << ", pass " << pass.name << ", "
+                          << (stage->stage == fx::ShaderStage::Vertex ? "vertex" : "pixel") << " shader "
+                          << stage->entryPoint << " (" << stage->profile << ")\n";
+                if (showHlsl) std::cout << "// generated HLSL:\n" << stage->hlsl << "\n// GLSL:\n";
+                std::cout << stage->glsl << "\n";
+            }
+        }
+    }
+    return 0;
+}
+
+// [SECTION] info
+int infoCommand(const Arguments& args) {
+    StderrSink sink(args.flag("--verbose"));
+    std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, "", sink);
+    if (!compiled || sink.errors() > 0) return 1;
+    const fx::Effect& effect = *compiled->effect;
+    std::cout << "techniques:\n";
+    for (const fx::CompiledTechnique& technique : compiled->techniques) {
+        std::cout << "  " << technique.name << ":";
+        for (const fx::CompiledPass& pass : technique.passes) std::cout << " " << pass.name;
+        std::cout << "\n";
+    }
+    std::cout << "parameters:\n";
+    for (size_t i = 0; i < effect.parameters.size(); ++i) {
+        const fx::Parameter& p = effect.parameters[i];
+        if (p.isStatic) continue;
+        std::cout << "  " << p.type.hlslName() << " " << p.name;
+        if (!p.semantic.empty()) std::cout << " : " << p.semantic;
+        std::cout << "\n";
+    }
+    return 0;
+}
+
+const shadowfx::cli::Command kCommands[] = {
+    {"render", "render one frame of an effect headlessly and write a PNG",
+     "usage: shadowfx render EFFECT.fx --out FILE.png [options]\n"
+     "  --out FILE.png        where to write the image (required; removed if rendering fails)\n"
+     "  --width W, --height H image size (default 800x600)\n"
+     "  --technique NAME      technique to run (default: the effect's STANDARDSGLOBAL choice, else the first)\n"
+     "  --scene NAME          built-in scene: boxes, torus, teapot (default boxes)\n"
+     "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
+     "  --backend NAME        auto, osmesa or egl (default auto)\n"
+     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
+     "  --stats               print passes, draws and triangles\n"
+     "  --verbose             print the GL renderer and notes\n",
+     {"--out"}, {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
+     {"--stats", "--verbose"}, renderCommand},
+    {"compile", "print the generated GLSL of every pass, or the diagnostics",
+     "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl]\n"
+     "  --technique NAME      only this technique\n"
+     "  --hlsl                also print the HLSL unit generated for each stage\n"
+     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n",
+     {}, {"--technique", "-I", "-D"}, {"--hlsl", "--verbose"}, compileCommand},
+    {"info", "list an effect's techniques, passes and parameters",
+     "usage: shadowfx info EFFECT.fx\n", {}, {"-I", "-D"}, {"--verbose"}, infoCommand},
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return shadowfx::cli::dispatch(argc, argv, kCommands); }

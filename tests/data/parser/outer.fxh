@@ -1,0 +1,2 @@
+float fromDisk : DISK;
+#include "sub/inner.fxh"

@@ -1,0 +1,84 @@
+// EffectHarness: parse, compile and render effects in tests through the real pipeline (glslang,
+// SPIRV-Cross, Mesa's OpenGL). One headless context per test process.
+#pragma once
+
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+#include <runtime/EffectRenderer.h>
+#include <runtime/GlContext.h>
+#include <runtime/Scene.h>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace shadowfx::test {
+
+inline runtime::GlContext& sharedContext() {
+    static std::unique_ptr<runtime::GlContext> context = [] {
+        std::string error;
+        runtime::ContextOptions options;
+        auto created = runtime::createContext(options, error);
+        if (!created) ADD_FAILURE() << "no GL context: " << error;
+        return created;
+    }();
+    if (!context) throw std::runtime_error("no GL context");
+    context->makeCurrent();
+    return *context;
+}
+
+inline std::string sourcePath(const std::string& relative) { return std::string(SHADOWFX_SOURCE_DIR) + "/" + relative; }
+
+// Parses and compiles an effect (a file when `isFile`, else inline source named `name`), then creates
+// its renderer. Fails the current test with the diagnostics on any error.
+inline std::unique_ptr<runtime::EffectRenderer> loadEffect(const std::string& fileOrSource, bool isFile,
+                                                           const std::string& name = "inline.fx") {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    fx::ParseOptions parseOptions;
+    std::shared_ptr<fx::Effect> effect =
+        isFile ? fx::parseEffectFile(fileOrSource, parseOptions, diagnostics)
+               : fx::parseEffectSource(fileOrSource, name, parseOptions, diagnostics);
+    if (!effect) {
+        ADD_FAILURE() << "parse failed:\n" << diagnostics.str();
+        return nullptr;
+    }
+    std::shared_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    if (!compiled || diagnostics.hasErrors()) {
+        ADD_FAILURE() << "compile failed:\n" << diagnostics.str();
+        return nullptr;
+    }
+    std::unique_ptr<runtime::EffectRenderer> renderer = runtime::EffectRenderer::create(compiled, diagnostics);
+    if (!renderer) ADD_FAILURE() << "renderer creation failed:\n" << diagnostics.str();
+    return renderer;
+}
+
+inline bool render(runtime::EffectRenderer& renderer, const runtime::Scene& scene, int width, int height,
+                   const std::string& technique = "") {
+    fx::DiagnosticList diagnostics;
+    runtime::FrameOptions options;
+    options.width = width;
+    options.height = height;
+    options.technique = technique;
+    const bool ok = renderer.render(scene, options, diagnostics);
+    EXPECT_TRUE(ok && !diagnostics.hasErrors()) << diagnostics.str();
+    return ok;
+}
+
+// Luminance in [0, 1] of an 8-bit RGBA pixel.
+inline float luminance(const uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f; }
+
+// Fails on a blank or constant image: an image test that would pass on one is a defect.
+inline ::testing::AssertionResult notConstant(const runtime::FrameImage& image) {
+    if (image.rgba.empty()) return ::testing::AssertionFailure() << "empty image";
+    size_t differing = 0;
+    for (size_t i = 4; i < image.rgba.size(); i += 4)
+        if (image.rgba[i] != image.rgba[0] || image.rgba[i + 1] != image.rgba[1] || image.rgba[i + 2] != image.rgba[2])
+            ++differing;
+    if (differing < image.rgba.size() / 4 / 100)
+        return ::testing::AssertionFailure() << "image is (nearly) constant: " << differing << " pixels differ";
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace shadowfx::test

@@ -1,0 +1,117 @@
+// The shadowfx command as users script against it: exit codes, `path:line:column: error:` diagnostics for
+// each class of bad input, no output image after a failure, and the --help of every subcommand.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
+const std::string kSource = SHADOWFX_SOURCE_DIR;
+
+struct RunResult {
+    int exitCode = -1;
+    bool crashed = false;
+    std::string output;  // stdout and stderr together
+};
+
+RunResult run(const std::string& arguments) {
+    RunResult result;
+    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.crashed = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) >= 128);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+struct BadInput {
+    const char* file;
+    const char* location;  // "file:line:column:" as printed
+    const char* message;   // a part of the message
+};
+
+class BadInputs : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {
+    const BadInput& bad = GetParam();
+    const std::string out = std::filesystem::temp_directory_path() / ("shadowfx_bad_" + std::string(bad.file) + ".png");
+    std::ofstream(out) << "stale";  // a stale image from an earlier run must not survive a failure
+    const RunResult result = run("render tests/data/bad/" + std::string(bad.file) + " --out " + out);
+    EXPECT_FALSE(result.crashed) << result.output;
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string expected = "tests/data/bad/" + std::string(bad.location) + " error: ";
+    EXPECT_NE(result.output.find(expected), std::string::npos) << "expected '" << expected << "' in:\n" << result.output;
+    EXPECT_NE(result.output.find(bad.message), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Diagnostics, BadInputs,
+    ::testing::Values(BadInput{"syntax_error.fx", "syntax_error.fx:3:1:", "';'"},
+                      BadInput{"unclosed_pass.fx", "unclosed_pass.fx:6:43:", "to close 'pass' at line 4"},
+                      BadInput{"unknown_state.fx", "unknown_state.fx:7:9:", "CullMood"},
+                      BadInput{"unknown_state_value.fx", "unknown_state_value.fx:7:19:", "Minimum"},
+                      BadInput{"unknown_script_command.fx", "unknown_script_command.fx:11:26:", "Paint"},
+                      BadInput{"missing_entry_point.fx", "missing_entry_point.fx:7:23:", "NoSuchFunction"},
+                      BadInput{"hlsl_error.fx", "hlsl_error.fx:6:18:", "xyzq"},
+                      BadInput{"missing_include.fx", "missing_include.fx:2:10:", "does_not_exist.fxh"},
+                      BadInput{"script_unknown_pass.fx", "script_unknown_pass.fx:3:32:", "Shadow"},
+                      BadInput{"unknown_format.fx", "unknown_format.fx:1:83:", "R33F"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) {
+        std::string name = info.param.file;
+        return name.substr(0, name.find('.'));
+    });
+
+TEST(Cli, RenderWritesAPng) {
+    const std::string out = std::filesystem::temp_directory_path() / "shadowfx_cli_render.png";
+    std::filesystem::remove(out);
+    const RunResult result =
+        run("render effects/thesis_fxcomposer.fx --out " + out + " --width 160 --height 120 --set PCF=true --stats");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream png(out, std::ios::binary);
+    char signature[8] = {};
+    png.read(signature, 8);
+    EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+    EXPECT_NE(result.output.find("passes"), std::string::npos) << result.output;
+}
+
+TEST(Cli, CompilePrintsGlslForEveryPass) {
+    const RunResult result = run("compile effects/thesis_fxcomposer.fx --technique main");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("pass RenderShadowMap, vertex shader RenderShadowMapVS"), std::string::npos);
+    EXPECT_NE(result.output.find("pass RenderScene, pixel shader RenderScenePS"), std::string::npos);
+    EXPECT_NE(result.output.find("#version 450"), std::string::npos);
+}
+
+TEST(Cli, EverySubcommandHasHelp) {
+    for (const char* command : {"render", "compile", "info"}) {
+        const RunResult result = run(std::string(command) + " --help");
+        EXPECT_EQ(result.exitCode, 0) << command;
+        EXPECT_NE(result.output.find("usage: shadowfx " + std::string(command)), std::string::npos) << result.output;
+    }
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+    EXPECT_EQ(run("render effects/thesis_fxcomposer.fx").exitCode, 2);  // --out missing
+    EXPECT_EQ(run("render effects/thesis_fxcomposer.fx --out x.png --backend vulkan").exitCode, 2);
+    EXPECT_EQ(run("render effects/thesis_fxcomposer.fx --out x.png --scene nowhere").exitCode, 2);
+    EXPECT_EQ(run("frobnicate").exitCode, 2);
+}
+
+TEST(Cli, UnknownTechniqueIsAnError) {
+    const RunResult result = run("render effects/thesis_fxcomposer.fx --out /tmp/shadowfx_nt.png --technique nope");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find("nope"), std::string::npos) << result.output;
+}
+
+}  // namespace

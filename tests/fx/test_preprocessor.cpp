@@ -1,0 +1,147 @@
+// Preprocessor tests: includes (both forms, relative paths, include dirs, missing, recursive), defines,
+// #line-correct locations.
+#include <fx/EffectParser.h>
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace fx;
+
+namespace {
+
+ParseOptions memoryOptions(const std::map<std::string, std::string>& files) {
+    ParseOptions options;
+    options.readFile = [files](const std::string& path) -> std::optional<std::string> {
+        auto found = files.find(path);
+        if (found == files.end()) return std::nullopt;
+        return found->second;
+    };
+    return options;
+}
+
+}  // namespace
+
+TEST(Preprocessor, QuotedAndAngleIncludesWithBackslashes) {
+    std::map<std::string, std::string> files = {
+        {"fx/lib/common.fxh", "float common1;\n"},
+        {"fx/lib/more.fxh", "float more1;\n"},
+    };
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#include \"lib/common.fxh\"\n#include <lib\\more.fxh>\nfloat mine;\n",
+                                    "fx/main.fx", memoryOptions(files), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(effect->findParameter("common1"));
+    EXPECT_EQ(effect->findParameter("common1")->loc.file, "fx/lib/common.fxh");
+    EXPECT_EQ(effect->findParameter("more1")->loc.file, "fx/lib/more.fxh");
+    EXPECT_EQ(effect->findParameter("mine")->loc.file, "fx/main.fx");
+    EXPECT_EQ(effect->findParameter("mine")->loc.line, 3);
+    EXPECT_EQ(effect->includedFiles, (std::vector<std::string>{"fx/main.fx", "fx/lib/common.fxh", "fx/lib/more.fxh"}));
+}
+
+TEST(Preprocessor, NestedIncludeIsRelativeToIncludingFile) {
+    std::map<std::string, std::string> files = {
+        {"a/one.fxh", "#include \"../b/two.fxh\"\nfloat one;\n"},
+        {"b/two.fxh", "\n\nfloat two;\n"},
+    };
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#include \"a/one.fxh\"\nfloat main1;\n", "main.fx", memoryOptions(files), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_EQ(effect->findParameter("two")->loc.file, "b/two.fxh");
+    EXPECT_EQ(effect->findParameter("two")->loc.line, 3);
+    EXPECT_EQ(effect->findParameter("one")->loc.file, "a/one.fxh");
+    EXPECT_EQ(effect->findParameter("one")->loc.line, 2);
+    EXPECT_EQ(effect->findParameter("main1")->loc.line, 2);
+}
+
+TEST(Preprocessor, IncludeDirectories) {
+    std::map<std::string, std::string> files = {{"/sys/inc/shared.fxh", "float shared1;\n"}};
+    ParseOptions options = memoryOptions(files);
+    options.includeDirs = {"/nothing", "/sys/inc"};
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#include <shared.fxh>\n", "dir/main.fx", options, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_EQ(effect->findParameter("shared1")->loc.file, "/sys/inc/shared.fxh");
+}
+
+TEST(Preprocessor, IncludesFromDisk) {
+    ParseOptions options;
+    DiagnosticList diags;
+    std::string dir = std::string(SHADOWFX_SOURCE_DIR) + "/tests/data/parser/";
+    auto effect = parseEffectSource("#include \"outer.fxh\"\n", dir + "main.fx", options, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(effect->findParameter("fromDisk"));
+    EXPECT_EQ(effect->findParameter("fromDisk")->semantic, "DISK");
+    EXPECT_EQ(effect->findParameter("innerValue")->loc.file, dir + "sub/inner.fxh");
+    EXPECT_EQ(effect->includedFiles.size(), 3u);
+}
+
+TEST(Preprocessor, MissingInclude) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource("float a;\n#include <missing.fxh>\n", "main.fx", memoryOptions({}), diags);
+    EXPECT_FALSE(effect);
+    ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
+    EXPECT_EQ(diags.items()[0].id, DiagId::IncludeNotFound);
+    EXPECT_EQ(diags.items()[0].loc.str(), "main.fx:2:10");
+}
+
+TEST(Preprocessor, RecursiveIncludeIsAnError) {
+    std::map<std::string, std::string> files = {{"self.fxh", "float s;\n#include \"self.fxh\"\n"}};
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#include \"self.fxh\"\n", "main.fx", memoryOptions(files), diags);
+    EXPECT_FALSE(effect);
+    ASSERT_TRUE(diags.hasErrors());
+    EXPECT_EQ(diags.items()[0].id, DiagId::PreprocessorError);
+    EXPECT_NE(diags.items()[0].message.find("recursive"), std::string::npos) << diags.str();
+    EXPECT_EQ(diags.items()[0].loc.file, "self.fxh");
+    EXPECT_EQ(diags.items()[0].loc.line, 2);
+}
+
+TEST(Preprocessor, TotalSizeLimit) {
+    std::map<std::string, std::string> files = {{"big.fxh", std::string(2000, ' ') + "\nfloat big;\n"}};
+    ParseOptions options = memoryOptions(files);
+    options.maxSourceBytes = 1000;
+    DiagnosticList diags;
+    EXPECT_FALSE(parseEffectSource("#include \"big.fxh\"\n", "main.fx", options, diags));
+    ASSERT_TRUE(diags.hasErrors());
+    EXPECT_NE(diags.items()[0].message.find("1000 bytes"), std::string::npos) << diags.str();
+}
+
+TEST(Preprocessor, DefinesAndConditionals) {
+    ParseOptions options = memoryOptions({});
+    options.defines = {{"QUALITY", "2"}, {"USE_PCF", "1"}};
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#define SIZE 512
+#if QUALITY > 1 && USE_PCF
+float pcf = SIZE;
+#else
+float nopcf;
+#endif
+#ifdef UNDEFINED_THING
+float never;
+#endif
+float after;
+)",
+                                    "main.fx", options, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(effect->findParameter("pcf"));
+    EXPECT_EQ(effect->findParameter("pcf")->initializer->number, 512);
+    EXPECT_FALSE(effect->findParameter("nopcf"));
+    EXPECT_FALSE(effect->findParameter("never"));
+    EXPECT_EQ(effect->findParameter("after")->loc.line, 10);
+}
+
+TEST(Preprocessor, LineDirectiveInSource) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource("float a;\n#line 100 \"virtual.fx\"\nfloat b;\n", "main.fx", memoryOptions({}), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_EQ(effect->findParameter("b")->loc.file, "virtual.fx");
+    EXPECT_EQ(effect->findParameter("b")->loc.line, 100);
+}
+
+TEST(Preprocessor, PragmasAreSkipped) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#pragma pack_matrix(row_major)\nfloat a;\n", "main.fx", memoryOptions({}), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(effect->findParameter("a"));
+}

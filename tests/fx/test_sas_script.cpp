@@ -1,0 +1,96 @@
+// SAS script parsing: commands, case-insensitivity, selectors, locations inside concatenated strings.
+#include <fx/EffectParser.h>
+#include <fx/SasScript.h>
+
+#include <gtest/gtest.h>
+
+using namespace fx;
+
+TEST(SasScript, AllCommands) {
+    DiagnosticList diags;
+    auto commands = parseSasScript(
+        "RenderColorTarget0=RT;RenderColorTarget=;RenderColorTarget3=X;RenderDepthStencilTarget=D;"
+        "ClearSetColor=ClearColor;ClearSetDepth=ClearDepth;ClearSetStencil=S;Clear=Color;Clear=depth;"
+        "Clear=STENCIL;Draw=Buffer;RenderPort=light0;LoopByCount=N;LoopGetIndex=i;LoopEnd=;Pass=p0;"
+        "ScriptOrder=standard;ScriptClass=object;ScriptOutput=color;ScriptSignature=x;",
+        SourceLoc{"s.fx", 1, 1}, diags);
+    EXPECT_FALSE(diags.hasErrors()) << diags.str();
+    ASSERT_EQ(commands.size(), 20u);
+    EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::RenderColorTarget);
+    EXPECT_EQ(commands[0].index, 0);
+    EXPECT_EQ(commands[0].value, "RT");
+    EXPECT_EQ(commands[1].index, 0);
+    EXPECT_EQ(commands[1].value, "");
+    EXPECT_EQ(commands[2].index, 3);
+    EXPECT_EQ(commands[3].kind, ScriptCommand::Kind::RenderDepthStencilTarget);
+    EXPECT_EQ(commands[7].clear, ScriptCommand::ClearWhat::Color);
+    EXPECT_EQ(commands[8].clear, ScriptCommand::ClearWhat::Depth);
+    EXPECT_EQ(commands[9].clear, ScriptCommand::ClearWhat::Stencil);
+    EXPECT_EQ(commands[10].draw, ScriptCommand::DrawWhat::Buffer);
+    EXPECT_EQ(commands[14].kind, ScriptCommand::Kind::LoopEnd);
+    EXPECT_EQ(commands[15].kind, ScriptCommand::Kind::Pass);
+    EXPECT_EQ(commands[19].kind, ScriptCommand::Kind::ScriptSignature);
+    EXPECT_EQ(scriptCommandName(commands[11].kind), "RenderPort");
+}
+
+TEST(SasScript, CaseInsensitive) {
+    DiagnosticList diags;
+    auto commands = parseSasScript(" draw = geometry ; PASS=P1;renderCOLORtarget1=T;", SourceLoc{"s.fx", 3, 10}, diags);
+    EXPECT_FALSE(diags.hasErrors()) << diags.str();
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Draw);
+    EXPECT_EQ(commands[0].draw, ScriptCommand::DrawWhat::Geometry);
+    EXPECT_EQ(commands[0].loc.column, 11);
+    EXPECT_EQ(commands[1].value, "P1");
+    EXPECT_EQ(commands[2].index, 1);
+}
+
+TEST(SasScript, TechniqueSelector) {
+    DiagnosticList diags;
+    auto commands = parseSasScript("Technique=UseFast?Fast:Slow;", SourceLoc{"s.fx", 1, 1}, diags);
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].selectorCondition, "UseFast");
+    EXPECT_EQ(commands[0].selectorTrue, "Fast");
+    EXPECT_EQ(commands[0].selectorFalse, "Slow");
+    commands = parseSasScript("Technique=main;", SourceLoc{"s.fx", 1, 1}, diags);
+    EXPECT_EQ(commands[0].value, "main");
+    EXPECT_EQ(commands[0].selectorCondition, "");
+    EXPECT_FALSE(diags.hasErrors());
+}
+
+TEST(SasScript, UnknownCommandLocatedInConcatenatedString) {
+    const char* source = R"(technique t <
+    string Script = "Pass=a;"
+                    "Pass=b;  Bogus=1;";
+> { pass a {} pass b {} }
+)";
+    DiagnosticList diags;
+    ParseOptions options;
+    auto effect = parseEffectSource(source, "s.fx", options, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    DiagnosticList scriptDiags;
+    auto commands = parseSasScript(effect->techniques[0].annotation("Script")->value, scriptDiags);
+    EXPECT_EQ(commands.size(), 2u);
+    ASSERT_EQ(scriptDiags.items().size(), 1u);
+    EXPECT_EQ(scriptDiags.items()[0].id, DiagId::UnknownScriptCommand);
+    EXPECT_EQ(scriptDiags.items()[0].loc.str(), "s.fx:3:31");
+    EXPECT_EQ(commands[1].loc.str(), "s.fx:3:22");
+}
+
+TEST(SasScript, InvalidValues) {
+    DiagnosticList diags;
+    auto commands = parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?b;Pass", SourceLoc{"s.fx", 5, 1}, diags);
+    EXPECT_TRUE(commands.empty());
+    ASSERT_EQ(diags.errorCount(), 5u) << diags.str();
+    for (const Diagnostic& d : diags.items()) EXPECT_EQ(d.id, DiagId::InvalidScriptCommand);
+    EXPECT_EQ(diags.items()[1].loc.column, 18);
+}
+
+TEST(SasScript, ScriptExternalIsIgnoredWithWarning) {
+    DiagnosticList diags;
+    auto commands = parseSasScript("ScriptExternal=color;", SourceLoc{"s.fx", 1, 1}, diags);
+    EXPECT_EQ(commands.size(), 1u);
+    EXPECT_FALSE(diags.hasErrors());
+    ASSERT_EQ(diags.items().size(), 1u);
+    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptCommandIgnored);
+}
