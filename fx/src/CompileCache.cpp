@@ -35,6 +35,8 @@ const StageProgram* CompileCache::find(uint64_t key) {
     return &it->second;
 }
 
-void CompileCache::store(uint64_t key, const StageProgram& program) { mEntries[key] = program; }
+void CompileCache::store(uint64_t key, const StageProgram& program) {
+    mEntries[key] = program;
+}
 
 }  // namespace fx

@@ -38,27 +38,44 @@ struct FormatName {
 // plain GL-ish names. D3D9 A8R8G8B8/X8R8G8B8 are BGRA in memory; GL uploads handle the swizzle, so both map
 // to RGBA8 here.
 constexpr FormatName kFormats[] = {
-    {"A8R8G8B8", TextureFormat::RGBA8},       {"X8R8G8B8", TextureFormat::RGBA8},
-    {"A8B8G8R8", TextureFormat::RGBA8},       {"X8B8G8R8", TextureFormat::RGBA8},
-    {"R32F", TextureFormat::R32F},            {"G32R32F", TextureFormat::RG32F},
-    {"A16B16G16R16F", TextureFormat::RGBA16F}, {"A32B32G32R32F", TextureFormat::RGBA32F},
-    {"R16F", TextureFormat::R16F},            {"G16R16F", TextureFormat::RG16F},
-    {"D24S8", TextureFormat::D24S8},          {"D24X8", TextureFormat::D24X8},
-    {"D16", TextureFormat::D16},              {"D16_LOCKABLE", TextureFormat::D16},
-    {"D32", TextureFormat::D32F},             {"D32F", TextureFormat::D32F},
+    {"A8R8G8B8", TextureFormat::RGBA8},
+    {"X8R8G8B8", TextureFormat::RGBA8},
+    {"A8B8G8R8", TextureFormat::RGBA8},
+    {"X8B8G8R8", TextureFormat::RGBA8},
+    {"R32F", TextureFormat::R32F},
+    {"G32R32F", TextureFormat::RG32F},
+    {"A16B16G16R16F", TextureFormat::RGBA16F},
+    {"A32B32G32R32F", TextureFormat::RGBA32F},
+    {"R16F", TextureFormat::R16F},
+    {"G16R16F", TextureFormat::RG16F},
+    {"D24S8", TextureFormat::D24S8},
+    {"D24X8", TextureFormat::D24X8},
+    {"D16", TextureFormat::D16},
+    {"D16_LOCKABLE", TextureFormat::D16},
+    {"D32", TextureFormat::D32F},
+    {"D32F", TextureFormat::D32F},
     {"D32F_LOCKABLE", TextureFormat::D32F},
     // DXGI
-    {"R8G8B8A8_UNORM", TextureFormat::RGBA8}, {"B8G8R8A8_UNORM", TextureFormat::RGBA8},
-    {"R16G16B16A16_FLOAT", TextureFormat::RGBA16F}, {"R32G32B32A32_FLOAT", TextureFormat::RGBA32F},
-    {"R16_FLOAT", TextureFormat::R16F},       {"R32_FLOAT", TextureFormat::R32F},
-    {"R16G16_FLOAT", TextureFormat::RG16F},   {"R32G32_FLOAT", TextureFormat::RG32F},
-    {"D16_UNORM", TextureFormat::D16},        {"D24_UNORM_S8_UINT", TextureFormat::D24S8},
+    {"R8G8B8A8_UNORM", TextureFormat::RGBA8},
+    {"B8G8R8A8_UNORM", TextureFormat::RGBA8},
+    {"R16G16B16A16_FLOAT", TextureFormat::RGBA16F},
+    {"R32G32B32A32_FLOAT", TextureFormat::RGBA32F},
+    {"R16_FLOAT", TextureFormat::R16F},
+    {"R32_FLOAT", TextureFormat::R32F},
+    {"R16G16_FLOAT", TextureFormat::RG16F},
+    {"R32G32_FLOAT", TextureFormat::RG32F},
+    {"D16_UNORM", TextureFormat::D16},
+    {"D24_UNORM_S8_UINT", TextureFormat::D24S8},
     {"D32_FLOAT", TextureFormat::D32F},
     // plain
-    {"RGBA8", TextureFormat::RGBA8},          {"RGBA16F", TextureFormat::RGBA16F},
-    {"RGBA32F", TextureFormat::RGBA32F},      {"RG16F", TextureFormat::RG16F},
-    {"RG32F", TextureFormat::RG32F},          {"DEPTH24_STENCIL8", TextureFormat::D24S8},
-    {"DEPTH32F", TextureFormat::D32F},        {"DEPTH16", TextureFormat::D16},
+    {"RGBA8", TextureFormat::RGBA8},
+    {"RGBA16F", TextureFormat::RGBA16F},
+    {"RGBA32F", TextureFormat::RGBA32F},
+    {"RG16F", TextureFormat::RG16F},
+    {"RG32F", TextureFormat::RG32F},
+    {"DEPTH24_STENCIL8", TextureFormat::D24S8},
+    {"DEPTH32F", TextureFormat::D32F},
+    {"DEPTH16", TextureFormat::D16},
 };
 }  // namespace
 
@@ -75,17 +92,28 @@ std::optional<TextureFormat> parseTextureFormat(std::string_view name) {
 
 std::string_view textureFormatName(TextureFormat format) {
     switch (format) {
-        case TextureFormat::RGBA8: return "RGBA8";
-        case TextureFormat::RGBA16F: return "RGBA16F";
-        case TextureFormat::RGBA32F: return "RGBA32F";
-        case TextureFormat::R16F: return "R16F";
-        case TextureFormat::R32F: return "R32F";
-        case TextureFormat::RG16F: return "RG16F";
-        case TextureFormat::RG32F: return "RG32F";
-        case TextureFormat::D16: return "D16";
-        case TextureFormat::D24S8: return "D24S8";
-        case TextureFormat::D24X8: return "D24X8";
-        case TextureFormat::D32F: return "D32F";
+        case TextureFormat::RGBA8:
+            return "RGBA8";
+        case TextureFormat::RGBA16F:
+            return "RGBA16F";
+        case TextureFormat::RGBA32F:
+            return "RGBA32F";
+        case TextureFormat::R16F:
+            return "R16F";
+        case TextureFormat::R32F:
+            return "R32F";
+        case TextureFormat::RG16F:
+            return "RG16F";
+        case TextureFormat::RG32F:
+            return "RG32F";
+        case TextureFormat::D16:
+            return "D16";
+        case TextureFormat::D24S8:
+            return "D24S8";
+        case TextureFormat::D24X8:
+            return "D24X8";
+        case TextureFormat::D32F:
+            return "D32F";
     }
     return "RGBA8";
 }

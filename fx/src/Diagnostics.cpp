@@ -27,15 +27,24 @@ constexpr DiagInfo kDiagInfo[] = {
 };
 }  // namespace
 
-std::string_view diagnosticName(DiagId id) { return kDiagInfo[static_cast<size_t>(id)].name; }
-Severity defaultSeverity(DiagId id) { return kDiagInfo[static_cast<size_t>(id)].severity; }
-std::string_view diagnosticTemplate(DiagId id) { return kDiagInfo[static_cast<size_t>(id)].text; }
+std::string_view diagnosticName(DiagId id) {
+    return kDiagInfo[static_cast<size_t>(id)].name;
+}
+Severity defaultSeverity(DiagId id) {
+    return kDiagInfo[static_cast<size_t>(id)].severity;
+}
+std::string_view diagnosticTemplate(DiagId id) {
+    return kDiagInfo[static_cast<size_t>(id)].text;
+}
 
 std::string_view severityName(Severity severity) {
     switch (severity) {
-        case Severity::Note: return "note";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
+        case Severity::Note:
+            return "note";
+        case Severity::Warning:
+            return "warning";
+        case Severity::Error:
+            return "error";
     }
     return "error";
 }
@@ -60,12 +69,13 @@ void DiagnosticSink::report(DiagId id, const SourceLoc& loc, const std::vector<s
     report(Diagnostic{id, defaultSeverity(id), loc, formatDiagnostic(id, args)});
 }
 
-bool DiagnosticList::hasErrors() const { return errorCount() > 0; }
+bool DiagnosticList::hasErrors() const {
+    return errorCount() > 0;
+}
 
 size_t DiagnosticList::errorCount() const {
-    return static_cast<size_t>(std::count_if(mItems.begin(), mItems.end(), [](const Diagnostic& d) {
-        return d.severity == Severity::Error;
-    }));
+    return static_cast<size_t>(std::count_if(
+        mItems.begin(), mItems.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }));
 }
 
 std::string DiagnosticList::str() const {
@@ -75,8 +85,9 @@ std::string DiagnosticList::str() const {
 }
 
 std::string renderDiagnostic(const Diagnostic& diagnostic, bool withSourceLine) {
-    std::string out = diagnostic.loc.str() + ": " + std::string(severityName(diagnostic.severity)) + ": " +
-                      diagnostic.message;
+    // A diagnostic about no file in particular (an unknown scene name) reads "error: message".
+    std::string out = (diagnostic.loc.file.empty() ? std::string() : diagnostic.loc.str() + ": ") +
+                      std::string(severityName(diagnostic.severity)) + ": " + diagnostic.message;
     if (!withSourceLine || diagnostic.loc.line <= 0 || diagnostic.loc.file.empty()) return out;
     std::ifstream in(diagnostic.loc.file, std::ios::binary);
     if (!in) return out;

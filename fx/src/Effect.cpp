@@ -16,13 +16,19 @@ bool TypeDesc::isNumeric() const {
         case BaseType::UInt:
         case BaseType::Half:
         case BaseType::Float:
-        case BaseType::Double: return true;
-        default: return false;
+        case BaseType::Double:
+            return true;
+        default:
+            return false;
     }
 }
 
-bool TypeDesc::isTexture() const { return base >= BaseType::Texture && base <= BaseType::TextureCube; }
-bool TypeDesc::isSampler() const { return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState; }
+bool TypeDesc::isTexture() const {
+    return base >= BaseType::Texture && base <= BaseType::TextureCube;
+}
+bool TypeDesc::isSampler() const {
+    return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState;
+}
 
 int TypeDesc::componentCount() const {
     int count = rows * cols;
@@ -33,29 +39,58 @@ int TypeDesc::componentCount() const {
 std::string TypeDesc::hlslName() const {
     std::string name;
     switch (base) {
-        case BaseType::Void: return "void";
-        case BaseType::Bool: name = "bool"; break;
-        case BaseType::Int: name = "int"; break;
-        case BaseType::UInt: name = "uint"; break;
-        case BaseType::Half: name = "half"; break;
-        case BaseType::Float: name = "float"; break;
-        case BaseType::Double: name = "double"; break;
-        case BaseType::String: return "string";
-        case BaseType::Texture: return "texture";
-        case BaseType::Texture1D: return "Texture1D";
-        case BaseType::Texture2D: return "Texture2D";
-        case BaseType::Texture3D: return "Texture3D";
-        case BaseType::TextureCube: return "TextureCube";
-        case BaseType::Sampler: return "sampler";
-        case BaseType::Sampler1D: return "sampler1D";
-        case BaseType::Sampler2D: return "sampler2D";
-        case BaseType::Sampler3D: return "sampler3D";
-        case BaseType::SamplerCube: return "samplerCUBE";
-        case BaseType::SamplerState: return "SamplerState";
-        case BaseType::SamplerComparisonState: return "SamplerComparisonState";
-        case BaseType::VertexShader: return "VertexShader";
-        case BaseType::PixelShader: return "PixelShader";
-        case BaseType::Struct: return structName;
+        case BaseType::Void:
+            return "void";
+        case BaseType::Bool:
+            name = "bool";
+            break;
+        case BaseType::Int:
+            name = "int";
+            break;
+        case BaseType::UInt:
+            name = "uint";
+            break;
+        case BaseType::Half:
+            name = "half";
+            break;
+        case BaseType::Float:
+            name = "float";
+            break;
+        case BaseType::Double:
+            name = "double";
+            break;
+        case BaseType::String:
+            return "string";
+        case BaseType::Texture:
+            return "texture";
+        case BaseType::Texture1D:
+            return "Texture1D";
+        case BaseType::Texture2D:
+            return "Texture2D";
+        case BaseType::Texture3D:
+            return "Texture3D";
+        case BaseType::TextureCube:
+            return "TextureCube";
+        case BaseType::Sampler:
+            return "sampler";
+        case BaseType::Sampler1D:
+            return "sampler1D";
+        case BaseType::Sampler2D:
+            return "sampler2D";
+        case BaseType::Sampler3D:
+            return "sampler3D";
+        case BaseType::SamplerCube:
+            return "samplerCUBE";
+        case BaseType::SamplerState:
+            return "SamplerState";
+        case BaseType::SamplerComparisonState:
+            return "SamplerComparisonState";
+        case BaseType::VertexShader:
+            return "VertexShader";
+        case BaseType::PixelShader:
+            return "PixelShader";
+        case BaseType::Struct:
+            return structName;
     }
     if (shape == Shape::Vector) name += std::to_string(cols);
     if (shape == Shape::Matrix) name += std::to_string(rows) + "x" + std::to_string(cols);
@@ -67,7 +102,8 @@ std::string TypeDesc::hlslName() const {
 namespace {
 
 std::string numberText(double value, bool isInteger) {
-    if (isInteger && value >= -9.2e18 && value <= 9.2e18) return std::to_string(static_cast<long long>(value));
+    if (isInteger && value >= -9.2e18 && value <= 9.2e18)
+        return std::to_string(static_cast<long long>(value));
     char buffer[64];
     auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     std::string text(buffer, result.ptr);
@@ -106,26 +142,37 @@ std::string operand(const Expr& e) {
 
 std::string Expr::str() const {
     switch (kind) {
-        case Kind::Number: return numberText(number, isInteger);
-        case Kind::Bool: return number != 0 ? "true" : "false";
-        case Kind::String: return quoted(text);
-        case Kind::Identifier: return text;
-        case Kind::Unary: return text + (args.empty() ? std::string() : operand(args[0]));
+        case Kind::Number:
+            return numberText(number, isInteger);
+        case Kind::Bool:
+            return number != 0 ? "true" : "false";
+        case Kind::String:
+            return quoted(text);
+        case Kind::Identifier:
+            return text;
+        case Kind::Unary:
+            return text + (args.empty() ? std::string() : operand(args[0]));
         case Kind::Binary:
             if (args.size() < 2) return text;
             return operand(args[0]) + " " + text + " " + operand(args[1]);
         case Kind::Ternary:
             if (args.size() < 3) return "?:";
             return operand(args[0]) + " ? " + operand(args[1]) + " : " + operand(args[2]);
-        case Kind::Call: return text + "(" + argList(args) + ")";
-        case Kind::Member: return (args.empty() ? std::string() : operand(args[0])) + "." + text;
+        case Kind::Call:
+            return text + "(" + argList(args) + ")";
+        case Kind::Member:
+            return (args.empty() ? std::string() : operand(args[0])) + "." + text;
         case Kind::Index:
             if (args.size() < 2) return "[]";
             return operand(args[0]) + "[" + args[1].str() + "]";
-        case Kind::InitList: return "{" + argList(args) + "}";
-        case Kind::TextureRef: return "<" + text + ">";
-        case Kind::Compile: return "compile " + profile + " " + text + "(" + argList(args) + ")";
-        case Kind::Cast: return "(" + castType.hlslName() + ")" + (args.empty() ? std::string() : operand(args[0]));
+        case Kind::InitList:
+            return "{" + argList(args) + "}";
+        case Kind::TextureRef:
+            return "<" + text + ">";
+        case Kind::Compile:
+            return "compile " + profile + " " + text + "(" + argList(args) + ")";
+        case Kind::Cast:
+            return "(" + castType.hlslName() + ")" + (args.empty() ? std::string() : operand(args[0]));
     }
     return "?";
 }

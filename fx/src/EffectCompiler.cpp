@@ -13,6 +13,9 @@
 #include "PassLowering.h"
 #include "SpirvToGlsl.h"
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -50,14 +53,16 @@ private:
         mFailed = true;
     }
     std::optional<Value> eval(const Expr& e, const TypeDesc* type) {
-        auto v = evaluate(e, [this](std::string_view n) { return lookup(n); }, type, &mDiagnostics);
+        auto v = evaluate(
+            e, [this](std::string_view n) { return lookup(n); }, type, &mDiagnostics);
         if (!v) mFailed = true;
         return v;
     }
     const Value* lookup(std::string_view name) const {
         auto it = mIndex.find(std::string(name));
-        return it == mIndex.end() || it->second >= mOut->initialValues.size() ? nullptr
-                                                                                : &mOut->initialValues[it->second];
+        return it == mIndex.end() || it->second >= mOut->initialValues.size()
+                   ? nullptr
+                   : &mOut->initialValues[it->second];
     }
 
     void initialValues();
@@ -122,11 +127,21 @@ void Compiler::textures() {
         int2.shape = Shape::Vector;
         int2.cols = 2;
         TypeDesc scalar;
+        // Written so that NaN, infinities and fractions below 1 fail too (`w <= 0` let NaN and 0.5 through,
+        // and the cast of NaN or 1e30 to an integer was undefined behaviour).
+        const int maxSize = mOptions.maxRenderTargetSize;
         auto checkSize = [&](float w, float h, const SourceLoc& loc) {
-            if (w <= 0 || h <= 0 || w > 16384 || h > 16384) {
-                error(DiagId::InvalidDimensions, loc,
-                      {std::to_string(static_cast<long long>(w)) + "x" + std::to_string(static_cast<long long>(h)) +
-                       " (each side must be 1..16384)"});
+            auto inRange = [&](float side) { return side >= 1 && side <= static_cast<float>(maxSize); };
+            if (!inRange(w) || !inRange(h)) {
+                auto shown = [](float side) {
+                    if (side != side) return std::string("NaN");
+                    char text[32];
+                    std::snprintf(text, sizeof text, "%g", static_cast<double>(side));
+                    return std::string(text);
+                };
+                error(
+                    DiagId::InvalidDimensions, loc,
+                    {shown(w) + "x" + shown(h) + " (each side must be 1.." + std::to_string(maxSize) + ")"});
                 return false;
             }
             return true;
@@ -178,8 +193,10 @@ void Compiler::textures() {
             t.resourceName = resource;
             std::filesystem::path path = base / resource;
             std::error_code ec;
-            if (std::filesystem::exists(path, ec)) t.resolvedPath = path.string();
-            else mDiagnostics.report(DiagId::TextureFileNotFound, p.loc, {resource});
+            if (std::filesystem::exists(path, ec))
+                t.resolvedPath = path.string();
+            else
+                mDiagnostics.report(DiagId::TextureFileNotFound, p.loc, {resource});
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
         mOut->textures.push_back(std::move(t));
@@ -227,15 +244,33 @@ void Compiler::samplers() {
             if (value.empty()) continue;
             int n = static_cast<int>(value[0]);
             switch (*id) {
-                case SamplerStateId::AddressU: s.addressU = n; break;
-                case SamplerStateId::AddressV: s.addressV = n; break;
-                case SamplerStateId::AddressW: s.addressW = n; break;
-                case SamplerStateId::MinFilter: s.minFilter = n; break;
-                case SamplerStateId::MagFilter: s.magFilter = n; break;
-                case SamplerStateId::MipFilter: s.mipFilter = n; break;
-                case SamplerStateId::MaxAnisotropy: s.maxAnisotropy = n; break;
-                case SamplerStateId::MipMapLodBias: s.mipLodBias = value[0]; break;
-                case SamplerStateId::ComparisonFunc: s.comparisonFunc = n; break;
+                case SamplerStateId::AddressU:
+                    s.addressU = n;
+                    break;
+                case SamplerStateId::AddressV:
+                    s.addressV = n;
+                    break;
+                case SamplerStateId::AddressW:
+                    s.addressW = n;
+                    break;
+                case SamplerStateId::MinFilter:
+                    s.minFilter = n;
+                    break;
+                case SamplerStateId::MagFilter:
+                    s.magFilter = n;
+                    break;
+                case SamplerStateId::MipFilter:
+                    s.mipFilter = n;
+                    break;
+                case SamplerStateId::MaxAnisotropy:
+                    s.maxAnisotropy = n;
+                    break;
+                case SamplerStateId::MipMapLodBias:
+                    s.mipLodBias = value[0];
+                    break;
+                case SamplerStateId::ComparisonFunc:
+                    s.comparisonFunc = n;
+                    break;
                 case SamplerStateId::BorderColor:
                     if (value.size() >= 4) {
                         for (int k = 0; k < 4; ++k) s.borderColor[k] = value[static_cast<size_t>(k)];
@@ -257,7 +292,8 @@ void Compiler::samplers() {
                     hasComparison = (n & 0x80) != 0;
                     break;
                 }
-                default: break;
+                default:
+                    break;
             }
         }
         if (hasComparison && s.comparisonFunc == 0) s.comparisonFunc = 4;  // LESSEQUAL
@@ -291,34 +327,55 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
                 bool found = false;
                 if (technique)
                     for (const Pass& p : technique->passes) found |= p.name == c.value;
-                if (!found) error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
+                if (!found)
+                    error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
                 break;
             }
             case ScriptCommand::Kind::RenderColorTarget:
             case ScriptCommand::Kind::RenderDepthStencilTarget: {
                 if (c.value.empty()) break;
                 auto it = mIndex.find(c.value);
-                std::string semantic = it == mIndex.end() ? "" : upper(mEffect.parameters[it->second].semantic);
+                std::string semantic =
+                    it == mIndex.end() ? "" : upper(mEffect.parameters[it->second].semantic);
                 bool wantDepth = c.kind == ScriptCommand::Kind::RenderDepthStencilTarget;
                 if (semantic != (wantDepth ? "RENDERDEPTHSTENCILTARGET" : "RENDERCOLORTARGET"))
                     error(DiagId::ScriptUnknownTarget, c.loc, {c.value});
                 break;
             }
             case ScriptCommand::Kind::Technique: {
-                for (const std::string& name : {c.selectorCondition.empty() ? c.value : c.selectorTrue,
-                                                c.selectorCondition.empty() ? std::string() : c.selectorFalse})
+                for (const std::string& name :
+                     {c.selectorCondition.empty() ? c.value : c.selectorTrue,
+                      c.selectorCondition.empty() ? std::string() : c.selectorFalse})
                     if (!name.empty() && !mEffect.findTechnique(name))
                         error(DiagId::ScriptUnknownTechnique, c.loc, {name});
                 break;
             }
-            case ScriptCommand::Kind::LoopByCount: ++loops; break;
+            case ScriptCommand::Kind::LoopByCount: {
+                ++loops;
+                // A literal count is checked here, once, rather than failing every frame in the runtime
+                // (runtime/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
+                const char* text = c.value.c_str();
+                char* end = nullptr;
+                const double count = std::strtod(text, &end);
+                if (end != text && *end == '\0' && !mIndex.count(c.value)) {
+                    if (!(count >= 0) || std::floor(count) != count)
+                        error(DiagId::InvalidScriptCommand, c.loc,
+                              {"LoopByCount", "'" + c.value + "' is not a non-negative whole count"});
+                    else if (count > mOptions.maxScriptLoopCount)
+                        error(DiagId::InvalidScriptCommand, c.loc,
+                              {"LoopByCount", c.value + " iterations exceed the limit of " +
+                                                  std::to_string(mOptions.maxScriptLoopCount)});
+                }
+                break;
+            }
             case ScriptCommand::Kind::LoopEnd:
                 if (--loops < 0) {
                     error(DiagId::ScriptUnbalancedLoop, c.loc, {"LoopEnd without LoopByCount"});
                     loops = 0;
                 }
                 break;
-            default: break;
+            default:
+                break;
         }
     }
     if (loops > 0 && !commands.empty())
@@ -372,12 +429,24 @@ SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lower
 }
 
 void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered) {
+    // After glslang's first error its parser recovers with generic follow-ons at column 1 ("'declaration'
+    // : Expected", "'' : Could not perform requested binary operation") that only repeat the first one.
+    bool hadError = false;
+    auto isFollowOn = [](const std::string& text) {
+        return text.rfind("'declaration' : Expected", 0) == 0 ||
+               text.rfind("'function call arguments' : Expected", 0) == 0 || text.rfind("'' : ", 0) == 0;
+    };
     for (const HlslMessage& m : messages) {
+        if (m.error && hadError && isFollowOn(m.text)) continue;
+        hadError = hadError || m.error;
         SourceLoc loc = userLocation(m, lowered);
         std::string text = m.text;
+        while (!text.empty() && text.back() == ' ') text.pop_back();
         if (m.file == kGeneratedFile) text += " (in the code generated for '" + lowered.entryPoint + "')";
-        if (m.error) error(DiagId::HlslError, loc, {text});
-        else if (m.file != kGeneratedFile) mDiagnostics.report(DiagId::HlslWarning, loc, {text});
+        if (m.error)
+            error(DiagId::HlslError, loc, {text});
+        else if (m.file != kGeneratedFile)
+            mDiagnostics.report(DiagId::HlslWarning, loc, {text});
     }
 }
 
@@ -453,11 +522,12 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
     if (s.value.kind == Expr::Kind::Identifier) {
         if (s.value.text == "NULL" || s.value.text == "null") return nullptr;
         // `VertexShader = (vsVar);` with `vertexshader vsVar = compile vs_3_0 VS();`
-        if (const Parameter* p = mEffect.findParameter(s.value.text); p && p->initializer &&
-                                                                       p->initializer->kind == Expr::Kind::Compile)
+        if (const Parameter* p = mEffect.findParameter(s.value.text);
+            p && p->initializer && p->initializer->kind == Expr::Kind::Compile)
             return &*p->initializer;
     }
-    error(DiagId::InvalidCompileExpression, s.value.loc, {"'" + s.value.str() + "' is not a compile expression"});
+    error(DiagId::InvalidCompileExpression, s.value.loc,
+          {"'" + s.value.str() + "' is not a compile expression"});
     return nullptr;
 }
 
@@ -473,7 +543,8 @@ CompiledPass Compiler::compilePass(const Pass& p) {
         }
         if (*id == RenderStateId::VertexShader || *id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))
-                compileStage(*compile, *id == RenderStateId::VertexShader ? ShaderStage::Vertex : ShaderStage::Fragment,
+                compileStage(*compile,
+                             *id == RenderStateId::VertexShader ? ShaderStage::Vertex : ShaderStage::Fragment,
                              pass);
             continue;
         }
@@ -530,8 +601,8 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
 
 }  // namespace
 
-std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect, const CompileOptions& options,
-                                              DiagnosticSink& diagnostics) {
+std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect,
+                                              const CompileOptions& options, DiagnosticSink& diagnostics) {
     if (!effect) return nullptr;
     return Compiler(std::move(effect), options, diagnostics).run();
 }

@@ -13,6 +13,7 @@
 #include "Lexer.h"
 #include "Preprocessor.h"
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -33,9 +34,9 @@ struct TooManyErrors {};  // thrown when kMaxErrors is reached
 // "float", "float3", "float4x4", "int2", "bool", "half3x3", "dword" ...
 bool parseScalarTypeName(const std::string& name, TypeDesc& type) {
     static const std::pair<const char*, BaseType> kScalars[] = {
-        {"bool", BaseType::Bool},   {"int", BaseType::Int},     {"uint", BaseType::UInt},
-        {"dword", BaseType::UInt},  {"half", BaseType::Half},   {"float", BaseType::Float},
-        {"double", BaseType::Double}, {"min16float", BaseType::Half}, {"min16int", BaseType::Int},
+        {"bool", BaseType::Bool},      {"int", BaseType::Int},         {"uint", BaseType::UInt},
+        {"dword", BaseType::UInt},     {"half", BaseType::Half},       {"float", BaseType::Float},
+        {"double", BaseType::Double},  {"min16float", BaseType::Half}, {"min16int", BaseType::Int},
         {"min16uint", BaseType::UInt},
     };
     for (const auto& [spelling, base] : kScalars) {
@@ -50,7 +51,8 @@ bool parseScalarTypeName(const std::string& name, TypeDesc& type) {
             type.cols = rest[0] - '0';
             return true;
         }
-        if (rest.size() == 3 && rest[0] >= '1' && rest[0] <= '4' && rest[1] == 'x' && rest[2] >= '1' && rest[2] <= '4') {
+        if (rest.size() == 3 && rest[0] >= '1' && rest[0] <= '4' && rest[1] == 'x' && rest[2] >= '1' &&
+            rest[2] <= '4') {
             type.shape = Shape::Matrix;
             type.rows = rest[0] - '0';
             type.cols = rest[2] - '0';
@@ -91,7 +93,8 @@ bool parseObjectTypeName(const std::string& name, TypeDesc& type) {
 
 class Parser {
 public:
-    Parser(std::vector<Token> tokens, const std::string& text, Effect& effect, detail::CountingSink& diagnostics)
+    Parser(std::vector<Token> tokens, const std::string& text, Effect& effect,
+           detail::CountingSink& diagnostics)
         : mTokens(std::move(tokens)), mText(text), mEffect(effect), mDiag(diagnostics) {}
 
     void parseEffect() {
@@ -129,9 +132,12 @@ private:
     }
     static std::string describe(const Token& token) {
         switch (token.kind) {
-            case Token::Kind::End: return "end of file";
-            case Token::Kind::String: return "\"" + token.text + "\"";
-            default: return token.text;
+            case Token::Kind::End:
+                return "end of file";
+            case Token::Kind::String:
+                return "\"" + token.text + "\"";
+            default:
+                return token.text;
         }
     }
 
@@ -189,7 +195,8 @@ private:
         explicit DepthGuard(Parser& p) : parser(p) {
             if (++parser.mDepth > kMaxDepth) {
                 --parser.mDepth;
-                parser.fail(DiagId::UnsupportedFeature, parser.peek().loc, {"nesting too deep"});
+                parser.fail(DiagId::UnsupportedFeature, parser.peek().loc,
+                            {"nesting deeper than " + std::to_string(kMaxDepth) + " levels"});
             }
         }
         ~DepthGuard() { --parser.mDepth; }
@@ -236,8 +243,9 @@ private:
                isTemplatedObject(token.text);
     }
     static bool isTemplatedObject(const std::string& name) {
-        static const char* kNames[] = {"Texture2DArray", "TextureCubeArray", "Texture2DMS", "Texture1DArray",
-                                       "Buffer", "RWTexture2D", "RWBuffer", "StructuredBuffer"};
+        static const char* kNames[] = {"Texture2DArray", "TextureCubeArray", "Texture2DMS",
+                                       "Texture1DArray", "Buffer",           "RWTexture2D",
+                                       "RWBuffer",       "StructuredBuffer"};
         for (const char* n : kNames)
             if (name == n) return true;
         return false;
@@ -285,7 +293,8 @@ private:
             return type;
         }
         if (isTemplatedObject(name.text)) {
-            fail(DiagId::UnsupportedFeature, name.loc, {"type '" + name.text + "' is not supported in effects"});
+            fail(DiagId::UnsupportedFeature, name.loc,
+                 {"type '" + name.text + "' is not supported in effects"});
         }
         fail(DiagId::UnknownType, name.loc, {name.text});
     }
@@ -310,7 +319,9 @@ private:
     static bool constantValue(const Expr& e, double& out) {
         switch (e.kind) {
             case Expr::Kind::Number:
-            case Expr::Kind::Bool: out = e.number; return true;
+            case Expr::Kind::Bool:
+                out = e.number;
+                return true;
             case Expr::Kind::Unary: {
                 double a;
                 if (e.args.size() != 1 || !constantValue(e.args[0], a)) return false;
@@ -319,29 +330,48 @@ private:
             }
             case Expr::Kind::Binary: {
                 double a, b;
-                if (e.args.size() != 2 || !constantValue(e.args[0], a) || !constantValue(e.args[1], b)) return false;
-                if (e.text == "+") out = a + b;
-                else if (e.text == "-") out = a - b;
-                else if (e.text == "*") out = a * b;
-                else if (e.text == "/" && b != 0) out = a / b;
-                else return false;
+                if (e.args.size() != 2 || !constantValue(e.args[0], a) || !constantValue(e.args[1], b))
+                    return false;
+                if (e.text == "+")
+                    out = a + b;
+                else if (e.text == "-")
+                    out = a - b;
+                else if (e.text == "*")
+                    out = a * b;
+                else if (e.text == "/" && b != 0)
+                    out = a / b;
+                else
+                    return false;
                 return true;
             }
-            default: return false;
+            default:
+                return false;
         }
     }
     // [N][M]... after a name
     void parseArrayDims(TypeDesc& type) {
         while (check("[")) {
-            const Token& open = advance();
+            advance();  // '['
             if (accept("]")) {
                 type.arrayDims.push_back(0);
                 continue;
             }
+            const Token& first = peek();
             Expr size = parseExpr();
             double number = 0;
-            if (!constantValue(size, number) || number < 1 || number > (1 << 24))
-                fail(DiagId::UnexpectedToken, open.loc, {"a constant array size", size.str()});
+            if (!constantValue(size, number))
+                fail(DiagId::UnexpectedToken, first.loc, {"a constant array size", size.str()});
+            // Bounded, all dimensions together, so that a declaration cannot make the compiler allocate
+            // gigabytes of initial value (`float4x4 a[1 << 24]` was 1 GB; `[65536][65536]` more).
+            constexpr double kMaxArrayElements = 1 << 16;
+            double elements = number;
+            for (int dim : type.arrayDims) elements *= dim > 0 ? dim : 1;
+            if (!(number >= 1 && elements <= kMaxArrayElements))
+                fail(DiagId::UnsupportedFeature, first.loc,
+                     {"array size " + size.str() + " is outside 1.." +
+                      std::to_string(static_cast<int>(kMaxArrayElements)) + " (all dimensions together)"});
+            if (number != static_cast<double>(static_cast<int>(number)))  // `[2.5]` was truncated silently
+                fail(DiagId::UnexpectedToken, first.loc, {"a whole array size", size.str()});
             type.arrayDims.push_back(static_cast<int>(number));
             expect("]");
         }
@@ -388,6 +418,9 @@ private:
             parseStruct();
             return;
         }
+        if (token.text == "pass")  // was "unknown type 'pass'"
+            fail(DiagId::UnexpectedToken, token.loc,
+                 {"a declaration ('pass' belongs inside a technique)", "pass"});
         if (token.text == "typedef") {
             parseTypedef();
             return;
@@ -453,10 +486,12 @@ private:
         if (!check("{")) unexpected("'{'");
         const Token& open = advance();
         while (!check("}")) {
-            if (atEnd() || check("struct") || check("technique") || check("technique10") || check("technique11"))
+            if (atEnd() || check("struct") || check("technique") || check("technique10") ||
+                check("technique11"))
                 unclosed("struct", keyword);
             StructMember member;
-            static const char* kInterpolation[] = {"linear", "centroid", "nointerpolation", "noperspective", "sample"};
+            static const char* kInterpolation[] = {"linear", "centroid", "nointerpolation", "noperspective",
+                                                   "sample"};
             bool modifier = true;
             while (modifier) {
                 modifier = false;
@@ -512,18 +547,28 @@ private:
         Storage storage;
         for (;;) {
             const Token& token = peek();
-            if (token.is("static")) storage.isStatic = true;
-            else if (token.is("const")) storage.isConst = true;
-            else if (token.is("uniform")) storage.isUniform = true;
-            else if (token.is("shared")) storage.isShared = true;
-            else if (token.is("extern")) storage.isExtern = true;
-            else if (token.is("row_major")) storage.rowMajor = true;
-            else if (token.is("column_major")) storage.rowMajor = false;
-            else if (token.is("inline") || token.is("volatile") || token.is("precise") || token.is("groupshared")) {
-            } else break;
+            if (token.is("static"))
+                storage.isStatic = true;
+            else if (token.is("const"))
+                storage.isConst = true;
+            else if (token.is("uniform"))
+                storage.isUniform = true;
+            else if (token.is("shared"))
+                storage.isShared = true;
+            else if (token.is("extern"))
+                storage.isExtern = true;
+            else if (token.is("row_major"))
+                storage.rowMajor = true;
+            else if (token.is("column_major"))
+                storage.rowMajor = false;
+            else if (token.is("inline") || token.is("volatile") || token.is("precise") ||
+                     token.is("groupshared")) {
+            } else
+                break;
             advance();
         }
-        if (peek().kind == Token::Kind::Identifier && !isTypeName(peek()) && peek(1).kind == Token::Kind::Identifier)
+        if (peek().kind == Token::Kind::Identifier && !isTypeName(peek()) &&
+            peek(1).kind == Token::Kind::Identifier)
             fail(DiagId::UnknownType, peek().loc, {peek().text});
         TypeDesc type = parseType();
         type.rowMajor = storage.rowMajor;
@@ -559,7 +604,8 @@ private:
                     normalizeCompileShader(*parameter.initializer);
                 }
             }
-            if (mEffect.findParameter(parameter.name)) error(DiagId::Redefinition, parameter.loc, {parameter.name});
+            if (mEffect.findParameter(parameter.name))
+                error(DiagId::Redefinition, parameter.loc, {parameter.name});
             mEffect.parameters.push_back(std::move(parameter));
             declared.push_back(mEffect.parameters.size() - 1);
             mEffect.order.push_back({DeclRef::Kind::Parameter, mEffect.parameters.size() - 1});
@@ -592,16 +638,22 @@ private:
             while (modifier) {
                 modifier = true;
                 const Token& t = peek();
-                if (t.is("in")) param.direction = FunctionParam::Direction::In;
-                else if (t.is("out")) param.direction = FunctionParam::Direction::Out;
-                else if (t.is("inout")) param.direction = FunctionParam::Direction::InOut;
-                else if (t.is("uniform")) param.isUniform = true;
-                else if (t.is("linear") || t.is("centroid") || t.is("nointerpolation") || t.is("noperspective") ||
-                         t.is("sample"))
+                if (t.is("in"))
+                    param.direction = FunctionParam::Direction::In;
+                else if (t.is("out"))
+                    param.direction = FunctionParam::Direction::Out;
+                else if (t.is("inout"))
+                    param.direction = FunctionParam::Direction::InOut;
+                else if (t.is("uniform"))
+                    param.isUniform = true;
+                else if (t.is("linear") || t.is("centroid") || t.is("nointerpolation") ||
+                         t.is("noperspective") || t.is("sample"))
                     param.interpolation = t.text;
-                else if (t.is("const") || t.is("point") || t.is("line") || t.is("triangle") || t.is("lineadj") ||
-                         t.is("triangleadj") || t.is("precise") || t.is("row_major") || t.is("column_major")) {
-                } else modifier = false;
+                else if (t.is("const") || t.is("point") || t.is("line") || t.is("triangle") ||
+                         t.is("lineadj") || t.is("triangleadj") || t.is("precise") || t.is("row_major") ||
+                         t.is("column_major")) {
+                } else
+                    modifier = false;
                 if (modifier) advance();
             }
             param.type = parseType();
@@ -655,6 +707,14 @@ private:
                 parseArrayDims(annotation.type);
                 expect("=");
                 annotation.value = parseExpr(/*inAnnotation*/ true);
+                // `string UIName = 3;` and `float UIMin = "low";` were kept and read as 0 or "" later.
+                const bool isString = annotation.value.kind == Expr::Kind::String;
+                if (annotation.type.base == BaseType::String && !isString)
+                    error(DiagId::InvalidAnnotation, annotation.value.loc,
+                          {annotation.name, "expected a string, found '" + annotation.value.str() + "'"});
+                else if (annotation.type.isNumeric() && isString)
+                    error(DiagId::InvalidAnnotation, annotation.value.loc,
+                          {annotation.name, "expected a number, found a string"});
                 annotations.push_back(std::move(annotation));
                 if (!accept(",")) break;
             }
@@ -702,7 +762,8 @@ private:
         if (!check("{")) unexpected("'{'");
         advance();
         while (!check("}")) {
-            if (atEnd() || check("pass") || check("technique") || check("technique10") || check("technique11"))
+            if (atEnd() || check("pass") || check("technique") || check("technique10") ||
+                check("technique11"))
                 unclosed("pass", keyword);
             parsePassState(pass);
         }
@@ -744,8 +805,10 @@ private:
             const Token& indexToken = peek();
             Expr index = parseExpr();
             double number = 0;
-            if (!constantValue(index, number) || number < 0)
-                fail(DiagId::UnexpectedToken, indexToken.loc, {"a constant index", index.str()});
+            // D3D9's largest indexed state is Sampler[0..15]; the bound also keeps the cast defined.
+            if (!constantValue(index, number) || !(number >= 0 && number <= 15) ||
+                number != static_cast<double>(static_cast<int>(number)))
+                fail(DiagId::UnexpectedToken, indexToken.loc, {"a constant index 0..15", index.str()});
             state.index = static_cast<int>(number);
             expect("]");
         }
@@ -756,8 +819,8 @@ private:
         expect(";");
         std::optional<RenderStateId> id = findRenderState(state.name);
         if (!id) {
-            if (equalsIgnoreCase(state.name, "GeometryShader") && state.value.kind == Expr::Kind::Identifier &&
-                state.value.text == "NULL")
+            if (equalsIgnoreCase(state.name, "GeometryShader") &&
+                state.value.kind == Expr::Kind::Identifier && state.value.text == "NULL")
                 return;
             error(DiagId::UnknownState, state.loc, {state.name});
             return;
@@ -774,8 +837,10 @@ private:
     void normalizeCompileShader(Expr& e) {
         for (Expr& arg : e.args) normalizeCompileShader(arg);
         if (e.kind != Expr::Kind::Call || e.text != "CompileShader") return;
-        if (e.args.size() != 2 || e.args[0].kind != Expr::Kind::Identifier || e.args[1].kind != Expr::Kind::Call) {
-            error(DiagId::InvalidCompileExpression, e.loc, {"expected CompileShader(profile, Function(...))"});
+        if (e.args.size() != 2 || e.args[0].kind != Expr::Kind::Identifier ||
+            e.args[1].kind != Expr::Kind::Call) {
+            error(DiagId::InvalidCompileExpression, e.loc,
+                  {"expected CompileShader(profile, Function(...))"});
             return;
         }
         Expr compiled;
@@ -793,14 +858,16 @@ private:
         if (v.kind == Expr::Kind::Identifier) {
             if (v.text == "NULL") return;
             const Parameter* p = mEffect.findParameter(v.text);
-            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader)) return;
+            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader))
+                return;
             if (!p) {
                 error(DiagId::UnknownIdentifier, v.loc, {v.text});
                 return;
             }
         }
         if (v.kind == Expr::Kind::Number && v.number == 0) return;
-        error(DiagId::InvalidStateValue, v.loc, {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
+        error(DiagId::InvalidStateValue, v.loc,
+              {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
     }
 
     static bool isEnumDomain(StateDomain domain) {
@@ -810,8 +877,10 @@ private:
             case StateDomain::Float:
             case StateDomain::Color:
             case StateDomain::Shader:
-            case StateDomain::TextureRef: return false;
-            default: return true;
+            case StateDomain::TextureRef:
+                return false;
+            default:
+                return true;
         }
     }
 
@@ -833,13 +902,18 @@ private:
                 if (mEffect.findParameter(e.text)) return;
                 if (isEnumDomain(domain) || domain == StateDomain::Bool) {
                     std::string names;
-                    for (std::string_view n : enumValueNames(domain)) names += (names.empty() ? "" : ", ") + std::string(n);
+                    for (std::string_view n : enumValueNames(domain))
+                        names += (names.empty() ? "" : ", ") + std::string(n);
                     error(DiagId::UnknownStateValue, e.loc, {e.text, stateName, names});
                 } else {
                     error(DiagId::UnknownIdentifier, e.loc, {e.text});
                 }
                 return;
             }
+            case Expr::Kind::String:  // `ZEnable = "yes";` was kept and read as 0
+                if (domain != StateDomain::TextureRef)
+                    error(DiagId::InvalidStateValue, e.loc, {stateName, "expected a value, found a string"});
+                return;
             case Expr::Kind::Unary:
             case Expr::Kind::Binary:
             case Expr::Kind::InitList:
@@ -851,12 +925,15 @@ private:
                     resolveStateValue(e.args[2], domain, stateName);
                 }
                 break;
-            default: break;
+            default:
+                break;
         }
         // RED|GREEN|BLUE -> one number
         if (e.kind == Expr::Kind::Binary && e.text == "|" && e.args.size() == 2 &&
-            e.args[0].kind == Expr::Kind::Number && e.args[1].kind == Expr::Kind::Number && e.args[0].isInteger &&
-            e.args[1].isInteger) {
+            e.args[0].kind == Expr::Kind::Number && e.args[1].kind == Expr::Kind::Number &&
+            e.args[0].isInteger && e.args[1].isInteger && std::abs(e.args[0].number) < 9e15 &&
+            std::abs(e.args[1].number) < 9e15) {
+            // (bounded: casting 1e30 to long long is undefined behaviour)
             double value = static_cast<double>(static_cast<long long>(e.args[0].number) |
                                                static_cast<long long>(e.args[1].number));
             SourceLoc loc = e.args[0].loc;
@@ -881,7 +958,8 @@ private:
             if (accept("[")) {
                 Expr index = parseExpr();
                 double number = 0;
-                if (constantValue(index, number)) state.index = static_cast<int>(number);
+                if (constantValue(index, number) && number >= 0 && number <= 15)  // keeps the cast defined
+                    state.index = static_cast<int>(number);
                 expect("]");
             }
             expect("=");
@@ -960,9 +1038,17 @@ private:
 
     Expr parseBinary(int minPrecedence) {
         Expr left = parseUnary();
+        // `1+1+1+...` loops here instead of recursing, but builds a left-deep tree as deep as the chain is
+        // long, and everything that walks an Expr (its destructor included) recurses: bound the chain with
+        // the nesting depth, so that a long line cannot overflow the stack later.
+        int chain = 0;
         for (;;) {
             int precedence = binaryPrecedence(peek());
             if (precedence < 0 || precedence < minPrecedence) break;
+            if (++chain + mDepth > kMaxDepth)
+                fail(DiagId::UnsupportedFeature, peek().loc,
+                     {"expression too complex (more than " + std::to_string(kMaxDepth) +
+                      " nested or chained operators)"});
             const Token& op = advance();
             DepthGuard guard(*this);
             Expr right = parseBinary(precedence + 1);
@@ -980,7 +1066,8 @@ private:
     Expr parseUnary() {
         DepthGuard guard(*this);
         const Token& token = peek();
-        if (token.is("-") || token.is("+") || token.is("!") || token.is("~") || token.is("++") || token.is("--")) {
+        if (token.is("-") || token.is("+") || token.is("!") || token.is("~") || token.is("++") ||
+            token.is("--")) {
             advance();
             Expr operand = parseUnary();
             if (token.text == "-" && operand.kind == Expr::Kind::Number) {  // fold literals: -1.0
@@ -1083,8 +1170,10 @@ private:
                     e.text += piece.text;
                 }
                 return e;
-            case Token::Kind::End: unexpected("an expression");
-            default: break;
+            case Token::Kind::End:
+                unexpected("an expression");
+            default:
+                break;
         }
         if (token.is("(")) {
             advance();

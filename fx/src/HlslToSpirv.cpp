@@ -22,10 +22,10 @@ void initGlslang() {
 }
 
 constexpr EShMessages kMessages = static_cast<EShMessages>(
-    EShMsgReadHlsl |            // HLSL grammar and semantics
-    EShMsgHlslDX9Compatible |   // sampler2D is a combined sampler, tex2D/tex2Dproj exist
-    EShMsgSpvRules |            // SPIR-V output
-    EShMsgVulkanRules);         // HLSL input only works under Vulkan client semantics
+    EShMsgReadHlsl |           // HLSL grammar and semantics
+    EShMsgHlslDX9Compatible |  // sampler2D is a combined sampler, tex2D/tex2Dproj exist
+    EShMsgSpvRules |           // SPIR-V output
+    EShMsgVulkanRules);        // HLSL input only works under Vulkan client semantics
 // glslang 12.0.0 has no EShMsgDisplayErrorColumn (later releases do): it reports file:line only, and the
 // effect compiler recovers the column from the token the message quotes.
 
@@ -65,7 +65,8 @@ std::vector<HlslMessage> parseGlslangLog(const std::string& log) {
     return out;
 }
 
-HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage, const std::string& entryPoint) {
+HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
+                                     const std::string& entryPoint) {
     initGlslang();
     HlslCompileResult result;
     EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;

@@ -27,7 +27,8 @@ struct HlslCompileResult {
 };
 
 // Compiles `source` for `stage` with entry point `entryPoint` (SPIR-V 1.0, Vulkan client rules).
-HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage, const std::string& entryPoint);
+HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
+                                     const std::string& entryPoint);
 
 // The options that change the produced SPIR-V, folded into cache keys.
 std::string hlslToSpirvOptionsKey();

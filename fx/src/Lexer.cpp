@@ -9,13 +9,21 @@ namespace fx::detail {
 
 namespace {
 
-bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isIdentChar(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+constexpr size_t kMaxTokens = 1u << 20;  // see the check in lexEffect
+
+bool isIdentStart(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool isIdentChar(char c) {
+    return isIdentStart(c) || (c >= '0' && c <= '9');
+}
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
 
 const char* const kPunctuation[] = {"<<=", ">>=", "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "++", "--",
-                                    "+=",  "-=",  "*=", "/=", "%=", "&=", "|=", "^=", "::", "->", "{", "}",
-                                    "(",   ")",   "[",  "]",  ";",  ",",  ".",  ":",  "?",  "=",  "<", ">",
+                                    "+=",  "-=",  "*=", "/=", "%=", "&=", "|=", "^=", "::", "->", "{",  "}",
+                                    "(",   ")",   "[",  "]",  ";",  ",",  ".",  ":",  "?",  "=",  "<",  ">",
                                     "+",   "-",   "*",  "/",  "%",  "!",  "~",  "&",  "|",  "^"};
 
 // The lines of each user file, split once.
@@ -54,7 +62,8 @@ private:
 // Finds `spelling` in `line` at or after `from` as a whole token.
 size_t findToken(std::string_view line, std::string_view spelling, size_t from) {
     if (spelling.empty()) return std::string_view::npos;
-    for (size_t at = line.find(spelling, from); at != std::string_view::npos; at = line.find(spelling, at + 1)) {
+    for (size_t at = line.find(spelling, from); at != std::string_view::npos;
+         at = line.find(spelling, at + 1)) {
         bool startOk = !isIdentChar(spelling.front()) || at == 0 || !isIdentChar(line[at - 1]);
         size_t after = at + spelling.size();
         bool endOk = !isIdentChar(spelling.back()) || after >= line.size() || !isIdentChar(line[after]);
@@ -133,7 +142,8 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
             if (c == '0' && pos + 1 < n && (text[pos + 1] == 'x' || text[pos + 1] == 'X')) {
                 pos += 2;
                 while (pos < n && isxdigit(static_cast<unsigned char>(text[pos]))) ++pos;
-                token.number = static_cast<double>(std::strtoull(text.c_str() + token.begin + 2, nullptr, 16));
+                token.number =
+                    static_cast<double>(std::strtoull(text.c_str() + token.begin + 2, nullptr, 16));
             } else {
                 while (pos < n && isDigit(text[pos])) ++pos;
                 if (pos < n && text[pos] == '.') {
@@ -155,7 +165,8 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                 token.number = std::strtod(digits.c_str(), nullptr);
             }
             while (pos < n && strchr("fFhHlLuU", text[pos])) {
-                if (text[pos] == 'f' || text[pos] == 'F' || text[pos] == 'h' || text[pos] == 'H') isFloat = true;
+                if (text[pos] == 'f' || text[pos] == 'F' || text[pos] == 'h' || text[pos] == 'H')
+                    isFloat = true;
                 ++pos;
             }
             token.isInteger = !isFloat;
@@ -238,7 +249,26 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
             }
         }
         sourceMap.add(token.loc.file, token.loc.line, token.ppColumn, token.loc.column);
+        // `__fx_stringize__ X` is what the preprocessor made of a D3DX `#X` (see markStringizing): the
+        // marker and the substituted argument become the string literal "X".
+        if (!tokens.empty() && tokens.back().kind == Token::Kind::Identifier &&
+            tokens.back().text == "__fx_stringize__" && token.kind != Token::Kind::String) {
+            Token& marker = tokens.back();
+            marker.kind = Token::Kind::String;
+            marker.text = token.text;
+            marker.end = token.end;
+            marker.loc = token.loc;
+            continue;
+        }
         tokens.push_back(std::move(token));
+        // A token costs ~200 bytes with its location: without a bound, 16 MB of `+1+1...` (within
+        // ParseOptions::maxSourceBytes) took over 4 GB. Real effects have a few thousand tokens.
+        if (tokens.size() > kMaxTokens) {
+            diagnostics.report(DiagId::UnsupportedFeature, tokens.back().loc,
+                               {"effect too large: more than " + std::to_string(kMaxTokens) +
+                                " tokens after preprocessing"});
+            break;
+        }
     }
 
     Token end;

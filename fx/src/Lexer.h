@@ -15,15 +15,17 @@ namespace fx::detail {
 struct Token {
     enum class Kind { Identifier, Number, String, Punct, End };
     Kind kind = Kind::End;
-    std::string text;       // identifier, punctuation, number spelling; String: the decoded contents
-    double number = 0.0;    // Number
-    bool isInteger = false; // Number
-    size_t begin = 0;       // offsets of the token's spelling in the preprocessed text
+    std::string text;        // identifier, punctuation, number spelling; String: the decoded contents
+    double number = 0.0;     // Number
+    bool isInteger = false;  // Number
+    size_t begin = 0;        // offsets of the token's spelling in the preprocessed text
     size_t end = 0;
-    SourceLoc loc;          // the user's file, line and column
-    int ppColumn = 1;       // the column in the preprocessed text
+    SourceLoc loc;     // the user's file, line and column
+    int ppColumn = 1;  // the column in the preprocessed text
 
-    bool is(const char* spelling) const { return kind != Kind::String && kind != Kind::End && text == spelling; }
+    bool is(const char* spelling) const {
+        return kind != Kind::String && kind != Kind::End && text == spelling;
+    }
 };
 
 // Lexes `text`; the last token is End. `files` holds the user's sources by the names #line uses.

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -25,7 +26,9 @@ std::string upper(std::string s) {
     return s;
 }
 
-bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 // Splits "TEXCOORD3" into ("TEXCOORD", 3); no trailing digits -> index 0.
 std::pair<std::string, int> splitSemantic(const std::string& canonical) {
@@ -42,8 +45,9 @@ std::pair<std::string, int> splitSemantic(const std::string& canonical) {
 std::string canonicalSemantic(const std::string& semantic) {
     std::string s = upper(semantic);
     // Indexed semantics get their index spelled out so that TEXCOORD and TEXCOORD0 are one key.
-    static const char* kIndexed[] = {"TEXCOORD", "COLOR", "NORMAL", "TANGENT", "BINORMAL", "BLENDWEIGHT",
-                                     "BLENDINDICES", "POSITION", "PSIZE", "FOG", "DEPTH", "SV_TARGET"};
+    static const char* kIndexed[] = {"TEXCOORD", "COLOR",       "NORMAL",       "TANGENT",
+                                     "BINORMAL", "BLENDWEIGHT", "BLENDINDICES", "POSITION",
+                                     "PSIZE",    "FOG",         "DEPTH",        "SV_TARGET"};
     for (const char* name : kIndexed)
         if (s == name) return s + "0";
     return s;
@@ -90,26 +94,50 @@ std::optional<int> varyingLocation(const std::string& semantic) {
 std::string hlslTypeName(const TypeDesc& type) {
     std::string base;
     switch (type.base) {
-        case BaseType::Bool: base = "bool"; break;
-        case BaseType::Int: base = "int"; break;
-        case BaseType::UInt: base = "uint"; break;
-        case BaseType::Half: base = "half"; break;
-        case BaseType::Double: base = "double"; break;
-        case BaseType::Float: base = "float"; break;
+        case BaseType::Bool:
+            base = "bool";
+            break;
+        case BaseType::Int:
+            base = "int";
+            break;
+        case BaseType::UInt:
+            base = "uint";
+            break;
+        case BaseType::Half:
+            base = "half";
+            break;
+        case BaseType::Double:
+            base = "double";
+            break;
+        case BaseType::Float:
+            base = "float";
+            break;
         case BaseType::Sampler:
-        case BaseType::Sampler2D: return "sampler2D";
-        case BaseType::Sampler1D: return "sampler1D";
-        case BaseType::Sampler3D: return "sampler3D";
-        case BaseType::SamplerCube: return "samplerCUBE";
-        case BaseType::SamplerState: return "SamplerState";
-        case BaseType::SamplerComparisonState: return "SamplerComparisonState";
+        case BaseType::Sampler2D:
+            return "sampler2D";
+        case BaseType::Sampler1D:
+            return "sampler1D";
+        case BaseType::Sampler3D:
+            return "sampler3D";
+        case BaseType::SamplerCube:
+            return "samplerCUBE";
+        case BaseType::SamplerState:
+            return "SamplerState";
+        case BaseType::SamplerComparisonState:
+            return "SamplerComparisonState";
         case BaseType::Texture:
-        case BaseType::Texture2D: return "Texture2D";
-        case BaseType::Texture1D: return "Texture1D";
-        case BaseType::Texture3D: return "Texture3D";
-        case BaseType::TextureCube: return "TextureCube";
-        case BaseType::Struct: return type.structName;
-        default: return "float";
+        case BaseType::Texture2D:
+            return "Texture2D";
+        case BaseType::Texture1D:
+            return "Texture1D";
+        case BaseType::Texture3D:
+            return "Texture3D";
+        case BaseType::TextureCube:
+            return "TextureCube";
+        case BaseType::Struct:
+            return type.structName;
+        default:
+            return "float";
     }
     if (type.shape == Shape::Vector) return base + std::to_string(type.cols);
     if (type.shape == Shape::Matrix)
@@ -148,10 +176,12 @@ std::string formatFloat(float x) {
 std::string literalText(const Value& v, const TypeDesc& type) {
     auto component = [&](float x) -> std::string {
         if (type.base == BaseType::Bool) return x != 0.0f ? "true" : "false";
-        if (type.base == BaseType::Int || type.base == BaseType::UInt) return std::to_string(static_cast<long long>(x));
+        if (type.base == BaseType::Int || type.base == BaseType::UInt)
+            return std::to_string(static_cast<long long>(x));
         return formatFloat(x);
     };
-    if (v.data.size() == 1 && type.shape == Shape::Scalar && type.arrayDims.empty()) return component(v.data[0]);
+    if (v.data.size() == 1 && type.shape == Shape::Scalar && type.arrayDims.empty())
+        return component(v.data[0]);
     TypeDesc plain = type;
     plain.rowMajor = false;
     plain.arrayDims.clear();
@@ -163,7 +193,8 @@ std::string literalText(const Value& v, const TypeDesc& type) {
 // An expression with no parameter references: it can be folded into the HLSL as a literal.
 bool isLiteralOnly(const Expr& e) {
     if (e.kind == Expr::Kind::Identifier) return e.text == "true" || e.text == "false";
-    if (e.kind == Expr::Kind::String || e.kind == Expr::Kind::TextureRef || e.kind == Expr::Kind::Compile) return false;
+    if (e.kind == Expr::Kind::String || e.kind == Expr::Kind::TextureRef || e.kind == Expr::Kind::Compile)
+        return false;
     for (const Expr& a : e.args)
         if (!isLiteralOnly(a)) return false;
     return true;
@@ -223,7 +254,8 @@ bool isDepthCompareSampler(const Effect& effect, const Parameter& sampler) {
     const Parameter* texture = samplerTexture(effect, sampler);
     if (!texture) return false;
     if (upper(texture->semantic) == "RENDERDEPTHSTENCILTARGET") return true;
-    if (const Annotation* format = texture->annotation("Format"); format && format->value.kind == Expr::Kind::String) {
+    if (const Annotation* format = texture->annotation("Format");
+        format && format->value.kind == Expr::Kind::String) {
         auto f = parseTextureFormat(format->value.text);
         return f && isDepthFormat(*f);
     }
@@ -260,7 +292,8 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
             i = end;
             continue;
         }
-        if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_') || (i > 0 && isIdentChar(text[i - 1]))) {
+        if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_') ||
+            (i > 0 && isIdentChar(text[i - 1]))) {
             out += c;
             ++i;
             continue;
@@ -295,11 +328,11 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
 // the texel (filtered when the sampler filters linearly), in every component.
 std::string depthSamplerHelpers(const std::string& s) {
     std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
-    return "Texture2D " + t + ";\nSamplerComparisonState " + c + ";\n" +
-           "float4 fx_tex2D_" + s + "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
-           "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
-           "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c +
-           ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
+    return "Texture2D " + t + ";\nSamplerComparisonState " + c + ";\n" + "float4 fx_tex2D_" + s +
+           "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
+           "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c +
+           ", uv.xy, uv.z).xxxx; }\n" + "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t +
+           ".SampleCmpLevelZero(" + c + ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
 }
 
 // [SECTION] Effect declarations (verbatim, behind #line)
@@ -355,14 +388,17 @@ void gatherFields(const Effect& effect, const TypeDesc& type, const std::string&
         const StructDecl* decl = findStructDecl(effect, type.structName);
         if (!decl || depth > 8) return;
         for (const StructMember& m : decl->members)
-            gatherFields(effect, m.type, m.semantic, m.interpolation, lvalue + "." + m.name, m.loc, out, depth + 1);
+            gatherFields(effect, m.type, m.semantic, m.interpolation, lvalue + "." + m.name, m.loc, out,
+                         depth + 1);
         return;
     }
     if (semantic.empty()) return;  // left zero, as an unbound D3D9 register reads
     out.push_back(Field{lvalue, type, canonicalSemantic(semantic), interpolation, loc});
 }
 
-int fieldComponents(const Field& f) { return f.type.shape == Shape::Matrix ? f.type.rows * f.type.cols : f.type.cols; }
+int fieldComponents(const Field& f) {
+    return f.type.shape == Shape::Matrix ? f.type.rows * f.type.cols : f.type.cols;
+}
 
 // `expr` (a float4) narrowed to the field's type: ".x", ".xy", ".xyz", with a cast for ints/bools.
 std::string narrowTo(const Field& f, const std::string& expr) {
@@ -377,7 +413,11 @@ class WrapperBuilder {
 public:
     WrapperBuilder(const Effect& effect, const FunctionDecl& fn, const Expr& compile, ShaderStage stage,
                    std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics)
-        : mEffect(effect), mFn(fn), mCompile(compile), mStage(stage), mArguments(arguments),
+        : mEffect(effect),
+          mFn(fn),
+          mCompile(compile),
+          mStage(stage),
+          mArguments(arguments),
           mDiagnostics(diagnostics) {}
 
     bool build(std::string& globals, std::string& wrapper);
@@ -404,8 +444,10 @@ private:
 bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value,
                                      std::string& globals) {
     const Expr* expr = nullptr;
-    if (argIndex < mCompile.args.size()) expr = &mCompile.args[argIndex];
-    else if (p.defaultValue) expr = &*p.defaultValue;
+    if (argIndex < mCompile.args.size())
+        expr = &mCompile.args[argIndex];
+    else if (p.defaultValue)
+        expr = &*p.defaultValue;
     else
         return fail(DiagId::InvalidCompileExpression, mCompile.loc,
                     {"no argument for uniform parameter '" + p.name + "' of '" + mFn.name + "'"});
@@ -418,8 +460,9 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
         return true;
     }
     if (!isNumericType(p.type))
-        return fail(DiagId::InvalidCompileExpression, expr->loc,
-                    {"uniform parameter '" + p.name + "' of type " + hlslTypeName(p.type) + " is not supported"});
+        return fail(
+            DiagId::InvalidCompileExpression, expr->loc,
+            {"uniform parameter '" + p.name + "' of type " + hlslTypeName(p.type) + " is not supported"});
     if (isLiteralOnly(*expr)) {
         // Folded, so that `if (PCF)` on a literal argument compiles away as in fxc.
         auto v = evaluate(*expr, nullptr, &p.type, &mDiagnostics);
@@ -427,6 +470,18 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
         value = literalText(*v, p.type);
         return true;
     }
+    // The runtime evaluates this expression at every draw: a name that is no effect parameter would only
+    // fail there, once per frame, so report it here (NULL and true/false are the only bare words allowed).
+    std::function<const Expr*(const Expr&)> unknownName = [&](const Expr& e) -> const Expr* {
+        if (e.kind == Expr::Kind::Identifier && e.text != "true" && e.text != "false" && e.text != "NULL" &&
+            !findParam(mEffect, e.text))
+            return &e;
+        for (const Expr& a : e.args)
+            if (const Expr* found = unknownName(a)) return found;
+        return nullptr;
+    };
+    if (const Expr* unknown = unknownName(*expr))
+        return fail(DiagId::UnknownIdentifier, unknown->loc, {unknown->text});
     std::string name = "fx_arg" + std::to_string(mArguments.size());
     mArguments.push_back(CompileArgument{*expr, p.type, name});
     globals += hlslTypeName(p.type) + " " + name + arraySuffix(p.type) + ";\n";
@@ -473,10 +528,10 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             // D3D9 VPOS is the pixel's integer top-left corner; SV_Position is its centre.
             fragCoord = true;
             int n = fieldComponents(f);
-            std::string v = n == 1 ? "floor(fx_fragCoord.x)"
-                                   : n == 2 ? "floor(fx_fragCoord.xy)"
-                                            : "float" + std::to_string(n) + "(floor(fx_fragCoord.xy)" +
-                                                  (n == 3 ? ", 0)" : ", 0, 1)");
+            std::string v = n == 1   ? "floor(fx_fragCoord.x)"
+                            : n == 2 ? "floor(fx_fragCoord.xy)"
+                                     : "float" + std::to_string(n) + "(floor(fx_fragCoord.xy)" +
+                                           (n == 3 ? ", 0)" : ", 0, 1)");
             body += "    " + f.lvalue + " = " + v + ";\n";
         } else if (s == "POSITION0" || s == "SV_POSITION") {
             // ps_2_0 effects often reuse the vertex output struct; its POSITION reads the fragment position.
@@ -484,30 +539,34 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             body += "    " + f.lvalue + " = " + narrowTo(f, "fx_fragCoord") + ";\n";
         } else if (s == "VFACE" || s == "SV_ISFRONTFACE") {
             frontFace = true;
-            body += "    " + f.lvalue + " = " + (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
+            body += "    " + f.lvalue + " = " +
+                    (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
         } else if (auto location = varyingLocation(s)) {
             if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
-                return fail(DiagId::UnsupportedFeature, f.loc, {"matrix or array varying '" + f.lvalue + "'"});
+                return fail(DiagId::UnsupportedFeature, f.loc,
+                            {"matrix or array varying '" + f.lvalue + "'"});
             varyings.insert(*location);
             if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
             body += "    " + f.lvalue + " = " + narrowTo(f, "fx_v" + std::to_string(*location)) + ";\n";
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc, {"pixel input semantic '" + f.semantic + "' is not supported"});
+            return fail(DiagId::UnsupportedFeature, f.loc,
+                        {"pixel input semantic '" + f.semantic + "' is not supported"});
         }
     }
     auto add = [&](const std::string& p) { params += (params.empty() ? "" : ",\n    ") + p; };
     // Varyings are float4 in both stages so that they link whatever width each stage declares.
     for (int location : varyings) {
         std::string interp = interpolation.count(location) ? interpolation[location] + " " : "";
-        add("[[vk::location(" + std::to_string(location) + ")]] " + interp + "float4 fx_v" + std::to_string(location) +
-            " : FX_V" + std::to_string(location));
+        add("[[vk::location(" + std::to_string(location) + ")]] " + interp + "float4 fx_v" +
+            std::to_string(location) + " : FX_V" + std::to_string(location));
     }
     if (fragCoord) add("float4 fx_fragCoord : SV_Position");
     if (frontFace) add("bool fx_frontFace : SV_IsFrontFace");
     return true;
 }
 
-bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string& members, std::string& body) {
+bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string& members,
+                                   std::string& body) {
     bool position = false;
     std::set<int> used;
     for (const Field& f : fields) {
@@ -518,10 +577,12 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             members += "    float4 fx_position : SV_Position;\n";
             body += "    fx_out.fx_position = " + f.lvalue + ";\n";
         } else if (s.rfind("PSIZE", 0) == 0) {
-            continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely rely on it
+            continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely
+                       // rely on it
         } else if (auto location = varyingLocation(s)) {
             if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
-                return fail(DiagId::UnsupportedFeature, f.loc, {"matrix or array varying '" + f.lvalue + "'"});
+                return fail(DiagId::UnsupportedFeature, f.loc,
+                            {"matrix or array varying '" + f.lvalue + "'"});
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
@@ -529,9 +590,15 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             int n = std::clamp(f.type.cols, 1, 4);
             std::string v = "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + f.lvalue + ")";
             body += "    fx_out." + name + " = " +
-                    (n == 4 ? v : "float4(" + v + (n == 1 ? ", 0, 0, 1)" : n == 2 ? ", 0, 1)" : ", 1)")) + ";\n";
+                    (n == 4 ? v
+                            : "float4(" + v +
+                                  (n == 1   ? ", 0, 0, 1)"
+                                   : n == 2 ? ", 0, 1)"
+                                            : ", 1)")) +
+                    ";\n";
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc, {"vertex output semantic '" + s + "' is not supported"});
+            return fail(DiagId::UnsupportedFeature, f.loc,
+                        {"vertex output semantic '" + s + "' is not supported"});
         }
     }
     return true;
@@ -553,7 +620,8 @@ bool WrapperBuilder::pixelOutputs(const std::vector<Field>& fields, std::string&
             members += "    float fx_depth : SV_Depth;\n";
             body += "    fx_out.fx_depth = (float)(" + f.lvalue + ");\n";
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc, {"pixel output semantic '" + f.semantic + "' is not supported"});
+            return fail(DiagId::UnsupportedFeature, f.loc,
+                        {"pixel output semantic '" + f.semantic + "' is not supported"});
         }
     }
     return true;
@@ -596,29 +664,35 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
     }
     std::string params, inputBody, members, outputBody;
     bool vertex = mStage == ShaderStage::Vertex;
-    if (!(vertex ? vertexInputs(inputs, params, inputBody) : pixelInputs(inputs, params, inputBody))) return false;
+    if (!(vertex ? vertexInputs(inputs, params, inputBody) : pixelInputs(inputs, params, inputBody)))
+        return false;
     if (!(vertex ? vertexOutputs(outputs, members, outputBody) : pixelOutputs(outputs, members, outputBody)))
         return false;
     std::string outStruct = vertex ? "fx_VsOutput" : "fx_PsOutput";
-    if (members.empty()) members = vertex ? "    float4 fx_position : SV_Position;\n" : "    float4 fx_c0 : SV_Target0;\n";
+    if (members.empty())
+        members = vertex ? "    float4 fx_position : SV_Position;\n" : "    float4 fx_c0 : SV_Target0;\n";
     wrapper += "struct " + outStruct + " {\n" + members + "};\n";
-    wrapper += outStruct + " " + std::string(kWrapperEntryPoint) + "(" + (params.empty() ? "" : "\n    " + params) + ")\n{\n";
+    wrapper += outStruct + " " + std::string(kWrapperEntryPoint) + "(" +
+               (params.empty() ? "" : "\n    " + params) + ")\n{\n";
     wrapper += "    " + outStruct + " fx_out = (" + outStruct + ")0;\n";
     wrapper += locals + inputBody + call + outputBody + "    return fx_out;\n}\n";
     return true;
 }
 
 bool profileMatches(const std::string& profile, ShaderStage stage) {
-    static const char* kVersions[] = {"1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw",
+    static const char* kVersions[] = {"1_1", "1_2",           "1_3",           "1_4", "2_0",
+                                      "2_a", "2_b",           "2_sw",          "3_0", "3_sw",
                                       "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"};
     std::string prefix = stage == ShaderStage::Vertex ? "vs_" : "ps_";
     std::string p = profile;
     for (char& c : p) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (p.rfind(prefix, 0) != 0) return false;
     std::string version = p.substr(3);
-    if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4")) return false;
+    if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4"))
+        return false;
     if (stage == ShaderStage::Fragment && version == "1_1") return true;
-    return std::any_of(std::begin(kVersions), std::end(kVersions), [&](const char* v) { return version == v; });
+    return std::any_of(std::begin(kVersions), std::end(kVersions),
+                       [&](const char* v) { return version == v; });
 }
 
 }  // namespace
@@ -628,7 +702,15 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics) {
     if (!profileMatches(compile.profile, stage)) {
-        diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
+        // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
+        const ShaderStage other = stage == ShaderStage::Vertex ? ShaderStage::Fragment : ShaderStage::Vertex;
+        auto stageName = [](ShaderStage s) { return s == ShaderStage::Vertex ? "vertex" : "pixel"; };
+        if (profileMatches(compile.profile, other))
+            diagnostics.report(DiagId::InvalidCompileExpression, compile.loc,
+                               {"'" + compile.profile + "' is a " + stageName(other) +
+                                "-shader profile, used for the " + stageName(stage) + " shader"});
+        else
+            diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
         return std::nullopt;
     }
     const FunctionDecl* fn = nullptr;

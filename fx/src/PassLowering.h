@@ -40,7 +40,7 @@ struct LoweredStage {
     std::string entryPoint;  // the user's function
     std::string profile;
     std::string hlsl;
-    SourceLoc compileLoc;                  // the compile expression: where generated-code errors go
+    SourceLoc compileLoc;                    // the compile expression: where generated-code errors go
     std::vector<std::string> depthSamplers;  // effect samplers sampled with depth comparison
 };
 

@@ -4,6 +4,10 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -12,12 +16,108 @@ namespace fx::detail {
 
 namespace {
 
+// glslang's preprocessor follows GLSL, which has no stringizing operator, but D3DX's has, and real FX
+// Composer headers use it (NVIDIA's Quad.fxh: `string Format = #PixFmt;`). Inside #define bodies,
+// `#param` becomes `__fx_stringize__ param`: glslang then substitutes the argument, and the lexer turns
+// the marker and the token after it into one string literal. Token pasting (`##`) is left alone.
+std::string markStringizing(const std::string& source) {
+    std::string out;
+    out.reserve(source.size());
+    bool inDefine = false;
+    bool lineStart = true;
+    for (size_t i = 0; i < source.size(); ++i) {
+        const char c = source[i];
+        if (c == '\n') {
+            // A define continues over backslash-newline.
+            const bool continued = !out.empty() && out.back() == '\\';
+            if (!continued) inDefine = false;
+            lineStart = true;
+            out += c;
+            continue;
+        }
+        if (lineStart && c == '#') {
+            size_t word = source.find_first_not_of(" \t", i + 1);
+            inDefine = word != std::string::npos && source.compare(word, 6, "define") == 0;
+            lineStart = false;
+            out += c;
+            continue;
+        }
+        if (lineStart && c != ' ' && c != '\t') lineStart = false;
+        if (inDefine && c == '"') {  // copy string literals untouched
+            size_t close = i + 1;
+            while (close < source.size() && source[close] != '"' && source[close] != '\n')
+                close += source[close] == '\\' ? 2 : 1;
+            out.append(source, i, std::min(close + 1, source.size()) - i);
+            i = std::min(close, source.size() - 1);
+            continue;
+        }
+        if (inDefine && c == '#') {
+            const bool pasting =
+                (i + 1 < source.size() && source[i + 1] == '#') || (!out.empty() && out.back() == '#');
+            const size_t next = source.find_first_not_of(" \t", i + 1);
+            if (!pasting && next != std::string::npos &&
+                (std::isalpha(static_cast<unsigned char>(source[next])) || source[next] == '_')) {
+                out += "__fx_stringize__ ";
+                continue;
+            }
+        }
+        out += c;
+    }
+    return out;
+}
+
+// Bytes HLSL cannot contain outside comments and string literals: control characters, '@', '$', '`',
+// and anything above ASCII (stray UTF-8 or Latin-1). glslang's preprocessor turned them into tokens such
+// as "bad" or "<", so the user read "unknown type 'bad'" or "found '<'" instead of the character. Comments
+// and strings may hold any bytes (FX Composer files have Latin-1 comments and UIName strings).
+// Reports the first bad character of each line, at most 20, and returns false if there was any.
+bool checkCharacters(const std::string& text, const std::string& file, DiagnosticSink& diagnostics) {
+    int line = 1, reported = 0, lastReportedLine = 0;
+    size_t lineStart = 0;
+    size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark is fine
+    for (; i < text.size() && reported < 20; ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') {
+            ++line;
+            lineStart = i + 1;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            for (i += 2; i < text.size() && !(text[i] == '*' && i + 1 < text.size() && text[i + 1] == '/');
+                 ++i)
+                if (text[i] == '\n') ++line, lineStart = i + 1;
+            ++i;  // the '/' (or past the end: the preprocessor reports the open comment)
+        } else if (c == '"') {
+            while (i + 1 < text.size() && text[i + 1] != '"' && text[i + 1] != '\n')
+                i += text[i + 1] == '\\' ? 2 : 1;
+            if (i + 1 < text.size() && text[i + 1] == '"') ++i;
+        } else if ((c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') || c >= 0x7f || c == '@' ||
+                   c == '$' || c == '`') {
+            if (line != lastReportedLine) {
+                char shown[8];
+                if (c < 0x20 || c >= 0x7f)
+                    std::snprintf(shown, sizeof shown, "\\x%02X", c);
+                else
+                    std::snprintf(shown, sizeof shown, "%c", c);
+                diagnostics.report(DiagId::InvalidCharacter,
+                                   SourceLoc{file, line, static_cast<int>(i - lineStart) + 1}, {shown});
+                lastReportedLine = line;
+                ++reported;
+            }
+        }
+    }
+    return reported == 0;
+}
+
 void initializeGlslang() {
     static std::once_flag once;
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
 std::optional<std::string> readFromDisk(const std::string& path) {
+    // An ifstream opens a directory and reads it as empty: `#include "include"` would silently succeed.
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) return std::nullopt;
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::ostringstream text;
@@ -88,9 +188,15 @@ private:
         // glslang tries a "..." include as local first, then as system; resolve everything in one go.
         if (!system) return nullptr;
 
+        if (header.empty()) {  // `#include ""` would otherwise resolve to the including file's folder
+            failures[headerName] = "empty file name";
+            return nullptr;
+        }
+
         if (static_cast<int>(depth) > mOptions.maxIncludeDepth) {
-            failures[headerName] = "include depth exceeds " + std::to_string(mOptions.maxIncludeDepth) +
-                                   (isOnChain(header, includer) ? " (recursive include of '" + header + "')" : "");
+            failures[headerName] =
+                "include depth exceeds " + std::to_string(mOptions.maxIncludeDepth) +
+                (isOnChain(header, includer) ? " (recursive include of '" + header + "')" : "");
             return nullptr;
         }
         std::vector<std::string> candidates;
@@ -107,11 +213,12 @@ private:
             if (!text) continue;
             mTotalBytes += text->size();
             if (mTotalBytes > mOptions.maxSourceBytes) {
-                failures[headerName] = "sources exceed " + std::to_string(mOptions.maxSourceBytes) + " bytes in total";
+                failures[headerName] =
+                    "sources exceed " + std::to_string(mOptions.maxSourceBytes) + " bytes in total";
                 return nullptr;
             }
             mParents[candidate] = includer;
-            auto stored = mOut.files.emplace(candidate, std::move(*text)).first;
+            auto stored = mOut.files.emplace(candidate, markStringizing(*text)).first;
             bool seen = false;
             for (const std::string& file : mOut.includedFiles) seen = seen || file == candidate;
             if (!seen) mOut.includedFiles.push_back(candidate);
@@ -126,8 +233,7 @@ private:
             bool endsWith = file.size() >= header.size() + 1 &&
                             file.compare(file.size() - header.size(), header.size(), header) == 0 &&
                             file[file.size() - header.size() - 1] == '/';
-            if (file == header || endsWith)
-                return true;
+            if (file == header || endsWith) return true;
             auto parent = mParents.find(file);
             if (parent == mParents.end()) return false;
             file = parent->second;
@@ -151,13 +257,14 @@ std::string folderOf(const std::string& path) {
 bool preprocessEffect(const std::string& source, const std::string& path, const ParseOptions& options,
                       DiagnosticSink& diagnostics, PreprocessedSource& out) {
     initializeGlslang();
-    out.files[path] = source;
+    out.files[path] = markStringizing(source);
     out.includedFiles = {path};
     if (source.size() > options.maxSourceBytes) {
         diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0},
                            {"source exceeds " + std::to_string(options.maxSourceBytes) + " bytes"});
         return false;
     }
+    if (!checkCharacters(source, path, diagnostics)) return false;
 
     std::string preamble;
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
@@ -175,9 +282,11 @@ bool preprocessEffect(const std::string& source, const std::string& path, const 
     EffectIncluder includer(options, out, source.size());
     std::string text;
     auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor);
-    bool ok = shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &text, includer);
+    bool ok =
+        shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &text, includer);
 
-    // Log lines: "ERROR: file:line: 'token' : message" (also "WARNING: ..."); the summary line has no location.
+    // Log lines: "ERROR: file:line: 'token' : message" (also "WARNING: ..."); the summary line has no
+    // location.
     bool reported = false;
     std::istringstream log(shader.getInfoLog());
     std::string line;
@@ -208,10 +317,13 @@ bool preprocessEffect(const std::string& source, const std::string& path, const 
         size_t first = userLine.find_first_not_of(" \t");
         loc.column = loc.line > 0 ? static_cast<int>(first == std::string::npos ? 0 : first) + 1 : 0;
 
-        const std::string kIncludeFailure = "Could not process include directive for header name: ";
+        // Without the trailing blank, which the trimming above removes when the name is empty (`#include
+        // ""`).
+        const std::string kIncludeFailure = "Could not process include directive for header name:";
         size_t includeAt = message.find(kIncludeFailure);
         if (includeAt != std::string::npos) {
             std::string header = message.substr(includeAt + kIncludeFailure.size());
+            if (!header.empty() && header.front() == ' ') header.erase(0, 1);
             // Point at the header name's opening quote or angle bracket.
             size_t quote = userLine.find_first_of("\"<", first == std::string::npos ? 0 : first);
             if (quote != std::string::npos) loc.column = static_cast<int>(quote) + 1;
@@ -226,7 +338,8 @@ bool preprocessEffect(const std::string& source, const std::string& path, const 
         }
         reported = true;
     }
-    if (!ok && !reported) diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0}, {"preprocessing failed"});
+    if (!ok && !reported)
+        diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0}, {"preprocessing failed"});
     out.text = std::move(text);
     return ok && !reported;
 }

@@ -28,9 +28,9 @@ private:
 };
 
 struct PreprocessedSource {
-    std::string text;                           // glslang's output: lines kept, #line for includes
-    std::map<std::string, std::string> files;   // every file read, by the name #line uses
-    std::vector<std::string> includedFiles;     // main file first, in the order opened
+    std::string text;                          // glslang's output: lines kept, #line for includes
+    std::map<std::string, std::string> files;  // every file read, by the name #line uses
+    std::vector<std::string> includedFiles;    // main file first, in the order opened
 };
 
 // Returns false if an error was reported.

@@ -34,17 +34,26 @@ size_t elementCount(const TypeDesc& t) {
     return n;
 }
 
-size_t componentCount(const TypeDesc& t) { return static_cast<size_t>(t.rows * t.cols) * elementCount(t); }
+size_t componentCount(const TypeDesc& t) {
+    return static_cast<size_t>(t.rows * t.cols) * elementCount(t);
+}
 
 int baseRank(BaseType b) {
     switch (b) {
-        case BaseType::Bool: return 0;
-        case BaseType::Int: return 1;
-        case BaseType::UInt: return 2;
-        case BaseType::Half: return 3;
-        case BaseType::Float: return 4;
-        case BaseType::Double: return 5;
-        default: return 4;
+        case BaseType::Bool:
+            return 0;
+        case BaseType::Int:
+            return 1;
+        case BaseType::UInt:
+            return 2;
+        case BaseType::Half:
+            return 3;
+        case BaseType::Float:
+            return 4;
+        case BaseType::Double:
+            return 5;
+        default:
+            return 4;
     }
 }
 
@@ -71,11 +80,14 @@ Value makeValue(const TypeDesc& type, std::vector<float> data) {
 // Stores a component in the representation of its base type: bools 0/1, ints truncated.
 float normalizeComponent(BaseType base, float x) {
     switch (base) {
-        case BaseType::Bool: return x != 0.0f ? 1.0f : 0.0f;
-        case BaseType::Int: return std::trunc(x);
-        case BaseType::UInt: return x < 0 ? static_cast<float>(static_cast<uint32_t>(static_cast<int64_t>(x)))
-                                          : std::trunc(x);
-        default: return x;
+        case BaseType::Bool:
+            return x != 0.0f ? 1.0f : 0.0f;
+        case BaseType::Int:
+            return std::trunc(x);
+        case BaseType::UInt:
+            return x < 0 ? static_cast<float>(static_cast<uint32_t>(static_cast<int64_t>(x))) : std::trunc(x);
+        default:
+            return x;
     }
 }
 
@@ -139,8 +151,10 @@ std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, 
         out.type = target;
         return out;
     }
-    if (!isNumericBase(target.base)) return fail(DiagId::TypeMismatch, loc, "cannot evaluate a " + target.hlslName());
-    if (v.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, "expected a number, found a string");
+    if (!isNumericBase(target.base))
+        return fail(DiagId::TypeMismatch, loc, "cannot evaluate a " + target.hlslName());
+    if (v.type.base == BaseType::String)
+        return fail(DiagId::TypeMismatch, loc, "expected a number, found a string");
     size_t want = componentCount(target);
     std::vector<float> out;
     if (v.data.size() == 1) {
@@ -149,15 +163,17 @@ std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, 
                v.type.arrayDims.empty()) {
         // Matrix truncation keeps the upper-left block, as HLSL does.
         if (target.rows > v.type.rows || target.cols > v.type.cols)
-            return fail(DiagId::TypeMismatch, loc, "cannot convert " + v.type.hlslName() + " to " + target.hlslName());
+            return fail(DiagId::TypeMismatch, loc,
+                        "cannot convert " + v.type.hlslName() + " to " + target.hlslName());
         for (int r = 0; r < target.rows; ++r)
-            for (int c = 0; c < target.cols; ++c) out.push_back(v.data[static_cast<size_t>(r * v.type.cols + c)]);
+            for (int c = 0; c < target.cols; ++c)
+                out.push_back(v.data[static_cast<size_t>(r * v.type.cols + c)]);
     } else if (v.data.size() >= want) {
         out.assign(v.data.begin(), v.data.begin() + static_cast<std::ptrdiff_t>(want));
     } else {
         return fail(DiagId::TypeMismatch, loc,
-                    "cannot convert " + std::to_string(v.data.size()) + " components to " + target.hlslName() +
-                        " (" + std::to_string(want) + " components)");
+                    "cannot convert " + std::to_string(v.data.size()) + " components to " +
+                        target.hlslName() + " (" + std::to_string(want) + " components)");
     }
     for (float& x : out) x = normalizeComponent(target.base, x);
     return makeValue(target, std::move(out));
@@ -167,12 +183,20 @@ bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
     if (a.data.size() == b.data.size()) return true;
     if (a.data.size() == 1) {
         a.data.assign(b.data.size(), a.data[0]);
-        a.type = [&] { TypeDesc t = b.type; t.base = a.type.base; return t; }();
+        a.type = [&] {
+            TypeDesc t = b.type;
+            t.base = a.type.base;
+            return t;
+        }();
         return true;
     }
     if (b.data.size() == 1) {
         b.data.assign(a.data.size(), b.data[0]);
-        b.type = [&] { TypeDesc t = a.type; t.base = b.type.base; return t; }();
+        b.type = [&] {
+            TypeDesc t = a.type;
+            t.base = b.type.base;
+            return t;
+        }();
         return true;
     }
     // HLSL truncates the longer vector (with a warning).
@@ -183,7 +207,8 @@ bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
         a.type.cols = b.type.cols = n;
         return true;
     }
-    fail(DiagId::TypeMismatch, loc, "operands " + a.type.hlslName() + " and " + b.type.hlslName() + " do not match");
+    fail(DiagId::TypeMismatch, loc,
+         "operands " + a.type.hlslName() + " and " + b.type.hlslName() + " do not match");
     return false;
 }
 
@@ -194,9 +219,12 @@ std::optional<Value> Evaluator::unary(const Expr& e) {
     if (!a) return std::nullopt;
     if (a->type.base == BaseType::String) return fail(DiagId::TypeMismatch, e.loc, "operator on a string");
     for (float& x : a->data) {
-        if (e.text == "-") x = -x;
-        else if (e.text == "!") x = x == 0.0f ? 1.0f : 0.0f;
-        else if (e.text == "~") x = static_cast<float>(~static_cast<int32_t>(x));
+        if (e.text == "-")
+            x = -x;
+        else if (e.text == "!")
+            x = x == 0.0f ? 1.0f : 0.0f;
+        else if (e.text == "~")
+            x = static_cast<float>(~static_cast<int32_t>(x));
     }
     if (e.text == "!") a->type.base = BaseType::Bool;
     if (e.text == "-" && a->type.base == BaseType::Bool) a->type.base = BaseType::Int;
@@ -210,8 +238,7 @@ std::optional<Value> Evaluator::binary(const Expr& e) {
     if (!b) return std::nullopt;
     const std::string& op = e.text;
     if (a->type.base == BaseType::String || b->type.base == BaseType::String) {
-        if (op == "==" || op == "!=")
-            return Value::boolean((a->string == b->string) == (op == "=="));
+        if (op == "==" || op == "!=") return Value::boolean((a->string == b->string) == (op == "=="));
         return fail(DiagId::TypeMismatch, e.loc, "operator '" + op + "' on a string");
     }
     if (!broadcast(*a, *b, e.loc)) return std::nullopt;
@@ -229,9 +256,12 @@ std::optional<Value> Evaluator::binary(const Expr& e) {
         float x = a->data[i], y = b->data[i];
         auto ix = static_cast<int64_t>(x), iy = static_cast<int64_t>(y);
         float r = 0.0f;
-        if (op == "+") r = x + y;
-        else if (op == "-") r = x - y;
-        else if (op == "*") r = x * y;
+        if (op == "+")
+            r = x + y;
+        else if (op == "-")
+            r = x - y;
+        else if (op == "*")
+            r = x * y;
         else if (op == "/") {
             if (integer) {
                 if (iy == 0) return fail(DiagId::TypeMismatch, e.loc, "integer division by zero");
@@ -246,20 +276,35 @@ std::optional<Value> Evaluator::binary(const Expr& e) {
             } else {
                 r = std::fmod(x, y);
             }
-        } else if (op == "<") r = x < y;
-        else if (op == ">") r = x > y;
-        else if (op == "<=") r = x <= y;
-        else if (op == ">=") r = x >= y;
-        else if (op == "==") r = x == y;
-        else if (op == "!=") r = x != y;
-        else if (op == "&&") r = (x != 0.0f) && (y != 0.0f);
-        else if (op == "||") r = (x != 0.0f) || (y != 0.0f);
-        else if (op == "&") r = static_cast<float>(ix & iy);
-        else if (op == "|") r = static_cast<float>(ix | iy);
-        else if (op == "^") r = static_cast<float>(ix ^ iy);
-        else if (op == "<<") r = static_cast<float>(ix << iy);
-        else if (op == ">>") r = static_cast<float>(ix >> iy);
-        else return fail(DiagId::UnsupportedFeature, e.loc, "operator '" + op + "' cannot be evaluated on the host");
+        } else if (op == "<")
+            r = x < y;
+        else if (op == ">")
+            r = x > y;
+        else if (op == "<=")
+            r = x <= y;
+        else if (op == ">=")
+            r = x >= y;
+        else if (op == "==")
+            r = x == y;
+        else if (op == "!=")
+            r = x != y;
+        else if (op == "&&")
+            r = (x != 0.0f) && (y != 0.0f);
+        else if (op == "||")
+            r = (x != 0.0f) || (y != 0.0f);
+        else if (op == "&")
+            r = static_cast<float>(ix & iy);
+        else if (op == "|")
+            r = static_cast<float>(ix | iy);
+        else if (op == "^")
+            r = static_cast<float>(ix ^ iy);
+        else if (op == "<<")
+            r = static_cast<float>(ix << iy);
+        else if (op == ">>")
+            r = static_cast<float>(ix >> iy);
+        else
+            return fail(DiagId::UnsupportedFeature, e.loc,
+                        "operator '" + op + "' cannot be evaluated on the host");
         out[i] = normalizeComponent(type.base, r);
     }
     return makeValue(type, std::move(out));
@@ -273,7 +318,8 @@ std::optional<Value> Evaluator::ternary(const Expr& e) {
     auto a = eval(e.args[1]);
     auto b = a ? eval(e.args[2]) : std::nullopt;
     if (!a || !b || !broadcast(*a, *b, e.loc)) return std::nullopt;
-    if (c->data.size() != a->data.size()) return fail(DiagId::TypeMismatch, e.loc, "condition size does not match");
+    if (c->data.size() != a->data.size())
+        return fail(DiagId::TypeMismatch, e.loc, "condition size does not match");
     for (size_t i = 0; i < a->data.size(); ++i)
         if (c->data[i] == 0.0f) a->data[i] = b->data[i];
     return a;
@@ -318,9 +364,11 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         return false;
     };
     for (const Value& a : args)
-        if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, e.loc, name + "() of a string");
+        if (a.type.base == BaseType::String)
+            return fail(DiagId::TypeMismatch, e.loc, name + "() of a string");
     auto floatResult = [](Value v) {
-        if (!(v.type.base == BaseType::Half || v.type.base == BaseType::Double)) v.type.base = BaseType::Float;
+        if (!(v.type.base == BaseType::Half || v.type.base == BaseType::Double))
+            v.type.base = BaseType::Float;
         return v;
     };
     using F1 = float (*)(float);
@@ -353,8 +401,10 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         if (!need(1)) return std::nullopt;
         Value v = args[0];
         for (float& x : v.data) x = it->second(x);
-        if (name == "sign") v.type.base = BaseType::Int;
-        else if (name != "abs") v = floatResult(std::move(v));
+        if (name == "sign")
+            v.type.base = BaseType::Int;
+        else if (name != "abs")
+            v = floatResult(std::move(v));
         return v;
     }
     using F2 = float (*)(float, float);
@@ -383,8 +433,10 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         Value v = name == "smoothstep" ? args[2] : args[0];
         for (size_t i = 0; i < v.data.size(); ++i) {
             float a = args[0].data[i], b = args[1].data[i], c = args[2].data[i];
-            if (name == "clamp") v.data[i] = std::min(std::max(a, b), c);
-            else if (name == "lerp") v.data[i] = a + (b - a) * c;
+            if (name == "clamp")
+                v.data[i] = std::min(std::max(a, b), c);
+            else if (name == "lerp")
+                v.data[i] = a + (b - a) * c;
             else {
                 float t = std::clamp((c - a) / (b - a), 0.0f, 1.0f);
                 v.data[i] = t * t * (3.0f - 2.0f * t);
@@ -423,7 +475,8 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
             return fail(DiagId::TypeMismatch, e.loc, "cross() takes two float3");
         const auto& a = args[0].data;
         const auto& b = args[1].data;
-        return Value::vector({a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]});
+        return Value::vector(
+            {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]});
     }
     if (name == "transpose") {
         if (!need(1)) return std::nullopt;
@@ -433,7 +486,8 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         std::swap(v.type.rows, v.type.cols);
         for (int r = 0; r < m.type.rows; ++r)
             for (int c = 0; c < m.type.cols; ++c)
-                v.data[static_cast<size_t>(c * m.type.rows + r)] = m.data[static_cast<size_t>(r * m.type.cols + c)];
+                v.data[static_cast<size_t>(c * m.type.rows + r)] =
+                    m.data[static_cast<size_t>(r * m.type.cols + c)];
         return v;
     }
     if (name == "determinant" || name == "inverse") {
@@ -504,7 +558,8 @@ std::optional<Value> Evaluator::initList(const Expr& e) {
     for (const Expr& a : e.args) {
         auto v = eval(a);
         if (!v) return std::nullopt;
-        if (v->type.base == BaseType::String) return fail(DiagId::TypeMismatch, a.loc, "string in an initializer list");
+        if (v->type.base == BaseType::String)
+            return fail(DiagId::TypeMismatch, a.loc, "string in an initializer list");
         flat.insert(flat.end(), v->data.begin(), v->data.end());
     }
     return makeValue(vectorType(BaseType::Float, static_cast<int>(flat.size())), std::move(flat));
@@ -538,7 +593,8 @@ std::optional<Value> Evaluator::member(const Expr& e) {
             out.push_back(base->data[static_cast<size_t>(r * base->type.cols + c)]);
         }
     } else {
-        if (m.empty() || m.size() > 4) return fail(DiagId::TypeMismatch, e.loc, "invalid swizzle '" + m + "'");
+        if (m.empty() || m.size() > 4)
+            return fail(DiagId::TypeMismatch, e.loc, "invalid swizzle '" + m + "'");
         for (char ch : m) {
             const char* xyzw = "xyzw";
             const char* rgba = "rgba";
@@ -566,10 +622,12 @@ std::optional<Value> Evaluator::index(const Expr& e) {
     if (!elem.arrayDims.empty()) {
         elem.arrayDims.erase(elem.arrayDims.begin());
         stride = componentCount(elem);
-        if (i < 0 || i >= base->type.arrayDims[0]) return fail(DiagId::TypeMismatch, e.loc, "index out of range");
+        if (i < 0 || i >= base->type.arrayDims[0])
+            return fail(DiagId::TypeMismatch, e.loc, "index out of range");
     } else if (elem.shape == Shape::Matrix) {
         // m[i] is row i, as in HLSL.
-        if (i < 0 || i >= elem.rows) return fail(DiagId::TypeMismatch, e.loc, "matrix row index out of range");
+        if (i < 0 || i >= elem.rows)
+            return fail(DiagId::TypeMismatch, e.loc, "matrix row index out of range");
         elem = vectorType(elem.base, elem.cols);
         stride = static_cast<size_t>(elem.cols);
     } else if (elem.shape == Shape::Vector) {
@@ -587,22 +645,32 @@ std::optional<Value> Evaluator::index(const Expr& e) {
 std::optional<Value> Evaluator::eval(const Expr& e) {
     switch (e.kind) {
         case Expr::Kind::Number:
-            return e.isInteger ? Value::integer(static_cast<int>(e.number)) : Value::scalar(static_cast<float>(e.number));
-        case Expr::Kind::Bool: return Value::boolean(e.number != 0.0);
-        case Expr::Kind::String: return Value::text(e.text);
+            return e.isInteger ? Value::integer(static_cast<int>(e.number))
+                               : Value::scalar(static_cast<float>(e.number));
+        case Expr::Kind::Bool:
+            return Value::boolean(e.number != 0.0);
+        case Expr::Kind::String:
+            return Value::text(e.text);
         case Expr::Kind::Identifier: {
             if (e.text == "true" || e.text == "false") return Value::boolean(e.text == "true");
             const Value* v = mLookup ? mLookup(e.text) : nullptr;
             if (!v) return fail(DiagId::UnknownIdentifier, e.loc, e.text);
             return *v;
         }
-        case Expr::Kind::Unary: return unary(e);
-        case Expr::Kind::Binary: return binary(e);
-        case Expr::Kind::Ternary: return ternary(e);
-        case Expr::Kind::Call: return call(e);
-        case Expr::Kind::Member: return member(e);
-        case Expr::Kind::Index: return index(e);
-        case Expr::Kind::InitList: return initList(e);
+        case Expr::Kind::Unary:
+            return unary(e);
+        case Expr::Kind::Binary:
+            return binary(e);
+        case Expr::Kind::Ternary:
+            return ternary(e);
+        case Expr::Kind::Call:
+            return call(e);
+        case Expr::Kind::Member:
+            return member(e);
+        case Expr::Kind::Index:
+            return index(e);
+        case Expr::Kind::InitList:
+            return initList(e);
         case Expr::Kind::Cast: {
             auto v = eval(e.args[0]);
             if (!v) return std::nullopt;

@@ -58,18 +58,30 @@ bool startsWithIgnoreCase(std::string_view s, std::string_view prefix) {
 // The D3D header prefixes of each enum domain.
 std::vector<std::string_view> domainPrefixes(StateDomain domain) {
     switch (domain) {
-        case StateDomain::Cull: return {"D3DCULL_"};
-        case StateDomain::Fill: return {"D3DFILL_"};
-        case StateDomain::Shade: return {"D3DSHADE_"};
-        case StateDomain::Cmp: return {"D3DCMP_", "D3D10_COMPARISON_", "COMPARISON_"};
-        case StateDomain::Blend: return {"D3DBLEND_", "D3D10_BLEND_"};
-        case StateDomain::BlendOp: return {"D3DBLENDOP_", "D3D10_BLEND_OP_"};
-        case StateDomain::StencilOp: return {"D3DSTENCILOP_", "D3D10_STENCIL_OP_"};
-        case StateDomain::Address: return {"D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_"};
-        case StateDomain::TexFilter: return {"D3DTEXF_"};
-        case StateDomain::Filter10: return {"D3D10_FILTER_", "D3D11_FILTER_"};
-        case StateDomain::ColorMask: return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_"};
-        default: return {};
+        case StateDomain::Cull:
+            return {"D3DCULL_"};
+        case StateDomain::Fill:
+            return {"D3DFILL_"};
+        case StateDomain::Shade:
+            return {"D3DSHADE_"};
+        case StateDomain::Cmp:
+            return {"D3DCMP_", "D3D10_COMPARISON_", "COMPARISON_"};
+        case StateDomain::Blend:
+            return {"D3DBLEND_", "D3D10_BLEND_"};
+        case StateDomain::BlendOp:
+            return {"D3DBLENDOP_", "D3D10_BLEND_OP_"};
+        case StateDomain::StencilOp:
+            return {"D3DSTENCILOP_", "D3D10_STENCIL_OP_"};
+        case StateDomain::Address:
+            return {"D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_"};
+        case StateDomain::TexFilter:
+            return {"D3DTEXF_"};
+        case StateDomain::Filter10:
+            return {"D3D10_FILTER_", "D3D11_FILTER_"};
+        case StateDomain::ColorMask:
+            return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_"};
+        default:
+            return {};
     }
 }
 
@@ -95,8 +107,12 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
     return true;
 }
 
-const StateInfo& renderStateInfo(RenderStateId id) { return kRenderStates[static_cast<size_t>(id)]; }
-const StateInfo& samplerStateInfo(SamplerStateId id) { return kSamplerStates[static_cast<size_t>(id)]; }
+const StateInfo& renderStateInfo(RenderStateId id) {
+    return kRenderStates[static_cast<size_t>(id)];
+}
+const StateInfo& samplerStateInfo(SamplerStateId id) {
+    return kSamplerStates[static_cast<size_t>(id)];
+}
 
 std::optional<RenderStateId> findRenderState(std::string_view name) {
     return findState<RenderStateId>(kRenderStates, std::size(kRenderStates), name);
@@ -130,23 +146,40 @@ std::vector<std::string_view> enumValueNames(StateDomain domain) {
 
 std::string_view domainName(StateDomain domain) {
     switch (domain) {
-        case StateDomain::Bool: return "Bool";
-        case StateDomain::Int: return "Int";
-        case StateDomain::Float: return "Float";
-        case StateDomain::Color: return "Color";
-        case StateDomain::ColorMask: return "ColorMask";
-        case StateDomain::Shader: return "Shader";
-        case StateDomain::TextureRef: return "TextureRef";
-        case StateDomain::Cull: return "Cull";
-        case StateDomain::Fill: return "Fill";
-        case StateDomain::Shade: return "Shade";
-        case StateDomain::Cmp: return "Cmp";
-        case StateDomain::Blend: return "Blend";
-        case StateDomain::BlendOp: return "BlendOp";
-        case StateDomain::StencilOp: return "StencilOp";
-        case StateDomain::Address: return "Address";
-        case StateDomain::TexFilter: return "TexFilter";
-        case StateDomain::Filter10: return "Filter10";
+        case StateDomain::Bool:
+            return "Bool";
+        case StateDomain::Int:
+            return "Int";
+        case StateDomain::Float:
+            return "Float";
+        case StateDomain::Color:
+            return "Color";
+        case StateDomain::ColorMask:
+            return "ColorMask";
+        case StateDomain::Shader:
+            return "Shader";
+        case StateDomain::TextureRef:
+            return "TextureRef";
+        case StateDomain::Cull:
+            return "Cull";
+        case StateDomain::Fill:
+            return "Fill";
+        case StateDomain::Shade:
+            return "Shade";
+        case StateDomain::Cmp:
+            return "Cmp";
+        case StateDomain::Blend:
+            return "Blend";
+        case StateDomain::BlendOp:
+            return "BlendOp";
+        case StateDomain::StencilOp:
+            return "StencilOp";
+        case StateDomain::Address:
+            return "Address";
+        case StateDomain::TexFilter:
+            return "TexFilter";
+        case StateDomain::Filter10:
+            return "Filter10";
     }
     return "?";
 }

@@ -74,7 +74,8 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
             SourceLoc loc = locate(script, start + lead);
             size_t equals = item.find('=');
             std::string name = trim(item.substr(0, equals));
-            std::string value = equals == std::string_view::npos ? std::string() : trim(item.substr(equals + 1));
+            std::string value =
+                equals == std::string_view::npos ? std::string() : trim(item.substr(equals + 1));
 
             ScriptCommand command;
             command.loc = loc;
@@ -105,15 +106,22 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                 bool ok = true;
                 switch (command.kind) {
                     case ScriptCommand::Kind::Clear:
-                        if (equalsIgnoreCase(value, "Color")) command.clear = ScriptCommand::ClearWhat::Color;
-                        else if (equalsIgnoreCase(value, "Depth")) command.clear = ScriptCommand::ClearWhat::Depth;
-                        else if (equalsIgnoreCase(value, "Stencil")) command.clear = ScriptCommand::ClearWhat::Stencil;
-                        else ok = false, invalid("expected Color, Depth or Stencil");
+                        if (equalsIgnoreCase(value, "Color"))
+                            command.clear = ScriptCommand::ClearWhat::Color;
+                        else if (equalsIgnoreCase(value, "Depth"))
+                            command.clear = ScriptCommand::ClearWhat::Depth;
+                        else if (equalsIgnoreCase(value, "Stencil"))
+                            command.clear = ScriptCommand::ClearWhat::Stencil;
+                        else
+                            ok = false, invalid("expected Color, Depth or Stencil");
                         break;
                     case ScriptCommand::Kind::Draw:
-                        if (equalsIgnoreCase(value, "Geometry")) command.draw = ScriptCommand::DrawWhat::Geometry;
-                        else if (equalsIgnoreCase(value, "Buffer")) command.draw = ScriptCommand::DrawWhat::Buffer;
-                        else ok = false, invalid("expected Geometry or Buffer");
+                        if (equalsIgnoreCase(value, "Geometry"))
+                            command.draw = ScriptCommand::DrawWhat::Geometry;
+                        else if (equalsIgnoreCase(value, "Buffer"))
+                            command.draw = ScriptCommand::DrawWhat::Buffer;
+                        else
+                            ok = false, invalid("expected Geometry or Buffer");
                         break;
                     case ScriptCommand::Kind::Pass:
                     case ScriptCommand::Kind::ClearSetColor:
@@ -136,7 +144,8 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                                 ok = false, invalid("expected Condition?TechniqueA:TechniqueB");
                                 break;
                             }
-                            command.selectorTrue = trim(std::string_view(value).substr(question + 1, colon - question - 1));
+                            command.selectorTrue =
+                                trim(std::string_view(value).substr(question + 1, colon - question - 1));
                             command.selectorFalse = trim(std::string_view(value).substr(colon + 1));
                             if (command.selectorCondition.empty() || command.selectorTrue.empty() ||
                                 command.selectorFalse.empty())
@@ -147,7 +156,8 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                     case ScriptCommand::Kind::ScriptExternal:
                         diagnostics.report(DiagId::ScriptCommandIgnored, loc, {name});
                         break;
-                    default: break;
+                    default:
+                        break;
                 }
                 if (ok) commands.push_back(std::move(command));
             }

@@ -9,7 +9,9 @@
 
 namespace fx {
 
-std::string spirvToGlslOptionsKey() { return "spirv-cross glsl450 core novk"; }
+std::string spirvToGlslOptionsKey() {
+    return "spirv-cross glsl450 core novk";
+}
 
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
                  StageProgram& program, std::string& error) {
@@ -64,7 +66,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             const spirv_cross::SPIRType& type = compiler.get_type(r.base_type_id);
             compiler.set_name(r.base_type_id, options.uniformBlockName);
             compiler.set_name(r.id, options.uniformBlockName + "_");
-            compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(options.uniformBlockBinding));
+            compiler.set_decoration(r.id, spv::DecorationBinding,
+                                    static_cast<uint32_t>(options.uniformBlockBinding));
             program.uniformBlockName = options.uniformBlockName;
             program.uniformBlockBinding = options.uniformBlockBinding;
             program.uniformBlockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
@@ -79,7 +82,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                     u.matrixStride = compiler.type_struct_member_matrix_stride(type, i);
                     // glslang declares HLSL column_major matrices RowMajor (the GLSL matrix is the HLSL
                     // one transposed, so its rows are HLSL's columns): RowMajor => HLSL columns contiguous.
-                    u.hlslColumnsContiguous = compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
+                    u.hlslColumnsContiguous =
+                        compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
                 }
                 program.uniforms.push_back(u);
             }
@@ -92,7 +96,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                 if (!compiler.has_decoration(r.id, spv::DecorationLocation)) continue;
                 int location = static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation));
                 const spirv_cross::SPIRType& t = compiler.get_type(r.type_id);
-                program.inputs.push_back(VertexInput{vertexInputSemantic(location), location, static_cast<int>(t.vecsize)});
+                program.inputs.push_back(
+                    VertexInput{vertexInputSemantic(location), location, static_cast<int>(t.vecsize)});
                 // Attribute names say their semantic, for anyone reading the GLSL or a GL debugger.
                 compiler.set_name(r.id, "fx_attr_" + vertexInputSemantic(location));
             }
@@ -100,7 +105,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
 
         program.glsl = compiler.compile();
         // Belt and braces for the comment above: SPIRV-Cross versions differ in when they emit this.
-        program.glsl = std::regex_replace(program.glsl, std::regex(R"(layout\(origin_upper_left\) in vec4 gl_FragCoord;\n)"), "");
+        program.glsl = std::regex_replace(
+            program.glsl, std::regex(R"(layout\(origin_upper_left\) in vec4 gl_FragCoord;\n)"), "");
         return true;
     } catch (const std::exception& e) {
         error = e.what();

@@ -69,7 +69,8 @@ Value zeroValue(const TypeDesc& type) {
     Value out;
     out.type = type;
     bool numeric = type.base == BaseType::Bool || type.base == BaseType::Int || type.base == BaseType::UInt ||
-                   type.base == BaseType::Half || type.base == BaseType::Float || type.base == BaseType::Double;
+                   type.base == BaseType::Half || type.base == BaseType::Float ||
+                   type.base == BaseType::Double;
     if (numeric) out.data.assign(countComponents(type), 0.0f);
     return out;
 }

@@ -59,8 +59,10 @@ TEST(CompileCache, EditingOneFunctionRecompilesOnlyItsPasses) {
 }
 
 TEST(CompileCache, HashSeparatesStageAndOptions) {
-    EXPECT_NE(CompileCache::hash("x", ShaderStage::Vertex, "o"), CompileCache::hash("x", ShaderStage::Fragment, "o"));
-    EXPECT_NE(CompileCache::hash("ab", ShaderStage::Vertex, "c"), CompileCache::hash("a", ShaderStage::Vertex, "bc"));
+    EXPECT_NE(CompileCache::hash("x", ShaderStage::Vertex, "o"),
+              CompileCache::hash("x", ShaderStage::Fragment, "o"));
+    EXPECT_NE(CompileCache::hash("ab", ShaderStage::Vertex, "c"),
+              CompileCache::hash("a", ShaderStage::Vertex, "bc"));
 }
 
 }  // namespace

@@ -101,11 +101,13 @@ technique main < string Script = "Pass=ClearShadowMap; Pass=RenderShadowMap; Pas
 }
 )";
 
-std::shared_ptr<Effect> parse(const std::string& source, DiagnosticList& diags, const std::string& path = "thesis.fx") {
+std::shared_ptr<Effect> parse(const std::string& source, DiagnosticList& diags,
+                              const std::string& path = "thesis.fx") {
     return parseEffectSource(source, path, ParseOptions{}, diags);
 }
 
-std::unique_ptr<CompiledEffect> compile(const std::string& source, DiagnosticList& diags, CompileCache* cache = nullptr) {
+std::unique_ptr<CompiledEffect> compile(const std::string& source, DiagnosticList& diags,
+                                        CompileCache* cache = nullptr) {
     auto effect = parse(source, diags);
     if (!effect) return nullptr;
     CompileOptions options;
@@ -155,7 +157,8 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     const CompiledPass& shadow = t.passes[1];
     ASSERT_EQ(shadow.arguments.size(), 1u);
     EXPECT_EQ(shadow.arguments[0].memberName, "fx_arg0");
-    EXPECT_EQ(shadow.arguments[0].expr.str(), "mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))");
+    EXPECT_EQ(shadow.arguments[0].expr.str(),
+              "mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))");
     const UniformBinding* arg = findUniform(shadow.vertex, "fx_arg0");
     ASSERT_TRUE(arg) << shadow.vertex.glsl;
     EXPECT_EQ(arg->source, UniformBinding::Source::CompileArgument);
@@ -173,7 +176,8 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     // Vertex inputs by semantic.
     std::vector<std::string> semantics;
     for (const VertexInput& in : shadow.vertex.inputs) semantics.push_back(in.semantic);
-    EXPECT_EQ(semantics, (std::vector<std::string>{"POSITION", "NORMAL", "TEXCOORD0"}));  // the whole input struct, used or not
+    EXPECT_EQ(semantics, (std::vector<std::string>{"POSITION", "NORMAL",
+                                                   "TEXCOORD0"}));  // the whole input struct, used or not
     const CompiledPass& scene = t.passes[2];
     semantics.clear();
     for (const VertexInput& in : scene.vertex.inputs) {
@@ -183,8 +187,10 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     std::sort(semantics.begin(), semantics.end());
     EXPECT_EQ(semantics, (std::vector<std::string>{"NORMAL", "POSITION", "TEXCOORD0"}));
     // Varyings link by location: TEXCOORD1 -> 1, TEXCOORD3 -> 3 in both stages.
-    EXPECT_NE(scene.vertex.glsl.find("layout(location = 3) out vec4"), std::string::npos) << scene.vertex.glsl;
-    EXPECT_NE(scene.fragment.glsl.find("layout(location = 3) in vec4"), std::string::npos) << scene.fragment.glsl;
+    EXPECT_NE(scene.vertex.glsl.find("layout(location = 3) out vec4"), std::string::npos)
+        << scene.vertex.glsl;
+    EXPECT_NE(scene.fragment.glsl.find("layout(location = 3) in vec4"), std::string::npos)
+        << scene.fragment.glsl;
     // Literal uniform argument inlined: no fx_arg in the pixel stage.
     EXPECT_EQ(findUniform(scene.fragment, "fx_arg1"), nullptr);
     EXPECT_EQ(scene.arguments.size(), 1u);
@@ -197,7 +203,8 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     EXPECT_EQ(depth->glslName, "DepthSampler");
     EXPECT_NE(color->unit, depth->unit);
     EXPECT_EQ(fx->effect->parameters[depth->samplerParameter].name, "DepthSampler");
-    EXPECT_NE(scene.fragment.glsl.find("sampler2DShadow DepthSampler"), std::string::npos) << scene.fragment.glsl;
+    EXPECT_NE(scene.fragment.glsl.find("sampler2DShadow DepthSampler"), std::string::npos)
+        << scene.fragment.glsl;
     EXPECT_NE(scene.fragment.glsl.find("gl_FragCoord"), std::string::npos);
     // Render states folded to literals.
     ASSERT_FALSE(shadow.states.empty());
@@ -255,7 +262,8 @@ TEST(EffectCompiler, MatrixPackingFollowsRowMajorDecoration) {
     std::vector<float> block(64, -1.0f);
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 3; ++c) {
-            uint32_t off = rm->hlslColumnsContiguous ? c * rm->matrixStride + r * 4 : r * rm->matrixStride + c * 4;
+            uint32_t off =
+                rm->hlslColumnsContiguous ? c * rm->matrixStride + r * 4 : r * rm->matrixStride + c * 4;
             block[off / 4] = hlsl[r][c];
         }
     // GLSL: (mat4x3 * vec4)[i] = sum_j M[j][i] * v[j] must equal HLSL mul(v, M)[i] = sum_j v[j] * M[j][i].
@@ -276,7 +284,8 @@ TEST(EffectCompiler, MatrixPackingFollowsRowMajorDecoration) {
         for (int c = 0; c < 4; ++c) w[r][c] = static_cast<float>(r * 4 + c + 1);
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c) {
-            uint32_t off = cm->hlslColumnsContiguous ? c * cm->matrixStride + r * 4 : r * cm->matrixStride + c * 4;
+            uint32_t off =
+                cm->hlslColumnsContiguous ? c * cm->matrixStride + r * 4 : r * cm->matrixStride + c * 4;
             block2[off / 4] = w[r][c];
         }
     for (int i = 0; i < 4; ++i) {
@@ -306,7 +315,8 @@ technique t { pass p {
 
 TEST(EffectCompiler, UnsupportedProfile) {
     DiagnosticList diags;
-    std::string src = "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile gs_4_0 PS(); } }\n";
+    std::string src =
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile gs_4_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
     EXPECT_EQ(diags.items().back().id, DiagId::UnsupportedProfile) << diags.str();
@@ -336,8 +346,9 @@ technique t { pass p { PixelShader = compile ps_2_0 PS(); } }
 
 TEST(EffectCompiler, UnknownTextureFormat) {
     DiagnosticList diags;
-    std::string src = "texture T : RENDERCOLORTARGET < string Format = \"X9Y9\"; >;\n"
-                      "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
+    std::string src =
+        "texture T : RENDERCOLORTARGET < string Format = \"X9Y9\"; >;\n"
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
     EXPECT_EQ(diags.items()[0].id, DiagId::InvalidTextureFormat) << diags.str();
@@ -346,8 +357,9 @@ TEST(EffectCompiler, UnknownTextureFormat) {
 
 TEST(EffectCompiler, InvalidDimensions) {
     DiagnosticList diags;
-    std::string src = "texture T : RENDERCOLORTARGET < int2 Dimensions = {0, 99999}; >;\n"
-                      "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
+    std::string src =
+        "texture T : RENDERCOLORTARGET < int2 Dimensions = {0, 99999}; >;\n"
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
     EXPECT_EQ(diags.items()[0].id, DiagId::InvalidDimensions) << diags.str();

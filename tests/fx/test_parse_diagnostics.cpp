@@ -48,7 +48,8 @@ TEST(ParseDiagnostics, UnclosedPassNamesItsOpener) {
 TEST(ParseDiagnostics, UnclosedPassBeforeNextPass) {
     DiagnosticList diags;
     EXPECT_FALSE(parse("technique t {\n  pass p0 {\n    CullMode = None;\n  pass p1 { }\n}\n", diags));
-    EXPECT_TRUE(hasDiagnostic(diags, DiagId::UnclosedBlock, 4, 3, "'}' expected (to close 'pass' at line 2)"));
+    EXPECT_TRUE(
+        hasDiagnostic(diags, DiagId::UnclosedBlock, 4, 3, "'}' expected (to close 'pass' at line 2)"));
 }
 
 TEST(ParseDiagnostics, UnclosedFunctionBody) {
@@ -83,7 +84,8 @@ TEST(ParseDiagnostics, MissingInclude) {
 
 TEST(ParseDiagnostics, ErrorInsideIncludedFileNamesThatFile) {
     DiagnosticList diags;
-    EXPECT_FALSE(parse("#include \"inc/a.fxh\"\nfloat ok;\n", diags, {{"inc/a.fxh", "float x;\nfloat y = ;\n"}}));
+    EXPECT_FALSE(
+        parse("#include \"inc/a.fxh\"\nfloat ok;\n", diags, {{"inc/a.fxh", "float x;\nfloat y = ;\n"}}));
     ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
     EXPECT_EQ(diags.items()[0].loc.file, "inc/a.fxh");
     EXPECT_TRUE(hasDiagnostic(diags, DiagId::UnexpectedToken, 2, 11));
@@ -109,7 +111,8 @@ TEST(ParseDiagnostics, Redefinition) {
 
 TEST(ParseDiagnostics, RecoversAndReportsSeveralErrors) {
     DiagnosticList diags;
-    EXPECT_FALSE(parse("float a = ;\nfloat b;\nfloat c = );\ntechnique t { pass { ZEnable = maybe; } }\n", diags));
+    EXPECT_FALSE(
+        parse("float a = ;\nfloat b;\nfloat c = );\ntechnique t { pass { ZEnable = maybe; } }\n", diags));
     EXPECT_EQ(diags.errorCount(), 3u) << diags.str();
     EXPECT_TRUE(hasDiagnostic(diags, DiagId::UnknownStateValue, 4, 32));
 }

@@ -184,8 +184,10 @@ TEST(Parser, ThesisEffectParameters) {
     EXPECT_EQ(sampler->samplerState[1].value.number, 1);  // WRAP
     EXPECT_EQ(sampler->samplerState[4].name, "MINFILTER");
     EXPECT_EQ(sampler->samplerState[4].value.number, 3);  // ANISOTROPIC
-    EXPECT_EQ(findState(effect->findParameter("ShadowMapSampler")->samplerState, "AddressU")->value.number, 3);
-    EXPECT_EQ(findState(effect->findParameter("ShadowMapSampler")->samplerState, "MipFilter")->value.number, 0);
+    EXPECT_EQ(findState(effect->findParameter("ShadowMapSampler")->samplerState, "AddressU")->value.number,
+              3);
+    EXPECT_EQ(findState(effect->findParameter("ShadowMapSampler")->samplerState, "MipFilter")->value.number,
+              0);
 }
 
 TEST(Parser, ThesisEffectStructsAndFunctions) {

@@ -33,7 +33,9 @@ struct Lowered : ::testing::Test {
         effect = parseEffectSource(kSource, "lower.fx", ParseOptions{}, diags);
         ASSERT_TRUE(effect) << diags.str();
     }
-    const Expr& compileOf(int state) { return effect->techniques[0].passes[0].states[static_cast<size_t>(state)].value; }
+    const Expr& compileOf(int state) {
+        return effect->techniques[0].passes[0].states[static_cast<size_t>(state)].value;
+    }
 };
 
 TEST_F(Lowered, VertexWrapper) {
@@ -50,7 +52,7 @@ TEST_F(Lowered, VertexWrapper) {
     EXPECT_NE(h.find("float4x4 fx_arg0;"), std::string::npos);
     EXPECT_NE(h.find("float4x4 WVP;"), std::string::npos);
     EXPECT_NE(h.find("#line 8 \"lower.fx\""), std::string::npos);
-    EXPECT_EQ(h.find("Unused"), std::string::npos);  // not reached
+    EXPECT_EQ(h.find("Unused"), std::string::npos);    // not reached
     EXPECT_EQ(h.find("DepthTex"), std::string::npos);  // textures are not emitted
     ASSERT_EQ(args.size(), 1u);
     EXPECT_EQ(args[0].memberName, "fx_arg0");
@@ -89,8 +91,11 @@ TEST_F(Lowered, ArgumentCountAndProfileErrors) {
     EXPECT_FALSE(lowerStage(*effect, c, ShaderStage::Fragment, args, diags));
     EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);
     diags.clear();
-    EXPECT_FALSE(lowerStage(*effect, compileOf(0), ShaderStage::Fragment, args, diags));  // vs_3_0 as a pixel shader
-    EXPECT_EQ(diags.items().at(0).id, DiagId::UnsupportedProfile);
+    EXPECT_FALSE(
+        lowerStage(*effect, compileOf(0), ShaderStage::Fragment, args, diags));  // vs_3_0 as a pixel shader
+    // A profile of the other stage is named as such ("'vs_3_0' is a vertex-shader profile, used for the pixel
+    // shader"); UnsupportedProfile is for profiles no stage has.
+    EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);
 }
 
 TEST(SemanticTables, LocationsAreFixed) {

@@ -36,7 +36,8 @@ TEST(Preprocessor, QuotedAndAngleIncludesWithBackslashes) {
     EXPECT_EQ(effect->findParameter("more1")->loc.file, "fx/lib/more.fxh");
     EXPECT_EQ(effect->findParameter("mine")->loc.file, "fx/main.fx");
     EXPECT_EQ(effect->findParameter("mine")->loc.line, 3);
-    EXPECT_EQ(effect->includedFiles, (std::vector<std::string>{"fx/main.fx", "fx/lib/common.fxh", "fx/lib/more.fxh"}));
+    EXPECT_EQ(effect->includedFiles,
+              (std::vector<std::string>{"fx/main.fx", "fx/lib/common.fxh", "fx/lib/more.fxh"}));
 }
 
 TEST(Preprocessor, NestedIncludeIsRelativeToIncludingFile) {
@@ -45,7 +46,8 @@ TEST(Preprocessor, NestedIncludeIsRelativeToIncludingFile) {
         {"b/two.fxh", "\n\nfloat two;\n"},
     };
     DiagnosticList diags;
-    auto effect = parseEffectSource("#include \"a/one.fxh\"\nfloat main1;\n", "main.fx", memoryOptions(files), diags);
+    auto effect =
+        parseEffectSource("#include \"a/one.fxh\"\nfloat main1;\n", "main.fx", memoryOptions(files), diags);
     ASSERT_TRUE(effect) << diags.str();
     EXPECT_EQ(effect->findParameter("two")->loc.file, "b/two.fxh");
     EXPECT_EQ(effect->findParameter("two")->loc.line, 3);
@@ -78,7 +80,8 @@ TEST(Preprocessor, IncludesFromDisk) {
 
 TEST(Preprocessor, MissingInclude) {
     DiagnosticList diags;
-    auto effect = parseEffectSource("float a;\n#include <missing.fxh>\n", "main.fx", memoryOptions({}), diags);
+    auto effect =
+        parseEffectSource("float a;\n#include <missing.fxh>\n", "main.fx", memoryOptions({}), diags);
     EXPECT_FALSE(effect);
     ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
     EXPECT_EQ(diags.items()[0].id, DiagId::IncludeNotFound);
@@ -133,7 +136,8 @@ float after;
 
 TEST(Preprocessor, LineDirectiveInSource) {
     DiagnosticList diags;
-    auto effect = parseEffectSource("float a;\n#line 100 \"virtual.fx\"\nfloat b;\n", "main.fx", memoryOptions({}), diags);
+    auto effect = parseEffectSource("float a;\n#line 100 \"virtual.fx\"\nfloat b;\n", "main.fx",
+                                    memoryOptions({}), diags);
     ASSERT_TRUE(effect) << diags.str();
     EXPECT_EQ(effect->findParameter("b")->loc.file, "virtual.fx");
     EXPECT_EQ(effect->findParameter("b")->loc.line, 100);
@@ -141,7 +145,29 @@ TEST(Preprocessor, LineDirectiveInSource) {
 
 TEST(Preprocessor, PragmasAreSkipped) {
     DiagnosticList diags;
-    auto effect = parseEffectSource("#pragma pack_matrix(row_major)\nfloat a;\n", "main.fx", memoryOptions({}), diags);
+    auto effect =
+        parseEffectSource("#pragma pack_matrix(row_major)\nfloat a;\n", "main.fx", memoryOptions({}), diags);
     ASSERT_TRUE(effect) << diags.str();
     EXPECT_TRUE(effect->findParameter("a"));
+}
+
+// D3DX's stringizing operator, which glslang's (GLSL) preprocessor lacks: NVIDIA's Quad.fxh declares
+// render-target formats with `string Format = #PixFmt;`. Token pasting keeps working, and a '#' inside a
+// string literal of a macro body is left alone.
+TEST(Preprocessor, StringizingInMacroBodies) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#define DECLARE_TARGET(Name, PixFmt) \
+texture Name : RENDERCOLORTARGET < string Format = #PixFmt; string Note = "#not"; >;
+#define GLUE(a, b) a##b
+DECLARE_TARGET(Shadow, R32F)
+float GLUE(Bi, as) = 1;
+)",
+                                    "main.fx", memoryOptions({}), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const Parameter* shadow = effect->findParameter("Shadow");
+    ASSERT_TRUE(shadow);
+    ASSERT_TRUE(shadow->annotation("Format"));
+    EXPECT_EQ(shadow->annotation("Format")->value.text, "R32F");
+    EXPECT_EQ(shadow->annotation("Note")->value.text, "#not");
+    EXPECT_TRUE(effect->findParameter("Bias"));
 }

@@ -63,10 +63,13 @@ struct Fixture : ::testing::Test {
     }
     Value eval(const Expr& e, const TypeDesc* type = nullptr) {
         DiagnosticList diags;
-        auto v = evaluate(e, [&](std::string_view n) -> const Value* {
-            auto it = params.find(std::string(n));
-            return it == params.end() ? nullptr : &it->second;
-        }, type, &diags);
+        auto v = evaluate(
+            e,
+            [&](std::string_view n) -> const Value* {
+                auto it = params.find(std::string(n));
+                return it == params.end() ? nullptr : &it->second;
+            },
+            type, &diags);
         EXPECT_TRUE(v) << diags.str();
         return v ? *v : Value{};
     }
@@ -106,7 +109,8 @@ TEST_F(Fixture, MatrixMembersAndSwizzles) {
     EXPECT_FLOAT_EQ(eval(member(id("M"), "_13")).asFloat(), params["M"].data[0 * 4 + 2]);
     EXPECT_FLOAT_EQ(eval(member(id("M"), "_m21")).asFloat(), params["M"].data[2 * 4 + 1]);
     Value diag = eval(member(id("M"), "_11_22_33"));
-    EXPECT_EQ(diag.data, (std::vector<float>{params["M"].data[0], params["M"].data[5], params["M"].data[10]}));
+    EXPECT_EQ(diag.data,
+              (std::vector<float>{params["M"].data[0], params["M"].data[5], params["M"].data[10]}));
     EXPECT_EQ(eval(member(id("v"), "wzyx")).data, (std::vector<float>{0.5f, 3, -2, 1}));
     EXPECT_EQ(eval(member(id("a"), "bgr")).data, (std::vector<float>{3, 2, 1}));
     Expr row;
@@ -133,7 +137,8 @@ TEST_F(Fixture, OperatorsBroadcastAndConvert) {
     TypeDesc b;
     b.base = BaseType::Bool;
     EXPECT_EQ(eval(num(3), &b).data, std::vector<float>{1});
-    EXPECT_EQ(eval(call("float3", {num(1), call("float2", {num(2), num(3)})})).data, (std::vector<float>{1, 2, 3}));
+    EXPECT_EQ(eval(call("float3", {num(1), call("float2", {num(2), num(3)})})).data,
+              (std::vector<float>{1, 2, 3}));
     Expr tern;
     tern.kind = Expr::Kind::Ternary;
     tern.args = {num(0), num(5), num(6)};
@@ -177,7 +182,8 @@ TEST_F(Fixture, Intrinsics) {
     EXPECT_FLOAT_EQ(scalar2("step", 0.5f, 0.4f), 0.0f);
     EXPECT_FLOAT_EQ(eval(call("clamp", {num(5), num(0), num(2)})).asFloat(), 2.0f);
     EXPECT_FLOAT_EQ(eval(call("lerp", {num(2), num(4), num(0.25)})).asFloat(), glm::mix(2.0f, 4.0f, 0.25f));
-    EXPECT_FLOAT_EQ(eval(call("smoothstep", {num(0), num(2), num(0.5)})).asFloat(), glm::smoothstep(0.0f, 2.0f, 0.5f));
+    EXPECT_FLOAT_EQ(eval(call("smoothstep", {num(0), num(2), num(0.5)})).asFloat(),
+                    glm::smoothstep(0.0f, 2.0f, 0.5f));
 }
 
 TEST(Preshader, ErrorsAreReported) {

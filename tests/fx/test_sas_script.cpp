@@ -35,7 +35,8 @@ TEST(SasScript, AllCommands) {
 
 TEST(SasScript, CaseInsensitive) {
     DiagnosticList diags;
-    auto commands = parseSasScript(" draw = geometry ; PASS=P1;renderCOLORtarget1=T;", SourceLoc{"s.fx", 3, 10}, diags);
+    auto commands =
+        parseSasScript(" draw = geometry ; PASS=P1;renderCOLORtarget1=T;", SourceLoc{"s.fx", 3, 10}, diags);
     EXPECT_FALSE(diags.hasErrors()) << diags.str();
     ASSERT_EQ(commands.size(), 3u);
     EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Draw);
@@ -79,7 +80,8 @@ TEST(SasScript, UnknownCommandLocatedInConcatenatedString) {
 
 TEST(SasScript, InvalidValues) {
     DiagnosticList diags;
-    auto commands = parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?b;Pass", SourceLoc{"s.fx", 5, 1}, diags);
+    auto commands = parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?b;Pass",
+                                   SourceLoc{"s.fx", 5, 1}, diags);
     EXPECT_TRUE(commands.empty());
     ASSERT_EQ(diags.errorCount(), 5u) << diags.str();
     for (const Diagnostic& d : diags.items()) EXPECT_EQ(d.id, DiagId::InvalidScriptCommand);

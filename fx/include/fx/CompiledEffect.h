@@ -22,12 +22,12 @@ enum class ShaderStage { Vertex, Fragment };
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
 struct UniformBinding {
     enum class Source { Parameter, CompileArgument };
-    std::string name;      // the member's name in the block
+    std::string name;  // the member's name in the block
     Source source = Source::Parameter;
-    size_t index = 0;      // Effect::parameters index, or CompiledPass::arguments index
-    TypeDesc type;         // HLSL type of the member
-    uint32_t offset = 0;   // byte offset in the block
-    uint32_t size = 0;     // bytes the member occupies in the block
+    size_t index = 0;     // Effect::parameters index, or CompiledPass::arguments index
+    TypeDesc type;        // HLSL type of the member
+    uint32_t offset = 0;  // byte offset in the block
+    uint32_t size = 0;    // bytes the member occupies in the block
     uint32_t arrayStride = 0;
     uint32_t matrixStride = 0;
     // How the GLSL block stores a matrix: true if each HLSL *column* is contiguous (the usual case for
@@ -37,8 +37,8 @@ struct UniformBinding {
 };
 
 struct SamplerBinding {
-    std::string glslName;     // the sampler uniform in the GLSL
-    int unit = 0;             // texture unit (layout(binding) in the GLSL)
+    std::string glslName;         // the sampler uniform in the GLSL
+    int unit = 0;                 // texture unit (layout(binding) in the GLSL)
     size_t samplerParameter = 0;  // Effect::parameters index of the effect's sampler
     bool depthCompare = false;    // a sampler2DShadow: the bound texture must compare
 };
@@ -53,10 +53,10 @@ struct VertexInput {
 
 struct StageProgram {
     ShaderStage stage = ShaderStage::Vertex;
-    std::string entryPoint;   // the user's function
-    std::string profile;      // "vs_3_0"
-    std::string hlsl;         // the generated HLSL unit handed to glslang
-    std::string glsl;         // GLSL 4.50 core from SPIRV-Cross
+    std::string entryPoint;        // the user's function
+    std::string profile;           // "vs_3_0"
+    std::string hlsl;              // the generated HLSL unit handed to glslang
+    std::string glsl;              // GLSL 4.50 core from SPIRV-Cross
     std::string uniformBlockName;  // "" if the stage has no uniforms
     int uniformBlockBinding = -1;
     uint32_t uniformBlockSize = 0;
@@ -89,7 +89,7 @@ struct CompiledPass {
     std::vector<CompileArgument> arguments;
     std::vector<RenderStateSetting> states;  // in source order, shaders excluded
     bool hasScript = false;
-    std::vector<ScriptCommand> script;       // the pass's Script annotation (no script: Draw=Geometry)
+    std::vector<ScriptCommand> script;  // the pass's Script annotation (no script: Draw=Geometry)
 };
 
 struct CompiledTechnique {
@@ -124,13 +124,13 @@ struct TextureDesc {
         RenderColorTarget,         // semantic RENDERCOLORTARGET
         RenderDepthStencilTarget,  // semantic RENDERDEPTHSTENCILTARGET
         File,                      // ResourceName annotation (or a file name initializer)
-        Runtime,                   // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
+        Runtime,  // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;
     BaseType type = BaseType::Texture2D;  // Texture2D or TextureCube
     TextureFormat format = TextureFormat::RGBA8;
-    int width = 0;   // Dimensions / width,height annotations; 0 when sized by viewportRatio
+    int width = 0;  // Dimensions / width,height annotations; 0 when sized by viewportRatio
     int height = 0;
     float viewportRatio[2] = {1.0f, 1.0f};  // ViewPortRatio (used when width == 0)
     int mipLevels = 1;
@@ -140,9 +140,9 @@ struct TextureDesc {
 };
 
 struct SamplerDesc {
-    size_t parameter = 0;                 // Effect::parameters index of the sampler
-    std::optional<size_t> texture;        // Effect::parameters index of its texture
-    int addressU = 1, addressV = 1, addressW = 1;  // D3D9 TEXTUREADDRESS values (1 = WRAP)
+    size_t parameter = 0;                             // Effect::parameters index of the sampler
+    std::optional<size_t> texture;                    // Effect::parameters index of its texture
+    int addressU = 1, addressV = 1, addressW = 1;     // D3D9 TEXTUREADDRESS values (1 = WRAP)
     int minFilter = 1, magFilter = 1, mipFilter = 0;  // D3D9 TEXF values
     float borderColor[4] = {0, 0, 0, 0};
     int maxAnisotropy = 1;

@@ -28,7 +28,8 @@ FX_DIAGNOSTIC(InvalidInitializer, Error, "invalid initializer for '{0}': {1}")
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
 FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
-FX_DIAGNOSTIC(ScriptUnknownTarget, Error, "script names render target '{0}', which is not a render-target texture")
+FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
+              "script names render target '{0}', which is not a render-target texture")
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Error, "script names technique '{0}', which the effect does not have")
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
 FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is accepted and ignored")
@@ -54,5 +55,13 @@ FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
 FX_DIAGNOSTIC(Unused, Note, "{0}")
+
+// [SECTION] Scenes (runtime/src/SceneFile.cpp, MeshImporter.cpp)
+FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
+FX_DIAGNOSTIC(SceneInvalidValue, Error, "{0}: {1}")
+FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")
+FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'{1}")
+FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
+FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
 
 #undef FX_DIAGNOSTIC

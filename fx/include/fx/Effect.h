@@ -51,15 +51,15 @@ enum class Shape { Scalar, Vector, Matrix };
 struct TypeDesc {
     BaseType base = BaseType::Float;
     Shape shape = Shape::Scalar;
-    int rows = 1;               // matrices: rows (float4x3: 4)
-    int cols = 1;               // vectors: component count; matrices: columns (float4x3: 3)
+    int rows = 1;                // matrices: rows (float4x3: 4)
+    int cols = 1;                // vectors: component count; matrices: columns (float4x3: 3)
     std::vector<int> arrayDims;  // float4 a[3][2] -> {3, 2}; empty when not an array
-    std::string structName;     // base == Struct
-    bool rowMajor = false;      // declared `row_major` (HLSL default is column_major)
+    std::string structName;      // base == Struct
+    bool rowMajor = false;       // declared `row_major` (HLSL default is column_major)
 
-    bool isNumeric() const;     // bool/int/uint/half/float/double
-    bool isTexture() const;     // Texture..TextureCube
-    bool isSampler() const;     // Sampler..SamplerComparisonState
+    bool isNumeric() const;      // bool/int/uint/half/float/double
+    bool isTexture() const;      // Texture..TextureCube
+    bool isSampler() const;      // Sampler..SamplerComparisonState
     int componentCount() const;  // rows*cols, times array elements
     // HLSL spelling: "float4x4", "float3", "bool", "sampler2D", "MyStruct" (without array dims).
     std::string hlslName() const;
@@ -130,16 +130,16 @@ struct StateAssignment {
 struct Parameter {
     std::string name;
     TypeDesc type;
-    std::string semantic;                  // "WorldViewProjection", "RENDERCOLORTARGET", "" if none
-    std::vector<Annotation> annotations;   // < ... >
-    std::optional<Expr> initializer;       // = expr / = { ... } / = compile ...
+    std::string semantic;                       // "WorldViewProjection", "RENDERCOLORTARGET", "" if none
+    std::vector<Annotation> annotations;        // < ... >
+    std::optional<Expr> initializer;            // = expr / = { ... } / = compile ...
     std::vector<StateAssignment> samplerState;  // sampler_state { ... }; empty for non-samplers
-    bool isStatic = false;    // `static`: a shader-private global, not a parameter
+    bool isStatic = false;                      // `static`: a shader-private global, not a parameter
     bool isConst = false;
-    bool isUniform = false;   // written `uniform`
+    bool isUniform = false;  // written `uniform`
     bool isShared = false;
     bool isExtern = false;
-    SourceLoc loc;            // the name's location
+    SourceLoc loc;  // the name's location
     // For static globals only: the whole declaration as HLSL text from the preprocessed source.
     std::string hlslText;
     // Where hlslText starts: the user's file and line, but the column in the *preprocessed* text (glslang
@@ -173,7 +173,7 @@ struct FunctionParam {
     std::string semantic;
     std::string interpolation;
     Direction direction = Direction::In;
-    bool isUniform = false;               // `uniform`: given by the compile expression's arguments
+    bool isUniform = false;  // `uniform`: given by the compile expression's arguments
     std::optional<Expr> defaultValue;
     SourceLoc loc;
 };
@@ -183,10 +183,10 @@ struct FunctionDecl {
     TypeDesc returnType;
     std::string returnSemantic;  // float4 PS(...) : COLOR  ->  "COLOR"
     std::vector<FunctionParam> params;
-    bool hasBody = true;         // false for a prototype
-    std::string hlslText;        // the whole definition (attributes, signature and body)
-    SourceLoc hlslLoc;           // where hlslText starts
-    SourceLoc loc;               // the name's location
+    bool hasBody = true;   // false for a prototype
+    std::string hlslText;  // the whole definition (attributes, signature and body)
+    SourceLoc hlslLoc;     // where hlslText starts
+    SourceLoc loc;         // the name's location
 };
 
 // Top-level HLSL the effect compiler passes through verbatim: typedefs, cbuffers, and anything else that

@@ -16,12 +16,14 @@ namespace fx {
 class CompileCache;  // fx/CompileCache.h
 
 struct CompileOptions {
-    std::string technique;          // compile only this technique ("" = all)
-    CompileCache* cache = nullptr;  // optional; shared across compiles (hot reload)
+    std::string technique;            // compile only this technique ("" = all)
+    CompileCache* cache = nullptr;    // optional; shared across compiles (hot reload)
+    int maxRenderTargetSize = 16384;  // largest render-target side (Dimensions, width/height) accepted
+    int maxScriptLoopCount = 1024;    // largest literal LoopByCount (the runtime checks parameter values)
 };
 
 // Returns nullptr if any error was reported.
-std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect, const CompileOptions& options,
-                                              DiagnosticSink& diagnostics);
+std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect,
+                                              const CompileOptions& options, DiagnosticSink& diagnostics);
 
 }  // namespace fx

@@ -16,10 +16,10 @@
 namespace fx {
 
 struct ParseOptions {
-    std::vector<std::string> includeDirs;                        // searched after the including file's folder
+    std::vector<std::string> includeDirs;                      // searched after the including file's folder
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE
-    int maxIncludeDepth = 32;                                   // deeper (or recursive) includes are an error
-    size_t maxSourceBytes = 16u << 20;                          // all files together
+    int maxIncludeDepth = 32;                                  // deeper (or recursive) includes are an error
+    size_t maxSourceBytes = 16u << 20;                         // all files together
     // Reads a file; returns nullopt if it cannot be opened. Default: the file system. Tests and hot reload
     // may supply their own.
     std::function<std::optional<std::string>(const std::string& path)> readFile;

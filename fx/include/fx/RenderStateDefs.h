@@ -30,7 +30,7 @@ FX_RENDER_STATE(VertexShader, Shader, 0)
 FX_RENDER_STATE(PixelShader, Shader, 0)
 FX_RENDER_STATE(ZEnable, Bool, 1)
 FX_RENDER_STATE(ZWriteEnable, Bool, 1)
-FX_RENDER_STATE(ZFunc, Cmp, 4)  // LESSEQUAL
+FX_RENDER_STATE(ZFunc, Cmp, 4)      // LESSEQUAL
 FX_RENDER_STATE(CullMode, Cull, 3)  // CCW
 FX_RENDER_STATE(FillMode, Fill, 3)  // SOLID
 FX_RENDER_STATE(AlphaBlendEnable, Bool, 0)

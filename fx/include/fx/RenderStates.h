@@ -44,7 +44,7 @@ enum class SamplerStateId {
 struct StateInfo {
     std::string_view name;  // canonical spelling
     StateDomain domain;
-    double defaultValue;    // D3D9 default (numeric domains)
+    double defaultValue;  // D3D9 default (numeric domains)
 };
 
 const StateInfo& renderStateInfo(RenderStateId id);

@@ -54,7 +54,8 @@ struct ScriptCommand {
 std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& diagnostics);
 
 // Same, from plain text starting at `loc` (tests, the CLI).
-std::vector<ScriptCommand> parseSasScript(const std::string& text, const SourceLoc& loc, DiagnosticSink& diagnostics);
+std::vector<ScriptCommand> parseSasScript(const std::string& text, const SourceLoc& loc,
+                                          DiagnosticSink& diagnostics);
 
 std::string_view scriptCommandName(ScriptCommand::Kind kind);
 

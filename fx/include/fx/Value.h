@@ -26,7 +26,15 @@ struct Value {
 
     float asFloat() const { return data.empty() ? 0.0f : data[0]; }
     bool asBool() const { return !data.empty() && data[0] != 0.0f; }
-    int asInt() const { return data.empty() ? 0 : static_cast<int>(data[0]); }
+    // Saturating: NaN gives 0 and values beyond int's range clamp (a plain cast of those is undefined
+    // behaviour, and a fuzzed `int MipLevels = 1e30;` or `LoopByCount=Count` with Count = 0.0/0.0 reaches
+    // it).
+    int asInt() const {
+        if (data.empty() || !(data[0] == data[0])) return 0;
+        if (data[0] >= 2147483648.0f) return 2147483647;
+        if (data[0] < -2147483648.0f) return -2147483647 - 1;
+        return static_cast<int>(data[0]);
+    }
 };
 
 // A zero value of the given type (strings empty).

@@ -1,0 +1,33 @@
+// Shared by the fuzz targets: effect parsing with an in-memory file system, so that an #include in a
+// fuzzed input can never read the disk, and small limits, so that one input stays fast.
+#pragma once
+
+#include <fx/EffectParser.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace fuzz {
+
+// The input is the main file "fuzz/input.fx". Includes resolve to a small fixed header (any name under
+// "include/") or fail; the input itself may include "input.fx" to exercise recursion.
+inline fx::ParseOptions parseOptions(const std::string& input) {
+    fx::ParseOptions options;
+    options.maxIncludeDepth = 8;
+    options.maxSourceBytes = 1u << 20;
+    options.readFile = [input](const std::string& path) -> std::optional<std::string> {
+        if (path == "fuzz/input.fx") return input;
+        if (path.rfind("fuzz/include/", 0) == 0)
+            return std::string("float4 Helper(float4 v) { return v * 2; }\n#define HELPER_SCALE 2.0\n");
+        return std::nullopt;
+    };
+    return options;
+}
+
+inline std::string text(const uint8_t* data, size_t size) {
+    return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+}  // namespace fuzz

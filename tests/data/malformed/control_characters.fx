@@ -1,0 +1,2 @@
+// Control characters between tokens.
+floatBias = 0.01;

@@ -1,0 +1,5 @@
+// A size computed by dividing by zero.
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {0.0 / 0.0, 256}; >;
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }

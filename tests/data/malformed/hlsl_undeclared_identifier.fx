@@ -1,0 +1,4 @@
+// The shader uses a name nobody declared.
+float4 VS(float4 p : POSITION) : POSITION { return p * undeclaredScale; }
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }

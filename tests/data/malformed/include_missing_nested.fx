@@ -1,0 +1,5 @@
+// An include that exists includes one that does not.
+#include "include/includes_missing.fxh"
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }

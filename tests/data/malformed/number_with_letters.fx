@@ -1,0 +1,2 @@
+// A number run into letters.
+float Bias = 12abc;

@@ -1,0 +1,12 @@
+// RenderDepthStencilTarget names a colour target.
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; >;
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "RenderDepthStencilTarget=Map; Pass=p;"; >
+{
+    pass p
+    {
+        VertexShader = compile vs_3_0 VS();
+        PixelShader = compile ps_3_0 PS();
+    }
+}

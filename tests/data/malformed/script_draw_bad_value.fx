@@ -1,0 +1,11 @@
+// Draw takes Geometry or Buffer.
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "Pass=p;"; >
+{
+    pass p < string Script = "Draw=Everything;"; >
+    {
+        VertexShader = compile vs_3_0 VS();
+        PixelShader = compile ps_3_0 PS();
+    }
+}

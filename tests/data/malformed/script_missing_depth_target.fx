@@ -1,0 +1,11 @@
+// RenderDepthStencilTarget names a texture that does not exist.
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "RenderDepthStencilTarget=NoSuchDepth; Pass=p;"; >
+{
+    pass p
+    {
+        VertexShader = compile vs_3_0 VS();
+        PixelShader = compile ps_3_0 PS();
+    }
+}

@@ -1,0 +1,12 @@
+// RenderColorTarget names an ordinary texture.
+texture Plain;
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "RenderColorTarget0=Plain; Pass=p;"; >
+{
+    pass p
+    {
+        VertexShader = compile vs_3_0 VS();
+        PixelShader = compile ps_3_0 PS();
+    }
+}

@@ -1,0 +1,4 @@
+// VertexShader given a number.
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = 5; PixelShader = compile ps_3_0 PS(); } }

@@ -1,0 +1,2 @@
+// Characters HLSL does not have.
+float Bias = 0.01 @ $;

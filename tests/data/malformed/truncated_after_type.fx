@@ -1,0 +1,2 @@
+// Ends after a type name.
+float4x4

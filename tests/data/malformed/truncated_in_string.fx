@@ -1,0 +1,2 @@
+// Ends inside a string literal.
+string Name = "unfinished

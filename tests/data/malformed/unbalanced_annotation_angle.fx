@@ -1,0 +1,2 @@
+// An annotation block without its closing '>'.
+float Bias < string UIName = "Bias"; = 0.01;

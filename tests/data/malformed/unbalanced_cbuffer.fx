@@ -1,0 +1,4 @@
+// A cbuffer that never closes.
+cbuffer PerFrame
+{
+    float4x4 View;
