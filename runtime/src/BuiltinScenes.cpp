@@ -2,6 +2,8 @@
 // ground plane that receives, closed casters for back-face methods, curved casters for acne).
 #include <runtime/Scene.h>
 
+#include "SceneBuilding.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -12,7 +14,8 @@ namespace runtime {
 
 namespace {
 
-SceneObject makeObject(std::string name, Mesh mesh, const glm::mat4& world, const glm::vec3& color, uint32_t id) {
+SceneObject makeObject(std::string name, Mesh mesh, const glm::mat4& world, const glm::vec3& color,
+                       uint32_t id) {
     SceneObject object;
     object.name = std::move(name);
     object.mesh = std::make_shared<const Mesh>(std::move(mesh));
@@ -24,7 +27,8 @@ SceneObject makeObject(std::string name, Mesh mesh, const glm::mat4& world, cons
 
 // Ground planes are tessellated (not one quad) so vertex-lit and per-vertex-depth effects still work.
 SceneObject makeGround(float size, uint32_t id) {
-    return makeObject("ground", makePlane(size, size, 10), glm::mat4(1.0f), glm::vec3(0.75f, 0.75f, 0.7f), id);
+    return makeObject("ground", makePlane(size, size, 10), glm::mat4(1.0f), glm::vec3(0.75f, 0.75f, 0.7f),
+                      id);
 }
 
 // Translation that rests a mesh's lowest point on y = 0 at (x, z).
@@ -81,7 +85,9 @@ Scene makeTorusScene() {
     light.direction = glm::normalize(bounds.center() - light.position);
     // The cone is made just wide enough for its shadow map to cover the whole scene: the half-angle of the
     // cone tangent to the bounding sphere, plus a margin.
-    light.spotAngle = 2.0f * std::asin(std::min(bounds.radius() / glm::length(bounds.center() - light.position), 1.0f)) * 1.05f;
+    light.spotAngle =
+        2.0f * std::asin(std::min(bounds.radius() / glm::length(bounds.center() - light.position), 1.0f)) *
+        1.05f;
     scene.lights.push_back(light);
     return scene;
 }
@@ -100,10 +106,25 @@ Scene makeTeapotScene() {
     return scene;
 }
 
-const std::pair<const char*, std::function<Scene()>> kScenes[] = {
-    {"boxes", makeBoxes},
-    {"torus", makeTorusScene},
-    {"teapot", makeTeapotScene},
+// A maker that cannot fail, as one that can (the asset scenes, whose files may be missing).
+template <Scene (*make)()>
+std::optional<Scene> always(fx::DiagnosticSink*) {
+    return make();
+}
+
+// One table: the order here is builtinSceneNames()'s order.
+const std::pair<const char*, std::optional<Scene> (*)(fx::DiagnosticSink*)> kScenes[] = {
+    {"boxes", always<makeBoxes>},
+    {"torus", always<makeTorusScene>},
+    {"teapot", always<makeTeapotScene>},
+    {"dual-l", always<makeDualLScene>},
+    {"double-torus", always<makeDoubleTorusScene>},
+    {"forest", always<makeForestScene>},
+    {"behind", always<makeBehindScene>},
+    {"bunny", makeBunnyScene},
+    {"horse", makeHorseScene},
+    {"spider", makeSpiderScene},
+    {"engine", makeEngineScene},
 };
 
 }  // namespace
@@ -115,8 +136,18 @@ std::vector<std::string> builtinSceneNames() {
 }
 
 std::optional<Scene> makeBuiltinScene(std::string_view name) {
+    return makeBuiltinScene(name, nullptr);
+}
+
+std::optional<Scene> makeBuiltinScene(std::string_view name, fx::DiagnosticSink* diagnostics) {
     for (const auto& [sceneName, make] : kScenes)
-        if (name == sceneName) return make();
+        if (name == sceneName) return make(diagnostics);
+    if (diagnostics) {
+        std::string known;
+        for (const auto& [sceneName, make] : kScenes)
+            known += (known.empty() ? "" : ", ") + std::string(sceneName);
+        diagnostics->report(fx::DiagId::UnknownScene, fx::SourceLoc{}, {std::string(name), known});
+    }
     return std::nullopt;
 }
 

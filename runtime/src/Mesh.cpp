@@ -117,9 +117,9 @@ Mesh makeBox(glm::vec3 size) {
     };
     // right = cross(viewUp, viewDirection) in a left-handed system, the viewer looking along -normal.
     const Face faces[6] = {
-        {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}},   {{-1, 0, 0}, {0, 0, -1}, {0, -1, 0}},
-        {{0, 0, 1}, {-1, 0, 0}, {0, -1, 0}},  {{0, 0, -1}, {1, 0, 0}, {0, -1, 0}},
-        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},   {{0, -1, 0}, {-1, 0, 0}, {0, 0, -1}},
+        {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}},  {{-1, 0, 0}, {0, 0, -1}, {0, -1, 0}},
+        {{0, 0, 1}, {-1, 0, 0}, {0, -1, 0}}, {{0, 0, -1}, {1, 0, 0}, {0, -1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {-1, 0, 0}, {0, 0, -1}},
     };
     for (const Face& face : faces) {
         uint32_t first = 0;
@@ -127,7 +127,8 @@ Mesh makeBox(glm::vec3 size) {
             // Corners in cyclic order: (0,0) (1,0) (1,1) (0,1) in texture space.
             float s = (corner == 1 || corner == 2) ? 1.0f : 0.0f;
             float t = (corner >= 2) ? 1.0f : 0.0f;
-            glm::vec3 p = (face.normal + face.right * (2.0f * s - 1.0f) + face.down * (2.0f * t - 1.0f)) * half;
+            glm::vec3 p =
+                (face.normal + face.right * (2.0f * s - 1.0f) + face.down * (2.0f * t - 1.0f)) * half;
             uint32_t index = builder.addVertex(p, face.normal, glm::vec2(s, t), face.right, face.down);
             if (corner == 0) first = index;
         }
@@ -152,7 +153,8 @@ Mesh makeSphere(float radius, int slices, int stacks) {
             if (i == 0 || i == stacks) n = glm::vec3(0.0f, std::cos(theta) > 0.0f ? 1.0f : -1.0f, 0.0f);
             // dP/dphi without its sin(theta) factor so that it stays defined at the poles.
             glm::vec3 dPdu(-std::sin(phi), 0.0f, std::cos(phi));
-            glm::vec3 dPdv(std::cos(theta) * std::cos(phi), -std::sin(theta), std::cos(theta) * std::sin(phi));
+            glm::vec3 dPdv(std::cos(theta) * std::cos(phi), -std::sin(theta),
+                           std::cos(theta) * std::sin(phi));
             builder.addVertex(n * radius, n, glm::vec2(float(j) / float(slices), float(i) / float(stacks)),
                               dPdu, dPdv);
         }
@@ -189,7 +191,8 @@ Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int mino
             glm::vec3 p = radial * majorRadius + n * minorRadius;
             glm::vec3 dPdu(-std::sin(theta), 0.0f, std::cos(theta));
             glm::vec3 dPdv = -radial * std::sin(phi) + glm::vec3(0.0f, std::cos(phi), 0.0f);
-            builder.addVertex(p, n, glm::vec2(float(j) / float(majorSegments), float(i) / float(minorSegments)),
+            builder.addVertex(p, n,
+                              glm::vec2(float(j) / float(majorSegments), float(i) / float(minorSegments)),
                               dPdu, dPdv);
         }
     }

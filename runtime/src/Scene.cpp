@@ -16,19 +16,22 @@ namespace {
 // Up vector for a view along `direction`: world +y unless that is (nearly) parallel, as for a light
 // straight overhead, where lookAt would get a degenerate basis.
 glm::vec3 upFor(const glm::vec3& direction) {
-    return std::abs(glm::normalize(direction).y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    return std::abs(glm::normalize(direction).y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f)
+                                                         : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
 // A bounds radius that never collapses to zero, so a scene with a single point still gets a valid frustum.
-float safeRadius(const Bounds& bounds) { return std::max(bounds.radius(), 1e-3f); }
+float safeRadius(const Bounds& bounds) {
+    return std::max(bounds.radius(), 1e-3f);
+}
 
 glm::vec3 safeDirection(const glm::vec3& direction) {
     return glm::dot(direction, direction) > 1e-12f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
 }
 
 // Möller-Trumbore: the parameter t along from + t * dir of the hit with triangle (a, b, c), either side.
-std::optional<float> intersect(const glm::vec3& from, const glm::vec3& dir, const glm::vec3& a, const glm::vec3& b,
-                               const glm::vec3& c) {
+std::optional<float> intersect(const glm::vec3& from, const glm::vec3& dir, const glm::vec3& a,
+                               const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 e1 = b - a, e2 = c - a;
     const glm::vec3 p = glm::cross(dir, e2);
     const float det = glm::dot(e1, p);
@@ -63,11 +66,17 @@ bool segmentHitsBox(const glm::vec3& from, const glm::vec3& dir, float t0, float
 
 }  // namespace
 
-float Bounds::radius() const { return glm::length(max - min) * 0.5f; }
+float Bounds::radius() const {
+    return glm::length(max - min) * 0.5f;
+}
 
-glm::mat4 Camera::view() const { return glm::lookAtLH(position, target, up); }
+glm::mat4 Camera::view() const {
+    return glm::lookAtLH(position, target, up);
+}
 
-glm::mat4 Camera::projection(float aspect) const { return glm::perspectiveLH_ZO(fovY, aspect, nearPlane, farPlane); }
+glm::mat4 Camera::projection(float aspect) const {
+    return glm::perspectiveLH_ZO(fovY, aspect, nearPlane, farPlane);
+}
 
 // Directional: the eye sits two radii back from the centre of the bounding sphere, so the sphere spans view
 // depths [radius, 3 radius]; spot/point: the eye is the light itself.
@@ -93,11 +102,16 @@ glm::mat4 Light::projection(const Bounds& bounds) const {
     const float centreDepth = glm::dot(bounds.center() - position, safeDirection(direction));
     const float farPlane = std::max(centreDepth + radius + margin, 2.0f * margin);
     // Near as far out as the bounds allow (depth precision), but never zero or behind the light.
-    const float nearPlane = std::clamp(centreDepth - radius - margin, std::max(1e-3f * farPlane, 1e-3f), farPlane * 0.5f);
+    const float nearPlane =
+        std::clamp(centreDepth - radius - margin, std::max(1e-3f * farPlane, 1e-3f), farPlane * 0.5f);
     return glm::perspectiveLH_ZO(angle, 1.0f, nearPlane, farPlane);
 }
 
 Bounds Scene::bounds() const {
+    return explicitBounds ? *explicitBounds : objectBounds();
+}
+
+Bounds Scene::objectBounds() const {
     Bounds result;
     result.min = glm::vec3(std::numeric_limits<float>::max());
     result.max = glm::vec3(std::numeric_limits<float>::lowest());
@@ -146,7 +160,8 @@ bool segmentOccluded(const Scene& scene, const glm::vec3& from, const glm::vec3&
         }
         if (world.empty() || !segmentHitsBox(from, dir, tMin, tMax, lo, hi)) continue;
         for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            auto hit = intersect(from, dir, world[mesh.indices[t]], world[mesh.indices[t + 1]], world[mesh.indices[t + 2]]);
+            auto hit = intersect(from, dir, world[mesh.indices[t]], world[mesh.indices[t + 1]],
+                                 world[mesh.indices[t + 2]]);
             if (hit && *hit > tMin && *hit < tMax) return true;
         }
     }

@@ -118,7 +118,8 @@ std::vector<Patch> expandPatches() {
         for (float mirror : {1.0f, -1.0f}) {
             Patch patch;
             for (int i = 0; i < 4; ++i)
-                for (int j = 0; j < 4; ++j) patch.cp[i][j] = glm::vec3(half[i][j].x, mirror * half[i][j].y, half[i][j].z);
+                for (int j = 0; j < 4; ++j)
+                    patch.cp[i][j] = glm::vec3(half[i][j].x, mirror * half[i][j].y, half[i][j].z);
             patches.push_back(patch);
         }
     }
@@ -126,7 +127,9 @@ std::vector<Patch> expandPatches() {
 }
 
 // z-up (Newell's frame) to y-up; a rotation about x, so it keeps windings and the teapot's spout at +x.
-glm::vec3 toYUp(const glm::vec3& p) { return glm::vec3(p.x, p.z, -p.y); }
+glm::vec3 toYUp(const glm::vec3& p) {
+    return glm::vec3(p.x, p.z, -p.y);
+}
 
 glm::vec4 tangentFrame(const glm::vec3& normal, const glm::vec3& dPdu, const glm::vec3& dPdv) {
     glm::vec3 t = dPdu - normal * glm::dot(normal, dPdu);
@@ -145,7 +148,8 @@ Mesh makeTeapot(float size, int tessellation) {
     const int row = n + 1;
     Mesh mesh;
     mesh.name = "teapot";
-    mesh.closed = false;  // the lid does not meet the rim, the spout is open, handle and spout pierce the body
+    mesh.closed =
+        false;  // the lid does not meet the rim, the spout is open, handle and spout pierce the body
 
     std::vector<glm::vec3> dPdu, dPdv;  // grid differences, for the tangents
     for (const Patch& patch : expandPatches()) {
@@ -156,7 +160,9 @@ Mesh makeTeapot(float size, int tessellation) {
             for (int j = 0; j <= n; ++j) grid[i * row + j] = evaluate(patch.cp, float(i) / n, float(j) / n);
         for (int i = 0; i <= n; ++i) {
             for (int j = 0; j <= n; ++j) {
-                auto at = [&](int ii, int jj) { return toYUp(grid[std::clamp(ii, 0, n) * row + std::clamp(jj, 0, n)]); };
+                auto at = [&](int ii, int jj) {
+                    return toYUp(grid[std::clamp(ii, 0, n) * row + std::clamp(jj, 0, n)]);
+                };
                 mesh.positions.push_back(at(i, j));
                 mesh.texcoords.emplace_back(float(j) / n, float(i) / n);
                 dPdu.push_back(at(i, j + 1) - at(i, j - 1));  // texture u runs along the columns
@@ -166,7 +172,8 @@ Mesh makeTeapot(float size, int tessellation) {
         for (int i = 0; i < n; ++i) {
             for (int j = 0; j < n; ++j) {
                 const uint32_t a = base + i * row + j, b = a + 1, c = a + row + 1, d = a + row;
-                const glm::vec3 outward = toYUp(parametricNormal(patch.cp, (i + 0.5f) / n, (j + 0.5f) / n) * side);
+                const glm::vec3 outward =
+                    toYUp(parametricNormal(patch.cp, (i + 0.5f) / n, (j + 0.5f) / n) * side);
                 for (auto tri : {std::array<uint32_t, 3>{a, b, c}, std::array<uint32_t, 3>{a, c, d}}) {
                     const auto& p = mesh.positions;
                     glm::vec3 winding = glm::cross(p[tri[1]] - p[tri[0]], p[tri[2]] - p[tri[0]]);
@@ -191,7 +198,9 @@ Mesh makeTeapot(float size, int tessellation) {
     const size_t vertexCount = mesh.positions.size();
     const size_t verticesPerPatch = size_t(row) * size_t(row);
     std::map<std::tuple<long, long, long, size_t>, glm::vec3> patchSums;
-    auto patchKey = [&](uint32_t v) { return std::tuple_cat(key(mesh.positions[v]), std::make_tuple(v / verticesPerPatch)); };
+    auto patchKey = [&](uint32_t v) {
+        return std::tuple_cat(key(mesh.positions[v]), std::make_tuple(v / verticesPerPatch));
+    };
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const auto& p = mesh.positions;
         const uint32_t* tri = &mesh.indices[t];
@@ -210,7 +219,8 @@ Mesh makeTeapot(float size, int tessellation) {
     for (uint32_t v = 0; v < vertexCount; ++v) {
         glm::vec3 sum(0.0f);
         for (uint32_t other : coincident[key(mesh.positions[v])])
-            if (glm::dot(patchNormals[other], patchNormals[v]) > 0.5f) sum += patchNormals[other];  // within 60 degrees
+            if (glm::dot(patchNormals[other], patchNormals[v]) > 0.5f)
+                sum += patchNormals[other];  // within 60 degrees
         mesh.normals[v] = glm::dot(sum, sum) > 0.0f ? glm::normalize(sum) : glm::vec3(0, 1, 0);
         mesh.tangents[v] = tangentFrame(mesh.normals[v], dPdu[v], dPdv[v]);
     }

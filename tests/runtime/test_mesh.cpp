@@ -34,14 +34,16 @@ testing::AssertionResult windingAgreesWithNormals(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return testing::AssertionFailure() << "normals missing";
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
         glm::vec3 n = faceNormal(mesh, t);
-        if (glm::length(n) < 1e-9f) return testing::AssertionFailure() << "triangle " << t << " is degenerate";
+        if (glm::length(n) < 1e-9f)
+            return testing::AssertionFailure() << "triangle " << t << " is degenerate";
         n = glm::normalize(n);
         for (int k = 0; k < 3; ++k) {
             uint32_t v = mesh.indices[t * 3 + k];
             float d = glm::dot(n, mesh.normals[v]);
             if (!(d > 0.0f)) {
-                return testing::AssertionFailure() << mesh.name << ": triangle " << t << " winds against the normal of vertex "
-                                                   << v << " (dot " << d << ")";
+                return testing::AssertionFailure()
+                       << mesh.name << ": triangle " << t << " winds against the normal of vertex " << v
+                       << " (dot " << d << ")";
             }
         }
     }
@@ -57,7 +59,8 @@ testing::AssertionResult edgesConsistent(const Mesh& mesh, bool requireClosed) {
             Key a = weldKey(mesh.positions[mesh.indices[t * 3 + k]]);
             Key b = weldKey(mesh.positions[mesh.indices[t * 3 + (k + 1) % 3]]);
             if (a == b) return testing::AssertionFailure() << "triangle " << t << " has a collapsed edge";
-            if (++directed[{a, b}] > 1) return testing::AssertionFailure() << "directed edge used twice at triangle " << t;
+            if (++directed[{a, b}] > 1)
+                return testing::AssertionFailure() << "directed edge used twice at triangle " << t;
         }
     }
     if (requireClosed) {
@@ -81,14 +84,18 @@ double signedVolume(const Mesh& mesh) {
 }
 
 testing::AssertionResult tangentsValid(const Mesh& mesh) {
-    if (mesh.tangents.size() != mesh.positions.size()) return testing::AssertionFailure() << "tangents missing";
-    if (mesh.texcoords.size() != mesh.positions.size()) return testing::AssertionFailure() << "texcoords missing";
+    if (mesh.tangents.size() != mesh.positions.size())
+        return testing::AssertionFailure() << "tangents missing";
+    if (mesh.texcoords.size() != mesh.positions.size())
+        return testing::AssertionFailure() << "texcoords missing";
     for (size_t v = 0; v < mesh.tangents.size(); ++v) {
         glm::vec3 t(mesh.tangents[v]);
-        if (std::abs(glm::length(t) - 1.0f) > 1e-3f) return testing::AssertionFailure() << "tangent " << v << " not unit";
+        if (std::abs(glm::length(t) - 1.0f) > 1e-3f)
+            return testing::AssertionFailure() << "tangent " << v << " not unit";
         if (std::abs(glm::dot(t, mesh.normals[v])) > 1e-3f)
             return testing::AssertionFailure() << "tangent " << v << " not perpendicular to the normal";
-        if (std::abs(mesh.tangents[v].w) != 1.0f) return testing::AssertionFailure() << "handedness of " << v << " not +-1";
+        if (std::abs(mesh.tangents[v].w) != 1.0f)
+            return testing::AssertionFailure() << "handedness of " << v << " not +-1";
     }
     return testing::AssertionSuccess();
 }
@@ -100,8 +107,8 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolera
 }
 
 // Möller-Trumbore, either side; the t of the hit along origin + t * dir.
-std::optional<float> rayHit(const glm::vec3& origin, const glm::vec3& dir, const glm::vec3& a, const glm::vec3& b,
-                            const glm::vec3& c) {
+std::optional<float> rayHit(const glm::vec3& origin, const glm::vec3& dir, const glm::vec3& a,
+                            const glm::vec3& b, const glm::vec3& c) {
     glm::vec3 e1 = b - a, e2 = c - a, p = glm::cross(dir, e2);
     float det = glm::dot(e1, p);
     if (std::abs(det) < 1e-12f) return std::nullopt;
@@ -129,7 +136,8 @@ TEST(Mesh, PlaneFacesUpWithD3DTexcoords) {
         expectNear(plane.boundsMax(), glm::vec3(3.0f, 0.0f, 2.0f), 1e-5f);
         for (size_t t = 0; t < plane.triangleCount(); ++t) EXPECT_GT(faceNormal(plane, t).y, 0.0f);
         for (size_t v = 0; v < plane.positions.size(); ++v) {
-            // Seen from above with +z at the top of the image, (0,0) is the top-left corner: u follows +x, v -z.
+            // Seen from above with +z at the top of the image, (0,0) is the top-left corner: u follows +x, v
+            // -z.
             EXPECT_NEAR(plane.texcoords[v].x, plane.positions[v].x / 6.0f + 0.5f, 1e-5f);
             EXPECT_NEAR(plane.texcoords[v].y, 0.5f - plane.positions[v].z / 4.0f, 1e-5f);
             expectNear(glm::vec3(plane.tangents[v]), glm::vec3(1, 0, 0), 1e-5f);
@@ -174,7 +182,8 @@ TEST(Mesh, SphereIsClosedAndOutward) {
         EXPECT_NEAR(sphere.boundsMax().y, radius, 1e-5f);
     }
     Mesh fine = makeSphere(2.0f, 64, 32);
-    EXPECT_NEAR(signedVolume(fine), 4.0 / 3.0 * glm::pi<double>() * 8.0, 0.02 * 4.0 / 3.0 * glm::pi<double>() * 8.0);
+    EXPECT_NEAR(signedVolume(fine), 4.0 / 3.0 * glm::pi<double>() * 8.0,
+                0.02 * 4.0 / 3.0 * glm::pi<double>() * 8.0);
     expectNear(fine.boundsMin(), glm::vec3(-2.0f), 1e-4f);
     expectNear(fine.boundsMax(), glm::vec3(2.0f), 1e-4f);
 }
@@ -211,7 +220,8 @@ TEST(Mesh, TeapotIsNewellsShapeFacingOutward) {
     for (int tessellation : {6, 8, 12}) {
         Mesh teapot = makeTeapot(size, tessellation);
         EXPECT_FALSE(teapot.closed);
-        // 32 patches of 2 n^2 triangles, less the zero-area ones where rows collapse (lid knob, bottom centre).
+        // 32 patches of 2 n^2 triangles, less the zero-area ones where rows collapse (lid knob, bottom
+        // centre).
         EXPECT_LE(teapot.triangleCount(), size_t(32 * 2 * tessellation * tessellation));
         EXPECT_GT(teapot.triangleCount(), size_t(28 * 2 * tessellation * tessellation));
         EXPECT_TRUE(windingAgreesWithNormals(teapot));
@@ -226,7 +236,8 @@ TEST(Mesh, TeapotIsNewellsShapeFacingOutward) {
         expectNear((lo + hi) * 0.5f, glm::vec3(0.0f), 1e-4f);
         EXPECT_NEAR(hi.x - lo.x, size, 1e-4f);
         const float unitsToSize = (hi.y - lo.y) / 3.15f;
-        EXPECT_NEAR(hi.z - lo.z, 4.0f * unitsToSize, 0.01f * size);  // the quadrant's 0.56 circle bulges a bit
+        EXPECT_NEAR(hi.z - lo.z, 4.0f * unitsToSize,
+                    0.01f * size);  // the quadrant's 0.56 circle bulges a bit
         EXPECT_LT(size / unitsToSize, 6.525f);
         EXPECT_GT(size / unitsToSize, 6.0f);
         // The spout tip is the +x extreme and sits high; the handle is at -x.
@@ -243,14 +254,16 @@ TEST(Mesh, TeapotIsNewellsShapeFacingOutward) {
     int facing = 0, backwards = 0;
     for (size_t t = 0; t < teapot.triangleCount(); ++t) {
         const auto* idx = &teapot.indices[t * 3];
-        glm::vec3 centre = (teapot.positions[idx[0]] + teapot.positions[idx[1]] + teapot.positions[idx[2]]) / 3.0f;
+        glm::vec3 centre =
+            (teapot.positions[idx[0]] + teapot.positions[idx[1]] + teapot.positions[idx[2]]) / 3.0f;
         glm::vec3 dir = glm::normalize(faceNormal(teapot, t));
         std::optional<float> nearest;
         size_t nearestTriangle = 0;
         for (size_t s = 0; s < teapot.triangleCount(); ++s) {
             if (s == t) continue;
             const auto* j = &teapot.indices[s * 3];
-            auto hit = rayHit(centre, dir, teapot.positions[j[0]], teapot.positions[j[1]], teapot.positions[j[2]]);
+            auto hit =
+                rayHit(centre, dir, teapot.positions[j[0]], teapot.positions[j[1]], teapot.positions[j[2]]);
             if (hit && *hit > 1e-4f && (!nearest || *hit < *nearest)) {
                 nearest = hit;
                 nearestTriangle = s;
@@ -261,7 +274,8 @@ TEST(Mesh, TeapotIsNewellsShapeFacingOutward) {
     }
     const int escaping = int(teapot.triangleCount()) - facing - backwards;
     EXPECT_GT(escaping, int(teapot.triangleCount()) / 2);  // most of an outer surface sees the sky
-    EXPECT_LT(backwards, int(teapot.triangleCount()) / 20) << facing << " facing, " << backwards << " backwards";
+    EXPECT_LT(backwards, int(teapot.triangleCount()) / 20)
+        << facing << " facing, " << backwards << " backwards";
 }
 
 TEST(Mesh, EmptyMeshBoundsAreZero) {

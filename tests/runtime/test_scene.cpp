@@ -19,9 +19,13 @@ Scene builtin(std::string_view name) {
     return scene ? *scene : Scene{};
 }
 
-glm::vec3 toWorld(const SceneObject& object, const glm::vec3& p) { return glm::vec3(object.world * glm::vec4(p, 1.0f)); }
+glm::vec3 toWorld(const SceneObject& object, const glm::vec3& p) {
+    return glm::vec3(object.world * glm::vec4(p, 1.0f));
+}
 
-glm::vec3 clipToNdc(const glm::vec4& clip) { return glm::vec3(clip) / clip.w; }
+glm::vec3 clipToNdc(const glm::vec4& clip) {
+    return glm::vec3(clip) / clip.w;
+}
 
 // Signed area of a pixel-space triangle (x right, y down): positive when clockwise on screen.
 float pixelCross(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
@@ -41,7 +45,10 @@ constexpr int kWidth = 640, kHeight = 480;
 
 TEST(Scene, BuiltinScenesExist) {
     auto names = builtinSceneNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"boxes", "torus", "teapot"}));
+    // The three original scenes come first, unchanged; tests/runtime/test_builtin_scenes.cpp covers the rest.
+    ASSERT_GE(names.size(), 3u);
+    EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 3),
+              (std::vector<std::string>{"boxes", "torus", "teapot"}));
     EXPECT_FALSE(makeBuiltinScene("no such scene").has_value());
     for (const auto& name : names) {
         Scene scene = builtin(name);
@@ -107,7 +114,8 @@ TEST(Scene, CameraIsD3DXLeftHanded) {
     EXPECT_NEAR(clipToNdc(projection * glm::vec4(0, 0, camera.farPlane, 1)).z, 1.0f, 1e-5f);
     // The vertical field of view: a point at the top edge of the frustum maps to y = 1.
     const float depth = 5.0f;
-    EXPECT_NEAR(clipToNdc(projection * glm::vec4(0, depth * std::tan(camera.fovY / 2), depth, 1)).y, 1.0f, 1e-5f);
+    EXPECT_NEAR(clipToNdc(projection * glm::vec4(0, depth * std::tan(camera.fovY / 2), depth, 1)).y, 1.0f,
+                1e-5f);
     // D3DX layout: translation in the fourth row = glm's fourth column, which is what glm stores last.
     EXPECT_EQ(&view[3][0] - &view[0][0], 12);
 }
@@ -122,7 +130,8 @@ TEST(Scene, FrontFacesAreClockwiseOnScreen) {
     for (size_t t = 0; t < plane.triangleCount(); ++t) {
         std::optional<glm::vec3> pixels[3];
         for (int k = 0; k < 3; ++k)
-            pixels[k] = projectToPixel(scene, toWorld(ground, plane.positions[plane.indices[t * 3 + k]]), kWidth, kHeight);
+            pixels[k] = projectToPixel(scene, toWorld(ground, plane.positions[plane.indices[t * 3 + k]]),
+                                       kWidth, kHeight);
         if (!pixels[0] || !pixels[1] || !pixels[2]) continue;
         EXPECT_GT(pixelCross(*pixels[0], *pixels[1], *pixels[2]), 0.0f) << "triangle " << t;
         ++checked;
@@ -162,7 +171,8 @@ TEST(Scene, ProjectToPixel) {
     EXPECT_LT(centre->z, 1.0f);
     // Corners: world points unprojected from just inside the NDC corners come back at the pixel corners,
     // NDC y = +1 at the top (pixel y = 0).
-    const glm::mat4 inverse = glm::inverse(scene.camera.projection(float(kWidth) / kHeight) * scene.camera.view());
+    const glm::mat4 inverse =
+        glm::inverse(scene.camera.projection(float(kWidth) / kHeight) * scene.camera.view());
     auto unproject = [&](float x, float y, float z) {
         glm::vec4 p = inverse * glm::vec4(x, y, z, 1.0f);
         return glm::vec3(p) / p.w;
@@ -172,19 +182,22 @@ TEST(Scene, ProjectToPixel) {
         float ndcX, ndcY, pixelX, pixelY;
     } corners[] = {{-1, 1, 0, 0}, {1, 1, kWidth, 0}, {-1, -1, 0, kHeight}, {1, -1, kWidth, kHeight}};
     for (const auto& corner : corners) {
-        auto pixel = projectToPixel(scene, unproject(corner.ndcX * inside, corner.ndcY * inside, 0.5f), kWidth, kHeight);
+        auto pixel = projectToPixel(scene, unproject(corner.ndcX * inside, corner.ndcY * inside, 0.5f),
+                                    kWidth, kHeight);
         ASSERT_TRUE(pixel);
         EXPECT_NEAR(pixel->x, corner.pixelX, 0.001f * kWidth);
         EXPECT_NEAR(pixel->y, corner.pixelY, 0.001f * kHeight);
         EXPECT_NEAR(pixel->z, 0.5f, 1e-3f);
         // Just outside the image: nothing.
-        EXPECT_FALSE(projectToPixel(scene, unproject(corner.ndcX * 1.01f, corner.ndcY * 1.01f, 0.5f), kWidth, kHeight));
+        EXPECT_FALSE(projectToPixel(scene, unproject(corner.ndcX * 1.01f, corner.ndcY * 1.01f, 0.5f), kWidth,
+                                    kHeight));
     }
     // Behind the camera: nothing, even where the perspective divide would bring it back into range.
     glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
     EXPECT_FALSE(projectToPixel(scene, scene.camera.position - forward * 5.0f, kWidth, kHeight));
     // Beyond the far plane: nothing.
-    EXPECT_FALSE(projectToPixel(scene, scene.camera.position + forward * (scene.camera.farPlane * 1.1f), kWidth, kHeight));
+    EXPECT_FALSE(projectToPixel(scene, scene.camera.position + forward * (scene.camera.farPlane * 1.1f),
+                                kWidth, kHeight));
 }
 
 TEST(Scene, DirectionalLightLooksAlongItsDirection) {
@@ -255,16 +268,21 @@ TEST(Scene, EveryVertexFitsTheLightAndTheCamera) {
                     glm::vec4 clip = viewProjection * glm::vec4(toWorld(object, p), 1.0f);
                     ASSERT_GT(clip.w, 0.0f);
                     glm::vec3 ndc = clipToNdc(clip);
-                    ASSERT_TRUE(std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && ndc.z >= 0.0f && ndc.z <= 1.0f)
-                        << name << "/" << object.name << " (" << ndc.x << ", " << ndc.y << ", " << ndc.z << ")";
+                    ASSERT_TRUE(std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && ndc.z >= 0.0f &&
+                                ndc.z <= 1.0f)
+                        << name << "/" << object.name << " (" << ndc.x << ", " << ndc.y << ", " << ndc.z
+                        << ")";
                 }
             }
         }
-        // Everything but the ground (larger than the view on purpose) is in the image.
+        // Everything but the ground (larger than the view on purpose) is in the image: in the three small
+        // scenes; "forest" and "behind" are larger than the view on purpose (test_builtin_scenes.cpp).
+        if (name == "forest" || name == "behind") continue;
         for (const auto& object : scene.objects) {
             if (object.name == "ground") continue;
             for (const auto& p : object.mesh->positions)
-                ASSERT_TRUE(projectToPixel(scene, toWorld(object, p), kWidth, kHeight)) << name << "/" << object.name;
+                ASSERT_TRUE(projectToPixel(scene, toWorld(object, p), kWidth, kHeight))
+                    << name << "/" << object.name;
         }
     }
 }
@@ -277,8 +295,10 @@ TEST(Scene, SegmentOccluded) {
     const glm::vec3 half = (box->mesh->boundsMax() - box->mesh->boundsMin()) * 0.5f;
     // Through the box, and beside / above it.
     EXPECT_TRUE(segmentOccluded(scene, centre + glm::vec3(0, 0, -5), centre + glm::vec3(0, 0, 5)));
-    EXPECT_FALSE(segmentOccluded(scene, centre + glm::vec3(0, half.y + 0.1f, -5), centre + glm::vec3(0, half.y + 0.1f, 5)));
-    EXPECT_FALSE(segmentOccluded(scene, centre + glm::vec3(0, 0, -5), centre + glm::vec3(0, 0, -half.z - 0.1f)));
+    EXPECT_FALSE(segmentOccluded(scene, centre + glm::vec3(0, half.y + 0.1f, -5),
+                                 centre + glm::vec3(0, half.y + 0.1f, 5)));
+    EXPECT_FALSE(
+        segmentOccluded(scene, centre + glm::vec3(0, 0, -5), centre + glm::vec3(0, 0, -half.z - 0.1f)));
     // Ending or starting on a surface does not count: a point on the box's top sees the sky.
     const glm::vec3 top = centre + glm::vec3(0, half.y, 0);
     EXPECT_FALSE(segmentOccluded(scene, top, top + glm::vec3(0, 10, 0)));

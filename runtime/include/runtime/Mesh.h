@@ -28,10 +28,18 @@ struct Mesh {
 };
 
 // Generators. Sizes are full extents; every shape is centred on the origin.
-Mesh makePlane(float sizeX, float sizeZ, int divisions = 1);  // y = 0, facing +y, not closed
-Mesh makeBox(glm::vec3 size);                                  // closed
+Mesh makePlane(float sizeX, float sizeZ, int divisions = 1);      // y = 0, facing +y, not closed
+Mesh makeBox(glm::vec3 size);                                     // closed
 Mesh makeSphere(float radius, int slices = 32, int stacks = 16);  // closed
-Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments = 48, int minorSegments = 24);  // closed, in the xz plane
+Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments = 48,
+               int minorSegments = 24);             // closed, in the xz plane
 Mesh makeTeapot(float size, int tessellation = 8);  // Newell's teapot from its Bezier patches; not closed
+// In ShapeGenerators.cpp: capped cylinder and cone along +y (centred like the rest), closed.
+Mesh makeCylinder(float radius, float height, int slices = 16);
+Mesh makeCone(float radius, float height, int slices = 16);
+// Terrain: a (divisions+1)^2 grid over sizeX x sizeZ whose y is height(x, z); normals from the heights.
+Mesh makeHeightField(float sizeX, float sizeZ, int divisions, float (*height)(float x, float z));
+// Appends `other` (its positions moved by `offset`) to `mesh`: how one mesh is made of several shapes.
+void appendMesh(Mesh& mesh, const Mesh& other, const glm::vec3& offset = glm::vec3(0.0f));
 
 }  // namespace runtime

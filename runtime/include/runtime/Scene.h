@@ -14,6 +14,10 @@
 #include <string_view>
 #include <vector>
 
+namespace fx {
+class DiagnosticSink;
+}
+
 namespace runtime {
 
 struct Bounds {
@@ -26,11 +30,11 @@ struct Bounds {
 struct SceneObject {
     std::string name;
     std::shared_ptr<const Mesh> mesh;
-    glm::mat4 world{1.0f};         // object -> world (glm column-vector form)
-    glm::vec3 color{0.8f};         // diffuse colour, bound to the DIFFUSE / MaterialDiffuse semantics
+    glm::mat4 world{1.0f};  // object -> world (glm column-vector form)
+    glm::vec3 color{0.8f};  // diffuse colour, bound to the DIFFUSE / MaterialDiffuse semantics
     bool castsShadow = true;
     bool receivesShadow = true;
-    uint32_t id = 0;               // object id (1-based), for ID-buffer methods
+    uint32_t id = 0;  // object id (1-based), for ID-buffer methods
 };
 
 struct Camera {
@@ -49,7 +53,7 @@ struct Light {
     enum class Type { Directional, Spot, Point };
     std::string name = "light0";  // what RenderPort=... and frustum="..." annotations name
     Type type = Type::Directional;
-    glm::vec3 position{0.0f, 10.0f, 0.0f};  // spot/point; for directional, only where the view is placed
+    glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot/point; for directional, only where the view is placed
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // normalized, pointing from the light into the scene
     glm::vec3 color{1.0f};
     float spotAngle = glm::radians(60.0f);  // full cone angle (spot)
@@ -68,16 +72,27 @@ struct Scene {
     Camera camera;
     std::vector<Light> lights;
     glm::vec3 ambient{0.15f};
+    // What the shadow map must cover, where the scene says so (a scene file's "bounds"); else the objects'.
+    std::optional<Bounds> explicitBounds;
+    // Hints from the setup a scene reproduces (seed 000 §5: 512x512 viewport, 2048^2 map); 0 = none.
+    glm::ivec2 suggestedViewport{0};
+    int suggestedMapSize = 0;
 
-    Bounds bounds() const;  // of all objects in world space
+    Bounds bounds() const;        // explicitBounds if set, else objectBounds()
+    Bounds objectBounds() const;  // of all objects in world space
     const Light* findLight(std::string_view lightName) const;
     size_t triangleCount() const;
 };
 
 // Built-in scenes: "boxes" (a ground plane with a box and a sphere, a directional light from above at an
-// angle), "torus" (a torus standing on a plane, spot light), "teapot" (Newell's teapot on a plane).
+// angle), "torus" (a torus standing on a plane, spot light), "teapot" (Newell's teapot on a plane), then
+// the seeds' setups ("dual-l", "double-torus", "forest", "behind") and scenes of meshes Debian ships
+// ("bunny", "horse", "spider", "engine"); README.md's "Scenes" section says which seed each reproduces.
 std::vector<std::string> builtinSceneNames();
 std::optional<Scene> makeBuiltinScene(std::string_view name);
+// The same, reporting why there is no scene: an unknown name, or a mesh file that is missing (naming the
+// Debian package that ships it). `diagnostics` may be null.
+std::optional<Scene> makeBuiltinScene(std::string_view name, fx::DiagnosticSink* diagnostics);
 
 // Exact visibility: true if the open segment from `from` to `to` hits a triangle of a shadow-casting
 // object (brute force Möller-Trumbore; the scenes here are small). What tests use to find points that lie

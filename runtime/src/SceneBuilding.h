@@ -1,0 +1,47 @@
+// SceneBuilding: what the built-in scene files (BuiltinScenes.cpp, SeedScenes.cpp, ForestScene.cpp,
+// AssetScenes.cpp) share: placing shared meshes, fitting a directional light, the makers' table entries.
+#pragma once
+
+#include <runtime/Scene.h>
+
+#include <fx/Diagnostics.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace runtime {
+
+inline SceneObject placeObject(std::string name, std::shared_ptr<const Mesh> mesh, const glm::mat4& world,
+                               const glm::vec3& color, uint32_t id) {
+    SceneObject object;
+    object.name = std::move(name);
+    object.mesh = std::move(mesh);
+    object.world = world;
+    object.color = color;
+    object.id = id;
+    return object;
+}
+
+// A directional light along `direction` whose (informative) position sits two bounding radii back from the
+// scene's centre, where Light::view puts its eye.
+inline Light fittedDirectionalLight(const glm::vec3& direction, const Bounds& bounds) {
+    Light light;
+    light.type = Light::Type::Directional;
+    light.direction = glm::normalize(direction);
+    light.position = bounds.center() - light.direction * (2.0f * bounds.radius());
+    return light;
+}
+
+// The seeds' setups (SeedScenes.cpp, ForestScene.cpp) and the scenes of Debian-shipped meshes
+// (AssetScenes.cpp; nullopt after reporting a missing file into `diagnostics`, which may be null).
+Scene makeDualLScene();
+Scene makeDoubleTorusScene();
+Scene makeBehindScene();
+Scene makeForestScene();
+std::optional<Scene> makeBunnyScene(fx::DiagnosticSink* diagnostics);
+std::optional<Scene> makeHorseScene(fx::DiagnosticSink* diagnostics);
+std::optional<Scene> makeSpiderScene(fx::DiagnosticSink* diagnostics);
+std::optional<Scene> makeEngineScene(fx::DiagnosticSink* diagnostics);
+
+}  // namespace runtime
