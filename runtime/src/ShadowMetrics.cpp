@@ -1,0 +1,142 @@
+// ShadowMetrics: classification errors, error images and the texel-footprint aliasing measure.
+#include <runtime/ShadowMetrics.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace runtime {
+
+std::vector<uint8_t> receiverMask(const GBuffer& gbuffer, const Light& light) {
+    std::vector<uint8_t> mask(gbuffer.pixelCount(), 0);
+    const glm::vec3 lightDir = glm::normalize(light.direction);
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (!gbuffer.covered(i)) continue;
+        const glm::vec3 toLight =
+            light.type == Light::Type::Directional ? -lightDir : light.position - gbuffer.position[i];
+        mask[i] = glm::dot(gbuffer.normal[i], toLight) > 0.0f ? 1 : 0;
+    }
+    return mask;
+}
+
+ShadowErrors compareVisibility(const std::vector<float>& truth, const std::vector<float>& effect,
+                               const std::vector<uint8_t>& receivers) {
+    ShadowErrors errors;
+    std::vector<float> absolute;
+    const size_t n = std::min({truth.size(), effect.size(), receivers.size()});
+    double sum = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        if (!receivers[i] || truth[i] < 0.0f) continue;
+        ++errors.receiverPixels;
+        const bool litInTruth = truth[i] >= kShadowedBelow;
+        const bool litByEffect = effect[i] >= kShadowedBelow;
+        errors.falseShadowPixels += litInTruth && !litByEffect;
+        errors.falseLightPixels += !litInTruth && litByEffect;
+        const float e = std::abs(std::clamp(effect[i], 0.0f, 1.0f) - truth[i]);
+        sum += e;
+        absolute.push_back(e);
+    }
+    if (errors.receiverPixels == 0) return errors;
+    const double total = static_cast<double>(errors.receiverPixels);
+    errors.falseShadowPercent = 100.0 * static_cast<double>(errors.falseShadowPixels) / total;
+    errors.falseLightPercent = 100.0 * static_cast<double>(errors.falseLightPixels) / total;
+    errors.misclassifiedPercent = errors.falseShadowPercent + errors.falseLightPercent;
+    errors.meanAbsoluteError = sum / total;
+    // Nearest-rank percentile: the smallest error that at least 95% of the pixels do not exceed.
+    const size_t rank = static_cast<size_t>(std::ceil(0.95 * total)) - 1;
+    std::nth_element(absolute.begin(), absolute.begin() + static_cast<std::ptrdiff_t>(rank), absolute.end());
+    errors.p95AbsoluteError = absolute[rank];
+    return errors;
+}
+
+std::vector<float> visibilityFromFrame(const FrameImage& frame) {
+    std::vector<float> visibility(static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height));
+    for (size_t i = 0; i < visibility.size(); ++i) visibility[i] = frame.rgba[i * 4] / 255.0f;
+    return visibility;
+}
+
+FrameImage errorImage(const FrameImage& frame, const std::vector<float>& truth,
+                      const std::vector<float>& effect, const std::vector<uint8_t>& receivers) {
+    FrameImage out = frame;
+    const size_t n = std::min({truth.size(), effect.size(), receivers.size(), out.rgba.size() / 4});
+    for (size_t i = 0; i < out.rgba.size() / 4; ++i) {
+        uint8_t* p = &out.rgba[i * 4];
+        // A dimmed grey keeps the scene readable under the saturated error colours.
+        const auto grey = static_cast<uint8_t>(0.6f * (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]));
+        p[0] = p[1] = p[2] = grey;
+        p[3] = 255;
+        if (i >= n || !receivers[i] || truth[i] < 0.0f) continue;
+        const bool litInTruth = truth[i] >= kShadowedBelow;
+        const bool litByEffect = effect[i] >= kShadowedBelow;
+        if (litInTruth && !litByEffect) p[0] = 255, p[1] = 0, p[2] = 0;
+        if (!litInTruth && litByEffect) p[0] = 0, p[1] = 64, p[2] = 255;
+    }
+    return out;
+}
+
+AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                    const glm::mat4& lightView, const glm::mat4& lightProjection,
+                                    int mapSize) {
+    AliasingMeasure measure;
+    const glm::mat4 lightViewProjection = lightProjection * lightView;
+    // Texel coordinates of every covered pixel (x right, v down as in shadowmap.fxh; the sign of v does not
+    // change the singular values).
+    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
+    for (size_t i = 0; i < texel.size(); ++i) {
+        if (!gbuffer.covered(i)) continue;
+        const glm::vec4 clip = lightViewProjection * glm::vec4(gbuffer.position[i], 1.0f);
+        if (clip.w <= 0.0f) continue;
+        texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *
+                   static_cast<float>(mapSize);
+    }
+    // Derivative along one screen axis: central difference where both neighbours lie on the same object,
+    // else one-sided; none at an object's silhouette on both sides.
+    auto derivative = [&](int x, int y, int dx, int dy, glm::vec2& d) {
+        const size_t i = gbuffer.index(x, y);
+        const uint32_t id = gbuffer.objectId[i];
+        const bool hasNext = x + dx < gbuffer.width && y + dy < gbuffer.height &&
+                             gbuffer.objectId[gbuffer.index(x + dx, y + dy)] == id;
+        const bool hasPrev =
+            x - dx >= 0 && y - dy >= 0 && gbuffer.objectId[gbuffer.index(x - dx, y - dy)] == id;
+        if (hasNext && hasPrev) {
+            d = 0.5f * (texel[gbuffer.index(x + dx, y + dy)] - texel[gbuffer.index(x - dx, y - dy)]);
+        } else if (hasNext) {
+            d = texel[gbuffer.index(x + dx, y + dy)] - texel[i];
+        } else if (hasPrev) {
+            d = texel[i] - texel[gbuffer.index(x - dx, y - dy)];
+        } else {
+            return false;
+        }
+        return true;
+    };
+    double sum = 0.0;
+    std::vector<double> footprints;
+    for (int y = 0; y < gbuffer.height; ++y) {
+        for (int x = 0; x < gbuffer.width; ++x) {
+            const size_t i = gbuffer.index(x, y);
+            if (i >= receivers.size() || !receivers[i]) continue;
+            glm::vec2 ddx, ddy;
+            if (!derivative(x, y, 1, 0, ddx) || !derivative(x, y, 0, 1, ddy)) continue;
+            // Singular values of J = [ddx ddy] (2x2) from its Gram matrix's eigenvalues.
+            const double a = glm::dot(ddx, ddx), b = glm::dot(ddx, ddy), c = glm::dot(ddy, ddy);
+            const double mean = 0.5 * (a + c);
+            const double root = std::sqrt(std::max(0.0, 0.25 * (a - c) * (a - c) + b * b));
+            const double sigmaMin = std::sqrt(std::max(0.0, mean - root));
+            if (sigmaMin <= 1e-9) continue;  // degenerate (a surface seen edge-on from the light)
+            const double footprint = 1.0 / sigmaMin;
+            measure.maxFootprint = std::max(measure.maxFootprint, footprint);
+            sum += footprint;
+            footprints.push_back(footprint);
+            ++measure.pixels;
+        }
+    }
+    if (measure.pixels > 0) {
+        measure.meanFootprint = sum / static_cast<double>(measure.pixels);
+        const size_t rank = static_cast<size_t>(std::ceil(0.95 * static_cast<double>(footprints.size()))) - 1;
+        std::nth_element(footprints.begin(), footprints.begin() + static_cast<std::ptrdiff_t>(rank),
+                         footprints.end());
+        measure.p95Footprint = footprints[rank];
+    }
+    return measure;
+}
+
+}  // namespace runtime

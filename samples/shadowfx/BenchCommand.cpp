@@ -1,0 +1,685 @@
+// BenchCommand: `shadowfx bench`.
+//
+// [SECTION] Options     parsing the lists (--scenes a,b, --effects x.fx,y.fx or a shell glob, --map-sizes)
+// [SECTION] Statistics  median and spread of the timed frames
+// [SECTION] Runs        ground truth per scene, then effect x map size x scene x technique
+// [SECTION] Output      results.json, report.md, error_vs_time.png through gnuplot
+//
+// Each effect is compiled twice per map size: as written (the timed frames) and with SHADOWFX_VISIBILITY
+// (one frame whose colour is the shadow factor, scored against the ground truth). Timing the visibility
+// variant instead would leave out the effect's shading and so understate its cost; scoring the shaded frame
+// would confuse shading with shadowing. The two variants share every shadow computation by construction
+// (the define only changes what the final pass returns).
+#include "BenchCommand.h"
+
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+#include <runtime/EffectRenderer.h>
+#include <runtime/GBuffer.h>
+#include <runtime/GlContext.h>
+#include <runtime/GroundTruth.h>
+#include <runtime/Scene.h>
+#include <runtime/ShadowMetrics.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace shadowfx::cli {
+
+const char* const kBenchUsage =
+    "usage: shadowfx bench --effects EFFECT.fx[,...] --out DIR [options]\n"
+    "  --effects LIST        effect files, comma-separated (a shell glob works too: --effects effects/*.fx)\n"
+    "  --scenes LIST         built-in scenes, comma-separated (default boxes)\n"
+    "  --map-sizes LIST      shadow-map sizes, passed as -D SHADOWFX_SHADOW_MAP_SIZE=N (default 1024)\n"
+    "  --techniques LIST     only these techniques (default: every technique of every effect)\n"
+    "  --frames N            timed frames per run, after the warm-up (default 10)\n"
+    "  --warmup N            untimed frames first (default 2)\n"
+    "  --width W, --height H frame size (default 640x480)\n"
+    "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
+    "  --backend NAME        auto, osmesa or egl (default auto)\n"
+    "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
+    "  --out DIR             results.json, report.md, error_vs_time.png and errors/*.png go here\n";
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Json = nlohmann::ordered_json;
+constexpr int kSchemaVersion = 1;
+
+// [SECTION] Options
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ','))
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+// Prints each distinct diagnostic once: the same warning comes back every frame of every run.
+class BenchSink : public fx::DiagnosticSink {
+public:
+    using fx::DiagnosticSink::report;
+    void report(const fx::Diagnostic& diagnostic) override {
+        if (diagnostic.severity == fx::Severity::Note) return;
+        if (diagnostic.severity == fx::Severity::Error) ++mErrors;
+        const std::string text = fx::renderDiagnostic(diagnostic);
+        if (mSeen.insert(text).second) std::cerr << "\n" << text << "\n";
+    }
+    int errors() const { return mErrors; }
+
+private:
+    std::set<std::string> mSeen;
+    int mErrors = 0;
+};
+
+// [SECTION] Statistics
+
+struct Spread {
+    double median = 0, min = 0, max = 0, p25 = 0, p75 = 0;
+};
+
+// Linear-interpolated quantiles (type 7, as numpy's default).
+Spread spreadOf(std::vector<double> values) {
+    Spread s;
+    if (values.empty()) return s;
+    std::sort(values.begin(), values.end());
+    auto quantile = [&](double q) {
+        const double position = q * static_cast<double>(values.size() - 1);
+        const size_t below = static_cast<size_t>(position);
+        const size_t above = std::min(below + 1, values.size() - 1);
+        return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
+    };
+    s.median = quantile(0.5);
+    s.min = values.front();
+    s.max = values.back();
+    s.p25 = quantile(0.25);
+    s.p75 = quantile(0.75);
+    return s;
+}
+
+Json toJson(const Spread& s) {
+    return Json{{"median", s.median}, {"min", s.min}, {"max", s.max}, {"p25", s.p25}, {"p75", s.p75}};
+}
+
+double ms(uint64_t ns) {
+    return static_cast<double>(ns) * 1e-6;
+}
+
+// [SECTION] Runs
+
+struct SceneTruth {
+    runtime::Scene scene;
+    const runtime::Light* light = nullptr;
+    runtime::GBuffer gbuffer;
+    runtime::GroundTruth truth;
+    std::vector<uint8_t> receivers;
+    double seconds = 0.0;
+};
+
+struct EffectVariant {
+    std::shared_ptr<fx::CompiledEffect> timed;
+    std::shared_ptr<fx::CompiledEffect> visibility;
+    bool exposesVisibility = false;  // the define changed some pixel shader
+    bool honoursMapSize = false;     // some render target has the requested size
+};
+
+std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::ParseOptions options,
+                                                   std::vector<std::pair<std::string, std::string>> extra,
+                                                   fx::DiagnosticSink& sink) {
+    for (auto& define : extra) options.defines.push_back(std::move(define));
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, sink);
+    if (!effect) return nullptr;
+    return fx::compileEffect(effect, fx::CompileOptions{}, sink);
+}
+
+bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& b) {
+    if (a.techniques.size() != b.techniques.size()) return false;
+    for (size_t t = 0; t < a.techniques.size(); ++t) {
+        if (a.techniques[t].passes.size() != b.techniques[t].passes.size()) return false;
+        for (size_t p = 0; p < a.techniques[t].passes.size(); ++p)
+            if (a.techniques[t].passes[p].fragment.glsl != b.techniques[t].passes[p].fragment.glsl)
+                return false;
+    }
+    return true;
+}
+
+std::string safeName(std::string text) {
+    for (char& c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    return text;
+}
+
+class Progress {
+public:
+    explicit Progress(size_t total) : mTotal(total), mTty(isatty(fileno(stderr))) {}
+    void show(const std::string& what) {
+        ++mDone;
+        std::ostringstream line;
+        line << "bench: [" << mDone << "/" << mTotal << "] " << what;
+        if (mTty) {
+            std::cerr << "\r\033[K" << line.str() << std::flush;
+        } else {
+            std::cerr << line.str() << "\n";
+        }
+    }
+    void end() {
+        if (mTty) std::cerr << "\n";
+    }
+
+private:
+    size_t mTotal;
+    size_t mDone = 0;
+    bool mTty;
+};
+
+// [SECTION] Output
+
+// Points on the Pareto front of (time, error): no other run is at least as fast and strictly more exact.
+std::vector<size_t> paretoFront(const std::vector<std::pair<double, double>>& points) {
+    std::vector<size_t> order(points.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return points[a].first != points[b].first ? points[a].first < points[b].first
+                                                  : points[a].second < points[b].second;
+    });
+    std::vector<size_t> front;
+    double bestError = std::numeric_limits<double>::infinity();
+    for (size_t i : order) {
+        if (points[i].second < bestError) {
+            front.push_back(i);
+            bestError = points[i].second;
+        }
+    }
+    return front;
+}
+
+// Writes the data and script next to the PNG (so the plot can be redrawn or restyled) and runs gnuplot.
+// Returns a note for the report: where the plot is, or why there is none.
+std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& runs) {
+    std::vector<std::pair<double, double>> points;
+    std::vector<std::string> labels;
+    std::vector<std::string> sceneOfRun;
+    std::map<std::string, int> sceneIndex;
+    for (const Json& run : runs) {
+        if (!run["error"].is_object()) continue;
+        points.emplace_back(run["frame_time_ms"]["median"].get<double>(),
+                            run["error"]["misclassified_percent"].get<double>());
+        labels.push_back(run["effect_name"].get<std::string>() + "/" + run["technique"].get<std::string>() +
+                         " " + std::to_string(run["map_size"].get<int>()));
+        sceneOfRun.push_back(run["scene"].get<std::string>());
+        sceneIndex.emplace(sceneOfRun.back(), static_cast<int>(sceneIndex.size()));
+    }
+    if (points.empty()) return "no run exposes its shadow term (SHADOWFX_VISIBILITY): nothing to plot";
+    {
+        std::ofstream data(outDir / "error_vs_time.dat");
+        data << "# median_frame_ms misclassified_percent \"label\" scene_index scene\n";
+        for (size_t i = 0; i < points.size(); ++i)
+            data << points[i].first << " " << points[i].second << " \"" << labels[i] << "\" "
+                 << sceneIndex[sceneOfRun[i]] << " " << sceneOfRun[i] << "\n";
+        // One front per scene: runs of different scenes are not alternatives to each other.
+        for (const auto& [scene, index] : sceneIndex) {
+            std::vector<std::pair<double, double>> scenePoints;
+            for (size_t i = 0; i < points.size(); ++i)
+                if (sceneOfRun[i] == scene) scenePoints.push_back(points[i]);
+            data << "\n\n# Pareto front of scene " << scene << "\n";
+            for (size_t i : paretoFront(scenePoints))
+                data << scenePoints[i].first << " " << scenePoints[i].second << "\n";
+        }
+    }
+    {
+        std::ofstream script(outDir / "error_vs_time.gp");
+        script << "set terminal pngcairo size 1100,750 font ',10' noenhanced\n"
+                  "set output 'error_vs_time.png'\n"
+                  "set title 'Shadow error against frame time (one marker per effect/technique/scene/map "
+                  "size)'\n"
+                  "set xlabel 'median frame time (ms, log scale)'\n"
+                  "set ylabel 'misclassified receiver pixels (%)'\n"
+                  "set grid\n"
+                  "set key outside right top\n"
+                  "set logscale x\nset yrange [0:*]\n"
+                  "plot ";
+        bool first = true;
+        for (const auto& [scene, index] : sceneIndex) {
+            script << (first ? "" : ", ") << "'error_vs_time.dat' index 0 using 1:($4==" << index
+                   << " ? $2 : 1/0) with points pt 7 ps 1.5 title 'scene " << scene << "'";
+            first = false;
+        }
+        script
+            << ", 'error_vs_time.dat' index 0 using 1:2:3 with labels offset 0.8,0.6 left font ',8' notitle"
+               ", for [s=1:"
+            << sceneIndex.size()
+            << "] 'error_vs_time.dat' index s using 1:2 with steps lw 2 dt 2 "
+               "lc rgb '#444444' title (s == 1 ? 'Pareto front (per scene)' : '')\n";
+    }
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+        return "gnuplot is not installed (Debian package gnuplot-nox): error_vs_time.png skipped; "
+               "error_vs_time.dat and error_vs_time.gp are there to plot later";
+    const std::string command = "cd '" + outDir.string() + "' && gnuplot error_vs_time.gp 2>gnuplot.log";
+    if (std::system(command.c_str()) != 0)
+        return "gnuplot failed (see " + (outDir / "gnuplot.log").string() + "): error_vs_time.png skipped";
+    std::error_code ignored;
+    std::filesystem::remove(outDir / "gnuplot.log", ignored);
+    return "";
+}
+
+std::string fixed(double value, int digits) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << value;
+    return out.str();
+}
+
+void writeReport(const std::filesystem::path& path, const Json& results, const std::string& plotNote) {
+    std::ofstream md(path);
+    md << "# shadowfx bench\n\n";
+    md << "GL renderer: `" << results["gl_renderer"].get<std::string>() << "`  \n";
+    md << "Frames: " << results["config"]["warmup"].get<int>() << " warm-up, then "
+       << results["config"]["frames"].get<int>() << " timed; frame " << results["config"]["width"].get<int>()
+       << "x" << results["config"]["height"].get<int>() << ".  \n";
+    md << "Errors are over receiver pixels (covered, N·L > 0) against the Embree ray-cast ground truth; "
+          "misclassified = false shadow + false light. Texel footprint: screen pixels covered by one "
+          "shadow-map "
+          "texel along its longest direction (Lloyd et al.), > 1 is undersampling.\n\n";
+    if (plotNote.empty()) {
+        md << "![error against frame time](error_vs_time.png)\n\n";
+    } else {
+        md << "_" << plotNote << "_\n\n";
+    }
+    md << "## Runs\n\n";
+    md << "| scene | effect | technique | map | misclassified % | false shadow % | false light % | MAE | p95 "
+          "| "
+          "frame ms (median [min–max]) | GPU ms | runtime CPU ms | texel footprint max / p95 / mean | errors "
+          "|\n";
+    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
+    for (const Json& run : results["runs"]) {
+        const Json& frame = run["frame_time_ms"];
+        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
+           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | ";
+        if (run["error"].is_object()) {
+            const Json& e = run["error"];
+            md << fixed(e["misclassified_percent"].get<double>(), 3) << " | "
+               << fixed(e["false_shadow_percent"].get<double>(), 3) << " | "
+               << fixed(e["false_light_percent"].get<double>(), 3) << " | "
+               << fixed(e["mae"].get<double>(), 4) << " | " << fixed(e["p95_abs_error"].get<double>(), 3)
+               << " | ";
+        } else {
+            md << "n/a | n/a | n/a | n/a | n/a | ";
+        }
+        md << fixed(frame["median"].get<double>(), 2) << " [" << fixed(frame["min"].get<double>(), 2) << "–"
+           << fixed(frame["max"].get<double>(), 2) << "] | "
+           << fixed(run["gpu_time_ms"]["median"].get<double>(), 2) << " | "
+           << fixed(run["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
+           << fixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
+           << fixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
+           << fixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
+        if (run["error_image"].is_string()) md << "[png](" << run["error_image"].get<std::string>() << ")";
+        md << " |\n";
+    }
+    md << "\n## Passes (median per frame)\n\n";
+    md << "| scene | effect | technique | map | pass | GPU ms | CPU ms | draws "
+          "|\n|---|---|---|---:|---|---:|---:|---:|\n";
+    for (const Json& run : results["runs"]) {
+        for (const Json& pass : run["passes"]) {
+            md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
+               << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+               << pass["name"].get<std::string>() << " | " << fixed(pass["gpu_ms"].get<double>(), 3) << " | "
+               << fixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>() << " |\n";
+        }
+    }
+    md << "\n## Runtime CPU time (median per frame, ms)\n\n"
+          "Script = interpreting the SAS scripts and the rest of the frame executor; binding = semantics and "
+          "uniforms; preshader = pass arguments and state expressions; GL = inside the driver's draw/clear "
+          "calls.\n\n";
+    md << "| scene | effect | technique | map | script | binding | preshader | overhead (sum) | GL |\n"
+          "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const Json& run : results["runs"]) {
+        const Json& c = run["runtime_cpu_ms"];
+        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
+           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+           << fixed(c["script"].get<double>(), 3) << " | " << fixed(c["binding"].get<double>(), 3) << " | "
+           << fixed(c["preshader"].get<double>(), 3) << " | " << fixed(c["overhead"].get<double>(), 3)
+           << " | " << fixed(c["gl"].get<double>(), 3) << " |\n";
+    }
+    md << "\n## Ground truth\n\n| scene | lights samples / pixel | soft | rays | seconds "
+          "|\n|---|---:|---|---:|---:|\n";
+    for (const Json& truth : results["ground_truth"]) {
+        md << "| " << truth["scene"].get<std::string>() << " | " << truth["samples_per_pixel"].get<int>()
+           << " | " << (truth["soft"].get<bool>() ? "yes" : "no") << " | " << truth["rays"].get<uint64_t>()
+           << " | " << fixed(truth["seconds"].get<double>(), 2) << " |\n";
+    }
+}
+
+}  // namespace
+
+int benchCommand(const Arguments& args) {
+    std::vector<std::string> effects;
+    for (const std::string& list : args.all("--effects"))
+        for (const std::string& effect : splitList(list)) effects.push_back(effect);
+    for (size_t i = 0; i < args.positionalCount(); ++i) effects.push_back(args.positional(i));
+    const std::vector<std::string> sceneNames = splitList(args.value("--scenes", "boxes"));
+    std::vector<int> mapSizes;
+    for (const std::string& size : splitList(args.value("--map-sizes", "1024"))) {
+        char* end = nullptr;
+        const long value = std::strtol(size.c_str(), &end, 10);
+        if (*end != '\0' || value < 1 || value > 16384) {
+            std::cerr << "shadowfx bench: --map-sizes: '" << size << "' is not a size between 1 and 16384\n";
+            return 2;
+        }
+        mapSizes.push_back(static_cast<int>(value));
+    }
+    const std::vector<std::string> techniqueFilter = splitList(args.value("--techniques"));
+    const int frames = args.intValue("--frames", 10);
+    const int warmup = args.intValue("--warmup", 2);
+    const int width = args.intValue("--width", 640);
+    const int height = args.intValue("--height", 480);
+    if (effects.empty() || sceneNames.empty() || mapSizes.empty()) {
+        std::cerr << "shadowfx bench: needs --effects, and non-empty --scenes and --map-sizes (see --help)\n";
+        return 2;
+    }
+    if (frames < 1 || warmup < 0 || width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+        std::cerr << "shadowfx bench: --frames must be >= 1, --warmup >= 0, the size between 1 and 16384\n";
+        return 2;
+    }
+    const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
+    if (!backend || *backend == runtime::Backend::GLFW) {
+        std::cerr << "shadowfx bench: --backend must be auto, osmesa or egl\n";
+        return 2;
+    }
+    runtime::GroundTruthOptions truthOptions;
+    truthOptions.areaSamples = args.intValue("--area-samples", 256);
+
+    const std::filesystem::path outDir = args.value("--out");
+    std::error_code fsError;
+    std::filesystem::create_directories(outDir / "errors", fsError);
+    if (fsError) {
+        std::cerr << "shadowfx bench: cannot create " << outDir.string() << ": " << fsError.message() << "\n";
+        return 1;
+    }
+
+    BenchSink sink;
+    runtime::ContextOptions contextOptions;
+    contextOptions.backend = *backend;
+    std::string contextError;
+    std::unique_ptr<runtime::GlContext> context = runtime::createContext(contextOptions, contextError);
+    if (!context) {
+        std::cerr << "shadowfx bench: " << contextError << "\n";
+        return 1;
+    }
+    const std::string glRenderer = context->renderer();
+    std::cerr << "bench: " << glRenderer << "\n";
+
+    // Ground truth, once per scene: it depends on neither the effect nor the map size.
+    std::vector<SceneTruth> truths;
+    truths.reserve(sceneNames.size());  // SceneTruth::light points into its own scene
+    Json truthJson = Json::array();
+    for (const std::string& name : sceneNames) {
+        // The scene's own diagnostic names a missing mesh file and the Debian package that ships it.
+        std::optional<runtime::Scene> scene = runtime::makeBuiltinScene(name, &sink);
+        if (!scene) {
+            std::cerr << "shadowfx bench: no scene '" << name << "' (built-in scenes:";
+            for (const std::string& known : runtime::builtinSceneNames()) std::cerr << " " << known;
+            std::cerr << ")\n";
+            return 1;
+        }
+        SceneTruth& t = truths.emplace_back();
+        t.scene = std::move(*scene);
+        t.light = t.scene.findLight("light0");
+        if (!t.light && !t.scene.lights.empty()) t.light = &t.scene.lights[0];
+        if (!t.light) {
+            std::cerr << "shadowfx bench: scene '" << name << "' has no light\n";
+            return 1;
+        }
+        std::cerr << "bench: ground truth for " << name << " (" << t.scene.triangleCount()
+                  << " triangles)...\n";
+        const auto start = Clock::now();
+        std::optional<runtime::GBuffer> gbuffer = runtime::renderGBuffer(t.scene, width, height, sink);
+        if (!gbuffer) {
+            std::cerr << "shadowfx bench: the G-buffer of scene '" << name << "' could not be rendered\n";
+            return 1;
+        }
+        t.gbuffer = std::move(*gbuffer);
+        const runtime::ShadowRayCaster caster(t.scene);
+        t.truth = caster.compute(t.gbuffer, *t.light, truthOptions);
+        t.receivers = runtime::receiverMask(t.gbuffer, *t.light);
+        t.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        truthJson.push_back(
+            Json{{"scene", name},
+                 {"soft", t.truth.soft},
+                 {"samples_per_pixel", t.truth.samplesPerPixel},
+                 {"rays", t.truth.raysCast},
+                 {"normal_offset", truthOptions.normalOffset * std::max(t.scene.bounds().radius(), 1e-3f)},
+                 {"receiver_pixels", std::count(t.receivers.begin(), t.receivers.end(), uint8_t{1})},
+                 {"seconds", t.seconds}});
+    }
+
+    fx::ParseOptions baseOptions;
+    baseOptions.includeDirs = args.all("-I");
+    for (const std::string& define : args.all("-D")) {
+        const size_t eq = define.find('=');
+        baseOptions.defines.emplace_back(define.substr(0, eq),
+                                         eq == std::string::npos ? "1" : define.substr(eq + 1));
+    }
+
+    // Compile every variant first: a broken effect stops the bench before any time is spent measuring.
+    std::map<std::pair<std::string, int>, EffectVariant> variants;
+    size_t runCount = 0;
+    for (const std::string& effect : effects) {
+        for (int mapSize : mapSizes) {
+            EffectVariant variant;
+            const std::string size = std::to_string(mapSize);
+            variant.timed = compileVariant(effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}}, sink);
+            variant.visibility =
+                compileVariant(effect, baseOptions,
+                               {{"SHADOWFX_SHADOW_MAP_SIZE", size}, {"SHADOWFX_VISIBILITY", "1"}}, sink);
+            if (!variant.timed || !variant.visibility || sink.errors() > 0) return 1;
+            variant.exposesVisibility = !sameFragmentShaders(*variant.timed, *variant.visibility);
+            for (const fx::TextureDesc& texture : variant.timed->textures)
+                variant.honoursMapSize =
+                    variant.honoursMapSize || (texture.width == mapSize && texture.height == mapSize);
+            if (!variant.exposesVisibility && mapSize == mapSizes.front())
+                std::cerr << "bench: " << effect
+                          << " does not use SHADOWFX_VISIBILITY: timed only, no error figures\n";
+            // An effect that ignores the size would give the same run once per size.
+            if (!variant.honoursMapSize && mapSize != mapSizes.front()) continue;
+            if (!variant.honoursMapSize)
+                std::cerr << "bench: " << effect << " has no " << size << "x" << size
+                          << " render target (SHADOWFX_SHADOW_MAP_SIZE unused): run at its own size only\n";
+            for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
+                if (techniqueFilter.empty() || std::find(techniqueFilter.begin(), techniqueFilter.end(),
+                                                         technique.name) != techniqueFilter.end())
+                    runCount += truths.size();
+            }
+            variants.emplace(std::make_pair(effect, mapSize), std::move(variant));
+        }
+    }
+    if (runCount == 0) {
+        std::cerr << "shadowfx bench: no technique matches --techniques\n";
+        return 2;
+    }
+
+    Json runs = Json::array();
+    Progress progress(runCount);
+    for (const std::string& effect : effects) {
+        const std::string effectName = std::filesystem::path(effect).stem().string();
+        for (int mapSize : mapSizes) {
+            auto found = variants.find({effect, mapSize});
+            if (found == variants.end()) continue;
+            EffectVariant& variant = found->second;
+            std::unique_ptr<runtime::EffectRenderer> timed =
+                runtime::EffectRenderer::create(variant.timed, sink);
+            std::unique_ptr<runtime::EffectRenderer> visibility =
+                runtime::EffectRenderer::create(variant.visibility, sink);
+            if (!timed || !visibility) return 1;
+            for (const SceneTruth& t : truths) {
+                const runtime::Bounds bounds = t.scene.bounds();
+                const runtime::AliasingMeasure aliasing = runtime::perspectiveAliasing(
+                    t.gbuffer, t.receivers, t.light->view(bounds), t.light->projection(bounds), mapSize);
+                for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
+                    if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
+                                                              technique.name) == techniqueFilter.end())
+                        continue;
+                    progress.show(effectName + " " + technique.name + " on " + t.scene.name + ", map " +
+                                  std::to_string(mapSize));
+                    runtime::FrameOptions options;
+                    options.width = width;
+                    options.height = height;
+                    options.technique = technique.name;
+                    options.timePasses = true;
+
+                    std::vector<double> frameMs, gpuMs, script, binding, preshader, gl, overhead;
+                    std::vector<std::vector<double>> passGpu, passCpu;
+                    std::vector<std::string> passNames;
+                    std::vector<int> passDraws;
+                    for (int frame = 0; frame < warmup + frames; ++frame) {
+                        runtime::FrameStats stats;
+                        const auto start = Clock::now();
+                        // With timePasses, render() returns once the GPU has finished the frame.
+                        if (!timed->render(t.scene, options, sink, &stats) || sink.errors() > 0) {
+                            progress.end();
+                            return 1;
+                        }
+                        const double wall =
+                            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                        if (frame < warmup) continue;
+                        frameMs.push_back(wall);
+                        double gpu = 0.0;
+                        if (passNames.empty()) {
+                            for (const runtime::PassTiming& pass : stats.passTimings) {
+                                passNames.push_back(pass.pass);
+                                passDraws.push_back(pass.draws);
+                            }
+                            passGpu.resize(passNames.size());
+                            passCpu.resize(passNames.size());
+                        }
+                        for (size_t p = 0; p < stats.passTimings.size() && p < passNames.size(); ++p) {
+                            passGpu[p].push_back(ms(stats.passTimings[p].gpuNs));
+                            passCpu[p].push_back(ms(stats.passTimings[p].cpuNs));
+                            gpu += ms(stats.passTimings[p].gpuNs);
+                        }
+                        gpuMs.push_back(gpu);
+                        script.push_back(ms(stats.cpu.scriptNs()));
+                        binding.push_back(ms(stats.cpu.bindingNs));
+                        preshader.push_back(ms(stats.cpu.preshaderNs));
+                        gl.push_back(ms(stats.cpu.glNs));
+                        overhead.push_back(
+                            ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
+                    }
+                    const runtime::FrameImage shaded = timed->readFrame();
+
+                    Json record{{"effect", effect},
+                                {"effect_name", effectName},
+                                {"technique", technique.name},
+                                {"scene", t.scene.name},
+                                {"map_size", mapSize},
+                                {"map_size_honoured", variant.honoursMapSize},
+                                {"width", width},
+                                {"height", height},
+                                {"gl_renderer", glRenderer},
+                                {"frames", frames},
+                                {"warmup_frames", warmup},
+                                {"frame_time_ms", toJson(spreadOf(frameMs))},
+                                {"gpu_time_ms", toJson(spreadOf(gpuMs))}};
+                    Json passes = Json::array();
+                    for (size_t p = 0; p < passNames.size(); ++p) {
+                        passes.push_back(Json{{"name", passNames[p]},
+                                              {"gpu_ms", spreadOf(passGpu[p]).median},
+                                              {"cpu_ms", spreadOf(passCpu[p]).median},
+                                              {"draws", passDraws[p]}});
+                    }
+                    record["passes"] = passes;
+                    record["runtime_cpu_ms"] = Json{{"script", spreadOf(script).median},
+                                                    {"binding", spreadOf(binding).median},
+                                                    {"preshader", spreadOf(preshader).median},
+                                                    {"gl", spreadOf(gl).median},
+                                                    {"overhead", spreadOf(overhead).median}};
+                    record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
+                                              {"mean_texel_footprint_px", aliasing.meanFootprint},
+                                              {"p95_texel_footprint_px", aliasing.p95Footprint},
+                                              {"pixels", aliasing.pixels}};
+                    record["ground_truth"] =
+                        Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
+                    record["error"] = nullptr;
+                    record["error_image"] = nullptr;
+                    if (variant.exposesVisibility) {
+                        runtime::FrameOptions visibilityOptions = options;
+                        visibilityOptions.timePasses = false;
+                        if (!visibility->render(t.scene, visibilityOptions, sink) || sink.errors() > 0) {
+                            progress.end();
+                            return 1;
+                        }
+                        const std::vector<float> effectVisibility =
+                            runtime::visibilityFromFrame(visibility->readFrame());
+                        const runtime::ShadowErrors errors =
+                            runtime::compareVisibility(t.truth.visibility, effectVisibility, t.receivers);
+                        record["error"] = Json{{"receiver_pixels", errors.receiverPixels},
+                                               {"false_shadow_pixels", errors.falseShadowPixels},
+                                               {"false_light_pixels", errors.falseLightPixels},
+                                               {"false_shadow_percent", errors.falseShadowPercent},
+                                               {"false_light_percent", errors.falseLightPercent},
+                                               {"misclassified_percent", errors.misclassifiedPercent},
+                                               {"mae", errors.meanAbsoluteError},
+                                               {"p95_abs_error", errors.p95AbsoluteError}};
+                        const std::string image = "errors/" +
+                                                  safeName(effectName + "_" + technique.name + "_" +
+                                                           t.scene.name + "_" + std::to_string(mapSize)) +
+                                                  ".png";
+                        std::string writeError;
+                        if (runtime::writePng(runtime::errorImage(shaded, t.truth.visibility,
+                                                                  effectVisibility, t.receivers),
+                                              (outDir / image).string(), writeError)) {
+                            record["error_image"] = image;
+                        } else {
+                            std::cerr << "\nbench: " << writeError << "\n";
+                        }
+                    }
+                    runs.push_back(std::move(record));
+                }
+            }
+        }
+    }
+    progress.end();
+
+    Json results{{"schema_version", kSchemaVersion},
+                 {"generator", "shadowfx bench"},
+                 {"gl_renderer", glRenderer},
+                 {"backend", std::string(runtime::backendName(context->backend()))},
+                 {"config", Json{{"effects", effects},
+                                 {"scenes", sceneNames},
+                                 {"map_sizes", mapSizes},
+                                 {"techniques", techniqueFilter},
+                                 {"frames", frames},
+                                 {"warmup", warmup},
+                                 {"width", width},
+                                 {"height", height},
+                                 {"area_samples", truthOptions.areaSamples}}},
+                 {"ground_truth", truthJson},
+                 {"runs", runs}};
+    {
+        std::ofstream out(outDir / "results.json");
+        out << results.dump(2) << "\n";
+        if (!out) {
+            std::cerr << "shadowfx bench: cannot write " << (outDir / "results.json").string() << "\n";
+            return 1;
+        }
+    }
+    const std::string plotNote = plotErrorVsTime(outDir, runs);
+    if (!plotNote.empty()) std::cerr << "bench: " << plotNote << "\n";
+    writeReport(outDir / "report.md", results, plotNote);
+    std::cout << (outDir / "report.md").string() << "\n";
+    return 0;
+}
+
+}  // namespace shadowfx::cli

@@ -1,0 +1,181 @@
+// `shadowfx bench` end to end on a tiny configuration (one scene, a small frame, one frame per run): its
+// results.json must validate against docs/results.schema.json, its report and images must exist, and its
+// figures must be sane (the thesis effect's shadows are mostly right). Also the per-pass timings of
+// FrameOptions::timePasses that the bench and the viewer read.
+#include "EffectHarness.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace shadowfx::test {
+namespace {
+
+using Json = nlohmann::json;
+
+// The subset of JSON Schema the checked-in schema uses: type (one or a list), required, properties,
+// items, enum, minimum and local $ref. Returns the first violation, with its JSON path.
+::testing::AssertionResult validate(const Json& value, const Json& schema, const Json& root,
+                                    const std::string& path) {
+    if (schema.contains("$ref")) {
+        const std::string ref = schema["$ref"];
+        const std::string prefix = "#/$defs/";
+        if (ref.rfind(prefix, 0) != 0) return ::testing::AssertionFailure() << "unsupported $ref " << ref;
+        return validate(value, root["$defs"][ref.substr(prefix.size())], root, path);
+    }
+    if (schema.contains("type")) {
+        const std::vector<std::string> types =
+            schema["type"].is_array() ? schema["type"].get<std::vector<std::string>>()
+                                      : std::vector<std::string>{schema["type"].get<std::string>()};
+        bool matches = false;
+        for (const std::string& type : types) {
+            matches = matches || (type == "object" && value.is_object()) ||
+                      (type == "array" && value.is_array()) || (type == "string" && value.is_string()) ||
+                      (type == "boolean" && value.is_boolean()) || (type == "null" && value.is_null()) ||
+                      (type == "number" && value.is_number()) ||
+                      (type == "integer" && value.is_number_integer());
+        }
+        if (!matches)
+            return ::testing::AssertionFailure()
+                   << path << ": " << value.dump() << " is not " << schema["type"].dump();
+    }
+    if (schema.contains("enum")) {
+        bool found = false;
+        for (const Json& allowed : schema["enum"]) found = found || allowed == value;
+        if (!found)
+            return ::testing::AssertionFailure()
+                   << path << ": " << value.dump() << " not in " << schema["enum"].dump();
+    }
+    if (schema.contains("minimum") && value.is_number() &&
+        value.get<double>() < schema["minimum"].get<double>())
+        return ::testing::AssertionFailure()
+               << path << ": " << value.dump() << " < minimum " << schema["minimum"].dump();
+    if (value.is_object()) {
+        if (schema.contains("required"))
+            for (const Json& key : schema["required"])
+                if (!value.contains(key.get<std::string>()))
+                    return ::testing::AssertionFailure()
+                           << path << ": required key '" << key.get<std::string>() << "' missing";
+        if (schema.contains("properties"))
+            for (const auto& [key, sub] : schema["properties"].items())
+                if (value.contains(key))
+                    if (auto r = validate(value[key], sub, root, path + "." + key); !r) return r;
+    }
+    if (value.is_array() && schema.contains("items"))
+        for (size_t i = 0; i < value.size(); ++i)
+            if (auto r = validate(value[i], schema["items"], root, path + "[" + std::to_string(i) + "]"); !r)
+                return r;
+    return ::testing::AssertionSuccess();
+}
+
+Json readJson(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return Json::parse(in);
+}
+
+int runTool(const std::string& arguments, std::string& output) {
+    const std::string command = "cd '" + std::string(SHADOWFX_SOURCE_DIR) + "' && '" +
+                                std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx' " +
+                                arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return -1;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench";
+    std::filesystem::remove_all(out);
+    std::string output;
+    const int code = runTool(
+        "bench --effects effects/thesis_fxcomposer.fx --scenes boxes --map-sizes 256,512 "
+        "--frames 1 --warmup 0 --width 96 --height 72 --out " +
+            out.string(),
+        output);
+    ASSERT_EQ(code, 0) << output;
+    EXPECT_NE(output.find("report.md"), std::string::npos) << output;
+
+    const Json results = readJson(out / "results.json");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(results, schema, schema, "$"));
+    EXPECT_EQ(results["schema_version"], 1);
+
+    // thesis_fxcomposer has techniques main and hardware: 2 techniques x 2 sizes x 1 scene.
+    ASSERT_EQ(results["runs"].size(), 4u);
+    for (const Json& run : results["runs"]) {
+        EXPECT_TRUE(run["map_size_honoured"].get<bool>());
+        ASSERT_TRUE(run["error"].is_object()) << "the thesis effect exposes SHADOWFX_VISIBILITY";
+        EXPECT_GT(run["error"]["receiver_pixels"].get<int>(), 96 * 72 / 4);
+        EXPECT_LT(run["error"]["misclassified_percent"].get<double>(), 5.0) << run.dump(2);
+        EXPECT_GT(run["frame_time_ms"]["median"].get<double>(), 0.0);
+        EXPECT_FALSE(run["passes"].empty());
+        EXPECT_GT(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 0.0);
+        ASSERT_TRUE(run["error_image"].is_string());
+        EXPECT_TRUE(std::filesystem::exists(out / run["error_image"].get<std::string>()));
+    }
+    // Twice the map resolution: half the texel footprint (the same light frustum, the same pixels).
+    const Json& small = results["runs"][0];
+    const Json& large = results["runs"][2];
+    ASSERT_EQ(small["map_size"], 256);
+    ASSERT_EQ(large["map_size"], 512);
+    EXPECT_NEAR(large["aliasing"]["mean_texel_footprint_px"].get<double>() * 2.0,
+                small["aliasing"]["mean_texel_footprint_px"].get<double>(), 1e-6);
+    EXPECT_TRUE(std::filesystem::exists(out / "report.md"));
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+        EXPECT_TRUE(std::filesystem::exists(out / "error_vs_time.png"));
+    }
+}
+
+TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
+    std::string output;
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_bad";
+    EXPECT_EQ(
+        runTool("bench --effects effects/thesis_fxcomposer.fx --scenes no-such-scene --out " + out.string(),
+                output),
+        1);
+    EXPECT_NE(output.find("no-such-scene"), std::string::npos) << output;
+}
+
+TEST(PassTimings, TimedFramesReportEveryPassWithItsDraws) {
+    std::unique_ptr<runtime::EffectRenderer> renderer =
+        loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    fx::DiagnosticList diagnostics;
+    runtime::FrameOptions options;
+    options.width = 64;
+    options.height = 48;
+    options.technique = "main";
+    runtime::FrameStats stats;
+    ASSERT_TRUE(renderer->render(scene, options, diagnostics, &stats)) << diagnostics.str();
+    EXPECT_TRUE(stats.passTimings.empty()) << "untimed frames pay for no queries";
+
+    options.timePasses = true;
+    ASSERT_TRUE(renderer->render(scene, options, diagnostics, &stats)) << diagnostics.str();
+    ASSERT_EQ(stats.passTimings.size(), 3u);
+    EXPECT_EQ(stats.passTimings[0].pass, "ClearShadowMap");
+    EXPECT_EQ(stats.passTimings[1].pass, "RenderShadowMap");
+    EXPECT_EQ(stats.passTimings[2].pass, "RenderScene");
+    EXPECT_EQ(stats.passTimings[0].draws, 0);
+    const int objects = static_cast<int>(scene.objects.size());
+    EXPECT_EQ(stats.passTimings[1].draws, objects);
+    EXPECT_EQ(stats.passTimings[2].draws, objects);
+    uint64_t gpu = 0;
+    for (const runtime::PassTiming& pass : stats.passTimings) gpu += pass.gpuNs;
+    EXPECT_GT(gpu, 0u);
+    EXPECT_GT(stats.cpu.totalNs, 0u);
+    EXPECT_GT(stats.cpu.bindingNs, 0u);
+    EXPECT_LE(stats.cpu.bindingNs + stats.cpu.preshaderNs + stats.cpu.glNs, stats.cpu.totalNs);
+}
+
+}  // namespace
+}  // namespace shadowfx::test

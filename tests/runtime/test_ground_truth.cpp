@@ -1,0 +1,176 @@
+// Ground truth (runtime/GroundTruth.h) on an analytic case: a 2x2 square one unit above a plane, a
+// directional light straight down. The exact shadow is the square's footprint |x| < 1, |z| < 1 on the
+// plane; every G-buffer pixel whose neighbourhood lies on one side of that outline must be classified as
+// the closed form says. The G-buffer's positions themselves are checked against the camera ray through
+// each pixel centre.
+#include "GlTestSupport.h"
+
+#include <runtime/GBuffer.h>
+#include <runtime/GroundTruth.h>
+#include <runtime/Scene.h>
+
+#include <fx/Diagnostics.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace {
+
+constexpr int kWidth = 200;
+constexpr int kHeight = 150;
+
+runtime::Scene squareOverPlane() {
+    runtime::Scene scene;
+    scene.name = "square-over-plane";
+    runtime::SceneObject plane;
+    plane.name = "plane";
+    plane.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(12.0f, 12.0f));
+    scene.objects.push_back(plane);
+    runtime::SceneObject square;
+    square.name = "square";
+    square.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(2.0f, 2.0f));
+    square.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    scene.objects.push_back(square);
+    scene.camera.position = glm::vec3(1.5f, 7.0f, -6.0f);
+    scene.camera.target = glm::vec3(0.0f);
+    runtime::Light light;
+    light.type = runtime::Light::Type::Directional;
+    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    scene.lights.push_back(light);
+    return scene;
+}
+
+bool inSquareShadow(const glm::vec3& p) {
+    return std::abs(p.x) < 1.0f && std::abs(p.z) < 1.0f;
+}
+
+class GroundTruthSquare : public ::testing::Test {
+protected:
+    void SetUp() override {
+        testsupport::sharedContext();
+        scene = squareOverPlane();
+        fx::DiagnosticList diagnostics;
+        std::optional<runtime::GBuffer> rendered =
+            runtime::renderGBuffer(scene, kWidth, kHeight, diagnostics);
+        ASSERT_TRUE(rendered) << diagnostics.str();
+        gbuffer = std::move(*rendered);
+    }
+    runtime::Scene scene;
+    runtime::GBuffer gbuffer;
+};
+
+TEST_F(GroundTruthSquare, GBufferPositionsLieOnTheCameraRayThroughEachPixelCentre) {
+    const glm::mat4 inverse =
+        glm::inverse(scene.camera.projection(float(kWidth) / kHeight) * scene.camera.view());
+    size_t planePixels = 0, squarePixels = 0, checked = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const size_t i = gbuffer.index(x, y);
+            if (gbuffer.objectId[i] == 2) ++squarePixels;
+            if (gbuffer.objectId[i] != 1) continue;
+            ++planePixels;
+            // Pixel centre -> NDC (D3D: y up in NDC, row 0 at the top) -> a ray, intersected with y = 0.
+            const glm::vec2 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, 1.0f - (y + 0.5f) / kHeight * 2.0f);
+            glm::vec4 nearPoint = inverse * glm::vec4(ndc, 0.0f, 1.0f),
+                      farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+            const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w, b = glm::vec3(farPoint) / farPoint.w;
+            const glm::vec3 hit = a + (b - a) * (a.y / (a.y - b.y));
+            ++checked;
+            EXPECT_LT(glm::length(hit - gbuffer.position[i]), 0.01f) << "pixel (" << x << ", " << y << ")";
+            EXPECT_NEAR(gbuffer.normal[i].y, 1.0f, 1e-4f);
+            if (::testing::Test::HasFailure()) return;
+        }
+    }
+    EXPECT_GT(planePixels, size_t(kWidth * kHeight / 3));
+    EXPECT_GT(squarePixels, 100u);
+    EXPECT_GT(checked, 0u);
+}
+
+TEST_F(GroundTruthSquare, HardShadowMatchesTheClosedFormAwayFromTheOutline) {
+    const runtime::ShadowRayCaster caster(scene);
+    const runtime::GroundTruth truth = caster.compute(gbuffer, scene.lights[0]);
+    EXPECT_FALSE(truth.soft);
+    EXPECT_EQ(truth.samplesPerPixel, 1);
+    size_t compared = 0, shadowed = 0, wrong = 0;
+    for (int y = 1; y + 1 < kHeight; ++y) {
+        for (int x = 1; x + 1 < kWidth; ++x) {
+            const size_t i = gbuffer.index(x, y);
+            if (!gbuffer.covered(i)) {
+                EXPECT_EQ(truth.visibility[i], -1.0f);
+                continue;
+            }
+            if (gbuffer.objectId[i] == 2) {  // the square's top: nothing above it
+                EXPECT_EQ(truth.visibility[i], 1.0f) << "square pixel (" << x << ", " << y << ")";
+                continue;
+            }
+            // Skip pixels within a pixel of the outline: a neighbour on the other side of it (or on the
+            // square).
+            const bool expected = inSquareShadow(gbuffer.position[i]);
+            bool nearOutline = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const size_t j = gbuffer.index(x + dx, y + dy);
+                    nearOutline = nearOutline || gbuffer.objectId[j] != 1 ||
+                                  inSquareShadow(gbuffer.position[j]) != expected;
+                }
+            if (nearOutline) continue;
+            ++compared;
+            shadowed += expected;
+            const bool rayShadowed = truth.visibility[i] == 0.0f;
+            if (rayShadowed != expected && ++wrong <= 5)
+                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << gbuffer.position[i].x << ", "
+                              << gbuffer.position[i].z << "): ray cast says "
+                              << (rayShadowed ? "shadow" : "lit");
+        }
+    }
+    EXPECT_EQ(wrong, 0u) << "of " << compared;
+    EXPECT_GT(shadowed, 100u) << "the square's shadow (partly hidden behind the square) should be visible";
+    EXPECT_GT(compared - shadowed, 1000u);
+}
+
+TEST_F(GroundTruthSquare, AreaLightGivesUmbraPenumbraAndRecordsItsSamples) {
+    runtime::Light light = scene.lights[0];
+    // A directional light's disk sits two scene radii (~17 units) away: radius 4 gives a ~0.5-unit penumbra.
+    light.areaRadius = 4.0f;
+    runtime::GroundTruthOptions options;
+    options.areaSamples = 256;
+    const runtime::ShadowRayCaster caster(scene);
+    const runtime::GroundTruth truth = caster.compute(gbuffer, light, options);
+    EXPECT_TRUE(truth.soft);
+    EXPECT_EQ(truth.samplesPerPixel, 256);
+    size_t umbra = 0, lit = 0, penumbra = 0;
+    for (size_t i = 0; i < gbuffer.pixelCount(); ++i) {
+        if (gbuffer.objectId[i] != 1) continue;
+        const glm::vec3 p = gbuffer.position[i];
+        const float v = truth.visibility[i];
+        ASSERT_GE(v, 0.0f);
+        ASSERT_LE(v, 1.0f);
+        if (std::abs(p.x) < 0.5f && std::abs(p.z) < 0.5f) {  // deep inside: the whole disk is hidden
+            EXPECT_EQ(v, 0.0f);
+            ++umbra;
+        } else if (std::abs(p.x) > 1.5f || std::abs(p.z) > 1.5f) {  // far outside: all of it is visible
+            EXPECT_EQ(v, 1.0f);
+            ++lit;
+        } else if (v > 0.05f && v < 0.95f) {
+            ++penumbra;
+        }
+    }
+    EXPECT_GT(umbra, 20u);
+    EXPECT_GT(lit, 1000u);
+    EXPECT_GT(penumbra, 100u);
+}
+
+TEST(ShadowRayCaster, SegmentQueriesAgreeWithTheBruteForceReference) {
+    runtime::Scene scene = squareOverPlane();
+    const runtime::ShadowRayCaster caster(scene);
+    for (float x = -2.0f; x <= 2.0f; x += 0.37f) {
+        for (float z = -2.0f; z <= 2.0f; z += 0.41f) {
+            const glm::vec3 from(x, 0.01f, z), to(x * 0.5f, 5.0f, z);
+            EXPECT_EQ(caster.occluded(from, to - from, 1.0f), runtime::segmentOccluded(scene, from, to))
+                << x << ", " << z;
+        }
+    }
+}
+
+}  // namespace

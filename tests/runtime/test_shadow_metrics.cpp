@@ -1,0 +1,93 @@
+// Shadow metrics (runtime/ShadowMetrics.h) on synthetic images whose answers are known by construction.
+#include <runtime/ShadowMetrics.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+TEST(ShadowMetrics, KnownFalseShadowAndFalseLightCountsGiveTheirPercentages) {
+    // 200 receivers: 100 lit and 100 shadowed in truth; the effect darkens 7 lit ones and lights 3 shadowed.
+    std::vector<float> truth(250, 1.0f), effect(250, 1.0f);
+    std::vector<uint8_t> receivers(250, 1);
+    for (size_t i = 100; i < 200; ++i) truth[i] = effect[i] = 0.0f;
+    for (size_t i = 0; i < 7; ++i) effect[i] = 0.0f;
+    for (size_t i = 100; i < 103; ++i) effect[i] = 1.0f;
+    // 50 pixels that do not count: 40 non-receivers with wrong answers, 10 background (truth -1).
+    for (size_t i = 200; i < 240; ++i) receivers[i] = 0, effect[i] = 0.0f;
+    for (size_t i = 240; i < 250; ++i) truth[i] = -1.0f, effect[i] = 0.0f;
+
+    const runtime::ShadowErrors e = runtime::compareVisibility(truth, effect, receivers);
+    EXPECT_EQ(e.receiverPixels, 200u);
+    EXPECT_EQ(e.falseShadowPixels, 7u);
+    EXPECT_EQ(e.falseLightPixels, 3u);
+    EXPECT_DOUBLE_EQ(e.falseShadowPercent, 3.5);
+    EXPECT_DOUBLE_EQ(e.falseLightPercent, 1.5);
+    EXPECT_DOUBLE_EQ(e.misclassifiedPercent, 5.0);
+    EXPECT_DOUBLE_EQ(e.meanAbsoluteError, 10.0 / 200.0);
+    EXPECT_EQ(e.p95AbsoluteError, 0.0);  // exactly 95% of the receivers are right
+}
+
+TEST(ShadowMetrics, SoftErrorsGiveMeanAndPercentile) {
+    // Truth 0.5 everywhere; effect 0.5 + k/100 for k = 0..99: errors 0.00 .. 0.99.
+    std::vector<float> truth(100, 0.5f), effect(100);
+    std::vector<uint8_t> receivers(100, 1);
+    for (size_t k = 0; k < 100; ++k) effect[k] = std::min(1.0f, 0.5f + k / 200.0f);
+    const runtime::ShadowErrors e = runtime::compareVisibility(truth, effect, receivers);
+    EXPECT_NEAR(e.meanAbsoluteError, 99.0 / 2.0 / 200.0, 1e-6);
+    EXPECT_NEAR(e.p95AbsoluteError, 94.0 / 200.0, 1e-6);  // nearest rank: the 95th smallest of 100
+    EXPECT_EQ(e.falseShadowPixels, 0u);                   // 0.5 counts as lit on both sides
+}
+
+TEST(ShadowMetrics, ErrorImagePaintsFalseShadowRedFalseLightBlueOverGrey) {
+    runtime::FrameImage frame;
+    frame.width = 3;
+    frame.height = 1;
+    frame.rgba = {200, 100, 50, 255, 200, 100, 50, 255, 200, 100, 50, 255};
+    const std::vector<float> truth{1.0f, 0.0f, 1.0f}, effect{0.0f, 1.0f, 1.0f};
+    const runtime::FrameImage image = runtime::errorImage(frame, truth, effect, {1, 1, 1});
+    EXPECT_EQ(image.pixel(0, 0)[0], 255);
+    EXPECT_EQ(image.pixel(0, 0)[2], 0);
+    EXPECT_EQ(image.pixel(1, 0)[0], 0);
+    EXPECT_EQ(image.pixel(1, 0)[2], 255);
+    EXPECT_EQ(image.pixel(2, 0)[0], image.pixel(2, 0)[1]);  // grey
+    EXPECT_EQ(image.pixel(2, 0)[1], image.pixel(2, 0)[2]);
+}
+
+TEST(ShadowMetrics, ReceiverMaskKeepsCoveredPixelsFacingTheLight) {
+    runtime::GBuffer gbuffer;
+    gbuffer.width = 3;
+    gbuffer.height = 1;
+    gbuffer.position.assign(3, glm::vec3(0.0f));
+    gbuffer.normal = {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::vec3(0, 1, 0)};
+    gbuffer.objectId = {1, 1, 0};
+    runtime::Light light;  // directional, straight down
+    EXPECT_EQ(runtime::receiverMask(gbuffer, light), (std::vector<uint8_t>{1, 0, 0}));
+}
+
+// A plane seen head-on by an orthographic-like grid: every pixel steps 0.1 world units in x and z, and a
+// directional light straight down maps 2 * radius world units onto mapSize texels. One texel therefore
+// covers (2 * radius / mapSize) / 0.1 pixels in both directions.
+TEST(ShadowMetrics, TexelFootprintOfAUniformGridIsTheRatioOfTexelToPixelSize) {
+    runtime::GBuffer gbuffer;
+    gbuffer.width = gbuffer.height = 64;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            gbuffer.position.emplace_back(x * 0.1f - 3.2f, 0.0f, y * 0.1f - 3.2f);
+            gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
+            gbuffer.objectId.push_back(1);
+        }
+    runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
+    runtime::Light light;
+    const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
+    const int mapSize = 256;
+    const runtime::AliasingMeasure m = runtime::perspectiveAliasing(gbuffer, receivers, light.view(bounds),
+                                                                    light.projection(bounds), mapSize);
+    const double expected = (2.0 * bounds.radius() / mapSize) / 0.1;
+    EXPECT_EQ(m.pixels, gbuffer.pixelCount());
+    EXPECT_NEAR(m.meanFootprint, expected, 1e-3 * expected);
+    EXPECT_NEAR(m.maxFootprint, expected, 1e-3 * expected);
+}
+
+}  // namespace
