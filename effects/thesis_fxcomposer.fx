@@ -9,6 +9,10 @@
 //
 // Depth conventions: the light's projection maps the scene into clip depth [0, 1]; the shadow map stores
 // that depth times ZMaxValue (the listing's fixed-range scaling, with ShadowRange = 1 for this range).
+//
+// Measurement hooks (README, "Writing effects"): SHADOWFX_SHADOW_MAP_SIZE overrides the shadow map's size,
+// and SHADOWFX_VISIBILITY makes the scene passes write the shadow factor (1 lit, 0 shadowed) instead of
+// the shaded colour, for `shadowfx bench`'s comparison with the ray-cast ground truth.
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -16,7 +20,11 @@
 #define ZMaxValue 130944/16.0
 #define ShadowRange 1.0
 #define ShadowRangeMultiplier (ZMaxValue/ShadowRange)
+#ifdef SHADOWFX_SHADOW_MAP_SIZE
+#define SHADOW_MAP_SIZE SHADOWFX_SHADOW_MAP_SIZE
+#else
 #define SHADOW_MAP_SIZE 1024
+#endif
 
 float Script : STANDARDSGLOBAL
 <
@@ -248,7 +256,11 @@ float4 Shade(VertexOutput IN, float shadowed)
 
 float4 RenderScenePS(VertexOutput IN) : COLOR
 {
+#ifdef SHADOWFX_VISIBILITY
+    return float4(GetShadow(IN.LP).xxx, 1);
+#else
     return Shade(IN, GetShadow(IN.LP));
+#endif
 }
 
 // Hardware shadow map: tex2Dproj on a depth target returns the filtered depth comparison.
@@ -257,7 +269,11 @@ float4 RenderSceneHardwarePS(VertexOutput IN) : COLOR
     float4 lp = IN.LP;
     float2 uv = ShadowMapUV(lp);
     float4 coord = float4(uv * lp.w, lp.z - Bias * lp.w, lp.w);
+#ifdef SHADOWFX_VISIBILITY
+    return float4(tex2Dproj(ShadowDepthSampler, coord).xxx, 1);
+#else
     return Shade(IN, tex2Dproj(ShadowDepthSampler, coord).x);
+#endif
 }
 
 // [SECTION] Techniques

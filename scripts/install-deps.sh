@@ -9,6 +9,13 @@ packages=(
   libspirv-cross-c-shared-dev spirv-cross
   libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglfw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libstb-dev
+  libassimp-dev nlohmann-json3-dev
+  # Meshes the built-in scenes read where Debian installs them (runtime/src/AssetScenes.cpp).
+  glmark2-data assimp-testmodels
+  # `shadowfx bench`: Embree casts the ground truth's shadow rays; gnuplot draws error_vs_time.png.
+  libembree-dev gnuplot-nox
+  # `shadowfx view`: Dear ImGui (static, with its GLFW/OpenGL3 backends); Xvfb runs its test without a display.
+  libimgui-dev xvfb
 )
 
 missing=()

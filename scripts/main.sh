@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# The main job: install what is missing, build, and render the thesis-style FX Composer effect headlessly.
+# The main job: install what is missing, build, render the thesis-style FX Composer effect headlessly, and
+# measure it: `shadowfx bench` scores each technique's shadows against the ray-cast ground truth and times
+# its frames (a default set that takes a minute or two on two cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -8,3 +10,7 @@ mkdir -p out
 build/samples/shadowfx/shadowfx render effects/thesis_fxcomposer.fx --scene boxes --out out/thesis_fxcomposer.png \
   --width 800 --height 600 --verbose
 echo "main: wrote $(pwd)/out/thesis_fxcomposer.png"
+LP_NUM_THREADS="${LP_NUM_THREADS:-2}" build/samples/shadowfx/shadowfx bench --effects effects/thesis_fxcomposer.fx \
+  --techniques main,hardware --scenes boxes,teapot --map-sizes 512,1024 --frames 5 --warmup 2 \
+  --width 640 --height 480 --out out/bench
+echo "main: bench report $(pwd)/out/bench/report.md (results.json, error_vs_time.png, errors/*.png beside it)"

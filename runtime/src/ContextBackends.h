@@ -22,8 +22,7 @@ std::unique_ptr<GlContext> createGlfwContext(const ContextOptions& options, std:
 // core profile, and sets the conventions the whole runtime relies on (D3D clip space:
 // glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE); pack/unpack alignment 1; seamless cube maps) and, for
 // debug contexts, KHR_debug output to the debug sink.
-bool initializeCurrentContext(Backend backend, ProcAddressFn getProcAddress, bool debug,
-                              std::string& error);
+bool initializeCurrentContext(Backend backend, ProcAddressFn getProcAddress, bool debug, std::string& error);
 
 // For makeCurrent: the gl:: pointers are per process, so switching to a context of another backend
 // (another libGL implementation) reloads them. A no-op when this backend's functions are loaded.

@@ -12,6 +12,7 @@
 #include "GpuProgram.h"
 #include "GpuTexture.h"
 #include "Image.h"
+#include "PassTimer.h"
 #include "RenderStateApplier.h"
 #include "SamplerObject.h"
 #include "ScriptInterpreter.h"
@@ -133,10 +134,12 @@ void EffectRenderer::Impl::ensureFrameResources(int width, int height) {
     }
     for (const fx::TextureDesc& desc : compiled->textures) {
         if (!isRenderTarget(desc)) continue;
-        const int w = desc.width > 0 ? desc.width
-                                     : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width)));
-        const int h = desc.height > 0 ? desc.height
-                                      : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height)));
+        const int w = desc.width > 0
+                          ? desc.width
+                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width)));
+        const int h = desc.height > 0
+                          ? desc.height
+                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height)));
         auto it = textures.find(desc.parameter);
         if (it != textures.end() && it->second.width() == w && it->second.height() == h) continue;
         if (it != textures.end()) framebuffers.evict(it->second);
@@ -191,7 +194,9 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(impl)));
 }
 
-const fx::CompiledEffect& EffectRenderer::effect() const { return *mImpl->compiled; }
+const fx::CompiledEffect& EffectRenderer::effect() const {
+    return *mImpl->compiled;
+}
 
 // [SECTION] Parameters
 
@@ -201,13 +206,19 @@ std::optional<size_t> EffectRenderer::findParameter(std::string_view name) const
     return it->second;
 }
 
-const fx::Value& EffectRenderer::parameter(size_t index) const { return mImpl->values.at(index); }
+const fx::Value& EffectRenderer::parameter(size_t index) const {
+    return mImpl->values.at(index);
+}
 
 void EffectRenderer::setParameter(size_t index, const fx::Value& value) {
     fx::Value stored = value;
     stored.type = mImpl->effect().parameters.at(index).type;
     mImpl->values.at(index) = std::move(stored);
     mImpl->pinned.at(index) = true;
+}
+
+bool EffectRenderer::isPinned(size_t index) const {
+    return mImpl->pinned.at(index);
 }
 
 bool EffectRenderer::setParameterFromText(std::string_view name, std::string_view text,
@@ -237,7 +248,8 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
     std::string word;
     while (stream >> word) {
         std::string lower = word;
-        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+        std::transform(lower.begin(), lower.end(), lower.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
         if (lower == "true" || lower == "false") {
             numbers.push_back(lower == "true" ? 1.0f : 0.0f);
             continue;
@@ -246,8 +258,8 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
         const float number = std::strtof(word.c_str(), &end);
         if (end != word.c_str() + word.size() || !std::isfinite(number)) {
             diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
-                               {"'" + std::string(text) + "' is not a value of type " + parameter.type.hlslName() +
-                                " for parameter '" + parameter.name + "'"});
+                               {"'" + std::string(text) + "' is not a value of type " +
+                                parameter.type.hlslName() + " for parameter '" + parameter.name + "'"});
             return false;
         }
         numbers.push_back(number);
@@ -255,9 +267,10 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
     const size_t expected = static_cast<size_t>(parameter.type.componentCount());
     if (numbers.size() == 1 && expected > 1) numbers.assign(expected, numbers[0]);  // HLSL scalar broadcast
     if (numbers.size() != expected) {
-        diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
-                           {"parameter '" + parameter.name + "' of type " + parameter.type.hlslName() + " needs " +
-                            std::to_string(expected) + " values, got " + std::to_string(numbers.size())});
+        diagnostics.report(
+            fx::DiagId::TypeMismatch, parameter.loc,
+            {"parameter '" + parameter.name + "' of type " + parameter.type.hlslName() + " needs " +
+             std::to_string(expected) + " values, got " + std::to_string(numbers.size())});
         return false;
     }
     fx::Value value = fx::zeroValue(parameter.type);
@@ -288,8 +301,13 @@ public:
     }
 
     bool failed() const { return mFailed; }
+    // With FrameOptions::timePasses: waits for the GPU and fills the frame's pass timings.
+    void finishTiming() { mTimer.finish(); }
 
-    void beginPass(const fx::CompiledPass&) override {}
+    void beginPass(const fx::CompiledPass& pass) override {
+        ++mStats.passesRun;
+        mTimer.beginPass(pass.name);
+    }
 
     void setColorTarget(int index, const std::string& texture) override {
         if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
@@ -322,8 +340,10 @@ public:
     }
 
     void setClearColor(const fx::Value& color) override {
-        for (size_t i = 0; i < 4; ++i) mClearColor[i] = i < color.data.size() ? color.data[i] : (i == 3 ? 1.0f : 0.0f);
-        if (color.data.size() == 1) mClearColor = {color.data[0], color.data[0], color.data[0], color.data[0]};
+        for (size_t i = 0; i < 4; ++i)
+            mClearColor[i] = i < color.data.size() ? color.data[i] : (i == 3 ? 1.0f : 0.0f);
+        if (color.data.size() == 1)
+            mClearColor = {color.data[0], color.data[0], color.data[0], color.data[0]};
     }
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
@@ -332,30 +352,37 @@ public:
         if (!bindTargets()) return;
         ClearRequest request;
         switch (what) {
-            case fx::ScriptCommand::ClearWhat::Color: request.color = mClearColor; break;
-            case fx::ScriptCommand::ClearWhat::Depth: request.depth = mClearDepth; break;
+            case fx::ScriptCommand::ClearWhat::Color:
+                request.color = mClearColor;
+                break;
+            case fx::ScriptCommand::ClearWhat::Depth:
+                request.depth = mClearDepth;
+                break;
             case fx::ScriptCommand::ClearWhat::Stencil:
                 if (mTargets.depth.texture && mTargets.depth.texture->glFormat().hasStencil)
                     request.stencil = mClearStencil;
                 break;
         }
-        FramebufferCache::clear(request);
+        {
+            PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+            FramebufferCache::clear(request);
+        }
         ++mStats.clears;
     }
 
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override {
-        const size_t passIndex = static_cast<size_t>(&pass - mImpl.compiled->techniques[mTechnique].passes.data());
+        const size_t passIndex =
+            static_cast<size_t>(&pass - mImpl.compiled->techniques[mTechnique].passes.data());
         GpuProgram* program = mImpl.programs[mTechnique][passIndex].get();
         if (!program || !program->hasShaders()) {
             if (mWarnedPasses.insert(passIndex).second) {
-                mDiagnostics.report(fx::Diagnostic{fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass.loc,
-                                                   "pass '" + pass.name +
-                                                       "' draws but has no vertex and pixel shader; skipped"});
+                mDiagnostics.report(fx::Diagnostic{
+                    fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass.loc,
+                    "pass '" + pass.name + "' draws but has no vertex and pixel shader; skipped"});
             }
             return;
         }
         if (!bindTargets()) return;
-        ++mStats.passesRun;
         applyStates(pass);
         bindSamplers(pass.vertex);
         bindSamplers(pass.fragment);
@@ -398,7 +425,8 @@ private:
 
     const GpuTexture* target(const std::string& name) {
         auto index = mImpl.parameterIndex.find(name);
-        auto texture = index == mImpl.parameterIndex.end() ? mImpl.textures.end() : mImpl.textures.find(index->second);
+        auto texture =
+            index == mImpl.parameterIndex.end() ? mImpl.textures.end() : mImpl.textures.find(index->second);
         if (texture == mImpl.textures.end()) {
             fail(fx::DiagId::ScriptUnknownTarget, {name});
             return nullptr;
@@ -409,6 +437,7 @@ private:
     bool bindTargets() {
         if (mFailed) return false;
         std::string error;
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
         if (!mImpl.framebuffers.bind(mTargets, error)) {
             fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
             return false;
@@ -419,14 +448,17 @@ private:
     void applyStates(const fx::CompiledPass& pass) {
         RenderStateBlock block = RenderStateBlock::defaults();
         const auto lookup = [this](std::string_view name) { return mImpl.find(name); };
-        for (const fx::RenderStateSetting& setting : pass.states) {
-            const fx::Expr& value = setting.value;
-            if (value.kind == fx::Expr::Kind::Number || value.kind == fx::Expr::Kind::Bool) {
-                block.set(setting.id, value.number);
-                continue;
+        {
+            PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
+            for (const fx::RenderStateSetting& setting : pass.states) {
+                const fx::Expr& value = setting.value;
+                if (value.kind == fx::Expr::Kind::Number || value.kind == fx::Expr::Kind::Bool) {
+                    block.set(setting.id, value.number);
+                    continue;
+                }
+                if (std::optional<fx::Value> evaluated = fx::evaluate(value, lookup, nullptr, &mDiagnostics))
+                    block.set(setting.id, evaluated->asFloat());
             }
-            if (std::optional<fx::Value> evaluated = fx::evaluate(value, lookup, nullptr, &mDiagnostics))
-                block.set(setting.id, evaluated->asFloat());
         }
         const GpuTexture* depth = mTargets.depth.texture;
         applyRenderStates(block, depth ? std::max(16, depth->glFormat().depthBits) : 24);
@@ -456,18 +488,33 @@ private:
         }
     }
 
-    void drawWith(const fx::CompiledPass& pass, GpuProgram& program, const SceneObject* object, GpuMesh& mesh) {
-        mBinder.bind(mPort, object, mOptions.time, mImpl.values, mImpl.pinned);
+    void drawWith(const fx::CompiledPass& pass, GpuProgram& program, const SceneObject* object,
+                  GpuMesh& mesh) {
+        {
+            PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+            mBinder.bind(mPort, object, mOptions.time, mImpl.values, mImpl.pinned);
+        }
         std::vector<fx::Value> arguments;
         arguments.reserve(pass.arguments.size());
         const auto lookup = [this](std::string_view name) { return mImpl.find(name); };
-        for (const fx::CompileArgument& argument : pass.arguments) {
-            std::optional<fx::Value> value = fx::evaluate(argument.expr, lookup, &argument.type, &mDiagnostics);
-            arguments.push_back(value ? std::move(*value) : fx::zeroValue(argument.type));
+        {
+            PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
+            for (const fx::CompileArgument& argument : pass.arguments) {
+                std::optional<fx::Value> value =
+                    fx::evaluate(argument.expr, lookup, &argument.type, &mDiagnostics);
+                arguments.push_back(value ? std::move(*value) : fx::zeroValue(argument.type));
+            }
         }
-        program.use(mImpl.values, arguments);
-        mesh.draw(pass.vertex.inputs);
+        {
+            PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+            program.use(mImpl.values, arguments);
+        }
+        {
+            PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+            mesh.draw(pass.vertex.inputs);
+        }
         ++mStats.draws;
+        mTimer.countDraw();
         mStats.triangles += mesh.indexCount() / 3;
     }
 
@@ -476,6 +523,7 @@ private:
     const FrameOptions& mOptions;
     fx::DiagnosticSink& mDiagnostics;
     FrameStats& mStats;
+    PassTimer mTimer{mOptions.timePasses, mStats};
     size_t mTechnique;
     SemanticBinder mBinder;
     Bounds mSceneBounds;
@@ -513,17 +561,26 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         const fx::Value* parameter(const std::string& name) const override { return impl.find(name); }
         void setParameter(const std::string&, const fx::Value&) override {}
     };
-    const fx::CompiledTechnique* technique =
-        ScriptInterpreter::selectTechnique(*mImpl->compiled, options.technique, ParameterView(*mImpl), diagnostics);
+    const fx::CompiledTechnique* technique = ScriptInterpreter::selectTechnique(
+        *mImpl->compiled, options.technique, ParameterView(*mImpl), diagnostics);
     if (!technique) return false;
     const size_t techniqueIndex = static_cast<size_t>(technique - mImpl->compiled->techniques.data());
 
+    // KHR_debug messages (debug contexts) and GL errors found while the frame runs go to the caller's sink.
+    setDebugSink([&diagnostics](std::string message) {
+        diagnostics.report(fx::Diagnostic{fx::DiagId::GlDebugMessage, fx::Severity::Note, fx::SourceLoc{},
+                                          fx::formatDiagnostic(fx::DiagId::GlDebugMessage, {message})});
+    });
     mImpl->ensureFrameResources(options.width, options.height);
     FrameExecutor executor(*mImpl, scene, options, diagnostics, frameStats, techniqueIndex);
     const bool ran = ScriptInterpreter::run(*technique, executor, diagnostics);
+    executor.finishTiming();
     FramebufferCache::bindDefault();
     const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
-    if (!clean) diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0}, {"GL error during the frame"});
+    setDebugSink({});
+    if (!clean)
+        diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0},
+                           {"GL error during the frame"});
     return ran && !executor.failed() && clean;
 }
 
@@ -537,8 +594,8 @@ FrameImage EffectRenderer::readFrame() const {
     return frame;
 }
 
-std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view textureName, int* width, int* height,
-                                                             int* channels) const {
+std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view textureName, int* width,
+                                                             int* height, int* channels) const {
     const std::optional<size_t> index = findParameter(textureName);
     if (!index) return std::nullopt;
     auto it = mImpl->textures.find(*index);

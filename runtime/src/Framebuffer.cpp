@@ -6,13 +6,16 @@ namespace runtime {
 
 namespace {
 
-int levelSize(int size, int level) { return std::max(size >> level, 1); }
+int levelSize(int size, int level) {
+    return std::max(size >> level, 1);
+}
 
 void attach(GLenum attachment, const RenderTargetAttachment& target) {
     const GpuTexture& texture = *target.texture;
     if (texture.isCube()) {
-        gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + target.face),
-                                 texture.id(), target.level);
+        gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment,
+                                 GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + target.face), texture.id(),
+                                 target.level);
     } else {
         gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture.id(), target.level);
     }
@@ -20,15 +23,24 @@ void attach(GLenum attachment, const RenderTargetAttachment& target) {
 
 std::string statusName(GLenum status) {
     switch (status) {
-        case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-        case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-        default: return "status " + std::to_string(status);
+        case GL_FRAMEBUFFER_UNDEFINED:
+            return "GL_FRAMEBUFFER_UNDEFINED";
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "GL_FRAMEBUFFER_UNSUPPORTED";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
+            return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
+        default:
+            return "status " + std::to_string(status);
     }
 }
 
@@ -48,7 +60,9 @@ int RenderTargets::height() const {
     return depth.texture != nullptr ? levelSize(depth.texture->height(), depth.level) : 0;
 }
 
-FramebufferCache::~FramebufferCache() { clearCache(); }
+FramebufferCache::~FramebufferCache() {
+    clearCache();
+}
 
 FramebufferCache::Key FramebufferCache::keyOf(const RenderTargets& targets) {
     Key key;
@@ -88,7 +102,8 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
                 gl::DeleteFramebuffers(1, &entry.framebuffer);
                 return false;
             }
-            attach(targets.depth.texture->glFormat().hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+            attach(targets.depth.texture->glFormat().hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT
+                                                                : GL_DEPTH_ATTACHMENT,
                    targets.depth);
         }
         // Slot i always writes GL_COLOR_ATTACHMENTi: a shader's COLORi output stays at location i even when
@@ -117,7 +132,9 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
     return true;
 }
 
-void FramebufferCache::bindDefault() { gl::BindFramebuffer(GL_FRAMEBUFFER, 0); }
+void FramebufferCache::bindDefault() {
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 void FramebufferCache::clear(const ClearRequest& request) {
     // Clearing a GL_NONE draw buffer or a missing depth/stencil attachment is a no-op in GL, so the bound
@@ -129,7 +146,8 @@ void FramebufferCache::clear(const ClearRequest& request) {
             gl::ColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             gl::ClearBufferfv(GL_COLOR, i, request.color->data());
         }
-        for (int i = 0; i < 4; ++i) gl::ColorMaski(GLuint(i), saved[i][0], saved[i][1], saved[i][2], saved[i][3]);
+        for (int i = 0; i < 4; ++i)
+            gl::ColorMaski(GLuint(i), saved[i][0], saved[i][1], saved[i][2], saved[i][3]);
     }
     if (request.depth || request.stencil) {
         GLboolean savedDepthMask = GL_TRUE;

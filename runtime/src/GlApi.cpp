@@ -14,8 +14,8 @@ bool load(GetProcAddressFn getProcAddress, std::string& missing) {
     missing.clear();
     // A reinterpret_cast from void* to a function pointer is conditionally supported; POSIX (dlsym)
     // and every GetProcAddress this runtime uses require it to work.
-#define GL_FUNCTION(type, name)                                                \
-    name = reinterpret_cast<type>(getProcAddress("gl" #name));                 \
+#define GL_FUNCTION(type, name)                                \
+    name = reinterpret_cast<type>(getProcAddress("gl" #name)); \
     if (name == nullptr) missing += (missing.empty() ? "gl" : " gl") + std::string(#name);
 #include "GlFunctions.h"
 #undef GL_FUNCTION
@@ -23,6 +23,8 @@ bool load(GetProcAddressFn getProcAddress, std::string& missing) {
     return gLoaded;
 }
 
-bool isLoaded() { return gLoaded; }
+bool isLoaded() {
+    return gLoaded;
+}
 
 }  // namespace gl

@@ -90,8 +90,7 @@ void useGlFunctionsOf(Backend backend, ProcAddressFn getProcAddress) {
     gLoadedBackend = backend;
 }
 
-bool initializeCurrentContext(Backend backend, ProcAddressFn getProcAddress, bool debug,
-                              std::string& error) {
+bool initializeCurrentContext(Backend backend, ProcAddressFn getProcAddress, bool debug, std::string& error) {
     std::string missing;
     bool complete = gl::load(getProcAddress, missing);
     gLoadedBackend = complete ? std::optional<Backend>(backend) : std::nullopt;

@@ -34,10 +34,10 @@ bool checkGlErrors(const char* call, const char* file, int line);
 // GL_CHECK(gl::Foo(...)): in debug builds, checks glGetError after the call and reports the error enum
 // by name to the debug sink. In release builds it is the bare call. Statements only (no return value).
 #ifndef NDEBUG
-#define GL_CHECK(call)                                          \
-    do {                                                        \
-        call;                                                   \
-        ::runtime::checkGlErrors(#call, __FILE__, __LINE__);    \
+#define GL_CHECK(call)                                       \
+    do {                                                     \
+        call;                                                \
+        ::runtime::checkGlErrors(#call, __FILE__, __LINE__); \
     } while (0)
 #else
 #define GL_CHECK(call) \

@@ -11,7 +11,9 @@ namespace runtime {
 
 namespace {
 
-void* glfwProcAddress(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+void* glfwProcAddress(const char* name) {
+    return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
 
 // glfwInit/glfwTerminate are process-wide: terminate only when the last window is gone.
 int gGlfwUsers = 0;

@@ -16,23 +16,35 @@ ParsedSemantic parseVertexSemantic(std::string_view semantic) {
     ParsedSemantic parsed;
     parsed.index = digits < upper.size() ? std::stoi(upper.substr(digits)) : 0;
     std::string_view name = std::string_view(upper).substr(0, digits);
-    if (name == "POSITION") parsed.semantic = VertexSemantic::Position;
-    else if (name == "NORMAL") parsed.semantic = VertexSemantic::Normal;
-    else if (name == "TEXCOORD") parsed.semantic = VertexSemantic::Texcoord;
-    else if (name == "COLOR") parsed.semantic = VertexSemantic::Color;
-    else if (name == "TANGENT") parsed.semantic = VertexSemantic::Tangent;
-    else if (name == "BINORMAL") parsed.semantic = VertexSemantic::Binormal;
+    if (name == "POSITION")
+        parsed.semantic = VertexSemantic::Position;
+    else if (name == "NORMAL")
+        parsed.semantic = VertexSemantic::Normal;
+    else if (name == "TEXCOORD")
+        parsed.semantic = VertexSemantic::Texcoord;
+    else if (name == "COLOR")
+        parsed.semantic = VertexSemantic::Color;
+    else if (name == "TANGENT")
+        parsed.semantic = VertexSemantic::Tangent;
+    else if (name == "BINORMAL")
+        parsed.semantic = VertexSemantic::Binormal;
     return parsed;
 }
 
 std::array<float, 4> defaultVertexValue(const ParsedSemantic& semantic) {
     switch (semantic.semantic) {
-        case VertexSemantic::Position: return {0, 0, 0, 1};
-        case VertexSemantic::Normal: return {0, 1, 0, 0};
-        case VertexSemantic::Color: return {1, 1, 1, 1};
-        case VertexSemantic::Tangent: return {1, 0, 0, 1};
-        case VertexSemantic::Binormal: return {0, 0, -1, 0};  // cross((0,1,0), (1,0,0)) * 1
-        default: return {0, 0, 0, 0};
+        case VertexSemantic::Position:
+            return {0, 0, 0, 1};
+        case VertexSemantic::Normal:
+            return {0, 1, 0, 0};
+        case VertexSemantic::Color:
+            return {1, 1, 1, 1};
+        case VertexSemantic::Tangent:
+            return {1, 0, 0, 1};
+        case VertexSemantic::Binormal:
+            return {0, 0, -1, 0};  // cross((0,1,0), (1,0,0)) * 1
+        default:
+            return {0, 0, 0, 0};
     }
 }
 
@@ -87,12 +99,18 @@ void GpuMesh::uploadStream(Stream stream, const float* data, int components) {
 
 bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
     switch (semantic) {
-        case VertexSemantic::Position: return mStreams[kPosition].buffer != 0;
-        case VertexSemantic::Normal: return mStreams[kNormal].buffer != 0;
-        case VertexSemantic::Texcoord: return mStreams[kTexcoord].buffer != 0;
-        case VertexSemantic::Tangent: return mStreams[kTangent].buffer != 0;
-        case VertexSemantic::Binormal: return mStreams[kBinormal].buffer != 0;
-        default: return false;
+        case VertexSemantic::Position:
+            return mStreams[kPosition].buffer != 0;
+        case VertexSemantic::Normal:
+            return mStreams[kNormal].buffer != 0;
+        case VertexSemantic::Texcoord:
+            return mStreams[kTexcoord].buffer != 0;
+        case VertexSemantic::Tangent:
+            return mStreams[kTangent].buffer != 0;
+        case VertexSemantic::Binormal:
+            return mStreams[kBinormal].buffer != 0;
+        default:
+            return false;
     }
 }
 
@@ -105,13 +123,24 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
         ParsedSemantic semantic = parseVertexSemantic(input.semantic);
         const StreamBuffer* stream = nullptr;
         switch (semantic.semantic) {
-            case VertexSemantic::Position: stream = &mStreams[kPosition]; break;
-            case VertexSemantic::Normal: stream = &mStreams[kNormal]; break;
+            case VertexSemantic::Position:
+                stream = &mStreams[kPosition];
+                break;
+            case VertexSemantic::Normal:
+                stream = &mStreams[kNormal];
+                break;
             // The mesh carries one UV set; TEXCOORD1+ read the default rather than repeating set 0.
-            case VertexSemantic::Texcoord: stream = semantic.index == 0 ? &mStreams[kTexcoord] : nullptr; break;
-            case VertexSemantic::Tangent: stream = &mStreams[kTangent]; break;
-            case VertexSemantic::Binormal: stream = &mStreams[kBinormal]; break;
-            default: break;
+            case VertexSemantic::Texcoord:
+                stream = semantic.index == 0 ? &mStreams[kTexcoord] : nullptr;
+                break;
+            case VertexSemantic::Tangent:
+                stream = &mStreams[kTangent];
+                break;
+            case VertexSemantic::Binormal:
+                stream = &mStreams[kBinormal];
+                break;
+            default:
+                break;
         }
         GLuint location = GLuint(input.location);
         if (stream != nullptr && stream->buffer != 0) {
@@ -146,9 +175,13 @@ void GpuMesh::release() {
     mVao = 0;
 }
 
-GpuMesh::~GpuMesh() { release(); }
+GpuMesh::~GpuMesh() {
+    release();
+}
 
-GpuMesh::GpuMesh(GpuMesh&& other) noexcept { *this = std::move(other); }
+GpuMesh::GpuMesh(GpuMesh&& other) noexcept {
+    *this = std::move(other);
+}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
     if (this != &other) {

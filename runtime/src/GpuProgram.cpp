@@ -14,7 +14,8 @@ void writeScalar(std::vector<uint8_t>& block, size_t offset, fx::BaseType base, 
     if (offset + 4 > block.size()) return;  // reflection and type disagree: never write out of bounds
     // glslang stores HLSL bools in uniform blocks as 32-bit uints, ints as ints.
     if (base == fx::BaseType::Bool || base == fx::BaseType::UInt) {
-        const uint32_t bits = base == fx::BaseType::Bool ? (value != 0.0f ? 1u : 0u) : static_cast<uint32_t>(value);
+        const uint32_t bits =
+            base == fx::BaseType::Bool ? (value != 0.0f ? 1u : 0u) : static_cast<uint32_t>(value);
         std::memcpy(block.data() + offset, &bits, 4);
     } else if (base == fx::BaseType::Int) {
         const int32_t bits = static_cast<int32_t>(value);
@@ -26,7 +27,8 @@ void writeScalar(std::vector<uint8_t>& block, size_t offset, fx::BaseType base, 
 
 }  // namespace
 
-void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value, std::vector<uint8_t>& block) {
+void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value,
+                         std::vector<uint8_t>& block) {
     const fx::TypeDesc& type = member.type;
     const int rows = type.shape == fx::Shape::Matrix ? type.rows : 1;
     const int cols = type.shape == fx::Shape::Scalar ? 1 : type.cols;
@@ -79,9 +81,11 @@ GLuint compileShader(GLenum kind, const std::string& source, std::string& log) {
 
 }  // namespace
 
-std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics) {
+std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass,
+                                               fx::DiagnosticSink& diagnostics) {
     std::unique_ptr<GpuProgram> program(new GpuProgram());
-    if (pass.vertex.glsl.empty() || pass.fragment.glsl.empty()) return program;  // a pass of script commands only
+    if (pass.vertex.glsl.empty() || pass.fragment.glsl.empty())
+        return program;  // a pass of script commands only
 
     std::string log;
     const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
@@ -118,7 +122,8 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
         block.data.assign(stages[i]->uniformBlockSize, 0);
         gl::GenBuffers(1, &block.buffer);
         gl::BindBuffer(GL_UNIFORM_BUFFER, block.buffer);
-        gl::BufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(block.data.size()), nullptr, GL_DYNAMIC_DRAW);
+        gl::BufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(block.data.size()), nullptr,
+                       GL_DYNAMIC_DRAW);
     }
     gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
     return program;
@@ -140,8 +145,10 @@ void GpuProgram::use(const std::vector<fx::Value>& parameters, const std::vector
             if (member.index < source.size()) UniformPacker::pack(member, source[member.index], block.data);
         }
         gl::BindBuffer(GL_UNIFORM_BUFFER, block.buffer);
-        gl::BufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(block.data.size()), block.data.data());
-        gl::BindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(block.stage->uniformBlockBinding), block.buffer);
+        gl::BufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(block.data.size()),
+                          block.data.data());
+        gl::BindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(block.stage->uniformBlockBinding),
+                           block.buffer);
     }
 }
 

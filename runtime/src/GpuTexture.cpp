@@ -48,13 +48,17 @@ GpuTexture GpuTexture::create2D(fx::TextureFormat format, int width, int height,
 
 GpuTexture GpuTexture::createCube(fx::TextureFormat format, int size, int mipLevels) {
     size = std::max(size, 1);
-    int levels = mipLevels <= 0 ? fullMipChainLength(size, size)
-                                : std::min(mipLevels, fullMipChainLength(size, size));
+    int levels =
+        mipLevels <= 0 ? fullMipChainLength(size, size) : std::min(mipLevels, fullMipChainLength(size, size));
     return GpuTexture(GL_TEXTURE_CUBE_MAP, format, size, size, levels);
 }
 
 GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels)
-    : mTarget(target), mFormat(format), mWidth(width), mHeight(height), mLevels(levels),
+    : mTarget(target),
+      mFormat(format),
+      mWidth(width),
+      mHeight(height),
+      mLevels(levels),
       mSerial(gNextSerial++) {
     gl::GenTextures(1, &mId);
     gl::BindTexture(mTarget, mId);
@@ -72,7 +76,9 @@ GpuTexture::~GpuTexture() {
     if (mId != 0) gl::DeleteTextures(1, &mId);
 }
 
-GpuTexture::GpuTexture(GpuTexture&& other) noexcept { *this = std::move(other); }
+GpuTexture::GpuTexture(GpuTexture&& other) noexcept {
+    *this = std::move(other);
+}
 
 GpuTexture& GpuTexture::operator=(GpuTexture&& other) noexcept {
     if (this != &other) {

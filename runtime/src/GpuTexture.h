@@ -20,8 +20,8 @@ struct GlTextureFormat {
     int channels;        // colour channels (1 for depth)
     bool isDepth;
     bool hasStencil;
-    bool isFloat;        // float or half storage (unclamped values)
-    int depthBits;       // 16, 24 or 32 for depth formats, else 0
+    bool isFloat;   // float or half storage (unclamped values)
+    int depthBits;  // 16, 24 or 32 for depth formats, else 0
 };
 const GlTextureFormat& glTextureFormat(fx::TextureFormat format);
 

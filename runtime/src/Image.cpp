@@ -76,14 +76,16 @@ Image readTexture(const GpuTexture& texture, int level, int face, bool asFloat) 
     int height = std::max(texture.height() >> level, 1);
     int channels = format.isDepth ? 1 : format.channels;
     bool floatOutput = asFloat || format.isFloat || format.isDepth;
-    Image image = floatOutput ? Image::makeFloats(width, height, channels) : Image::makeBytes(width, height, channels);
+    Image image =
+        floatOutput ? Image::makeFloats(width, height, channels) : Image::makeBytes(width, height, channels);
     GLenum pixelFormat = format.isDepth ? GL_DEPTH_COMPONENT : format.pixelFormat;
     GLenum type = floatOutput ? GL_FLOAT : GL_UNSIGNED_BYTE;
-    void* data = floatOutput ? static_cast<void*>(image.floats.data()) : static_cast<void*>(image.bytes.data());
+    void* data =
+        floatOutput ? static_cast<void*>(image.floats.data()) : static_cast<void*>(image.bytes.data());
     size_t bufferSize = floatOutput ? image.floats.size() * sizeof(float) : image.bytes.size();
     // glGetTextureSubImage reads a single cube face; glGetTexImage would need the face target bound.
-    gl::GetTextureSubImage(texture.id(), level, 0, 0, texture.isCube() ? face : 0, width, height, 1, pixelFormat,
-                           type, GLsizei(bufferSize), data);
+    gl::GetTextureSubImage(texture.id(), level, 0, 0, texture.isCube() ? face : 0, width, height, 1,
+                           pixelFormat, type, GLsizei(bufferSize), data);
     return image;
 }
 

@@ -17,8 +17,8 @@ namespace runtime {
 struct Image {
     int width = 0;
     int height = 0;
-    int channels = 4;       // 1..4
-    bool isFloat = false;   // float32 samples in `floats`, else 8-bit samples in `bytes`
+    int channels = 4;      // 1..4
+    bool isFloat = false;  // float32 samples in `floats`, else 8-bit samples in `bytes`
     std::vector<uint8_t> bytes;
     std::vector<float> floats;
 

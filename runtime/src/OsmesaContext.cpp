@@ -20,7 +20,8 @@ class OsmesaContext final : public GlContext {
 public:
     explicit OsmesaContext(OSMesaContext context) : mContext(context), mBuffer(kSize * kSize * 4) {}
     ~OsmesaContext() override {
-        if (OSMesaGetCurrentContext() == mContext) OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+        if (OSMesaGetCurrentContext() == mContext)
+            OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
         OSMesaDestroyContext(mContext);
     }
     OsmesaContext(const OsmesaContext&) = delete;
@@ -49,12 +50,18 @@ std::unique_ptr<GlContext> createOsmesaContext(const ContextOptions& options, st
     // No depth/stencil on the default buffer: nothing renders into it. OSMesa has no debug-context flag;
     // Mesa still produces KHR_debug output once GL_DEBUG_OUTPUT is enabled.
     const std::array<int, 13> attributes = {
-        OSMESA_FORMAT, OSMESA_RGBA,
-        OSMESA_DEPTH_BITS, 0,
-        OSMESA_STENCIL_BITS, 0,
-        OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-        OSMESA_CONTEXT_MAJOR_VERSION, 4,
-        OSMESA_CONTEXT_MINOR_VERSION, 5,
+        OSMESA_FORMAT,
+        OSMESA_RGBA,
+        OSMESA_DEPTH_BITS,
+        0,
+        OSMESA_STENCIL_BITS,
+        0,
+        OSMESA_PROFILE,
+        OSMESA_CORE_PROFILE,
+        OSMESA_CONTEXT_MAJOR_VERSION,
+        4,
+        OSMESA_CONTEXT_MINOR_VERSION,
+        5,
         0,
     };
     OSMesaContext raw = OSMesaCreateContextAttribs(attributes.data(), nullptr);

@@ -21,58 +21,95 @@ RenderStateBlock RenderStateBlock::defaults() {
 
 GLenum glCompareFromD3d(int d3dCmp) {
     switch (d3dCmp) {
-        case 1: return GL_NEVER;
-        case 2: return GL_LESS;
-        case 3: return GL_EQUAL;
-        case 4: return GL_LEQUAL;
-        case 5: return GL_GREATER;
-        case 6: return GL_NOTEQUAL;
-        case 7: return GL_GEQUAL;
-        default: return GL_ALWAYS;  // 8, and nonsense values: never reject a pixel by accident
+        case 1:
+            return GL_NEVER;
+        case 2:
+            return GL_LESS;
+        case 3:
+            return GL_EQUAL;
+        case 4:
+            return GL_LEQUAL;
+        case 5:
+            return GL_GREATER;
+        case 6:
+            return GL_NOTEQUAL;
+        case 7:
+            return GL_GEQUAL;
+        default:
+            return GL_ALWAYS;  // 8, and nonsense values: never reject a pixel by accident
     }
 }
 
 GLenum glBlendFactorFromD3d(int d3dBlend) {
     switch (d3dBlend) {
-        case 1: return GL_ZERO;
-        case 2: return GL_ONE;
-        case 3: return GL_SRC_COLOR;
-        case 4: return GL_ONE_MINUS_SRC_COLOR;
-        case 5: return GL_SRC_ALPHA;
-        case 6: return GL_ONE_MINUS_SRC_ALPHA;
-        case 7: return GL_DST_ALPHA;
-        case 8: return GL_ONE_MINUS_DST_ALPHA;
-        case 9: return GL_DST_COLOR;
-        case 10: return GL_ONE_MINUS_DST_COLOR;
-        case 11: return GL_SRC_ALPHA_SATURATE;
-        case 14: return GL_CONSTANT_COLOR;  // BLENDFACTOR (alpha channel: the constant's alpha, as D3D)
-        case 15: return GL_ONE_MINUS_CONSTANT_COLOR;
-        case 16: return GL_SRC1_COLOR;  // D3D9Ex SRCCOLOR2
-        case 17: return GL_ONE_MINUS_SRC1_COLOR;
-        default: return GL_ONE;
+        case 1:
+            return GL_ZERO;
+        case 2:
+            return GL_ONE;
+        case 3:
+            return GL_SRC_COLOR;
+        case 4:
+            return GL_ONE_MINUS_SRC_COLOR;
+        case 5:
+            return GL_SRC_ALPHA;
+        case 6:
+            return GL_ONE_MINUS_SRC_ALPHA;
+        case 7:
+            return GL_DST_ALPHA;
+        case 8:
+            return GL_ONE_MINUS_DST_ALPHA;
+        case 9:
+            return GL_DST_COLOR;
+        case 10:
+            return GL_ONE_MINUS_DST_COLOR;
+        case 11:
+            return GL_SRC_ALPHA_SATURATE;
+        case 14:
+            return GL_CONSTANT_COLOR;  // BLENDFACTOR (alpha channel: the constant's alpha, as D3D)
+        case 15:
+            return GL_ONE_MINUS_CONSTANT_COLOR;
+        case 16:
+            return GL_SRC1_COLOR;  // D3D9Ex SRCCOLOR2
+        case 17:
+            return GL_ONE_MINUS_SRC1_COLOR;
+        default:
+            return GL_ONE;
     }
 }
 
 GLenum glBlendEquationFromD3d(int d3dBlendOp) {
     switch (d3dBlendOp) {
-        case 2: return GL_FUNC_SUBTRACT;          // src - dst
-        case 3: return GL_FUNC_REVERSE_SUBTRACT;  // dst - src
-        case 4: return GL_MIN;                    // factors ignored, in D3D and GL alike
-        case 5: return GL_MAX;
-        default: return GL_FUNC_ADD;
+        case 2:
+            return GL_FUNC_SUBTRACT;  // src - dst
+        case 3:
+            return GL_FUNC_REVERSE_SUBTRACT;  // dst - src
+        case 4:
+            return GL_MIN;  // factors ignored, in D3D and GL alike
+        case 5:
+            return GL_MAX;
+        default:
+            return GL_FUNC_ADD;
     }
 }
 
 GLenum glStencilOpFromD3d(int d3dStencilOp) {
     switch (d3dStencilOp) {
-        case 2: return GL_ZERO;
-        case 3: return GL_REPLACE;
-        case 4: return GL_INCR;  // INCRSAT: clamps
-        case 5: return GL_DECR;  // DECRSAT
-        case 6: return GL_INVERT;
-        case 7: return GL_INCR_WRAP;  // INCR: wraps
-        case 8: return GL_DECR_WRAP;
-        default: return GL_KEEP;
+        case 2:
+            return GL_ZERO;
+        case 3:
+            return GL_REPLACE;
+        case 4:
+            return GL_INCR;  // INCRSAT: clamps
+        case 5:
+            return GL_DECR;  // DECRSAT
+        case 6:
+            return GL_INVERT;
+        case 7:
+            return GL_INCR_WRAP;  // INCR: wraps
+        case 8:
+            return GL_DECR_WRAP;
+        default:
+            return GL_KEEP;
     }
 }
 
@@ -116,9 +153,15 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
             break;
     }
     switch (integer(RenderStateId::FillMode)) {
-        case 1: gl::PolygonMode(GL_FRONT_AND_BACK, GL_POINT); break;
-        case 2: gl::PolygonMode(GL_FRONT_AND_BACK, GL_LINE); break;
-        default: gl::PolygonMode(GL_FRONT_AND_BACK, GL_FILL); break;
+        case 1:
+            gl::PolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+            break;
+        case 2:
+            gl::PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            break;
+        default:
+            gl::PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+            break;
     }
     float depthBias = float(value(RenderStateId::DepthBias));
     float slopeScale = float(value(RenderStateId::SlopeScaleDepthBias));

@@ -37,26 +37,41 @@ GLenum minFilter(int minFilter, int mipFilter) {
 
 GLenum glCompareFunc(int d3dCmp) {
     switch (d3dCmp) {
-        case 1: return GL_NEVER;
-        case 2: return GL_LESS;
-        case 3: return GL_EQUAL;
-        case 4: return GL_LEQUAL;
-        case 5: return GL_GREATER;
-        case 6: return GL_NOTEQUAL;
-        case 7: return GL_GEQUAL;
-        case 8: return GL_ALWAYS;
-        default: return GL_LEQUAL;
+        case 1:
+            return GL_NEVER;
+        case 2:
+            return GL_LESS;
+        case 3:
+            return GL_EQUAL;
+        case 4:
+            return GL_LEQUAL;
+        case 5:
+            return GL_GREATER;
+        case 6:
+            return GL_NOTEQUAL;
+        case 7:
+            return GL_GEQUAL;
+        case 8:
+            return GL_ALWAYS;
+        default:
+            return GL_LEQUAL;
     }
 }
 
 GLenum glAddressMode(int d3dAddress) {
     switch (d3dAddress) {
-        case 1: return GL_REPEAT;
-        case 2: return GL_MIRRORED_REPEAT;
-        case 3: return GL_CLAMP_TO_EDGE;
-        case 4: return GL_CLAMP_TO_BORDER;
-        case 5: return GL_MIRROR_CLAMP_TO_EDGE;
-        default: return GL_REPEAT;
+        case 1:
+            return GL_REPEAT;
+        case 2:
+            return GL_MIRRORED_REPEAT;
+        case 3:
+            return GL_CLAMP_TO_EDGE;
+        case 4:
+            return GL_CLAMP_TO_BORDER;
+        case 5:
+            return GL_MIRROR_CLAMP_TO_EDGE;
+        default:
+            return GL_REPEAT;
     }
 }
 
@@ -67,8 +82,9 @@ SamplerObject::SamplerObject(const fx::SamplerDesc& desc, bool depthCompare)
     gl::SamplerParameteri(mId, GL_TEXTURE_WRAP_T, GLint(glAddressMode(desc.addressV)));
     gl::SamplerParameteri(mId, GL_TEXTURE_WRAP_R, GLint(glAddressMode(desc.addressW)));
     gl::SamplerParameteri(mId, GL_TEXTURE_MIN_FILTER, GLint(minFilter(desc.minFilter, desc.mipFilter)));
-    gl::SamplerParameteri(mId, GL_TEXTURE_MAG_FILTER,
-                          desc.magFilter == kTexfPoint || desc.magFilter == kTexfNone ? GL_NEAREST : GL_LINEAR);
+    gl::SamplerParameteri(
+        mId, GL_TEXTURE_MAG_FILTER,
+        desc.magFilter == kTexfPoint || desc.magFilter == kTexfNone ? GL_NEAREST : GL_LINEAR);
     gl::SamplerParameterfv(mId, GL_TEXTURE_BORDER_COLOR, desc.borderColor);
     gl::SamplerParameterf(mId, GL_TEXTURE_LOD_BIAS, desc.mipLodBias);
 
@@ -92,7 +108,9 @@ SamplerObject::~SamplerObject() {
     if (mId != 0) gl::DeleteSamplers(1, &mId);
 }
 
-SamplerObject::SamplerObject(SamplerObject&& other) noexcept { *this = std::move(other); }
+SamplerObject::SamplerObject(SamplerObject&& other) noexcept {
+    *this = std::move(other);
+}
 
 SamplerObject& SamplerObject::operator=(SamplerObject&& other) noexcept {
     if (this != &other) {

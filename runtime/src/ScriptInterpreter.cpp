@@ -47,16 +47,21 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
             loc = command.loc;
             if (command.selectorCondition.empty()) {
                 name = command.value;
+            } else if (const fx::Value* condition = target.parameter(command.selectorCondition)) {
+                name = condition->asBool() ? command.selectorTrue : command.selectorFalse;
             } else {
-                const fx::Value* condition = target.parameter(command.selectorCondition);
-                name = condition && condition->asBool() ? command.selectorTrue : command.selectorFalse;
+                // FX Composer's `Technique=Technique?Main:Main10;` lists alternatives (D3D9 / D3D10) rather
+                // than testing a parameter: take the first one the effect has.
+                name =
+                    effect.findTechnique(command.selectorTrue) ? command.selectorTrue : command.selectorFalse;
             }
             break;
         }
     }
     if (name.empty()) {
         if (effect.techniques.empty()) {
-            diagnostics.report(fx::DiagId::UnknownTechnique, fx::SourceLoc{effect.effect->path, 0, 0}, {"(none)"});
+            diagnostics.report(fx::DiagId::UnknownTechnique, fx::SourceLoc{effect.effect->path, 0, 0},
+                               {"(none)"});
             return nullptr;
         }
         return &effect.techniques.front();
@@ -81,9 +86,9 @@ bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, ScriptTarget
     return true;
 }
 
-bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const fx::CompiledTechnique& technique,
-                                    const fx::CompiledPass* pass, ScriptTarget& target,
-                                    fx::DiagnosticSink& diagnostics) {
+bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
+                                    const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
+                                    ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     struct Loop {
         size_t body;    // index of the first command inside the loop
         int remaining;  // iterations still to run after this one
@@ -98,7 +103,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
             case Command::Kind::Pass: {
                 const fx::CompiledPass* next = findPass(technique, command.value);
                 if (!next) {
-                    diagnostics.report(fx::DiagId::ScriptUnknownPass, command.loc, {command.value, technique.name});
+                    diagnostics.report(fx::DiagId::ScriptUnknownPass, command.loc,
+                                       {command.value, technique.name});
                     return false;
                 }
                 target.beginPass(*next);
@@ -109,9 +115,15 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
                 }
                 break;
             }
-            case Command::Kind::RenderColorTarget: target.setColorTarget(command.index, command.value); break;
-            case Command::Kind::RenderDepthStencilTarget: target.setDepthTarget(command.value); break;
-            case Command::Kind::RenderPort: target.setRenderPort(command.value); break;
+            case Command::Kind::RenderColorTarget:
+                target.setColorTarget(command.index, command.value);
+                break;
+            case Command::Kind::RenderDepthStencilTarget:
+                target.setDepthTarget(command.value);
+                break;
+            case Command::Kind::RenderPort:
+                target.setRenderPort(command.value);
+                break;
             case Command::Kind::ClearSetColor:
             case Command::Kind::ClearSetDepth:
             case Command::Kind::ClearSetStencil: {
@@ -127,7 +139,9 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
                 if (command.kind == Command::Kind::ClearSetStencil) target.setClearStencil(value->asInt());
                 break;
             }
-            case Command::Kind::Clear: target.clear(command.clear); break;
+            case Command::Kind::Clear:
+                target.clear(command.clear);
+                break;
             case Command::Kind::Draw:
                 if (!pass) {
                     diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
@@ -140,14 +154,16 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
                 const std::optional<fx::Value> value = scriptValue(command.value, target);
                 int count = value ? value->asInt() : -1;
                 if (count < 0) {
-                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
-                                       {"LoopByCount", "'" + command.value + "' is not a non-negative count"});
+                    diagnostics.report(
+                        fx::DiagId::InvalidScriptCommand, command.loc,
+                        {"LoopByCount", "'" + command.value + "' is not a non-negative count"});
                     return false;
                 }
                 if (count > kMaxLoopCount) {
-                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
-                                       {"LoopByCount", std::to_string(count) + " iterations exceed the limit of " +
-                                                           std::to_string(kMaxLoopCount)});
+                    diagnostics.report(
+                        fx::DiagId::InvalidScriptCommand, command.loc,
+                        {"LoopByCount", std::to_string(count) + " iterations exceed the limit of " +
+                                            std::to_string(kMaxLoopCount)});
                     return false;
                 }
                 if (count == 0) {  // skip to the matching LoopEnd
@@ -163,7 +179,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
             }
             case Command::Kind::LoopGetIndex:
                 if (loops.empty()) {
-                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc, {"LoopGetIndex outside a loop"});
+                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc,
+                                       {"LoopGetIndex outside a loop"});
                     return false;
                 }
                 loops.back().indexParameter = command.value;
@@ -171,7 +188,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
                 break;
             case Command::Kind::LoopEnd:
                 if (loops.empty()) {
-                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc, {"LoopEnd without LoopByCount"});
+                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc,
+                                       {"LoopEnd without LoopByCount"});
                     return false;
                 }
                 if (loops.back().remaining > 0) {
@@ -185,16 +203,20 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands, const 
                     loops.pop_back();
                 }
                 break;
-            case Command::Kind::ScriptExternal: target.reportIgnored(command); break;
+            case Command::Kind::ScriptExternal:
+                target.reportIgnored(command);
+                break;
             case Command::Kind::Technique:
             case Command::Kind::ScriptOrder:
             case Command::Kind::ScriptClass:
             case Command::Kind::ScriptOutput:
-            case Command::Kind::ScriptSignature: break;  // header commands: nothing to execute
+            case Command::Kind::ScriptSignature:
+                break;  // header commands: nothing to execute
         }
     }
     if (!loops.empty()) {
-        diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, commands.empty() ? fx::SourceLoc{} : commands.back().loc,
+        diagnostics.report(fx::DiagId::ScriptUnbalancedLoop,
+                           commands.empty() ? fx::SourceLoc{} : commands.back().loc,
                            {"LoopByCount without LoopEnd"});
         return false;
     }

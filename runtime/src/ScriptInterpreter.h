@@ -18,8 +18,8 @@ public:
     virtual ~ScriptTarget() = default;
     virtual void beginPass(const fx::CompiledPass& pass) = 0;
     virtual void setColorTarget(int index, const std::string& texture) = 0;  // "" = the frame's colour target
-    virtual void setDepthTarget(const std::string& texture) = 0;            // "" = the frame's depth target
-    virtual void setRenderPort(const std::string& light) = 0;               // "" = the camera
+    virtual void setDepthTarget(const std::string& texture) = 0;             // "" = the frame's depth target
+    virtual void setRenderPort(const std::string& light) = 0;                // "" = the camera
     virtual void setClearColor(const fx::Value& color) = 0;
     virtual void setClearDepth(float depth) = 0;
     virtual void setClearStencil(int stencil) = 0;
@@ -38,16 +38,20 @@ public:
 
     // The technique a frame runs: `requested` if given, else the STANDARDSGLOBAL script's Technique=
     // (with Cond?A:B selectors), else the first. nullptr (with UnknownTechnique) if it does not exist.
-    static const fx::CompiledTechnique* selectTechnique(const fx::CompiledEffect& effect, const std::string& requested,
-                                                        const ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+    static const fx::CompiledTechnique* selectTechnique(const fx::CompiledEffect& effect,
+                                                        const std::string& requested,
+                                                        const ScriptTarget& target,
+                                                        fx::DiagnosticSink& diagnostics);
 
     // Runs the technique's script (or, without one, every pass in order), each pass's script (or, without
     // one, Draw=Geometry). Returns false if the script could not run to its end.
-    static bool run(const fx::CompiledTechnique& technique, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+    static bool run(const fx::CompiledTechnique& technique, ScriptTarget& target,
+                    fx::DiagnosticSink& diagnostics);
 
 private:
-    static bool runCommands(const std::vector<fx::ScriptCommand>& commands, const fx::CompiledTechnique& technique,
-                            const fx::CompiledPass* pass, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+    static bool runCommands(const std::vector<fx::ScriptCommand>& commands,
+                            const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
+                            ScriptTarget& target, fx::DiagnosticSink& diagnostics);
 };
 
 }  // namespace runtime

@@ -41,7 +41,8 @@ void store(fx::Value& value, const float* source, int rows, int cols) {
         value.data.assign(static_cast<size_t>(type.rows * type.cols), 0.0f);
         for (int r = 0; r < type.rows; ++r)
             for (int c = 0; c < type.cols; ++c)
-                if (r < rows && c < cols) value.data[static_cast<size_t>(r * type.cols + c)] = source[r * cols + c];
+                if (r < rows && c < cols)
+                    value.data[static_cast<size_t>(r * type.cols + c)] = source[r * cols + c];
         return;
     }
     const int count = type.shape == fx::Shape::Vector ? type.cols : 1;
@@ -55,7 +56,9 @@ void storeMatrix(fx::Value& value, const glm::mat4& m) {
     store(value, glm::value_ptr(m), 4, 4);
 }
 
-void storeVector(fx::Value& value, const glm::vec4& v) { store(value, glm::value_ptr(v), 1, 4); }
+void storeVector(fx::Value& value, const glm::vec4& v) {
+    store(value, glm::value_ptr(v), 1, 4);
+}
 
 }  // namespace
 
@@ -118,8 +121,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx:
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
-        const bool isLightProperty = binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
-                                     binding.kind == Kind::LightColor;
+        const bool isLightProperty = binding.kind == Kind::LightPosition ||
+                                     binding.kind == Kind::LightDirection || binding.kind == Kind::LightColor;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
         const std::string upperSemantic = upper(parameter.semantic);
@@ -161,20 +164,38 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
         // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
         glm::mat4 matrix(1.0f);
         switch (binding.kind) {
-            case Kind::World: matrix = world; break;
-            case Kind::View: matrix = view; break;
-            case Kind::Projection: matrix = projection; break;
-            case Kind::WorldView: matrix = view * world; break;
-            case Kind::ViewProjection: matrix = projection * view; break;
-            case Kind::WorldViewProjection: matrix = projection * view * world; break;
-            case Kind::ViewportPixelSize: storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f)); continue;
-            case Kind::Time: storeVector(value, glm::vec4(time)); continue;
+            case Kind::World:
+                matrix = world;
+                break;
+            case Kind::View:
+                matrix = view;
+                break;
+            case Kind::Projection:
+                matrix = projection;
+                break;
+            case Kind::WorldView:
+                matrix = view * world;
+                break;
+            case Kind::ViewProjection:
+                matrix = projection * view;
+                break;
+            case Kind::WorldViewProjection:
+                matrix = projection * view * world;
+                break;
+            case Kind::ViewportPixelSize:
+                storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f));
+                continue;
+            case Kind::Time:
+                storeVector(value, glm::vec4(time));
+                continue;
             case Kind::CameraPosition: {
                 const glm::mat4 viewInverse = glm::inverse(view);
                 storeVector(value, glm::vec4(glm::vec3(viewInverse[3]), 1.0f));
                 continue;
             }
-            case Kind::ObjectId: storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f)); continue;
+            case Kind::ObjectId:
+                storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f));
+                continue;
             case Kind::LightPosition: {
                 const Light& light = *binding.light;
                 const glm::vec3 position = light.type == Light::Type::Directional
@@ -183,12 +204,18 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 storeVector(value, glm::vec4(position, 1.0f));
                 continue;
             }
-            case Kind::LightDirection: storeVector(value, glm::vec4(binding.light->direction, 0.0f)); continue;
-            case Kind::LightColor: storeVector(value, glm::vec4(binding.light->color, 1.0f)); continue;
+            case Kind::LightDirection:
+                storeVector(value, glm::vec4(binding.light->direction, 0.0f));
+                continue;
+            case Kind::LightColor:
+                storeVector(value, glm::vec4(binding.light->color, 1.0f));
+                continue;
             case Kind::ObjectColor:
                 storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));
                 continue;
-            case Kind::Ambient: storeVector(value, glm::vec4(mScene.ambient, 1.0f)); continue;
+            case Kind::Ambient:
+                storeVector(value, glm::vec4(mScene.ambient, 1.0f));
+                continue;
         }
         if (binding.inverse) matrix = glm::inverse(matrix);
         if (binding.transpose) matrix = glm::transpose(matrix);

@@ -65,7 +65,8 @@ private:
         Kind kind;
         bool inverse = false;
         bool transpose = false;
-        const Light* light = nullptr;  // frustum/Object annotation (matrices), or the light of a light property
+        const Light* light =
+            nullptr;  // frustum/Object annotation (matrices), or the light of a light property
     };
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);

@@ -65,7 +65,7 @@ struct Parser {
                 return false;
             }
         }
-        if (args.positionalCount() != 1) {
+        if (command.positionals >= 0 && args.positionalCount() != static_cast<size_t>(command.positionals)) {
             std::cerr << "shadowfx " << command.name << ": expected one effect file (see --help)\n";
             return false;
         }
@@ -75,8 +75,10 @@ struct Parser {
 
 namespace {
 void printOverview(std::span<const Command> commands) {
-    std::cout << "usage: shadowfx COMMAND [options]   (shadowfx COMMAND --help for its options)\n\ncommands:\n";
-    for (const Command& c : commands) std::cout << "  " << c.name << std::string(10 - std::string(c.name).size(), ' ') << c.summary << "\n";
+    std::cout
+        << "usage: shadowfx COMMAND [options]   (shadowfx COMMAND --help for its options)\n\ncommands:\n";
+    for (const Command& c : commands)
+        std::cout << "  " << c.name << std::string(10 - std::string(c.name).size(), ' ') << c.summary << "\n";
 }
 }  // namespace
 

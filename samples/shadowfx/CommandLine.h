@@ -34,6 +34,9 @@ struct Command {
     std::vector<std::string> valueOptions;     // options that take a value
     std::vector<std::string> flags;            // options without a value
     std::function<int(const Arguments&)> run;
+    // Number of positional arguments (effect files) the command takes; -1 = any (`bench --effects
+    // effects/*.fx`, where the shell's glob leaves every file after the first as a positional argument).
+    int positionals = 1;
 };
 
 // Parses argv for the named subcommand and runs it. Exit codes: the command's; 2 for usage errors.

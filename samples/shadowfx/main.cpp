@@ -4,13 +4,19 @@
 //   shadowfx render EFFECT.fx --out FILE.png [options]   render one frame headlessly
 //   shadowfx compile EFFECT.fx [--technique NAME]        print the generated GLSL, or the diagnostics
 //   shadowfx info EFFECT.fx                              list techniques, passes and parameters
+//   shadowfx bench --effects A.fx,B.fx --out DIR [...]  error against ground truth and frame time
+//   (BenchCommand.cpp) shadowfx view EFFECT.fx [...]                        window with hot reload and
+//   parameters (ViewCommand.cpp)
+#include "BenchCommand.h"
 #include "CommandLine.h"
+#include "ViewCommand.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/GlContext.h>
 #include <runtime/Scene.h>
+#include <runtime/SceneFile.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -44,7 +50,8 @@ fx::ParseOptions parseOptions(const Arguments& args) {
     options.includeDirs = args.all("-I");
     for (const std::string& define : args.all("-D")) {
         const size_t eq = define.find('=');
-        options.defines.emplace_back(define.substr(0, eq), eq == std::string::npos ? "1" : define.substr(eq + 1));
+        options.defines.emplace_back(define.substr(0, eq),
+                                     eq == std::string::npos ? "1" : define.substr(eq + 1));
     }
     return options;
 }
@@ -73,14 +80,8 @@ int renderCommand(const Arguments& args) {
         std::cerr << "shadowfx render: --width and --height must be between 1 and 16384\n";
         return 2;
     }
-    const std::string sceneName = args.value("--scene", "boxes");
-    std::optional<runtime::Scene> scene = runtime::makeBuiltinScene(sceneName);
-    if (!scene) {
-        std::cerr << "shadowfx render: unknown scene '" << sceneName << "' (built-in scenes:";
-        for (const std::string& name : runtime::builtinSceneNames()) std::cerr << " " << name;
-        std::cerr << ")\n";
-        return 2;
-    }
+    std::optional<runtime::Scene> scene = runtime::loadScene(args.value("--scene", "boxes"), sink);
+    if (!scene) return 2;
     const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
     if (!backend || *backend == runtime::Backend::GLFW) {
         std::cerr << "shadowfx render: --backend must be auto, osmesa or egl\n";
@@ -100,8 +101,8 @@ int renderCommand(const Arguments& args) {
         return 1;
     }
     if (verbose) {
-        std::cerr << "shadowfx: backend " << runtime::backendName(context->backend()) << ": " << context->renderer()
-                  << "\n";
+        std::cerr << "shadowfx: backend " << runtime::backendName(context->backend()) << ": "
+                  << context->renderer() << "\n";
     }
 
     std::unique_ptr<runtime::EffectRenderer> renderer = runtime::EffectRenderer::create(compiled, sink);
@@ -112,7 +113,8 @@ int renderCommand(const Arguments& args) {
             std::cerr << "shadowfx render: --set expects PARAM=VALUE, got '" << assignment << "'\n";
             return 2;
         }
-        if (!renderer->setParameterFromText(assignment.substr(0, eq), assignment.substr(eq + 1), sink)) return 1;
+        if (!renderer->setParameterFromText(assignment.substr(0, eq), assignment.substr(eq + 1), sink))
+            return 1;
     }
 
     runtime::FrameOptions frame;
@@ -129,8 +131,8 @@ int renderCommand(const Arguments& args) {
         return 1;
     }
     if (args.flag("--stats") || verbose) {
-        std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws, " << stats.triangles
-                  << " triangles, " << stats.clears << " clears\n";
+        std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws, "
+                  << stats.triangles << " triangles, " << stats.clears << " clears\n";
     }
     std::cout << out << "\n";
     return 0;
@@ -181,29 +183,61 @@ int infoCommand(const Arguments& args) {
 }
 
 const shadowfx::cli::Command kCommands[] = {
-    {"render", "render one frame of an effect headlessly and write a PNG",
+    {"render",
+     "render one frame of an effect headlessly and write a PNG",
      "usage: shadowfx render EFFECT.fx --out FILE.png [options]\n"
      "  --out FILE.png        where to write the image (required; removed if rendering fails)\n"
      "  --width W, --height H image size (default 800x600)\n"
-     "  --technique NAME      technique to run (default: the effect's STANDARDSGLOBAL choice, else the first)\n"
-     "  --scene NAME          built-in scene: boxes, torus, teapot (default boxes)\n"
+     "  --technique NAME      technique to run (default: the effect's STANDARDSGLOBAL choice, else the "
+     "first)\n"
+     "  --scene NAME|FILE     built-in scene (boxes, torus, teapot, dual-l, double-torus, forest, behind,\n"
+     "                        bunny, horse, spider, engine; default boxes) or a scene file (.json)\n"
      "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
      "  --backend NAME        auto, osmesa or egl (default auto)\n"
      "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
      "  --stats               print passes, draws and triangles\n"
      "  --verbose             print the GL renderer and notes\n",
-     {"--out"}, {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
-     {"--stats", "--verbose"}, renderCommand},
-    {"compile", "print the generated GLSL of every pass, or the diagnostics",
+     {"--out"},
+     {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
+     {"--stats", "--verbose"},
+     renderCommand},
+    {"compile",
+     "print the generated GLSL of every pass, or the diagnostics",
      "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl]\n"
      "  --technique NAME      only this technique\n"
      "  --hlsl                also print the HLSL unit generated for each stage\n"
      "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n",
-     {}, {"--technique", "-I", "-D"}, {"--hlsl", "--verbose"}, compileCommand},
-    {"info", "list an effect's techniques, passes and parameters",
-     "usage: shadowfx info EFFECT.fx\n", {}, {"-I", "-D"}, {"--verbose"}, infoCommand},
+     {},
+     {"--technique", "-I", "-D"},
+     {"--hlsl", "--verbose"},
+     compileCommand},
+    {"info",
+     "list an effect's techniques, passes and parameters",
+     "usage: shadowfx info EFFECT.fx\n",
+     {},
+     {"-I", "-D"},
+     {"--verbose"},
+     infoCommand},
+    {"bench",
+     "measure effects: shadow error against the ray-cast ground truth, and frame time",
+     shadowfx::cli::kBenchUsage,
+     {"--out"},
+     {"--effects", "--scenes", "--map-sizes", "--techniques", "--frames", "--warmup", "--width", "--height",
+      "--area-samples", "--backend", "-I", "-D"},
+     {},
+     shadowfx::cli::benchCommand,
+     -1},
+    {"view",
+     "open an effect in a window: hot reload, error overlay, parameters, render targets",
+     shadowfx::cli::kViewUsage,
+     {},
+     {"--scene", "--technique", "--width", "--height", "--frames", "--screenshot", "-I", "-D"},
+     {},
+     shadowfx::cli::viewCommand},
 };
 
 }  // namespace
 
-int main(int argc, char** argv) { return shadowfx::cli::dispatch(argc, argv, kCommands); }
+int main(int argc, char** argv) {
+    return shadowfx::cli::dispatch(argc, argv, kCommands);
+}

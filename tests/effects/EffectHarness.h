@@ -28,7 +28,9 @@ inline runtime::GlContext& sharedContext() {
     return *context;
 }
 
-inline std::string sourcePath(const std::string& relative) { return std::string(SHADOWFX_SOURCE_DIR) + "/" + relative; }
+inline std::string sourcePath(const std::string& relative) {
+    return std::string(SHADOWFX_SOURCE_DIR) + "/" + relative;
+}
 
 // Parses and compiles an effect (a file when `isFile`, else inline source named `name`), then creates
 // its renderer. Fails the current test with the diagnostics on any error.
@@ -44,12 +46,14 @@ inline std::unique_ptr<runtime::EffectRenderer> loadEffect(const std::string& fi
         ADD_FAILURE() << "parse failed:\n" << diagnostics.str();
         return nullptr;
     }
-    std::shared_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    std::shared_ptr<fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
     if (!compiled || diagnostics.hasErrors()) {
         ADD_FAILURE() << "compile failed:\n" << diagnostics.str();
         return nullptr;
     }
-    std::unique_ptr<runtime::EffectRenderer> renderer = runtime::EffectRenderer::create(compiled, diagnostics);
+    std::unique_ptr<runtime::EffectRenderer> renderer =
+        runtime::EffectRenderer::create(compiled, diagnostics);
     if (!renderer) ADD_FAILURE() << "renderer creation failed:\n" << diagnostics.str();
     return renderer;
 }
@@ -67,17 +71,21 @@ inline bool render(runtime::EffectRenderer& renderer, const runtime::Scene& scen
 }
 
 // Luminance in [0, 1] of an 8-bit RGBA pixel.
-inline float luminance(const uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f; }
+inline float luminance(const uint8_t* p) {
+    return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f;
+}
 
 // Fails on a blank or constant image: an image test that would pass on one is a defect.
 inline ::testing::AssertionResult notConstant(const runtime::FrameImage& image) {
     if (image.rgba.empty()) return ::testing::AssertionFailure() << "empty image";
     size_t differing = 0;
     for (size_t i = 4; i < image.rgba.size(); i += 4)
-        if (image.rgba[i] != image.rgba[0] || image.rgba[i + 1] != image.rgba[1] || image.rgba[i + 2] != image.rgba[2])
+        if (image.rgba[i] != image.rgba[0] || image.rgba[i + 1] != image.rgba[1] ||
+            image.rgba[i + 2] != image.rgba[2])
             ++differing;
     if (differing < image.rgba.size() / 4 / 100)
-        return ::testing::AssertionFailure() << "image is (nearly) constant: " << differing << " pixels differ";
+        return ::testing::AssertionFailure()
+               << "image is (nearly) constant: " << differing << " pixels differ";
     return ::testing::AssertionSuccess();
 }
 

@@ -44,13 +44,15 @@ class BadInputs : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {
     const BadInput& bad = GetParam();
-    const std::string out = std::filesystem::temp_directory_path() / ("shadowfx_bad_" + std::string(bad.file) + ".png");
+    const std::string out =
+        std::filesystem::temp_directory_path() / ("shadowfx_bad_" + std::string(bad.file) + ".png");
     std::ofstream(out) << "stale";  // a stale image from an earlier run must not survive a failure
     const RunResult result = run("render tests/data/bad/" + std::string(bad.file) + " --out " + out);
     EXPECT_FALSE(result.crashed) << result.output;
     EXPECT_EQ(result.exitCode, 1) << result.output;
     const std::string expected = "tests/data/bad/" + std::string(bad.location) + " error: ";
-    EXPECT_NE(result.output.find(expected), std::string::npos) << "expected '" << expected << "' in:\n" << result.output;
+    EXPECT_NE(result.output.find(expected), std::string::npos) << "expected '" << expected << "' in:\n"
+                                                               << result.output;
     EXPECT_NE(result.output.find(bad.message), std::string::npos) << result.output;
     EXPECT_FALSE(std::filesystem::exists(out));
 }
@@ -75,8 +77,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Cli, RenderWritesAPng) {
     const std::string out = std::filesystem::temp_directory_path() / "shadowfx_cli_render.png";
     std::filesystem::remove(out);
-    const RunResult result =
-        run("render effects/thesis_fxcomposer.fx --out " + out + " --width 160 --height 120 --set PCF=true --stats");
+    const RunResult result = run("render effects/thesis_fxcomposer.fx --out " + out +
+                                 " --width 160 --height 120 --set PCF=true --stats");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::ifstream png(out, std::ios::binary);
     char signature[8] = {};
@@ -97,7 +99,8 @@ TEST(Cli, EverySubcommandHasHelp) {
     for (const char* command : {"render", "compile", "info"}) {
         const RunResult result = run(std::string(command) + " --help");
         EXPECT_EQ(result.exitCode, 0) << command;
-        EXPECT_NE(result.output.find("usage: shadowfx " + std::string(command)), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("usage: shadowfx " + std::string(command)), std::string::npos)
+            << result.output;
     }
 }
 
@@ -109,7 +112,8 @@ TEST(Cli, UsageErrorsExitWithTwo) {
 }
 
 TEST(Cli, UnknownTechniqueIsAnError) {
-    const RunResult result = run("render effects/thesis_fxcomposer.fx --out /tmp/shadowfx_nt.png --technique nope");
+    const RunResult result =
+        run("render effects/thesis_fxcomposer.fx --out /tmp/shadowfx_nt.png --technique nope");
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find("nope"), std::string::npos) << result.output;
 }

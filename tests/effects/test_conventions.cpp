@@ -71,7 +71,8 @@ float4 Black = {0, 0, 0, 1};
     const glm::mat4 translation = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f));
     const float* m = glm::value_ptr(translation);  // memory = the D3DX matrix row by row (fx/Value.h)
     ASSERT_EQ(m[12], 0.5f) << "translation must sit in the fourth row of the D3DX matrix";
-    renderer->setParameter(*renderer->findParameter("Offset"), fx::Value::matrix(4, 4, std::vector<float>(m, m + 16)));
+    renderer->setParameter(*renderer->findParameter("Offset"),
+                           fx::Value::matrix(4, 4, std::vector<float>(m, m + 16)));
     ASSERT_TRUE(render(*renderer, emptyScene(), 64, 64));
     const runtime::FrameImage image = renderer->readFrame();
     ASSERT_TRUE(notConstant(image));

@@ -24,20 +24,24 @@ struct PlaneSample {
 // visibility from the light, so that shadow-map resolution and filtering cannot change their answer.
 std::vector<PlaneSample> classifyPlanePoints(const runtime::Scene& scene) {
     const glm::vec3 toLight = -glm::normalize(scene.lights.at(0).direction);
-    auto shadowed = [&](const glm::vec3& p) { return runtime::segmentOccluded(scene, p, p + toLight * 100.0f); };
+    auto shadowed = [&](const glm::vec3& p) {
+        return runtime::segmentOccluded(scene, p, p + toLight * 100.0f);
+    };
     std::vector<PlaneSample> samples;
     for (float x = -9.0f; x <= 9.0f; x += 0.25f) {
         for (float z = -9.0f; z <= 9.0f; z += 0.25f) {
             const glm::vec3 p(x, 0.0f, z);
             const std::optional<glm::vec3> pixel = runtime::projectToPixel(scene, p, kWidth, kHeight);
-            if (!pixel || pixel->x < 2 || pixel->y < 2 || pixel->x > kWidth - 3 || pixel->y > kHeight - 3) continue;
+            if (!pixel || pixel->x < 2 || pixel->y < 2 || pixel->x > kWidth - 3 || pixel->y > kHeight - 3)
+                continue;
             if (runtime::segmentOccluded(scene, scene.camera.position, p)) continue;
             const bool inShadow = shadowed(p);
             bool uniform = true;
             for (float dx : {-0.3f, 0.0f, 0.3f})
                 for (float dz : {-0.3f, 0.0f, 0.3f})
-                    uniform = uniform && shadowed(p + glm::vec3(dx, 0.0f, dz)) == inShadow &&
-                              !runtime::segmentOccluded(scene, scene.camera.position, p + glm::vec3(dx, 0.0f, dz));
+                    uniform =
+                        uniform && shadowed(p + glm::vec3(dx, 0.0f, dz)) == inShadow &&
+                        !runtime::segmentOccluded(scene, scene.camera.position, p + glm::vec3(dx, 0.0f, dz));
             if (uniform) samples.push_back({p, glm::ivec2(*pixel), inShadow});
         }
     }
@@ -49,14 +53,15 @@ std::vector<PlaneSample> classifyPlanePoints(const runtime::Scene& scene) {
 void expectShadowsWhereGeometrySaysSo(const runtime::Scene& scene, const runtime::FrameImage& image) {
     ASSERT_TRUE(notConstant(image));
     const std::vector<PlaneSample> samples = classifyPlanePoints(scene);
-    const size_t shadowCount =
-        static_cast<size_t>(std::count_if(samples.begin(), samples.end(), [](auto& s) { return s.shadowed; }));
+    const size_t shadowCount = static_cast<size_t>(
+        std::count_if(samples.begin(), samples.end(), [](auto& s) { return s.shadowed; }));
     ASSERT_GE(shadowCount, 20u) << "the scene no longer puts a visible shadow on the plane";
     ASSERT_GE(samples.size() - shadowCount, 100u);
 
     const runtime::SceneObject& plane = scene.objects.at(0);
     const glm::vec3 ambient = plane.color * scene.ambient;
-    const float nDotL = std::max(0.0f, glm::dot(glm::vec3(0, 1, 0), -glm::normalize(scene.lights[0].direction)));
+    const float nDotL =
+        std::max(0.0f, glm::dot(glm::vec3(0, 1, 0), -glm::normalize(scene.lights[0].direction)));
     const float ambientLuminance = 0.2126f * ambient.r + 0.7152f * ambient.g + 0.0722f * ambient.b;
     const float diffuseLuminance =
         nDotL * (0.2126f * plane.color.r + 0.7152f * plane.color.g + 0.0722f * plane.color.b);

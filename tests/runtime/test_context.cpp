@@ -16,7 +16,9 @@ using namespace runtime;
 
 namespace {
 
-bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
+bool hasDisplay() {
+    return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
+}
 
 void expectCore45WithD3dConventions() {
     GLint major = 0, minor = 0, profile = 0, origin = 0, depthMode = 0;

@@ -62,9 +62,11 @@ TEST_F(GlStates, BlendOpMinKeepsTheMinimumOnAnR32FTarget) {
     GpuTexture target = GpuTexture::create2D(fx::TextureFormat::R32F, kSize, kSize);
     bindTargets(&target);
     FramebufferCache::clear({std::array<float, 4>{100, 0, 0, 0}, {}, {}});
-    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1}, {RenderStateId::BlendOp, 4},
+    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1},
+                                  {RenderStateId::BlendOp, 4},
                                   // factors are ignored by MIN: ZERO/ZERO would give 0 if they were not
-                                  {RenderStateId::SrcBlend, 1}, {RenderStateId::DestBlend, 1},
+                                  {RenderStateId::SrcBlend, 1},
+                                  {RenderStateId::DestBlend, 1},
                                   {RenderStateId::ZEnable, 0}}));
     GpuMesh quad = testsupport::clipSpaceQuad(0.5f);
     for (float value : {5.0f, 2.0f, 7.0f, 3.5f}) drawColor(quad, value, 0, 0, 1);
@@ -72,8 +74,8 @@ TEST_F(GlStates, BlendOpMinKeepsTheMinimumOnAnR32FTarget) {
     EXPECT_FLOAT_EQ(image.sample(0, 0, 0), 2.0f);
     EXPECT_FLOAT_EQ(image.sample(kSize - 1, kSize - 1, 0), 2.0f);
 
-    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1}, {RenderStateId::BlendOp, 5},
-                                  {RenderStateId::ZEnable, 0}}));
+    applyRenderStates(withStates(
+        {{RenderStateId::AlphaBlendEnable, 1}, {RenderStateId::BlendOp, 5}, {RenderStateId::ZEnable, 0}}));
     for (float value : {-4.0f, 9.0f, 7.0f}) drawColor(quad, value, 0, 0, 1);
     EXPECT_FLOAT_EQ(readFloatTexture(target).sample(3, 3, 0), 9.0f);
 }
@@ -84,16 +86,20 @@ TEST_F(GlStates, BlendSubtractAndFactor) {
     GpuMesh quad = testsupport::clipSpaceQuad(0.5f);
     FramebufferCache::clear({std::array<float, 4>{1, 1, 1, 1}, {}, {}});
     // RevSubtract: dst*ONE - src*ONE.
-    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1}, {RenderStateId::BlendOp, 3},
-                                  {RenderStateId::SrcBlend, 2}, {RenderStateId::DestBlend, 2}}));
+    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1},
+                                  {RenderStateId::BlendOp, 3},
+                                  {RenderStateId::SrcBlend, 2},
+                                  {RenderStateId::DestBlend, 2}}));
     drawColor(quad, 0.25f, 0.5f, 0.0f, 0.0f);
     glm::vec4 pixel = readFloatTexture(target).pixel(1, 1);
     EXPECT_FLOAT_EQ(pixel.r, 0.75f);
     EXPECT_FLOAT_EQ(pixel.g, 0.5f);
     // BlendFactor is a D3DCOLOR (ARGB): src * factor.
     FramebufferCache::clear({std::array<float, 4>{0, 0, 0, 0}, {}, {}});
-    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1}, {RenderStateId::SrcBlend, 14},
-                                  {RenderStateId::DestBlend, 1}, {RenderStateId::BlendFactor, double(0x80FF0000u)}}));
+    applyRenderStates(withStates({{RenderStateId::AlphaBlendEnable, 1},
+                                  {RenderStateId::SrcBlend, 14},
+                                  {RenderStateId::DestBlend, 1},
+                                  {RenderStateId::BlendFactor, double(0x80FF0000u)}}));
     drawColor(quad, 1, 1, 1, 1);
     pixel = readFloatTexture(target).pixel(1, 1);
     EXPECT_FLOAT_EQ(pixel.r, 1.0f);
@@ -142,12 +148,12 @@ TEST_F(GlStates, DepthFuncAndDepthWrites) {
         drawColor(mesh, 1, 1, 1, 1);
         return readColorTarget(color).pixel(4, 4).r > 0.5f;
     };
-    EXPECT_TRUE(passes(near, 2));    // LESS
+    EXPECT_TRUE(passes(near, 2));  // LESS
     EXPECT_FALSE(passes(far, 2));
-    EXPECT_FALSE(passes(near, 5));   // GREATER
+    EXPECT_FALSE(passes(near, 5));  // GREATER
     EXPECT_TRUE(passes(far, 5));
-    EXPECT_FALSE(passes(near, 1));   // NEVER
-    EXPECT_TRUE(passes(far, 8));     // ALWAYS
+    EXPECT_FALSE(passes(near, 1));  // NEVER
+    EXPECT_TRUE(passes(far, 8));    // ALWAYS
 
     // ZWriteEnable = FALSE: the test still runs, the buffer keeps its value.
     FramebufferCache::clear({std::array<float, 4>{0, 0, 0, 0}, 0.5f, {}});
@@ -242,13 +248,17 @@ TEST_F(GlStates, StencilReplaceThenEqualMasksDrawing) {
     // Left half: stencil := 5, no colour.
     GpuMesh leftHalf = testsupport::clipSpaceTriangles(
         {{-1, 1, 0.5f}, {0, 1, 0.5f}, {0, -1, 0.5f}, {-1, 1, 0.5f}, {0, -1, 0.5f}, {-1, -1, 0.5f}});
-    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1}, {RenderStateId::StencilPass, 3},
-                                  {RenderStateId::StencilRef, 5}, {RenderStateId::ColorWriteEnable, 0}}));
+    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1},
+                                  {RenderStateId::StencilPass, 3},
+                                  {RenderStateId::StencilRef, 5},
+                                  {RenderStateId::ColorWriteEnable, 0}}));
     drawColor(leftHalf, 1, 1, 1, 1);
     // Everywhere, where stencil == 5.
     GpuMesh quad = testsupport::clipSpaceQuad(0.5f);
-    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1}, {RenderStateId::StencilFunc, 3},
-                                  {RenderStateId::StencilRef, 5}, {RenderStateId::ZFunc, 8}}));
+    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1},
+                                  {RenderStateId::StencilFunc, 3},
+                                  {RenderStateId::StencilRef, 5},
+                                  {RenderStateId::ZFunc, 8}}));
     drawColor(quad, 1, 1, 1, 1);
     Image image = readColorTarget(color);
     EXPECT_GT(image.pixel(2, 8).r, 0.5f);
@@ -258,8 +268,10 @@ TEST_F(GlStates, StencilReplaceThenEqualMasksDrawing) {
     EXPECT_EQ(stencil.bytes[8 * kSize + kSize - 3], 0);
 
     // StencilWriteMask limits the bits written; Clear ignores it.
-    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1}, {RenderStateId::StencilPass, 3},
-                                  {RenderStateId::StencilRef, 0xff}, {RenderStateId::StencilWriteMask, 0x0f}}));
+    applyRenderStates(withStates({{RenderStateId::StencilEnable, 1},
+                                  {RenderStateId::StencilPass, 3},
+                                  {RenderStateId::StencilRef, 0xff},
+                                  {RenderStateId::StencilWriteMask, 0x0f}}));
     FramebufferCache::clear({{}, {}, 0x80});
     drawColor(quad, 1, 1, 1, 1);
     EXPECT_EQ(readFramebufferStencil(kSize, kSize).bytes[3], 0x8f);
@@ -274,9 +286,10 @@ TEST_F(GlStates, TwoSidedStencilUsesCcwStatesForCounterClockwiseTriangles) {
     // Upper-right half clockwise; lower-left half counter-clockwise (top-left, bottom-left, bottom-right).
     GpuMesh mesh = testsupport::clipSpaceTriangles(
         {{-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, {-1, 1, 0.5f}, {-1, -1, 0.5f}, {1, -1, 0.5f}});
-    applyRenderStates(withStates({{RenderStateId::CullMode, 1}, {RenderStateId::StencilEnable, 1},
+    applyRenderStates(withStates({{RenderStateId::CullMode, 1},
+                                  {RenderStateId::StencilEnable, 1},
                                   {RenderStateId::TwoSidedStencilMode, 1},
-                                  {RenderStateId::StencilPass, 7},       // INCR
+                                  {RenderStateId::StencilPass, 7},         // INCR
                                   {RenderStateId::CCW_StencilPass, 8}}));  // DECR
     drawColor(mesh, 1, 1, 1, 1);
     Image stencil = readFramebufferStencil(kSize, kSize);
@@ -285,9 +298,12 @@ TEST_F(GlStates, TwoSidedStencilUsesCcwStatesForCounterClockwiseTriangles) {
 }
 
 TEST_F(GlStates, UnsetStatesReturnToDefaults) {
-    applyRenderStates(withStates({{RenderStateId::CullMode, 1}, {RenderStateId::AlphaBlendEnable, 1},
-                                  {RenderStateId::StencilEnable, 1}, {RenderStateId::ZEnable, 0},
-                                  {RenderStateId::FillMode, 2}, {RenderStateId::DepthBias, 0.5},
+    applyRenderStates(withStates({{RenderStateId::CullMode, 1},
+                                  {RenderStateId::AlphaBlendEnable, 1},
+                                  {RenderStateId::StencilEnable, 1},
+                                  {RenderStateId::ZEnable, 0},
+                                  {RenderStateId::FillMode, 2},
+                                  {RenderStateId::DepthBias, 0.5},
                                   {RenderStateId::ScissorTestEnable, 1}}));
     applyRenderStates(RenderStateBlock::defaults());
     EXPECT_TRUE(gl::IsEnabled(GL_CULL_FACE));

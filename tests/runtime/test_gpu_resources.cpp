@@ -62,7 +62,8 @@ TEST_F(GpuResources, EveryFormatAllocatesClearsAndReadsBack) {
         if (texture.isDepth()) {
             targets.depth.texture = &texture;
             bind(targets);
-            FramebufferCache::clear({{}, 0.25f, texture.glFormat().hasStencil ? std::optional<int>(7) : std::nullopt});
+            FramebufferCache::clear(
+                {{}, 0.25f, texture.glFormat().hasStencil ? std::optional<int>(7) : std::nullopt});
             Image depth = readFloatTexture(texture);
             EXPECT_NEAR(depth.sample(7, 3, 0), 0.25f, 1e-4);
             if (texture.glFormat().hasStencil) EXPECT_EQ(readFramebufferStencil(8, 4).bytes[5], 7);

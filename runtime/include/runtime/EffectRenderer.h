@@ -23,14 +23,42 @@ struct FrameOptions {
     int height = 480;
     std::string technique;  // "" = the STANDARDSGLOBAL script's choice, else the first technique
     float time = 0.0f;      // seconds, for the Time semantic
+    // Time every pass (GL_TIME_ELAPSED queries and CPU clocks) into FrameStats::passTimings and the
+    // runtime's own CPU time into FrameStats::cpu. render() then waits for the GPU to finish the frame, so
+    // its wall time is the frame's; normal renders leave it off and pay for no queries.
+    bool timePasses = false;
+};
+
+// One executed pass of a timed frame (FrameOptions::timePasses); a pass run by a LoopByCount appears once
+// per iteration, in execution order.
+struct PassTiming {
+    std::string pass;
+    uint64_t gpuNs = 0;  // GL_TIME_ELAPSED from the pass's start to the next pass's (its clears included)
+    uint64_t cpuNs = 0;  // CPU time the runtime spent issuing the pass
+    int draws = 0;
+};
+
+// Where a timed frame's CPU time went. Everything but `glNs` is the runtime's own overhead.
+struct FrameCpuTime {
+    uint64_t totalNs = 0;      // the whole render() call before waiting for the GPU
+    uint64_t bindingNs = 0;    // semantic binding (SemanticBinder) and uniform upload
+    uint64_t preshaderNs = 0;  // evaluating pass arguments and render-state expressions (fx::evaluate)
+    uint64_t glNs = 0;         // inside GL draw, clear and framebuffer calls (the driver's share)
+    // Script interpretation and the rest of the runtime: totalNs - bindingNs - preshaderNs - glNs.
+    uint64_t scriptNs() const {
+        const uint64_t known = bindingNs + preshaderNs + glNs;
+        return totalNs > known ? totalNs - known : 0;
+    }
 };
 
 // Counts of the work one frame did: what `render --stats` prints.
 struct FrameStats {
-    int passesRun = 0;
+    int passesRun = 0;  // Pass= commands executed (passes that only clear included)
     int draws = 0;
     uint64_t triangles = 0;
     int clears = 0;
+    std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
+    FrameCpuTime cpu;                     // only with FrameOptions::timePasses
 };
 
 // An RGBA image read back from the frame (8 bits per channel, rows top to bottom).
@@ -58,6 +86,8 @@ public:
     std::optional<size_t> findParameter(std::string_view name) const;
     const fx::Value& parameter(size_t index) const;
     void setParameter(size_t index, const fx::Value& value);
+    // True once setParameter() set it: what hot reload carries over to the next effect.
+    bool isPinned(size_t index) const;
     // Parses VALUE for the parameter's type ("0.5", "true", "1,0,0", "{1, 0, 0}") and sets it.
     bool setParameterFromText(std::string_view name, std::string_view text, fx::DiagnosticSink& diagnostics);
 
