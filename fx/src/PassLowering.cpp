@@ -92,58 +92,27 @@ std::optional<int> varyingLocation(const std::string& semantic) {
 // [SECTION] Types and literals
 
 std::string hlslTypeName(const TypeDesc& type) {
-    std::string base;
+    // glslang needs concrete types where D3D9 allows untyped ones (`sampler`, `texture`); types with no
+    // HLSL counterpart in a shader (strings, shader variables) never reach a unit and read as float.
+    TypeDesc concrete = type;
     switch (type.base) {
-        case BaseType::Bool:
-            base = "bool";
-            break;
-        case BaseType::Int:
-            base = "int";
-            break;
-        case BaseType::UInt:
-            base = "uint";
-            break;
-        case BaseType::Half:
-            base = "half";
-            break;
-        case BaseType::Double:
-            base = "double";
-            break;
-        case BaseType::Float:
-            base = "float";
-            break;
         case BaseType::Sampler:
-        case BaseType::Sampler2D:
-            return "sampler2D";
-        case BaseType::Sampler1D:
-            return "sampler1D";
-        case BaseType::Sampler3D:
-            return "sampler3D";
-        case BaseType::SamplerCube:
-            return "samplerCUBE";
-        case BaseType::SamplerState:
-            return "SamplerState";
-        case BaseType::SamplerComparisonState:
-            return "SamplerComparisonState";
+            concrete.base = BaseType::Sampler2D;
+            break;
         case BaseType::Texture:
-        case BaseType::Texture2D:
-            return "Texture2D";
-        case BaseType::Texture1D:
-            return "Texture1D";
-        case BaseType::Texture3D:
-            return "Texture3D";
-        case BaseType::TextureCube:
-            return "TextureCube";
-        case BaseType::Struct:
-            return type.structName;
+            concrete.base = BaseType::Texture2D;
+            break;
+        case BaseType::Void:
+        case BaseType::String:
+        case BaseType::VertexShader:
+        case BaseType::PixelShader:
+            concrete.base = BaseType::Float;
+            break;
         default:
-            return "float";
+            break;
     }
-    if (type.shape == Shape::Vector) return base + std::to_string(type.cols);
-    if (type.shape == Shape::Matrix)
-        return std::string(type.rowMajor ? "row_major " : "") + base + std::to_string(type.rows) + "x" +
-               std::to_string(type.cols);
-    return base;
+    const bool rowMajor = type.shape == Shape::Matrix && type.rowMajor;
+    return (rowMajor ? "row_major " : "") + concrete.hlslName();
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "SamplerObject.h"
 
+#include "RenderStateApplier.h"
+
 #include <algorithm>
 #include <cstring>
 #include <utility>
@@ -36,26 +38,8 @@ GLenum minFilter(int minFilter, int mipFilter) {
 }  // namespace
 
 GLenum glCompareFunc(int d3dCmp) {
-    switch (d3dCmp) {
-        case 1:
-            return GL_NEVER;
-        case 2:
-            return GL_LESS;
-        case 3:
-            return GL_EQUAL;
-        case 4:
-            return GL_LEQUAL;
-        case 5:
-            return GL_GREATER;
-        case 6:
-            return GL_NOTEQUAL;
-        case 7:
-            return GL_GEQUAL;
-        case 8:
-            return GL_ALWAYS;
-        default:
-            return GL_LEQUAL;
-    }
+    // 0: the sampler_state sets no ComparisonFunc; a depth target then compares with D3D's LESSEQUAL.
+    return d3dCmp >= 1 && d3dCmp <= 8 ? glCompareFromD3d(d3dCmp) : GL_LEQUAL;
 }
 
 GLenum glAddressMode(int d3dAddress) {
