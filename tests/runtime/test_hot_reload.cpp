@@ -2,6 +2,7 @@
 // folder, rendered headlessly. Edits are written the way editors save (a temporary file renamed over the
 // original), so the tests exercise the directory watch that makes that work.
 #include "GlTestSupport.h"
+#include "LiveGlObjects.h"
 
 #include <runtime/EffectRenderer.h>
 #include <runtime/FileWatcher.h>
@@ -224,38 +225,11 @@ TEST_F(HotReload, TweakedParametersSurviveAReload) {
     EXPECT_FALSE(effect.renderer()->isPinned(*retyped));
 }
 
-// Live GL objects, counted by asking the driver about every name up to a bound. Names are small integers
-// handed out from 1 in Mesa, so a leak shows as more live names; counting through the driver (rather than
-// a counter in the runtime) also catches objects the runtime's own bookkeeping would miss.
-struct LiveObjects {
-    int textures = 0, buffers = 0, programs = 0, shaders = 0, framebuffers = 0, samplers = 0,
-        vertexArrays = 0;
-    bool operator==(const LiveObjects&) const = default;
-};
-std::ostream& operator<<(std::ostream& out, const LiveObjects& o) {
-    return out << "{textures " << o.textures << ", buffers " << o.buffers << ", programs " << o.programs
-               << ", shaders " << o.shaders << ", framebuffers " << o.framebuffers << ", samplers "
-               << o.samplers << ", vertex arrays " << o.vertexArrays << "}";
-}
-LiveObjects countLiveObjects() {
-    LiveObjects live;
-    for (GLuint name = 1; name <= 8192; ++name) {
-        live.textures += gl::IsTexture(name) ? 1 : 0;
-        live.buffers += gl::IsBuffer(name) ? 1 : 0;
-        live.programs += gl::IsProgram(name) ? 1 : 0;
-        live.shaders += gl::IsShader(name) ? 1 : 0;
-        live.framebuffers += gl::IsFramebuffer(name) ? 1 : 0;
-        live.samplers += gl::IsSampler(name) ? 1 : 0;
-        live.vertexArrays += gl::IsVertexArray(name) ? 1 : 0;
-    }
-    return live;
-}
-
 TEST_F(HotReload, TwoHundredReloadCyclesLeaveTheLiveGlObjectCountUnchanged) {
     runtime::ReloadableEffect effect((mDir / "main.fx").string());
     ASSERT_TRUE(effect.reload()) << effect.errorText();
     centre(effect);
-    const LiveObjects before = countLiveObjects();
+    const shadowfx::test::LiveGlObjects before = shadowfx::test::countLiveGlObjects();
     EXPECT_GT(before.programs, 0);
 
     const std::string variants[2] = {kMainEffect,
@@ -271,7 +245,7 @@ TEST_F(HotReload, TwoHundredReloadCyclesLeaveTheLiveGlObjectCountUnchanged) {
     std::ofstream(mDir / "main.fx") << kMainEffect;
     ASSERT_TRUE(effect.reload()) << effect.errorText();
     centre(effect);
-    EXPECT_EQ(countLiveObjects(), before);
+    EXPECT_EQ(shadowfx::test::countLiveGlObjects(), before);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // scripts/test-sanitized.sh (LeakSanitizer); this test also catches GL objects that are never deleted and
 // growth that LeakSanitizer cannot see (objects still referenced from a cache, driver-side memory).
 #include "GlTestSupport.h"
+#include "LiveGlObjects.h"
 
 #include <fx/CompileCache.h>
 #include <fx/EffectCompiler.h>
@@ -49,34 +50,6 @@ long residentKb() {
     return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
-struct GlObjects {
-    int textures = 0, buffers = 0, programs = 0, shaders = 0, samplers = 0, framebuffers = 0,
-        vertexArrays = 0;
-    bool operator==(const GlObjects&) const = default;
-};
-
-std::ostream& operator<<(std::ostream& out, const GlObjects& o) {
-    return out << "{textures " << o.textures << ", buffers " << o.buffers << ", programs " << o.programs
-               << ", shaders " << o.shaders << ", samplers " << o.samplers << ", framebuffers "
-               << o.framebuffers << ", vertex arrays " << o.vertexArrays << "}";
-}
-
-// Live objects among names 1..kProbedNames. GL implementations hand out small names first and reuse
-// freed ones, so a leak shows up as a growing count here.
-GlObjects liveGlObjects() {
-    GlObjects o;
-    for (GLuint name = 1; name <= kProbedNames; ++name) {
-        o.textures += gl::IsTexture(name) ? 1 : 0;
-        o.buffers += gl::IsBuffer(name) ? 1 : 0;
-        o.programs += gl::IsProgram(name) ? 1 : 0;
-        o.shaders += gl::IsShader(name) ? 1 : 0;
-        o.samplers += gl::IsSampler(name) ? 1 : 0;
-        o.framebuffers += gl::IsFramebuffer(name) ? 1 : 0;
-        o.vertexArrays += gl::IsVertexArray(name) ? 1 : 0;
-    }
-    return o;
-}
-
 std::vector<std::string> effectFiles() {
     std::vector<std::string> files;
     for (const auto& entry :
@@ -119,7 +92,7 @@ TEST(LoadUnload, ThousandCyclesKeepMemoryAndGlObjectsFlat) {
             ASSERT_NO_FATAL_FAILURE(cycle(file, i % 10 == 0 ? &fresh : &cache));
         }
     {  // The probe must see what a live renderer holds, or a flat count would prove nothing.
-        const GlObjects idle = liveGlObjects();
+        const shadowfx::test::LiveGlObjects idle = shadowfx::test::countLiveGlObjects(kProbedNames);
         fx::DiagnosticList diagnostics;
         fx::ParseOptions parseOptions;
         std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(files.front(), parseOptions, diagnostics);
@@ -131,12 +104,12 @@ TEST(LoadUnload, ThousandCyclesKeepMemoryAndGlObjectsFlat) {
         ASSERT_TRUE(compiled) << diagnostics.str();
         auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
         ASSERT_TRUE(renderer) << diagnostics.str();
-        const GlObjects live = liveGlObjects();
+        const shadowfx::test::LiveGlObjects live = shadowfx::test::countLiveGlObjects(kProbedNames);
         EXPECT_GT(live.programs, idle.programs) << "the glIs* probe does not see the renderer's programs";
     }
     gl::Finish();
     const long rssBefore = residentKb();
-    const GlObjects objectsBefore = liveGlObjects();
+    const shadowfx::test::LiveGlObjects objectsBefore = shadowfx::test::countLiveGlObjects(kProbedNames);
 
     const auto start = std::chrono::steady_clock::now();
     int cycles = 0;
@@ -148,7 +121,7 @@ TEST(LoadUnload, ThousandCyclesKeepMemoryAndGlObjectsFlat) {
     gl::Finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const long rssAfter = residentKb();
-    const GlObjects objectsAfter = liveGlObjects();
+    const shadowfx::test::LiveGlObjects objectsAfter = shadowfx::test::countLiveGlObjects(kProbedNames);
 
     EXPECT_GE(cycles, kTotalCycles);
     EXPECT_EQ(objectsAfter, objectsBefore) << "GL objects leaked over " << cycles << " cycles";
