@@ -64,11 +64,12 @@ void FileWatcher::setFiles(const std::vector<std::string>& paths) {
     }
 }
 
-void FileWatcher::drain(std::set<std::string>& changed) {
+bool FileWatcher::drain(std::set<std::string>& changed) {
+    bool completed = false;
     alignas(inotify_event) char buffer[16 * 1024];
     for (;;) {
         const ssize_t length = read(mFd, buffer, sizeof buffer);
-        if (length <= 0) return;  // EAGAIN: nothing more now
+        if (length <= 0) return completed;  // EAGAIN: nothing more now
         for (ssize_t offset = 0; offset < length;) {
             const auto* event = reinterpret_cast<const inotify_event*>(buffer + offset);
             offset += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
@@ -77,7 +78,9 @@ void FileWatcher::drain(std::set<std::string>& changed) {
                                       [&](const auto& w) { return w.first == event->wd; });
             if (watch == mWatches.end()) continue;
             const std::string path = (std::filesystem::path(watch->second) / event->name).string();
-            if (mFiles.count(path) != 0) changed.insert(path);
+            if (mFiles.count(path) == 0) continue;
+            changed.insert(path);
+            completed = completed || (event->mask & (IN_CLOSE_WRITE | IN_MOVED_TO)) != 0;
         }
     }
 }
@@ -90,8 +93,9 @@ std::vector<std::string> FileWatcher::waitForChange(std::chrono::milliseconds ti
     const Clock::time_point deadline = Clock::now() + timeout;
     // Phase 1: wait for the first event on a watched file (events on other files in the directories,
     // such as an editor's swap files, are read and ignored).
+    bool completed = false;
     for (;;) {
-        drain(changed);
+        completed = drain(changed) || completed;
         if (!changed.empty()) break;
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
         if (left.count() <= 0) return {};
@@ -100,13 +104,16 @@ std::vector<std::string> FileWatcher::waitForChange(std::chrono::milliseconds ti
         if (ready < 0 && errno != EINTR) return {};
     }
     // Phase 2: debounce. An editor's save is several events within a few milliseconds; reloading on
-    // the first would read a half-written file.
+    // the first would read a half-written file. Once a watched file was closed after writing or renamed
+    // into place its content is complete, and only the rest of the burst (attributes, other files of a
+    // multi-file save) needs a short quiet interval: that keeps save-to-frame latency low.
     for (;;) {
+        const auto quiet = completed ? std::min(debounce, kSettleAfterCompletedWrite) : debounce;
         pollfd descriptor{mFd, POLLIN, 0};
-        const int ready = poll(&descriptor, 1, static_cast<int>(debounce.count()));
+        const int ready = poll(&descriptor, 1, static_cast<int>(quiet.count()));
         if (ready == 0) break;
         if (ready < 0 && errno != EINTR) break;
-        drain(changed);
+        completed = drain(changed) || completed;
     }
     return {changed.begin(), changed.end()};
 }

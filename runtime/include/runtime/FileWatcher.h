@@ -30,8 +30,8 @@ public:
     const std::set<std::string>& files() const { return mFiles; }
 
     // Waits up to `timeout` for an event on a watched file; once one came, keeps reading until `debounce`
-    // passes without another, and returns the watched files that changed (absolute paths). Empty if the
-    // timeout passed first. A zero timeout polls.
+    // (kSettleAfterCompletedWrite once a write completed) passes without another, and returns the watched
+    // files that changed (absolute paths). Empty if the timeout passed first. A zero timeout polls.
     std::vector<std::string> waitForChange(
         std::chrono::milliseconds timeout,
         std::chrono::milliseconds debounce = std::chrono::milliseconds(50));
@@ -40,8 +40,12 @@ public:
     int fd() const { return mFd; }
 
 private:
-    // Reads the events available now; adds watched files they name to `changed`.
-    void drain(std::set<std::string>& changed);
+    // Reads the events available now; adds watched files they name to `changed`. True if one of them
+    // completed a write (IN_CLOSE_WRITE or IN_MOVED_TO on a watched file).
+    bool drain(std::set<std::string>& changed);
+
+    // The quiet interval after a completed write, instead of the full debounce.
+    static constexpr std::chrono::milliseconds kSettleAfterCompletedWrite{10};
 
     int mFd = -1;
     std::set<std::string> mFiles;                       // absolute paths
