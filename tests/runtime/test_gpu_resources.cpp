@@ -66,7 +66,9 @@ TEST_F(GpuResources, EveryFormatAllocatesClearsAndReadsBack) {
                 {{}, 0.25f, texture.glFormat().hasStencil ? std::optional<int>(7) : std::nullopt});
             Image depth = readFloatTexture(texture);
             EXPECT_NEAR(depth.sample(7, 3, 0), 0.25f, 1e-4);
-            if (texture.glFormat().hasStencil) EXPECT_EQ(readFramebufferStencil(8, 4).bytes[5], 7);
+            if (texture.glFormat().hasStencil) {
+                EXPECT_EQ(readFramebufferStencil(8, 4).bytes[5], 7);
+            }
         } else {
             targets.colors[0].texture = &texture;
             bind(targets);
