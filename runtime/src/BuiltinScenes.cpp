@@ -14,21 +14,10 @@ namespace runtime {
 
 namespace {
 
-SceneObject makeObject(std::string name, Mesh mesh, const glm::mat4& world, const glm::vec3& color,
-                       uint32_t id) {
-    SceneObject object;
-    object.name = std::move(name);
-    object.mesh = std::make_shared<const Mesh>(std::move(mesh));
-    object.world = world;
-    object.color = color;
-    object.id = id;
-    return object;
-}
-
 // Ground planes are tessellated (not one quad) so vertex-lit and per-vertex-depth effects still work.
 SceneObject makeGround(float size, uint32_t id) {
-    return makeObject("ground", makePlane(size, size, 10), glm::mat4(1.0f), glm::vec3(0.75f, 0.75f, 0.7f),
-                      id);
+    return placeObject("ground", share(makePlane(size, size, 10)), glm::mat4(1.0f),
+                       glm::vec3(0.75f, 0.75f, 0.7f), id);
 }
 
 // Translation that rests a mesh's lowest point on y = 0 at (x, z).
@@ -36,32 +25,23 @@ glm::mat4 restingOnGround(const Mesh& mesh, float x, float z) {
     return glm::translate(glm::mat4(1.0f), glm::vec3(x, -mesh.boundsMin().y, z));
 }
 
-Light directionalLight(const glm::vec3& direction, const Bounds& bounds) {
-    Light light;
-    light.type = Light::Type::Directional;
-    light.direction = glm::normalize(direction);
-    // Only informative for a directional light: where its view is placed (Light::view).
-    light.position = bounds.center() - light.direction * (2.0f * bounds.radius());
-    return light;
-}
-
 Scene makeBoxes() {
     Scene scene;
     scene.name = "boxes";
     scene.objects.push_back(makeGround(20.0f, 1));
-    scene.objects.push_back(makeObject("box", makeBox(glm::vec3(2.0f)),
-                                       glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, 1.0f, 0.0f)),
-                                       glm::vec3(0.85f, 0.3f, 0.25f), 2));
-    scene.objects.push_back(makeObject("sphere", makeSphere(1.2f, 32, 16),
-                                       glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 1.2f, 1.0f)),
-                                       glm::vec3(0.25f, 0.45f, 0.85f), 3));
+    scene.objects.push_back(placeObject("box", share(makeBox(glm::vec3(2.0f))),
+                                        glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f, 1.0f, 0.0f)),
+                                        glm::vec3(0.85f, 0.3f, 0.25f), 2));
+    scene.objects.push_back(placeObject("sphere", share(makeSphere(1.2f, 32, 16)),
+                                        glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 1.2f, 1.0f)),
+                                        glm::vec3(0.25f, 0.45f, 0.85f), 3));
     scene.camera.position = glm::vec3(1.0f, 10.0f, -10.0f);
     scene.camera.target = glm::vec3(0.0f, 0.0f, 1.0f);
     // From above and to the right: the shadows fall to the objects' left (-x), beside them as the camera
     // (high, looking down at 45 degrees) sees them rather than hidden behind them, and the faces the camera
     // sees (-z) turn away from the light instead of catching it at a grazing angle (constant-bias acne).
     // That face stays ambient-only by N.L, so the default image shows shadows, not acne.
-    scene.lights.push_back(directionalLight(glm::vec3(-0.8f, -1.0f, 0.3f), scene.bounds()));
+    scene.lights.push_back(fittedDirectionalLight(glm::vec3(-0.8f, -1.0f, 0.3f), scene.bounds()));
     return scene;
 }
 
@@ -73,8 +53,8 @@ Scene makeTorusScene() {
     // Stood up: rotated about x so the ring faces the camera, its lowest point on the plane.
     glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, majorRadius + minorRadius, 0.0f)) *
                       glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    scene.objects.push_back(makeObject("torus", makeTorus(majorRadius, minorRadius, 48, 24), world,
-                                       glm::vec3(0.9f, 0.65f, 0.2f), 2));
+    scene.objects.push_back(placeObject("torus", share(makeTorus(majorRadius, minorRadius, 48, 24)), world,
+                                        glm::vec3(0.9f, 0.65f, 0.2f), 2));
     scene.camera.position = glm::vec3(0.0f, 5.0f, -10.0f);
     scene.camera.target = glm::vec3(0.0f, 1.5f, 0.0f);
 
@@ -97,12 +77,13 @@ Scene makeTeapotScene() {
     scene.name = "teapot";
     scene.objects.push_back(makeGround(20.0f, 1));
     Mesh teapot = makeTeapot(4.0f, 8);
-    glm::mat4 world = restingOnGround(teapot, 0.0f, 0.0f);
-    scene.objects.push_back(makeObject("teapot", std::move(teapot), world, glm::vec3(0.8f, 0.8f, 0.85f), 2));
+    const glm::mat4 world = restingOnGround(teapot, 0.0f, 0.0f);
+    scene.objects.push_back(
+        placeObject("teapot", share(std::move(teapot)), world, glm::vec3(0.8f, 0.8f, 0.85f), 2));
     // Seed 003's figures: the teapot seen from the front, a little from above and to the spout's side.
     scene.camera.position = glm::vec3(2.5f, 4.0f, -7.0f);
     scene.camera.target = glm::vec3(0.0f, 0.8f, 0.0f);
-    scene.lights.push_back(directionalLight(glm::vec3(-0.5f, -1.0f, 0.35f), scene.bounds()));
+    scene.lights.push_back(fittedDirectionalLight(glm::vec3(-0.5f, -1.0f, 0.35f), scene.bounds()));
     return scene;
 }
 

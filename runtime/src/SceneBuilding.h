@@ -8,9 +8,15 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 
 namespace runtime {
+
+// A generated mesh as the shared, immutable mesh objects (and their instances) point to.
+inline std::shared_ptr<const Mesh> share(Mesh mesh) {
+    return std::make_shared<const Mesh>(std::move(mesh));
+}
 
 inline SceneObject placeObject(std::string name, std::shared_ptr<const Mesh> mesh, const glm::mat4& world,
                                const glm::vec3& color, uint32_t id) {

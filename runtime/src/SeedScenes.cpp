@@ -64,10 +64,6 @@ Mesh makeLPrism(float width, float height, float thickness, float depth) {
     return mesh;
 }
 
-std::shared_ptr<const Mesh> share(Mesh mesh) {
-    return std::make_shared<const Mesh>(std::move(mesh));
-}
-
 SceneObject ground(float sizeX, float sizeZ, const glm::vec3& color) {
     const int divisions = static_cast<int>(std::max(sizeX, sizeZ) / 2.0f);
     return placeObject("ground", share(makePlane(sizeX, sizeZ, std::max(divisions, 10))), glm::mat4(1.0f),
