@@ -11,6 +11,7 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
+#include "ShadowMeasurement.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -121,41 +122,12 @@ double ms(uint64_t ns) {
 
 // [SECTION] Runs
 
-struct SceneTruth {
-    runtime::Scene scene;
-    const runtime::Light* light = nullptr;
-    runtime::GBuffer gbuffer;
-    runtime::GroundTruth truth;
-    std::vector<uint8_t> receivers;
-    double seconds = 0.0;
-};
-
 struct EffectVariant {
     std::shared_ptr<fx::CompiledEffect> timed;
     std::shared_ptr<fx::CompiledEffect> visibility;
     bool exposesVisibility = false;  // the define changed some pixel shader
     bool honoursMapSize = false;     // some render target has the requested size
 };
-
-std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::ParseOptions options,
-                                                   std::vector<std::pair<std::string, std::string>> extra,
-                                                   fx::DiagnosticSink& sink) {
-    for (auto& define : extra) options.defines.push_back(std::move(define));
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, sink);
-    if (!effect) return nullptr;
-    return fx::compileEffect(effect, fx::CompileOptions{}, sink);
-}
-
-bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& b) {
-    if (a.techniques.size() != b.techniques.size()) return false;
-    for (size_t t = 0; t < a.techniques.size(); ++t) {
-        if (a.techniques[t].passes.size() != b.techniques[t].passes.size()) return false;
-        for (size_t p = 0; p < a.techniques[t].passes.size(); ++p)
-            if (a.techniques[t].passes[p].fragment.glsl != b.techniques[t].passes[p].fragment.glsl)
-                return false;
-    }
-    return true;
-}
 
 std::string safeName(std::string text) {
     for (char& c : text)
@@ -434,27 +406,14 @@ int benchCommand(const Arguments& args) {
             std::cerr << ")\n";
             return 1;
         }
-        SceneTruth& t = truths.emplace_back();
-        t.scene = std::move(*scene);
-        t.light = t.scene.findLight("light0");
-        if (!t.light && !t.scene.lights.empty()) t.light = &t.scene.lights[0];
-        if (!t.light) {
-            std::cerr << "shadowfx bench: scene '" << name << "' has no light\n";
-            return 1;
-        }
-        std::cerr << "bench: ground truth for " << name << " (" << t.scene.triangleCount()
+        std::cerr << "bench: ground truth for " << name << " (" << scene->triangleCount()
                   << " triangles)...\n";
-        const auto start = Clock::now();
-        std::optional<runtime::GBuffer> gbuffer = runtime::renderGBuffer(t.scene, width, height, sink);
-        if (!gbuffer) {
-            std::cerr << "shadowfx bench: the G-buffer of scene '" << name << "' could not be rendered\n";
+        SceneTruth& t = truths.emplace_back();
+        std::string truthError;
+        if (!measureSceneTruth(t, std::move(*scene), width, height, truthOptions, sink, truthError)) {
+            std::cerr << "shadowfx bench: " << truthError << "\n";
             return 1;
         }
-        t.gbuffer = std::move(*gbuffer);
-        const runtime::ShadowRayCaster caster(t.scene);
-        t.truth = caster.compute(t.gbuffer, *t.light, truthOptions);
-        t.receivers = runtime::receiverMask(t.gbuffer, *t.light);
-        t.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         truthJson.push_back(
             Json{{"scene", name},
                  {"soft", t.truth.soft},
@@ -614,16 +573,14 @@ int benchCommand(const Arguments& args) {
                     record["error"] = nullptr;
                     record["error_image"] = nullptr;
                     if (variant.exposesVisibility) {
-                        runtime::FrameOptions visibilityOptions = options;
-                        visibilityOptions.timePasses = false;
-                        if (!visibility->render(t.scene, visibilityOptions, sink) || sink.errors() > 0) {
+                        const std::optional<VisibilityScore> score =
+                            scoreVisibility(*visibility, t, t.truth, options, sink);
+                        if (!score || sink.errors() > 0) {
                             progress.end();
                             return 1;
                         }
-                        const std::vector<float> effectVisibility =
-                            runtime::visibilityFromFrame(visibility->readFrame());
-                        const runtime::ShadowErrors errors =
-                            runtime::compareVisibility(t.truth.visibility, effectVisibility, t.receivers);
+                        const std::vector<float>& effectVisibility = score->visibility;
+                        const runtime::ShadowErrors& errors = score->errors;
                         record["error"] = Json{{"receiver_pixels", errors.receiverPixels},
                                                {"false_shadow_pixels", errors.falseShadowPixels},
                                                {"false_light_pixels", errors.falseLightPixels},

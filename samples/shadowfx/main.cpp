@@ -7,7 +7,10 @@
 //   shadowfx bench --effects A.fx,B.fx --out DIR [...]  error against ground truth and frame time
 //   (BenchCommand.cpp) shadowfx view EFFECT.fx [...]                        window with hot reload and
 //   parameters (ViewCommand.cpp)
+//   shadowfx check EFFECT.fx [...]                       conformance: expectations, goldens, JUnit
+//   (CheckCommand.cpp)
 #include "BenchCommand.h"
+#include "CheckCommand.h"
 #include "CommandLine.h"
 #include "ViewCommand.h"
 
@@ -226,6 +229,15 @@ const shadowfx::cli::Command kCommands[] = {
       "--area-samples", "--backend", "-I", "-D"},
      {},
      shadowfx::cli::benchCommand,
+     -1},
+    {"check",
+     "conformance: render every technique headlessly, check its expectations and golden images",
+     shadowfx::cli::kCheckUsage,
+     {},
+     {"--technique", "--scenes", "--backend", "--junit", "--out", "--width", "--height", "--area-samples",
+      "-I", "-D"},
+     {"--update", "--require-goldens", "--list-techniques"},
+     shadowfx::cli::checkCommand,
      -1},
     {"view",
      "open an effect in a window: hot reload, error overlay, parameters, render targets",

@@ -1,0 +1,852 @@
+// CheckCommand: `shadowfx check`.
+//
+// [SECTION] Results       outcomes and one row per (backend, effect, technique, scene, check)
+// [SECTION] Expectations  the Expect* annotations of a technique
+// [SECTION] Goldens       where a technique's golden image for a renderer lives, and --update
+// [SECTION] Frame checks  NaN/Inf in render targets, blank or constant frames
+// [SECTION] Output        the table, JUnit XML, the images of a failure
+// [SECTION] Runs          compile once, then per backend: ground truth per scene, render, check
+//
+// Outcomes: PASS; QUALITY_WARNING (passes, but a measured value is above 80% of its bound, or the technique
+// of a shadowing effect declares no ExpectMisclassifiedBelow); NOT_SUPPORTED (the check cannot run here: a
+// backend that creates no context, a penumbra bound on a scene without an area light, no goldens for this
+// renderer); FAIL. Only FAIL makes the exit status 1.
+#include "CheckCommand.h"
+#include "ShadowMeasurement.h"
+
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+#include <fx/Preshader.h>
+#include <runtime/EffectRenderer.h>
+#include <runtime/GlContext.h>
+#include <runtime/GroundTruth.h>
+#include <runtime/ImageCompare.h>
+#include <runtime/SceneFile.h>
+#include <runtime/ShadowMetrics.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace shadowfx::cli {
+
+const char* const kCheckUsage =
+    "usage: shadowfx check EFFECT.fx [EFFECT.fx ...] [options]\n"
+    "  --technique LIST      only these techniques (comma-separated or repeated; default: all)\n"
+    "  --scenes LIST         scenes for every technique, overriding their ExpectScenes annotations\n"
+    "                        (built-in names or scene .json files; default: ExpectScenes, else boxes)\n"
+    "  --backend LIST        all, osmesa, egl or a comma-separated list (default all: each one that\n"
+    "                        creates a context; one that cannot is NOT_SUPPORTED)\n"
+    "  --junit FILE          also write the results as JUnit XML\n"
+    "  --out DIR             images of failures: "
+    "DIR/EFFECT/TECHNIQUE/SCENE.{result,reference,errormask}.png\n"
+    "                        (default out/check)\n"
+    "  --update              write the golden images of this renderer instead of comparing (never in CI)\n"
+    "  --require-goldens     a renderer without goldens FAILs instead of NOT_SUPPORTED\n"
+    "  --width W, --height H frame size (default 320x240, the size goldens are made at)\n"
+    "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
+    "  --list-techniques     print each effect's technique names, one per line, and exit\n"
+    "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
+    "Technique annotations read: string ExpectScenes, float ExpectMisclassifiedBelow (percent of receiver\n"
+    "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (area lights), int ExpectMapSize, bool\n"
+    "ExpectShadows. Goldens: EFFECT_DIR/golden/EFFECT/TECHNIQUE/SCENE.png (README, \"Conformance\").\n"
+    "Exit status: 0 if nothing FAILs, 1 on any FAIL, 2 on usage errors.\n";
+
+namespace {
+
+// [SECTION] Results
+
+enum class Outcome { Pass, QualityWarning, NotSupported, Fail };
+
+const char* outcomeName(Outcome outcome) {
+    switch (outcome) {
+        case Outcome::Pass:
+            return "PASS";
+        case Outcome::QualityWarning:
+            return "QUALITY_WARNING";
+        case Outcome::NotSupported:
+            return "NOT_SUPPORTED";
+        case Outcome::Fail:
+            return "FAIL";
+    }
+    return "?";
+}
+
+struct CheckResult {
+    std::string backend;  // "osmesa", "egl", or "-" for checks before any backend (compile)
+    std::string effect;   // the file's stem
+    std::string technique;
+    std::string scene;
+    std::string check;  // render, misclassified, penumbra, golden, compile, expectations, backend
+    Outcome outcome = Outcome::Pass;
+    std::string detail;
+};
+
+// A measured value against its "below" bound: FAIL at or above it, QUALITY_WARNING above 80% of it.
+constexpr double kWarnFraction = 0.8;
+Outcome judge(double measured, double bound) {
+    if (!(measured < bound)) return Outcome::Fail;  // NaN fails too
+    return measured > kWarnFraction * bound ? Outcome::QualityWarning : Outcome::Pass;
+}
+
+std::string fixed(double value, int digits) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << value;
+    return out.str();
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ','))
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+// Prints each distinct warning and error once on stderr and keeps the errors since the last mark(), so a
+// failing step can name its first error ("file:line:column: error: message") in its result.
+class CheckSink : public fx::DiagnosticSink {
+public:
+    using fx::DiagnosticSink::report;
+    void report(const fx::Diagnostic& diagnostic) override {
+        if (diagnostic.severity == fx::Severity::Note) return;
+        if (diagnostic.severity == fx::Severity::Error)
+            mErrors.push_back(fx::renderDiagnostic(diagnostic, false));
+        const std::string text = fx::renderDiagnostic(diagnostic);
+        if (mSeen.insert(text).second) std::cerr << text << "\n";
+    }
+    void mark() { mErrors.clear(); }
+    bool failed() const { return !mErrors.empty(); }
+    std::string firstError(const std::string& fallback) const {
+        return mErrors.empty() ? fallback : mErrors.front();
+    }
+
+private:
+    std::set<std::string> mSeen;
+    std::vector<std::string> mErrors;
+};
+
+// [SECTION] Expectations
+
+struct Expectations {
+    std::vector<std::string> scenes{"boxes"};
+    std::optional<double> misclassifiedBelow;  // percent of receiver pixels
+    std::optional<double> penumbraMaeBelow;    // mean |visibility - truth|, area lights
+    std::optional<int> mapSize;                // SHADOWFX_SHADOW_MAP_SIZE for the check's renders
+    bool shadows = true;                       // false: compile, render, non-blank and golden only
+};
+
+// Reads the Expect* annotations of `technique`. A value of the wrong kind is an InvalidAnnotation error at
+// the annotation; false then.
+bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
+    bool ok = true;
+    auto number = [&](const char* name) -> std::optional<double> {
+        const fx::Annotation* a = technique.annotation(name);
+        if (!a) return std::nullopt;
+        const fx::TypeDesc scalar;  // float
+        std::optional<fx::Value> value =
+            a->value.kind == fx::Expr::Kind::String
+                ? std::nullopt
+                : fx::evaluate(
+                      a->value, [](std::string_view) -> const fx::Value* { return nullptr; }, &scalar,
+                      nullptr);
+        if (!value || !std::isfinite(value->asFloat())) {
+            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, "expected a number"});
+            ok = false;
+            return std::nullopt;
+        }
+        return value->asFloat();
+    };
+    if (const fx::Annotation* a = technique.annotation("ExpectScenes")) {
+        if (a->value.kind != fx::Expr::Kind::String || splitList(a->value.text).empty()) {
+            sink.report(fx::DiagId::InvalidAnnotation, a->loc,
+                        {"ExpectScenes", "expected a string of comma-separated scene names or .json files"});
+            ok = false;
+        } else {
+            out.scenes = splitList(a->value.text);
+            for (std::string& scene : out.scenes) {
+                scene.erase(0, scene.find_first_not_of(" \t"));
+                scene.erase(scene.find_last_not_of(" \t") + 1);
+            }
+        }
+    }
+    out.misclassifiedBelow = number("ExpectMisclassifiedBelow");
+    out.penumbraMaeBelow = number("ExpectPenumbraMaeBelow");
+    if (std::optional<double> size = number("ExpectMapSize")) {
+        if (*size < 1 || *size > 16384 || *size != std::floor(*size)) {
+            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectMapSize")->loc,
+                        {"ExpectMapSize", "expected an integer between 1 and 16384"});
+            ok = false;
+        } else {
+            out.mapSize = static_cast<int>(*size);
+        }
+    }
+    if (std::optional<double> shadows = number("ExpectShadows")) out.shadows = *shadows != 0.0;
+    return ok;
+}
+
+// [SECTION] Goldens
+//
+// EFFECT_DIR/golden/EFFECT/renderer.txt names the renderer key the plain goldens were made with (its first
+// line; the second records the full GL_RENDERER string). A technique's goldens are
+// golden/EFFECT/TECHNIQUE/SCENE.png for that renderer and SCENE.KEY.png for any other renderer KEY; a
+// renderer with neither is NOT_SUPPORTED (FAIL with --require-goldens). The key is the first word of
+// GL_RENDERER in lower case ("llvmpipe (LLVM 15.0.6, 256 bits)" -> llvmpipe): OSMesa and EGL on Mesa's
+// llvmpipe share one set.
+
+std::string rendererKey(const std::string& glRenderer) {
+    std::string key;
+    for (char c : glRenderer) {
+        if (std::isalnum(static_cast<unsigned char>(c))) {
+            key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        } else if (!key.empty()) {
+            break;
+        }
+    }
+    return key.empty() ? "unknown" : key;
+}
+
+std::string safeName(std::string text) {
+    for (char& c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+    return text;
+}
+
+struct GoldenPlace {
+    std::filesystem::path path;   // where the golden is or would be
+    bool forThisRenderer = true;  // false: the renderer has no goldens (NOT_SUPPORTED)
+    std::string note;             // why not
+};
+
+std::string readRendererKey(const std::filesystem::path& effectGoldens) {
+    std::ifstream file(effectGoldens / "renderer.txt");
+    std::string key;
+    std::getline(file, key);
+    key.erase(key.find_last_not_of(" \t\r") + 1);
+    return key;
+}
+
+GoldenPlace findGolden(const std::filesystem::path& effectGoldens, const std::string& technique,
+                       const std::string& scene, const std::string& key) {
+    const std::filesystem::path folder = effectGoldens / safeName(technique);
+    GoldenPlace place;
+    place.path = folder / (safeName(scene) + "." + key + ".png");
+    if (std::filesystem::exists(place.path)) return place;
+    const std::string referenceKey = readRendererKey(effectGoldens);
+    place.path = folder / (safeName(scene) + ".png");
+    if (referenceKey.empty() || referenceKey == key) return place;  // missing renderer.txt: made for us
+    place.forThisRenderer = false;
+    place.note = "no goldens for renderer '" + key + "' (they were made with '" + referenceKey + "')";
+    return place;
+}
+
+// Where --update writes: the plain name for the reference renderer (the first to write, recorded in
+// renderer.txt), SCENE.KEY.png for any other.
+std::filesystem::path goldenToWrite(const std::filesystem::path& effectGoldens, const std::string& technique,
+                                    const std::string& scene, const std::string& key,
+                                    const std::string& glRenderer) {
+    std::string referenceKey = readRendererKey(effectGoldens);
+    if (referenceKey.empty()) {
+        std::filesystem::create_directories(effectGoldens);
+        std::ofstream(effectGoldens / "renderer.txt") << key << "\n# made with: " << glRenderer << "\n";
+        referenceKey = key;
+    }
+    const std::filesystem::path folder = effectGoldens / safeName(technique);
+    std::filesystem::create_directories(folder);
+    return folder / (safeName(scene) + (referenceKey == key ? "" : "." + key) + ".png");
+}
+
+// [SECTION] Frame checks
+
+// The first render target holding NaN or Inf, as "NAME: N non-finite values"; "" if none does.
+std::string nonFiniteTargets(const runtime::EffectRenderer& renderer) {
+    const fx::CompiledEffect& effect = renderer.effect();
+    for (const fx::TextureDesc& texture : effect.textures) {
+        if (texture.kind != fx::TextureDesc::Kind::RenderColorTarget &&
+            texture.kind != fx::TextureDesc::Kind::RenderDepthStencilTarget)
+            continue;
+        const std::string& name = effect.effect->parameters[texture.parameter].name;
+        std::optional<std::vector<float>> values = renderer.readTarget(name, nullptr, nullptr, nullptr);
+        if (!values) continue;  // not allocated: the technique does not use it
+        const size_t bad = static_cast<size_t>(
+            std::count_if(values->begin(), values->end(), [](float v) { return !std::isfinite(v); }));
+        if (bad > 0) return "render target " + name + " holds " + std::to_string(bad) + " NaN/Inf values";
+    }
+    return "";
+}
+
+// "" if the frame shows something; else why it is blank: one colour everywhere, or fewer than 0.1% of the
+// pixels differ from the most common colour (the clear colour, in practice).
+std::string blankness(const runtime::FrameImage& frame) {
+    std::unordered_map<uint32_t, size_t> counts;
+    const size_t pixels = static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height);
+    for (size_t i = 0; i < pixels; ++i) {
+        const uint8_t* p = &frame.rgba[i * 4];
+        ++counts[static_cast<uint32_t>(p[0]) | static_cast<uint32_t>(p[1]) << 8 |
+                 static_cast<uint32_t>(p[2]) << 16];
+    }
+    if (counts.size() <= 1) return "the frame is one constant colour";
+    size_t dominant = 0;
+    for (const auto& entry : counts) dominant = std::max(dominant, entry.second);
+    const size_t others = pixels - dominant;
+    if (others * 1000 < pixels)
+        return "the frame is blank: only " + std::to_string(others) + " of " + std::to_string(pixels) +
+               " pixels differ from its most common colour";
+    return "";
+}
+
+// [SECTION] Output
+
+void printTable(const std::vector<CheckResult>& results) {
+    const std::vector<std::string> header{"RESULT", "BACKEND", "EFFECT", "TECHNIQUE",
+                                          "SCENE",  "CHECK",   "DETAIL"};
+    std::vector<size_t> widths(header.size());
+    auto cells = [](const CheckResult& r) {
+        return std::vector<std::string>{
+            outcomeName(r.outcome), r.backend, r.effect, r.technique, r.scene, r.check, r.detail};
+    };
+    for (size_t c = 0; c < header.size(); ++c) widths[c] = header[c].size();
+    for (const CheckResult& r : results) {
+        const std::vector<std::string> row = cells(r);
+        for (size_t c = 0; c + 1 < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+    }
+    auto print = [&](const std::vector<std::string>& row) {
+        for (size_t c = 0; c < row.size(); ++c) {
+            std::cout << row[c];
+            if (c + 1 < row.size()) std::cout << std::string(widths[c] - row[c].size() + 2, ' ');
+        }
+        std::cout << "\n";
+    };
+    print(header);
+    for (const CheckResult& r : results) print(cells(r));
+}
+
+std::string xmlEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&apos;";
+                break;
+            default:
+                // XML 1.0 allows no control characters but tab, newline and carriage return.
+                if (static_cast<unsigned char>(c) >= 0x20 || c == '\t' || c == '\n' || c == '\r') out += c;
+        }
+    }
+    return out;
+}
+
+// JUnit XML as Jenkins, GitLab and GitHub's test reporters read it: one <testsuite> per effect, one
+// <testcase> per row (classname EFFECT.TECHNIQUE, name SCENE.CHECK[BACKEND]); FAIL is <failure>,
+// NOT_SUPPORTED <skipped>, QUALITY_WARNING a passing case with the warning in <system-out>.
+bool writeJunit(const std::string& path, const std::vector<CheckResult>& results) {
+    std::vector<std::string> effects;
+    for (const CheckResult& r : results)
+        if (std::find(effects.begin(), effects.end(), r.effect) == effects.end()) effects.push_back(r.effect);
+    auto count = [&](const std::string* effect, Outcome outcome) {
+        return std::count_if(results.begin(), results.end(), [&](const CheckResult& r) {
+            return (!effect || r.effect == *effect) && r.outcome == outcome;
+        });
+    };
+    auto total = [&](const std::string* effect) {
+        return std::count_if(results.begin(), results.end(),
+                             [&](const CheckResult& r) { return !effect || r.effect == *effect; });
+    };
+    std::ofstream xml(path);
+    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    xml << "<testsuites name=\"shadowfx check\" tests=\"" << total(nullptr) << "\" failures=\""
+        << count(nullptr, Outcome::Fail) << "\" skipped=\"" << count(nullptr, Outcome::NotSupported)
+        << "\" errors=\"0\">\n";
+    for (const std::string& effect : effects) {
+        xml << "  <testsuite name=\"" << xmlEscape(effect) << "\" tests=\"" << total(&effect)
+            << "\" failures=\"" << count(&effect, Outcome::Fail) << "\" skipped=\""
+            << count(&effect, Outcome::NotSupported) << "\" errors=\"0\">\n";
+        for (const CheckResult& r : results) {
+            if (r.effect != effect) continue;
+            xml << "    <testcase classname=\"" << xmlEscape(r.effect + "." + r.technique) << "\" name=\""
+                << xmlEscape(r.scene + "." + r.check + "[" + r.backend + "]") << "\"";
+            switch (r.outcome) {
+                case Outcome::Pass:
+                    xml << "/>\n";
+                    break;
+                case Outcome::QualityWarning:
+                    xml << ">\n      <system-out>QUALITY_WARNING: " << xmlEscape(r.detail)
+                        << "</system-out>\n    </testcase>\n";
+                    break;
+                case Outcome::NotSupported:
+                    xml << ">\n      <skipped message=\"NOT_SUPPORTED: " << xmlEscape(r.detail)
+                        << "\"/>\n    </testcase>\n";
+                    break;
+                case Outcome::Fail:
+                    xml << ">\n      <failure type=\"FAIL\" message=\"" << xmlEscape(r.detail) << "\">"
+                        << xmlEscape(r.detail) << "</failure>\n    </testcase>\n";
+                    break;
+            }
+        }
+        xml << "  </testsuite>\n";
+    }
+    xml << "</testsuites>\n";
+    return static_cast<bool>(xml);
+}
+
+// [SECTION] Runs
+
+struct Variants {
+    std::shared_ptr<fx::CompiledEffect> shaded;
+    std::shared_ptr<fx::CompiledEffect> visibility;  // with SHADOWFX_VISIBILITY
+    bool exposesVisibility = false;
+};
+
+struct TechniquePlan {
+    std::string name;
+    Expectations expect;
+    Variants variants;
+};
+
+struct EffectPlan {
+    std::string path;
+    std::string name;               // stem
+    std::filesystem::path goldens;  // EFFECT_DIR/golden/EFFECT
+    std::vector<TechniquePlan> techniques;
+};
+
+// A scene with the truths the checks need: `hard` for ExpectMisclassifiedBelow (the light as a point), and
+// for an area light the soft one in SceneTruth::truth.
+struct CheckScene {
+    SceneTruth measured;
+    runtime::GroundTruth hard;
+    bool soft = false;
+    std::string error;  // why the scene could not be loaded or measured
+};
+
+// A scene name as ExpectScenes or --scenes give it: built-in, or a .json file relative to the effect's
+// folder, else to the working directory.
+std::string resolveScene(const std::string& scene, const std::filesystem::path& effectDir) {
+    if (scene.size() < 5 || scene.compare(scene.size() - 5, 5, ".json") != 0) return scene;
+    const std::filesystem::path nextToEffect = effectDir / scene;
+    if (std::filesystem::path(scene).is_relative() && std::filesystem::exists(nextToEffect))
+        return nextToEffect.string();
+    return scene;
+}
+
+std::string sceneLabel(const std::string& scene) {
+    return scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0
+               ? std::filesystem::path(scene).stem().string()
+               : scene;
+}
+
+struct Settings {
+    int width = 320;
+    int height = 240;
+    bool update = false;
+    bool requireGoldens = false;
+    std::vector<std::string> sceneOverride;
+    std::filesystem::path outDir;
+    runtime::GroundTruthOptions truthOptions;
+    runtime::FuzzyCompareOptions compare;
+};
+
+class Checker {
+public:
+    Checker(const Settings& settings, CheckSink& sink) : mSettings(settings), mSink(sink) {}
+
+    std::vector<CheckResult>& results() { return mResults; }
+
+    void add(std::string backend, const std::string& effect, std::string technique, std::string scene,
+             std::string check, Outcome outcome, std::string detail) {
+        mResults.push_back(CheckResult{std::move(backend), effect, std::move(technique), std::move(scene),
+                                       std::move(check), outcome, std::move(detail)});
+    }
+
+    void runBackend(runtime::Backend backend, const std::vector<EffectPlan>& effects) {
+        const std::string backendLabel(runtime::backendName(backend));
+        runtime::ContextOptions contextOptions;
+        contextOptions.backend = backend;
+        std::string contextError;
+        std::unique_ptr<runtime::GlContext> context = runtime::createContext(contextOptions, contextError);
+        if (!context) {
+            for (const EffectPlan& effect : effects)
+                add(backendLabel, effect.name, "-", "-", "backend", Outcome::NotSupported, contextError);
+            return;
+        }
+        const std::string glRenderer = context->renderer();
+        const std::string key = rendererKey(glRenderer);
+        std::cerr << "check: " << backendLabel << ": " << glRenderer << "\n";
+        std::map<std::string, std::unique_ptr<CheckScene>> scenes;  // by resolved name, this context's
+
+        for (const EffectPlan& effect : effects) {
+            for (const TechniquePlan& technique : effect.techniques) {
+                if (!technique.variants.shaded) continue;  // did not compile: reported already
+                mSink.mark();
+                std::unique_ptr<runtime::EffectRenderer> shaded =
+                    runtime::EffectRenderer::create(technique.variants.shaded, mSink);
+                std::unique_ptr<runtime::EffectRenderer> visibility;
+                if (shaded && technique.expect.shadows && technique.variants.exposesVisibility)
+                    visibility = runtime::EffectRenderer::create(technique.variants.visibility, mSink);
+                if (!shaded || mSink.failed()) {
+                    add(backendLabel, effect.name, technique.name, "-", "link", Outcome::Fail,
+                        mSink.firstError("the effect's programs do not link"));
+                    continue;
+                }
+                const std::filesystem::path effectDir = std::filesystem::path(effect.path).parent_path();
+                const std::vector<std::string>& names =
+                    mSettings.sceneOverride.empty() ? technique.expect.scenes : mSettings.sceneOverride;
+                for (const std::string& sceneName : names) {
+                    const std::string resolved = resolveScene(sceneName, effectDir);
+                    std::unique_ptr<CheckScene>& scene = scenes[resolved];
+                    if (!scene) scene = measureScene(resolved);
+                    checkScene(backendLabel, key, glRenderer, effect, technique, sceneLabel(sceneName),
+                               *scene, *shaded, visibility.get());
+                }
+            }
+        }
+    }
+
+private:
+    std::unique_ptr<CheckScene> measureScene(const std::string& name) {
+        auto scene = std::make_unique<CheckScene>();
+        mSink.mark();
+        std::optional<runtime::Scene> loaded = runtime::loadScene(name, mSink);
+        if (!loaded) {
+            scene->error = mSink.firstError("no scene '" + name + "'");
+            return scene;
+        }
+        if (!measureSceneTruth(scene->measured, std::move(*loaded), mSettings.width, mSettings.height,
+                               mSettings.truthOptions, mSink, scene->error))
+            return scene;
+        const SceneTruth& t = scene->measured;
+        scene->soft = t.light->areaRadius > 0.0f;
+        if (scene->soft) {
+            runtime::Light point = *t.light;
+            point.areaRadius = 0.0f;
+            scene->hard = runtime::ShadowRayCaster(t.scene).compute(t.gbuffer, point, mSettings.truthOptions);
+        } else {
+            scene->hard = t.truth;
+        }
+        return scene;
+    }
+
+    void checkScene(const std::string& backend, const std::string& key, const std::string& glRenderer,
+                    const EffectPlan& effect, const TechniquePlan& technique, const std::string& sceneName,
+                    const CheckScene& scene, runtime::EffectRenderer& shaded,
+                    runtime::EffectRenderer* visibility) {
+        const size_t firstRow = mResults.size();
+        auto row = [&](const std::string& check, Outcome outcome, std::string detail) {
+            add(backend, effect.name, technique.name, sceneName, check, outcome, std::move(detail));
+        };
+        if (!scene.error.empty()) {
+            row("render", Outcome::Fail, scene.error);
+            return;
+        }
+        const SceneTruth& t = scene.measured;
+        runtime::FrameOptions frameOptions;
+        frameOptions.width = mSettings.width;
+        frameOptions.height = mSettings.height;
+        frameOptions.technique = technique.name;
+
+        // Compiles, links and renders without GL errors; no NaN in any target; not blank.
+        mSink.mark();
+        if (!shaded.render(t.scene, frameOptions, mSink) || mSink.failed()) {
+            row("render", Outcome::Fail, mSink.firstError("the frame could not be rendered"));
+            return;
+        }
+        const runtime::FrameImage frame = shaded.readFrame();
+        std::string problem = nonFiniteTargets(shaded);
+        if (problem.empty()) problem = blankness(frame);
+        row("render", problem.empty() ? Outcome::Pass : Outcome::Fail,
+            problem.empty() ? "no GL errors, targets finite, frame not blank" : problem);
+
+        // Expectations against the ground truth.
+        std::optional<VisibilityScore> hardScore, softScore;
+        const Expectations& expect = technique.expect;
+        if (expect.shadows) {
+            const bool expects = expect.misclassifiedBelow || expect.penumbraMaeBelow;
+            if (!expects) {
+                row("misclassified", Outcome::QualityWarning,
+                    "the technique declares no ExpectMisclassifiedBelow (or ExpectShadows = false)");
+            } else if (!visibility) {
+                row("expectations", Outcome::Fail,
+                    "expectations declared, but the effect's pixel shaders ignore SHADOWFX_VISIBILITY "
+                    "(README, \"Writing effects\")");
+            } else {
+                mSink.mark();
+                hardScore = scoreVisibility(*visibility, t, scene.hard, frameOptions, mSink);
+                if (scene.soft && hardScore)
+                    softScore = scoreVisibility(*visibility, t, t.truth, frameOptions, mSink);
+                if (!hardScore || mSink.failed()) {
+                    row("expectations", Outcome::Fail,
+                        mSink.firstError("the SHADOWFX_VISIBILITY variant could not be rendered"));
+                    hardScore.reset();
+                }
+            }
+            if (hardScore && expect.misclassifiedBelow) {
+                const runtime::ShadowErrors& e = hardScore->errors;
+                row("misclassified", judge(e.misclassifiedPercent, *expect.misclassifiedBelow),
+                    fixed(e.misclassifiedPercent, 3) + " % < " + fixed(*expect.misclassifiedBelow, 3) +
+                        " % (false shadow " + fixed(e.falseShadowPercent, 3) + " %, false light " +
+                        fixed(e.falseLightPercent, 3) + " %, " + std::to_string(e.receiverPixels) +
+                        " receiver pixels)");
+            }
+            if (hardScore && expect.penumbraMaeBelow) {
+                if (!softScore) {
+                    row("penumbra", Outcome::NotSupported,
+                        "the scene's light has no areaRadius: no penumbra to measure");
+                } else {
+                    const double mae = softScore->errors.meanAbsoluteError;
+                    row("penumbra", judge(mae, *expect.penumbraMaeBelow),
+                        "MAE " + fixed(mae, 4) + " < " + fixed(*expect.penumbraMaeBelow, 4) + " (" +
+                            std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
+                }
+            }
+        }
+
+        // The golden image. --update writes it (once per run: a second backend of the same renderer then
+        // compares against what the first wrote).
+        std::optional<runtime::FrameImage> golden;
+        std::optional<runtime::FuzzyCompareResult> comparison;
+        bool compare = true;
+        if (mSettings.update) {
+            const std::string path =
+                goldenToWrite(effect.goldens, technique.name, sceneName, key, glRenderer).string();
+            if (mWritten.insert(path).second) {
+                std::string error;
+                const bool written = runtime::writePng(frame, path, error);
+                row("golden", written ? Outcome::Pass : Outcome::Fail, written ? "written " + path : error);
+                compare = false;
+            }
+        }
+        if (compare) {
+            const GoldenPlace place = findGolden(effect.goldens, technique.name, sceneName, key);
+            std::string error;
+            if (!place.forThisRenderer) {
+                row("golden", mSettings.requireGoldens ? Outcome::Fail : Outcome::NotSupported, place.note);
+            } else if (!std::filesystem::exists(place.path)) {
+                row("golden", Outcome::Fail,
+                    "missing golden " + place.path.string() + " (write it with shadowfx check --update)");
+            } else if (!(golden = runtime::readPng(place.path.string(), error))) {
+                row("golden", Outcome::Fail, error);
+            } else {
+                comparison = runtime::fuzzyCompare(*golden, frame, mSettings.compare);
+                const double bound = mSettings.compare.threshold;
+                Outcome outcome = comparison->matches ? Outcome::Pass : Outcome::Fail;
+                if (outcome == Outcome::Pass && comparison->failingFraction > kWarnFraction * bound)
+                    outcome = Outcome::QualityWarning;
+                const std::string detail =
+                    !comparison->sameSize
+                        ? "golden is " + std::to_string(golden->width) + "x" +
+                              std::to_string(golden->height) + ", the frame " + std::to_string(frame.width) +
+                              "x" + std::to_string(frame.height)
+                        : std::to_string(comparison->failingPixels) + " pixels differ (" +
+                              fixed(100.0 * comparison->failingFraction, 3) + " %, at most " +
+                              fixed(100.0 * bound, 3) + " % allowed), max error " +
+                              fixed(comparison->maxError, 3);
+                row("golden", outcome, detail + " vs " + place.path.string());
+            }
+        }
+
+        bool failed = false;
+        for (size_t i = firstRow; i < mResults.size(); ++i)
+            failed = failed || mResults[i].outcome == Outcome::Fail;
+        if (failed)
+            writeFailureImages(effect.name, technique.name, sceneName, frame, golden, comparison, t, scene,
+                               hardScore);
+    }
+
+    // OUT/EFFECT/TECHNIQUE/SCENE.{result,reference,errormask}.png, once per run (the first failing backend):
+    // the errormask is the golden comparison's when it failed, else the shadow error image (false shadow
+    // red, false light blue).
+    void writeFailureImages(const std::string& effect, const std::string& technique, const std::string& scene,
+                            const runtime::FrameImage& frame,
+                            const std::optional<runtime::FrameImage>& golden,
+                            const std::optional<runtime::FuzzyCompareResult>& comparison, const SceneTruth& t,
+                            const CheckScene& checkScene, const std::optional<VisibilityScore>& score) {
+        const std::filesystem::path folder = mSettings.outDir / safeName(effect) / safeName(technique);
+        const std::string base = (folder / safeName(scene)).string();
+        if (!mImagesWritten.insert(base).second) return;
+        std::error_code fsError;
+        std::filesystem::create_directories(folder, fsError);
+        std::string error;
+        bool ok = runtime::writePng(frame, base + ".result.png", error);
+        if (ok && golden) ok = runtime::writePng(*golden, base + ".reference.png", error);
+        if (ok && comparison && !comparison->matches && comparison->sameSize) {
+            ok = runtime::writePng(comparison->errorMask, base + ".errormask.png", error);
+        } else if (ok && score) {
+            ok = runtime::writePng(
+                runtime::errorImage(frame, checkScene.hard.visibility, score->visibility, t.receivers),
+                base + ".errormask.png", error);
+        }
+        if (!ok) std::cerr << "check: " << error << "\n";
+        std::cerr << "check: images of the failure: " << base << ".*.png\n";
+    }
+
+    const Settings& mSettings;
+    CheckSink& mSink;
+    std::vector<CheckResult> mResults;
+    std::set<std::string> mWritten;        // goldens written by this --update run
+    std::set<std::string> mImagesWritten;  // failure images written by this run
+};
+
+fx::ParseOptions parseOptionsOf(const Arguments& args) {
+    fx::ParseOptions options;
+    options.includeDirs = args.all("-I");
+    for (const std::string& define : args.all("-D")) {
+        const size_t eq = define.find('=');
+        options.defines.emplace_back(define.substr(0, eq),
+                                     eq == std::string::npos ? "1" : define.substr(eq + 1));
+    }
+    return options;
+}
+
+}  // namespace
+
+int checkCommand(const Arguments& args) {
+    std::vector<std::string> effects;
+    for (size_t i = 0; i < args.positionalCount(); ++i) effects.push_back(args.positional(i));
+    if (effects.empty()) {
+        std::cerr << "shadowfx check: expected one or more effect files (see --help)\n";
+        return 2;
+    }
+    const fx::ParseOptions parseOptions = parseOptionsOf(args);
+    CheckSink sink;
+
+    if (args.flag("--list-techniques")) {
+        int status = 0;
+        for (const std::string& path : effects) {
+            sink.mark();
+            std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, parseOptions, sink);
+            if (!effect || sink.failed()) {
+                status = 1;
+                continue;
+            }
+            for (const fx::Technique& technique : effect->techniques) std::cout << technique.name << "\n";
+        }
+        return status;
+    }
+
+    Settings settings;
+    settings.width = args.intValue("--width", 320);
+    settings.height = args.intValue("--height", 240);
+    settings.update = args.flag("--update");
+    settings.requireGoldens = args.flag("--require-goldens");
+    settings.sceneOverride = splitList(args.value("--scenes"));
+    settings.outDir = args.value("--out", "out/check");
+    settings.truthOptions.areaSamples = args.intValue("--area-samples", 256);
+    if (settings.width <= 0 || settings.height <= 0 || settings.width > 16384 || settings.height > 16384 ||
+        settings.truthOptions.areaSamples < 1) {
+        std::cerr
+            << "shadowfx check: --width and --height must be between 1 and 16384, --area-samples >= 1\n";
+        return 2;
+    }
+    std::vector<runtime::Backend> backends;
+    for (const std::string& name : splitList(args.value("--backend", "all"))) {
+        if (name == "all") {
+            for (runtime::Backend b : {runtime::Backend::EGL, runtime::Backend::OSMesa})
+                backends.push_back(b);
+            continue;
+        }
+        const std::optional<runtime::Backend> backend = runtime::parseBackend(name);
+        if (!backend || *backend == runtime::Backend::GLFW || *backend == runtime::Backend::Auto) {
+            std::cerr << "shadowfx check: --backend must be all, osmesa, egl or a list of them\n";
+            return 2;
+        }
+        if (std::find(backends.begin(), backends.end(), *backend) == backends.end())
+            backends.push_back(*backend);
+    }
+    if (backends.empty()) {
+        std::cerr << "shadowfx check: --backend names no backend\n";
+        return 2;
+    }
+    std::vector<std::string> techniqueFilter;
+    for (const std::string& list : args.all("--technique"))
+        for (const std::string& name : splitList(list)) techniqueFilter.push_back(name);
+
+    // Parse and compile everything first (no GL needed): compile errors are FAILs with their location.
+    Checker checker(settings, sink);
+    std::vector<EffectPlan> plans;
+    for (const std::string& path : effects) {
+        EffectPlan plan;
+        plan.path = path;
+        plan.name = std::filesystem::path(path).stem().string();
+        plan.goldens = std::filesystem::path(path).parent_path() / "golden" / plan.name;
+        sink.mark();
+        std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, parseOptions, sink);
+        if (!effect || sink.failed()) {
+            checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail,
+                        sink.firstError("cannot parse " + path));
+            continue;
+        }
+        for (const fx::Technique& technique : effect->techniques) {
+            if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
+                                                      technique.name) == techniqueFilter.end())
+                continue;
+            TechniquePlan& t = plan.techniques.emplace_back();
+            t.name = technique.name;
+            sink.mark();
+            if (!readExpectations(technique, t.expect, sink)) {
+                checker.add("-", plan.name, t.name, "-", "expectations", Outcome::Fail, sink.firstError(""));
+                continue;
+            }
+            std::vector<std::pair<std::string, std::string>> defines;
+            if (t.expect.mapSize)
+                defines.emplace_back("SHADOWFX_SHADOW_MAP_SIZE", std::to_string(*t.expect.mapSize));
+            sink.mark();
+            t.variants.shaded = compileVariant(path, parseOptions, defines, sink, t.name);
+            if (t.variants.shaded && !sink.failed() && t.expect.shadows) {
+                defines.emplace_back("SHADOWFX_VISIBILITY", "1");
+                t.variants.visibility = compileVariant(path, parseOptions, defines, sink, t.name);
+                t.variants.exposesVisibility =
+                    t.variants.visibility && !sameFragmentShaders(*t.variants.shaded, *t.variants.visibility);
+            }
+            if (!t.variants.shaded || sink.failed()) {
+                t.variants.shaded.reset();
+                checker.add("-", plan.name, t.name, "-", "compile", Outcome::Fail,
+                            sink.firstError("the technique does not compile"));
+            }
+        }
+        if (plan.techniques.empty() && !techniqueFilter.empty())
+            checker.add("-", plan.name, "-", "-", "technique", Outcome::Fail,
+                        "no technique matches --technique");
+        plans.push_back(std::move(plan));
+    }
+
+    for (runtime::Backend backend : backends) checker.runBackend(backend, plans);
+
+    const std::vector<CheckResult>& results = checker.results();
+    printTable(results);
+    std::map<Outcome, size_t> counts;
+    for (const CheckResult& r : results) ++counts[r.outcome];
+    std::cout << "\n"
+              << results.size() << " checks: " << counts[Outcome::Pass] << " PASS, "
+              << counts[Outcome::QualityWarning] << " QUALITY_WARNING, " << counts[Outcome::NotSupported]
+              << " NOT_SUPPORTED, " << counts[Outcome::Fail] << " FAIL\n";
+    if (!args.value("--junit").empty()) {
+        const std::string junit = args.value("--junit");
+        if (!writeJunit(junit, results)) {
+            std::cerr << "shadowfx check: cannot write " << junit << "\n";
+            return 1;
+        }
+    }
+    return counts[Outcome::Fail] > 0 ? 1 : 0;
+}
+
+}  // namespace shadowfx::cli

@@ -1,0 +1,63 @@
+// ShadowMeasurement: the measurement core `shadowfx bench` and `shadowfx check` share — the ray-cast
+// ground truth of a scene, the two compiled variants of an effect (as written, and with
+// SHADOWFX_VISIBILITY so that its final pass writes the shadow factor) and the scoring of one visibility
+// frame against the truth (runtime/GroundTruth.h, runtime/ShadowMetrics.h).
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <fx/EffectParser.h>
+#include <runtime/EffectRenderer.h>
+#include <runtime/GBuffer.h>
+#include <runtime/GroundTruth.h>
+#include <runtime/Scene.h>
+#include <runtime/ShadowMetrics.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shadowfx::cli {
+
+// A scene with its G-buffer, the visibility of its light0 (or first light) and its receiver pixels.
+// `light` points into `scene`: keep a SceneTruth where it was filled (no copies or moves).
+struct SceneTruth {
+    runtime::Scene scene;
+    const runtime::Light* light = nullptr;
+    runtime::GBuffer gbuffer;
+    runtime::GroundTruth truth;
+    std::vector<uint8_t> receivers;
+    double seconds = 0.0;  // G-buffer and rays
+};
+
+// Fills `t` for `scene` at width x height (needs a current GL context). False with `error` set if the
+// scene has no light or its G-buffer cannot be rendered.
+bool measureSceneTruth(SceneTruth& t, runtime::Scene scene, int width, int height,
+                       const runtime::GroundTruthOptions& options, fx::DiagnosticSink& sink,
+                       std::string& error);
+
+// Parses and compiles the effect at `path` with `options` plus the `extra` preprocessor definitions; only
+// `technique` when one is named.
+std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::ParseOptions options,
+                                                   std::vector<std::pair<std::string, std::string>> extra,
+                                                   fx::DiagnosticSink& sink,
+                                                   const std::string& technique = "");
+
+// True if every pass of `a` and `b` has the same pixel shader: then SHADOWFX_VISIBILITY changed nothing and
+// the effect exposes no shadow term to score.
+bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& b);
+
+// Renders one frame of the SHADOWFX_VISIBILITY variant and scores its red channel against `truth`
+// (which may be `t.truth` or another truth of the same G-buffer, e.g. a hard one for an area light).
+struct VisibilityScore {
+    std::vector<float> visibility;  // the effect's, per pixel
+    runtime::ShadowErrors errors;
+};
+std::optional<VisibilityScore> scoreVisibility(runtime::EffectRenderer& visibilityRenderer,
+                                               const SceneTruth& t, const runtime::GroundTruth& truth,
+                                               const runtime::FrameOptions& options,
+                                               fx::DiagnosticSink& sink);
+
+}  // namespace shadowfx::cli
