@@ -602,10 +602,10 @@ private:
             if (hardScore && expect.misclassifiedBelow) {
                 const runtime::ShadowErrors& e = hardScore->errors;
                 row("misclassified", judge(e.misclassifiedPercent, *expect.misclassifiedBelow),
-                    fixed(e.misclassifiedPercent, 3) + " % < " + fixed(*expect.misclassifiedBelow, 3) +
-                        " % (false shadow " + fixed(e.falseShadowPercent, 3) + " %, false light " +
-                        fixed(e.falseLightPercent, 3) + " %, " + std::to_string(e.receiverPixels) +
-                        " receiver pixels)");
+                    fixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
+                        fixed(*expect.misclassifiedBelow, 3) + " % (false shadow " +
+                        fixed(e.falseShadowPercent, 3) + " %, false light " + fixed(e.falseLightPercent, 3) +
+                        " %, " + std::to_string(e.receiverPixels) + " receiver pixels)");
             }
             if (hardScore && expect.penumbraMaeBelow) {
                 if (!softScore) {
@@ -614,8 +614,8 @@ private:
                 } else {
                     const double mae = softScore->errors.meanAbsoluteError;
                     row("penumbra", judge(mae, *expect.penumbraMaeBelow),
-                        "MAE " + fixed(mae, 4) + " < " + fixed(*expect.penumbraMaeBelow, 4) + " (" +
-                            std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
+                        "MAE " + fixed(mae, 4) + ", expected below " + fixed(*expect.penumbraMaeBelow, 4) +
+                            " (" + std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
                 }
             }
         }

@@ -1,0 +1,289 @@
+// `shadowfx check` as a CI runs it: the real built tool on real effects, with copies of the shipped effect
+// broken on purpose (bias removed, golden moved, golden missing, nothing drawn) written to a temporary
+// folder at test time. Each run uses one backend (EGL) to stay fast; the CTest `check` tests run both.
+#include <gtest/gtest.h>
+
+#include <runtime/EffectRenderer.h>
+#include <runtime/ImageCompare.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
+const std::string kSource = SHADOWFX_SOURCE_DIR;
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+RunResult run(const std::string& arguments) {
+    RunResult result;
+    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// The table row of `check` for `technique` and `scene`, or "" if there is none.
+std::string row(const std::string& output, const std::string& technique, const std::string& scene,
+                const std::string& check) {
+    const std::regex pattern("^\\S+\\s+\\S+\\s+\\S+\\s+" + technique + "\\s+" + scene + "\\s+" + check +
+                             "\\s.*$");
+    std::istringstream lines(output);
+    std::string line;
+    while (std::getline(lines, line))
+        if (std::regex_match(line, pattern)) return line;
+    return "";
+}
+
+// A private copy of effects/thesis_fxcomposer.fx (includes and goldens too) in a fresh temporary folder,
+// with `from` replaced by `to` in the effect's text.
+class EffectCopy {
+public:
+    EffectCopy(const std::string& name, const std::string& from = "", const std::string& to = "",
+               const std::string& effect = "thesis_fxcomposer") {
+        mDir = fs::temp_directory_path() / ("shadowfx_check_" + name);
+        fs::remove_all(mDir);
+        fs::create_directories(mDir / "golden");
+        fs::copy(kSource + "/effects/include", mDir / "include", fs::copy_options::recursive);
+        fs::copy(kSource + "/effects/golden/" + effect, mDir / "golden" / effect,
+                 fs::copy_options::recursive);
+        std::string text = readText(kSource + "/effects/" + effect + ".fx");
+        if (!from.empty()) {
+            const size_t at = text.find(from);
+            EXPECT_NE(at, std::string::npos) << from;
+            if (at != std::string::npos) text.replace(at, from.size(), to);
+        }
+        mEffect = mDir / (effect + ".fx");
+        std::ofstream(mEffect) << text;
+    }
+    ~EffectCopy() { fs::remove_all(mDir); }
+    std::string effect() const { return mEffect.string(); }
+    fs::path dir() const { return mDir; }
+    fs::path golden(const std::string& technique, const std::string& scene) const {
+        return mDir / "golden" / mEffect.stem() / technique / (scene + ".png");
+    }
+
+private:
+    fs::path mDir;
+    fs::path mEffect;
+};
+
+runtime::FrameImage readImage(const fs::path& path) {
+    std::string error;
+    std::optional<runtime::FrameImage> image = runtime::readPng(path.string(), error);
+    EXPECT_TRUE(image) << error;
+    return image.value_or(runtime::FrameImage{});
+}
+
+void writeImage(const runtime::FrameImage& image, const fs::path& path) {
+    std::string error;
+    ASSERT_TRUE(runtime::writePng(image, path.string(), error)) << error;
+}
+
+// The value of attribute `name` in the first element `element` of `xml`; -1 if absent.
+long attribute(const std::string& xml, const std::string& element, const std::string& name) {
+    std::smatch match;
+    const std::regex pattern("<" + element + "\\b[^>]*\\b" + name + "=\"(\\d+)\"");
+    return std::regex_search(xml, match, pattern) ? std::stol(match[1]) : -1;
+}
+
+long occurrences(const std::string& text, const std::string& what) {
+    long count = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+    return count;
+}
+
+TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
+    const fs::path junit = fs::temp_directory_path() / "shadowfx_check_shipped.xml";
+    fs::remove(junit);
+    const RunResult result =
+        run("check effects/thesis_fxcomposer.fx effects/plain_lit.fx --backend egl --junit " +
+            junit.string() + " --out " + (fs::temp_directory_path() / "shadowfx_check_out").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(row(result.output, "main", "dual-l", "misclassified").find("PASS"), std::string::npos)
+        << result.output;
+    EXPECT_NE(row(result.output, "lit", "boxes", "golden").find("PASS"), std::string::npos) << result.output;
+    EXPECT_EQ(row(result.output, "lit", "boxes", "misclassified"), "")
+        << "plain_lit declares ExpectShadows = false";
+
+    // Well-formed enough for a CI's reader: the declaration, balanced elements, counts that add up.
+    const std::string xml = readText(junit);
+    ASSERT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>", 0), 0u) << xml;
+    EXPECT_EQ(occurrences(xml, "<testsuites "), 1);
+    EXPECT_EQ(occurrences(xml, "</testsuites>"), 1);
+    EXPECT_EQ(occurrences(xml, "<testsuite "), 2);
+    EXPECT_EQ(occurrences(xml, "</testsuite>"), 2);
+    const long testcases = occurrences(xml, "<testcase ");
+    // thesis: 2 techniques x 2 scenes x (render, misclassified, golden); plain_lit: 2 scenes x (render,
+    // golden)
+    EXPECT_EQ(testcases, 2 * 2 * 3 + 2 * 2);
+    EXPECT_EQ(attribute(xml, "testsuites", "tests"), testcases);
+    EXPECT_EQ(attribute(xml, "testsuites", "failures"), 0);
+    EXPECT_EQ(occurrences(xml, "<failure "), 0);
+    // Every opened <testcase> is closed: either self-closing or by </testcase>.
+    EXPECT_EQ(occurrences(xml, "<testcase ") - occurrences(xml, "</testcase>"), occurrences(xml, "\"/>\n"));
+    fs::remove(junit);
+}
+
+TEST(CheckCommand, BiasRemovedFailsItsExpectationAndWritesTheImages) {
+    // Without the depth bias the shadow map shadows the surfaces it was rendered from: acne.
+    const EffectCopy copy("no_bias", "float UIStep = 0.0005;\n> = 0.004;",
+                          "float UIStep = 0.0005;\n> = 0.0;");
+    const fs::path out = copy.dir() / "out";
+    const fs::path junit = copy.dir() / "junit.xml";
+    const RunResult result = run("check " + copy.effect() + " --technique main --backend egl --out " +
+                                 out.string() + " --junit " + junit.string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string misclassified = row(result.output, "main", "dual-l", "misclassified");
+    EXPECT_EQ(misclassified.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_EQ(row(result.output, "main", "dual-l", "render").rfind("PASS", 0), 0u) << result.output;
+    for (const char* kind : {"result", "reference", "errormask"})
+        EXPECT_TRUE(fs::exists(out / "thesis_fxcomposer" / "main" / ("dual-l." + std::string(kind) + ".png")))
+            << kind;
+    const std::string xml = readText(junit);
+    EXPECT_GE(attribute(xml, "testsuites", "failures"), 2);  // the expectation on both scenes at least
+    EXPECT_EQ(attribute(xml, "testsuites", "failures"), occurrences(xml, "<failure "));
+}
+
+TEST(CheckCommand, AGoldenShiftedByAFewPixelsFails) {
+    const EffectCopy copy("shifted");
+    const fs::path golden = copy.golden("main", "dual-l");
+    const runtime::FrameImage image = readImage(golden);
+    runtime::FrameImage moved = image;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            std::copy_n(image.pixel(std::max(x - 3, 0), y), 4,
+                        &moved.rgba[(static_cast<size_t>(y) * image.width + x) * 4]);
+    writeImage(moved, golden);
+    const fs::path out = copy.dir() / "out";
+    const RunResult result = run("check " + copy.effect() +
+                                 " --technique main --scenes dual-l --backend egl --out " + out.string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(row(result.output, "main", "dual-l", "golden").rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_EQ(row(result.output, "main", "dual-l", "misclassified").rfind("PASS", 0), 0u) << result.output;
+    EXPECT_TRUE(fs::exists(out / "thesis_fxcomposer" / "main" / "dual-l.errormask.png"));
+}
+
+TEST(CheckCommand, AOnePixelDifferenceWithinToleranceAndTheSecondBackendPass) {
+    const EffectCopy copy("one_pixel");
+    const fs::path golden = copy.golden("main", "teapot");
+    runtime::FrameImage image = readImage(golden);
+    uint8_t* p = &image.rgba[(static_cast<size_t>(100) * image.width + 150) * 4];
+    p[0] = 255, p[1] = 0, p[2] = 255;
+    writeImage(image, golden);
+    const RunResult result =
+        run("check " + copy.effect() + " --technique main --scenes teapot --backend egl,osmesa");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    const std::string line = row(result.output, "main", "teapot", "golden");
+    EXPECT_EQ(line.rfind("PASS", 0), 0u) << result.output;
+    EXPECT_NE(line.find(" 1 pixels differ"), std::string::npos) << line;
+}
+
+TEST(CheckCommand, AMissingGoldenFailsAndUpdateWritesIt) {
+    const EffectCopy copy("missing");
+    fs::remove(copy.golden("hardware", "teapot"));
+    RunResult result = run("check " + copy.effect() + " --technique hardware --scenes teapot --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string line = row(result.output, "hardware", "teapot", "golden");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(line.find("missing golden"), std::string::npos) << line;
+
+    result = run("check " + copy.effect() + " --technique hardware --scenes teapot --backend egl --update");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(copy.golden("hardware", "teapot")));
+    result = run("check " + copy.effect() + " --technique hardware --scenes teapot --backend egl");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+}
+
+TEST(CheckCommand, ARendererWithoutGoldensIsNotSupportedUnlessRequired) {
+    const EffectCopy copy("other_renderer");
+    std::ofstream(copy.dir() / "golden" / "thesis_fxcomposer" / "renderer.txt") << "someothergpu\n";
+    RunResult result = run("check " + copy.effect() + " --technique main --scenes dual-l --backend egl");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(row(result.output, "main", "dual-l", "golden").rfind("NOT_SUPPORTED", 0), 0u) << result.output;
+    result =
+        run("check " + copy.effect() + " --technique main --scenes dual-l --backend egl --require-goldens");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+}
+
+TEST(CheckCommand, ABlankFrameFails) {
+    // The technique clears and draws nothing.
+    const EffectCopy copy("blank", "\"Pass=p0;\"", "\"\"", "plain_lit");
+    const RunResult result = run("check " + copy.effect() + " --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string line = row(result.output, "lit", "boxes", "render");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(line.find("constant colour"), std::string::npos) << line;
+}
+
+TEST(CheckCommand, PenumbraBoundIsMeasuredOnlyUnderAnAreaLight) {
+    // scenes/instanced_boxes.json has an area light (areaRadius 0.3); dual-l has none. The hardware
+    // technique's hard shadow is 0.02 from the area-light truth there (measured on llvmpipe): a bound of
+    // 0.005 must fail.
+    const EffectCopy copy("penumbra", "float ExpectMisclassifiedBelow = 0.075;",
+                          "float ExpectMisclassifiedBelow = 5; float ExpectPenumbraMaeBelow = 0.005;");
+    const RunResult result =
+        run("check " + copy.effect() +
+            " --technique hardware --scenes dual-l,scenes/instanced_boxes.json --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(row(result.output, "hardware", "dual-l", "penumbra").rfind("NOT_SUPPORTED", 0), 0u)
+        << result.output;
+    EXPECT_EQ(row(result.output, "hardware", "instanced_boxes", "penumbra").rfind("FAIL", 0), 0u)
+        << result.output;
+}
+
+TEST(CheckCommand, CompileErrorsFailWithTheirLocation) {
+    const RunResult result = run("check tests/data/bad/hlsl_error.fx --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("FAIL"), std::string::npos) << result.output;
+    EXPECT_NE(row(result.output, "\\S+", "-", "compile").find("hlsl_error.fx:6:18: error:"),
+              std::string::npos)
+        << result.output;
+}
+
+TEST(CheckCommand, BadExpectationAnnotationsFailAtTheirLocation) {
+    const EffectCopy copy("bad_annotation", "float ExpectMisclassifiedBelow = 0.095;",
+                          "float ExpectMisclassifiedBelow = \"low\";");
+    const RunResult result = run("check " + copy.effect() + " --technique main --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("thesis_fxcomposer.fx:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("ExpectMisclassifiedBelow"), std::string::npos) << result.output;
+}
+
+TEST(CheckCommand, ListsTechniquesAndRejectsBadUsage) {
+    const RunResult list = run("check --list-techniques effects/thesis_fxcomposer.fx");
+    EXPECT_EQ(list.exitCode, 0);
+    EXPECT_EQ(list.output, "main\nhardware\n");
+    EXPECT_EQ(run("check").exitCode, 2);
+    EXPECT_EQ(run("check effects/plain_lit.fx --backend vulkan").exitCode, 2);
+    EXPECT_EQ(run("check effects/plain_lit.fx --width 0").exitCode, 2);
+    const RunResult help = run("check --help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.output.find("usage: shadowfx check"), std::string::npos);
+}
+
+}  // namespace
