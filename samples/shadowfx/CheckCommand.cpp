@@ -144,10 +144,24 @@ struct Expectations {
     bool shadows = true;                       // false: compile, render, non-blank and golden only
 };
 
-// Reads the Expect* annotations of `technique`. A value of the wrong kind is an InvalidAnnotation error at
-// the annotation; false then.
+// Reads the Expect* annotations of `technique` (names case-insensitive, as annotation lookups are). A value
+// of the wrong kind or an unknown Expect* name is an InvalidAnnotation error at the annotation; false then.
 bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
     bool ok = true;
+    // A misspelt expectation would silently check nothing.
+    static const std::set<std::string> kKnown{"expectscenes", "expectmisclassifiedbelow",
+                                              "expectpenumbramaebelow", "expectmapsize", "expectshadows"};
+    for (const fx::Annotation& a : technique.annotations) {
+        std::string lower = a.name;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (lower.rfind("expect", 0) == 0 && kKnown.count(lower) == 0) {
+            sink.report(fx::DiagId::InvalidAnnotation, a.loc,
+                        {a.name,
+                         "not an expectation shadowfx check knows (ExpectScenes, ExpectMisclassifiedBelow, "
+                         "ExpectPenumbraMaeBelow, ExpectMapSize, ExpectShadows)"});
+            ok = false;
+        }
+    }
     auto number = [&](const char* name) -> std::optional<double> {
         const fx::Annotation* a = technique.annotation(name);
         if (!a) return std::nullopt;
@@ -783,6 +797,7 @@ int checkCommand(const Arguments& args) {
     // Parse and compile everything first (no GL needed): compile errors are FAILs with their location.
     Checker checker(settings, sink);
     std::vector<EffectPlan> plans;
+    size_t matched = 0;  // techniques to check, plus effects that failed to parse
     for (const std::string& path : effects) {
         EffectPlan plan;
         plan.path = path;
@@ -793,6 +808,7 @@ int checkCommand(const Arguments& args) {
         if (!effect || sink.failed()) {
             checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail,
                         sink.firstError("cannot parse " + path));
+            ++matched;  // reported: --technique cannot be judged on an effect that does not parse
             continue;
         }
         for (const fx::Technique& technique : effect->techniques) {
@@ -823,10 +839,12 @@ int checkCommand(const Arguments& args) {
                             sink.firstError("the technique does not compile"));
             }
         }
-        if (plan.techniques.empty() && !techniqueFilter.empty())
-            checker.add("-", plan.name, "-", "-", "technique", Outcome::Fail,
-                        "no technique matches --technique");
+        matched += plan.techniques.size();
         plans.push_back(std::move(plan));
+    }
+    if (matched == 0 && !techniqueFilter.empty()) {
+        std::cerr << "shadowfx check: no technique of the effects matches --technique\n";
+        return 2;
     }
 
     for (runtime::Backend backend : backends) checker.runBackend(backend, plans);

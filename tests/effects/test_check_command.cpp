@@ -274,6 +274,17 @@ TEST(CheckCommand, BadExpectationAnnotationsFailAtTheirLocation) {
     EXPECT_NE(result.output.find("ExpectMisclassifiedBelow"), std::string::npos) << result.output;
 }
 
+TEST(CheckCommand, AMisspeltExpectationIsAnError) {
+    const EffectCopy copy("misspelt", "float ExpectMisclassifiedBelow = 0.095;",
+                          "float ExpectMisclasifiedBelow = 0.095;");
+    const RunResult result = run("check " + copy.effect() + " --technique main --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string line = row(result.output, "main", "-", "expectations");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(line.find("thesis_fxcomposer.fx:"), std::string::npos) << line;
+    EXPECT_NE(line.find("ExpectMisclasifiedBelow"), std::string::npos) << line;
+}
+
 TEST(CheckCommand, ListsTechniquesAndRejectsBadUsage) {
     const RunResult list = run("check --list-techniques effects/thesis_fxcomposer.fx");
     EXPECT_EQ(list.exitCode, 0);
@@ -281,6 +292,7 @@ TEST(CheckCommand, ListsTechniquesAndRejectsBadUsage) {
     EXPECT_EQ(run("check").exitCode, 2);
     EXPECT_EQ(run("check effects/plain_lit.fx --backend vulkan").exitCode, 2);
     EXPECT_EQ(run("check effects/plain_lit.fx --width 0").exitCode, 2);
+    EXPECT_EQ(run("check effects/plain_lit.fx --technique nosuch").exitCode, 2);
     const RunResult help = run("check --help");
     EXPECT_EQ(help.exitCode, 0);
     EXPECT_NE(help.output.find("usage: shadowfx check"), std::string::npos);
