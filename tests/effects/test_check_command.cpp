@@ -240,6 +240,34 @@ TEST(CheckCommand, ABlankFrameFails) {
     EXPECT_NE(line.find("constant colour"), std::string::npos) << line;
 }
 
+TEST(CheckCommand, NanInARenderTargetFails) {
+    // The shadow map is cleared to NaN; BlendOp=min keeps it, so the target holds NaN after the frame.
+    const EffectCopy copy("nan", "> = {ZMaxValue, ZMaxValue, ZMaxValue, ZMaxValue};",
+                          "> = {sqrt(-1.0), ZMaxValue, ZMaxValue, ZMaxValue};");
+    const RunResult result =
+        run("check " + copy.effect() + " --technique main --scenes dual-l --backend egl --out " +
+            (copy.dir() / "out").string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string line = row(result.output, "main", "dual-l", "render");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(line.find("render target ShadowMap holds"), std::string::npos) << line;
+}
+
+TEST(CheckCommand, AValueCloseToItsBoundIsAQualityWarningThatDoesNotFail) {
+    // main measures 0.063 % on teapot (llvmpipe): above 80% of a 0.07 bound, below the bound.
+    const EffectCopy copy("warning", "float ExpectMisclassifiedBelow = 0.095;",
+                          "float ExpectMisclassifiedBelow = 0.07;");
+    const fs::path junit = copy.dir() / "junit.xml";
+    const RunResult result = run("check " + copy.effect() +
+                                 " --technique main --scenes teapot --backend egl --junit " + junit.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(row(result.output, "main", "teapot", "misclassified").rfind("QUALITY_WARNING", 0), 0u)
+        << result.output;
+    const std::string xml = readText(junit);
+    EXPECT_NE(xml.find("<system-out>QUALITY_WARNING: "), std::string::npos) << xml;
+    EXPECT_EQ(attribute(xml, "testsuites", "failures"), 0);
+}
+
 TEST(CheckCommand, PenumbraBoundIsMeasuredOnlyUnderAnAreaLight) {
     // scenes/instanced_boxes.json has an area light (areaRadius 0.3); dual-l has none. The hardware
     // technique's hard shadow is 0.02 from the area-light truth there (measured on llvmpipe): a bound of
