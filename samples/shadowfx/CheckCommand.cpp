@@ -564,6 +564,7 @@ private:
                     const EffectPlan& effect, const TechniquePlan& technique, const std::string& sceneName,
                     const CheckScene& scene, runtime::EffectRenderer& shaded,
                     runtime::EffectRenderer* visibility) {
+        removeStaleImages(effect.name, technique.name, sceneName);
         const size_t firstRow = mResults.size();
         auto row = [&](const std::string& check, Outcome outcome, std::string detail) {
             add(backend, effect.name, technique.name, sceneName, check, outcome, std::move(detail));
@@ -686,6 +687,21 @@ private:
                                hardScore);
     }
 
+    std::string imageBase(const std::string& effect, const std::string& technique,
+                          const std::string& scene) const {
+        return (mSettings.outDir / safeName(effect) / safeName(technique) / safeName(scene)).string();
+    }
+
+    // Images an earlier run left for this scene would read as this run's failure.
+    void removeStaleImages(const std::string& effect, const std::string& technique,
+                           const std::string& scene) {
+        const std::string base = imageBase(effect, technique, scene);
+        if (mImagesWritten.count(base) > 0) return;
+        std::error_code ignored;
+        for (const char* kind : {".result.png", ".reference.png", ".errormask.png"})
+            std::filesystem::remove(base + kind, ignored);
+    }
+
     // OUT/EFFECT/TECHNIQUE/SCENE.{result,reference,errormask}.png, once per run (the first failing backend):
     // the errormask is the golden comparison's when it failed, else the shadow error image (false shadow
     // red, false light blue).
@@ -694,11 +710,10 @@ private:
                             const std::optional<runtime::FrameImage>& golden,
                             const std::optional<runtime::FuzzyCompareResult>& comparison, const SceneTruth& t,
                             const CheckScene& checkScene, const std::optional<VisibilityScore>& score) {
-        const std::filesystem::path folder = mSettings.outDir / safeName(effect) / safeName(technique);
-        const std::string base = (folder / safeName(scene)).string();
+        const std::string base = imageBase(effect, technique, scene);
         if (!mImagesWritten.insert(base).second) return;
         std::error_code fsError;
-        std::filesystem::create_directories(folder, fsError);
+        std::filesystem::create_directories(std::filesystem::path(base).parent_path(), fsError);
         std::string error;
         bool ok = runtime::writePng(frame, base + ".result.png", error);
         if (ok && golden) ok = runtime::writePng(*golden, base + ".reference.png", error);

@@ -186,6 +186,13 @@ TEST(CheckCommand, AGoldenShiftedByAFewPixelsFails) {
     EXPECT_EQ(row(result.output, "main", "dual-l", "golden").rfind("FAIL", 0), 0u) << result.output;
     EXPECT_EQ(row(result.output, "main", "dual-l", "misclassified").rfind("PASS", 0), 0u) << result.output;
     EXPECT_TRUE(fs::exists(out / "thesis_fxcomposer" / "main" / "dual-l.errormask.png"));
+
+    // Once the golden is right again, the images of the earlier failure are gone.
+    writeImage(image, golden);
+    const RunResult again = run("check " + copy.effect() +
+                                " --technique main --scenes dual-l --backend egl --out " + out.string());
+    EXPECT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_FALSE(fs::exists(out / "thesis_fxcomposer" / "main" / "dual-l.errormask.png"));
 }
 
 TEST(CheckCommand, AOnePixelDifferenceWithinToleranceAndTheSecondBackendPass) {
