@@ -7,8 +7,10 @@
 //   shadowfx bench --effects A.fx,B.fx --out DIR [...]  error against ground truth and frame time
 //   (BenchCommand.cpp) shadowfx view EFFECT.fx [...]                        window with hot reload and
 //   parameters (ViewCommand.cpp)
+//   shadowfx stress [EFFECT.fx ...] [--reduced]           extreme configurations (StressCommand.cpp)
 #include "BenchCommand.h"
 #include "CommandLine.h"
+#include "StressCommand.h"
 #include "ViewCommand.h"
 
 #include <fx/EffectCompiler.h>
@@ -226,6 +228,15 @@ const shadowfx::cli::Command kCommands[] = {
       "--area-samples", "--backend", "-I", "-D"},
      {},
      shadowfx::cli::benchCommand,
+     -1},
+    {"stress",
+     "run effects through extreme configurations: finite values, light coverage, error, shimmer",
+     shadowfx::cli::kStressUsage,
+     {},
+     {"--effects", "--cases", "--techniques", "--width", "--height", "--map-size", "--uniform", "--backend",
+      "--out", "-I", "-D"},
+     {"--reduced", "--list"},
+     shadowfx::cli::stressCommand,
      -1},
     {"view",
      "open an effect in a window: hot reload, error overlay, parameters, render targets",
