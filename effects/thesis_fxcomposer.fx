@@ -181,7 +181,7 @@ struct VertexFormat
 struct RenderShadowMapVertexOutput
 {
     float4 Position : POSITION;
-    float  Z        : TEXCOORD0;
+    float2 ZW       : TEXCOORD0;
 };
 
 RenderShadowMapVertexOutput RenderShadowMapVS(VertexFormat IN, uniform float4x4 WorldLightViewProjection)
@@ -189,13 +189,17 @@ RenderShadowMapVertexOutput RenderShadowMapVS(VertexFormat IN, uniform float4x4 
     RenderShadowMapVertexOutput OUT;
     float4 LightSpacePosition = mul(float4(IN.Position.xyz, 1.0), WorldLightViewProjection);
     OUT.Position = LightSpacePosition;
-    OUT.Z = LightSpacePosition.z;
+    // Depth in [0, 1] is z/w. The listing stored z alone, which is the same for its directional light
+    // (w = 1) but runs up to the far distance for a spot light's perspective, past the cleared ZMaxValue:
+    // everything beyond z = 1 came out shadowed (found by `shadowfx stress`, case spot-inside-bounds).
+    // The division happens per pixel: z/w does not interpolate linearly.
+    OUT.ZW = LightSpacePosition.zw;
     return OUT;
 }
 
 float4 RenderShadowMapPS(RenderShadowMapVertexOutput IN) : COLOR
 {
-    return float4(IN.Z * ShadowRangeMultiplier, 1, 1, 1);
+    return float4(IN.ZW.x / IN.ZW.y * ShadowRangeMultiplier, 1, 1, 1);
 }
 
 struct VertexOutput
@@ -230,7 +234,7 @@ float GetShadow(float4 LP)
     if (JITTER)
         nuv += JITTER_AMOUNT * (0.5 - noise.xy) / SHADOW_SIZE;
 
-    float depth = (LP.z / ShadowRange - Bias) * ZMaxValue;
+    float depth = (LP.z / LP.w / ShadowRange - Bias) * ZMaxValue;
     if (JITTER)
         depth -= (noise.z - 0.5) * 0.001 * ShadowRangeMultiplier;
 
@@ -287,6 +291,12 @@ technique main
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
+    // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
+    // follow the ground's depth slope under a sun 0.5 degrees high (seed 003, "Slope-scale bias"); a
+    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
+    // the camera (seed 004, §14.2; the parameterizations of issue #6 attack it).
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
 >
 {
     pass ClearShadowMap
@@ -354,6 +364,12 @@ technique hardware
     int ExpectMapSize = 1024;
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
+    // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
+    // follow the ground's depth slope under a sun 0.5 degrees high (seed 003, "Slope-scale bias"); a
+    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
+    // the camera (seed 004, §14.2; the parameterizations of issue #6 attack it).
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
 >
 {
     pass RenderShadowDepth

@@ -14,3 +14,5 @@ LP_NUM_THREADS="${LP_NUM_THREADS:-2}" build/samples/shadowfx/shadowfx bench --ef
   --techniques main,hardware --scenes boxes,teapot --map-sizes 512,1024 --frames 5 --warmup 2 \
   --width 640 --height 480 --out out/bench
 echo "main: bench report $(pwd)/out/bench/report.md (results.json, error_vs_time.png, errors/*.png beside it)"
+LP_NUM_THREADS="${LP_NUM_THREADS:-2}" build/samples/shadowfx/shadowfx stress --out out/stress > out/stress.txt || true
+echo "main: stress report $(pwd)/out/stress/report.md (stress.json beside it; failures also in out/stress.txt)"

@@ -336,7 +336,7 @@ public:
             return;
         }
         mPort.view = light->view(mSceneBounds);
-        mPort.projection = light->projection(mSceneBounds);
+        mPort.projection = light->projection(mSceneBounds, nearestDepthFrom(mScene, *light));
     }
 
     void setClearColor(const fx::Value& color) override {
@@ -572,7 +572,12 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
                                           fx::formatDiagnostic(fx::DiagId::GlDebugMessage, {message})});
     });
     mImpl->ensureFrameResources(options.width, options.height);
-    FrameExecutor executor(*mImpl, scene, options, diagnostics, frameStats, techniqueIndex);
+    // Camera-relative rendering for scenes far from the origin (Scene.h, renderOrigin).
+    const glm::vec3 origin = renderOrigin(scene);
+    const std::optional<Scene> rebased =
+        origin == glm::vec3(0.0f) ? std::nullopt : std::optional<Scene>(scene.translated(-origin));
+    FrameExecutor executor(*mImpl, rebased ? *rebased : scene, options, diagnostics, frameStats,
+                           techniqueIndex);
     const bool ran = ScriptInterpreter::run(*technique, executor, diagnostics);
     executor.finishTiming();
     FramebufferCache::bindDefault();

@@ -103,6 +103,8 @@ std::optional<GBuffer> renderGBuffer(const Scene& scene, int width, int height,
     if (!positions || !normals || w != width || h != height || positionChannels < 4 || normalChannels < 3)
         return std::nullopt;
 
+    // The runtime rendered the scene relative to its render origin (Scene.h); positions are world space.
+    const glm::vec3 origin = renderOrigin(numbered);
     GBuffer gbuffer;
     gbuffer.width = width;
     gbuffer.height = height;
@@ -112,7 +114,7 @@ std::optional<GBuffer> renderGBuffer(const Scene& scene, int width, int height,
     for (size_t i = 0; i < gbuffer.pixelCount(); ++i) {
         const float* p = &(*positions)[i * static_cast<size_t>(positionChannels)];
         const float* n = &(*normals)[i * static_cast<size_t>(normalChannels)];
-        gbuffer.position[i] = glm::vec3(p[0], p[1], p[2]);
+        gbuffer.position[i] = glm::vec3(p[0], p[1], p[2]) + origin;
         gbuffer.normal[i] = glm::vec3(n[0], n[1], n[2]);
         gbuffer.objectId[i] = static_cast<uint32_t>(std::lround(std::max(0.0f, p[3])));
     }

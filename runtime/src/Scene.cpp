@@ -29,6 +29,13 @@ glm::vec3 safeDirection(const glm::vec3& direction) {
     return glm::dot(direction, direction) > 1e-12f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
 }
 
+// The world axis whose direction is furthest from `direction`: always a well-conditioned up vector.
+glm::vec3 leastAlignedAxis(const glm::vec3& direction) {
+    const glm::vec3 a = glm::abs(direction);
+    if (a.x <= a.y && a.x <= a.z) return {1.0f, 0.0f, 0.0f};
+    return a.y <= a.z ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
 // Möller-Trumbore: the parameter t along from + t * dir of the hit with triangle (a, b, c), either side.
 std::optional<float> intersect(const glm::vec3& from, const glm::vec3& dir, const glm::vec3& a,
                                const glm::vec3& b, const glm::vec3& c) {
@@ -70,8 +77,14 @@ float Bounds::radius() const {
     return glm::length(max - min) * 0.5f;
 }
 
+// The camera's own up vector unless it is (nearly) parallel to the view direction, as for a camera looking
+// straight down with up = +y (stress case zenith-camera-down), where lookAt's basis would be NaN; then the
+// world axis least aligned with the view direction.
 glm::mat4 Camera::view() const {
-    return glm::lookAtLH(position, target, up);
+    const glm::vec3 forward = safeDirection(target - position);
+    const glm::vec3 usableUp =
+        glm::length(glm::cross(forward, safeDirection(up))) > 1e-3f ? up : leastAlignedAxis(forward);
+    return glm::lookAtLH(position, position + forward, usableUp);
 }
 
 glm::mat4 Camera::projection(float aspect) const {
@@ -90,7 +103,7 @@ glm::mat4 Light::view(const Bounds& bounds) const {
 }
 
 // Near/far enclose the bounding sphere with a 1% margin so vertices on it are not clipped by rounding.
-glm::mat4 Light::projection(const Bounds& bounds) const {
+glm::mat4 Light::projection(const Bounds& bounds, float nearestDepth) const {
     const float radius = safeRadius(bounds);
     const float margin = 0.01f * radius;
     if (type == Type::Directional) {
@@ -102,9 +115,51 @@ glm::mat4 Light::projection(const Bounds& bounds) const {
     const float centreDepth = glm::dot(bounds.center() - position, safeDirection(direction));
     const float farPlane = std::max(centreDepth + radius + margin, 2.0f * margin);
     // Near as far out as the bounds allow (depth precision), but never zero or behind the light.
-    const float nearPlane =
-        std::clamp(centreDepth - radius - margin, std::max(1e-3f * farPlane, 1e-3f), farPlane * 0.5f);
+    const float wanted = std::max(centreDepth - radius - margin, 0.99f * nearestDepth);
+    const float nearPlane = std::clamp(wanted, std::max(1e-3f * farPlane, 1e-3f), farPlane * 0.5f);
     return glm::perspectiveLH_ZO(angle, 1.0f, nearPlane, farPlane);
+}
+
+Scene Scene::translated(const glm::vec3& offset) const {
+    Scene moved = *this;
+    const glm::mat4 move = glm::translate(glm::mat4(1.0f), offset);
+    for (SceneObject& object : moved.objects) object.world = move * object.world;
+    moved.camera.position += offset;
+    moved.camera.target += offset;
+    for (Light& light : moved.lights) light.position += offset;
+    if (moved.explicitBounds) {
+        moved.explicitBounds->min += offset;
+        moved.explicitBounds->max += offset;
+    }
+    return moved;
+}
+
+float nearestDepthFrom(const Scene& scene, const Light& light) {
+    if (light.type == Light::Type::Directional) return 0.0f;
+    const glm::vec3 dir = safeDirection(light.direction);
+    float nearest = std::numeric_limits<float>::max();
+    for (const SceneObject& object : scene.objects) {
+        if (!object.mesh || object.mesh->positions.empty()) continue;
+        const glm::vec3 lo = object.mesh->boundsMin(), hi = object.mesh->boundsMax();
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                                  corner & 4 ? hi.z : lo.z);
+            const float depth =
+                glm::dot(glm::vec3(object.world * glm::vec4(local, 1.0f)) - light.position, dir);
+            if (!(depth > 0.0f)) return 0.0f;  // reaches behind the light: no safe near plane from boxes
+            nearest = std::min(nearest, depth);
+        }
+    }
+    return nearest == std::numeric_limits<float>::max() ? 0.0f : nearest;
+}
+
+glm::vec3 renderOrigin(const Scene& scene) {
+    if (scene.objects.empty() && !scene.explicitBounds) return glm::vec3(0.0f);
+    const Bounds bounds = scene.bounds();
+    const glm::vec3 centre = bounds.center();
+    const float farthest = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    return farthest > 16.0f * std::max(bounds.radius(), 1e-6f) && std::isfinite(farthest) ? centre
+                                                                                          : glm::vec3(0.0f);
 }
 
 Bounds Scene::bounds() const {

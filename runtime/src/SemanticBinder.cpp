@@ -136,6 +136,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx:
                 continue;
             }
             if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
+            binding.lightNearestDepth = nearestDepthFrom(scene, *binding.light);
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -159,7 +160,7 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
         glm::mat4 projection = port.projection;
         if (binding.light) {
             view = binding.light->view(mSceneBounds);
-            projection = binding.light->projection(mSceneBounds);
+            projection = binding.light->projection(mSceneBounds, binding.lightNearestDepth);
         }
         // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
         glm::mat4 matrix(1.0f);

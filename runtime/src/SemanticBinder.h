@@ -67,6 +67,7 @@ private:
         bool transpose = false;
         const Light* light =
             nullptr;  // frustum/Object annotation (matrices), or the light of a light property
+        float lightNearestDepth = 0.0f;  // nearestDepthFrom(scene, *light), once per frame
     };
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);

@@ -13,7 +13,10 @@ std::vector<uint8_t> receiverMask(const GBuffer& gbuffer, const Light& light) {
         if (!gbuffer.covered(i)) continue;
         const glm::vec3 toLight =
             light.type == Light::Type::Directional ? -lightDir : light.position - gbuffer.position[i];
-        mask[i] = glm::dot(gbuffer.normal[i], toLight) > 0.0f ? 1 : 0;
+        // Outside a spot light's cone nothing is lit, so nothing there can be scored.
+        const bool inCone = light.type != Light::Type::Spot ||
+                            glm::dot(glm::normalize(-toLight), lightDir) >= std::cos(0.5f * light.spotAngle);
+        mask[i] = glm::dot(gbuffer.normal[i], toLight) > 0.0f && inCone ? 1 : 0;
     }
     return mask;
 }

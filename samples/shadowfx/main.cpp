@@ -9,9 +9,11 @@
 //   parameters (ViewCommand.cpp)
 //   shadowfx check EFFECT.fx [...]                       conformance: expectations, goldens, JUnit
 //   (CheckCommand.cpp)
+//   shadowfx stress [EFFECT.fx ...] [--reduced]           extreme configurations (StressCommand.cpp)
 #include "BenchCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
+#include "StressCommand.h"
 #include "ViewCommand.h"
 
 #include <fx/EffectCompiler.h>
@@ -238,6 +240,15 @@ const shadowfx::cli::Command kCommands[] = {
       "-I", "-D"},
      {"--update", "--require-goldens", "--list-techniques"},
      shadowfx::cli::checkCommand,
+     -1},
+    {"stress",
+     "run effects through extreme configurations: finite values, light coverage, error, shimmer",
+     shadowfx::cli::kStressUsage,
+     {},
+     {"--effects", "--cases", "--techniques", "--width", "--height", "--map-size", "--uniform", "--backend",
+      "--out", "-I", "-D"},
+     {"--reduced", "--list"},
+     shadowfx::cli::stressCommand,
      -1},
     {"view",
      "open an effect in a window: hot reload, error overlay, parameters, render targets",

@@ -62,8 +62,10 @@ struct Light {
     // The light's view and projection, fitted to `bounds` (what the shadow map must cover):
     // directional: orthographic box around the bounds, looking along `direction`;
     // spot: perspective with the cone angle, near/far enclosing the bounds.
+    // `nearestDepth` (spot/point, see nearestDepthFrom): how far in front of the light the nearest object
+    // starts; the near plane moves out to it where the bounds alone would put it at ~0.
     glm::mat4 view(const Bounds& bounds) const;
-    glm::mat4 projection(const Bounds& bounds) const;
+    glm::mat4 projection(const Bounds& bounds, float nearestDepth = 0.0f) const;
 };
 
 struct Scene {
@@ -82,7 +84,25 @@ struct Scene {
     Bounds objectBounds() const;  // of all objects in world space
     const Light* findLight(std::string_view lightName) const;
     size_t triangleCount() const;
+    // The whole configuration moved by `offset`: objects, camera, lights and explicit bounds.
+    Scene translated(const glm::vec3& offset) const;
 };
+
+// How far along a spot or point light's direction the nearest object begins (its world bounding box's
+// nearest corner), or 0 if some object reaches behind the light's plane or there is none. A light inside the
+// scene's bounds would otherwise get a near plane of ~0, squeezing every clip depth towards 1 so that a
+// constant bias in clip depth swallows whole objects (stress case spot-inside-bounds).
+float nearestDepthFrom(const Scene& scene, const Light& light);
+
+// Camera-relative rendering. Float32 world coordinates near 1e6 resolve only 1/16 of a unit, and a shader
+// that transforms a vertex to world space and then subtracts a camera's or light's equally large
+// translation keeps nothing below that: a scene far from the origin gets shadow acne everywhere (stress
+// case far-from-origin). EffectRenderer therefore renders a scene translated by -renderOrigin(scene): the
+// subtraction of two nearby floats is exact (Sterbenz), so the GPU only sees small coordinates and every
+// semantic (World, View, CameraPosition, light positions) is relative to that origin. The origin is the
+// centre of the bounds when the scene lies more than 16 bounding radii from the world origin, else zero
+// (no copy, no change).
+glm::vec3 renderOrigin(const Scene& scene);
 
 // Built-in scenes: "boxes" (a ground plane with a box and a sphere, a directional light from above at an
 // angle), "torus" (a torus standing on a plane, spot light), "teapot" (Newell's teapot on a plane), then

@@ -2,7 +2,8 @@
 // how coarse its shadow map is on screen.
 //
 // Receiver pixels: covered pixels of the G-buffer whose surface faces the light (N·L > 0); a surface
-// facing away is dark by its own shading whatever the shadow method says, so it cannot be scored.
+// facing away is dark by its own shading whatever the shadow method says, so it cannot be scored; nor can
+// a pixel outside a spot light's cone, which the light does not reach.
 #pragma once
 
 #include <runtime/EffectRenderer.h>

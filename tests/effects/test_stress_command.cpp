@@ -1,0 +1,110 @@
+// `shadowfx stress` as users script against it: the case list, usage errors, declared limitations reported
+// as xfail without failing the run, an undeclared one failing it with an error image, and the JSON.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
+const std::string kSource = SHADOWFX_SOURCE_DIR;
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+RunResult run(const std::string& arguments) {
+    RunResult result;
+    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::filesystem::path freshDirectory(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+nlohmann::json readJson(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+}
+
+const nlohmann::json* find(const nlohmann::json& results, const std::string& technique,
+                           const std::string& name) {
+    for (const nlohmann::json& r : results)
+        if (r["technique"] == technique && r["case"] == name) return &r;
+    return nullptr;
+}
+
+TEST(StressCommand, ListsItsCasesAndRejectsUnknownOnes) {
+    const RunResult list = run("stress --list");
+    EXPECT_EQ(list.exitCode, 0) << list.output;
+    for (const char* name : {"light-along-view", "zenith-camera-down", "grazing", "far-from-origin", "empty",
+                             "point-bounds", "camera-move", "spot-inside-bounds"})
+        EXPECT_NE(list.output.find(name), std::string::npos) << name;
+    const RunResult unknown = run("stress effects/plain_lit.fx --cases no-such-case");
+    EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("no case 'no-such-case'"), std::string::npos) << unknown.output;
+}
+
+TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {
+    const std::filesystem::path out = freshDirectory("shadowfx_stress_declared");
+    const RunResult result =
+        run("stress effects/thesis_fxcomposer.fx --techniques main "
+            "--cases ordinary,grazing,far-from-origin,empty --out " +
+            out.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json json = readJson(out / "stress.json");
+    const nlohmann::json* grazing = find(json["results"], "main", "grazing");
+    ASSERT_NE(grazing, nullptr);
+    EXPECT_FALSE((*grazing)["pass"]);
+    EXPECT_TRUE((*grazing)["expected_failure"]);
+    EXPECT_GT((*grazing)["false_shadow_percent"].get<double>(), 10.0);  // acne, as declared
+    const nlohmann::json* far = find(json["results"], "main", "far-from-origin");
+    ASSERT_NE(far, nullptr);
+    EXPECT_TRUE((*far)["pass"]) << far->dump();
+    EXPECT_LT((*far)["misclassified_percent"].get<double>(), 0.2);
+    const nlohmann::json* empty = find(json["results"], "main", "empty");
+    ASSERT_NE(empty, nullptr);
+    EXPECT_TRUE((*empty)["pass"]) << empty->dump();
+    EXPECT_NE(result.output.find("xfail"), std::string::npos) << result.output;
+}
+
+TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
+    // The thesis effect without its StressExpectedFailures annotations.
+    const std::filesystem::path dir = freshDirectory("shadowfx_stress_undeclared");
+    std::ifstream in(kSource + "/effects/thesis_fxcomposer.fx");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string effect = text.str();
+    const std::string key = "string StressExpectedFailures";
+    for (size_t at = effect.find(key); at != std::string::npos; at = effect.find(key))
+        effect.replace(at, key.size(), "string StressIgnoredNote");
+    std::ofstream(dir / "undeclared.fx") << effect;
+    const RunResult result =
+        run("stress " + (dir / "undeclared.fx").string() +
+            " -I effects --techniques main --cases grazing --out " + (dir / "out").string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("FAIL"), std::string::npos) << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "errors" / "undeclared.main.grazing.png"));
+}
+
+}  // namespace
