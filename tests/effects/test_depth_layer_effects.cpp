@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <ostream>
 #include <sstream>
 
 namespace shadowfx::test {
@@ -82,6 +83,11 @@ struct Conformance {
     std::string effect;  // file under effects/
     std::string technique;
 };
+
+// gtest prints a parameter's bytes unless told otherwise.
+void PrintTo(const Conformance& c, std::ostream* os) {
+    *os << c.effect << " " << c.technique;
+}
 
 std::string annotationText(const fx::Annotation* annotation) {
     return annotation ? annotation->value.text : std::string();
