@@ -460,8 +460,25 @@ private:
                     block.set(setting.id, evaluated->asFloat());
             }
         }
+        // DepthBias units (RenderStateApplier.h): 2^-bits for UNORM depth; for D32F the resolvable
+        // difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24 bits.
         const GpuTexture* depth = mTargets.depth.texture;
-        applyRenderStates(block, depth ? std::max(16, depth->glFormat().depthBits) : 24);
+        const int depthBits = depth ? std::clamp(depth->glFormat().depthBits, 16, 24) : 24;
+        applyRenderStates(block, depthBits);
+        mCullClosedOnly = cullsClosedObjectsOnly(pass) && block.get(fx::RenderStateId::CullMode) != 1.0;
+    }
+
+    // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight) meshes
+    // only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual depth
+    // layers with back-face culling (seed 001, §4: "back face culling for solid objects can be mixed with
+    // non-culled open surfaces in the same scene") need both in one pass: a culled open plane would vanish.
+    bool cullsClosedObjectsOnly(const fx::CompiledPass& pass) const {
+        const auto& passes = mImpl.compiled->techniques[mTechnique].passes;
+        const auto& sourcePasses = mImpl.effect().techniques[mTechnique].passes;
+        const size_t passIndex = static_cast<size_t>(&pass - passes.data());
+        if (passIndex >= sourcePasses.size()) return false;
+        const fx::Annotation* annotation = sourcePasses[passIndex].annotation("CullClosedOnly");
+        return annotation && annotation->value.number != 0.0;
     }
 
     void bindSamplers(const fx::StageProgram& stage) {
@@ -511,7 +528,10 @@ private:
         }
         {
             PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+            const bool drawUnculled = mCullClosedOnly && object && !(object->mesh && object->mesh->closed);
+            if (drawUnculled) gl::Disable(GL_CULL_FACE);
             mesh.draw(pass.vertex.inputs);
+            if (drawUnculled) gl::Enable(GL_CULL_FACE);
         }
         ++mStats.draws;
         mTimer.countDraw();
@@ -533,6 +553,7 @@ private:
     float mClearDepth = 1.0f;
     int mClearStencil = 0;
     bool mFailed = false;
+    bool mCullClosedOnly = false;  // this pass culls closed objects only (cullsClosedObjectsOnly)
     std::set<size_t> mWarnedPasses;
 };
 

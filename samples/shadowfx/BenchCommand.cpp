@@ -50,6 +50,7 @@ const char* const kBenchUsage =
     "  --width W, --height H frame size (default 640x480)\n"
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
+    "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
     "  --out DIR             results.json, report.md, error_vs_time.png and errors/*.png go here\n";
 
@@ -432,6 +433,18 @@ int benchCommand(const Arguments& args) {
                                          eq == std::string::npos ? "1" : define.substr(eq + 1));
     }
 
+    // --set applies to each effect that has the parameter; one that no effect has is a usage error.
+    std::vector<std::pair<std::string, std::string>> assignments;
+    for (const std::string& assignment : args.all("--set")) {
+        const size_t eq = assignment.find('=');
+        if (eq == std::string::npos) {
+            std::cerr << "shadowfx bench: --set expects PARAM=VALUE, got '" << assignment << "'\n";
+            return 2;
+        }
+        assignments.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
+    }
+    std::set<std::string> assignedSomewhere;
+
     // Compile every variant first: a broken effect stops the bench before any time is spent measuring.
     std::map<std::pair<std::string, int>, EffectVariant> variants;
     size_t runCount = 0;
@@ -482,6 +495,13 @@ int benchCommand(const Arguments& args) {
             std::unique_ptr<runtime::EffectRenderer> visibility =
                 runtime::EffectRenderer::create(variant.visibility, sink);
             if (!timed || !visibility) return 1;
+            for (const auto& [name, value] : assignments) {
+                if (!timed->findParameter(name)) continue;
+                if (!timed->setParameterFromText(name, value, sink) ||
+                    !visibility->setParameterFromText(name, value, sink))
+                    return 1;
+                assignedSomewhere.insert(name);
+            }
             for (const SceneTruth& t : truths) {
                 const runtime::Bounds bounds = t.scene.bounds();
                 const runtime::AliasingMeasure aliasing = runtime::perspectiveAliasing(
@@ -608,6 +628,12 @@ int benchCommand(const Arguments& args) {
         }
     }
     progress.end();
+    for (const auto& [name, value] : assignments) {
+        if (assignedSomewhere.count(name) == 0) {
+            std::cerr << "shadowfx bench: --set " << name << ": no effect has a parameter '" << name << "'\n";
+            return 2;
+        }
+    }
 
     Json results{{"schema_version", kSchemaVersion},
                  {"generator", "shadowfx bench"},
@@ -617,6 +643,7 @@ int benchCommand(const Arguments& args) {
                                  {"scenes", sceneNames},
                                  {"map_sizes", mapSizes},
                                  {"techniques", techniqueFilter},
+                                 {"set", args.all("--set")},
                                  {"frames", frames},
                                  {"warmup", warmup},
                                  {"width", width},
