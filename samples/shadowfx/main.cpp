@@ -223,7 +223,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kBenchUsage,
      {"--out"},
      {"--effects", "--scenes", "--map-sizes", "--techniques", "--frames", "--warmup", "--width", "--height",
-      "--area-samples", "--backend", "-I", "-D"},
+      "--area-samples", "--area-radius", "--backend", "-I", "-D"},
      {},
      shadowfx::cli::benchCommand,
      -1},
