@@ -235,7 +235,8 @@ void Compiler::procedural(const Parameter& p, const Annotation& annotation, Text
         return;
     }
     if (isDepthFormat(t.format)) {
-        error(DiagId::InvalidAnnotation, annotation.loc, {"Procedural", "a noise texture needs a colour format"});
+        error(DiagId::InvalidAnnotation, annotation.loc,
+              {"Procedural", "a noise texture needs a colour format"});
         return;
     }
     t.kind = TextureDesc::Kind::Procedural;

@@ -460,9 +460,16 @@ private:
             fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
             return false;
         }
-        for (const RenderTargetAttachment& color : mTargets.colors)
+        for (const RenderTargetAttachment& color : mTargets.colors) {
             if (color.texture && color.texture->mipLevels() > 1) mImpl.staleMipChains.insert(color.texture);
+        }
         return true;
+    }
+
+    bool isColorTarget(const GpuTexture* texture) const {
+        return std::any_of(
+            mTargets.colors.begin(), mTargets.colors.end(),
+            [texture](const RenderTargetAttachment& color) { return color.texture == texture; });
     }
 
     void applyStates(const fx::CompiledPass& pass) {
@@ -492,7 +499,8 @@ private:
                 auto it = mImpl.textures.find(*desc->texture);
                 if (it != mImpl.textures.end()) texture = &it->second;
             }
-            if (texture && mImpl.staleMipChains.erase(texture) > 0) {
+            // Not while the pass renders into it (the chain would be built before the draw that changes it).
+            if (texture && !isColorTarget(texture) && mImpl.staleMipChains.erase(texture) > 0) {
                 PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
                 texture->generateMipmaps();
             }

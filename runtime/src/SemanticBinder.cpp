@@ -123,8 +123,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx:
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
-        const bool isLightProperty = binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
-                                     binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius;
+        const bool isLightProperty =
+            binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
+            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
         const std::string upperSemantic = upper(parameter.semantic);

@@ -124,7 +124,7 @@ struct TextureDesc {
         RenderColorTarget,         // semantic RENDERCOLORTARGET
         RenderDepthStencilTarget,  // semantic RENDERDEPTHSTENCILTARGET
         File,                      // ResourceName annotation (or a file name initializer)
-        Runtime,  // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
+        Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
         Procedural,  // `string Procedural = "noise"` annotation: generated at effect creation
     };
     size_t parameter = 0;  // Effect::parameters index
