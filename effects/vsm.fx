@@ -11,7 +11,8 @@
 // LightBleedReduction cuts the bound's tail (light leaking where occluders overlap); MinVariance is the
 // floor on sigma^2 that keeps the bound finite and acne-free on flat receivers (the numerical problem the
 // thesis warns of). Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing
-// effects"); conformance bounds for `shadowfx check` on each technique, measured at 320x240, 1024² map.
+// effects"); conformance bounds for `shadowfx check` on each technique, measured as in
+// pcf.fx (320x240, 1024² map, hard truth and --area-radius 2; bounds about 1.5-2x the larger value).
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -219,8 +220,9 @@ technique vsm
 <
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 2.0;
-    float ExpectPenumbraMaeBelow = 0.08;
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.013 % on dual-l, 0.051 % on teapot (hard truth)
+    float ExpectPenumbraMaeBelow = 0.006;  // measured 0.0039 on dual-l, 0.001 on teapot (--area-radius 2)
+    int ExpectMapSize = 1024;
 >
 {
     MOMENTS_PASS(Moments)
@@ -231,8 +233,9 @@ technique vsm_blur
 <
     string Script = "Pass=RenderMoments; Pass=BlurX; Pass=BlurY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 2.0;
-    float ExpectPenumbraMaeBelow = 0.08;
+    float ExpectMisclassifiedBelow = 0.15;  // measured 0.05 % on dual-l, 0.098 % on teapot (hard truth)
+    float ExpectPenumbraMaeBelow = 0.006;  // measured 0.0034 on dual-l, 0.0013 on teapot (--area-radius 2)
+    int ExpectMapSize = 1024;
 >
 {
     MOMENTS_PASS(Moments)
@@ -274,8 +277,9 @@ technique vsm_mip
 <
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 2.0;
-    float ExpectPenumbraMaeBelow = 0.08;
+    float ExpectMisclassifiedBelow = 0.15;  // measured 0.097 % on dual-l, 0.08 % on teapot (hard truth)
+    float ExpectPenumbraMaeBelow = 0.006;  // measured 0.0036 on dual-l, 0.0012 on teapot (--area-radius 2)
+    int ExpectMapSize = 1024;
 >
 {
     MOMENTS_PASS(MomentsMipped)
