@@ -240,7 +240,6 @@ void Compiler::procedural(const Parameter& p, const Annotation& annotation, Text
         return;
     }
     t.kind = TextureDesc::Kind::Procedural;
-    t.procedural = "noise";
     if (t.width == 0) t.width = t.height = 64;
     if (const Annotation* seed = p.annotation("Seed")) {
         TypeDesc scalar;

@@ -303,5 +303,28 @@ TEST(FilteringEffects, MinimumVarianceKeepsAFlatReceiverLit) {
         << "the scene must show the problem the guard solves";
 }
 
+// [SECTION] The light's size
+
+// `LightAreaRadius` (alias `LightSize`) binds the named light's areaRadius, for filters sized by the light.
+TEST(FilteringEffects, LightAreaRadiusSemanticGivesTheLightsAreaRadius) {
+    auto renderer = loadEffect(R"(
+float Radius : LightAreaRadius < string Object = "light0"; >;
+float Size : LightSize;
+struct Quad { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+Quad VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Quad o; o.Position = p; o.UV = uv; return o; }
+float4 PS(Quad IN) : COLOR { return float4(Radius, Size * 0.5, 0, 1); }
+technique t { pass p < string Script = "Draw=Buffer;"; > { VertexShader = compile vs_3_0 VS();
+                                                           PixelShader = compile ps_3_0 PS(); } }
+)",
+                               false);
+    ASSERT_TRUE(renderer);
+    runtime::Scene scene = *runtime::makeBuiltinScene("dual-l", nullptr);
+    scene.lights.at(0).areaRadius = 0.75f;
+    ASSERT_TRUE(render(*renderer, scene, 4, 4));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_NEAR(frame.pixel(1, 1)[0], 0.75f * 255, 1.0f);
+    EXPECT_NEAR(frame.pixel(1, 1)[1], 0.375f * 255, 1.0f);
+}
+
 }  // namespace
 }  // namespace shadowfx::test

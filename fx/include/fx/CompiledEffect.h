@@ -125,7 +125,8 @@ struct TextureDesc {
         RenderDepthStencilTarget,  // semantic RENDERDEPTHSTENCILTARGET
         File,                      // ResourceName annotation (or a file name initializer)
         Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
-        Procedural,  // `string Procedural = "noise"` annotation: generated at effect creation
+        Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
+                     // generator so far; runtime/src/ProceduralTexture.h)
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;
@@ -137,10 +138,7 @@ struct TextureDesc {
     int mipLevels = 1;
     std::string resourceName;  // ResourceName as written
     std::string resolvedPath;  // relative to the effect file; "" if not found
-    // Kind::Procedural: the generator ("noise": uniform white noise per channel, see
-    // runtime/ProceduralTexture.h) and its Seed annotation.
-    std::string procedural;
-    uint32_t seed = 0;
+    uint32_t seed = 0;         // Kind::Procedural: the Seed annotation
     SourceLoc loc;
 };
 
