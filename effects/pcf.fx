@@ -201,7 +201,7 @@ float4 PoissonPS(SceneVertexOutput IN) : COLOR
         string Script = "RenderColorTarget0=ShadowMap;"                                                     \
                         "RenderDepthStencilTarget=ShadowDepth;"                                             \
                         "RenderPort=light0;"                                                                \
-                        "ClearSetColor=FarMoments;"                                                         \
+                        "ClearSetColor=NoOccluder;"                                                         \
                         "ClearSetDepth=ClearDepth;"                                                         \
                         "Clear=Color;"                                                                      \
                         "Clear=Depth;"                                                                      \

@@ -182,7 +182,7 @@ float4 VsmMipPS(SceneVertexOutput IN) : COLOR
         string Script = "RenderColorTarget0=" #TARGET ";"                                                   \
                         "RenderDepthStencilTarget=ShadowDepth;"                                             \
                         "RenderPort=light0;"                                                                \
-                        "ClearSetColor=FarMoments;"                                                         \
+                        "ClearSetColor=NoOccluder;"                                                         \
                         "ClearSetDepth=ClearDepth;"                                                         \
                         "Clear=Color;"                                                                      \
                         "Clear=Depth;"                                                                      \

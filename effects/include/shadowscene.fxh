@@ -22,7 +22,8 @@ float SpecularPower <string UIWidget = "slider"; float UIMin = 1.0; float UIMax 
 float SpecularFactor = 0.4;
 float4 ClearColor <string UIWidget = "color";> = {0.32, 0.36, 0.42, 1.0};
 float ClearDepth <string UIWidget = "none";> = 1.0;
-float4 FarMoments <string UIWidget = "none";> = {1.0, 1.0, 1.0, 1.0};  // clears depth maps to "no occluder"
+// Clear value of depth and moments maps: depth 1 (and depth² 1), no occluder in front of anything.
+float4 NoOccluder <string UIWidget = "none";> = {1.0, 1.0, 1.0, 1.0};
 
 struct VertexFormat
 {

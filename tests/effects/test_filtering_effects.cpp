@@ -84,7 +84,7 @@ float annotationNumber(const fx::CompiledEffect& effect, const std::string& tech
 void expectUnderAnnotatedBound(const std::string& effectPath) {
     auto renderer = loadVisibilityEffect(effectPath);
     ASSERT_TRUE(renderer);
-    for (const std::string& sceneName : {"dual-l", "teapot"}) {
+    for (const char* sceneName : {"dual-l", "teapot"}) {
         const SceneTruth& t = truthOf(sceneName);
         const std::vector<float> lit(t.truth.visibility.size(), 1.0f);
         const double blank =
