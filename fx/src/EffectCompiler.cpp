@@ -67,6 +67,8 @@ private:
 
     void initialValues();
     void textures();
+    static bool isLoadableImage(const std::string& resource);
+    void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
     void samplers();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
@@ -183,11 +185,16 @@ void Compiler::textures() {
         if (const Annotation* a = p.annotation("MipLevels")) {
             if (auto v = eval(a->value, &scalar)) t.mipLevels = std::max(0, v->asInt());
         }
+        if (const Annotation* a = p.annotation("Procedural")) procedural(p, *a, t);
         std::string resource;
-        if (const Annotation* a = p.annotation("ResourceName"); a && a->value.kind == Expr::Kind::String)
+        SourceLoc resourceLoc = p.loc;
+        if (const Annotation* a = p.annotation("ResourceName"); a && a->value.kind == Expr::Kind::String) {
             resource = a->value.text;
-        else if (p.initializer && p.initializer->kind == Expr::Kind::String)
+            resourceLoc = a->value.loc;
+        } else if (p.initializer && p.initializer->kind == Expr::Kind::String) {
             resource = p.initializer->text;
+            resourceLoc = p.initializer->loc;
+        }
         if (!resource.empty() && t.kind == TextureDesc::Kind::Runtime) {
             t.kind = TextureDesc::Kind::File;
             t.resourceName = resource;
@@ -195,11 +202,55 @@ void Compiler::textures() {
             std::error_code ec;
             if (std::filesystem::exists(path, ec))
                 t.resolvedPath = path.string();
+            else if (isLoadableImage(resource))
+                // The effect cannot render as written without it: an error, unlike a format shadowfx
+                // could not read anyway (DDS in FX Composer's samples), which stays a warning.
+                error(DiagId::TextureFileMissing, resourceLoc, {resource, path.lexically_normal().string()});
             else
                 mDiagnostics.report(DiagId::TextureFileNotFound, p.loc, {resource});
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
         mOut->textures.push_back(std::move(t));
+    }
+}
+
+bool Compiler::isLoadableImage(const std::string& resource) {
+    std::string extension = upper(std::filesystem::path(resource).extension().string());
+    for (const char* known : {".PNG", ".HDR", ".TGA", ".JPG", ".JPEG", ".BMP"})
+        if (extension == known) return true;
+    return false;
+}
+
+// `string Procedural = "noise"; int Seed = 7;` with Dimensions (default 64x64) and Format (default
+// A8R8G8B8): a texture the runtime generates once when it creates the effect.
+void Compiler::procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t) {
+    if (t.kind != TextureDesc::Kind::Runtime || t.type != BaseType::Texture2D) {
+        error(DiagId::InvalidAnnotation, annotation.loc,
+              {"Procedural", "only a 2D texture that is not a render target can be procedural"});
+        return;
+    }
+    if (annotation.value.kind != Expr::Kind::String || !equalsIgnoreCase(annotation.value.text, "noise")) {
+        error(DiagId::InvalidAnnotation, annotation.value.loc,
+              {"Procedural", "'" + annotation.value.str() + "' is not a generator (known: \"noise\")"});
+        return;
+    }
+    if (isDepthFormat(t.format)) {
+        error(DiagId::InvalidAnnotation, annotation.loc,
+              {"Procedural", "a noise texture needs a colour format"});
+        return;
+    }
+    t.kind = TextureDesc::Kind::Procedural;
+    if (t.width == 0) t.width = t.height = 64;
+    if (const Annotation* seed = p.annotation("Seed")) {
+        TypeDesc scalar;
+        if (auto v = eval(seed->value, &scalar)) {
+            const float value = v->asFloat();
+            if (!(value >= 0 && value <= 4294967295.0f && value == std::floor(value)))
+                error(DiagId::InvalidAnnotation, seed->value.loc,
+                      {"Seed", "must be an integer between 0 and 4294967295"});
+            else
+                t.seed = static_cast<uint32_t>(value);
+        }
     }
 }
 

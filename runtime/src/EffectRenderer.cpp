@@ -13,6 +13,7 @@
 #include "GpuTexture.h"
 #include "Image.h"
 #include "PassTimer.h"
+#include "ProceduralTexture.h"
 #include "RenderStateApplier.h"
 #include "SamplerObject.h"
 #include "ScriptInterpreter.h"
@@ -39,6 +40,9 @@ struct EffectRenderer::Impl {
     // programs[technique][pass]
     std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;
     std::map<size_t, GpuTexture> textures;  // by texture parameter index
+    // Mipmapped render targets written since their mip chain was last generated: regenerated before a
+    // pass samples them (D3D9's AUTOGENMIPMAP).
+    std::set<const GpuTexture*> staleMipChains;
     std::map<size_t, SamplerObject> samplers;
     std::map<size_t, SamplerObject> comparisonSamplers;
     std::map<const Mesh*, std::pair<std::shared_ptr<const Mesh>, GpuMesh>> meshes;
@@ -106,19 +110,33 @@ bool EffectRenderer::Impl::createFileTextures(fx::DiagnosticSink& diagnostics) {
             textures[desc.parameter] = makeNoiseTexture();
             continue;
         }
+        if (desc.kind == fx::TextureDesc::Kind::Procedural) {
+            GpuTexture texture = GpuTexture::create2D(desc.format, desc.width, desc.height, desc.mipLevels);
+            texture.uploadRGBA32F(whiteNoiseTexels(texture.width(), texture.height(), desc.seed).data());
+            texture.generateMipmaps();
+            textures[desc.parameter] = std::move(texture);
+            continue;
+        }
         if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() && !cube) {
             std::string error;
             std::optional<Image> image = loadImageFile(desc.resolvedPath, error);
-            if (image && !image->isFloat) {
-                Image rgba = image->toRGBA8();
-                GpuTexture texture = GpuTexture::create2D(fx::TextureFormat::RGBA8, rgba.width, rgba.height,
-                                                          desc.mipLevels == 1 ? 1 : 0);
-                texture.uploadRGBA8(rgba.bytes.data());
-                if (texture.mipLevels() > 1) texture.generateMipmaps();
-                textures[desc.parameter] = std::move(texture);
-                continue;
+            if (!image) {
+                diagnostics.report(fx::DiagId::TextureFileUnreadable, desc.loc, {desc.resourceName, error});
+                return false;
             }
-            diagnostics.report(fx::DiagId::TextureFileNotFound, desc.loc, {desc.resolvedPath + ": " + error});
+            // HDR files keep their range in a float texture; everything else is 8-bit RGBA.
+            const int levels = desc.mipLevels == 1 ? 1 : 0;
+            GpuTexture texture =
+                GpuTexture::create2D(image->isFloat ? fx::TextureFormat::RGBA32F : fx::TextureFormat::RGBA8,
+                                     image->width, image->height, levels);
+            if (image->isFloat) {
+                texture.uploadRGBA32F(image->floats.data());
+            } else {
+                texture.uploadRGBA8(image->toRGBA8().bytes.data());
+            }
+            texture.generateMipmaps();
+            textures[desc.parameter] = std::move(texture);
+            continue;
         }
         textures[desc.parameter] = makeNeutralTexture(cube);
     }
@@ -189,7 +207,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
         impl->samplers.emplace(desc.parameter, SamplerObject(desc, false));
         impl->comparisonSamplers.emplace(desc.parameter, SamplerObject(desc, true));
     }
-    impl->createFileTextures(diagnostics);
+    if (!impl->createFileTextures(diagnostics)) return nullptr;
     impl->quad = GpuMesh::makeFullScreenQuad();
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(impl)));
 }
@@ -442,7 +460,16 @@ private:
             fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
             return false;
         }
+        for (const RenderTargetAttachment& color : mTargets.colors) {
+            if (color.texture && color.texture->mipLevels() > 1) mImpl.staleMipChains.insert(color.texture);
+        }
         return true;
+    }
+
+    bool isColorTarget(const GpuTexture* texture) const {
+        return std::any_of(
+            mTargets.colors.begin(), mTargets.colors.end(),
+            [texture](const RenderTargetAttachment& color) { return color.texture == texture; });
     }
 
     void applyStates(const fx::CompiledPass& pass) {
@@ -488,6 +515,11 @@ private:
             if (desc && desc->texture) {
                 auto it = mImpl.textures.find(*desc->texture);
                 if (it != mImpl.textures.end()) texture = &it->second;
+            }
+            // Not while the pass renders into it (the chain would be built before the draw that changes it).
+            if (texture && !isColorTarget(texture) && mImpl.staleMipChains.erase(texture) > 0) {
+                PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+                texture->generateMipmaps();
             }
             gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
             if (texture) {
@@ -621,12 +653,12 @@ FrameImage EffectRenderer::readFrame() const {
 }
 
 std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view textureName, int* width,
-                                                             int* height, int* channels) const {
+                                                             int* height, int* channels, int level) const {
     const std::optional<size_t> index = findParameter(textureName);
     if (!index) return std::nullopt;
     auto it = mImpl->textures.find(*index);
-    if (it == mImpl->textures.end()) return std::nullopt;
-    const Image image = readFloatTexture(it->second);
+    if (it == mImpl->textures.end() || level < 0 || level >= it->second.mipLevels()) return std::nullopt;
+    const Image image = readFloatTexture(it->second, level);
     if (width) *width = image.width;
     if (height) *height = image.height;
     if (channels) *channels = image.channels;

@@ -111,11 +111,11 @@ void GpuTexture::uploadRGBA32F(const float* pixels, int level, int face) {
     upload(pixels, GL_FLOAT, level, face);
 }
 
-void GpuTexture::generateMipmaps() {
+void GpuTexture::generateMipmaps() const {
     if (mLevels <= 1 || isDepth()) return;
-    gl::BindTexture(mTarget, mId);
-    gl::GenerateMipmap(mTarget);
-    gl::BindTexture(mTarget, 0);
+    // Direct state access: no texture unit's binding changes (the frame executor regenerates chains
+    // while it binds samplers).
+    gl::GenerateTextureMipmap(mId);
 }
 
 void GpuTexture::setLabel(const std::string& label) {

@@ -43,7 +43,7 @@ public:
     void uploadRGBA8(const uint8_t* pixels, int level = 0, int face = 0);
     // Same with RGBA float pixels.
     void uploadRGBA32F(const float* pixels, int level = 0, int face = 0);
-    void generateMipmaps();
+    void generateMipmaps() const;  // GL storage only: the object itself does not change
     void setLabel(const std::string& label);
 
     GLuint id() const { return mId; }

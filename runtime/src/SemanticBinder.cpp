@@ -98,6 +98,8 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"DIRECTION", Kind::LightDirection},
         {"LIGHTDIRECTION", Kind::LightDirection},
         {"LIGHTCOLOR", Kind::LightColor},
+        {"LIGHTAREARADIUS", Kind::LightAreaRadius},
+        {"LIGHTSIZE", Kind::LightAreaRadius},
         {"DIFFUSE", Kind::ObjectColor},
         {"MATERIALDIFFUSE", Kind::ObjectColor},
         {"DIFFUSECOLOR", Kind::ObjectColor},
@@ -121,8 +123,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx:
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
-        const bool isLightProperty = binding.kind == Kind::LightPosition ||
-                                     binding.kind == Kind::LightDirection || binding.kind == Kind::LightColor;
+        const bool isLightProperty =
+            binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
+            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
         const std::string upperSemantic = upper(parameter.semantic);
@@ -210,6 +213,9 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 continue;
             case Kind::LightColor:
                 storeVector(value, glm::vec4(binding.light->color, 1.0f));
+                continue;
+            case Kind::LightAreaRadius:
+                storeVector(value, glm::vec4(binding.light->areaRadius));
                 continue;
             case Kind::ObjectColor:
                 storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));

@@ -5,7 +5,8 @@
 // annotated `string frustum = "light0";` (or `string Object = "light0";`) sees that light's view and
 // projection instead of the current render port's. Other semantics: ViewportPixelSize, Time,
 // CameraPosition, ObjectId; light properties Position/LightPosition, Direction/LightDirection and
-// LightColor (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
+// LightColor, LightAreaRadius/LightSize (the light's areaRadius in world units, for soft-shadow filters)
+// (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
 // object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
 #pragma once
 
@@ -57,6 +58,7 @@ private:
         LightPosition,
         LightDirection,
         LightColor,
+        LightAreaRadius,
         ObjectColor,
         Ambient,
     };

@@ -49,6 +49,8 @@ const char* const kBenchUsage =
     "  --warmup N            untimed frames first (default 2)\n"
     "  --width W, --height H frame size (default 640x480)\n"
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
+    "  --area-radius R       give every light of every scene this areaRadius (0: hard shadows); the\n"
+    "                        ground truth is then soft (penumbra error of filtering methods)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
@@ -373,6 +375,16 @@ int benchCommand(const Arguments& args) {
     }
     runtime::GroundTruthOptions truthOptions;
     truthOptions.areaSamples = args.intValue("--area-samples", 256);
+    std::optional<float> areaRadius;
+    if (const std::string text = args.value("--area-radius"); !text.empty()) {
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (*end != '\0' || !(value >= 0.0f && value < 1e6f)) {
+            std::cerr << "shadowfx bench: --area-radius: '" << text << "' is not a radius >= 0\n";
+            return 2;
+        }
+        areaRadius = value;
+    }
 
     const std::filesystem::path outDir = args.value("--out");
     std::error_code fsError;
@@ -407,6 +419,8 @@ int benchCommand(const Arguments& args) {
             std::cerr << ")\n";
             return 1;
         }
+        if (areaRadius)
+            for (runtime::Light& light : scene->lights) light.areaRadius = *areaRadius;
         std::cerr << "bench: ground truth for " << name << " (" << scene->triangleCount()
                   << " triangles)...\n";
         SceneTruth& t = truths.emplace_back();
@@ -648,7 +662,8 @@ int benchCommand(const Arguments& args) {
                                  {"warmup", warmup},
                                  {"width", width},
                                  {"height", height},
-                                 {"area_samples", truthOptions.areaSamples}}},
+                                 {"area_samples", truthOptions.areaSamples},
+                                 {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};
     {

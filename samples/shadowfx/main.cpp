@@ -228,7 +228,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kBenchUsage,
      {"--out"},
      {"--effects", "--scenes", "--map-sizes", "--techniques", "--frames", "--warmup", "--width", "--height",
-      "--area-samples", "--backend", "--set", "-I", "-D"},
+      "--area-samples", "--area-radius", "--backend", "--set", "-I", "-D"},
      {},
      shadowfx::cli::benchCommand,
      -1},

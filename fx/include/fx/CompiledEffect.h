@@ -124,7 +124,9 @@ struct TextureDesc {
         RenderColorTarget,         // semantic RENDERCOLORTARGET
         RenderDepthStencilTarget,  // semantic RENDERDEPTHSTENCILTARGET
         File,                      // ResourceName annotation (or a file name initializer)
-        Runtime,  // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
+        Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
+        Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
+                     // generator so far; runtime/src/ProceduralTexture.h)
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;
@@ -136,6 +138,7 @@ struct TextureDesc {
     int mipLevels = 1;
     std::string resourceName;  // ResourceName as written
     std::string resolvedPath;  // relative to the effect file; "" if not found
+    uint32_t seed = 0;         // Kind::Procedural: the Seed annotation
     SourceLoc loc;
 };
 

@@ -47,6 +47,8 @@ FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
+FX_DIAGNOSTIC(TextureFileMissing, Error, "texture file '{0}' not found (looked for '{1}')")
+FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}")
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
 FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")

@@ -98,10 +98,10 @@ public:
 
     // The frame's colour target as rendered by the last render().
     FrameImage readFrame() const;
-    // A render-target texture's first channels as floats (rows top to bottom), for tests and debugging
-    // views; nullopt if the parameter is not an allocated render target.
+    // A texture's first channels as floats (rows top to bottom) at mip `level`, for tests and debugging
+    // views; nullopt if the parameter is not an allocated texture or has no such level.
     std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
-                                                 int* channels) const;
+                                                 int* channels, int level = 0) const;
 
     struct Impl;  // opaque: the GL resources (runtime/src/EffectRenderer.cpp)
 

@@ -1,0 +1,263 @@
+// Textures an effect gets without rendering them itself, and render targets beyond the basics, through the
+// whole pipeline (parse, compile, EffectRenderer on llvmpipe): procedural noise (`string Procedural =
+// "noise"`), file textures (PNG, HDR) by ResourceName relative to the effect and the error for a missing
+// one, mipmapped render targets regenerated before they are sampled, and multiple render targets.
+#include "effects/EffectHarness.h"
+
+#include "../../runtime/src/Image.h"
+#include "../../runtime/src/ProceduralTexture.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace shadowfx::test {
+namespace {
+
+// Draws one full-screen quad into the frame with `pixelShader` (a function `float4 PS(float2 uv :
+// TEXCOORD0) : COLOR`); `declarations` go before it. Samples the textures, so they must exist.
+std::string fullScreenEffect(const std::string& declarations, const std::string& pixelShader,
+                             const std::string& script = "RenderColorTarget0=; Draw=Buffer;") {
+    return declarations + R"(
+struct Quad { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+Quad VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Quad o; o.Position = p; o.UV = uv; return o; }
+)" + pixelShader +
+           R"(
+technique t { pass p < string Script = ")" +
+           script + R"("; > { ZEnable = false; VertexShader = compile vs_3_0 VS();
+                                   PixelShader = compile ps_3_0 PS(); } }
+)";
+}
+
+const runtime::Scene& boxes() {
+    static const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    return scene;
+}
+
+// [SECTION] Procedural noise
+
+// PCG32's reference implementation (pcg-c-basic, pcg32-demo.c) prints these six outputs for
+// pcg32_srandom_r(&rng, 42u, 54u): the generator is that algorithm, so every machine makes the same noise.
+TEST(ProceduralNoise, GeneratorMatchesThePcg32ReferenceOutput) {
+    runtime::Pcg32 generator(42u, 54u);
+    const uint32_t expected[] = {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u,
+                                 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu};
+    for (uint32_t value : expected) EXPECT_EQ(generator.next(), value);
+}
+
+const char* kNoiseDeclarations = R"(
+texture Noise < string Procedural = "noise"; int Seed = 7; float2 Dimensions = {64, 32};
+                string Format = "A32B32G32R32F"; >;
+texture Other < string Procedural = "noise"; int Seed = 8; float2 Dimensions = {64, 32};
+                string Format = "A32B32G32R32F"; >;
+sampler NoiseSampler = sampler_state { texture = <Noise>; MinFilter = POINT; MagFilter = POINT; };
+sampler OtherSampler = sampler_state { texture = <Other>; MinFilter = POINT; MagFilter = POINT; };
+)";
+
+TEST(ProceduralNoise, TextureIsTheDocumentedWhiteNoiseAndTheSameEveryTime) {
+    const std::string source = fullScreenEffect(kNoiseDeclarations,
+                                                "float4 PS(float2 uv : TEXCOORD0) : COLOR { return "
+                                                "tex2D(NoiseSampler, uv) * tex2D(OtherSampler, uv); }");
+    auto first = loadEffect(source, false);
+    auto second = loadEffect(source, false);
+    ASSERT_TRUE(first && second);
+    int width = 0, height = 0, channels = 0;
+    auto noise = first->readTarget("Noise", &width, &height, &channels);
+    ASSERT_TRUE(noise);
+    ASSERT_EQ(width, 64);
+    ASSERT_EQ(height, 32);
+    ASSERT_EQ(channels, 4);
+    EXPECT_EQ(*noise, *second->readTarget("Noise", nullptr, nullptr, nullptr)) << "same seed, same texture";
+    EXPECT_EQ(*noise, runtime::whiteNoiseTexels(64, 32, 7)) << "what the README documents, texel for texel";
+    EXPECT_NE(*noise, *first->readTarget("Other", nullptr, nullptr, nullptr)) << "another seed, other noise";
+
+    // Uniform on [0, 1) per channel: mean 1/2, variance 1/12 (standard errors at 2048 samples: 0.0064 and
+    // 0.0019), and neighbouring channels uncorrelated.
+    for (int c = 0; c < 4; ++c) {
+        double sum = 0, squares = 0, product = 0;
+        const size_t n = noise->size() / 4;
+        for (size_t i = 0; i < n; ++i) {
+            const float v = (*noise)[i * 4 + size_t(c)];
+            ASSERT_GE(v, 0.0f);
+            ASSERT_LT(v, 1.0f);
+            sum += v;
+            squares += double(v) * v;
+            product += (v - 0.5) * ((*noise)[i * 4 + size_t((c + 1) % 4)] - 0.5);
+        }
+        const double mean = sum / double(n);
+        EXPECT_NEAR(mean, 0.5, 0.025) << "channel " << c;
+        EXPECT_NEAR(squares / double(n) - mean * mean, 1.0 / 12.0, 0.008) << "channel " << c;
+        EXPECT_NEAR(product / double(n), 0.0, 0.008) << "channels " << c << " and " << (c + 1) % 4;
+    }
+    ASSERT_TRUE(render(*first, boxes(), 16, 16));
+    EXPECT_TRUE(notConstant(first->readFrame()));
+}
+
+TEST(ProceduralNoise, UnknownGeneratorIsAnErrorAtTheAnnotation) {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    auto effect =
+        fx::parseEffectSource("texture T < string Procedural = \"perlin\"; >;\n", "proc.fx", {}, diagnostics);
+    ASSERT_TRUE(effect);
+    EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) && !diagnostics.hasErrors());
+    EXPECT_NE(diagnostics.str().find("proc.fx:1:33: error: invalid annotation 'Procedural'"),
+              std::string::npos)
+        << diagnostics.str();
+}
+
+// [SECTION] File textures
+
+class FileTextures : public ::testing::Test {
+protected:
+    std::filesystem::path mDir = std::filesystem::temp_directory_path() / "shadowfx_file_textures";
+    void SetUp() override {
+        std::filesystem::remove_all(mDir);
+        std::filesystem::create_directories(mDir / "images");
+    }
+    void TearDown() override { std::filesystem::remove_all(mDir); }
+    std::string writeEffect(const std::string& declarations) {
+        const std::filesystem::path path = mDir / "textured.fx";
+        std::ofstream(path) << fullScreenEffect(
+            declarations, "float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(S, uv); }");
+        return path.string();
+    }
+};
+
+TEST_F(FileTextures, PngAndHdrLoadRelativeToTheEffect) {
+    // A 2x2 PNG, written by the runtime's own PNG writer, read back texel for texel.
+    runtime::Image png = runtime::Image::makeBytes(2, 2, 4);
+    png.bytes = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 10, 20, 30, 255};
+    std::string error;
+    ASSERT_TRUE(png.writePng((mDir / "images/checker.png").string(), error)) << error;
+    auto renderer = loadEffect(writeEffect(R"(texture T < string ResourceName = "images/checker.png"; >;
+sampler S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT; MipFilter = NONE; };)"),
+                               true);
+    ASSERT_TRUE(renderer);
+    int width = 0, height = 0, channels = 0;
+    auto texels = renderer->readTarget("T", &width, &height, &channels);
+    ASSERT_TRUE(texels);
+    ASSERT_EQ(width * height * channels, 16);
+    for (int i = 0; i < 16; ++i) EXPECT_NEAR((*texels)[size_t(i)], png.bytes[size_t(i)] / 255.0f, 1e-6f);
+
+    // A 2x1 Radiance HDR file (flat RGBE, mantissa m and exponent e meaning m * 2^(e - 136)): values above
+    // 1 survive in a float texture.
+    const unsigned char pixels[] = {128, 64, 32, 130, 128, 128, 128, 129};  // (2, 1, 0.5), (1, 1, 1)
+    {
+        std::ofstream hdr(mDir / "images/sky.hdr", std::ios::binary);
+        hdr << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+        hdr.write(reinterpret_cast<const char*>(pixels), sizeof pixels);
+    }
+    renderer = loadEffect(writeEffect(R"(texture T < string ResourceName = "images/sky.hdr"; >;
+sampler S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT; MipFilter = NONE; };)"),
+                          true);
+    ASSERT_TRUE(renderer);
+    texels = renderer->readTarget("T", &width, &height, &channels);
+    ASSERT_TRUE(texels);
+    ASSERT_EQ(width, 2);
+    ASSERT_EQ(channels, 4);
+    const float expected[] = {2.0f, 1.0f, 0.5f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f};
+    for (int i = 0; i < 8; ++i) EXPECT_FLOAT_EQ((*texels)[size_t(i)], expected[i]) << i;
+    ASSERT_TRUE(render(*renderer, boxes(), 8, 8));
+}
+
+TEST_F(FileTextures, MissingFileIsAnErrorAtTheResourceName) {
+    const std::string path = writeEffect(R"(texture T < string ResourceName = "images/nothere.png"; >;
+sampler S = sampler_state { texture = <T>; };)");
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectFile(path, {}, diagnostics);
+    ASSERT_TRUE(effect);
+    auto compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    EXPECT_TRUE(diagnostics.hasErrors());
+    EXPECT_NE(diagnostics.str().find("textured.fx:1:35: error: texture file 'images/nothere.png' not found"),
+              std::string::npos)
+        << diagnostics.str();
+}
+
+// [SECTION] Render targets
+
+// A mipmapped target (MipLevels = 0: the full chain) written by one pass and sampled by the next: the
+// runtime regenerates the chain in between, so level 1 is the 2x2 box average of level 0.
+TEST(RenderTargetMips, LevelOneIsTheAverageOfLevelZeroAfterAPassWritesIt) {
+    const std::string source = fullScreenEffect(
+        R"(texture Pattern : RENDERCOLORTARGET < float2 Dimensions = {16, 8}; string Format = "A32B32G32R32F";
+                                             int MipLevels = 0; >;
+sampler PatternSampler = sampler_state { texture = <Pattern>; MinFilter = LINEAR; MagFilter = LINEAR;
+                                         MipFilter = LINEAR; };
+float4 PatternPS(float2 uv : TEXCOORD0) : COLOR
+{ return float4(frac(uv.x * 7.3 + uv.y * 3.1), uv.x * uv.x, frac(sin(uv.x * 91.0 + uv.y * 47.0) * 43758.5), 1); }
+)",
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2Dlod(PatternSampler, float4(uv, 0, 1)); }",
+        "RenderColorTarget0=; Draw=Buffer;");
+    // Two passes: the first renders the pattern into the mipmapped target, the second samples level 1.
+    std::string twoPasses = source;
+    const std::string marker = "technique t { pass p";
+    twoPasses.replace(
+        twoPasses.find(marker), marker.size(),
+        "technique t { pass w < string Script = \"RenderColorTarget0=Pattern; Draw=Buffer;\"; > "
+        "{ ZEnable = false; VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 "
+        "PatternPS(); } pass p");
+    auto renderer = loadEffect(twoPasses, false);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, boxes(), 32, 32));
+    int w0 = 0, h0 = 0, c0 = 0, w1 = 0, h1 = 0, c1 = 0;
+    auto level0 = renderer->readTarget("Pattern", &w0, &h0, &c0, 0);
+    auto level1 = renderer->readTarget("Pattern", &w1, &h1, &c1, 1);
+    ASSERT_TRUE(level0 && level1);
+    ASSERT_EQ(w1, 8);
+    ASSERT_EQ(h1, 4);
+    EXPECT_TRUE(renderer->readTarget("Pattern", nullptr, nullptr, nullptr, 4)) << "16x8: 5 levels";
+    float spread = 0;
+    for (int y = 0; y < h1; ++y) {
+        for (int x = 0; x < w1; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                auto at = [&](int xx, int yy) { return (*level0)[size_t((yy * w0 + xx) * c0 + c)]; };
+                const float average = 0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) +
+                                               at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+                EXPECT_NEAR((*level1)[size_t((y * w1 + x) * c1 + c)], average, 1e-5f)
+                    << x << "," << y << "," << c;
+                spread = std::max(spread, std::abs(at(2 * x, 2 * y) - average));
+            }
+        }
+    }
+    EXPECT_GT(spread, 0.05f) << "the pattern must vary inside 2x2 blocks, or any level would pass";
+}
+
+// RenderColorTarget0..3 in a SAS script with a pixel shader writing COLOR0..COLOR3.
+TEST(MultipleRenderTargets, FourTargetsReceiveTheirOwnOutputs) {
+    const std::string source = fullScreenEffect(
+        R"(texture A : RENDERCOLORTARGET < float2 Dimensions = {8, 8}; string Format = "A32B32G32R32F"; >;
+texture B : RENDERCOLORTARGET < float2 Dimensions = {8, 8}; string Format = "R32F"; >;
+texture C : RENDERCOLORTARGET < float2 Dimensions = {8, 8}; string Format = "G32R32F"; >;
+texture D : RENDERCOLORTARGET < float2 Dimensions = {8, 8}; string Format = "A32B32G32R32F"; >;
+struct Outputs { float4 a : COLOR0; float4 b : COLOR1; float4 c : COLOR2; float4 d : COLOR3; };
+)",
+        R"(Outputs PS(float2 uv : TEXCOORD0)
+{ Outputs o; o.a = float4(0.25, 0.5, 0.75, 1); o.b = 2; o.c = float4(3, 4, 0, 0); o.d = float4(uv, 5, 6); return o; })",
+        "RenderColorTarget0=A; RenderColorTarget1=B; RenderColorTarget2=C; RenderColorTarget3=D; "
+        "Draw=Buffer;");
+    auto renderer = loadEffect(source, false);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, boxes(), 8, 8));
+    int width = 0, height = 0, channels = 0;
+    auto a = renderer->readTarget("A", &width, &height, &channels);
+    ASSERT_TRUE(a);
+    EXPECT_EQ(std::vector<float>(a->begin(), a->begin() + 4), (std::vector<float>{0.25f, 0.5f, 0.75f, 1.0f}));
+    auto b = renderer->readTarget("B", &width, &height, &channels);
+    ASSERT_TRUE(b);
+    EXPECT_EQ(channels, 1);
+    EXPECT_EQ((*b)[0], 2.0f);
+    auto c = renderer->readTarget("C", &width, &height, &channels);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(channels, 2);
+    EXPECT_EQ((*c)[0], 3.0f);
+    EXPECT_EQ((*c)[1], 4.0f);
+    auto d = renderer->readTarget("D", &width, &height, &channels);
+    ASSERT_TRUE(d);
+    // Texel (7, 0): uv at its centre.
+    EXPECT_NEAR((*d)[7 * 4 + 0], 7.5f / 8.0f, 1e-5f);
+    EXPECT_NEAR((*d)[7 * 4 + 1], 0.5f / 8.0f, 1e-5f);
+    EXPECT_EQ((*d)[7 * 4 + 2], 5.0f);
+}
+
+}  // namespace
+}  // namespace shadowfx::test
