@@ -109,7 +109,11 @@ TEST(ProceduralNoise, UnknownGeneratorIsAnErrorAtTheAnnotation) {
 
 class FileTextures : public ::testing::Test {
 protected:
-    std::filesystem::path mDir = std::filesystem::temp_directory_path() / "shadowfx_file_textures";
+    // One folder per test: CTest runs the tests of this file as parallel processes.
+    std::filesystem::path mDir =
+        std::filesystem::temp_directory_path() /
+        ("shadowfx_file_textures_" +
+         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     void SetUp() override {
         std::filesystem::remove_all(mDir);
         std::filesystem::create_directories(mDir / "images");
