@@ -192,6 +192,9 @@ float4 DepthTargetPS(ReceiverVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique constant
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -207,6 +210,8 @@ technique constant
 
 technique slope_state
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -239,6 +244,8 @@ technique slope_state
 
 technique slope_shader
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -254,6 +261,8 @@ technique slope_shader
 
 technique linear_z
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

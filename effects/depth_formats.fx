@@ -157,6 +157,9 @@ float4 Fixed24PS(ReceiverVertexOutput IN) : COLOR
 
 technique d16
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -170,6 +173,9 @@ technique d16
 
 technique d24
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -183,6 +189,9 @@ technique d24
 
 technique r32f
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

@@ -237,6 +237,9 @@ float4 PoissonPS(SceneVertexOutput IN) : COLOR
 
 technique bilinear
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -250,6 +253,9 @@ technique bilinear
 
 technique hardware
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -263,6 +269,9 @@ technique hardware
 
 technique jittered4x4
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.024 % on dual-l, 0.055 % on teapot (hard truth)
@@ -276,6 +285,9 @@ technique jittered4x4
 
 technique jittered_noise
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -289,6 +301,9 @@ technique jittered_noise
 
 technique poisson
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.016 % on dual-l, 0.041 % on teapot (hard truth)

@@ -143,7 +143,7 @@ sampler MomentsMippedSampler = sampler_state
 // [SECTION] Shaders
 float4 RenderMomentsPS(DepthVertexOutput IN) : COLOR
 {
-    return float4(DepthMoments(IN.Z), 0, 1);
+    return float4(DepthMoments(LightDepth(IN)), 0, 1);
 }
 
 float4 BlurXPS(BufferVertex IN) : COLOR
@@ -218,6 +218,8 @@ float4 VsmMipPS(SceneVertexOutput IN) : COLOR
 
 technique vsm
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.013 % on dual-l, 0.051 % on teapot (hard truth)
@@ -231,6 +233,8 @@ technique vsm
 
 technique vsm_blur
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing; fov-1: the blur widens shadows by its kernel, and a texel spans 33 pixels under a 1 degree lens";
     string Script = "Pass=RenderMoments; Pass=BlurX; Pass=BlurY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.05 % on dual-l, 0.098 % on teapot (hard truth)
@@ -275,6 +279,8 @@ technique vsm_blur
 
 technique vsm_mip
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.097 % on dual-l, 0.08 % on teapot (hard truth)

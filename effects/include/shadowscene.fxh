@@ -2,8 +2,9 @@
 // and lights the runtime binds, the vertex shaders of the shadow-map and scene passes, and Blinn-Phong
 // shading with a shadow factor (the same shading as thesis_fxcomposer.fx). Include lighting.fxh first.
 //
-// The shadow-map pass writes light clip-space depth z (in [0, 1]; light0's projection is orthographic for
-// directional lights, so z is linear in distance). The scene pass hands its pixel shader the receiver's
+// The shadow-map pass writes light clip-space depth z/w in [0, 1] (for directional lights, whose projection
+// is orthographic, w = 1 and z is linear in distance; for spot lights the division is per pixel, since
+// z/w does not interpolate linearly: `shadowfx stress`, case spot-inside-bounds). The scene pass hands its pixel shader the receiver's
 // light clip position (LP), its world normal and the direction to the light.
 #ifndef SHADOWFX_SHADOWSCENE_FXH
 #define SHADOWFX_SHADOWSCENE_FXH
@@ -34,20 +35,26 @@ struct VertexFormat
 struct DepthVertexOutput
 {
     float4 Position : POSITION;
-    float  Z        : TEXCOORD0;
+    float2 ZW       : TEXCOORD0;
 };
 
 DepthVertexOutput RenderDepthVS(VertexFormat IN, uniform float4x4 WorldLightViewProjection)
 {
     DepthVertexOutput OUT;
     OUT.Position = mul(float4(IN.Position.xyz, 1.0), WorldLightViewProjection);
-    OUT.Z = OUT.Position.z;
+    OUT.ZW = OUT.Position.zw;
     return OUT;
+}
+
+// The light clip depth z/w of a shadow-map pixel.
+float LightDepth(DepthVertexOutput IN)
+{
+    return IN.ZW.x / IN.ZW.y;
 }
 
 float4 RenderDepthPS(DepthVertexOutput IN) : COLOR
 {
-    return float4(IN.Z, 0, 0, 1);
+    return float4(LightDepth(IN), 0, 0, 1);
 }
 
 struct SceneVertexOutput
