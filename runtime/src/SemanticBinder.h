@@ -32,12 +32,23 @@ class SemanticBinder {
 public:
     // Classifies every parameter's semantic once. Parameters with semantics the runtime does not know
     // are left alone (they are the user's own).
-    SemanticBinder(const fx::Effect& effect, const Scene& scene, fx::DiagnosticSink& diagnostics);
+    // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
+    SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
+                   fx::DiagnosticSink& diagnostics);
+
+    // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
+    // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
+    enum class Scope { All, PerPort, PerObject };
 
     // Writes the values of every bound parameter that is not pinned into `values` (one per parameter).
-    // `object` may be null (Draw=Buffer), then World is the identity.
+    // `object` may be null (Draw=Buffer), then World is the identity. `used` (one flag per parameter, may
+    // be null) restricts binding to the parameters a pass reads.
     void bind(const RenderPortView& port, const SceneObject* object, float time,
-              std::vector<fx::Value>& values, const std::vector<bool>& pinned) const;
+              std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope = Scope::All,
+              const std::vector<bool>* used = nullptr) const;
+
+    // True if the parameter's bound value depends on the drawn object.
+    bool isPerObject(size_t parameter) const;
 
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;
@@ -66,8 +77,11 @@ private:
         bool inverse = false;
         bool transpose = false;
         const Light* light =
-            nullptr;  // frustum/Object annotation (matrices), or the light of a light property
+            nullptr;                // frustum/Object annotation (matrices), or the light of a light property
+        glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
+        glm::mat4 lightProjection{1.0f};
     };
+    static bool dependsOnObject(Kind kind);
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
 
