@@ -393,7 +393,8 @@ std::vector<PassUse> passUses(const EffectRenderer::Impl& impl, const fx::Compil
         use.used.assign(count, false);
         for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment})
             for (const fx::UniformBinding& member : stage->uniforms)
-                if (member.source == fx::UniformBinding::Source::Parameter && member.index < count)
+                if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
+                    member.index < count)
                     use.used[member.index] = true;
         for (const fx::RenderStateSetting& setting : pass.states)
             collectParameters(setting.value, impl, use.used);
@@ -514,8 +515,24 @@ public:
                                                               : PlannedOp::Kind::DrawGeometry;
         op.pass = index;
         op.lightPort = mLightPort;
-        op.writes = colorTargets();
-        if (mDepth != kNone) op.writes.push_back(mDepth);
+        // Bound targets are read (blending, depth and stencil tests); they are written unless the pass's
+        // states mask the writes (the hardware shadow map's ColorWriteEnable = 0, BlendOp=min without Z).
+        const RenderStateBlock states = passStates(pass);
+        static constexpr fx::RenderStateId kColorWrites[] = {
+            fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
+            fx::RenderStateId::ColorWriteEnable2, fx::RenderStateId::ColorWriteEnable3};
+        for (size_t slot = 0; slot < mColors.size(); ++slot) {
+            if (mColors[slot] == kNone) continue;
+            op.reads.push_back(mColors[slot]);
+            if (states.get(kColorWrites[slot]) != 0.0) op.writes.push_back(mColors[slot]);
+        }
+        if (mDepth != kNone) {
+            op.reads.push_back(mDepth);
+            const bool depthWrites = states.get(fx::RenderStateId::ZEnable) != 0.0 &&
+                                     states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
+            if (depthWrites || states.get(fx::RenderStateId::StencilEnable) != 0.0)
+                op.writes.push_back(mDepth);
+        }
         for (const fx::SamplerBinding* binding : passSamplers(pass)) {
             const fx::SamplerDesc* desc = mImpl.compiled->findSampler(binding->samplerParameter);
             if (desc && desc->texture) op.reads.push_back(static_cast<int>(*desc->texture));
@@ -559,6 +576,20 @@ private:
         auto it = mImpl.parameterIndex.find(name);
         if (it == mImpl.parameterIndex.end() || !mImpl.textures.count(it->second)) return kUnknown;
         return static_cast<int>(it->second);
+    }
+    RenderStateBlock passStates(const fx::CompiledPass& pass) const {
+        RenderStateBlock block = RenderStateBlock::defaults();
+        const auto lookup = [this](std::string_view name) { return parameter(std::string(name)); };
+        fx::DiagnosticList ignored;  // FrameExecutor::applyStates reports them
+        for (const fx::RenderStateSetting& setting : pass.states) {
+            if (setting.value.kind == fx::Expr::Kind::Number || setting.value.kind == fx::Expr::Kind::Bool) {
+                block.set(setting.id, setting.value.number);
+                continue;
+            }
+            if (std::optional<fx::Value> value = fx::evaluate(setting.value, lookup, nullptr, &ignored))
+                block.set(setting.id, value->asFloat());
+        }
+        return block;
     }
     std::vector<int> colorTargets() const {
         std::vector<int> targets;

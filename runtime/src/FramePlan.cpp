@@ -28,8 +28,8 @@ uint64_t hashBytes(uint64_t seed, const void* data, size_t size) {
 
 void FramePlan::decide(const std::map<int, TargetHistory>& history,
                        const std::function<uint64_t(int)>& identity, bool leaveOut) {
-    // Dead work: backward liveness from the frame's colour. Draws read their own targets (blending, depth
-    // test); colour and depth clears overwrite theirs entirely.
+    // Dead work: backward liveness from the frame's colour. Colour and depth clears overwrite their targets
+    // entirely; draws read theirs (PlannedOp::reads).
     if (leaveOut) {
         std::set<int> live = {kFrameColor};
         for (auto op = ops.rbegin(); op != ops.rend(); ++op) {
@@ -42,7 +42,6 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
             if (op->kind == PlannedOp::Kind::ClearColor || op->kind == PlannedOp::Kind::ClearDepth)
                 for (int w : op->writes) live.erase(w);
             live.insert(op->reads.begin(), op->reads.end());
-            if (op->isDraw()) live.insert(op->writes.begin(), op->writes.end());
         }
     }
 

@@ -31,8 +31,8 @@ struct PlannedOp {
     Kind kind = Kind::ClearColor;
     size_t pass = 0;          // the pass's index in its technique
     bool lightPort = false;   // RenderPort names a light
-    std::vector<int> writes;  // targets
-    std::vector<int> reads;   // sampled textures
+    std::vector<int> writes;  // targets it changes
+    std::vector<int> reads;   // sampled textures, and a draw's bound targets (blending, depth test)
     uint64_t signature = 0;   // what decides the written contents, besides the targets' old contents
     ReceiverRegion region;    // light draws: where the camera's receivers read (before the decision)
 

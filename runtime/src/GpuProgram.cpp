@@ -138,6 +138,7 @@ void GpuProgram::upload(const std::vector<fx::Value>& parameters, const std::vec
     for (StageBlock& block : mBlocks) {
         if (block.data.empty()) continue;
         for (const fx::UniformBinding& member : block.stage->uniforms) {
+            if (!member.active) continue;  // the code never reads it
             const std::vector<fx::Value>& source =
                 member.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
             if (member.index < source.size()) UniformPacker::pack(member, source[member.index], block.data);
