@@ -463,7 +463,10 @@ public:
         setRenderPort("");
     }
 
-    void beginPass(const fx::CompiledPass& pass) override { mPass = passIndex(pass); }
+    void beginPass(const fx::CompiledPass& pass) override {
+        mPass = passIndex(pass);
+        mSceneSaysSkip = sceneSaysSkip(pass);
+    }
     void setColorTarget(int index, const std::string& texture) override {
         if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
         mColors[static_cast<size_t>(index)] =
@@ -503,6 +506,7 @@ public:
                 break;
         }
         op.signature = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mPass), value);
+        op.sceneSaysSkip = mSceneSaysSkip;
         mPlan.ops.push_back(std::move(op));
     }
 
@@ -548,6 +552,7 @@ public:
             h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
         if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mImpl.sceneCache.stamp);
         op.signature = h;
+        op.sceneSaysSkip = mSceneSaysSkip;
         if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry)
             op.region =
                 receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, kReceiverPadTexels);
@@ -576,6 +581,29 @@ private:
         auto it = mImpl.parameterIndex.find(name);
         if (it == mImpl.parameterIndex.end() || !mImpl.textures.count(it->second)) return kUnknown;
         return static_cast<int>(it->second);
+    }
+    // A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second
+    // depth layer finds nothing) or "NoLightArea" (no light has an area: no soft-shadow filter needed) is
+    // left out where that holds. The effect guarantees that later passes do not need what it writes then.
+    bool sceneSaysSkip(const fx::CompiledPass& pass) const {
+        const fx::Effect& effect = mImpl.effect();
+        const std::string& technique = mImpl.compiled->techniques[mTechnique].name;
+        for (const fx::Technique& source : effect.techniques) {
+            if (source.name != technique) continue;
+            for (const fx::Pass& sourcePass : source.passes) {
+                if (sourcePass.name != pass.name) continue;
+                const fx::Annotation* when = sourcePass.annotation("LeaveOutWhen");
+                if (!when || when->value.kind != fx::Expr::Kind::String) return false;
+                if (when->value.text == "NoClosedObjects")
+                    return std::none_of(mScene.objects.begin(), mScene.objects.end(),
+                                        [](const SceneObject& o) { return o.mesh && o.mesh->closed; });
+                if (when->value.text == "NoLightArea")
+                    return std::all_of(mScene.lights.begin(), mScene.lights.end(),
+                                       [](const Light& light) { return light.areaRadius <= 0.0f; });
+                return false;
+            }
+        }
+        return false;
     }
     RenderStateBlock passStates(const fx::CompiledPass& pass) const {
         RenderStateBlock block = RenderStateBlock::defaults();
@@ -622,6 +650,7 @@ private:
     bool mLightPort = false;
     RenderPortView mPort;
     size_t mPass = 0;
+    bool mSceneSaysSkip = false;
     std::vector<float> mClearColor;
     float mClearDepth = 1.0f;
     int mClearStencil = 0;
@@ -676,7 +705,8 @@ public:
         PassStats record;
         record.pass = pass.name;
         mStats.passes.push_back(record);
-        mPassOps = mPassDead = mPassCached = 0;
+        mPassOps = 0;
+        mPassLeftOut.fill(0);
         mTimer.beginPass(pass.name);
     }
 
@@ -859,14 +889,19 @@ private:
     // Counts a command the plan leaves out; true if it is left out.
     bool leftOut(const PlannedOp* op) {
         if (!op || op->leftOut == LeftOut::No) return false;
-        (op->leftOut == LeftOut::Dead ? mPassDead : mPassCached) += 1;
+        ++mPassLeftOut[static_cast<size_t>(op->leftOut)];
         return true;
     }
 
     void closePass() {
         PassStats* record = currentPass();
-        if (!record || mPassOps == 0 || mPassDead + mPassCached < mPassOps) return;
-        record->leftOut = mPassCached == 0 ? "dead" : (mPassDead == 0 ? "cached" : "dead+cached");
+        int leftOut = 0;
+        for (int count : mPassLeftOut) leftOut += count;
+        if (!record || mPassOps == 0 || leftOut < mPassOps) return;
+        static constexpr const char* kReasons[] = {"", "dead", "cached", "scene"};
+        for (size_t reason = 1; reason < mPassLeftOut.size(); ++reason)
+            if (mPassLeftOut[reason] > 0)
+                record->leftOut += (record->leftOut.empty() ? "" : "+") + std::string(kReasons[reason]);
     }
 
     // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
@@ -1006,7 +1041,8 @@ private:
     size_t mNextOp = 0;
     bool mPlanFollowed = true;
     size_t mCurrentPass = 0;
-    int mPassOps = 0, mPassDead = 0, mPassCached = 0;
+    int mPassOps = 0;
+    std::array<int, 4> mPassLeftOut{};                     // per LeftOut reason
     std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
     std::vector<uint32_t> mVisible;
     std::vector<fx::Value> mArguments;
@@ -1074,8 +1110,12 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
         PlanRecorder recorder(*mImpl, scene, options, binder, uses, techniqueIndex, body, plan);
         ScriptInterpreter::run(*technique, recorder, dryRunDiagnostics);
+        std::vector<int> outputs;
+        for (const std::string& name : options.outputTargets)
+            if (const std::optional<size_t> index = findParameter(name))
+                outputs.push_back(static_cast<int>(*index));
         plan.decide(
-            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); },
+            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); }, outputs,
             options.leaveOut);
     }
 

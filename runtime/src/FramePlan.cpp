@@ -27,12 +27,17 @@ uint64_t hashBytes(uint64_t seed, const void* data, size_t size) {
 }
 
 void FramePlan::decide(const std::map<int, TargetHistory>& history,
-                       const std::function<uint64_t(int)>& identity, bool leaveOut) {
+                       const std::function<uint64_t(int)>& identity, const std::vector<int>& outputs,
+                       bool leaveOut) {
     // Dead work: backward liveness from the frame's colour. Colour and depth clears overwrite their targets
     // entirely; draws read theirs (PlannedOp::reads).
     if (leaveOut) {
-        std::set<int> live = {kFrameColor};
+        for (PlannedOp& op : ops)
+            if (op.sceneSaysSkip) op.leftOut = LeftOut::Scene;
+        std::set<int> live(outputs.begin(), outputs.end());
+        live.insert(kFrameColor);
         for (auto op = ops.rbegin(); op != ops.rend(); ++op) {
+            if (op->leftOut != LeftOut::No) continue;
             const bool needed =
                 std::any_of(op->writes.begin(), op->writes.end(), [&](int w) { return live.count(w) > 0; });
             if (!needed) {
@@ -51,7 +56,7 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
     std::map<int, std::vector<size_t>> chains;  // per target, the operations writing it, in order
     for (size_t i = 0; i < ops.size(); ++i) {
         PlannedOp& op = ops[i];
-        if (op.leftOut == LeftOut::Dead) continue;
+        if (op.leftOut != LeftOut::No) continue;
         uint64_t signature = op.signature;
         for (int r : op.reads) {
             auto it = contents.find(r);
@@ -92,7 +97,7 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
         for (bool changed = true; changed;) {
             changed = false;
             for (const PlannedOp& op : ops) {
-                if (op.leftOut == LeftOut::Dead || op.writes.empty()) continue;
+                if (op.leftOut != LeftOut::No || op.writes.empty()) continue;
                 const bool all = std::all_of(op.writes.begin(), op.writes.end(),
                                              [&](int w) { return eligible.count(w) > 0; });
                 if (all) continue;

@@ -24,17 +24,20 @@ namespace runtime {
 constexpr int kFrameColor = -1;
 constexpr int kFrameDepth = -2;
 
-enum class LeftOut { No, Dead, Cached };
+// Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
+// its pass's `LeaveOutWhen` annotation says the scene does not need it.
+enum class LeftOut { No, Dead, Cached, Scene };
 
 struct PlannedOp {
     enum class Kind { ClearColor, ClearDepth, ClearStencil, DrawGeometry, DrawBuffer };
     Kind kind = Kind::ClearColor;
-    size_t pass = 0;          // the pass's index in its technique
-    bool lightPort = false;   // RenderPort names a light
-    std::vector<int> writes;  // targets it changes
-    std::vector<int> reads;   // sampled textures, and a draw's bound targets (blending, depth test)
-    uint64_t signature = 0;   // what decides the written contents, besides the targets' old contents
-    ReceiverRegion region;    // light draws: where the camera's receivers read (before the decision)
+    size_t pass = 0;             // the pass's index in its technique
+    bool lightPort = false;      // RenderPort names a light
+    std::vector<int> writes;     // targets it changes
+    std::vector<int> reads;      // sampled textures, and a draw's bound targets (blending, depth test)
+    uint64_t signature = 0;      // what decides the written contents, besides the targets' old contents
+    ReceiverRegion region;       // light draws: where the camera's receivers read (before the decision)
+    bool sceneSaysSkip = false;  // the pass's LeaveOutWhen condition holds for this scene
 
     // Decisions (FramePlan::decide)
     LeftOut leftOut = LeftOut::No;
@@ -56,8 +59,9 @@ public:
     // Marks dead and cached operations. `history` is the renderer's record of its targets (updated by
     // commit()); `identity(resource)` hashes a target's allocation (size, format, GL name) so that a
     // reallocated target never matches. With `leaveOut` false nothing is left out.
+    // `outputs`: what the frame must leave behind besides its colour (FrameOptions::outputTargets).
     void decide(const std::map<int, TargetHistory>& history, const std::function<uint64_t(int)>& identity,
-                bool leaveOut);
+                const std::vector<int>& outputs, bool leaveOut);
     // After the frame ran: records what the executed operations left in their targets.
     void commit(std::map<int, TargetHistory>& history) const;
 

@@ -102,6 +102,8 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"MATERIALDIFFUSE", Kind::ObjectColor},
         {"DIFFUSECOLOR", Kind::ObjectColor},
         {"AMBIENT", Kind::Ambient},
+        {"SCENEHASCLOSEDOBJECTS", Kind::SceneHasClosedObjects},
+        {"LIGHTAREARADIUS", Kind::LightAreaRadius},
     };
     for (const auto& [text, otherKind] : kOthers) {
         if (name == text) {
@@ -115,6 +117,9 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
 SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
                                fx::DiagnosticSink& diagnostics)
     : mScene(scene), mSceneBounds(sceneBounds) {
+    mHasClosedObjects =
+        std::any_of(scene.objects.begin(), scene.objects.end(),
+                    [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
     for (size_t i = 0; i < effect.parameters.size(); ++i) {
         const fx::Parameter& parameter = effect.parameters[i];
         if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
@@ -122,8 +127,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
-        const bool isLightProperty = binding.kind == Kind::LightPosition ||
-                                     binding.kind == Kind::LightDirection || binding.kind == Kind::LightColor;
+        const bool isLightProperty =
+            binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
+            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
         const std::string upperSemantic = upper(parameter.semantic);
@@ -232,6 +238,12 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 continue;
             case Kind::Ambient:
                 storeVector(value, glm::vec4(mScene.ambient, 1.0f));
+                continue;
+            case Kind::SceneHasClosedObjects:
+                storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));
+                continue;
+            case Kind::LightAreaRadius:
+                storeVector(value, glm::vec4(binding.light->areaRadius));
                 continue;
         }
         if (binding.inverse) matrix = glm::inverse(matrix);

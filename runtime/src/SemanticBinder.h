@@ -7,6 +7,8 @@
 // CameraPosition, ObjectId; light properties Position/LightPosition, Direction/LightDirection and
 // LightColor (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
 // object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
+// Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a second depth layer
+// can matter) and LightAreaRadius (the light's areaRadius; 0 = no soft-shadow filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -70,6 +72,8 @@ private:
         LightColor,
         ObjectColor,
         Ambient,
+        SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
+        LightAreaRadius,
     };
     struct Binding {
         size_t parameter;
@@ -87,6 +91,7 @@ private:
 
     const Scene& mScene;
     Bounds mSceneBounds;
+    bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
 };
 

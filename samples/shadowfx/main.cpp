@@ -203,7 +203,7 @@ const shadowfx::cli::Command kCommands[] = {
      "  --width W, --height H image size (default 800x600)\n"
      "  --technique NAME      technique to run (default: the effect's STANDARDSGLOBAL choice, else the "
      "first)\n"
-     "  --scene NAME|FILE     built-in scene (boxes, torus, teapot, dual-l, double-torus, forest, behind,\n"
+     "  --scene NAME|FILE     built-in scene (boxes, torus, teapot, dual-l, double-torus, forest, forest-fifth, behind,\n"
      "                        bunny, horse, spider, engine; default boxes) or a scene file (.json)\n"
      "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
      "  --backend NAME        auto, osmesa or egl (default auto)\n"

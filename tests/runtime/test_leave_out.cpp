@@ -367,3 +367,53 @@ TEST(LeaveOut, StatsAddUp) {
 }
 
 }  // namespace
+
+// Scene-driven choices: a pass annotated LeaveOutWhen = "NoClosedObjects" runs only where some mesh is
+// closed, and the SceneHasClosedObjects / LightAreaRadius semantics tell the shaders the same.
+constexpr const char* kSceneDrivenEffect = R"(
+float4x4 WorldViewProjection : WorldViewProjection;
+bool HasClosed : SceneHasClosedObjects;
+float AreaRadius : LightAreaRadius;
+struct VsOut { float4 position : POSITION; };
+VsOut Vs(float4 position : POSITION) { VsOut o; o.position = mul(float4(position.xyz, 1), WorldViewProjection); return o; }
+float4 Ps() : COLOR { return float4(HasClosed ? 0 : 1, HasClosed ? 1 : 0, AreaRadius * 10, 1); }
+float4 Blue() : COLOR { return float4(0, 0, 1, 1); }
+technique t < string Script = "Pass=Scene; Pass=SecondLayer;"; > {
+    pass Scene < string Script = "Clear=Color; Clear=Depth; Draw=Geometry;"; > {
+        ZEnable = true; ZWriteEnable = true;
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+    }
+    pass SecondLayer < string Script = "Draw=Geometry;"; string LeaveOutWhen = "NoClosedObjects"; > {
+        ZEnable = true; ZFunc = LessEqual;
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Blue();
+    }
+}
+)";
+
+TEST(LeaveOut, SceneDrivenChoices) {
+    auto renderer = loadEffect(kSceneDrivenEffect, false, "scene_driven.fx");
+    ASSERT_TRUE(renderer);
+    Scene closed = gridScene(Light::Type::Directional);
+    closed.lights[0].areaRadius = 0.05f;
+    Scene open = closed;
+    open.objects.resize(1);  // the ground plane only: not closed
+    const FrameImage* image = nullptr;
+
+    const Frame withBoxes = renderFrame(*renderer, closed, "", true);
+    EXPECT_EQ(findPass(withBoxes.stats, "SecondLayer")->leftOut, "");
+    image = &withBoxes.image;
+    const uint8_t* centre = image->pixel(image->width / 2, image->height * 3 / 4);
+    EXPECT_EQ(centre[2], 255) << "the second pass drew over the first";
+
+    const Frame planeOnly = renderFrame(*renderer, open, "", true);
+    EXPECT_EQ(findPass(planeOnly.stats, "SecondLayer")->leftOut, "scene");
+    image = &planeOnly.image;
+    centre = image->pixel(image->width / 2, image->height * 3 / 4);
+    EXPECT_EQ(centre[0], 255) << "SceneHasClosedObjects is false: red";
+    EXPECT_EQ(centre[1], 0);
+    EXPECT_NEAR(centre[2], 0.5 * 255, 1.5) << "LightAreaRadius 0.05 x 10";
+
+    // Without leave-out the pass runs whatever the scene.
+    const Frame full = renderFrame(*renderer, open, "", false);
+    EXPECT_EQ(findPass(full.stats, "SecondLayer")->leftOut, "");
+}

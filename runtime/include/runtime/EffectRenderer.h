@@ -35,6 +35,9 @@ struct FrameOptions {
     // Count the fragments each pass writes (GL_SAMPLES_PASSED queries) into PassStats::texelsWritten;
     // clears count their targets' texels either way.
     bool countTexels = false;
+    // Render targets the caller reads after the frame (readTarget): outputs like the frame's colour, so
+    // leave-out keeps the passes that write them.
+    std::vector<std::string> outputTargets;
 };
 
 // What one executed Pass= did (a pass run by a LoopByCount appears once per iteration).
@@ -42,7 +45,8 @@ struct PassStats {
     std::string pass;
     bool lightPort = false;  // RenderPort names a light
     std::string leftOut;     // "" ran; "dead" (nothing reads its writes), "cached" (targets kept from the
-                             // last frame), "dead+cached"; a pass with only some operations left out ran
+                             // last frame), "scene" (its LeaveOutWhen holds), or several joined by "+" in
+                             // that order; a pass with only some operations left out ran
     int draws = 0;
     int culled = 0;  // objects a Draw=Geometry left out
     uint64_t triangles = 0;
