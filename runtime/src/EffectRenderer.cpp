@@ -69,7 +69,8 @@ struct EffectRenderer::Impl {
     }
     bool createFileTextures(fx::DiagnosticSink& diagnostics);
     // (Re)allocates render targets whose size depends on the frame's.
-    void ensureFrameResources(int width, int height);
+    // `needed`: the render targets to allocate (null: all); others already allocated are still resized.
+    void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     void updateSceneCache(const Scene& scene);
     // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
@@ -108,6 +109,15 @@ GpuTexture makeNeutralTexture(bool cube) {
     return texture;
 }
 
+// A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
+glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height) {
+    return glm::ivec2(
+        desc.width > 0 ? desc.width
+                       : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width))),
+        desc.height > 0 ? desc.height
+                        : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height))));
+}
+
 bool isRenderTarget(const fx::TextureDesc& desc) {
     return desc.kind == fx::TextureDesc::Kind::RenderColorTarget ||
            desc.kind == fx::TextureDesc::Kind::RenderDepthStencilTarget;
@@ -143,7 +153,7 @@ bool EffectRenderer::Impl::createFileTextures(fx::DiagnosticSink& diagnostics) {
     return true;
 }
 
-void EffectRenderer::Impl::ensureFrameResources(int width, int height) {
+void EffectRenderer::Impl::ensureFrameResources(int width, int height, const std::set<int>* needed) {
     if (frameColor.width() != width || frameColor.height() != height) {
         if (frameColor) framebuffers.evict(frameColor);
         if (frameDepth) framebuffers.evict(frameDepth);
@@ -152,13 +162,10 @@ void EffectRenderer::Impl::ensureFrameResources(int width, int height) {
     }
     for (const fx::TextureDesc& desc : compiled->textures) {
         if (!isRenderTarget(desc)) continue;
-        const int w = desc.width > 0
-                          ? desc.width
-                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width)));
-        const int h = desc.height > 0
-                          ? desc.height
-                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height)));
+        const glm::ivec2 size = renderTargetSize(desc, width, height);
+        const int w = size.x, h = size.y;
         auto it = textures.find(desc.parameter);
+        if (it == textures.end() && needed && !needed->count(static_cast<int>(desc.parameter))) continue;
         if (it != textures.end() && it->second.width() == w && it->second.height() == h) continue;
         if (it != textures.end()) framebuffers.evict(it->second);
         GpuTexture texture = desc.type == fx::BaseType::TextureCube
@@ -579,7 +586,9 @@ private:
     }
     int resource(const std::string& name) const {
         auto it = mImpl.parameterIndex.find(name);
-        if (it == mImpl.parameterIndex.end() || !mImpl.textures.count(it->second)) return kUnknown;
+        if (it == mImpl.parameterIndex.end()) return kUnknown;
+        const fx::TextureDesc* desc = mImpl.compiled->findTexture(it->second);
+        if (!mImpl.textures.count(it->second) && !(desc && isRenderTarget(*desc))) return kUnknown;
         return static_cast<int>(it->second);
     }
     // A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second
@@ -630,8 +639,8 @@ private:
             if (target == kFrameColor || target == kFrameDepth)
                 return glm::vec2(mOptions.width, mOptions.height);
             if (target < 0) continue;
-            const GpuTexture& texture = mImpl.textures.at(static_cast<size_t>(target));
-            return glm::vec2(texture.width(), texture.height());
+            const fx::TextureDesc* desc = mImpl.compiled->findTexture(static_cast<size_t>(target));
+            if (desc) return glm::vec2(renderTargetSize(*desc, mOptions.width, mOptions.height));
         }
         return glm::vec2(mOptions.width, mOptions.height);
     }
@@ -923,7 +932,10 @@ private:
         auto texture =
             index == mImpl.parameterIndex.end() ? mImpl.textures.end() : mImpl.textures.find(index->second);
         if (texture == mImpl.textures.end()) {
-            fail(fx::DiagId::ScriptUnknownTarget, {name});
+            // Left unallocated because no operation that runs uses it (FramePlan): not an error.
+            const fx::TextureDesc* desc =
+                index == mImpl.parameterIndex.end() ? nullptr : mImpl.compiled->findTexture(index->second);
+            if (!desc || !isRenderTarget(*desc)) fail(fx::DiagId::ScriptUnknownTarget, {name});
             return nullptr;
         }
         return &texture->second;
@@ -1092,7 +1104,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         diagnostics.report(fx::Diagnostic{fx::DiagId::GlDebugMessage, fx::Severity::Note, fx::SourceLoc{},
                                           fx::formatDiagnostic(fx::DiagId::GlDebugMessage, {message})});
     });
-    mImpl->ensureFrameResources(options.width, options.height);
+    // Render targets are allocated once an operation that runs needs them (below); the frame's own now.
+    std::set<int> none;
+    mImpl->ensureFrameResources(options.width, options.height, &none);
     mImpl->updateSceneCache(scene);
     const SemanticBinder binder(mImpl->effect(), scene, mImpl->sceneCache.bounds, diagnostics);
     const std::vector<PassUse> uses = passUses(*mImpl, *technique, binder);
@@ -1114,8 +1128,17 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         for (const std::string& name : options.outputTargets)
             if (const std::optional<size_t> index = findParameter(name))
                 outputs.push_back(static_cast<int>(*index));
+        plan.markDead(outputs, options.leaveOut);
+        // A render target no remaining operation writes or reads is not allocated.
+        std::set<int> needed;
+        for (const PlannedOp& op : plan.ops) {
+            if (op.leftOut != LeftOut::No && options.leaveOut) continue;
+            needed.insert(op.writes.begin(), op.writes.end());
+            needed.insert(op.reads.begin(), op.reads.end());
+        }
+        mImpl->ensureFrameResources(options.width, options.height, options.leaveOut ? &needed : nullptr);
         plan.decide(
-            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); }, outputs,
+            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); },
             options.leaveOut);
     }
 

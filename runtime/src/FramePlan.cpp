@@ -26,9 +26,7 @@ uint64_t hashBytes(uint64_t seed, const void* data, size_t size) {
     return hashCombine(seed, tail);
 }
 
-void FramePlan::decide(const std::map<int, TargetHistory>& history,
-                       const std::function<uint64_t(int)>& identity, const std::vector<int>& outputs,
-                       bool leaveOut) {
+void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
     // Dead work: backward liveness from the frame's colour. Colour and depth clears overwrite their targets
     // entirely; draws read theirs (PlannedOp::reads).
     if (leaveOut) {
@@ -49,7 +47,10 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
             live.insert(op->reads.begin(), op->reads.end());
         }
     }
+}
 
+void FramePlan::decide(const std::map<int, TargetHistory>& history,
+                       const std::function<uint64_t(int)>& identity, bool leaveOut) {
     // Contents: chain hashes per target, forward over what will run.
     std::map<int, uint64_t> contents;
     for (const auto& [resource, record] : history) contents[resource] = record.contents;

@@ -59,9 +59,12 @@ public:
     // Marks dead and cached operations. `history` is the renderer's record of its targets (updated by
     // commit()); `identity(resource)` hashes a target's allocation (size, format, GL name) so that a
     // reallocated target never matches. With `leaveOut` false nothing is left out.
-    // `outputs`: what the frame must leave behind besides its colour (FrameOptions::outputTargets).
+    // Marks operations the scene does not need (LeaveOutWhen) and dead ones. `outputs`: what the frame
+    // must leave behind besides its colour (FrameOptions::outputTargets).
+    void markDead(const std::vector<int>& outputs, bool leaveOut);
+    // Then marks cached operations (see above) and chooses light draws' culling regions.
     void decide(const std::map<int, TargetHistory>& history, const std::function<uint64_t(int)>& identity,
-                const std::vector<int>& outputs, bool leaveOut);
+                bool leaveOut);
     // After the frame ran: records what the executed operations left in their targets.
     void commit(std::map<int, TargetHistory>& history) const;
 

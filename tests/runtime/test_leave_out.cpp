@@ -4,7 +4,7 @@
 // - frames with and without leave-out are identical, byte for byte, for the thesis effect's techniques
 //   (plain, PCF, jittered, hardware) and directional and spot lights, with a camera that sees part of a
 //   grid of boxes, while culling really removes objects from camera and light passes;
-// - a pass whose target nobody reads is left out; a light pass is reused when only the camera moved
+// - a pass whose target nobody reads is left out (and the target not allocated); a light pass is reused when only the camera moved
 //   and rerun when the light moved, every frame identical to a frame without leave-out;
 // - the per-pass counts add up.
 #include "../../runtime/src/FramePlan.h"
@@ -331,6 +331,9 @@ TEST(LeaveOut, PassWhoseTargetNobodyReadsIsSkipped) {
     EXPECT_EQ(findPass(full.stats, "Scratch")->draws, static_cast<int>(scene.objects.size()));
     EXPECT_EQ(culled.stats.passesLeftOut, 1);
     EXPECT_EQ(culled.stats.passesRun, 1);
+    // Nothing that runs uses the target: it is not even allocated.
+    EXPECT_FALSE(withLeaveOut->readTarget("Unread", nullptr, nullptr, nullptr).has_value());
+    EXPECT_TRUE(without->readTarget("Unread", nullptr, nullptr, nullptr).has_value());
 }
 
 // Totals are the sums of the per-pass records; triangles are the drawn meshes'; texels written count
