@@ -381,6 +381,11 @@ struct PassUse {
     std::vector<bool> used;                 // per effect parameter
     std::vector<bool> argumentPerObject;    // per CompiledPass::arguments entry
     std::vector<size_t> perPassParameters;  // used and not bound per object
+    // The view/projection matrices it reads: the port's, and those of annotated lights. Culling trusts
+    // the port's frustum only for passes that project with it (a camera-port pass that draws a light's
+    // view with frustum="light0" matrices is not culled).
+    bool readsPortMatrix = false;
+    std::vector<const Light*> lightMatrices;
 };
 
 void collectParameters(const fx::Expr& expr, const EffectRenderer::Impl& impl, std::vector<bool>& used) {
@@ -416,8 +421,17 @@ std::vector<PassUse> passUses(const EffectRenderer::Impl& impl, const fx::Compil
             }
             use.argumentPerObject.push_back(perObject);
         }
-        for (size_t p = 0; p < count; ++p)
-            if (use.used[p] && !binder.isPerObject(p)) use.perPassParameters.push_back(p);
+        for (size_t p = 0; p < count; ++p) {
+            if (!use.used[p]) continue;
+            if (!binder.isPerObject(p)) use.perPassParameters.push_back(p);
+            const Light* light = nullptr;
+            if (!binder.projectionSource(p, light)) continue;
+            if (light) {
+                use.lightMatrices.push_back(light);
+            } else {
+                use.readsPortMatrix = true;
+            }
+        }
         uses.push_back(std::move(use));
     }
     return uses;
@@ -734,6 +748,7 @@ public:
 
     void setRenderPort(const std::string& lightName) override {
         mLightPort = !lightName.empty();
+        mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
         if (!portMatrices(mScene, mSceneBounds, mOptions, lightName, mPort)) {
             fail(fx::DiagId::UnsupportedFeature, {"RenderPort names light '" + lightName +
                                                   "', which scene '" + mScene.name + "' does not have"});
@@ -824,7 +839,7 @@ public:
         }
         if (buffer) {
             drawWith(pass, *program, use, nullptr, mImpl.quad);
-        } else if (mOptions.leaveOut && mImpl.sceneCache.valid) {
+        } else if (mOptions.leaveOut && mImpl.sceneCache.valid && projectsWithPort(use)) {
             mVisible.clear();
             cull(op, mVisible);
             int drawable = 0;
@@ -911,6 +926,12 @@ private:
         for (size_t reason = 1; reason < mPassLeftOut.size(); ++reason)
             if (mPassLeftOut[reason] > 0)
                 record->leftOut += (record->leftOut.empty() ? "" : "+") + std::string(kReasons[reason]);
+    }
+
+    bool projectsWithPort(const PassUse& use) const {
+        if (use.readsPortMatrix) return true;
+        return mPortLight && std::find(use.lightMatrices.begin(), use.lightMatrices.end(), mPortLight) !=
+                                 use.lightMatrices.end();
     }
 
     // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
@@ -1062,6 +1083,7 @@ private:
     RenderTargets mTargets;
     RenderPortView mPort;
     bool mLightPort = false;
+    const Light* mPortLight = nullptr;
     std::array<float, 4> mClearColor{0.0f, 0.0f, 0.0f, 0.0f};  // D3D's Clear defaults
     float mClearDepth = 1.0f;
     int mClearStencil = 0;

@@ -168,6 +168,18 @@ bool SemanticBinder::isPerObject(size_t parameter) const {
     });
 }
 
+bool SemanticBinder::projectionSource(size_t parameter, const Light*& light) const {
+    for (const Binding& b : mBindings) {
+        if (b.parameter != parameter || b.kind == Kind::World) continue;
+        if (b.kind != Kind::View && b.kind != Kind::Projection && b.kind != Kind::WorldView &&
+            b.kind != Kind::ViewProjection && b.kind != Kind::WorldViewProjection)
+            continue;
+        light = b.light;
+        return true;
+    }
+    return false;
+}
+
 void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object, float time,
                           std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope,
                           const std::vector<bool>* used) const {

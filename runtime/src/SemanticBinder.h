@@ -51,6 +51,10 @@ public:
 
     // True if the parameter's bound value depends on the drawn object.
     bool isPerObject(size_t parameter) const;
+    // For a View/Projection-derived matrix (View, Projection, WorldView, ViewProjection,
+    // WorldViewProjection and their variants): the light it is annotated with, or null for the render
+    // port's matrices. False for any other parameter. What culling checks a pass projects with.
+    bool projectionSource(size_t parameter, const Light*& light) const;
 
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;

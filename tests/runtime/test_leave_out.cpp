@@ -4,7 +4,8 @@
 // - frames with and without leave-out are identical, byte for byte, for the thesis effect's techniques
 //   (plain, PCF, jittered, hardware) and directional and spot lights, with a camera that sees part of a
 //   grid of boxes, while culling really removes objects from camera and light passes;
-// - a pass whose target nobody reads is left out (and the target not allocated); a light pass is reused when only the camera moved
+// - a pass whose target nobody reads is left out (and the target not allocated); a light pass is reused when
+// only the camera moved
 //   and rerun when the light moved, every frame identical to a frame without leave-out;
 // - the per-pass counts add up.
 #include "../../runtime/src/FramePlan.h"
@@ -419,4 +420,34 @@ TEST(LeaveOut, SceneDrivenChoices) {
     // Without leave-out the pass runs whatever the scene.
     const Frame full = renderFrame(*renderer, open, "", false);
     EXPECT_EQ(findPass(full.stats, "SecondLayer")->leftOut, "");
+}
+
+// A camera-port pass that projects with the light's matrices (no RenderPort) draws the light's view: the
+// camera's frustum says nothing about it, so it is not culled, and the image stays the same.
+constexpr const char* kLightViewFromCameraPort = R"(
+float4x4 World : World;
+float4x4 LightView : View < string frustum = "light0"; >;
+float4x4 LightProjection : Projection < string frustum = "light0"; >;
+float3 Color : Diffuse;
+struct VsOut { float4 position : POSITION; };
+VsOut Vs(float4 position : POSITION) {
+    VsOut o; o.position = mul(mul(mul(float4(position.xyz, 1), World), LightView), LightProjection); return o;
+}
+float4 Ps() : COLOR { return float4(Color, 1); }
+technique t { pass p < string Script = "Clear=Color; Clear=Depth; Draw=Geometry;"; > {
+    ZEnable = true; ZWriteEnable = true;
+    VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+} }
+)";
+
+TEST(LeaveOut, PassProjectingWithOtherMatricesIsNotCulled) {
+    auto withLeaveOut = loadEffect(kLightViewFromCameraPort, false, "light_view.fx");
+    auto without = loadEffect(kLightViewFromCameraPort, false, "light_view.fx");
+    ASSERT_TRUE(withLeaveOut && without);
+    const Scene scene = gridScene(Light::Type::Directional);
+    const Frame culled = renderFrame(*withLeaveOut, scene, "", true);
+    const Frame full = renderFrame(*without, scene, "", false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+    EXPECT_EQ(culled.stats.culled, 0);
 }
