@@ -5,6 +5,7 @@
 
 #include <spirv_cross/spirv_glsl.hpp>
 
+#include <algorithm>
 #include <regex>
 
 namespace fx {
@@ -71,6 +72,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             program.uniformBlockName = options.uniformBlockName;
             program.uniformBlockBinding = options.uniformBlockBinding;
             program.uniformBlockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(type));
+            const spirv_cross::SmallVector<spirv_cross::BufferRange> active =
+                compiler.get_active_buffer_ranges(r.id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
                 const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
                 UniformBinding u;
@@ -85,6 +88,9 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                     u.hlslColumnsContiguous =
                         compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
                 }
+                u.active =
+                    std::any_of(active.begin(), active.end(),
+                                [i](const spirv_cross::BufferRange& range) { return range.index == i; });
                 program.uniforms.push_back(u);
             }
             break;  // one $Global block per unit

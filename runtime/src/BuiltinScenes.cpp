@@ -101,6 +101,7 @@ const std::pair<const char*, std::optional<Scene> (*)(fx::DiagnosticSink*)> kSce
     {"dual-l", always<makeDualLScene>},
     {"double-torus", always<makeDoubleTorusScene>},
     {"forest", always<makeForestScene>},
+    {"forest-fifth", always<makeForestFifthScene>},
     {"behind", always<makeBehindScene>},
     {"bunny", makeBunnyScene},
     {"horse", makeHorseScene},

@@ -6,12 +6,15 @@
 // [SECTION] Frame       FrameExecutor: the ScriptTarget that binds targets, states, semantics and draws
 #include <runtime/EffectRenderer.h>
 
+#include "FramePlan.h"
 #include "Framebuffer.h"
 #include "GlDebug.h"
 #include "GpuMesh.h"
 #include "GpuProgram.h"
 #include "GpuTexture.h"
 #include "Image.h"
+#include "InstanceBvh.h"
+#include "IntersectionBody.h"
 #include "PassTimer.h"
 #include "ProceduralTexture.h"
 #include "RenderStateApplier.h"
@@ -50,6 +53,18 @@ struct EffectRenderer::Impl {
     FramebufferCache framebuffers;
     GpuTexture frameColor;
     GpuTexture frameDepth;
+    std::unique_ptr<UniformRing> uniformRing;
+    // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
+    // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
+    struct SceneCache {
+        uint64_t stamp = 0;
+        bool valid = false;
+        Bounds bounds;
+        InstanceBvh bvh;
+        std::map<const Mesh*, Aabb> meshBoxes;
+    } sceneCache;
+    // What each render target holds after the frames so far (FramePlan): how light passes are reused.
+    std::map<int, TargetHistory> targetHistory;
 
     const fx::Effect& effect() const { return *compiled->effect; }
     const fx::Value* find(std::string_view name) const {
@@ -58,8 +73,12 @@ struct EffectRenderer::Impl {
     }
     bool createFileTextures(fx::DiagnosticSink& diagnostics);
     // (Re)allocates render targets whose size depends on the frame's.
-    void ensureFrameResources(int width, int height);
+    // `needed`: the render targets to allocate (null: all); others already allocated are still resized.
+    void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
+    void updateSceneCache(const Scene& scene);
+    // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
+    uint64_t targetIdentity(int resource) const;
 };
 
 // [SECTION] Resources
@@ -92,6 +111,15 @@ GpuTexture makeNeutralTexture(bool cube) {
     GpuTexture texture = GpuTexture::create2D(fx::TextureFormat::RGBA8, 1, 1);
     texture.uploadRGBA8(white);
     return texture;
+}
+
+// A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
+glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height) {
+    return glm::ivec2(
+        desc.width > 0 ? desc.width
+                       : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width))),
+        desc.height > 0 ? desc.height
+                        : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height))));
 }
 
 bool isRenderTarget(const fx::TextureDesc& desc) {
@@ -143,7 +171,7 @@ bool EffectRenderer::Impl::createFileTextures(fx::DiagnosticSink& diagnostics) {
     return true;
 }
 
-void EffectRenderer::Impl::ensureFrameResources(int width, int height) {
+void EffectRenderer::Impl::ensureFrameResources(int width, int height, const std::set<int>* needed) {
     if (frameColor.width() != width || frameColor.height() != height) {
         if (frameColor) framebuffers.evict(frameColor);
         if (frameDepth) framebuffers.evict(frameDepth);
@@ -152,13 +180,10 @@ void EffectRenderer::Impl::ensureFrameResources(int width, int height) {
     }
     for (const fx::TextureDesc& desc : compiled->textures) {
         if (!isRenderTarget(desc)) continue;
-        const int w = desc.width > 0
-                          ? desc.width
-                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[0] * width)));
-        const int h = desc.height > 0
-                          ? desc.height
-                          : std::max(1, static_cast<int>(std::lround(desc.viewportRatio[1] * height)));
+        const glm::ivec2 size = renderTargetSize(desc, width, height);
+        const int w = size.x, h = size.y;
         auto it = textures.find(desc.parameter);
+        if (it == textures.end() && needed && !needed->count(static_cast<int>(desc.parameter))) continue;
         if (it != textures.end() && it->second.width() == w && it->second.height() == h) continue;
         if (it != textures.end()) framebuffers.evict(it->second);
         GpuTexture texture = desc.type == fx::BaseType::TextureCube
@@ -209,6 +234,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     }
     if (!impl->createFileTextures(diagnostics)) return nullptr;
     impl->quad = GpuMesh::makeFullScreenQuad();
+    impl->uniformRing = std::make_unique<UniformRing>();
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(impl)));
 }
 
@@ -301,29 +327,427 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
 
 namespace {
 
+// A stamp of everything about the scene's objects a draw depends on (mesh, transform, colour, id, flags)
+// and of its explicit bounds. Hashed every frame rather than kept as a revision counter that every
+// editor of a Scene would have to bump: 10,000 objects are about 1 MB of hashing, well under a
+// millisecond next to a frame of them.
+uint64_t sceneStamp(const Scene& scene) {
+    uint64_t h = hashCombine(0, scene.objects.size());
+    for (const SceneObject& object : scene.objects) {
+        h = hashCombine(h, reinterpret_cast<uintptr_t>(object.mesh.get()));
+        if (object.mesh)
+            h = hashCombine(h, object.mesh->indices.size() ^ (object.mesh->positions.size() << 32));
+        h = hashBytes(h, &object.world, sizeof(object.world));
+        h = hashBytes(h, &object.color, sizeof(object.color));
+        h = hashCombine(h, (uint64_t(object.id) << 2) | (object.castsShadow ? 1u : 0u) |
+                               (object.receivesShadow ? 2u : 0u));
+    }
+    if (scene.explicitBounds) h = hashBytes(h, &*scene.explicitBounds, sizeof(Bounds));
+    return h;
+}
+
+// Filter footprint the receiver region keeps around every receiver, in shadow-map texels: bilinear PCF
+// reads one texel around the lookup, the thesis effect's jitter up to JITTER_AMOUNT / 2 = 2 texels.
+constexpr float kReceiverPadTexels = 8.0f;
+
+}  // namespace
+
+void EffectRenderer::Impl::updateSceneCache(const Scene& scene) {
+    const uint64_t stamp = sceneStamp(scene);
+    if (sceneCache.valid && sceneCache.stamp == stamp) return;
+    sceneCache.stamp = stamp;
+    sceneCache.valid = true;
+    sceneCache.bounds = scene.bounds();
+    sceneCache.meshBoxes.clear();
+    std::vector<Aabb> boxes(scene.objects.size());
+    std::vector<bool> present(scene.objects.size(), false);
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (!object.mesh || object.mesh->positions.empty()) continue;
+        auto it = sceneCache.meshBoxes.find(object.mesh.get());
+        if (it == sceneCache.meshBoxes.end())
+            it = sceneCache.meshBoxes
+                     .emplace(object.mesh.get(), Aabb{object.mesh->boundsMin(), object.mesh->boundsMax()})
+                     .first;
+        boxes[i] = transformBox(it->second, object.world);
+        present[i] = true;
+    }
+    sceneCache.bvh = InstanceBvh(std::move(boxes), present);
+}
+
+uint64_t EffectRenderer::Impl::targetIdentity(int resource) const {
+    const GpuTexture* texture = nullptr;
+    if (resource == kFrameColor) texture = &frameColor;
+    if (resource == kFrameDepth) texture = &frameDepth;
+    if (resource >= 0) {
+        auto it = textures.find(static_cast<size_t>(resource));
+        if (it != textures.end()) texture = &it->second;
+    }
+    uint64_t h = hashCombine(0, static_cast<uint64_t>(static_cast<int64_t>(resource)));
+    if (!texture) return h;
+    h = hashCombine(h, texture->id());
+    h = hashCombine(h, (uint64_t(uint32_t(texture->width())) << 32) | uint32_t(texture->height()));
+    return hashCombine(h, static_cast<uint64_t>(texture->format()));
+}
+
+namespace {
+
+// What one pass reads: the parameters its stages' uniform blocks, compile arguments and render-state
+// expressions name. Only these are bound (semantics) and hashed (FramePlan signatures); compile arguments
+// that read no per-object semantic are evaluated once per pass instead of once per draw.
+struct PassUse {
+    std::vector<bool> used;                 // per effect parameter
+    std::vector<bool> argumentPerObject;    // per CompiledPass::arguments entry
+    std::vector<size_t> perPassParameters;  // used and not bound per object
+    // The view/projection matrices it reads: the port's, and those of annotated lights. Culling trusts
+    // the port's frustum only for passes that project with it (a camera-port pass that draws a light's
+    // view with frustum="light0" matrices is not culled).
+    bool readsPortMatrix = false;
+    std::vector<const Light*> lightMatrices;
+};
+
+void collectParameters(const fx::Expr& expr, const EffectRenderer::Impl& impl, std::vector<bool>& used) {
+    if (expr.kind == fx::Expr::Kind::Identifier) {
+        auto it = impl.parameterIndex.find(expr.text);
+        if (it != impl.parameterIndex.end()) used[it->second] = true;
+    }
+    for (const fx::Expr& arg : expr.args) collectParameters(arg, impl, used);
+}
+
+std::vector<PassUse> passUses(const EffectRenderer::Impl& impl, const fx::CompiledTechnique& technique,
+                              const SemanticBinder& binder) {
+    const size_t count = impl.values.size();
+    std::vector<PassUse> uses;
+    for (const fx::CompiledPass& pass : technique.passes) {
+        PassUse use;
+        use.used.assign(count, false);
+        for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment})
+            for (const fx::UniformBinding& member : stage->uniforms)
+                if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
+                    member.index < count)
+                    use.used[member.index] = true;
+        for (const fx::RenderStateSetting& setting : pass.states)
+            collectParameters(setting.value, impl, use.used);
+        for (const fx::CompileArgument& argument : pass.arguments) {
+            std::vector<bool> reads(count, false);
+            collectParameters(argument.expr, impl, reads);
+            bool perObject = false;
+            for (size_t p = 0; p < count; ++p) {
+                if (!reads[p]) continue;
+                use.used[p] = true;
+                perObject = perObject || binder.isPerObject(p);
+            }
+            use.argumentPerObject.push_back(perObject);
+        }
+        for (size_t p = 0; p < count; ++p) {
+            if (!use.used[p]) continue;
+            if (!binder.isPerObject(p)) use.perPassParameters.push_back(p);
+            const Light* light = nullptr;
+            if (!binder.projectionSource(p, light)) continue;
+            if (light) {
+                use.lightMatrices.push_back(light);
+            } else {
+                use.readsPortMatrix = true;
+            }
+        }
+        uses.push_back(std::move(use));
+    }
+    return uses;
+}
+
+// The view and projection a RenderPort gives ("" = the camera). False if the scene has no such light.
+bool portMatrices(const Scene& scene, const Bounds& bounds, const FrameOptions& options,
+                  const std::string& light, RenderPortView& port) {
+    if (light.empty()) {
+        const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+        port.view = scene.camera.view();
+        port.projection = scene.camera.projection(aspect);
+        return true;
+    }
+    const Light* found = scene.findLight(light);
+    if (!found) return false;
+    port.view = found->view(bounds);
+    port.projection = found->projection(bounds, nearestDepthFrom(scene, *found));
+    return true;
+}
+
+std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
+    std::vector<const fx::SamplerBinding*> samplers;
+    for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment})
+        for (const fx::SamplerBinding& binding : stage->samplers) samplers.push_back(&binding);
+    return samplers;
+}
+
+// The dry run: follows the technique's script as FrameExecutor will, on a copy of the parameter values,
+// and records every clear and draw with its targets, sampled textures and signature (FramePlan). No GL.
+class PlanRecorder : public ScriptTarget {
+public:
+    static constexpr int kNone = -1000;     // an unbound colour slot
+    static constexpr int kUnknown = -1001;  // a target the executor will reject
+
+    PlanRecorder(const EffectRenderer::Impl& impl, const Scene& scene, const FrameOptions& options,
+                 const SemanticBinder& binder, const std::vector<PassUse>& uses, size_t technique,
+                 const std::vector<glm::vec3>& body, FramePlan& plan)
+        : mImpl(impl),
+          mScene(scene),
+          mOptions(options),
+          mBinder(binder),
+          mUses(uses),
+          mTechnique(technique),
+          mBody(body),
+          mPlan(plan),
+          mValues(impl.values) {
+        mColors.fill(kNone);
+        mColors[0] = kFrameColor;
+        setRenderPort("");
+    }
+
+    void beginPass(const fx::CompiledPass& pass) override {
+        mPass = passIndex(pass);
+        mSceneSaysSkip = sceneSaysSkip(pass);
+    }
+    void setColorTarget(int index, const std::string& texture) override {
+        if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
+        mColors[static_cast<size_t>(index)] =
+            texture.empty() ? (index == 0 ? kFrameColor : kNone) : resource(texture);
+    }
+    void setDepthTarget(const std::string& texture) override {
+        mDepth = texture.empty() ? kFrameDepth : resource(texture);
+    }
+    void setRenderPort(const std::string& light) override {
+        mLightPort = !light.empty();
+        portMatrices(mScene, mImpl.sceneCache.bounds, mOptions, light, mPort);
+    }
+    void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
+    void setClearDepth(float depth) override { mClearDepth = depth; }
+    void setClearStencil(int stencil) override { mClearStencil = stencil; }
+
+    void clear(fx::ScriptCommand::ClearWhat what) override {
+        PlannedOp op;
+        op.pass = mPass;
+        op.lightPort = mLightPort;
+        uint64_t value = 0;
+        switch (what) {
+            case fx::ScriptCommand::ClearWhat::Color:
+                op.kind = PlannedOp::Kind::ClearColor;
+                op.writes = colorTargets();
+                value = hashBytes(0, mClearColor.data(), mClearColor.size() * sizeof(float));
+                break;
+            case fx::ScriptCommand::ClearWhat::Depth:
+                op.kind = PlannedOp::Kind::ClearDepth;
+                if (mDepth != kNone) op.writes = {mDepth};
+                value = hashBytes(0, &mClearDepth, sizeof(mClearDepth));
+                break;
+            case fx::ScriptCommand::ClearWhat::Stencil:
+                op.kind = PlannedOp::Kind::ClearStencil;
+                if (mDepth != kNone) op.writes = {mDepth};
+                value = static_cast<uint64_t>(mClearStencil);
+                break;
+        }
+        op.signature = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mPass), value);
+        op.sceneSaysSkip = mSceneSaysSkip;
+        mPlan.ops.push_back(std::move(op));
+    }
+
+    void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override {
+        const size_t index = passIndex(pass);
+        const GpuProgram* program = mImpl.programs[mTechnique][index].get();
+        if (!program || !program->hasShaders()) return;  // FrameExecutor warns and skips it too
+        PlannedOp op;
+        op.kind = what == fx::ScriptCommand::DrawWhat::Buffer ? PlannedOp::Kind::DrawBuffer
+                                                              : PlannedOp::Kind::DrawGeometry;
+        op.pass = index;
+        op.lightPort = mLightPort;
+        // Bound targets are read (blending, depth and stencil tests); they are written unless the pass's
+        // states mask the writes (the hardware shadow map's ColorWriteEnable = 0, BlendOp=min without Z).
+        const RenderStateBlock states = passStates(pass);
+        static constexpr fx::RenderStateId kColorWrites[] = {
+            fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
+            fx::RenderStateId::ColorWriteEnable2, fx::RenderStateId::ColorWriteEnable3};
+        for (size_t slot = 0; slot < mColors.size(); ++slot) {
+            if (mColors[slot] == kNone) continue;
+            op.reads.push_back(mColors[slot]);
+            if (states.get(kColorWrites[slot]) != 0.0) op.writes.push_back(mColors[slot]);
+        }
+        if (mDepth != kNone) {
+            op.reads.push_back(mDepth);
+            const bool depthWrites = states.get(fx::RenderStateId::ZEnable) != 0.0 &&
+                                     states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
+            if (depthWrites || states.get(fx::RenderStateId::StencilEnable) != 0.0)
+                op.writes.push_back(mDepth);
+        }
+        for (const fx::SamplerBinding* binding : passSamplers(pass)) {
+            const fx::SamplerDesc* desc = mImpl.compiled->findSampler(binding->samplerParameter);
+            if (desc && desc->texture) op.reads.push_back(static_cast<int>(*desc->texture));
+        }
+
+        const PassUse& use = mUses[index];
+        mPort.viewportSize = targetSize();
+        mBinder.bind(mPort, nullptr, mOptions.time, mValues, mImpl.pinned, SemanticBinder::Scope::PerPort,
+                     &use.used);
+        uint64_t h = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mTechnique), index);
+        h = hashBytes(h, &mPort, sizeof(mPort));
+        for (size_t p : use.perPassParameters)
+            h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
+        if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mImpl.sceneCache.stamp);
+        op.signature = h;
+        op.sceneSaysSkip = mSceneSaysSkip;
+        if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry)
+            op.region =
+                receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, kReceiverPadTexels);
+        mPlan.ops.push_back(std::move(op));
+    }
+
+    void reportIgnored(const fx::ScriptCommand&) override {}
+    const fx::Value* parameter(const std::string& name) const override {
+        auto it = mImpl.parameterIndex.find(name);
+        return it == mImpl.parameterIndex.end() ? nullptr : &mValues[it->second];
+    }
+    void setParameter(const std::string& name, const fx::Value& value) override {
+        auto it = mImpl.parameterIndex.find(name);
+        if (it == mImpl.parameterIndex.end()) return;
+        fx::Value stored = value;
+        stored.type = mImpl.effect().parameters[it->second].type;
+        stored.data.resize(static_cast<size_t>(std::max(1, stored.type.componentCount())), value.asFloat());
+        mValues[it->second] = std::move(stored);
+    }
+
+private:
+    size_t passIndex(const fx::CompiledPass& pass) const {
+        return static_cast<size_t>(&pass - mImpl.compiled->techniques[mTechnique].passes.data());
+    }
+    int resource(const std::string& name) const {
+        auto it = mImpl.parameterIndex.find(name);
+        if (it == mImpl.parameterIndex.end()) return kUnknown;
+        const fx::TextureDesc* desc = mImpl.compiled->findTexture(it->second);
+        if (!mImpl.textures.count(it->second) && !(desc && isRenderTarget(*desc))) return kUnknown;
+        return static_cast<int>(it->second);
+    }
+    // A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second
+    // depth layer finds nothing) or "NoLightArea" (no light has an area: no soft-shadow filter needed) is
+    // left out where that holds. The effect guarantees that later passes do not need what it writes then.
+    bool sceneSaysSkip(const fx::CompiledPass& pass) const {
+        const fx::Effect& effect = mImpl.effect();
+        const std::string& technique = mImpl.compiled->techniques[mTechnique].name;
+        for (const fx::Technique& source : effect.techniques) {
+            if (source.name != technique) continue;
+            for (const fx::Pass& sourcePass : source.passes) {
+                if (sourcePass.name != pass.name) continue;
+                const fx::Annotation* when = sourcePass.annotation("LeaveOutWhen");
+                if (!when || when->value.kind != fx::Expr::Kind::String) return false;
+                if (when->value.text == "NoClosedObjects")
+                    return std::none_of(mScene.objects.begin(), mScene.objects.end(),
+                                        [](const SceneObject& o) { return o.mesh && o.mesh->closed; });
+                if (when->value.text == "NoLightArea")
+                    return std::all_of(mScene.lights.begin(), mScene.lights.end(),
+                                       [](const Light& light) { return light.areaRadius <= 0.0f; });
+                return false;
+            }
+        }
+        return false;
+    }
+    RenderStateBlock passStates(const fx::CompiledPass& pass) const {
+        RenderStateBlock block = RenderStateBlock::defaults();
+        const auto lookup = [this](std::string_view name) { return parameter(std::string(name)); };
+        fx::DiagnosticList ignored;  // FrameExecutor::applyStates reports them
+        for (const fx::RenderStateSetting& setting : pass.states) {
+            if (setting.value.kind == fx::Expr::Kind::Number || setting.value.kind == fx::Expr::Kind::Bool) {
+                block.set(setting.id, setting.value.number);
+                continue;
+            }
+            if (std::optional<fx::Value> value = fx::evaluate(setting.value, lookup, nullptr, &ignored))
+                block.set(setting.id, value->asFloat());
+        }
+        return block;
+    }
+    std::vector<int> colorTargets() const {
+        std::vector<int> targets;
+        for (int target : mColors)
+            if (target != kNone) targets.push_back(target);
+        return targets;
+    }
+    glm::vec2 targetSize() const {
+        for (int target : {mColors[0], mDepth}) {
+            if (target == kFrameColor || target == kFrameDepth)
+                return glm::vec2(mOptions.width, mOptions.height);
+            if (target < 0) continue;
+            const fx::TextureDesc* desc = mImpl.compiled->findTexture(static_cast<size_t>(target));
+            if (desc) return glm::vec2(renderTargetSize(*desc, mOptions.width, mOptions.height));
+        }
+        return glm::vec2(mOptions.width, mOptions.height);
+    }
+
+    const EffectRenderer::Impl& mImpl;
+    const Scene& mScene;
+    const FrameOptions& mOptions;
+    const SemanticBinder& mBinder;
+    const std::vector<PassUse>& mUses;
+    size_t mTechnique;
+    const std::vector<glm::vec3>& mBody;
+    FramePlan& mPlan;
+    std::vector<fx::Value> mValues;
+    std::array<int, RenderTargets::kMaxColorTargets> mColors{};
+    int mDepth = kFrameDepth;
+    bool mLightPort = false;
+    RenderPortView mPort;
+    size_t mPass = 0;
+    bool mSceneSaysSkip = false;
+    std::vector<float> mClearColor;
+    float mClearDepth = 1.0f;
+    int mClearStencil = 0;
+};
+
 class FrameExecutor : public ScriptTarget {
 public:
     FrameExecutor(EffectRenderer::Impl& impl, const Scene& scene, const FrameOptions& options,
-                  fx::DiagnosticSink& diagnostics, FrameStats& stats, size_t techniqueIndex)
+                  fx::DiagnosticSink& diagnostics, FrameStats& stats, size_t techniqueIndex,
+                  const SemanticBinder& binder, const std::vector<PassUse>& uses, const FramePlan& plan)
         : mImpl(impl),
           mScene(scene),
           mOptions(options),
           mDiagnostics(diagnostics),
           mStats(stats),
           mTechnique(techniqueIndex),
-          mBinder(impl.effect(), scene, diagnostics),
-          mSceneBounds(scene.bounds()) {
+          mBinder(binder),
+          mUses(uses),
+          mPlan(plan),
+          mSceneBounds(impl.sceneCache.bounds) {
         mTargets.colors[0].texture = &impl.frameColor;
         mTargets.depth.texture = &impl.frameDepth;
         setRenderPort("");
     }
 
     bool failed() const { return mFailed; }
-    // With FrameOptions::timePasses: waits for the GPU and fills the frame's pass timings.
-    void finishTiming() { mTimer.finish(); }
+    // False if the frame's commands did not follow the plan (then nothing after the divergence was left out).
+    bool followedPlan() const { return mPlanFollowed && mNextOp == mPlan.ops.size(); }
+    // Closes the last pass's record, reads the fragment counts and, with FrameOptions::timePasses, waits
+    // for the GPU and fills the frame's pass timings.
+    void finish() {
+        closePass();
+        for (const auto& [pass, query] : mTexelQueries) {
+            GLuint64 samples = 0;
+            gl::GetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+            mStats.passes[pass].texelsWritten += samples;
+            gl::DeleteQueries(1, &query);
+        }
+        for (const PassStats& pass : mStats.passes) {
+            if (pass.leftOut.empty()) {
+                ++mStats.passesRun;
+            } else {
+                ++mStats.passesLeftOut;
+            }
+        }
+        mTimer.finish();
+    }
 
     void beginPass(const fx::CompiledPass& pass) override {
-        ++mStats.passesRun;
+        closePass();
+        mCurrentPass = static_cast<size_t>(&pass - mImpl.compiled->techniques[mTechnique].passes.data());
+        PassStats record;
+        record.pass = pass.name;
+        mStats.passes.push_back(record);
+        mPassOps = 0;
+        mPassLeftOut.fill(0);
         mTimer.beginPass(pass.name);
     }
 
@@ -341,20 +765,12 @@ public:
     }
 
     void setRenderPort(const std::string& lightName) override {
-        if (lightName.empty()) {
-            const float aspect = static_cast<float>(mOptions.width) / static_cast<float>(mOptions.height);
-            mPort.view = mScene.camera.view();
-            mPort.projection = mScene.camera.projection(aspect);
-            return;
-        }
-        const Light* light = mScene.findLight(lightName);
-        if (!light) {
+        mLightPort = !lightName.empty();
+        mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
+        if (!portMatrices(mScene, mSceneBounds, mOptions, lightName, mPort)) {
             fail(fx::DiagId::UnsupportedFeature, {"RenderPort names light '" + lightName +
                                                   "', which scene '" + mScene.name + "' does not have"});
-            return;
         }
-        mPort.view = light->view(mSceneBounds);
-        mPort.projection = light->projection(mSceneBounds, nearestDepthFrom(mScene, *light));
     }
 
     void setClearColor(const fx::Value& color) override {
@@ -367,18 +783,29 @@ public:
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
 
     void clear(fx::ScriptCommand::ClearWhat what) override {
+        const PlannedOp::Kind kind = what == fx::ScriptCommand::ClearWhat::Color ? PlannedOp::Kind::ClearColor
+                                     : what == fx::ScriptCommand::ClearWhat::Depth
+                                         ? PlannedOp::Kind::ClearDepth
+                                         : PlannedOp::Kind::ClearStencil;
+        if (leftOut(nextOp(kind, mCurrentPass))) return;
         if (!bindTargets()) return;
         ClearRequest request;
+        uint64_t texels = 0;
         switch (what) {
             case fx::ScriptCommand::ClearWhat::Color:
                 request.color = mClearColor;
+                for (const auto& color : mTargets.colors)
+                    if (color.texture) texels += texelCount(*color.texture);
                 break;
             case fx::ScriptCommand::ClearWhat::Depth:
                 request.depth = mClearDepth;
+                if (mTargets.depth.texture) texels += texelCount(*mTargets.depth.texture);
                 break;
             case fx::ScriptCommand::ClearWhat::Stencil:
-                if (mTargets.depth.texture && mTargets.depth.texture->glFormat().hasStencil)
+                if (mTargets.depth.texture && mTargets.depth.texture->glFormat().hasStencil) {
                     request.stencil = mClearStencil;
+                    texels += texelCount(*mTargets.depth.texture);
+                }
                 break;
         }
         {
@@ -386,6 +813,10 @@ public:
             FramebufferCache::clear(request);
         }
         ++mStats.clears;
+        if (PassStats* record = currentPass()) {
+            ++record->clears;
+            record->texelsWritten += texels;
+        }
     }
 
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override {
@@ -400,19 +831,56 @@ public:
             }
             return;
         }
+        const bool buffer = what == fx::ScriptCommand::DrawWhat::Buffer;
+        const PlannedOp* op =
+            nextOp(buffer ? PlannedOp::Kind::DrawBuffer : PlannedOp::Kind::DrawGeometry, passIndex);
+        if (leftOut(op)) return;
         if (!bindTargets()) return;
         applyStates(pass);
         bindSamplers(pass.vertex);
         bindSamplers(pass.fragment);
         mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
-
-        if (what == fx::ScriptCommand::DrawWhat::Buffer) {
-            drawWith(pass, *program, nullptr, mImpl.quad);
-            return;
+        program->bind();
+        const PassUse& use = mUses[passIndex];
+        if (mOptions.leaveOut) {
+            // Per-frame and per-port values once per pass; drawWith() then binds only per-object ones.
+            PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+            mBinder.bind(mPort, nullptr, mOptions.time, mImpl.values, mImpl.pinned,
+                         SemanticBinder::Scope::PerPort, &use.used);
         }
-        for (const SceneObject& object : mScene.objects) {
-            if (!object.mesh) continue;
-            drawWith(pass, *program, &object, mImpl.gpuMesh(object.mesh));
+        evaluateArguments(pass, use, false);
+
+        GLuint query = 0;
+        if (mOptions.countTexels) {
+            gl::GenQueries(1, &query);
+            gl::BeginQuery(GL_SAMPLES_PASSED, query);
+        }
+        if (buffer) {
+            drawWith(pass, *program, use, nullptr, mImpl.quad);
+        } else if (mOptions.leaveOut && mImpl.sceneCache.valid && projectsWithPort(use)) {
+            mVisible.clear();
+            cull(op, mVisible);
+            int drawable = 0;
+            for (const SceneObject& object : mScene.objects) drawable += object.mesh ? 1 : 0;
+            for (uint32_t index : mVisible) {
+                const SceneObject& object = mScene.objects[index];
+                drawWith(pass, *program, use, &object, mImpl.gpuMesh(object.mesh));
+            }
+            const int culled = drawable - static_cast<int>(mVisible.size());
+            mStats.culled += culled;
+            if (PassStats* record = currentPass()) record->culled += culled;
+        } else {
+            for (const SceneObject& object : mScene.objects) {
+                if (!object.mesh) continue;
+                drawWith(pass, *program, use, &object, mImpl.gpuMesh(object.mesh));
+            }
+        }
+        if (query) {
+            gl::EndQuery(GL_SAMPLES_PASSED);
+            if (!mStats.passes.empty())
+                mTexelQueries.emplace_back(mStats.passes.size() - 1, query);
+            else
+                gl::DeleteQueries(1, &query);
         }
     }
 
@@ -441,12 +909,72 @@ private:
         mFailed = true;
     }
 
+    PassStats* currentPass() { return mStats.passes.empty() ? nullptr : &mStats.passes.back(); }
+
+    static uint64_t texelCount(const GpuTexture& texture) {
+        return static_cast<uint64_t>(texture.width()) * static_cast<uint64_t>(texture.height());
+    }
+
+    // The plan's record of the command about to run, or null once the frame left the plan (never
+    // expected: the dry run follows the same script over the same values).
+    const PlannedOp* nextOp(PlannedOp::Kind kind, size_t pass) {
+        if (!mPlanFollowed) return nullptr;
+        if (mNextOp >= mPlan.ops.size() || mPlan.ops[mNextOp].kind != kind ||
+            mPlan.ops[mNextOp].pass != pass) {
+            mPlanFollowed = false;
+            return nullptr;
+        }
+        ++mPassOps;
+        return &mPlan.ops[mNextOp++];
+    }
+
+    // Counts a command the plan leaves out; true if it is left out.
+    bool leftOut(const PlannedOp* op) {
+        if (!op || op->leftOut == LeftOut::No) return false;
+        ++mPassLeftOut[static_cast<size_t>(op->leftOut)];
+        return true;
+    }
+
+    void closePass() {
+        PassStats* record = currentPass();
+        int leftOut = 0;
+        for (int count : mPassLeftOut) leftOut += count;
+        if (!record || mPassOps == 0 || leftOut < mPassOps) return;
+        static constexpr const char* kReasons[] = {"", "dead", "cached", "scene"};
+        for (size_t reason = 1; reason < mPassLeftOut.size(); ++reason)
+            if (mPassLeftOut[reason] > 0)
+                record->leftOut += (record->leftOut.empty() ? "" : "+") + std::string(kReasons[reason]);
+    }
+
+    bool projectsWithPort(const PassUse& use) const {
+        if (use.readsPortMatrix) return true;
+        return mPortLight && std::find(use.lightMatrices.begin(), use.lightMatrices.end(), mPortLight) !=
+                                 use.lightMatrices.end();
+    }
+
+    // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
+    // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
+    void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const {
+        const InstanceBvh& bvh = mImpl.sceneCache.bvh;
+        const glm::mat4 viewProjection = mPort.projection * mPort.view;
+        if (!mLightPort) {
+            const ConvexVolume frustum = frustumPlanes(viewProjection);
+            bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, visible);
+            return;
+        }
+        const ReceiverRegion region = op && op->cullToReceivers ? op->region : fullLightRegion();
+        bvh.query([&](const Aabb& box) { return casterReaches(region, viewProjection, box); }, visible);
+    }
+
     const GpuTexture* target(const std::string& name) {
         auto index = mImpl.parameterIndex.find(name);
         auto texture =
             index == mImpl.parameterIndex.end() ? mImpl.textures.end() : mImpl.textures.find(index->second);
         if (texture == mImpl.textures.end()) {
-            fail(fx::DiagId::ScriptUnknownTarget, {name});
+            // Left unallocated because no operation that runs uses it (FramePlan): not an error.
+            const fx::TextureDesc* desc =
+                index == mImpl.parameterIndex.end() ? nullptr : mImpl.compiled->findTexture(index->second);
+            if (!desc || !isRenderTarget(*desc)) fail(fx::DiagId::ScriptUnknownTarget, {name});
             return nullptr;
         }
         return &texture->second;
@@ -537,26 +1065,36 @@ private:
         }
     }
 
-    void drawWith(const fx::CompiledPass& pass, GpuProgram& program, const SceneObject* object,
-                  GpuMesh& mesh) {
+    // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per
+    // pass (perObject false) and the per-object ones per draw (perObject true); without, all per draw.
+    void evaluateArguments(const fx::CompiledPass& pass, const PassUse& use, bool perObject) {
+        PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
+        const auto lookup = [this](std::string_view name) { return mImpl.find(name); };
+        mArguments.resize(pass.arguments.size());
+        for (size_t i = 0; i < pass.arguments.size(); ++i) {
+            if (mOptions.leaveOut && use.argumentPerObject[i] != perObject) continue;
+            const fx::CompileArgument& argument = pass.arguments[i];
+            std::optional<fx::Value> value =
+                fx::evaluate(argument.expr, lookup, &argument.type, &mDiagnostics);
+            mArguments[i] = value ? std::move(*value) : fx::zeroValue(argument.type);
+        }
+    }
+
+    void drawWith(const fx::CompiledPass& pass, GpuProgram& program, const PassUse& use,
+                  const SceneObject* object, GpuMesh& mesh) {
         {
             PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-            mBinder.bind(mPort, object, mOptions.time, mImpl.values, mImpl.pinned);
-        }
-        std::vector<fx::Value> arguments;
-        arguments.reserve(pass.arguments.size());
-        const auto lookup = [this](std::string_view name) { return mImpl.find(name); };
-        {
-            PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
-            for (const fx::CompileArgument& argument : pass.arguments) {
-                std::optional<fx::Value> value =
-                    fx::evaluate(argument.expr, lookup, &argument.type, &mDiagnostics);
-                arguments.push_back(value ? std::move(*value) : fx::zeroValue(argument.type));
+            if (mOptions.leaveOut) {
+                mBinder.bind(mPort, object, mOptions.time, mImpl.values, mImpl.pinned,
+                             SemanticBinder::Scope::PerObject, &use.used);
+            } else {
+                mBinder.bind(mPort, object, mOptions.time, mImpl.values, mImpl.pinned);
             }
         }
+        evaluateArguments(pass, use, true);
         {
             PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-            program.use(mImpl.values, arguments);
+            program.upload(mImpl.values, mArguments, *mImpl.uniformRing);
         }
         {
             PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
@@ -565,9 +1103,14 @@ private:
             mesh.draw(pass.vertex.inputs);
             if (drawUnculled) gl::Enable(GL_CULL_FACE);
         }
+        const uint64_t triangles = mesh.indexCount() / 3;
         ++mStats.draws;
         mTimer.countDraw();
-        mStats.triangles += mesh.indexCount() / 3;
+        mStats.triangles += triangles;
+        if (PassStats* record = currentPass()) {
+            ++record->draws;
+            record->triangles += triangles;
+        }
     }
 
     EffectRenderer::Impl& mImpl;
@@ -577,10 +1120,22 @@ private:
     FrameStats& mStats;
     PassTimer mTimer{mOptions.timePasses, mStats};
     size_t mTechnique;
-    SemanticBinder mBinder;
+    const SemanticBinder& mBinder;
+    const std::vector<PassUse>& mUses;
+    const FramePlan& mPlan;
+    size_t mNextOp = 0;
+    bool mPlanFollowed = true;
+    size_t mCurrentPass = 0;
+    int mPassOps = 0;
+    std::array<int, 4> mPassLeftOut{};                     // per LeftOut reason
+    std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
+    std::vector<uint32_t> mVisible;
+    std::vector<fx::Value> mArguments;
     Bounds mSceneBounds;
     RenderTargets mTargets;
     RenderPortView mPort;
+    bool mLightPort = false;
+    const Light* mPortLight = nullptr;
     std::array<float, 4> mClearColor{0.0f, 0.0f, 0.0f, 0.0f};  // D3D's Clear defaults
     float mClearDepth = 1.0f;
     int mClearStencil = 0;
@@ -624,22 +1179,69 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         diagnostics.report(fx::Diagnostic{fx::DiagId::GlDebugMessage, fx::Severity::Note, fx::SourceLoc{},
                                           fx::formatDiagnostic(fx::DiagId::GlDebugMessage, {message})});
     });
-    mImpl->ensureFrameResources(options.width, options.height);
-    // Camera-relative rendering for scenes far from the origin (Scene.h, renderOrigin).
-    const glm::vec3 origin = renderOrigin(scene);
+    // Camera-relative rendering for scenes far from the origin (Scene.h, renderOrigin). Such a scene is
+    // translated anew each frame and its cache rebuilt: a price only scenes far from the origin pay.
+    mImpl->updateSceneCache(scene);
+    const glm::vec3 origin = renderOrigin(mImpl->sceneCache.bounds);
     const std::optional<Scene> rebased =
         origin == glm::vec3(0.0f) ? std::nullopt : std::optional<Scene>(scene.translated(-origin));
-    FrameExecutor executor(*mImpl, rebased ? *rebased : scene, options, diagnostics, frameStats,
-                           techniqueIndex);
+    const Scene& frameScene = rebased ? *rebased : scene;
+    // Render targets are allocated once an operation that runs needs them (below); the frame's own now.
+    std::set<int> none;
+    mImpl->ensureFrameResources(options.width, options.height, &none);
+    mImpl->updateSceneCache(frameScene);
+    const SemanticBinder binder(mImpl->effect(), frameScene, mImpl->sceneCache.bounds, diagnostics);
+    const std::vector<PassUse> uses = passUses(*mImpl, *technique, binder);
+
+    // Plan the frame with a dry run of its script, then leave out what it shows nobody needs.
+    FramePlan plan;
+    {
+        std::vector<glm::vec3> body;
+        if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
+            RenderPortView camera;
+            portMatrices(frameScene, mImpl->sceneCache.bounds, options, "", camera);
+            const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
+            body = intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max});
+        }
+        fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
+        PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan);
+        ScriptInterpreter::run(*technique, recorder, dryRunDiagnostics);
+        std::vector<int> outputs;
+        for (const std::string& name : options.outputTargets)
+            if (const std::optional<size_t> index = findParameter(name))
+                outputs.push_back(static_cast<int>(*index));
+        plan.markDead(outputs, options.leaveOut);
+        // A render target no remaining operation writes or reads is not allocated.
+        std::set<int> needed;
+        for (const PlannedOp& op : plan.ops) {
+            if (op.leftOut != LeftOut::No && options.leaveOut) continue;
+            needed.insert(op.writes.begin(), op.writes.end());
+            needed.insert(op.reads.begin(), op.reads.end());
+        }
+        mImpl->ensureFrameResources(options.width, options.height, options.leaveOut ? &needed : nullptr);
+        plan.decide(
+            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); },
+            options.leaveOut);
+    }
+
+    FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
+                           plan);
     const bool ran = ScriptInterpreter::run(*technique, executor, diagnostics);
-    executor.finishTiming();
+    executor.finish();
     FramebufferCache::bindDefault();
     const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
     setDebugSink({});
     if (!clean)
         diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0},
                            {"GL error during the frame"});
-    return ran && !executor.failed() && clean;
+    const bool ok = ran && !executor.failed() && clean;
+    // What the targets hold is known only if the frame ran as planned; otherwise forget it all.
+    if (ok && executor.followedPlan()) {
+        plan.commit(mImpl->targetHistory);
+    } else {
+        mImpl->targetHistory.clear();
+    }
+    return ok;
 }
 
 FrameImage EffectRenderer::readFrame() const {

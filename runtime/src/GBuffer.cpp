@@ -94,6 +94,7 @@ std::optional<GBuffer> renderGBuffer(const Scene& scene, int width, int height,
     FrameOptions options;
     options.width = width;
     options.height = height;
+    options.outputTargets = {"GPosition", "GNormal"};
     if (!renderer->render(numbered, options, diagnostics)) return std::nullopt;
 
     int w = 0, h = 0, positionChannels = 0, normalChannels = 0;

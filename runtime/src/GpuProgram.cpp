@@ -120,36 +120,75 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass,
         block.stage = stages[i];
         if (stages[i]->uniformBlockSize == 0 || stages[i]->uniformBlockBinding < 0) continue;
         block.data.assign(stages[i]->uniformBlockSize, 0);
-        gl::GenBuffers(1, &block.buffer);
-        gl::BindBuffer(GL_UNIFORM_BUFFER, block.buffer);
-        gl::BufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(block.data.size()), nullptr,
-                       GL_DYNAMIC_DRAW);
     }
-    gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
     return program;
 }
 
 GpuProgram::~GpuProgram() {
-    for (StageBlock& block : mBlocks)
-        if (block.buffer) gl::DeleteBuffers(1, &block.buffer);
     if (mProgram) gl::DeleteProgram(mProgram);
 }
 
-void GpuProgram::use(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments) {
+void GpuProgram::bind() {
     gl::UseProgram(mProgram);
+    for (StageBlock& block : mBlocks) block.uploaded.clear();
+}
+
+void GpuProgram::upload(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments,
+                        UniformRing& ring) {
     for (StageBlock& block : mBlocks) {
-        if (!block.buffer) continue;
+        if (block.data.empty()) continue;
         for (const fx::UniformBinding& member : block.stage->uniforms) {
+            if (!member.active) continue;  // the code never reads it
             const std::vector<fx::Value>& source =
                 member.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
             if (member.index < source.size()) UniformPacker::pack(member, source[member.index], block.data);
         }
-        gl::BindBuffer(GL_UNIFORM_BUFFER, block.buffer);
-        gl::BufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(block.data.size()),
-                          block.data.data());
-        gl::BindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(block.stage->uniformBlockBinding),
-                           block.buffer);
+        if (block.uploaded == block.data) continue;
+        ring.bindBlock(static_cast<GLuint>(block.stage->uniformBlockBinding), block.data);
+        block.uploaded = block.data;
     }
+}
+
+// [SECTION] UniformRing
+
+UniformRing::UniformRing() {
+    GLint alignment = 0;
+    gl::GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    if (alignment > 0) mAlignment = static_cast<size_t>(alignment);
+    gl::GenBuffers(1, &mBuffer);
+    gl::BindBuffer(GL_UNIFORM_BUFFER, mBuffer);
+    const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    gl::BufferStorage(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(kCapacity), nullptr, flags);
+    mMapped = static_cast<uint8_t*>(
+        gl::MapBufferRange(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(kCapacity), flags));
+    gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+UniformRing::~UniformRing() {
+    if (!mBuffer) return;
+    if (mMapped) {
+        gl::BindBuffer(GL_UNIFORM_BUFFER, mBuffer);
+        gl::UnmapBuffer(GL_UNIFORM_BUFFER);
+        gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
+    }
+    gl::DeleteBuffers(1, &mBuffer);
+}
+
+void UniformRing::bindBlock(GLuint binding, const std::vector<uint8_t>& data) {
+    const size_t size = (data.size() + mAlignment - 1) / mAlignment * mAlignment;
+    if (!mMapped || size > kCapacity) return;
+    if (mHead + size > kCapacity) {
+        // Everything queued so far may still read the ring: wait for it before overwriting.
+        GLsync fence = gl::FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        while (gl::ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+        }
+        gl::DeleteSync(fence);
+        mHead = 0;
+    }
+    std::memcpy(mMapped + mHead, data.data(), data.size());
+    gl::BindBufferRange(GL_UNIFORM_BUFFER, binding, mBuffer, static_cast<GLintptr>(mHead),
+                        static_cast<GLsizeiptr>(data.size()));
+    mHead += size;
 }
 
 }  // namespace runtime

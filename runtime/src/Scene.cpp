@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace runtime {
 
@@ -138,9 +139,16 @@ float nearestDepthFrom(const Scene& scene, const Light& light) {
     if (light.type == Light::Type::Directional) return 0.0f;
     const glm::vec3 dir = safeDirection(light.direction);
     float nearest = std::numeric_limits<float>::max();
+    std::map<const Mesh*, std::pair<glm::vec3, glm::vec3>> meshBoxes;  // instanced meshes: one box each
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh || object.mesh->positions.empty()) continue;
-        const glm::vec3 lo = object.mesh->boundsMin(), hi = object.mesh->boundsMax();
+        auto box = meshBoxes.find(object.mesh.get());
+        if (box == meshBoxes.end())
+            box = meshBoxes
+                      .emplace(object.mesh.get(),
+                               std::make_pair(object.mesh->boundsMin(), object.mesh->boundsMax()))
+                      .first;
+        const auto& [lo, hi] = box->second;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
                                   corner & 4 ? hi.z : lo.z);
@@ -155,11 +163,15 @@ float nearestDepthFrom(const Scene& scene, const Light& light) {
 
 glm::vec3 renderOrigin(const Scene& scene) {
     if (scene.objects.empty() && !scene.explicitBounds) return glm::vec3(0.0f);
-    const Bounds bounds = scene.bounds();
-    const glm::vec3 centre = bounds.center();
+    return renderOrigin(scene.bounds());
+}
+
+glm::vec3 renderOrigin(const Bounds& sceneBounds) {
+    const glm::vec3 centre = sceneBounds.center();
     const float farthest = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
-    return farthest > 16.0f * std::max(bounds.radius(), 1e-6f) && std::isfinite(farthest) ? centre
-                                                                                          : glm::vec3(0.0f);
+    return farthest > 16.0f * std::max(sceneBounds.radius(), 1e-6f) && std::isfinite(farthest)
+               ? centre
+               : glm::vec3(0.0f);
 }
 
 Bounds Scene::bounds() const {

@@ -45,6 +45,7 @@ Scene makeDualLScene();
 Scene makeDoubleTorusScene();
 Scene makeBehindScene();
 Scene makeForestScene();
+Scene makeForestFifthScene();  // the forest seen to 110 m: about a fifth of it in view
 std::optional<Scene> makeBunnyScene(fx::DiagnosticSink* diagnostics);
 std::optional<Scene> makeHorseScene(fx::DiagnosticSink* diagnostics);
 std::optional<Scene> makeSpiderScene(fx::DiagnosticSink* diagnostics);

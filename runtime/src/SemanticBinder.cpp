@@ -104,6 +104,7 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"MATERIALDIFFUSE", Kind::ObjectColor},
         {"DIFFUSECOLOR", Kind::ObjectColor},
         {"AMBIENT", Kind::Ambient},
+        {"SCENEHASCLOSEDOBJECTS", Kind::SceneHasClosedObjects},
     };
     for (const auto& [text, otherKind] : kOthers) {
         if (name == text) {
@@ -114,8 +115,12 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
     return false;
 }
 
-SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx::DiagnosticSink& diagnostics)
-    : mScene(scene), mSceneBounds(scene.bounds()) {
+SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
+                               fx::DiagnosticSink& diagnostics)
+    : mScene(scene), mSceneBounds(sceneBounds) {
+    mHasClosedObjects =
+        std::any_of(scene.objects.begin(), scene.objects.end(),
+                    [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
     for (size_t i = 0; i < effect.parameters.size(); ++i) {
         const fx::Parameter& parameter = effect.parameters[i];
         if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
@@ -139,7 +144,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, fx:
                 continue;
             }
             if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
-            binding.lightNearestDepth = nearestDepthFrom(scene, *binding.light);
+            binding.lightView = binding.light->view(mSceneBounds);
+            binding.lightProjection =
+                binding.light->projection(mSceneBounds, nearestDepthFrom(scene, *binding.light));
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -152,18 +159,44 @@ bool SemanticBinder::isBound(size_t parameter) const {
                        [parameter](const Binding& b) { return b.parameter == parameter; });
 }
 
+bool SemanticBinder::dependsOnObject(Kind kind) {
+    return kind == Kind::World || kind == Kind::WorldView || kind == Kind::WorldViewProjection ||
+           kind == Kind::ObjectId || kind == Kind::ObjectColor;
+}
+
+bool SemanticBinder::isPerObject(size_t parameter) const {
+    return std::any_of(mBindings.begin(), mBindings.end(), [parameter](const Binding& b) {
+        return b.parameter == parameter && dependsOnObject(b.kind);
+    });
+}
+
+bool SemanticBinder::projectionSource(size_t parameter, const Light*& light) const {
+    for (const Binding& b : mBindings) {
+        if (b.parameter != parameter || b.kind == Kind::World) continue;
+        if (b.kind != Kind::View && b.kind != Kind::Projection && b.kind != Kind::WorldView &&
+            b.kind != Kind::ViewProjection && b.kind != Kind::WorldViewProjection)
+            continue;
+        light = b.light;
+        return true;
+    }
+    return false;
+}
+
 void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object, float time,
-                          std::vector<fx::Value>& values, const std::vector<bool>& pinned) const {
+                          std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope,
+                          const std::vector<bool>* used) const {
     const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
     for (const Binding& binding : mBindings) {
         if (pinned[binding.parameter]) continue;
+        if (used && !(*used)[binding.parameter]) continue;
+        if (scope != Scope::All && dependsOnObject(binding.kind) != (scope == Scope::PerObject)) continue;
         fx::Value& value = values[binding.parameter];
 
         glm::mat4 view = port.view;
         glm::mat4 projection = port.projection;
         if (binding.light) {
-            view = binding.light->view(mSceneBounds);
-            projection = binding.light->projection(mSceneBounds, binding.lightNearestDepth);
+            view = binding.lightView;
+            projection = binding.lightProjection;
         }
         // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
         glm::mat4 matrix(1.0f);
@@ -203,7 +236,7 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
             case Kind::LightPosition: {
                 const Light& light = *binding.light;
                 const glm::vec3 position = light.type == Light::Type::Directional
-                                               ? glm::vec3(glm::inverse(light.view(mSceneBounds))[3])
+                                               ? glm::vec3(glm::inverse(binding.lightView)[3])
                                                : light.position;
                 storeVector(value, glm::vec4(position, 1.0f));
                 continue;
@@ -222,6 +255,9 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 continue;
             case Kind::Ambient:
                 storeVector(value, glm::vec4(mScene.ambient, 1.0f));
+                continue;
+            case Kind::SceneHasClosedObjects:
+                storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));
                 continue;
         }
         if (binding.inverse) matrix = glm::inverse(matrix);

@@ -8,6 +8,8 @@
 // LightColor, LightAreaRadius/LightSize (the light's areaRadius in world units, for soft-shadow filters)
 // (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
 // object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
+// Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a second depth layer
+// can matter) and LightAreaRadius (0 = no soft-shadow filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -33,12 +35,27 @@ class SemanticBinder {
 public:
     // Classifies every parameter's semantic once. Parameters with semantics the runtime does not know
     // are left alone (they are the user's own).
-    SemanticBinder(const fx::Effect& effect, const Scene& scene, fx::DiagnosticSink& diagnostics);
+    // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
+    SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
+                   fx::DiagnosticSink& diagnostics);
+
+    // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
+    // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
+    enum class Scope { All, PerPort, PerObject };
 
     // Writes the values of every bound parameter that is not pinned into `values` (one per parameter).
-    // `object` may be null (Draw=Buffer), then World is the identity.
+    // `object` may be null (Draw=Buffer), then World is the identity. `used` (one flag per parameter, may
+    // be null) restricts binding to the parameters a pass reads.
     void bind(const RenderPortView& port, const SceneObject* object, float time,
-              std::vector<fx::Value>& values, const std::vector<bool>& pinned) const;
+              std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope = Scope::All,
+              const std::vector<bool>* used = nullptr) const;
+
+    // True if the parameter's bound value depends on the drawn object.
+    bool isPerObject(size_t parameter) const;
+    // For a View/Projection-derived matrix (View, Projection, WorldView, ViewProjection,
+    // WorldViewProjection and their variants): the light it is annotated with, or null for the render
+    // port's matrices. False for any other parameter. What culling checks a pass projects with.
+    bool projectionSource(size_t parameter, const Light*& light) const;
 
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;
@@ -61,6 +78,7 @@ private:
         LightAreaRadius,
         ObjectColor,
         Ambient,
+        SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
     };
     struct Binding {
         size_t parameter;
@@ -68,14 +86,17 @@ private:
         bool inverse = false;
         bool transpose = false;
         const Light* light =
-            nullptr;  // frustum/Object annotation (matrices), or the light of a light property
-        float lightNearestDepth = 0.0f;  // nearestDepthFrom(scene, *light), once per frame
+            nullptr;                // frustum/Object annotation (matrices), or the light of a light property
+        glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
+        glm::mat4 lightProjection{1.0f};
     };
+    static bool dependsOnObject(Kind kind);
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
 
     const Scene& mScene;
     Bounds mSceneBounds;
+    bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
 };
 

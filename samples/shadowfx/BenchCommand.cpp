@@ -51,6 +51,9 @@ const char* const kBenchUsage =
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
     "  --area-radius R       give every light of every scene this areaRadius (0: hard shadows); the\n"
     "                        ground truth is then soft (penumbra error of filtering methods)\n"
+    "  --leave-out LIST      on, off or on,off: leave-out (culling, dead and cached passes) as a run\n"
+    "                        dimension; on,off times both in one run (default on)\n"
+    "  --no-leave-out        the same as --leave-out off\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
@@ -314,6 +317,39 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
                << fixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>() << " |\n";
         }
     }
+    md << "\n## Leave-out\n\n"
+          "Work of one frame like the timed ones (counted in an extra frame): passes run / left out (dead or "
+          "cached), draws, objects culled, triangles. First frame = the first warm-up frame (nothing "
+          "cached). "
+          "`speed-up` = median frame time without leave-out / with, where both were run.\n\n";
+    md << "| scene | effect | technique | map | leave-out | frame ms (median) | first frame ms | passes run "
+          "/ "
+          "left out | draws | culled | triangles | speed-up |\n"
+          "|---|---|---|---:|---|---:|---:|---|---:|---:|---:|---:|\n";
+    for (const Json& run : results["runs"]) {
+        const Json& work = run["work"];
+        std::string speedUp;
+        if (run["leave_out"].get<bool>()) {
+            for (const Json& other : results["runs"]) {
+                if (other["leave_out"].get<bool>() || other["scene"] != run["scene"] ||
+                    other["effect"] != run["effect"] || other["technique"] != run["technique"] ||
+                    other["map_size"] != run["map_size"])
+                    continue;
+                speedUp = fixed(other["frame_time_ms"]["median"].get<double>() /
+                                    run["frame_time_ms"]["median"].get<double>(),
+                                2) +
+                          "x";
+            }
+        }
+        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
+           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+           << (run["leave_out"].get<bool>() ? "on" : "off") << " | "
+           << fixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
+           << fixed(run["first_frame_ms"].get<double>(), 2) << " | " << work["passes_run"].get<int>() << " / "
+           << work["passes_left_out"].get<int>() << " | " << work["draws"].get<int>() << " | "
+           << work["culled"].get<int>() << " | " << work["triangles"].get<uint64_t>() << " | " << speedUp
+           << " |\n";
+    }
     md << "\n## Runtime CPU time (median per frame, ms)\n\n"
           "Script = interpreting the SAS scripts and the rest of the frame executor; binding = semantics and "
           "uniforms; preshader = pass arguments and state expressions; GL = inside the driver's draw/clear "
@@ -356,6 +392,16 @@ int benchCommand(const Arguments& args) {
         mapSizes.push_back(static_cast<int>(value));
     }
     const std::vector<std::string> techniqueFilter = splitList(args.value("--techniques"));
+    std::vector<bool> leaveOutModes;
+    for (const std::string& mode :
+         splitList(args.flag("--no-leave-out") ? "off" : args.value("--leave-out", "on"))) {
+        if (mode != "on" && mode != "off") {
+            std::cerr << "shadowfx bench: --leave-out expects on, off or on,off, got '" << mode << "'\n";
+            return 2;
+        }
+        leaveOutModes.push_back(mode == "on");
+    }
+    if (leaveOutModes.empty()) leaveOutModes.push_back(true);
     const int frames = args.intValue("--frames", 10);
     const int warmup = args.intValue("--warmup", 2);
     const int width = args.intValue("--width", 640);
@@ -486,7 +532,7 @@ int benchCommand(const Arguments& args) {
             for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
                 if (techniqueFilter.empty() || std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                          technique.name) != techniqueFilter.end())
-                    runCount += truths.size();
+                    runCount += truths.size() * leaveOutModes.size();
             }
             variants.emplace(std::make_pair(effect, mapSize), std::move(variant));
         }
@@ -524,119 +570,155 @@ int benchCommand(const Arguments& args) {
                     if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                               technique.name) == techniqueFilter.end())
                         continue;
-                    progress.show(effectName + " " + technique.name + " on " + t.scene.name + ", map " +
-                                  std::to_string(mapSize));
-                    runtime::FrameOptions options;
-                    options.width = width;
-                    options.height = height;
-                    options.technique = technique.name;
-                    options.timePasses = true;
+                    // Leave-out on before off: a frame without leave-out leaves maps that an "on" run's
+                    // first frame could reuse, and that first frame is meant to find nothing cached.
+                    for (const bool leaveOut : leaveOutModes) {
+                        progress.show(effectName + " " + technique.name + " on " + t.scene.name + ", map " +
+                                      std::to_string(mapSize) + (leaveOut ? "" : ", no leave-out"));
+                        runtime::FrameOptions options;
+                        options.width = width;
+                        options.height = height;
+                        options.technique = technique.name;
+                        options.timePasses = true;
+                        options.leaveOut = leaveOut;
+                        double firstFrameMs = 0.0;
 
-                    std::vector<double> frameMs, gpuMs, script, binding, preshader, gl, overhead;
-                    std::vector<std::vector<double>> passGpu, passCpu;
-                    std::vector<std::string> passNames;
-                    std::vector<int> passDraws;
-                    for (int frame = 0; frame < warmup + frames; ++frame) {
-                        runtime::FrameStats stats;
-                        const auto start = Clock::now();
-                        // With timePasses, render() returns once the GPU has finished the frame.
-                        if (!timed->render(t.scene, options, sink, &stats) || sink.errors() > 0) {
-                            progress.end();
-                            return 1;
-                        }
-                        const double wall =
-                            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-                        if (frame < warmup) continue;
-                        frameMs.push_back(wall);
-                        double gpu = 0.0;
-                        if (passNames.empty()) {
-                            for (const runtime::PassTiming& pass : stats.passTimings) {
-                                passNames.push_back(pass.pass);
-                                passDraws.push_back(pass.draws);
+                        std::vector<double> frameMs, gpuMs, script, binding, preshader, gl, overhead;
+                        std::vector<std::vector<double>> passGpu, passCpu;
+                        std::vector<std::string> passNames;
+                        std::vector<int> passDraws;
+                        for (int frame = 0; frame < warmup + frames; ++frame) {
+                            runtime::FrameStats stats;
+                            const auto start = Clock::now();
+                            // With timePasses, render() returns once the GPU has finished the frame.
+                            if (!timed->render(t.scene, options, sink, &stats) || sink.errors() > 0) {
+                                progress.end();
+                                return 1;
                             }
-                            passGpu.resize(passNames.size());
-                            passCpu.resize(passNames.size());
+                            const double wall =
+                                std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                            if (frame == 0) firstFrameMs = wall;
+                            if (frame < warmup) continue;
+                            frameMs.push_back(wall);
+                            double gpu = 0.0;
+                            if (passNames.empty()) {
+                                for (const runtime::PassTiming& pass : stats.passTimings) {
+                                    passNames.push_back(pass.pass);
+                                    passDraws.push_back(pass.draws);
+                                }
+                                passGpu.resize(passNames.size());
+                                passCpu.resize(passNames.size());
+                            }
+                            for (size_t p = 0; p < stats.passTimings.size() && p < passNames.size(); ++p) {
+                                passGpu[p].push_back(ms(stats.passTimings[p].gpuNs));
+                                passCpu[p].push_back(ms(stats.passTimings[p].cpuNs));
+                                gpu += ms(stats.passTimings[p].gpuNs);
+                            }
+                            gpuMs.push_back(gpu);
+                            script.push_back(ms(stats.cpu.scriptNs()));
+                            binding.push_back(ms(stats.cpu.bindingNs));
+                            preshader.push_back(ms(stats.cpu.preshaderNs));
+                            gl.push_back(ms(stats.cpu.glNs));
+                            overhead.push_back(
+                                ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
                         }
-                        for (size_t p = 0; p < stats.passTimings.size() && p < passNames.size(); ++p) {
-                            passGpu[p].push_back(ms(stats.passTimings[p].gpuNs));
-                            passCpu[p].push_back(ms(stats.passTimings[p].cpuNs));
-                            gpu += ms(stats.passTimings[p].gpuNs);
+                        const runtime::FrameImage shaded = timed->readFrame();
+                        // One more frame, untimed, counts what a frame like the timed ones writes (occlusion
+                        // queries would perturb the timing).
+                        runtime::FrameStats counted;
+                        {
+                            runtime::FrameOptions countOptions = options;
+                            countOptions.timePasses = false;
+                            countOptions.countTexels = true;
+                            if (!timed->render(t.scene, countOptions, sink, &counted) || sink.errors() > 0) {
+                                progress.end();
+                                return 1;
+                            }
                         }
-                        gpuMs.push_back(gpu);
-                        script.push_back(ms(stats.cpu.scriptNs()));
-                        binding.push_back(ms(stats.cpu.bindingNs));
-                        preshader.push_back(ms(stats.cpu.preshaderNs));
-                        gl.push_back(ms(stats.cpu.glNs));
-                        overhead.push_back(
-                            ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
-                    }
-                    const runtime::FrameImage shaded = timed->readFrame();
 
-                    Json record{{"effect", effect},
-                                {"effect_name", effectName},
-                                {"technique", technique.name},
-                                {"scene", t.scene.name},
-                                {"map_size", mapSize},
-                                {"map_size_honoured", variant.honoursMapSize},
-                                {"width", width},
-                                {"height", height},
-                                {"gl_renderer", glRenderer},
-                                {"frames", frames},
-                                {"warmup_frames", warmup},
-                                {"frame_time_ms", toJson(spreadOf(frameMs))},
-                                {"gpu_time_ms", toJson(spreadOf(gpuMs))}};
-                    Json passes = Json::array();
-                    for (size_t p = 0; p < passNames.size(); ++p) {
-                        passes.push_back(Json{{"name", passNames[p]},
-                                              {"gpu_ms", spreadOf(passGpu[p]).median},
-                                              {"cpu_ms", spreadOf(passCpu[p]).median},
-                                              {"draws", passDraws[p]}});
-                    }
-                    record["passes"] = passes;
-                    record["runtime_cpu_ms"] = Json{{"script", spreadOf(script).median},
-                                                    {"binding", spreadOf(binding).median},
-                                                    {"preshader", spreadOf(preshader).median},
-                                                    {"gl", spreadOf(gl).median},
-                                                    {"overhead", spreadOf(overhead).median}};
-                    record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
-                                              {"mean_texel_footprint_px", aliasing.meanFootprint},
-                                              {"p95_texel_footprint_px", aliasing.p95Footprint},
-                                              {"pixels", aliasing.pixels}};
-                    record["ground_truth"] =
-                        Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
-                    record["error"] = nullptr;
-                    record["error_image"] = nullptr;
-                    if (variant.exposesVisibility) {
-                        const std::optional<VisibilityScore> score =
-                            scoreVisibility(*visibility, t, t.truth, options, sink);
-                        if (!score || sink.errors() > 0) {
-                            progress.end();
-                            return 1;
+                        Json record{{"effect", effect},
+                                    {"effect_name", effectName},
+                                    {"technique", technique.name},
+                                    {"scene", t.scene.name},
+                                    {"map_size", mapSize},
+                                    {"map_size_honoured", variant.honoursMapSize},
+                                    {"width", width},
+                                    {"height", height},
+                                    {"gl_renderer", glRenderer},
+                                    {"frames", frames},
+                                    {"warmup_frames", warmup},
+                                    {"frame_time_ms", toJson(spreadOf(frameMs))},
+                                    {"gpu_time_ms", toJson(spreadOf(gpuMs))},
+                                    {"leave_out", leaveOut},
+                                    {"first_frame_ms", firstFrameMs},
+                                    {"work", Json{{"passes_run", counted.passesRun},
+                                                  {"passes_left_out", counted.passesLeftOut},
+                                                  {"draws", counted.draws},
+                                                  {"culled", counted.culled},
+                                                  {"triangles", counted.triangles}}}};
+                        Json passes = Json::array();
+                        for (size_t p = 0; p < passNames.size(); ++p) {
+                            Json pass{{"name", passNames[p]},
+                                      {"gpu_ms", spreadOf(passGpu[p]).median},
+                                      {"cpu_ms", spreadOf(passCpu[p]).median},
+                                      {"draws", passDraws[p]}};
+                            if (p < counted.passes.size()) {
+                                const runtime::PassStats& work = counted.passes[p];
+                                pass["left_out"] = work.leftOut;
+                                pass["culled"] = work.culled;
+                                pass["triangles"] = work.triangles;
+                                pass["texels_written"] = work.texelsWritten;
+                            }
+                            passes.push_back(std::move(pass));
                         }
-                        const std::vector<float>& effectVisibility = score->visibility;
-                        const runtime::ShadowErrors& errors = score->errors;
-                        record["error"] = Json{{"receiver_pixels", errors.receiverPixels},
-                                               {"false_shadow_pixels", errors.falseShadowPixels},
-                                               {"false_light_pixels", errors.falseLightPixels},
-                                               {"false_shadow_percent", errors.falseShadowPercent},
-                                               {"false_light_percent", errors.falseLightPercent},
-                                               {"misclassified_percent", errors.misclassifiedPercent},
-                                               {"mae", errors.meanAbsoluteError},
-                                               {"p95_abs_error", errors.p95AbsoluteError}};
-                        const std::string image = "errors/" +
-                                                  safeName(effectName + "_" + technique.name + "_" +
-                                                           t.scene.name + "_" + std::to_string(mapSize)) +
-                                                  ".png";
-                        std::string writeError;
-                        if (runtime::writePng(runtime::errorImage(shaded, t.truth.visibility,
-                                                                  effectVisibility, t.receivers),
-                                              (outDir / image).string(), writeError)) {
-                            record["error_image"] = image;
-                        } else {
-                            std::cerr << "\nbench: " << writeError << "\n";
+                        record["passes"] = passes;
+                        record["runtime_cpu_ms"] = Json{{"script", spreadOf(script).median},
+                                                        {"binding", spreadOf(binding).median},
+                                                        {"preshader", spreadOf(preshader).median},
+                                                        {"gl", spreadOf(gl).median},
+                                                        {"overhead", spreadOf(overhead).median}};
+                        record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
+                                                  {"mean_texel_footprint_px", aliasing.meanFootprint},
+                                                  {"p95_texel_footprint_px", aliasing.p95Footprint},
+                                                  {"pixels", aliasing.pixels}};
+                        record["ground_truth"] =
+                            Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
+                        record["error"] = nullptr;
+                        record["error_image"] = nullptr;
+                        if (variant.exposesVisibility) {
+                            runtime::FrameOptions visibilityOptions = options;
+                            visibilityOptions.timePasses = false;
+                            const std::optional<VisibilityScore> score =
+                                scoreVisibility(*visibility, t, t.truth, visibilityOptions, sink);
+                            if (!score || sink.errors() > 0) {
+                                progress.end();
+                                return 1;
+                            }
+                            const std::vector<float>& effectVisibility = score->visibility;
+                            const runtime::ShadowErrors& errors = score->errors;
+                            record["error"] = Json{{"receiver_pixels", errors.receiverPixels},
+                                                   {"false_shadow_pixels", errors.falseShadowPixels},
+                                                   {"false_light_pixels", errors.falseLightPixels},
+                                                   {"false_shadow_percent", errors.falseShadowPercent},
+                                                   {"false_light_percent", errors.falseLightPercent},
+                                                   {"misclassified_percent", errors.misclassifiedPercent},
+                                                   {"mae", errors.meanAbsoluteError},
+                                                   {"p95_abs_error", errors.p95AbsoluteError}};
+                            const std::string image = "errors/" +
+                                                      safeName(effectName + "_" + technique.name + "_" +
+                                                               t.scene.name + "_" + std::to_string(mapSize)) +
+                                                      ".png";
+                            std::string writeError;
+                            if (runtime::writePng(runtime::errorImage(shaded, t.truth.visibility,
+                                                                      effectVisibility, t.receivers),
+                                                  (outDir / image).string(), writeError)) {
+                                record["error_image"] = image;
+                            } else {
+                                std::cerr << "\nbench: " << writeError << "\n";
+                            }
                         }
+                        runs.push_back(std::move(record));
                     }
-                    runs.push_back(std::move(record));
                 }
             }
         }
@@ -663,7 +745,8 @@ int benchCommand(const Arguments& args) {
                                  {"width", width},
                                  {"height", height},
                                  {"area_samples", truthOptions.areaSamples},
-                                 {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)}}},
+                                 {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
+                                 {"leave_out", leaveOutModes}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};
     {

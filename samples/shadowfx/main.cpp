@@ -126,6 +126,8 @@ int renderCommand(const Arguments& args) {
     frame.width = width;
     frame.height = height;
     frame.technique = args.value("--technique");
+    frame.leaveOut = !args.flag("--no-leave-out");
+    frame.countTexels = args.flag("--stats");
     runtime::FrameStats stats;
     if (!renderer->render(*scene, frame, sink, &stats) || sink.errors() > 0) return 1;
 
@@ -137,7 +139,18 @@ int renderCommand(const Arguments& args) {
     }
     if (args.flag("--stats") || verbose) {
         std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws, "
-                  << stats.triangles << " triangles, " << stats.clears << " clears\n";
+                  << stats.triangles << " triangles, " << stats.clears << " clears";
+        std::cerr << " (leave-out " << (frame.leaveOut ? "on" : "off") << ": " << stats.passesLeftOut
+                  << " passes left out, " << stats.culled << " objects culled)\n";
+    }
+    if (args.flag("--stats")) {
+        for (const runtime::PassStats& pass : stats.passes) {
+            std::cerr << "  pass " << pass.pass << ": "
+                      << (pass.leftOut.empty() ? std::string("ran") : "left out (" + pass.leftOut + ")")
+                      << ", " << pass.draws << " draws, " << pass.culled << " culled, " << pass.triangles
+                      << " triangles, " << pass.clears << " clears, " << pass.texelsWritten
+                      << " texels written\n";
+        }
     }
     std::cout << out << "\n";
     return 0;
@@ -195,16 +208,18 @@ const shadowfx::cli::Command kCommands[] = {
      "  --width W, --height H image size (default 800x600)\n"
      "  --technique NAME      technique to run (default: the effect's STANDARDSGLOBAL choice, else the "
      "first)\n"
-     "  --scene NAME|FILE     built-in scene (boxes, torus, teapot, dual-l, double-torus, forest, behind,\n"
+     "  --scene NAME|FILE     built-in scene (boxes, torus, teapot, dual-l, double-torus, forest, "
+     "forest-fifth, behind,\n"
      "                        bunny, horse, spider, engine; default boxes) or a scene file (.json)\n"
      "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
      "  --backend NAME        auto, osmesa or egl (default auto)\n"
      "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
-     "  --stats               print passes, draws and triangles\n"
+     "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
+     "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
      "  --verbose             print the GL renderer and notes\n",
      {"--out"},
      {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
-     {"--stats", "--verbose"},
+     {"--stats", "--verbose", "--no-leave-out"},
      renderCommand},
     {"compile",
      "print the generated GLSL of every pass, or the diagnostics",
@@ -228,8 +243,8 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kBenchUsage,
      {"--out"},
      {"--effects", "--scenes", "--map-sizes", "--techniques", "--frames", "--warmup", "--width", "--height",
-      "--area-samples", "--area-radius", "--backend", "--set", "-I", "-D"},
-     {},
+      "--area-samples", "--area-radius", "--backend", "--set", "-I", "-D", "--leave-out"},
+     {"--no-leave-out"},
      shadowfx::cli::benchCommand,
      -1},
     {"check",

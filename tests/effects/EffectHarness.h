@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace shadowfx::test {
 
@@ -58,13 +59,15 @@ inline std::unique_ptr<runtime::EffectRenderer> loadEffect(const std::string& fi
     return renderer;
 }
 
+// `outputs`: render targets the test reads back (FrameOptions::outputTargets), kept by leave-out.
 inline bool render(runtime::EffectRenderer& renderer, const runtime::Scene& scene, int width, int height,
-                   const std::string& technique = "") {
+                   const std::string& technique = "", const std::vector<std::string>& outputs = {}) {
     fx::DiagnosticList diagnostics;
     runtime::FrameOptions options;
     options.width = width;
     options.height = height;
     options.technique = technique;
+    options.outputTargets = outputs;
     const bool ok = renderer.render(scene, options, diagnostics);
     EXPECT_TRUE(ok && !diagnostics.hasErrors()) << diagnostics.str();
     return ok;

@@ -109,7 +109,7 @@ technique t
 )",
                                false);
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, emptyScene(), 32, 32));
+    ASSERT_TRUE(render(*renderer, emptyScene(), 32, 32, "", {"Target"}));
     int width = 0, height = 0, channels = 0;
     auto target = renderer->readTarget("Target", &width, &height, &channels);
     ASSERT_TRUE(target);
@@ -143,7 +143,7 @@ technique t
 )",
                                false);
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, emptyScene(), 8, 8));
+    ASSERT_TRUE(render(*renderer, emptyScene(), 8, 8, "", {"Target"}));
     int width = 0, height = 0, channels = 0;
     auto target = renderer->readTarget("Target", &width, &height, &channels);
     ASSERT_TRUE(target);
@@ -174,7 +174,7 @@ technique t < string Script = "RenderColorTarget0=LightPort; RenderPort=light0; 
 )",
                                false);
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, emptyScene(), 8, 8));
+    ASSERT_TRUE(render(*renderer, emptyScene(), 8, 8, "", {"LightPort", "CameraPort"}));
     int width = 0, height = 0, channels = 0;
     auto lightPort = renderer->readTarget("LightPort", &width, &height, &channels);
     auto cameraPort = renderer->readTarget("CameraPort", &width, &height, &channels);

@@ -34,6 +34,9 @@ struct UniformBinding {
     // HLSL's default column_major packing), false if each HLSL row is. The runtime packs Value::data
     // (HLSL rows) accordingly.
     bool hlslColumnsContiguous = true;
+    // False if the stage's code never reads the member (glslang keeps every global in the block): the
+    // runtime neither packs nor binds it (SPIRV-Cross's active buffer ranges).
+    bool active = true;
 };
 
 struct SamplerBinding {

@@ -27,6 +27,31 @@ struct FrameOptions {
     // runtime's own CPU time into FrameStats::cpu. render() then waits for the GPU to finish the frame, so
     // its wall time is the frame's; normal renders leave it off and pay for no queries.
     bool timePasses = false;
+    // Leave out what the scene does not need (README, "Leave-out"): draws culled per pass through a BVH
+    // (camera passes to the view frustum, light passes to the casters whose shadow can reach what the
+    // camera sees), passes whose writes nobody reads, light passes whose targets would come out as last
+    // frame's, per-frame semantics bound per pass instead of per draw. The image is the same either way.
+    bool leaveOut = true;
+    // Count the fragments each pass writes (GL_SAMPLES_PASSED queries) into PassStats::texelsWritten;
+    // clears count their targets' texels either way.
+    bool countTexels = false;
+    // Render targets the caller reads after the frame (readTarget): outputs like the frame's colour, so
+    // leave-out keeps the passes that write them.
+    std::vector<std::string> outputTargets;
+};
+
+// What one executed Pass= did (a pass run by a LoopByCount appears once per iteration).
+struct PassStats {
+    std::string pass;
+    bool lightPort = false;  // RenderPort names a light
+    std::string leftOut;     // "" ran; "dead" (nothing reads its writes), "cached" (targets kept from the
+                             // last frame), "scene" (its LeaveOutWhen holds), or several joined by "+" in
+                             // that order; a pass with only some operations left out ran
+    int draws = 0;
+    int culled = 0;  // objects a Draw=Geometry left out
+    uint64_t triangles = 0;
+    int clears = 0;
+    uint64_t texelsWritten = 0;  // cleared texels + fragments drawn (the latter with countTexels)
 };
 
 // One executed pass of a timed frame (FrameOptions::timePasses); a pass run by a LoopByCount appears once
@@ -57,6 +82,9 @@ struct FrameStats {
     int draws = 0;
     uint64_t triangles = 0;
     int clears = 0;
+    int culled = 0;         // objects left out of Draw=Geometry commands
+    int passesLeftOut = 0;  // Pass= commands none of whose clears and draws ran (PassStats::leftOut)
+    std::vector<PassStats> passes;
     std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
     FrameCpuTime cpu;                     // only with FrameOptions::timePasses
 };

@@ -103,6 +103,7 @@ float nearestDepthFrom(const Scene& scene, const Light& light);
 // centre of the bounds when the scene lies more than 16 bounding radii from the world origin, else zero
 // (no copy, no change).
 glm::vec3 renderOrigin(const Scene& scene);
+glm::vec3 renderOrigin(const Bounds& sceneBounds);  // the same, from the scene's bounds
 
 // Built-in scenes: "boxes" (a ground plane with a box and a sphere, a directional light from above at an
 // angle), "torus" (a torus standing on a plane, spot light), "teapot" (Newell's teapot on a plane), then

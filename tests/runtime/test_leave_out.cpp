@@ -1,0 +1,453 @@
+// Leave-out (FrameOptions::leaveOut): what it leaves out must never change the image.
+// - InstanceBvh queries return exactly what a brute-force test of every box returns;
+// - the intersection body B's light-space region contains every point of frustum ∩ bounds;
+// - frames with and without leave-out are identical, byte for byte, for the thesis effect's techniques
+//   (plain, PCF, jittered, hardware) and directional and spot lights, with a camera that sees part of a
+//   grid of boxes, while culling really removes objects from camera and light passes;
+// - a pass whose target nobody reads is left out (and the target not allocated); a light pass is reused when
+// only the camera moved
+//   and rerun when the light moved, every frame identical to a frame without leave-out;
+// - the per-pass counts add up.
+#include "../../runtime/src/FramePlan.h"
+#include "../../runtime/src/InstanceBvh.h"
+#include "../../runtime/src/IntersectionBody.h"
+#include "effects/EffectHarness.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstring>
+#include <random>
+
+namespace {
+
+using namespace runtime;
+using shadowfx::test::loadEffect;
+using shadowfx::test::notConstant;
+using shadowfx::test::sourcePath;
+
+std::vector<Aabb> randomBoxes(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<float> position(-50.0f, 50.0f), size(0.1f, 4.0f);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 lo(position(rng), position(rng) * 0.2f, position(rng));
+        boxes.push_back({lo, lo + glm::vec3(size(rng), size(rng), size(rng))});
+    }
+    return boxes;
+}
+
+glm::mat4 cameraViewProjection(glm::vec3 eye, glm::vec3 target, float fovDegrees, float farPlane) {
+    return glm::perspectiveLH_ZO(glm::radians(fovDegrees), 4.0f / 3.0f, 0.1f, farPlane) *
+           glm::lookAtLH(eye, target, glm::vec3(0, 1, 0));
+}
+
+TEST(InstanceBvh, QueriesMatchBruteForce) {
+    std::mt19937 rng(7);
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<Aabb> boxes = randomBoxes(rng, 1 + trial * 97);
+        std::vector<bool> present(boxes.size(), true);
+        present[0] = trial % 2 == 0;  // an object without a mesh is never reported
+        const InstanceBvh bvh(boxes, present);
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+        const glm::vec3 eye(unit(rng) * 60, unit(rng) * 10 + 15, unit(rng) * 60);
+        const glm::mat4 viewProjection =
+            cameraViewProjection(eye, glm::vec3(unit(rng) * 20, 0, unit(rng) * 20), 50.0f, 60.0f);
+        const ConvexVolume frustum = frustumPlanes(viewProjection);
+        const auto frustumTest = [&](const Aabb& box) { return overlapVolume(frustum, box); };
+
+        const glm::mat4 light = glm::orthoLH_ZO(-60.0f, 60.0f, -60.0f, 60.0f, 0.0f, 200.0f) *
+                                glm::lookAtLH(glm::vec3(40, 80, -30), glm::vec3(0), glm::vec3(0, 1, 0));
+        const ReceiverRegion region = receiverRegion(
+            intersectionBodyPoints(viewProjection, Bounds{glm::vec3(-50, -10, -50), glm::vec3(55, 15, 55)}),
+            light, glm::vec2(1024), 4.0f);
+        const auto casterTest = [&](const Aabb& box) { return casterReaches(region, light, box); };
+
+        for (int which = 0; which < 2; ++which) {
+            std::vector<uint32_t> found, expected;
+            if (which == 0) {
+                bvh.query(frustumTest, found);
+            } else {
+                bvh.query(casterTest, found);
+            }
+            for (uint32_t i = 0; i < boxes.size(); ++i) {
+                const Overlap overlap = which == 0 ? frustumTest(boxes[i]) : casterTest(boxes[i]);
+                if (present[i] && overlap != Overlap::Outside) expected.push_back(i);
+            }
+            EXPECT_EQ(found, expected) << "trial " << trial << (which == 0 ? " frustum" : " casters");
+        }
+    }
+}
+
+// Every point of frustum ∩ bounds projects into the receiver region; a box around such a point, or
+// between it and the light, is never rejected.
+TEST(IntersectionBody, RegionContainsEveryPointOfFrustumAndBounds) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const Bounds bounds{glm::vec3(-20, 0, -20), glm::vec3(20, 6, 20)};
+    const glm::mat4 viewProjection = cameraViewProjection(glm::vec3(-25, 3, -25), glm::vec3(0, 0, 5), 60, 30);
+    const glm::vec3 toLight = glm::normalize(glm::vec3(0.5f, 1.0f, -0.3f));
+    const glm::mat4 light = glm::orthoLH_ZO(-40.0f, 40.0f, -40.0f, 40.0f, 0.0f, 120.0f) *
+                            glm::lookAtLH(toLight * 60.0f, glm::vec3(0), glm::vec3(0, 1, 0));
+    const std::vector<glm::vec3> body = intersectionBodyPoints(viewProjection, bounds);
+    ASSERT_GE(body.size(), 4u);
+    const ReceiverRegion region = receiverRegion(body, light, glm::vec2(2048), 0.0f);
+    ASSERT_FALSE(region.full);
+    // The region is a real restriction: it covers less than the whole map.
+    EXPECT_LT((region.max.x - region.min.x) * (region.max.y - region.min.y), 4.0f * 0.8f);
+    int inside = 0;
+    for (int i = 0; i < 200000 && inside < 2000; ++i) {
+        const glm::vec3 p =
+            bounds.min + (bounds.max - bounds.min) * glm::vec3(unit(rng), unit(rng), unit(rng));
+        const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+        if (clip.w <= 0 || std::abs(clip.x) > clip.w || std::abs(clip.y) > clip.w || clip.z < 0 ||
+            clip.z > clip.w)
+            continue;
+        ++inside;
+        const glm::vec4 l = light * glm::vec4(p, 1.0f);
+        ASSERT_GE(l.x, region.min.x - 1e-5f);
+        ASSERT_LE(l.x, region.max.x + 1e-5f);
+        ASSERT_GE(l.y, region.min.y - 1e-5f);
+        ASSERT_LE(l.y, region.max.y + 1e-5f);
+        ASSERT_LE(l.z, region.maxDepth);
+        // A small caster between the receiver and the light reaches it.
+        const glm::vec3 caster = p + toLight * 3.0f;
+        EXPECT_NE(casterReaches(region, light, Aabb{caster - 0.01f, caster + 0.01f}), Overlap::Outside);
+    }
+    EXPECT_GT(inside, 500);
+    // A caster far below everything the camera sees (beyond B, away from the light) casts on nothing seen.
+    const glm::vec3 below = glm::vec3(0, 0, 5) - toLight * 50.0f;
+    EXPECT_EQ(casterReaches(region, light, Aabb{below - 0.5f, below + 0.5f}), Overlap::Outside);
+}
+
+// A 24 x 24 grid of boxes on a plane; the camera at one corner sees part of it.
+Scene gridScene(Light::Type lightType) {
+    Scene scene;
+    scene.name = "grid";
+    auto ground = std::make_shared<const Mesh>(makePlane(60.0f, 60.0f, 4));
+    auto box = std::make_shared<const Mesh>(makeBox(glm::vec3(0.8f, 2.0f, 0.8f)));
+    SceneObject plane;
+    plane.name = "ground";
+    plane.mesh = ground;
+    plane.id = 1;
+    scene.objects.push_back(plane);
+    for (int i = 0; i < 24; ++i) {
+        for (int j = 0; j < 24; ++j) {
+            SceneObject object;
+            object.name = "box";
+            object.mesh = box;
+            object.world =
+                glm::translate(glm::mat4(1.0f), glm::vec3(-27.5f + 2.4f * i, 1.0f, -27.5f + 2.4f * j));
+            object.color = glm::vec3(0.3f + 0.02f * i, 0.5f, 0.3f + 0.02f * j);
+            object.id = static_cast<uint32_t>(scene.objects.size() + 1);
+            scene.objects.push_back(object);
+        }
+    }
+    scene.camera.position = glm::vec3(-26.0f, 6.0f, -26.0f);
+    scene.camera.target = glm::vec3(-12.0f, 0.0f, -16.0f);
+    scene.camera.farPlane = 30.0f;
+    Light light;
+    light.type = lightType;
+    if (lightType == Light::Type::Directional) {
+        light.direction = glm::normalize(glm::vec3(0.6f, -0.5f, 0.45f));
+    } else {
+        light.position = glm::vec3(-40.0f, 25.0f, -35.0f);
+        light.direction = glm::normalize(glm::vec3(0.0f) - light.position);
+        light.spotAngle = glm::radians(80.0f);
+    }
+    scene.lights.push_back(light);
+    return scene;
+}
+
+struct Frame {
+    FrameImage image;
+    FrameStats stats;
+};
+
+Frame renderFrame(EffectRenderer& renderer, const Scene& scene, const std::string& technique, bool leaveOut) {
+    FrameOptions options;
+    options.width = 320;
+    options.height = 240;
+    options.technique = technique;
+    options.leaveOut = leaveOut;
+    options.countTexels = true;
+    fx::DiagnosticList diagnostics;
+    Frame frame;
+    EXPECT_TRUE(renderer.render(scene, options, diagnostics, &frame.stats)) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    frame.image = renderer.readFrame();
+    return frame;
+}
+
+const PassStats* findPass(const FrameStats& stats, const std::string& name) {
+    for (const PassStats& pass : stats.passes)
+        if (pass.pass == name) return &pass;
+    return nullptr;
+}
+
+size_t differingPixels(const FrameImage& a, const FrameImage& b) {
+    if (a.rgba.size() != b.rgba.size()) return std::max(a.rgba.size(), b.rgba.size()) / 4;
+    size_t differing = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4)
+        differing += std::memcmp(&a.rgba[i], &b.rgba[i], 4) != 0 ? 1 : 0;
+    return differing;
+}
+
+struct Case {
+    const char* technique;
+    const char* settings;  // PCF / JITTER
+    Light::Type light;
+};
+
+class LeaveOutImage : public ::testing::TestWithParam<Case> {};
+
+TEST_P(LeaveOutImage, IsIdenticalAndCulls) {
+    const Case c = GetParam();
+    auto withLeaveOut = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    auto without = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(withLeaveOut && without);
+    fx::DiagnosticList diagnostics;
+    for (EffectRenderer* renderer : {withLeaveOut.get(), without.get()}) {
+        ASSERT_TRUE(renderer->setParameterFromText("PCF", std::strchr(c.settings, 'P') ? "true" : "false",
+                                                   diagnostics));
+        ASSERT_TRUE(renderer->setParameterFromText("JITTER", std::strchr(c.settings, 'J') ? "true" : "false",
+                                                   diagnostics));
+    }
+    const Scene scene = gridScene(c.light);
+    const Frame culled = renderFrame(*withLeaveOut, scene, c.technique, true);
+    const Frame full = renderFrame(*without, scene, c.technique, false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+
+    const std::string lightPass =
+        std::string(c.technique) == "main" ? "RenderShadowMap" : "RenderShadowDepth";
+    const PassStats* camera = findPass(culled.stats, "RenderScene");
+    const PassStats* light = findPass(culled.stats, lightPass);
+    ASSERT_TRUE(camera && light);
+    const int objects = static_cast<int>(scene.objects.size());
+    EXPECT_EQ(camera->draws + camera->culled, objects);
+    EXPECT_EQ(light->draws + light->culled, objects);
+    EXPECT_GT(camera->culled, objects / 3) << "the camera sees part of the grid";
+    EXPECT_GT(light->culled, 0) << "casters that shadow nothing in view are left out";
+    EXPECT_LT(camera->draws, light->draws) << "casters outside the view still shadow what is in view";
+    // Without leave-out every pass draws every object.
+    EXPECT_EQ(full.stats.culled, 0);
+    EXPECT_EQ(findPass(full.stats, lightPass)->draws, objects);
+    EXPECT_LT(culled.stats.triangles, full.stats.triangles);
+}
+
+INSTANTIATE_TEST_SUITE_P(ThesisEffect, LeaveOutImage,
+                         ::testing::Values(Case{"main", "", Light::Type::Directional},
+                                           Case{"main", "P", Light::Type::Directional},
+                                           Case{"main", "PJ", Light::Type::Directional},
+                                           Case{"hardware", "", Light::Type::Directional},
+                                           Case{"main", "P", Light::Type::Spot},
+                                           Case{"hardware", "", Light::Type::Spot}));
+
+// The shadow map is reused while only the camera moves, rerun when the light, an object or a parameter
+// the light pass reads changes, and every frame equals the frame without leave-out.
+class ShadowMapCache : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ShadowMapCache, ReusedOnlyWhileUnchanged) {
+    const std::string technique = GetParam();
+    const std::string mapPass = technique == "main" ? "RenderShadowMap" : "RenderShadowDepth";
+    auto withLeaveOut = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    auto without = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(withLeaveOut && without);
+    Scene scene = gridScene(Light::Type::Directional);
+    const auto step = [&](const char* what) {
+        const Frame culled = renderFrame(*withLeaveOut, scene, technique, true);
+        const Frame full = renderFrame(*without, scene, technique, false);
+        EXPECT_EQ(differingPixels(culled.image, full.image), 0u) << what;
+        return culled;
+    };
+    const auto mapState = [&](const Frame& frame) { return findPass(frame.stats, mapPass)->leftOut; };
+    Frame first = step("first frame");
+    EXPECT_EQ(mapState(first), "");
+
+    Frame same = step("same frame again");
+    EXPECT_EQ(mapState(same), "cached");
+    EXPECT_EQ(findPass(same.stats, mapPass)->draws, 0);
+    EXPECT_EQ(findPass(same.stats, "RenderScene")->leftOut, "");
+    const int lightPasses = technique == "main" ? 2 : 1;  // main clears the map in a pass of its own
+    EXPECT_EQ(same.stats.passesLeftOut, lightPasses);
+    EXPECT_EQ(same.stats.passesRun, 1);
+
+    // The camera turns to receivers outside the first frame's region: the map is redrawn once, for the
+    // whole light frustum, and then serves every viewpoint.
+    scene.camera.target = glm::vec3(10.0f, 0.0f, 20.0f);
+    Frame turned = step("camera turned");
+    EXPECT_EQ(mapState(turned), "");
+    scene.camera.position = glm::vec3(20.0f, 8.0f, -20.0f);
+    scene.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
+    Frame moved = step("camera moved");
+    EXPECT_EQ(mapState(moved), "cached");
+
+    scene.lights[0].direction = glm::normalize(glm::vec3(-0.5f, -0.6f, 0.4f));
+    EXPECT_EQ(mapState(step("light moved")), "");
+
+    scene.objects[5].world = glm::translate(scene.objects[5].world, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_EQ(mapState(step("object moved")), "");
+    EXPECT_EQ(mapState(step("nothing moved")), "cached");
+
+    // Bias is read by the scene pass only: the map stays.
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(withLeaveOut->setParameterFromText("Bias", "0.01", diagnostics));
+    ASSERT_TRUE(without->setParameterFromText("Bias", "0.01", diagnostics));
+    EXPECT_EQ(mapState(step("a parameter only the scene pass reads changed")), "cached");
+}
+
+INSTANTIATE_TEST_SUITE_P(ThesisEffect, ShadowMapCache, ::testing::Values("main", "hardware"));
+
+// A pass that renders into a target nobody samples, and a clear of a second, unread target.
+constexpr const char* kDeadPassEffect = R"(
+float4x4 WorldViewProjection : WorldViewProjection;
+float3 Color : Diffuse;
+texture Unread : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; string Format = "A8R8G8B8"; >;
+struct VsOut { float4 position : POSITION; };
+VsOut Vs(float4 position : POSITION) { VsOut o; o.position = mul(float4(position.xyz, 1), WorldViewProjection); return o; }
+float4 Ps() : COLOR { return float4(Color, 1); }
+technique t < string Script = "Pass=Scratch; Pass=Scene;"; > {
+    pass Scratch < string Script = "RenderColorTarget0=Unread; RenderDepthStencilTarget=; Clear=Color; Draw=Geometry;"; > {
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+    }
+    pass Scene < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=; Clear=Color; Clear=Depth; Draw=Geometry;"; > {
+        ZEnable = true; ZWriteEnable = true;
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+    }
+}
+)";
+
+TEST(LeaveOut, PassWhoseTargetNobodyReadsIsSkipped) {
+    auto withLeaveOut = loadEffect(kDeadPassEffect, false, "dead_pass.fx");
+    auto without = loadEffect(kDeadPassEffect, false, "dead_pass.fx");
+    ASSERT_TRUE(withLeaveOut && without);
+    const Scene scene = gridScene(Light::Type::Directional);
+    const Frame culled = renderFrame(*withLeaveOut, scene, "", true);
+    const Frame full = renderFrame(*without, scene, "", false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+    EXPECT_EQ(findPass(culled.stats, "Scratch")->leftOut, "dead");
+    EXPECT_EQ(findPass(culled.stats, "Scratch")->draws, 0);
+    EXPECT_EQ(findPass(culled.stats, "Scene")->leftOut, "");
+    EXPECT_EQ(findPass(full.stats, "Scratch")->leftOut, "");
+    EXPECT_EQ(findPass(full.stats, "Scratch")->draws, static_cast<int>(scene.objects.size()));
+    EXPECT_EQ(culled.stats.passesLeftOut, 1);
+    EXPECT_EQ(culled.stats.passesRun, 1);
+    // Nothing that runs uses the target: it is not even allocated.
+    EXPECT_FALSE(withLeaveOut->readTarget("Unread", nullptr, nullptr, nullptr).has_value());
+    EXPECT_TRUE(without->readTarget("Unread", nullptr, nullptr, nullptr).has_value());
+}
+
+// Totals are the sums of the per-pass records; triangles are the drawn meshes'; texels written count
+// clears and fragments.
+TEST(LeaveOut, StatsAddUp) {
+    auto renderer = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(renderer);
+    const Scene scene = gridScene(Light::Type::Directional);
+    for (const bool leaveOut : {true, false}) {
+        const Frame frame = renderFrame(*renderer, scene, "hardware", leaveOut);
+        int draws = 0, culled = 0, clears = 0;
+        uint64_t triangles = 0;
+        for (const PassStats& pass : frame.stats.passes) {
+            draws += pass.draws;
+            culled += pass.culled;
+            clears += pass.clears;
+            triangles += pass.triangles;
+            EXPECT_GT(pass.texelsWritten, 0u) << pass.pass;
+        }
+        EXPECT_EQ(draws, frame.stats.draws);
+        EXPECT_EQ(culled, frame.stats.culled);
+        EXPECT_EQ(clears, frame.stats.clears);
+        EXPECT_EQ(triangles, frame.stats.triangles);
+        // Every object but the ground is the same box: the triangles are the drawn boxes' and grounds'.
+        const uint64_t boxTriangles = scene.objects[1].mesh->triangleCount();
+        const uint64_t groundTriangles = scene.objects[0].mesh->triangleCount();
+        EXPECT_EQ((triangles - 2 * groundTriangles) % boxTriangles, 0u) << "both passes draw the ground";
+        EXPECT_EQ(frame.stats.passesRun + frame.stats.passesLeftOut,
+                  static_cast<int>(frame.stats.passes.size()));
+        const PassStats* scenePass = findPass(frame.stats, "RenderScene");
+        ASSERT_TRUE(scenePass);
+        EXPECT_GE(scenePass->texelsWritten, 2u * 320 * 240) << "colour and depth cleared";
+    }
+}
+
+}  // namespace
+
+// Scene-driven choices: a pass annotated LeaveOutWhen = "NoClosedObjects" runs only where some mesh is
+// closed, and the SceneHasClosedObjects / LightAreaRadius semantics tell the shaders the same.
+constexpr const char* kSceneDrivenEffect = R"(
+float4x4 WorldViewProjection : WorldViewProjection;
+bool HasClosed : SceneHasClosedObjects;
+float AreaRadius : LightAreaRadius;
+struct VsOut { float4 position : POSITION; };
+VsOut Vs(float4 position : POSITION) { VsOut o; o.position = mul(float4(position.xyz, 1), WorldViewProjection); return o; }
+float4 Ps() : COLOR { return float4(HasClosed ? 0 : 1, HasClosed ? 1 : 0, AreaRadius * 10, 1); }
+float4 Blue() : COLOR { return float4(0, 0, 1, 1); }
+technique t < string Script = "Pass=Scene; Pass=SecondLayer;"; > {
+    pass Scene < string Script = "Clear=Color; Clear=Depth; Draw=Geometry;"; > {
+        ZEnable = true; ZWriteEnable = true;
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+    }
+    pass SecondLayer < string Script = "Draw=Geometry;"; string LeaveOutWhen = "NoClosedObjects"; > {
+        ZEnable = true; ZFunc = LessEqual;
+        VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Blue();
+    }
+}
+)";
+
+TEST(LeaveOut, SceneDrivenChoices) {
+    auto renderer = loadEffect(kSceneDrivenEffect, false, "scene_driven.fx");
+    ASSERT_TRUE(renderer);
+    Scene closed = gridScene(Light::Type::Directional);
+    closed.lights[0].areaRadius = 0.05f;
+    Scene open = closed;
+    open.objects.resize(1);  // the ground plane only: not closed
+    const FrameImage* image = nullptr;
+
+    const Frame withBoxes = renderFrame(*renderer, closed, "", true);
+    EXPECT_EQ(findPass(withBoxes.stats, "SecondLayer")->leftOut, "");
+    image = &withBoxes.image;
+    const uint8_t* centre = image->pixel(image->width / 2, image->height * 3 / 4);
+    EXPECT_EQ(centre[2], 255) << "the second pass drew over the first";
+
+    const Frame planeOnly = renderFrame(*renderer, open, "", true);
+    EXPECT_EQ(findPass(planeOnly.stats, "SecondLayer")->leftOut, "scene");
+    image = &planeOnly.image;
+    centre = image->pixel(image->width / 2, image->height * 3 / 4);
+    EXPECT_EQ(centre[0], 255) << "SceneHasClosedObjects is false: red";
+    EXPECT_EQ(centre[1], 0);
+    EXPECT_NEAR(centre[2], 0.5 * 255, 1.5) << "LightAreaRadius 0.05 x 10";
+
+    // Without leave-out the pass runs whatever the scene.
+    const Frame full = renderFrame(*renderer, open, "", false);
+    EXPECT_EQ(findPass(full.stats, "SecondLayer")->leftOut, "");
+}
+
+// A camera-port pass that projects with the light's matrices (no RenderPort) draws the light's view: the
+// camera's frustum says nothing about it, so it is not culled, and the image stays the same.
+constexpr const char* kLightViewFromCameraPort = R"(
+float4x4 World : World;
+float4x4 LightView : View < string frustum = "light0"; >;
+float4x4 LightProjection : Projection < string frustum = "light0"; >;
+float3 Color : Diffuse;
+struct VsOut { float4 position : POSITION; };
+VsOut Vs(float4 position : POSITION) {
+    VsOut o; o.position = mul(mul(mul(float4(position.xyz, 1), World), LightView), LightProjection); return o;
+}
+float4 Ps() : COLOR { return float4(Color, 1); }
+technique t { pass p < string Script = "Clear=Color; Clear=Depth; Draw=Geometry;"; > {
+    ZEnable = true; ZWriteEnable = true;
+    VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps();
+} }
+)";
+
+TEST(LeaveOut, PassProjectingWithOtherMatricesIsNotCulled) {
+    auto withLeaveOut = loadEffect(kLightViewFromCameraPort, false, "light_view.fx");
+    auto without = loadEffect(kLightViewFromCameraPort, false, "light_view.fx");
+    ASSERT_TRUE(withLeaveOut && without);
+    const Scene scene = gridScene(Light::Type::Directional);
+    const Frame culled = renderFrame(*withLeaveOut, scene, "", true);
+    const Frame full = renderFrame(*without, scene, "", false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+    EXPECT_EQ(culled.stats.culled, 0);
+}
