@@ -161,7 +161,7 @@ sampler S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT;
     ASSERT_EQ(channels, 4);
     const float expected[] = {2.0f, 1.0f, 0.5f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f};
     for (int i = 0; i < 8; ++i) EXPECT_FLOAT_EQ((*texels)[size_t(i)], expected[i]) << i;
-    ASSERT_TRUE(render(*renderer, boxes(), 8, 8));
+    ASSERT_TRUE(render(*renderer, boxes(), 8, 8, "", {"A", "B", "C", "D"}));
 }
 
 TEST_F(FileTextures, MissingFileIsAnErrorAtTheResourceName) {
@@ -241,7 +241,7 @@ struct Outputs { float4 a : COLOR0; float4 b : COLOR1; float4 c : COLOR2; float4
         "Draw=Buffer;");
     auto renderer = loadEffect(source, false);
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, boxes(), 8, 8));
+    ASSERT_TRUE(render(*renderer, boxes(), 8, 8, "", {"A", "B", "C", "D"}));
     int width = 0, height = 0, channels = 0;
     auto a = renderer->readTarget("A", &width, &height, &channels);
     ASSERT_TRUE(a);
