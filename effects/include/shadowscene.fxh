@@ -4,8 +4,8 @@
 //
 // The shadow-map pass writes light clip-space depth z/w in [0, 1] (for directional lights, whose projection
 // is orthographic, w = 1 and z is linear in distance; for spot lights the division is per pixel, since
-// z/w does not interpolate linearly: `shadowfx stress`, case spot-inside-bounds). The scene pass hands its pixel shader the receiver's
-// light clip position (LP), its world normal and the direction to the light.
+// z/w does not interpolate linearly: `shadowfx stress`, case spot-inside-bounds). The scene pass hands its
+// pixel shader the receiver's light clip position (LP), its world normal and the direction to the light.
 #ifndef SHADOWFX_SHADOWSCENE_FXH
 #define SHADOWFX_SHADOWSCENE_FXH
 

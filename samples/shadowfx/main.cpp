@@ -4,12 +4,10 @@
 //   shadowfx render EFFECT.fx --out FILE.png [options]   render one frame headlessly
 //   shadowfx compile EFFECT.fx [--technique NAME]        print the generated GLSL, or the diagnostics
 //   shadowfx info EFFECT.fx                              list techniques, passes and parameters
-//   shadowfx bench --effects A.fx,B.fx --out DIR [...]  error against ground truth and frame time
-//   (BenchCommand.cpp) shadowfx view EFFECT.fx [...]                        window with hot reload and
-//   parameters (ViewCommand.cpp)
-//   shadowfx check EFFECT.fx [...]                       conformance: expectations, goldens, JUnit
-//   (CheckCommand.cpp)
-//   shadowfx stress [EFFECT.fx ...] [--reduced]           extreme configurations (StressCommand.cpp)
+//   shadowfx bench --effects A.fx,B.fx --out DIR [...]   shadow error and frame time (BenchCommand)
+//   shadowfx check EFFECT.fx [...]                       expectations, goldens, JUnit (CheckCommand)
+//   shadowfx stress [EFFECT.fx ...] [--reduced]          extreme configurations (StressCommand)
+//   shadowfx view EFFECT.fx [...]                        window, hot reload, parameters (ViewCommand)
 #include "BenchCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
