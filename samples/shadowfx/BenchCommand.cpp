@@ -1,6 +1,6 @@
 // BenchCommand: `shadowfx bench`.
 //
-// [SECTION] Options     parsing the lists (--scenes a,b, --effects x.fx,y.fx or a shell glob, --map-sizes)
+// [SECTION] Diagnostics each distinct message once
 // [SECTION] Statistics  median and spread of the timed frames
 // [SECTION] Runs        ground truth per scene, then effect x map size x scene x technique
 // [SECTION] Output      results.json, report.md, error_vs_time.png through gnuplot
@@ -65,16 +65,7 @@ using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
 constexpr int kSchemaVersion = 1;
 
-// [SECTION] Options
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ','))
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
+// [SECTION] Diagnostics
 
 // Prints each distinct diagnostic once: the same warning comes back every frame of every run.
 class BenchSink : public fx::DiagnosticSink {
@@ -485,13 +476,7 @@ int benchCommand(const Arguments& args) {
                  {"seconds", t.seconds}});
     }
 
-    fx::ParseOptions baseOptions;
-    baseOptions.includeDirs = args.all("-I");
-    for (const std::string& define : args.all("-D")) {
-        const size_t eq = define.find('=');
-        baseOptions.defines.emplace_back(define.substr(0, eq),
-                                         eq == std::string::npos ? "1" : define.substr(eq + 1));
-    }
+    const fx::ParseOptions baseOptions = effectParseOptions(args);
 
     // --set applies to each effect that has the parameter; one that no effect has is a usage error.
     std::vector<std::pair<std::string, std::string>> assignments;

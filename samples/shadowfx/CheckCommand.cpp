@@ -102,15 +102,6 @@ std::string fixed(double value, int digits) {
     return out.str();
 }
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ','))
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 // Prints each distinct warning and error once on stderr and keeps the errors since the last mark(), so a
 // failing step can name its first error ("file:line:column: error: message") in its result.
 class CheckSink : public fx::DiagnosticSink {
@@ -735,17 +726,6 @@ private:
     std::set<std::string> mImagesWritten;  // failure images written by this run
 };
 
-fx::ParseOptions parseOptionsOf(const Arguments& args) {
-    fx::ParseOptions options;
-    options.includeDirs = args.all("-I");
-    for (const std::string& define : args.all("-D")) {
-        const size_t eq = define.find('=');
-        options.defines.emplace_back(define.substr(0, eq),
-                                     eq == std::string::npos ? "1" : define.substr(eq + 1));
-    }
-    return options;
-}
-
 }  // namespace
 
 int checkCommand(const Arguments& args) {
@@ -755,7 +735,7 @@ int checkCommand(const Arguments& args) {
         std::cerr << "shadowfx check: expected one or more effect files (see --help)\n";
         return 2;
     }
-    const fx::ParseOptions parseOptions = parseOptionsOf(args);
+    const fx::ParseOptions parseOptions = effectParseOptions(args);
     CheckSink sink;
 
     if (args.flag("--list-techniques")) {

@@ -3,8 +3,28 @@
 #include <algorithm>
 #include <charconv>
 #include <iostream>
+#include <sstream>
 
 namespace shadowfx::cli {
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+fx::ParseOptions effectParseOptions(const Arguments& args) {
+    fx::ParseOptions options;
+    options.includeDirs = args.all("-I");
+    for (const std::string& define : args.all("-D")) {
+        const size_t eq = define.find('=');
+        options.defines.emplace_back(define.substr(0, eq),
+                                     eq == std::string::npos ? "1" : define.substr(eq + 1));
+    }
+    return options;
+}
 
 std::string Arguments::value(const std::string& name, const std::string& fallback) const {
     auto it = mValues.find(name);

@@ -1,6 +1,8 @@
 // CommandLine: the subcommand table and argument parsing shared by the shadowfx subcommands.
 #pragma once
 
+#include <fx/EffectParser.h>
+
 #include <functional>
 #include <map>
 #include <span>
@@ -38,6 +40,12 @@ struct Command {
     // effects/*.fx`, where the shell's glob leaves every file after the first as a positional argument).
     int positionals = 1;
 };
+
+// "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of --scenes, --techniques, --effects, ...
+std::vector<std::string> splitList(const std::string& text);
+
+// The preprocessor options every effect-reading subcommand takes: -I DIR and -D NAME[=VALUE] (VALUE 1).
+fx::ParseOptions effectParseOptions(const Arguments& args);
 
 // Parses argv for the named subcommand and runs it. Exit codes: the command's; 2 for usage errors.
 int dispatch(int argc, char** argv, std::span<const Command> commands);

@@ -96,14 +96,6 @@ private:
     std::vector<std::string> mMessages;
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
 bool finite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -545,13 +537,7 @@ int stressCommand(const Arguments& args) {
         truths.emplace(name, std::move(*truth));
     }
 
-    fx::ParseOptions parseOptions;
-    parseOptions.includeDirs = args.all("-I");
-    for (const std::string& define : args.all("-D")) {
-        const size_t eq = define.find('=');
-        parseOptions.defines.emplace_back(define.substr(0, eq),
-                                          eq == std::string::npos ? "1" : define.substr(eq + 1));
-    }
+    const fx::ParseOptions parseOptions = effectParseOptions(args);
 
     // The uniform map's error per case, the bar every method is held to.
     std::map<std::string, double> uniformError;

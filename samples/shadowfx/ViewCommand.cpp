@@ -201,13 +201,7 @@ int viewCommand(const Arguments& args) {
     }
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
 
-    fx::ParseOptions parseOptions;
-    parseOptions.includeDirs = args.all("-I");
-    for (const std::string& define : args.all("-D")) {
-        const size_t eq = define.find('=');
-        parseOptions.defines.emplace_back(define.substr(0, eq),
-                                          eq == std::string::npos ? "1" : define.substr(eq + 1));
-    }
+    const fx::ParseOptions parseOptions = effectParseOptions(args);
     runtime::ReloadableEffect effect(path, parseOptions);
     if (!effect.reload()) std::cerr << effect.errorText();  // the window stays open: the next save may fix it
 

@@ -48,20 +48,10 @@ private:
     int mErrors = 0;
 };
 
-fx::ParseOptions parseOptions(const Arguments& args) {
-    fx::ParseOptions options;
-    options.includeDirs = args.all("-I");
-    for (const std::string& define : args.all("-D")) {
-        const size_t eq = define.find('=');
-        options.defines.emplace_back(define.substr(0, eq),
-                                     eq == std::string::npos ? "1" : define.substr(eq + 1));
-    }
-    return options;
-}
-
 std::shared_ptr<fx::CompiledEffect> loadEffect(const Arguments& args, const std::string& technique,
                                                fx::DiagnosticSink& sink) {
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(args.positional(0), parseOptions(args), sink);
+    std::shared_ptr<fx::Effect> effect =
+        fx::parseEffectFile(args.positional(0), shadowfx::cli::effectParseOptions(args), sink);
     if (!effect) return nullptr;
     fx::CompileOptions options;
     options.technique = technique;

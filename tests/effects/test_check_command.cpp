@@ -1,44 +1,26 @@
 // `shadowfx check` as a CI runs it: the real built tool on real effects, with copies of the shipped effect
 // broken on purpose (bias removed, golden moved, golden missing, nothing drawn) written to a temporary
 // folder at test time. Each run uses one backend (EGL) to stay fast; the CTest `check` tests run both.
+#include "CliRunner.h"
+
 #include <gtest/gtest.h>
 
 #include <runtime/EffectRenderer.h>
 #include <runtime/ImageCompare.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
-const std::string kSource = SHADOWFX_SOURCE_DIR;
-
-struct RunResult {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
-
-RunResult run(const std::string& arguments) {
-    RunResult result;
-    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using shadowfx::test::kSource;
+using shadowfx::test::run;
+using shadowfx::test::RunResult;
 
 std::string readText(const fs::path& path) {
     std::ifstream file(path);

@@ -1,38 +1,18 @@
 // The shadowfx command as users script against it: exit codes, `path:line:column: error:` diagnostics for
 // each class of bad input, no output image after a failure, and the --help of every subcommand.
+#include "CliRunner.h"
+
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
-const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
-const std::string kSource = SHADOWFX_SOURCE_DIR;
-
-struct RunResult {
-    int exitCode = -1;
-    bool crashed = false;
-    std::string output;  // stdout and stderr together
-};
-
-RunResult run(const std::string& arguments) {
-    RunResult result;
-    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    result.crashed = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) >= 128);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using shadowfx::test::kSource;
+using shadowfx::test::run;
+using shadowfx::test::RunResult;
 
 struct BadInput {
     const char* file;

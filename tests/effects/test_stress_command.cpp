@@ -1,39 +1,21 @@
 // `shadowfx stress` as users script against it: the case list, usage errors, declared limitations reported
 // as xfail without failing the run, an undeclared one failing it with an error image, and the JSON.
+#include "CliRunner.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
-const std::string kTool = std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx";
-const std::string kSource = SHADOWFX_SOURCE_DIR;
-
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
-
-RunResult run(const std::string& arguments) {
-    RunResult result;
-    const std::string command = "cd '" + kSource + "' && '" + kTool + "' " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using shadowfx::test::kSource;
+using shadowfx::test::run;
+using shadowfx::test::RunResult;
 
 std::filesystem::path freshDirectory(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
