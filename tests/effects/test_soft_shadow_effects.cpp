@@ -123,6 +123,10 @@ TEST(SoftShadowEffects, FractionalDiskStaysUnderItsAnnotatedBoundsUnderAnAreaLig
     expectUnderAnnotatedBounds("effects/fractional_disk.fx");
 }
 
+TEST(SoftShadowEffects, EyeSpaceBlurStaysUnderItsAnnotatedBoundsUnderAnAreaLight) {
+    expectUnderAnnotatedBounds("effects/eye_space_blur.fx");
+}
+
 // [SECTION] Contact hardening
 
 constexpr float kPlateEdgeX = 0.0f;  // the plate covers x < 0; its shadow's edge runs along z
@@ -247,6 +251,34 @@ TEST(SoftShadowEffects, PcssPenumbraWidensWithTheOccluderDistanceUnderADirection
 TEST(SoftShadowEffects, FractionalDiskPenumbraWidensWithTheOccluderDistance) {
     expectContactHardening("effects/fractional_disk.fx", "preprocessed", spotAbove(), 8.0f);
     expectContactHardening("effects/fractional_disk.fx", "direct", spotAbove(), 8.0f);
+}
+
+// [SECTION] Eye-space blur (seed 000, §4.3)
+
+// Receiver pixels with a fractional shadow term: how far the blur has spread the edges.
+size_t fractionalPixels(const SceneTruth& t, const std::vector<float>& visibility) {
+    size_t n = 0;
+    for (size_t i = 0; i < visibility.size(); ++i)
+        n += t.receivers[i] && visibility[i] > 0.05f && visibility[i] < 0.95f;
+    return n;
+}
+
+// More iterations spread the edges further (Fig. 8), and the depth-dependent radius spreads them less.
+TEST(SoftShadowEffects, EyeSpaceBlurWidensWithIterationsAndLessWithDepthDependence) {
+    auto renderer = loadVisibilityEffect("effects/eye_space_blur.fx");
+    ASSERT_TRUE(renderer);
+    const SceneTruth& t = areaLitTruth("dual-l");
+    auto spread = [&](int iterations, bool depthDependent) {
+        fx::DiagnosticList diagnostics;
+        EXPECT_TRUE(renderer->setParameterFromText("Iterations", std::to_string(iterations), diagnostics));
+        EXPECT_TRUE(
+            renderer->setParameterFromText("DepthDependent", depthDependent ? "true" : "false", diagnostics));
+        return fractionalPixels(t, renderVisibility(*renderer, t.scene, "blur"));
+    };
+    const size_t one = spread(1, false), sixteen = spread(16, false), sixteenByDepth = spread(16, true);
+    EXPECT_GT(one, 100u) << "even one iteration blurs the edges";
+    EXPECT_GT(sixteen, 3 * one);
+    EXPECT_LT(sixteenByDepth, sixteen);
 }
 
 // [SECTION] The disk radius
