@@ -130,6 +130,16 @@ float Bias
     float UIStep = 0.0002;
 > = 0.002;
 
+// Extra bias per texel of receiver slope (the receiver's own open surface, in the map, drops away by its
+// slope across a texel): without it a low sun (stress case low-sun) gives `direct` acne on the ground.
+float SlopeBias
+<
+    string UIWidget = "slider";
+    string UIName = "Slope bias per texel";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+> = 1.0;
+
 float2 ShadowMapSize <string UIWidget = "none";> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
 
 // Depth, nearest occluder, distance to the boundary: clear to "nothing here, no boundary near".
@@ -284,7 +294,7 @@ float4 PropagateFromMapPS(BufferVertex IN) : COLOR
 struct DiskSampling
 {
     float2 uv;
-    float receiver;          // linear depth, biased
+    float receiver;          // linear depth, biased (constant and slope)
     float receiverViewDepth;
     float texelsPerUnit;
     float start;             // random start into the Poisson disk
@@ -296,7 +306,7 @@ DiskSampling MakeSampling(SceneVertexOutput IN)
     DiskSampling s;
     s.uv = ShadowMapUV(IN.LP);
     float clipDepth = IN.LP.z / IN.LP.w;
-    s.receiver = LinearDepth(clipDepth) - Bias;
+    s.receiver = LinearDepth(clipDepth) - Bias - SlopeBias * ReceiverSlope(IN) / ShadowMapSize.x;
     s.receiverViewDepth = LightViewDepth(clipDepth);
     s.texelsPerUnit = TexelsPerWorldUnit(IN.LP, ShadowMapSize.x);
     float2 noise = tex2D(DiskNoiseSampler, s.uv * ShadowMapSize / 64.0).xy;
@@ -446,7 +456,8 @@ float4 DirectPS(SceneVertexOutput IN) : COLOR
 technique preprocessed
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly), under a constant bias";
+    string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly); "
+                                    "the slope bias (ReceiverSlope, capped at 10) does not cover a 0.5 degree sun";
     // Edges are detected into the temporary map, a step-1 pass brings them back, then each loop
     // propagates there and back: the final map is DiskMap again.
     string Script = "Pass=RenderBackFaces; Pass=DetectEdges; Pass=PropagateOnce;"
@@ -454,10 +465,10 @@ technique preprocessed
                     "Pass=PropagateToTemp; Pass=PropagateToMap; LoopEnd=;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    // measured 0.044 % on dual-l, 0.255 % on teapot (hard truth); 0.089 / 0.229 % against the area-light
-    // truth's classification (--area-radius 2); the open teapot stays in the back-face map
-    float ExpectMisclassifiedBelow = 0.4;
-    float ExpectPenumbraMaeBelow = 0.004;  // measured 0.0017 on dual-l, 0.0027 on teapot (--area-radius 2)
+    // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.157 % against the area-light
+    // truth's classification (--area-radius 2)
+    float ExpectMisclassifiedBelow = 0.25;
+    float ExpectPenumbraMaeBelow = 0.003;  // measured 0.0017 on dual-l, 0.0017 on teapot (--area-radius 2)
     int ExpectMapSize = 1024;
 >
 {
@@ -471,12 +482,15 @@ technique preprocessed
 
 technique direct
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly); "
+                                    "the slope bias (ReceiverSlope, capped at 10) does not cover a 0.5 degree sun";
     string Script = "Pass=RenderBackFaces; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    // measured 0.044 % on dual-l, 0.280 % on teapot (hard truth); 0.089 / 0.225 % against the area-light
+    // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.169 % against the area-light
     // truth's classification (--area-radius 2)
-    float ExpectMisclassifiedBelow = 0.42;
-    float ExpectPenumbraMaeBelow = 0.007;  // measured 0.0046 on dual-l, 0.0031 on teapot (--area-radius 2)
+    float ExpectMisclassifiedBelow = 0.26;
+    float ExpectPenumbraMaeBelow = 0.007;  // measured 0.0046 on dual-l, 0.0021 on teapot (--area-radius 2)
     int ExpectMapSize = 1024;
 >
 {
