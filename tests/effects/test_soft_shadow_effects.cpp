@@ -127,6 +127,10 @@ TEST(SoftShadowEffects, EyeSpaceBlurStaysUnderItsAnnotatedBoundsUnderAnAreaLight
     expectUnderAnnotatedBounds("effects/eye_space_blur.fx");
 }
 
+TEST(SoftShadowEffects, BlurredReceiversStayUnderTheirAnnotatedBoundsUnderAnAreaLight) {
+    expectUnderAnnotatedBounds("effects/blurred_receivers.fx");
+}
+
 // [SECTION] Contact hardening
 
 constexpr float kPlateEdgeX = 0.0f;  // the plate covers x < 0; its shadow's edge runs along z
@@ -279,6 +283,29 @@ TEST(SoftShadowEffects, EyeSpaceBlurWidensWithIterationsAndLessWithDepthDependen
     EXPECT_GT(one, 100u) << "even one iteration blurs the edges";
     EXPECT_GT(sixteen, 3 * one);
     EXPECT_LT(sixteenByDepth, sixteen);
+}
+
+// [SECTION] Blurred receiver channels (seed 004, §14.3.2)
+
+// The ground (object 1) marked as a receiver gets blurred edges where the depth test gives hard ones, and a
+// receiver in the second channel is blurred exactly as in the first.
+TEST(SoftShadowEffects, BlurredReceiverChannelsSoftenTheMarkedReceiverInEitherChannel) {
+    auto renderer = loadVisibilityEffect("effects/blurred_receivers.fx");
+    ASSERT_TRUE(renderer);
+    const SceneTruth& t = areaLitTruth("teapot");
+    auto frame = [&](int first, int second) {
+        fx::DiagnosticList diagnostics;
+        EXPECT_TRUE(renderer->setParameterFromText("ReceiverId0", std::to_string(first), diagnostics));
+        EXPECT_TRUE(renderer->setParameterFromText("ReceiverId1", std::to_string(second), diagnostics));
+        return renderVisibility(*renderer, t.scene, "blurred");
+    };
+    const std::vector<float> depthTest = frame(0, 0), firstChannel = frame(1, 0), secondChannel = frame(0, 1);
+    EXPECT_GT(fractionalPixels(t, firstChannel), 3 * fractionalPixels(t, depthTest) + 100);
+    ASSERT_EQ(firstChannel.size(), secondChannel.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < firstChannel.size(); ++i)
+        differing += std::abs(firstChannel[i] - secondChannel[i]) > 1e-3f;
+    EXPECT_EQ(differing, 0u);
 }
 
 // [SECTION] The disk radius
