@@ -24,7 +24,9 @@ namespace {
 
 constexpr int kTotalCycles = 1000;  // over all effects together
 constexpr int kWarmUpCycles = 20;   // per effect: caches, driver pools and allocator arenas fill up
-constexpr GLuint kProbedNames = 4096;
+// Mesa hands out program and shader names in increasing order without reuse, so the names in use climb
+// with every cycle: the probe must reach past all of them (12 effects' warm-up alone passed 4096).
+constexpr GLuint kProbedNames = 65536;
 
 // Under AddressSanitizer freed memory sits in its quarantine (up to 256 MB) instead of returning to the
 // allocator, so RSS grows by design; there LeakSanitizer checks the heap instead (scripts/test-sanitized.sh).
