@@ -1,0 +1,18 @@
+// focused.fx: a directional light's shadow map focused on what the camera sees (seed 000 §4.1,
+// /work/shared/seeds/000_e192ed44df49f96c.txt): an orthographic fit to the intersection body B = view
+// frustum ∩ scene bounds, extruded toward the light so that every caster of a visible shadow is in the map.
+// The same texels as pcf.fx's `bilinear`, spent on B instead of the whole scene (README, "Light-space
+// parameterizations").
+#define LIGHT_PARAMETERIZATION "Focused"
+#include "include/lightspace.fxh"
+
+technique bilinear
+<
+    string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;  // measured: see below
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_PASSES
+}
