@@ -10,7 +10,7 @@ technique bilinear
 <
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured: see below
+    float ExpectMisclassifiedBelow = 0.08;  // measured 0.013 % on dual-l, 0.037 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {

@@ -19,7 +19,7 @@ technique bilinear
 <
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured: see below
+    float ExpectMisclassifiedBelow = 0.12;  // measured 0.031 % on dual-l, 0.061 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {

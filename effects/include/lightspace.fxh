@@ -29,22 +29,26 @@ float Script : STANDARDSGLOBAL
 > = 0.8;
 
 // [SECTION] Tweakables
+// The depth bias follows the texel (see BiasedDepth; seed 004 §14.2.3 scales a world-space bias by the
+// texel size): a focused or warped map has texels of very different sizes across the scene and depth
+// ranges unlike the uniform map's, so a constant NDC bias (pcf.fx) is too small in one place and too large
+// in another.
 float Bias
 <
     string UIWidget = "slider";
-    string UIName = "Depth bias";
+    string UIName = "Depth bias (texels)";
     float UIMin = 0.0;
-    float UIMax = 0.02;
-    float UIStep = 0.0002;
-> = 0.002;
+    float UIMax = 4.0;
+    float UIStep = 0.05;
+> = 2.0;
 
 float SlopeBias
 <
     string UIWidget = "slider";
-    string UIName = "Slope bias per texel";
+    string UIName = "Receiver-plane bias (texels)";
     float UIMin = 0.0;
     float UIMax = 4.0;
-> = 1.0;
+> = 1.5;
 
 float2 ShadowMapSize <string UIWidget = "none";> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
 
@@ -74,10 +78,33 @@ texture ShadowDepth : RENDERDEPTHSTENCILTARGET
 >;
 
 // [SECTION] Shaders
+// The receiver's depth for the test, moved toward the light by
+// - Bias texels of world size: for a directional light every provider's clip w is independent of the
+//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM), so NDC depth changes by _33 / w
+//   per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units across it;
+// - SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
+//   map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization,
+//   where a texel's size differs along u and v under a warp.
+float BiasedDepth(SceneVertexOutput IN)
+{
+    float depth = IN.LP.z / IN.LP.w;
+    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
+    float constantBias = Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
+    float2 uvX = ddx(ShadowMapUV(IN.LP)) * ShadowMapSize;
+    float2 uvY = ddy(ShadowMapUV(IN.LP)) * ShadowMapSize;
+    float2 zXY = float2(ddx(depth), ddy(depth));
+    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
+    // d depth / d texel = (d depth / d screen) (d texel / d screen)^-1
+    float2 perTexel = float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
+                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.01);
+    return depth - constantBias - SlopeBias * slopeBias;
+}
+
 float4 BilinearPS(SceneVertexOutput IN) : COLOR
 {
     float2 uv = ShadowMapUV(IN.LP);
-    float depth = IN.LP.z / IN.LP.w - Bias - SlopeBias * ReceiverSlope(IN) / ShadowMapSize.x;
+    float depth = BiasedDepth(IN);
     return ShadeOrVisibility(IN, ShadowTestBilinear(ShadowMapSampler, uv, depth, ShadowMapSize));
 }
 

@@ -1146,6 +1146,17 @@ private:
 
 }  // namespace
 
+std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string_view lightName,
+                                                 const FrameOptions& options) const {
+    const Light* light = scene.findLight(lightName);
+    if (!light) return std::nullopt;
+    fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
+    const SemanticBinder binder(mImpl->effect(), scene, scene.bounds(),
+                                static_cast<float>(options.width) / static_cast<float>(options.height),
+                                mImpl->values, diagnostics);
+    return binder.lightFit(*light);
+}
+
 bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
                             FrameStats* stats) {
     FrameStats localStats;
