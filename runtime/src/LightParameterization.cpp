@@ -78,8 +78,21 @@ float lispsmWarp(float nearPlane, float depthExtent, float sinGamma) {
 
 std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
                                  const glm::vec3& lightDirection) {
+    // The frustum ends where the bounds do: a far plane beyond the farthest corner cuts nothing off B, and
+    // a near/far ratio like 0.001/100000 would leave the inverse projection that finds B's corners without
+    // float precision.
+    Camera clamped = camera;
+    float farthest = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? sceneBounds.max.x : sceneBounds.min.x,
+                          corner & 2 ? sceneBounds.max.y : sceneBounds.min.y,
+                          corner & 4 ? sceneBounds.max.z : sceneBounds.min.z);
+        farthest = std::max(farthest, glm::length(p - camera.position));
+    }
+    clamped.farPlane = std::clamp(1.01f * farthest, camera.nearPlane * 1.01f,
+                                  std::max(camera.farPlane, camera.nearPlane * 1.01f));
     std::vector<glm::vec3> body =
-        intersectionBodyPoints(camera.projection(aspect) * camera.view(), sceneBounds);
+        intersectionBodyPoints(clamped.projection(aspect) * clamped.view(), sceneBounds);
     const size_t receivers = body.size();
     // Casters between a receiver and the light: extrude B toward the light (against its direction of travel).
     for (size_t i = 0; i < receivers; ++i)
@@ -139,7 +152,13 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
         lo = glm::min(lo, ndc);
         hi = glm::max(hi, ndc);
     }
-    for (int axis = 0; axis < 3; ++axis) widen(lo[axis], hi[axis], 1e-6f * radius);
+    for (int axis = 0; axis < 3; ++axis) {
+        // A body without extent across the light (bounds that are a point, a plane seen edge-on) gives
+        // nothing to fit a map to.
+        if (axis < 2 && !(hi[axis] - lo[axis] > 1e-6f * (std::abs(hi[axis]) + std::abs(lo[axis]))))
+            return uniform;
+        widen(lo[axis], hi[axis], 1e-6f * radius);
+    }
     // Unit-cube fit: x, y to [-1, 1], depth to [0, 1] (D3D clip conventions).
     glm::mat4 unitCube(1.0f);
     unitCube[0][0] = 2.0f / (hi.x - lo.x);
@@ -149,6 +168,9 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     unitCube[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
     unitCube[3][2] = -lo.z / (hi.z - lo.z);
     fit.projection = unitCube * warp;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(fit.projection[c][r]) || !std::isfinite(fit.view[c][r])) return uniform;
     return fit;
 }
 
