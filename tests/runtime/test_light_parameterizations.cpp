@@ -166,6 +166,13 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
         const double nopt = (zn + std::sqrt(zn * (zn + (hi - lo) * sinGamma))) / sinGamma;
         const LightFit fit = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
         EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt) << elevation;
+        LightTunables visible;  // Δz from a visibility algorithm replaces d sin γ (seed 000 §4.4)
+        visible.lispsmDepthExtent = 50.0f;
+        const double noptVisible = (zn + std::sqrt(zn * (zn + 50.0))) / sinGamma;
+        EXPECT_NEAR(
+            1.0 / fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], visible)
+                      .warp,
+            noptVisible, 1e-3 * noptVisible);
         LightTunables weaker;
         weaker.lispsmNScale = 2.0f;
         EXPECT_NEAR(
