@@ -13,8 +13,15 @@ float4x4 WorldITMatrix : WorldInverseTranspose <string UIWidget = "None";>;
 float4x4 WorldViewProjectionMatrix : WorldViewProjection <string UIWidget = "None";>;
 float4x4 WorldMatrix : World <string UIWidget = "None";>;
 float4x4 ViewIMatrix : ViewInverse <string UIWidget = "None";>;
-float4x4 LightViewMatrix : View <string frustum = "light0"; string UIWidget = "None";>;
-float4x4 LightProjectionMatrix : Projection <string frustum = "light0"; string UIWidget = "None";>;
+// LIGHT_PARAMETERIZATION (a string: "Uniform", "Focused", "LiSPSM"), defined before this include, chooses
+// the provider of light0's matrices (README, "Light-space parameterizations"); the default is Uniform.
+#ifndef LIGHT_PARAMETERIZATION
+#define LIGHT_PARAMETERIZATION "Uniform"
+#endif
+float4x4 LightViewMatrix : View
+<string frustum = "light0"; string Parameterization = LIGHT_PARAMETERIZATION; string UIWidget = "None";>;
+float4x4 LightProjectionMatrix : Projection
+<string frustum = "light0"; string Parameterization = LIGHT_PARAMETERIZATION; string UIWidget = "None";>;
 float3 LightColor : LightColor <string Object = "light0"; string UIWidget = "none";> = {1.0, 1.0, 1.0};
 float3 AmbientLightColor : Ambient <string UIWidget = "color";> = {0.15, 0.15, 0.15};
 float3 SurfaceColor : Diffuse <string UIWidget = "none";> = {0.8, 0.8, 0.8};

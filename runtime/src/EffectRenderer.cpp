@@ -456,7 +456,8 @@ std::vector<PassUse> passUses(const EffectRenderer::Impl& impl, const fx::Compil
 }
 
 // The view and projection a RenderPort gives ("" = the camera). False if the scene has no such light.
-bool portMatrices(const Scene& scene, const Bounds& bounds, const FrameOptions& options,
+// A light port renders with the matrices the effect's parameterization of that light gives (`binder`).
+bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameOptions& options,
                   const std::string& light, RenderPortView& port) {
     if (light.empty()) {
         const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -466,8 +467,9 @@ bool portMatrices(const Scene& scene, const Bounds& bounds, const FrameOptions& 
     }
     const Light* found = scene.findLight(light);
     if (!found) return false;
-    port.view = found->view(bounds);
-    port.projection = found->projection(bounds, nearestDepthFrom(scene, *found));
+    const LightFit fit = binder.lightFit(*found);
+    port.view = fit.view;
+    port.projection = fit.projection;
     return true;
 }
 
@@ -516,7 +518,7 @@ public:
     }
     void setRenderPort(const std::string& light) override {
         mLightPort = !light.empty();
-        portMatrices(mScene, mImpl.sceneCache.bounds, mOptions, light, mPort);
+        portMatrices(mScene, mBinder, mOptions, light, mPort);
     }
     void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
     void setClearDepth(float depth) override { mClearDepth = depth; }
@@ -710,8 +712,7 @@ public:
           mTechnique(techniqueIndex),
           mBinder(binder),
           mUses(uses),
-          mPlan(plan),
-          mSceneBounds(impl.sceneCache.bounds) {
+          mPlan(plan) {
         mTargets.colors[0].texture = &impl.frameColor;
         mTargets.depth.texture = &impl.frameDepth;
         setRenderPort("");
@@ -767,7 +768,7 @@ public:
     void setRenderPort(const std::string& lightName) override {
         mLightPort = !lightName.empty();
         mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
-        if (!portMatrices(mScene, mSceneBounds, mOptions, lightName, mPort)) {
+        if (!portMatrices(mScene, mBinder, mOptions, lightName, mPort)) {
             fail(fx::DiagId::UnsupportedFeature, {"RenderPort names light '" + lightName +
                                                   "', which scene '" + mScene.name + "' does not have"});
         }
@@ -1131,7 +1132,6 @@ private:
     std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
     std::vector<uint32_t> mVisible;
     std::vector<fx::Value> mArguments;
-    Bounds mSceneBounds;
     RenderTargets mTargets;
     RenderPortView mPort;
     bool mLightPort = false;
@@ -1145,6 +1145,17 @@ private:
 };
 
 }  // namespace
+
+std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string_view lightName,
+                                                 const FrameOptions& options) const {
+    const Light* light = scene.findLight(lightName);
+    if (!light) return std::nullopt;
+    fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
+    const SemanticBinder binder(mImpl->effect(), scene, scene.bounds(),
+                                static_cast<float>(options.width) / static_cast<float>(options.height),
+                                mImpl->values, diagnostics);
+    return binder.lightFit(*light);
+}
 
 bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
                             FrameStats* stats) {
@@ -1190,7 +1201,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::set<int> none;
     mImpl->ensureFrameResources(options.width, options.height, &none);
     mImpl->updateSceneCache(frameScene);
-    const SemanticBinder binder(mImpl->effect(), frameScene, mImpl->sceneCache.bounds, diagnostics);
+    const SemanticBinder binder(mImpl->effect(), frameScene, mImpl->sceneCache.bounds,
+                                static_cast<float>(options.width) / static_cast<float>(options.height),
+                                mImpl->values, diagnostics);
     const std::vector<PassUse> uses = passUses(*mImpl, *technique, binder);
 
     // Plan the frame with a dry run of its script, then leave out what it shows nobody needs.
@@ -1199,7 +1212,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         std::vector<glm::vec3> body;
         if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
             RenderPortView camera;
-            portMatrices(frameScene, mImpl->sceneCache.bounds, options, "", camera);
+            portMatrices(frameScene, binder, options, "", camera);
             const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
             body = intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max});
         }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 namespace runtime {
 
@@ -116,11 +117,48 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
 }
 
 SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
+                               float aspect, const std::vector<fx::Value>& values,
                                fx::DiagnosticSink& diagnostics)
-    : mScene(scene), mSceneBounds(sceneBounds) {
+    : mScene(scene), mSceneBounds(sceneBounds), mAspect(aspect) {
     mHasClosedObjects =
         std::any_of(scene.objects.begin(), scene.objects.end(),
                     [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
+    // The parameterization of each light (the `Parameterization` annotation of any parameter naming it) and
+    // its tunables, before any light is fitted.
+    for (size_t i = 0; i < effect.parameters.size(); ++i) {
+        const fx::Parameter& parameter = effect.parameters[i];
+        const std::string upperSemantic = upper(parameter.semantic);
+        if (i < values.size() && !values[i].data.empty()) {
+            if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];
+            if (upperSemantic == "LISPSMDEPTHEXTENT") mTunables.lispsmDepthExtent = values[i].data[0];
+        }
+        const fx::Annotation* annotation = parameter.annotation("Parameterization");
+        const std::string lightName = annotatedLight(parameter);
+        if (!annotation || lightName.empty()) continue;
+        const std::optional<LightParameterization> method =
+            annotation->value.kind == fx::Expr::Kind::String
+                ? parseLightParameterization(annotation->value.text)
+                : std::nullopt;
+        if (!method) {
+            diagnostics.report(fx::DiagId::InvalidAnnotation, annotation->loc,
+                               {"Parameterization", "expected \"Uniform\", \"Focused\" or \"LiSPSM\""});
+            continue;
+        }
+        const Light* light = scene.findLight(lightName);
+        if (!light) continue;  // reported below with the parameter's binding
+        auto known = std::find_if(mFittedLights.begin(), mFittedLights.end(),
+                                  [light](const FittedLight& f) { return f.light == light; });
+        if (known == mFittedLights.end()) {
+            mFittedLights.push_back({light, *method, {}});
+        } else if (known->method != *method) {
+            diagnostics.report(
+                fx::DiagId::InvalidAnnotation, annotation->loc,
+                {"Parameterization", "light '" + lightName + "' is already parameterized as '" +
+                                         lightParameterizationName(known->method) + "'"});
+        }
+    }
+    for (FittedLight& fitted : mFittedLights)
+        fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables);
     for (size_t i = 0; i < effect.parameters.size(); ++i) {
         const fx::Parameter& parameter = effect.parameters[i];
         if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
@@ -144,14 +182,28 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                 continue;
             }
             if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
-            binding.lightView = binding.light->view(mSceneBounds);
-            binding.lightProjection =
-                binding.light->projection(mSceneBounds, nearestDepthFrom(scene, *binding.light));
+            const LightFit& fit = fittedLight(*binding.light).fit;
+            binding.lightView = fit.view;
+            binding.lightProjection = fit.projection;
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
         mBindings.push_back(binding);
     }
+}
+
+const SemanticBinder::FittedLight& SemanticBinder::fittedLight(const Light& light) {
+    for (const FittedLight& fitted : mFittedLights)
+        if (fitted.light == &light) return fitted;
+    mFittedLights.push_back({&light, LightParameterization::Uniform,
+                             fitLight(LightParameterization::Uniform, mScene, mSceneBounds, mAspect, light)});
+    return mFittedLights.back();
+}
+
+LightFit SemanticBinder::lightFit(const Light& light) const {
+    for (const FittedLight& fitted : mFittedLights)
+        if (fitted.light == &light) return fitted.fit;
+    return fitLight(LightParameterization::Uniform, mScene, mSceneBounds, mAspect, light);
 }
 
 bool SemanticBinder::isBound(size_t parameter) const {

@@ -8,13 +8,17 @@
 // LightColor, LightAreaRadius/LightSize (the light's areaRadius in world units, for soft-shadow filters)
 // (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
 // object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
-// Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a second depth layer
-// can matter) and LightAreaRadius (0 = no soft-shadow filter needed).
+// A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM";`
+// (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
+// are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale and
+// LiSPSMDepthExtent. Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a
+// second depth layer can matter) and LightAreaRadius (0 = no soft-shadow filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>
 #include <fx/Effect.h>
 #include <fx/Value.h>
+#include <runtime/LightParameterization.h>
 #include <runtime/Scene.h>
 
 #include <glm/glm.hpp>
@@ -36,8 +40,10 @@ public:
     // Classifies every parameter's semantic once. Parameters with semantics the runtime does not know
     // are left alone (they are the user's own).
     // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
-    SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
-                   fx::DiagnosticSink& diagnostics);
+    // `aspect` (the frame's width / height) and `values` (the current parameter values, for the
+    // parameterization tunables) serve view-dependent light fits.
+    SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds, float aspect,
+                   const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics);
 
     // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
     // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
@@ -56,6 +62,10 @@ public:
     // WorldViewProjection and their variants): the light it is annotated with, or null for the render
     // port's matrices. False for any other parameter. What culling checks a pass projects with.
     bool projectionSource(size_t parameter, const Light*& light) const;
+
+    // The matrices of a light as this effect parameterizes it (Uniform unless an annotation says
+    // otherwise): what RenderPort=lightN renders with, the same as the annotated parameters see.
+    LightFit lightFit(const Light& light) const;
 
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;
@@ -94,8 +104,18 @@ private:
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
 
+    struct FittedLight {
+        const Light* light;
+        LightParameterization method;
+        LightFit fit;
+    };
+    const FittedLight& fittedLight(const Light& light);
+
     const Scene& mScene;
     Bounds mSceneBounds;
+    float mAspect;
+    LightTunables mTunables;
+    std::vector<FittedLight> mFittedLights;  // one per light any parameter names, fitted once per frame
     bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
 };

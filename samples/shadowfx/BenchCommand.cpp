@@ -51,6 +51,10 @@ const char* const kBenchUsage =
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
     "  --area-radius R       give every light of every scene this areaRadius (0: hard shadows); the\n"
     "                        ground truth is then soft (penumbra error of filtering methods)\n"
+    "  --light-angle-to-view G  turn every directional light to G degrees (0-180) from the camera's view\n"
+    "                        direction, in the vertical plane of the view: 0 = along the view (light behind\n"
+    "                        the viewer), 90 = straight down for a level camera (the gamma sweep of README,\n"
+    "                        \"Light-space parameterizations\")\n"
     "  --leave-out LIST      on, off or on,off: leave-out (culling, dead and cached passes) as a run\n"
     "                        dimension; on,off times both in one run (default on)\n"
     "  --no-leave-out        the same as --leave-out off\n"
@@ -364,6 +368,16 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     }
 }
 
+// The direction at `degrees` from the camera's view direction V, turned toward straight down: cos G V +
+// sin G D, D the downward direction perpendicular to V (any horizontal one if V is vertical).
+glm::vec3 directionAtAngleToView(const runtime::Camera& camera, float degrees) {
+    const glm::vec3 view = glm::normalize(camera.target - camera.position);
+    glm::vec3 down = glm::vec3(0.0f, -1.0f, 0.0f) - glm::dot(glm::vec3(0.0f, -1.0f, 0.0f), view) * view;
+    if (glm::length(down) < 1e-3f) down = glm::cross(view, glm::vec3(1.0f, 0.0f, 0.0f));
+    const float g = glm::radians(degrees);
+    return glm::normalize(std::cos(g) * view + std::sin(g) * glm::normalize(down));
+}
+
 }  // namespace
 
 int benchCommand(const Arguments& args) {
@@ -422,6 +436,17 @@ int benchCommand(const Arguments& args) {
         }
         areaRadius = value;
     }
+    std::optional<float> lightAngle;
+    if (const std::string text = args.value("--light-angle-to-view"); !text.empty()) {
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (*end != '\0' || !(value >= 0.0f && value <= 180.0f)) {
+            std::cerr << "shadowfx bench: --light-angle-to-view: '" << text
+                      << "' is not an angle in [0, 180]\n";
+            return 2;
+        }
+        lightAngle = value;
+    }
 
     const std::filesystem::path outDir = args.value("--out");
     std::error_code fsError;
@@ -458,6 +483,10 @@ int benchCommand(const Arguments& args) {
         }
         if (areaRadius)
             for (runtime::Light& light : scene->lights) light.areaRadius = *areaRadius;
+        if (lightAngle)
+            for (runtime::Light& light : scene->lights)
+                if (light.type == runtime::Light::Type::Directional)
+                    light.direction = directionAtAngleToView(scene->camera, *lightAngle);
         std::cerr << "bench: ground truth for " << name << " (" << scene->triangleCount()
                   << " triangles)...\n";
         SceneTruth& t = truths.emplace_back();
@@ -548,9 +577,16 @@ int benchCommand(const Arguments& args) {
                 assignedSomewhere.insert(name);
             }
             for (const SceneTruth& t : truths) {
+                // The footprint of the map this effect renders: its parameterization of the light.
+                runtime::FrameOptions fitOptions;
+                fitOptions.width = width;
+                fitOptions.height = height;
+                const std::optional<runtime::LightFit> fit =
+                    timed->lightFit(t.scene, t.light->name, fitOptions);
                 const runtime::Bounds bounds = t.scene.bounds();
                 const runtime::AliasingMeasure aliasing = runtime::perspectiveAliasing(
-                    t.gbuffer, t.receivers, t.light->view(bounds), t.light->projection(bounds), mapSize);
+                    t.gbuffer, t.receivers, fit ? fit->view : t.light->view(bounds),
+                    fit ? fit->projection : t.light->projection(bounds), mapSize);
                 for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
                     if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                               technique.name) == techniqueFilter.end())
@@ -731,6 +767,7 @@ int benchCommand(const Arguments& args) {
                                  {"height", height},
                                  {"area_samples", truthOptions.areaSamples},
                                  {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
+                                 {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
                                  {"leave_out", leaveOutModes}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};

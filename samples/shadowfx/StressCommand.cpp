@@ -120,21 +120,24 @@ struct CaseTruth {
     size_t outsideLightVolume = 0;
     double maxFootprint = 0.0;
     double p95Footprint = 0.0;
+    // World positions of the first frame's receiver pixels: each effect's own light fit must cover them.
+    std::vector<glm::vec3> receiverPositions;
 };
+
+// Is `world` inside the clip volume of `viewProjection` (up to kClipTolerance)?
+bool insideClip(const glm::mat4& viewProjection, const glm::vec3& world) {
+    const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
+    const float slack = kClipTolerance * std::abs(clip.w);
+    return clip.w > 0.0f && std::abs(clip.x) <= clip.w + slack && std::abs(clip.y) <= clip.w + slack &&
+           clip.z >= -slack && clip.z <= clip.w + slack;
+}
 
 // Receivers of `gbuffer` outside the clip volume of the light's view and projection.
 size_t countOutsideLightVolume(const runtime::GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                const glm::mat4& viewProjection) {
     size_t outside = 0;
-    for (size_t i = 0; i < receivers.size(); ++i) {
-        if (!receivers[i]) continue;
-        const glm::vec4 clip = viewProjection * glm::vec4(gbuffer.position[i], 1.0f);
-        const float slack = kClipTolerance * std::abs(clip.w);
-        const bool inside = clip.w > 0.0f && std::abs(clip.x) <= clip.w + slack &&
-                            std::abs(clip.y) <= clip.w + slack && clip.z >= -slack &&
-                            clip.z <= clip.w + slack;
-        outside += inside ? 0 : 1;
-    }
+    for (size_t i = 0; i < receivers.size(); ++i)
+        if (receivers[i]) outside += insideClip(viewProjection, gbuffer.position[i]) ? 0 : 1;
     return outside;
 }
 
@@ -181,6 +184,8 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
             sceneLight.projection(bounds, runtime::nearestDepthFrom(scene, sceneLight));
         truth.lightVolumeReceivers = static_cast<size_t>(std::count(receivers.begin(), receivers.end(), 1));
         truth.outsideLightVolume = countOutsideLightVolume(*own, receivers, lightProjection * lightView);
+        for (size_t i = 0; i < receivers.size(); ++i)
+            if (receivers[i]) truth.receiverPositions.push_back(own->position[i]);
         if (truth.outsideLightVolume > 0)
             truth.problems.push_back(std::to_string(truth.outsideLightVolume) +
                                      " receiver pixels outside the light's clip volume");
@@ -265,6 +270,23 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
         if (!renderer.render(frame.scene, options, sink) || sink.errors() > 0) {
             outcome.fail("render failed: " + sink.take());
             return outcome;
+        }
+        // The light matrices this effect renders with (its Parameterization annotation, README "Light-space
+        // parameterizations"), held to the same checks as the runtime's uniform ones above.
+        if (&frame == &truth.frames.front() && !frame.scene.lights.empty()) {
+            const std::optional<runtime::LightFit> fit =
+                renderer.lightFit(frame.scene, frame.scene.lights.front().name, options);
+            if (fit && (!finite(fit->view) || !finite(fit->projection))) {
+                outcome.fail("the effect's light matrix is not finite");
+            } else if (fit) {
+                const glm::mat4 viewProjection = fit->projection * fit->view;
+                size_t outside = 0;
+                for (const glm::vec3& p : truth.receiverPositions)
+                    outside += insideClip(viewProjection, p) ? 0 : 1;
+                if (outside > 0)
+                    outcome.fail(std::to_string(outside) +
+                                 " receiver pixels outside the clip volume of the effect's light fit");
+            }
         }
         if (std::optional<std::string> name = nonFiniteParameter(renderer)) {
             outcome.fail("parameter " + *name + " not finite");

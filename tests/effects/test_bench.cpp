@@ -145,6 +145,37 @@ TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
     EXPECT_NE(output.find("no-such-scene"), std::string::npos) << output;
 }
 
+// --light-angle-to-view turns the light, and the footprint is scored with each effect's own light fit: the
+// focused map spends its texels on what the camera sees, so its texels cover fewer pixels than the uniform
+// map's with the same size and filter.
+TEST(Bench, LightAngleAndTheEffectsOwnFitForTheFootprint) {
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_angle";
+    std::filesystem::remove_all(out);
+    std::string output;
+    ASSERT_EQ(
+        runTool("bench --effects effects/pcf.fx,effects/focused.fx --techniques bilinear --scenes boxes "
+                "--frames 1 --warmup 0 --width 96 --height 72 --light-angle-to-view 90 --out " +
+                    out.string(),
+                output),
+        0)
+        << output;
+    const Json results = readJson(out / "results.json");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(results, schema, schema, "$"));
+    EXPECT_EQ(results["config"]["light_angle_to_view"].get<double>(), 90.0);
+    ASSERT_EQ(results["runs"].size(), 2u);
+    const Json& uniform = results["runs"][0];
+    const Json& focused = results["runs"][1];
+    ASSERT_EQ(focused["effect"], "effects/focused.fx");
+    EXPECT_LT(focused["aliasing"]["mean_texel_footprint_px"].get<double>(),
+              0.8 * uniform["aliasing"]["mean_texel_footprint_px"].get<double>());
+
+    output.clear();
+    EXPECT_EQ(
+        runTool("bench --effects effects/pcf.fx --light-angle-to-view 200 --out " + out.string(), output), 2);
+    EXPECT_NE(output.find("--light-angle-to-view"), std::string::npos) << output;
+}
+
 TEST(PassTimings, TimedFramesReportEveryPassWithItsDraws) {
     std::unique_ptr<runtime::EffectRenderer> renderer =
         loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);

@@ -7,6 +7,7 @@
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
+#include <runtime/LightParameterization.h>
 #include <runtime/Scene.h>
 
 #include <cstdint>
@@ -123,6 +124,12 @@ public:
     // GL error occurred.
     bool render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
                 FrameStats* stats = nullptr);
+
+    // The matrices light `lightName` renders with in this effect (the Parameterization annotation of its
+    // light matrices, README "Light-space parameterizations") for `scene` in a frame of `options`' size:
+    // what RenderPort=lightN and the annotated parameters get. nullopt if the scene has no such light.
+    std::optional<LightFit> lightFit(const Scene& scene, std::string_view lightName,
+                                     const FrameOptions& options) const;
 
     // The frame's colour target as rendered by the last render().
     FrameImage readFrame() const;

@@ -1,0 +1,21 @@
+// focused.fx: a directional light's shadow map focused on what the camera sees (seed 000 §4.1,
+// /work/shared/seeds/000_e192ed44df49f96c.txt): an orthographic fit to the intersection body B = view
+// frustum ∩ scene bounds, extruded toward the light so that every caster of a visible shadow is in the map.
+// The same texels as pcf.fx's `bilinear`, spent on B instead of the whole scene (README, "Light-space
+// parameterizations").
+#define LIGHT_PARAMETERIZATION "Focused"
+#include "include/lightspace.fxh"
+
+technique bilinear
+<
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne "
+                                    "on the ground (17 %, the uniform map 42 %)";
+    string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.08;  // measured 0.013 % on dual-l, 0.037 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_PASSES
+}

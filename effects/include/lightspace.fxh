@@ -1,0 +1,151 @@
+// lightspace.fxh: a shadow map whose light matrices come from a light-space parameterization (README,
+// "Light-space parameterizations"), tested with 2x2 bilinear PCF as in pcf.fx's `bilinear`. An effect
+// defines LIGHT_PARAMETERIZATION (the provider's name, a string) and includes this file; the runtime fits
+// light0's view and projection per frame, and RenderPort=light0 renders the map with the same matrices.
+//
+// Depth is the light clip-space z/w the depth pass writes (shadowscene.fxh): along one light ray w is
+// constant, so depth order is kept under the perspective warp of LiSPSM too.
+#ifndef SHADOWFX_LIGHTSPACE_FXH
+#define SHADOWFX_LIGHTSPACE_FXH
+
+#include "lighting.fxh"
+#include "shadowmap.fxh"
+#include "pcf.fxh"
+#include "shadowscene.fxh"
+
+#ifdef SHADOWFX_SHADOW_MAP_SIZE
+#define SHADOW_MAP_SIZE SHADOWFX_SHADOW_MAP_SIZE
+#else
+#define SHADOW_MAP_SIZE 1024
+#endif
+
+float Script : STANDARDSGLOBAL
+<
+    string UIWidget = "none";
+    string ScriptClass = "scene";
+    string ScriptOrder = "standard";
+    string ScriptOutput = "color";
+    string Script = "Technique=bilinear;";
+> = 0.8;
+
+// [SECTION] Tweakables
+// The depth bias follows the texel (see BiasedDepth; seed 004 §14.2.3 scales a world-space bias by the
+// texel size): a focused or warped map has texels of very different sizes across the scene and depth
+// ranges unlike the uniform map's, so a constant NDC bias (pcf.fx) is too small in one place and too large
+// in another.
+float Bias
+<
+    string UIWidget = "slider";
+    string UIName = "Depth bias (texels)";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+    float UIStep = 0.05;
+> = 2.0;
+
+float SlopeBias
+<
+    string UIWidget = "slider";
+    string UIName = "Receiver-plane bias (texels)";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+> = 1.5;
+
+float2 ShadowMapSize <string UIWidget = "none";> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+
+// [SECTION] Textures and samplers
+texture ShadowMap : RENDERCOLORTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "R32F";
+    string UIWidget = "None";
+>;
+
+sampler ShadowMapSampler = sampler_state
+{
+    texture = <ShadowMap>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MipFilter = NONE;
+    MinFilter = POINT;
+    MagFilter = POINT;
+};
+
+texture ShadowDepth : RENDERDEPTHSTENCILTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "D24S8";
+    string UIWidget = "None";
+>;
+
+// [SECTION] Shaders
+// The receiver's depth for the test, moved toward the light by
+// - Bias texels of world size: for a directional light every provider's clip w is independent of the
+//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM), so NDC depth changes by _33 / w
+//   per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units across it;
+// - SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
+//   map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization,
+//   where a texel's size differs along u and v under a warp.
+float BiasedDepth(SceneVertexOutput IN)
+{
+    float depth = IN.LP.z / IN.LP.w;
+    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
+    float constantBias = Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
+    float2 uvX = ddx(ShadowMapUV(IN.LP)) * ShadowMapSize;
+    float2 uvY = ddy(ShadowMapUV(IN.LP)) * ShadowMapSize;
+    float2 zXY = float2(ddx(depth), ddy(depth));
+    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
+    // d depth / d texel = (d depth / d screen) (d texel / d screen)^-1
+    float2 perTexel = float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
+                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.01);
+    return depth - constantBias - SlopeBias * slopeBias;
+}
+
+float4 BilinearPS(SceneVertexOutput IN) : COLOR
+{
+    float2 uv = ShadowMapUV(IN.LP);
+    float depth = BiasedDepth(IN);
+    return ShadeOrVisibility(IN, ShadowTestBilinear(ShadowMapSampler, uv, depth, ShadowMapSize));
+}
+
+// [SECTION] Passes
+// The shadow map from light0's port (the parameterization's matrices), then the scene from the camera.
+#define LIGHTSPACE_PASSES                                                                                   \
+    pass RenderShadowMap                                                                                    \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=ShadowMap;"                                                     \
+                        "RenderDepthStencilTarget=ShadowDepth;"                                             \
+                        "RenderPort=light0;"                                                                \
+                        "ClearSetColor=NoOccluder;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = None;                                                                                    \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
+        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
+    }                                                                                                       \
+    pass RenderScene                                                                                        \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=;"                                                              \
+                        "RenderDepthStencilTarget=;"                                                        \
+                        "RenderPort=;"                                                                      \
+                        "ClearSetColor=ClearColor;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
+        PixelShader = compile ps_3_0 BilinearPS();                                                          \
+    }
+
+#endif

@@ -1,0 +1,61 @@
+// LightParameterization: the providers of a light's view and projection (README, "Light-space
+// parameterizations"). An effect chooses one per light through the annotation
+// `string Parameterization = "..."` on its light matrices; RenderPort=lightN and every parameter annotated
+// with that light then use the same fit, computed once per frame.
+//
+//   Uniform   the light's own matrices (Scene.h, Light::view/projection): the whole scene, view-independent
+//   Focused   an orthographic fit to the intersection body B = view frustum ∩ scene bounds, extruded toward
+//             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
+//   LiSPSM    Focused followed by a perspective warp along V_P, the view direction made perpendicular to
+//             the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//
+// Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
+#pragma once
+
+#include <runtime/Scene.h>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace runtime {
+
+enum class LightParameterization { Uniform, Focused, LiSPSM };
+
+// "Uniform", "Focused", "LiSPSM" (case-insensitive); nullopt for anything else.
+std::optional<LightParameterization> parseLightParameterization(std::string_view name);
+const char* lightParameterizationName(LightParameterization method);
+
+// The tunables an effect sets through parameters with these semantics (README).
+struct LightTunables {
+    // LiSPSMNScale: multiplies n_opt. 1 = the optimum of seed 000 eq. 1; larger weakens the warp (toward
+    // Focused), smaller strengthens it.
+    float lispsmNScale = 1.0f;
+    // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
+    // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
+    float lispsmDepthExtent = 0.0f;
+};
+
+struct LightFit {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    float warp = 0.0f;  // 1 / n of the LiSPSM warp (world units⁻¹): 0 for an orthographic fit
+};
+
+// Seed 000 eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
+// which goes to 0 (no warp: the focused fit) as sin γ -> 0 instead of dividing by zero.
+float lispsmWarp(float nearPlane, float depthExtent, float sinGamma);
+
+// Where receivers (B) and the casters that can shadow them lie, in world space: B's vertices, then the same
+// vertices moved toward the light until they leave the scene bounds. Empty if the camera sees no part of
+// the bounds.
+std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
+                                 const glm::vec3& lightDirection);
+
+// The light's matrices under `method`. `aspect` is the camera's (frame width / height).
+LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
+                  const Light& light, const LightTunables& tunables = {});
+
+}  // namespace runtime

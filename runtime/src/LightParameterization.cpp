@@ -1,0 +1,177 @@
+// LightParameterization: uniform, focused and LiSPSM fits of a directional light's matrices (see the header).
+#include <runtime/LightParameterization.h>
+
+#include "IntersectionBody.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace runtime {
+
+namespace {
+
+bool equalsIgnoringCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+// How far from `point` along `direction` the ray leaves the box (0 if it starts outside).
+float exitDistance(const glm::vec3& point, const glm::vec3& direction, const Bounds& box) {
+    float exit = std::numeric_limits<float>::max();
+    for (int axis = 0; axis < 3; ++axis) {
+        if (std::abs(direction[axis]) < 1e-12f) continue;
+        const float wall = direction[axis] > 0.0f ? box.max[axis] : box.min[axis];
+        exit = std::min(exit, (wall - point[axis]) / direction[axis]);
+    }
+    return exit == std::numeric_limits<float>::max() ? 0.0f : std::max(exit, 0.0f);
+}
+
+// A unit vector perpendicular to `direction`, the same for every direction close to it: the fallback
+// "up" of a light view when the view direction gives none (light parallel to the view).
+glm::vec3 anyPerpendicular(const glm::vec3& direction) {
+    const glm::vec3 axis =
+        std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    return glm::normalize(axis - glm::dot(axis, direction) * direction);
+}
+
+// Widens [lo, hi] by a relative and an absolute margin, so points on the boundary stay inside after the
+// rounding of the matrix products that map them.
+void widen(float& lo, float& hi, float absolute) {
+    const float margin = 1e-3f * (hi - lo) + absolute;
+    lo -= margin;
+    hi += margin;
+}
+
+}  // namespace
+
+std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
+    for (LightParameterization method :
+         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM})
+        if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
+    return std::nullopt;
+}
+
+const char* lightParameterizationName(LightParameterization method) {
+    switch (method) {
+        case LightParameterization::Uniform:
+            return "Uniform";
+        case LightParameterization::Focused:
+            return "Focused";
+        case LightParameterization::LiSPSM:
+            return "LiSPSM";
+    }
+    return "Uniform";
+}
+
+// Seed 000 §4.4 eq. 1 (/work/shared/seeds/000_e192ed44df49f96c.txt) with Δz = d · sin γ as in the LiSPSM
+// reference code (seed 003): 1 / n_opt = sin γ / (z_n + sqrt(z_n (z_n + Δz))).
+float lispsmWarp(float nearPlane, float depthExtent, float sinGamma) {
+    const float zn = std::max(nearPlane, 1e-6f);
+    return std::max(sinGamma, 0.0f) / (zn + std::sqrt(zn * (zn + std::max(depthExtent, 0.0f))));
+}
+
+std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
+                                 const glm::vec3& lightDirection) {
+    // The frustum ends where the bounds do: a far plane beyond the farthest corner cuts nothing off B, and
+    // a near/far ratio like 0.001/100000 would leave the inverse projection that finds B's corners without
+    // float precision.
+    Camera clamped = camera;
+    float farthest = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? sceneBounds.max.x : sceneBounds.min.x,
+                          corner & 2 ? sceneBounds.max.y : sceneBounds.min.y,
+                          corner & 4 ? sceneBounds.max.z : sceneBounds.min.z);
+        farthest = std::max(farthest, glm::length(p - camera.position));
+    }
+    clamped.farPlane = std::clamp(1.01f * farthest, camera.nearPlane * 1.01f,
+                                  std::max(camera.farPlane, camera.nearPlane * 1.01f));
+    std::vector<glm::vec3> body =
+        intersectionBodyPoints(clamped.projection(aspect) * clamped.view(), sceneBounds);
+    const size_t receivers = body.size();
+    // Casters between a receiver and the light: extrude B toward the light (against its direction of travel).
+    for (size_t i = 0; i < receivers; ++i)
+        body.push_back(body[i] - lightDirection * exitDistance(body[i], -lightDirection, sceneBounds));
+    return body;
+}
+
+LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
+                  const Light& light, const LightTunables& tunables) {
+    LightFit uniform{light.view(sceneBounds), light.projection(sceneBounds, nearestDepthFrom(scene, light)),
+                     0.0f};
+    if (method == LightParameterization::Uniform || light.type != Light::Type::Directional ||
+        !(glm::dot(light.direction, light.direction) > 1e-12f))
+        return uniform;
+    const glm::vec3 lightDir = glm::normalize(light.direction);
+    const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
+    if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on
+
+    // Light space with y along V_P = (L x V) x L, the view direction made perpendicular to the light
+    // (seed 000 eq. 3), so that the warp below runs from the viewer's side of B to its far side.
+    const Camera& camera = scene.camera;
+    const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
+    const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
+    const float sinGamma = glm::length(across);
+    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : anyPerpendicular(lightDir);
+    const glm::vec3 centre = sceneBounds.center();
+    const float radius = std::max(sceneBounds.radius(), 1e-3f);
+    LightFit fit;
+    fit.view = glm::lookAtLH(centre - lightDir * (2.0f * radius), centre, up);
+
+    float yMin = std::numeric_limits<float>::max(), yMax = std::numeric_limits<float>::lowest();
+    for (const glm::vec3& p : body) {
+        const float y = glm::vec3(fit.view * glm::vec4(p, 1.0f)).y;
+        yMin = std::min(yMin, y);
+        yMax = std::max(yMax, y);
+    }
+    if (method == LightParameterization::LiSPSM) {
+        const float d = yMax - yMin;
+        const float deltaZ = tunables.lispsmDepthExtent > 0.0f ? tunables.lispsmDepthExtent : d * sinGamma;
+        fit.warp = lispsmWarp(camera.nearPlane, deltaZ, sinGamma) / std::max(tunables.lispsmNScale, 1e-3f);
+    }
+    // The warp P: a perspective projection along +y whose projection centre lies n = 1 / warp before the
+    // near side of B, at the eye's x. In homogeneous form w = 1 + warp (y - yMin), so warp = 0 is the
+    // identity and the fit moves continuously into the focused one as sin γ -> 0 (no threshold to cross).
+    // Depth stays z / w: monotonic along each light ray, where w is constant.
+    const float eyeX = glm::vec3(fit.view * glm::vec4(camera.position, 1.0f)).x;
+    glm::mat4 warp(1.0f);  // glm: warp[column][row]
+    warp[3][0] = -eyeX;
+    warp[3][1] = -yMin;
+    warp[1][3] = fit.warp;
+    warp[3][3] = 1.0f - fit.warp * yMin;
+
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : body) {
+        const glm::vec4 clip = warp * fit.view * glm::vec4(p, 1.0f);
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        // A body without extent across the light (bounds that are a point, a plane seen edge-on) gives
+        // nothing to fit a map to.
+        if (axis < 2 && !(hi[axis] - lo[axis] > 1e-6f * (std::abs(hi[axis]) + std::abs(lo[axis]))))
+            return uniform;
+        widen(lo[axis], hi[axis], 1e-6f * radius);
+    }
+    // Unit-cube fit: x, y to [-1, 1], depth to [0, 1] (D3D clip conventions).
+    glm::mat4 unitCube(1.0f);
+    unitCube[0][0] = 2.0f / (hi.x - lo.x);
+    unitCube[1][1] = 2.0f / (hi.y - lo.y);
+    unitCube[2][2] = 1.0f / (hi.z - lo.z);
+    unitCube[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
+    unitCube[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
+    unitCube[3][2] = -lo.z / (hi.z - lo.z);
+    fit.projection = unitCube * warp;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(fit.projection[c][r]) || !std::isfinite(fit.view[c][r])) return uniform;
+    return fit;
+}
+
+}  // namespace runtime

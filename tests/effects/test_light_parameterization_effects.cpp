@@ -1,0 +1,111 @@
+// The Parameterization annotation end to end (README, "Light-space parameterizations"): focused.fx and
+// lispsm.fx bind their light matrices from the provider's fit, which is what RenderPort=light0 renders with
+// (EffectRenderer::lightFit), not the uniform fit; an unknown or conflicting name is an error at the
+// annotation.
+#include "EffectHarness.h"
+
+#include <runtime/LightParameterization.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+
+namespace {
+
+using namespace runtime;
+using shadowfx::test::loadEffect;
+using shadowfx::test::sourcePath;
+
+glm::mat4 matrixParameter(const EffectRenderer& renderer, const std::string& name) {
+    const std::optional<size_t> index = renderer.findParameter(name);
+    EXPECT_TRUE(index.has_value()) << name;
+    glm::mat4 m(0.0f);
+    if (!index) return m;
+    const fx::Value& value = renderer.parameter(*index);
+    EXPECT_EQ(value.data.size(), 16u) << name;
+    if (value.data.size() == 16) std::memcpy(glm::value_ptr(m), value.data.data(), sizeof(m));
+    return m;
+}
+
+class ParameterizedEffect : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ParameterizedEffect, BindsTheProvidersFitNotTheUniformOne) {
+    auto renderer = loadEffect(sourcePath(std::string("effects/") + GetParam()), true);
+    ASSERT_TRUE(renderer);
+    const std::optional<Scene> scene = makeBuiltinScene("teapot");
+    ASSERT_TRUE(scene);
+    ASSERT_TRUE(shadowfx::test::render(*renderer, *scene, 160, 120));
+    FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    const std::optional<LightFit> fit = renderer->lightFit(*scene, "light0", options);
+    ASSERT_TRUE(fit);
+    EXPECT_EQ(matrixParameter(*renderer, "LightViewMatrix"), fit->view);
+    EXPECT_EQ(matrixParameter(*renderer, "LightProjectionMatrix"), fit->projection);
+    const Light& light = *scene->findLight("light0");
+    const Bounds bounds = scene->bounds();
+    EXPECT_NE(fit->projection, light.projection(bounds, nearestDepthFrom(*scene, light)));
+    EXPECT_FALSE(renderer->lightFit(*scene, "no-such-light", options).has_value());
+}
+
+INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect, ::testing::Values("focused.fx", "lispsm.fx"),
+                         [](const auto& info) {
+                             return std::string(info.param).substr(0, std::strlen(info.param) - 3);
+                         });
+
+const fx::Diagnostic* findInvalidAnnotation(const fx::DiagnosticList& diagnostics) {
+    for (const fx::Diagnostic& d : diagnostics.items())
+        if (d.id == fx::DiagId::InvalidAnnotation) return &d;
+    return nullptr;
+}
+
+std::string effectWith(const std::string& viewName, const std::string& projectionName) {
+    return "float4x4 LightView : View < string frustum = \"light0\"; string Parameterization = \"" +
+           viewName +
+           "\"; >;\n"
+           "float4x4 LightProjection : Projection < string frustum = \"light0\"; string Parameterization = "
+           "\"" +
+           projectionName +
+           "\"; >;\n"
+           "float4x4 WorldViewProjection : WorldViewProjection;\n"
+           "float4 Vs(float4 p : POSITION) : POSITION { return mul(float4(p.xyz, 1), WorldViewProjection); "
+           "}\n"
+           "float4 Ps() : COLOR { return float4(1, 1, 1, 1); }\n"
+           "technique t { pass p { VertexShader = compile vs_3_0 Vs(); PixelShader = compile ps_3_0 Ps(); } "
+           "}\n";
+}
+
+fx::DiagnosticList renderReporting(const std::string& source) {
+    fx::DiagnosticList diagnostics;
+    auto renderer = loadEffect(source, false, "parameterized.fx");
+    if (!renderer) return diagnostics;
+    const std::optional<Scene> scene = makeBuiltinScene("boxes");
+    FrameOptions options;
+    options.width = 64;
+    options.height = 48;
+    renderer->render(*scene, options, diagnostics);
+    return diagnostics;
+}
+
+TEST(ParameterizationAnnotation, UnknownNameIsAnErrorAtTheAnnotation) {
+    const fx::DiagnosticList diagnostics = renderReporting(effectWith("TSM", "TSM"));
+    const fx::Diagnostic* error = findInvalidAnnotation(diagnostics);
+    ASSERT_NE(error, nullptr) << diagnostics.str();
+    EXPECT_EQ(error->loc.line, 1);
+    EXPECT_NE(error->message.find("LiSPSM"), std::string::npos) << error->message;
+}
+
+TEST(ParameterizationAnnotation, TwoNamesForOneLightAreAnError) {
+    const fx::DiagnosticList diagnostics = renderReporting(effectWith("Focused", "LiSPSM"));
+    const fx::Diagnostic* error = findInvalidAnnotation(diagnostics);
+    ASSERT_NE(error, nullptr) << diagnostics.str();
+    EXPECT_EQ(error->loc.line, 2);
+    EXPECT_NE(error->message.find("Focused"), std::string::npos) << error->message;
+}
+
+TEST(ParameterizationAnnotation, OneNameIsAccepted) {
+    const fx::DiagnosticList diagnostics = renderReporting(effectWith("LiSPSM", "lispsm"));
+    EXPECT_EQ(findInvalidAnnotation(diagnostics), nullptr) << diagnostics.str();
+}
+
+}  // namespace

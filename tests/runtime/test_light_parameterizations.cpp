@@ -1,0 +1,230 @@
+// Light-space parameterizations (runtime/LightParameterization.h): for a grid of camera and light
+// directions, degenerate ones included, every matrix is finite and every point of the focus body (B and
+// its extrusion toward the light) lies inside the light's clip volume; LiSPSM's n_opt matches seed 000
+// eq. 1 computed independently and fades into the focused fit as the light turns parallel to the view.
+#include <runtime/LightParameterization.h>
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace runtime;
+
+namespace {
+
+constexpr float kAspect = 4.0f / 3.0f;
+constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
+                                              LightParameterization::LiSPSM};
+
+// A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (forest-like).
+Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
+    Scene scene;
+    scene.name = "terrain";
+    scene.explicitBounds = Bounds{{-100.0f, 0.0f, -100.0f}, {100.0f, 30.0f, 100.0f}};
+    scene.camera.position = {0.0f, 2.0f, -80.0f};
+    scene.camera.target = scene.camera.position + viewDirection;
+    scene.camera.nearPlane = 0.1f;
+    scene.camera.farPlane = 110.0f;
+    Light light;
+    light.direction = glm::normalize(lightDirection);
+    scene.lights.push_back(light);
+    return scene;
+}
+
+glm::vec3 fromAngles(float elevationDegrees, float azimuthDegrees) {
+    const float e = glm::radians(elevationDegrees), a = glm::radians(azimuthDegrees);
+    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+}
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// The grid: camera directions (level, tilted down, straight down) x light directions (low, oblique,
+// straight down, straight up, parallel and antiparallel to the view).
+struct Configuration {
+    std::string name;
+    glm::vec3 view;
+    glm::vec3 light;
+};
+
+std::vector<Configuration> grid() {
+    std::vector<Configuration> cases;
+    const std::vector<std::pair<std::string, glm::vec3>> views = {
+        {"level", fromAngles(0.0f, 0.0f)},
+        {"level-east", fromAngles(0.0f, 90.0f)},
+        {"down-30", fromAngles(-30.0f, 20.0f)},
+        {"straight-down", {0.0f, -1.0f, 0.0f}},
+    };
+    for (const auto& [viewName, view] : views) {
+        std::vector<std::pair<std::string, glm::vec3>> lights = {
+            {"straight-down", {0.0f, -1.0f, 0.0f}},
+            {"straight-up", {0.0f, 1.0f, 0.0f}},
+            {"parallel", view},
+            {"antiparallel", -view},
+            {"nearly-parallel", glm::normalize(view + glm::vec3(1e-4f, 0.0f, 0.0f))},
+        };
+        for (float elevation : {-10.0f, -45.0f, -80.0f})
+            for (float azimuth : {0.0f, 90.0f, 135.0f, 180.0f})
+                lights.push_back({"e" + std::to_string(int(elevation)) + "a" + std::to_string(int(azimuth)),
+                                  fromAngles(elevation, azimuth)});
+        for (const auto& [lightName, light] : lights)
+            cases.push_back({viewName + "/" + lightName, view, light});
+    }
+    return cases;
+}
+
+}  // namespace
+
+TEST(LightParameterizations, NamesParseCaseInsensitively) {
+    EXPECT_EQ(parseLightParameterization("lispsm"), LightParameterization::LiSPSM);
+    EXPECT_EQ(parseLightParameterization("Focused"), LightParameterization::Focused);
+    EXPECT_EQ(parseLightParameterization("UNIFORM"), LightParameterization::Uniform);
+    EXPECT_FALSE(parseLightParameterization("TSM").has_value());
+}
+
+TEST(LightParameterizations, FocusBodyLiesInsideEveryLightClipVolume) {
+    for (const Configuration& c : grid()) {
+        const Scene scene = terrain(c.view, c.light);
+        const Bounds bounds = scene.bounds();
+        const std::vector<glm::vec3> body =
+            focusBody(scene.camera, kAspect, bounds, scene.lights[0].direction);
+        ASSERT_FALSE(body.empty()) << c.name;
+        for (LightParameterization method : kMethods) {
+            const LightFit fit = fitLight(method, scene, bounds, kAspect, scene.lights[0]);
+            const std::string what = c.name + " " + lightParameterizationName(method);
+            ASSERT_TRUE(finite(fit.view) && finite(fit.projection)) << what;
+            for (const glm::vec3& p : body) {
+                const glm::vec4 clip = fit.projection * fit.view * glm::vec4(p, 1.0f);
+                const float tolerance = 1e-5f * std::abs(clip.w);
+                ASSERT_GT(clip.w, 0.0f) << what;
+                EXPECT_LE(std::abs(clip.x), clip.w + tolerance) << what;
+                EXPECT_LE(std::abs(clip.y), clip.w + tolerance) << what;
+                EXPECT_GE(clip.z, -tolerance) << what;
+                EXPECT_LE(clip.z, clip.w + tolerance) << what;
+            }
+        }
+    }
+}
+
+// The focus must be tighter than the uniform fit: B's light-space area grows when it is focused on.
+TEST(LightParameterizations, FocusingSpendsMoreOfTheMapOnB) {
+    const Scene scene = terrain(fromAngles(0.0f, 0.0f), fromAngles(-45.0f, 90.0f));
+    const Bounds bounds = scene.bounds();
+    const std::vector<glm::vec3> body = focusBody(scene.camera, kAspect, bounds, scene.lights[0].direction);
+    auto extent = [&](LightParameterization method) {
+        const LightFit fit = fitLight(method, scene, bounds, kAspect, scene.lights[0]);
+        glm::vec2 lo(1e9f), hi(-1e9f);
+        for (const glm::vec3& p : body) {
+            const glm::vec4 clip = fit.projection * fit.view * glm::vec4(p, 1.0f);
+            lo = glm::min(lo, glm::vec2(clip) / clip.w);
+            hi = glm::max(hi, glm::vec2(clip) / clip.w);
+        }
+        return (hi.x - lo.x) * (hi.y - lo.y);
+    };
+    EXPECT_LT(extent(LightParameterization::Uniform), 0.5f * extent(LightParameterization::Focused));
+    EXPECT_GT(extent(LightParameterization::Focused), 3.9f);  // B fills the map: [-1, 1]²
+}
+
+// Seed 000 §4.4 eq. 1 (/work/shared/seeds/000_e192ed44df49f96c.txt), in double precision from z_n, z_f:
+// n_opt = (z_n + sqrt(z_n z_f)) / sin γ with z_f = z_n + Δz.
+TEST(LightParameterizations, LispsmWarpIsTheReciprocalOfNopt) {
+    for (double zn : {0.1, 1.0, 5.0})
+        for (double dz : {0.0, 10.0, 100.0})
+            for (double gamma : {5.0, 45.0, 90.0}) {
+                const double sinGamma = std::sin(gamma * glm::pi<double>() / 180.0);
+                const double zf = zn + dz;
+                const double nopt = (zn + std::sqrt(zn * zf)) / sinGamma;
+                EXPECT_NEAR(lispsmWarp(float(zn), float(dz), float(sinGamma)), 1.0 / nopt, 1e-6 / nopt);
+            }
+    EXPECT_EQ(lispsmWarp(0.1f, 100.0f, 0.0f), 0.0f);  // γ = 0: no warp rather than n = ∞
+}
+
+// fitLight's warp is 1 / n_opt with d the extent of B along V_P and Δz = d sin γ (the reference code), all
+// recomputed here from the body and the directions.
+TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
+    for (float elevation : {-20.0f, -60.0f}) {
+        const glm::vec3 view = fromAngles(-10.0f, 0.0f);
+        const Scene scene = terrain(view, fromAngles(elevation, 30.0f));
+        const Bounds bounds = scene.bounds();
+        const glm::vec3 light = scene.lights[0].direction;
+        const glm::vec3 vp = glm::normalize(glm::cross(glm::cross(light, view), light));  // eq. 3
+        const double sinGamma = glm::length(glm::cross(light, view));
+        double lo = 1e30, hi = -1e30;
+        for (const glm::vec3& p : focusBody(scene.camera, kAspect, bounds, light)) {
+            lo = std::min(lo, double(glm::dot(p, vp)));
+            hi = std::max(hi, double(glm::dot(p, vp)));
+        }
+        const double zn = scene.camera.nearPlane;
+        const double nopt = (zn + std::sqrt(zn * (zn + (hi - lo) * sinGamma))) / sinGamma;
+        const LightFit fit = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
+        EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt) << elevation;
+        LightTunables visible;  // Δz from a visibility algorithm replaces d sin γ (seed 000 §4.4)
+        visible.lispsmDepthExtent = 50.0f;
+        const double noptVisible = (zn + std::sqrt(zn * (zn + 50.0))) / sinGamma;
+        EXPECT_NEAR(
+            1.0 / fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], visible)
+                      .warp,
+            noptVisible, 1e-3 * noptVisible);
+        LightTunables weaker;
+        weaker.lispsmNScale = 2.0f;
+        EXPECT_NEAR(
+            1.0 /
+                fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], weaker).warp,
+            2.0 * nopt, 2e-3 * nopt);
+    }
+}
+
+// As γ -> 0 the warp goes to 0 continuously and LiSPSM's matrices become the focused fit's: no jump at any
+// threshold. Every body point's light NDC moves by at most a bound proportional to the step in γ.
+TEST(LightParameterizations, LispsmFadesIntoFocusedAsLightTurnsParallel) {
+    const glm::vec3 view = fromAngles(-30.0f, 0.0f);
+    const glm::vec3 side = glm::normalize(glm::cross(view, glm::vec3(0.0f, 1.0f, 0.0f)));
+    auto sceneAt = [&](float gammaDegrees) {
+        const float g = glm::radians(gammaDegrees);
+        return terrain(view, std::cos(g) * view + std::sin(g) * side);
+    };
+    float previousWarp = -1.0f;
+    for (float gamma = 2.0f; gamma >= 0.0f; gamma -= 0.25f) {
+        const Scene scene = sceneAt(gamma);
+        const LightFit fit =
+            fitLight(LightParameterization::LiSPSM, scene, scene.bounds(), kAspect, scene.lights[0]);
+        if (previousWarp >= 0.0f) EXPECT_LT(fit.warp, previousWarp) << gamma;
+        previousWarp = fit.warp;
+    }
+    EXPECT_LT(previousWarp, 1e-5f);  // γ = 0 up to the rounding of the light direction
+
+    // With z_n = 0.1 m and d = 200 m, n_opt = 0.22 m / sin γ: the warp fades only where sin γ << z_n / d.
+    const Scene almost = sceneAt(1e-4f);
+    const Bounds bounds = almost.bounds();
+    const LightFit lispsm =
+        fitLight(LightParameterization::LiSPSM, almost, bounds, kAspect, almost.lights[0]);
+    const LightFit focused =
+        fitLight(LightParameterization::Focused, almost, bounds, kAspect, almost.lights[0]);
+    for (const glm::vec3& p : focusBody(almost.camera, kAspect, bounds, almost.lights[0].direction)) {
+        const glm::vec4 a = lispsm.projection * lispsm.view * glm::vec4(p, 1.0f);
+        const glm::vec4 b = focused.projection * focused.view * glm::vec4(p, 1.0f);
+        EXPECT_NEAR(a.x / a.w, b.x / b.w, 1e-2f);
+        EXPECT_NEAR(a.y / a.w, b.y / b.w, 1e-2f);
+    }
+}
+
+// A spot light keeps its own perspective: Focused and LiSPSM fit directional lights only.
+TEST(LightParameterizations, SpotLightsKeepTheUniformFit) {
+    Scene scene = terrain(fromAngles(0.0f, 0.0f), {0.0f, -1.0f, 0.0f});
+    scene.lights[0].type = Light::Type::Spot;
+    scene.lights[0].position = {0.0f, 60.0f, 0.0f};
+    const Bounds bounds = scene.bounds();
+    const LightFit uniform =
+        fitLight(LightParameterization::Uniform, scene, bounds, kAspect, scene.lights[0]);
+    const LightFit lispsm = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
+    EXPECT_EQ(uniform.view, lispsm.view);
+    EXPECT_EQ(uniform.projection, lispsm.projection);
+}
