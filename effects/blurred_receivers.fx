@@ -234,6 +234,9 @@ technique blurred
 {
     pass RenderShadowMap
     <
+        // Light-pass culling keeps casters this far from a visible receiver (README, "Leave-out"): the
+        // receiver marks spread BlurRadiusTexels x (1 + BlurLoops), 8 by default; 40 leaves room to tune.
+        float FilterReachTexels = 40;
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=ShadowDepth;"
                         "RenderPort=light0;"

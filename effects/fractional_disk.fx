@@ -398,6 +398,9 @@ float4 DirectPS(SceneVertexOutput IN) : COLOR
 #define BACK_FACE_PASS                                                                                      \
     pass RenderBackFaces                                                                                    \
     <                                                                                                       \
+        /* Light-pass culling keeps casters this far from a visible receiver (README, "Leave-out"): the */   \
+        /* disk reaches MaxRadiusTexels, at most 32, plus one texel. */                                     \
+        float FilterReachTexels = 33;                                                                       \
         string Script = "RenderColorTarget0=DiskMap;"                                                       \
                         "RenderDepthStencilTarget=ShadowDepth;"                                             \
                         "RenderPort=light0;"                                                                \

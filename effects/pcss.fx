@@ -220,6 +220,10 @@ technique pcss
 {
     pass RenderShadowMap
     <
+        // Light-pass culling keeps the casters within this many texels of a visible receiver (README,
+        // "Leave-out"): the blocker search and the filter reach MaxSearchTexels and MaxPenumbraTexels,
+        // at most 64 (their sliders' limit), plus one bilinear texel.
+        float FilterReachTexels = 65;
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=ShadowDepth;"
                         "RenderPort=light0;"

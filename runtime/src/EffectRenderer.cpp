@@ -507,6 +507,7 @@ public:
     void beginPass(const fx::CompiledPass& pass) override {
         mPass = passIndex(pass);
         mSceneSaysSkip = sceneSaysSkip(pass);
+        mPadTexels = receiverPadTexels(pass);
     }
     void setColorTarget(int index, const std::string& texture) override {
         if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
@@ -595,8 +596,7 @@ public:
         op.signature = h;
         op.sceneSaysSkip = mSceneSaysSkip;
         if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry)
-            op.region =
-                receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, kReceiverPadTexels);
+            op.region = receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
         mPlan.ops.push_back(std::move(op));
     }
 
@@ -625,28 +625,39 @@ private:
         if (!mImpl.textures.count(it->second) && !(desc && isRenderTarget(*desc))) return kUnknown;
         return static_cast<int>(it->second);
     }
+    // The effect's declaration of `pass`, for its annotations.
+    const fx::Pass* sourcePass(const fx::CompiledPass& pass) const {
+        const std::string& technique = mImpl.compiled->techniques[mTechnique].name;
+        for (const fx::Technique& source : mImpl.effect().techniques) {
+            if (source.name != technique) continue;
+            for (const fx::Pass& declared : source.passes)
+                if (declared.name == pass.name) return &declared;
+        }
+        return nullptr;
+    }
     // A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second
     // depth layer finds nothing) or "NoLightArea" (no light has an area: no soft-shadow filter needed) is
     // left out where that holds. The effect guarantees that later passes do not need what it writes then.
     bool sceneSaysSkip(const fx::CompiledPass& pass) const {
-        const fx::Effect& effect = mImpl.effect();
-        const std::string& technique = mImpl.compiled->techniques[mTechnique].name;
-        for (const fx::Technique& source : effect.techniques) {
-            if (source.name != technique) continue;
-            for (const fx::Pass& sourcePass : source.passes) {
-                if (sourcePass.name != pass.name) continue;
-                const fx::Annotation* when = sourcePass.annotation("LeaveOutWhen");
-                if (!when || when->value.kind != fx::Expr::Kind::String) return false;
-                if (when->value.text == "NoClosedObjects")
-                    return std::none_of(mScene.objects.begin(), mScene.objects.end(),
-                                        [](const SceneObject& o) { return o.mesh && o.mesh->closed; });
-                if (when->value.text == "NoLightArea")
-                    return std::all_of(mScene.lights.begin(), mScene.lights.end(),
-                                       [](const Light& light) { return light.areaRadius <= 0.0f; });
-                return false;
-            }
-        }
+        const fx::Pass* declared = sourcePass(pass);
+        const fx::Annotation* when = declared ? declared->annotation("LeaveOutWhen") : nullptr;
+        if (!when || when->value.kind != fx::Expr::Kind::String) return false;
+        if (when->value.text == "NoClosedObjects")
+            return std::none_of(mScene.objects.begin(), mScene.objects.end(),
+                                [](const SceneObject& o) { return o.mesh && o.mesh->closed; });
+        if (when->value.text == "NoLightArea")
+            return std::all_of(mScene.lights.begin(), mScene.lights.end(),
+                               [](const Light& light) { return light.areaRadius <= 0.0f; });
         return false;
+    }
+    // How far around a receiver's own texel the passes reading this light pass's map look, in texels:
+    // kReceiverPadTexels, or more where the pass says so (`float FilterReachTexels = 32;` on a map read by a
+    // PCSS blocker search or a fractional disk), so that light-pass culling keeps every caster they can see.
+    float receiverPadTexels(const fx::CompiledPass& pass) const {
+        const fx::Pass* declared = sourcePass(pass);
+        const fx::Annotation* reach = declared ? declared->annotation("FilterReachTexels") : nullptr;
+        if (!reach || reach->value.kind != fx::Expr::Kind::Number) return kReceiverPadTexels;
+        return std::max(kReceiverPadTexels, static_cast<float>(reach->value.number));
     }
     RenderStateBlock passStates(const fx::CompiledPass& pass) const {
         RenderStateBlock block = RenderStateBlock::defaults();
@@ -694,6 +705,7 @@ private:
     RenderPortView mPort;
     size_t mPass = 0;
     bool mSceneSaysSkip = false;
+    float mPadTexels = kReceiverPadTexels;  // receiverPadTexels of the current pass
     std::vector<float> mClearColor;
     float mClearDepth = 1.0f;
     int mClearStencil = 0;

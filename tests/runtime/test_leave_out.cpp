@@ -242,6 +242,28 @@ INSTANTIATE_TEST_SUITE_P(ThesisEffect, LeaveOutImage,
                                            Case{"main", "P", Light::Type::Spot},
                                            Case{"hardware", "", Light::Type::Spot}));
 
+// A map read by a wide filter declares its reach (`float FilterReachTexels` on the light pass: PCSS's
+// blocker search and penumbra, up to 65 texels), and light-pass culling keeps every caster within it: the
+// image stays identical, with more casters drawn than under the thesis effect's 8-texel default.
+TEST(LeaveOut, WideFiltersKeepTheCastersTheyReach) {
+    auto pcss = loadEffect(sourcePath("effects/pcss.fx"), true);
+    auto pcssFull = loadEffect(sourcePath("effects/pcss.fx"), true);
+    auto thesis = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(pcss && pcssFull && thesis);
+    Scene scene = gridScene(Light::Type::Directional);
+    scene.lights[0].areaRadius = 0.5f;  // a real penumbra for LightAreaRadius
+    const Frame culled = renderFrame(*pcss, scene, "pcss", true);
+    const Frame full = renderFrame(*pcssFull, scene, "pcss", false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+    const Frame narrow = renderFrame(*thesis, scene, "main", true);
+    const PassStats* wide = findPass(culled.stats, "RenderShadowMap");
+    const PassStats* standard = findPass(narrow.stats, "RenderShadowMap");
+    ASSERT_TRUE(wide && standard);
+    EXPECT_GT(wide->draws, standard->draws);
+    EXPECT_GT(wide->culled, 0) << "casters beyond the reach are still left out";
+}
+
 // The shadow map is reused while only the camera moves, rerun when the light, an object or a parameter
 // the light pass reads changes, and every frame equals the frame without leave-out.
 class ShadowMapCache : public ::testing::TestWithParam<const char*> {};
