@@ -79,7 +79,8 @@ float4 SinglePassDualShadowPS(ReceiverVertexOutput IN) : COLOR
 technique peel
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + Offset: a constant bias; "
+    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
+                                    "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
@@ -93,7 +94,8 @@ technique peel
 technique peel_cull
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + Offset: a constant bias; "
+    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
+                                    "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
@@ -107,7 +109,8 @@ technique peel_cull
 technique single_pass
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + Offset: a constant bias; "
+    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
+                                    "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearFrontBack;"
                     "Pass=RenderFrontBack;"

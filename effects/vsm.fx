@@ -234,7 +234,9 @@ technique vsm
 technique vsm_blur
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing; fov-1: the blur widens shadows by its kernel, and a texel spans 33 pixels under a 1 degree lens";
+    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing; fov-1: the blur "
+                                    "widens shadows by its kernel, and a texel spans 33 pixels under a 1 "
+                                    "degree lens";
     string Script = "Pass=RenderMoments; Pass=BlurX; Pass=BlurY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.05 % on dual-l, 0.098 % on teapot (hard truth)
