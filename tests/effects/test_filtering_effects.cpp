@@ -4,7 +4,7 @@
 // in the effect), PCF filters at shadow edges but not inside the umbra, the light-space noise of
 // `jittered_noise` stays on the surface when the camera moves, VSM's visibility is the Chebyshev bound of
 // its own moments map computed on the CPU, and the minimum-variance guard keeps a flat receiver clean.
-#include "EffectHarness.h"
+#include "VisibilityHarness.h"
 
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
@@ -23,60 +23,18 @@ namespace {
 constexpr int kWidth = 320;  // the size the effects' bounds were measured at
 constexpr int kHeight = 240;
 
-// The effect compiled with SHADOWFX_VISIBILITY (and `defines`): its frame's red channel is the shadow term.
-std::unique_ptr<runtime::EffectRenderer> loadVisibilityEffect(
-    const std::string& path, std::vector<std::pair<std::string, std::string>> defines = {}) {
-    sharedContext();
-    fx::DiagnosticList diagnostics;
-    fx::ParseOptions options;
-    options.defines = std::move(defines);
-    options.defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-    auto effect = fx::parseEffectFile(sourcePath(path), options, diagnostics);
-    auto compiled = effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
-    if (!compiled || diagnostics.hasErrors()) {
-        ADD_FAILURE() << diagnostics.str();
-        return nullptr;
-    }
-    return runtime::EffectRenderer::create(std::shared_ptr<const fx::CompiledEffect>(std::move(compiled)),
-                                           diagnostics);
-}
-
 std::vector<float> renderVisibility(runtime::EffectRenderer& renderer, const runtime::Scene& scene,
                                     const std::string& technique, int width = kWidth, int height = kHeight) {
     if (!render(renderer, scene, width, height, technique)) return {};
     return runtime::visibilityFromFrame(renderer.readFrame());
 }
 
-struct SceneTruth {
-    runtime::Scene scene;
-    runtime::GBuffer gbuffer;
-    runtime::GroundTruth truth;
-    std::vector<uint8_t> receivers;
-};
-
 const SceneTruth& truthOf(const std::string& name) {
     static std::map<std::string, SceneTruth> cache;
     auto it = cache.find(name);
     if (it != cache.end()) return it->second;
-    SceneTruth t;
-    t.scene = *runtime::makeBuiltinScene(name, nullptr);
-    fx::DiagnosticList diagnostics;
-    sharedContext();
-    t.gbuffer = *runtime::renderGBuffer(t.scene, kWidth, kHeight, diagnostics);
-    t.truth = runtime::ShadowRayCaster(t.scene).compute(t.gbuffer, t.scene.lights.at(0));
-    t.receivers = runtime::receiverMask(t.gbuffer, t.scene.lights.at(0));
-    return cache.emplace(name, std::move(t)).first->second;
-}
-
-float annotationNumber(const fx::CompiledEffect& effect, const std::string& technique,
-                       const std::string& name) {
-    for (const fx::Technique& t : effect.effect->techniques) {
-        if (t.name != technique) continue;
-        for (const fx::Annotation& a : t.annotations)
-            if (a.name == name) return static_cast<float>(a.value.number);
-    }
-    ADD_FAILURE() << technique << " has no annotation " << name;
-    return 0.0f;
+    return cache.emplace(name, computeSceneTruth(*runtime::makeBuiltinScene(name, nullptr), kWidth, kHeight))
+        .first->second;
 }
 
 // [SECTION] Conformance with the ground truth
@@ -92,7 +50,7 @@ void expectUnderAnnotatedBound(const std::string& effectPath) {
         for (const fx::CompiledTechnique& technique : renderer->effect().techniques) {
             SCOPED_TRACE(effectPath + " " + technique.name + " on " + sceneName);
             const float bound =
-                annotationNumber(renderer->effect(), technique.name, "ExpectMisclassifiedBelow");
+                techniqueAnnotationNumber(renderer->effect(), technique.name, "ExpectMisclassifiedBelow");
             ASSERT_LT(bound * 4, blank) << "a blank (all lit) image must fail the bound by far";
             const std::vector<float> visibility = renderVisibility(*renderer, t.scene, technique.name);
             const runtime::ShadowErrors errors =

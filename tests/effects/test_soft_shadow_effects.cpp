@@ -6,7 +6,7 @@
 // plane; the shader's q is the CPU's; fractional-disk's preprocessed map holds, per texel, an upper bound of
 // the distance to the nearest edge that a brute-force CPU search finds; its early out is taken only where
 // the truth is umbra or full light.
-#include "EffectHarness.h"
+#include "VisibilityHarness.h"
 
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
@@ -27,46 +27,16 @@ constexpr int kHeight = 240;
 constexpr float kAreaRadius = 2.0f;  // `shadowfx bench --area-radius 2`, where the bounds come from
 constexpr int kAreaSamples = 36;     // few samples keep the truth fast; its noise is far below the bounds
 
-// The effect compiled with SHADOWFX_VISIBILITY: its frame's red channel is the shadow term.
-std::unique_ptr<runtime::EffectRenderer> loadVisibilityEffect(const std::string& path) {
-    sharedContext();
-    fx::DiagnosticList diagnostics;
-    fx::ParseOptions options;
-    options.defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-    auto effect = fx::parseEffectFile(sourcePath(path), options, diagnostics);
-    auto compiled = effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
-    if (!compiled || diagnostics.hasErrors()) {
-        ADD_FAILURE() << diagnostics.str();
-        return nullptr;
-    }
-    return runtime::EffectRenderer::create(std::shared_ptr<const fx::CompiledEffect>(std::move(compiled)),
-                                           diagnostics);
-}
-
 std::vector<float> renderVisibility(runtime::EffectRenderer& renderer, const runtime::Scene& scene,
                                     const std::string& technique) {
     if (!render(renderer, scene, kWidth, kHeight, technique)) return {};
     return runtime::visibilityFromFrame(renderer.readFrame());
 }
 
-struct SceneTruth {
-    runtime::Scene scene;
-    runtime::GBuffer gbuffer;
-    runtime::GroundTruth truth;
-    std::vector<uint8_t> receivers;
-};
-
 SceneTruth computeTruth(runtime::Scene scene) {
-    SceneTruth t;
-    t.scene = std::move(scene);
-    fx::DiagnosticList diagnostics;
-    sharedContext();
-    t.gbuffer = *runtime::renderGBuffer(t.scene, kWidth, kHeight, diagnostics);
     runtime::GroundTruthOptions options;
     options.areaSamples = kAreaSamples;
-    t.truth = runtime::ShadowRayCaster(t.scene).compute(t.gbuffer, t.scene.lights.at(0), options);
-    t.receivers = runtime::receiverMask(t.gbuffer, t.scene.lights.at(0));
-    return t;
+    return computeSceneTruth(std::move(scene), kWidth, kHeight, options);
 }
 
 // A built-in scene with its light0 turned into a disk of radius kAreaRadius, and its soft truth.
@@ -77,17 +47,6 @@ const SceneTruth& areaLitTruth(const std::string& name) {
     runtime::Scene scene = *runtime::makeBuiltinScene(name, nullptr);
     scene.lights.at(0).areaRadius = kAreaRadius;
     return cache.emplace(name, computeTruth(std::move(scene))).first->second;
-}
-
-float annotationNumber(const fx::CompiledEffect& effect, const std::string& technique,
-                       const std::string& name) {
-    for (const fx::Technique& t : effect.effect->techniques) {
-        if (t.name != technique) continue;
-        for (const fx::Annotation& a : t.annotations)
-            if (a.name == name) return static_cast<float>(a.value.number);
-    }
-    ADD_FAILURE() << technique << " has no annotation " << name;
-    return 0.0f;
 }
 
 // [SECTION] Conformance with the area-light truth
@@ -102,15 +61,16 @@ void expectUnderAnnotatedBounds(const std::string& effectPath) {
         for (const fx::CompiledTechnique& technique : renderer->effect().techniques) {
             SCOPED_TRACE(effectPath + " " + technique.name + " on " + sceneName);
             const float maeBound =
-                annotationNumber(renderer->effect(), technique.name, "ExpectPenumbraMaeBelow");
+                techniqueAnnotationNumber(renderer->effect(), technique.name, "ExpectPenumbraMaeBelow");
             ASSERT_LT(maeBound, blank.meanAbsoluteError) << "a blank (all lit) image must fail the bound";
             const runtime::ShadowErrors errors = runtime::compareVisibility(
                 t.truth.visibility, renderVisibility(*renderer, t.scene, technique.name), t.receivers);
             EXPECT_LT(errors.meanAbsoluteError, maeBound);
             EXPECT_LT(errors.meanAbsoluteError * 2, blank.meanAbsoluteError)
                 << "no better than a blank image";
-            EXPECT_LT(errors.misclassifiedPercent,
-                      annotationNumber(renderer->effect(), technique.name, "ExpectMisclassifiedBelow"));
+            EXPECT_LT(
+                errors.misclassifiedPercent,
+                techniqueAnnotationNumber(renderer->effect(), technique.name, "ExpectMisclassifiedBelow"));
         }
     }
 }

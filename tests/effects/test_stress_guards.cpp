@@ -1,7 +1,7 @@
 // The numerical guards `shadowfx stress` showed were needed, each pinned by the stress case that needs it
 // (runtime/StressCases.h): a camera looking straight down, a scene far from the origin, a spot light inside
 // the scene's bounds. Real renders of the thesis effect against the ray-cast truth.
-#include "EffectHarness.h"
+#include "VisibilityHarness.h"
 
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
@@ -28,26 +28,11 @@ runtime::StressCase stressCase(const char* name) {
     return c ? std::move(*c) : runtime::StressCase{};
 }
 
-// The thesis effect's `main` technique with SHADOWFX_VISIBILITY: its frame is the shadow factor.
-std::unique_ptr<runtime::EffectRenderer> visibilityEffect() {
-    shadowfx::test::sharedContext();
-    fx::DiagnosticList diagnostics;
-    fx::ParseOptions options;
-    options.defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-    std::shared_ptr<fx::Effect> effect =
-        fx::parseEffectFile(shadowfx::test::sourcePath("effects/thesis_fxcomposer.fx"), options, diagnostics);
-    std::shared_ptr<fx::CompiledEffect> compiled =
-        effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
-    std::unique_ptr<runtime::EffectRenderer> renderer =
-        compiled ? runtime::EffectRenderer::create(compiled, diagnostics) : nullptr;
-    EXPECT_TRUE(renderer) << diagnostics.str();
-    return renderer;
-}
-
 // Misclassified % of the effect rendered on `scene`, scored against the truth of `truthScene`.
 double misclassifiedPercent(const runtime::Scene& scene, const runtime::Scene& truthScene) {
     constexpr int kWidth = 320, kHeight = 240;
-    std::unique_ptr<runtime::EffectRenderer> renderer = visibilityEffect();
+    std::unique_ptr<runtime::EffectRenderer> renderer =
+        shadowfx::test::loadVisibilityEffect("effects/thesis_fxcomposer.fx");
     if (!renderer || !shadowfx::test::render(*renderer, scene, kWidth, kHeight, "main")) return 100.0;
     fx::DiagnosticList diagnostics;
     std::optional<runtime::GBuffer> gbuffer =
