@@ -108,7 +108,8 @@ const std::vector<std::pair<std::string, CaseMaker>>& caseTable() {
          [] {
              Scene scene = *makeBuiltinScene("behind");
              setSun(scene, glm::vec3(0.25f, -0.35f, -1.0f));
-             return ordinaryCase("behind-ordinary", "seed 004's scene with the light in front of the viewer, as low", scene,
+             return ordinaryCase("behind-ordinary",
+                                 "seed 004's scene with the light in front of the viewer, as low", scene,
                                  false);
          }},
         {"light-along-view",
