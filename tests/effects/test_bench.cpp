@@ -2,6 +2,7 @@
 // results.json must validate against docs/results.schema.json, its report and images must exist, and its
 // figures must be sane (the thesis effect's shadows are mostly right). Also the per-pass timings of
 // FrameOptions::timePasses that the bench and the viewer read.
+#include "CliRunner.h"
 #include "EffectHarness.h"
 
 #include <nlohmann/json.hpp>
@@ -12,7 +13,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
 
 namespace shadowfx::test {
 namespace {
@@ -79,17 +79,11 @@ Json readJson(const std::filesystem::path& path) {
     return Json::parse(in);
 }
 
+// The built tool's exit status, its output appended to `output` (CliRunner.h runs it).
 int runTool(const std::string& arguments, std::string& output) {
-    const std::string command = "cd '" + std::string(SHADOWFX_SOURCE_DIR) + "' && '" +
-                                std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx' " +
-                                arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return -1;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const shadowfx::test::RunResult result = shadowfx::test::run(arguments);
+    output += result.output;
+    return result.exitCode;
 }
 
 TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {

@@ -7,6 +7,7 @@
 // comment beside it in the effect), and this test renders each one with SHADOWFX_VISIBILITY at 320x240 and
 // asserts the bound. A bound alone would pass a blank image where shadows are small, so the test also
 // demands that the effect shadows most pixels the truth shadows and lights most pixels the truth lights.
+#include "CliRunner.h"
 #include "EffectHarness.h"
 
 #include <runtime/GBuffer.h>
@@ -25,7 +26,6 @@
 #include <map>
 #include <ostream>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace shadowfx::test {
 namespace {
@@ -194,17 +194,11 @@ TEST(DepthLayerRanking, DualLayersWithCullingBeatMidpointAndConstantBiasOnDualL)
 
 // [SECTION] Bias sweeps through `shadowfx bench --set`
 
+// The built tool's exit status, its output appended to `output` (CliRunner.h runs it).
 int runTool(const std::string& arguments, std::string& output) {
-    const std::string command = "cd '" + std::string(SHADOWFX_SOURCE_DIR) + "' && '" +
-                                std::string(SHADOWFX_BINARY_DIR) + "/samples/shadowfx/shadowfx' " +
-                                arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return -1;
-    char buffer[4096];
-    size_t n = 0;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const shadowfx::test::RunResult result = shadowfx::test::run(arguments);
+    output += result.output;
+    return result.exitCode;
 }
 
 // How the README's constant-bias sweep is run: --set reaches the effect (a tiny bias gives acne, the
