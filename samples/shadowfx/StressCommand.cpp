@@ -15,6 +15,7 @@
 #include <runtime/GBuffer.h>
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
+#include <runtime/LightParameterization.h>
 #include <runtime/ShadowMetrics.h>
 #include <runtime/StressCases.h>
 
@@ -170,18 +171,22 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
         const runtime::Bounds bounds = scene.bounds();
         if (!finite(scene.camera.view()) || !finite(scene.camera.projection(aspect)))
             truth.problems.push_back("camera matrix not finite");
-        for (const runtime::Light& sceneLight : scene.lights)
-            if (!finite(sceneLight.view(bounds)) ||
-                !finite(sceneLight.projection(bounds, runtime::nearestDepthFrom(scene, sceneLight))))
+        const auto uniformFit = [&](const runtime::Light& light) {
+            return runtime::fitLight(runtime::LightParameterization::Uniform, scene, bounds, aspect, light);
+        };
+        for (const runtime::Light& sceneLight : scene.lights) {
+            const runtime::LightFit fit = uniformFit(sceneLight);
+            if (!finite(fit.view) || !finite(fit.projection))
                 truth.problems.push_back("light '" + sceneLight.name + "' matrix not finite");
+        }
         std::optional<runtime::GBuffer> own =
             c.truthScene ? runtime::renderGBuffer(scene, width, height, sink) : std::move(gbuffer);
         if (!own) return std::nullopt;
         const runtime::Light& sceneLight = scene.lights.at(0);
         const std::vector<uint8_t> receivers = runtime::receiverMask(*own, sceneLight);
-        const glm::mat4 lightView = sceneLight.view(bounds);
-        const glm::mat4 lightProjection =
-            sceneLight.projection(bounds, runtime::nearestDepthFrom(scene, sceneLight));
+        const runtime::LightFit fit = uniformFit(sceneLight);
+        const glm::mat4& lightView = fit.view;
+        const glm::mat4& lightProjection = fit.projection;
         truth.lightVolumeReceivers = static_cast<size_t>(std::count(receivers.begin(), receivers.end(), 1));
         truth.outsideLightVolume = countOutsideLightVolume(*own, receivers, lightProjection * lightView);
         for (size_t i = 0; i < receivers.size(); ++i)
