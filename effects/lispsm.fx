@@ -15,6 +15,12 @@ float NScale : LiSPSMNScale
     float UIMax = 8.0;
 > = 1.0;
 
+// V_P from B's middle vector (seed 000 §4.4, the paper's own choice) instead of eq. 3's view direction.
+bool MiddleVector : LiSPSMMiddleVector
+<
+    string UIName = "LiSPSM middle vector";
+> = false;
+
 technique bilinear
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.

@@ -48,6 +48,16 @@ void widen(float& lo, float& hi, float absolute) {
     hi += margin;
 }
 
+// Seed 000 §4.4's "middle vector" of B: the direction from the eye into the middle of B's volume, found as
+// the sum of the vectors from the eye to B's vertices (the first half of focusBody's points; the far ones
+// weigh more, as the seed wants). The view direction where that sum vanishes (the eye inside a symmetric B).
+glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body) {
+    glm::dvec3 sum(0.0);
+    for (size_t i = 0; i < body.size() / 2; ++i) sum += glm::dvec3(body[i] - camera.position);
+    const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
+    return glm::length(sum) > 1e-9 ? glm::vec3(glm::normalize(sum)) : viewDir;
+}
+
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
@@ -114,7 +124,9 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     // Light space with y along V_P = (L x V) x L, the view direction made perpendicular to the light
     // (seed 000 eq. 3), so that the warp below runs from the viewer's side of B to its far side.
     const Camera& camera = scene.camera;
-    const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
+    const glm::vec3 viewDir = method == LightParameterization::LiSPSM && tunables.lispsmMiddleVector
+                                  ? middleVector(camera, body)
+                                  : glm::normalize(camera.target - camera.position);
     const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
     const float sinGamma = glm::length(across);
     const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : anyPerpendicular(lightDir);

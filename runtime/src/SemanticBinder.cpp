@@ -131,6 +131,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (i < values.size() && !values[i].data.empty()) {
             if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];
             if (upperSemantic == "LISPSMDEPTHEXTENT") mTunables.lispsmDepthExtent = values[i].data[0];
+            if (upperSemantic == "LISPSMMIDDLEVECTOR")
+                mTunables.lispsmMiddleVector = values[i].data[0] != 0.0f;
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);

@@ -182,6 +182,57 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
     }
 }
 
+// With LiSPSMMiddleVector, V_P is seed 000 §4.4's middle vector: the sum of the eye-to-vertex vectors of B,
+// made perpendicular to the light, recomputed here from B's vertices (intersectionBody of the clamped
+// frustum = the first half of focusBody); the light view's y axis is V_P and n_opt uses its γ.
+TEST(LightParameterizations, LispsmMiddleVectorIsTheSumOverB) {
+    LightTunables middle;
+    middle.lispsmMiddleVector = true;
+    // Looking along the terrain's long side from near one edge: B leans toward the bounds' inside.
+    const glm::vec3 view = glm::normalize(glm::vec3(0.6f, -0.05f, 1.0f));
+    const Scene scene = terrain(view, fromAngles(-40.0f, 100.0f));
+    const Bounds bounds = scene.bounds();
+    const glm::vec3 light = scene.lights[0].direction;
+    const std::vector<glm::vec3> body = focusBody(scene.camera, kAspect, bounds, light);
+    glm::dvec3 sum(0.0);
+    for (size_t i = 0; i < body.size() / 2; ++i) sum += glm::dvec3(body[i] - scene.camera.position);
+    const glm::dvec3 m = glm::normalize(sum), l(light);
+    const glm::dvec3 vp = glm::normalize(m - glm::dot(m, l) * l);
+    const glm::dvec3 eq3 = glm::normalize(glm::cross(glm::cross(l, glm::dvec3(view)), l));
+    ASSERT_LT(glm::dot(vp, eq3), 0.999) << "the case must tell the two vectors apart";
+
+    const LightFit fit =
+        fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], middle);
+    const glm::dvec3 yAxis(fit.view[0][1], fit.view[1][1], fit.view[2][1]);
+    EXPECT_GT(glm::dot(yAxis, vp), 1.0 - 1e-5);
+    double lo = 1e30, hi = -1e30;
+    for (const glm::vec3& p : body) {
+        lo = std::min(lo, glm::dot(glm::dvec3(p), vp));
+        hi = std::max(hi, glm::dot(glm::dvec3(p), vp));
+    }
+    const double sinGamma = glm::length(glm::cross(m, l));
+    const double zn = scene.camera.nearPlane;
+    const double nopt = (zn + std::sqrt(zn * (zn + (hi - lo) * sinGamma))) / sinGamma;
+    EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt);
+
+    // And it keeps every point of the body in the clip volume over the whole grid.
+    for (const Configuration& c : grid()) {
+        const Scene s = terrain(c.view, c.light);
+        const LightFit f =
+            fitLight(LightParameterization::LiSPSM, s, s.bounds(), kAspect, s.lights[0], middle);
+        ASSERT_TRUE(finite(f.view) && finite(f.projection)) << c.name;
+        for (const glm::vec3& p : focusBody(s.camera, kAspect, s.bounds(), s.lights[0].direction)) {
+            const glm::vec4 clip = f.projection * f.view * glm::vec4(p, 1.0f);
+            const float tolerance = 1e-5f * std::abs(clip.w);
+            ASSERT_GT(clip.w, 0.0f) << c.name;
+            EXPECT_LE(std::abs(clip.x), clip.w + tolerance) << c.name;
+            EXPECT_LE(std::abs(clip.y), clip.w + tolerance) << c.name;
+            EXPECT_GE(clip.z, -tolerance) << c.name;
+            EXPECT_LE(clip.z, clip.w + tolerance) << c.name;
+        }
+    }
+}
+
 // As γ -> 0 the warp goes to 0 continuously and LiSPSM's matrices become the focused fit's: no jump at any
 // threshold. Every body point's light NDC moves by at most a bound proportional to the step in γ.
 TEST(LightParameterizations, LispsmFadesIntoFocusedAsLightTurnsParallel) {
@@ -196,7 +247,9 @@ TEST(LightParameterizations, LispsmFadesIntoFocusedAsLightTurnsParallel) {
         const Scene scene = sceneAt(gamma);
         const LightFit fit =
             fitLight(LightParameterization::LiSPSM, scene, scene.bounds(), kAspect, scene.lights[0]);
-        if (previousWarp >= 0.0f) EXPECT_LT(fit.warp, previousWarp) << gamma;
+        if (previousWarp >= 0.0f) {
+            EXPECT_LT(fit.warp, previousWarp) << gamma;
+        }
         previousWarp = fit.warp;
     }
     EXPECT_LT(previousWarp, 1e-5f);  // γ = 0 up to the rounding of the light direction

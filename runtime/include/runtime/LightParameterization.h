@@ -6,8 +6,8 @@
 //   Uniform   the light's own matrices (Scene.h, Light::view/projection): the whole scene, view-independent
 //   Focused   an orthographic fit to the intersection body B = view frustum ∩ scene bounds, extruded toward
 //             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
-//   LiSPSM    Focused followed by a perspective warp along V_P, the view direction made perpendicular to
-//             the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//   LiSPSM    Focused followed by a perspective warp along V_P, the view direction (or B's middle vector)
+//             made perpendicular to the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
 //
 // Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
 #pragma once
@@ -36,6 +36,9 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
+    // LiSPSMMiddleVector: V_P from B's "middle vector" (seed 000 §4.4: the sum of the vectors from the eye
+    // to B's vertices, which leans toward where B has volume) instead of the view direction of eq. 3.
+    bool lispsmMiddleVector = false;
 };
 
 struct LightFit {
