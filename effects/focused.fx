@@ -6,6 +6,13 @@
 #define LIGHT_PARAMETERIZATION "Focused"
 #include "include/lightspace.fxh"
 
+// Pancaking (seed 000 §4.1): the map's depth range spans the receivers only; casters before them are
+// clamped onto its near plane by the map pass's DepthClipEnable = false (lightspace.fxh).
+bool Pancake : LightPancaking
+<
+    string UIName = "Pancake casters (depth range of receivers only)";
+> = false;
+
 technique bilinear
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.

@@ -109,7 +109,10 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
 }
 
 // [SECTION] Passes
-// The shadow map from light0's port (the parameterization's matrices), then the scene from the camera.
+// The shadow map from light0's port (the parameterization's matrices), then the scene from the camera. The
+// map pass clamps depth instead of clipping (DepthClipEnable = false): with LightPancaking the fit's depth
+// range holds only the receivers, and casters between them and the light land on the near plane, still
+// nearer than every receiver; without it nothing lies outside the range and the state changes nothing.
 #define LIGHTSPACE_PASSES                                                                                   \
     pass RenderShadowMap                                                                                    \
     <                                                                                                       \
@@ -126,6 +129,7 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
         CullMode = None;                                                                                    \
         ZEnable = true;                                                                                     \
         ZWriteEnable = true;                                                                                \
+        DepthClipEnable = false;                                                                            \
         VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
         PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
     }                                                                                                       \

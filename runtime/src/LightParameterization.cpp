@@ -157,12 +157,15 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     warp[1][3] = fit.warp;
     warp[3][3] = 1.0f - fit.warp * yMin;
 
+    // x, y cover B and its extrusion toward the light; depth too, unless pancaking fits it to B's receivers
+    // (the first half of the body) alone.
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const glm::vec3& p : body) {
-        const glm::vec4 clip = warp * fit.view * glm::vec4(p, 1.0f);
+    for (size_t i = 0; i < body.size(); ++i) {
+        const glm::vec4 clip = warp * fit.view * glm::vec4(body[i], 1.0f);
         const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-        lo = glm::min(lo, ndc);
-        hi = glm::max(hi, ndc);
+        const bool setsDepth = !tunables.pancaking || i < body.size() / 2;
+        lo = glm::min(lo, setsDepth ? ndc : glm::vec3(ndc.x, ndc.y, lo.z));
+        hi = glm::max(hi, setsDepth ? ndc : glm::vec3(ndc.x, ndc.y, hi.z));
     }
     for (int axis = 0; axis < 3; ++axis) {
         // A body without extent across the light (bounds that are a point, a plane seen edge-on) gives

@@ -172,6 +172,7 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
     gl::PolygonOffset(slopeScale, depthBias * std::ldexp(1.0f, depthBits > 0 ? depthBits : 24));
     enable(GL_SCISSOR_TEST, flag(RenderStateId::ScissorTestEnable));
     enable(GL_MULTISAMPLE, flag(RenderStateId::MultiSampleAntialias));
+    enable(GL_DEPTH_CLAMP, !flag(RenderStateId::DepthClipEnable));
     enable(GL_FRAMEBUFFER_SRGB, flag(RenderStateId::SRGBWriteEnable));
 
     // [SECTION] Blending. One blend state for all targets, as D3D9 (no independent blend).

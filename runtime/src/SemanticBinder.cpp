@@ -133,6 +133,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             if (upperSemantic == "LISPSMDEPTHEXTENT") mTunables.lispsmDepthExtent = values[i].data[0];
             if (upperSemantic == "LISPSMMIDDLEVECTOR")
                 mTunables.lispsmMiddleVector = values[i].data[0] != 0.0f;
+            if (upperSemantic == "LIGHTPANCAKING") mTunables.pancaking = values[i].data[0] != 0.0f;
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);

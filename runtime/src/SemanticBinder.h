@@ -11,8 +11,9 @@
 // A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM";`
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
-// LiSPSMDepthExtent and LiSPSMMiddleVector. Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a
-// second depth layer can matter) and LightAreaRadius (0 = no soft-shadow filter needed).
+// LiSPSMDepthExtent, LiSPSMMiddleVector and LightPancaking. Scene-driven choices: SceneHasClosedObjects (true
+// if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
+// filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>

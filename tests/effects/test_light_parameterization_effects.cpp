@@ -1,8 +1,10 @@
 // The Parameterization annotation end to end (README, "Light-space parameterizations"): focused.fx and
 // lispsm.fx bind their light matrices from the provider's fit, which is what RenderPort=light0 renders with
 // (EffectRenderer::lightFit), not the uniform fit; an unknown or conflicting name is an error at the
-// annotation.
-#include "EffectHarness.h"
+// annotation. Pancaking clamps the casters before the receivers' depth range onto the map's near plane.
+#include "VisibilityHarness.h"
+
+#include "../../runtime/src/SceneBuilding.h"
 
 #include <runtime/LightParameterization.h>
 
@@ -52,6 +54,64 @@ INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect, ::testing::Values("focuse
                          [](const auto& info) {
                              return std::string(info.param).substr(0, std::strlen(info.param) - 3);
                          });
+
+// A floating slab 6 m above the ground, and a camera 2 m up looking straight down at its shadow: the slab is
+// outside the view, so B holds only the ground patch and, pancaked, the slab lies before the map's depth
+// range.
+Scene slabOverGround() {
+    Scene scene;
+    scene.name = "slab-over-ground";
+    scene.objects.push_back(
+        placeObject("ground", share(makePlane(40.0f, 40.0f)), glm::mat4(1.0f), glm::vec3(0.8f), 1));
+    scene.objects.push_back(placeObject("slab", share(makeBox({3.0f, 0.5f, 3.0f})),
+                                        glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 6.0f, 0.0f)),
+                                        glm::vec3(0.8f), 2));
+    scene.camera.position = {0.0f, 2.0f, 0.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.01f};
+    scene.lights.push_back(fittedDirectionalLight(glm::vec3(0.25f, -1.0f, 0.0f), scene.bounds()));
+    return scene;
+}
+
+TEST(Pancaking, CastersBeforeTheReceiversStillShadowThem) {
+    const Scene scene = slabOverGround();
+    const shadowfx::test::SceneTruth truth = shadowfx::test::computeSceneTruth(scene, 160, 120);
+    ASSERT_FALSE(truth.truth.visibility.empty());
+    auto renderer = shadowfx::test::loadVisibilityEffect("effects/focused.fx");
+    ASSERT_TRUE(renderer);
+    const std::optional<size_t> pancake = renderer->findParameter("Pancake");
+    ASSERT_TRUE(pancake);
+    fx::Value on = renderer->parameter(*pancake);
+    on.data.assign(on.data.size(), 1.0f);
+
+    FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    auto misclassified = [&]() {
+        EXPECT_TRUE(shadowfx::test::render(*renderer, scene, 160, 120));
+        return compareVisibility(truth.truth.visibility, visibilityFromFrame(renderer->readFrame()),
+                                 truth.receivers)
+            .misclassifiedPercent;
+    };
+    const float whole = misclassified();
+    const LightFit deep = *renderer->lightFit(scene, "light0", options);
+    renderer->setParameter(*pancake, on);
+    const float pancaked = misclassified();
+    const LightFit flat = *renderer->lightFit(scene, "light0", options);
+
+    // The case pancakes: the slab's top is before the near plane of the pancaked fit, not of the deep one.
+    const glm::vec4 slabTop = flat.projection * flat.view * glm::vec4(0.0f, 6.25f, 0.0f, 1.0f);
+    EXPECT_LT(slabTop.z / slabTop.w, -0.5f);
+    const glm::vec4 slabTopDeep = deep.projection * deep.view * glm::vec4(0.0f, 6.25f, 0.0f, 1.0f);
+    EXPECT_GE(slabTopDeep.z / slabTopDeep.w, 0.0f);
+    // The shadow is there (a third of the view or more: the slab shadows x in [0, 3]) and the clamped slab
+    // still casts it.
+    size_t shadowed = 0;
+    for (size_t i = 0; i < truth.truth.visibility.size(); ++i)
+        shadowed += truth.receivers[i] && truth.truth.visibility[i] < 0.5f;
+    EXPECT_GT(shadowed, truth.truth.visibility.size() / 3);
+    EXPECT_LT(whole, 0.5f);
+    EXPECT_LT(pancaked, whole + 0.2f) << "pancaked casters were clipped instead of clamped";
+}
 
 const fx::Diagnostic* findInvalidAnnotation(const fx::DiagnosticList& diagnostics) {
     for (const fx::Diagnostic& d : diagnostics.items())

@@ -80,6 +80,25 @@ TEST_F(GlStates, BlendOpMinKeepsTheMinimumOnAnR32FTarget) {
     EXPECT_FLOAT_EQ(readFloatTexture(target).sample(3, 3, 0), 9.0f);
 }
 
+// DepthClipEnable = false clamps depth instead of clipping: a quad in front of the near plane (z = -0.5)
+// is drawn, where by default it is clipped away (pancaking, README "Light-space parameterizations").
+TEST_F(GlStates, DepthClipDisabledDrawsWhatLiesBeforeTheNearPlane) {
+    GpuTexture target = GpuTexture::create2D(fx::TextureFormat::R32F, kSize, kSize);
+    GpuTexture depth = GpuTexture::create2D(fx::TextureFormat::D24S8, kSize, kSize);
+    bindTargets(&target, &depth);
+    GpuMesh quad = testsupport::clipSpaceQuad(-0.5f);
+    FramebufferCache::clear({std::array<float, 4>{100, 0, 0, 0}, 1.0f, {}});
+    applyRenderStates(RenderStateBlock::defaults());
+    drawColor(quad, 1, 0, 0, 1);
+    EXPECT_FLOAT_EQ(readFloatTexture(target).sample(3, 3, 0), 100.0f) << "clipped at the near plane";
+    applyRenderStates(withStates({{RenderStateId::DepthClipEnable, 0}}));
+    EXPECT_TRUE(gl::IsEnabled(GL_DEPTH_CLAMP));
+    drawColor(quad, 1, 0, 0, 1);
+    EXPECT_FLOAT_EQ(readFloatTexture(target).sample(3, 3, 0), 1.0f) << "clamped to depth 0 and drawn";
+    applyRenderStates(RenderStateBlock::defaults());
+    EXPECT_FALSE(gl::IsEnabled(GL_DEPTH_CLAMP));
+}
+
 TEST_F(GlStates, BlendSubtractAndFactor) {
     GpuTexture target = GpuTexture::create2D(fx::TextureFormat::RGBA32F, kSize, kSize);
     bindTargets(&target);

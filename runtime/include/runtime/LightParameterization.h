@@ -39,6 +39,10 @@ struct LightTunables {
     // LiSPSMMiddleVector: V_P from B's "middle vector" (seed 000 §4.4: the sum of the vectors from the eye
     // to B's vertices, which leans toward where B has volume) instead of the view direction of eq. 3.
     bool lispsmMiddleVector = false;
+    // LightPancaking (Focused, LiSPSM): the map's depth range spans the receivers of B only; casters between
+    // them and the light get depth < 0 and must be drawn with DepthClipEnable = false (depth clamp), which
+    // flattens them onto the near plane (seed 000 §4.1). A tighter range for fixed-point depth maps.
+    bool pancaking = false;
 };
 
 struct LightFit {
