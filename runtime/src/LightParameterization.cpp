@@ -58,6 +58,50 @@ glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body)
     return glm::length(sum) > 1e-9 ? glm::vec3(glm::normalize(sum)) : viewDir;
 }
 
+// A spot light keeps its perspective and its depth range; Focused (and LiSPSM, without a warp) crop its
+// window to the receivers of B clipped by the light frustum (seed 000 §4.1). Every caster of a shadow on a
+// receiver lies on the segment from that receiver to the light, and the whole segment projects onto the
+// receiver's map position, so the receivers' window holds all casters. The window is the tighter of two
+// conservative ones: the light frustum ∩ B's bounding box, and, when all of B lies before the light's
+// plane, B's own projection. The uniform fit where B misses the light frustum.
+LightFit cropToReceivers(const LightFit& uniform, const std::vector<glm::vec3>& body) {
+    const glm::mat4 viewProjection = uniform.projection * uniform.view;
+    Bounds receiverBox{glm::vec3(std::numeric_limits<float>::max()),
+                       glm::vec3(std::numeric_limits<float>::lowest())};
+    for (size_t i = 0; i < body.size() / 2; ++i) {
+        receiverBox.min = glm::min(receiverBox.min, body[i]);
+        receiverBox.max = glm::max(receiverBox.max, body[i]);
+    }
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    auto window = [&](const std::vector<glm::vec3>& points, size_t count, glm::vec2& wlo, glm::vec2& whi) {
+        for (size_t i = 0; i < count; ++i) {
+            const glm::vec4 clip = viewProjection * glm::vec4(points[i], 1.0f);
+            if (!(clip.w > 1e-6f)) return false;
+            wlo = glm::min(wlo, glm::vec2(clip) / clip.w);
+            whi = glm::max(whi, glm::vec2(clip) / clip.w);
+        }
+        return count > 0;
+    };
+    const std::vector<glm::vec3> clipped = intersectionBodyPoints(viewProjection, receiverBox);
+    if (!window(clipped, clipped.size(), lo, hi)) return uniform;
+    glm::vec2 bodyLo(std::numeric_limits<float>::max()), bodyHi(std::numeric_limits<float>::lowest());
+    if (window(body, body.size() / 2, bodyLo, bodyHi)) {
+        lo = glm::max(lo, bodyLo);
+        hi = glm::min(hi, bodyHi);
+    }
+    lo = glm::max(lo, glm::vec2(-1.0f));
+    hi = glm::min(hi, glm::vec2(1.0f));
+    if (!(hi.x - lo.x > 1e-5f && hi.y - lo.y > 1e-5f)) return uniform;
+    widen(lo.x, hi.x, 1e-6f);
+    widen(lo.y, hi.y, 1e-6f);
+    glm::mat4 crop(1.0f);  // x' = sx x + ox w, y' likewise: the window [lo, hi] to [-1, 1]
+    crop[0][0] = 2.0f / (hi.x - lo.x);
+    crop[1][1] = 2.0f / (hi.y - lo.y);
+    crop[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
+    crop[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
+    return LightFit{uniform.view, crop * uniform.projection, 0.0f};
+}
+
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
@@ -114,12 +158,12 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
                   const Light& light, const LightTunables& tunables) {
     LightFit uniform{light.view(sceneBounds), light.projection(sceneBounds, nearestDepthFrom(scene, light)),
                      0.0f};
-    if (method == LightParameterization::Uniform || light.type != Light::Type::Directional ||
-        !(glm::dot(light.direction, light.direction) > 1e-12f))
+    if (method == LightParameterization::Uniform || !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on
+    if (light.type != Light::Type::Directional) return cropToReceivers(uniform, body);
 
     // Light space with y along V_P = (L x V) x L, the view direction made perpendicular to the light
     // (seed 000 eq. 3), so that the warp below runs from the viewer's side of B to its far side.

@@ -269,15 +269,55 @@ TEST(LightParameterizations, LispsmFadesIntoFocusedAsLightTurnsParallel) {
     }
 }
 
-// A spot light keeps its own perspective: Focused and LiSPSM fit directional lights only.
-TEST(LightParameterizations, SpotLightsKeepTheUniformFit) {
-    Scene scene = terrain(fromAngles(0.0f, 0.0f), {0.0f, -1.0f, 0.0f});
+// A spot light keeps its own perspective and depth range: Focused and LiSPSM crop its window to the
+// receivers of B clipped by the light frustum. Every receiver inside the spot's frustum stays inside the
+// cropped one, and the window is smaller than the uniform map when B is a small part of the cone.
+TEST(LightParameterizations, SpotLightsAreCroppedToTheReceivers) {
+    size_t checked = 0;
+    for (const Configuration& c : grid()) {
+        Scene scene = terrain(c.view, {0.0f, -1.0f, 0.0f});
+        scene.lights[0].type = Light::Type::Spot;
+        scene.lights[0].position = {10.0f, 60.0f, -40.0f};
+        scene.lights[0].direction = glm::normalize(c.light - glm::vec3(0.0f, 2.0f, 0.0f));
+        scene.lights[0].spotAngle = glm::radians(70.0f);
+        const Bounds bounds = scene.bounds();
+        const LightFit uniform =
+            fitLight(LightParameterization::Uniform, scene, bounds, kAspect, scene.lights[0]);
+        const std::vector<glm::vec3> body =
+            focusBody(scene.camera, kAspect, bounds, scene.lights[0].direction);
+        for (LightParameterization method : {LightParameterization::Focused, LightParameterization::LiSPSM}) {
+            const LightFit fit = fitLight(method, scene, bounds, kAspect, scene.lights[0]);
+            const std::string what = c.name + " " + lightParameterizationName(method);
+            ASSERT_TRUE(finite(fit.projection)) << what;
+            EXPECT_EQ(fit.view, uniform.view) << what;
+            EXPECT_EQ(fit.warp, 0.0f) << what;
+            for (size_t i = 0; i < body.size() / 2; ++i) {
+                const glm::vec4 u = uniform.projection * uniform.view * glm::vec4(body[i], 1.0f);
+                if (!(u.w > 0.0f) || std::abs(u.x) > u.w || std::abs(u.y) > u.w)
+                    continue;  // outside the cone
+                const glm::vec4 clip = fit.projection * fit.view * glm::vec4(body[i], 1.0f);
+                const float tolerance = 1e-5f * std::abs(clip.w);
+                ++checked;
+                EXPECT_LE(std::abs(clip.x), clip.w + tolerance) << what;
+                EXPECT_LE(std::abs(clip.y), clip.w + tolerance) << what;
+                EXPECT_NEAR(clip.z / clip.w, u.z / u.w, 1e-6f) << what << ": depth is the spot's own";
+            }
+        }
+    }
+    EXPECT_GT(checked, 500u);
+    // Seen from 2 m up, looking level, under a spot 60 m up pointing straight down: B's window in the spot's
+    // map is a fraction of the cone.
+    Scene scene = terrain(fromAngles(-20.0f, 0.0f), {0.0f, -1.0f, 0.0f});
+    scene.camera.farPlane = 30.0f;
     scene.lights[0].type = Light::Type::Spot;
-    scene.lights[0].position = {0.0f, 60.0f, 0.0f};
+    scene.lights[0].position = {0.0f, 60.0f, -60.0f};
+    scene.lights[0].spotAngle = glm::radians(90.0f);
     const Bounds bounds = scene.bounds();
     const LightFit uniform =
         fitLight(LightParameterization::Uniform, scene, bounds, kAspect, scene.lights[0]);
-    const LightFit lispsm = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
-    EXPECT_EQ(uniform.view, lispsm.view);
-    EXPECT_EQ(uniform.projection, lispsm.projection);
+    const LightFit focused =
+        fitLight(LightParameterization::Focused, scene, bounds, kAspect, scene.lights[0]);
+    EXPECT_GT(focused.projection[0][0] * focused.projection[1][1],
+              4.0f * uniform.projection[0][0] * uniform.projection[1][1])
+        << "at least 4x the texels per area";
 }

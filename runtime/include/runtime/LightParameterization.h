@@ -9,7 +9,8 @@
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction (or B's middle vector)
 //             made perpendicular to the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
 //
-// Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
+// Focused and LiSPSM fit directional lights; for spot (and point) lights both crop the light's own
+// perspective window to the receivers of B, without a warp.
 #pragma once
 
 #include <runtime/Scene.h>
