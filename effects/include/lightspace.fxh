@@ -113,9 +113,12 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
 // map pass clamps depth instead of clipping (DepthClipEnable = false): with LightPancaking the fit's depth
 // range holds only the receivers, and casters between them and the light land on the near plane, still
 // nearer than every receiver; without it nothing lies outside the range and the state changes nothing.
+// Its FilterReachTexels = 2: the 2x2 bilinear test reads one texel beyond a receiver's own, and leave-out
+// culls casters outside that reach (the default 8 texels is up to 8 large far texels of a LiSPSM map).
 #define LIGHTSPACE_PASSES                                                                                   \
     pass RenderShadowMap                                                                                    \
     <                                                                                                       \
+        float FilterReachTexels = 2;                                                                        \
         string Script = "RenderColorTarget0=ShadowMap;"                                                     \
                         "RenderDepthStencilTarget=ShadowDepth;"                                             \
                         "RenderPort=light0;"                                                                \

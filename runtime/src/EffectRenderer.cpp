@@ -470,6 +470,7 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
     const LightFit fit = binder.lightFit(*found);
     port.view = fit.view;
     port.projection = fit.projection;
+    port.shinesIntoPositiveW = fit.shinesIntoPositiveW;
     return true;
 }
 
@@ -589,7 +590,11 @@ public:
         mBinder.bind(mPort, nullptr, mOptions.time, mValues, mImpl.pinned, SemanticBinder::Scope::PerPort,
                      &use.used);
         uint64_t h = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mTechnique), index);
-        h = hashBytes(h, &mPort, sizeof(mPort));
+        // Field by field: the struct's padding bytes are not part of its value.
+        h = hashBytes(h, &mPort.view, sizeof(mPort.view));
+        h = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
+        h = hashBytes(h, &mPort.viewportSize, sizeof(mPort.viewportSize));
+        h = hashCombine(h, mPort.shinesIntoPositiveW ? 1 : 0);
         for (size_t p : use.perPassParameters)
             h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
         if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mImpl.sceneCache.stamp);
@@ -597,6 +602,7 @@ public:
         op.sceneSaysSkip = mSceneSaysSkip;
         if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry)
             op.region = receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+        op.region.castersBehindLightPlaneCastNothing = mPort.shinesIntoPositiveW;
         mPlan.ops.push_back(std::move(op));
     }
 
@@ -650,14 +656,15 @@ private:
                                [](const Light& light) { return light.areaRadius <= 0.0f; });
         return false;
     }
-    // How far around a receiver's own texel the passes reading this light pass's map look, in texels:
-    // kReceiverPadTexels, or more where the pass says so (`float FilterReachTexels = 32;` on a map read by a
-    // PCSS blocker search or a fractional disk), so that light-pass culling keeps every caster they can see.
+    // How far around a receiver's own texel the passes reading this light pass's map look, in texels: what
+    // the pass declares (`float FilterReachTexels = 65;` on a map read by a PCSS blocker search, 2 for 2x2
+    // bilinear PCF), else kReceiverPadTexels, so that light-pass culling keeps every caster they can see.
+    // A declared reach matters most for warped maps (LiSPSM), whose far texels are large in world units.
     float receiverPadTexels(const fx::CompiledPass& pass) const {
         const fx::Pass* declared = sourcePass(pass);
         const fx::Annotation* reach = declared ? declared->annotation("FilterReachTexels") : nullptr;
         if (!reach || reach->value.kind != fx::Expr::Kind::Number) return kReceiverPadTexels;
-        return std::max(kReceiverPadTexels, static_cast<float>(reach->value.number));
+        return std::max(1.0f, static_cast<float>(reach->value.number));  // a texel for rounding at least
     }
     RenderStateBlock passStates(const fx::CompiledPass& pass) const {
         RenderStateBlock block = RenderStateBlock::defaults();

@@ -158,9 +158,14 @@ Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewPr
     if (region.empty) return Overlap::Outside;
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
-    for (const glm::vec3& corner : boxCorners(box.min, box.max)) {
+    int behind = 0;  // corners at w <= 0: behind the light's plane
+    const std::array<glm::vec3, 8> corners = boxCorners(box.min, box.max);
+    for (const glm::vec3& corner : corners)
+        behind += (lightViewProjection * glm::vec4(corner, 1.0f)).w <= 1e-6f ? 1 : 0;
+    if (behind == 8 && region.castersBehindLightPlaneCastNothing) return Overlap::Outside;
+    if (behind > 0) return Overlap::Partial;  // crosses the light's plane: keep, look closer
+    for (const glm::vec3& corner : corners) {
         const glm::vec4 clip = lightViewProjection * glm::vec4(corner, 1.0f);
-        if (clip.w <= 1e-6f) return Overlap::Partial;  // crosses a spot light's plane: keep, look closer
         const glm::vec3 ndc = glm::vec3(clip) / clip.w;
         lo = glm::min(lo, glm::vec2(ndc));
         hi = glm::max(hi, glm::vec2(ndc));

@@ -42,6 +42,9 @@ struct ReceiverRegion {
     float maxDepth = 1.0f;  // the farthest receiver's NDC depth; casters wholly beyond cast on nothing seen
     bool empty = false;     // B is empty: no caster matters
     bool full = true;       // the whole light frustum (nothing culled but what lies outside it)
+    // A caster wholly at clip w <= 0 (behind a spot light, behind LiSPSM's warp centre) cannot shadow a
+    // receiver: set where the light's fit says so (LightFit::shinesIntoPositiveW).
+    bool castersBehindLightPlaneCastNothing = false;
 
     // True if every receiver `other` serves is served by this region too.
     bool contains(const ReceiverRegion& other) const;

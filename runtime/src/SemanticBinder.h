@@ -34,6 +34,7 @@ struct RenderPortView {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     glm::vec2 viewportSize{1.0f};
+    bool shinesIntoPositiveW = true;  // LightFit::shinesIntoPositiveW of a light port (true for the camera)
 };
 
 class SemanticBinder {

@@ -242,6 +242,38 @@ INSTANTIATE_TEST_SUITE_P(ThesisEffect, LeaveOutImage,
                                            Case{"main", "P", Light::Type::Spot},
                                            Case{"hardware", "", Light::Type::Spot}));
 
+// The light-space parameterizations (lightspace.fxh) declare the reach of their 2x2 bilinear test
+// (FilterReachTexels = 2) and LiSPSM's fit says that casters behind its warp centre shadow nothing
+// (LightFit::shinesIntoPositiveW): the image stays identical to the frame without leave-out, for
+// directional lights and for spot lights, whose window Focused and LiSPSM crop to the receivers.
+class LightSpaceLeaveOut : public ::testing::TestWithParam<std::pair<const char*, Light::Type>> {};
+
+TEST_P(LightSpaceLeaveOut, IsIdenticalAndCulls) {
+    const auto [file, lightType] = GetParam();
+    auto withLeaveOut = loadEffect(sourcePath(std::string("effects/") + file), true);
+    auto without = loadEffect(sourcePath(std::string("effects/") + file), true);
+    ASSERT_TRUE(withLeaveOut && without);
+    const Scene scene = gridScene(lightType);
+    const Frame culled = renderFrame(*withLeaveOut, scene, "bilinear", true);
+    const Frame full = renderFrame(*without, scene, "bilinear", false);
+    EXPECT_TRUE(notConstant(culled.image));
+    EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
+    const PassStats* light = findPass(culled.stats, "RenderShadowMap");
+    ASSERT_TRUE(light);
+    EXPECT_GT(light->culled, static_cast<int>(scene.objects.size()) / 4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Effects, LightSpaceLeaveOut,
+                         ::testing::Values(std::make_pair("focused.fx", Light::Type::Directional),
+                                           std::make_pair("lispsm.fx", Light::Type::Directional),
+                                           std::make_pair("focused.fx", Light::Type::Spot),
+                                           std::make_pair("lispsm.fx", Light::Type::Spot)),
+                         [](const auto& info) {
+                             std::string name = info.param.first;
+                             return name.substr(0, name.size() - 3) +
+                                    (info.param.second == Light::Type::Spot ? "_spot" : "_directional");
+                         });
+
 // A map read by a wide filter declares its reach (`float FilterReachTexels` on the light pass: PCSS's
 // blocker search and penumbra, up to 65 texels), and light-pass culling keeps every caster within it: the
 // image stays identical, with more casters drawn than under the thesis effect's 8-texel default.

@@ -129,9 +129,10 @@ TEST(LoadUnload, ThousandCyclesKeepMemoryAndGlObjectsFlat) {
     EXPECT_EQ(objectsAfter, objectsBefore) << "GL objects leaked over " << cycles << " cycles";
     // Allocator arenas and Mesa's pools fluctuate by a few MB; a leak of even 4 kB a cycle exceeds this.
     const long growthKb = rssAfter - rssBefore;
-    if (kRssIsMeaningful)
+    if (kRssIsMeaningful) {
         EXPECT_LT(growthKb, 4 * 1024)
             << "RSS grew from " << rssBefore << " kB to " << rssAfter << " kB over " << cycles << " cycles";
+    }
     std::printf(
         "[ leaks    ] %d cycles over %zu effects in %.1f s; RSS %ld -> %ld kB; GL objects %d textures, %d "
         "programs\n",

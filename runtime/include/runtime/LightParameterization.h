@@ -50,6 +50,10 @@ struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     float warp = 0.0f;  // 1 / n of the LiSPSM warp (world units⁻¹): 0 for an orthographic fit
+    // True when clip w > 0 is exactly the half-space the light shines into (a spot's own perspective,
+    // LiSPSM's warp, whose centre lies before B along V_P while shadows run across it, any orthographic
+    // fit): a caster wholly at w <= 0 shadows nothing in the map, and leave-out drops it.
+    bool shinesIntoPositiveW = true;
 };
 
 // Seed 000 eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
