@@ -3,6 +3,8 @@
 
 #include "IntersectionBody.h"
 
+#include <runtime/TrapezoidalShadowMap.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -51,8 +53,8 @@ void widen(float& lo, float& hi, float absolute) {
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
-    for (LightParameterization method :
-         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM})
+    for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
+                                         LightParameterization::LiSPSM, LightParameterization::TSM})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -65,6 +67,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "Focused";
         case LightParameterization::LiSPSM:
             return "LiSPSM";
+        case LightParameterization::TSM:
+            return "TSM";
     }
     return "Uniform";
 }
@@ -107,6 +111,11 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     if (method == LightParameterization::Uniform || light.type != Light::Type::Directional ||
         !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;
+    if (method == LightParameterization::TSM) {
+        const std::optional<TrapezoidalFit> trapezoidal =
+            fitTrapezoid(scene, sceneBounds, aspect, light, tunables);
+        return trapezoidal ? trapezoidal->fit : uniform;
+    }
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on

@@ -8,8 +8,10 @@
 //             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction made perpendicular to
 //             the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//   TSM       trapezoidal shadow maps (Martin & Tan; seed 003): a trapezoid around B in light space,
+//             warped onto the square with the 80% rule (TrapezoidalShadowMap.h)
 //
-// Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
+// Focused, LiSPSM and TSM fit directional lights; spot and point lights keep the uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -22,9 +24,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, TSM };
 
-// "Uniform", "Focused", "LiSPSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "TSM" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -36,12 +38,15 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
+    // TSMFocus: TSM's focus distance δ (seed 003, the 80% rule) as a fraction of the depth of B seen
+    // from the near plane: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
+    float tsmFocus = 0.5f;
 };
 
 struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
-    float warp = 0.0f;  // 1 / n of the LiSPSM warp (world units⁻¹): 0 for an orthographic fit
+    float warp = 0.0f;  // 1 / n of the LiSPSM or TSM warp (world units⁻¹): 0 for an orthographic fit
 };
 
 // Seed 000 eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
