@@ -86,13 +86,19 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
     if (!(height > 1e-6f * radius)) return std::nullopt;  // B seen edge-on: nothing to fit a map to
     const float eyeX = lightSpace(camera.position).x;
 
-    // The 80% rule: P_L lies `tsmFocus` of B's depth (from the near plane) along the view's centre line.
-    // focusBody lists B's vertices first, then their extrusions.
-    float depth = 0.0f;
-    for (size_t i = 0; i < body.size() / 2; ++i)
-        depth = std::max(depth, glm::dot(body[i] - camera.position, viewDir) - camera.nearPlane);
-    result.focusPoint =
-        camera.position + viewDir * (camera.nearPlane + std::clamp(tunables.tsmFocus, 0.0f, 1.0f) * depth);
+    // The 80% rule: P_L lies `tsmFocus` of B's depth along the view's centre line past B's nearest point,
+    // which is on the near plane (the paper's start) unless the camera stands outside the scene bounds:
+    // measured from the near plane there, P_L could fall before B, above the top line. focusBody lists B's
+    // vertices first, then their extrusions.
+    float nearest = std::numeric_limits<float>::max(), farthest = 0.0f;
+    for (size_t i = 0; i < body.size() / 2; ++i) {
+        const float distance = glm::dot(body[i] - camera.position, viewDir);
+        nearest = std::min(nearest, distance);
+        farthest = std::max(farthest, distance);
+    }
+    nearest = std::max(nearest, camera.nearPlane);
+    result.focusPoint = camera.position + viewDir * (nearest + std::clamp(tunables.tsmFocus, 0.0f, 1.0f) *
+                                                                   std::max(farthest - nearest, 0.0f));
     // With the light inside the view cone (γ below its half-angle θ, the half-diagonal of the frustum) the
     // frustum's light-space hull surrounds the eye and the paper falls back to a square around it: there
     // is no "near side" to widen. Instead of switching there, the warp fades in smoothly with sin γ from 0

@@ -124,9 +124,10 @@ TEST(TrapezoidalShadowMap, TrapezoidEnclosesTheBodyAndMapsOntoTheSquare) {
     }
 }
 
-// P_L, recomputed here from the camera and B: the point TSMFocus of B's depth past the near plane on the
-// view's centre line maps to the 80% line. The fit puts the viewer's side at -1, the paper at +1, so the
-// line is y = -ξ = 0.6 here; the focused fit (no warp) leaves P_L much nearer the top.
+// P_L, recomputed here from the camera and B: the point TSMFocus of B's depth past its nearest point (the
+// near plane: the camera is inside the bounds) on the view's centre line maps to the 80% line. The fit
+// puts the viewer's side at -1, the paper at +1, so the line is y = -ξ = 0.6 here; the focused fit (no
+// warp) leaves P_L much nearer the top.
 TEST(TrapezoidalShadowMap, FocusPointLandsOnTheEightyPercentLine) {
     for (float focus : {0.1f, 0.3f, 0.5f})
         for (const Configuration& c : outsideTheViewCone()) {
@@ -135,10 +136,13 @@ TEST(TrapezoidalShadowMap, FocusPointLandsOnTheEightyPercentLine) {
             const Camera& camera = scene.camera;
             const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
             const std::vector<glm::vec3> body = focusBody(camera, kAspect, bounds, scene.lights[0].direction);
-            float depth = 0.0f;  // B's vertices come first, then their extrusions
-            for (size_t i = 0; i < body.size() / 2; ++i)
-                depth = std::max(depth, glm::dot(body[i] - camera.position, viewDir) - camera.nearPlane);
-            const glm::vec3 focusPoint = camera.position + viewDir * (camera.nearPlane + focus * depth);
+            float nearest = 1e30f, farthest = 0.0f;  // B's vertices come first, then their extrusions
+            for (size_t i = 0; i < body.size() / 2; ++i) {
+                nearest = std::min(nearest, glm::dot(body[i] - camera.position, viewDir));
+                farthest = std::max(farthest, glm::dot(body[i] - camera.position, viewDir));
+            }
+            const float depth = farthest - nearest;
+            const glm::vec3 focusPoint = camera.position + viewDir * (nearest + focus * depth);
 
             LightTunables tunables;
             tunables.tsmFocus = focus;
@@ -196,7 +200,7 @@ TEST(TrapezoidalShadowMap, FadesIntoFocusedAsLightTurnsParallel) {
     const float coarse = sweep(0.25f, strength);
     EXPECT_LT(strength, 1e-2f);  // at γ = 0.25°
     const float fine = sweep(0.125f, strength);
-    EXPECT_LT(coarse, 0.15f);
+    EXPECT_LT(coarse, 0.25f);
     EXPECT_LT(fine, 0.6f * coarse);
 
     const Scene almost = sceneAt(1e-4f);

@@ -38,9 +38,9 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
-    // TSMFocus: TSM's focus distance δ (seed 003, the 80% rule) as a fraction of the depth of B seen
-    // from the near plane: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
-    float tsmFocus = 0.5f;
+    // TSMFocus: TSM's focus distance δ (seed 003, the 80% rule) as a fraction of the depth of B along the
+    // view: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
+    float tsmFocus = 0.3f;
 };
 
 struct LightFit {
