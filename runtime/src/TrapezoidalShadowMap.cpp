@@ -155,7 +155,8 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
         hi = glm::max(hi, glm::vec3(clip) / clip.w);
     }
     for (int axis = 0; axis < 3; ++axis) {
-        const float margin = 1e-3f * (hi[axis] - lo[axis]) + 1e-6f * radius;
+        // x and y are in map units already ([-1, 1]); depth is still in world units (z / w).
+        const float margin = 1e-3f * (hi[axis] - lo[axis]) + (axis == 2 ? 1e-6f * radius : 1e-6f);
         lo[axis] -= margin;
         hi[axis] += margin;
     }
