@@ -80,8 +80,10 @@ texture ShadowDepth : RENDERDEPTHSTENCILTARGET
 // [SECTION] Shaders
 // The receiver's depth for the test, moved toward the light by
 // - Bias texels of world size: for a directional light every provider's clip w is independent of the
-//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM), so NDC depth changes by _33 / w
-//   per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units across it;
+//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so NDC depth changes by
+//   _33 / w per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units
+//   across it (TSM's x row also has a y term, the slant of the trapezoid's sides, which leaves the rate
+//   across x at _11 / w);
 // - SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
 //   map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization,
 //   where a texel's size differs along u and v under a warp.

@@ -3,6 +3,8 @@
 
 #include "IntersectionBody.h"
 
+#include <runtime/TrapezoidalShadowMap.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -105,8 +107,8 @@ LightFit cropToReceivers(const LightFit& uniform, const std::vector<glm::vec3>& 
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
-    for (LightParameterization method :
-         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM})
+    for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
+                                         LightParameterization::LiSPSM, LightParameterization::TSM})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -119,6 +121,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "Focused";
         case LightParameterization::LiSPSM:
             return "LiSPSM";
+        case LightParameterization::TSM:
+            return "TSM";
     }
     return "Uniform";
 }
@@ -160,6 +164,11 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
                      0.0f};
     if (method == LightParameterization::Uniform || !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;
+    if (method == LightParameterization::TSM) {
+        const std::optional<TrapezoidalFit> trapezoidal =
+            fitTrapezoid(scene, sceneBounds, aspect, light, tunables);
+        return trapezoidal ? trapezoidal->fit : uniform;
+    }
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on

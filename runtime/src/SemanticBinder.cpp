@@ -134,6 +134,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             if (upperSemantic == "LISPSMMIDDLEVECTOR")
                 mTunables.lispsmMiddleVector = values[i].data[0] != 0.0f;
             if (upperSemantic == "LIGHTPANCAKING") mTunables.pancaking = values[i].data[0] != 0.0f;
+            if (upperSemantic == "TSMFOCUS") mTunables.tsmFocus = values[i].data[0];
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);
@@ -143,8 +144,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                 ? parseLightParameterization(annotation->value.text)
                 : std::nullopt;
         if (!method) {
-            diagnostics.report(fx::DiagId::InvalidAnnotation, annotation->loc,
-                               {"Parameterization", "expected \"Uniform\", \"Focused\" or \"LiSPSM\""});
+            diagnostics.report(
+                fx::DiagId::InvalidAnnotation, annotation->loc,
+                {"Parameterization", "expected \"Uniform\", \"Focused\", \"LiSPSM\" or \"TSM\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);

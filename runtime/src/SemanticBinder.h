@@ -8,12 +8,12 @@
 // LightColor, LightAreaRadius/LightSize (the light's areaRadius in world units, for soft-shadow filters)
 // (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
 // object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
-// A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM";`
+// A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" | "TSM";`
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
-// LiSPSMDepthExtent, LiSPSMMiddleVector and LightPancaking. Scene-driven choices: SceneHasClosedObjects (true
-// if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
-// filter needed).
+// LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking and TSMFocus. Scene-driven choices:
+// SceneHasClosedObjects (true if any object's mesh is closed: a second depth layer can matter) and
+// LightAreaRadius (0 = no soft-shadow filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>

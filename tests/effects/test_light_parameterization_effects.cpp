@@ -148,11 +148,12 @@ fx::DiagnosticList renderReporting(const std::string& source) {
 }
 
 TEST(ParameterizationAnnotation, UnknownNameIsAnErrorAtTheAnnotation) {
-    const fx::DiagnosticList diagnostics = renderReporting(effectWith("TSM", "TSM"));
+    const fx::DiagnosticList diagnostics = renderReporting(effectWith("Trapezoidal", "Trapezoidal"));
     const fx::Diagnostic* error = findInvalidAnnotation(diagnostics);
     ASSERT_NE(error, nullptr) << diagnostics.str();
     EXPECT_EQ(error->loc.line, 1);
     EXPECT_NE(error->message.find("LiSPSM"), std::string::npos) << error->message;
+    EXPECT_NE(error->message.find("TSM"), std::string::npos) << error->message;
 }
 
 TEST(ParameterizationAnnotation, TwoNamesForOneLightAreAnError) {

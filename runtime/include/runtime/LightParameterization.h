@@ -8,9 +8,11 @@
 //             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction (or B's middle vector)
 //             made perpendicular to the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//   TSM       trapezoidal shadow maps (Martin & Tan; seed 003): a trapezoid around B in light space,
+//             warped onto the square with the 80% rule (TrapezoidalShadowMap.h)
 //
-// Focused and LiSPSM fit directional lights; for spot (and point) lights both crop the light's own
-// perspective window to the receivers of B, without a warp.
+// Focused, LiSPSM and TSM fit directional lights; for spot (and point) lights Focused and LiSPSM crop the
+// light's own perspective window to the receivers of B, without a warp, and TSM keeps the uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -23,9 +25,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, TSM };
 
-// "Uniform", "Focused", "LiSPSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "TSM" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -44,15 +46,18 @@ struct LightTunables {
     // them and the light get depth < 0 and must be drawn with DepthClipEnable = false (depth clamp), which
     // flattens them onto the near plane (seed 000 §4.1). A tighter range for fixed-point depth maps.
     bool pancaking = false;
+    // TSMFocus: TSM's focus distance δ (seed 003, the 80% rule) as a fraction of the depth of B along the
+    // view: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
+    float tsmFocus = 0.3f;
 };
 
 struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
-    float warp = 0.0f;  // 1 / n of the LiSPSM warp (world units⁻¹): 0 for an orthographic fit
-    // True when clip w > 0 is exactly the half-space the light shines into (a spot's own perspective,
-    // LiSPSM's warp, whose centre lies before B along V_P while shadows run across it, any orthographic
-    // fit): a caster wholly at w <= 0 shadows nothing in the map, and leave-out drops it.
+    float warp = 0.0f;  // 1 / n of the LiSPSM or TSM warp (world units⁻¹): 0 for an orthographic fit
+    // True when clip w > 0 is exactly the half-space the light shines into (a spot's own perspective, the
+    // LiSPSM and TSM warps, whose centres lie before B along V_P while shadows run across it, any
+    // orthographic fit): a caster wholly at w <= 0 shadows nothing in the map, and leave-out drops it.
     bool shinesIntoPositiveW = true;
 };
 
