@@ -1,5 +1,6 @@
 // LightParameterization: uniform, focused and LiSPSM fits of a directional light's matrices (see the header).
 #include <runtime/LightParameterization.h>
+#include <runtime/PerspectiveShadowMap.h>
 
 #include "IntersectionBody.h"
 
@@ -51,8 +52,8 @@ void widen(float& lo, float& hi, float absolute) {
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
-    for (LightParameterization method :
-         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM})
+    for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
+                                         LightParameterization::LiSPSM, LightParameterization::PSM})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -65,6 +66,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "Focused";
         case LightParameterization::LiSPSM:
             return "LiSPSM";
+        case LightParameterization::PSM:
+            return "PSM";
     }
     return "Uniform";
 }
@@ -107,6 +110,8 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     if (method == LightParameterization::Uniform || light.type != Light::Type::Directional ||
         !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;
+    if (method == LightParameterization::PSM)
+        return fitPerspectiveShadowMap(scene, sceneBounds, aspect, light, tunables);
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on

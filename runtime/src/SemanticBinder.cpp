@@ -131,6 +131,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (i < values.size() && !values[i].data.empty()) {
             if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];
             if (upperSemantic == "LISPSMDEPTHEXTENT") mTunables.lispsmDepthExtent = values[i].data[0];
+            if (upperSemantic == "PSMSLIDEBACK") mTunables.psmSlideBack = values[i].data[0];
+            if (upperSemantic == "PSMMAXWARPRATIO") mTunables.psmMaxWarpRatio = values[i].data[0];
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);
@@ -140,8 +142,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                 ? parseLightParameterization(annotation->value.text)
                 : std::nullopt;
         if (!method) {
-            diagnostics.report(fx::DiagId::InvalidAnnotation, annotation->loc,
-                               {"Parameterization", "expected \"Uniform\", \"Focused\" or \"LiSPSM\""});
+            diagnostics.report(
+                fx::DiagId::InvalidAnnotation, annotation->loc,
+                {"Parameterization", "expected \"Uniform\", \"Focused\", \"LiSPSM\" or \"PSM\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);

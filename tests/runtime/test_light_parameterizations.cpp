@@ -18,7 +18,7 @@ namespace {
 
 constexpr float kAspect = 4.0f / 3.0f;
 constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
-                                              LightParameterization::LiSPSM};
+                                              LightParameterization::LiSPSM, LightParameterization::PSM};
 
 // A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (forest-like).
 Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
@@ -87,6 +87,7 @@ TEST(LightParameterizations, NamesParseCaseInsensitively) {
     EXPECT_EQ(parseLightParameterization("lispsm"), LightParameterization::LiSPSM);
     EXPECT_EQ(parseLightParameterization("Focused"), LightParameterization::Focused);
     EXPECT_EQ(parseLightParameterization("UNIFORM"), LightParameterization::Uniform);
+    EXPECT_EQ(parseLightParameterization("psm"), LightParameterization::PSM);
     EXPECT_FALSE(parseLightParameterization("TSM").has_value());
 }
 

@@ -8,8 +8,11 @@
 //             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction made perpendicular to
 //             the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//   PSM       perspective shadow maps: the light as a point in the camera's post-perspective space, with
+//             Kozlov's inverse projection, slide-back and unit-cube clipping (seed 004 §14.2,
+//             runtime/PerspectiveShadowMap.h)
 //
-// Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
+// Focused, LiSPSM and PSM fit directional lights; spot and point lights keep the uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -22,9 +25,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, PSM };
 
-// "Uniform", "Focused", "LiSPSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "PSM" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -36,6 +39,12 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
+    // PSMSlideBack: how far (world units) PSM's virtual camera slides back behind the eye, its near plane
+    // staying where B begins (seed 004 §14.2.1); < 0 = automatic, sqrt(z_n z_f) of B's depth range.
+    float psmSlideBack = -1.0f;
+    // PSMMaxWarpRatio: the largest ratio of texel densities PSM may put between B's receivers (light clip
+    // w, max / min); closer to the light in post-perspective space, PSM weakens and fades into Focused.
+    float psmMaxWarpRatio = 100.0f;
 };
 
 struct LightFit {

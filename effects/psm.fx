@@ -1,0 +1,74 @@
+// psm.fx: perspective shadow maps (Stamminger & Drettakis; Kozlov, "Perspective Shadow Maps: Care and
+// Feeding", seed 004 §14.2, /work/shared/seeds/004_803a1be93f8534eb.txt): the map is rendered in the
+// camera's post-perspective space, where the sun becomes a point (an inverted one when it shines from behind
+// the viewer), so near receivers get more texels than far ones. The runtime's PSM provider
+// (runtime/PerspectiveShadowMap.h) adds Kozlov's inverse projection for casters behind the viewer, the
+// virtual slide-back and unit-cube clipping, and fades into focused.fx's map where the light comes close to
+// the receivers in post-perspective space (README, "Light-space parameterizations").
+#define LIGHT_PARAMETERIZATION "PSM"
+#define LIGHTSPACE_SCENE_PS PsmBilinearPS
+#include "include/lightspace.fxh"
+
+// Slide-back of the virtual camera behind the eye, world units (seed 004 §14.2.1): larger spends fewer
+// texels near the viewer and more far away; < 0 = automatic (sqrt(z_n z_f) of the receivers' depths).
+float SlideBack : PSMSlideBack
+<
+    string UIWidget = "slider";
+    string UIName = "PSM slide-back (m, < 0 automatic)";
+    float UIMin = -1.0;
+    float UIMax = 100.0;
+> = -1.0;
+
+// The largest ratio of texel densities across the receivers; beyond it the warp weakens toward focused.fx.
+float MaxWarpRatio : PSMMaxWarpRatio
+<
+    string UIWidget = "slider";
+    string UIName = "PSM max warp ratio";
+    float UIMin = 2.0;
+    float UIMax = 1000.0;
+> = 100.0;
+
+// The world size of one shadow-map texel at the receiver, L_texel of seed 004 §14.2.3: the light's clip
+// x, y, w depend on the light-view x, y only, so NDC moves by the 2x2 Jacobian J of (x/w, y/w) per world
+// unit across the light, and a texel (2 / ShadowMapSize NDC units) spans at most 1 / σ_min(J) of them.
+// lightspace.fxh's BiasedDepth reads only _11, which is exact for an orthographic or LiSPSM fit but not for
+// PSM, whose w varies along both x and y.
+float PsmTexelWorld(float4 LP)
+{
+    float4x4 P = LightProjectionMatrix;
+    float2x2 J = float2x2(P._11 * LP.w - LP.x * P._14, P._21 * LP.w - LP.x * P._24,
+                          P._12 * LP.w - LP.y * P._14, P._22 * LP.w - LP.y * P._24) / (LP.w * LP.w);
+    float trace = dot(J[0], J[0]) + dot(J[1], J[1]);  // σ_max² + σ_min²
+    float determinant = abs(J[0].x * J[1].y - J[0].y * J[1].x);  // σ_max σ_min
+    float sigmaMax = sqrt(0.5 * (trace + sqrt(max(trace * trace - 4.0 * determinant * determinant, 0.0))));
+    float sigmaMin = determinant / max(sigmaMax, 1e-20);
+    return 2.0 / (ShadowMapSize.x * max(sigmaMin, 1e-20));
+}
+
+// Seed 004 §14.2.3: a world-space bias along the light scaled by the texel's world size, moved into the
+// map's depth (NDC depth changes by _33 / w per world unit along the light, w constant along it), plus the
+// receiver-plane bias of lightspace.fxh.
+float PsmBiasedDepth(SceneVertexOutput IN)
+{
+    float depth = IN.LP.z / IN.LP.w;
+    float constantBias = Bias * PsmTexelWorld(IN.LP) * LightProjectionMatrix._33 / IN.LP.w;
+    return depth - constantBias - ReceiverPlaneBias(IN, depth);
+}
+
+float4 PsmBilinearPS(SceneVertexOutput IN) : COLOR
+{
+    float2 uv = ShadowMapUV(IN.LP);
+    float depth = PsmBiasedDepth(IN);
+    return ShadeOrVisibility(IN, ShadowTestBilinear(ShadowMapSampler, uv, depth, ShadowMapSize));
+}
+
+technique bilinear
+<
+    string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.12;
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_PASSES
+}
