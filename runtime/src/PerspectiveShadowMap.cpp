@@ -140,19 +140,24 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
                  toWorld * glm::dvec4(lambda * axis, -glm::dot(axis, ell))};
 
     // Close to the unit cube (§14.2.2): w spans w_min..w_max over the receivers, the ratio of their texel
-    // densities along the warp. Above maxWarpRatio the w = 0 plane moves away from B by Δ (a weaker warp,
-    // like a larger n of LiSPSM), and as closeness = w_min / w_max falls from 1 / maxWarpRatio to 0 the
-    // fit blends into Focused's (a convex combination of two maps that both hold B holds B).
+    // densities along the warp. It is capped by moving the w = 0 plane away from B by Δ (a weaker warp, like
+    // a larger n of LiSPSM). The cap is maxWarpRatio while closeness = w_min / w_max stays above
+    // kFadeCloseness; below, where L' nears the receivers and w_min would reach 0 on them, the cap falls
+    // smoothly (geometrically) to 1, no warp, and the fit blends into Focused's as closeness falls to 0 (a
+    // convex combination of two maps that both hold B holds B).
+    constexpr double kFadeCloseness = 0.02;
     double wMin = std::numeric_limits<double>::max(), wMax = std::numeric_limits<double>::lowest();
     for (const glm::vec3& p : receivers) {
         const double w = glm::dot(psm.w, glm::dvec4(glm::dvec3(p), 1.0));
         wMin = std::min(wMin, w);
         wMax = std::max(wMax, w);
     }
-    const double maxRatio = std::max(double(tunables.psmMaxWarpRatio), 1.001);
     const double closeness = wMax > 0.0 ? wMin / wMax : -1.0;
-    const double t = std::clamp(1.0 - maxRatio * closeness, 0.0, 1.0);
-    const double focusedWeight = t * t * (3.0 - 2.0 * t);
+    const double t = std::clamp(closeness / kFadeCloseness, 0.0, 1.0);
+    const double psmWeight = t * t * (3.0 - 2.0 * t);
+    const double focusedWeight = 1.0 - psmWeight;
+    // Geometric: the texel-density ratio grows by equal factors across the fade, not mostly at its end.
+    const double maxRatio = std::pow(std::max(double(tunables.psmMaxWarpRatio), 1.0), psmWeight);
     ClipRows rows;
     const glm::dmat4 focusedMatrix = glm::dmat4(focused.projection) * focusedView;
     const auto row = [](const glm::dmat4& m, int r) {
@@ -161,13 +166,18 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
     rows.x = focusedWeight * row(focusedMatrix, 0);
     rows.y = focusedWeight * row(focusedMatrix, 1);
     rows.w = focusedWeight * row(focusedMatrix, 3);  // (0, 0, 0, 1): orthographic, w = 1
-    if (focusedWeight < 1.0) {
-        psm.w.w += std::max(0.0, (wMax - maxRatio * wMin) / (maxRatio - 1.0));
+    if (psmWeight > 0.0) {
+        // w_max + Δ = maxRatio (w_min + Δ); with maxRatio = 1 the rows turn orthographic (w constant).
+        const double shift =
+            maxRatio > 1.0 ? std::max(0.0, (wMax - maxRatio * wMin) / (maxRatio - 1.0)) : 1e6 * wMax;
+        psm.w.w += shift;
         if (!fitRectangle(psm, body)) return focused;
-        const double scale = 1.0 / (wMax + std::max(0.0, (wMax - maxRatio * wMin) / (maxRatio - 1.0)));
-        rows.x += (1.0 - focusedWeight) * scale * psm.x;
-        rows.y += (1.0 - focusedWeight) * scale * psm.y;
-        rows.w += (1.0 - focusedWeight) * scale * psm.w;
+        // Homogeneous rows blend point by point with weights in proportion to their w: scaled so that w is 1
+        // at the geometric mean of the receivers' w, neither near nor far receivers follow one map alone.
+        const double scale = 1.0 / std::sqrt((wMin + shift) * (wMax + shift));
+        rows.x += psmWeight * scale * psm.x;
+        rows.y += psmWeight * scale * psm.y;
+        rows.w += psmWeight * scale * psm.w;
     }
     if (!fitRectangle(rows, body)) return focused;
 
