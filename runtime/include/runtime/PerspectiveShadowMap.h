@@ -18,8 +18,9 @@
 //   bounding rectangle, not the whole unit cube;
 // - close to the unit cube (the case of §14.2.2's cube map, not built here): the light camera's w over B's
 //   receivers ranges over w_min..w_max; a ratio above `maxWarpRatio` is capped by moving the light's w = 0
-//   plane away from B (a weaker perspective), and as w_min / w_max falls from 1 / maxWarpRatio to 0 (the
-//   light touching B in PPS) the matrices blend continuously into the Focused fit.
+//   plane away from B (a weaker perspective), and as closeness = w_min / w_max falls from 0.02 to 0 (the
+//   light touching B in PPS) the cap falls geometrically to 1 and the matrices blend continuously into the
+//   Focused fit.
 //
 // Directional lights only; spot and point lights keep the uniform fit.
 #pragma once
