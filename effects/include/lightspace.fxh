@@ -78,20 +78,11 @@ texture ShadowDepth : RENDERDEPTHSTENCILTARGET
 >;
 
 // [SECTION] Shaders
-// The receiver's depth for the test, moved toward the light by
-// - Bias texels of world size: for a directional light every provider's clip w is independent of the
-//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so NDC depth changes by
-//   _33 / w per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units
-//   across it (TSM's x row also has a y term, the slant of the trapezoid's sides, which leaves the rate
-//   across x at _11 / w);
-// - SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
-//   map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization,
-//   where a texel's size differs along u and v under a warp.
-float BiasedDepth(SceneVertexOutput IN)
+// SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
+// map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization, where a
+// texel's size differs along u and v under a warp.
+float ReceiverPlaneBias(SceneVertexOutput IN, float depth)
 {
-    float depth = IN.LP.z / IN.LP.w;
-    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
-    float constantBias = Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
     float2 uvX = ddx(ShadowMapUV(IN.LP)) * ShadowMapSize;
     float2 uvY = ddy(ShadowMapUV(IN.LP)) * ShadowMapSize;
     float2 zXY = float2(ddx(depth), ddy(depth));
@@ -99,8 +90,22 @@ float BiasedDepth(SceneVertexOutput IN)
     // d depth / d texel = (d depth / d screen) (d texel / d screen)^-1
     float2 perTexel = float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
                       (abs(determinant) > 1e-12 ? determinant : 1e-12);
-    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.01);
-    return depth - constantBias - SlopeBias * slopeBias;
+    return SlopeBias * min(abs(perTexel.x) + abs(perTexel.y), 0.01);
+}
+
+// The receiver's depth for the test, moved toward the light by
+// - Bias texels of world size: for a directional light every provider's clip w is independent of the
+//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so NDC depth changes by
+//   _33 / w per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units
+//   across it (TSM's x row also has a y term, the slant of the trapezoid's sides, which leaves the rate
+//   across x at _11 / w);
+// - the receiver-plane bias (ReceiverPlaneBias).
+float BiasedDepth(SceneVertexOutput IN)
+{
+    float depth = IN.LP.z / IN.LP.w;
+    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
+    float constantBias = Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
+    return depth - constantBias - ReceiverPlaneBias(IN, depth);
 }
 
 float4 BilinearPS(SceneVertexOutput IN) : COLOR
@@ -117,6 +122,11 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
 // nearer than every receiver; without it nothing lies outside the range and the state changes nothing.
 // Its FilterReachTexels = 2: the 2x2 bilinear test reads one texel beyond a receiver's own, and leave-out
 // culls casters outside that reach (the default 8 texels is up to 8 large far texels of a LiSPSM map).
+// The scene pass shades with LIGHTSPACE_SCENE_PS (BilinearPS unless the effect defines its own before
+// expanding the passes: psm.fx's own bias).
+#ifndef LIGHTSPACE_SCENE_PS
+#define LIGHTSPACE_SCENE_PS BilinearPS
+#endif
 #define LIGHTSPACE_PASSES                                                                                   \
     pass RenderShadowMap                                                                                    \
     <                                                                                                       \
@@ -154,7 +164,7 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
         ZEnable = true;                                                                                     \
         ZWriteEnable = true;                                                                                \
         VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
-        PixelShader = compile ps_3_0 BilinearPS();                                                          \
+        PixelShader = compile ps_3_0 LIGHTSPACE_SCENE_PS();                                                 \
     }
 
 #endif

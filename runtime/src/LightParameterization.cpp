@@ -1,5 +1,6 @@
 // LightParameterization: uniform, focused and LiSPSM fits of a directional light's matrices (see the header).
 #include <runtime/LightParameterization.h>
+#include <runtime/PerspectiveShadowMap.h>
 
 #include "IntersectionBody.h"
 
@@ -108,7 +109,8 @@ LightFit cropToReceivers(const LightFit& uniform, const std::vector<glm::vec3>& 
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
     for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
-                                         LightParameterization::LiSPSM, LightParameterization::TSM})
+                                         LightParameterization::LiSPSM, LightParameterization::TSM,
+                                         LightParameterization::PSM})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -123,6 +125,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "LiSPSM";
         case LightParameterization::TSM:
             return "TSM";
+        case LightParameterization::PSM:
+            return "PSM";
     }
     return "Uniform";
 }
@@ -169,6 +173,8 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
             fitTrapezoid(scene, sceneBounds, aspect, light, tunables);
         return trapezoidal ? trapezoidal->fit : uniform;
     }
+    if (method == LightParameterization::PSM)
+        return fitPerspectiveShadowMap(scene, sceneBounds, aspect, light, tunables);
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on

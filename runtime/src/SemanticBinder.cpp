@@ -135,6 +135,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                 mTunables.lispsmMiddleVector = values[i].data[0] != 0.0f;
             if (upperSemantic == "LIGHTPANCAKING") mTunables.pancaking = values[i].data[0] != 0.0f;
             if (upperSemantic == "TSMFOCUS") mTunables.tsmFocus = values[i].data[0];
+            if (upperSemantic == "PSMSLIDEBACK") mTunables.psmSlideBack = values[i].data[0];
+            if (upperSemantic == "PSMMAXWARPRATIO") mTunables.psmMaxWarpRatio = values[i].data[0];
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);
@@ -146,7 +148,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (!method) {
             diagnostics.report(
                 fx::DiagId::InvalidAnnotation, annotation->loc,
-                {"Parameterization", "expected \"Uniform\", \"Focused\", \"LiSPSM\" or \"TSM\""});
+                {"Parameterization", "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\" or \"PSM\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);

@@ -1,7 +1,8 @@
-// The Parameterization annotation end to end (README, "Light-space parameterizations"): focused.fx and
-// lispsm.fx bind their light matrices from the provider's fit, which is what RenderPort=light0 renders with
-// (EffectRenderer::lightFit), not the uniform fit; an unknown or conflicting name is an error at the
-// annotation. Pancaking clamps the casters before the receivers' depth range onto the map's near plane.
+// The Parameterization annotation end to end (README, "Light-space parameterizations"): focused.fx,
+// lispsm.fx, tsm.fx and psm.fx bind their light matrices from the provider's fit, which is what
+// RenderPort=light0 renders with (EffectRenderer::lightFit), not the uniform fit; an unknown or conflicting
+// name is an error at the annotation. Pancaking clamps the casters before the receivers' depth range onto
+// the map's near plane.
 #include "VisibilityHarness.h"
 
 #include "../../runtime/src/SceneBuilding.h"
@@ -50,7 +51,7 @@ TEST_P(ParameterizedEffect, BindsTheProvidersFitNotTheUniformOne) {
     EXPECT_FALSE(renderer->lightFit(*scene, "no-such-light", options).has_value());
 }
 
-INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect, ::testing::Values("focused.fx", "lispsm.fx"),
+INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect, ::testing::Values("focused.fx", "lispsm.fx", "tsm.fx", "psm.fx"),
                          [](const auto& info) {
                              return std::string(info.param).substr(0, std::strlen(info.param) - 3);
                          });
@@ -111,6 +112,29 @@ TEST(Pancaking, CastersBeforeTheReceiversStillShadowThem) {
     EXPECT_GT(shadowed, truth.truth.visibility.size() / 3);
     EXPECT_LT(whole, 0.5f);
     EXPECT_LT(pancaked, whole + 0.2f) << "pancaked casters were clipped instead of clamped";
+}
+
+// psm.fx's tunables reach the provider through their semantics (PSMSlideBack): a long slide-back gives a
+// different fit from the automatic one, the one fitLight computes with the same tunable.
+TEST(PsmEffect, SlideBackParameterReachesTheProvider) {
+    auto renderer = loadEffect(sourcePath("effects/psm.fx"), true);
+    ASSERT_TRUE(renderer);
+    const std::optional<Scene> scene = makeBuiltinScene("teapot");
+    ASSERT_TRUE(scene);
+    FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    const std::optional<LightFit> automatic = renderer->lightFit(*scene, "light0", options);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("SlideBack", "500", diagnostics)) << diagnostics.str();
+    const std::optional<LightFit> slid = renderer->lightFit(*scene, "light0", options);
+    ASSERT_TRUE(automatic && slid);
+    EXPECT_NE(automatic->projection, slid->projection);
+    LightTunables tunables;
+    tunables.psmSlideBack = 500.0f;
+    const LightFit expected = fitLight(LightParameterization::PSM, *scene, scene->bounds(), 160.0f / 120.0f,
+                                       *scene->findLight("light0"), tunables);
+    EXPECT_EQ(slid->projection, expected.projection);
 }
 
 const fx::Diagnostic* findInvalidAnnotation(const fx::DiagnosticList& diagnostics) {

@@ -10,9 +10,13 @@
 //             made perpendicular to the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
 //   TSM       trapezoidal shadow maps (Martin & Tan; seed 003): a trapezoid around B in light space,
 //             warped onto the square with the 80% rule (TrapezoidalShadowMap.h)
+//   PSM       perspective shadow maps: the light as a point in the camera's post-perspective space, with
+//             Kozlov's inverse projection, slide-back and unit-cube clipping (seed 004 §14.2,
+//             runtime/PerspectiveShadowMap.h)
 //
-// Focused, LiSPSM and TSM fit directional lights; for spot (and point) lights Focused and LiSPSM crop the
-// light's own perspective window to the receivers of B, without a warp, and TSM keeps the uniform fit.
+// Focused, LiSPSM, TSM and PSM fit directional lights; for spot (and point) lights Focused and LiSPSM crop
+// the light's own perspective window to the receivers of B, without a warp, and TSM and PSM keep the
+// uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -25,9 +29,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM, TSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM };
 
-// "Uniform", "Focused", "LiSPSM", "TSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "TSM", "PSM" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -49,6 +53,12 @@ struct LightTunables {
     // TSMFocus: TSM's focus distance δ (seed 003, the 80% rule) as a fraction of the depth of B along the
     // view: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
     float tsmFocus = 0.3f;
+    // PSMSlideBack: how far (world units) PSM's virtual camera slides back behind the eye, its near plane
+    // staying where B begins (seed 004 §14.2.1); < 0 = automatic, sqrt(z_n z_f) of B's depth range.
+    float psmSlideBack = -1.0f;
+    // PSMMaxWarpRatio: the largest ratio of texel densities PSM may put between B's receivers (light clip
+    // w, max / min); closer to the light in post-perspective space, PSM weakens and fades into Focused.
+    float psmMaxWarpRatio = 100.0f;
 };
 
 struct LightFit {
