@@ -1,6 +1,8 @@
 // LightParameterization: uniform, focused and LiSPSM fits of a directional light's matrices (see the header).
 #include <runtime/LightParameterization.h>
 
+#include <runtime/CascadedShadowMaps.h>
+
 #include "IntersectionBody.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -51,8 +53,8 @@ void widen(float& lo, float& hi, float absolute) {
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
-    for (LightParameterization method :
-         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM})
+    for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
+                                         LightParameterization::LiSPSM, LightParameterization::Cascaded})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -65,6 +67,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "Focused";
         case LightParameterization::LiSPSM:
             return "LiSPSM";
+        case LightParameterization::Cascaded:
+            return "Cascaded";
     }
     return "Uniform";
 }
@@ -102,8 +106,10 @@ std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bound
 
 LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
                   const Light& light, const LightTunables& tunables) {
-    LightFit uniform{light.view(sceneBounds), light.projection(sceneBounds, nearestDepthFrom(scene, light)),
-                     0.0f};
+    if (method == LightParameterization::Cascaded)
+        return fitCascades(scene, sceneBounds, aspect, light, tunables);  // CascadedShadowMaps.cpp
+    LightFit uniform{
+        light.view(sceneBounds), light.projection(sceneBounds, nearestDepthFrom(scene, light)), 0.0f, {}};
     if (method == LightParameterization::Uniform || light.type != Light::Type::Directional ||
         !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;

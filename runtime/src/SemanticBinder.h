@@ -11,8 +11,13 @@
 // A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM";`
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale and
-// LiSPSMDepthExtent. Scene-driven choices: SceneHasClosedObjects (true if any object's mesh is closed: a
-// second depth layer can matter) and LightAreaRadius (0 = no soft-shadow filter needed).
+// LiSPSMDepthExtent, CascadeCount, CascadeSplitLambda and CascadeBlend. A `Cascaded` light's sub-views
+// (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
+// projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
+// of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade
+// ends; components past the last cascade repeat its value). Scene-driven choices: SceneHasClosedObjects (true
+// if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
+// filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -33,6 +38,11 @@ struct RenderPortView {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     glm::vec2 viewportSize{1.0f};
+    // RenderPort=lightN.cascadeK: the light (its index in Scene::lights) and K; -1 otherwise. While such a
+    // port is active, the light's annotated View/Projection parameters see cascade K's matrices. (Plain
+    // ints: the plan hashes this struct's bytes, which must hold no padding.)
+    int lightIndex = -1;
+    int cascade = -1;
 };
 
 class SemanticBinder {
@@ -89,6 +99,9 @@ private:
         ObjectColor,
         Ambient,
         SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
+        CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
+        CascadeAtlasRects,
+        CascadeSplitDepths,
     };
     struct Binding {
         size_t parameter;
@@ -99,6 +112,7 @@ private:
             nullptr;                // frustum/Object annotation (matrices), or the light of a light property
         glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
         glm::mat4 lightProjection{1.0f};
+        std::vector<LightView> lightCascades{};  // the light's cascades (a Cascaded fit), else empty
     };
     static bool dependsOnObject(Kind kind);
 
@@ -110,6 +124,7 @@ private:
         LightFit fit;
     };
     const FittedLight& fittedLight(const Light& light);
+    void storeCascades(const Binding& binding, fx::Value& value) const;
 
     const Scene& mScene;
     Bounds mSceneBounds;

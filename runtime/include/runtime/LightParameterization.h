@@ -8,8 +8,11 @@
 //             the light to the scene bounds (seed 000 §4.1, /work/shared/seeds/000_e192ed44df49f96c.txt)
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction made perpendicular to
 //             the light (seed 000 §4.4 eq. 1-3; seed 003), whose strength is 1 / n_opt
+//   Cascaded  the Focused fit as view 0, plus one stabilized orthographic sub-view per slice of the view
+//             depth range (cascaded / parallel-split shadow maps, runtime/CascadedShadowMaps.h), rendered
+//             through RenderPort=lightN.cascadeK into the tiles of one atlas
 //
-// Focused and LiSPSM fit directional lights; spot and point lights keep the uniform fit.
+// Focused, LiSPSM and Cascaded fit directional lights; spot and point lights keep the uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -22,9 +25,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, Cascaded };
 
-// "Uniform", "Focused", "LiSPSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "Cascaded" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -36,12 +39,30 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, seed 000 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
+    // CascadeCount: how many cascades split the view depth range (1..kMaxCascades, clamped).
+    int cascadeCount = 4;
+    // CascadeSplitLambda: the practical split scheme's blend, z_i = λ z_log + (1 - λ) z_uni: 0 = uniform,
+    // 1 = logarithmic.
+    float cascadeSplitLambda = 0.5f;
+    // CascadeBlend: the share of each cascade's depth range, at its far end, across which the effect blends
+    // it into the next one (0..0.5); the next cascade's fit starts that much earlier.
+    float cascadeBlend = 0.1f;
+};
+
+// One sub-view of a light (a cascade): its matrices and the camera view-space depths it serves.
+struct LightView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    float splitNear = 0.0f;  // where its fit starts, the blend band before its split included
+    float splitFar = 0.0f;   // its split: beyond this view depth the next cascade serves
 };
 
 struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     float warp = 0.0f;  // 1 / n of the LiSPSM warp (world units⁻¹): 0 for an orthographic fit
+    // Cascaded: one sub-view per cascade, nearest first (RenderPort=lightN.cascadeK); empty otherwise.
+    std::vector<LightView> cascades;
 };
 
 // Seed 000 eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
