@@ -111,27 +111,33 @@ texture AtlasDepth : RENDERDEPTHSTENCILTARGET
 // Cascade k's bilinear PCF result for a receiver at world position `world`, whose screen derivatives are
 // dWorldX, dWorldY (taken once, outside any selection, so they are defined for every cascade).
 // The bias is lightspace.fxh's BiasedDepth with cascade k's texels: Bias texels of world size plus
-// SlopeBias times the receiver plane's depth change across one texel.
+// SlopeBias times the receiver plane's depth change across one texel. Cascades are orthographic (w = 1);
+// the projective form also serves spot lights, whose every cascade is the light's perspective map.
 float CascadeShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
 {
     float4x4 M = CascadeMatrices[k];
     float4 rect = CascadeRects[k];
     float2 tileSize = AtlasSize * rect.zw;
-    float4 clip = mul(float4(world, 1.0), M);  // orthographic: w = 1
-    float2 local = ShadowMapUV(clip);
+    float4 clip = mul(float4(world, 1.0), M);
+    float3 ndc = clip.xyz / clip.w;
     float4 clipX = mul(float4(dWorldX, 0.0), M);
     float4 clipY = mul(float4(dWorldY, 0.0), M);
-    float2 uvX = float2(0.5, -0.5) * clipX.xy * tileSize;
-    float2 uvY = float2(0.5, -0.5) * clipY.xy * tileSize;
+    // d ndc = (d clip - ndc d w) / w
+    float3 ndcX = (clipX.xyz - ndc * clipX.w) / clip.w;
+    float3 ndcY = (clipY.xyz - ndc * clipY.w) / clip.w;
+    float2 uvX = float2(0.5, -0.5) * ndcX.xy * tileSize;
+    float2 uvY = float2(0.5, -0.5) * ndcY.xy * tileSize;
     float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
-    float2 perTexel = float2(clipX.z * uvY.y - clipY.z * uvX.y, clipY.z * uvX.x - clipX.z * uvY.x) /
+    float2 perTexel = float2(ndcX.z * uvY.y - ndcY.z * uvX.y, ndcY.z * uvX.x - ndcX.z * uvY.x) /
                       (abs(determinant) > 1e-12 ? determinant : 1e-12);
     float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.01);
-    // One texel spans 2 / (tileSize |row 1 of M's 3x3|) world units; depth changes |column 3| per unit.
-    float texelWorld = 2.0 / (tileSize.x * length(float3(M._11, M._21, M._31)));
-    float constantBias = Bias * texelWorld * length(float3(M._13, M._23, M._33));
-    float depth = clip.z - constantBias - SlopeBias * slopeBias;
+    // One texel spans 2 w / (tileSize |P_11|) world units across the light; NDC depth changes |P_33| / w
+    // per world unit along it (|row 1| and |column 3| of M's 3x3 are |P_11| and |P_33|: V is a rotation).
+    float texelWorld = 2.0 * clip.w / (tileSize.x * length(float3(M._11, M._21, M._31)));
+    float constantBias = Bias * texelWorld * length(float3(M._13, M._23, M._33)) / clip.w;
+    float depth = ndc.z - constantBias - SlopeBias * slopeBias;
     // Bilinear PCF inside the tile: its four texels never reach into a neighbouring tile.
+    float2 local = ShadowMapUV(clip);
     float2 uv = clamp(rect.xy + local * rect.zw, rect.xy + 1.0 / AtlasSize, rect.xy + rect.zw - 1.0 / AtlasSize);
     return ShadowTestBilinear(ShadowAtlasSampler, uv, depth, AtlasSize);
 }
@@ -227,7 +233,12 @@ float4 CascadePS(SceneVertexOutput IN, uniform bool blend) : COLOR
 // Each receiver reads its own cascade; the next one takes over at the split.
 technique hard
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
+                                    "the ground (33 %, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;
     int ExpectMapSize = 1024;
 >
 {
@@ -237,7 +248,12 @@ technique hard
 // The same, cross-faded over the last CascadeBlend share of each cascade's depth range.
 technique blended
 <
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
+                                    "the ground (33 %, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;
     int ExpectMapSize = 1024;
 >
 {

@@ -637,10 +637,18 @@ public:
             if (mPort.cascade >= 0) {
                 // A cascade serves the receivers of its own depth slice only: its casters are culled to that
                 // slice, and a slice beyond the farthest receiver has nothing to serve.
-                const std::vector<glm::vec3> slice = cascadeBody();
+                const InstanceBvh& bvh = mImpl.sceneCache.bvh;
+                const glm::mat4 slice = cascadeSlice();
+                std::vector<glm::vec3> body;
+                std::vector<uint32_t> receivers;
+                if (!bvh.empty()) {
+                    body = intersectionBodyPoints(slice, Bounds{bvh.rootBox().min, bvh.rootBox().max});
+                    const ConvexVolume frustum = frustumPlanes(slice);
+                    bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, receivers);
+                    op.sceneSaysSkip = op.sceneSaysSkip || receivers.empty();
+                }
                 op.region =
-                    receiverRegion(slice, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
-                if (slice.empty() && !mImpl.sceneCache.bvh.empty()) op.sceneSaysSkip = true;
+                    receiverRegion(body, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
             } else {
                 op.region =
                     receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
@@ -722,19 +730,16 @@ private:
         }
         return block;
     }
-    // B restricted to the current cascade's depth slice: the camera frustum between the cascade's split
-    // depths ∩ the objects' bounds (IntersectionBody.h). Empty without objects.
-    std::vector<glm::vec3> cascadeBody() const {
-        if (mImpl.sceneCache.bvh.empty()) return {};
+    // The current cascade's slice of the camera frustum (between its split depths) as a view-projection:
+    // its casters are culled to B within it, and a slice no object's box meets has no receiver to serve.
+    glm::mat4 cascadeSlice() const {
         const Light& light = mScene.lights[static_cast<size_t>(mPort.lightIndex)];
-        const LightView& cascade = mBinder.lightFit(light).cascades[static_cast<size_t>(mPort.cascade)];
+        const LightView cascade = mBinder.lightFit(light).cascades[static_cast<size_t>(mPort.cascade)];
         Camera slice = mScene.camera;
         slice.nearPlane = cascade.splitNear;
         slice.farPlane = cascade.splitFar;
         const float aspect = static_cast<float>(mOptions.width) / static_cast<float>(mOptions.height);
-        const Aabb& objects = mImpl.sceneCache.bvh.rootBox();
-        return intersectionBodyPoints(slice.projection(aspect) * slice.view(),
-                                      Bounds{objects.min, objects.max});
+        return slice.projection(aspect) * slice.view();
     }
     std::vector<int> colorTargets() const {
         std::vector<int> targets;
