@@ -11,6 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 namespace {
@@ -102,6 +103,53 @@ TEST(Cascades, RenderPortWritesOnlyItsTileWithItsMatrices) {
             const int tile = (y / 32) * 2 + x / 32;
             ASSERT_EQ((*atlas)[size_t((y * width + x) * channels)], expected[tile]) << x << ", " << y;
         }
+}
+
+// CascadeAtlasRects and CascadeSplitDepths bind each cascade's tile and the view depth where it ends: a
+// pass writes them into a 4 x 2 target (row 0: rect k at x = k; row 1: the split components), compared
+// with the provider's fit and atlas layout. Three cascades: the fourth element repeats the third.
+TEST(Cascades, SemanticsBindTilesAndSplits) {
+    auto renderer = loadEffect(R"(
+float4x4 LightView : View < string frustum = "light0"; string Parameterization = "Cascaded"; >;
+int Count : CascadeCount = 3;
+float4 Rects[4] : CascadeAtlasRects < string frustum = "light0"; >;
+float4 Splits : CascadeSplitDepths < string frustum = "light0"; >;
+float2 Size : ViewportPixelSize;
+texture Out : RENDERCOLORTARGET < float2 Dimensions = {4, 2}; string Format = "A32B32G32R32F"; >;
+float4 QuadVS(float4 p : POSITION) : POSITION { return p; }
+float4 Write(float4 pixel : VPOS) : COLOR
+{
+    int k = int(pixel.x);
+    return pixel.y < 1 ? Rects[k] : float4(Splits[k], 0, 0, 1);
+}
+technique t < string Script = "RenderColorTarget0=Out; Pass=p; RenderColorTarget0=;"; >
+{
+    pass p < string Script = "Draw=Buffer;"; >
+    { ZEnable = false; VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 Write(); }
+}
+)",
+                               false);
+    ASSERT_TRUE(renderer);
+    const Scene scene = sceneWithEmptyFarSlices();
+    FrameOptions options;
+    options.width = 4;
+    options.height = 2;
+    options.outputTargets = {"Out"};
+    const std::optional<LightFit> fit = renderer->lightFit(scene, "light0", options);
+    ASSERT_TRUE(fit && fit->cascades.size() == 3u);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->render(scene, options, diagnostics)) << diagnostics.str();
+    ASSERT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    int width = 0, height = 0, channels = 0;
+    const auto out = renderer->readTarget("Out", &width, &height, &channels);
+    ASSERT_TRUE(out && width == 4 && height == 2 && channels == 4);
+    for (int k = 0; k < 4; ++k) {
+        const int cascade = std::min(k, 2);
+        const glm::vec4 rect = cascadeAtlasRect(cascade, 3);
+        for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ((*out)[size_t(k * 4 + c)], rect[c]) << k << " " << c;
+        EXPECT_FLOAT_EQ((*out)[size_t((4 + k) * 4)], fit->cascades[size_t(cascade)].splitFar) << k;
+    }
+    EXPECT_FLOAT_EQ((*out)[4], 0.5f);  // the second tile of a 2 x 2 grid starts at u = 0.5
 }
 
 struct Frame {
