@@ -130,7 +130,10 @@ float CascadeShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
     float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
     float2 perTexel = float2(ndcX.z * uvY.y - ndcY.z * uvX.y, ndcY.z * uvX.x - ndcX.z * uvY.x) /
                       (abs(determinant) > 1e-12 ? determinant : 1e-12);
-    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.01);
+    // Capped at 0.1 of the cascade's depth range, not lightspace.fxh's 0.01 of B's: a cascade's range is a
+    // fraction of B's, and 0.01 of it left a 0.5 degree sun's acne on the ground (stress `grazing`: 33 %;
+    // 0.1: 1.3 %, at the price of a little light leaking on teapot: 0.045 -> 0.067 %).
+    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.1);
     // One texel spans 2 w / (tileSize |P_11|) world units across the light; NDC depth changes |P_33| / w
     // per world unit along it (|row 1| and |column 3| of M's 3x3 are |P_11| and |P_33|: V is a rotation).
     float texelWorld = 2.0 * clip.w / (tileSize.x * length(float3(M._11, M._21, M._31)));
@@ -235,10 +238,11 @@ technique hard
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
-                                    "the ground (33 %, focused.fx 17 %, the uniform map 42 %)";
+                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
+                                    "17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.045 % on teapot (hard truth)
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {
@@ -250,10 +254,11 @@ technique blended
 <
     // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
-                                    "the ground (33 %, focused.fx 17 %, the uniform map 42 %)";
+                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
+                                    "17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.045 % on teapot (hard truth)
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {
