@@ -3,6 +3,7 @@
 #include <fx/RenderStates.h>
 #include <fx/SasScript.h>
 
+#include <algorithm>
 #include <cctype>
 
 namespace fx {
@@ -151,6 +152,29 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                                 command.selectorFalse.empty())
                                 ok = false, invalid("expected Condition?TechniqueA:TechniqueB");
                         }
+                        break;
+                    }
+                    case ScriptCommand::Kind::RenderPort: {
+                        // lightN.cascadeK addresses one cascade of a light (README, "Light-space
+                        // parameterizations"); whether the light has cascade K is known only per frame.
+                        const size_t dot = value.find('.');
+                        if (dot == std::string::npos) break;
+                        const std::string light = trim(std::string_view(value).substr(0, dot));
+                        const std::string view = trim(std::string_view(value).substr(dot + 1));
+                        const std::string_view prefix = "cascade";
+                        const bool digits =
+                            view.size() > prefix.size() && view.size() <= prefix.size() + 2 &&
+                            std::all_of(view.begin() + static_cast<std::ptrdiff_t>(prefix.size()), view.end(),
+                                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+                        if (light.empty() || !equalsIgnoreCase(view.substr(0, prefix.size()), prefix) ||
+                            !digits) {
+                            ok = false,
+                            invalid("expected lightN or lightN.cascadeK, K a cascade index, not '" + value +
+                                    "'");
+                            break;
+                        }
+                        command.value = light;
+                        command.cascade = std::stoi(view.substr(prefix.size()));
                         break;
                     }
                     case ScriptCommand::Kind::ScriptExternal:

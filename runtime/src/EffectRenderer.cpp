@@ -6,6 +6,7 @@
 // [SECTION] Frame       FrameExecutor: the ScriptTarget that binds targets, states, semantics and draws
 #include <runtime/EffectRenderer.h>
 
+#include <runtime/CascadedShadowMaps.h>
 #include "FramePlan.h"
 #include "Framebuffer.h"
 #include "GlDebug.h"
@@ -455,10 +456,12 @@ std::vector<PassUse> passUses(const EffectRenderer::Impl& impl, const fx::Compil
     return uses;
 }
 
-// The view and projection a RenderPort gives ("" = the camera). False if the scene has no such light.
+// The view and projection a RenderPort gives ("" = the camera; `cascade` >= 0: that cascade of the light).
 // A light port renders with the matrices the effect's parameterization of that light gives (`binder`).
+// False, with why in `error`, if the scene has no such light or the light no such cascade.
 bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameOptions& options,
-                  const std::string& light, RenderPortView& port) {
+                  const std::string& light, int cascade, RenderPortView& port, std::string* error = nullptr) {
+    port.lightIndex = port.cascade = -1;
     if (light.empty()) {
         const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
         port.view = scene.camera.view();
@@ -466,12 +469,36 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
         return true;
     }
     const Light* found = scene.findLight(light);
-    if (!found) return false;
+    if (!found) {
+        if (error) *error = "light '" + light + "', which scene '" + scene.name + "' does not have";
+        return false;
+    }
     const LightFit fit = binder.lightFit(*found);
-    port.view = fit.view;
-    port.projection = fit.projection;
+    if (cascade >= static_cast<int>(fit.cascades.size())) {
+        if (error)
+            *error =
+                "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
+                (fit.cascades.empty() ? std::string("no cascades (its Parameterization is not \"Cascaded\")")
+                                      : std::to_string(fit.cascades.size()) + " (CascadeCount)");
+        return false;
+    }
+    port.view = cascade >= 0 ? fit.cascades[static_cast<size_t>(cascade)].view : fit.view;
+    port.projection = cascade >= 0 ? fit.cascades[static_cast<size_t>(cascade)].projection : fit.projection;
     port.shinesIntoPositiveW = fit.shinesIntoPositiveW;
+    if (cascade >= 0) {
+        port.lightIndex = static_cast<int>(found - scene.lights.data());
+        port.cascade = cascade;
+    }
     return true;
+}
+
+// The tile of a `width` x `height` target that RenderPort=lightN.cascadeK renders into
+// (runtime/CascadedShadowMaps.h): x, y, w, h in texels.
+glm::ivec4 portTile(const SemanticBinder& binder, const Scene& scene, const RenderPortView& port, int width,
+                    int height) {
+    const size_t cascades =
+        binder.lightFit(scene.lights[static_cast<size_t>(port.lightIndex)]).cascades.size();
+    return cascadeViewport(port.cascade, static_cast<int>(cascades), width, height);
 }
 
 std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
@@ -502,7 +529,7 @@ public:
           mValues(impl.values) {
         mColors.fill(kNone);
         mColors[0] = kFrameColor;
-        setRenderPort("");
+        setRenderPort("", -1, {});
     }
 
     void beginPass(const fx::CompiledPass& pass) override {
@@ -518,9 +545,9 @@ public:
     void setDepthTarget(const std::string& texture) override {
         mDepth = texture.empty() ? kFrameDepth : resource(texture);
     }
-    void setRenderPort(const std::string& light) override {
+    void setRenderPort(const std::string& light, int cascade, const fx::SourceLoc&) override {
         mLightPort = !light.empty();
-        portMatrices(mScene, mBinder, mOptions, light, mPort);
+        portMatrices(mScene, mBinder, mOptions, light, cascade, mPort);
     }
     void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
     void setClearDepth(float depth) override { mClearDepth = depth; }
@@ -549,6 +576,12 @@ public:
                 break;
         }
         op.signature = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mPass), value);
+        if (mPort.cascade >= 0) {
+            // A cascade port clears its tile only (D3D clears the viewport): the rest of the target stays.
+            op.wholeTarget = false;
+            op.reads = op.writes;
+            op.signature = hashCombine(op.signature, static_cast<uint64_t>(mPort.cascade) + 1);
+        }
         op.sceneSaysSkip = mSceneSaysSkip;
         mPlan.ops.push_back(std::move(op));
     }
@@ -587,6 +620,11 @@ public:
 
         const PassUse& use = mUses[index];
         mPort.viewportSize = targetSize();
+        if (mPort.cascade >= 0) {
+            const glm::ivec4 tile = portTile(mBinder, mScene, mPort, static_cast<int>(mPort.viewportSize.x),
+                                             static_cast<int>(mPort.viewportSize.y));
+            mPort.viewportSize = glm::vec2(tile.z, tile.w);
+        }
         mBinder.bind(mPort, nullptr, mOptions.time, mValues, mImpl.pinned, SemanticBinder::Scope::PerPort,
                      &use.used);
         uint64_t h = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mTechnique), index);
@@ -595,14 +633,35 @@ public:
         h = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
         h = hashBytes(h, &mPort.viewportSize, sizeof(mPort.viewportSize));
         h = hashCombine(h, mPort.shinesIntoPositiveW ? 1 : 0);
+        h = hashCombine(hashCombine(h, static_cast<uint64_t>(mPort.lightIndex + 1)),
+                        static_cast<uint64_t>(mPort.cascade + 1));
         for (size_t p : use.perPassParameters)
             h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
         if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mImpl.sceneCache.stamp);
         op.signature = h;
         op.sceneSaysSkip = mSceneSaysSkip;
-        if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry)
-            op.region = receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
-        op.region.castersBehindLightPlaneCastNothing = mPort.shinesIntoPositiveW;
+        if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
+            if (mPort.cascade >= 0) {
+                // A cascade serves the receivers of its own depth slice only: its casters are culled to that
+                // slice, and a slice beyond the farthest receiver has nothing to serve.
+                const InstanceBvh& bvh = mImpl.sceneCache.bvh;
+                const glm::mat4 slice = cascadeSlice();
+                std::vector<glm::vec3> body;
+                std::vector<uint32_t> receivers;
+                if (!bvh.empty()) {
+                    body = intersectionBodyPoints(slice, Bounds{bvh.rootBox().min, bvh.rootBox().max});
+                    const ConvexVolume frustum = frustumPlanes(slice);
+                    bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, receivers);
+                    op.sceneSaysSkip = op.sceneSaysSkip || receivers.empty();
+                }
+                op.region =
+                    receiverRegion(body, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+            } else {
+                op.region =
+                    receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+            }
+            op.region.castersBehindLightPlaneCastNothing = mPort.shinesIntoPositiveW;
+        }
         mPlan.ops.push_back(std::move(op));
     }
 
@@ -680,6 +739,17 @@ private:
         }
         return block;
     }
+    // The current cascade's slice of the camera frustum (between its split depths) as a view-projection:
+    // its casters are culled to B within it, and a slice no object's box meets has no receiver to serve.
+    glm::mat4 cascadeSlice() const {
+        const Light& light = mScene.lights[static_cast<size_t>(mPort.lightIndex)];
+        const LightView cascade = mBinder.lightFit(light).cascades[static_cast<size_t>(mPort.cascade)];
+        Camera slice = mScene.camera;
+        slice.nearPlane = cascade.splitNear;
+        slice.farPlane = cascade.splitFar;
+        const float aspect = static_cast<float>(mOptions.width) / static_cast<float>(mOptions.height);
+        return slice.projection(aspect) * slice.view();
+    }
     std::vector<int> colorTargets() const {
         std::vector<int> targets;
         for (int target : mColors)
@@ -734,7 +804,7 @@ public:
           mPlan(plan) {
         mTargets.colors[0].texture = &impl.frameColor;
         mTargets.depth.texture = &impl.frameDepth;
-        setRenderPort("");
+        setRenderPort("", -1, {});
     }
 
     bool failed() const { return mFailed; }
@@ -784,12 +854,15 @@ public:
         mTargets.depth.texture = texture.empty() ? &mImpl.frameDepth : target(texture);
     }
 
-    void setRenderPort(const std::string& lightName) override {
+    void setRenderPort(const std::string& lightName, int cascade, const fx::SourceLoc& loc) override {
         mLightPort = !lightName.empty();
         mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
-        if (!portMatrices(mScene, mBinder, mOptions, lightName, mPort)) {
-            fail(fx::DiagId::UnsupportedFeature, {"RenderPort names light '" + lightName +
-                                                  "', which scene '" + mScene.name + "' does not have"});
+        std::string error;
+        if (!portMatrices(mScene, mBinder, mOptions, lightName, cascade, mPort, &error)) {
+            if (!mFailed)
+                mDiagnostics.report(fx::DiagId::ScriptUnknownRenderPort,
+                                    loc.valid() ? loc : fx::SourceLoc{mImpl.effect().path, 0, 0}, {error});
+            mFailed = true;
         }
     }
 
@@ -809,6 +882,12 @@ public:
                                          : PlannedOp::Kind::ClearStencil;
         if (leftOut(nextOp(kind, mCurrentPass))) return;
         if (!bindTargets()) return;
+        const bool tileOnly = mPort.cascade >= 0;  // D3D clears the viewport: a cascade port its tile
+        if (tileOnly) {
+            const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
+            gl::Enable(GL_SCISSOR_TEST);
+            gl::Scissor(tile.x, tile.y, tile.z, tile.w);
+        }
         ClearRequest request;
         uint64_t texels = 0;
         switch (what) {
@@ -832,6 +911,7 @@ public:
             PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
             FramebufferCache::clear(request);
         }
+        if (tileOnly) gl::Disable(GL_SCISSOR_TEST);  // every pass's states set it anew (RenderStateApplier)
         ++mStats.clears;
         if (PassStats* record = currentPass()) {
             ++record->clears;
@@ -860,6 +940,11 @@ public:
         bindSamplers(pass.vertex);
         bindSamplers(pass.fragment);
         mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
+        if (mPort.cascade >= 0) {
+            const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
+            gl::Viewport(tile.x, tile.y, tile.z, tile.w);
+            mPort.viewportSize = glm::vec2(tile.z, tile.w);
+        }
         program->bind();
         const PassUse& use = mUses[passIndex];
         if (mOptions.leaveOut) {
@@ -1189,7 +1274,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         void beginPass(const fx::CompiledPass&) override {}
         void setColorTarget(int, const std::string&) override {}
         void setDepthTarget(const std::string&) override {}
-        void setRenderPort(const std::string&) override {}
+        void setRenderPort(const std::string&, int, const fx::SourceLoc&) override {}
         void setClearColor(const fx::Value&) override {}
         void setClearDepth(float) override {}
         void setClearStencil(int) override {}
@@ -1231,7 +1316,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         std::vector<glm::vec3> body;
         if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
             RenderPortView camera;
-            portMatrices(frameScene, binder, options, "", camera);
+            portMatrices(frameScene, binder, options, "", -1, camera);
             const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
             body = intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max});
         }

@@ -42,7 +42,8 @@ void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
                 op->leftOut = LeftOut::Dead;
                 continue;
             }
-            if (op->kind == PlannedOp::Kind::ClearColor || op->kind == PlannedOp::Kind::ClearDepth)
+            if ((op->kind == PlannedOp::Kind::ClearColor || op->kind == PlannedOp::Kind::ClearDepth) &&
+                op->wholeTarget)
                 for (int w : op->writes) live.erase(w);
             live.insert(op->reads.begin(), op->reads.end());
         }
@@ -64,7 +65,8 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
             signature = hashCombine(signature, it == contents.end() ? 0 : it->second);
         }
         const bool overwrites =
-            op.kind == PlannedOp::Kind::ClearColor || op.kind == PlannedOp::Kind::ClearDepth;
+            (op.kind == PlannedOp::Kind::ClearColor || op.kind == PlannedOp::Kind::ClearDepth) &&
+            op.wholeTarget;
         for (int w : op.writes) {
             const uint64_t before = overwrites ? 0 : (contents.count(w) ? contents[w] : 0x5eedull);
             contents[w] = hashCombine(hashCombine(before, identity(w)), signature);

@@ -25,7 +25,8 @@ constexpr int kFrameColor = -1;
 constexpr int kFrameDepth = -2;
 
 // Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
-// its pass's `LeaveOutWhen` annotation says the scene does not need it.
+// the scene does not need it (its pass's `LeaveOutWhen` annotation, or a cascade draw whose depth slice
+// holds no receiver).
 enum class LeftOut { No, Dead, Cached, Scene };
 
 struct PlannedOp {
@@ -37,7 +38,8 @@ struct PlannedOp {
     std::vector<int> reads;      // sampled textures, and a draw's bound targets (blending, depth test)
     uint64_t signature = 0;      // what decides the written contents, besides the targets' old contents
     ReceiverRegion region;       // light draws: where the camera's receivers read (before the decision)
-    bool sceneSaysSkip = false;  // the pass's LeaveOutWhen condition holds for this scene
+    bool sceneSaysSkip = false;  // the pass's LeaveOutWhen condition holds, or a cascade's slice is empty
+    bool wholeTarget = true;     // a clear of the whole target (false: one cascade's tile, a partial write)
 
     // Decisions (FramePlan::decide)
     LeftOut leftOut = LeftOut::No;

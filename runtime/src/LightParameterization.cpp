@@ -2,6 +2,8 @@
 #include <runtime/LightParameterization.h>
 #include <runtime/PerspectiveShadowMap.h>
 
+#include <runtime/CascadedShadowMaps.h>
+
 #include "IntersectionBody.h"
 
 #include <runtime/TrapezoidalShadowMap.h>
@@ -102,15 +104,18 @@ LightFit cropToReceivers(const LightFit& uniform, const std::vector<glm::vec3>& 
     crop[1][1] = 2.0f / (hi.y - lo.y);
     crop[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
     crop[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
-    return LightFit{uniform.view, crop * uniform.projection, 0.0f};
+    LightFit cropped;
+    cropped.view = uniform.view;
+    cropped.projection = crop * uniform.projection;
+    return cropped;
 }
 
 }  // namespace
 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
-    for (LightParameterization method : {LightParameterization::Uniform, LightParameterization::Focused,
-                                         LightParameterization::LiSPSM, LightParameterization::TSM,
-                                         LightParameterization::PSM})
+    for (LightParameterization method :
+         {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
+          LightParameterization::TSM, LightParameterization::PSM, LightParameterization::Cascaded})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -127,6 +132,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "TSM";
         case LightParameterization::PSM:
             return "PSM";
+        case LightParameterization::Cascaded:
+            return "Cascaded";
     }
     return "Uniform";
 }
@@ -164,8 +171,11 @@ std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bound
 
 LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
                   const Light& light, const LightTunables& tunables) {
-    LightFit uniform{light.view(sceneBounds), light.projection(sceneBounds, nearestDepthFrom(scene, light)),
-                     0.0f};
+    if (method == LightParameterization::Cascaded)
+        return fitCascades(scene, sceneBounds, aspect, light, tunables);  // CascadedShadowMaps.cpp
+    LightFit uniform;
+    uniform.view = light.view(sceneBounds);
+    uniform.projection = light.projection(sceneBounds, nearestDepthFrom(scene, light));
     if (method == LightParameterization::Uniform || !(glm::dot(light.direction, light.direction) > 1e-12f))
         return uniform;
     if (method == LightParameterization::TSM) {

@@ -207,7 +207,9 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
         projection[c][2] = z[c];
         projection[c][3] = w[c];
     }
-    LightFit fit{focused.view, glm::mat4(projection), 0.0f};
+    LightFit fit;
+    fit.view = focused.view;
+    fit.projection = glm::mat4(projection);
     if (!finite(fit.projection)) return focused;
     if (details) {
         details->postPerspective = postPerspective;

@@ -122,7 +122,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 target.setDepthTarget(command.value);
                 break;
             case Command::Kind::RenderPort:
-                target.setRenderPort(command.value);
+                target.setRenderPort(command.value, command.cascade, command.loc);
                 break;
             case Command::Kind::ClearSetColor:
             case Command::Kind::ClearSetDepth:

@@ -19,7 +19,9 @@ public:
     virtual void beginPass(const fx::CompiledPass& pass) = 0;
     virtual void setColorTarget(int index, const std::string& texture) = 0;  // "" = the frame's colour target
     virtual void setDepthTarget(const std::string& texture) = 0;             // "" = the frame's depth target
-    virtual void setRenderPort(const std::string& light) = 0;                // "" = the camera
+    // "" = the camera; `cascade` >= 0: that sub-view of the light (RenderPort=light0.cascade2); `loc` is
+    // the command's, for errors only the frame can find (a light or cascade the scene does not have).
+    virtual void setRenderPort(const std::string& light, int cascade, const fx::SourceLoc& loc) = 0;
     virtual void setClearColor(const fx::Value& color) = 0;
     virtual void setClearDepth(float depth) = 0;
     virtual void setClearStencil(int stencil) = 0;

@@ -1,11 +1,13 @@
 #include "SemanticBinder.h"
 
 #include <fx/RenderStates.h>
+#include <runtime/CascadedShadowMaps.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <optional>
 
 namespace runtime {
@@ -61,6 +63,24 @@ void storeVector(fx::Value& value, const glm::vec4& v) {
     store(value, glm::value_ptr(v), 1, 4);
 }
 
+// Fills every element of an array parameter (or the one element of a plain one) from `elements`, each
+// `rows` x `cols` floats in HLSL row order and converted to the parameter's element shape like store();
+// elements past the source's end repeat its last one.
+void storeElements(fx::Value& value, const std::vector<float>& elements, int rows, int cols) {
+    fx::Value element;
+    element.type = value.type;
+    element.type.arrayDims.clear();
+    const size_t perSource = static_cast<size_t>(rows * cols);
+    const size_t sources = elements.size() / std::max<size_t>(perSource, 1);
+    const int count = std::max(1, value.type.componentCount()) / std::max(1, element.type.componentCount());
+    value.data.clear();
+    for (int e = 0; e < count && sources > 0; ++e) {
+        store(element, elements.data() + std::min(static_cast<size_t>(e), sources - 1) * perSource, rows,
+              cols);
+        value.data.insert(value.data.end(), element.data.begin(), element.data.end());
+    }
+}
+
 }  // namespace
 
 bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose) {
@@ -106,6 +126,9 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"DIFFUSECOLOR", Kind::ObjectColor},
         {"AMBIENT", Kind::Ambient},
         {"SCENEHASCLOSEDOBJECTS", Kind::SceneHasClosedObjects},
+        {"CASCADEVIEWPROJECTION", Kind::CascadeViewProjection},
+        {"CASCADEATLASRECTS", Kind::CascadeAtlasRects},
+        {"CASCADESPLITDEPTHS", Kind::CascadeSplitDepths},
     };
     for (const auto& [text, otherKind] : kOthers) {
         if (name == text) {
@@ -137,6 +160,10 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             if (upperSemantic == "TSMFOCUS") mTunables.tsmFocus = values[i].data[0];
             if (upperSemantic == "PSMSLIDEBACK") mTunables.psmSlideBack = values[i].data[0];
             if (upperSemantic == "PSMMAXWARPRATIO") mTunables.psmMaxWarpRatio = values[i].data[0];
+            if (upperSemantic == "CASCADECOUNT")
+                mTunables.cascadeCount = static_cast<int>(std::lround(values[i].data[0]));
+            if (upperSemantic == "CASCADESPLITLAMBDA") mTunables.cascadeSplitLambda = values[i].data[0];
+            if (upperSemantic == "CASCADEBLEND") mTunables.cascadeBlend = values[i].data[0];
         }
         const fx::Annotation* annotation = parameter.annotation("Parameterization");
         const std::string lightName = annotatedLight(parameter);
@@ -148,7 +175,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (!method) {
             diagnostics.report(
                 fx::DiagId::InvalidAnnotation, annotation->loc,
-                {"Parameterization", "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\" or \"PSM\""});
+                {"Parameterization",
+                 "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\" or \"Cascaded\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);
@@ -173,13 +201,17 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
+        const bool isCascadeProperty = binding.kind == Kind::CascadeViewProjection ||
+                                       binding.kind == Kind::CascadeAtlasRects ||
+                                       binding.kind == Kind::CascadeSplitDepths;
         const bool isLightProperty =
             binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
-            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius;
+            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius || isCascadeProperty;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
         const std::string upperSemantic = upper(parameter.semantic);
-        if (!lightName.empty() || (isLightProperty && upperSemantic.rfind("LIGHT", 0) == 0)) {
+        if (!lightName.empty() ||
+            (isLightProperty && (upperSemantic.rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
             const std::string name = lightName.empty() ? std::string("light0") : lightName;
             binding.light = scene.findLight(name);
             if (!binding.light) {
@@ -192,6 +224,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             const LightFit& fit = fittedLight(*binding.light).fit;
             binding.lightView = fit.view;
             binding.lightProjection = fit.projection;
+            binding.lightCascades = fit.cascades;
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -211,6 +244,41 @@ LightFit SemanticBinder::lightFit(const Light& light) const {
     for (const FittedLight& fitted : mFittedLights)
         if (fitted.light == &light) return fitted.fit;
     return fitLight(LightParameterization::Uniform, mScene, mSceneBounds, mAspect, light);
+}
+
+// A light without cascades (not Cascaded) binds as one cascade: its own matrices, the whole atlas, the
+// camera's far plane.
+void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) const {
+    std::vector<LightView> cascades = binding.lightCascades;
+    if (cascades.empty())
+        cascades.push_back(
+            {binding.lightView, binding.lightProjection, mScene.camera.nearPlane, mScene.camera.farPlane});
+    const int count = static_cast<int>(cascades.size());
+    std::vector<float> elements;
+    for (int k = 0; k < count; ++k) {
+        const LightView& cascade = cascades[static_cast<size_t>(k)];
+        if (binding.kind == Kind::CascadeViewProjection) {
+            const glm::mat4 viewProjection = cascade.projection * cascade.view;
+            elements.insert(elements.end(), glm::value_ptr(viewProjection),
+                            glm::value_ptr(viewProjection) + 16);
+        } else if (binding.kind == Kind::CascadeAtlasRects) {
+            const glm::vec4 rect = binding.lightCascades.empty() ? glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)
+                                                                 : cascadeAtlasRect(k, count);
+            elements.insert(elements.end(), glm::value_ptr(rect), glm::value_ptr(rect) + 4);
+        } else {
+            elements.push_back(cascade.splitFar);
+        }
+    }
+    if (binding.kind == Kind::CascadeViewProjection) {
+        storeElements(value, elements, 4, 4);
+    } else if (binding.kind == Kind::CascadeAtlasRects) {
+        storeElements(value, elements, 1, 4);
+    } else {
+        // Split depths fill the parameter component by component (a float4 holds four cascades' ends).
+        const size_t components = static_cast<size_t>(std::max(1, value.type.componentCount()));
+        value.data.assign(components, elements.back());
+        std::copy_n(elements.begin(), std::min(components, elements.size()), value.data.begin());
+    }
 }
 
 bool SemanticBinder::isBound(size_t parameter) const {
@@ -256,6 +324,15 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
         if (binding.light) {
             view = binding.lightView;
             projection = binding.lightProjection;
+            // RenderPort=lightN.cascadeK: that light's matrices are cascade K's while the port is active.
+            const bool cascadePort =
+                port.cascade >= 0 &&
+                port.lightIndex == static_cast<int>(binding.light - mScene.lights.data()) &&
+                port.cascade < static_cast<int>(binding.lightCascades.size());
+            if (cascadePort) {
+                view = binding.lightCascades[static_cast<size_t>(port.cascade)].view;
+                projection = binding.lightCascades[static_cast<size_t>(port.cascade)].projection;
+            }
         }
         // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
         glm::mat4 matrix(1.0f);
@@ -317,6 +394,11 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 continue;
             case Kind::SceneHasClosedObjects:
                 storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));
+                continue;
+            case Kind::CascadeViewProjection:
+            case Kind::CascadeAtlasRects:
+            case Kind::CascadeSplitDepths:
+                storeCascades(binding, value);
                 continue;
         }
         if (binding.inverse) matrix = glm::inverse(matrix);

@@ -11,9 +11,14 @@
 // A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" | "TSM";`
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
-// LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking and TSMFocus. Scene-driven choices:
-// SceneHasClosedObjects (true if any object's mesh is closed: a second depth layer can matter) and
-// LightAreaRadius (0 = no soft-shadow filter needed).
+// LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking, TSMFocus, PSMSlideBack, PSMMaxWarpRatio,
+// CascadeCount, CascadeSplitLambda and CascadeBlend. A `Cascaded` light's sub-views
+// (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
+// projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
+// of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade
+// ends; components past the last cascade repeat its value). Scene-driven choices: SceneHasClosedObjects (true
+// if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
+// filter needed).
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -35,6 +40,10 @@ struct RenderPortView {
     glm::mat4 projection{1.0f};
     glm::vec2 viewportSize{1.0f};
     bool shinesIntoPositiveW = true;  // LightFit::shinesIntoPositiveW of a light port (true for the camera)
+    // RenderPort=lightN.cascadeK: the light (its index in Scene::lights) and K; -1 otherwise. While such a
+    // port is active, the light's annotated View/Projection parameters see cascade K's matrices.
+    int lightIndex = -1;
+    int cascade = -1;
 };
 
 class SemanticBinder {
@@ -91,6 +100,9 @@ private:
         ObjectColor,
         Ambient,
         SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
+        CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
+        CascadeAtlasRects,
+        CascadeSplitDepths,
     };
     struct Binding {
         size_t parameter;
@@ -101,6 +113,7 @@ private:
             nullptr;                // frustum/Object annotation (matrices), or the light of a light property
         glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
         glm::mat4 lightProjection{1.0f};
+        std::vector<LightView> lightCascades{};  // the light's cascades (a Cascaded fit), else empty
     };
     static bool dependsOnObject(Kind kind);
 
@@ -112,6 +125,7 @@ private:
         LightFit fit;
     };
     const FittedLight& fittedLight(const Light& light);
+    void storeCascades(const Binding& binding, fx::Value& value) const;
 
     const Scene& mScene;
     Bounds mSceneBounds;

@@ -1,6 +1,8 @@
 // ShadowMetrics: classification errors, error images and the texel-footprint aliasing measure.
 #include <runtime/ShadowMetrics.h>
 
+#include <runtime/CascadedShadowMaps.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -76,30 +78,70 @@ FrameImage errorImage(const FrameImage& frame, const std::vector<float>& truth,
     return out;
 }
 
+namespace {
+
+// Texel coordinates of `position` in a map of `mapSize` texels (x right, v down as in shadowmap.fxh; the sign
+// of v does not change the singular values); false behind a perspective light.
+bool texelOf(const glm::mat4& lightViewProjection, const glm::vec3& position, float mapSize,
+             glm::vec2& texel) {
+    const glm::vec4 clip = lightViewProjection * glm::vec4(position, 1.0f);
+    if (clip.w <= 0.0f) return false;
+    texel = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) * mapSize;
+    return true;
+}
+
+// The footprint measure over given texel coordinates per pixel; neighbours of another object or another
+// map (`map`, e.g. a cascade) give no derivative.
+AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                           const std::vector<glm::vec2>& texel, const std::vector<int>& map);
+
+}  // namespace
+
 AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                     const glm::mat4& lightView, const glm::mat4& lightProjection,
                                     int mapSize) {
-    AliasingMeasure measure;
     const glm::mat4 lightViewProjection = lightProjection * lightView;
-    // Texel coordinates of every covered pixel (x right, v down as in shadowmap.fxh; the sign of v does not
-    // change the singular values).
     std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
+    for (size_t i = 0; i < texel.size(); ++i)
+        if (gbuffer.covered(i)) texelOf(lightViewProjection, gbuffer.position[i], float(mapSize), texel[i]);
+    return footprints(gbuffer, receivers, texel, std::vector<int>(texel.size(), 0));
+}
+
+AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const glm::mat4& cameraView, const std::vector<LightView>& cascades,
+                                 int atlasSize) {
+    if (cascades.empty()) return {};
+    const int count = static_cast<int>(cascades.size());
+    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
+    std::vector<int> map(texel.size(), 0);
     for (size_t i = 0; i < texel.size(); ++i) {
         if (!gbuffer.covered(i)) continue;
-        const glm::vec4 clip = lightViewProjection * glm::vec4(gbuffer.position[i], 1.0f);
-        if (clip.w <= 0.0f) continue;
-        texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *
-                   static_cast<float>(mapSize);
+        // The receiver's cascade, as cascades.fx picks it: the first whose split lies beyond its view depth.
+        const float depth = (cameraView * glm::vec4(gbuffer.position[i], 1.0f)).z;
+        int k = 0;
+        while (k + 1 < count && depth > cascades[static_cast<size_t>(k)].splitFar) ++k;
+        const LightView& cascade = cascades[static_cast<size_t>(k)];
+        const float tile = static_cast<float>(cascadeViewport(k, count, atlasSize, atlasSize).z);
+        texelOf(cascade.projection * cascade.view, gbuffer.position[i], tile, texel[i]);
+        map[i] = k;
     }
+    return footprints(gbuffer, receivers, texel, map);
+}
+
+namespace {
+
+AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                           const std::vector<glm::vec2>& texel, const std::vector<int>& map) {
+    AliasingMeasure measure;
     // Derivative along one screen axis: central difference where both neighbours lie on the same object,
     // else one-sided; none at an object's silhouette on both sides.
     auto derivative = [&](int x, int y, int dx, int dy, glm::vec2& d) {
         const size_t i = gbuffer.index(x, y);
         const uint32_t id = gbuffer.objectId[i];
-        const bool hasNext = x + dx < gbuffer.width && y + dy < gbuffer.height &&
-                             gbuffer.objectId[gbuffer.index(x + dx, y + dy)] == id;
-        const bool hasPrev =
-            x - dx >= 0 && y - dy >= 0 && gbuffer.objectId[gbuffer.index(x - dx, y - dy)] == id;
+        const auto same = [&](size_t j) { return gbuffer.objectId[j] == id && map[j] == map[i]; };
+        const bool hasNext =
+            x + dx < gbuffer.width && y + dy < gbuffer.height && same(gbuffer.index(x + dx, y + dy));
+        const bool hasPrev = x - dx >= 0 && y - dy >= 0 && same(gbuffer.index(x - dx, y - dy));
         if (hasNext && hasPrev) {
             d = 0.5f * (texel[gbuffer.index(x + dx, y + dy)] - texel[gbuffer.index(x - dx, y - dy)]);
         } else if (hasNext) {
@@ -141,5 +183,7 @@ AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<ui
     }
     return measure;
 }
+
+}  // namespace
 
 }  // namespace runtime

@@ -584,9 +584,14 @@ int benchCommand(const Arguments& args) {
                 const std::optional<runtime::LightFit> fit =
                     timed->lightFit(t.scene, t.light->name, fitOptions);
                 const runtime::Bounds bounds = t.scene.bounds();
-                const runtime::AliasingMeasure aliasing = runtime::perspectiveAliasing(
-                    t.gbuffer, t.receivers, fit ? fit->view : t.light->view(bounds),
-                    fit ? fit->projection : t.light->projection(bounds), mapSize);
+                // A cascaded map: each receiver in the texels of its own cascade's tile.
+                const runtime::AliasingMeasure aliasing =
+                    fit && !fit->cascades.empty()
+                        ? runtime::cascadedAliasing(t.gbuffer, t.receivers, t.scene.camera.view(),
+                                                    fit->cascades, mapSize)
+                        : runtime::perspectiveAliasing(
+                              t.gbuffer, t.receivers, fit ? fit->view : t.light->view(bounds),
+                              fit ? fit->projection : t.light->projection(bounds), mapSize);
                 for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
                     if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                               technique.name) == techniqueFilter.end())

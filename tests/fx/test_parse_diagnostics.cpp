@@ -156,7 +156,9 @@ TEST(ParseDiagnostics, NeverCrashesOnHostileInput) {
     for (const std::string& input : inputs) {
         DiagnosticList diags;
         auto effect = parse(input, diags);
-        if (!input.empty()) EXPECT_FALSE(effect) << input.substr(0, 40);
+        if (!input.empty()) {
+            EXPECT_FALSE(effect) << input.substr(0, 40);
+        }
         EXPECT_EQ(effect == nullptr, diags.hasErrors());
     }
 }

@@ -2,11 +2,13 @@
 // directions, degenerate ones included, every matrix is finite and every point of the focus body (B and
 // its extrusion toward the light) lies inside the light's clip volume; LiSPSM's n_opt matches seed 000
 // eq. 1 computed independently and fades into the focused fit as the light turns parallel to the view.
+#include <runtime/CascadedShadowMaps.h>
 #include <runtime/LightParameterization.h>
 
 #include <gtest/gtest.h>
 
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <string>
@@ -17,9 +19,9 @@ using namespace runtime;
 namespace {
 
 constexpr float kAspect = 4.0f / 3.0f;
-constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
-                                              LightParameterization::LiSPSM, LightParameterization::TSM,
-                                              LightParameterization::PSM};
+constexpr LightParameterization kMethods[] = {
+    LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
+    LightParameterization::TSM,     LightParameterization::PSM,     LightParameterization::Cascaded};
 
 // A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (forest-like).
 Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
@@ -90,6 +92,7 @@ TEST(LightParameterizations, NamesParseCaseInsensitively) {
     EXPECT_EQ(parseLightParameterization("UNIFORM"), LightParameterization::Uniform);
     EXPECT_EQ(parseLightParameterization("tsm"), LightParameterization::TSM);
     EXPECT_EQ(parseLightParameterization("psm"), LightParameterization::PSM);
+    EXPECT_EQ(parseLightParameterization("cascaded"), LightParameterization::Cascaded);
     EXPECT_FALSE(parseLightParameterization("Trapezoidal").has_value());
 }
 
@@ -323,4 +326,193 @@ TEST(LightParameterizations, SpotLightsAreCroppedToTheReceivers) {
     EXPECT_GT(focused.projection[0][0] * focused.projection[1][1],
               4.0f * uniform.projection[0][0] * uniform.projection[1][1])
         << "at least 4x the texels per area";
+}
+
+// [SECTION] Cascaded
+
+namespace {
+
+// Is `p` inside the D3D clip volume of `viewProjection` (with a relative tolerance)?
+::testing::AssertionResult insideClip(const glm::mat4& viewProjection, const glm::vec3& p) {
+    const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+    const float tolerance = 1e-5f * std::abs(clip.w);
+    if (clip.w > 0.0f && std::abs(clip.x) <= clip.w + tolerance && std::abs(clip.y) <= clip.w + tolerance &&
+        clip.z >= -tolerance && clip.z <= clip.w + tolerance)
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure()
+           << "clip (" << clip.x << ", " << clip.y << ", " << clip.z << ", " << clip.w << ")";
+}
+
+}  // namespace
+
+// The split schemes against their definitions, computed here in double precision and from properties
+// the formula must have: the logarithmic split keeps z_{i+1} / z_i constant (seed 003,
+// /work/shared/seeds/003_2eefc9356b32647d.txt, "Kaszádolt shadow map-ek": each map covers twice the
+// distance of the previous one, i.e. ratio 2 for n = 1, f = 16, N = 4), the uniform one z_{i+1} - z_i.
+TEST(CascadedShadowMaps, SplitSchemesFollowTheirDefinitions) {
+    const std::vector<float> doubling = cascadeSplitDepths(1.0f, 16.0f, 4, 1.0f);
+    ASSERT_EQ(doubling.size(), 5u);
+    for (int i = 0; i <= 4; ++i) EXPECT_NEAR(doubling[size_t(i)], std::pow(2.0, i), 1e-5) << i;
+    const std::vector<float> uniform = cascadeSplitDepths(0.5f, 100.5f, 4, 0.0f);
+    for (int i = 0; i <= 4; ++i) EXPECT_NEAR(uniform[size_t(i)], 0.5 + 25.0 * i, 1e-4) << i;
+    for (double n : {0.001, 0.1, 2.0})
+        for (double f : {10.0, 70.0, 5000.0})
+            for (int count : {1, 2, 3, 4, 8})
+                for (double lambda : {0.0, 0.25, 0.5, 1.0}) {
+                    const std::vector<float> z = cascadeSplitDepths(float(n), float(f), count, float(lambda));
+                    ASSERT_EQ(z.size(), size_t(count) + 1);
+                    EXPECT_FLOAT_EQ(z.front(), float(n));
+                    EXPECT_FLOAT_EQ(z.back(), float(f));
+                    for (int i = 0; i <= count; ++i) {
+                        const double t = double(i) / count;
+                        const double expected =
+                            lambda * n * std::exp(t * std::log(f / n)) + (1.0 - lambda) * (n + t * (f - n));
+                        EXPECT_NEAR(z[size_t(i)], expected, 1e-5 * expected) << n << " " << f << " " << i;
+                        if (i > 0) {
+                            EXPECT_GT(z[size_t(i)], z[size_t(i) - 1]);
+                        }
+                    }
+                }
+}
+
+TEST(CascadedShadowMaps, AtlasTilesPartitionTheAtlas) {
+    EXPECT_EQ(cascadeAtlasGrid(1), glm::ivec2(1, 1));
+    EXPECT_EQ(cascadeAtlasGrid(2), glm::ivec2(2, 1));
+    EXPECT_EQ(cascadeAtlasGrid(4), glm::ivec2(2, 2));
+    EXPECT_EQ(cascadeAtlasGrid(5), glm::ivec2(3, 2));
+    EXPECT_EQ(cascadeAtlasGrid(8), glm::ivec2(3, 3));
+    EXPECT_EQ(cascadeViewport(3, 4, 1024, 1024), glm::ivec4(512, 512, 512, 512));
+    EXPECT_EQ(cascadeViewport(2, 4, 1024, 1024), glm::ivec4(0, 512, 512, 512));
+    for (int count = 1; count <= kMaxCascades; ++count) {
+        const glm::ivec2 grid = cascadeAtlasGrid(count);
+        const int size = 720;  // a multiple of every grid's columns and rows
+        std::vector<int> owner(size_t(size * size), -1);
+        for (int k = 0; k < count; ++k) {
+            const glm::ivec4 tile = cascadeViewport(k, count, size, size);
+            const glm::vec4 rect = cascadeAtlasRect(k, count);
+            EXPECT_NEAR(rect.x * size, tile.x, 1e-3);
+            EXPECT_NEAR(rect.y * size, tile.y, 1e-3);
+            EXPECT_NEAR(rect.z * size, tile.z, 1e-3);
+            EXPECT_NEAR(rect.w * size, tile.w, 1e-3);
+            EXPECT_EQ(tile.z, size / grid.x);
+            for (int y = tile.y; y < tile.y + tile.w; ++y)
+                for (int x = tile.x; x < tile.x + tile.z; ++x) {
+                    ASSERT_TRUE(x < size && y < size) << count << " " << k;
+                    EXPECT_EQ(owner[size_t(y * size + x)], -1) << "tiles overlap";
+                    owner[size_t(y * size + x)] = k;
+                }
+        }
+    }
+}
+
+// For the whole grid of cameras and lights: every cascade's matrices are finite, its splits are monotonic
+// and cover [near, far end] without gaps (each starts, blend band included, before the previous ends), and
+// every point of its slice of B (receivers: slice ∩ bounds; casters: their extrusion toward the light)
+// lies inside its clip volume.
+TEST(CascadedShadowMaps, EachSliceLiesInsideItsCascade) {
+    for (const Configuration& c : grid()) {
+        const Scene scene = terrain(c.view, c.light);
+        const Bounds bounds = scene.bounds();
+        for (int count : {1, 3, 4}) {
+            LightTunables tunables;
+            tunables.cascadeCount = count;
+            const LightFit fit =
+                fitLight(LightParameterization::Cascaded, scene, bounds, kAspect, scene.lights[0], tunables);
+            const std::string what = c.name + " count " + std::to_string(count);
+            ASSERT_EQ(fit.cascades.size(), size_t(count)) << what;
+            EXPECT_FLOAT_EQ(fit.cascades.front().splitNear, scene.camera.nearPlane) << what;
+            EXPECT_LE(fit.cascades.back().splitFar, scene.camera.farPlane) << what;
+            for (size_t k = 0; k < fit.cascades.size(); ++k) {
+                const LightView& cascade = fit.cascades[k];
+                ASSERT_TRUE(finite(cascade.view) && finite(cascade.projection)) << what;
+                ASSERT_LT(cascade.splitNear, cascade.splitFar) << what;
+                if (k > 0) {
+                    EXPECT_GT(cascade.splitFar, fit.cascades[k - 1].splitFar) << what;
+                    EXPECT_LE(cascade.splitNear, fit.cascades[k - 1].splitFar) << what;
+                }
+                Camera slice = scene.camera;
+                slice.nearPlane = cascade.splitNear;
+                slice.farPlane = cascade.splitFar;
+                const std::vector<glm::vec3> body =
+                    focusBody(slice, kAspect, bounds, glm::normalize(scene.lights[0].direction));
+                const glm::mat4 viewProjection = cascade.projection * cascade.view;
+                for (const glm::vec3& p : body)
+                    ASSERT_TRUE(insideClip(viewProjection, p)) << what << " cascade " << k;
+            }
+        }
+    }
+}
+
+// The split range ends at the farthest corner of the bounds when that is nearer than the far plane (rounded
+// up by at most one ladder step of 2^(1/16)), and the near cascades get smaller texels: each cascade's
+// map spans at most the next one's world extent.
+TEST(CascadedShadowMaps, SplitsEndAtTheSceneAndNearCascadesAreFiner) {
+    Scene scene = terrain(fromAngles(-10.0f, 0.0f), fromAngles(-45.0f, 30.0f));
+    scene.camera.farPlane = 1e5f;
+    const LightFit fit =
+        fitLight(LightParameterization::Cascaded, scene, scene.bounds(), kAspect, scene.lights[0]);
+    ASSERT_EQ(fit.cascades.size(), 4u);
+    float farthest = 0.0f;
+    const glm::mat4 view = scene.camera.view();
+    const Bounds bounds = scene.bounds();
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+                          corner & 4 ? bounds.max.z : bounds.min.z);
+        farthest = std::max(farthest, (view * glm::vec4(p, 1.0f)).z);
+    }
+    EXPECT_GE(fit.cascades.back().splitFar, farthest);
+    EXPECT_LE(fit.cascades.back().splitFar, farthest * std::exp2(1.0f / 16.0f) * 1.0001f);
+    for (size_t k = 1; k < fit.cascades.size(); ++k)
+        EXPECT_GE(fit.cascades[k - 1].projection[0][0], fit.cascades[k].projection[0][0]) << k;
+    EXPECT_GT(fit.cascades[0].projection[0][0], 4.0f * fit.cascades[3].projection[0][0]);
+}
+
+// Stabilization: as the camera moves a little, every cascade keeps its light view and extent, and its
+// origin moves by whole texels of a 512² tile (so rasterized shadow edges stay where they are).
+TEST(CascadedShadowMaps, ACameraMoveShiftsCascadesByWholeTexels) {
+    const Scene start = terrain(fromAngles(-10.0f, 0.0f), fromAngles(-45.0f, 30.0f));
+    const LightFit before =
+        fitLight(LightParameterization::Cascaded, start, start.bounds(), kAspect, start.lights[0]);
+    int moved = 0;
+    for (int step = 1; step <= 20; ++step) {
+        Scene scene = start;
+        const glm::mat4 orbit =
+            glm::rotate(glm::mat4(1.0f), glm::radians(0.1f * float(step)), glm::vec3(0, 1, 0));
+        scene.camera.position =
+            scene.camera.target +
+            glm::vec3(orbit * glm::vec4(start.camera.position - start.camera.target, 0.0f));
+        scene.camera.position.x += 0.05f * float(step);
+        const LightFit after =
+            fitLight(LightParameterization::Cascaded, scene, scene.bounds(), kAspect, scene.lights[0]);
+        ASSERT_EQ(after.cascades.size(), before.cascades.size());
+        for (size_t k = 0; k < after.cascades.size(); ++k) {
+            const LightView &a = before.cascades[k], &b = after.cascades[k];
+            EXPECT_EQ(a.view, b.view) << step << " " << k;
+            if (a.projection[0][0] != b.projection[0][0]) continue;  // the extent stepped up the ladder
+            const float texels = 256.0f;                             // clip units [-1, 1] -> 512 texels
+            for (int axis = 0; axis < 2; ++axis) {
+                const float shift = (b.projection[3][axis] - a.projection[3][axis]) * texels;
+                EXPECT_NEAR(shift, std::round(shift), 2e-2f) << step << " cascade " << k << " axis " << axis;
+                moved += std::round(shift) != 0.0f ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(moved, 0) << "the camera moved 1 m: some cascade must have followed it";
+}
+
+// Spot lights cannot be focused: every cascade is the light's own (uniform) fit, still one per cascade so
+// that the effect's cascade passes run.
+TEST(CascadedShadowMaps, SpotLightsKeepTheUniformFitInEveryCascade) {
+    Scene scene = terrain(fromAngles(-10.0f, 0.0f), fromAngles(-45.0f, 30.0f));
+    scene.lights[0].type = Light::Type::Spot;
+    scene.lights[0].position = {0.0f, 60.0f, -120.0f};
+    const LightFit uniform =
+        fitLight(LightParameterization::Uniform, scene, scene.bounds(), kAspect, scene.lights[0]);
+    const LightFit fit =
+        fitLight(LightParameterization::Cascaded, scene, scene.bounds(), kAspect, scene.lights[0]);
+    ASSERT_EQ(fit.cascades.size(), 4u);
+    for (const LightView& cascade : fit.cascades) {
+        EXPECT_EQ(cascade.view, uniform.view);
+        EXPECT_EQ(cascade.projection, uniform.projection);
+    }
 }

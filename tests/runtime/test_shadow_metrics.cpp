@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 
 namespace {
@@ -88,6 +90,41 @@ TEST(ShadowMetrics, TexelFootprintOfAUniformGridIsTheRatioOfTexelToPixelSize) {
     EXPECT_EQ(m.pixels, gbuffer.pixelCount());
     EXPECT_NEAR(m.meanFootprint, expected, 1e-3 * expected);
     EXPECT_NEAR(m.maxFootprint, expected, 1e-3 * expected);
+}
+
+// Cascades: each receiver is measured in its own cascade's tile. One cascade over the whole atlas is the
+// single map; with four cascades (2 x 2 tiles of half the size) whose far half of the plane (view depth
+// beyond 0) uses a map of twice the world extent, the near half's texels are twice and the far half's
+// four times the single map's footprint.
+TEST(ShadowMetrics, CascadedFootprintUsesEachReceiversCascade) {
+    runtime::GBuffer gbuffer;
+    gbuffer.width = gbuffer.height = 64;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            gbuffer.position.emplace_back(x * 0.1f - 3.2f, 0.0f, y * 0.1f - 3.2f);
+            gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
+            gbuffer.objectId.push_back(1);
+        }
+    runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
+    runtime::Light light;
+    const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
+    const int mapSize = 256;
+    const glm::mat4 cameraView =
+        glm::lookAtLH(glm::vec3(0.0f, 0.0f, -10.0f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const double single = (2.0 * bounds.radius() / mapSize) / 0.1;
+    const runtime::LightView whole{light.view(bounds), light.projection(bounds), 0.1f, 100.0f};
+    const runtime::AliasingMeasure one =
+        runtime::cascadedAliasing(gbuffer, receivers, cameraView, {whole}, mapSize);
+    EXPECT_NEAR(one.meanFootprint, single, 1e-3 * single);
+
+    runtime::LightView near = whole, wide = whole;
+    near.splitFar = 10.0f;  // the view depth of z = 0
+    wide.projection = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f)) * whole.projection;
+    const runtime::AliasingMeasure four =
+        runtime::cascadedAliasing(gbuffer, receivers, cameraView, {near, wide, wide, wide}, mapSize);
+    EXPECT_EQ(four.pixels, gbuffer.pixelCount());  // beside the split, the neighbour on its own side serves
+    EXPECT_NEAR(four.maxFootprint, 4.0 * single, 1e-3 * single);
+    EXPECT_NEAR(four.meanFootprint, 3.0 * single, 0.05 * single);
 }
 
 }  // namespace

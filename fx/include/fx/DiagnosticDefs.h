@@ -32,6 +32,7 @@ FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Error, "script names technique '{0}', which the effect does not have")
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
+FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
 FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is accepted and ignored")
 
 // [SECTION] Compiling passes

@@ -22,7 +22,7 @@ struct ScriptCommand {
         ClearSetStencil,           // ClearSetStencil=intParam
         Clear,                     // Clear=Color|Depth|Stencil
         Draw,                      // Draw=Geometry|Buffer
-        RenderPort,                // RenderPort=light0 (empty = the camera)
+        RenderPort,                // RenderPort=light0 (empty = the camera), RenderPort=light0.cascade2
         LoopByCount,               // LoopByCount=intParam (or a literal count)
         LoopGetIndex,              // LoopGetIndex=intParam
         LoopEnd,                   // LoopEnd=
@@ -37,8 +37,10 @@ struct ScriptCommand {
 
     Kind kind;
     int index = 0;      // RenderColorTarget0..3
-    std::string value;  // the text after '=', trimmed ("" if empty)
-    SourceLoc loc;      // where the command's name stands in the user's file
+    std::string value;  // the text after '=', trimmed ("" if empty); RenderPort: the light's name only
+    int cascade =
+        -1;         // RenderPort=light0.cascadeK: K (a sub-view of the light, runtime/CascadedShadowMaps.h)
+    SourceLoc loc;  // where the command's name stands in the user's file
 
     // Technique=Cond?A:B
     std::string selectorCondition;

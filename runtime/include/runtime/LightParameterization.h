@@ -13,10 +13,13 @@
 //   PSM       perspective shadow maps: the light as a point in the camera's post-perspective space, with
 //             Kozlov's inverse projection, slide-back and unit-cube clipping (seed 004 §14.2,
 //             runtime/PerspectiveShadowMap.h)
+//   Cascaded  the Focused fit as view 0, plus one stabilized orthographic sub-view per slice of the view
+//             depth range (cascaded / parallel-split shadow maps, runtime/CascadedShadowMaps.h), rendered
+//             through RenderPort=lightN.cascadeK into the tiles of one atlas
 //
-// Focused, LiSPSM, TSM and PSM fit directional lights; for spot (and point) lights Focused and LiSPSM crop
-// the light's own perspective window to the receivers of B, without a warp, and TSM and PSM keep the
-// uniform fit.
+// Focused, LiSPSM, TSM, PSM and Cascaded fit directional lights; for spot (and point) lights Focused and
+// LiSPSM crop the light's own perspective window to the receivers of B, without a warp, and the others keep
+// the uniform fit.
 #pragma once
 
 #include <runtime/Scene.h>
@@ -29,9 +32,9 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM };
+enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM, Cascaded };
 
-// "Uniform", "Focused", "LiSPSM", "TSM", "PSM" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "TSM", "PSM", "Cascaded" (case-insensitive); nullopt for anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -59,15 +62,34 @@ struct LightTunables {
     // PSMMaxWarpRatio: the largest ratio of texel densities PSM may put between B's receivers (light clip
     // w, max / min); closer to the light in post-perspective space, PSM weakens and fades into Focused.
     float psmMaxWarpRatio = 100.0f;
+    // CascadeCount: how many cascades split the view depth range (1..kMaxCascades, clamped).
+    int cascadeCount = 4;
+    // CascadeSplitLambda: the practical split scheme's blend, z_i = λ z_log + (1 - λ) z_uni: 0 = uniform,
+    // 1 = logarithmic.
+    float cascadeSplitLambda = 0.5f;
+    // CascadeBlend: the share of each cascade's depth range, at its far end, across which the effect blends
+    // it into the next one (0..0.5); the next cascade's fit starts that much earlier.
+    float cascadeBlend = 0.1f;
+};
+
+// One sub-view of a light (a cascade): its matrices and the camera view-space depths it serves.
+struct LightView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    float splitNear = 0.0f;  // where its fit starts, the blend band before its split included
+    float splitFar = 0.0f;   // its split: beyond this view depth the next cascade serves
 };
 
 struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     float warp = 0.0f;  // 1 / n of the LiSPSM or TSM warp (world units⁻¹): 0 for an orthographic fit
+    // Cascaded: one sub-view per cascade, nearest first (RenderPort=lightN.cascadeK); empty otherwise.
+    std::vector<LightView> cascades;
     // True when clip w > 0 is exactly the half-space the light shines into (a spot's own perspective, the
-    // LiSPSM and TSM warps, whose centres lie before B along V_P while shadows run across it, any
-    // orthographic fit): a caster wholly at w <= 0 shadows nothing in the map, and leave-out drops it.
+    // LiSPSM and TSM warps, whose centres lie before B along V_P while shadows run across it, PSM, whose w
+    // is constant along each light ray, any orthographic fit): a caster wholly at w <= 0 shadows nothing in
+    // the map, and leave-out drops it.
     bool shinesIntoPositiveW = true;
 };
 

@@ -9,6 +9,7 @@
 #include <runtime/EffectRenderer.h>
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
+#include <runtime/LightParameterization.h>
 #include <runtime/Scene.h>
 
 #include <glm/glm.hpp>
@@ -64,5 +65,11 @@ struct AliasingMeasure {
 AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                     const glm::mat4& lightView, const glm::mat4& lightProjection,
                                     int mapSize);
+// The same for cascaded shadow maps (runtime/CascadedShadowMaps.h): each receiver in the texels of its own
+// cascade (the first whose splitFar lies beyond its view depth under `cameraView`), a tile of the
+// `atlasSize`² atlas; derivatives are not taken across cascades.
+AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const glm::mat4& cameraView, const std::vector<LightView>& cascades,
+                                 int atlasSize);
 
 }  // namespace runtime

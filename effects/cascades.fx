@@ -1,0 +1,266 @@
+// cascades.fx: cascaded (parallel-split) shadow maps (seed 003, "Kaszádolt shadow map-ek", and seed 000 §1,
+// /work/shared/seeds/): the view depth range is split into four slices and each gets its own orthographic,
+// stabilized map, all four as 512² tiles of one 1024² atlas: the same texels as focused.fx's single 1024²
+// map, spent near the viewer where the eye sees them large (README, "Light-space parameterizations").
+//
+// The runtime's `Cascaded` provider (runtime/CascadedShadowMaps.h) fits the cascades; each depth pass renders
+// through RenderPort=light0.cascadeK into tile K, with light0's View/Projection parameters bound to cascade
+// K's matrices. The scene pass picks a receiver's cascade by its view depth (CascadeSplitDepths), reads its
+// tile (CascadeViewProjection, CascadeAtlasRects) and, in `blended`, cross-fades into the next cascade over
+// the last CascadeBlend share of each cascade's depth range, where the resolution changes. ShowCascades
+// tints the image by cascade (red, green, blue, yellow).
+#define LIGHT_PARAMETERIZATION "Cascaded"
+#include "include/lighting.fxh"
+#include "include/shadowmap.fxh"
+#include "include/shadowscene.fxh"
+
+#ifdef SHADOWFX_SHADOW_MAP_SIZE
+#define SHADOW_MAP_SIZE SHADOWFX_SHADOW_MAP_SIZE
+#else
+#define SHADOW_MAP_SIZE 1024
+#endif
+
+float Script : STANDARDSGLOBAL
+<
+    string UIWidget = "none";
+    string ScriptClass = "scene";
+    string ScriptOrder = "standard";
+    string ScriptOutput = "color";
+    string Script = "Technique=blended;";
+> = 0.8;
+
+// [SECTION] Tweakables
+// Four passes below render the four cascades: the count is fixed (a RenderPort past it is an error).
+int CascadeCount : CascadeCount <string UIWidget = "None";> = 4;
+
+// The split scheme: z_i = λ z_log + (1 - λ) z_uniform (0 = uniform, 1 = logarithmic).
+float SplitLambda : CascadeSplitLambda
+<
+    string UIWidget = "slider";
+    string UIName = "Split scheme (0 uniform, 1 logarithmic)";
+    float UIMin = 0.0;
+    float UIMax = 1.0;
+> = 0.5;
+
+// The share of each cascade's depth range, at its far end, over which `blended` fades into the next one.
+float BlendShare : CascadeBlend
+<
+    string UIWidget = "slider";
+    string UIName = "Cascade blend band";
+    float UIMin = 0.0;
+    float UIMax = 0.5;
+> = 0.1;
+
+// Depth bias in texels of the receiver's cascade (lightspace.fxh's BiasedDepth, per cascade).
+float Bias
+<
+    string UIWidget = "slider";
+    string UIName = "Depth bias (texels)";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+    float UIStep = 0.05;
+> = 2.0;
+
+float SlopeBias
+<
+    string UIWidget = "slider";
+    string UIName = "Receiver-plane bias (texels)";
+    float UIMin = 0.0;
+    float UIMax = 4.0;
+> = 1.5;
+
+bool ShowCascades <string UIName = "Tint by cascade";> = false;
+
+float2 AtlasSize <string UIWidget = "none";> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+
+// [SECTION] Cascades (bound by the runtime)
+float4x4 CascadeMatrices[4] : CascadeViewProjection <string frustum = "light0"; string UIWidget = "None";>;
+float4 CascadeRects[4] : CascadeAtlasRects <string frustum = "light0"; string UIWidget = "None";>;
+float4 CascadeSplits : CascadeSplitDepths <string frustum = "light0"; string UIWidget = "None";>;
+float4x4 CameraView : View <string UIWidget = "None";>;
+float4x4 CameraProjection : Projection <string UIWidget = "None";>;
+// The scene pass's vertex shader hands the pixel shader the world position in LP (shadowscene.fxh).
+float4x4 WorldToWorld <string UIWidget = "None";> = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// [SECTION] Textures and samplers
+texture ShadowAtlas : RENDERCOLORTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "R32F";
+    string UIWidget = "None";
+>;
+
+sampler ShadowAtlasSampler = sampler_state
+{
+    texture = <ShadowAtlas>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MipFilter = NONE;
+    MinFilter = POINT;
+    MagFilter = POINT;
+};
+
+texture AtlasDepth : RENDERDEPTHSTENCILTARGET
+<
+    float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
+    string Format = "D24S8";
+    string UIWidget = "None";
+>;
+
+// [SECTION] Shaders
+// Cascade k's bilinear PCF result for a receiver at world position `world`, whose screen derivatives are
+// dWorldX, dWorldY (taken once, outside any selection, so they are defined for every cascade).
+// The bias is lightspace.fxh's BiasedDepth with cascade k's texels: Bias texels of world size plus
+// SlopeBias times the receiver plane's depth change across one texel. Cascades are orthographic (w = 1);
+// the projective form also serves spot lights, whose every cascade is the light's perspective map.
+float CascadeShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
+{
+    float4x4 M = CascadeMatrices[k];
+    float4 rect = CascadeRects[k];
+    float2 tileSize = AtlasSize * rect.zw;
+    float4 clip = mul(float4(world, 1.0), M);
+    float3 ndc = clip.xyz / clip.w;
+    float4 clipX = mul(float4(dWorldX, 0.0), M);
+    float4 clipY = mul(float4(dWorldY, 0.0), M);
+    // d ndc = (d clip - ndc d w) / w
+    float3 ndcX = (clipX.xyz - ndc * clipX.w) / clip.w;
+    float3 ndcY = (clipY.xyz - ndc * clipY.w) / clip.w;
+    float2 uvX = float2(0.5, -0.5) * ndcX.xy * tileSize;
+    float2 uvY = float2(0.5, -0.5) * ndcY.xy * tileSize;
+    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
+    float2 perTexel = float2(ndcX.z * uvY.y - ndcY.z * uvX.y, ndcY.z * uvX.x - ndcX.z * uvY.x) /
+                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    // Capped at 0.1 of the cascade's depth range, not lightspace.fxh's 0.01 of B's: a cascade's range is a
+    // fraction of B's, and 0.01 of it left a 0.5 degree sun's acne on the ground (stress `grazing`: 33 %;
+    // 0.1: 1.3 %, at the price of a little light leaking on teapot: 0.045 -> 0.067 %).
+    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.1);
+    // One texel spans 2 w / (tileSize |P_11|) world units across the light; NDC depth changes |P_33| / w
+    // per world unit along it (|row 1| and |column 3| of M's 3x3 are |P_11| and |P_33|: V is a rotation).
+    float texelWorld = 2.0 * clip.w / (tileSize.x * length(float3(M._11, M._21, M._31)));
+    float constantBias = Bias * texelWorld * length(float3(M._13, M._23, M._33)) / clip.w;
+    float depth = ndc.z - constantBias - SlopeBias * slopeBias;
+    // Bilinear PCF inside the tile: its four texels never reach into a neighbouring tile.
+    float2 local = ShadowMapUV(clip);
+    float2 uv = clamp(rect.xy + local * rect.zw, rect.xy + 1.0 / AtlasSize, rect.xy + rect.zw - 1.0 / AtlasSize);
+    return ShadowTestBilinear(ShadowAtlasSampler, uv, depth, AtlasSize);
+}
+
+float4 CascadePS(SceneVertexOutput IN, uniform bool blend) : COLOR
+{
+    float3 world = IN.LP.xyz;
+    float3 dWorldX = ddx(world);
+    float3 dWorldY = ddy(world);
+    float viewDepth = mul(float4(world, 1.0), CameraView).z;
+    // The first cascade whose split lies beyond the receiver (components past the last cascade repeat it).
+    int k = min(int(dot(float4(viewDepth > CascadeSplits.x, viewDepth > CascadeSplits.y,
+                               viewDepth > CascadeSplits.z, viewDepth > CascadeSplits.w), 1.0)), CascadeCount - 1);
+    float shadow = CascadeShadow(k, world, dWorldX, dWorldY);
+    float4 splits = CascadeSplits;
+    float end = splits[k];
+    // z_0 = the camera's near plane (D3D perspective: _43 = -n _33).
+    float start = k > 0 ? splits[max(k - 1, 0)] : -CameraProjection._43 / CameraProjection._33;
+    float bandStart = end - BlendShare * (end - start);
+    if (blend && k + 1 < CascadeCount && viewDepth > bandStart)
+    {
+        float t = saturate((viewDepth - bandStart) / max(end - bandStart, 1e-6));
+        shadow = lerp(shadow, CascadeShadow(k + 1, world, dWorldX, dWorldY), t);
+    }
+    float4 color = ShadeOrVisibility(IN, shadow);
+#ifndef SHADOWFX_VISIBILITY
+    if (ShowCascades)
+    {
+        float3 tints[4] = {float3(1.0, 0.45, 0.45), float3(0.45, 1.0, 0.45), float3(0.45, 0.45, 1.0),
+                           float3(1.0, 1.0, 0.45)};
+        color.rgb *= tints[k];
+    }
+#endif
+    return color;
+}
+
+// [SECTION] Passes
+// The atlas is cleared whole from light0's plain port; each cascade pass then draws into its tile.
+#define CASCADE_PASS(name, port)                                                                            \
+    pass name                                                                                               \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=ShadowAtlas;"                                                   \
+                        "RenderDepthStencilTarget=AtlasDepth;"                                              \
+                        port                                                                                \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = None;                                                                                    \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
+        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
+    }
+
+#define CASCADE_PASSES(blend)                                                                               \
+    pass ClearAtlas                                                                                         \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=ShadowAtlas;"                                                   \
+                        "RenderDepthStencilTarget=AtlasDepth;"                                              \
+                        "RenderPort=light0;"                                                                \
+                        "ClearSetColor=NoOccluder;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;";                                                                     \
+    >                                                                                                       \
+    {                                                                                                       \
+    }                                                                                                       \
+    CASCADE_PASS(Cascade0, "RenderPort=light0.cascade0;")                                                   \
+    CASCADE_PASS(Cascade1, "RenderPort=light0.cascade1;")                                                   \
+    CASCADE_PASS(Cascade2, "RenderPort=light0.cascade2;")                                                   \
+    CASCADE_PASS(Cascade3, "RenderPort=light0.cascade3;")                                                   \
+    pass RenderScene                                                                                        \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=;"                                                              \
+                        "RenderDepthStencilTarget=;"                                                        \
+                        "RenderPort=;"                                                                      \
+                        "ClearSetColor=ClearColor;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderSceneVS(WorldToWorld);                                          \
+        PixelShader = compile ps_3_0 CascadePS(blend);                                                      \
+    }
+
+#define CASCADE_SCRIPT "Pass=ClearAtlas; Pass=Cascade0; Pass=Cascade1; Pass=Cascade2; Pass=Cascade3; Pass=RenderScene;"
+
+// Each receiver reads its own cascade; the next one takes over at the split.
+technique hard
+<
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
+                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
+                                    "17 %, the uniform map 42 %)";
+    string Script = CASCADE_SCRIPT;
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    CASCADE_PASSES(false)
+}
+
+// The same, cross-faded over the last CascadeBlend share of each cascade's depth range.
+technique blended
+<
+    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
+                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
+                                    "17 %, the uniform map 42 %)";
+    string Script = CASCADE_SCRIPT;
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    CASCADE_PASSES(true)
+}
