@@ -33,6 +33,9 @@ METHODS = {
     "lispsm": ("effects/lispsm.fx", "bilinear", ()),
     "lispsm-middle": ("effects/lispsm.fx", "bilinear", ("MiddleVector=1",)),
     "lispsm-n4": ("effects/lispsm.fx", "bilinear", ("NScale=4",)),
+    "tsm": ("effects/tsm.fx", "bilinear", ()),
+    "psm": ("effects/psm.fx", "bilinear", ()),
+    "cascades": ("effects/cascades.fx", "blended", ()),
 }
 DEFAULT_METHODS = list(METHODS)
 

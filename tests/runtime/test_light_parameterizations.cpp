@@ -500,19 +500,19 @@ TEST(CascadedShadowMaps, ACameraMoveShiftsCascadesByWholeTexels) {
     EXPECT_GT(moved, 0) << "the camera moved 1 m: some cascade must have followed it";
 }
 
-// Spot lights cannot be focused: every cascade is the light's own (uniform) fit, still one per cascade so
-// that the effect's cascade passes run.
-TEST(CascadedShadowMaps, SpotLightsKeepTheUniformFitInEveryCascade) {
+// Spot lights are not split: every cascade is Focused's window of the spot (its perspective cropped to the
+// receivers), still one per cascade so that the effect's cascade passes run.
+TEST(CascadedShadowMaps, SpotLightsUseTheFocusedWindowInEveryCascade) {
     Scene scene = terrain(fromAngles(-10.0f, 0.0f), fromAngles(-45.0f, 30.0f));
     scene.lights[0].type = Light::Type::Spot;
     scene.lights[0].position = {0.0f, 60.0f, -120.0f};
-    const LightFit uniform =
-        fitLight(LightParameterization::Uniform, scene, scene.bounds(), kAspect, scene.lights[0]);
+    const LightFit focused =
+        fitLight(LightParameterization::Focused, scene, scene.bounds(), kAspect, scene.lights[0]);
     const LightFit fit =
         fitLight(LightParameterization::Cascaded, scene, scene.bounds(), kAspect, scene.lights[0]);
     ASSERT_EQ(fit.cascades.size(), 4u);
     for (const LightView& cascade : fit.cascades) {
-        EXPECT_EQ(cascade.view, uniform.view);
-        EXPECT_EQ(cascade.projection, uniform.projection);
+        EXPECT_EQ(cascade.view, focused.view);
+        EXPECT_EQ(cascade.projection, focused.projection);
     }
 }

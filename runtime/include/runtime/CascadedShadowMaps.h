@@ -43,7 +43,7 @@ glm::vec4 cascadeAtlasRect(int cascade, int count);
 // body's extent rounded up on a geometric ladder, whichever is smaller, and its centre is snapped to
 // 1/64 of the extent (whole texels of any tile of 64·k texels). The far end of the depth range,
 // min(camera far, the farthest scene bounds corner), is rounded up on a ladder too, so the splits stay put.
-// Spot and point lights (and degenerate ones) get the uniform fit in every cascade.
+// Spot and point lights (and degenerate ones) get view 0, Focused's fit, in every cascade.
 LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect, const Light& light,
                      const LightTunables& tunables);
 
