@@ -2,6 +2,7 @@
 #include <runtime/CascadedShadowMaps.h>
 
 #include "IntersectionBody.h"
+#include "LightSpaceMath.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -27,25 +28,6 @@ constexpr float kFarStepsPerOctave = 16.0f;
 float roundUpOnLadder(float value, float unit, float stepsPerOctave) {
     if (!(value > 0.0f) || !(unit > 0.0f)) return value;
     return unit * std::exp2(std::ceil(stepsPerOctave * std::log2(value / unit)) / stepsPerOctave);
-}
-
-// How far from `point` along `direction` the ray leaves the box (0 if it starts outside).
-float exitDistance(const glm::vec3& point, const glm::vec3& direction, const Bounds& box) {
-    float exit = std::numeric_limits<float>::max();
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::abs(direction[axis]) < 1e-12f) continue;
-        const float wall = direction[axis] > 0.0f ? box.max[axis] : box.min[axis];
-        exit = std::min(exit, (wall - point[axis]) / direction[axis]);
-    }
-    return exit == std::numeric_limits<float>::max() ? 0.0f : std::max(exit, 0.0f);
-}
-
-// The light's "up": fixed for a light direction, whatever the camera does (the cascades' light view must
-// not turn with the camera, or every texel would move).
-glm::vec3 stableUp(const glm::vec3& lightDir) {
-    const glm::vec3 axis =
-        std::abs(lightDir.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    return glm::normalize(axis - glm::dot(axis, lightDir) * lightDir);
 }
 
 // The far end of the split range: the camera's far plane, or the view depth of the farthest corner of the
@@ -144,7 +126,7 @@ LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect
     const glm::vec3 centre = sceneBounds.center();
     const float sceneRadius = std::max(sceneBounds.radius(), 1e-3f);
     const glm::mat4 lightView =
-        glm::lookAtLH(centre - lightDir * (2.0f * sceneRadius), centre, stableUp(lightDir));
+        glm::lookAtLH(centre - lightDir * (2.0f * sceneRadius), centre, fixedPerpendicular(lightDir));
     const glm::mat4 cameraView = camera.view();
     for (LightView& cascade : fit.cascades) {
         Camera slice = camera;

@@ -5,6 +5,7 @@
 #include <runtime/CascadedShadowMaps.h>
 
 #include "IntersectionBody.h"
+#include "LightSpaceMath.h"
 
 #include <runtime/TrapezoidalShadowMap.h>
 
@@ -24,25 +25,6 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
                return std::tolower(static_cast<unsigned char>(x)) ==
                       std::tolower(static_cast<unsigned char>(y));
            });
-}
-
-// How far from `point` along `direction` the ray leaves the box (0 if it starts outside).
-float exitDistance(const glm::vec3& point, const glm::vec3& direction, const Bounds& box) {
-    float exit = std::numeric_limits<float>::max();
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::abs(direction[axis]) < 1e-12f) continue;
-        const float wall = direction[axis] > 0.0f ? box.max[axis] : box.min[axis];
-        exit = std::min(exit, (wall - point[axis]) / direction[axis]);
-    }
-    return exit == std::numeric_limits<float>::max() ? 0.0f : std::max(exit, 0.0f);
-}
-
-// A unit vector perpendicular to `direction`, the same for every direction close to it: the fallback
-// "up" of a light view when the view direction gives none (light parallel to the view).
-glm::vec3 anyPerpendicular(const glm::vec3& direction) {
-    const glm::vec3 axis =
-        std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    return glm::normalize(axis - glm::dot(axis, direction) * direction);
 }
 
 // Widens [lo, hi] by a relative and an absolute margin, so points on the boundary stay inside after the
@@ -198,7 +180,7 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
                                   : glm::normalize(camera.target - camera.position);
     const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
     const float sinGamma = glm::length(across);
-    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : anyPerpendicular(lightDir);
+    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : fixedPerpendicular(lightDir);
     const glm::vec3 centre = sceneBounds.center();
     const float radius = std::max(sceneBounds.radius(), 1e-3f);
     LightFit fit;
@@ -244,17 +226,8 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
         widen(lo[axis], hi[axis], 1e-6f * radius);
     }
     // Unit-cube fit: x, y to [-1, 1], depth to [0, 1] (D3D clip conventions).
-    glm::mat4 unitCube(1.0f);
-    unitCube[0][0] = 2.0f / (hi.x - lo.x);
-    unitCube[1][1] = 2.0f / (hi.y - lo.y);
-    unitCube[2][2] = 1.0f / (hi.z - lo.z);
-    unitCube[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
-    unitCube[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
-    unitCube[3][2] = -lo.z / (hi.z - lo.z);
-    fit.projection = unitCube * warp;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(fit.projection[c][r]) || !std::isfinite(fit.view[c][r])) return uniform;
+    fit.projection = unitCubeFit(lo, hi) * warp;
+    if (!isFinite(fit.projection) || !isFinite(fit.view)) return uniform;
     return fit;
 }
 

@@ -4,6 +4,8 @@
 // centre line and touching the hull, the 80% rule, and N_T as a product of 8 matrices.
 #include <runtime/TrapezoidalShadowMap.h>
 
+#include "LightSpaceMath.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -13,14 +15,6 @@
 namespace runtime {
 
 namespace {
-
-// A unit vector perpendicular to `direction`, the same for every direction close to it: the light view's
-// "up" when the view direction gives none (the light parallel to the view), as in fitLight.
-glm::vec3 anyPerpendicular(const glm::vec3& direction) {
-    const glm::vec3 axis =
-        std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    return glm::normalize(axis - glm::dot(axis, direction) * direction);
-}
 
 float smoothstep01(float t) {
     t = std::clamp(t, 0.0f, 1.0f);
@@ -59,7 +53,7 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
     const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
     const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
     const float sinGamma = glm::length(across);
-    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : anyPerpendicular(lightDir);
+    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : fixedPerpendicular(lightDir);
     const glm::vec3 centre = sceneBounds.center();
     const float radius = std::max(sceneBounds.radius(), 1e-3f);
     TrapezoidalFit result;
@@ -160,17 +154,8 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
         lo[axis] -= margin;
         hi[axis] += margin;
     }
-    glm::mat4 unitCube(1.0f);
-    unitCube[0][0] = 2.0f / (hi.x - lo.x);
-    unitCube[1][1] = 2.0f / (hi.y - lo.y);
-    unitCube[2][2] = 1.0f / (hi.z - lo.z);
-    unitCube[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
-    unitCube[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
-    unitCube[3][2] = -lo.z / (hi.z - lo.z);
-    fit.projection = unitCube * trapezoid;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(fit.projection[c][r]) || !std::isfinite(fit.view[c][r])) return std::nullopt;
+    fit.projection = unitCubeFit(lo, hi) * trapezoid;
+    if (!isFinite(fit.projection) || !isFinite(fit.view)) return std::nullopt;
     return result;
 }
 

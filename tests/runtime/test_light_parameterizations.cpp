@@ -2,6 +2,8 @@
 // directions, degenerate ones included, every matrix is finite and every point of the focus body (B and
 // its extrusion toward the light) lies inside the light's clip volume; LiSPSM's n_opt matches seed 000
 // eq. 1 computed independently and fades into the focused fit as the light turns parallel to the view.
+#include "LightFitScenes.h"
+
 #include <runtime/CascadedShadowMaps.h>
 #include <runtime/LightParameterization.h>
 
@@ -18,37 +20,13 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = 4.0f / 3.0f;
+constexpr float kAspect = shadowfx::test::kLightFitAspect;
+using shadowfx::test::finite;
+using shadowfx::test::fromAngles;
+using shadowfx::test::terrain;
 constexpr LightParameterization kMethods[] = {
     LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
     LightParameterization::TSM,     LightParameterization::PSM,     LightParameterization::Cascaded};
-
-// A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (forest-like).
-Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
-    Scene scene;
-    scene.name = "terrain";
-    scene.explicitBounds = Bounds{{-100.0f, 0.0f, -100.0f}, {100.0f, 30.0f, 100.0f}};
-    scene.camera.position = {0.0f, 2.0f, -80.0f};
-    scene.camera.target = scene.camera.position + viewDirection;
-    scene.camera.nearPlane = 0.1f;
-    scene.camera.farPlane = 110.0f;
-    Light light;
-    light.direction = glm::normalize(lightDirection);
-    scene.lights.push_back(light);
-    return scene;
-}
-
-glm::vec3 fromAngles(float elevationDegrees, float azimuthDegrees) {
-    const float e = glm::radians(elevationDegrees), a = glm::radians(azimuthDegrees);
-    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
-}
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
 
 // The grid: camera directions (level, tilted down, straight down) x light directions (low, oblique,
 // straight down, straight up, parallel and antiparallel to the view).

@@ -4,6 +4,8 @@
 // the map and in front of their receivers (the inverse projection); clip x, y, w constant along every light
 // ray for a dense sweep of light directions; the warp-ratio cap and the slide-back tunable; and no jump in
 // the matrices where the fit crosses its thresholds (into the Focused fallback, and L'.w changing sign).
+#include "LightFitScenes.h"
+
 #include <runtime/PerspectiveShadowMap.h>
 
 #include <gtest/gtest.h>
@@ -20,34 +22,10 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = 4.0f / 3.0f;
-
-// The terrain of test_light_parameterizations.cpp: a 200 x 30 x 200 m box seen from 2 m above its ground.
-Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
-    Scene scene;
-    scene.name = "terrain";
-    scene.explicitBounds = Bounds{{-100.0f, 0.0f, -100.0f}, {100.0f, 30.0f, 100.0f}};
-    scene.camera.position = {0.0f, 2.0f, -80.0f};
-    scene.camera.target = scene.camera.position + viewDirection;
-    scene.camera.nearPlane = 0.1f;
-    scene.camera.farPlane = 110.0f;
-    Light light;
-    light.direction = glm::normalize(lightDirection);
-    scene.lights.push_back(light);
-    return scene;
-}
-
-glm::vec3 fromAngles(float elevationDegrees, float azimuthDegrees) {
-    const float e = glm::radians(elevationDegrees), a = glm::radians(azimuthDegrees);
-    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
-}
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
+constexpr float kAspect = shadowfx::test::kLightFitAspect;
+using shadowfx::test::finite;
+using shadowfx::test::fromAngles;
+using shadowfx::test::terrain;
 
 glm::dvec4 clipOf(const LightFit& fit, const glm::vec3& p) {
     return glm::dmat4(fit.projection) * glm::dmat4(fit.view) * glm::dvec4(glm::dvec3(p), 1.0);

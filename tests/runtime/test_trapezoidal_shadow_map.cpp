@@ -3,6 +3,8 @@
 // landing on the square's, the focus point P_L on the 80% line, and the fade into the focused fit as the
 // light turns parallel to the view. (The grid of test_light_parameterizations.cpp checks TSM's finite
 // matrices and the clip volume containing B for 4 x 17 camera and light directions.)
+#include "LightFitScenes.h"
+
 #include <runtime/TrapezoidalShadowMap.h>
 
 #include <gtest/gtest.h>
@@ -16,27 +18,10 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = 4.0f / 3.0f;
-
-// A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (as the grid test's).
-Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
-    Scene scene;
-    scene.name = "terrain";
-    scene.explicitBounds = Bounds{{-100.0f, 0.0f, -100.0f}, {100.0f, 30.0f, 100.0f}};
-    scene.camera.position = {0.0f, 2.0f, -80.0f};
-    scene.camera.target = scene.camera.position + viewDirection;
-    scene.camera.nearPlane = 0.1f;
-    scene.camera.farPlane = 110.0f;
-    Light light;
-    light.direction = glm::normalize(lightDirection);
-    scene.lights.push_back(light);
-    return scene;
-}
-
-glm::vec3 fromAngles(float elevationDegrees, float azimuthDegrees) {
-    const float e = glm::radians(elevationDegrees), a = glm::radians(azimuthDegrees);
-    return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
-}
+constexpr float kAspect = shadowfx::test::kLightFitAspect;
+using shadowfx::test::finite;
+using shadowfx::test::fromAngles;
+using shadowfx::test::terrain;
 
 glm::vec2 ndc(const LightFit& fit, const glm::vec3& world) {
     const glm::vec4 clip = fit.projection * fit.view * glm::vec4(world, 1.0f);
