@@ -74,7 +74,7 @@ technique main
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=MapDepthBuffer;"
                         "RenderPort=light0;"
-                        "ClearSetColor=FarDepth;"
+                        "ClearSetColor=NoOccluder;"
                         "Clear=Color;";
     >
     {

@@ -139,7 +139,7 @@ float4 DepthTargetPS(ReceiverVertexOutput IN) : COLOR
         string Script = "RenderColorTarget0=ShadowMap;" \
                         "RenderDepthStencilTarget=MapDepthBuffer;" \
                         "RenderPort=light0;" \
-                        "ClearSetColor=FarDepth;" \
+                        "ClearSetColor=NoOccluder;" \
                         "Clear=Color;"; \
     > \
     { \

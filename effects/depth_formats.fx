@@ -205,7 +205,7 @@ technique r32f
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=MapDepthBuffer;"
                         "RenderPort=light0;"
-                        "ClearSetColor=FarDepth;"
+                        "ClearSetColor=NoOccluder;"
                         "Clear=Color;";
     >
     {

@@ -125,7 +125,7 @@ technique single_pass
         string Script = "RenderColorTarget0=FrontBackDepth;"
                         "RenderDepthStencilTarget=MapDepthBuffer;"
                         "RenderPort=light0;"
-                        "ClearSetColor=FarDepth;"
+                        "ClearSetColor=NoOccluder;"
                         "Clear=Color;";
     >
     {

@@ -134,7 +134,7 @@ float4 LayeredShadowPS(ReceiverVertexOutput IN) : COLOR
     < \
         string Script = "RenderDepthStencilTarget=MapDepthBuffer;" \
                         "RenderPort=light0;" \
-                        "ClearSetColor=FarDepth;" \
+                        "ClearSetColor=NoOccluder;" \
                         "RenderColorTarget0=FirstLayer;" \
                         "Clear=Color;" \
                         "RenderColorTarget0=SecondLayer;" \
