@@ -119,10 +119,13 @@ struct CaseTruth {
     std::vector<std::string> problems;  // of the runtime's own matrices, whatever the effect
     size_t lightVolumeReceivers = 0;
     size_t outsideLightVolume = 0;
-    double maxFootprint = 0.0;
+    double maxFootprint = 0.0;  // of the runtime's uniform map
     double p95Footprint = 0.0;
     // World positions of the first frame's receiver pixels: each effect's own light fit must cover them.
     std::vector<glm::vec3> receiverPositions;
+    // The first frame's G-buffer and receivers, for the texel footprint of each effect's own fit.
+    std::optional<runtime::GBuffer> gbuffer;
+    std::vector<uint8_t> footprintReceivers;
 };
 
 // Is `world` inside the clip volume of `viewProjection` (up to kClipTolerance)?
@@ -198,6 +201,8 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
             runtime::perspectiveAliasing(*own, receivers, lightView, lightProjection, mapSize);
         truth.maxFootprint = aliasing.maxFootprint;
         truth.p95Footprint = aliasing.p95Footprint;
+        truth.gbuffer = std::move(own);
+        truth.footprintReceivers = receivers;
     }
     return truth;
 }
@@ -217,6 +222,7 @@ struct Outcome {
     std::optional<double> ordinary;                 // the nearest ordinary case's, same effect and technique
     std::optional<double> uniform;                  // the uniform shadow map's, same case
     std::optional<double> shimmerMean, shimmerMax;  // percent, temporal cases
+    std::optional<double> maxFootprint, p95Footprint;  // texels of the effect's own fit (first frame)
     size_t receivers = 0;
     runtime::FrameImage errorImage;  // the last frame's (ShadowMetrics.h errorImage), written on failure
 
@@ -258,7 +264,7 @@ std::optional<std::string> nonFiniteParameter(const runtime::EffectRenderer& ren
 }
 
 Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const std::string& technique,
-                const CaseTruth& truth, int width, int height, StressSink& sink) {
+                const CaseTruth& truth, int width, int height, int mapSize, StressSink& sink) {
     Outcome outcome;
     outcome.caseName = truth.stressCase.name;
     outcome.technique = technique;
@@ -291,6 +297,18 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
                 if (outside > 0)
                     outcome.fail(std::to_string(outside) +
                                  " receiver pixels outside the clip volume of the effect's light fit");
+                if (truth.gbuffer) {
+                    const runtime::AliasingMeasure aliasing =
+                        fit->cascades.empty()
+                            ? runtime::perspectiveAliasing(*truth.gbuffer, truth.footprintReceivers,
+                                                           fit->view, fit->projection, mapSize)
+                            : runtime::cascadedAliasing(*truth.gbuffer, truth.footprintReceivers,
+                                                        frame.scene.camera.view(), fit->cascades, mapSize);
+                    if (aliasing.pixels > 0) {
+                        outcome.maxFootprint = aliasing.maxFootprint;
+                        outcome.p95Footprint = aliasing.p95Footprint;
+                    }
+                }
             }
         }
         if (std::optional<std::string> name = nonFiniteParameter(renderer)) {
@@ -429,7 +447,7 @@ void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
             current = heading;
             if (markdown) {
                 out << "\n### " << heading << "\n\n| case | result | misclassified | ordinary | uniform | "
-                    << "max footprint | shimmer | why |\n|---|---|---|---|---|---|---|---|\n";
+                    << "p95 footprint | shimmer | why |\n|---|---|---|---|---|---|---|---|\n";
             } else {
                 out << "\n"
                     << heading << "\n  " << std::left << std::setw(24) << "case" << std::setw(7) << "result"
@@ -438,9 +456,10 @@ void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
                     << "why\n";
             }
         }
+        // The texel footprint of the effect's own fit where it has one, else of the runtime's uniform map.
         const CaseTruth& truth = truths.at(o.caseName);
         std::ostringstream footprint;
-        footprint << std::fixed << std::setprecision(1) << truth.maxFootprint;
+        footprint << std::fixed << std::setprecision(1) << o.p95Footprint.value_or(truth.p95Footprint);
         std::string why;
         for (const std::string& reason : o.reasons) why += (why.empty() ? "" : "; ") + reason;
         if (o.misclassified == std::nullopt && o.pass && o.receivers == 0) why = "no receiver pixels";
@@ -579,7 +598,7 @@ int stressCommand(const Arguments& args) {
         }
         for (const std::string& name : ordered) {
             Outcome o = runCase(*renderer, uniform->exposesVisibility, uniformTechnique, truths.at(name),
-                                width, height, sink);
+                                width, height, mapSize, sink);
             if (o.misclassified) uniformError[name] = *o.misclassified;
         }
     }
@@ -611,8 +630,8 @@ int stressCommand(const Arguments& args) {
             for (const std::string& name : ordered) {
                 std::cerr << "stress: " << effectName << " " << technique.name << " " << name << "\n";
                 const CaseTruth& truth = truths.at(name);
-                Outcome o =
-                    runCase(*renderer, effect->exposesVisibility, technique.name, truth, width, height, sink);
+                Outcome o = runCase(*renderer, effect->exposesVisibility, technique.name, truth, width,
+                                    height, mapSize, sink);
                 o.effect = effectName;
                 if (o.misclassified) measured[name] = *o.misclassified;
                 if (auto it = measured.find(truth.stressCase.ordinary); it != measured.end())
@@ -676,6 +695,8 @@ int stressCommand(const Arguments& args) {
                                {"uniform_percent", optionalJson(o.uniform)},
                                {"shimmer_mean_percent", optionalJson(o.shimmerMean)},
                                {"shimmer_max_percent", optionalJson(o.shimmerMax)},
+                               {"max_footprint", optionalJson(o.maxFootprint)},
+                               {"p95_footprint", optionalJson(o.p95Footprint)},
                                {"receiver_pixels", o.receivers}});
     const Json document{{"renderer", context->renderer()},
                         {"width", width},

@@ -70,6 +70,24 @@ TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {
     EXPECT_NE(result.output.find("xfail"), std::string::npos) << result.output;
 }
 
+// Each run reports the texel footprint of the effect's own light fit: with the light behind the viewer,
+// LiSPSM's p95 footprint is a fraction of the runtime's uniform map's (the case's own footprint).
+TEST(StressCommand, ReportsTheFootprintOfTheEffectsOwnFit) {
+    const std::filesystem::path out = freshDirectory("shadowfx_stress_footprint");
+    const RunResult result =
+        run("stress effects/lispsm.fx --cases light-behind-viewer --out " + out.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json json = readJson(out / "stress.json");
+    const nlohmann::json* lispsm = find(json["results"], "bilinear", "light-behind-viewer");
+    ASSERT_NE(lispsm, nullptr);
+    ASSERT_TRUE((*lispsm)["p95_footprint"].is_number()) << lispsm->dump();
+    double uniform = 0.0;
+    for (const nlohmann::json& c : json["cases"])
+        if (c["name"] == "light-behind-viewer") uniform = c["p95_footprint"].get<double>();
+    EXPECT_GT(uniform, 10.0);
+    EXPECT_LT((*lispsm)["p95_footprint"].get<double>(), 0.5 * uniform);
+}
+
 TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
     // The thesis effect without its StressExpectedFailures annotations.
     const std::filesystem::path dir = freshDirectory("shadowfx_stress_undeclared");
