@@ -28,7 +28,7 @@ ShadowErrors compareVisibility(const std::vector<float>& truth, const std::vecto
     ShadowErrors errors;
     std::vector<float> absolute;
     const size_t n = std::min({truth.size(), effect.size(), receivers.size()});
-    double sum = 0.0;
+    double sum = 0.0, penumbraSum = 0.0;
     for (size_t i = 0; i < n; ++i) {
         if (!receivers[i] || truth[i] < 0.0f) continue;
         ++errors.receiverPixels;
@@ -39,7 +39,13 @@ ShadowErrors compareVisibility(const std::vector<float>& truth, const std::vecto
         const float e = std::abs(std::clamp(effect[i], 0.0f, 1.0f) - truth[i]);
         sum += e;
         absolute.push_back(e);
+        if (truth[i] > kPenumbra && truth[i] < 1.0f - kPenumbra) {
+            ++errors.penumbraPixels;
+            penumbraSum += e;
+        }
     }
+    if (errors.penumbraPixels > 0)
+        errors.penumbraMeanAbsoluteError = penumbraSum / static_cast<double>(errors.penumbraPixels);
     if (errors.receiverPixels == 0) return errors;
     const double total = static_cast<double>(errors.receiverPixels);
     errors.falseShadowPercent = 100.0 * static_cast<double>(errors.falseShadowPixels) / total;

@@ -273,10 +273,10 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     }
     md << "## Runs\n\n";
     md << "| scene | effect | technique | map | misclassified % | false shadow % | false light % | MAE | p95 "
-          "| "
+          "| penumbra MAE | "
           "frame ms (median [min–max]) | GPU ms | runtime CPU ms | texel footprint max / p95 / mean | errors "
           "|\n";
-    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
+    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
     for (const Json& run : results["runs"]) {
         const Json& frame = run["frame_time_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
@@ -287,9 +287,12 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
                << fixed(e["false_shadow_percent"].get<double>(), 3) << " | "
                << fixed(e["false_light_percent"].get<double>(), 3) << " | "
                << fixed(e["mae"].get<double>(), 4) << " | " << fixed(e["p95_abs_error"].get<double>(), 3)
+               << " | "
+               << (e["penumbra_mae"].is_number() ? fixed(e["penumbra_mae"].get<double>(), 4)
+                                                 : std::string("–"))
                << " | ";
         } else {
-            md << "n/a | n/a | n/a | n/a | n/a | ";
+            md << "n/a | n/a | n/a | n/a | n/a | n/a | ";
         }
         md << fixed(frame["median"].get<double>(), 2) << " [" << fixed(frame["min"].get<double>(), 2) << "–"
            << fixed(frame["max"].get<double>(), 2) << "] | "
@@ -722,14 +725,19 @@ int benchCommand(const Arguments& args) {
                             }
                             const std::vector<float>& effectVisibility = score->visibility;
                             const runtime::ShadowErrors& errors = score->errors;
-                            record["error"] = Json{{"receiver_pixels", errors.receiverPixels},
-                                                   {"false_shadow_pixels", errors.falseShadowPixels},
-                                                   {"false_light_pixels", errors.falseLightPixels},
-                                                   {"false_shadow_percent", errors.falseShadowPercent},
-                                                   {"false_light_percent", errors.falseLightPercent},
-                                                   {"misclassified_percent", errors.misclassifiedPercent},
-                                                   {"mae", errors.meanAbsoluteError},
-                                                   {"p95_abs_error", errors.p95AbsoluteError}};
+                            record["error"] =
+                                Json{{"receiver_pixels", errors.receiverPixels},
+                                     {"false_shadow_pixels", errors.falseShadowPixels},
+                                     {"false_light_pixels", errors.falseLightPixels},
+                                     {"false_shadow_percent", errors.falseShadowPercent},
+                                     {"false_light_percent", errors.falseLightPercent},
+                                     {"misclassified_percent", errors.misclassifiedPercent},
+                                     {"mae", errors.meanAbsoluteError},
+                                     {"p95_abs_error", errors.p95AbsoluteError},
+                                     {"penumbra_pixels", errors.penumbraPixels},
+                                     {"penumbra_mae", errors.penumbraPixels > 0
+                                                          ? Json(errors.penumbraMeanAbsoluteError)
+                                                          : Json(nullptr)}};
                             const std::string image = "errors/" +
                                                       safeName(effectName + "_" + technique.name + "_" +
                                                                t.scene.name + "_" + std::to_string(mapSize)) +

@@ -42,6 +42,24 @@ TEST(ShadowMetrics, SoftErrorsGiveMeanAndPercentile) {
     EXPECT_EQ(e.falseShadowPixels, 0u);                   // 0.5 counts as lit on both sides
 }
 
+// The penumbra MAE averages over the pixels whose truth is partly lit only: 10 penumbra pixels off by 0.3
+// among 90 exact umbra and lit ones give 0.3 there, 0.03 over all receivers.
+TEST(ShadowMetrics, PenumbraErrorCountsOnlyPartlyLitTruth) {
+    std::vector<float> truth(100), effect(100);
+    std::vector<uint8_t> receivers(100, 1);
+    for (size_t k = 0; k < 100; ++k) {
+        truth[k] = k < 45 ? 0.0f : (k < 90 ? 1.0f : 0.4f);
+        effect[k] = k < 90 ? truth[k] : 0.7f;
+    }
+    const runtime::ShadowErrors e = runtime::compareVisibility(truth, effect, receivers);
+    EXPECT_EQ(e.penumbraPixels, 10u);
+    EXPECT_NEAR(e.penumbraMeanAbsoluteError, 0.3, 1e-6);
+    EXPECT_NEAR(e.meanAbsoluteError, 0.03, 1e-6);
+    // Truth within 1% of lit or shadowed is not penumbra.
+    std::fill(truth.begin() + 90, truth.end(), 0.995f);
+    EXPECT_EQ(runtime::compareVisibility(truth, effect, receivers).penumbraPixels, 0u);
+}
+
 TEST(ShadowMetrics, ErrorImagePaintsFalseShadowRedFalseLightBlueOverGrey) {
     runtime::FrameImage frame;
     frame.width = 3;

@@ -33,7 +33,16 @@ struct ShadowErrors {
     // hard shadows these say how much of the error is filtering rather than classification.
     double meanAbsoluteError = 0.0;
     double p95AbsoluteError = 0.0;
+    // The same mean over the penumbra only: receiver pixels whose truth is partly lit (kPenumbra). Where
+    // most receivers are fully lit or in umbra, the mean over all of them hides how well a soft-shadow
+    // method draws the penumbra itself. 0 pixels (hard truth): 0.
+    size_t penumbraPixels = 0;
+    double penumbraMeanAbsoluteError = 0.0;
 };
+
+// A truth visibility in (kPenumbra, 1 - kPenumbra) is penumbra: more than 1% of the light's area both
+// visible and hidden (1% is 2.5 samples of the ground truth's default 256).
+constexpr float kPenumbra = 0.01f;
 
 // Classification threshold: visibility < 0.5 is "shadowed", for truth (area lights: less than half the
 // light visible) and effect alike. `effect` holds one visibility in [0, 1] per pixel.
