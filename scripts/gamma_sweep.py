@@ -13,7 +13,7 @@ settings share one run per γ, so their frame times are measured back to back. W
 
 usage: scripts/gamma_sweep.py [--scene forest] [--gammas 0,15,30,45,60,75,90] [--methods a,b,...]
                               [--frames 3] [--warmup 1] [--width 320] [--height 240] [--out out/gamma]
-                              [--shadowfx build/samples/shadowfx/shadowfx]
+                              [--camera-orbit 0] [--shadowfx build/samples/shadowfx/shadowfx]
 Run from the repository root after building.
 """
 import argparse
@@ -47,7 +47,7 @@ def run_group(args, gamma, settings, methods, out):
     command = [args.shadowfx, "bench", "--effects", ",".join(effects), "--techniques", ",".join(techniques),
                "--scenes", args.scene, "--width", str(args.width), "--height", str(args.height),
                "--frames", str(args.frames), "--warmup", str(args.warmup),
-               "--light-angle-to-view", str(gamma), "--out", out]
+               "--light-angle-to-view", str(gamma), "--camera-orbit", str(args.camera_orbit), "--out", out]
     for setting in settings:
         command += ["--set", setting]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL,
@@ -80,7 +80,9 @@ def write_report(args, methods, gammas, records, path):
     lines = ["# γ sweep: light-space parameterizations", "",
              f"Scene `{args.scene}`, {args.width}x{args.height}, 1024² texels per method, hard ray-cast truth; "
              f"frame times are medians of {args.frames} frames after {args.warmup} warm-up "
-             "(llvmpipe: compare them within one γ, not across γ).", "",
+             "(llvmpipe: compare them within one γ, not across γ); "
+             + (f"the camera orbits {args.camera_orbit}° a frame, so view-dependent maps are redrawn every frame."
+                if args.camera_orbit else "a still camera: every map is reused after the first frame."), "",
              "## Misclassified % (false shadow + false light over receiver pixels)", "",
              "| γ | " + " | ".join(methods) + " |", "|---:|" + "---:|" * len(methods)]
     for g in gammas:
@@ -144,6 +146,9 @@ def main():
     parser.add_argument("--width", type=int, default=320)
     parser.add_argument("--height", type=int, default=240)
     parser.add_argument("--out", default="out/gamma")
+    parser.add_argument("--camera-orbit", type=float, default=0.0,
+                        help="degrees the camera turns per frame (bench --camera-orbit): frame times then "
+                             "include redrawing every view-dependent map, as in a walk-through")
     parser.add_argument("--shadowfx", default="build/samples/shadowfx/shadowfx", help="the tool to run")
     args = parser.parse_args()
     gammas = [int(g) for g in args.gammas.split(",")]

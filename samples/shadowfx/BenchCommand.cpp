@@ -22,6 +22,7 @@
 #include <runtime/Scene.h>
 #include <runtime/ShadowMetrics.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -55,6 +56,10 @@ const char* const kBenchUsage =
     "                        direction, in the vertical plane of the view: 0 = along the view (light behind\n"
     "                        the viewer), 90 = straight down for a level camera (the gamma sweep of README,\n"
     "                        \"Light-space parameterizations\")\n"
+    "  --camera-orbit DEG    turn the camera DEG degrees about its target (around the vertical) before each\n"
+    "                        warm-up and timed frame, so that view-dependent shadow maps are redrawn every\n"
+    "                        frame as in a walk-through (default 0: a still camera, whose maps leave-out\n"
+    "                        reuses); errors are scored at the scene's own camera\n"
     "  --leave-out LIST      on, off or on,off: leave-out (culling, dead and cached passes) as a run\n"
     "                        dimension; on,off times both in one run (default on)\n"
     "  --no-leave-out        the same as --leave-out off\n"
@@ -261,7 +266,14 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     md << "GL renderer: `" << results["gl_renderer"].get<std::string>() << "`  \n";
     md << "Frames: " << results["config"]["warmup"].get<int>() << " warm-up, then "
        << results["config"]["frames"].get<int>() << " timed; frame " << results["config"]["width"].get<int>()
-       << "x" << results["config"]["height"].get<int>() << ".  \n";
+       << "x" << results["config"]["height"].get<int>() << "."
+       << (results["config"]["camera_orbit_degrees_per_frame"].get<double>() != 0.0
+               ? " The camera orbits " +
+                     fixed(results["config"]["camera_orbit_degrees_per_frame"].get<double>(), 2) +
+                     " degrees a frame (view-dependent maps redrawn every frame); errors at the scene's "
+                     "camera."
+               : std::string())
+       << "  \n";
     md << "Errors are over receiver pixels (covered, N·L > 0) against the Embree ray-cast ground truth; "
           "misclassified = false shadow + false light. Texel footprint: screen pixels covered by one "
           "shadow-map "
@@ -451,6 +463,17 @@ int benchCommand(const Arguments& args) {
         lightAngle = value;
     }
 
+    float cameraOrbit = 0.0f;  // degrees per frame
+    if (const std::string text = args.value("--camera-orbit"); !text.empty()) {
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (*end != '\0' || !(std::abs(value) <= 180.0f)) {
+            std::cerr << "shadowfx bench: --camera-orbit: '" << text << "' is not an angle in [-180, 180]\n";
+            return 2;
+        }
+        cameraOrbit = value;
+    }
+
     const std::filesystem::path outDir = args.value("--out");
     std::error_code fsError;
     std::filesystem::create_directories(outDir / "errors", fsError);
@@ -616,11 +639,22 @@ int benchCommand(const Arguments& args) {
                         std::vector<std::vector<double>> passGpu, passCpu;
                         std::vector<std::string> passNames;
                         std::vector<int> passDraws;
+                        // One scene edited in place (the renderer's caches see only the camera move).
+                        runtime::Scene moving = t.scene;
+                        const auto orbitTo = [&](int step) {
+                            const glm::vec3 offset = t.scene.camera.position - t.scene.camera.target;
+                            const glm::mat4 turn =
+                                glm::rotate(glm::mat4(1.0f), glm::radians(cameraOrbit * step),
+                                            glm::vec3(0.0f, 1.0f, 0.0f));
+                            moving.camera.position =
+                                t.scene.camera.target + glm::vec3(turn * glm::vec4(offset, 0.0f));
+                        };
                         for (int frame = 0; frame < warmup + frames; ++frame) {
                             runtime::FrameStats stats;
+                            if (cameraOrbit != 0.0f) orbitTo(frame + 1);
                             const auto start = Clock::now();
                             // With timePasses, render() returns once the GPU has finished the frame.
-                            if (!timed->render(t.scene, options, sink, &stats) || sink.errors() > 0) {
+                            if (!timed->render(moving, options, sink, &stats) || sink.errors() > 0) {
                                 progress.end();
                                 return 1;
                             }
@@ -651,19 +685,29 @@ int benchCommand(const Arguments& args) {
                             overhead.push_back(
                                 ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
                         }
-                        const runtime::FrameImage shaded = timed->readFrame();
                         // One more frame, untimed, counts what a frame like the timed ones writes (occlusion
-                        // queries would perturb the timing).
+                        // queries would perturb the timing): one more orbit step when the camera moves.
                         runtime::FrameStats counted;
                         {
                             runtime::FrameOptions countOptions = options;
                             countOptions.timePasses = false;
                             countOptions.countTexels = true;
-                            if (!timed->render(t.scene, countOptions, sink, &counted) || sink.errors() > 0) {
+                            if (cameraOrbit != 0.0f) orbitTo(warmup + frames + 1);
+                            if (!timed->render(moving, countOptions, sink, &counted) || sink.errors() > 0) {
                                 progress.end();
                                 return 1;
                             }
                         }
+                        // The shaded frame the error image is drawn over: at the scene's own camera.
+                        if (cameraOrbit != 0.0f) {
+                            runtime::FrameOptions stillOptions = options;
+                            stillOptions.timePasses = false;
+                            if (!timed->render(t.scene, stillOptions, sink) || sink.errors() > 0) {
+                                progress.end();
+                                return 1;
+                            }
+                        }
+                        const runtime::FrameImage shaded = timed->readFrame();
 
                         Json record{{"effect", effect},
                                     {"effect_name", effectName},
@@ -679,6 +723,7 @@ int benchCommand(const Arguments& args) {
                                     {"frame_time_ms", toJson(spreadOf(frameMs))},
                                     {"gpu_time_ms", toJson(spreadOf(gpuMs))},
                                     {"leave_out", leaveOut},
+                                    {"camera_orbit_degrees_per_frame", cameraOrbit},
                                     {"first_frame_ms", firstFrameMs},
                                     {"work", Json{{"passes_run", counted.passesRun},
                                                   {"passes_left_out", counted.passesLeftOut},
@@ -781,6 +826,7 @@ int benchCommand(const Arguments& args) {
                                  {"area_samples", truthOptions.areaSamples},
                                  {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
                                  {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
+                                 {"camera_orbit_degrees_per_frame", cameraOrbit},
                                  {"leave_out", leaveOutModes}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};

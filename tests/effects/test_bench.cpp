@@ -170,6 +170,33 @@ TEST(Bench, LightAngleAndTheEffectsOwnFitForTheFootprint) {
     EXPECT_NE(output.find("--light-angle-to-view"), std::string::npos) << output;
 }
 
+// --camera-orbit turns the camera before every frame: a view-dependent map (LiSPSM's) is redrawn each frame
+// instead of reused, while the errors are still scored at the scene's own camera (the same as still).
+TEST(Bench, CameraOrbitRedrawsViewDependentMaps) {
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_orbit";
+    auto runWith = [&](const std::string& orbit) {
+        std::filesystem::remove_all(out);
+        std::string output;
+        EXPECT_EQ(runTool("bench --effects effects/lispsm.fx --scenes boxes --frames 2 --warmup 1 --width 96 "
+                          "--height 72 --camera-orbit " +
+                              orbit + " --out " + out.string(),
+                          output),
+                  0)
+            << output;
+        return readJson(out / "results.json");
+    };
+    const Json still = runWith("0");
+    const Json orbiting = runWith("2");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(orbiting, schema, schema, "$"));
+    EXPECT_EQ(orbiting["config"]["camera_orbit_degrees_per_frame"].get<double>(), 2.0);
+    const Json& a = still["runs"][0];
+    const Json& b = orbiting["runs"][0];
+    EXPECT_GE(a["work"]["passes_left_out"].get<int>(), 1) << "a still camera reuses the map";
+    EXPECT_EQ(b["work"]["passes_left_out"].get<int>(), 0) << "an orbiting one redraws it";
+    EXPECT_EQ(a["error"]["misclassified_percent"], b["error"]["misclassified_percent"]);
+}
+
 TEST(PassTimings, TimedFramesReportEveryPassWithItsDraws) {
     std::unique_ptr<runtime::EffectRenderer> renderer =
         loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
