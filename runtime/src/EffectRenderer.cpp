@@ -476,10 +476,11 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
     const LightFit fit = binder.lightFit(*found);
     if (cascade >= static_cast<int>(fit.cascades.size())) {
         if (error)
-            *error =
-                "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
-                (fit.cascades.empty() ? std::string("no cascades (its Parameterization is not \"Cascaded\")")
-                                      : std::to_string(fit.cascades.size()) + " (CascadeCount)");
+            *error = "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
+                     (fit.cascades.empty()
+                          ? std::string("no cascades (its Parameterization is not \"Cascaded\" or "
+                                        "\"PSMCube\")")
+                          : std::to_string(fit.cascades.size()) + " (CascadeCount)");
         return false;
     }
     port.view = cascade >= 0 ? fit.cascades[static_cast<size_t>(cascade)].view : fit.view;
@@ -641,7 +642,17 @@ public:
         op.signature = h;
         op.sceneSaysSkip = mSceneSaysSkip;
         if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
-            if (mPort.cascade >= 0) {
+            const LightFit portFit =
+                mPort.cascade >= 0 ? mBinder.lightFit(mScene.lights[static_cast<size_t>(mPort.lightIndex)])
+                                   : LightFit{};
+            if (portFit.cubeFaces) {
+                // A PSMCube face serves the receivers of B within its pyramid (its window is fitted to
+                // them); a face that none uses is left out.
+                op.sceneSaysSkip =
+                    op.sceneSaysSkip || !portFit.cascades[static_cast<size_t>(mPort.cascade)].serves;
+                op.region =
+                    receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+            } else if (mPort.cascade >= 0) {
                 // A cascade serves the receivers of its own depth slice only: its casters are culled to that
                 // slice, and a slice beyond the farthest receiver has nothing to serve.
                 const InstanceBvh& bvh = mImpl.sceneCache.bvh;

@@ -129,6 +129,7 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"CASCADEVIEWPROJECTION", Kind::CascadeViewProjection},
         {"CASCADEATLASRECTS", Kind::CascadeAtlasRects},
         {"CASCADESPLITDEPTHS", Kind::CascadeSplitDepths},
+        {"CUBEFACESELECT", Kind::CubeFaceSelect},
     };
     for (const auto& [text, otherKind] : kOthers) {
         if (name == text) {
@@ -176,7 +177,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             diagnostics.report(
                 fx::DiagId::InvalidAnnotation, annotation->loc,
                 {"Parameterization",
-                 "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\" or \"Cascaded\""});
+                 "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", \"PSMCube\" or \"Cascaded\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);
@@ -203,7 +204,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         const std::string lightName = annotatedLight(parameter);
         const bool isCascadeProperty = binding.kind == Kind::CascadeViewProjection ||
                                        binding.kind == Kind::CascadeAtlasRects ||
-                                       binding.kind == Kind::CascadeSplitDepths;
+                                       binding.kind == Kind::CascadeSplitDepths ||
+                                       binding.kind == Kind::CubeFaceSelect;
         const bool isLightProperty =
             binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
             binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius || isCascadeProperty;
@@ -225,6 +227,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             binding.lightView = fit.view;
             binding.lightProjection = fit.projection;
             binding.lightCascades = fit.cascades;
+            binding.lightFaceSelect = fit.faceSelect;
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -342,6 +345,9 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 break;
             case Kind::View:
                 matrix = view;
+                break;
+            case Kind::CubeFaceSelect:
+                matrix = binding.lightFaceSelect;
                 break;
             case Kind::Projection:
                 matrix = projection;

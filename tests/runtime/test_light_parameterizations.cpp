@@ -19,9 +19,10 @@ using namespace runtime;
 namespace {
 
 constexpr float kAspect = 4.0f / 3.0f;
-constexpr LightParameterization kMethods[] = {
-    LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
-    LightParameterization::TSM,     LightParameterization::PSM,     LightParameterization::Cascaded};
+constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
+                                              LightParameterization::LiSPSM,  LightParameterization::TSM,
+                                              LightParameterization::PSM,     LightParameterization::PSMCube,
+                                              LightParameterization::Cascaded};
 
 // A 200 x 30 x 200 m terrain-like box seen from 2 m above its ground near one edge (forest-like).
 Scene terrain(const glm::vec3& viewDirection, const glm::vec3& lightDirection) {
@@ -92,6 +93,7 @@ TEST(LightParameterizations, NamesParseCaseInsensitively) {
     EXPECT_EQ(parseLightParameterization("UNIFORM"), LightParameterization::Uniform);
     EXPECT_EQ(parseLightParameterization("tsm"), LightParameterization::TSM);
     EXPECT_EQ(parseLightParameterization("psm"), LightParameterization::PSM);
+    EXPECT_EQ(parseLightParameterization("PSMcube"), LightParameterization::PSMCube);
     EXPECT_EQ(parseLightParameterization("cascaded"), LightParameterization::Cascaded);
     EXPECT_FALSE(parseLightParameterization("Trapezoidal").has_value());
 }
