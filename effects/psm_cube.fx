@@ -5,10 +5,10 @@
 // fade into focused.fx's (README, "Light-space parameterizations").
 //
 // The runtime's `PSMCube` provider (runtime/PerspectiveShadowCubeMap.h) fits the faces, each to the
-// receivers within it; each depth pass renders through RenderPort=light0.faceK into tile K of one atlas of
-// 1024² texels, the same texels as psm.fx's single map: a 3 x 2 grid of 341 x 512 tiles (six square tiles
-// of 1024² texels in all would need a non-square atlas, and `shadowfx bench` sizes maps as N x N). A face
-// no receiver uses is left out. The scene pass picks a receiver's face by the dominant axis of its cube
+// receivers within it; each depth pass renders through RenderPort=light0.faceK into face K's tile of one
+// 1024² atlas, the same texels as psm.fx's single map. The faces in use share it (one face: the whole atlas,
+// two or three: a column each, four: 2 x 2, five or six: 3 x 2 tiles, e.g. 341 x 512 texels); a face no
+// receiver uses has no tile and its pass is left out. The scene pass picks a receiver's face by the dominant axis of its cube
 // coordinates (CubeFaceSelect: its post-perspective position minus L', in the cube's frame) and reads that
 // face's tile (CascadeViewProjection, CascadeAtlasRects). ShowFaces tints the image by face.
 #define LIGHT_PARAMETERIZATION "PSMCube"

@@ -497,9 +497,11 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
 // (runtime/CascadedShadowMaps.h): x, y, w, h in texels.
 glm::ivec4 portTile(const SemanticBinder& binder, const Scene& scene, const RenderPortView& port, int width,
                     int height) {
-    const size_t cascades =
-        binder.lightFit(scene.lights[static_cast<size_t>(port.lightIndex)]).cascades.size();
-    return cascadeViewport(port.cascade, static_cast<int>(cascades), width, height);
+    const LightFit fit = binder.lightFit(scene.lights[static_cast<size_t>(port.lightIndex)]);
+    const LightView& view = fit.cascades[static_cast<size_t>(port.cascade)];
+    // A PSMCube face's own tile (the used faces share the atlas), else the cascades' fixed grid.
+    if (view.atlasRect.z > 0.0f) return atlasViewport(view.atlasRect, width, height);
+    return cascadeViewport(port.cascade, static_cast<int>(fit.cascades.size()), width, height);
 }
 
 std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {

@@ -14,11 +14,12 @@ namespace runtime {
 
 namespace {
 
-// A face's matrices that no draw survives: every vertex at clip (0, 0, 0, -1), outside -w <= x <= w.
+// A face's matrices that no draw survives: every vertex at clip (2, 0, 0, 1), outside x <= w.
 LightView unusedFace() {
     LightView face;
     face.projection = glm::mat4(0.0f);
-    face.projection[3][3] = -1.0f;
+    face.projection[3][0] = 2.0f;
+    face.projection[3][3] = 1.0f;
     face.serves = false;
     return face;
 }
@@ -97,7 +98,8 @@ LightFit fitPerspectiveShadowCubeMap(const Scene& scene, const Bounds& sceneBoun
         // Every point selects face 4 (W = (0, 0, 1)), which holds the fallback fit.
         fit.faceSelect = glm::mat4(0.0f);
         fit.faceSelect[3][2] = 1.0f;
-        fit.cascades[4] = LightView{fallback.view, fallback.projection, 0.0f, 0.0f, true};
+        fit.cascades[4] =
+            LightView{fallback.view, fallback.projection, 0.0f, 0.0f, true, glm::vec4(0, 0, 1, 1)};
         if (details) {
             *details = CubeMapDetails{};
             details->used[4] = true;
@@ -176,9 +178,11 @@ LightFit fitPerspectiveShadowCubeMap(const Scene& scene, const Bounds& sceneBoun
         }
         if (!(wMax > 0.0)) continue;
         wMin = std::max(wMin, 1e-4 * wMax);  // Kozlov's near plane z_1
-        // Widened so that rounding keeps boundary receivers inside; a receiver polygon that only touches the
-        // face keeps a minimum window.
-        const glm::dvec2 margin = glm::max(1e-3 * (hi - lo), glm::dvec2(1e-6));
+        // Widened so that rounding keeps boundary receivers inside. Relative only: as λ -> 0 the receivers'
+        // images in the front face shrink with k (to ~1e-9 at λ = 0) and the rows are rescaled to them. A
+        // receiver polygon that only touches the face (no extent) keeps a window of 1e-6 of its position.
+        const glm::dvec2 margin =
+            glm::max(1e-3 * (hi - lo), 1e-6 * glm::max(glm::abs(lo), glm::abs(hi)) + 1e-300);
         lo -= margin;
         hi += margin;
         const glm::dvec2 centre = 0.5 * (lo + hi), scale = 2.0 / (hi - lo);
@@ -202,6 +206,17 @@ LightFit fitPerspectiveShadowCubeMap(const Scene& scene, const Bounds& sceneBoun
         ++found.facesUsed;
     }
     if (found.facesUsed == 0) return fallBack();
+    // The used faces share the atlas: one face gets all of it (then it is the single-map PSM's texels), up
+    // to three a column each, four a 2 x 2 grid, five or six a 3 x 2 grid.
+    const glm::vec2 grid = found.facesUsed <= 3 ? glm::vec2(found.facesUsed, 1)
+                                                : (found.facesUsed == 4 ? glm::vec2(2, 2) : glm::vec2(3, 2));
+    int slot = 0;
+    for (LightView& face : fit.cascades) {
+        if (!face.serves) continue;
+        const glm::vec2 cell(float(slot % int(grid.x)), float(slot / int(grid.x)));
+        face.atlasRect = glm::vec4(cell / grid, 1.0f / grid);
+        ++slot;
+    }
     fit.faceSelect = glm::mat4(fromRows(cube[0], cube[1], cube[2], glm::dvec4(0.0, 0.0, 0.0, 1.0)) * view);
     if (!finite(fit.faceSelect)) return fallBack();
     if (details) *details = found;

@@ -72,6 +72,32 @@ void expectInsideItsFace(const LightFit& fit, const glm::vec3& receiver, const g
     EXPECT_LE(e.z / e.w, c.z / c.w + 1e-6) << what;
 }
 
+// The used faces' tiles lie inside the atlas without overlapping and cover it (five faces: 5 of 3 x 2
+// tiles); unused faces have none.
+void expectUsedFacesShareTheAtlas(const LightFit& fit, int facesUsed, const std::string& what) {
+    double area = 0.0;
+    for (size_t a = 0; a < fit.cascades.size(); ++a) {
+        const glm::vec4 r = fit.cascades[a].atlasRect;
+        if (!fit.cascades[a].serves) {
+            EXPECT_EQ(r.z, 0.0f) << what;
+            continue;
+        }
+        EXPECT_GE(r.x, 0.0f) << what;
+        EXPECT_GE(r.y, 0.0f) << what;
+        EXPECT_LE(r.x + r.z, 1.0f + 1e-6f) << what;
+        EXPECT_LE(r.y + r.w, 1.0f + 1e-6f) << what;
+        area += double(r.z) * r.w;
+        for (size_t b = a + 1; b < fit.cascades.size(); ++b) {
+            const glm::vec4 o = fit.cascades[b].atlasRect;
+            if (!fit.cascades[b].serves) continue;
+            const bool apart = r.x + r.z <= o.x + 1e-6f || o.x + o.z <= r.x + 1e-6f ||
+                               r.y + r.w <= o.y + 1e-6f || o.y + o.w <= r.y + 1e-6f;
+            EXPECT_TRUE(apart) << what << " faces " << a << ", " << b;
+        }
+    }
+    EXPECT_NEAR(area, facesUsed == 5 ? 5.0 / 6.0 : 1.0, 1e-6) << what;
+}
+
 }  // namespace
 
 // The grid of test_light_parameterizations.cpp made dense: every 10 degrees of elevation and azimuth,
@@ -94,6 +120,7 @@ TEST(PerspectiveShadowCubeMap, EveryReceiverLandsInsideTheFaceItSelects) {
                     ASSERT_TRUE(finite(face.view) && finite(face.projection)) << what;
                 ++fits;
                 severalFaces += details.facesUsed > 1 ? 1 : 0;
+                expectUsedFacesShareTheAtlas(fit, details.facesUsed, what);
                 const std::vector<glm::vec3> body =
                     focusBody(scene.camera, kAspect, scene.bounds(), scene.lights[0].direction);
                 const size_t n = body.size() / 2;
@@ -132,7 +159,7 @@ TEST(PerspectiveShadowCubeMap, SunInViewUsesSeveralFacesWherePsmFades) {
         EXPECT_EQ(fit.cascades[size_t(face)].serves, details.used[size_t(face)]);
 }
 
-// A face no receiver uses has serves = false and puts every vertex at clip w < 0, outside the clip volume.
+// A face no receiver uses has serves = false and puts every vertex outside the clip volume (x > w > 0).
 TEST(PerspectiveShadowCubeMap, UnusedFacesCullEveryDraw) {
     const Scene scene = terrain(fromAngles(-30.0f, 20.0f), fromAngles(-45.0f, 90.0f));
     CubeMapDetails details;
@@ -143,8 +170,11 @@ TEST(PerspectiveShadowCubeMap, UnusedFacesCullEveryDraw) {
     for (const LightView& face : fit.cascades) {
         if (face.serves) continue;
         ++unused;
-        for (const glm::vec3& p : {glm::vec3(0.0f), glm::vec3(50.0f, 10.0f, -30.0f), glm::vec3(-1e4f)})
-            EXPECT_LT(clipOf(face, p).w, 0.0);
+        for (const glm::vec3& p : {glm::vec3(0.0f), glm::vec3(50.0f, 10.0f, -30.0f), glm::vec3(-1e4f)}) {
+            const glm::dvec4 clip = clipOf(face, p);
+            EXPECT_GT(clip.w, 0.0);
+            EXPECT_GT(clip.x, clip.w);
+        }
     }
     EXPECT_EQ(unused, kCubeFaces - details.facesUsed);
 }

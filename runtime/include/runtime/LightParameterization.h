@@ -82,6 +82,9 @@ struct LightView {
     float splitNear = 0.0f;  // a cascade: where its fit starts, the blend band before its split included
     float splitFar = 0.0f;   // a cascade: its split: beyond this view depth the next cascade serves
     bool serves = true;      // false: no receiver of B uses it (a cube face): its passes are left out
+    // A cube face: its tile of the atlas (u0, v0, du, dv; atlasViewport), the used faces sharing the atlas;
+    // du = 0: the fixed grid of cascadeAtlasRect.
+    glm::vec4 atlasRect{0.0f};
 };
 
 struct LightFit {

@@ -21,7 +21,9 @@
 // - Unit-cube clipping per face (§14.2.2): each face's window is the bounding rectangle of the receivers
 //   within it (their light-space hull clipped to the face's pyramid), so that a face spends its tile on
 //   receivers only; a face no receiver uses gets matrices that cull every draw (clip w < 0) and
-//   `serves = false`, and leave-out skips its passes.
+//   `serves = false`, and leave-out skips its passes. The used faces share the atlas (LightView::atlasRect):
+//   one face gets all of it, two or three a column each, four a 2 x 2 grid, five or six a 3 x 2 grid, so
+//   that the cube map has the texels of one map of the atlas's size however many faces it uses.
 // - Depth is the world distance along the light over the face's w, fitted to [0, 1]: linear along each
 //   light ray, as PSM's. Receivers closer to L' than 1e-4 of the face's farthest w (Kozlov's near plane
 //   z_1) fall beyond depth 1.

@@ -72,8 +72,8 @@ AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8
                                  const glm::mat4& cameraView, const std::vector<LightView>& cascades,
                                  int atlasSize);
 // The same for a PSMCube fit (runtime/PerspectiveShadowCubeMap.h): each receiver in the texels of the face
-// that `fit.faceSelect` picks for it (as psm_cube.fx does), a tile of the `atlasSize`² atlas (3 x 2 tiles,
-// not square where the size is not a multiple of 3 and 2); derivatives are not taken across faces.
+// that `fit.faceSelect` picks for it (as psm_cube.fx does), its tile (LightView::atlasRect) of the
+// `atlasSize`² atlas; derivatives are not taken across faces.
 AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                  const LightFit& fit, int atlasSize);
 
