@@ -6,6 +6,7 @@
 
 #include "effects/EffectHarness.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace {
@@ -78,4 +79,22 @@ TEST(PsmCube, LightInFrontOfTheViewerUsesSeveralFaces) {
                                 &details);
     ASSERT_GE(details.facesUsed, 3);
     expectSameFrameWithAndWithoutLeaveOut(scene, details.facesUsed);
+}
+
+// With the camera and light still, the cube map is reused from the previous frame: the faces left out as
+// "scene" between the atlas's clear and its one running face do not read the atlas, so they do not spoil it.
+TEST(PsmCube, AStillFrameReusesTheCubeMap) {
+    const Scene scene = *makeBuiltinScene("teapot");
+    auto effect = loadEffect(sourcePath("effects/psm_cube.fx"), true);
+    ASSERT_TRUE(effect);
+    const Frame first = render(*effect, scene, true);
+    const Frame second = render(*effect, scene, true);
+    for (const char* pass : {"ClearAtlas", "Face4"}) {
+        const auto found = std::find_if(second.stats.passes.begin(), second.stats.passes.end(),
+                                        [&](const PassStats& p) { return p.pass == pass; });
+        ASSERT_NE(found, second.stats.passes.end()) << pass;
+        EXPECT_EQ(found->leftOut, "cached") << pass;
+    }
+    ASSERT_EQ(first.image.rgba.size(), second.image.rgba.size());
+    EXPECT_EQ(std::memcmp(first.image.rgba.data(), second.image.rgba.data(), first.image.rgba.size()), 0);
 }
