@@ -155,26 +155,32 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         break;
                     }
                     case ScriptCommand::Kind::RenderPort: {
-                        // lightN.cascadeK addresses one cascade of a light (README, "Light-space
-                        // parameterizations"); whether the light has cascade K is known only per frame.
+                        // lightN.cascadeK addresses one cascade of a light, lightN.faceK one face of a
+                        // PSMCube cube map: both are the light's sub-view K (README, "Light-space
+                        // parameterizations"); whether the light has sub-view K is known only per frame.
                         const size_t dot = value.find('.');
                         if (dot == std::string::npos) break;
                         const std::string light = trim(std::string_view(value).substr(0, dot));
                         const std::string view = trim(std::string_view(value).substr(dot + 1));
-                        const std::string_view prefix = "cascade";
+                        size_t prefix = 0;
+                        for (std::string_view spelling :
+                             {std::string_view("cascade"), std::string_view("face")})
+                            if (view.size() > spelling.size() &&
+                                equalsIgnoreCase(view.substr(0, spelling.size()), spelling))
+                                prefix = spelling.size();
                         const bool digits =
-                            view.size() > prefix.size() && view.size() <= prefix.size() + 2 &&
-                            std::all_of(view.begin() + static_cast<std::ptrdiff_t>(prefix.size()), view.end(),
+                            prefix > 0 && view.size() <= prefix + 2 &&
+                            std::all_of(view.begin() + static_cast<std::ptrdiff_t>(prefix), view.end(),
                                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-                        if (light.empty() || !equalsIgnoreCase(view.substr(0, prefix.size()), prefix) ||
-                            !digits) {
-                            ok = false,
-                            invalid("expected lightN or lightN.cascadeK, K a cascade index, not '" + value +
-                                    "'");
+                        if (light.empty() || !digits) {
+                            ok = false, invalid(
+                                            "expected lightN, lightN.cascadeK or lightN.faceK, K a "
+                                            "sub-view index, not '" +
+                                            value + "'");
                             break;
                         }
                         command.value = light;
-                        command.cascade = std::stoi(view.substr(prefix.size()));
+                        command.cascade = std::stoi(view.substr(prefix));
                         break;
                     }
                     case ScriptCommand::Kind::ScriptExternal:

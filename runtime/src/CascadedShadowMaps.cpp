@@ -101,6 +101,13 @@ glm::vec4 cascadeAtlasRect(int cascade, int count) {
             size.x, size.y};
 }
 
+glm::ivec4 atlasViewport(const glm::vec4& rect, int width, int height) {
+    const int w = static_cast<int>(std::floor(static_cast<float>(width) * rect.z + 1e-3f));
+    const int h = static_cast<int>(std::floor(static_cast<float>(height) * rect.w + 1e-3f));
+    return {static_cast<int>(std::lround(rect.x / rect.z)) * w,
+            static_cast<int>(std::lround(rect.y / rect.w)) * h, w, h};
+}
+
 LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect, const Light& light,
                      const LightTunables& tunables) {
     // View 0: the focused fit of the whole body (or the uniform fit where focusing cannot work).

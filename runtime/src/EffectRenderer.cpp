@@ -476,10 +476,11 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
     const LightFit fit = binder.lightFit(*found);
     if (cascade >= static_cast<int>(fit.cascades.size())) {
         if (error)
-            *error =
-                "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
-                (fit.cascades.empty() ? std::string("no cascades (its Parameterization is not \"Cascaded\")")
-                                      : std::to_string(fit.cascades.size()) + " (CascadeCount)");
+            *error = "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
+                     (fit.cascades.empty()
+                          ? std::string("no cascades (its Parameterization is not \"Cascaded\" or "
+                                        "\"PSMCube\")")
+                          : std::to_string(fit.cascades.size()) + " (CascadeCount)");
         return false;
     }
     port.view = cascade >= 0 ? fit.cascades[static_cast<size_t>(cascade)].view : fit.view;
@@ -496,9 +497,11 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
 // (runtime/CascadedShadowMaps.h): x, y, w, h in texels.
 glm::ivec4 portTile(const SemanticBinder& binder, const Scene& scene, const RenderPortView& port, int width,
                     int height) {
-    const size_t cascades =
-        binder.lightFit(scene.lights[static_cast<size_t>(port.lightIndex)]).cascades.size();
-    return cascadeViewport(port.cascade, static_cast<int>(cascades), width, height);
+    const LightFit fit = binder.lightFit(scene.lights[static_cast<size_t>(port.lightIndex)]);
+    const LightView& view = fit.cascades[static_cast<size_t>(port.cascade)];
+    // A PSMCube face's own tile (the used faces share the atlas), else the cascades' fixed grid.
+    if (view.atlasRect.z > 0.0f) return atlasViewport(view.atlasRect, width, height);
+    return cascadeViewport(port.cascade, static_cast<int>(fit.cascades.size()), width, height);
 }
 
 std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
@@ -641,7 +644,17 @@ public:
         op.signature = h;
         op.sceneSaysSkip = mSceneSaysSkip;
         if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
-            if (mPort.cascade >= 0) {
+            const LightFit portFit =
+                mPort.cascade >= 0 ? mBinder.lightFit(mScene.lights[static_cast<size_t>(mPort.lightIndex)])
+                                   : LightFit{};
+            if (portFit.cubeFaces) {
+                // A PSMCube face serves the receivers of B within its pyramid (its window is fitted to
+                // them); a face that none uses is left out.
+                op.sceneSaysSkip =
+                    op.sceneSaysSkip || !portFit.cascades[static_cast<size_t>(mPort.cascade)].serves;
+                op.region =
+                    receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+            } else if (mPort.cascade >= 0) {
                 // A cascade serves the receivers of its own depth slice only: its casters are culled to that
                 // slice, and a slice beyond the farthest receiver has nothing to serve.
                 const InstanceBvh& bvh = mImpl.sceneCache.bvh;

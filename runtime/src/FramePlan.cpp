@@ -85,8 +85,11 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
             bool ok = std::all_of(chain.begin(), chain.end(), [&](size_t i) { return ops[i].lightPort; });
             for (size_t i = chain.front(); ok && i <= chain.back(); ++i) {
                 const bool inChain = std::find(chain.begin(), chain.end(), i) != chain.end();
+                // An operation already left out (dead, or a sub-view without receivers) reads nothing.
+                const bool runs = ops[i].leftOut == LeftOut::No;
                 const auto& reads = ops[i].reads;
-                if (!inChain && std::find(reads.begin(), reads.end(), target) != reads.end()) ok = false;
+                if (!inChain && runs && std::find(reads.begin(), reads.end(), target) != reads.end())
+                    ok = false;
             }
             size_t draw = 0;
             for (size_t i : chain) {

@@ -3,6 +3,7 @@
 #include <runtime/PerspectiveShadowMap.h>
 
 #include <runtime/CascadedShadowMaps.h>
+#include <runtime/PerspectiveShadowCubeMap.h>
 
 #include "IntersectionBody.h"
 #include "LightSpaceMath.h"
@@ -97,7 +98,8 @@ LightFit cropToReceivers(const LightFit& uniform, const std::vector<glm::vec3>& 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name) {
     for (LightParameterization method :
          {LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
-          LightParameterization::TSM, LightParameterization::PSM, LightParameterization::Cascaded})
+          LightParameterization::TSM, LightParameterization::PSM, LightParameterization::PSMCube,
+          LightParameterization::Cascaded})
         if (equalsIgnoringCase(name, lightParameterizationName(method))) return method;
     return std::nullopt;
 }
@@ -114,6 +116,8 @@ const char* lightParameterizationName(LightParameterization method) {
             return "TSM";
         case LightParameterization::PSM:
             return "PSM";
+        case LightParameterization::PSMCube:
+            return "PSMCube";
         case LightParameterization::Cascaded:
             return "Cascaded";
     }
@@ -167,6 +171,8 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     }
     if (method == LightParameterization::PSM)
         return fitPerspectiveShadowMap(scene, sceneBounds, aspect, light, tunables);
+    if (method == LightParameterization::PSMCube)
+        return fitPerspectiveShadowCubeMap(scene, sceneBounds, aspect, light, tunables);
     const glm::vec3 lightDir = glm::normalize(light.direction);
     const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace runtime {
@@ -53,23 +54,27 @@ bool finite(const glm::mat4& m) {
 
 }  // namespace
 
-LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, float aspect,
-                                 const Light& light, const LightTunables& tunables, PsmDetails* details) {
+std::optional<PsmFrame> psmFrame(const Scene& scene, const Bounds& sceneBounds, float aspect,
+                                 const Light& light, const LightTunables& tunables, LightFit& fallback) {
     // The Focused fit is PSM's fallback and lends it its light view (z along the light, y along V_P). Spot
     // and point lights keep the uniform fit, and where Focused falls back to it (an empty B), so does PSM.
     const LightFit uniform =
         fitLight(LightParameterization::Uniform, scene, sceneBounds, aspect, light, tunables);
-    if (light.type != Light::Type::Directional) return uniform;
-    const LightFit focused =
-        fitLight(LightParameterization::Focused, scene, sceneBounds, aspect, light, tunables);
-    if (focused.view == uniform.view && focused.projection == uniform.projection) return uniform;
+    fallback = uniform;
+    if (light.type != Light::Type::Directional) return std::nullopt;
+    PsmFrame frame;
+    frame.focused = fitLight(LightParameterization::Focused, scene, sceneBounds, aspect, light, tunables);
+    if (frame.focused.view == uniform.view && frame.focused.projection == uniform.projection)
+        return std::nullopt;
     const Camera& camera = scene.camera;
     const glm::vec3 lightDir = glm::normalize(light.direction);
-    const std::vector<glm::vec3> body = focusBody(camera, aspect, sceneBounds, lightDir);
-    if (body.empty()) return uniform;
+    frame.body = focusBody(camera, aspect, sceneBounds, lightDir);
+    if (frame.body.empty()) return std::nullopt;
+    fallback = frame.focused;
     // focusBody: B's vertices (the receivers), then each moved toward the light (the casters).
-    const std::vector<glm::vec3> receivers(body.begin(), body.begin() + static_cast<long>(body.size() / 2));
-
+    const std::vector<glm::vec3>& body = frame.body;
+    frame.receivers.assign(body.begin(), body.begin() + static_cast<long>(body.size() / 2));
+    const std::vector<glm::vec3>& receivers = frame.receivers;
     // The virtual camera C (seed 004 §14.2.1, Figure 14-6): slid back by s along the view, with its near
     // plane kept where B begins, z_n = the nearest receiver's depth (at least the camera's near plane, more
     // where the bounds begin farther away: "we should maximize the Z_n value by any means") and its far
@@ -112,12 +117,12 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const glm::dvec3 axisVector = lambda * centre - ell;
     if (!(glm::length(axisVector) > 1e-12 * (glm::length(ell) + std::abs(lambda) * glm::length(centre))))
-        return focused;
+        return std::nullopt;
     const glm::dvec3 axis = glm::normalize(axisVector);
     // The image plane's x and y: Focused's light-view axes carried into PPS at c (the Jacobian of C's
     // division there) and made orthonormal to the axis, so that PSM's map keeps Focused's orientation and
     // the two can blend. A world direction across the light never maps onto the light ray's tangent.
-    const glm::dmat4 focusedView(focused.view);
+    const glm::dmat4 focusedView(frame.focused.view);
     const glm::dvec3 worldX(focusedView[0][0], focusedView[1][0], focusedView[2][0]);
     const glm::dvec3 worldY(focusedView[0][1], focusedView[1][1], focusedView[2][1]);
     const auto carried = [&](const glm::dvec3& u) {
@@ -128,6 +133,33 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
     ey = glm::normalize(ey - glm::dot(ey, axis) * axis);
     glm::dvec3 ex = carried(worldX);
     ex = glm::normalize(ex - glm::dot(ex, axis) * axis - glm::dot(ex, ey) * ey);
+
+    frame.postPerspective = postPerspective;
+    frame.lightPostPerspective = lightPps;
+    frame.slideBack = slideBack;
+    frame.nearPlane = nearPlane;
+    frame.farPlane = farPlane;
+    frame.centre = centre;
+    frame.axis = axis;
+    frame.ex = ex;
+    frame.ey = ey;
+    return frame;
+}
+
+LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, float aspect,
+                                 const Light& light, const LightTunables& tunables, PsmDetails* details) {
+    LightFit fallback;
+    const std::optional<PsmFrame> frame = psmFrame(scene, sceneBounds, aspect, light, tunables, fallback);
+    if (!frame) return fallback;
+    const LightFit& focused = frame->focused;
+    const std::vector<glm::vec3>& body = frame->body;
+    const std::vector<glm::vec3>& receivers = frame->receivers;
+    const glm::dmat4& postPerspective = frame->postPerspective;
+    const glm::dvec4& lightPps = frame->lightPostPerspective;
+    const glm::dvec3 ell(lightPps);
+    const double lambda = lightPps.w;
+    const glm::dvec3 &centre = frame->centre, &axis = frame->axis, &ex = frame->ex, &ey = frame->ey;
+    const glm::dmat4 focusedView(focused.view);
 
     // The light camera's rows on PPS homogeneous points Y = (y, ω): x = ex·(y - ω c), y = ey·(y - ω c),
     // w = n·(λ y - ω ℓ). Each vanishes on L' = (ℓ, λ) (ex, ey ⊥ n ∥ λ c - ℓ), so x/w, y/w is the central
@@ -214,9 +246,9 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
     if (details) {
         details->postPerspective = postPerspective;
         details->lightPostPerspective = lightPps;
-        details->slideBack = slideBack;
-        details->nearPlane = nearPlane;
-        details->farPlane = farPlane;
+        details->slideBack = frame->slideBack;
+        details->nearPlane = frame->nearPlane;
+        details->farPlane = frame->farPlane;
         details->closeness = closeness;
         details->focusedWeight = focusedWeight;
     }

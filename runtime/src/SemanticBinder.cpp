@@ -129,6 +129,7 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
         {"CASCADEVIEWPROJECTION", Kind::CascadeViewProjection},
         {"CASCADEATLASRECTS", Kind::CascadeAtlasRects},
         {"CASCADESPLITDEPTHS", Kind::CascadeSplitDepths},
+        {"CUBEFACESELECT", Kind::CubeFaceSelect},
     };
     for (const auto& [text, otherKind] : kOthers) {
         if (name == text) {
@@ -173,10 +174,10 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                 ? parseLightParameterization(annotation->value.text)
                 : std::nullopt;
         if (!method) {
-            diagnostics.report(
-                fx::DiagId::InvalidAnnotation, annotation->loc,
-                {"Parameterization",
-                 "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\" or \"Cascaded\""});
+            diagnostics.report(fx::DiagId::InvalidAnnotation, annotation->loc,
+                               {"Parameterization",
+                                "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", "
+                                "\"PSMCube\" or \"Cascaded\""});
             continue;
         }
         const Light* light = scene.findLight(lightName);
@@ -201,9 +202,9 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string lightName = annotatedLight(parameter);
-        const bool isCascadeProperty = binding.kind == Kind::CascadeViewProjection ||
-                                       binding.kind == Kind::CascadeAtlasRects ||
-                                       binding.kind == Kind::CascadeSplitDepths;
+        const bool isCascadeProperty =
+            binding.kind == Kind::CascadeViewProjection || binding.kind == Kind::CascadeAtlasRects ||
+            binding.kind == Kind::CascadeSplitDepths || binding.kind == Kind::CubeFaceSelect;
         const bool isLightProperty =
             binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
             binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius || isCascadeProperty;
@@ -225,6 +226,7 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             binding.lightView = fit.view;
             binding.lightProjection = fit.projection;
             binding.lightCascades = fit.cascades;
+            binding.lightFaceSelect = fit.faceSelect;
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -263,6 +265,7 @@ void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) con
                             glm::value_ptr(viewProjection) + 16);
         } else if (binding.kind == Kind::CascadeAtlasRects) {
             const glm::vec4 rect = binding.lightCascades.empty() ? glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)
+                                   : cascade.atlasRect.z > 0.0f  ? cascade.atlasRect
                                                                  : cascadeAtlasRect(k, count);
             elements.insert(elements.end(), glm::value_ptr(rect), glm::value_ptr(rect) + 4);
         } else {
@@ -342,6 +345,9 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                 break;
             case Kind::View:
                 matrix = view;
+                break;
+            case Kind::CubeFaceSelect:
+                matrix = binding.lightFaceSelect;
                 break;
             case Kind::Projection:
                 matrix = projection;

@@ -16,7 +16,9 @@
 // (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
 // projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
 // of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade
-// ends; components past the last cascade repeat its value). Scene-driven choices: SceneHasClosedObjects (true
+// ends; components past the last cascade repeat its value). A `PSMCube` light's six faces
+// (runtime/PerspectiveShadowCubeMap.h) bind to the same arrays, plus CubeFaceSelect (float4x4: world -> the
+// cube frame whose dominant axis picks a point's face). Scene-driven choices: SceneHasClosedObjects (true
 // if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
 // filter needed).
 #pragma once
@@ -103,6 +105,7 @@ private:
         CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
         CascadeAtlasRects,
         CascadeSplitDepths,
+        CubeFaceSelect,  // a PSMCube light's face selection (LightFit::faceSelect)
     };
     struct Binding {
         size_t parameter;
@@ -113,7 +116,8 @@ private:
             nullptr;                // frustum/Object annotation (matrices), or the light of a light property
         glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
         glm::mat4 lightProjection{1.0f};
-        std::vector<LightView> lightCascades{};  // the light's cascades (a Cascaded fit), else empty
+        std::vector<LightView> lightCascades{};  // the light's cascades or cube faces, else empty
+        glm::mat4 lightFaceSelect{0.0f};         // a PSMCube fit's LightFit::faceSelect
     };
     static bool dependsOnObject(Kind kind);
 

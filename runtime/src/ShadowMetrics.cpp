@@ -2,6 +2,7 @@
 #include <runtime/ShadowMetrics.h>
 
 #include <runtime/CascadedShadowMaps.h>
+#include <runtime/PerspectiveShadowCubeMap.h>
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +131,27 @@ AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8
         const float tile = static_cast<float>(cascadeViewport(k, count, atlasSize, atlasSize).z);
         texelOf(cascade.projection * cascade.view, gbuffer.position[i], tile, texel[i]);
         map[i] = k;
+    }
+    return footprints(gbuffer, receivers, texel, map);
+}
+
+AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const LightFit& fit, int atlasSize) {
+    const int count = static_cast<int>(fit.cascades.size());
+    if (count == 0) return {};
+    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
+    std::vector<int> map(texel.size(), 0);
+    for (size_t i = 0; i < texel.size(); ++i) {
+        if (!gbuffer.covered(i)) continue;
+        const int face = std::min(cubeFaceOf(fit, gbuffer.position[i]), count - 1);
+        const LightView& view = fit.cascades[static_cast<size_t>(face)];
+        const glm::ivec4 tile = view.atlasRect.z > 0.0f ? atlasViewport(view.atlasRect, atlasSize, atlasSize)
+                                                        : cascadeViewport(face, count, atlasSize, atlasSize);
+        const glm::vec4 clip = view.projection * view.view * glm::vec4(gbuffer.position[i], 1.0f);
+        if (clip.w > 0.0f)
+            texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *
+                       glm::vec2(tile.z, tile.w);
+        map[i] = face;
     }
     return footprints(gbuffer, receivers, texel, map);
 }

@@ -610,9 +610,11 @@ int benchCommand(const Arguments& args) {
                 const std::optional<runtime::LightFit> fit =
                     timed->lightFit(t.scene, t.light->name, fitOptions);
                 const runtime::Bounds bounds = t.scene.bounds();
-                // A cascaded map: each receiver in the texels of its own cascade's tile.
+                // A cascaded map or a cube map: each receiver in the texels of its own cascade's or face's
+                // tile.
                 const runtime::AliasingMeasure aliasing =
-                    fit && !fit->cascades.empty()
+                    fit && fit->cubeFaces ? runtime::cubeFaceAliasing(t.gbuffer, t.receivers, *fit, mapSize)
+                    : fit && !fit->cascades.empty()
                         ? runtime::cascadedAliasing(t.gbuffer, t.receivers, t.scene.camera.view(),
                                                     fit->cascades, mapSize)
                         : runtime::perspectiveAliasing(

@@ -97,14 +97,18 @@ TEST(SasScript, ScriptExternalIsIgnoredWithWarning) {
     EXPECT_EQ(diags.items()[0].id, DiagId::ScriptCommandIgnored);
 }
 
-// RenderPort=lightN.cascadeK names a light's sub-view (runtime/CascadedShadowMaps.h): the light's name and
-// K separately; anything else after the dot is an error at the command.
+// RenderPort=lightN.cascadeK (or lightN.faceK, a PSMCube face) names a light's sub-view
+// (runtime/CascadedShadowMaps.h): the light's name and K separately; anything else after the dot is an error
+// at the command.
 TEST(SasScript, RenderPortCascades) {
     DiagnosticList diags;
-    auto commands = parseSasScript("RenderPort=light0.cascade2; RenderPort=sun.Cascade11; RenderPort=light1;",
-                                   SourceLoc{"s.fx", 1, 1}, diags);
+    auto commands = parseSasScript(
+        "RenderPort=light0.cascade2; RenderPort=sun.Cascade11; RenderPort=light1; RenderPort=light0.face5;",
+        SourceLoc{"s.fx", 1, 1}, diags);
     EXPECT_FALSE(diags.hasErrors()) << diags.str();
-    ASSERT_EQ(commands.size(), 3u);
+    ASSERT_EQ(commands.size(), 4u);
+    EXPECT_EQ(commands[3].value, "light0");
+    EXPECT_EQ(commands[3].cascade, 5);
     EXPECT_EQ(commands[0].value, "light0");
     EXPECT_EQ(commands[0].cascade, 2);
     EXPECT_EQ(commands[1].value, "sun");
@@ -112,14 +116,14 @@ TEST(SasScript, RenderPortCascades) {
     EXPECT_EQ(commands[2].value, "light1");
     EXPECT_EQ(commands[2].cascade, -1);
     for (const char* bad : {"RenderPort=light0.tile1;", "RenderPort=light0.cascade;", "RenderPort=.cascade0;",
-                            "RenderPort=light0.cascade-1;", "RenderPort=light0.cascade123;"}) {
+                            "RenderPort=light0.cascade-1;", "RenderPort=light0.cascade123;",
+                            "RenderPort=light0.face;", "RenderPort=light0.faces1;"}) {
         DiagnosticList errors;
         EXPECT_TRUE(parseSasScript(bad, SourceLoc{"s.fx", 2, 5}, errors).empty()) << bad;
         ASSERT_TRUE(errors.hasErrors()) << bad;
-        EXPECT_NE(
-            errors.str().find("s.fx:2:5: error: invalid script command 'RenderPort': expected lightN or "
-                              "lightN.cascadeK"),
-            std::string::npos)
+        EXPECT_NE(errors.str().find("s.fx:2:5: error: invalid script command 'RenderPort': expected lightN, "
+                                    "lightN.cascadeK or lightN.faceK"),
+                  std::string::npos)
             << errors.str();
     }
 }

@@ -253,8 +253,8 @@ TEST(Cascades, BadCascadeIndexIsAnErrorAtItsCommand) {
 
     text = renderError(portEffect("Cascaded", "light0.tile1"), "syntax.fx", rendered);
     EXPECT_FALSE(rendered);
-    EXPECT_NE(text.find("syntax.fx:4:41: error: invalid script command 'RenderPort': expected lightN or "
-                        "lightN.cascadeK"),
+    EXPECT_NE(text.find("syntax.fx:4:41: error: invalid script command 'RenderPort': expected lightN, "
+                        "lightN.cascadeK or lightN.faceK"),
               std::string::npos)
         << text;
 

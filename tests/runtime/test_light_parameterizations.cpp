@@ -24,9 +24,10 @@ constexpr float kAspect = shadowfx::test::kLightFitAspect;
 using shadowfx::test::finite;
 using shadowfx::test::fromAngles;
 using shadowfx::test::terrain;
-constexpr LightParameterization kMethods[] = {
-    LightParameterization::Uniform, LightParameterization::Focused, LightParameterization::LiSPSM,
-    LightParameterization::TSM,     LightParameterization::PSM,     LightParameterization::Cascaded};
+constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
+                                              LightParameterization::LiSPSM,  LightParameterization::TSM,
+                                              LightParameterization::PSM,     LightParameterization::PSMCube,
+                                              LightParameterization::Cascaded};
 
 // The grid: camera directions (level, tilted down, straight down) x light directions (low, oblique,
 // straight down, straight up, parallel and antiparallel to the view).
@@ -70,6 +71,7 @@ TEST(LightParameterizations, NamesParseCaseInsensitively) {
     EXPECT_EQ(parseLightParameterization("UNIFORM"), LightParameterization::Uniform);
     EXPECT_EQ(parseLightParameterization("tsm"), LightParameterization::TSM);
     EXPECT_EQ(parseLightParameterization("psm"), LightParameterization::PSM);
+    EXPECT_EQ(parseLightParameterization("PSMcube"), LightParameterization::PSMCube);
     EXPECT_EQ(parseLightParameterization("cascaded"), LightParameterization::Cascaded);
     EXPECT_FALSE(parseLightParameterization("Trapezoidal").has_value());
 }

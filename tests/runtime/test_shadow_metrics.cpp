@@ -145,4 +145,34 @@ TEST(ShadowMetrics, CascadedFootprintUsesEachReceiversCascade) {
     EXPECT_NEAR(four.meanFootprint, 3.0 * single, 0.05 * single);
 }
 
+// Cube faces: each receiver is measured in the face that faceSelect picks for it. A selection by the sign
+// of world x, face 1 (x < 0) with a map of twice the world extent: its half of the plane has twice the
+// footprint of the other half, whose footprint is that of six equal faces.
+TEST(ShadowMetrics, CubeFaceFootprintUsesEachReceiversFace) {
+    runtime::GBuffer gbuffer;
+    gbuffer.width = gbuffer.height = 64;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            gbuffer.position.emplace_back(x * 0.1f - 3.15f, 0.0f, y * 0.1f - 3.15f);
+            gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
+            gbuffer.objectId.push_back(1);
+        }
+    runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
+    runtime::Light light;
+    const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
+    runtime::LightFit fit;
+    fit.cubeFaces = true;
+    fit.faceSelect = glm::mat4(0.0f);
+    fit.faceSelect[0][0] = 1.0f;  // W = (x, 0, 0): face 0 for x > 0, face 1 for x < 0
+    const runtime::LightView whole{light.view(bounds), light.projection(bounds), 0.0f, 0.0f, true};
+    fit.cascades.assign(6, whole);
+    const runtime::AliasingMeasure same = runtime::cubeFaceAliasing(gbuffer, receivers, fit, 256);
+    EXPECT_EQ(same.pixels, gbuffer.pixelCount());
+    EXPECT_NEAR(same.maxFootprint, same.meanFootprint, 1e-3 * same.meanFootprint);
+    fit.cascades[1].projection = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f)) * whole.projection;
+    const runtime::AliasingMeasure wide = runtime::cubeFaceAliasing(gbuffer, receivers, fit, 256);
+    EXPECT_NEAR(wide.maxFootprint, 2.0 * same.meanFootprint, 1e-3 * same.meanFootprint);
+    EXPECT_NEAR(wide.meanFootprint, 1.5 * same.meanFootprint, 1e-2 * same.meanFootprint);
+}
+
 }  // namespace

@@ -34,6 +34,9 @@ glm::ivec4 cascadeViewport(int cascade, int count, int width, int height);
 // Tile K in texture coordinates: u0, v0, du, dv (cascadeViewport / atlas size, for atlas sizes that are
 // multiples of the grid). A cascade's clip position maps to atlas uv as rect.xy + ShadowMapUV(clip) rect.zw.
 glm::vec4 cascadeAtlasRect(int cascade, int count);
+// The texels of a tile given in texture coordinates on a grid of 1 / du columns and 1 / dv rows: whole
+// texels, w = floor(width du), x = column w, as cascadeViewport (a PSMCube face's LightView::atlasRect).
+glm::ivec4 atlasViewport(const glm::vec4& rect, int width, int height);
 
 // The Cascaded fit: view and projection are the Focused fit of the whole intersection body (what plain
 // RenderPort=lightN renders with), `cascades` holds tunables.cascadeCount sub-views. Each cascade is an

@@ -13,6 +13,8 @@
 //   PSM       perspective shadow maps: the light as a point in the camera's post-perspective space, with
 //             Kozlov's inverse projection, slide-back and unit-cube clipping (seed 004 §14.2,
 //             runtime/PerspectiveShadowMap.h)
+//   PSMCube   PSM's cube-map variant (seed 004 §14.2.2): six faces around the light in PPS, rendered through
+//             RenderPort=lightN.faceK into the tiles of one atlas (runtime/PerspectiveShadowCubeMap.h)
 //   Cascaded  the Focused fit as view 0, plus one stabilized orthographic sub-view per slice of the view
 //             depth range (cascaded / parallel-split shadow maps, runtime/CascadedShadowMaps.h), rendered
 //             through RenderPort=lightN.cascadeK into the tiles of one atlas
@@ -32,9 +34,10 @@
 
 namespace runtime {
 
-enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM, Cascaded };
+enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM, PSMCube, Cascaded };
 
-// "Uniform", "Focused", "LiSPSM", "TSM", "PSM", "Cascaded" (case-insensitive); nullopt for anything else.
+// "Uniform", "Focused", "LiSPSM", "TSM", "PSM", "PSMCube", "Cascaded" (case-insensitive); nullopt for
+// anything else.
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
@@ -72,20 +75,29 @@ struct LightTunables {
     float cascadeBlend = 0.1f;
 };
 
-// One sub-view of a light (a cascade): its matrices and the camera view-space depths it serves.
+// One sub-view of a light (a cascade, or a face of PSMCube's cube map): its matrices and what it serves.
 struct LightView {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
-    float splitNear = 0.0f;  // where its fit starts, the blend band before its split included
-    float splitFar = 0.0f;   // its split: beyond this view depth the next cascade serves
+    float splitNear = 0.0f;  // a cascade: where its fit starts, the blend band before its split included
+    float splitFar = 0.0f;   // a cascade: its split: beyond this view depth the next cascade serves
+    bool serves = true;      // false: no receiver of B uses it (a cube face): its passes are left out
+    // A cube face: its tile of the atlas (u0, v0, du, dv; atlasViewport), the used faces sharing the atlas;
+    // du = 0: the fixed grid of cascadeAtlasRect.
+    glm::vec4 atlasRect{0.0f};
 };
 
 struct LightFit {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     float warp = 0.0f;  // 1 / n of the LiSPSM or TSM warp (world units⁻¹): 0 for an orthographic fit
-    // Cascaded: one sub-view per cascade, nearest first (RenderPort=lightN.cascadeK); empty otherwise.
+    // Cascaded: one sub-view per cascade, nearest first (RenderPort=lightN.cascadeK); PSMCube: the six
+    // faces (RenderPort=lightN.faceK); empty otherwise.
     std::vector<LightView> cascades;
+    // PSMCube: the sub-views are cube faces, and world -> the cube frame (xyz; w unused) whose dominant
+    // axis picks a point's face: face 2 i for +axis i, 2 i + 1 for -axis i (semantic CubeFaceSelect).
+    bool cubeFaces = false;
+    glm::mat4 faceSelect{0.0f};
     // True when clip w > 0 is exactly the half-space the light shines into (a spot's own perspective, the
     // LiSPSM and TSM warps, whose centres lie before B along V_P while shadows run across it, PSM, whose w
     // is constant along each light ray, any orthographic fit): a caster wholly at w <= 0 shadows nothing in

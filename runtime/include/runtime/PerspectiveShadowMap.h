@@ -16,11 +16,12 @@
 //   nearest receiver, an automatic z_n), its far plane where B ends;
 // - unit-cube clipping (§14.2.2): the light camera aims at B's receivers in PPS and its window is their
 //   bounding rectangle, not the whole unit cube;
-// - close to the unit cube (the case of §14.2.2's cube map, not built here): the light camera's w over B's
+// - close to the unit cube (the case of §14.2.2's cube map, PerspectiveShadowCubeMap.h): the light camera's w
+// over B's
 //   receivers ranges over w_min..w_max; a ratio above `maxWarpRatio` is capped by moving the light's w = 0
 //   plane away from B (a weaker perspective), and as closeness = w_min / w_max falls from 0.02 to 0 (the
 //   light touching B in PPS) the cap falls geometrically to 1 and the matrices blend continuously into the
-//   Focused fit.
+//   Focused fit. The cube-map variant, `PSMCube` (PerspectiveShadowCubeMap.h), needs no such fade.
 //
 // Directional lights only; spot and point lights keep the uniform fit.
 #pragma once
@@ -29,7 +30,29 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+#include <vector>
+
 namespace runtime {
+
+// What PSM's fits build on (the single map below and the cube map of PerspectiveShadowCubeMap.h): the
+// virtual camera C, the light L' in its post-perspective space (PPS) and the light camera's axes there.
+struct PsmFrame {
+    LightFit focused;                      // the Focused fit, whose light view (z along the light) PSM keeps
+    std::vector<glm::vec3> body;           // focusBody: B's vertices (the receivers), then the casters
+    std::vector<glm::vec3> receivers;      // B's vertices
+    glm::dmat4 postPerspective{1.0};       // C: world -> the virtual camera's clip space (D3D, depth 0..1)
+    glm::dvec4 lightPostPerspective{0.0};  // L' = C (-d, 0) = (ℓ, λ)
+    double slideBack = 0.0, nearPlane = 0.0, farPlane = 0.0;
+    glm::dvec3 centre{0.0};       // c: the centre of the receivers' bounding box in PPS
+    glm::dvec3 axis{0.0};         // n: along λ c - ℓ, the PPS direction of the light ray through c
+    glm::dvec3 ex{0.0}, ey{0.0};  // Focused's light-view x and y carried into PPS at c, orthonormal to n
+};
+
+// The frame of a directional light; nullopt where PSM cannot work, with the fit to use instead in
+// `fallback` (the uniform fit for spot and point lights or an empty B, else the Focused fit).
+std::optional<PsmFrame> psmFrame(const Scene& scene, const Bounds& sceneBounds, float aspect,
+                                 const Light& light, const LightTunables& tunables, LightFit& fallback);
 
 // What the PSM fit found, for tests and tools.
 struct PsmDetails {

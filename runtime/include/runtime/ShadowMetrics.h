@@ -80,5 +80,10 @@ AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<ui
 AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                  const glm::mat4& cameraView, const std::vector<LightView>& cascades,
                                  int atlasSize);
+// The same for a PSMCube fit (runtime/PerspectiveShadowCubeMap.h): each receiver in the texels of the face
+// that `fit.faceSelect` picks for it (as psm_cube.fx does), its tile (LightView::atlasRect) of the
+// `atlasSize`² atlas; derivatives are not taken across faces.
+AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const LightFit& fit, int atlasSize);
 
 }  // namespace runtime
