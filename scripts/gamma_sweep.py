@@ -25,8 +25,8 @@ import sys
 
 
 # label -> (effect, technique, parameter settings). Every method's maps hold 1024² texels in all: one
-# 1024² map, or four 512² cascades in a 1024² atlas. `uniform` is pcf.fx's `bilinear`: the same 2x2 PCF as
-# the light-space effects (lightspace.fxh) on the view-independent map.
+# 1024² map, or four 512² cascades or the used cube faces in one 1024² atlas. `uniform` is pcf.fx's
+# `bilinear`: the same 2x2 PCF as the light-space effects (lightspace.fxh) on the view-independent map.
 METHODS = {
     "uniform": ("effects/pcf.fx", "bilinear", ()),
     "focused": ("effects/focused.fx", "bilinear", ()),
@@ -35,6 +35,7 @@ METHODS = {
     "lispsm-n4": ("effects/lispsm.fx", "bilinear", ("NScale=4",)),
     "tsm": ("effects/tsm.fx", "bilinear", ()),
     "psm": ("effects/psm.fx", "bilinear", ()),
+    "psm-cube": ("effects/psm_cube.fx", "bilinear", ()),
     "cascades": ("effects/cascades.fx", "blended", ()),
 }
 DEFAULT_METHODS = list(METHODS)

@@ -214,4 +214,11 @@ AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& r
 
 }  // namespace
 
+AliasingMeasure fitAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                            const glm::mat4& cameraView, const LightFit& fit, int mapSize) {
+    if (fit.cubeFaces) return cubeFaceAliasing(gbuffer, receivers, fit, mapSize);
+    if (!fit.cascades.empty()) return cascadedAliasing(gbuffer, receivers, cameraView, fit.cascades, mapSize);
+    return perspectiveAliasing(gbuffer, receivers, fit.view, fit.projection, mapSize);
+}
+
 }  // namespace runtime

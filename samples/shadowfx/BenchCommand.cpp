@@ -613,13 +613,9 @@ int benchCommand(const Arguments& args) {
                 // A cascaded map or a cube map: each receiver in the texels of its own cascade's or face's
                 // tile.
                 const runtime::AliasingMeasure aliasing =
-                    fit && fit->cubeFaces ? runtime::cubeFaceAliasing(t.gbuffer, t.receivers, *fit, mapSize)
-                    : fit && !fit->cascades.empty()
-                        ? runtime::cascadedAliasing(t.gbuffer, t.receivers, t.scene.camera.view(),
-                                                    fit->cascades, mapSize)
-                        : runtime::perspectiveAliasing(
-                              t.gbuffer, t.receivers, fit ? fit->view : t.light->view(bounds),
-                              fit ? fit->projection : t.light->projection(bounds), mapSize);
+                    fit ? runtime::fitAliasing(t.gbuffer, t.receivers, t.scene.camera.view(), *fit, mapSize)
+                        : runtime::perspectiveAliasing(t.gbuffer, t.receivers, t.light->view(bounds),
+                                                       t.light->projection(bounds), mapSize);
                 for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
                     if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                               technique.name) == techniqueFilter.end())

@@ -298,12 +298,8 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
                     outcome.fail(std::to_string(outside) +
                                  " receiver pixels outside the clip volume of the effect's light fit");
                 if (truth.gbuffer) {
-                    const runtime::AliasingMeasure aliasing =
-                        fit->cascades.empty()
-                            ? runtime::perspectiveAliasing(*truth.gbuffer, truth.footprintReceivers,
-                                                           fit->view, fit->projection, mapSize)
-                            : runtime::cascadedAliasing(*truth.gbuffer, truth.footprintReceivers,
-                                                        frame.scene.camera.view(), fit->cascades, mapSize);
+                    const runtime::AliasingMeasure aliasing = runtime::fitAliasing(
+                        *truth.gbuffer, truth.footprintReceivers, frame.scene.camera.view(), *fit, mapSize);
                     if (aliasing.pixels > 0) {
                         outcome.maxFootprint = aliasing.maxFootprint;
                         outcome.p95Footprint = aliasing.p95Footprint;

@@ -85,5 +85,8 @@ AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8
 // `atlasSize`² atlas; derivatives are not taken across faces.
 AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                                  const LightFit& fit, int atlasSize);
+// Whichever of the three `fit` calls for: its cube faces, its cascades (under `cameraView`), or its one map.
+AliasingMeasure fitAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                            const glm::mat4& cameraView, const LightFit& fit, int mapSize);
 
 }  // namespace runtime
