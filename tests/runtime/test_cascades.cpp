@@ -7,6 +7,7 @@
 // - a RenderPort naming a cascade the light does not have, or a malformed one, is a file:line:column error.
 #include <runtime/CascadedShadowMaps.h>
 
+#include "LeaveOutFrames.h"
 #include "effects/EffectHarness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -152,28 +153,11 @@ technique t < string Script = "RenderColorTarget0=Out; Pass=p; RenderColorTarget
     EXPECT_FLOAT_EQ((*out)[4], 0.5f);  // the second tile of a 2 x 2 grid starts at u = 0.5
 }
 
-struct Frame {
-    FrameImage image;
-    FrameStats stats;
-};
+using Frame = shadowfx::test::StatsFrame;
+using shadowfx::test::findPass;
 
 Frame renderCascades(EffectRenderer& renderer, const Scene& scene, bool leaveOut) {
-    FrameOptions options;
-    options.width = 320;
-    options.height = 240;
-    options.leaveOut = leaveOut;
-    fx::DiagnosticList diagnostics;
-    Frame frame;
-    EXPECT_TRUE(renderer.render(scene, options, diagnostics, &frame.stats)) << diagnostics.str();
-    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
-    frame.image = renderer.readFrame();
-    return frame;
-}
-
-const PassStats* findPass(const FrameStats& stats, const std::string& name) {
-    for (const PassStats& pass : stats.passes)
-        if (pass.pass == name) return &pass;
-    return nullptr;
+    return shadowfx::test::renderWithStats(renderer, scene, "", leaveOut);
 }
 
 // cascades.fx on a scene whose far slices hold nothing: their passes are left out ("scene"), each running

@@ -11,6 +11,7 @@
 #include "../../runtime/src/FramePlan.h"
 #include "../../runtime/src/InstanceBvh.h"
 #include "../../runtime/src/IntersectionBody.h"
+#include "LeaveOutFrames.h"
 #include "effects/EffectHarness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -157,38 +158,12 @@ Scene gridScene(Light::Type lightType) {
     return scene;
 }
 
-struct Frame {
-    FrameImage image;
-    FrameStats stats;
-};
+using Frame = shadowfx::test::StatsFrame;
+using shadowfx::test::differingPixels;
+using shadowfx::test::findPass;
 
 Frame renderFrame(EffectRenderer& renderer, const Scene& scene, const std::string& technique, bool leaveOut) {
-    FrameOptions options;
-    options.width = 320;
-    options.height = 240;
-    options.technique = technique;
-    options.leaveOut = leaveOut;
-    options.countTexels = true;
-    fx::DiagnosticList diagnostics;
-    Frame frame;
-    EXPECT_TRUE(renderer.render(scene, options, diagnostics, &frame.stats)) << diagnostics.str();
-    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
-    frame.image = renderer.readFrame();
-    return frame;
-}
-
-const PassStats* findPass(const FrameStats& stats, const std::string& name) {
-    for (const PassStats& pass : stats.passes)
-        if (pass.pass == name) return &pass;
-    return nullptr;
-}
-
-size_t differingPixels(const FrameImage& a, const FrameImage& b) {
-    if (a.rgba.size() != b.rgba.size()) return std::max(a.rgba.size(), b.rgba.size()) / 4;
-    size_t differing = 0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4)
-        differing += std::memcmp(&a.rgba[i], &b.rgba[i], 4) != 0 ? 1 : 0;
-    return differing;
+    return shadowfx::test::renderWithStats(renderer, scene, technique, leaveOut);
 }
 
 struct Case {

@@ -4,6 +4,7 @@
 // several faces run.
 #include <runtime/PerspectiveShadowCubeMap.h>
 
+#include "LeaveOutFrames.h"
 #include "effects/EffectHarness.h"
 
 #include <algorithm>
@@ -16,22 +17,10 @@ using shadowfx::test::loadEffect;
 using shadowfx::test::notConstant;
 using shadowfx::test::sourcePath;
 
-struct Frame {
-    FrameImage image;
-    FrameStats stats;
-};
+using Frame = shadowfx::test::StatsFrame;
 
 Frame render(EffectRenderer& renderer, const Scene& scene, bool leaveOut) {
-    FrameOptions options;
-    options.width = 320;
-    options.height = 240;
-    options.leaveOut = leaveOut;
-    fx::DiagnosticList diagnostics;
-    Frame frame;
-    EXPECT_TRUE(renderer.render(scene, options, diagnostics, &frame.stats)) << diagnostics.str();
-    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
-    frame.image = renderer.readFrame();
-    return frame;
+    return shadowfx::test::renderWithStats(renderer, scene, "", leaveOut);
 }
 
 int facesLeftOut(const FrameStats& stats) {
