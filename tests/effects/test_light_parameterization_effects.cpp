@@ -51,7 +51,8 @@ TEST_P(ParameterizedEffect, BindsTheProvidersFitNotTheUniformOne) {
     EXPECT_FALSE(renderer->lightFit(*scene, "no-such-light", options).has_value());
 }
 
-INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect, ::testing::Values("focused.fx", "lispsm.fx", "tsm.fx", "psm.fx"),
+INSTANTIATE_TEST_SUITE_P(Effects, ParameterizedEffect,
+                         ::testing::Values("focused.fx", "lispsm.fx", "tsm.fx", "psm.fx"),
                          [](const auto& info) {
                              return std::string(info.param).substr(0, std::strlen(info.param) - 3);
                          });

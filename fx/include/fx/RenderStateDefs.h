@@ -54,7 +54,8 @@ FX_RENDER_STATE(SlopeScaleDepthBias, Float, 0)
 FX_RENDER_STATE(ScissorTestEnable, Bool, 0)
 FX_RENDER_STATE(MultiSampleAntialias, Bool, 1)
 // D3D10's rasterizer state, accepted in D3D9-style passes: false clamps depth instead of clipping at the near
-// and far planes (GL_DEPTH_CLAMP), the "pancaking" of casters in front of a light frustum fitted to receivers.
+// and far planes (GL_DEPTH_CLAMP), the "pancaking" of casters in front of a light frustum fitted to
+// receivers.
 FX_RENDER_STATE(DepthClipEnable, Bool, 1)
 FX_RENDER_STATE(StencilEnable, Bool, 0)
 FX_RENDER_STATE(StencilFunc, Cmp, 8)  // ALWAYS
