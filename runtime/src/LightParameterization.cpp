@@ -184,13 +184,11 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     const glm::vec3 viewDir = method == LightParameterization::LiSPSM && tunables.lispsmMiddleVector
                                   ? middleVector(camera, body)
                                   : glm::normalize(camera.target - camera.position);
-    const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
-    const float sinGamma = glm::length(across);
-    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : fixedPerpendicular(lightDir);
-    const glm::vec3 centre = sceneBounds.center();
+    const AlignedLightView aligned = lightViewAcrossView(lightDir, viewDir, sceneBounds);
+    const float sinGamma = aligned.sinGamma;
     const float radius = std::max(sceneBounds.radius(), 1e-3f);
     LightFit fit;
-    fit.view = glm::lookAtLH(centre - lightDir * (2.0f * radius), centre, up);
+    fit.view = aligned.view;
 
     float yMin = std::numeric_limits<float>::max(), yMax = std::numeric_limits<float>::lowest();
     for (const glm::vec3& p : body) {

@@ -5,6 +5,7 @@
 #include <runtime/Scene.h>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,26 @@ inline glm::vec3 fixedPerpendicular(const glm::vec3& direction) {
     const glm::vec3 axis =
         std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
     return glm::normalize(axis - glm::dot(axis, direction) * direction);
+}
+
+// The light view of the focused fits: looking along `lightDir` at the bounds' centre from outside them, its
+// y axis along V_P = `viewDir` made perpendicular to the light (seed 000 eq. 3), so that warps along y run
+// from the viewer's side of B to its far side. sinGamma = |V_P| before normalizing: sin of the angle
+// between light and view, 0 when they are parallel (then y is fixedPerpendicular's).
+struct AlignedLightView {
+    glm::mat4 view{1.0f};
+    float sinGamma = 0.0f;
+};
+inline AlignedLightView lightViewAcrossView(const glm::vec3& lightDir, const glm::vec3& viewDir,
+                                            const Bounds& bounds) {
+    const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
+    AlignedLightView aligned;
+    aligned.sinGamma = glm::length(across);
+    const glm::vec3 up = aligned.sinGamma > 1e-4f ? across / aligned.sinGamma : fixedPerpendicular(lightDir);
+    const glm::vec3 centre = bounds.center();
+    const float radius = std::max(bounds.radius(), 1e-3f);
+    aligned.view = glm::lookAtLH(centre - lightDir * (2.0f * radius), centre, up);
+    return aligned;
 }
 
 // How far from `point` along `direction` the ray leaves the box (0 if it starts outside).

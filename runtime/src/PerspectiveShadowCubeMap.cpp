@@ -4,6 +4,8 @@
 #include <runtime/PerspectiveShadowCubeMap.h>
 #include <runtime/PerspectiveShadowMap.h>
 
+#include "LightSpaceMath.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,13 +65,6 @@ std::vector<glm::dvec3> clip(const std::vector<glm::dvec3>& polygon, const glm::
         if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (da / (da - db)) * (b - a));
     }
     return out;
-}
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
 }
 
 glm::dmat4 fromRows(const glm::dvec4& x, const glm::dvec4& y, const glm::dvec4& z, const glm::dvec4& w) {
@@ -200,7 +195,7 @@ LightFit fitPerspectiveShadowCubeMap(const Scene& scene, const Bounds& sceneBoun
         zHi += zMargin;
         const glm::dvec4 z = (glm::dvec4(0.0, 0.0, 1.0, 0.0) - zLo * w) / (zHi - zLo);
         const LightView faceView{frame->focused.view, glm::mat4(fromRows(x, y, z, w)), 0.0f, 0.0f, true};
-        if (!finite(faceView.projection)) continue;
+        if (!isFinite(faceView.projection)) continue;
         fit.cascades[static_cast<size_t>(face)] = faceView;
         found.used[static_cast<size_t>(face)] = true;
         ++found.facesUsed;
@@ -218,7 +213,7 @@ LightFit fitPerspectiveShadowCubeMap(const Scene& scene, const Bounds& sceneBoun
         ++slot;
     }
     fit.faceSelect = glm::mat4(fromRows(cube[0], cube[1], cube[2], glm::dvec4(0.0, 0.0, 0.0, 1.0)) * view);
-    if (!finite(fit.faceSelect)) return fallBack();
+    if (!isFinite(fit.faceSelect)) return fallBack();
     if (details) *details = found;
     return fit;
 }

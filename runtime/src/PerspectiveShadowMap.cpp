@@ -4,6 +4,8 @@
 // differences of nearly equal numbers there.
 #include <runtime/PerspectiveShadowMap.h>
 
+#include "LightSpaceMath.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -42,13 +44,6 @@ bool fitRectangle(ClipRows& rows, const std::vector<glm::vec3>& points) {
     // ndc' = (ndc - centre) * 2 / extent, i.e. row' = (row - centre w) * 2 / extent.
     rows.x = (rows.x - 0.5 * (hi.x + lo.x) * rows.w) * (2.0 / (hi.x - lo.x));
     rows.y = (rows.y - 0.5 * (hi.y + lo.y) * rows.w) * (2.0 / (hi.y - lo.y));
-    return true;
-}
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
     return true;
 }
 
@@ -242,7 +237,7 @@ LightFit fitPerspectiveShadowMap(const Scene& scene, const Bounds& sceneBounds, 
     LightFit fit;
     fit.view = focused.view;
     fit.projection = glm::mat4(projection);
-    if (!finite(fit.projection)) return focused;
+    if (!isFinite(fit.projection)) return focused;
     if (details) {
         details->postPerspective = postPerspective;
         details->lightPostPerspective = lightPps;

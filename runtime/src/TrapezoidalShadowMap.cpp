@@ -51,14 +51,12 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
     // line (near-plane centre to far-plane centre) into the light's (x, y) plane runs along +y through the
     // eye's x, so the paper's rotation R (top and base parallel to x) is already done.
     const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
-    const glm::vec3 across = viewDir - glm::dot(viewDir, lightDir) * lightDir;
-    const float sinGamma = glm::length(across);
-    const glm::vec3 up = sinGamma > 1e-4f ? across / sinGamma : fixedPerpendicular(lightDir);
-    const glm::vec3 centre = sceneBounds.center();
+    const AlignedLightView aligned = lightViewAcrossView(lightDir, viewDir, sceneBounds);
+    const float sinGamma = aligned.sinGamma;
     const float radius = std::max(sceneBounds.radius(), 1e-3f);
     TrapezoidalFit result;
     LightFit& fit = result.fit;
-    fit.view = glm::lookAtLH(centre - lightDir * (2.0f * radius), centre, up);
+    fit.view = aligned.view;
     auto lightSpace = [&](const glm::vec3& p) { return glm::vec3(fit.view * glm::vec4(p, 1.0f)); };
 
     // The trapezoid encloses the 2D convex hull of every point of the focus body, B and its extrusion

@@ -20,10 +20,8 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = shadowfx::test::kLightFitAspect;
-using shadowfx::test::finite;
-using shadowfx::test::fromAngles;
-using shadowfx::test::terrain;
+using namespace shadowfx::test;  // terrain, fromAngles, finite (LightFitScenes.h)
+constexpr float kAspect = kLightFitAspect;
 constexpr LightParameterization kMethods[] = {LightParameterization::Uniform, LightParameterization::Focused,
                                               LightParameterization::LiSPSM,  LightParameterization::TSM,
                                               LightParameterization::PSM,     LightParameterization::PSMCube,

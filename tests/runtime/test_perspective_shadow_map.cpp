@@ -22,10 +22,8 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = shadowfx::test::kLightFitAspect;
-using shadowfx::test::finite;
-using shadowfx::test::fromAngles;
-using shadowfx::test::terrain;
+using namespace shadowfx::test;  // terrain, fromAngles, finite (LightFitScenes.h)
+constexpr float kAspect = kLightFitAspect;
 
 glm::dvec4 clipOf(const LightFit& fit, const glm::vec3& p) {
     return glm::dmat4(fit.projection) * glm::dmat4(fit.view) * glm::dvec4(glm::dvec3(p), 1.0);

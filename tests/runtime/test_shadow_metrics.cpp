@@ -86,18 +86,25 @@ TEST(ShadowMetrics, ReceiverMaskKeepsCoveredPixelsFacingTheLight) {
     EXPECT_EQ(runtime::receiverMask(gbuffer, light), (std::vector<uint8_t>{1, 0, 0}));
 }
 
-// A plane seen head-on by an orthographic-like grid: every pixel steps 0.1 world units in x and z, and a
-// directional light straight down maps 2 * radius world units onto mapSize texels. One texel therefore
-// covers (2 * radius / mapSize) / 0.1 pixels in both directions.
-TEST(ShadowMetrics, TexelFootprintOfAUniformGridIsTheRatioOfTexelToPixelSize) {
+// A 64 x 64 G-buffer of the plane y = 0 seen head-on: every pixel steps 0.1 world units in x and z, from
+// -`half` to just under 6.4 - `half`.
+runtime::GBuffer planeGrid(float half = 3.2f) {
     runtime::GBuffer gbuffer;
     gbuffer.width = gbuffer.height = 64;
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
-            gbuffer.position.emplace_back(x * 0.1f - 3.2f, 0.0f, y * 0.1f - 3.2f);
+            gbuffer.position.emplace_back(x * 0.1f - half, 0.0f, y * 0.1f - half);
             gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
             gbuffer.objectId.push_back(1);
         }
+    return gbuffer;
+}
+
+// A plane seen head-on by an orthographic-like grid: every pixel steps 0.1 world units in x and z, and a
+// directional light straight down maps 2 * radius world units onto mapSize texels. One texel therefore
+// covers (2 * radius / mapSize) / 0.1 pixels in both directions.
+TEST(ShadowMetrics, TexelFootprintOfAUniformGridIsTheRatioOfTexelToPixelSize) {
+    const runtime::GBuffer gbuffer = planeGrid();
     runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
     runtime::Light light;
     const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
@@ -115,14 +122,7 @@ TEST(ShadowMetrics, TexelFootprintOfAUniformGridIsTheRatioOfTexelToPixelSize) {
 // beyond 0) uses a map of twice the world extent, the near half's texels are twice and the far half's
 // four times the single map's footprint.
 TEST(ShadowMetrics, CascadedFootprintUsesEachReceiversCascade) {
-    runtime::GBuffer gbuffer;
-    gbuffer.width = gbuffer.height = 64;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            gbuffer.position.emplace_back(x * 0.1f - 3.2f, 0.0f, y * 0.1f - 3.2f);
-            gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
-            gbuffer.objectId.push_back(1);
-        }
+    const runtime::GBuffer gbuffer = planeGrid();
     runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
     runtime::Light light;
     const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
@@ -149,14 +149,7 @@ TEST(ShadowMetrics, CascadedFootprintUsesEachReceiversCascade) {
 // of world x, face 1 (x < 0) with a map of twice the world extent: its half of the plane has twice the
 // footprint of the other half, whose footprint is that of six equal faces.
 TEST(ShadowMetrics, CubeFaceFootprintUsesEachReceiversFace) {
-    runtime::GBuffer gbuffer;
-    gbuffer.width = gbuffer.height = 64;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            gbuffer.position.emplace_back(x * 0.1f - 3.15f, 0.0f, y * 0.1f - 3.15f);
-            gbuffer.normal.emplace_back(0.0f, 1.0f, 0.0f);
-            gbuffer.objectId.push_back(1);
-        }
+    const runtime::GBuffer gbuffer = planeGrid(3.15f);  // no pixel on x = 0, where the face changes
     runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
     runtime::Light light;
     const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);

@@ -18,10 +18,8 @@ using namespace runtime;
 
 namespace {
 
-constexpr float kAspect = shadowfx::test::kLightFitAspect;
-using shadowfx::test::finite;
-using shadowfx::test::fromAngles;
-using shadowfx::test::terrain;
+using namespace shadowfx::test;  // terrain, fromAngles, finite (LightFitScenes.h)
+constexpr float kAspect = kLightFitAspect;
 
 glm::vec2 ndc(const LightFit& fit, const glm::vec3& world) {
     const glm::vec4 clip = fit.projection * fit.view * glm::vec4(world, 1.0f);
