@@ -1,5 +1,5 @@
-// back_faces.fx: second-depth shadow mapping (Wang & Molnar; seed 003, "Hátoldalak rajzolása"; seed 001,
-// §2; seed 000, Fig. 6 bottom row): only the faces turned away from the light go into the map, so the
+// back_faces.fx: second-depth shadow mapping (Wang & Molnar; Lehőcz 2007, "Hátoldalak rajzolása"; Weiskopf & Ertl 2003,
+// §2; Scherzer 2005, Fig. 6 bottom row): only the faces turned away from the light go into the map, so the
 // depth a lit surface is tested against is the far side of its own solid, and self-shadowing moves to
 // the far side, which its own shading darkens anyway. It needs closed objects; open ones (the ground
 // plane) are drawn without culling through the pass annotation CullClosedOnly (README, "Writing
@@ -66,7 +66,7 @@ technique main
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.4;  // measured 0.07 % dual-l, 0.19 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     pass ClearShadowMap

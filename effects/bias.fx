@@ -1,5 +1,5 @@
-// bias.fx: the standard shadow map and the biases against self-shadowing ("shadow acne") that seeds 000
-// (Scherzer, §4.2, Fig. 6) and 003 (Lehőcz, "Megoldások az önárnyékolás problémára") compare:
+// bias.fx: the standard shadow map and the biases against self-shadowing ("shadow acne") that Scherzer 2005
+// (§4.2, Fig. 6) and Lehőcz 2007 ("Megoldások az önárnyékolás problémára") compare:
 //
 //   constant      Williams' constant offset: the receiver's depth minus Bias is tested against the map.
 //   slope_state   slope-scale bias as render state: SlopeScaleDepthBias = SlopeScale in the depth pass
@@ -8,9 +8,9 @@
 //                 the receiver's depth as in `constant`: DepthBias's unit on a float depth buffer is
 //                 relative to the depth's exponent (2^-24 only in [0.5, 1)), so as render state it would
 //                 not be the same constant as the other techniques' Bias.
-//   slope_shader  the same bias computed in the pixel shader from m = max(|dz/dx|, |dz/dy|) (seed 003) into
+//   slope_shader  the same bias computed in the pixel shader from m = max(|dz/dx|, |dz/dy|) (Lehőcz 2007) into
 //                 an R32F map (min blending, no depth buffer), for hardware without the render state.
-//   linear_z      slope_shader on linear light depth (seed 000, after TSM). Identical to slope_shader for
+//   linear_z      slope_shader on linear light depth (Scherzer 2005, after TSM). Identical to slope_shader for
 //                 the seeds' directional lights, whose orthographic depth is linear already; it differs
 //                 for spot lights.
 //
@@ -200,7 +200,7 @@ technique constant
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 3.7;  // measured 2.45 % dual-l, 0.78 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     CLEAR_MAP_PASS
@@ -216,7 +216,7 @@ technique slope_state
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.4;  // measured 0.14 % dual-l, 0.19 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     pass RenderShadowDepth
@@ -251,7 +251,7 @@ technique slope_shader
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.4;  // measured 0.14 % dual-l, 0.19 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     CLEAR_MAP_PASS
@@ -268,7 +268,7 @@ technique linear_z
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.4;  // measured 0.14 % dual-l, 0.19 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     CLEAR_MAP_PASS

@@ -1,5 +1,5 @@
 // blurred_receivers.fx: blurred colour channels for receivers (Kozlov, GPU Gems ch. 14, §14.3.2 "Blurring",
-// seed 004, /work/shared/seeds/004_803a1be93f8534eb.txt): "use the color part of the shadow map render ...
+// Kozlov 2004): "use the color part of the shadow map render ...
 // clear the color buffer with 1 ... draw 0 into the color buffer for every object except the landscape; for
 // the landscape, draw 1 ... Blur the picture severely, using multiple passes ... render the landscape with
 // the blurred texture instead of the shadow map, and render all other objects with the depth part of the
@@ -11,7 +11,7 @@
 // G and B are blurred by a separable 9-tap Gaussian (sigma BlurRadiusTexels / 2) into a G16R16F target,
 // once, then BlurLoops more times (LoopByCount, ping-pong); the map-sized depth target stays bound in the
 // blur passes (effects/vsm.fx). Every other object gets bilinear PCF of the depth. The blur's width is
-// fixed: it does not follow the occluder distance, as seed 004 says ("adjust the blurring radius").
+// fixed: it does not follow the occluder distance, as Kozlov 2004 says ("adjust the blurring radius").
 // Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing effects").
 
 #include "include/lighting.fxh"

@@ -1,5 +1,5 @@
-// cascades.fx: cascaded (parallel-split) shadow maps (seed 003, "Kaszádolt shadow map-ek", and seed 000 §1,
-// /work/shared/seeds/): the view depth range is split into four slices and each gets its own orthographic,
+// cascades.fx: cascaded (parallel-split) shadow maps (Lehőcz 2007, "Kaszádolt shadow map-ek", and Scherzer 2005 §1):
+// the view depth range is split into four slices and each gets its own orthographic,
 // stabilized map, all four as 512² tiles of one 1024² atlas: the same texels as focused.fx's single 1024²
 // map, spent near the viewer where the eye sees them large (README, "Light-space parameterizations").
 //

@@ -1,4 +1,4 @@
-// depth_formats.fx: the same constant-bias shadow map stored three ways, to test the argument of seed 003
+// depth_formats.fx: the same constant-bias shadow map stored three ways, to test the argument of Lehőcz 2007
 // ("Lebegőpontos shadow map"): Reeves et al. found float maps self-shadow less than Williams' 16-bit
 // integers, but a float in [0, 1] is only as precise as a fixed-point number with as many bits as its
 // mantissa in the far half of the range (23 bits for IEEE single precision), so 32-bit floats beat 16-bit
@@ -164,7 +164,7 @@ technique d16
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 3.7;  // measured 2.45 % dual-l, 0.78 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     DEPTH_TARGET_PASS(Depth16)
@@ -180,7 +180,7 @@ technique d24
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 3.7;  // measured 2.45 % dual-l, 0.78 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     DEPTH_TARGET_PASS(Depth24)
@@ -197,7 +197,7 @@ technique r32f
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 3.7;  // measured 2.45 % dual-l, 0.78 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     pass ClearShadowMap

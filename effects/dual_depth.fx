@@ -1,4 +1,4 @@
-// dual_depth.fx: dual shadow maps (Weiskopf & Ertl, seed 001, §4–5): the map stores
+// dual_depth.fx: dual shadow maps (Weiskopf & Ertl 2003, §4–5): the map stores
 // z_dual = z1 + min((z2 - z1) / 2, z_offset) from the two depth layers z1, z2 nearest the light, an
 // adaptive bias that is the midpoint's where occluder and receiver are close and a constant offset where
 // the second layer is far away.
@@ -6,7 +6,7 @@
 //   peel         z2 by depth peeling, as the paper implements it (§5): two geometry passes and a combine
 //   peel_cull    the same with back faces of closed objects culled (open ones, the ground plane, stay
 //                unculled: pass annotation CullClosedOnly), the paper's best variant (Fig. 5 (f))
-//   single_pass  seed 003's variant ("Midpoint shadow mapping"): one geometry pass writes front-facing
+//   single_pass  Lehőcz 2007's variant ("Midpoint shadow mapping"): one geometry pass writes front-facing
 //                depths into red and back-facing ones into green of an RG32F target with BlendOp=min, so
 //                red keeps the nearest front face (z1) and green the nearest back face, which for closed
 //                objects is where the ray leaves the first solid (z2); the scene pass combines them.
@@ -85,7 +85,7 @@ technique peel
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.8;  // measured 0.53 % dual-l, 0.34 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     PEELING_PASSES(None, false, Offset)
@@ -100,7 +100,7 @@ technique peel_cull
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.52;  // measured 0.07 % dual-l, 0.32 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     PEELING_PASSES(CCW, true, Offset)
@@ -117,7 +117,7 @@ technique single_pass
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.8;  // measured 0.53 % dual-l, 0.22 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     pass ClearFrontBack

@@ -1,5 +1,5 @@
-// eye_space_blur.fx: the eye-space shadow blur of Scherzer (seed 000, §4.3 "Projection aliasing",
-// /work/shared/seeds/000_e192ed44df49f96c.txt): "map the shadow map in eye space onto unlit, unicoloured
+// eye_space_blur.fx: the eye-space shadow blur of (Scherzer 2005, §4.3 "Projection aliasing"):
+// "map the shadow map in eye space onto unlit, unicoloured
 // geometry, generating a grey-scale image of the mapped shadows ... This image can be blurred repeatedly to
 // generate a 2D-texture that can be applied as an intensity lookup texture for the lighting calculation in
 // the final rendering" (Fig. 7, 8). Fig. 8's 1x ... 16x blur iterations are `Iterations` (LoopByCount over

@@ -1,12 +1,12 @@
-// focused.fx: a directional light's shadow map focused on what the camera sees (seed 000 §4.1,
-// /work/shared/seeds/000_e192ed44df49f96c.txt): an orthographic fit to the intersection body B = view
+// focused.fx: a directional light's shadow map focused on what the camera sees (Scherzer 2005 §4.1):
+// an orthographic fit to the intersection body B = view
 // frustum ∩ scene bounds, extruded toward the light so that every caster of a visible shadow is in the map.
 // The same texels as pcf.fx's `bilinear`, spent on B instead of the whole scene (README, "Light-space
 // parameterizations").
 #define LIGHT_PARAMETERIZATION "Focused"
 #include "include/lightspace.fxh"
 
-// Pancaking (seed 000 §4.1): the map's depth range spans the receivers only; casters before them are
+// Pancaking (Scherzer 2005 §4.1): the map's depth range spans the receivers only; casters before them are
 // clamped onto its near plane by the map pass's DepthClipEnable = false (lightspace.fxh).
 bool Pancake : LightPancaking
 <

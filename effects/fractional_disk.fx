@@ -1,5 +1,5 @@
-// fractional_disk.fx: soft shadows by the lit fraction of a disk (Valient & de Boer, seed 002,
-// /work/shared/seeds/002_e228412f9d141615.txt): the light reaching a receiver point P from a disk light of
+// fractional_disk.fx: soft shadows by the lit fraction of a disk (Valient & de Boer 2004):
+// the light reaching a receiver point P from a disk light of
 // radius r is taken as the lit fraction of a disk of radius q = (d2 / d1) r around P, lit by a point light
 // at the disk light's centre (d1: occluder to light, d2: receiver to occluder; "Soft shadows" and Fig. 1b).
 // The disk is sampled stochastically with ⌈π q² / a⌉ samples (eq. 2), clamped to MaxSamples.
@@ -11,7 +11,7 @@
 //                 gets the minimum depth of its 3x3 neighbourhood (the occluder) in G and distance 0 in B.
 //                 (3) Propagation: G becomes the minimum over the 3x3 texels `step` apart, B the minimum of
 //                 their distances + step, so the nearest occluder and the distance to the boundary spread
-//                 from the edges (seed 002: "repeated ... depends on the largest allowed penumbra radius").
+//                 from the edges (Valient & de Boer 2004: "repeated ... depends on the largest allowed penumbra radius").
 //                 The paper steps one texel per pass; here the steps halve (2^(n-1), ..., 2, 1, each run
 //                 twice, ping-pong, after one step-1 pass), jump flooding, so 2n + 1 passes reach
 //                 2 (2^n - 1) + 1 texels instead of 2n + 1: the preprocessing over a 1024² map is the
@@ -24,7 +24,7 @@
 //                 otherwise q-disk PCF with the "penetrating disk" correction: an occluded sample C whose own
 //                 disk (radius from C's occluder depth) does not contain P cannot hide any of the light from
 //                 P, and counts as lit.
-//   direct        without preprocessing (seed 002, "Implementation without preprocessing"): a shadowed
+//   direct        without preprocessing (Valient & de Boer 2004, "Implementation without preprocessing"): a shadowed
 //                 receiver takes d2 from its own map texel; a lit one first searches the disk of the largest
 //                 radius for the largest d2 (the paper's "more correct" variant, not the minimum: the map
 //                 holds back faces), then filters with the q that gives. No early out.
@@ -221,7 +221,7 @@ float WorldDepthRange()
     return LightViewDepth(1.0) - LightViewDepth(0.0);
 }
 
-// q in texels for a receiver at linear depth `receiver` and an occluder at `occluder` (seed 002, eq. 1),
+// q in texels for a receiver at linear depth `receiver` and an occluder at `occluder` (Valient & de Boer 2004, eq. 1),
 // at the receiver's texel scale, clamped to [MinRadiusTexels, MaxRadiusTexels].
 float DiskRadiusTexels(float receiver, float occluder, float receiverViewDepth, float texelsPerUnit)
 {

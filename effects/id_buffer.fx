@@ -1,4 +1,4 @@
-// id_buffer.fx: the priority (ID) buffer of Hourcade & Nicolas (seed 003, "ID-puffer"; seed 001, §2): the
+// id_buffer.fx: the priority (ID) buffer of Hourcade & Nicolas (Lehőcz 2007, "ID-puffer"; Weiskopf & Ertl 2003, §2): the
 // map stores which object is nearest the light, not how near, and a receiver is lit exactly where the map
 // names the receiver itself. Depth precision and bias no longer matter, but one id per object means an
 // object never shadows itself (concave self-shadowing is lost), which is the method's known limit.
@@ -69,7 +69,7 @@ technique main
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 1.2;  // measured 0.43 % dual-l, 0.80 % double-torus
-    int ExpectMapSize = 256;   // heavily undersampled, as in seed 001, Fig. 5-6
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
 >
 {
     pass RenderIdMap

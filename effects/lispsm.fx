@@ -1,12 +1,12 @@
-// lispsm.fx: light space perspective shadow maps (Wimmer et al.; seed 000 §4.4 and seed 003,
-// /work/shared/seeds/): the focused fit of focused.fx followed by a perspective warp along the view
+// lispsm.fx: light space perspective shadow maps (Wimmer et al. 2004; Scherzer 2005 §4.4 and Lehőcz 2007):
+// the focused fit of focused.fx followed by a perspective warp along the view
 // direction made perpendicular to the light, with n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Near the
 // viewer it spends more texels, far away fewer; as the light turns parallel to the view (γ -> 0) the warp
 // fades out and the map becomes focused.fx's (README, "Light-space parameterizations").
 #define LIGHT_PARAMETERIZATION "LiSPSM"
 #include "include/lightspace.fxh"
 
-// Pancaking (seed 000 §4.1): the map's depth range spans the receivers only; casters before them are
+// Pancaking (Scherzer 2005 §4.1): the map's depth range spans the receivers only; casters before them are
 // clamped onto its near plane by the map pass's DepthClipEnable = false (lightspace.fxh).
 bool Pancake : LightPancaking
 <
@@ -22,7 +22,7 @@ float NScale : LiSPSMNScale
     float UIMax = 8.0;
 > = 1.0;
 
-// V_P from B's middle vector (seed 000 §4.4, the paper's own choice) instead of eq. 3's view direction.
+// V_P from B's middle vector (Scherzer 2005 §4.4, the paper's own choice) instead of eq. 3's view direction.
 bool MiddleVector : LiSPSMMiddleVector
 <
     string UIName = "LiSPSM middle vector";

@@ -1,14 +1,14 @@
 // pcf.fx: percentage-closer filtering (Reeves 1987) of a light-space depth map, five ways:
 //
-//   bilinear        the four nearest texels, weighted by the fractional texel position (seed 001, §4; seed 003,
+//   bilinear        the four nearest texels, weighted by the fractional texel position (Weiskopf & Ertl 2003, §4; Lehőcz 2007,
 //                   "Percentage closer filtering"; the thesis listing's PCF switch)
 //   hardware        a depth target sampled through a comparison sampler with LINEAR filtering: the GPU does
 //                   the same 2x2 bilinear PCF (NVIDIA's D3D9 hardware shadow maps, the thesis's `hardware`)
-//   jittered4x4     16 tests on a 4x4 grid with a fixed jitter matrix, KernelRadius texels wide (seed 001)
+//   jittered4x4     16 tests on a 4x4 grid with a fixed jitter matrix, KernelRadius texels wide (Weiskopf & Ertl 2003)
 //   jittered_noise  the same grid, each sample's jitter read from a noise texture addressed in light space,
-//                   so the pattern is fixed to the surface and does not crawl between frames (seed 003)
+//                   so the pattern is fixed to the surface and does not crawl between frames (Lehőcz 2007)
 //   poisson         PoissonSamples (1..32) tests on a Poisson disk of KernelRadius texels, rotated per
-//                   receiver by the light-space noise (seed 002's stochastic PCF with a noise map)
+//                   receiver by the light-space noise (Valient & de Boer 2004's stochastic PCF with a noise map)
 //
 // The depth map is an R32F colour target holding light clip-space depth, rendered with a depth buffer.
 // The depth comparison is offset by Bias plus SlopeBias x the kernel's footprint in depth (wider kernels

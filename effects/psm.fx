@@ -1,5 +1,5 @@
-// psm.fx: perspective shadow maps (Stamminger & Drettakis; Kozlov, "Perspective Shadow Maps: Care and
-// Feeding", seed 004 §14.2, /work/shared/seeds/004_803a1be93f8534eb.txt): the map is rendered in the
+// psm.fx: perspective shadow maps (Stamminger & Drettakis 2002; Kozlov, "Perspective Shadow Maps: Care and
+// Feeding", Kozlov 2004 §14.2): the map is rendered in the
 // camera's post-perspective space, where the sun becomes a point (an inverted one when it shines from behind
 // the viewer), so near receivers get more texels than far ones. The runtime's PSM provider
 // (runtime/PerspectiveShadowMap.h) adds Kozlov's inverse projection for casters behind the viewer, the
@@ -9,7 +9,7 @@
 #define LIGHTSPACE_SCENE_PS PsmBilinearPS
 #include "include/lightspace.fxh"
 
-// Slide-back of the virtual camera behind the eye, world units (seed 004 §14.2.1): larger spends fewer
+// Slide-back of the virtual camera behind the eye, world units (Kozlov 2004 §14.2.1): larger spends fewer
 // texels near the viewer and more far away; < 0 = automatic (sqrt(z_n z_f) of the receivers' depths).
 float SlideBack : PSMSlideBack
 <
@@ -28,7 +28,7 @@ float MaxWarpRatio : PSMMaxWarpRatio
     float UIMax = 1000.0;
 > = 100.0;
 
-// The world size of one shadow-map texel at the receiver, L_texel of seed 004 §14.2.3: the light's clip
+// The world size of one shadow-map texel at the receiver, L_texel of Kozlov 2004 §14.2.3: the light's clip
 // x, y, w depend on the light-view x, y only, so NDC moves by the 2x2 Jacobian J of (x/w, y/w) per world
 // unit across the light, and a texel (2 / ShadowMapSize NDC units on a side) covers an area of side
 // 2 / (ShadowMapSize sqrt|det J|). lightspace.fxh's BiasedDepth reads only _11, which is exact for an
@@ -44,7 +44,7 @@ float PsmTexelWorld(float4 LP)
     return 2.0 / (ShadowMapSize.x * sqrt(max(abs(J[0].x * J[1].y - J[0].y * J[1].x), 1e-20)));
 }
 
-// Seed 004 §14.2.3: a world-space bias along the light scaled by the texel's world size, moved into the
+// Kozlov 2004 §14.2.3: a world-space bias along the light scaled by the texel's world size, moved into the
 // map's depth (NDC depth changes by _33 / w per world unit along the light, w constant along it), plus the
 // receiver-plane bias of lightspace.fxh.
 float PsmBiasedDepth(SceneVertexOutput IN)

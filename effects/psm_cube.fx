@@ -1,5 +1,5 @@
 // psm_cube.fx: perspective shadow maps with a cube map around the light (Kozlov, "Perspective Shadow Maps:
-// Care and Feeding", seed 004 §14.2.2, /work/shared/seeds/004_803a1be93f8534eb.txt): in the camera's
+// Care and Feeding", Kozlov 2004 §14.2.2): in the camera's
 // post-perspective space the sun is a point L', and six 90-degree perspectives from L' (a "cube map with
 // displaced centre") hold the receivers however close L' comes to them, where psm.fx's single map has to
 // fade into focused.fx's (README, "Light-space parameterizations").
@@ -33,7 +33,7 @@ float Script : STANDARDSGLOBAL
 > = 0.8;
 
 // [SECTION] Tweakables
-// Slide-back of the virtual camera behind the eye, world units (seed 004 §14.2.1; psm.fx): < 0 = automatic.
+// Slide-back of the virtual camera behind the eye, world units (Kozlov 2004 §14.2.1; psm.fx): < 0 = automatic.
 float SlideBack : PSMSlideBack
 <
     string UIWidget = "slider";
@@ -121,7 +121,7 @@ float FaceShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
     float2 tileOrigin = round(rect.xy / rect.zw) * tileSize;
     float4 clip = mul(float4(world, 1.0), M);
     float3 ndc = clip.xyz / clip.w;
-    // Seed 004 §14.2.3: a world-space bias along the light scaled by the texel's world size. A face's x, y
+    // Kozlov 2004 §14.2.3: a world-space bias along the light scaled by the texel's world size. A face's x, y
     // and w do not change along the light (its view's z axis), so the texel's side is 1 / sqrt|det J| for
     // J the texels per world unit across the light (its view's x and y axes), and depth changes by
     // M (along).z / w per world unit along it.

@@ -1,4 +1,4 @@
-// thesis_fxcomposer.fx: the shadow-mapping effect of Lehőcz's thesis (seed 003, "Forráskódok"), written
+// thesis_fxcomposer.fx: the shadow-mapping effect of Lehőcz's thesis (Lehőcz 2007, "Forráskódok"), written
 // for shadowfx in the form of that FX Composer 1.8 listing, which reached us with page-break damage.
 //
 // Technique `main` follows the listing: a float render target is cleared to ZMaxValue, the shadow map is
@@ -292,9 +292,9 @@ technique main
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
     // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
-    // follow the ground's depth slope under a sun 0.5 degrees high (seed 003, "Slope-scale bias"); a
+    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
     // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
-    // the camera (seed 004, §14.2; the parameterizations of issue #6 attack it).
+    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
 >
@@ -365,9 +365,9 @@ technique hardware
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
-    // follow the ground's depth slope under a sun 0.5 degrees high (seed 003, "Slope-scale bias"); a
+    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
     // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
-    // the camera (seed 004, §14.2; the parameterizations of issue #6 attack it).
+    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
 >

@@ -1,4 +1,4 @@
-// tsm.fx: trapezoidal shadow maps (Martin & Tan; seed 003, /work/shared/seeds/003_2eefc9356b32647d.txt):
+// tsm.fx: trapezoidal shadow maps (Martin & Tan 2004; Lehőcz 2007):
 // in the light view of focused.fx, a trapezoid around the focus body whose top lies on the viewer's side is
 // warped onto the square so that the nearest TSMFocus of what the camera sees gets 80% of the map's height
 // (the 80% rule). Depth stays z/w with w constant along each light ray; as the light turns into the view

@@ -1,5 +1,5 @@
-// vsm.fx: variance shadow maps (Donnelly & Lauritzen 2006; seed 003, "Szórásnégyzet shadow map-ek",
-// /work/shared/seeds/003_2eefc9356b32647d.txt): the light's depth map stores the moments (z, z^2) in RG32F and
+// vsm.fx: variance shadow maps (Donnelly & Lauritzen 2006; Lehőcz 2007, "Szórásnégyzet shadow map-ek"):
+// the light's depth map stores the moments (z, z^2) in RG32F and
 // the receiver takes the Chebyshev upper bound (include/vsm.fxh), so the map can be filtered like colour:
 //
 //   vsm       bilinear filtering of the moments

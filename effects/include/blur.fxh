@@ -1,6 +1,6 @@
 // blur.fxh: a separable box blur for full-screen (Draw=Buffer) passes: run it once along x into a second
 // target and once along y back, ping-pong, for a taps x taps box filter at 2 x taps texel reads. Used to
-// pre-filter variance shadow maps (seed 003: "a separable convolution filter to blur the shadow edges").
+// pre-filter variance shadow maps (Lehőcz 2007: "a separable convolution filter to blur the shadow edges").
 //
 //   pass BlurX < string Script = "RenderColorTarget0=Temp; Draw=Buffer;"; > { PixelShader = compile
 //       ps_3_0 BlurXPS(); }   // with  float4 BlurXPS(BufferVertex IN) : COLOR

@@ -1,4 +1,4 @@
-// depth_peeling.fxh: the two depth layers closest to the light, found by depth peeling as seed 001 (§5)
+// depth_peeling.fxh: the two depth layers closest to the light, found by depth peeling as Weiskopf & Ertl 2003 (§5)
 // describes for dual shadow maps: the first pass stores the nearest depth z1; the second renders the scene
 // again and discards every fragment whose depth equals the stored z1 (up to PeelEpsilon), so that the
 // min-blended target keeps z2, the nearest depth behind it; a full-screen pass then combines z1 and z2
@@ -98,7 +98,7 @@ float4 CombineLayersPS(QuadVertex IN, uniform float zOffset) : COLOR
     return float4(DualDepth(z1, z2, zOffset), 0, 0, 1);
 }
 
-// The bias is in the combined map: the test is the plain one (seed 001, eq. 3: z_frag < z_dual).
+// The bias is in the combined map: the test is the plain one (Weiskopf & Ertl 2003, eq. 3: z_frag < z_dual).
 float4 LayeredShadowPS(ReceiverVertexOutput IN) : COLOR
 {
     return ReceiverColor(IN, ShadowTest(ShadowMapSampler, ShadowMapUV(IN.LP), ReceiverDepth(IN)));
@@ -106,7 +106,7 @@ float4 LayeredShadowPS(ReceiverVertexOutput IN) : COLOR
 
 // [SECTION] Passes: PEELING_PASSES(cull, closedOnly, zOffset) gives the passes ClearLayers,
 // RenderFirstLayer, RenderSecondLayer, CombineLayers and RenderScene. `cull` is the layer passes' CullMode
-// (None, or CCW for seed 001's back-face culling), `closedOnly` their CullClosedOnly annotation (open
+// (None, or CCW for Weiskopf & Ertl 2003's back-face culling), `closedOnly` their CullClosedOnly annotation (open
 // objects stay unculled), `zOffset` the dual map's offset (a huge one gives the midpoint map).
 #define PEEL_LAYER_PASS(passName, target, pixelShader, cull, closedOnly) \
     pass passName \

@@ -27,7 +27,7 @@ float LightDepth(LightDepthVertexOutput IN)
     return IN.Depth.x / IN.Depth.y;
 }
 
-// Linear depth (seed 000, §4.2, after TSM; seed 003, "Megoldások az önárnyékolás problémára": a light-space
+// Linear depth (Scherzer 2005, §4.2, after TSM; Lehőcz 2007, "Megoldások az önárnyékolás problémára": a light-space
 // bias suits near casters but not far ones when the stored depth is z/w): view-space z mapped linearly
 // from the light's near plane (0) to its far plane (1). A D3D LH perspective projection has _33 = f/(f-n),
 // _43 = -n f/(f-n) and _34 = 1; an orthographic one (_34 = 0) is linear already, so its clip z is returned.
@@ -40,7 +40,7 @@ float LinearLightDepth(float viewZ, float clipZ)
     return (viewZ - zNear) / (zFar - zNear);
 }
 
-// Slope-scale bias computed in the shader (seed 003: m = max(|dz/dx|, |dz/dy|), the depth slope per
+// Slope-scale bias computed in the shader (Lehőcz 2007: m = max(|dz/dx|, |dz/dy|), the depth slope per
 // shadow-map texel; "in practice the total bias is m times a factor plus a constant"): what D3D's
 // SlopeScaleDepthBias + DepthBias and OpenGL's glPolygonOffset(factor, units) add in the rasterizer.
 float SlopeScaledDepth(float z, float constantBias, float slopeScale)
@@ -49,8 +49,8 @@ float SlopeScaledDepth(float z, float constantBias, float slopeScale)
     return z + constantBias + slopeScale * m;
 }
 
-// The dual shadow map's depth (seed 001, eq. 2 and 4): z_dual = z1 + min((z2 - z1) / 2, z_offset). With an
-// infinite offset this is Woo's midpoint map (seed 001, §3). A second layer in front of the first (the
+// The dual shadow map's depth (Weiskopf & Ertl 2003, eq. 2 and 4): z_dual = z1 + min((z2 - z1) / 2, z_offset). With an
+// infinite offset this is Woo's midpoint map (Weiskopf & Ertl 2003, §3). A second layer in front of the first (the
 // single-pass variant where the nearest surface faces away from the light) gets no bias rather than a
 // negative one.
 float DualDepth(float z1, float z2, float zOffset)

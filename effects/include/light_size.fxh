@@ -52,7 +52,7 @@ float TexelsPerWorldUnit(float4 receiverClip, float mapSize)
 }
 
 // Penumbra radius, in world units on the receiver, of an occluder `receiverDepth - blockerDepth` in front of
-// the receiver: seed 002's q = (d2 / d1) r (eq. 1, Fig. 1b; /work/shared/seeds/002_e228412f9d141615.txt) with
+// the receiver: Valient & de Boer 2004's q = (d2 / d1) r (eq. 1, Fig. 1b) with
 // d2 the receiver's distance to the occluder and d1 the occluder's to the light; Fernando's PCSS estimate.
 // A directional light's disk stays ReceiverToLight from every receiver (it has an angular size, r / D, not a
 // position), so the cone from a receiver to it has radius r d2 / D at the occluder: q = r d2 / D.

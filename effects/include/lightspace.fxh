@@ -29,7 +29,7 @@ float Script : STANDARDSGLOBAL
 > = 0.8;
 
 // [SECTION] Tweakables
-// The depth bias follows the texel (see BiasedDepth; seed 004 §14.2.3 scales a world-space bias by the
+// The depth bias follows the texel (see BiasedDepth; Kozlov 2004 §14.2.3 scales a world-space bias by the
 // texel size): a focused or warped map has texels of very different sizes across the scene and depth
 // ranges unlike the uniform map's, so a constant NDC bias (pcf.fx) is too small in one place and too large
 // in another.

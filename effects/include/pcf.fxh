@@ -7,8 +7,8 @@
 #ifndef SHADOWFX_PCF_FXH
 #define SHADOWFX_PCF_FXH
 
-// The 4x4 jitter matrix of seed 001 (Weiskopf & Ertl, §4: "a filtering by a 4x4 jitter matrix ... based
-// on an ATI shadow demo", /work/shared/seeds/001_9da28be11ec45009.txt): one sample per cell of a 4x4 grid
+// The 4x4 jitter matrix of Weiskopf & Ertl 2003 (Weiskopf & Ertl, §4: "a filtering by a 4x4 jitter matrix ... based
+// on an ATI shadow demo" ): one sample per cell of a 4x4 grid
 // over [-1, 1]^2, each moved by a fixed offset inside its cell so that the samples do not line up in rows
 // and columns (stratified sampling). Offsets in cell units, from a fixed table (no runtime randomness).
 static const float2 kJitter4x4[16] = {
@@ -24,7 +24,7 @@ float2 GridSample4x4(int i, float2 jitter)
     return (cell + jitter) * 0.5 - 1.0;
 }
 
-// 16 point tests on the jittered 4x4 grid spanning `radius` texels around `uv` (seed 001).
+// 16 point tests on the jittered 4x4 grid spanning `radius` texels around `uv` (Weiskopf & Ertl 2003).
 float ShadowTestJittered4x4(sampler2D shadowMap, float2 uv, float depth, float2 mapSize, float radius)
 {
     float lit = 0;
@@ -34,9 +34,9 @@ float ShadowTestJittered4x4(sampler2D shadowMap, float2 uv, float depth, float2 
 }
 
 // The same 4x4 grid with per-sample offsets read from a noise texture addressed by the receiver's
-// light-space position (seed 003, "Percentage closer filtering": "address the noise texture in light space
+// light-space position (Lehőcz 2007, "Percentage closer filtering": "address the noise texture in light space
 // by x, y, so two consecutive frames get the same random number at the same place"; animated noise draws
-// attention to the shadow's edges, /work/shared/seeds/003_2eefc9356b32647d.txt). `noiseUV` is that
+// attention to the shadow's edges ). `noiseUV` is that
 // light-space address; each sample reads its own texel by a fixed step through the texture.
 float ShadowTestNoiseJittered(sampler2D shadowMap, sampler2D noise, float2 uv, float2 noiseUV, float depth,
                               float2 mapSize, float radius)

@@ -2,7 +2,7 @@
 //
 // Texture conventions (D3D10 and OpenGL, which shadowfx follows): texel centres lie at (i + 0.5) / size, and
 // v = 0 is the top row of a render target. D3D9 put texel centres at integer coordinates, which is why the
-// thesis listing (seed 003, "Forráskódok") adds 0.5 / SHADOW_SIZE to its lookups; here that offset is gone.
+// thesis listing (Lehőcz 2007, "Forráskódok") adds 0.5 / SHADOW_SIZE to its lookups; here that offset is gone.
 #ifndef SHADOWFX_SHADOWMAP_FXH
 #define SHADOWFX_SHADOWMAP_FXH
 
@@ -18,7 +18,7 @@ float ShadowTest(sampler2D shadowMap, float2 uv, float depth)
     return tex2D(shadowMap, uv).x >= depth ? 1.0 : 0.0;
 }
 
-// Bilinear percentage-closer filtering (seed 003, "Percentage closer filtering"): the four nearest texels
+// Bilinear percentage-closer filtering (Lehőcz 2007, "Percentage closer filtering"): the four nearest texels
 // are compared with `depth` and the results are weighted by the fractional texel position of `uv`.
 float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 mapSize)
 {

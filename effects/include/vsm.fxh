@@ -1,5 +1,5 @@
-// vsm.fxh: variance shadow maps (Donnelly & Lauritzen 2006, as seed 003 presents them: "Szórásnégyzet
-// shadow map-ek", /work/shared/seeds/003_2eefc9356b32647d.txt). The map stores the first two moments of
+// vsm.fxh: variance shadow maps (Donnelly & Lauritzen 2006, as Lehőcz 2007 presents them: "Szórásnégyzet
+// shadow map-ek" ). The map stores the first two moments of
 // depth (E[z], E[z^2]) in RG32F — the thesis recommends two 32-bit float channels for numerical stability —
 // so it can be filtered like a colour texture (bilinear, mipmaps, a separable blur). A receiver at depth t
 // is lit at most with the one-tailed Chebyshev bound

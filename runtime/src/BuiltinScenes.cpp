@@ -80,7 +80,7 @@ Scene makeTeapotScene() {
     const glm::mat4 world = restingOnGround(teapot, 0.0f, 0.0f);
     scene.objects.push_back(
         placeObject("teapot", share(std::move(teapot)), world, glm::vec3(0.8f, 0.8f, 0.85f), 2));
-    // Seed 003's figures: the teapot seen from the front, a little from above and to the spout's side.
+    // Lehőcz 2007's figures: the teapot seen from the front, a little from above and to the spout's side.
     scene.camera.position = glm::vec3(2.5f, 4.0f, -7.0f);
     scene.camera.target = glm::vec3(0.0f, 0.8f, 0.0f);
     scene.lights.push_back(fittedDirectionalLight(glm::vec3(-0.5f, -1.0f, 0.35f), scene.bounds()));

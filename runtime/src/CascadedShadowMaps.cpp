@@ -64,7 +64,7 @@ std::pair<glm::vec3, float> sliceSphere(const Camera& camera, float aspect, floa
 }  // namespace
 
 // Zhang et al. 2006 (parallel-split shadow maps; not among the seeds): the logarithmic split keeps the
-// ratio z_{i+1} / z_i constant (seed 003's "twice the distance" with ratio (f/n)^(1/N)), the uniform one
+// ratio z_{i+1} / z_i constant (Lehőcz 2007's "twice the distance" with ratio (f/n)^(1/N)), the uniform one
 // the difference, and the practical scheme averages them with weight λ.
 std::vector<float> cascadeSplitDepths(float nearPlane, float farPlane, int count, float lambda) {
     count = std::clamp(count, 1, kMaxCascades);

@@ -1143,7 +1143,7 @@ private:
 
     // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight) meshes
     // only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual depth
-    // layers with back-face culling (seed 001, §4: "back face culling for solid objects can be mixed with
+    // layers with back-face culling (Weiskopf & Ertl 2003, §4: "back face culling for solid objects can be mixed with
     // non-culled open surfaces in the same scene") need both in one pass: a culled open plane would vanish.
     bool cullsClosedObjectsOnly(const fx::CompiledPass& pass) const {
         const auto& passes = mImpl.compiled->techniques[mTechnique].passes;

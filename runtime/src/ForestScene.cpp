@@ -1,4 +1,4 @@
-// "forest": Scherzer's test scene (seed 000, §5: "an outdoor environment that contains 10.000 tree-like
+// "forest": Scherzer's test scene (Scherzer 2005, §5: "an outdoor environment that contains 10.000 tree-like
 // objects ... lit by one directional light source ... 512x512 pixel viewport ... 2048x2048 pixel shadow
 // map ... field of view 60°, near plane 0.1, far plane 70").
 //

@@ -1,5 +1,5 @@
 // InstanceBvh: a bounding-volume hierarchy over the world-space boxes of a scene's objects, so that a pass
-// finds the objects it must draw without testing all of them (seed 000's forest: 10,000 trees).
+// finds the objects it must draw without testing all of them (Scherzer 2005's forest: 10,000 trees).
 //
 // Built once per scene state (EffectRenderer rebuilds it when the scene's stamp changes); median split on
 // the longest axis of the boxes' centres, up to four objects per leaf. Queries take a conservative box

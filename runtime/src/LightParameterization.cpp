@@ -36,7 +36,7 @@ void widen(float& lo, float& hi, float absolute) {
     hi += margin;
 }
 
-// Seed 000 §4.4's "middle vector" of B: the direction from the eye into the middle of B's volume, found as
+// Scherzer 2005 §4.4's "middle vector" of B: the direction from the eye into the middle of B's volume, found as
 // the sum of the vectors from the eye to B's vertices (the first half of focusBody's points; the far ones
 // weigh more, as the seed wants). The view direction where that sum vanishes (the eye inside a symmetric B).
 glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body) {
@@ -47,7 +47,7 @@ glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body)
 }
 
 // A spot light keeps its perspective and its depth range; Focused (and LiSPSM, without a warp) crop its
-// window to the receivers of B clipped by the light frustum (seed 000 §4.1). Every caster of a shadow on a
+// window to the receivers of B clipped by the light frustum (Scherzer 2005 §4.1). Every caster of a shadow on a
 // receiver lies on the segment from that receiver to the light, and the whole segment projects onto the
 // receiver's map position, so the receivers' window holds all casters. The window is the tighter of two
 // conservative ones: the light frustum ∩ B's bounding box, and, when all of B lies before the light's
@@ -124,8 +124,8 @@ const char* lightParameterizationName(LightParameterization method) {
     return "Uniform";
 }
 
-// Seed 000 §4.4 eq. 1 (/work/shared/seeds/000_e192ed44df49f96c.txt) with Δz = d · sin γ as in the LiSPSM
-// reference code (seed 003): 1 / n_opt = sin γ / (z_n + sqrt(z_n (z_n + Δz))).
+// Scherzer 2005 §4.4 eq. 1 with Δz = d · sin γ as in the LiSPSM
+// reference code (Lehőcz 2007): 1 / n_opt = sin γ / (z_n + sqrt(z_n (z_n + Δz))).
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma) {
     const float zn = std::max(nearPlane, 1e-6f);
     return std::max(sinGamma, 0.0f) / (zn + std::sqrt(zn * (zn + std::max(depthExtent, 0.0f))));
@@ -179,7 +179,7 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     if (light.type != Light::Type::Directional) return cropToReceivers(uniform, body);
 
     // Light space with y along V_P = (L x V) x L, the view direction made perpendicular to the light
-    // (seed 000 eq. 3), so that the warp below runs from the viewer's side of B to its far side.
+    // (Scherzer 2005 eq. 3), so that the warp below runs from the viewer's side of B to its far side.
     const Camera& camera = scene.camera;
     const glm::vec3 viewDir = method == LightParameterization::LiSPSM && tunables.lispsmMiddleVector
                                   ? middleVector(camera, body)

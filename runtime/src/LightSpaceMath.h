@@ -23,7 +23,7 @@ inline glm::vec3 fixedPerpendicular(const glm::vec3& direction) {
 }
 
 // The light view of the focused fits: looking along `lightDir` at the bounds' centre from outside them, its
-// y axis along V_P = `viewDir` made perpendicular to the light (seed 000 eq. 3), so that warps along y run
+// y axis along V_P = `viewDir` made perpendicular to the light (Scherzer 2005 eq. 3), so that warps along y run
 // from the viewer's side of B to its far side. sinGamma = |V_P| before normalizing: sin of the angle
 // between light and view, 0 when they are parallel (then y is fixedPerpendicular's).
 struct AlignedLightView {

@@ -1,5 +1,5 @@
-// PerspectiveShadowMap: the PSM fit of a directional light (see the header; seed 004 §14.2,
-// /work/shared/seeds/004_803a1be93f8534eb.txt). Computed in double precision: C of a camera with
+// PerspectiveShadowMap: the PSM fit of a directional light (see the header; Kozlov 2004 §14.2,
+//). Computed in double precision: C of a camera with
 // z_f / z_n ~ 1000 puts the light within ~1e-3 of the unit cube, and the light camera's rows are
 // differences of nearly equal numbers there.
 #include <runtime/PerspectiveShadowMap.h>
@@ -24,7 +24,7 @@ struct ClipRows {
 };
 
 // Scales and offsets rows x and y so that the NDC of `points` spans [-1, 1] (the bounding rectangle of
-// unit-cube clipping, seed 004 §14.2.2), widened by a relative margin so that the rounding of the matrix
+// unit-cube clipping, Kozlov 2004 §14.2.2), widened by a relative margin so that the rounding of the matrix
 // products keeps boundary points inside. False if the points have no extent across the light.
 bool fitRectangle(ClipRows& rows, const std::vector<glm::vec3>& points) {
     glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
@@ -70,7 +70,7 @@ std::optional<PsmFrame> psmFrame(const Scene& scene, const Bounds& sceneBounds, 
     const std::vector<glm::vec3>& body = frame.body;
     frame.receivers.assign(body.begin(), body.begin() + static_cast<long>(body.size() / 2));
     const std::vector<glm::vec3>& receivers = frame.receivers;
-    // The virtual camera C (seed 004 §14.2.1, Figure 14-6): slid back by s along the view, with its near
+    // The virtual camera C (Kozlov 2004 §14.2.1, Figure 14-6): slid back by s along the view, with its near
     // plane kept where B begins, z_n = the nearest receiver's depth (at least the camera's near plane, more
     // where the bounds begin farther away: "we should maximize the Z_n value by any means") and its far
     // plane where B ends. With the same field of view its frustum holds the camera's beyond z_n.
@@ -85,7 +85,7 @@ std::optional<PsmFrame> psmFrame(const Scene& scene, const Bounds& sceneBounds, 
     zMax = std::max(zMax, zMin * (1.0 + 1e-6));
     // Automatic slide-back: the apex sqrt(z_n z_f) behind the eye, so that C's near plane lies
     // z_n + sqrt(z_n z_f) from it, the perspective LiSPSM finds optimal for a light perpendicular to the
-    // view (seed 000 eq. 1, sin γ = 1): Kozlov's balance of near and far texels (§14.2.1).
+    // view (Scherzer 2005 eq. 1, sin γ = 1): Kozlov's balance of near and far texels (§14.2.1).
     const double slideBack =
         tunables.psmSlideBack >= 0.0f ? double(tunables.psmSlideBack) : std::sqrt(zMin * zMax);
     const double nearPlane = zMin + slideBack, farPlane = zMax + slideBack;

@@ -1,9 +1,9 @@
 // The seeds' small test setups as built-in scenes:
-//   "dual-l"       — seed 001 (Weiskopf & Ertl), Fig. 5: an "L"-shaped solid above a greenish surface,
+//   "dual-l"       — Weiskopf & Ertl 2003 (Weiskopf & Ertl), Fig. 5: an "L"-shaped solid above a greenish surface,
 //                    directional light "from right above"; the crease between the L's legs shows midpoint
 //                    self-unshadowing, its light-space silhouettes self-shadowing.
-//   "double-torus" — seed 001, Fig. 6: a double torus over a plane (bilinear-filtering comparison).
-//   "behind"       — seed 004 (Kozlov, PSM "Care and Feeding", §14.2): casters *behind* the viewer with the
+//   "double-torus" — Weiskopf & Ertl 2003, Fig. 6: a double torus over a plane (bilinear-filtering comparison).
+//   "behind"       — Kozlov 2004 (Kozlov, PSM "Care and Feeding", §14.2): casters *behind* the viewer with the
 //                    light behind too, whose shadows fall into the view; a long plane and rows of boxes and
 //                    poles in front, so the view frustum is much smaller than the scene.
 #include "SceneBuilding.h"
@@ -43,7 +43,7 @@ Mesh makeLPrism(float width, float height, float thickness, float depth) {
     Mesh mesh;
     mesh.name = "L";
     const float z0 = -0.5f * depth, z1 = 0.5f * depth;
-    // The outline counter-clockwise in xy; (t, t) is the reflex corner, the crease of seed 001's Fig. 5.
+    // The outline counter-clockwise in xy; (t, t) is the reflex corner, the crease of Weiskopf & Ertl 2003's Fig. 5.
     const glm::vec2 outline[6] = {
         {0, 0}, {width, 0}, {width, thickness}, {thickness, thickness}, {thickness, height}, {0, height}};
     for (int i = 0; i < 6; ++i) {
@@ -75,7 +75,7 @@ SceneObject ground(float sizeX, float sizeZ, const glm::vec3& color) {
 Scene makeDualLScene() {
     Scene scene;
     scene.name = "dual-l";
-    // Seed 001, Fig. 5: "a simple 'L'-shaped object above a greenish surface".
+    // Weiskopf & Ertl 2003, Fig. 5: "a simple 'L'-shaped object above a greenish surface".
     scene.objects.push_back(ground(12.0f, 12.0f, glm::vec3(0.45f, 0.65f, 0.4f)));
     Mesh l = makeLPrism(3.0f, 3.0f, 0.8f, 2.0f);
     // Floating 0.5 above the plane, the foot pointing right (+x), so the light from the right strikes the
@@ -96,7 +96,7 @@ Scene makeDoubleTorusScene() {
     scene.objects.push_back(ground(12.0f, 12.0f, glm::vec3(0.45f, 0.65f, 0.4f)));
     // A genus-2 solid as two tori whose tubes merge in the middle. The union is not one manifold (the tubes
     // interpenetrate where they join), but every ray still enters and leaves it in pairs, which is all that
-    // the back-face and dual-layer methods of seed 001 need from a closed object.
+    // the back-face and dual-layer methods of Weiskopf & Ertl 2003 need from a closed object.
     const float major = 1.2f, minor = 0.4f;
     Mesh doubleTorus;
     doubleTorus.name = "double-torus";
@@ -117,14 +117,14 @@ Scene makeDoubleTorusScene() {
 Scene makeBehindScene() {
     Scene scene;
     scene.name = "behind";
-    // A long strip: the camera sees a small part of it, as in seed 004's problem cases.
+    // A long strip: the camera sees a small part of it, as in Kozlov 2004's problem cases.
     scene.objects.push_back(ground(60.0f, 240.0f, glm::vec3(0.7f, 0.7f, 0.65f)));
     auto pole = share(makeBox(glm::vec3(0.6f, 10.0f, 0.6f)));
     auto block = share(makeBox(glm::vec3(3.0f, 6.0f, 3.0f)));
     auto crate = share(makeBox(glm::vec3(2.0f)));
     uint32_t id = 2;
     // Behind the camera (z = -20): a row of tall poles and a row of blocks. With the light behind the
-    // viewer too, their shadows stretch forward (+z) into the view: seed 004, Fig. 14-1's case, where a PSM
+    // viewer too, their shadows stretch forward (+z) into the view: Kozlov 2004, Fig. 14-1's case, where a PSM
     // that only focuses on the view frustum loses these casters.
     for (int i = 0; i < 7; ++i) {
         const float x = -12.0f + 4.0f * float(i);

@@ -1,4 +1,4 @@
-// Shape generators the seeds' scenes need beyond Mesh.cpp's: cylinder and cone (the trees of seed 000's
+// Shape generators the seeds' scenes need beyond Mesh.cpp's: cylinder and cone (the trees of Scherzer 2005's
 // forest), a height field (its terrain), and appendMesh (a tree = trunk + crown, one mesh).
 //
 // Winding as in Mesh.cpp: each triangle is oriented so that cross(b - a, c - a) agrees with its vertices'

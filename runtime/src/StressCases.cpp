@@ -109,7 +109,7 @@ const std::vector<std::pair<std::string, CaseMaker>>& caseTable() {
              Scene scene = *makeBuiltinScene("behind");
              setSun(scene, glm::vec3(0.25f, -0.35f, -1.0f));
              return ordinaryCase("behind-ordinary",
-                                 "seed 004's scene with the light in front of the viewer, as low", scene,
+                                 "Kozlov 2004's scene with the light in front of the viewer, as low", scene,
                                  false);
          }},
         {"light-along-view",
@@ -157,7 +157,7 @@ const std::vector<std::pair<std::string, CaseMaker>>& caseTable() {
         {"light-behind-viewer",
          [] {
              return variant("light-behind-viewer",
-                            "seed 004's case: light and casters behind the viewer, shadows falling into view",
+                            "Kozlov 2004's case: light and casters behind the viewer, shadows falling into view",
                             "behind-ordinary", *makeBuiltinScene("behind"), false);
          }},
         {"grazing",

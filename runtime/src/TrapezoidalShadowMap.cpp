@@ -1,5 +1,5 @@
-// TrapezoidalShadowMap: the TSM fit of a directional light (see the header). Seed 003
-// (/work/shared/seeds/003_2eefc9356b32647d.txt, "Trapéz shadow map-ek") gives the construction: the view
+// TrapezoidalShadowMap: the TSM fit of a directional light (see the header). Lehőcz 2007
+// (, "Trapéz shadow map-ek") gives the construction: the view
 // frustum in light space, its centre line, the 2D convex hull, the top and base lines perpendicular to the
 // centre line and touching the hull, the 80% rule, and N_T as a product of 8 matrices.
 #include <runtime/TrapezoidalShadowMap.h>
@@ -23,7 +23,7 @@ float smoothstep01(float t) {
 
 }  // namespace
 
-// The 80% rule (seed 003: P_L, the point δ beyond the near plane on the view's centre line, maps to the
+// The 80% rule (Lehőcz 2007: P_L, the point δ beyond the near plane on the view's centre line, maps to the
 // 80% line of the map). Along the centre line N_T is a 1D projective map of the distance t from the
 // projection centre q, which lies η before the top line: v(t) = A + B / t. With the paper's ends v(η) = +1
 // (top) and v(η + λ) = -1 (base), B = 2 η (η + λ) / λ, and v(η + δ') = ξ gives
@@ -124,7 +124,7 @@ std::optional<TrapezoidalFit> fitTrapezoid(const Scene& scene, const Bounds& sce
     //   z' = z
     // Lines of equal y stay lines of equal y'/w, so P_L lands on -ξ wherever its x. w depends on y only:
     // along a light ray it is constant and depth z'/w stays monotonic, as with LiSPSM (the paper's linear
-    // depth, seed 003, which it notes a GPU can only have by multiplying z back by w in the shader).
+    // depth, Lehőcz 2007, which it notes a GPU can only have by multiplying z back by w in the shader).
     glm::mat4 trapezoid(0.0f);  // glm: trapezoid[column][row]
     const float width = right - left;
     trapezoid[0][0] = 2.0f / width;

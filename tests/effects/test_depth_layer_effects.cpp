@@ -171,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(
         return name;
     });
 
-// Seed 001, §6 and Fig. 5: with a heavily undersampled map, dual shadow maps with back-face culling beat
+// Weiskopf & Ertl 2003, §6 and Fig. 5: with a heavily undersampled map, dual shadow maps with back-face culling beat
 // midpoint maps without culling (self-shadowing at light-space silhouettes) and a constant bias. Measured
 // on dual-l at 256^2, 320x240 (llvmpipe): dual + culling 0.07 %, midpoint 0.53 %, constant bias at the
 // effect's default 0.003: 2.45 % misclassified.
@@ -386,7 +386,7 @@ protected:
     std::vector<CpuLayers> cpu;
 };
 
-// seed 001, eq. 2 and 4, written out independently of effects/include/light_depth.fxh.
+// Weiskopf & Ertl 2003, eq. 2 and 4, written out independently of effects/include/light_depth.fxh.
 float dualDepth(float z1, float z2, float zOffset) {
     return z1 + std::min((z2 - z1) / 2.0f, zOffset);
 }

@@ -187,7 +187,7 @@ glm::vec2 bilinear(const std::vector<float>& image, int width, int height, int c
                     f.y);
 }
 
-// p_max = sigma^2 / (sigma^2 + (t - mu)^2) for t > mu (seed 003, "Szórásnégyzet shadow map-ek"), computed
+// p_max = sigma^2 / (sigma^2 + (t - mu)^2) for t > mu (Lehőcz 2007, "Szórásnégyzet shadow map-ek"), computed
 // here from the moments the effect rendered and the G-buffer's world points.
 TEST(FilteringEffects, VsmVisibilityIsTheChebyshevBoundOfItsMoments) {
     // A 256² map: its bilinear filtering spreads the bound's fractional values over more pixels.

@@ -1,8 +1,8 @@
 // The soft-shadow effects (effects/pcss.fx, effects/fractional_disk.fx) against the area-light ground truth
 // and against the geometry of a penumbra: each technique stays under its annotated bounds on dual-l and
 // teapot lit by an area light (where a blank image does not); the penumbra widens with the
-// receiver-occluder distance as the similar triangles of seed 002 say (q = (d2 / d1) r,
-// /work/shared/seeds/002_e228412f9d141615.txt), measured on a plate held at two heights over a ground
+// receiver-occluder distance as the similar triangles of Valient & de Boer 2004 say (q = (d2 / d1) r,
+//), measured on a plate held at two heights over a ground
 // plane; the shader's q is the CPU's; fractional-disk's preprocessed map holds, per texel, an upper bound of
 // the distance to the nearest edge that a brute-force CPU search finds; its early out is taken only where
 // the truth is umbra or full light.
@@ -217,7 +217,7 @@ TEST(SoftShadowEffects, FractionalDiskPenumbraWidensWithTheOccluderDistance) {
     expectContactHardening("effects/fractional_disk.fx", "direct", spotAbove(), 8.0f);
 }
 
-// [SECTION] Eye-space blur (seed 000, §4.3)
+// [SECTION] Eye-space blur (Scherzer 2005, §4.3)
 
 // Receiver pixels with a fractional shadow term: how far the blur has spread the edges.
 size_t fractionalPixels(const SceneTruth& t, const std::vector<float>& visibility) {
@@ -245,7 +245,7 @@ TEST(SoftShadowEffects, EyeSpaceBlurWidensWithIterationsAndLessWithDepthDependen
     EXPECT_LT(sixteenByDepth, sixteen);
 }
 
-// [SECTION] Blurred receiver channels (seed 004, §14.3.2)
+// [SECTION] Blurred receiver channels (Kozlov 2004, §14.3.2)
 
 // The ground (object 1) marked as a receiver gets blurred edges where the depth test gives hard ones, and a
 // receiver in the second channel is blurred exactly as in the first.

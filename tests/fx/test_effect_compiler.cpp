@@ -13,7 +13,7 @@
 namespace fx {
 namespace {
 
-// The FX Composer listing of seed 003 (page breaks repaired), with a hardware-shadow depth sampler added.
+// The FX Composer listing of Lehőcz 2007 (page breaks repaired), with a hardware-shadow depth sampler added.
 const char* kThesis = R"(float Script : STANDARDSGLOBAL <
     string ScriptClass = "scene"; string ScriptOrder = "standard"; string ScriptOutput = "color";
     string Script = "Technique=main;"; > = 0.8;

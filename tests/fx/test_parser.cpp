@@ -35,7 +35,7 @@ const StateAssignment* findState(const std::vector<StateAssignment>& states, con
     return nullptr;
 }
 
-// The model effect: FX Composer listing of seed 003 (page-break damage repaired), abridged bodies.
+// The model effect: FX Composer listing of Lehőcz 2007 (page-break damage repaired), abridged bodies.
 const char* kThesisEffect = R"(const float2 SHADOW_SIZE;
 #define ZMaxValue 130944/16.0
 #define ShadowRange 12000.0

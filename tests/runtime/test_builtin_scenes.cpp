@@ -102,7 +102,7 @@ TEST(BuiltinScenes, ForestIsScherzersSetup) {
     EXPECT_EQ(trees, 10000u);
     EXPECT_LE(treeMeshes.size(), 5u);
     EXPECT_GE(treeMeshes.size(), 2u);
-    // Seed 000, §5: fov 60°, near 0.1, far 70; 512² viewport, 2048² map.
+    // Scherzer 2005, §5: fov 60°, near 0.1, far 70; 512² viewport, 2048² map.
     EXPECT_NEAR(glm::degrees(scene.camera.fovY), 60.0f, 1e-4f);
     EXPECT_FLOAT_EQ(scene.camera.nearPlane, 0.1f);
     EXPECT_FLOAT_EQ(scene.camera.farPlane, 70.0f);

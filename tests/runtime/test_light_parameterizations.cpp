@@ -1,6 +1,6 @@
 // Light-space parameterizations (runtime/LightParameterization.h): for a grid of camera and light
 // directions, degenerate ones included, every matrix is finite and every point of the focus body (B and
-// its extrusion toward the light) lies inside the light's clip volume; LiSPSM's n_opt matches seed 000
+// its extrusion toward the light) lies inside the light's clip volume; LiSPSM's n_opt matches Scherzer 2005
 // eq. 1 computed independently and fades into the focused fit as the light turns parallel to the view.
 #include "LightFitScenes.h"
 
@@ -117,7 +117,7 @@ TEST(LightParameterizations, FocusingSpendsMoreOfTheMapOnB) {
     EXPECT_GT(extent(LightParameterization::Focused), 3.9f);  // B fills the map: [-1, 1]²
 }
 
-// Seed 000 §4.4 eq. 1 (/work/shared/seeds/000_e192ed44df49f96c.txt), in double precision from z_n, z_f:
+// Scherzer 2005 §4.4 eq. 1 , in double precision from z_n, z_f:
 // n_opt = (z_n + sqrt(z_n z_f)) / sin γ with z_f = z_n + Δz.
 TEST(LightParameterizations, LispsmWarpIsTheReciprocalOfNopt) {
     for (double zn : {0.1, 1.0, 5.0})
@@ -150,7 +150,7 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
         const double nopt = (zn + std::sqrt(zn * (zn + (hi - lo) * sinGamma))) / sinGamma;
         const LightFit fit = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
         EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt) << elevation;
-        LightTunables visible;  // Δz from a visibility algorithm replaces d sin γ (seed 000 §4.4)
+        LightTunables visible;  // Δz from a visibility algorithm replaces d sin γ (Scherzer 2005 §4.4)
         visible.lispsmDepthExtent = 50.0f;
         const double noptVisible = (zn + std::sqrt(zn * (zn + 50.0))) / sinGamma;
         EXPECT_NEAR(
@@ -166,7 +166,7 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
     }
 }
 
-// With LiSPSMMiddleVector, V_P is seed 000 §4.4's middle vector: the sum of the eye-to-vertex vectors of B,
+// With LiSPSMMiddleVector, V_P is Scherzer 2005 §4.4's middle vector: the sum of the eye-to-vertex vectors of B,
 // made perpendicular to the light, recomputed here from B's vertices (intersectionBody of the clamped
 // frustum = the first half of focusBody); the light view's y axis is V_P and n_opt uses its γ.
 TEST(LightParameterizations, LispsmMiddleVectorIsTheSumOverB) {
@@ -324,8 +324,8 @@ namespace {
 }  // namespace
 
 // The split schemes against their definitions, computed here in double precision and from properties
-// the formula must have: the logarithmic split keeps z_{i+1} / z_i constant (seed 003,
-// /work/shared/seeds/003_2eefc9356b32647d.txt, "Kaszádolt shadow map-ek": each map covers twice the
+// the formula must have: the logarithmic split keeps z_{i+1} / z_i constant (Lehőcz 2007,
+//, "Kaszádolt shadow map-ek": each map covers twice the
 // distance of the previous one, i.e. ratio 2 for n = 1, f = 16, N = 4), the uniform one z_{i+1} - z_i.
 TEST(CascadedShadowMaps, SplitSchemesFollowTheirDefinitions) {
     const std::vector<float> doubling = cascadeSplitDepths(1.0f, 16.0f, 4, 1.0f);

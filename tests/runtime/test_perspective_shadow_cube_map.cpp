@@ -1,5 +1,5 @@
-// The cube-map variant of perspective shadow maps (runtime/PerspectiveShadowCubeMap.h, seed 004 §14.2.2,
-// /work/shared/seeds/004_803a1be93f8534eb.txt), without GL: for a dense sweep of light directions, every
+// The cube-map variant of perspective shadow maps (runtime/PerspectiveShadowCubeMap.h, Kozlov 2004 §14.2.2,
+//), without GL: for a dense sweep of light directions, every
 // receiver of B (its vertices and points between them) lands inside the clip volume of exactly the face
 // that the dominant axis of its cube coordinates selects, and its casters in the same face at the same
 // texel, nearer in depth; the sun in view spreads the receivers over several faces where the single-map
@@ -112,7 +112,7 @@ TEST(PerspectiveShadowCubeMap, EveryReceiverLandsInsideTheFaceItSelects) {
 }
 
 // The sun low ahead of a level camera lies among the receivers in post-perspective space: the single-map
-// PSM has faded into Focused there (seed 004 §14.2.2: "the closer the light source is to the unit cube,
+// PSM has faded into Focused there (Kozlov 2004 §14.2.2: "the closer the light source is to the unit cube,
 // the poorer the quality"); the cube map spreads the receivers over several faces instead, each a
 // perspective from L'.
 TEST(PerspectiveShadowCubeMap, SunInViewUsesSeveralFacesWherePsmFades) {
@@ -175,7 +175,7 @@ TEST(PerspectiveShadowCubeMap, SpotLightsKeepTheUniformFitInOneFace) {
         EXPECT_EQ(cubeFaceOf(fit, p), 4);
 }
 
-// Seed 004's scene (a row of boxes on both sides of the viewer, casters behind it) with a low light in
+// Kozlov 2004's scene (a row of boxes on both sides of the viewer, casters behind it) with a low light in
 // front of the viewer, stress case behind-ordinary: every receiver of B and its casters in their face.
 TEST(PerspectiveShadowCubeMap, SeedSceneWithTheLightInFront) {
     Scene scene = *makeBuiltinScene("behind");

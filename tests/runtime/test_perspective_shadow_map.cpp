@@ -1,5 +1,5 @@
-// Perspective shadow maps (runtime/PerspectiveShadowMap.h, seed 004 §14.2,
-// /work/shared/seeds/004_803a1be93f8534eb.txt), without GL: the light's post-perspective position against
+// Perspective shadow maps (runtime/PerspectiveShadowMap.h, Kozlov 2004 §14.2,
+//), without GL: the light's post-perspective position against
 // a far point pushed through an independently built camera projection; casters behind the viewer inside
 // the map and in front of their receivers (the inverse projection); clip x, y, w constant along every light
 // ray for a dense sweep of light directions; the warp-ratio cap and the slide-back tunable; and no jump in
@@ -77,7 +77,7 @@ void expectContinuousSweep(const glm::vec3& view, const std::function<glm::vec3(
 
 }  // namespace
 
-// L' = C (-d, 0) (seed 004 §14.2.1): the light is where a point far along -d lands under the camera's
+// L' = C (-d, 0) (Kozlov 2004 §14.2.1): the light is where a point far along -d lands under the camera's
 // projection. Built here independently in double precision: the virtual camera slid back by sqrt(z_n z_f)
 // of B's receiver depths (the automatic slide-back), near plane at the nearest receiver.
 TEST(PerspectiveShadowMap, LightInPostPerspectiveSpaceIsTheImageOfAFarPoint) {
@@ -118,7 +118,7 @@ TEST(PerspectiveShadowMap, LightInPostPerspectiveSpaceIsTheImageOfAFarPoint) {
         }
 }
 
-// Seed 004 §14.2.1: casters behind the viewer, beyond infinity in post-perspective space, must still land
+// Kozlov 2004 §14.2.1: casters behind the viewer, beyond infinity in post-perspective space, must still land
 // in the map (Kozlov's inverse projection). The sun shines from behind and above the camera; the body's
 // extrusion reaches back to the bounds 20 m behind the eye.
 TEST(PerspectiveShadowMap, CastersBehindTheViewerLandInTheMapInFrontOfTheirReceivers) {
@@ -219,7 +219,7 @@ TEST(PerspectiveShadowMap, TunablesCapTheWarpAndSlideTheCameraBack) {
     wRatio(noSlide, details);
     EXPECT_DOUBLE_EQ(details.slideBack, 0.0);
     // Without slide-back (z_n = 0.1 m, z_f ~ 180 m) the light sits ~1e-3 from the unit cube: far closer to
-    // the receivers than with it (seed 004 §14.2.2), so close that the fit has faded into Focused.
+    // the receivers than with it (Kozlov 2004 §14.2.2), so close that the fit has faded into Focused.
     EXPECT_LT(details.closeness, 0.5 * closeness);
     EXPECT_GT(details.focusedWeight, 0.9);
 }

@@ -1,6 +1,6 @@
 // psm_cube.fx in the runtime (README, "Light-space parameterizations"): its six face passes render
 // through RenderPort=light0.faceK; a face that no receiver uses is left out ("scene") and the frame is the
-// one every pass drawn in full gives; with the light low in front of the viewer (seed 004's problem case)
+// one every pass drawn in full gives; with the light low in front of the viewer (Kozlov 2004's problem case)
 // several faces run.
 #include <runtime/PerspectiveShadowCubeMap.h>
 
@@ -58,7 +58,7 @@ TEST(PsmCube, FacesWithoutReceiversAreLeftOut) {
     expectSameFrameWithAndWithoutLeaveOut(scene, details.facesUsed);
 }
 
-// Seed 004's scene with a low light in front of the viewer: its image lies among the receivers in
+// Kozlov 2004's scene with a low light in front of the viewer: its image lies among the receivers in
 // post-perspective space, and the receivers spread over several faces, which all run.
 TEST(PsmCube, LightInFrontOfTheViewerUsesSeveralFaces) {
     Scene scene = *makeBuiltinScene("behind");

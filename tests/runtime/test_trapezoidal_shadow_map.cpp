@@ -46,7 +46,7 @@ std::vector<Configuration> outsideTheViewCone() {
 
 }  // namespace
 
-// Seed 003 (/work/shared/seeds/003_2eefc9356b32647d.txt): the focus point maps to the 80% line. Along the
+// Lehőcz 2007 : the focus point maps to the 80% line. Along the
 // centre line N_T is the 1D projective map fixed by q -> ∞, top -> +1, base -> -1 (the paper's ends); solved
 // here in double as v(t) = A + B / t from the two ends, it must send the focus point, δ' below the top, to ξ.
 TEST(TrapezoidalShadowMap, WarpPutsTheFocusPointOnTheEightyPercentLine) {

@@ -1,10 +1,10 @@
 // CascadedShadowMaps: the `Cascaded` light parameterization (README, "Light-space parameterizations"):
 // the camera's view depth range is split into slices, and each slice gets its own orthographic shadow map
-// of the same size, so that near receivers get small texels and far ones large texels. Seed 003 (§
-// "Kaszádolt shadow map-ek", /work/shared/seeds/003_2eefc9356b32647d.txt) describes the idea: one map for
-// the viewer's neighbourhood, the next of the same size for twice the distance, and so on; seed 000 §1
+// of the same size, so that near receivers get small texels and far ones large texels. Lehőcz 2007 (§
+// "Kaszádolt shadow map-ek" ) describes the idea: one map for
+// the viewer's neighbourhood, the next of the same size for twice the distance, and so on; Scherzer 2005 §1
 // (the survey) names it as the simple answer to perspective aliasing. The split schemes below are the
-// parallel-split shadow maps' (Zhang et al. 2006, not among the seeds): logarithmic (seed 003's constant
+// parallel-split shadow maps' (Zhang et al. 2006, not among the seeds): logarithmic (Lehőcz 2007's constant
 // ratio), uniform, and the practical blend of both.
 //
 // The cascades share one render target, an atlas of `cascadeAtlasGrid(count)` equal tiles;

@@ -1,6 +1,6 @@
 // PerspectiveShadowCubeMap: the `PSMCube` light parameterization, the cube-map variant of perspective shadow
-// maps (Kozlov, "Perspective Shadow Maps: Care and Feeding", seed 004 §14.2.2,
-// /work/shared/seeds/004_803a1be93f8534eb.txt): in the camera's post-perspective space (PPS) the light is
+// maps (Kozlov, "Perspective Shadow Maps: Care and Feeding", Kozlov 2004 §14.2.2):
+// in the camera's post-perspective space (PPS) the light is
 // a point L', and close to the receivers no single perspective from L' holds them all at a useful
 // resolution (the single-map PSM fades into Focused there, PerspectiveShadowMap.h). A cube map around L'
 // does: each of its six faces is a 90-degree perspective from L', and a point's face is the dominant axis

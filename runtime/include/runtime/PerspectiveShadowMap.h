@@ -1,11 +1,11 @@
 // PerspectiveShadowMap: the PSM provider of LightParameterization (Stamminger & Drettakis 2002, with
-// Kozlov's "care and feeding", seed 004 §14.2, /work/shared/seeds/004_803a1be93f8534eb.txt; seed 000 §2).
+// Kozlov's "care and feeding", Kozlov 2004 §14.2 ; Scherzer 2005 §2).
 //
 // The shadow map is rendered in the post-perspective space (PPS) of a virtual camera C, where a directional
 // light becomes a point L' = C (-d, 0): an ordinary point in front of the camera when the light shines
 // toward the viewer (L'.w > 0), an "inverted" point when it comes from behind the viewer (L'.w < 0), and a
 // direction when it is perpendicular to the view (L'.w = 0). The light camera is a perspective from L'
-// (seed 004 §14.2.2) whose rows x, y, w all vanish on L': in world space they do not change along the light
+// (Kozlov 2004 §14.2.2) whose rows x, y, w all vanish on L': in world space they do not change along the light
 // direction, so clip w is constant along each world light ray and depth z / w, kept linear in the world
 // distance along the light, orders casters correctly on both sides of the viewer. That is Kozlov's inverse
 // projection (near -a, far a, §14.2.1) without the case split: the casters behind the viewer need no

@@ -76,7 +76,7 @@ struct Scene {
     glm::vec3 ambient{0.15f};
     // What the shadow map must cover, where the scene says so (a scene file's "bounds"); else the objects'.
     std::optional<Bounds> explicitBounds;
-    // Hints from the setup a scene reproduces (seed 000 §5: 512x512 viewport, 2048^2 map); 0 = none.
+    // Hints from the setup a scene reproduces (Scherzer 2005 §5: 512x512 viewport, 2048^2 map); 0 = none.
     glm::ivec2 suggestedViewport{0};
     int suggestedMapSize = 0;
 

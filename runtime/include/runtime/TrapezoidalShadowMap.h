@@ -1,6 +1,6 @@
 // TrapezoidalShadowMap: the TSM provider of LightParameterization (Martin & Tan 2004, "Anti-aliasing and
-// continuity with trapezoidal shadow maps", as retold in seed 003,
-// /work/shared/seeds/003_2eefc9356b32647d.txt, "Trapéz shadow map-ek"). In the light view of the focused fit,
+// continuity with trapezoidal shadow maps", as retold in Lehőcz 2007,
+//, "Trapéz shadow map-ek"). In the light view of the focused fit,
 // whose y axis is V_P (the view direction made perpendicular to the light, so the centre line of the view
 // frustum runs along +y), a trapezoid encloses the focus body; a 2D projective map N_T sends it onto the
 // square, its top (the viewer's side) to y = -1 and its base to y = +1, with the focus point of the 80% rule
@@ -20,7 +20,7 @@ namespace runtime {
 // -0.6 is 80% of the way from the top (+1) to the base (-1): 1 - 0.8 · 2.
 inline constexpr float kTsmXi = -0.6f;
 
-// Seed 003 (the 80% rule, derived in TrapezoidalShadowMap.cpp): the distance η from the trapezoid's top
+// Lehőcz 2007 (the 80% rule, derived in TrapezoidalShadowMap.cpp): the distance η from the trapezoid's top
 // line back to the projection centre q, for a trapezoid of height λ whose focus point lies δ' below the
 // top line, returned as its reciprocal 1/η, the warp strength (0 = a rectangle: δ' at or past the 80% line).
 float tsmWarp(float height, float focusOffset, float xi = kTsmXi);
