@@ -1,5 +1,5 @@
-// PerspectiveShadowCubeMap: the PSMCube fit (see the header; Kozlov 2004 §14.2.2,
-//). Computed in double precision, like PerspectiveShadowMap.cpp:
+// PerspectiveShadowCubeMap: the PSMCube fit (see the header; Kozlov 2004 §14.2.2).
+// Computed in double precision, like PerspectiveShadowMap.cpp:
 // near λ = 0 the cube coordinates of the receivers differ by a small fraction of their size.
 #include <runtime/PerspectiveShadowCubeMap.h>
 #include <runtime/PerspectiveShadowMap.h>

@@ -1,5 +1,5 @@
-// PerspectiveShadowMap: the PSM fit of a directional light (see the header; Kozlov 2004 §14.2,
-//). Computed in double precision: C of a camera with
+// PerspectiveShadowMap: the PSM fit of a directional light (see the header; Kozlov 2004 §14.2).
+// Computed in double precision: C of a camera with
 // z_f / z_n ~ 1000 puts the light within ~1e-3 of the unit cube, and the light camera's rows are
 // differences of nearly equal numbers there.
 #include <runtime/PerspectiveShadowMap.h>

@@ -1,8 +1,8 @@
 // The soft-shadow effects (effects/pcss.fx, effects/fractional_disk.fx) against the area-light ground truth
 // and against the geometry of a penumbra: each technique stays under its annotated bounds on dual-l and
 // teapot lit by an area light (where a blank image does not); the penumbra widens with the
-// receiver-occluder distance as the similar triangles of Valient & de Boer 2004 say (q = (d2 / d1) r,
-//), measured on a plate held at two heights over a ground
+// receiver-occluder distance as the similar triangles of Valient & de Boer 2004 say (q = (d2 / d1) r),
+// measured on a plate held at two heights over a ground
 // plane; the shader's q is the CPU's; fractional-disk's preprocessed map holds, per texel, an upper bound of
 // the distance to the nearest edge that a brute-force CPU search finds; its early out is taken only where
 // the truth is umbra or full light.

@@ -1,5 +1,5 @@
-// The cube-map variant of perspective shadow maps (runtime/PerspectiveShadowCubeMap.h, Kozlov 2004 §14.2.2,
-//), without GL: for a dense sweep of light directions, every
+// The cube-map variant of perspective shadow maps (runtime/PerspectiveShadowCubeMap.h, Kozlov 2004 §14.2.2),
+// without GL: for a dense sweep of light directions, every
 // receiver of B (its vertices and points between them) lands inside the clip volume of exactly the face
 // that the dominant axis of its cube coordinates selects, and its casters in the same face at the same
 // texel, nearer in depth; the sun in view spreads the receivers over several faces where the single-map

@@ -1,5 +1,5 @@
-// Perspective shadow maps (runtime/PerspectiveShadowMap.h, Kozlov 2004 §14.2,
-//), without GL: the light's post-perspective position against
+// Perspective shadow maps (runtime/PerspectiveShadowMap.h, Kozlov 2004 §14.2),
+// without GL: the light's post-perspective position against
 // a far point pushed through an independently built camera projection; casters behind the viewer inside
 // the map and in front of their receivers (the inverse projection); clip x, y, w constant along every light
 // ray for a dense sweep of light directions; the warp-ratio cap and the slide-back tunable; and no jump in
