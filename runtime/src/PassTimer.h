@@ -8,7 +8,7 @@
 
 #include "GlApi.h"
 
-#include <runtime/EffectRenderer.h>
+#include <runtime/FrameStats.h>
 
 #include <chrono>
 #include <cstdint>

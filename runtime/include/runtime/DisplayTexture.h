@@ -5,7 +5,7 @@
 // Needs a current GL context for its whole life.
 #pragma once
 
-#include <runtime/EffectRenderer.h>
+#include <runtime/FrameImage.h>
 
 #include <cstdint>
 #include <vector>

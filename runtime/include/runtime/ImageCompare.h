@@ -16,7 +16,7 @@
 // `threshold` of all pixels. Images of different sizes never match.
 #pragma once
 
-#include <runtime/EffectRenderer.h>
+#include <runtime/FrameImage.h>
 
 #include <cstddef>
 #include <cstdint>

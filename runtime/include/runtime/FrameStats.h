@@ -1,0 +1,60 @@
+// FrameStats: what one rendered frame did, pass by pass: counts of draws, clears, culled objects and
+// texels, and with FrameOptions::timePasses the GPU and CPU time of each pass (runtime/PassTimer.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+// What one executed Pass= did (a pass run by a LoopByCount appears once per iteration).
+struct PassStats {
+    std::string pass;
+    bool lightPort = false;  // RenderPort names a light
+    std::string leftOut;     // "" ran; "dead" (nothing reads its writes), "cached" (targets kept from the
+                             // last frame), "scene" (its LeaveOutWhen holds), or several joined by "+" in
+                             // that order; a pass with only some operations left out ran
+    int draws = 0;
+    int culled = 0;  // objects a Draw=Geometry left out
+    uint64_t triangles = 0;
+    int clears = 0;
+    uint64_t texelsWritten = 0;  // cleared texels + fragments drawn (the latter with countTexels)
+};
+
+// One executed pass of a timed frame (FrameOptions::timePasses); a pass run by a LoopByCount appears once
+// per iteration, in execution order.
+struct PassTiming {
+    std::string pass;
+    uint64_t gpuNs = 0;  // GL_TIME_ELAPSED from the pass's start to the next pass's (its clears included)
+    uint64_t cpuNs = 0;  // CPU time the runtime spent issuing the pass
+    int draws = 0;
+};
+
+// Where a timed frame's CPU time went. Everything but `glNs` is the runtime's own overhead.
+struct FrameCpuTime {
+    uint64_t totalNs = 0;      // the whole render() call before waiting for the GPU
+    uint64_t bindingNs = 0;    // semantic binding (SemanticBinder) and uniform upload
+    uint64_t preshaderNs = 0;  // evaluating pass arguments and render-state expressions (fx::evaluate)
+    uint64_t glNs = 0;         // inside GL draw, clear and framebuffer calls (the driver's share)
+    // Script interpretation and the rest of the runtime: totalNs - bindingNs - preshaderNs - glNs.
+    uint64_t scriptNs() const {
+        const uint64_t known = bindingNs + preshaderNs + glNs;
+        return totalNs > known ? totalNs - known : 0;
+    }
+};
+
+// Counts of the work one frame did: what `render --stats` prints.
+struct FrameStats {
+    int passesRun = 0;  // Pass= commands executed (passes that only clear included)
+    int draws = 0;
+    uint64_t triangles = 0;
+    int clears = 0;
+    int culled = 0;         // objects left out of Draw=Geometry commands
+    int passesLeftOut = 0;  // Pass= commands none of whose clears and draws ran (PassStats::leftOut)
+    std::vector<PassStats> passes;
+    std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
+    FrameCpuTime cpu;                     // only with FrameOptions::timePasses
+};
+
+}  // namespace runtime
