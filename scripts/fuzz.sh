@@ -11,7 +11,7 @@ shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_sas_script)
-  [ -f runtime/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
+  [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
 scripts/install-deps.sh >/dev/null

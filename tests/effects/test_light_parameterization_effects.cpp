@@ -5,7 +5,7 @@
 // the map's near plane.
 #include "VisibilityHarness.h"
 
-#include "../../runtime/src/SceneBuilding.h"
+#include <private/runtime/SceneBuilding.h>
 
 #include <runtime/LightParameterization.h>
 

@@ -5,8 +5,8 @@
 
 #include <runtime/GlContext.h>
 
-#include "../../runtime/src/GlApi.h"
-#include "../../runtime/src/GpuMesh.h"
+#include <runtime/GlApi.h>
+#include <runtime/GpuMesh.h>
 #include <runtime/Mesh.h>
 
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // objects the runtime's own bookkeeping would miss. Used by the reload and load/unload leak tests.
 #pragma once
 
-#include "../../runtime/src/GlApi.h"
+#include <runtime/GlApi.h>
 
 #include <ostream>
 

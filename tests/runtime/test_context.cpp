@@ -3,8 +3,8 @@
 // skipped without one.
 #include <runtime/GlContext.h>
 
-#include "../../runtime/src/GlApi.h"
-#include "../../runtime/src/GlDebug.h"
+#include <runtime/GlApi.h>
+#include <runtime/GlDebug.h>
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // stencil (one- and two-sided), and the return to defaults.
 #include "GlTestSupport.h"
 
-#include "../../runtime/src/Framebuffer.h"
-#include "../../runtime/src/GpuTexture.h"
-#include "../../runtime/src/Image.h"
-#include "../../runtime/src/RenderStateApplier.h"
+#include <runtime/Framebuffer.h>
+#include <runtime/GpuTexture.h>
+#include <runtime/Image.h>
+#include <runtime/RenderStateApplier.h>
 
 #include <gtest/gtest.h>
 

@@ -3,11 +3,11 @@
 // comparison samplers on depth textures; PNG write/load round trip.
 #include "GlTestSupport.h"
 
-#include "../../runtime/src/Framebuffer.h"
-#include "../../runtime/src/GpuTexture.h"
-#include "../../runtime/src/Image.h"
-#include "../../runtime/src/RenderStateApplier.h"
-#include "../../runtime/src/SamplerObject.h"
+#include <runtime/Framebuffer.h>
+#include <runtime/GpuTexture.h>
+#include <runtime/Image.h>
+#include <runtime/RenderStateApplier.h>
+#include <runtime/SamplerObject.h>
 
 #include <gtest/gtest.h>
 

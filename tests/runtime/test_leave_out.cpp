@@ -8,9 +8,9 @@
 // only the camera moved
 //   and rerun when the light moved, every frame identical to a frame without leave-out;
 // - the per-pass counts add up.
-#include "../../runtime/src/FramePlan.h"
-#include "../../runtime/src/InstanceBvh.h"
-#include "../../runtime/src/IntersectionBody.h"
+#include <private/runtime/FramePlan.h>
+#include <runtime/InstanceBvh.h>
+#include <runtime/IntersectionBody.h>
 #include "LeaveOutFrames.h"
 #include "effects/EffectHarness.h"
 

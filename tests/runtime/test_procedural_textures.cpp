@@ -4,8 +4,8 @@
 // one, mipmapped render targets regenerated before they are sampled, and multiple render targets.
 #include "effects/EffectHarness.h"
 
-#include "../../runtime/src/Image.h"
-#include "../../runtime/src/ProceduralTexture.h"
+#include <runtime/Image.h>
+#include <private/runtime/ProceduralTexture.h>
 
 #include <cmath>
 #include <filesystem>

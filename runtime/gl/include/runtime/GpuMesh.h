@@ -1,0 +1,77 @@
+// GpuMesh: a runtime::Mesh in GL buffers plus a VAO, drawn with whatever vertex inputs the current program
+// asks for. Inputs bind by semantic, never by attribute order:
+//   POSITION -> positions, NORMAL -> normals, TEXCOORD0 -> texcoords, TANGENT -> tangents,
+//   BINORMAL -> cross(normal, tangent.xyz) * tangent.w, computed at upload.
+// An input the mesh lacks reads a constant default (glVertexAttrib4f, attribute array disabled):
+//   POSITION (0,0,0,1), NORMAL (0,1,0,0), TEXCOORDn (0,0,0,0), COLORn (1,1,1,1), TANGENT (1,0,0,1),
+//   BINORMAL (0,0,-1,0) (= cross(NORMAL, TANGENT) of the defaults), anything else (0,0,0,0).
+//
+// makeFullScreenQuad(): SAS Draw=Buffer's quad. POSITION is already in clip space: x, y in [-1, 1], z = 0,
+// w = 1 (z = 0 is the near plane under GL_ZERO_TO_ONE: the quad passes the default LESSEQUAL depth test
+// against any cleared depth, as FX Composer's z = 0 quads do in D3D). TEXCOORD0 is (0,0) at the image's
+// top-left and (1,1) at its bottom-right, and its triangles are clockwise on screen, i.e. front-facing
+// under D3D's default CullMode = CCW. Texel centres: GL (like D3D10+) samples pixel centres at
+// half-integers, so no D3D9 half-texel offset is applied; D3D9 effects that add one (QuadTexelOffsets)
+// shift by half a texel.
+#pragma once
+
+#include <runtime/GlApi.h>
+
+#include <fx/CompiledEffect.h>
+#include <runtime/Mesh.h>
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+namespace runtime {
+
+enum class VertexSemantic { Position, Normal, Texcoord, Color, Tangent, Binormal, Other };
+
+struct ParsedSemantic {
+    VertexSemantic semantic = VertexSemantic::Other;
+    int index = 0;  // "TEXCOORD3" -> 3; no digits -> 0
+};
+// Case-insensitive; "POSITION0" == "POSITION"; "SV_POSITION" too.
+ParsedSemantic parseVertexSemantic(std::string_view semantic);
+// The constant a missing input reads (see above).
+std::array<float, 4> defaultVertexValue(const ParsedSemantic& semantic);
+
+class GpuMesh {
+public:
+    GpuMesh() = default;
+    explicit GpuMesh(const Mesh& mesh);
+    static GpuMesh makeFullScreenQuad();
+    ~GpuMesh();
+    GpuMesh(GpuMesh&& other) noexcept;
+    GpuMesh& operator=(GpuMesh&& other) noexcept;
+    GpuMesh(const GpuMesh&) = delete;
+    GpuMesh& operator=(const GpuMesh&) = delete;
+
+    // Binds the VAO, enables exactly the locations in `inputs` (feeding a mesh attribute or a default),
+    // disables the locations enabled by the previous draw, and draws the triangle list. The program must
+    // be current.
+    void draw(const std::vector<fx::VertexInput>& inputs);
+
+    bool hasAttribute(VertexSemantic semantic) const;
+    size_t indexCount() const { return mIndexCount; }
+    size_t vertexCount() const { return mVertexCount; }
+
+private:
+    enum Stream { kPosition, kNormal, kTexcoord, kTangent, kBinormal, kStreamCount };
+    struct StreamBuffer {
+        GLuint buffer = 0;
+        int components = 0;
+    };
+    void release();
+    void uploadStream(Stream stream, const float* data, int components);
+
+    GLuint mVao = 0;
+    GLuint mIndexBuffer = 0;
+    std::array<StreamBuffer, kStreamCount> mStreams{};
+    size_t mIndexCount = 0;
+    size_t mVertexCount = 0;
+    uint32_t mEnabledLocations = 0;  // bit i: attribute array i enabled in mVao
+};
+
+}  // namespace runtime

@@ -1,0 +1,79 @@
+// GpuProgram: one compiled pass on the GPU: the linked GL program of its vertex and pixel stages, whose
+// uniform blocks are packed from effect parameter values and compile arguments (UniformPacker) and
+// uploaded through a UniformRing.
+#pragma once
+
+#include <runtime/GlApi.h>
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <fx/Value.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace runtime {
+
+// Writes values into a std140 uniform block image as the reflection describes it.
+class UniformPacker {
+public:
+    // Packs `value` (HLSL element order, see fx/Value.h) into `block` at the member's offset, honouring
+    // array and matrix strides and the GLSL matrix orientation.
+    static void pack(const fx::UniformBinding& member, const fx::Value& value, std::vector<uint8_t>& block);
+};
+
+// One persistently mapped uniform buffer that every draw's blocks are written to at a fresh offset. A
+// per-program buffer updated with glBufferSubData makes the driver wait for (llvmpipe: flush) the draws
+// still reading the old contents at every draw; writing ahead in a ring never touches bytes in flight.
+// When the ring is full it fences, waits for the GPU to finish what it queued, and starts over.
+class UniformRing {
+public:
+    UniformRing();
+    ~UniformRing();
+    UniformRing(const UniformRing&) = delete;
+    UniformRing& operator=(const UniformRing&) = delete;
+
+    // Copies `data` into the ring and binds that range to uniform block binding `binding`.
+    void bindBlock(GLuint binding, const std::vector<uint8_t>& data);
+
+private:
+    static constexpr size_t kCapacity = size_t(8) << 20;
+    GLuint mBuffer = 0;
+    uint8_t* mMapped = nullptr;
+    size_t mHead = 0;
+    size_t mAlignment = 256;
+};
+
+class GpuProgram {
+public:
+    // Compiles and links the pass's GLSL. Returns nullptr and reports LinkError (with the driver's log)
+    // at the pass's location on failure.
+    static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics);
+    ~GpuProgram();
+    GpuProgram(const GpuProgram&) = delete;
+    GpuProgram& operator=(const GpuProgram&) = delete;
+
+    bool hasShaders() const { return mProgram != 0; }
+
+    // Makes the program current; the next upload() binds both blocks whatever they hold.
+    void bind();
+    // Packs both stages' uniform blocks from `parameters` (one value per effect parameter) and `arguments`
+    // (one value per CompiledPass::arguments entry) and uploads a block only where its bytes changed since
+    // this program's last upload (per-pass values stay put between the draws of a pass).
+    void upload(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments,
+                UniformRing& ring);
+
+private:
+    struct StageBlock {
+        const fx::StageProgram* stage = nullptr;
+        std::vector<uint8_t> data;
+        std::vector<uint8_t> uploaded;  // what the bound range holds; empty = nothing bound yet
+    };
+    GpuProgram() = default;
+
+    GLuint mProgram = 0;
+    StageBlock mBlocks[2];
+};
+
+}  // namespace runtime

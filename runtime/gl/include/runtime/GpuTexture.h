@@ -1,0 +1,78 @@
+// GpuTexture: an immutable-storage GL texture (2D or cube) of an fx::TextureFormat, owned RAII. Colour
+// formats are render targets and sampled textures; depth formats (D16, D24S8, D24X8, D32F) are depth
+// targets that shaders may sample (as depth or, through a comparison SamplerObject, as shadow tests).
+// Row 0 of the storage is the image's top row, as everywhere in the runtime (see GlContext.cpp).
+#pragma once
+
+#include <runtime/GlApi.h>
+
+#include <fx/CompiledEffect.h>
+
+#include <cstdint>
+
+namespace runtime {
+
+// How a TextureFormat maps to GL: storage format, and the format/type pair for uploads and readbacks.
+struct GlTextureFormat {
+    GLenum internalFormat;
+    GLenum pixelFormat;  // GL_RGBA, GL_RED, GL_RG, GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL
+    GLenum pixelType;    // of a natural upload: GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_24_8
+    int channels;        // colour channels (1 for depth)
+    bool isDepth;
+    bool hasStencil;
+    bool isFloat;   // float or half storage (unclamped values)
+    int depthBits;  // 16, 24 or 32 for depth formats, else 0
+};
+const GlTextureFormat& glTextureFormat(fx::TextureFormat format);
+
+class GpuTexture {
+public:
+    // mipLevels <= 0 means a full chain (D3D's Levels = 0).
+    static GpuTexture create2D(fx::TextureFormat format, int width, int height, int mipLevels = 1);
+    static GpuTexture createCube(fx::TextureFormat format, int size, int mipLevels = 1);
+
+    GpuTexture() = default;
+    ~GpuTexture();
+    GpuTexture(GpuTexture&& other) noexcept;
+    GpuTexture& operator=(GpuTexture&& other) noexcept;
+    GpuTexture(const GpuTexture&) = delete;
+    GpuTexture& operator=(const GpuTexture&) = delete;
+
+    // Uploads tightly packed RGBA8 pixels (top row first) into one level (and face, for cube maps:
+    // 0..5 = +X -X +Y -Y +Z -Z). Colour formats only; the driver converts to the storage format.
+    void uploadRGBA8(const uint8_t* pixels, int level = 0, int face = 0);
+    // Same with RGBA float pixels.
+    void uploadRGBA32F(const float* pixels, int level = 0, int face = 0);
+    void generateMipmaps() const;  // GL storage only: the object itself does not change
+    void setLabel(const std::string& label);
+
+    GLuint id() const { return mId; }
+    GLenum target() const { return mTarget; }  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP
+    fx::TextureFormat format() const { return mFormat; }
+    const GlTextureFormat& glFormat() const { return glTextureFormat(mFormat); }
+    bool isDepth() const { return glFormat().isDepth; }
+    bool isCube() const { return mTarget == GL_TEXTURE_CUBE_MAP; }
+    int width() const { return mWidth; }
+    int height() const { return mHeight; }
+    int mipLevels() const { return mLevels; }
+    // Unique for the life of the process, unlike GL names, which GL reuses after deletion: what the
+    // framebuffer cache keys on.
+    uint64_t serial() const { return mSerial; }
+    explicit operator bool() const { return mId != 0; }
+
+    static int fullMipChainLength(int width, int height);
+
+private:
+    GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels);
+    void upload(const void* pixels, GLenum type, int level, int face);
+
+    GLuint mId = 0;
+    GLenum mTarget = GL_TEXTURE_2D;
+    fx::TextureFormat mFormat = fx::TextureFormat::RGBA8;
+    int mWidth = 0;
+    int mHeight = 0;
+    int mLevels = 0;
+    uint64_t mSerial = 0;
+};
+
+}  // namespace runtime

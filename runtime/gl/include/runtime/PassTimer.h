@@ -1,0 +1,66 @@
+// PassTimer: the timing of one frame for FrameOptions::timePasses — a GL_TIME_ELAPSED query and a CPU
+// clock per executed pass, and counters of the CPU time the runtime spends binding semantics, evaluating
+// preshaders and inside GL calls. Disabled, every member is a no-op that reads no clock.
+//
+// GL_TIME_ELAPSED queries cannot nest, so a pass's query runs from its beginPass to the next pass's: a
+// technique-level script command between two passes is charged to the earlier one.
+#pragma once
+
+#include <runtime/GlApi.h>
+
+#include <runtime/FrameStats.h>
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+class PassTimer {
+public:
+    PassTimer(bool enabled, FrameStats& stats);
+    ~PassTimer();
+    PassTimer(const PassTimer&) = delete;
+    PassTimer& operator=(const PassTimer&) = delete;
+
+    bool enabled() const { return mEnabled; }
+    void beginPass(const std::string& name);
+    void countDraw() {
+        if (mEnabled && !mStats.passTimings.empty()) ++mStats.passTimings.back().draws;
+    }
+    // Ends the last pass, records the CPU total, then waits for the GPU and reads every query.
+    void finish();
+
+    // Adds the lifetime of the scope to one of the FrameCpuTime counters (nothing when disabled).
+    class Scope {
+    public:
+        Scope(const PassTimer& timer, uint64_t FrameCpuTime::*counter)
+            : mCounter(timer.mEnabled ? &(timer.mStats.cpu.*counter) : nullptr) {
+            if (mCounter) mStart = std::chrono::steady_clock::now();
+        }
+        ~Scope() {
+            if (mCounter)
+                *mCounter += static_cast<uint64_t>((std::chrono::steady_clock::now() - mStart).count());
+        }
+        Scope(const Scope&) = delete;
+        Scope& operator=(const Scope&) = delete;
+
+    private:
+        uint64_t* mCounter;
+        std::chrono::steady_clock::time_point mStart;
+    };
+
+private:
+    void endPass();
+
+    bool mEnabled;
+    FrameStats& mStats;
+    std::chrono::steady_clock::time_point mFrameStart;
+    std::chrono::steady_clock::time_point mPassStart;
+    std::vector<GLuint> mQueries;  // one per entry of mStats.passTimings
+    bool mPassOpen = false;
+    bool mFinished = false;
+};
+
+}  // namespace runtime

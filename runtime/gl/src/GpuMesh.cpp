@@ -1,0 +1,199 @@
+#include <runtime/GpuMesh.h>
+
+#include <glm/glm.hpp>
+
+#include <cctype>
+#include <utility>
+
+namespace runtime {
+
+ParsedSemantic parseVertexSemantic(std::string_view semantic) {
+    std::string upper;
+    for (char c : semantic) upper += char(std::toupper(static_cast<unsigned char>(c)));
+    if (upper.rfind("SV_", 0) == 0) upper.erase(0, 3);
+    size_t digits = upper.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(upper[digits - 1]))) --digits;
+    ParsedSemantic parsed;
+    parsed.index = digits < upper.size() ? std::stoi(upper.substr(digits)) : 0;
+    std::string_view name = std::string_view(upper).substr(0, digits);
+    if (name == "POSITION")
+        parsed.semantic = VertexSemantic::Position;
+    else if (name == "NORMAL")
+        parsed.semantic = VertexSemantic::Normal;
+    else if (name == "TEXCOORD")
+        parsed.semantic = VertexSemantic::Texcoord;
+    else if (name == "COLOR")
+        parsed.semantic = VertexSemantic::Color;
+    else if (name == "TANGENT")
+        parsed.semantic = VertexSemantic::Tangent;
+    else if (name == "BINORMAL")
+        parsed.semantic = VertexSemantic::Binormal;
+    return parsed;
+}
+
+std::array<float, 4> defaultVertexValue(const ParsedSemantic& semantic) {
+    switch (semantic.semantic) {
+        case VertexSemantic::Position:
+            return {0, 0, 0, 1};
+        case VertexSemantic::Normal:
+            return {0, 1, 0, 0};
+        case VertexSemantic::Color:
+            return {1, 1, 1, 1};
+        case VertexSemantic::Tangent:
+            return {1, 0, 0, 1};
+        case VertexSemantic::Binormal:
+            return {0, 0, -1, 0};  // cross((0,1,0), (1,0,0)) * 1
+        default:
+            return {0, 0, 0, 0};
+    }
+}
+
+GpuMesh::GpuMesh(const Mesh& mesh) {
+    gl::GenVertexArrays(1, &mVao);
+    gl::BindVertexArray(mVao);
+    mVertexCount = mesh.positions.size();
+    uploadStream(kPosition, &mesh.positions.data()->x, 3);
+    if (mesh.normals.size() == mVertexCount) uploadStream(kNormal, &mesh.normals.data()->x, 3);
+    if (mesh.texcoords.size() == mVertexCount) uploadStream(kTexcoord, &mesh.texcoords.data()->x, 2);
+    if (mesh.tangents.size() == mVertexCount) {
+        uploadStream(kTangent, &mesh.tangents.data()->x, 4);
+        if (mesh.normals.size() == mVertexCount) {
+            // MikkTSpace's bitangent: the sign in tangent.w restores mirrored UVs.
+            std::vector<glm::vec3> binormals(mVertexCount);
+            for (size_t i = 0; i < mVertexCount; ++i) {
+                binormals[i] = glm::cross(mesh.normals[i], glm::vec3(mesh.tangents[i])) * mesh.tangents[i].w;
+            }
+            uploadStream(kBinormal, &binormals.data()->x, 3);
+        }
+    }
+    mIndexCount = mesh.indices.size();
+    gl::GenBuffers(1, &mIndexBuffer);
+    // The element buffer binding is VAO state: bound once here.
+    gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mIndexBuffer);
+    gl::BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mIndexCount * sizeof(uint32_t)), mesh.indices.data(),
+                   GL_STATIC_DRAW);
+    gl::BindVertexArray(0);
+    gl::BindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+GpuMesh GpuMesh::makeFullScreenQuad() {
+    Mesh quad;
+    quad.name = "fullscreen quad";
+    // Upper-left clip control maps clip y = +1 to the top row.
+    quad.positions = {{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
+    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.normals = {{0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};  // towards the viewer (left-handed)
+    // top-left, top-right, bottom-right: clockwise on screen (y down), D3D's front face.
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    return GpuMesh(quad);
+}
+
+void GpuMesh::uploadStream(Stream stream, const float* data, int components) {
+    StreamBuffer& target = mStreams[stream];
+    target.components = components;
+    gl::GenBuffers(1, &target.buffer);
+    gl::BindBuffer(GL_ARRAY_BUFFER, target.buffer);
+    gl::BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mVertexCount * size_t(components) * sizeof(float)), data,
+                   GL_STATIC_DRAW);
+}
+
+bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
+    switch (semantic) {
+        case VertexSemantic::Position:
+            return mStreams[kPosition].buffer != 0;
+        case VertexSemantic::Normal:
+            return mStreams[kNormal].buffer != 0;
+        case VertexSemantic::Texcoord:
+            return mStreams[kTexcoord].buffer != 0;
+        case VertexSemantic::Tangent:
+            return mStreams[kTangent].buffer != 0;
+        case VertexSemantic::Binormal:
+            return mStreams[kBinormal].buffer != 0;
+        default:
+            return false;
+    }
+}
+
+void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
+    if (mVao == 0) return;
+    gl::BindVertexArray(mVao);
+    uint32_t enabled = 0;
+    for (const fx::VertexInput& input : inputs) {
+        if (input.location < 0 || input.location >= 32) continue;
+        ParsedSemantic semantic = parseVertexSemantic(input.semantic);
+        const StreamBuffer* stream = nullptr;
+        switch (semantic.semantic) {
+            case VertexSemantic::Position:
+                stream = &mStreams[kPosition];
+                break;
+            case VertexSemantic::Normal:
+                stream = &mStreams[kNormal];
+                break;
+            // The mesh carries one UV set; TEXCOORD1+ read the default rather than repeating set 0.
+            case VertexSemantic::Texcoord:
+                stream = semantic.index == 0 ? &mStreams[kTexcoord] : nullptr;
+                break;
+            case VertexSemantic::Tangent:
+                stream = &mStreams[kTangent];
+                break;
+            case VertexSemantic::Binormal:
+                stream = &mStreams[kBinormal];
+                break;
+            default:
+                break;
+        }
+        GLuint location = GLuint(input.location);
+        if (stream != nullptr && stream->buffer != 0) {
+            gl::BindBuffer(GL_ARRAY_BUFFER, stream->buffer);
+            gl::VertexAttribPointer(location, stream->components, GL_FLOAT, GL_FALSE, 0, nullptr);
+            gl::EnableVertexAttribArray(location);
+            enabled |= 1u << location;
+        } else {
+            std::array<float, 4> value = defaultVertexValue(semantic);
+            gl::DisableVertexAttribArray(location);
+            gl::VertexAttrib4f(location, value[0], value[1], value[2], value[3]);
+        }
+    }
+    // A location the previous program used but this one does not must not stay enabled on a stale stream.
+    for (uint32_t stale = mEnabledLocations & ~enabled; stale != 0; stale &= stale - 1) {
+        gl::DisableVertexAttribArray(GLuint(__builtin_ctz(stale)));
+    }
+    mEnabledLocations = enabled;
+    gl::BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
+    gl::BindVertexArray(0);
+}
+
+void GpuMesh::release() {
+    for (StreamBuffer& stream : mStreams) {
+        if (stream.buffer != 0) gl::DeleteBuffers(1, &stream.buffer);
+        stream = {};
+    }
+    if (mIndexBuffer != 0) gl::DeleteBuffers(1, &mIndexBuffer);
+    if (mVao != 0) gl::DeleteVertexArrays(1, &mVao);
+    mIndexBuffer = 0;
+    mVao = 0;
+}
+
+GpuMesh::~GpuMesh() {
+    release();
+}
+
+GpuMesh::GpuMesh(GpuMesh&& other) noexcept {
+    *this = std::move(other);
+}
+
+GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
+    if (this != &other) {
+        release();
+        mVao = std::exchange(other.mVao, 0);
+        mIndexBuffer = std::exchange(other.mIndexBuffer, 0);
+        mStreams = std::exchange(other.mStreams, {});
+        mIndexCount = other.mIndexCount;
+        mVertexCount = other.mVertexCount;
+        mEnabledLocations = std::exchange(other.mEnabledLocations, 0);
+    }
+    return *this;
+}
+
+}  // namespace runtime

@@ -1,0 +1,194 @@
+#include <runtime/GpuProgram.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+namespace runtime {
+
+// [SECTION] UniformPacker
+
+namespace {
+
+void writeScalar(std::vector<uint8_t>& block, size_t offset, fx::BaseType base, float value) {
+    if (offset + 4 > block.size()) return;  // reflection and type disagree: never write out of bounds
+    // glslang stores HLSL bools in uniform blocks as 32-bit uints, ints as ints.
+    if (base == fx::BaseType::Bool || base == fx::BaseType::UInt) {
+        const uint32_t bits =
+            base == fx::BaseType::Bool ? (value != 0.0f ? 1u : 0u) : static_cast<uint32_t>(value);
+        std::memcpy(block.data() + offset, &bits, 4);
+    } else if (base == fx::BaseType::Int) {
+        const int32_t bits = static_cast<int32_t>(value);
+        std::memcpy(block.data() + offset, &bits, 4);
+    } else {
+        std::memcpy(block.data() + offset, &value, 4);
+    }
+}
+
+}  // namespace
+
+void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value,
+                         std::vector<uint8_t>& block) {
+    const fx::TypeDesc& type = member.type;
+    const int rows = type.shape == fx::Shape::Matrix ? type.rows : 1;
+    const int cols = type.shape == fx::Shape::Scalar ? 1 : type.cols;
+    const size_t perElement = static_cast<size_t>(rows * cols);
+    int elements = 1;
+    for (int dim : type.arrayDims) elements *= dim;
+
+    for (int e = 0; e < elements; ++e) {
+        const size_t elementOffset = member.offset + static_cast<size_t>(e) * member.arrayStride;
+        for (int r = 0; r < rows; ++r) {
+            for (int c = 0; c < cols; ++c) {
+                const size_t source = static_cast<size_t>(e) * perElement + static_cast<size_t>(r * cols + c);
+                const float component = source < value.data.size() ? value.data[source] : 0.0f;
+                size_t offset = elementOffset;
+                if (type.shape == fx::Shape::Matrix) {
+                    offset += member.hlslColumnsContiguous
+                                  ? static_cast<size_t>(c) * member.matrixStride + static_cast<size_t>(r) * 4
+                                  : static_cast<size_t>(r) * member.matrixStride + static_cast<size_t>(c) * 4;
+                } else {
+                    offset += static_cast<size_t>(c) * 4;
+                }
+                writeScalar(block, offset, type.base, component);
+            }
+        }
+    }
+}
+
+// [SECTION] GpuProgram
+
+namespace {
+
+GLuint compileShader(GLenum kind, const std::string& source, std::string& log) {
+    GLuint shader = gl::CreateShader(kind);
+    const char* text = source.c_str();
+    gl::ShaderSource(shader, 1, &text, nullptr);
+    gl::CompileShader(shader);
+    GLint ok = GL_FALSE;
+    gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        gl::GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        std::string info(static_cast<size_t>(std::max(length, 1)), '\0');
+        gl::GetShaderInfoLog(shader, length, nullptr, info.data());
+        log += info.c_str();
+        gl::DeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+}  // namespace
+
+std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass,
+                                               fx::DiagnosticSink& diagnostics) {
+    std::unique_ptr<GpuProgram> program(new GpuProgram());
+    if (pass.vertex.glsl.empty() || pass.fragment.glsl.empty())
+        return program;  // a pass of script commands only
+
+    std::string log;
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
+    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, pass.fragment.glsl, log);
+    if (vs && fs) {
+        program->mProgram = gl::CreateProgram();
+        gl::AttachShader(program->mProgram, vs);
+        gl::AttachShader(program->mProgram, fs);
+        gl::LinkProgram(program->mProgram);
+        GLint ok = GL_FALSE;
+        gl::GetProgramiv(program->mProgram, GL_LINK_STATUS, &ok);
+        if (!ok) {
+            GLint length = 0;
+            gl::GetProgramiv(program->mProgram, GL_INFO_LOG_LENGTH, &length);
+            std::string info(static_cast<size_t>(std::max(length, 1)), '\0');
+            gl::GetProgramInfoLog(program->mProgram, length, nullptr, info.data());
+            log += info.c_str();
+            gl::DeleteProgram(program->mProgram);
+            program->mProgram = 0;
+        }
+    }
+    if (vs) gl::DeleteShader(vs);
+    if (fs) gl::DeleteShader(fs);
+    if (!program->mProgram) {
+        diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
+        return nullptr;
+    }
+
+    const fx::StageProgram* stages[2] = {&pass.vertex, &pass.fragment};
+    for (int i = 0; i < 2; ++i) {
+        StageBlock& block = program->mBlocks[i];
+        block.stage = stages[i];
+        if (stages[i]->uniformBlockSize == 0 || stages[i]->uniformBlockBinding < 0) continue;
+        block.data.assign(stages[i]->uniformBlockSize, 0);
+    }
+    return program;
+}
+
+GpuProgram::~GpuProgram() {
+    if (mProgram) gl::DeleteProgram(mProgram);
+}
+
+void GpuProgram::bind() {
+    gl::UseProgram(mProgram);
+    for (StageBlock& block : mBlocks) block.uploaded.clear();
+}
+
+void GpuProgram::upload(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments,
+                        UniformRing& ring) {
+    for (StageBlock& block : mBlocks) {
+        if (block.data.empty()) continue;
+        for (const fx::UniformBinding& member : block.stage->uniforms) {
+            if (!member.active) continue;  // the code never reads it
+            const std::vector<fx::Value>& source =
+                member.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
+            if (member.index < source.size()) UniformPacker::pack(member, source[member.index], block.data);
+        }
+        if (block.uploaded == block.data) continue;
+        ring.bindBlock(static_cast<GLuint>(block.stage->uniformBlockBinding), block.data);
+        block.uploaded = block.data;
+    }
+}
+
+// [SECTION] UniformRing
+
+UniformRing::UniformRing() {
+    GLint alignment = 0;
+    gl::GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    if (alignment > 0) mAlignment = static_cast<size_t>(alignment);
+    gl::GenBuffers(1, &mBuffer);
+    gl::BindBuffer(GL_UNIFORM_BUFFER, mBuffer);
+    const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    gl::BufferStorage(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(kCapacity), nullptr, flags);
+    mMapped = static_cast<uint8_t*>(
+        gl::MapBufferRange(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(kCapacity), flags));
+    gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+UniformRing::~UniformRing() {
+    if (!mBuffer) return;
+    if (mMapped) {
+        gl::BindBuffer(GL_UNIFORM_BUFFER, mBuffer);
+        gl::UnmapBuffer(GL_UNIFORM_BUFFER);
+        gl::BindBuffer(GL_UNIFORM_BUFFER, 0);
+    }
+    gl::DeleteBuffers(1, &mBuffer);
+}
+
+void UniformRing::bindBlock(GLuint binding, const std::vector<uint8_t>& data) {
+    const size_t size = (data.size() + mAlignment - 1) / mAlignment * mAlignment;
+    if (!mMapped || size > kCapacity) return;
+    if (mHead + size > kCapacity) {
+        // Everything queued so far may still read the ring: wait for it before overwriting.
+        GLsync fence = gl::FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        while (gl::ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+        }
+        gl::DeleteSync(fence);
+        mHead = 0;
+    }
+    std::memcpy(mMapped + mHead, data.data(), data.size());
+    gl::BindBufferRange(GL_UNIFORM_BUFFER, binding, mBuffer, static_cast<GLintptr>(mHead),
+                        static_cast<GLsizeiptr>(data.size()));
+    mHead += size;
+}
+
+}  // namespace runtime

@@ -1,0 +1,83 @@
+// FramePlan: what one frame's scripts will do, recorded by a dry run before any GL work (EffectRenderer's
+// PlanRecorder), and which of it the frame leaves out:
+// - dead work: an operation none of whose writes is read later in the frame (or is the frame's colour,
+//   the output) is skipped (backward liveness over the recorded operations; loops arrive unrolled);
+// - unchanged shadow maps: a render target written only by light-port operations keeps last frame's
+//   contents when the chain of operations that produced them is the same again (same signatures: pass,
+//   light matrices, parameter values, render states, targets, the sampled textures' contents and the
+//   scene's objects) and the receiver region each draw culled to last time contains this frame's.
+//
+// Contents are tracked as hashes: a full clear starts a new chain, every other write extends the chain
+// of what the target held, so a target that accumulates over frames never matches and is always redrawn.
+#pragma once
+
+#include <runtime/IntersectionBody.h>
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <vector>
+
+namespace runtime {
+
+// A resource an operation writes or reads: a texture parameter index, or the frame's own targets.
+constexpr int kFrameColor = -1;
+constexpr int kFrameDepth = -2;
+
+// Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
+// the scene does not need it (its pass's `LeaveOutWhen` annotation, or a cascade draw whose depth slice
+// holds no receiver).
+enum class LeftOut { No, Dead, Cached, Scene };
+
+struct PlannedOp {
+    enum class Kind { ClearColor, ClearDepth, ClearStencil, DrawGeometry, DrawBuffer };
+    Kind kind = Kind::ClearColor;
+    size_t pass = 0;             // the pass's index in its technique
+    bool lightPort = false;      // RenderPort names a light
+    std::vector<int> writes;     // targets it changes
+    std::vector<int> reads;      // sampled textures, and a draw's bound targets (blending, depth test)
+    uint64_t signature = 0;      // what decides the written contents, besides the targets' old contents
+    ReceiverRegion region;       // light draws: where the camera's receivers read (before the decision)
+    bool sceneSaysSkip = false;  // the pass's LeaveOutWhen condition holds, or a cascade's slice is empty
+    bool wholeTarget = true;     // a clear of the whole target (false: one cascade's tile, a partial write)
+
+    // Decisions (FramePlan::decide)
+    LeftOut leftOut = LeftOut::No;
+    bool cullToReceivers = true;  // light draws: cull to `region`; false: to the whole light frustum
+
+    bool isDraw() const { return kind == Kind::DrawGeometry || kind == Kind::DrawBuffer; }
+};
+
+// What a target held after the last frame that wrote it, kept by the renderer between frames.
+struct TargetHistory {
+    uint64_t contents = 0;                // chain hash
+    std::vector<ReceiverRegion> regions;  // per draw of the chain, the region its casters covered
+};
+
+class FramePlan {
+public:
+    std::vector<PlannedOp> ops;
+
+    // Marks dead and cached operations. `history` is the renderer's record of its targets (updated by
+    // commit()); `identity(resource)` hashes a target's allocation (size, format, GL name) so that a
+    // reallocated target never matches. With `leaveOut` false nothing is left out.
+    // Marks operations the scene does not need (LeaveOutWhen) and dead ones. `outputs`: what the frame
+    // must leave behind besides its colour (FrameOptions::outputTargets).
+    void markDead(const std::vector<int>& outputs, bool leaveOut);
+    // Then marks cached operations (see above) and chooses light draws' culling regions.
+    void decide(const std::map<int, TargetHistory>& history, const std::function<uint64_t(int)>& identity,
+                bool leaveOut);
+    // After the frame ran: records what the executed operations left in their targets.
+    void commit(std::map<int, TargetHistory>& history) const;
+
+private:
+    std::map<int, uint64_t> mFinalContents;               // per written target, after this frame
+    std::map<int, std::vector<ReceiverRegion>> mRegions;  // per written target, its draws' regions
+    std::vector<int> mRedrawn;                            // targets whose operations ran
+};
+
+// 64-bit hash combining (splitmix64 finalizer over the running value and each word).
+uint64_t hashCombine(uint64_t seed, uint64_t value);
+uint64_t hashBytes(uint64_t seed, const void* data, size_t size);
+
+}  // namespace runtime
