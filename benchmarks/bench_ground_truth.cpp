@@ -4,6 +4,7 @@
 //
 //   build/benchmarks/bench_ground_truth [--benchmark_filter=Soft]
 // items_per_second is pixels per second.
+#include <runtime/BuiltinScenes.h>
 #include <runtime/GroundTruth.h>
 #include <runtime/Scene.h>
 

@@ -11,6 +11,7 @@
 // median reload time alone (parse + compile + link), which excludes the watcher's 50 ms debounce.
 //
 //   build/benchmarks/bench_reload_latency
+#include <runtime/BuiltinScenes.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/GlContext.h>
 #include <runtime/ReloadableEffect.h>

@@ -15,6 +15,7 @@
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
+#include <runtime/BuiltinScenes.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/GBuffer.h>
 #include <runtime/GlContext.h>

@@ -3,6 +3,7 @@
 // figures must be sane (the thesis effect's shadows are mostly right). Also the per-pass timings of
 // FrameOptions::timePasses that the bench and the viewer read.
 #include "CliRunner.h"
+#include <runtime/BuiltinScenes.h>
 #include "EffectHarness.h"
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 // D3D conventions on OpenGL, pinned through whole effects: Draw=Buffer texture coordinates, row-vector
 // matrices with mul(v, M), BlendOp=min on float targets, RenderPort and the frame's orientation.
 #include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>

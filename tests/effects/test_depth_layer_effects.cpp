@@ -10,6 +10,7 @@
 #include "CliRunner.h"
 #include "EffectHarness.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
 #include <runtime/ShadowMetrics.h>

@@ -6,6 +6,7 @@
 // its own moments map computed on the CPU, and the minimum-variance guard keeps a flat receiver clean.
 #include "VisibilityHarness.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
 #include <runtime/SceneFile.h>

@@ -1,6 +1,7 @@
 // Real FX Composer files must load, not only ours: an effect written the way NVIDIA's shader library
 // wrote them (tests/data/fxcomposer/), and every effect shipped in effects/, through the whole pipeline.
 #include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
 
 #include <filesystem>
 

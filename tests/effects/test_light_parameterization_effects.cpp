@@ -7,6 +7,7 @@
 
 #include <private/runtime/SceneBuilding.h>
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/LightParameterization.h>
 
 #include <glm/gtc/type_ptr.hpp>

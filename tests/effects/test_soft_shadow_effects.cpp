@@ -8,6 +8,7 @@
 // the truth is umbra or full light.
 #include "VisibilityHarness.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/GBuffer.h>
 #include <runtime/GroundTruth.h>
 #include <runtime/ShadowMetrics.h>

@@ -2,6 +2,7 @@
 // ground plane that lie in an object's shadow, found by casting segments towards the light through the
 // scene's triangles (independently of any shadow map), must be dark, and points that are lit must be lit.
 #include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
 
 #include <glm/glm.hpp>
 

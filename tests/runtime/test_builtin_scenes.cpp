@@ -2,6 +2,7 @@
 // shows something; the seeds' setups are what they claim (forest: 10,000 trees over a few shared meshes;
 // behind: casters behind the camera whose shadows reach the visible ground); asset scenes load or say which
 // package is missing.
+#include <runtime/BuiltinScenes.h>
 #include <runtime/MeshImporter.h>
 #include <runtime/Scene.h>
 

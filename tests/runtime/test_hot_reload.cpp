@@ -4,6 +4,7 @@
 #include "GlTestSupport.h"
 #include "LiveGlObjects.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/FileWatcher.h>
 #include <runtime/ReloadableEffect.h>

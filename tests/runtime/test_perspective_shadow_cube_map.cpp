@@ -6,6 +6,7 @@
 // PSM has faded into Focused; faces nobody uses cull every draw; spot lights keep the uniform fit.
 #include "LightFitScenes.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/PerspectiveShadowCubeMap.h>
 #include <runtime/PerspectiveShadowMap.h>
 

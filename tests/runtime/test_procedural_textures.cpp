@@ -4,6 +4,7 @@
 // one, mipmapped render targets regenerated before they are sampled, and multiple render targets.
 #include "effects/EffectHarness.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/Image.h>
 #include <private/runtime/ProceduralTexture.h>
 

@@ -2,6 +2,7 @@
 // through RenderPort=light0.faceK; a face that no receiver uses is left out ("scene") and the frame is the
 // one every pass drawn in full gives; with the light low in front of the viewer (Kozlov 2004's problem case)
 // several faces run.
+#include <runtime/BuiltinScenes.h>
 #include <runtime/PerspectiveShadowCubeMap.h>
 
 #include "LeaveOutFrames.h"

@@ -1,4 +1,5 @@
 // Scene: D3DX camera/light matrices, built-in scenes, exact segment visibility and world-to-pixel projection.
+#include <runtime/BuiltinScenes.h>
 #include <runtime/Scene.h>
 
 #include <gtest/gtest.h>

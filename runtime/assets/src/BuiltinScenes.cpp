@@ -1,5 +1,6 @@
 // The built-in scenes: small, fixed, and chosen so that every shadow method has something to show (a
 // ground plane that receives, closed casters for back-face methods, curved casters for acne).
+#include <runtime/BuiltinScenes.h>
 #include <runtime/Scene.h>
 
 #include <private/runtime/SceneBuilding.h>

@@ -4,6 +4,7 @@
 //   [SECTION] Objects       — transforms, colour, flags, "instances" (one mesh, many transforms)
 //   [SECTION] Camera, lights, bounds, hints
 //   [SECTION] Entry points  — parse errors with line:column from nlohmann's byte offset
+#include <runtime/BuiltinScenes.h>
 #include <runtime/SceneFile.h>
 
 #include <runtime/MeshImporter.h>

@@ -1,5 +1,6 @@
 // StressCases: the configurations of issue #9, built from the built-in "boxes" and "behind" scenes.
 // Every case changes one thing of an ordinary configuration, so a failure names its cause.
+#include <runtime/BuiltinScenes.h>
 #include <runtime/StressCases.h>
 
 #include <private/runtime/SceneBuilding.h>

@@ -14,10 +14,6 @@
 #include <string_view>
 #include <vector>
 
-namespace fx {
-class DiagnosticSink;
-}
-
 namespace runtime {
 
 struct Bounds {
@@ -104,16 +100,6 @@ float nearestDepthFrom(const Scene& scene, const Light& light);
 // (no copy, no change).
 glm::vec3 renderOrigin(const Scene& scene);
 glm::vec3 renderOrigin(const Bounds& sceneBounds);  // the same, from the scene's bounds
-
-// Built-in scenes: "boxes" (a ground plane with a box and a sphere, a directional light from above at an
-// angle), "torus" (a torus standing on a plane, spot light), "teapot" (Newell's teapot on a plane), then
-// the seeds' setups ("dual-l", "double-torus", "forest", "behind") and scenes of meshes Debian ships
-// ("bunny", "horse", "spider", "engine"); README.md's "Scenes" section says which seed each reproduces.
-std::vector<std::string> builtinSceneNames();
-std::optional<Scene> makeBuiltinScene(std::string_view name);
-// The same, reporting why there is no scene: an unknown name, or a mesh file that is missing (naming the
-// Debian package that ships it). `diagnostics` may be null.
-std::optional<Scene> makeBuiltinScene(std::string_view name, fx::DiagnosticSink* diagnostics);
 
 // Exact visibility: true if the open segment from `from` to `to` hits a triangle of a shadow-casting
 // object (brute force Möller-Trumbore; the scenes here are small). What tests use to find points that lie
