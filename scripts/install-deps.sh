@@ -10,7 +10,7 @@ packages=(
   libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglfw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libstb-dev
   libassimp-dev nlohmann-json3-dev
-  # Meshes the built-in scenes read where Debian installs them (runtime/src/AssetScenes.cpp).
+  # Meshes the built-in scenes read where Debian installs them (runtime/assets/src/AssetScenes.cpp).
   glmark2-data assimp-testmodels
   # `shadowfx bench`: Embree casts the ground truth's shadow rays; gnuplot draws error_vs_time.png.
   libembree-dev gnuplot-nox

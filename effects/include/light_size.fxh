@@ -2,7 +2,7 @@
 // (pcss.fx, fractional_disk.fx): light-view distances from the map's z/w depths, the distance from a
 // receiver to the light's disk, and world lengths on the receiver converted to shadow-map texels.
 //
-// The light is a disk of radius `LightAreaRadius` facing the receiver (runtime/src/GroundTruth.cpp, the soft
+// The light is a disk of radius `LightAreaRadius` facing the receiver (runtime/measure/src/GroundTruth.cpp, the soft
 // truth). A spot light's disk sits at its position, i.e. at the light view's origin. A directional light's
 // disk sits `2 R + |scene centre|` from every receiver along the light direction (R: the scene radius), the
 // distance the runtime places its view at (Light::view); R is read back from the orthographic projection

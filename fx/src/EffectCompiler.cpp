@@ -404,7 +404,7 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
             case ScriptCommand::Kind::LoopByCount: {
                 ++loops;
                 // A literal count is checked here, once, rather than failing every frame in the runtime
-                // (runtime/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
+                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
                 const char* text = c.value.c_str();
                 char* end = nullptr;
                 const double count = std::strtod(text, &end);

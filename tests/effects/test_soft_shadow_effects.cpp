@@ -199,7 +199,8 @@ runtime::Light directionalAbove() {
     return light;
 }
 
-// The directional light's disk stands 2 R + |centre| from every receiver (runtime/src/GroundTruth.cpp).
+// The directional light's disk stands 2 R + |centre| from every receiver
+// (runtime/measure/src/GroundTruth.cpp).
 float directionalDiskDistance() {
     const runtime::Bounds bounds = plateScene(0.5f, directionalAbove()).bounds();
     return 2.0f * bounds.radius() + glm::length(bounds.center());

@@ -1,6 +1,6 @@
 // Shared by the GL tests of tests/runtime: a headless context per test suite and inline GLSL programs.
-// The runtime's internal headers live in runtime/src, which is private to the runtime target; the tests
-// reach them by relative path.
+// The GL plumbing (runtime/gl) is a library of its own whose headers are public: the tests include them
+// like any other.
 #pragma once
 
 #include <runtime/GlContext.h>

@@ -129,7 +129,7 @@ struct TextureDesc {
         File,                      // ResourceName annotation (or a file name initializer)
         Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
         Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
-                     // generator so far; runtime/src/ProceduralTexture.h)
+                     // generator so far; runtime/render/include/private/runtime/ProceduralTexture.h)
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;

@@ -59,7 +59,7 @@ FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
 FX_DIAGNOSTIC(Unused, Note, "{0}")
 
-// [SECTION] Scenes (runtime/src/SceneFile.cpp, MeshImporter.cpp)
+// [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
 FX_DIAGNOSTIC(SceneInvalidValue, Error, "{0}: {1}")
 FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")

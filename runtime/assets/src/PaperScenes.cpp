@@ -1,5 +1,5 @@
-// The seeds' small test setups as built-in scenes:
-//   "dual-l"       — Weiskopf & Ertl 2003 (Weiskopf & Ertl), Fig. 5: an "L"-shaped solid above a greenish surface,
+// The small test setups of the papers as built-in scenes:
+//   "dual-l"       — Weiskopf & Ertl 2003, Fig. 5: an "L"-shaped solid above a greenish surface,
 //                    directional light "from right above"; the crease between the L's legs shows midpoint
 //                    self-unshadowing, its light-space silhouettes self-shadowing.
 //   "double-torus" — Weiskopf & Ertl 2003, Fig. 6: a double torus over a plane (bilinear-filtering comparison).

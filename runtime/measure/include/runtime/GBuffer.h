@@ -2,9 +2,9 @@
 // which object it belongs to. The ground truth (runtime/GroundTruth.h) casts its shadow rays from these
 // points and the metrics (runtime/ShadowMetrics.h) choose their receiver pixels with them.
 //
-// Rendered through the runtime itself (a small built-in effect, runtime/src/GBuffer.cpp) with the same
-// camera matrices, rasterizer and D3D culling an effect's final pass uses, so its pixels are the pixels of
-// the effect's frame.
+// Rendered through the runtime itself (a small built-in effect, runtime/measure/src/GBuffer.cpp) with the
+// same camera matrices, rasterizer and D3D culling an effect's final pass uses, so its pixels are the pixels
+// of the effect's frame.
 #pragma once
 
 #include <fx/Diagnostics.h>

@@ -1,4 +1,4 @@
-// SceneBuilding: what the built-in scene files (BuiltinScenes.cpp, SeedScenes.cpp, ForestScene.cpp,
+// SceneBuilding: what the built-in scene files (BuiltinScenes.cpp, PaperScenes.cpp, ForestScene.cpp,
 // AssetScenes.cpp) share: placing shared meshes, fitting a directional light, the makers' table entries.
 #pragma once
 
@@ -39,7 +39,7 @@ inline Light fittedDirectionalLight(const glm::vec3& direction, const Bounds& bo
     return light;
 }
 
-// The seeds' setups (SeedScenes.cpp, ForestScene.cpp) and the scenes of Debian-shipped meshes
+// The setups of the papers (PaperScenes.cpp, ForestScene.cpp) and the scenes of Debian-shipped meshes
 // (AssetScenes.cpp; nullopt after reporting a missing file into `diagnostics`, which may be null).
 Scene makeDualLScene();
 Scene makeDoubleTorusScene();
