@@ -139,13 +139,11 @@ def render(out):
         lines.append(f'  "{name}" [shape={shape}];')
     third = set()
     for name in keep:
-        if name == "runtime":
-            continue
         for dep in sorted(graph[name]):
+            # Leave out edges implied by a longer path: the picture shows the layering, not every link.
+            if any(dep in reach(graph, other) for other in graph[name] if other in keep and other != dep):
+                continue
             if dep in keep:
-                # Leave out edges implied by a longer path: the picture shows the layering, not every link.
-                if any(dep in reach(graph, other) for other in graph[name] if other in keep and other != dep):
-                    continue
                 lines.append(f'  "{name}" -> "{dep}";')
             elif not dep.startswith(("/", "-", "$")) and dep not in ("Threads::Threads", "dl"):
                 third.add(dep)
@@ -154,7 +152,8 @@ def render(out):
     for dep in sorted(third):
         lines.append(f'  "{dep}" [shape=plaintext, fontcolor="#666666", fontsize=9];')
     lines.append("}")
-    subprocess.run(["dot", "-Tsvg", "-o", out], input="\n".join(lines), text=True, check=True)
+    fmt = os.path.splitext(out)[1].lstrip(".") or "svg"  # svg, png, ...
+    subprocess.run(["dot", f"-T{fmt}", "-o", out], input="\n".join(lines), text=True, check=True)
     print(f"wrote {out}")
     return 0
 
