@@ -1384,6 +1384,19 @@ FrameImage EffectRenderer::readFrame() const {
     return frame;
 }
 
+bool EffectRenderer::blitFrameTo(uint32_t framebuffer) const {
+    if (!mImpl->frameColor) return false;
+    RenderTargets source;
+    source.colors[0].texture = &mImpl->frameColor;
+    std::string error;
+    if (!mImpl->framebuffers.bind(source, error)) return false;
+    const int width = mImpl->frameColor.width(), height = mImpl->frameColor.height();
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    gl::BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    return gl::GetError() == GL_NO_ERROR;
+}
+
 std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view textureName, int* width,
                                                              int* height, int* channels, int level) const {
     const std::optional<size_t> index = findParameter(textureName);

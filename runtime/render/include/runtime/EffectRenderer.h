@@ -1,6 +1,6 @@
 // EffectRenderer: runs a compiled effect on OpenGL. It links one GL program per pass, creates the
-// effect's textures, samplers and render targets, binds semantics (runtime/src/SemanticBinder.h) and
-// executes the SAS scripts (runtime/src/ScriptInterpreter.cpp) to render frames of a scene.
+// effect's textures, samplers and render targets, binds semantics (runtime/render/src/SemanticBinder.h) and
+// executes the SAS scripts (runtime/render/src/ScriptInterpreter.cpp) to render frames of a scene.
 //
 // Needs a current GL 4.5 context (runtime/GlContext.h) for its whole life.
 #pragma once
@@ -77,12 +77,17 @@ public:
 
     // The frame's colour target as rendered by the last render().
     FrameImage readFrame() const;
+    // Copies the last render()'s colour into `framebuffer` (a GL framebuffer object of the caller's, or 0
+    // for a window's default framebuffer) at (0, 0) at the frame's size, without reading it back: how an
+    // application shows or composes the frame. Rows keep the runtime's order (row 0 at the top, as with
+    // glClipControl(GL_UPPER_LEFT)). Leaves `framebuffer` bound; false if there is no frame yet.
+    bool blitFrameTo(uint32_t framebuffer) const;
     // A texture's first channels as floats (rows top to bottom) at mip `level`, for tests and debugging
     // views; nullopt if the parameter is not an allocated texture or has no such level.
     std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
                                                  int* channels, int level = 0) const;
 
-    struct Impl;  // opaque: the GL resources (runtime/src/EffectRenderer.cpp)
+    struct Impl;  // opaque: the GL resources (runtime/render/src/EffectRenderer.cpp)
 
 private:
     explicit EffectRenderer(std::unique_ptr<Impl> impl);
