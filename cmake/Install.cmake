@@ -1,0 +1,31 @@
+# install(): the static libraries, their public headers and the CMake package that finds them
+# (cmake/shadowfxConfig.cmake.in), plus the shadowfx tool.
+#
+# Headers install under include/shadowfx/ (include/shadowfx/fx/..., include/shadowfx/runtime/...), which is
+# the installed targets' include directory: an application spells them as this source tree does
+# (<fx/EffectParser.h>, <runtime/EffectRenderer.h>), and the short names fx/ and runtime/ do not land
+# directly in a shared prefix such as /usr/local/include. include/private/ is never installed.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+set(SHADOWFX_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadowfx)
+
+foreach(component fx scene assets lightspace gl render measure runtime)
+  install(TARGETS ${component} EXPORT shadowfx-${component}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
+  install(EXPORT shadowfx-${component} NAMESPACE shadowfx:: DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR}
+          FILE shadowfx-${component}-targets.cmake)
+endforeach()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/fx/include/fx DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
+foreach(library scene assets lightspace gl render measure)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/${library}/include/runtime
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
+endforeach()
+install(TARGETS shadowfx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/shadowfxConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/shadowfxConfig.cmake INSTALL_DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/shadowfxConfig.cmake ${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cmake
+        DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})
