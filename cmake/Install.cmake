@@ -9,6 +9,10 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(SHADOWFX_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadowfx)
 
+# Installed side by side in a shared lib/, short names like libgl.a would mislead: libshadowfx_gl.a.
+foreach(library fx scene assets lightspace gl render measure)
+  set_target_properties(${library} PROPERTIES OUTPUT_NAME shadowfx_${library})
+endforeach()
 foreach(component fx scene assets lightspace gl render measure runtime)
   install(TARGETS ${component} EXPORT shadowfx-${component}
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
