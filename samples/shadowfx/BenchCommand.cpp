@@ -11,7 +11,6 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
-#include "ShadowMeasurement.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -22,6 +21,9 @@
 #include <runtime/GroundTruth.h>
 #include <runtime/Scene.h>
 #include <runtime/ShadowMetrics.h>
+#include <runtime/ShadowMeasurement.h>
+#include <runtime/DiagnosticLog.h>
+#include <runtime/NumberFormat.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -76,23 +78,6 @@ using Json = nlohmann::ordered_json;
 constexpr int kSchemaVersion = 1;
 
 // [SECTION] Diagnostics
-
-// Prints each distinct diagnostic once: the same warning comes back every frame of every run.
-class BenchSink : public fx::DiagnosticSink {
-public:
-    using fx::DiagnosticSink::report;
-    void report(const fx::Diagnostic& diagnostic) override {
-        if (diagnostic.severity == fx::Severity::Note) return;
-        if (diagnostic.severity == fx::Severity::Error) ++mErrors;
-        const std::string text = fx::renderDiagnostic(diagnostic);
-        if (mSeen.insert(text).second) std::cerr << "\n" << text << "\n";
-    }
-    int errors() const { return mErrors; }
-
-private:
-    std::set<std::string> mSeen;
-    int mErrors = 0;
-};
 
 // [SECTION] Statistics
 
@@ -255,12 +240,6 @@ std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& run
     return "";
 }
 
-std::string fixed(double value, int digits) {
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << value;
-    return out.str();
-}
-
 void writeReport(const std::filesystem::path& path, const Json& results, const std::string& plotNote) {
     std::ofstream md(path);
     md << "# shadowfx bench\n\n";
@@ -270,7 +249,8 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
        << "x" << results["config"]["height"].get<int>() << "."
        << (results["config"]["camera_orbit_degrees_per_frame"].get<double>() != 0.0
                ? " The camera orbits " +
-                     fixed(results["config"]["camera_orbit_degrees_per_frame"].get<double>(), 2) +
+                     runtime::formatFixed(results["config"]["camera_orbit_degrees_per_frame"].get<double>(),
+                                          2) +
                      " degrees a frame (view-dependent maps redrawn every frame); errors at the scene's "
                      "camera."
                : std::string())
@@ -296,24 +276,25 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | ";
         if (run["error"].is_object()) {
             const Json& e = run["error"];
-            md << fixed(e["misclassified_percent"].get<double>(), 3) << " | "
-               << fixed(e["false_shadow_percent"].get<double>(), 3) << " | "
-               << fixed(e["false_light_percent"].get<double>(), 3) << " | "
-               << fixed(e["mae"].get<double>(), 4) << " | " << fixed(e["p95_abs_error"].get<double>(), 3)
-               << " | "
-               << (e["penumbra_mae"].is_number() ? fixed(e["penumbra_mae"].get<double>(), 4)
+            md << runtime::formatFixed(e["misclassified_percent"].get<double>(), 3) << " | "
+               << runtime::formatFixed(e["false_shadow_percent"].get<double>(), 3) << " | "
+               << runtime::formatFixed(e["false_light_percent"].get<double>(), 3) << " | "
+               << runtime::formatFixed(e["mae"].get<double>(), 4) << " | "
+               << runtime::formatFixed(e["p95_abs_error"].get<double>(), 3) << " | "
+               << (e["penumbra_mae"].is_number() ? runtime::formatFixed(e["penumbra_mae"].get<double>(), 4)
                                                  : std::string("–"))
                << " | ";
         } else {
             md << "n/a | n/a | n/a | n/a | n/a | n/a | ";
         }
-        md << fixed(frame["median"].get<double>(), 2) << " [" << fixed(frame["min"].get<double>(), 2) << "–"
-           << fixed(frame["max"].get<double>(), 2) << "] | "
-           << fixed(run["gpu_time_ms"]["median"].get<double>(), 2) << " | "
-           << fixed(run["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
-           << fixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
-           << fixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
-           << fixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
+        md << runtime::formatFixed(frame["median"].get<double>(), 2) << " ["
+           << runtime::formatFixed(frame["min"].get<double>(), 2) << "–"
+           << runtime::formatFixed(frame["max"].get<double>(), 2) << "] | "
+           << runtime::formatFixed(run["gpu_time_ms"]["median"].get<double>(), 2) << " | "
+           << runtime::formatFixed(run["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
+           << runtime::formatFixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
+           << runtime::formatFixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
+           << runtime::formatFixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
         if (run["error_image"].is_string()) md << "[png](" << run["error_image"].get<std::string>() << ")";
         md << " |\n";
     }
@@ -324,8 +305,10 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         for (const Json& pass : run["passes"]) {
             md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
                << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
-               << pass["name"].get<std::string>() << " | " << fixed(pass["gpu_ms"].get<double>(), 3) << " | "
-               << fixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>() << " |\n";
+               << pass["name"].get<std::string>() << " | "
+               << runtime::formatFixed(pass["gpu_ms"].get<double>(), 3) << " | "
+               << runtime::formatFixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>()
+               << " |\n";
         }
     }
     md << "\n## Leave-out\n\n"
@@ -346,20 +329,20 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
                     other["effect"] != run["effect"] || other["technique"] != run["technique"] ||
                     other["map_size"] != run["map_size"])
                     continue;
-                speedUp = fixed(other["frame_time_ms"]["median"].get<double>() /
-                                    run["frame_time_ms"]["median"].get<double>(),
-                                2) +
+                speedUp = runtime::formatFixed(other["frame_time_ms"]["median"].get<double>() /
+                                                   run["frame_time_ms"]["median"].get<double>(),
+                                               2) +
                           "x";
             }
         }
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
            << (run["leave_out"].get<bool>() ? "on" : "off") << " | "
-           << fixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
-           << fixed(run["first_frame_ms"].get<double>(), 2) << " | " << work["passes_run"].get<int>() << " / "
-           << work["passes_left_out"].get<int>() << " | " << work["draws"].get<int>() << " | "
-           << work["culled"].get<int>() << " | " << work["triangles"].get<uint64_t>() << " | " << speedUp
-           << " |\n";
+           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
+           << runtime::formatFixed(run["first_frame_ms"].get<double>(), 2) << " | "
+           << work["passes_run"].get<int>() << " / " << work["passes_left_out"].get<int>() << " | "
+           << work["draws"].get<int>() << " | " << work["culled"].get<int>() << " | "
+           << work["triangles"].get<uint64_t>() << " | " << speedUp << " |\n";
     }
     md << "\n## Runtime CPU time (median per frame, ms)\n\n"
           "Script = interpreting the SAS scripts and the rest of the frame executor; binding = semantics and "
@@ -371,16 +354,18 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         const Json& c = run["runtime_cpu_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
-           << fixed(c["script"].get<double>(), 3) << " | " << fixed(c["binding"].get<double>(), 3) << " | "
-           << fixed(c["preshader"].get<double>(), 3) << " | " << fixed(c["overhead"].get<double>(), 3)
-           << " | " << fixed(c["gl"].get<double>(), 3) << " |\n";
+           << runtime::formatFixed(c["script"].get<double>(), 3) << " | "
+           << runtime::formatFixed(c["binding"].get<double>(), 3) << " | "
+           << runtime::formatFixed(c["preshader"].get<double>(), 3) << " | "
+           << runtime::formatFixed(c["overhead"].get<double>(), 3) << " | "
+           << runtime::formatFixed(c["gl"].get<double>(), 3) << " |\n";
     }
     md << "\n## Ground truth\n\n| scene | lights samples / pixel | soft | rays | seconds "
           "|\n|---|---:|---|---:|---:|\n";
     for (const Json& truth : results["ground_truth"]) {
         md << "| " << truth["scene"].get<std::string>() << " | " << truth["samples_per_pixel"].get<int>()
            << " | " << (truth["soft"].get<bool>() ? "yes" : "no") << " | " << truth["rays"].get<uint64_t>()
-           << " | " << fixed(truth["seconds"].get<double>(), 2) << " |\n";
+           << " | " << runtime::formatFixed(truth["seconds"].get<double>(), 2) << " |\n";
     }
 }
 
@@ -483,7 +468,8 @@ int benchCommand(const Arguments& args) {
         return 1;
     }
 
-    BenchSink sink;
+    // Each distinct diagnostic once: the same warning comes back every frame of every run.
+    runtime::DiagnosticLog sink([](const std::string& text) { std::cerr << "\n" << text << "\n"; });
     runtime::ContextOptions contextOptions;
     contextOptions.backend = *backend;
     std::string contextError;
@@ -496,8 +482,8 @@ int benchCommand(const Arguments& args) {
     std::cerr << "bench: " << glRenderer << "\n";
 
     // Ground truth, once per scene: it depends on neither the effect nor the map size.
-    std::vector<SceneTruth> truths;
-    truths.reserve(sceneNames.size());  // SceneTruth::light points into its own scene
+    std::vector<runtime::SceneTruth> truths;
+    truths.reserve(sceneNames.size());  // runtime::SceneTruth::light points into its own scene
     Json truthJson = Json::array();
     for (const std::string& name : sceneNames) {
         // The scene's own diagnostic names a missing mesh file and the Debian package that ships it.
@@ -516,9 +502,10 @@ int benchCommand(const Arguments& args) {
                     light.direction = directionAtAngleToView(scene->camera, *lightAngle);
         std::cerr << "bench: ground truth for " << name << " (" << scene->triangleCount()
                   << " triangles)...\n";
-        SceneTruth& t = truths.emplace_back();
+        runtime::SceneTruth& t = truths.emplace_back();
         std::string truthError;
-        if (!measureSceneTruth(t, std::move(*scene), width, height, truthOptions, sink, truthError)) {
+        if (!runtime::measureSceneTruth(t, std::move(*scene), width, height, truthOptions, sink,
+                                        truthError)) {
             std::cerr << "shadowfx bench: " << truthError << "\n";
             return 1;
         }
@@ -553,12 +540,13 @@ int benchCommand(const Arguments& args) {
         for (int mapSize : mapSizes) {
             EffectVariant variant;
             const std::string size = std::to_string(mapSize);
-            variant.timed = compileVariant(effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}}, sink);
-            variant.visibility =
-                compileVariant(effect, baseOptions,
-                               {{"SHADOWFX_SHADOW_MAP_SIZE", size}, {"SHADOWFX_VISIBILITY", "1"}}, sink);
+            variant.timed =
+                runtime::compileVariant(effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}}, sink);
+            variant.visibility = runtime::compileVariant(
+                effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}, {"SHADOWFX_VISIBILITY", "1"}},
+                sink);
             if (!variant.timed || !variant.visibility || sink.errors() > 0) return 1;
-            variant.exposesVisibility = !sameFragmentShaders(*variant.timed, *variant.visibility);
+            variant.exposesVisibility = !runtime::sameFragmentShaders(*variant.timed, *variant.visibility);
             for (const fx::TextureDesc& texture : variant.timed->textures)
                 variant.honoursMapSize =
                     variant.honoursMapSize || (texture.width == mapSize && texture.height == mapSize);
@@ -603,7 +591,7 @@ int benchCommand(const Arguments& args) {
                     return 1;
                 assignedSomewhere.insert(name);
             }
-            for (const SceneTruth& t : truths) {
+            for (const runtime::SceneTruth& t : truths) {
                 // The footprint of the map this effect renders: its parameterization of the light.
                 runtime::FrameOptions fitOptions;
                 fitOptions.width = width;
@@ -761,8 +749,8 @@ int benchCommand(const Arguments& args) {
                         if (variant.exposesVisibility) {
                             runtime::FrameOptions visibilityOptions = options;
                             visibilityOptions.timePasses = false;
-                            const std::optional<VisibilityScore> score =
-                                scoreVisibility(*visibility, t, t.truth, visibilityOptions, sink);
+                            const std::optional<runtime::VisibilityScore> score =
+                                runtime::scoreVisibility(*visibility, t, t.truth, visibilityOptions, sink);
                             if (!score || sink.errors() > 0) {
                                 progress.end();
                                 return 1;

@@ -12,7 +12,6 @@
 // backend that creates no context, a penumbra bound on a scene without an area light, no goldens for this
 // renderer); FAIL. Only FAIL makes the exit status 1.
 #include "CheckCommand.h"
-#include "ShadowMeasurement.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -23,6 +22,10 @@
 #include <runtime/ImageCompare.h>
 #include <runtime/SceneFile.h>
 #include <runtime/ShadowMetrics.h>
+#include <runtime/ShadowMeasurement.h>
+#include <runtime/DiagnosticLog.h>
+#include <runtime/NonFiniteScan.h>
+#include <runtime/NumberFormat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -95,35 +98,6 @@ Outcome judge(double measured, double bound) {
     if (!(measured < bound)) return Outcome::Fail;  // NaN fails too
     return measured > kWarnFraction * bound ? Outcome::QualityWarning : Outcome::Pass;
 }
-
-std::string fixed(double value, int digits) {
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << value;
-    return out.str();
-}
-
-// Prints each distinct warning and error once on stderr and keeps the errors since the last mark(), so a
-// failing step can name its first error ("file:line:column: error: message") in its result.
-class CheckSink : public fx::DiagnosticSink {
-public:
-    using fx::DiagnosticSink::report;
-    void report(const fx::Diagnostic& diagnostic) override {
-        if (diagnostic.severity == fx::Severity::Note) return;
-        if (diagnostic.severity == fx::Severity::Error)
-            mErrors.push_back(fx::renderDiagnostic(diagnostic, false));
-        const std::string text = fx::renderDiagnostic(diagnostic);
-        if (mSeen.insert(text).second) std::cerr << text << "\n";
-    }
-    void mark() { mErrors.clear(); }
-    bool failed() const { return !mErrors.empty(); }
-    std::string firstError(const std::string& fallback) const {
-        return mErrors.empty() ? fallback : mErrors.front();
-    }
-
-private:
-    std::set<std::string> mSeen;
-    std::vector<std::string> mErrors;
-};
 
 // [SECTION] Expectations
 
@@ -271,21 +245,13 @@ std::filesystem::path goldenToWrite(const std::filesystem::path& effectGoldens, 
 
 // [SECTION] Frame checks
 
-// The first render target holding NaN or Inf, as "NAME: N non-finite values"; "" if none does.
+// The first render target holding NaN or Inf, as "render target NAME holds N NaN/Inf values"; "" if none
+// does.
 std::string nonFiniteTargets(const runtime::EffectRenderer& renderer) {
-    const fx::CompiledEffect& effect = renderer.effect();
-    for (const fx::TextureDesc& texture : effect.textures) {
-        if (texture.kind != fx::TextureDesc::Kind::RenderColorTarget &&
-            texture.kind != fx::TextureDesc::Kind::RenderDepthStencilTarget)
-            continue;
-        const std::string& name = effect.effect->parameters[texture.parameter].name;
-        std::optional<std::vector<float>> values = renderer.readTarget(name, nullptr, nullptr, nullptr);
-        if (!values) continue;  // not allocated: the technique does not use it
-        const size_t bad = static_cast<size_t>(
-            std::count_if(values->begin(), values->end(), [](float v) { return !std::isfinite(v); }));
-        if (bad > 0) return "render target " + name + " holds " + std::to_string(bad) + " NaN/Inf values";
-    }
-    return "";
+    const std::optional<runtime::NonFiniteTexels> found =
+        runtime::findNonFiniteTexels(renderer, runtime::TextureScan::RenderTargets);
+    if (!found) return "";
+    return "render target " + found->texture + " holds " + std::to_string(found->count) + " NaN/Inf values";
 }
 
 // "" if the frame shows something; else why it is blank: one colour everywhere, or fewer than 0.1% of the
@@ -436,9 +402,9 @@ struct EffectPlan {
 };
 
 // A scene with the truths the checks need: `hard` for ExpectMisclassifiedBelow (the light as a point), and
-// for an area light the soft one in SceneTruth::truth.
+// for an area light the soft one in runtime::SceneTruth::truth.
 struct CheckScene {
-    SceneTruth measured;
+    runtime::SceneTruth measured;
     runtime::GroundTruth hard;
     bool soft = false;
     std::string error;  // why the scene could not be loaded or measured
@@ -473,7 +439,7 @@ struct Settings {
 
 class Checker {
 public:
-    Checker(const Settings& settings, CheckSink& sink) : mSettings(settings), mSink(sink) {}
+    Checker(const Settings& settings, runtime::DiagnosticLog& sink) : mSettings(settings), mSink(sink) {}
 
     std::vector<CheckResult>& results() { return mResults; }
 
@@ -536,10 +502,10 @@ private:
             scene->error = mSink.firstError("no scene '" + name + "'");
             return scene;
         }
-        if (!measureSceneTruth(scene->measured, std::move(*loaded), mSettings.width, mSettings.height,
-                               mSettings.truthOptions, mSink, scene->error))
+        if (!runtime::measureSceneTruth(scene->measured, std::move(*loaded), mSettings.width,
+                                        mSettings.height, mSettings.truthOptions, mSink, scene->error))
             return scene;
-        const SceneTruth& t = scene->measured;
+        const runtime::SceneTruth& t = scene->measured;
         scene->soft = t.light->areaRadius > 0.0f;
         if (scene->soft) {
             runtime::Light point = *t.light;
@@ -564,7 +530,7 @@ private:
             row("render", Outcome::Fail, scene.error);
             return;
         }
-        const SceneTruth& t = scene.measured;
+        const runtime::SceneTruth& t = scene.measured;
         runtime::FrameOptions frameOptions;
         frameOptions.width = mSettings.width;
         frameOptions.height = mSettings.height;
@@ -583,7 +549,7 @@ private:
             problem.empty() ? "no GL errors, targets finite, frame not blank" : problem);
 
         // Expectations against the ground truth.
-        std::optional<VisibilityScore> hardScore, softScore;
+        std::optional<runtime::VisibilityScore> hardScore, softScore;
         const Expectations& expect = technique.expect;
         if (expect.shadows) {
             const bool expects = expect.misclassifiedBelow || expect.penumbraMaeBelow;
@@ -596,9 +562,9 @@ private:
                     "(README, \"Writing effects\")");
             } else {
                 mSink.mark();
-                hardScore = scoreVisibility(*visibility, t, scene.hard, frameOptions, mSink);
+                hardScore = runtime::scoreVisibility(*visibility, t, scene.hard, frameOptions, mSink);
                 if (scene.soft && hardScore)
-                    softScore = scoreVisibility(*visibility, t, t.truth, frameOptions, mSink);
+                    softScore = runtime::scoreVisibility(*visibility, t, t.truth, frameOptions, mSink);
                 if (!hardScore || mSink.failed()) {
                     row("expectations", Outcome::Fail,
                         mSink.firstError("the SHADOWFX_VISIBILITY variant could not be rendered"));
@@ -608,10 +574,11 @@ private:
             if (hardScore && expect.misclassifiedBelow) {
                 const runtime::ShadowErrors& e = hardScore->errors;
                 row("misclassified", judge(e.misclassifiedPercent, *expect.misclassifiedBelow),
-                    fixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
-                        fixed(*expect.misclassifiedBelow, 3) + " % (false shadow " +
-                        fixed(e.falseShadowPercent, 3) + " %, false light " + fixed(e.falseLightPercent, 3) +
-                        " %, " + std::to_string(e.receiverPixels) + " receiver pixels)");
+                    runtime::formatFixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
+                        runtime::formatFixed(*expect.misclassifiedBelow, 3) + " % (false shadow " +
+                        runtime::formatFixed(e.falseShadowPercent, 3) + " %, false light " +
+                        runtime::formatFixed(e.falseLightPercent, 3) + " %, " +
+                        std::to_string(e.receiverPixels) + " receiver pixels)");
             }
             if (hardScore && expect.penumbraMaeBelow) {
                 if (!softScore) {
@@ -620,8 +587,9 @@ private:
                 } else {
                     const double mae = softScore->errors.meanAbsoluteError;
                     row("penumbra", judge(mae, *expect.penumbraMaeBelow),
-                        "MAE " + fixed(mae, 4) + ", expected below " + fixed(*expect.penumbraMaeBelow, 4) +
-                            " (" + std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
+                        "MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
+                            runtime::formatFixed(*expect.penumbraMaeBelow, 4) + " (" +
+                            std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
                 }
             }
         }
@@ -663,9 +631,9 @@ private:
                               std::to_string(golden->height) + ", the frame " + std::to_string(frame.width) +
                               "x" + std::to_string(frame.height)
                         : std::to_string(comparison->failingPixels) + " pixels differ (" +
-                              fixed(100.0 * comparison->failingFraction, 3) + " %, at most " +
-                              fixed(100.0 * bound, 3) + " % allowed), max error " +
-                              fixed(comparison->maxError, 3);
+                              runtime::formatFixed(100.0 * comparison->failingFraction, 3) + " %, at most " +
+                              runtime::formatFixed(100.0 * bound, 3) + " % allowed), max error " +
+                              runtime::formatFixed(comparison->maxError, 3);
                 row("golden", outcome, detail + " vs " + place.path.string());
             }
         }
@@ -699,8 +667,9 @@ private:
     void writeFailureImages(const std::string& effect, const std::string& technique, const std::string& scene,
                             const runtime::FrameImage& frame,
                             const std::optional<runtime::FrameImage>& golden,
-                            const std::optional<runtime::FuzzyCompareResult>& comparison, const SceneTruth& t,
-                            const CheckScene& checkScene, const std::optional<VisibilityScore>& score) {
+                            const std::optional<runtime::FuzzyCompareResult>& comparison,
+                            const runtime::SceneTruth& t, const CheckScene& checkScene,
+                            const std::optional<runtime::VisibilityScore>& score) {
         const std::string base = imageBase(effect, technique, scene);
         if (!mImagesWritten.insert(base).second) return;
         std::error_code fsError;
@@ -720,7 +689,7 @@ private:
     }
 
     const Settings& mSettings;
-    CheckSink& mSink;
+    runtime::DiagnosticLog& mSink;
     std::vector<CheckResult> mResults;
     std::set<std::string> mWritten;        // goldens written by this --update run
     std::set<std::string> mImagesWritten;  // failure images written by this run
@@ -736,7 +705,8 @@ int checkCommand(const Arguments& args) {
         return 2;
     }
     const fx::ParseOptions parseOptions = effectParseOptions(args);
-    CheckSink sink;
+    // Each distinct warning and error once on stderr; a failing step names its first error in its result.
+    runtime::DiagnosticLog sink([](const std::string& text) { std::cerr << text << "\n"; });
 
     if (args.flag("--list-techniques")) {
         int status = 0;
@@ -821,12 +791,13 @@ int checkCommand(const Arguments& args) {
             if (t.expect.mapSize)
                 defines.emplace_back("SHADOWFX_SHADOW_MAP_SIZE", std::to_string(*t.expect.mapSize));
             sink.mark();
-            t.variants.shaded = compileVariant(path, parseOptions, defines, sink, t.name);
+            t.variants.shaded = runtime::compileVariant(path, parseOptions, defines, sink, t.name);
             if (t.variants.shaded && !sink.failed() && t.expect.shadows) {
                 defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-                t.variants.visibility = compileVariant(path, parseOptions, defines, sink, t.name);
+                t.variants.visibility = runtime::compileVariant(path, parseOptions, defines, sink, t.name);
                 t.variants.exposesVisibility =
-                    t.variants.visibility && !sameFragmentShaders(*t.variants.shaded, *t.variants.visibility);
+                    t.variants.visibility &&
+                    !runtime::sameFragmentShaders(*t.variants.shaded, *t.variants.visibility);
             }
             if (!t.variants.shaded || sink.failed()) {
                 t.variants.shaded.reset();

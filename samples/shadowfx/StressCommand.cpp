@@ -18,6 +18,10 @@
 #include <runtime/LightParameterization.h>
 #include <runtime/ShadowMetrics.h>
 #include <runtime/StressCases.h>
+#include <runtime/DiagnosticLog.h>
+#include <runtime/NonFiniteScan.h>
+#include <runtime/NumberFormat.h>
+#include <runtime/ShadowMeasurement.h>
 
 #include <nlohmann/json.hpp>
 
@@ -71,39 +75,6 @@ constexpr size_t kMinScoredReceivers = 1000;
 // Light volume: clip coordinates may exceed the volume by this fraction of w (rounding on its faces).
 constexpr float kClipTolerance = 1e-3f;
 
-class StressSink : public fx::DiagnosticSink {
-public:
-    using fx::DiagnosticSink::report;
-    void report(const fx::Diagnostic& diagnostic) override {
-        if (diagnostic.severity != fx::Severity::Error) return;
-        ++mErrors;
-        if (mMessages.size() < 4) mMessages.push_back(fx::renderDiagnostic(diagnostic));
-    }
-    int errors() const { return mErrors; }
-    // The first errors on one line, for a table cell; clears them.
-    std::string take() {
-        std::string text;
-        for (const std::string& message : mMessages) {
-            const std::string firstLine = message.substr(0, message.find('\n'));
-            text += (text.empty() ? "" : "; ") + firstLine;
-        }
-        mMessages.clear();
-        mErrors = 0;
-        return text;
-    }
-
-private:
-    int mErrors = 0;
-    std::vector<std::string> mMessages;
-};
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
-
 // [SECTION] Truth
 
 struct FrameTruth {
@@ -146,7 +117,7 @@ size_t countOutsideLightVolume(const runtime::GBuffer& gbuffer, const std::vecto
 }
 
 std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width, int height, int mapSize,
-                                      StressSink& sink) {
+                                      runtime::DiagnosticLog& sink) {
     CaseTruth truth;
     truth.stressCase = std::move(stressCase);
     const runtime::StressCase& c = truth.stressCase;
@@ -158,13 +129,14 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
         FrameTruth& frame = truth.frames.emplace_back();
         frame.scene = c.scene;
         frame.scene.camera = cameras[f];
-        const runtime::Scene& truthScene = c.truthScene ? *c.truthScene : frame.scene;
-        const runtime::Light& light = truthScene.lights.at(0);
-        std::optional<runtime::GBuffer> gbuffer = runtime::renderGBuffer(truthScene, width, height, sink);
-        if (!gbuffer) return std::nullopt;
-        const runtime::ShadowRayCaster caster(truthScene);
-        frame.visibility = caster.compute(*gbuffer, light).visibility;
-        frame.receivers = runtime::receiverMask(*gbuffer, light);
+        runtime::SceneTruth measured;
+        std::string error;
+        if (!runtime::measureSceneTruth(measured, c.truthScene ? *c.truthScene : frame.scene, width, height,
+                                        {}, sink, error))
+            return std::nullopt;
+        frame.visibility = std::move(measured.truth.visibility);
+        frame.receivers = std::move(measured.receivers);
+        std::optional<runtime::GBuffer> gbuffer = std::move(measured.gbuffer);
         frame.receiverCount =
             static_cast<size_t>(std::count(frame.receivers.begin(), frame.receivers.end(), 1));
         if (f != 0) continue;
@@ -172,14 +144,14 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
         // The runtime's matrices for the configuration itself (not the truth's stand-in).
         const runtime::Scene& scene = frame.scene;
         const runtime::Bounds bounds = scene.bounds();
-        if (!finite(scene.camera.view()) || !finite(scene.camera.projection(aspect)))
+        if (!runtime::isFinite(scene.camera.view()) || !runtime::isFinite(scene.camera.projection(aspect)))
             truth.problems.push_back("camera matrix not finite");
         const auto uniformFit = [&](const runtime::Light& light) {
             return runtime::fitLight(runtime::LightParameterization::Uniform, scene, bounds, aspect, light);
         };
         for (const runtime::Light& sceneLight : scene.lights) {
             const runtime::LightFit fit = uniformFit(sceneLight);
-            if (!finite(fit.view) || !finite(fit.projection))
+            if (!runtime::isFinite(fit.view) || !runtime::isFinite(fit.projection))
                 truth.problems.push_back("light '" + sceneLight.name + "' matrix not finite");
         }
         std::optional<runtime::GBuffer> own =
@@ -232,39 +204,8 @@ struct Outcome {
     }
 };
 
-std::string percent(double value) {
-    std::ostringstream text;
-    text << std::fixed << std::setprecision(value < 10.0 ? 3 : 1) << value << "%";
-    return text.str();
-}
-
-// First non-finite value among a render target's texels, as "name[x,y]".
-std::optional<std::string> nonFiniteTarget(const runtime::EffectRenderer& renderer) {
-    for (const fx::TextureDesc& texture : renderer.effect().textures) {
-        const std::string& name = renderer.effect().effect->parameters[texture.parameter].name;
-        int width = 0, height = 0, channels = 0;
-        std::optional<std::vector<float>> texels = renderer.readTarget(name, &width, &height, &channels);
-        if (!texels) continue;
-        for (size_t i = 0; i < texels->size(); ++i) {
-            if (std::isfinite((*texels)[i])) continue;
-            const size_t texel = i / static_cast<size_t>(std::max(channels, 1));
-            return name + "[" + std::to_string(texel % static_cast<size_t>(width)) + "," +
-                   std::to_string(texel / static_cast<size_t>(width)) + "]";
-        }
-    }
-    return std::nullopt;
-}
-
-std::optional<std::string> nonFiniteParameter(const runtime::EffectRenderer& renderer) {
-    const auto& parameters = renderer.effect().effect->parameters;
-    for (size_t i = 0; i < parameters.size(); ++i)
-        for (float value : renderer.parameter(i).data)
-            if (!std::isfinite(value)) return parameters[i].name;
-    return std::nullopt;
-}
-
 Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const std::string& technique,
-                const CaseTruth& truth, int width, int height, int mapSize, StressSink& sink) {
+                const CaseTruth& truth, int width, int height, int mapSize, runtime::DiagnosticLog& sink) {
     Outcome outcome;
     outcome.caseName = truth.stressCase.name;
     outcome.technique = technique;
@@ -278,8 +219,8 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
     double errorSum = 0.0, falseShadowSum = 0.0, falseLightSum = 0.0;
     size_t scoredFrames = 0;
     for (const FrameTruth& frame : truth.frames) {
-        if (!renderer.render(frame.scene, options, sink) || sink.errors() > 0) {
-            outcome.fail("render failed: " + sink.take());
+        if (!renderer.render(frame.scene, options, sink) || sink.failed()) {
+            outcome.fail("render failed: " + sink.takeErrors());
             return outcome;
         }
         // The light matrices this effect renders with (its Parameterization annotation, README "Light-space
@@ -287,7 +228,7 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
         if (&frame == &truth.frames.front() && !frame.scene.lights.empty()) {
             const std::optional<runtime::LightFit> fit =
                 renderer.lightFit(frame.scene, frame.scene.lights.front().name, options);
-            if (fit && (!finite(fit->view) || !finite(fit->projection))) {
+            if (fit && (!runtime::isFinite(fit->view) || !runtime::isFinite(fit->projection))) {
                 outcome.fail("the effect's light matrix is not finite");
             } else if (fit) {
                 const glm::mat4 viewProjection = fit->projection * fit->view;
@@ -307,12 +248,14 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
                 }
             }
         }
-        if (std::optional<std::string> name = nonFiniteParameter(renderer)) {
+        if (std::optional<std::string> name = runtime::findNonFiniteParameter(renderer)) {
             outcome.fail("parameter " + *name + " not finite");
             return outcome;
         }
-        if (std::optional<std::string> texel = nonFiniteTarget(renderer)) {
-            outcome.fail("NaN/Inf in render target " + *texel);
+        if (std::optional<runtime::NonFiniteTexels> texels =
+                runtime::findNonFiniteTexels(renderer, runtime::TextureScan::AllTextures)) {
+            outcome.fail("NaN/Inf in render target " + texels->texture + "[" + std::to_string(texels->x) +
+                         "," + std::to_string(texels->y) + "]");
             return outcome;
         }
         if (!exposesVisibility) continue;
@@ -359,8 +302,9 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
         outcome.shimmerMean = sum / static_cast<double>(shadowed.size() - 1);
         outcome.shimmerMax = worst;
         if (*outcome.shimmerMean > kShimmerLimit)
-            outcome.fail("shimmer " + percent(*outcome.shimmerMean) +
-                         " of steady pixels flip per frame (limit " + percent(kShimmerLimit) + ")");
+            outcome.fail("shimmer " + runtime::formatPercent(*outcome.shimmerMean) +
+                         " of steady pixels flip per frame (limit " + runtime::formatPercent(kShimmerLimit) +
+                         ")");
     }
     return outcome;
 }
@@ -388,11 +332,12 @@ void judge(Outcome& outcome) {
     if (!outcome.misclassified || outcome.receivers < kMinScoredReceivers) return;
     const double error = *outcome.misclassified;
     if (outcome.ordinary && error > kOrdinaryFactor * *outcome.ordinary + kOrdinarySlack)
-        outcome.fail("error " + percent(error) + " > " + std::to_string(static_cast<int>(kOrdinaryFactor)) +
-                     "x the ordinary case's " + percent(*outcome.ordinary) + " + 1 point");
+        outcome.fail("error " + runtime::formatPercent(error) + " > " +
+                     std::to_string(static_cast<int>(kOrdinaryFactor)) + "x the ordinary case's " +
+                     runtime::formatPercent(*outcome.ordinary) + " + 1 point");
     if (outcome.uniform && error > kUniformFactor * *outcome.uniform + kUniformSlack)
-        outcome.fail("error " + percent(error) + " > 1.5x the uniform map's " + percent(*outcome.uniform) +
-                     " + 0.5 point");
+        outcome.fail("error " + runtime::formatPercent(error) + " > 1.5x the uniform map's " +
+                     runtime::formatPercent(*outcome.uniform) + " + 0.5 point");
 }
 
 struct EffectUnderTest {
@@ -402,25 +347,15 @@ struct EffectUnderTest {
 };
 
 std::optional<EffectUnderTest> compileForStress(const std::string& path, const fx::ParseOptions& base,
-                                                int mapSize, StressSink& sink) {
-    const auto compile = [&](bool visibility) -> std::shared_ptr<fx::CompiledEffect> {
-        fx::ParseOptions options = base;
-        options.defines.emplace_back("SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize));
-        if (visibility) options.defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-        std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, sink);
-        return effect ? fx::compileEffect(effect, fx::CompileOptions{}, sink) : nullptr;
-    };
+                                                int mapSize, runtime::DiagnosticLog& sink) {
+    const std::pair<std::string, std::string> size{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize)};
     EffectUnderTest effect;
     effect.path = path;
-    effect.visibility = compile(true);
-    std::shared_ptr<fx::CompiledEffect> shaded = compile(false);
+    effect.visibility = runtime::compileVariant(path, base, {size, {"SHADOWFX_VISIBILITY", "1"}}, sink);
+    std::shared_ptr<fx::CompiledEffect> shaded = runtime::compileVariant(path, base, {size}, sink);
     if (!effect.visibility || !shaded) return std::nullopt;
     // The define changed some pixel shader: the frame is the shadow factor.
-    for (size_t t = 0; t < shaded->techniques.size() && !effect.exposesVisibility; ++t)
-        for (size_t p = 0; p < shaded->techniques[t].passes.size(); ++p)
-            if (shaded->techniques[t].passes[p].fragment.glsl !=
-                effect.visibility->techniques[t].passes[p].fragment.glsl)
-                effect.exposesVisibility = true;
+    effect.exposesVisibility = !runtime::sameFragmentShaders(*shaded, *effect.visibility);
     return effect;
 }
 
@@ -431,7 +366,7 @@ Json optionalJson(const std::optional<double>& value) {
 }
 
 std::string cell(const std::optional<double>& value) {
-    return value ? percent(*value) : "-";
+    return value ? runtime::formatPercent(*value) : "-";
 }
 
 void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
@@ -461,7 +396,7 @@ void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
         if (o.misclassified == std::nullopt && o.pass && o.receivers == 0) why = "no receiver pixels";
         if (o.misclassified && o.receivers < kMinScoredReceivers)
             why = std::to_string(o.receivers) + " receiver pixels: too few to judge the error";
-        const std::string shimmer = o.shimmerMean ? percent(*o.shimmerMean) : "-";
+        const std::string shimmer = o.shimmerMean ? runtime::formatPercent(*o.shimmerMean) : "-";
         const std::string result = o.pass ? (o.expectedFailure ? "xpass" : "pass")
                                           : (o.expectedFailure && o.misclassified ? "xfail" : "FAIL");
         if (o.expectedFailure)
@@ -565,15 +500,15 @@ int stressCommand(const Arguments& args) {
         return 1;
     }
 
-    StressSink sink;
+    runtime::DiagnosticLog sink;
     std::map<std::string, CaseTruth> truths;
     for (const std::string& name : ordered) {
         std::cerr << "stress: ground truth for " << name << "\n";
         std::optional<CaseTruth> truth =
             computeTruth(*runtime::makeStressCase(name), width, height, mapSize, sink);
         if (!truth) {
-            std::cerr << "shadowfx stress: case " << name << ": the ground truth failed: " << sink.take()
-                      << "\n";
+            std::cerr << "shadowfx stress: case " << name
+                      << ": the ground truth failed: " << sink.takeErrors() << "\n";
             return 1;
         }
         truths.emplace(name, std::move(*truth));
@@ -589,7 +524,7 @@ int stressCommand(const Arguments& args) {
             uniform ? runtime::EffectRenderer::create(uniform->visibility, sink) : nullptr;
         if (!renderer) {
             std::cerr << "shadowfx stress: the uniform reference " << uniformSpec
-                      << " failed: " << sink.take() << "\n";
+                      << " failed: " << sink.takeErrors() << "\n";
             return 1;
         }
         for (const std::string& name : ordered) {
@@ -611,7 +546,7 @@ int stressCommand(const Arguments& args) {
             o.effect = effectName;
             o.technique = "*";
             o.caseName = ordered.front();
-            o.fail("does not compile or link: " + sink.take());
+            o.fail("does not compile or link: " + sink.takeErrors());
             outcomes.push_back(o);
             anyFailed = true;
             continue;

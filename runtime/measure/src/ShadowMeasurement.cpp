@@ -1,15 +1,14 @@
 // ShadowMeasurement: see ShadowMeasurement.h.
-#include "ShadowMeasurement.h"
+#include <runtime/ShadowMeasurement.h>
 
 #include <fx/EffectCompiler.h>
 
 #include <chrono>
 
-namespace shadowfx::cli {
+namespace runtime {
 
-bool measureSceneTruth(SceneTruth& t, runtime::Scene scene, int width, int height,
-                       const runtime::GroundTruthOptions& options, fx::DiagnosticSink& sink,
-                       std::string& error) {
+bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const GroundTruthOptions& options,
+                       fx::DiagnosticSink& sink, std::string& error) {
     t.scene = std::move(scene);
     t.light = t.scene.findLight("light0");
     if (!t.light && !t.scene.lights.empty()) t.light = &t.scene.lights[0];
@@ -18,15 +17,15 @@ bool measureSceneTruth(SceneTruth& t, runtime::Scene scene, int width, int heigh
         return false;
     }
     const auto start = std::chrono::steady_clock::now();
-    std::optional<runtime::GBuffer> gbuffer = runtime::renderGBuffer(t.scene, width, height, sink);
+    std::optional<GBuffer> gbuffer = renderGBuffer(t.scene, width, height, sink);
     if (!gbuffer) {
         error = "the G-buffer of scene '" + t.scene.name + "' could not be rendered";
         return false;
     }
     t.gbuffer = std::move(*gbuffer);
-    const runtime::ShadowRayCaster caster(t.scene);
+    const ShadowRayCaster caster(t.scene);
     t.truth = caster.compute(t.gbuffer, *t.light, options);
-    t.receivers = runtime::receiverMask(t.gbuffer, *t.light);
+    t.receivers = receiverMask(t.gbuffer, *t.light);
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
 }
@@ -53,17 +52,16 @@ bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& 
     return true;
 }
 
-std::optional<VisibilityScore> scoreVisibility(runtime::EffectRenderer& visibilityRenderer,
-                                               const SceneTruth& t, const runtime::GroundTruth& truth,
-                                               const runtime::FrameOptions& options,
+std::optional<VisibilityScore> scoreVisibility(EffectRenderer& visibilityRenderer, const SceneTruth& t,
+                                               const GroundTruth& truth, const FrameOptions& options,
                                                fx::DiagnosticSink& sink) {
-    runtime::FrameOptions frame = options;
+    FrameOptions frame = options;
     frame.timePasses = false;
     if (!visibilityRenderer.render(t.scene, frame, sink)) return std::nullopt;
     VisibilityScore score;
-    score.visibility = runtime::visibilityFromFrame(visibilityRenderer.readFrame());
-    score.errors = runtime::compareVisibility(truth.visibility, score.visibility, t.receivers);
+    score.visibility = visibilityFromFrame(visibilityRenderer.readFrame());
+    score.errors = compareVisibility(truth.visibility, score.visibility, t.receivers);
     return score;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace runtime

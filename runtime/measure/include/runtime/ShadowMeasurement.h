@@ -1,4 +1,4 @@
-// ShadowMeasurement: the measurement core `shadowfx bench` and `shadowfx check` share — the ray-cast
+// ShadowMeasurement: the measurement core `shadowfx bench`, `check` and `stress` share — the ray-cast
 // ground truth of a scene, the two compiled variants of an effect (as written, and with
 // SHADOWFX_VISIBILITY so that its final pass writes the shadow factor) and the scoring of one visibility
 // frame against the truth (runtime/GroundTruth.h, runtime/ShadowMetrics.h).
@@ -19,24 +19,23 @@
 #include <utility>
 #include <vector>
 
-namespace shadowfx::cli {
+namespace runtime {
 
 // A scene with its G-buffer, the visibility of its light0 (or first light) and its receiver pixels.
 // `light` points into `scene`: keep a SceneTruth where it was filled (no copies or moves).
 struct SceneTruth {
-    runtime::Scene scene;
-    const runtime::Light* light = nullptr;
-    runtime::GBuffer gbuffer;
-    runtime::GroundTruth truth;
+    Scene scene;
+    const Light* light = nullptr;
+    GBuffer gbuffer;
+    GroundTruth truth;
     std::vector<uint8_t> receivers;
     double seconds = 0.0;  // G-buffer and rays
 };
 
 // Fills `t` for `scene` at width x height (needs a current GL context). False with `error` set if the
 // scene has no light or its G-buffer cannot be rendered.
-bool measureSceneTruth(SceneTruth& t, runtime::Scene scene, int width, int height,
-                       const runtime::GroundTruthOptions& options, fx::DiagnosticSink& sink,
-                       std::string& error);
+bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const GroundTruthOptions& options,
+                       fx::DiagnosticSink& sink, std::string& error);
 
 // Parses and compiles the effect at `path` with `options` plus the `extra` preprocessor definitions; only
 // `technique` when one is named.
@@ -53,11 +52,10 @@ bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& 
 // (which may be `t.truth` or another truth of the same G-buffer, e.g. a hard one for an area light).
 struct VisibilityScore {
     std::vector<float> visibility;  // the effect's, per pixel
-    runtime::ShadowErrors errors;
+    ShadowErrors errors;
 };
-std::optional<VisibilityScore> scoreVisibility(runtime::EffectRenderer& visibilityRenderer,
-                                               const SceneTruth& t, const runtime::GroundTruth& truth,
-                                               const runtime::FrameOptions& options,
+std::optional<VisibilityScore> scoreVisibility(EffectRenderer& visibilityRenderer, const SceneTruth& t,
+                                               const GroundTruth& truth, const FrameOptions& options,
                                                fx::DiagnosticSink& sink);
 
-}  // namespace shadowfx::cli
+}  // namespace runtime

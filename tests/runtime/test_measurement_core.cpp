@@ -1,0 +1,78 @@
+// The measurement core the shadowfx tools share (runtime/measure): the diagnostics log, number formats,
+// the non-finite checks and the compiled variants of an effect.
+#include <runtime/DiagnosticLog.h>
+#include <runtime/NonFiniteScan.h>
+#include <runtime/NumberFormat.h>
+#include <runtime/ShadowMeasurement.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+fx::Diagnostic error(const std::string& message, int line) {
+    return {fx::DiagId::PreprocessorError, fx::Severity::Error, {"a.fx", line, 3}, message};
+}
+
+TEST(DiagnosticLog, ShowsEachDistinctDiagnosticOnceAndKeepsErrorsSinceMark) {
+    std::vector<std::string> shown;
+    runtime::DiagnosticLog log([&](const std::string& text) { shown.push_back(text); });
+    log.report(error("first", 1));
+    log.report(error("first", 1));  // the same again: counted, not shown again
+    log.report({fx::DiagId::PreprocessorError, fx::Severity::Note, {"a.fx", 2, 1}, "a note"});
+    ASSERT_EQ(shown.size(), 1u);
+    EXPECT_EQ(shown[0], "a.fx:1:3: error: first");
+    EXPECT_EQ(log.errors(), 2);
+    EXPECT_TRUE(log.failed());
+    EXPECT_EQ(log.firstError("none"), "a.fx:1:3: error: first");
+    log.mark();
+    EXPECT_FALSE(log.failed());
+    EXPECT_EQ(log.firstError("none"), "none");
+    EXPECT_EQ(log.errors(), 2);
+}
+
+TEST(DiagnosticLog, TakeErrorsJoinsTheFirstFourAndMarks) {
+    runtime::DiagnosticLog log;
+    for (int i = 1; i <= 6; ++i) log.report(error("e" + std::to_string(i), i));
+    EXPECT_EQ(log.takeErrors(),
+              "a.fx:1:3: error: e1; a.fx:2:3: error: e2; a.fx:3:3: error: e3; a.fx:4:3: error: e4");
+    EXPECT_FALSE(log.failed());
+    EXPECT_EQ(log.takeErrors(), "");
+}
+
+TEST(NumberFormat, FixedDigitsAndPercentPrecision) {
+    EXPECT_EQ(runtime::formatFixed(0.125, 3), "0.125");
+    EXPECT_EQ(runtime::formatFixed(2.0, 2), "2.00");
+    EXPECT_EQ(runtime::formatPercent(0.0421), "0.042%");
+    EXPECT_EQ(runtime::formatPercent(12.54), "12.5%");
+}
+
+TEST(NonFiniteScan, MatrixWithNanOrInfIsNotFinite) {
+    glm::mat4 m(1.0f);
+    EXPECT_TRUE(runtime::isFinite(m));
+    m[2][3] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(runtime::isFinite(m));
+    m[2][3] = std::numeric_limits<float>::infinity();
+    EXPECT_FALSE(runtime::isFinite(m));
+}
+
+TEST(ShadowMeasurement, VisibilityVariantChangesTheFragmentShaderOfAnEffectThatExposesIt) {
+    fx::DiagnosticList diagnostics;
+    auto shaded = runtime::compileVariant("effects/pcf.fx", {}, {}, diagnostics, "bilinear");
+    auto visibility = runtime::compileVariant("effects/pcf.fx", {}, {{"SHADOWFX_VISIBILITY", "1"}},
+                                              diagnostics, "bilinear");
+    ASSERT_TRUE(shaded && visibility);
+    EXPECT_TRUE(runtime::sameFragmentShaders(*shaded, *shaded));
+    EXPECT_FALSE(runtime::sameFragmentShaders(*shaded, *visibility));
+    auto plain = runtime::compileVariant("effects/plain_lit.fx", {}, {}, diagnostics);
+    auto plainVisibility =
+        runtime::compileVariant("effects/plain_lit.fx", {}, {{"SHADOWFX_VISIBILITY", "1"}}, diagnostics);
+    ASSERT_TRUE(plain && plainVisibility);
+    EXPECT_TRUE(runtime::sameFragmentShaders(*plain, *plainVisibility));  // no shadow term to expose
+}
+
+}  // namespace
