@@ -6,12 +6,14 @@
 // [SECTION] Stages: lowering, cache, glslang, SPIRV-Cross, reflection
 // [SECTION] Passes and techniques
 #include <fx/CompileCache.h>
+#include <fx/CompileWorkers.h>
 #include <fx/EffectCompiler.h>
 #include <fx/Preshader.h>
 
 #include "HlslToSpirv.h"
 #include "PassLowering.h"
 #include "SpirvToGlsl.h"
+#include "StageCompile.h"
 
 #include <cmath>
 #include <cstdio>
@@ -73,12 +75,28 @@ private:
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
     void validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique);
-    bool compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass);
+    // A stage's place in mOut: technique and pass index.
+    struct PassSlot {
+        size_t technique = 0;
+        size_t pass = 0;
+    };
+    // A stage the cache did not have: compiled with all the others once every pass is lowered, so that
+    // the stages of an effect compile concurrently across the worker pool.
+    struct PendingStage {
+        PassSlot slot;
+        LoweredStage lowered;
+        uint64_t key = 0;
+        size_t job = 0;  // index into mJobs (identical units share one job)
+    };
+    bool compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot);
+    std::vector<StageOutcome> runJobs();
+    void finishPendingStages();
+    SourceLoc functionLocation(const LoweredStage& lowered) const;
     void reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered);
     SourceLoc userLocation(const HlslMessage& m, const LoweredStage& lowered) const;
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
     const Expr* shaderExpr(const StateAssignment& s);
-    CompiledPass compilePass(const Pass& p);
+    CompiledPass compilePass(const Pass& p, PassSlot slot);
 
     const Effect& mEffect;
     const CompileOptions& mOptions;
@@ -87,6 +105,9 @@ private:
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
     bool mFailed = false;
+    std::vector<PendingStage> mPending;
+    std::vector<StageJob> mJobs;
+    std::map<uint64_t, size_t> mJobByKey;
 };
 
 // [SECTION] Initial values
@@ -525,7 +546,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
     }
 }
 
-bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass) {
+bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
     auto lowered = lowerStage(mEffect, compile, stage, pass.arguments, mDiagnostics);
     if (!lowered) {
         mFailed = true;
@@ -534,36 +555,96 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
     StageProgram& program = stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
     std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
     uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
-    const StageProgram* cached = mOptions.cache ? mOptions.cache->find(key) : nullptr;
-    if (cached) {
+    if (const StageProgram* cached = mOptions.cache ? mOptions.cache->find(key) : nullptr) {
         program = *cached;
-    } else {
-        HlslCompileResult spirv = compileHlslToSpirv(lowered->hlsl, stage, kWrapperEntryPoint);
-        reportHlslMessages(spirv.messages, *lowered);
-        if (!spirv.success) {
-            mFailed = true;
-            return false;
-        }
-        CrossOptions cross;
-        bool vertex = stage == ShaderStage::Vertex;
-        cross.uniformBlockName = vertex ? "fx_VsGlobals" : "fx_PsGlobals";
-        cross.uniformBlockBinding = vertex ? 0 : 1;
-        cross.samplerUnits = mSamplerUnits;
-        cross.depthSamplers = lowered->depthSamplers;
-        std::string crossError;
-        if (!spirvToGlsl(spirv.spirv, stage, cross, program, crossError)) {
-            error(DiagId::CrossCompileError, compile.loc, {crossError});
-            return false;
-        }
-        program.stage = stage;
-        program.entryPoint = lowered->entryPoint;
-        program.profile = lowered->profile;
-        program.hlsl = lowered->hlsl;
-        program.sourceHash = key;
-        if (mOptions.cache) mOptions.cache->store(key, program);
+        resolveReflection(program, pass);
+        return true;
     }
-    resolveReflection(program, pass);
+    auto [it, added] = mJobByKey.emplace(key, mJobs.size());
+    if (added) {
+        StageJob job;
+        job.hlsl = lowered->hlsl;
+        job.stage = stage;
+        job.entryPoint = kWrapperEntryPoint;
+        bool vertex = stage == ShaderStage::Vertex;
+        job.cross.uniformBlockName = vertex ? "fx_VsGlobals" : "fx_PsGlobals";
+        job.cross.uniformBlockBinding = vertex ? 0 : 1;
+        job.cross.samplerUnits = mSamplerUnits;
+        job.cross.depthSamplers = lowered->depthSamplers;
+        mJobs.push_back(std::move(job));
+    }
+    mPending.push_back(PendingStage{slot, std::move(*lowered), key, it->second});
     return true;
+}
+
+std::vector<StageOutcome> Compiler::runJobs() {
+    std::vector<StageOutcome> outcomes;
+    if (mJobs.empty()) return outcomes;
+    if (mOptions.isolation == CompileIsolation::Workers) {
+        CompileWorkers& workers = mOptions.workers ? *mOptions.workers : CompileWorkers::shared();
+        if (workers.available()) return workers.run(mJobs);
+        mDiagnostics.report(DiagId::CompileWorkerNotFound, SourceLoc{mEffect.path, 0, 0});
+    }
+    for (const StageJob& job : mJobs) outcomes.push_back(compileStageInProcess(job));
+    return outcomes;
+}
+
+SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {
+    std::vector<const FunctionDecl*> functions = mEffect.findFunctions(lowered.entryPoint);
+    return functions.empty() || !functions.front()->loc.valid() ? lowered.compileLoc : functions.front()->loc;
+}
+
+void Compiler::finishPendingStages() {
+    std::vector<StageOutcome> outcomes = runJobs();
+    std::vector<bool> reported(outcomes.size(), false);
+    for (PendingStage& pending : mPending) {
+        const StageOutcome& outcome = outcomes[pending.job];
+        const LoweredStage& lowered = pending.lowered;
+        CompiledPass& pass = mOut->techniques[pending.slot.technique].passes[pending.slot.pass];
+        // A unit shared by several passes is reported once, at the first.
+        const bool first = !reported[pending.job];
+        reported[pending.job] = true;
+        if (first) reportHlslMessages(outcome.messages, lowered);
+        const SourceLoc function = functionLocation(lowered);
+        using Status = StageOutcome::Status;
+        switch (outcome.status) {
+            case Status::Compiled:
+                break;
+            case Status::HlslFailed:
+                mFailed = true;
+                continue;
+            case Status::CrossFailed:
+                if (first) error(DiagId::CrossCompileError, lowered.compileLoc, {outcome.crossError});
+                mFailed = true;
+                continue;
+            case Status::Crashed:
+                if (first)
+                    error(DiagId::HlslCompilerCrashed, function,
+                          {outcome.signal ? "signal " + std::to_string(outcome.signal) : outcome.crossError});
+                mFailed = true;
+                continue;
+            case Status::TimedOut: {
+                CompileWorkers& workers = mOptions.workers ? *mOptions.workers : CompileWorkers::shared();
+                if (first)
+                    error(DiagId::HlslCompilerTimedOut, function, {std::to_string(workers.timeLimitMs())});
+                mFailed = true;
+                continue;
+            }
+            case Status::WorkerFailed:
+                if (first) error(DiagId::CompileWorkerFailed, function, {outcome.crossError});
+                mFailed = true;
+                continue;
+        }
+        StageProgram& program = lowered.stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
+        program = outcome.program;
+        program.stage = lowered.stage;
+        program.entryPoint = lowered.entryPoint;
+        program.profile = lowered.profile;
+        program.hlsl = lowered.hlsl;
+        program.sourceHash = pending.key;
+        if (mOptions.cache) mOptions.cache->store(pending.key, program);
+        resolveReflection(program, pass);
+    }
 }
 
 // [SECTION] Passes and techniques
@@ -582,7 +663,7 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
     return nullptr;
 }
 
-CompiledPass Compiler::compilePass(const Pass& p) {
+CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
     pass.name = p.name;
     pass.loc = p.loc;
@@ -596,7 +677,7 @@ CompiledPass Compiler::compilePass(const Pass& p) {
             if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile,
                              *id == RenderStateId::VertexShader ? ShaderStage::Vertex : ShaderStage::Fragment,
-                             pass);
+                             pass, slot);
             continue;
         }
         const StateInfo& info = renderStateInfo(*id);
@@ -642,10 +723,17 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         technique.loc = t.loc;
         technique.script = script(t.annotations, technique.hasScript);
         validateScript(technique.script, &t);
-        for (const Pass& p : t.passes) technique.passes.push_back(compilePass(p));
+        for (const Pass& p : t.passes)
+            technique.passes.push_back(
+                compilePass(p, PassSlot{mOut->techniques.size(), technique.passes.size()}));
         mOut->techniques.push_back(std::move(technique));
     }
-    if (!found) error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
+    finishPendingStages();
+    // An empty file, or one of helpers only; said only when nothing else is wrong with it.
+    if (mEffect.techniques.empty() && !mFailed)
+        error(DiagId::NoTechniques, SourceLoc{mEffect.path, 1, 1}, {});
+    else if (!found)
+        error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
     if (mFailed) return nullptr;
     return std::move(mOut);
 }

@@ -71,7 +71,17 @@ std::string markStringizing(const std::string& source) {
 // as "bad" or "<", so the user read "unknown type 'bad'" or "found '<'" instead of the character. Comments
 // and strings may hold any bytes (FX Composer files have Latin-1 comments and UIName strings).
 // Reports the first bad character of each line, at most 20, and returns false if there was any.
+// A NUL byte is an error anywhere, comments and strings included: no text editor writes one, so the file
+// is not what its author meant (a truncated save, a binary file).
 bool checkCharacters(const std::string& text, const std::string& file, DiagnosticSink& diagnostics) {
+    if (size_t nul = text.find('\0'); nul != std::string::npos) {
+        const int nulLine = 1 + static_cast<int>(std::count(text.begin(), text.begin() + nul, '\n'));
+        const size_t nulLineStart =
+            text.rfind('\n', nul) == std::string::npos ? 0 : text.rfind('\n', nul) + 1;
+        diagnostics.report(DiagId::InvalidCharacter,
+                           SourceLoc{file, nulLine, static_cast<int>(nul - nulLineStart) + 1}, {"\\x00"});
+        return false;
+    }
     int line = 1, reported = 0, lastReportedLine = 0;
     size_t lineStart = 0;
     size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark is fine

@@ -117,6 +117,9 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
     } catch (const std::exception& e) {
         error = e.what();
         return false;
+    } catch (...) {  // every throw is a diagnostic, whatever SPIRV-Cross (or the allocator) throws
+        error = "SPIRV-Cross threw an exception that is not a std::exception";
+        return false;
     }
 }
 

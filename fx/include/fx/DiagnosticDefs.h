@@ -42,6 +42,13 @@ FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
 FX_DIAGNOSTIC(HlslError, Error, "{0}")
 FX_DIAGNOSTIC(HlslWarning, Warning, "{0}")
 FX_DIAGNOSTIC(CrossCompileError, Error, "SPIR-V to GLSL: {0}")
+FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this shader ({0})")
+FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
+              "the HLSL compiler did not finish this shader within {0} ms and was stopped")
+FX_DIAGNOSTIC(CompileWorkerFailed, Error, "the HLSL compiler's worker process failed: {0}")
+FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
+              "no shadowfx-compile-worker found (set SHADOWFX_COMPILE_WORKER); compiling in this process, "
+              "where a crash of the HLSL compiler ends the program")
 FX_DIAGNOSTIC(UnknownIdentifier, Error, "unknown identifier '{0}'")
 FX_DIAGNOSTIC(TypeMismatch, Error, "{0}")
 FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
@@ -53,6 +60,7 @@ FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
 FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
+FX_DIAGNOSTIC(NoTechniques, Error, "the file has no techniques")
 FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
 FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")

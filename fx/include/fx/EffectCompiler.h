@@ -13,13 +13,21 @@
 
 namespace fx {
 
-class CompileCache;  // fx/CompileCache.h
+class CompileCache;    // fx/CompileCache.h
+class CompileWorkers;  // fx/CompileWorkers.h
+
+// Where glslang and SPIRV-Cross run. Workers: in worker processes (fx/CompileWorkers.h), so that a crash
+// in either becomes a located error; in this process (with a warning) if no worker executable is found.
+// InProcess: here, sequentially; a crash in either library ends the program (what the fuzzers want).
+enum class CompileIsolation { Workers, InProcess };
 
 struct CompileOptions {
     std::string technique;            // compile only this technique ("" = all)
     CompileCache* cache = nullptr;    // optional; shared across compiles (hot reload)
     int maxRenderTargetSize = 16384;  // largest render-target side (Dimensions, width/height) accepted
     int maxScriptLoopCount = 1024;    // largest literal LoopByCount (the runtime checks parameter values)
+    CompileIsolation isolation = CompileIsolation::Workers;
+    CompileWorkers* workers = nullptr;  // the pool to use; nullptr = CompileWorkers::shared()
 };
 
 // Returns nullptr if any error was reported.
