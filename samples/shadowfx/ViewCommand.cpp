@@ -203,7 +203,11 @@ int viewCommand(const Arguments& args) {
 
     const fx::ParseOptions parseOptions = effectParseOptions(args);
     runtime::ReloadableEffect effect(path, parseOptions);
-    if (!effect.reload()) std::cerr << effect.errorText();  // the window stays open: the next save may fix it
+    // On failure the window stays open: the next save may fix it. Scripts and tests wait for "loaded".
+    if (!effect.reload())
+        std::cerr << effect.errorText();
+    else
+        std::cerr << "shadowfx view: loaded " << path << "\n";
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

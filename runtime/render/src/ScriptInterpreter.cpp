@@ -60,8 +60,7 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
     }
     if (name.empty()) {
         if (effect.techniques.empty()) {
-            diagnostics.report(fx::DiagId::UnknownTechnique, fx::SourceLoc{effect.effect->path, 0, 0},
-                               {"(none)"});
+            diagnostics.report(fx::DiagId::NoTechniques, fx::SourceLoc{effect.effect->path, 1, 1});
             return nullptr;
         }
         return &effect.techniques.front();
