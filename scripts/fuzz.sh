@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in fuzz/ with clang into build-fuzz/ and runs each for SECONDS (default 60)
 # on one core, one after the other. Corpora grow in build-fuzz/corpus/TARGET/ (seeded from effects/,
-# tests/data/ and scenes/); a crash leaves build-fuzz/artifacts/TARGET/crash-* and fails the script.
+# tests/data/, fuzz/seeds/ and scenes/); a crash leaves build-fuzz/artifacts/TARGET/crash-* and fails the script.
 # Every crash found is fixed and added to tests/data/malformed/ with its golden diagnostics.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
@@ -10,7 +10,7 @@ seconds="${1:-60}"
 shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_sas_script)
+  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script)
   [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
@@ -22,7 +22,7 @@ if ! command -v clang++ >/dev/null || ! dpkg-query -W -f='${Status}' libclang-rt
 fi
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWFX_FUZZ=ON \
   -DSHADOWFX_BUILD_TESTS=OFF -DSHADOWFX_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" shadowfx-compile-worker
 
 root="$(pwd)"
 seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
@@ -30,8 +30,8 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
   mkdir -p "$dir"
   [ -n "$(ls -A "$dir")" ] && return 0
   case "$1" in
-    fuzz_effect_parser | fuzz_effect_compiler)
-      find effects tests/data -name '*.fx' -o -name '*.fxh' | while read -r f; do
+    fuzz_effect_parser | fuzz_effect_compiler | fuzz_compile_workers)
+      find effects tests/data fuzz/seeds -name '*.fx' -o -name '*.fxh' | while read -r f; do
         [ "$(stat -c %s "$f")" -le 65536 ] && cp "$f" "$dir/$(echo "$f" | tr / _)"
       done ;;
     fuzz_sas_script)  # the value of every Script annotation
