@@ -118,13 +118,14 @@ std::string colourEffect(const std::string& body) {
            body +
            "\n}\n"
            "float4 ClearColor = {0, 0, 0, 1};\n"
-           "technique Main < string Script = \"ClearSetColor=ClearColor; Clear=Color; Clear=Depth; Pass=P0;\"; > {\n"
+           "technique Main < string Script = \"ClearSetColor=ClearColor; Clear=Color; Clear=Depth; "
+           "Pass=P0;\"; > {\n"
            "    pass P0 { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }\n"
            "}\n";
 }
 const std::string kRed = colourEffect("    return float4(1, 0, 0, 1);");
 const std::string kGreen = colourEffect("    return float4(0, 1, 0, 1);");
-// The half-typed line glslang 12 crashes on (tests/data/bad/hlsl_compiler_crash.fx).
+// The half-typed line glslang 12 crashes on (tests/data/glslang_crashes/normalize_postdecrement.fx).
 const std::string kCrashes =
     colourEffect("    float3 Nn = normalize(IN.WorldNorm--);\n    return float4(Nn, 1);");
 

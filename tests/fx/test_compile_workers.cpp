@@ -84,12 +84,12 @@ TEST(CompileWorkers, TheWorkerExecutableIsFound) {
 
 TEST(CompileWorkers, ACrashInGlslangIsALocatedErrorAtTheShaderFunction) {
     fx::CompileWorkers workers;
-    Compiled crashed = compileFile("tests/data/bad/hlsl_compiler_crash.fx", &workers);
+    Compiled crashed = compileFile("tests/data/glslang_crashes/normalize_postdecrement.fx", &workers);
     EXPECT_EQ(crashed.effect, nullptr);
     ASSERT_EQ(crashed.diagnostics.errorCount(), 1u) << crashed.diagnostics.str();
     const fx::Diagnostic& d = crashed.diagnostics.items()[0];
     EXPECT_EQ(d.id, fx::DiagId::HlslCompilerCrashed);
-    EXPECT_EQ(d.loc.str(), "tests/data/bad/hlsl_compiler_crash.fx:17:8");  // PS's name
+    EXPECT_EQ(d.loc.str(), "tests/data/glslang_crashes/normalize_postdecrement.fx:17:8");  // PS's name
     EXPECT_EQ(d.message, "the HLSL compiler crashed on this shader (signal 11)");
     EXPECT_GE(workers.replacedWorkers(), 1u);
 
