@@ -534,17 +534,26 @@ int benchCommand(const Arguments& args) {
     std::set<std::string> assignedSomewhere;
 
     // Compile every variant first: a broken effect stops the bench before any time is spent measuring.
+    // The variants compile concurrently across the compile workers.
+    std::vector<runtime::VariantRequest> requests;
+    for (const std::string& effect : effects)
+        for (int mapSize : mapSizes) {
+            const std::string size = std::to_string(mapSize);
+            requests.push_back({effect, {{"SHADOWFX_SHADOW_MAP_SIZE", size}}, ""});
+            requests.push_back(
+                {effect, {{"SHADOWFX_SHADOW_MAP_SIZE", size}, {"SHADOWFX_VISIBILITY", "1"}}, ""});
+        }
+    std::vector<runtime::CompiledVariant> compiled = runtime::compileVariants(requests, baseOptions);
+    for (const runtime::CompiledVariant& c : compiled) runtime::forward(c.diagnostics, sink);
     std::map<std::pair<std::string, int>, EffectVariant> variants;
     size_t runCount = 0;
+    size_t request = 0;
     for (const std::string& effect : effects) {
         for (int mapSize : mapSizes) {
             EffectVariant variant;
             const std::string size = std::to_string(mapSize);
-            variant.timed =
-                runtime::compileVariant(effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}}, sink);
-            variant.visibility = runtime::compileVariant(
-                effect, baseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", size}, {"SHADOWFX_VISIBILITY", "1"}},
-                sink);
+            variant.timed = compiled[request++].effect;
+            variant.visibility = compiled[request++].effect;
             if (!variant.timed || !variant.visibility || sink.errors() > 0) return 1;
             variant.exposesVisibility = !runtime::sameFragmentShaders(*variant.timed, *variant.visibility);
             for (const fx::TextureDesc& texture : variant.timed->textures)

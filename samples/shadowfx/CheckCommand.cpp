@@ -762,6 +762,12 @@ int checkCommand(const Arguments& args) {
     // Parse and compile everything first (no GL needed): compile errors are FAILs with their location.
     Checker checker(settings, sink);
     std::vector<EffectPlan> plans;
+    struct PendingCompile {
+        size_t plan, technique;  // indices into plans and its techniques
+        size_t request;          // the shaded variant's; the visibility variant's follows when expected
+    };
+    std::vector<PendingCompile> pending;
+    std::vector<runtime::VariantRequest> requests;
     size_t matched = 0;  // techniques to check, plus effects that failed to parse
     for (const std::string& path : effects) {
         EffectPlan plan;
@@ -790,23 +796,36 @@ int checkCommand(const Arguments& args) {
             std::vector<std::pair<std::string, std::string>> defines;
             if (t.expect.mapSize)
                 defines.emplace_back("SHADOWFX_SHADOW_MAP_SIZE", std::to_string(*t.expect.mapSize));
-            sink.mark();
-            t.variants.shaded = runtime::compileVariant(path, parseOptions, defines, sink, t.name);
-            if (t.variants.shaded && !sink.failed() && t.expect.shadows) {
+            pending.push_back({plans.size(), plan.techniques.size() - 1, requests.size()});
+            requests.push_back({path, defines, t.name});
+            if (t.expect.shadows) {
                 defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-                t.variants.visibility = runtime::compileVariant(path, parseOptions, defines, sink, t.name);
-                t.variants.exposesVisibility =
-                    t.variants.visibility &&
-                    !runtime::sameFragmentShaders(*t.variants.shaded, *t.variants.visibility);
-            }
-            if (!t.variants.shaded || sink.failed()) {
-                t.variants.shaded.reset();
-                checker.add("-", plan.name, t.name, "-", "compile", Outcome::Fail,
-                            sink.firstError("the technique does not compile"));
+                requests.push_back({path, defines, t.name});
             }
         }
         matched += plan.techniques.size();
         plans.push_back(std::move(plan));
+    }
+    // Every variant of every effect compiles concurrently across the compile workers; the results are
+    // judged in the order above.
+    std::vector<runtime::CompiledVariant> compiled = runtime::compileVariants(requests, parseOptions);
+    for (const PendingCompile& p : pending) {
+        TechniquePlan& t = plans[p.plan].techniques[p.technique];
+        sink.mark();
+        runtime::forward(compiled[p.request].diagnostics, sink);
+        t.variants.shaded = compiled[p.request].effect;
+        if (t.variants.shaded && !sink.failed() && t.expect.shadows) {
+            runtime::forward(compiled[p.request + 1].diagnostics, sink);
+            t.variants.visibility = compiled[p.request + 1].effect;
+            t.variants.exposesVisibility =
+                t.variants.visibility &&
+                !runtime::sameFragmentShaders(*t.variants.shaded, *t.variants.visibility);
+        }
+        if (!t.variants.shaded || sink.failed()) {
+            t.variants.shaded.reset();
+            checker.add("-", plans[p.plan].name, t.name, "-", "compile", Outcome::Fail,
+                        sink.firstError("the technique does not compile"));
+        }
     }
     if (matched == 0 && !techniqueFilter.empty()) {
         std::cerr << "shadowfx check: no technique of the effects matches --technique\n";

@@ -1,9 +1,13 @@
 // ShadowMeasurement: see ShadowMeasurement.h.
 #include <runtime/ShadowMeasurement.h>
 
+#include <fx/CompileWorkers.h>
 #include <fx/EffectCompiler.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace runtime {
 
@@ -39,6 +43,28 @@ std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::
     fx::CompileOptions compileOptions;
     compileOptions.technique = technique;
     return fx::compileEffect(effect, compileOptions, sink);
+}
+
+std::vector<CompiledVariant> compileVariants(const std::vector<VariantRequest>& requests,
+                                             const fx::ParseOptions& options) {
+    std::vector<CompiledVariant> compiled(requests.size());
+    std::atomic<size_t> next{0};
+    auto drain = [&] {
+        for (size_t i = next++; i < requests.size(); i = next++)
+            compiled[i].effect = compileVariant(requests[i].path, options, requests[i].extra,
+                                                compiled[i].diagnostics, requests[i].technique);
+    };
+    const size_t threadCount =
+        std::min(requests.size(), static_cast<size_t>(fx::CompileWorkers::shared().maxWorkers()));
+    std::vector<std::thread> threads;
+    for (size_t t = 1; t < threadCount; ++t) threads.emplace_back(drain);
+    drain();
+    for (std::thread& thread : threads) thread.join();
+    return compiled;
+}
+
+void forward(const fx::DiagnosticList& list, fx::DiagnosticSink& sink) {
+    for (const fx::Diagnostic& diagnostic : list.items()) sink.report(diagnostic);
 }
 
 bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& b) {

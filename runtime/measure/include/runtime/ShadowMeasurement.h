@@ -44,6 +44,26 @@ std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::
                                                    fx::DiagnosticSink& sink,
                                                    const std::string& technique = "");
 
+// One compileVariant call, for compileVariants.
+struct VariantRequest {
+    std::string path;
+    std::vector<std::pair<std::string, std::string>> extra;
+    std::string technique;
+};
+
+// What compileVariants gives for one request: the effect (null on failure) and its diagnostics.
+struct CompiledVariant {
+    std::shared_ptr<fx::CompiledEffect> effect;
+    fx::DiagnosticList diagnostics;
+};
+
+// compileVariant for every request, several at once (as many as fx's compile workers; each effect's
+// stages spread over them too). Nothing is reported: the caller passes each request's diagnostics on.
+std::vector<CompiledVariant> compileVariants(const std::vector<VariantRequest>& requests,
+                                             const fx::ParseOptions& options);
+// Reports every diagnostic of `list` into `sink`.
+void forward(const fx::DiagnosticList& list, fx::DiagnosticSink& sink);
+
 // True if every pass of `a` and `b` has the same pixel shader: then SHADOWFX_VISIBILITY changed nothing and
 // the effect exposes no shadow term to score.
 bool sameFragmentShaders(const fx::CompiledEffect& a, const fx::CompiledEffect& b);
