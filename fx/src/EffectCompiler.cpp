@@ -555,7 +555,9 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
     StageProgram& program = stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
     std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
     uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
-    if (const StageProgram* cached = mOptions.cache ? mOptions.cache->find(key) : nullptr) {
+    // A unit already waiting for a worker is looked up once that job is done (finishPendingStages).
+    const bool waiting = mJobByKey.count(key) > 0;
+    if (const StageProgram* cached = mOptions.cache && !waiting ? mOptions.cache->find(key) : nullptr) {
         program = *cached;
         resolveReflection(program, pass);
         return true;
@@ -605,6 +607,8 @@ void Compiler::finishPendingStages() {
         const bool first = !reported[pending.job];
         reported[pending.job] = true;
         if (first) reportHlslMessages(outcome.messages, lowered);
+        // The repeats of a unit count as cache hits (misses if it failed), as when stages compiled one by one.
+        if (!first && mOptions.cache) mOptions.cache->find(pending.key);
         const SourceLoc function = functionLocation(lowered);
         using Status = StageOutcome::Status;
         switch (outcome.status) {
