@@ -1,5 +1,5 @@
 # install(): the static libraries, their public headers and the CMake package that finds them
-# (cmake/shadowfxConfig.cmake.in), plus the shadowfx tool.
+# (cmake/shadowfxConfig.cmake.in), plus the shadowfx tool and the compile worker.
 #
 # Headers install under include/shadowfx/ (include/shadowfx/fx/..., include/shadowfx/runtime/...), which is
 # the installed targets' include directory: an application spells them as this source tree does
@@ -26,6 +26,8 @@ foreach(library scene assets lightspace gl render measure)
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
 endforeach()
 install(TARGETS shadowfx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The compile worker (fx/CompileWorkers.h), where the installed fx library looks for it.
+install(TARGETS shadowfx-compile-worker RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR})
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/shadowfxConfig.cmake.in
   ${PROJECT_BINARY_DIR}/shadowfxConfig.cmake INSTALL_DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})
