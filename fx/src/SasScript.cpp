@@ -3,6 +3,8 @@
 #include <fx/RenderStates.h>
 #include <fx/SasScript.h>
 
+#include <fx/Effect.h>
+
 #include <algorithm>
 #include <cctype>
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <fx/SourceLoc.h>
+#include <fx/Types.h>
 
 #include <map>
 #include <memory>
@@ -17,53 +18,6 @@
 #include <vector>
 
 namespace fx {
-
-// [SECTION] Types
-
-enum class BaseType {
-    Void,
-    Bool,
-    Int,
-    UInt,
-    Half,
-    Float,
-    Double,
-    String,
-    Texture,  // untyped D3D9 `texture`
-    Texture1D,
-    Texture2D,
-    Texture3D,
-    TextureCube,
-    Sampler,  // untyped `sampler`
-    Sampler1D,
-    Sampler2D,
-    Sampler3D,
-    SamplerCube,
-    SamplerState,            // D3D10 `SamplerState`
-    SamplerComparisonState,  // D3D10 `SamplerComparisonState`
-    VertexShader,            // `vertexshader vs = compile vs_3_0 ...;`
-    PixelShader,
-    Struct,
-};
-
-enum class Shape { Scalar, Vector, Matrix };
-
-struct TypeDesc {
-    BaseType base = BaseType::Float;
-    Shape shape = Shape::Scalar;
-    int rows = 1;                // matrices: rows (float4x3: 4)
-    int cols = 1;                // vectors: component count; matrices: columns (float4x3: 3)
-    std::vector<int> arrayDims;  // float4 a[3][2] -> {3, 2}; empty when not an array
-    std::string structName;      // base == Struct
-    bool rowMajor = false;       // declared `row_major` (HLSL default is column_major)
-
-    bool isNumeric() const;      // bool/int/uint/half/float/double
-    bool isTexture() const;      // Texture..TextureCube
-    bool isSampler() const;      // Sampler..SamplerComparisonState
-    int componentCount() const;  // rows*cols, times array elements
-    // HLSL spelling: "float4x4", "float3", "bool", "sampler2D", "MyStruct" (without array dims).
-    std::string hlslName() const;
-};
 
 // [SECTION] Expressions
 // One expression type serves initializers, annotation values, state values, compile arguments and

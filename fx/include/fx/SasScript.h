@@ -4,12 +4,13 @@
 #pragma once
 
 #include <fx/Diagnostics.h>
-#include <fx/Effect.h>
 
 #include <string>
 #include <vector>
 
 namespace fx {
+
+struct Expr;  // fx/Effect.h: the annotation a script is parsed from
 
 struct ScriptCommand {
     enum class Kind {

@@ -1,7 +1,7 @@
 // Value: an effect parameter's value on the host (a number, vector, matrix, array or string).
 #pragma once
 
-#include <fx/Effect.h>
+#include <fx/Types.h>
 
 #include <string>
 #include <vector>
