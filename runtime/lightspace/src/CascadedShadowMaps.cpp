@@ -108,6 +108,11 @@ glm::ivec4 atlasViewport(const glm::vec4& rect, int width, int height) {
             static_cast<int>(std::lround(rect.y / rect.w)) * h, w, h};
 }
 
+glm::ivec4 lightViewTile(const LightView& view, int index, int count, int width, int height) {
+    if (view.atlasRect.z > 0.0f) return atlasViewport(view.atlasRect, width, height);
+    return cascadeViewport(index, count, width, height);
+}
+
 LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect, const Light& light,
                      const LightTunables& tunables) {
     // View 0: the focused fit of the whole body (or the uniform fit where focusing cannot work).

@@ -145,8 +145,7 @@ AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8
         if (!gbuffer.covered(i)) continue;
         const int face = std::min(cubeFaceOf(fit, gbuffer.position[i]), count - 1);
         const LightView& view = fit.cascades[static_cast<size_t>(face)];
-        const glm::ivec4 tile = view.atlasRect.z > 0.0f ? atlasViewport(view.atlasRect, atlasSize, atlasSize)
-                                                        : cascadeViewport(face, count, atlasSize, atlasSize);
+        const glm::ivec4 tile = lightViewTile(view, face, count, atlasSize, atlasSize);
         const glm::vec4 clip = view.projection * view.view * glm::vec4(gbuffer.position[i], 1.0f);
         if (clip.w > 0.0f)
             texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *

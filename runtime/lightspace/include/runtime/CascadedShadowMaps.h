@@ -37,6 +37,10 @@ glm::vec4 cascadeAtlasRect(int cascade, int count);
 // The texels of a tile given in texture coordinates on a grid of 1 / du columns and 1 / dv rows: whole
 // texels, w = floor(width du), x = column w, as cascadeViewport (a PSMCube face's LightView::atlasRect).
 glm::ivec4 atlasViewport(const glm::vec4& rect, int width, int height);
+// Sub-view `index` of a fit's `count` cascades or cube faces in a width x height atlas: a PSMCube face's
+// own tile (its LightView::atlasRect: the used faces share the atlas), else the cascades' fixed grid
+// (cascadeViewport). What RenderPort=lightN.cascadeK renders into and what the aliasing measure assumes.
+glm::ivec4 lightViewTile(const LightView& view, int index, int count, int width, int height);
 
 // The Cascaded fit: view and projection are the Focused fit of the whole intersection body (what plain
 // RenderPort=lightN renders with), `cascades` holds tunables.cascadeCount sub-views. Each cascade is an
