@@ -15,6 +15,7 @@
 #include "SpirvToGlsl.h"
 #include "StageCompile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +61,14 @@ private:
         if (!v) mFailed = true;
         return v;
     }
+    // Parameters are the preshaders' slots, by their index in the effect.
+    SlotResolver slotResolver() const {
+        return [this](std::string_view name) -> std::optional<size_t> {
+            auto it = mIndex.find(std::string(name));
+            if (it == mIndex.end()) return std::nullopt;
+            return it->second;
+        };
+    }
     const Value* lookup(std::string_view name) const {
         auto it = mIndex.find(std::string(name));
         return it == mIndex.end() || it->second >= mOut->initialValues.size()
@@ -68,6 +77,8 @@ private:
     }
 
     void initialValues();
+    void parameterInfo();
+    void passAnnotations(const Pass& source, CompiledPass& pass);
     void textures();
     static bool isLoadableImage(const std::string& resource);
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
@@ -104,6 +115,7 @@ private:
     std::unique_ptr<CompiledEffect> mOut;
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
+    std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
     bool mFailed = false;
     std::vector<PendingStage> mPending;
     std::vector<StageJob> mJobs;
@@ -125,6 +137,64 @@ void Compiler::initialValues() {
         }
         mOut->initialValues.push_back(std::move(v));
         mIndex[p.name] = i;
+    }
+}
+
+// What the runtime reads of each parameter (its binding by semantic, the light it names, the light-space
+// parameterization it selects), so that the runtime never reads the syntax tree.
+void Compiler::parameterInfo() {
+    mOut->path = mEffect.path;
+    for (const Parameter& p : mEffect.parameters) {
+        ParameterInfo info;
+        info.name = p.name;
+        info.type = p.type;
+        info.semantic = p.semantic;
+        info.isStatic = p.isStatic;
+        info.loc = p.loc;
+        for (const char* name : {"frustum", "Object"}) {
+            const Annotation* a = p.annotation(name);
+            if (a && a->value.kind == Expr::Kind::String) {
+                info.light = a->value.text;
+                break;
+            }
+        }
+        if (const Annotation* a = p.annotation("Parameterization")) {
+            info.hasParameterization = true;
+            if (a->value.kind == Expr::Kind::String) info.parameterization = a->value.text;
+            info.parameterizationLoc = a->loc;
+        }
+        mOut->parameters.push_back(std::move(info));
+    }
+}
+
+// The pass annotations the runtime acts on (CompiledPass): CullClosedOnly, LeaveOutWhen, FilterReachTexels.
+void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
+    if (const Annotation* a = source.annotation("CullClosedOnly")) {
+        std::optional<Value> value = eval(a->value, nullptr);
+        if (value && !value->data.empty()) {
+            pass.cullClosedOnly = value->asBool();
+        } else if (value) {
+            error(DiagId::InvalidAnnotation, a->loc, {"CullClosedOnly", "expected true or false"});
+        }
+    }
+    if (const Annotation* a = source.annotation("LeaveOutWhen")) {
+        const std::string text = a->value.kind == Expr::Kind::String ? a->value.text : "";
+        if (text == "NoClosedObjects") {
+            pass.leaveOutWhen = LeaveOutCondition::NoClosedObjects;
+        } else if (text == "NoLightArea") {
+            pass.leaveOutWhen = LeaveOutCondition::NoLightArea;
+        } else {
+            error(DiagId::InvalidAnnotation, a->loc,
+                  {"LeaveOutWhen", "expected \"NoClosedObjects\" or \"NoLightArea\""});
+        }
+    }
+    if (const Annotation* a = source.annotation("FilterReachTexels")) {
+        std::optional<Value> value = eval(a->value, nullptr);
+        if (value && value->data.size() == 1 && std::isfinite(value->asFloat())) {
+            pass.filterReachTexels = std::max(1.0f, value->asFloat());  // a texel for rounding at least
+        } else if (value) {
+            error(DiagId::InvalidAnnotation, a->loc, {"FilterReachTexels", "expected a number of texels"});
+        }
     }
 }
 
@@ -547,10 +617,17 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 }
 
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
-    auto lowered = lowerStage(mEffect, compile, stage, pass.arguments, mDiagnostics);
+    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, mDiagnostics);
     if (!lowered) {
         mFailed = true;
         return false;
+    }
+    // The stage's new arguments, as programs over the parameters they read.
+    for (size_t a = pass.arguments.size(); a < mPassArguments.size(); ++a) {
+        const LoweredArgument& argument = mPassArguments[a];
+        pass.arguments.push_back(
+            CompileArgument{compilePreshader(argument.expr, slotResolver(), &argument.type), argument.type,
+                            argument.memberName});
     }
     StageProgram& program = stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
     std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
@@ -669,6 +746,7 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
 
 CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
+    mPassArguments.clear();
     pass.name = p.name;
     pass.loc = p.loc;
     for (const StateAssignment& s : p.states) {
@@ -685,29 +763,27 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
             continue;
         }
         const StateInfo& info = renderStateInfo(*id);
-        RenderStateSetting setting{*id, s.value, s.loc};
-        if (s.value.kind == Expr::Kind::Identifier && !mIndex.count(s.value.text)) {
+        RenderStateSetting setting{*id, std::nullopt, {}, s.loc};
+        if (s.value.kind == Expr::Kind::Number || s.value.kind == Expr::Kind::Bool) {
+            setting.constant = s.value.number;
+        } else if (s.value.kind == Expr::Kind::Identifier && !mIndex.count(s.value.text)) {
             if (auto e = findEnumValue(info.domain, s.value.text)) {
-                setting.value.kind = Expr::Kind::Number;
-                setting.value.number = *e;
-                setting.value.isInteger = true;
-                setting.value.args.clear();
+                setting.constant = *e;
             } else if (!equalsIgnoreCase(s.value.text, "true") && !equalsIgnoreCase(s.value.text, "false")) {
                 error(DiagId::UnknownStateValue, s.value.loc, {s.value.text, s.name, ""});
                 continue;
             }
         }
-        if (setting.value.kind != Expr::Kind::Number && literalOnly(setting.value)) {
-            if (auto v = eval(setting.value, nullptr); v && v->data.size() == 1) {
-                bool isBool = info.domain == StateDomain::Bool;
-                setting.value.kind = isBool ? Expr::Kind::Bool : Expr::Kind::Number;
-                setting.value.number = isBool ? (v->data[0] != 0.0f) : v->data[0];
-                setting.value.isInteger = !isBool && v->type.base != BaseType::Float;
-                setting.value.args.clear();
+        if (!setting.constant && literalOnly(s.value)) {
+            if (auto v = eval(s.value, nullptr); v && v->data.size() == 1) {
+                const bool isBool = info.domain == StateDomain::Bool;
+                setting.constant = isBool ? (v->data[0] != 0.0f ? 1.0 : 0.0) : v->data[0];
             }
         }
+        if (!setting.constant) setting.value = compilePreshader(s.value, slotResolver(), nullptr);
         pass.states.push_back(std::move(setting));
     }
+    passAnnotations(p, pass);
     pass.script = script(p.annotations, pass.hasScript);
     validateScript(pass.script, nullptr);
     return pass;
@@ -715,6 +791,7 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
 
 std::unique_ptr<CompiledEffect> Compiler::run() {
     initialValues();
+    parameterInfo();
     textures();
     samplers();
     scripts();

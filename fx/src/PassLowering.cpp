@@ -381,7 +381,7 @@ std::string narrowTo(const Field& f, const std::string& expr) {
 class WrapperBuilder {
 public:
     WrapperBuilder(const Effect& effect, const FunctionDecl& fn, const Expr& compile, ShaderStage stage,
-                   std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics)
+                   std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics)
         : mEffect(effect),
           mFn(fn),
           mCompile(compile),
@@ -406,7 +406,7 @@ private:
     const FunctionDecl& mFn;
     const Expr& mCompile;
     ShaderStage mStage;
-    std::vector<CompileArgument>& mArguments;
+    std::vector<LoweredArgument>& mArguments;
     DiagnosticSink& mDiagnostics;
 };
 
@@ -452,7 +452,7 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
     if (const Expr* unknown = unknownName(*expr))
         return fail(DiagId::UnknownIdentifier, unknown->loc, {unknown->text});
     std::string name = "fx_arg" + std::to_string(mArguments.size());
-    mArguments.push_back(CompileArgument{*expr, p.type, name});
+    mArguments.push_back(LoweredArgument{*expr, p.type, name});
     globals += hlslTypeName(p.type) + " " + name + arraySuffix(p.type) + ";\n";
     value = name;
     return true;
@@ -669,7 +669,7 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 // [SECTION] lowerStage()
 
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
-                                       std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics) {
+                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics) {
     if (!profileMatches(compile.profile, stage)) {
         // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
         const ShaderStage other = stage == ShaderStage::Vertex ? ShaderStage::Fragment : ShaderStage::Vertex;

@@ -44,11 +44,19 @@ struct LoweredStage {
     std::vector<std::string> depthSamplers;  // effect samplers sampled with depth comparison
 };
 
+// An argument of a compile expression bound to a `uniform` entry-point parameter, as lowering finds it:
+// the effect compiler turns `expr` into the CompileArgument's preshader program.
+struct LoweredArgument {
+    Expr expr;
+    TypeDesc type;
+    std::string memberName;  // "fx_arg0", ...
+};
+
 // Lowers the shader of one stage of a pass. `compile` is the state's Compile expression. Compile
 // arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
 // there). Returns nullopt after reporting an error.
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
-                                       std::vector<CompileArgument>& arguments, DiagnosticSink& diagnostics);
+                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
 // they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.

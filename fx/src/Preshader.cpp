@@ -1,4 +1,5 @@
-// Preshader: a tree-walking evaluator for effect expressions with HLSL semantics.
+// Preshader: compiles effect expressions into PreshaderPrograms (fx/PreshaderProgram.h) and runs them with
+// HLSL semantics.
 //
 // Values are flat float arrays plus a TypeDesc (see Value.h: matrices row by row). Every operator works
 // component-wise after HLSL's scalar broadcast; mul() follows HLSL's convention that a vector on the left
@@ -9,7 +10,8 @@
 // [SECTION] Operators
 // [SECTION] Intrinsics and constructors
 // [SECTION] Members and indexing
-// [SECTION] evaluate()
+// [SECTION] Running a program
+// [SECTION] Compiling an expression
 #include <fx/Preshader.h>
 
 #include <algorithm>
@@ -110,36 +112,33 @@ std::optional<TypeDesc> parseTypeName(std::string_view name) {
     return std::nullopt;
 }
 
+// The operations of a program, on values. An operation that fails records why (error()) and returns
+// nullopt; the program decides whether the failure reaches its result.
 class Evaluator {
 public:
-    Evaluator(const ParameterLookup& lookup, DiagnosticSink* diagnostics)
-        : mLookup(lookup), mDiagnostics(diagnostics) {}
-
-    std::optional<Value> eval(const Expr& e);
     std::optional<Value> convert(const Value& v, const TypeDesc& target, const SourceLoc& loc);
+    std::optional<Value> unary(const std::string& op, Value a, const SourceLoc& loc);
+    std::optional<Value> binary(const std::string& op, Value a, Value b, const SourceLoc& loc);
+    std::optional<Value> select(const Value& c, Value a, Value b, const SourceLoc& loc);
+    std::optional<Value> construct(const TypeDesc& type, const std::vector<Value>& args,
+                                   const SourceLoc& loc);
+    std::optional<Value> intrinsic(const std::string& name, std::vector<Value>& args, const SourceLoc& loc);
+    std::optional<Value> initList(const std::vector<Value>& args, const SourceLoc& loc);
+    std::optional<Value> member(const std::string& m, const Value& base, const SourceLoc& loc);
+    std::optional<Value> index(const Value& base, const Value& idx, const SourceLoc& loc);
+
+    const PreshaderProgram::Error& error() const { return mError; }
 
 private:
     std::nullopt_t fail(DiagId id, const SourceLoc& loc, const std::string& text) {
-        if (mDiagnostics && !mFailed) mDiagnostics->report(id, loc, {text});
-        mFailed = true;
+        mError = {id, loc, text};
         return std::nullopt;
     }
-
-    std::optional<Value> unary(const Expr& e);
-    std::optional<Value> binary(const Expr& e);
-    std::optional<Value> ternary(const Expr& e);
-    std::optional<Value> call(const Expr& e);
-    std::optional<Value> intrinsic(const Expr& e, const std::string& name, std::vector<Value>& args);
-    std::optional<Value> member(const Expr& e);
-    std::optional<Value> index(const Expr& e);
-    std::optional<Value> initList(const Expr& e);
 
     // Brings two operands to a common shape (scalar broadcast, or truncation to the smaller vector).
     bool broadcast(Value& a, Value& b, const SourceLoc& loc);
 
-    const ParameterLookup& mLookup;
-    DiagnosticSink* mDiagnostics;
-    bool mFailed = false;
+    PreshaderProgram::Error mError{DiagId::TypeMismatch, {}, ""};
 };
 
 // [SECTION] Conversion
@@ -214,34 +213,29 @@ bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
 
 // [SECTION] Operators
 
-std::optional<Value> Evaluator::unary(const Expr& e) {
-    auto a = eval(e.args[0]);
-    if (!a) return std::nullopt;
-    if (a->type.base == BaseType::String) return fail(DiagId::TypeMismatch, e.loc, "operator on a string");
-    for (float& x : a->data) {
-        if (e.text == "-")
+std::optional<Value> Evaluator::unary(const std::string& op, Value a, const SourceLoc& loc) {
+    if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, "operator on a string");
+    for (float& x : a.data) {
+        if (op == "-")
             x = -x;
-        else if (e.text == "!")
+        else if (op == "!")
             x = x == 0.0f ? 1.0f : 0.0f;
-        else if (e.text == "~")
+        else if (op == "~")
             x = static_cast<float>(~static_cast<int32_t>(x));
     }
-    if (e.text == "!") a->type.base = BaseType::Bool;
-    if (e.text == "-" && a->type.base == BaseType::Bool) a->type.base = BaseType::Int;
+    if (op == "!") a.type.base = BaseType::Bool;
+    if (op == "-" && a.type.base == BaseType::Bool) a.type.base = BaseType::Int;
     return a;
 }
 
-std::optional<Value> Evaluator::binary(const Expr& e) {
-    auto a = eval(e.args[0]);
-    if (!a) return std::nullopt;
-    auto b = eval(e.args[1]);
-    if (!b) return std::nullopt;
-    const std::string& op = e.text;
+std::optional<Value> Evaluator::binary(const std::string& op, Value av, Value bv, const SourceLoc& loc) {
+    Value* a = &av;
+    Value* b = &bv;
     if (a->type.base == BaseType::String || b->type.base == BaseType::String) {
         if (op == "==" || op == "!=") return Value::boolean((a->string == b->string) == (op == "=="));
-        return fail(DiagId::TypeMismatch, e.loc, "operator '" + op + "' on a string");
+        return fail(DiagId::TypeMismatch, loc, "operator '" + op + "' on a string");
     }
-    if (!broadcast(*a, *b, e.loc)) return std::nullopt;
+    if (!broadcast(*a, *b, loc)) return std::nullopt;
     bool logical = op == "&&" || op == "||";
     bool compare = op == "<" || op == ">" || op == "<=" || op == ">=" || op == "==" || op == "!=";
     bool bitwise = op == "&" || op == "|" || op == "^" || op == "<<" || op == ">>";
@@ -264,14 +258,14 @@ std::optional<Value> Evaluator::binary(const Expr& e) {
             r = x * y;
         else if (op == "/") {
             if (integer) {
-                if (iy == 0) return fail(DiagId::TypeMismatch, e.loc, "integer division by zero");
+                if (iy == 0) return fail(DiagId::TypeMismatch, loc, "integer division by zero");
                 r = static_cast<float>(ix / iy);
             } else {
                 r = x / y;
             }
         } else if (op == "%") {
             if (integer) {
-                if (iy == 0) return fail(DiagId::TypeMismatch, e.loc, "integer modulo by zero");
+                if (iy == 0) return fail(DiagId::TypeMismatch, loc, "integer modulo by zero");
                 r = static_cast<float>(ix % iy);
             } else {
                 r = std::fmod(x, y);
@@ -303,25 +297,20 @@ std::optional<Value> Evaluator::binary(const Expr& e) {
         else if (op == ">>")
             r = static_cast<float>(ix >> iy);
         else
-            return fail(DiagId::UnsupportedFeature, e.loc,
+            return fail(DiagId::UnsupportedFeature, loc,
                         "operator '" + op + "' cannot be evaluated on the host");
         out[i] = normalizeComponent(type.base, r);
     }
     return makeValue(type, std::move(out));
 }
 
-std::optional<Value> Evaluator::ternary(const Expr& e) {
-    auto c = eval(e.args[0]);
-    if (!c) return std::nullopt;
-    if (c->data.size() == 1) return eval(c->data[0] != 0.0f ? e.args[1] : e.args[2]);
-    // A vector condition selects per component (HLSL evaluates both sides).
-    auto a = eval(e.args[1]);
-    auto b = a ? eval(e.args[2]) : std::nullopt;
-    if (!a || !b || !broadcast(*a, *b, e.loc)) return std::nullopt;
-    if (c->data.size() != a->data.size())
-        return fail(DiagId::TypeMismatch, e.loc, "condition size does not match");
-    for (size_t i = 0; i < a->data.size(); ++i)
-        if (c->data[i] == 0.0f) a->data[i] = b->data[i];
+// A vector condition selects per component; a scalar one is handled by the program (it picks a branch).
+std::optional<Value> Evaluator::select(const Value& c, Value a, Value b, const SourceLoc& loc) {
+    if (!broadcast(a, b, loc)) return std::nullopt;
+    if (c.data.size() != a.data.size())
+        return fail(DiagId::TypeMismatch, loc, "condition size does not match");
+    for (size_t i = 0; i < a.data.size(); ++i)
+        if (c.data[i] == 0.0f) a.data[i] = b.data[i];
     return a;
 }
 
@@ -357,15 +346,15 @@ std::vector<float> inverseOf(const std::vector<float>& m, int n, float det) {
     return out;
 }
 
-std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name, std::vector<Value>& args) {
+std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<Value>& args,
+                                          const SourceLoc& loc) {
     auto need = [&](size_t n) -> bool {
         if (args.size() == n) return true;
-        fail(DiagId::TypeMismatch, e.loc, name + "() takes " + std::to_string(n) + " argument(s)");
+        fail(DiagId::TypeMismatch, loc, name + "() takes " + std::to_string(n) + " argument(s)");
         return false;
     };
     for (const Value& a : args)
-        if (a.type.base == BaseType::String)
-            return fail(DiagId::TypeMismatch, e.loc, name + "() of a string");
+        if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, name + "() of a string");
     auto floatResult = [](Value v) {
         if (!(v.type.base == BaseType::Half || v.type.base == BaseType::Double))
             v.type.base = BaseType::Float;
@@ -417,7 +406,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         {"step", [](float edge, float x) { return x >= edge ? 1.0f : 0.0f; }},
     };
     if (auto it = kBinary.find(name); it != kBinary.end()) {
-        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        if (!need(2) || !broadcast(args[0], args[1], loc)) return std::nullopt;
         Value v = args[0];
         if (baseRank(args[1].type.base) > baseRank(v.type.base)) v.type.base = args[1].type.base;
         for (size_t i = 0; i < v.data.size(); ++i) v.data[i] = it->second(args[0].data[i], args[1].data[i]);
@@ -427,8 +416,8 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
     if (name == "clamp" || name == "lerp" || name == "smoothstep") {
         if (!need(3)) return std::nullopt;
         // Broadcast all three to the widest.
-        if (!broadcast(args[0], args[1], e.loc) || !broadcast(args[1], args[2], e.loc) ||
-            !broadcast(args[0], args[2], e.loc) || !broadcast(args[0], args[1], e.loc))
+        if (!broadcast(args[0], args[1], loc) || !broadcast(args[1], args[2], loc) ||
+            !broadcast(args[0], args[2], loc) || !broadcast(args[0], args[1], loc))
             return std::nullopt;
         Value v = name == "smoothstep" ? args[2] : args[0];
         for (size_t i = 0; i < v.data.size(); ++i) {
@@ -445,7 +434,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         return name == "clamp" ? v : floatResult(std::move(v));
     }
     if (name == "dot") {
-        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        if (!need(2) || !broadcast(args[0], args[1], loc)) return std::nullopt;
         float s = 0.0f;
         for (size_t i = 0; i < args[0].data.size(); ++i) s += args[0].data[i] * args[1].data[i];
         return Value::scalar(s);
@@ -461,7 +450,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         return v;
     }
     if (name == "distance") {
-        if (!need(2) || !broadcast(args[0], args[1], e.loc)) return std::nullopt;
+        if (!need(2) || !broadcast(args[0], args[1], loc)) return std::nullopt;
         float s = 0.0f;
         for (size_t i = 0; i < args[0].data.size(); ++i) {
             float d = args[0].data[i] - args[1].data[i];
@@ -472,7 +461,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
     if (name == "cross") {
         if (!need(2)) return std::nullopt;
         if (args[0].data.size() != 3 || args[1].data.size() != 3)
-            return fail(DiagId::TypeMismatch, e.loc, "cross() takes two float3");
+            return fail(DiagId::TypeMismatch, loc, "cross() takes two float3");
         const auto& a = args[0].data;
         const auto& b = args[1].data;
         return Value::vector(
@@ -495,10 +484,10 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         const Value& m = args[0];
         int n = m.type.rows;
         if (m.type.shape != Shape::Matrix || m.type.rows != m.type.cols)
-            return fail(DiagId::TypeMismatch, e.loc, name + "() takes a square matrix");
+            return fail(DiagId::TypeMismatch, loc, name + "() takes a square matrix");
         float det = determinantOf(m.data, n);
         if (name == "determinant") return Value::scalar(det);
-        if (det == 0.0f) return fail(DiagId::TypeMismatch, e.loc, "inverse() of a singular matrix");
+        if (det == 0.0f) return fail(DiagId::TypeMismatch, loc, "inverse() of a singular matrix");
         return makeValue(m.type, inverseOf(m.data, n, det));
     }
     if (name == "mul") {
@@ -507,7 +496,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         const Value& b = args[1];
         if (a.data.size() == 1 || b.data.size() == 1) {
             Value x = a, y = b;
-            broadcast(x, y, e.loc);
+            broadcast(x, y, loc);
             for (size_t i = 0; i < x.data.size(); ++i) x.data[i] *= y.data[i];
             return x;
         }
@@ -516,7 +505,7 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         int ar = am ? a.type.rows : 1, ac = am ? a.type.cols : a.type.cols;
         int br = bm ? b.type.rows : b.type.cols, bc = bm ? b.type.cols : 1;
         if (ac != br)
-            return fail(DiagId::TypeMismatch, e.loc,
+            return fail(DiagId::TypeMismatch, loc,
                         "mul(" + a.type.hlslName() + ", " + b.type.hlslName() + "): inner dimensions differ");
         std::vector<float> out(static_cast<size_t>(ar * bc), 0.0f);
         for (int r = 0; r < ar; ++r)
@@ -527,56 +516,44 @@ std::optional<Value> Evaluator::intrinsic(const Expr& e, const std::string& name
         if (am && bm) return makeValue(makeType(BaseType::Float, Shape::Matrix, ar, bc), std::move(out));
         return makeValue(vectorType(BaseType::Float, static_cast<int>(out.size())), std::move(out));
     }
-    return fail(DiagId::UnsupportedFeature, e.loc, "function '" + name + "' cannot be evaluated on the host");
+    return fail(DiagId::UnsupportedFeature, loc, "function '" + name + "' cannot be evaluated on the host");
 }
 
-std::optional<Value> Evaluator::call(const Expr& e) {
-    std::vector<Value> args;
-    for (const Expr& a : e.args) {
-        auto v = eval(a);
-        if (!v) return std::nullopt;
-        args.push_back(std::move(*v));
-    }
-    if (auto type = parseTypeName(e.text)) {
-        // Constructor: the arguments' components in order, or one scalar broadcast.
-        std::vector<float> flat;
-        for (const Value& a : args) flat.insert(flat.end(), a.data.begin(), a.data.end());
-        size_t want = componentCount(*type);
-        if (flat.size() == 1) flat.assign(want, flat[0]);
-        if (flat.size() != want)
-            return fail(DiagId::TypeMismatch, e.loc,
-                        e.text + " constructor needs " + std::to_string(want) + " components, got " +
-                            std::to_string(flat.size()));
-        for (float& x : flat) x = normalizeComponent(type->base, x);
-        return makeValue(*type, std::move(flat));
-    }
-    return intrinsic(e, e.text, args);
-}
-
-std::optional<Value> Evaluator::initList(const Expr& e) {
+// A constructor: the arguments' components in order, or one scalar broadcast.
+std::optional<Value> Evaluator::construct(const TypeDesc& type, const std::vector<Value>& args,
+                                          const SourceLoc& loc) {
     std::vector<float> flat;
-    for (const Expr& a : e.args) {
-        auto v = eval(a);
-        if (!v) return std::nullopt;
-        if (v->type.base == BaseType::String)
-            return fail(DiagId::TypeMismatch, a.loc, "string in an initializer list");
-        flat.insert(flat.end(), v->data.begin(), v->data.end());
+    for (const Value& a : args) flat.insert(flat.end(), a.data.begin(), a.data.end());
+    size_t want = componentCount(type);
+    if (flat.size() == 1) flat.assign(want, flat[0]);
+    if (flat.size() != want)
+        return fail(DiagId::TypeMismatch, loc,
+                    type.hlslName() + " constructor needs " + std::to_string(want) + " components, got " +
+                        std::to_string(flat.size()));
+    for (float& x : flat) x = normalizeComponent(type.base, x);
+    return makeValue(type, std::move(flat));
+}
+
+std::optional<Value> Evaluator::initList(const std::vector<Value>& args, const SourceLoc& loc) {
+    std::vector<float> flat;
+    for (const Value& v : args) {
+        if (v.type.base == BaseType::String)
+            return fail(DiagId::TypeMismatch, loc, "string in an initializer list");
+        flat.insert(flat.end(), v.data.begin(), v.data.end());
     }
     return makeValue(vectorType(BaseType::Float, static_cast<int>(flat.size())), std::move(flat));
 }
 
 // [SECTION] Members and indexing
 
-std::optional<Value> Evaluator::member(const Expr& e) {
-    auto base = eval(e.args[0]);
-    if (!base) return std::nullopt;
-    const std::string& m = e.text;
+std::optional<Value> Evaluator::member(const std::string& m, const Value& baseValue, const SourceLoc& loc) {
+    const Value* base = &baseValue;
     std::vector<float> out;
     if (base->type.shape == Shape::Matrix) {
         // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
         size_t i = 0;
         while (i < m.size()) {
-            if (m[i] != '_') return fail(DiagId::TypeMismatch, e.loc, "invalid matrix member '" + m + "'");
+            if (m[i] != '_') return fail(DiagId::TypeMismatch, loc, "invalid matrix member '" + m + "'");
             ++i;
             int offset = 1;
             if (i < m.size() && m[i] == 'm') {
@@ -585,16 +562,15 @@ std::optional<Value> Evaluator::member(const Expr& e) {
             }
             if (i + 2 > m.size() || !std::isdigit(static_cast<unsigned char>(m[i])) ||
                 !std::isdigit(static_cast<unsigned char>(m[i + 1])))
-                return fail(DiagId::TypeMismatch, e.loc, "invalid matrix member '" + m + "'");
+                return fail(DiagId::TypeMismatch, loc, "invalid matrix member '" + m + "'");
             int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
             i += 2;
             if (r < 0 || c < 0 || r >= base->type.rows || c >= base->type.cols)
-                return fail(DiagId::TypeMismatch, e.loc, "matrix member '" + m + "' out of range");
+                return fail(DiagId::TypeMismatch, loc, "matrix member '" + m + "' out of range");
             out.push_back(base->data[static_cast<size_t>(r * base->type.cols + c)]);
         }
     } else {
-        if (m.empty() || m.size() > 4)
-            return fail(DiagId::TypeMismatch, e.loc, "invalid swizzle '" + m + "'");
+        if (m.empty() || m.size() > 4) return fail(DiagId::TypeMismatch, loc, "invalid swizzle '" + m + "'");
         for (char ch : m) {
             const char* xyzw = "xyzw";
             const char* rgba = "rgba";
@@ -603,7 +579,7 @@ std::optional<Value> Evaluator::member(const Expr& e) {
             if (idx < 0 && (p = std::strchr(rgba, ch))) idx = static_cast<int>(p - rgba);
             int avail = base->type.shape == Shape::Scalar ? 1 : base->type.cols;
             if (idx < 0 || ch == '\0' || idx >= avail)
-                return fail(DiagId::TypeMismatch, e.loc,
+                return fail(DiagId::TypeMismatch, loc,
                             "invalid swizzle '" + m + "' on " + base->type.hlslName());
             out.push_back(base->data[static_cast<size_t>(idx)]);
         }
@@ -611,86 +587,301 @@ std::optional<Value> Evaluator::member(const Expr& e) {
     return makeValue(vectorType(base->type.base, static_cast<int>(out.size())), std::move(out));
 }
 
-std::optional<Value> Evaluator::index(const Expr& e) {
-    auto base = eval(e.args[0]);
-    if (!base) return std::nullopt;
-    auto idx = eval(e.args[1]);
-    if (!idx) return std::nullopt;
-    int i = idx->asInt();
+std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, const SourceLoc& loc) {
+    const Value* base = &baseValue;
+    int i = idx.asInt();
     TypeDesc elem = base->type;
     size_t stride = 1;
     if (!elem.arrayDims.empty()) {
         elem.arrayDims.erase(elem.arrayDims.begin());
         stride = componentCount(elem);
         if (i < 0 || i >= base->type.arrayDims[0])
-            return fail(DiagId::TypeMismatch, e.loc, "index out of range");
+            return fail(DiagId::TypeMismatch, loc, "index out of range");
     } else if (elem.shape == Shape::Matrix) {
         // m[i] is row i, as in HLSL.
-        if (i < 0 || i >= elem.rows)
-            return fail(DiagId::TypeMismatch, e.loc, "matrix row index out of range");
+        if (i < 0 || i >= elem.rows) return fail(DiagId::TypeMismatch, loc, "matrix row index out of range");
         elem = vectorType(elem.base, elem.cols);
         stride = static_cast<size_t>(elem.cols);
     } else if (elem.shape == Shape::Vector) {
-        if (i < 0 || i >= elem.cols) return fail(DiagId::TypeMismatch, e.loc, "vector index out of range");
+        if (i < 0 || i >= elem.cols) return fail(DiagId::TypeMismatch, loc, "vector index out of range");
         elem = vectorType(elem.base, 1);
     } else {
-        return fail(DiagId::TypeMismatch, e.loc, "cannot index a scalar");
+        return fail(DiagId::TypeMismatch, loc, "cannot index a scalar");
     }
     auto begin = base->data.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(i) * stride);
     return makeValue(elem, std::vector<float>(begin, begin + static_cast<std::ptrdiff_t>(stride)));
 }
 
-// [SECTION] evaluate()
-
-std::optional<Value> Evaluator::eval(const Expr& e) {
-    switch (e.kind) {
-        case Expr::Kind::Number:
-            return e.isInteger ? Value::integer(static_cast<int>(e.number))
-                               : Value::scalar(static_cast<float>(e.number));
-        case Expr::Kind::Bool:
-            return Value::boolean(e.number != 0.0);
-        case Expr::Kind::String:
-            return Value::text(e.text);
-        case Expr::Kind::Identifier: {
-            if (e.text == "true" || e.text == "false") return Value::boolean(e.text == "true");
-            const Value* v = mLookup ? mLookup(e.text) : nullptr;
-            if (!v) return fail(DiagId::UnknownIdentifier, e.loc, e.text);
-            return *v;
-        }
-        case Expr::Kind::Unary:
-            return unary(e);
-        case Expr::Kind::Binary:
-            return binary(e);
-        case Expr::Kind::Ternary:
-            return ternary(e);
-        case Expr::Kind::Call:
-            return call(e);
-        case Expr::Kind::Member:
-            return member(e);
-        case Expr::Kind::Index:
-            return index(e);
-        case Expr::Kind::InitList:
-            return initList(e);
-        case Expr::Kind::Cast: {
-            auto v = eval(e.args[0]);
-            if (!v) return std::nullopt;
-            return convert(*v, e.castType, e.loc);
-        }
-        case Expr::Kind::TextureRef:
-        case Expr::Kind::Compile:
-            return fail(DiagId::UnsupportedFeature, e.loc, "'" + e.str() + "' is not a value");
-    }
-    return std::nullopt;
-}
+// [SECTION] Running a program
 
 }  // namespace
 
+std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
+                                           DiagnosticSink* diagnostics) const {
+    using Op = Instruction::Op;
+    // Every stack entry is a value or the error that stands in its place (`error` >= 0): an operation on an
+    // error gives that error, so a failure counts only if it reaches the result (a scalar condition's
+    // branch not taken does not), as when the tree was walked lazily.
+    struct Entry {
+        Value value;
+        int error = -1;
+    };
+    std::vector<Entry> stack;
+    std::vector<Error> errors;
+    Evaluator evaluator;
+    const auto failed = [&](std::optional<Value> value) {
+        if (value) return Entry{std::move(*value), -1};
+        errors.push_back(evaluator.error());
+        return Entry{Value{}, static_cast<int>(errors.size() - 1)};
+    };
+    // Pops `n` operands; the first error among them, or -1.
+    std::vector<Value> args;
+    const auto pop = [&](size_t n) {
+        int error = -1;
+        args.clear();
+        for (size_t i = stack.size() - n; i < stack.size(); ++i) {
+            if (error < 0) error = stack[i].error;
+            args.push_back(std::move(stack[i].value));
+        }
+        stack.resize(stack.size() - n);
+        return error;
+    };
+    for (const Instruction& in : mCode) {
+        switch (in.op) {
+            case Op::Constant:
+                stack.push_back({mConstants[in.operand], -1});
+                break;
+            case Op::Load:
+                if (in.operand < slots.size()) {
+                    stack.push_back({slots[in.operand], -1});
+                } else {
+                    errors.push_back({DiagId::UnknownIdentifier, in.loc, in.text});
+                    stack.push_back({Value{}, static_cast<int>(errors.size() - 1)});
+                }
+                break;
+            case Op::Fail:
+                errors.push_back(mErrors[in.operand]);
+                stack.push_back({Value{}, static_cast<int>(errors.size() - 1)});
+                break;
+            case Op::Select: {
+                Entry other = std::move(stack.back());
+                stack.pop_back();
+                Entry then = std::move(stack.back());
+                stack.pop_back();
+                Entry condition = std::move(stack.back());
+                stack.pop_back();
+                if (condition.error >= 0) {
+                    stack.push_back(std::move(condition));
+                } else if (condition.value.data.size() == 1) {
+                    stack.push_back(condition.value.data[0] != 0.0f ? std::move(then) : std::move(other));
+                } else if (then.error >= 0 || other.error >= 0) {
+                    stack.push_back(then.error >= 0 ? std::move(then) : std::move(other));
+                } else {
+                    stack.push_back(failed(evaluator.select(condition.value, std::move(then.value),
+                                                            std::move(other.value), in.loc)));
+                }
+                break;
+            }
+            default: {
+                const size_t n = in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
+                                 : in.op == Op::Binary || in.op == Op::Index                       ? 2
+                                                                                                   : in.count;
+                const int error = pop(n);
+                if (error >= 0) {
+                    stack.push_back({Value{}, error});
+                    break;
+                }
+                switch (in.op) {
+                    case Op::Unary:
+                        stack.push_back(failed(evaluator.unary(in.text, std::move(args[0]), in.loc)));
+                        break;
+                    case Op::Binary:
+                        stack.push_back(failed(
+                            evaluator.binary(in.text, std::move(args[0]), std::move(args[1]), in.loc)));
+                        break;
+                    case Op::Construct:
+                        stack.push_back(failed(evaluator.construct(in.type, args, in.loc)));
+                        break;
+                    case Op::Intrinsic:
+                        stack.push_back(failed(evaluator.intrinsic(in.text, args, in.loc)));
+                        break;
+                    case Op::InitList:
+                        stack.push_back(failed(evaluator.initList(args, in.loc)));
+                        break;
+                    case Op::Member:
+                        stack.push_back(failed(evaluator.member(in.text, args[0], in.loc)));
+                        break;
+                    case Op::Index:
+                        stack.push_back(failed(evaluator.index(args[0], args[1], in.loc)));
+                        break;
+                    case Op::Convert:
+                        stack.push_back(failed(evaluator.convert(args[0], in.type, in.loc)));
+                        break;
+                    default:
+                        break;
+                }
+            }
+        }
+    }
+    if (stack.size() != 1) return std::nullopt;  // an empty program
+    if (stack.back().error >= 0) {
+        if (diagnostics) {
+            const Error& error = errors[static_cast<size_t>(stack.back().error)];
+            diagnostics->report(error.id, error.loc, {error.text});
+        }
+        return std::nullopt;
+    }
+    return std::move(stack.back().value);
+}
+
+// [SECTION] Compiling an expression
+
+class PreshaderCompiler {
+public:
+    PreshaderCompiler(const SlotResolver& slotOf, PreshaderProgram& program)
+        : mSlotOf(slotOf), mProgram(program) {}
+
+    void compile(const Expr& e) {
+        using Op = PreshaderProgram::Instruction::Op;
+        switch (e.kind) {
+            case Expr::Kind::Number:
+                constant(e.isInteger ? Value::integer(static_cast<int>(e.number))
+                                     : Value::scalar(static_cast<float>(e.number)));
+                return;
+            case Expr::Kind::Bool:
+                constant(Value::boolean(e.number != 0.0));
+                return;
+            case Expr::Kind::String:
+                constant(Value::text(e.text));
+                return;
+            case Expr::Kind::Identifier: {
+                if (e.text == "true" || e.text == "false") {
+                    constant(Value::boolean(e.text == "true"));
+                    return;
+                }
+                const std::optional<size_t> slot = mSlotOf ? mSlotOf(e.text) : std::nullopt;
+                if (!slot) {
+                    fail(DiagId::UnknownIdentifier, e.loc, e.text);
+                    return;
+                }
+                emit(Op::Load, e.loc).operand = static_cast<uint32_t>(*slot);
+                mProgram.mInputs.push_back(*slot);
+                return;
+            }
+            case Expr::Kind::Unary:
+                compile(e.args[0]);
+                emit(Op::Unary, e.loc).text = e.text;
+                return;
+            case Expr::Kind::Binary:
+                compile(e.args[0]);
+                compile(e.args[1]);
+                emit(Op::Binary, e.loc).text = e.text;
+                return;
+            case Expr::Kind::Ternary:
+                for (const Expr& a : e.args) compile(a);
+                emit(Op::Select, e.loc);
+                return;
+            case Expr::Kind::Call: {
+                for (const Expr& a : e.args) compile(a);
+                const std::optional<TypeDesc> type = parseTypeName(e.text);
+                auto& in = emit(type ? Op::Construct : Op::Intrinsic, e.loc);
+                in.count = static_cast<uint32_t>(e.args.size());
+                if (type) {
+                    in.type = *type;
+                } else {
+                    in.text = e.text;
+                }
+                return;
+            }
+            case Expr::Kind::Member:
+                compile(e.args[0]);
+                emit(Op::Member, e.loc).text = e.text;
+                return;
+            case Expr::Kind::Index:
+                compile(e.args[0]);
+                compile(e.args[1]);
+                emit(Op::Index, e.loc);
+                return;
+            case Expr::Kind::InitList:
+                for (const Expr& a : e.args) compile(a);
+                emit(Op::InitList, e.loc).count = static_cast<uint32_t>(e.args.size());
+                return;
+            case Expr::Kind::Cast:
+                compile(e.args[0]);
+                emit(Op::Convert, e.loc).type = e.castType;
+                return;
+            case Expr::Kind::TextureRef:
+            case Expr::Kind::Compile:
+                fail(DiagId::UnsupportedFeature, e.loc, "'" + e.str() + "' is not a value");
+                return;
+        }
+    }
+
+    void convertTo(const TypeDesc& type, const SourceLoc& loc) {
+        emit(PreshaderProgram::Instruction::Op::Convert, loc).type = type;
+    }
+
+    // A program that reads no slot is run now and replaced by its value (or kept, to fail at run time as the
+    // expression would). Inputs end sorted and unique.
+    void finish() {
+        std::vector<size_t>& inputs = mProgram.mInputs;
+        std::sort(inputs.begin(), inputs.end());
+        inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
+        if (!inputs.empty() || mProgram.isConstant()) return;
+        std::optional<Value> value = mProgram.run({}, nullptr);
+        if (!value) return;
+        mProgram.mCode.clear();
+        mProgram.mConstants.clear();
+        mProgram.mErrors.clear();
+        constant(std::move(*value));
+    }
+
+private:
+    PreshaderProgram::Instruction& emit(PreshaderProgram::Instruction::Op op, const SourceLoc& loc) {
+        PreshaderProgram::Instruction& in = mProgram.mCode.emplace_back();
+        in.op = op;
+        in.loc = loc;
+        return in;
+    }
+    void constant(Value value) {
+        emit(PreshaderProgram::Instruction::Op::Constant, {}).operand =
+            static_cast<uint32_t>(mProgram.mConstants.size());
+        mProgram.mConstants.push_back(std::move(value));
+    }
+    void fail(DiagId id, const SourceLoc& loc, const std::string& text) {
+        emit(PreshaderProgram::Instruction::Op::Fail, loc).operand =
+            static_cast<uint32_t>(mProgram.mErrors.size());
+        mProgram.mErrors.push_back({id, loc, text});
+    }
+
+    const SlotResolver& mSlotOf;
+    PreshaderProgram& mProgram;
+};
+
+PreshaderProgram compilePreshader(const Expr& expr, const SlotResolver& slotOf, const TypeDesc* targetType) {
+    PreshaderProgram program;
+    PreshaderCompiler compiler(slotOf, program);
+    compiler.compile(expr);
+    if (targetType) compiler.convertTo(*targetType, expr.loc);
+    compiler.finish();
+    return program;
+}
+
 std::optional<Value> evaluate(const Expr& expr, const ParameterLookup& lookup, const TypeDesc* targetType,
                               DiagnosticSink* diagnostics) {
-    Evaluator evaluator(lookup, diagnostics);
-    auto v = evaluator.eval(expr);
-    if (!v || !targetType) return v;
-    return evaluator.convert(*v, *targetType, expr.loc);
+    // The names the expression reads become slots of a one-off program.
+    std::vector<Value> slots;
+    std::vector<std::string> names;
+    const SlotResolver slotOf = [&](std::string_view name) -> std::optional<size_t> {
+        for (size_t i = 0; i < names.size(); ++i)
+            if (names[i] == name) return i;
+        const Value* value = lookup ? lookup(name) : nullptr;
+        if (!value) return std::nullopt;
+        names.emplace_back(name);
+        slots.push_back(*value);
+        return slots.size() - 1;
+    };
+    return compilePreshader(expr, slotOf, targetType).run(slots, diagnostics);
 }
 
 }  // namespace fx

@@ -157,8 +157,14 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     const CompiledPass& shadow = t.passes[1];
     ASSERT_EQ(shadow.arguments.size(), 1u);
     EXPECT_EQ(shadow.arguments[0].memberName, "fx_arg0");
-    EXPECT_EQ(shadow.arguments[0].expr.str(),
-              "mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))");
+    // A preshader program over the three matrices' slots.
+    std::vector<size_t> slots;
+    for (const char* name : {"WorldMatrix", "LightViewMatrix", "LightProjectionMatrix"})
+        for (size_t i = 0; i < fx->parameters.size(); ++i)
+            if (fx->parameters[i].name == name) slots.push_back(i);
+    std::sort(slots.begin(), slots.end());
+    EXPECT_EQ(shadow.arguments[0].value.inputs(), slots);
+    EXPECT_FALSE(shadow.arguments[0].value.isConstant());
     const UniformBinding* arg = findUniform(shadow.vertex, "fx_arg0");
     ASSERT_TRUE(arg) << shadow.vertex.glsl;
     EXPECT_EQ(arg->source, UniformBinding::Source::CompileArgument);
@@ -208,8 +214,10 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     EXPECT_NE(scene.fragment.glsl.find("gl_FragCoord"), std::string::npos);
     // Render states folded to literals.
     ASSERT_FALSE(shadow.states.empty());
-    for (const RenderStateSetting& s : shadow.states)
-        EXPECT_TRUE(s.value.kind == Expr::Kind::Number || s.value.kind == Expr::Kind::Bool) << s.value.str();
+    for (const RenderStateSetting& s : shadow.states) {
+        EXPECT_TRUE(s.constant) << renderStateInfo(s.id).name;
+        EXPECT_TRUE(s.value.empty());
+    }
 }
 
 TEST(EffectCompiler, InitialValuesTexturesSamplers) {
@@ -388,6 +396,65 @@ technique t < string Script = "Pass=p; Pass=nope;"; >
         }
     }
     EXPECT_TRUE(pass && target) << diags.str();
+}
+
+// The pass annotations the runtime acts on arrive resolved on each CompiledPass, whichever technique is
+// compiled: compiled alone, `b` keeps its own annotations, not those of the technique before it.
+const char* kAnnotatedPasses = R"(
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return float4(1, 1, 1, 1); }
+technique a
+{
+    pass p < bool CullClosedOnly = false; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+technique b
+{
+    pass p < bool CullClosedOnly = true; string LeaveOutWhen = "NoLightArea"; float FilterReachTexels = 0.5; >
+    { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+)";
+
+TEST(EffectCompiler, PassAnnotationsAreResolvedPerPass) {
+    for (const std::string technique : {"", "b"}) {
+        DiagnosticList diags;
+        auto effect = parseEffectSource(kAnnotatedPasses, "annotated.fx", ParseOptions{}, diags);
+        ASSERT_TRUE(effect) << diags.str();
+        CompileOptions options;
+        options.technique = technique;
+        auto compiled = compileEffect(effect, options, diags);
+        ASSERT_TRUE(compiled) << diags.str();
+        const CompiledTechnique* b = compiled->findTechnique("b");
+        ASSERT_TRUE(b);
+        EXPECT_TRUE(b->passes[0].cullClosedOnly) << "technique '" << technique << "'";
+        EXPECT_EQ(b->passes[0].leaveOutWhen, LeaveOutCondition::NoLightArea);
+        EXPECT_FLOAT_EQ(b->passes[0].filterReachTexels, 1.0f);  // a texel at least
+        if (const CompiledTechnique* a = compiled->findTechnique("a")) {
+            EXPECT_FALSE(a->passes[0].cullClosedOnly);
+            EXPECT_EQ(a->passes[0].leaveOutWhen, LeaveOutCondition::Never);
+            EXPECT_EQ(a->passes[0].filterReachTexels, 0.0f);
+        }
+    }
+}
+
+TEST(EffectCompiler, AnUnknownLeaveOutConditionIsALocatedError) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return float4(1, 1, 1, 1); }
+technique t
+{
+    pass p < string LeaveOutWhen = "Sometimes"; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+)",
+                                    "leave_out.fx", ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
+    ASSERT_TRUE(diags.hasErrors());
+    const Diagnostic& error = diags.items().back();
+    EXPECT_EQ(error.id, DiagId::InvalidAnnotation);
+    EXPECT_EQ(error.loc.file, "leave_out.fx");
+    EXPECT_EQ(error.loc.line, 6);
+    EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);
 }
 
 }  // namespace

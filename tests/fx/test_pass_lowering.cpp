@@ -39,7 +39,7 @@ struct Lowered : ::testing::Test {
 };
 
 TEST_F(Lowered, VertexWrapper) {
-    std::vector<CompileArgument> args;
+    std::vector<LoweredArgument> args;
     DiagnosticList diags;
     auto vs = lowerStage(*effect, compileOf(0), ShaderStage::Vertex, args, diags);
     ASSERT_TRUE(vs) << diags.str();
@@ -60,7 +60,7 @@ TEST_F(Lowered, VertexWrapper) {
 }
 
 TEST_F(Lowered, PixelWrapperAndDepthSampler) {
-    std::vector<CompileArgument> args;
+    std::vector<LoweredArgument> args;
     DiagnosticList diags;
     auto ps = lowerStage(*effect, compileOf(1), ShaderStage::Fragment, args, diags);
     ASSERT_TRUE(ps) << diags.str();
@@ -81,7 +81,7 @@ TEST_F(Lowered, PixelWrapperAndDepthSampler) {
 TEST_F(Lowered, ArgumentCountAndProfileErrors) {
     Expr c = compileOf(1);
     c.args.push_back(c.args[0]);
-    std::vector<CompileArgument> args;
+    std::vector<LoweredArgument> args;
     DiagnosticList diags;
     EXPECT_FALSE(lowerStage(*effect, c, ShaderStage::Fragment, args, diags));
     EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);

@@ -1,4 +1,5 @@
-// Preshader: every operator and intrinsic against independent computations (glm, <cmath>).
+// Preshader: every operator and intrinsic against independent computations (glm, <cmath>), and the
+// compiled programs: parameters resolved to slots, constants folded, inputs listed.
 #include <fx/Preshader.h>
 
 #include <glm/glm.hpp>
@@ -194,6 +195,60 @@ TEST(Preshader, ErrorsAreReported) {
     diags.clear();
     EXPECT_FALSE(evaluate(call("noise", {num(1)}), nullptr, nullptr, &diags));
     EXPECT_EQ(diags.items().at(0).id, DiagId::UnsupportedFeature);
+}
+
+Expr ternary(Expr c, Expr a, Expr b) {
+    Expr e;
+    e.kind = Expr::Kind::Ternary;
+    e.args = {std::move(c), std::move(a), std::move(b)};
+    return e;
+}
+
+// The compiled form runs over slots, not names: renaming nothing, a program reads what its slots hold.
+TEST(PreshaderProgram, ReadsSlotsResolvedAtCompileTime) {
+    const SlotResolver slots = [](std::string_view name) -> std::optional<size_t> {
+        if (name == "Scale") return 2;
+        if (name == "Offset") return 0;
+        return std::nullopt;
+    };
+    const PreshaderProgram program = compilePreshader(
+        bin("+", bin("*", id("Scale"), num(2)), bin("-", id("Offset"), id("Scale"))), slots, nullptr);
+    EXPECT_EQ(program.inputs(), (std::vector<size_t>{0, 2}));  // sorted, each once
+    EXPECT_FALSE(program.isConstant());
+    const std::vector<Value> values = {Value::scalar(10.0f), Value::scalar(-1.0f), Value::scalar(3.0f)};
+    EXPECT_FLOAT_EQ(program.run(values, nullptr)->asFloat(), 3.0f * 2.0f + (10.0f - 3.0f));
+    const std::vector<Value> changed = {Value::scalar(1.0f), Value::scalar(-1.0f), Value::scalar(0.5f)};
+    EXPECT_FLOAT_EQ(program.run(changed, nullptr)->asFloat(), 0.5f * 2.0f + (1.0f - 0.5f));
+}
+
+TEST(PreshaderProgram, FoldsWhatReadsNoParameterAndConvertsToTheTargetType) {
+    TypeDesc float3;
+    float3.shape = Shape::Vector;
+    float3.cols = 3;
+    const PreshaderProgram program =
+        compilePreshader(call("normalize", {call("float3", {num(3), num(0), num(4)})}), nullptr, &float3);
+    ASSERT_TRUE(program.isConstant());
+    EXPECT_TRUE(program.inputs().empty());
+    const std::vector<float> expected = {0.6f, 0.0f, 0.8f};
+    EXPECT_EQ(program.constant().data, expected);
+    EXPECT_EQ(program.constant().type.cols, 3);
+}
+
+// An error stands for a value: it fails the program only if the result needs it, as when the expression
+// tree was walked lazily (a scalar condition evaluates one branch).
+TEST(PreshaderProgram, AnErrorInTheBranchNotTakenIsNone) {
+    const SlotResolver slots = [](std::string_view name) -> std::optional<size_t> {
+        return name == "UseA" ? std::optional<size_t>(0) : std::nullopt;
+    };
+    const PreshaderProgram program =
+        compilePreshader(ternary(id("UseA"), num(1), id("Missing")), slots, nullptr);
+    DiagnosticList diags;
+    EXPECT_FLOAT_EQ(program.run({Value::boolean(true)}, &diags)->asFloat(), 1.0f);
+    EXPECT_TRUE(diags.items().empty());
+    EXPECT_FALSE(program.run({Value::boolean(false)}, &diags));
+    ASSERT_EQ(diags.items().size(), 1u);
+    EXPECT_EQ(diags.items()[0].id, DiagId::UnknownIdentifier);
+    EXPECT_NE(diags.items()[0].message.find("Missing"), std::string::npos);
 }
 
 }  // namespace

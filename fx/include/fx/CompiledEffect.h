@@ -4,7 +4,7 @@
 // parameter values, textures and samplers. No OpenGL here: the runtime turns this into GL objects.
 #pragma once
 
-#include <fx/Effect.h>
+#include <fx/PreshaderProgram.h>
 #include <fx/RenderStates.h>
 #include <fx/SasScript.h>
 #include <fx/Value.h>
@@ -16,6 +16,8 @@
 #include <vector>
 
 namespace fx {
+
+struct Effect;  // fx/Effect.h: the syntax tree, which the runtime does not read
 
 enum class ShaderStage { Vertex, Fragment };
 
@@ -69,24 +71,44 @@ struct StageProgram {
     uint64_t sourceHash = 0;          // hash of hlsl + options: the compile cache's key
 };
 
-// An argument of a compile expression bound to a `uniform` entry-point parameter; the runtime evaluates
-// `expr` with the preshader before each draw and stores it in the uniform block member that names it.
+// An argument of a compile expression bound to a `uniform` entry-point parameter; the runtime runs `value`
+// (converting to `type`) when one of its inputs changed and stores it in the uniform block member that
+// names it.
 struct CompileArgument {
-    Expr expr;
+    PreshaderProgram value;
     TypeDesc type;
     std::string memberName;  // "fx_arg0", ...
 };
 
 struct RenderStateSetting {
     RenderStateId id;
-    // Folded to a Number/Bool literal when constant; otherwise an expression the runtime evaluates.
-    Expr value;
+    // The value, folded at compile time (enum names, literals, constant expressions), or, for an
+    // expression that reads parameters, the program the runtime runs.
+    std::optional<double> constant;
+    PreshaderProgram value;  // empty when `constant` is set
     SourceLoc loc;
+};
+
+// `string LeaveOutWhen = "...";` on a pass: the scene condition under which the effect guarantees that
+// later passes do not need what the pass writes (README, "Leave-out").
+enum class LeaveOutCondition {
+    Never,
+    NoClosedObjects,  // no object's mesh is closed: a second depth layer finds nothing
+    NoLightArea,      // no light has an area: no soft-shadow filter needed
 };
 
 struct CompiledPass {
     std::string name;
     SourceLoc loc;
+    // The pass annotations the runtime acts on, resolved here so that the runtime never looks a pass up
+    // in the source (by name or by position: a technique compiled alone has other indices).
+    // `bool CullClosedOnly = true;`: the pass's CullMode applies to closed meshes only, open ones are drawn
+    // with culling off.
+    bool cullClosedOnly = false;
+    LeaveOutCondition leaveOutWhen = LeaveOutCondition::Never;
+    // `float FilterReachTexels = N;`: how far around a receiver's texel the passes reading this pass's map
+    // look (light-pass culling keeps every caster they can see); 0 = not declared, the runtime's default.
+    float filterReachTexels = 0.0f;
     StageProgram vertex;
     StageProgram fragment;
     std::vector<CompileArgument> arguments;
@@ -157,9 +179,31 @@ struct SamplerDesc {
     SourceLoc loc;
 };
 
+// An effect parameter as the runtime sees it: what it binds by semantic and the annotations it reads,
+// resolved at compile time.
+struct ParameterInfo {
+    std::string name;
+    TypeDesc type;
+    std::string semantic;  // as written; "" if none
+    bool isStatic = false;
+    SourceLoc loc;
+    // `string frustum = "light0";` or `string Object = "light0";`: the light whose matrices or properties
+    // the parameter sees ("" = none: the render port's).
+    std::string light;
+    // `string Parameterization = "LiSPSM";` on a light matrix: the provider's name as written (the runtime
+    // owns the list of providers and reports names it does not know at `parameterizationLoc`).
+    bool hasParameterization = false;
+    std::string parameterization;  // "" if the annotation is not a string
+    SourceLoc parameterizationLoc;
+};
+
 struct CompiledEffect {
+    // The syntax tree the effect was compiled from, for tools (annotations for UIs and test expectations).
+    // The runtime never reads it: everything it needs is resolved below.
     std::shared_ptr<const Effect> effect;
-    std::vector<Value> initialValues;  // one per Effect::parameters entry (evaluated initializers)
+    std::string path;                       // the effect's main file, for diagnostics
+    std::vector<ParameterInfo> parameters;  // one per Effect::parameters entry, same indices
+    std::vector<Value> initialValues;       // one per Effect::parameters entry (evaluated initializers)
     std::vector<TextureDesc> textures;
     std::vector<SamplerDesc> samplers;
     std::vector<CompiledTechnique> techniques;

@@ -99,12 +99,12 @@ std::string ReloadableEffect::errorText() const {
 }
 
 void ReloadableEffect::carryOverPinnedParameters(const EffectRenderer& from, EffectRenderer& to) {
-    const fx::Effect& oldEffect = *from.effect().effect;
-    const fx::Effect& newEffect = *to.effect().effect;
-    for (size_t i = 0; i < oldEffect.parameters.size(); ++i) {
+    const std::vector<fx::ParameterInfo>& oldParameters = from.effect().parameters;
+    const std::vector<fx::ParameterInfo>& newParameters = to.effect().parameters;
+    for (size_t i = 0; i < oldParameters.size(); ++i) {
         if (!from.isPinned(i)) continue;
-        const std::optional<size_t> j = to.findParameter(oldEffect.parameters[i].name);
-        if (!j || !sameType(oldEffect.parameters[i].type, newEffect.parameters[*j].type)) continue;
+        const std::optional<size_t> j = to.findParameter(oldParameters[i].name);
+        if (!j || !sameType(oldParameters[i].type, newParameters[*j].type)) continue;
         to.setParameter(*j, from.parameter(i));
     }
 }

@@ -60,13 +60,13 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
     }
     if (name.empty()) {
         if (effect.techniques.empty()) {
-            diagnostics.report(fx::DiagId::NoTechniques, fx::SourceLoc{effect.effect->path, 1, 1});
+            diagnostics.report(fx::DiagId::NoTechniques, fx::SourceLoc{effect.path, 1, 1});
             return nullptr;
         }
         return &effect.techniques.front();
     }
     if (const fx::CompiledTechnique* technique = effect.findTechnique(name)) return technique;
-    if (!loc.valid()) loc.file = effect.effect->path;
+    if (!loc.valid()) loc.file = effect.path;
     diagnostics.report(fx::DiagId::UnknownTechnique, loc, {name});
     return nullptr;
 }

@@ -27,15 +27,6 @@ bool consumeSuffix(std::string& text, std::string_view suffix) {
     return true;
 }
 
-// The light an annotation names: `frustum = "light0"` or `Object = "light0"`.
-std::string annotatedLight(const fx::Parameter& parameter) {
-    for (const char* name : {"frustum", "Object"}) {
-        const fx::Annotation* a = parameter.annotation(name);
-        if (a && a->value.kind == fx::Expr::Kind::String) return a->value.text;
-    }
-    return {};
-}
-
 // Copies a rows x cols block of `source` (HLSL row order) into `value`, converting to its shape: a
 // float3x3 parameter receives the upper-left 3x3 of a 4x4 matrix, a float3 the first three components.
 void store(fx::Value& value, const float* source, int rows, int cols) {
@@ -140,8 +131,8 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
     return false;
 }
 
-SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds,
-                               float aspect, const std::vector<fx::Value>& values,
+SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
+                               const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
                                fx::DiagnosticSink& diagnostics)
     : mScene(scene), mSceneBounds(sceneBounds), mAspect(aspect) {
     mHasClosedObjects =
@@ -149,8 +140,8 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
                     [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
     // The parameterization of each light (the `Parameterization` annotation of any parameter naming it) and
     // its tunables, before any light is fitted.
-    for (size_t i = 0; i < effect.parameters.size(); ++i) {
-        const fx::Parameter& parameter = effect.parameters[i];
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        const fx::ParameterInfo& parameter = parameters[i];
         const std::string upperSemantic = upper(parameter.semantic);
         if (i < values.size() && !values[i].data.empty()) {
             if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];
@@ -166,15 +157,12 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             if (upperSemantic == "CASCADESPLITLAMBDA") mTunables.cascadeSplitLambda = values[i].data[0];
             if (upperSemantic == "CASCADEBLEND") mTunables.cascadeBlend = values[i].data[0];
         }
-        const fx::Annotation* annotation = parameter.annotation("Parameterization");
-        const std::string lightName = annotatedLight(parameter);
-        if (!annotation || lightName.empty()) continue;
+        const std::string& lightName = parameter.light;
+        if (!parameter.hasParameterization || lightName.empty()) continue;
         const std::optional<LightParameterization> method =
-            annotation->value.kind == fx::Expr::Kind::String
-                ? parseLightParameterization(annotation->value.text)
-                : std::nullopt;
+            parseLightParameterization(parameter.parameterization);
         if (!method) {
-            diagnostics.report(fx::DiagId::InvalidAnnotation, annotation->loc,
+            diagnostics.report(fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
                                {"Parameterization",
                                 "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", "
                                 "\"PSMCube\" or \"Cascaded\""});
@@ -188,20 +176,20 @@ SemanticBinder::SemanticBinder(const fx::Effect& effect, const Scene& scene, con
             mFittedLights.push_back({light, *method, {}});
         } else if (known->method != *method) {
             diagnostics.report(
-                fx::DiagId::InvalidAnnotation, annotation->loc,
+                fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
                 {"Parameterization", "light '" + lightName + "' is already parameterized as '" +
                                          lightParameterizationName(known->method) + "'"});
         }
     }
     for (FittedLight& fitted : mFittedLights)
         fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables);
-    for (size_t i = 0; i < effect.parameters.size(); ++i) {
-        const fx::Parameter& parameter = effect.parameters[i];
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        const fx::ParameterInfo& parameter = parameters[i];
         if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
         Binding binding{i, Kind::World};
         if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
-        const std::string lightName = annotatedLight(parameter);
+        const std::string& lightName = parameter.light;
         const bool isCascadeProperty =
             binding.kind == Kind::CascadeViewProjection || binding.kind == Kind::CascadeAtlasRects ||
             binding.kind == Kind::CascadeSplitDepths || binding.kind == Kind::CubeFaceSelect;
@@ -314,103 +302,108 @@ bool SemanticBinder::projectionSource(size_t parameter, const Light*& light) con
 
 void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object, float time,
                           std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope,
-                          const std::vector<bool>* used) const {
+                          const std::vector<bool>* used, ParameterStamps* stamps) const {
     const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
     for (const Binding& binding : mBindings) {
         if (pinned[binding.parameter]) continue;
         if (used && !(*used)[binding.parameter]) continue;
         if (scope != Scope::All && dependsOnObject(binding.kind) != (scope == Scope::PerObject)) continue;
         fx::Value& value = values[binding.parameter];
-
-        glm::mat4 view = port.view;
-        glm::mat4 projection = port.projection;
-        if (binding.light) {
-            view = binding.lightView;
-            projection = binding.lightProjection;
-            // RenderPort=lightN.cascadeK: that light's matrices are cascade K's while the port is active.
-            const bool cascadePort =
-                port.cascade >= 0 &&
-                port.lightIndex == static_cast<int>(binding.light - mScene.lights.data()) &&
-                port.cascade < static_cast<int>(binding.lightCascades.size());
-            if (cascadePort) {
-                view = binding.lightCascades[static_cast<size_t>(port.cascade)].view;
-                projection = binding.lightCascades[static_cast<size_t>(port.cascade)].projection;
-            }
-        }
-        // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
-        glm::mat4 matrix(1.0f);
-        switch (binding.kind) {
-            case Kind::World:
-                matrix = world;
-                break;
-            case Kind::View:
-                matrix = view;
-                break;
-            case Kind::CubeFaceSelect:
-                matrix = binding.lightFaceSelect;
-                break;
-            case Kind::Projection:
-                matrix = projection;
-                break;
-            case Kind::WorldView:
-                matrix = view * world;
-                break;
-            case Kind::ViewProjection:
-                matrix = projection * view;
-                break;
-            case Kind::WorldViewProjection:
-                matrix = projection * view * world;
-                break;
-            case Kind::ViewportPixelSize:
-                storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f));
-                continue;
-            case Kind::Time:
-                storeVector(value, glm::vec4(time));
-                continue;
-            case Kind::CameraPosition: {
-                const glm::mat4 viewInverse = glm::inverse(view);
-                storeVector(value, glm::vec4(glm::vec3(viewInverse[3]), 1.0f));
-                continue;
-            }
-            case Kind::ObjectId:
-                storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f));
-                continue;
-            case Kind::LightPosition: {
-                const Light& light = *binding.light;
-                const glm::vec3 position = light.type == Light::Type::Directional
-                                               ? glm::vec3(glm::inverse(binding.lightView)[3])
-                                               : light.position;
-                storeVector(value, glm::vec4(position, 1.0f));
-                continue;
-            }
-            case Kind::LightDirection:
-                storeVector(value, glm::vec4(binding.light->direction, 0.0f));
-                continue;
-            case Kind::LightColor:
-                storeVector(value, glm::vec4(binding.light->color, 1.0f));
-                continue;
-            case Kind::LightAreaRadius:
-                storeVector(value, glm::vec4(binding.light->areaRadius));
-                continue;
-            case Kind::ObjectColor:
-                storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));
-                continue;
-            case Kind::Ambient:
-                storeVector(value, glm::vec4(mScene.ambient, 1.0f));
-                continue;
-            case Kind::SceneHasClosedObjects:
-                storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));
-                continue;
-            case Kind::CascadeViewProjection:
-            case Kind::CascadeAtlasRects:
-            case Kind::CascadeSplitDepths:
-                storeCascades(binding, value);
-                continue;
-        }
-        if (binding.inverse) matrix = glm::inverse(matrix);
-        if (binding.transpose) matrix = glm::transpose(matrix);
-        storeMatrix(value, matrix);
+        if (stamps) mPrevious.assign(value.data.begin(), value.data.end());
+        write(binding, port, object, time, world, value);
+        if (stamps && value.data != mPrevious) stamps->touch(binding.parameter);
     }
+}
+
+void SemanticBinder::write(const Binding& binding, const RenderPortView& port, const SceneObject* object,
+                           float time, const glm::mat4& world, fx::Value& value) const {
+    glm::mat4 view = port.view;
+    glm::mat4 projection = port.projection;
+    if (binding.light) {
+        view = binding.lightView;
+        projection = binding.lightProjection;
+        // RenderPort=lightN.cascadeK: that light's matrices are cascade K's while the port is active.
+        const bool cascadePort = port.cascade >= 0 &&
+                                 port.lightIndex == static_cast<int>(binding.light - mScene.lights.data()) &&
+                                 port.cascade < static_cast<int>(binding.lightCascades.size());
+        if (cascadePort) {
+            view = binding.lightCascades[static_cast<size_t>(port.cascade)].view;
+            projection = binding.lightCascades[static_cast<size_t>(port.cascade)].projection;
+        }
+    }
+    // glm composes column-vector transforms right to left: D3D's World*View*Proj is proj*view*world.
+    glm::mat4 matrix(1.0f);
+    switch (binding.kind) {
+        case Kind::World:
+            matrix = world;
+            break;
+        case Kind::View:
+            matrix = view;
+            break;
+        case Kind::CubeFaceSelect:
+            matrix = binding.lightFaceSelect;
+            break;
+        case Kind::Projection:
+            matrix = projection;
+            break;
+        case Kind::WorldView:
+            matrix = view * world;
+            break;
+        case Kind::ViewProjection:
+            matrix = projection * view;
+            break;
+        case Kind::WorldViewProjection:
+            matrix = projection * view * world;
+            break;
+        case Kind::ViewportPixelSize:
+            storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f));
+            return;
+        case Kind::Time:
+            storeVector(value, glm::vec4(time));
+            return;
+        case Kind::CameraPosition: {
+            const glm::mat4 viewInverse = glm::inverse(view);
+            storeVector(value, glm::vec4(glm::vec3(viewInverse[3]), 1.0f));
+            return;
+        }
+        case Kind::ObjectId:
+            storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f));
+            return;
+        case Kind::LightPosition: {
+            const Light& light = *binding.light;
+            const glm::vec3 position = light.type == Light::Type::Directional
+                                           ? glm::vec3(glm::inverse(binding.lightView)[3])
+                                           : light.position;
+            storeVector(value, glm::vec4(position, 1.0f));
+            return;
+        }
+        case Kind::LightDirection:
+            storeVector(value, glm::vec4(binding.light->direction, 0.0f));
+            return;
+        case Kind::LightColor:
+            storeVector(value, glm::vec4(binding.light->color, 1.0f));
+            return;
+        case Kind::LightAreaRadius:
+            storeVector(value, glm::vec4(binding.light->areaRadius));
+            return;
+        case Kind::ObjectColor:
+            storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));
+            return;
+        case Kind::Ambient:
+            storeVector(value, glm::vec4(mScene.ambient, 1.0f));
+            return;
+        case Kind::SceneHasClosedObjects:
+            storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));
+            return;
+        case Kind::CascadeViewProjection:
+        case Kind::CascadeAtlasRects:
+        case Kind::CascadeSplitDepths:
+            storeCascades(binding, value);
+            return;
+    }
+    if (binding.inverse) matrix = glm::inverse(matrix);
+    if (binding.transpose) matrix = glm::transpose(matrix);
+    storeMatrix(value, matrix);
 }
 
 }  // namespace runtime

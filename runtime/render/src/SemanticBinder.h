@@ -24,17 +24,29 @@
 #pragma once
 
 #include <fx/Diagnostics.h>
-#include <fx/Effect.h>
+#include <fx/CompiledEffect.h>
 #include <fx/Value.h>
 #include <runtime/LightParameterization.h>
 #include <runtime/Scene.h>
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace runtime {
+
+// Change stamps of parameter values: stamps[i] changes whenever the value of parameter i does. A stamp is
+// never given twice (one clock for every copy of the values), so equal stamps mean equal values: what the
+// runtime's preshader cache compares to run a program only when one of its inputs changed.
+struct ParameterStamps {
+    std::vector<uint64_t> stamps;
+    std::shared_ptr<uint64_t> clock = std::make_shared<uint64_t>(0);
+
+    void touch(size_t parameter) { stamps[parameter] = ++*clock; }
+};
 
 // What the current pass renders from (the camera, or a light for RenderPort=lightN) and into.
 struct RenderPortView {
@@ -55,8 +67,9 @@ public:
     // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
     // `aspect` (the frame's width / height) and `values` (the current parameter values, for the
     // parameterization tunables) serve view-dependent light fits.
-    SemanticBinder(const fx::Effect& effect, const Scene& scene, const Bounds& sceneBounds, float aspect,
-                   const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics);
+    SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
+                   const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
+                   fx::DiagnosticSink& diagnostics);
 
     // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
     // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
@@ -65,9 +78,10 @@ public:
     // Writes the values of every bound parameter that is not pinned into `values` (one per parameter).
     // `object` may be null (Draw=Buffer), then World is the identity. `used` (one flag per parameter, may
     // be null) restricts binding to the parameters a pass reads.
+    // `stamps` (may be null) are touched for the parameters whose value changed.
     void bind(const RenderPortView& port, const SceneObject* object, float time,
               std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope = Scope::All,
-              const std::vector<bool>* used = nullptr) const;
+              const std::vector<bool>* used = nullptr, ParameterStamps* stamps = nullptr) const;
 
     // True if the parameter's bound value depends on the drawn object.
     bool isPerObject(size_t parameter) const;
@@ -120,6 +134,8 @@ private:
         glm::mat4 lightFaceSelect{0.0f};         // a PSMCube fit's LightFit::faceSelect
     };
     static bool dependsOnObject(Kind kind);
+    void write(const Binding& binding, const RenderPortView& port, const SceneObject* object, float time,
+               const glm::mat4& world, fx::Value& value) const;
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
 
@@ -138,6 +154,7 @@ private:
     std::vector<FittedLight> mFittedLights;  // one per light any parameter names, fitted once per frame
     bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
+    mutable std::vector<float> mPrevious;  // bind(): a value before it is written, to see whether it changed
 };
 
 }  // namespace runtime

@@ -35,7 +35,7 @@ struct PassTiming {
 struct FrameCpuTime {
     uint64_t totalNs = 0;      // the whole render() call before waiting for the GPU
     uint64_t bindingNs = 0;    // semantic binding (SemanticBinder) and uniform upload
-    uint64_t preshaderNs = 0;  // evaluating pass arguments and render-state expressions (fx::evaluate)
+    uint64_t preshaderNs = 0;  // evaluating pass arguments and render-state preshaders
     uint64_t glNs = 0;         // inside GL draw, clear and framebuffer calls (the driver's share)
     // Script interpretation and the rest of the runtime: totalNs - bindingNs - preshaderNs - glNs.
     uint64_t scriptNs() const {
@@ -52,6 +52,9 @@ struct FrameStats {
     int clears = 0;
     int culled = 0;         // objects left out of Draw=Geometry commands
     int passesLeftOut = 0;  // Pass= commands none of whose clears and draws ran (PassStats::leftOut)
+    // Preshader programs run (render states and compile arguments, fx/PreshaderProgram.h): only those
+    // one of whose input parameters changed since their last run; 0 for a frame that changes nothing.
+    uint64_t preshaderRuns = 0;
     std::vector<PassStats> passes;
     std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
     FrameCpuTime cpu;                     // only with FrameOptions::timePasses

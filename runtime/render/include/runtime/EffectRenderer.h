@@ -43,6 +43,8 @@ struct FrameOptions {
     std::vector<std::string> outputTargets;
 };
 
+class EffectResources;  // opaque: what the renderer owns (runtime/render/src/EffectResources.h)
+
 class EffectRenderer {
 public:
     // Links every pass's program, creates textures and samplers. Returns nullptr if a program does not
@@ -87,11 +89,9 @@ public:
     std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
                                                  int* channels, int level = 0) const;
 
-    struct Impl;  // opaque: the GL resources (runtime/render/src/EffectRenderer.cpp)
-
 private:
-    explicit EffectRenderer(std::unique_ptr<Impl> impl);
-    std::unique_ptr<Impl> mImpl;
+    explicit EffectRenderer(std::unique_ptr<EffectResources> resources);
+    std::unique_ptr<EffectResources> mImpl;
 };
 
 // Writes `image` as a PNG; false (with a message in `error`) on failure.

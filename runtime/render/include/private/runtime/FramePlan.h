@@ -12,6 +12,7 @@
 #pragma once
 
 #include <runtime/IntersectionBody.h>
+#include <runtime/RenderStateApplier.h>
 
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,7 @@ struct PlannedOp {
     ReceiverRegion region;       // light draws: where the camera's receivers read (before the decision)
     bool sceneSaysSkip = false;  // the pass's LeaveOutWhen condition holds, or a cascade's slice is empty
     bool wholeTarget = true;     // a clear of the whole target (false: one cascade's tile, a partial write)
+    RenderStateBlock states;     // draws: the pass's render states, evaluated once by the dry run
 
     // Decisions (FramePlan::decide)
     LeftOut leftOut = LeftOut::No;

@@ -1,0 +1,73 @@
+// PreshaderProgram: an effect expression compiled for the host, the way D3DX compiles the expressions of
+// render states and shader arguments into preshaders. Parameters are slots (their indices in the effect),
+// operators, intrinsics, swizzles and types are resolved at compile time; running a program walks a flat
+// instruction list over the slots' current values, with no names and no syntax tree.
+//
+// Compiled from an Expr by fx/Preshader.h (compilePreshader); run by the runtime before a draw when one of
+// its input slots changed (inputs()).
+#pragma once
+
+#include <fx/Diagnostics.h>
+#include <fx/Types.h>
+#include <fx/Value.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fx {
+
+class PreshaderProgram {
+public:
+    struct Instruction {
+        enum class Op : uint8_t {
+            Constant,   // push constants[operand]
+            Load,       // push slots[operand]
+            Fail,       // push an error (errors[operand]): an unknown name, a non-value
+            Unary,      // pop 1; `text` is the operator ("-", "!", "~", "+")
+            Binary,     // pop 2; `text` is the operator
+            Select,     // pop 3: condition, then, else (HLSL evaluates both; a scalar condition picks one)
+            Construct,  // pop `count`: a `type` from their components (float4(...))
+            Intrinsic,  // pop `count`: the intrinsic `text` (mul, normalize, ...)
+            InitList,   // pop `count`: { ... }
+            Member,     // pop 1: swizzle or matrix member `text`
+            Index,      // pop 2: base[index]
+            Convert,    // pop 1: to `type` (casts, the program's target type)
+        };
+        Op op = Op::Constant;
+        uint32_t operand = 0;  // Constant, Load, Fail
+        uint32_t count = 0;    // Construct, Intrinsic, InitList
+        std::string text;      // operator, intrinsic or member; never a parameter's name
+        TypeDesc type;         // Construct, Convert
+        SourceLoc loc;         // for the error it may report
+    };
+    struct Error {
+        DiagId id;
+        SourceLoc loc;
+        std::string text;
+    };
+
+    // The value over `slots` (every parameter's current value, by index), converted to the program's
+    // target type if it has one. nullopt, with the error reported to `diagnostics` (if given), when it
+    // fails; an error in the branch a scalar condition does not take is not one.
+    std::optional<Value> run(const std::vector<Value>& slots, DiagnosticSink* diagnostics) const;
+
+    // The slots the program reads, ascending and unique: it must be run again only when one changed.
+    const std::vector<size_t>& inputs() const { return mInputs; }
+    // True if the program is one constant (folded at compile time).
+    bool isConstant() const { return mCode.size() == 1 && mCode[0].op == Instruction::Op::Constant; }
+    // The folded constant (isConstant()).
+    const Value& constant() const { return mConstants.front(); }
+    bool empty() const { return mCode.empty(); }
+
+private:
+    friend class PreshaderCompiler;  // fx/src/Preshader.cpp
+
+    std::vector<Instruction> mCode;  // postfix: operands before the instruction that uses them
+    std::vector<Value> mConstants;
+    std::vector<Error> mErrors;
+    std::vector<size_t> mInputs;
+};
+
+}  // namespace fx

@@ -1,0 +1,105 @@
+// EffectResources: what an EffectRenderer owns between frames. Created once from the compiled effect (the
+// way FX11's EffectLoad turns a compiled effect into runtime structures once): one GpuProgram and one
+// PassPreshaders per pass, the effect's textures and samplers, the parameter values with their change
+// stamps; render targets sized per frame, GPU meshes per scene mesh, the scene's BVH and what each render
+// target holds after the frames so far.
+#pragma once
+
+#include <private/runtime/FramePlan.h>
+#include <runtime/Framebuffer.h>
+#include <runtime/GpuMesh.h>
+#include <runtime/GpuProgram.h>
+#include <runtime/GpuTexture.h>
+#include <runtime/InstanceBvh.h>
+#include "PassPreshaders.h"
+#include <runtime/SamplerObject.h>
+#include "SemanticBinder.h"
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+#include <runtime/Scene.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace runtime {
+
+class EffectResources {
+public:
+    // Links every pass's program, compiles nothing (the effect is compiled), creates textures and samplers.
+    // nullptr if a program does not link or a file texture cannot be read; the diagnostics say why.
+    static std::unique_ptr<EffectResources> create(std::shared_ptr<const fx::CompiledEffect> compiled,
+                                                   fx::DiagnosticSink& diagnostics);
+
+    const fx::CompiledEffect& effect() const { return *mCompiled; }
+    const std::vector<fx::ParameterInfo>& parameterInfo() const { return mCompiled->parameters; }
+    std::optional<size_t> findParameter(std::string_view name) const;
+    // The current value of a parameter by name; nullptr if there is none.
+    const fx::Value* find(std::string_view name) const;
+
+    // [SECTION] Parameters
+    std::vector<fx::Value> values;  // one per parameter
+    std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
+    ParameterStamps stamps;         // of `values`
+
+    // [SECTION] GL resources
+    std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
+    std::vector<std::vector<PassPreshaders>> preshaders;             // [technique][pass]
+    std::map<size_t, GpuTexture> textures;                           // by texture parameter index
+    // Mipmapped render targets written since their mip chain was last generated: regenerated before a
+    // pass samples them (D3D9's AUTOGENMIPMAP).
+    std::set<const GpuTexture*> staleMipChains;
+    std::map<size_t, SamplerObject> samplers;
+    std::map<size_t, SamplerObject> comparisonSamplers;
+    GpuMesh quad;
+    FramebufferCache framebuffers;
+    GpuTexture frameColor;
+    GpuTexture frameDepth;
+    std::unique_ptr<UniformRing> uniformRing;
+
+    // [SECTION] Between frames
+    // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
+    // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
+    struct SceneCache {
+        uint64_t stamp = 0;
+        bool valid = false;
+        Bounds bounds;
+        InstanceBvh bvh;
+        std::map<const Mesh*, Aabb> meshBoxes;
+    } sceneCache;
+    // What each render target holds after the frames so far (FramePlan): how light passes are reused.
+    std::map<int, TargetHistory> targetHistory;
+
+    // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
+    // allocate (null: all); others already allocated are still resized.
+    void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
+    GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
+    void updateSceneCache(const Scene& scene);
+    // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
+    uint64_t targetIdentity(int resource) const;
+
+private:
+    bool createFileTextures(fx::DiagnosticSink& diagnostics);
+
+    std::shared_ptr<const fx::CompiledEffect> mCompiled;
+    std::unordered_map<std::string, size_t> mParameterIndex;
+    std::map<const Mesh*, std::pair<std::shared_ptr<const Mesh>, GpuMesh>> mMeshes;
+};
+
+// Stores `value` as parameter `index` of `values` (its type becomes the parameter's; a value with fewer
+// components than the type, such as a script's loop index, is broadcast, as HLSL broadcasts a scalar) and
+// touches its stamp. The one way values change, whether the application, a script or a dry run sets them.
+void storeParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, fx::Value value,
+                    std::vector<fx::Value>& values, ParameterStamps& stamps);
+
+// A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
+glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height);
+bool isRenderTarget(const fx::TextureDesc& desc);
+
+}  // namespace runtime

@@ -1,0 +1,396 @@
+// FrameExecutor: see FrameExecutor.h.
+#include "FrameExecutor.h"
+
+#include <runtime/GlDebug.h>
+#include <runtime/IntersectionBody.h>
+#include "RenderPort.h"
+#include <runtime/RenderStateApplier.h>
+
+#include <algorithm>
+
+namespace runtime {
+
+FrameExecutor::FrameExecutor(EffectResources& resources, const Scene& scene, const FrameOptions& options,
+                             fx::DiagnosticSink& diagnostics, FrameStats& stats, size_t techniqueIndex,
+                             const SemanticBinder& binder, const std::vector<PassUse>& uses,
+                             const FramePlan& plan)
+    : mResources(resources),
+      mScene(scene),
+      mOptions(options),
+      mDiagnostics(diagnostics),
+      mStats(stats),
+      mTechnique(techniqueIndex),
+      mBinder(binder),
+      mUses(uses),
+      mPlan(plan) {
+    mTargets.colors[0].texture = &resources.frameColor;
+    mTargets.depth.texture = &resources.frameDepth;
+    setRenderPort("", -1, {});
+}
+
+void FrameExecutor::finish() {
+    closePass();
+    for (const auto& [pass, query] : mTexelQueries) {
+        GLuint64 samples = 0;
+        gl::GetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+        mStats.passes[pass].texelsWritten += samples;
+        gl::DeleteQueries(1, &query);
+    }
+    for (const PassStats& pass : mStats.passes) {
+        if (pass.leftOut.empty()) {
+            ++mStats.passesRun;
+        } else {
+            ++mStats.passesLeftOut;
+        }
+    }
+    mTimer.finish();
+}
+
+void FrameExecutor::beginPass(const fx::CompiledPass& pass) {
+    closePass();
+    mCurrentPass = static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
+    PassStats record;
+    record.pass = pass.name;
+    mStats.passes.push_back(record);
+    mPassOps = 0;
+    mPassLeftOut.fill(0);
+    mTimer.beginPass(pass.name);
+}
+
+void FrameExecutor::setColorTarget(int index, const std::string& texture) {
+    if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
+    if (texture.empty()) {
+        mTargets.colors[static_cast<size_t>(index)].texture = index == 0 ? &mResources.frameColor : nullptr;
+        return;
+    }
+    mTargets.colors[static_cast<size_t>(index)].texture = target(texture);
+}
+
+void FrameExecutor::setDepthTarget(const std::string& texture) {
+    mTargets.depth.texture = texture.empty() ? &mResources.frameDepth : target(texture);
+}
+
+void FrameExecutor::setRenderPort(const std::string& lightName, int cascade, const fx::SourceLoc& loc) {
+    mLightPort = !lightName.empty();
+    mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
+    std::string error;
+    if (!portMatrices(mScene, mBinder, mOptions, lightName, cascade, mPort, &error)) {
+        if (!mFailed)
+            mDiagnostics.report(fx::DiagId::ScriptUnknownRenderPort,
+                                loc.valid() ? loc : fx::SourceLoc{mResources.effect().path, 0, 0}, {error});
+        mFailed = true;
+    }
+}
+
+void FrameExecutor::setClearColor(const fx::Value& color) {
+    for (size_t i = 0; i < 4; ++i)
+        mClearColor[i] = i < color.data.size() ? color.data[i] : (i == 3 ? 1.0f : 0.0f);
+    if (color.data.size() == 1) mClearColor = {color.data[0], color.data[0], color.data[0], color.data[0]};
+}
+
+void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
+    const PlannedOp::Kind kind = what == fx::ScriptCommand::ClearWhat::Color ? PlannedOp::Kind::ClearColor
+                                 : what == fx::ScriptCommand::ClearWhat::Depth
+                                     ? PlannedOp::Kind::ClearDepth
+                                     : PlannedOp::Kind::ClearStencil;
+    if (leftOut(nextOp(kind, mCurrentPass))) return;
+    if (!bindTargets()) return;
+    const bool tileOnly = mPort.cascade >= 0;  // D3D clears the viewport: a cascade port its tile
+    if (tileOnly) {
+        const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
+        gl::Enable(GL_SCISSOR_TEST);
+        gl::Scissor(tile.x, tile.y, tile.z, tile.w);
+    }
+    ClearRequest request;
+    uint64_t texels = 0;
+    switch (what) {
+        case fx::ScriptCommand::ClearWhat::Color:
+            request.color = mClearColor;
+            for (const auto& color : mTargets.colors)
+                if (color.texture) texels += texelCount(*color.texture);
+            break;
+        case fx::ScriptCommand::ClearWhat::Depth:
+            request.depth = mClearDepth;
+            if (mTargets.depth.texture) texels += texelCount(*mTargets.depth.texture);
+            break;
+        case fx::ScriptCommand::ClearWhat::Stencil:
+            if (mTargets.depth.texture && mTargets.depth.texture->glFormat().hasStencil) {
+                request.stencil = mClearStencil;
+                texels += texelCount(*mTargets.depth.texture);
+            }
+            break;
+    }
+    {
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+        FramebufferCache::clear(request);
+    }
+    if (tileOnly) gl::Disable(GL_SCISSOR_TEST);  // every pass's states set it anew (RenderStateApplier)
+    ++mStats.clears;
+    if (PassStats* record = currentPass()) {
+        ++record->clears;
+        record->texelsWritten += texels;
+    }
+}
+
+void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
+    const size_t passIndex =
+        static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
+    GpuProgram* program = mResources.programs[mTechnique][passIndex].get();
+    if (!program || !program->hasShaders()) {
+        if (mWarnedPasses.insert(passIndex).second) {
+            mDiagnostics.report(
+                fx::Diagnostic{fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass.loc,
+                               "pass '" + pass.name + "' draws but has no vertex and pixel shader; skipped"});
+        }
+        return;
+    }
+    const bool buffer = what == fx::ScriptCommand::DrawWhat::Buffer;
+    const PlannedOp* op =
+        nextOp(buffer ? PlannedOp::Kind::DrawBuffer : PlannedOp::Kind::DrawGeometry, passIndex);
+    if (leftOut(op)) return;
+    if (!bindTargets()) return;
+    applyStates(pass, passIndex, op);
+    bindSamplers(pass.vertex);
+    bindSamplers(pass.fragment);
+    mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
+    if (mPort.cascade >= 0) {
+        const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
+        gl::Viewport(tile.x, tile.y, tile.z, tile.w);
+        mPort.viewportSize = glm::vec2(tile.z, tile.w);
+    }
+    program->bind();
+    const PassUse& use = mUses[passIndex];
+    if (mOptions.leaveOut) {
+        // Per-frame and per-port values once per pass; drawWith() then binds only per-object ones.
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
+                     SemanticBinder::Scope::PerPort, &use.used, &mResources.stamps);
+    }
+    evaluateArguments(passIndex, use, false);
+
+    GLuint query = 0;
+    if (mOptions.countTexels) {
+        gl::GenQueries(1, &query);
+        gl::BeginQuery(GL_SAMPLES_PASSED, query);
+    }
+    if (buffer) {
+        drawWith(pass, passIndex, *program, use, nullptr, mResources.quad);
+    } else if (mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight)) {
+        mVisible.clear();
+        cull(op, mVisible);
+        int drawable = 0;
+        for (const SceneObject& object : mScene.objects) drawable += object.mesh ? 1 : 0;
+        for (uint32_t index : mVisible) {
+            const SceneObject& object = mScene.objects[index];
+            drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
+        }
+        const int culled = drawable - static_cast<int>(mVisible.size());
+        mStats.culled += culled;
+        if (PassStats* record = currentPass()) record->culled += culled;
+    } else {
+        for (const SceneObject& object : mScene.objects) {
+            if (!object.mesh) continue;
+            drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
+        }
+    }
+    if (query) {
+        gl::EndQuery(GL_SAMPLES_PASSED);
+        if (!mStats.passes.empty())
+            mTexelQueries.emplace_back(mStats.passes.size() - 1, query);
+        else
+            gl::DeleteQueries(1, &query);
+    }
+}
+
+void FrameExecutor::reportIgnored(const fx::ScriptCommand& command) {
+    mDiagnostics.report(fx::DiagId::ScriptCommandIgnored, command.loc,
+                        {std::string(fx::scriptCommandName(command.kind))});
+}
+
+void FrameExecutor::setParameter(const std::string& name, const fx::Value& value) {
+    const std::optional<size_t> index = mResources.findParameter(name);
+    if (!index) {
+        fail(fx::DiagId::UnknownParameter, {name});
+        return;
+    }
+    storeParameter(mResources.parameterInfo(), *index, value, mResources.values, mResources.stamps);
+}
+
+void FrameExecutor::fail(fx::DiagId id, const std::vector<std::string>& args) {
+    if (!mFailed) mDiagnostics.report(id, fx::SourceLoc{mResources.effect().path, 0, 0}, args);
+    mFailed = true;
+}
+
+uint64_t FrameExecutor::texelCount(const GpuTexture& texture) {
+    return static_cast<uint64_t>(texture.width()) * static_cast<uint64_t>(texture.height());
+}
+
+// The plan's record of the command about to run, or null once the frame left the plan (never
+// expected: the dry run follows the same script over the same values).
+const PlannedOp* FrameExecutor::nextOp(PlannedOp::Kind kind, size_t pass) {
+    if (!mPlanFollowed) return nullptr;
+    if (mNextOp >= mPlan.ops.size() || mPlan.ops[mNextOp].kind != kind || mPlan.ops[mNextOp].pass != pass) {
+        mPlanFollowed = false;
+        return nullptr;
+    }
+    ++mPassOps;
+    return &mPlan.ops[mNextOp++];
+}
+
+// Counts a command the plan leaves out; true if it is left out.
+bool FrameExecutor::leftOut(const PlannedOp* op) {
+    if (!op || op->leftOut == LeftOut::No) return false;
+    ++mPassLeftOut[static_cast<size_t>(op->leftOut)];
+    return true;
+}
+
+void FrameExecutor::closePass() {
+    PassStats* record = currentPass();
+    int leftOut = 0;
+    for (int count : mPassLeftOut) leftOut += count;
+    if (!record || mPassOps == 0 || leftOut < mPassOps) return;
+    static constexpr const char* kReasons[] = {"", "dead", "cached", "scene"};
+    for (size_t reason = 1; reason < mPassLeftOut.size(); ++reason)
+        if (mPassLeftOut[reason] > 0)
+            record->leftOut += (record->leftOut.empty() ? "" : "+") + std::string(kReasons[reason]);
+}
+
+// Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
+// extrusion away from the light meets the camera's receivers (IntersectionBody.h).
+void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) const {
+    const InstanceBvh& bvh = mResources.sceneCache.bvh;
+    const glm::mat4 viewProjection = mPort.projection * mPort.view;
+    if (!mLightPort) {
+        const ConvexVolume frustum = frustumPlanes(viewProjection);
+        bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, visible);
+        return;
+    }
+    const ReceiverRegion region = op && op->cullToReceivers ? op->region : fullLightRegion();
+    bvh.query([&](const Aabb& box) { return casterReaches(region, viewProjection, box); }, visible);
+}
+
+const GpuTexture* FrameExecutor::target(const std::string& name) {
+    const std::optional<size_t> index = mResources.findParameter(name);
+    auto texture = index ? mResources.textures.find(*index) : mResources.textures.end();
+    if (texture == mResources.textures.end()) {
+        // Left unallocated because no operation that runs uses it (FramePlan): not an error.
+        const fx::TextureDesc* desc = index ? mResources.effect().findTexture(*index) : nullptr;
+        if (!desc || !isRenderTarget(*desc)) fail(fx::DiagId::ScriptUnknownTarget, {name});
+        return nullptr;
+    }
+    return &texture->second;
+}
+
+bool FrameExecutor::bindTargets() {
+    if (mFailed) return false;
+    std::string error;
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    if (!mResources.framebuffers.bind(mTargets, error)) {
+        fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
+        return false;
+    }
+    for (const RenderTargetAttachment& color : mTargets.colors) {
+        if (color.texture && color.texture->mipLevels() > 1) mResources.staleMipChains.insert(color.texture);
+    }
+    return true;
+}
+
+bool FrameExecutor::isColorTarget(const GpuTexture* texture) const {
+    return std::any_of(mTargets.colors.begin(), mTargets.colors.end(),
+                       [texture](const RenderTargetAttachment& color) { return color.texture == texture; });
+}
+
+void FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op) {
+    const RenderStateBlock* block = op ? &op->states : nullptr;
+    if (!block) {
+        PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
+        block = &mResources.preshaders[mTechnique][passIndex].states(mResources.values, mResources.stamps,
+                                                                     mDiagnostics);
+    }
+    // DepthBias units (RenderStateApplier.h): 2^-bits for UNORM depth; for D32F the resolvable
+    // difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24 bits.
+    const GpuTexture* depth = mTargets.depth.texture;
+    const int depthBits = depth ? std::clamp(depth->glFormat().depthBits, 16, 24) : 24;
+    applyRenderStates(*block, depthBits);
+    // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight)
+    // meshes only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual
+    // depth layers with back-face culling (Weiskopf & Ertl 2003, §4: "back face culling for solid
+    // objects can be mixed with non-culled open surfaces in the same scene") need both in one pass: a
+    // culled open plane would vanish.
+    mCullClosedOnly = pass.cullClosedOnly && block->get(fx::RenderStateId::CullMode) != 1.0;
+}
+
+void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {
+    for (const fx::SamplerBinding& binding : stage.samplers) {
+        const fx::SamplerDesc* desc = mResources.effect().findSampler(binding.samplerParameter);
+        const GpuTexture* texture = nullptr;
+        if (desc && desc->texture) {
+            auto it = mResources.textures.find(*desc->texture);
+            if (it != mResources.textures.end()) texture = &it->second;
+        }
+        // Not while the pass renders into it (the chain would be built before the draw that changes it).
+        if (texture && !isColorTarget(texture) && mResources.staleMipChains.erase(texture) > 0) {
+            PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+            texture->generateMipmaps();
+        }
+        gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
+        if (texture) {
+            gl::BindTexture(texture->target(), texture->id());
+        } else {
+            gl::BindTexture(GL_TEXTURE_2D, 0);
+        }
+        auto& samplers = binding.depthCompare ? mResources.comparisonSamplers : mResources.samplers;
+        auto sampler = samplers.find(binding.samplerParameter);
+        if (sampler != samplers.end()) {
+            sampler->second.bind(binding.unit);
+        } else {
+            SamplerObject::unbind(binding.unit);
+        }
+    }
+}
+
+// Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per
+// pass (perObject false) and the per-object ones per draw (perObject true); without, all per draw.
+void FrameExecutor::evaluateArguments(size_t passIndex, const PassUse& use, bool perObject) {
+    PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
+    const std::vector<bool>* which =
+        mOptions.leaveOut ? (perObject ? &use.argumentPerObject : &use.argumentPerPass) : nullptr;
+    mResources.preshaders[mTechnique][passIndex].arguments(mResources.values, mResources.stamps, which,
+                                                           mArguments, mDiagnostics);
+}
+
+void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
+                             const PassUse& use, const SceneObject* object, GpuMesh& mesh) {
+    {
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        if (mOptions.leaveOut) {
+            mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
+                         SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
+        } else {
+            mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
+                         SemanticBinder::Scope::All, nullptr, &mResources.stamps);
+        }
+    }
+    evaluateArguments(passIndex, use, true);
+    {
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+    }
+    {
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+        const bool drawUnculled = mCullClosedOnly && object && !(object->mesh && object->mesh->closed);
+        if (drawUnculled) gl::Disable(GL_CULL_FACE);
+        mesh.draw(pass.vertex.inputs);
+        if (drawUnculled) gl::Enable(GL_CULL_FACE);
+    }
+    const uint64_t triangles = mesh.indexCount() / 3;
+    ++mStats.draws;
+    mTimer.countDraw();
+    mStats.triangles += triangles;
+    if (PassStats* record = currentPass()) {
+        ++record->draws;
+        record->triangles += triangles;
+    }
+}
+
+}  // namespace runtime

@@ -1,0 +1,107 @@
+// FrameExecutor: runs one frame's scripts on GL, following the frame's plan (FramePlan, recorded by
+// PlanRecorder): binds targets, the plan's render states, samplers and semantics, runs the compile
+// arguments' preshaders, culls and draws; counts what it did into FrameStats.
+#pragma once
+
+#include "EffectResources.h"
+#include <private/runtime/FramePlan.h>
+#include <runtime/PassTimer.h>
+#include "PassUse.h"
+#include "ScriptInterpreter.h"
+#include "SemanticBinder.h"
+
+#include <runtime/EffectRenderer.h>
+#include <runtime/Scene.h>
+
+#include <array>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace runtime {
+
+class FrameExecutor : public ScriptTarget {
+public:
+    FrameExecutor(EffectResources& resources, const Scene& scene, const FrameOptions& options,
+                  fx::DiagnosticSink& diagnostics, FrameStats& stats, size_t techniqueIndex,
+                  const SemanticBinder& binder, const std::vector<PassUse>& uses, const FramePlan& plan);
+
+    bool failed() const { return mFailed; }
+    // False if the frame's commands did not follow the plan (then nothing after the divergence was left out).
+    bool followedPlan() const { return mPlanFollowed && mNextOp == mPlan.ops.size(); }
+    // Closes the last pass's record, reads the fragment counts and, with FrameOptions::timePasses, waits
+    // for the GPU and fills the frame's pass timings.
+    void finish();
+
+    void beginPass(const fx::CompiledPass& pass) override;
+    void setColorTarget(int index, const std::string& texture) override;
+    void setDepthTarget(const std::string& texture) override;
+    void setRenderPort(const std::string& lightName, int cascade, const fx::SourceLoc& loc) override;
+    void setClearColor(const fx::Value& color) override;
+    void setClearDepth(float depth) override { mClearDepth = depth; }
+    void setClearStencil(int stencil) override { mClearStencil = stencil; }
+    void clear(fx::ScriptCommand::ClearWhat what) override;
+    void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
+    void reportIgnored(const fx::ScriptCommand& command) override;
+    const fx::Value* parameter(const std::string& name) const override { return mResources.find(name); }
+    void setParameter(const std::string& name, const fx::Value& value) override;
+
+private:
+    void fail(fx::DiagId id, const std::vector<std::string>& args);
+    PassStats* currentPass() { return mStats.passes.empty() ? nullptr : &mStats.passes.back(); }
+    static uint64_t texelCount(const GpuTexture& texture);
+    // The plan's record of the command about to run, or null once the frame left the plan (never
+    // expected: the dry run follows the same script over the same values).
+    const PlannedOp* nextOp(PlannedOp::Kind kind, size_t pass);
+    // Counts a command the plan leaves out; true if it is left out.
+    bool leftOut(const PlannedOp* op);
+    void closePass();
+    // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
+    // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
+    void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const;
+    const GpuTexture* target(const std::string& name);
+    bool bindTargets();
+    bool isColorTarget(const GpuTexture* texture) const;
+    // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
+    // evaluates them.
+    void applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op);
+    void bindSamplers(const fx::StageProgram& stage);
+    // Runs the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per pass
+    // (perObject false) and the per-object ones per draw (perObject true); without, all per draw. Each
+    // runs only if a parameter it reads changed (PassPreshaders).
+    void evaluateArguments(size_t passIndex, const PassUse& use, bool perObject);
+    void drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use,
+                  const SceneObject* object, GpuMesh& mesh);
+
+    EffectResources& mResources;
+    const Scene& mScene;
+    const FrameOptions& mOptions;
+    fx::DiagnosticSink& mDiagnostics;
+    FrameStats& mStats;
+    PassTimer mTimer{mOptions.timePasses, mStats};
+    size_t mTechnique;
+    const SemanticBinder& mBinder;
+    const std::vector<PassUse>& mUses;
+    const FramePlan& mPlan;
+    size_t mNextOp = 0;
+    bool mPlanFollowed = true;
+    size_t mCurrentPass = 0;
+    int mPassOps = 0;
+    std::array<int, 4> mPassLeftOut{};                     // per LeftOut reason
+    std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
+    std::vector<uint32_t> mVisible;
+    std::vector<fx::Value> mArguments;
+    RenderTargets mTargets;
+    RenderPortView mPort;
+    bool mLightPort = false;
+    const Light* mPortLight = nullptr;
+    std::array<float, 4> mClearColor{0.0f, 0.0f, 0.0f, 0.0f};  // D3D's Clear defaults
+    float mClearDepth = 1.0f;
+    int mClearStencil = 0;
+    bool mFailed = false;
+    bool mCullClosedOnly = false;  // the pass's CullClosedOnly applies (applyStates)
+    std::set<size_t> mWarnedPasses;
+};
+
+}  // namespace runtime

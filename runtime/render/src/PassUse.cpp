@@ -1,0 +1,54 @@
+// PassUse: see PassUse.h.
+#include "PassUse.h"
+
+#include <algorithm>
+
+namespace runtime {
+
+bool PassUse::projectsWith(const Light* portLight) const {
+    if (readsPortMatrix) return true;
+    return portLight &&
+           std::find(lightMatrices.begin(), lightMatrices.end(), portLight) != lightMatrices.end();
+}
+
+std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t count,
+                              const SemanticBinder& binder) {
+    std::vector<PassUse> uses;
+    const auto mark = [count](const fx::PreshaderProgram& program, std::vector<bool>& used) {
+        for (size_t p : program.inputs())
+            if (p < count) used[p] = true;
+    };
+    for (const fx::CompiledPass& pass : technique.passes) {
+        PassUse use;
+        use.used.assign(count, false);
+        for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment})
+            for (const fx::UniformBinding& member : stage->uniforms)
+                if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
+                    member.index < count)
+                    use.used[member.index] = true;
+        for (const fx::RenderStateSetting& setting : pass.states) mark(setting.value, use.used);
+        for (const fx::CompileArgument& argument : pass.arguments) {
+            mark(argument.value, use.used);
+            const std::vector<size_t>& inputs = argument.value.inputs();
+            const bool perObject = std::any_of(inputs.begin(), inputs.end(),
+                                               [&binder](size_t p) { return binder.isPerObject(p); });
+            use.argumentPerObject.push_back(perObject);
+            use.argumentPerPass.push_back(!perObject);
+        }
+        for (size_t p = 0; p < count; ++p) {
+            if (!use.used[p]) continue;
+            if (!binder.isPerObject(p)) use.perPassParameters.push_back(p);
+            const Light* light = nullptr;
+            if (!binder.projectionSource(p, light)) continue;
+            if (light) {
+                use.lightMatrices.push_back(light);
+            } else {
+                use.readsPortMatrix = true;
+            }
+        }
+        uses.push_back(std::move(use));
+    }
+    return uses;
+}
+
+}  // namespace runtime

@@ -1,0 +1,36 @@
+// PassUse: what one pass reads, from its compiled data alone: the parameters its stages' uniform blocks
+// name and the inputs of its preshader programs (render states, compile arguments). Only these are bound
+// (semantics) and hashed (FramePlan signatures); compile arguments that read no per-object semantic run
+// once per pass instead of once per draw.
+#pragma once
+
+#include "SemanticBinder.h"
+
+#include <fx/CompiledEffect.h>
+#include <runtime/Scene.h>
+
+#include <vector>
+
+namespace runtime {
+
+struct PassUse {
+    std::vector<bool> used;                 // per effect parameter
+    std::vector<bool> argumentPerObject;    // per CompiledPass::arguments entry
+    std::vector<bool> argumentPerPass;      // its complement
+    std::vector<size_t> perPassParameters;  // used and not bound per object
+    // The view/projection matrices it reads: the port's, and those of annotated lights. Culling trusts
+    // the port's frustum only for passes that project with it (a camera-port pass that draws a light's
+    // view with frustum="light0" matrices is not culled).
+    bool readsPortMatrix = false;
+    std::vector<const Light*> lightMatrices;
+
+    // True if a draw with the render port (`portLight`: its light, null for the camera) projects with the
+    // port's matrices, so that culling to the port's frustum keeps everything it can draw.
+    bool projectsWith(const Light* portLight) const;
+};
+
+// One PassUse per pass of `technique`, for the parameter count `parameters`.
+std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t parameters,
+                              const SemanticBinder& binder);
+
+}  // namespace runtime

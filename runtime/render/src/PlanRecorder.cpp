@@ -1,0 +1,264 @@
+// PlanRecorder: see PlanRecorder.h.
+#include "PlanRecorder.h"
+
+#include <runtime/IntersectionBody.h>
+#include "RenderPort.h"
+
+#include <algorithm>
+
+namespace runtime {
+
+namespace {
+
+// Filter footprint the receiver region keeps around every receiver, in shadow-map texels: bilinear PCF
+// reads one texel around the lookup, the thesis effect's jitter up to JITTER_AMOUNT / 2 = 2 texels.
+constexpr float kReceiverPadTexels = 8.0f;
+
+std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
+    std::vector<const fx::SamplerBinding*> samplers;
+    for (const fx::StageProgram* stage : {&pass.vertex, &pass.fragment})
+        for (const fx::SamplerBinding& binding : stage->samplers) samplers.push_back(&binding);
+    return samplers;
+}
+
+}  // namespace
+
+PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const FrameOptions& options,
+                           const SemanticBinder& binder, const std::vector<PassUse>& uses, size_t technique,
+                           const std::vector<glm::vec3>& body, FramePlan& plan,
+                           fx::DiagnosticSink& diagnostics)
+    : mResources(resources),
+      mScene(scene),
+      mOptions(options),
+      mBinder(binder),
+      mUses(uses),
+      mTechnique(technique),
+      mBody(body),
+      mPlan(plan),
+      mDiagnostics(diagnostics),
+      mValues(resources.values),
+      mStamps(resources.stamps),
+      mPadTexels(kReceiverPadTexels) {
+    mColors.fill(kNone);
+    mColors[0] = kFrameColor;
+    setRenderPort("", -1, {});
+}
+
+void PlanRecorder::beginPass(const fx::CompiledPass& pass) {
+    mPass = passIndex(pass);
+    mSceneSaysSkip = sceneSaysSkip(pass);
+    mPadTexels = receiverPadTexels(pass);
+}
+
+void PlanRecorder::setColorTarget(int index, const std::string& texture) {
+    if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
+    mColors[static_cast<size_t>(index)] =
+        texture.empty() ? (index == 0 ? kFrameColor : kNone) : resource(texture);
+}
+
+void PlanRecorder::setDepthTarget(const std::string& texture) {
+    mDepth = texture.empty() ? kFrameDepth : resource(texture);
+}
+
+void PlanRecorder::setRenderPort(const std::string& light, int cascade, const fx::SourceLoc&) {
+    mLightPort = !light.empty();
+    portMatrices(mScene, mBinder, mOptions, light, cascade, mPort);
+}
+
+void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
+    PlannedOp op;
+    op.pass = mPass;
+    op.lightPort = mLightPort;
+    uint64_t value = 0;
+    switch (what) {
+        case fx::ScriptCommand::ClearWhat::Color:
+            op.kind = PlannedOp::Kind::ClearColor;
+            op.writes = colorTargets();
+            value = hashBytes(0, mClearColor.data(), mClearColor.size() * sizeof(float));
+            break;
+        case fx::ScriptCommand::ClearWhat::Depth:
+            op.kind = PlannedOp::Kind::ClearDepth;
+            if (mDepth != kNone) op.writes = {mDepth};
+            value = hashBytes(0, &mClearDepth, sizeof(mClearDepth));
+            break;
+        case fx::ScriptCommand::ClearWhat::Stencil:
+            op.kind = PlannedOp::Kind::ClearStencil;
+            if (mDepth != kNone) op.writes = {mDepth};
+            value = static_cast<uint64_t>(mClearStencil);
+            break;
+    }
+    op.signature = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mPass), value);
+    if (mPort.cascade >= 0) {
+        // A cascade port clears its tile only (D3D clears the viewport): the rest of the target stays.
+        op.wholeTarget = false;
+        op.reads = op.writes;
+        op.signature = hashCombine(op.signature, static_cast<uint64_t>(mPort.cascade) + 1);
+    }
+    op.sceneSaysSkip = mSceneSaysSkip;
+    mPlan.ops.push_back(std::move(op));
+}
+
+void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
+    const size_t index = passIndex(pass);
+    const GpuProgram* program = mResources.programs[mTechnique][index].get();
+    if (!program || !program->hasShaders()) return;  // FrameExecutor warns and skips it too
+    PlannedOp op;
+    op.kind = what == fx::ScriptCommand::DrawWhat::Buffer ? PlannedOp::Kind::DrawBuffer
+                                                          : PlannedOp::Kind::DrawGeometry;
+    op.pass = index;
+    op.lightPort = mLightPort;
+    // The pass's render states, evaluated here once for the executor (PlannedOp::states). Bound targets are
+    // read (blending, depth and stencil tests); they are written unless the states mask the writes (the
+    // hardware shadow map's ColorWriteEnable = 0, BlendOp=min without Z).
+    op.states = mResources.preshaders[mTechnique][index].states(mValues, mStamps, mDiagnostics);
+    const RenderStateBlock& states = op.states;
+    static constexpr fx::RenderStateId kColorWrites[] = {
+        fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
+        fx::RenderStateId::ColorWriteEnable2, fx::RenderStateId::ColorWriteEnable3};
+    for (size_t slot = 0; slot < mColors.size(); ++slot) {
+        if (mColors[slot] == kNone) continue;
+        op.reads.push_back(mColors[slot]);
+        if (states.get(kColorWrites[slot]) != 0.0) op.writes.push_back(mColors[slot]);
+    }
+    if (mDepth != kNone) {
+        op.reads.push_back(mDepth);
+        const bool depthWrites = states.get(fx::RenderStateId::ZEnable) != 0.0 &&
+                                 states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
+        if (depthWrites || states.get(fx::RenderStateId::StencilEnable) != 0.0) op.writes.push_back(mDepth);
+    }
+    for (const fx::SamplerBinding* binding : passSamplers(pass)) {
+        const fx::SamplerDesc* desc = mResources.effect().findSampler(binding->samplerParameter);
+        if (desc && desc->texture) op.reads.push_back(static_cast<int>(*desc->texture));
+    }
+
+    const PassUse& use = mUses[index];
+    mPort.viewportSize = targetSize();
+    if (mPort.cascade >= 0) {
+        const glm::ivec4 tile = portTile(mBinder, mScene, mPort, static_cast<int>(mPort.viewportSize.x),
+                                         static_cast<int>(mPort.viewportSize.y));
+        mPort.viewportSize = glm::vec2(tile.z, tile.w);
+    }
+    mBinder.bind(mPort, nullptr, mOptions.time, mValues, mResources.pinned, SemanticBinder::Scope::PerPort,
+                 &use.used, &mStamps);
+    uint64_t h = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mTechnique), index);
+    // Field by field: the struct's padding bytes are not part of its value.
+    h = hashBytes(h, &mPort.view, sizeof(mPort.view));
+    h = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
+    h = hashBytes(h, &mPort.viewportSize, sizeof(mPort.viewportSize));
+    h = hashCombine(h, mPort.shinesIntoPositiveW ? 1 : 0);
+    h = hashCombine(hashCombine(h, static_cast<uint64_t>(mPort.lightIndex + 1)),
+                    static_cast<uint64_t>(mPort.cascade + 1));
+    for (size_t p : use.perPassParameters)
+        h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
+    if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp);
+    op.signature = h;
+    op.sceneSaysSkip = mSceneSaysSkip;
+    if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
+        const LightFit portFit = mPort.cascade >= 0
+                                     ? mBinder.lightFit(mScene.lights[static_cast<size_t>(mPort.lightIndex)])
+                                     : LightFit{};
+        if (portFit.cubeFaces) {
+            // A PSMCube face serves the receivers of B within its pyramid (its window is fitted to
+            // them); a face that none uses is left out.
+            op.sceneSaysSkip =
+                op.sceneSaysSkip || !portFit.cascades[static_cast<size_t>(mPort.cascade)].serves;
+            op.region = receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+        } else if (mPort.cascade >= 0) {
+            // A cascade serves the receivers of its own depth slice only: its casters are culled to that
+            // slice, and a slice beyond the farthest receiver has nothing to serve.
+            const InstanceBvh& bvh = mResources.sceneCache.bvh;
+            const glm::mat4 slice = cascadeSlice();
+            std::vector<glm::vec3> body;
+            std::vector<uint32_t> receivers;
+            if (!bvh.empty()) {
+                body = intersectionBodyPoints(slice, Bounds{bvh.rootBox().min, bvh.rootBox().max});
+                const ConvexVolume frustum = frustumPlanes(slice);
+                bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, receivers);
+                op.sceneSaysSkip = op.sceneSaysSkip || receivers.empty();
+            }
+            op.region = receiverRegion(body, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+        } else {
+            op.region = receiverRegion(mBody, mPort.projection * mPort.view, mPort.viewportSize, mPadTexels);
+        }
+        op.region.castersBehindLightPlaneCastNothing = mPort.shinesIntoPositiveW;
+    }
+    mPlan.ops.push_back(std::move(op));
+}
+
+const fx::Value* PlanRecorder::parameter(const std::string& name) const {
+    const std::optional<size_t> index = mResources.findParameter(name);
+    return index ? &mValues[*index] : nullptr;
+}
+
+void PlanRecorder::setParameter(const std::string& name, const fx::Value& value) {
+    if (const std::optional<size_t> index = mResources.findParameter(name))
+        storeParameter(mResources.parameterInfo(), *index, value, mValues, mStamps);
+}
+
+size_t PlanRecorder::passIndex(const fx::CompiledPass& pass) const {
+    return static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
+}
+
+int PlanRecorder::resource(const std::string& name) const {
+    const std::optional<size_t> index = mResources.findParameter(name);
+    if (!index) return kUnknown;
+    const fx::TextureDesc* desc = mResources.effect().findTexture(*index);
+    if (!mResources.textures.count(*index) && !(desc && isRenderTarget(*desc))) return kUnknown;
+    return static_cast<int>(*index);
+}
+
+// A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second
+// depth layer finds nothing) or "NoLightArea" (no light has an area: no soft-shadow filter needed) is
+// left out where that holds. The effect guarantees that later passes do not need what it writes then.
+bool PlanRecorder::sceneSaysSkip(const fx::CompiledPass& pass) const {
+    switch (pass.leaveOutWhen) {
+        case fx::LeaveOutCondition::Never:
+            return false;
+        case fx::LeaveOutCondition::NoClosedObjects:
+            return std::none_of(mScene.objects.begin(), mScene.objects.end(),
+                                [](const SceneObject& o) { return o.mesh && o.mesh->closed; });
+        case fx::LeaveOutCondition::NoLightArea:
+            return std::all_of(mScene.lights.begin(), mScene.lights.end(),
+                               [](const Light& light) { return light.areaRadius <= 0.0f; });
+    }
+    return false;
+}
+
+// How far around a receiver's own texel the passes reading this light pass's map look, in texels: what
+// the pass declares (`float FilterReachTexels = 65;` on a map read by a PCSS blocker search, 2 for 2x2
+// bilinear PCF), else kReceiverPadTexels, so that light-pass culling keeps every caster they can see.
+// A declared reach matters most for warped maps (LiSPSM), whose far texels are large in world units.
+float PlanRecorder::receiverPadTexels(const fx::CompiledPass& pass) {
+    return pass.filterReachTexels > 0.0f ? pass.filterReachTexels : kReceiverPadTexels;
+}
+
+// The current cascade's slice of the camera frustum (between its split depths) as a view-projection:
+// its casters are culled to B within it, and a slice no object's box meets has no receiver to serve.
+glm::mat4 PlanRecorder::cascadeSlice() const {
+    const Light& light = mScene.lights[static_cast<size_t>(mPort.lightIndex)];
+    const LightView cascade = mBinder.lightFit(light).cascades[static_cast<size_t>(mPort.cascade)];
+    Camera slice = mScene.camera;
+    slice.nearPlane = cascade.splitNear;
+    slice.farPlane = cascade.splitFar;
+    const float aspect = static_cast<float>(mOptions.width) / static_cast<float>(mOptions.height);
+    return slice.projection(aspect) * slice.view();
+}
+
+std::vector<int> PlanRecorder::colorTargets() const {
+    std::vector<int> targets;
+    for (int target : mColors)
+        if (target != kNone) targets.push_back(target);
+    return targets;
+}
+
+glm::vec2 PlanRecorder::targetSize() const {
+    for (int target : {mColors[0], mDepth}) {
+        if (target == kFrameColor || target == kFrameDepth) return glm::vec2(mOptions.width, mOptions.height);
+        if (target < 0) continue;
+        const fx::TextureDesc* desc = mResources.effect().findTexture(static_cast<size_t>(target));
+        if (desc) return glm::vec2(renderTargetSize(*desc, mOptions.width, mOptions.height));
+    }
+    return glm::vec2(mOptions.width, mOptions.height);
+}
+
+}  // namespace runtime

@@ -1,0 +1,77 @@
+// PlanRecorder: the dry run of a frame. Follows the technique's script as FrameExecutor will, on a copy of
+// the parameter values, and records every clear and draw with its targets, sampled textures, signature,
+// render states and receiver region (FramePlan). No GL.
+#pragma once
+
+#include "EffectResources.h"
+#include <private/runtime/FramePlan.h>
+#include "PassUse.h"
+#include "ScriptInterpreter.h"
+#include "SemanticBinder.h"
+
+#include <runtime/EffectRenderer.h>
+#include <runtime/Scene.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace runtime {
+
+class PlanRecorder : public ScriptTarget {
+public:
+    static constexpr int kNone = -1000;     // an unbound colour slot
+    static constexpr int kUnknown = -1001;  // a target the executor will reject
+
+    // `body`: the camera's intersection body (receivers' region for light passes); `diagnostics` gets the
+    // render states' evaluation errors (the states are evaluated here, once per pass, for the executor).
+    PlanRecorder(EffectResources& resources, const Scene& scene, const FrameOptions& options,
+                 const SemanticBinder& binder, const std::vector<PassUse>& uses, size_t technique,
+                 const std::vector<glm::vec3>& body, FramePlan& plan, fx::DiagnosticSink& diagnostics);
+
+    void beginPass(const fx::CompiledPass& pass) override;
+    void setColorTarget(int index, const std::string& texture) override;
+    void setDepthTarget(const std::string& texture) override;
+    void setRenderPort(const std::string& light, int cascade, const fx::SourceLoc&) override;
+    void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
+    void setClearDepth(float depth) override { mClearDepth = depth; }
+    void setClearStencil(int stencil) override { mClearStencil = stencil; }
+    void clear(fx::ScriptCommand::ClearWhat what) override;
+    void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
+    void reportIgnored(const fx::ScriptCommand&) override {}
+    const fx::Value* parameter(const std::string& name) const override;
+    void setParameter(const std::string& name, const fx::Value& value) override;
+
+private:
+    size_t passIndex(const fx::CompiledPass& pass) const;
+    int resource(const std::string& name) const;
+    bool sceneSaysSkip(const fx::CompiledPass& pass) const;
+    static float receiverPadTexels(const fx::CompiledPass& pass);
+    glm::mat4 cascadeSlice() const;
+    std::vector<int> colorTargets() const;
+    glm::vec2 targetSize() const;
+
+    EffectResources& mResources;
+    const Scene& mScene;
+    const FrameOptions& mOptions;
+    const SemanticBinder& mBinder;
+    const std::vector<PassUse>& mUses;
+    size_t mTechnique;
+    const std::vector<glm::vec3>& mBody;
+    FramePlan& mPlan;
+    fx::DiagnosticSink& mDiagnostics;
+    std::vector<fx::Value> mValues;  // the dry run's copy of the parameter values
+    ParameterStamps mStamps;         // of mValues (the resources' clock: stamps stay unique)
+    std::array<int, RenderTargets::kMaxColorTargets> mColors{};
+    int mDepth = kFrameDepth;
+    bool mLightPort = false;
+    RenderPortView mPort;
+    size_t mPass = 0;
+    bool mSceneSaysSkip = false;
+    float mPadTexels = 0.0f;  // receiverPadTexels of the current pass
+    std::vector<float> mClearColor;
+    float mClearDepth = 1.0f;
+    int mClearStencil = 0;
+};
+
+}  // namespace runtime
