@@ -3,6 +3,7 @@
 // for the executor, and a frame that changes nothing runs none (FrameStats::preshaderRuns).
 #include "runtime/LeaveOutFrames.h"
 
+#include <runtime/BuiltinScenes.h>
 #include <runtime/Scene.h>
 
 namespace shadowfx::test {
