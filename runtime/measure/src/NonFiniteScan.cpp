@@ -13,7 +13,7 @@ std::optional<NonFiniteTexels> findNonFiniteTexels(const EffectRenderer& rendere
         if (scan == TextureScan::RenderTargets && texture.kind != fx::TextureDesc::Kind::RenderColorTarget &&
             texture.kind != fx::TextureDesc::Kind::RenderDepthStencilTarget)
             continue;
-        const std::string& name = effect.effect->parameters[texture.parameter].name;
+        const std::string& name = effect.parameters[texture.parameter].name;
         int width = 0, height = 0, channels = 0;
         std::optional<std::vector<float>> texels = renderer.readTarget(name, &width, &height, &channels);
         if (!texels) continue;  // not allocated: the technique does not use it
@@ -34,7 +34,7 @@ std::optional<NonFiniteTexels> findNonFiniteTexels(const EffectRenderer& rendere
 }
 
 std::optional<std::string> findNonFiniteParameter(const EffectRenderer& renderer) {
-    const auto& parameters = renderer.effect().effect->parameters;
+    const auto& parameters = renderer.effect().parameters;
     for (size_t i = 0; i < parameters.size(); ++i)
         for (float value : renderer.parameter(i).data)
             if (!std::isfinite(value)) return parameters[i].name;
