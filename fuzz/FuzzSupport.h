@@ -2,6 +2,7 @@
 // fuzzed input can never read the disk, and small limits, so that one input stays fast.
 #pragma once
 
+#include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 
 #include <cstddef>
@@ -28,6 +29,22 @@ inline fx::ParseOptions parseOptions(const std::string& input) {
 
 inline std::string text(const uint8_t* data, size_t size) {
     return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// Parse + compile one input with `options`; traps when the result and the diagnostics disagree (an
+// effect without errors that did not compile, or errors with an effect), the finding of both compiler
+// targets. glslang is slow on huge units, so inputs over 64 KiB are left to the parser target.
+inline int compileInput(const uint8_t* data, size_t size, const fx::CompileOptions& options) {
+    if (size > (64u << 10)) return 0;
+    const std::string input = text(data, size);
+    fx::DiagnosticList diagnostics;
+    std::shared_ptr<fx::Effect> effect =
+        fx::parseEffectSource(input, "fuzz/input.fx", parseOptions(input), diagnostics);
+    if (!effect) return 0;
+    std::unique_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, options, diagnostics);
+    if ((compiled != nullptr) == diagnostics.hasErrors()) __builtin_trap();
+    (void)diagnostics.str();
+    return 0;
 }
 
 }  // namespace fuzz

@@ -4,7 +4,6 @@
 #include "FuzzSupport.h"
 
 #include <fx/CompileWorkers.h>
-#include <fx/EffectCompiler.h>
 
 namespace {
 
@@ -19,17 +18,8 @@ fx::CompileWorkers& workers() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    if (size > (64u << 10)) return 0;
-    const std::string input = fuzz::text(data, size);
-    fx::DiagnosticList diagnostics;
-    std::shared_ptr<fx::Effect> effect =
-        fx::parseEffectSource(input, "fuzz/input.fx", fuzz::parseOptions(input), diagnostics);
-    if (!effect) return 0;
     fx::CompileOptions options;
     options.isolation = fx::CompileIsolation::Workers;
     options.workers = &workers();
-    std::unique_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, options, diagnostics);
-    if ((compiled != nullptr) == diagnostics.hasErrors()) __builtin_trap();
-    (void)diagnostics.str();
-    return 0;
+    return fuzz::compileInput(data, size, options);
 }
