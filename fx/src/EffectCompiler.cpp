@@ -684,7 +684,7 @@ void Compiler::finishPendingStages() {
         const bool first = !reported[pending.job];
         reported[pending.job] = true;
         if (first) reportHlslMessages(outcome.messages, lowered);
-        // The repeats of a unit count as cache hits (misses if it failed), as when stages compiled one by one.
+        // The repeats of a unit count as cache hits (misses if it failed), as when stages compiled singly.
         if (!first && mOptions.cache) mOptions.cache->find(pending.key);
         const SourceLoc function = functionLocation(lowered);
         using Status = StageOutcome::Status;

@@ -2,8 +2,8 @@
 //   "dual-l"       — Weiskopf & Ertl 2003, Fig. 5: an "L"-shaped solid above a greenish surface,
 //                    directional light "from right above"; the crease between the L's legs shows midpoint
 //                    self-unshadowing, its light-space silhouettes self-shadowing.
-//   "double-torus" — Weiskopf & Ertl 2003, Fig. 6: a double torus over a plane (bilinear-filtering comparison).
-//   "behind"       — Kozlov 2004 (Kozlov, PSM "Care and Feeding", §14.2): casters *behind* the viewer with the
+//   "double-torus" — Weiskopf & Ertl 2003, Fig. 6: a double torus over a plane (bilinear filtering).
+//   "behind"       — Kozlov 2004 (PSM "Care and Feeding", §14.2): casters *behind* the viewer with the
 //                    light behind too, whose shadows fall into the view; a long plane and rows of boxes and
 //                    poles in front, so the view frustum is much smaller than the scene.
 #include <private/runtime/SceneBuilding.h>
@@ -43,7 +43,7 @@ Mesh makeLPrism(float width, float height, float thickness, float depth) {
     Mesh mesh;
     mesh.name = "L";
     const float z0 = -0.5f * depth, z1 = 0.5f * depth;
-    // The outline counter-clockwise in xy; (t, t) is the reflex corner, the crease of Weiskopf & Ertl 2003's Fig. 5.
+    // The outline counter-clockwise in xy; (t, t) is the reflex corner (Weiskopf & Ertl, Fig. 5).
     const glm::vec2 outline[6] = {
         {0, 0}, {width, 0}, {width, thickness}, {thickness, thickness}, {thickness, height}, {0, height}};
     for (int i = 0; i < 6; ++i) {
@@ -124,7 +124,7 @@ Scene makeBehindScene() {
     auto crate = share(makeBox(glm::vec3(2.0f)));
     uint32_t id = 2;
     // Behind the camera (z = -20): a row of tall poles and a row of blocks. With the light behind the
-    // viewer too, their shadows stretch forward (+z) into the view: Kozlov 2004, Fig. 14-1's case, where a PSM
+    // viewer too, their shadows stretch forward (+z) into the view: Kozlov's Fig. 14-1 case, where a PSM
     // that only focuses on the view frustum loses these casters.
     for (int i = 0; i < 7; ++i) {
         const float x = -12.0f + 4.0f * float(i);

@@ -1,4 +1,4 @@
-// IntersectionBody: the part of the scene a camera sees, B = view frustum ∩ scene bounds (Scherzer 2005 §4.1),
+// IntersectionBody: the part of the scene a camera sees, B = view frustum ∩ scene bounds (Scherzer §4.1),
 // and the culling tests built on it:
 // - a camera pass draws an object only if its box meets the view frustum;
 // - a light pass draws a caster only if its box, extruded away from the light, meets B: a shadow can

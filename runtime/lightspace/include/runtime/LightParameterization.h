@@ -7,13 +7,13 @@
 //   Focused   an orthographic fit to the intersection body B = view frustum ∩ scene bounds, extruded toward
 //             the light to the scene bounds (Scherzer 2005 §4.1 )
 //   LiSPSM    Focused followed by a perspective warp along V_P, the view direction (or B's middle vector)
-//             made perpendicular to the light (Scherzer 2005 §4.4 eq. 1-3; Lehőcz 2007), whose strength is 1 / n_opt
+//             made perpendicular to the light (Scherzer §4.4 eq. 1-3; Lehőcz), strength 1 / n_opt
 //   TSM       trapezoidal shadow maps (Martin & Tan 2004; Lehőcz 2007): a trapezoid around B in light space,
 //             warped onto the square with the 80% rule (TrapezoidalShadowMap.h)
 //   PSM       perspective shadow maps: the light as a point in the camera's post-perspective space, with
 //             Kozlov's inverse projection, slide-back and unit-cube clipping (Kozlov 2004 §14.2,
 //             runtime/PerspectiveShadowMap.h)
-//   PSMCube   PSM's cube-map variant (Kozlov 2004 §14.2.2): six faces around the light in PPS, rendered through
+//   PSMCube   PSM's cube-map variant (Kozlov §14.2.2): six faces around the light in PPS, rendered through
 //             RenderPort=lightN.faceK into the tiles of one atlas (runtime/PerspectiveShadowCubeMap.h)
 //   Cascaded  the Focused fit as view 0, plus one stabilized orthographic sub-view per slice of the view
 //             depth range (cascaded / parallel-split shadow maps, runtime/CascadedShadowMaps.h), rendered
@@ -49,14 +49,14 @@ struct LightTunables {
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, Scherzer 2005 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
-    // LiSPSMMiddleVector: V_P from B's "middle vector" (Scherzer 2005 §4.4: the sum of the vectors from the eye
+    // LiSPSMMiddleVector: V_P from B's "middle vector" (Scherzer §4.4: the sum of the vectors from the eye
     // to B's vertices, which leans toward where B has volume) instead of the view direction of eq. 3.
     bool lispsmMiddleVector = false;
     // LightPancaking (Focused, LiSPSM): the map's depth range spans the receivers of B only; casters between
     // them and the light get depth < 0 and must be drawn with DepthClipEnable = false (depth clamp), which
     // flattens them onto the near plane (Scherzer 2005 §4.1). A tighter range for fixed-point depth maps.
     bool pancaking = false;
-    // TSMFocus: TSM's focus distance δ (Lehőcz 2007, the 80% rule) as a fraction of the depth of B along the
+    // TSMFocus: TSM's focus distance δ (Lehőcz, the 80% rule) as a fraction of the depth of B along the
     // view: the nearest TSMFocus of what the camera sees gets 80% of the map's height.
     float tsmFocus = 0.3f;
     // PSMSlideBack: how far (world units) PSM's virtual camera slides back behind the eye, its near plane
@@ -105,7 +105,7 @@ struct LightFit {
     bool shinesIntoPositiveW = true;
 };
 
-// Scherzer 2005 eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
+// Scherzer eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
 // which goes to 0 (no warp: the focused fit) as sin γ -> 0 instead of dividing by zero.
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma);
 

@@ -5,7 +5,7 @@
 // light becomes a point L' = C (-d, 0): an ordinary point in front of the camera when the light shines
 // toward the viewer (L'.w > 0), an "inverted" point when it comes from behind the viewer (L'.w < 0), and a
 // direction when it is perpendicular to the view (L'.w = 0). The light camera is a perspective from L'
-// (Kozlov 2004 §14.2.2) whose rows x, y, w all vanish on L': in world space they do not change along the light
+// (Kozlov §14.2.2) whose rows x, y, w all vanish on L': in world space they do not change along the light
 // direction, so clip w is constant along each world light ray and depth z / w, kept linear in the world
 // distance along the light, orders casters correctly on both sides of the viewer. That is Kozlov's inverse
 // projection (near -a, far a, §14.2.1) without the case split: the casters behind the viewer need no
@@ -16,7 +16,7 @@
 //   nearest receiver, an automatic z_n), its far plane where B ends;
 // - unit-cube clipping (§14.2.2): the light camera aims at B's receivers in PPS and its window is their
 //   bounding rectangle, not the whole unit cube;
-// - close to the unit cube (the case of §14.2.2's cube map, PerspectiveShadowCubeMap.h): the light camera's w
+// - close to the unit cube (§14.2.2's cube map, PerspectiveShadowCubeMap.h): the light camera's w
 // over B's
 //   receivers ranges over w_min..w_max; a ratio above `maxWarpRatio` is capped by moving the light's w = 0
 //   plane away from B (a weaker perspective), and as closeness = w_min / w_max falls from 0.02 to 0 (the
