@@ -326,6 +326,44 @@ TEST_P(ShadowMapCache, ReusedOnlyWhileUnchanged) {
 
 INSTANTIATE_TEST_SUITE_P(ThesisEffect, ShadowMapCache, ::testing::Values("main", "hardware"));
 
+// FrameOptions::reuseTargets off (what `bench` times as a technique's full cost): the same static frame
+// again redraws the map, so every pass of the technique runs, culling still applies, and the image is the
+// one reuse gives.
+TEST(ShadowMapCache, WithoutReuseEveryPassRunsEveryFrame) {
+    auto renderer = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(renderer);
+    const Scene scene = gridScene(Light::Type::Directional);
+    const size_t passes = renderer->effect().techniques[0].passes.size();
+    ASSERT_EQ(renderer->effect().techniques[0].name, "main");
+    const auto render = [&](bool reuse) {
+        FrameOptions options;
+        options.width = 320;
+        options.height = 240;
+        options.technique = "main";
+        options.reuseTargets = reuse;
+        fx::DiagnosticList diagnostics;
+        Frame frame;
+        EXPECT_TRUE(renderer->render(scene, options, diagnostics, &frame.stats)) << diagnostics.str();
+        frame.image = renderer->readFrame();
+        return frame;
+    };
+    const Frame first = render(true);
+    const Frame steady = render(true);
+    EXPECT_EQ(findPass(steady.stats, "RenderShadowMap")->leftOut, "cached");
+    for (int i = 0; i < 2; ++i) {
+        const Frame full = render(false);
+        EXPECT_EQ(full.stats.passesRun, static_cast<int>(passes));
+        EXPECT_EQ(full.stats.passesLeftOut, 0);
+        EXPECT_GT(full.stats.draws, steady.stats.draws);
+        EXPECT_GT(full.stats.culled, 0) << "culling is not reuse: it stays";
+        EXPECT_EQ(differingPixels(full.image, steady.image), 0u);
+        EXPECT_TRUE(notConstant(full.image));
+    }
+    // A full-cost frame leaves the map it drew behind: the next frame with reuse keeps it.
+    EXPECT_EQ(findPass(render(true).stats, "RenderShadowMap")->leftOut, "cached");
+    EXPECT_EQ(differingPixels(first.image, steady.image), 0u);
+}
+
 // A pass that renders into a target nobody samples, and a clear of a second, unread target.
 constexpr const char* kDeadPassEffect = R"(
 float4x4 WorldViewProjection : WorldViewProjection;

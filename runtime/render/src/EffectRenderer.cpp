@@ -216,9 +216,11 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
             needed.insert(op.reads.begin(), op.reads.end());
         }
         mImpl->ensureFrameResources(options.width, options.height, options.leaveOut ? &needed : nullptr);
+        // Without reuse the plan sees no history: nothing matches, as after a moved light.
+        const std::map<int, TargetHistory> noHistory;
         plan.decide(
-            mImpl->targetHistory, [this](int resource) { return mImpl->targetIdentity(resource); },
-            options.leaveOut);
+            options.reuseTargets ? mImpl->targetHistory : noHistory,
+            [this](int resource) { return mImpl->targetIdentity(resource); }, options.leaveOut);
     }
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,

@@ -35,6 +35,10 @@ struct FrameOptions {
     // camera sees), passes whose writes nobody reads, light passes whose targets would come out as last
     // frame's, per-frame semantics bound per pass instead of per draw. The image is the same either way.
     bool leaveOut = true;
+    // With leaveOut: keep render targets whose contents would come out as last frame's (leave-out's cached
+    // passes). False redraws them as if the light or the objects had moved: every pass runs, culling and
+    // dead-pass removal still apply. What `bench` times as a technique's full cost.
+    bool reuseTargets = true;
     // Count the fragments each pass writes (GL_SAMPLES_PASSED queries) into PassStats::texelsWritten;
     // clears count their targets' texels either way.
     bool countTexels = false;
