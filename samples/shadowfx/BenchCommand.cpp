@@ -63,6 +63,10 @@ const char* const kBenchUsage =
     "                        warm-up and timed frame, so that view-dependent shadow maps are redrawn every\n"
     "                        frame as in a walk-through (default 0: a still camera, whose maps leave-out\n"
     "                        reuses); errors are scored at the scene's own camera\n"
+    "  --time full|steady    the time error_vs_time.png plots (default full): full = every pass drawn\n"
+    "                        each frame, nothing reused (what a moving light or moving objects cost);\n"
+    "                        steady = leave-out reusing unchanged shadow maps (a static scene); both are\n"
+    "                        timed and reported either way\n"
     "  --leave-out LIST      on, off or on,off: leave-out (culling, dead and cached passes) as a run\n"
     "                        dimension; on,off times both in one run (default on)\n"
     "  --no-leave-out        the same as --leave-out off\n"
@@ -75,7 +79,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
-constexpr int kSchemaVersion = 1;
+constexpr int kSchemaVersion = 2;
 
 // [SECTION] Diagnostics
 
@@ -127,6 +131,101 @@ std::string safeName(std::string text) {
     return text;
 }
 
+// The timed frames of one run in one reuse mode (FrameOptions::reuseTargets), and one more frame like them,
+// untimed, that counts their work (occlusion queries would perturb the timing).
+struct TimedFrames {
+    double firstFrameMs = 0.0;
+    std::vector<double> frameMs, gpuMs, script, binding, preshader, gl, overhead;
+    std::vector<std::string> passNames;
+    std::vector<std::vector<double>> passGpu, passCpu;
+    std::vector<int> passDraws;
+    runtime::FrameStats counted;
+};
+
+// Renders `warmup` + `frames` frames of `scene` (the camera turned `cameraOrbit` degrees more before each)
+// and the counting frame. False once a frame fails; the sink says why.
+bool timeFrames(runtime::EffectRenderer& renderer, const runtime::Scene& scene,
+                const runtime::FrameOptions& options, int warmup, int frames, float cameraOrbit,
+                runtime::DiagnosticLog& sink, TimedFrames& out) {
+    // One scene edited in place (the renderer's caches see only the camera move).
+    runtime::Scene moving = scene;
+    const auto orbitTo = [&](int step) {
+        const glm::vec3 offset = scene.camera.position - scene.camera.target;
+        const glm::mat4 turn =
+            glm::rotate(glm::mat4(1.0f), glm::radians(cameraOrbit * step), glm::vec3(0.0f, 1.0f, 0.0f));
+        moving.camera.position = scene.camera.target + glm::vec3(turn * glm::vec4(offset, 0.0f));
+    };
+    for (int frame = 0; frame < warmup + frames; ++frame) {
+        runtime::FrameStats stats;
+        if (cameraOrbit != 0.0f) orbitTo(frame + 1);
+        const auto start = Clock::now();
+        // With timePasses, render() returns once the GPU has finished the frame.
+        if (!renderer.render(moving, options, sink, &stats) || sink.errors() > 0) return false;
+        const double wall = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (frame == 0) out.firstFrameMs = wall;
+        if (frame < warmup) continue;
+        out.frameMs.push_back(wall);
+        double gpu = 0.0;
+        if (out.passNames.empty()) {
+            for (const runtime::PassTiming& pass : stats.passTimings) {
+                out.passNames.push_back(pass.pass);
+                out.passDraws.push_back(pass.draws);
+            }
+            out.passGpu.resize(out.passNames.size());
+            out.passCpu.resize(out.passNames.size());
+        }
+        for (size_t p = 0; p < stats.passTimings.size() && p < out.passNames.size(); ++p) {
+            out.passGpu[p].push_back(ms(stats.passTimings[p].gpuNs));
+            out.passCpu[p].push_back(ms(stats.passTimings[p].cpuNs));
+            gpu += ms(stats.passTimings[p].gpuNs);
+        }
+        out.gpuMs.push_back(gpu);
+        out.script.push_back(ms(stats.cpu.scriptNs()));
+        out.binding.push_back(ms(stats.cpu.bindingNs));
+        out.preshader.push_back(ms(stats.cpu.preshaderNs));
+        out.gl.push_back(ms(stats.cpu.glNs));
+        out.overhead.push_back(ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
+    }
+    runtime::FrameOptions countOptions = options;
+    countOptions.timePasses = false;
+    countOptions.countTexels = true;
+    if (cameraOrbit != 0.0f) orbitTo(warmup + frames + 1);
+    return renderer.render(moving, countOptions, sink, &out.counted) && sink.errors() == 0;
+}
+
+// frame_time_ms, gpu_time_ms, work, passes and runtime_cpu_ms of one set of timed frames.
+Json timingJson(const TimedFrames& t) {
+    const runtime::FrameStats& counted = t.counted;
+    Json passes = Json::array();
+    for (size_t p = 0; p < t.passNames.size(); ++p) {
+        Json pass{{"name", t.passNames[p]},
+                  {"gpu_ms", spreadOf(t.passGpu[p]).median},
+                  {"cpu_ms", spreadOf(t.passCpu[p]).median},
+                  {"draws", t.passDraws[p]}};
+        if (p < counted.passes.size()) {
+            const runtime::PassStats& work = counted.passes[p];
+            pass["left_out"] = work.leftOut;
+            pass["culled"] = work.culled;
+            pass["triangles"] = work.triangles;
+            pass["texels_written"] = work.texelsWritten;
+        }
+        passes.push_back(std::move(pass));
+    }
+    return Json{{"frame_time_ms", toJson(spreadOf(t.frameMs))},
+                {"gpu_time_ms", toJson(spreadOf(t.gpuMs))},
+                {"work", Json{{"passes_run", counted.passesRun},
+                              {"passes_left_out", counted.passesLeftOut},
+                              {"draws", counted.draws},
+                              {"culled", counted.culled},
+                              {"triangles", counted.triangles}}},
+                {"passes", passes},
+                {"runtime_cpu_ms", Json{{"script", spreadOf(t.script).median},
+                                        {"binding", spreadOf(t.binding).median},
+                                        {"preshader", spreadOf(t.preshader).median},
+                                        {"gl", spreadOf(t.gl).median},
+                                        {"overhead", spreadOf(t.overhead).median}}}};
+}
+
 class Progress {
 public:
     explicit Progress(size_t total) : mTotal(total), mTty(isatty(fileno(stderr))) {}
@@ -173,14 +272,16 @@ std::vector<size_t> paretoFront(const std::vector<std::pair<double, double>>& po
 
 // Writes the data and script next to the PNG (so the plot can be redrawn or restyled) and runs gnuplot.
 // Returns a note for the report: where the plot is, or why there is none.
-std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& runs) {
+// `fullCost`: the x axis is the full cost (every pass drawn), else the steady state.
+std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& runs, bool fullCost) {
     std::vector<std::pair<double, double>> points;
     std::vector<std::string> labels;
     std::vector<std::string> sceneOfRun;
     std::map<std::string, int> sceneIndex;
     for (const Json& run : runs) {
         if (!run["error"].is_object()) continue;
-        points.emplace_back(run["frame_time_ms"]["median"].get<double>(),
+        const Json& time = fullCost ? run["full_cost"]["frame_time_ms"] : run["frame_time_ms"];
+        points.emplace_back(time["median"].get<double>(),
                             run["error"]["misclassified_percent"].get<double>());
         labels.push_back(run["effect_name"].get<std::string>() + "/" + run["technique"].get<std::string>() +
                          " " + std::to_string(run["map_size"].get<int>()));
@@ -210,7 +311,9 @@ std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& run
                   "set output 'error_vs_time.png'\n"
                   "set title 'Shadow error against frame time (one marker per effect/technique/scene/map "
                   "size)'\n"
-                  "set xlabel 'median frame time (ms, log scale)'\n"
+               << "set xlabel 'median frame time, "
+               << (fullCost ? "full cost: every pass drawn" : "steady state: unchanged maps reused")
+               << " (ms, log scale)'\n"
                   "set ylabel 'misclassified receiver pixels (%)'\n"
                   "set grid\n"
                   "set key outside right top\n"
@@ -259,6 +362,12 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
           "misclassified = false shadow + false light. Texel footprint: screen pixels covered by one "
           "shadow-map "
           "texel along its longest direction (Lloyd et al.), > 1 is undersampling.\n\n";
+    const bool fullAxis = results["config"]["time_axis"] == "full";
+    md << "Time: **full cost** = every pass drawn each frame, leave-out's reuse of unchanged shadow maps off "
+          "(what a moving light or moving objects cost: compare techniques by this); **steady** = the same "
+          "frames with that reuse (a static light and scene: with leave-out on, `main`-like techniques "
+          "then pay for the scene pass alone). The plot's axis is the "
+       << (fullAxis ? "full cost" : "steady-state time (`--time steady`)") << ".\n\n";
     if (plotNote.empty()) {
         md << "![error against frame time](error_vs_time.png)\n\n";
     } else {
@@ -267,11 +376,13 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     md << "## Runs\n\n";
     md << "| scene | effect | technique | map | misclassified % | false shadow % | false light % | MAE | p95 "
           "| penumbra MAE | "
-          "frame ms (median [min–max]) | GPU ms | runtime CPU ms | texel footprint max / p95 / mean | errors "
-          "|\n";
-    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
+          "full ms (median [min–max]) | steady ms | full GPU ms | full runtime CPU ms | texel footprint max "
+          "/ "
+          "p95 / mean | errors |\n";
+    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---|---|\n";
     for (const Json& run : results["runs"]) {
-        const Json& frame = run["frame_time_ms"];
+        const Json& full = run["full_cost"];
+        const Json& frame = full["frame_time_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | ";
         if (run["error"].is_object()) {
@@ -290,19 +401,20 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         md << runtime::formatFixed(frame["median"].get<double>(), 2) << " ["
            << runtime::formatFixed(frame["min"].get<double>(), 2) << "–"
            << runtime::formatFixed(frame["max"].get<double>(), 2) << "] | "
-           << runtime::formatFixed(run["gpu_time_ms"]["median"].get<double>(), 2) << " | "
-           << runtime::formatFixed(run["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
+           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
+           << runtime::formatFixed(full["gpu_time_ms"]["median"].get<double>(), 2) << " | "
+           << runtime::formatFixed(full["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
            << runtime::formatFixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
            << runtime::formatFixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
            << runtime::formatFixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
         if (run["error_image"].is_string()) md << "[png](" << run["error_image"].get<std::string>() << ")";
         md << " |\n";
     }
-    md << "\n## Passes (median per frame)\n\n";
+    md << "\n## Passes (full cost, median per frame)\n\n";
     md << "| scene | effect | technique | map | pass | GPU ms | CPU ms | draws "
           "|\n|---|---|---|---:|---|---:|---:|---:|\n";
     for (const Json& run : results["runs"]) {
-        for (const Json& pass : run["passes"]) {
+        for (const Json& pass : run["full_cost"]["passes"]) {
             md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
                << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
                << pass["name"].get<std::string>() << " | "
@@ -312,14 +424,16 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         }
     }
     md << "\n## Leave-out\n\n"
-          "Work of one frame like the timed ones (counted in an extra frame): passes run / left out (dead or "
-          "cached), draws, objects culled, triangles. First frame = the first warm-up frame (nothing "
+          "Work of one steady-state frame (counted in an extra frame): passes run / left out (dead or "
+          "cached), draws, objects culled, triangles; full ms = the full cost's median. First frame = the "
+          "first warm-up frame (nothing "
           "cached). "
           "`speed-up` = median frame time without leave-out / with, where both were run.\n\n";
-    md << "| scene | effect | technique | map | leave-out | frame ms (median) | first frame ms | passes run "
+    md << "| scene | effect | technique | map | leave-out | full ms | steady ms | first frame ms | passes "
+          "run "
           "/ "
           "left out | draws | culled | triangles | speed-up |\n"
-          "|---|---|---|---:|---|---:|---:|---|---:|---:|---:|---:|\n";
+          "|---|---|---|---:|---|---:|---:|---:|---|---:|---:|---:|---:|\n";
     for (const Json& run : results["runs"]) {
         const Json& work = run["work"];
         std::string speedUp;
@@ -338,20 +452,21 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
            << (run["leave_out"].get<bool>() ? "on" : "off") << " | "
+           << runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) << " | "
            << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
            << runtime::formatFixed(run["first_frame_ms"].get<double>(), 2) << " | "
            << work["passes_run"].get<int>() << " / " << work["passes_left_out"].get<int>() << " | "
            << work["draws"].get<int>() << " | " << work["culled"].get<int>() << " | "
            << work["triangles"].get<uint64_t>() << " | " << speedUp << " |\n";
     }
-    md << "\n## Runtime CPU time (median per frame, ms)\n\n"
+    md << "\n## Runtime CPU time (full cost, median per frame, ms)\n\n"
           "Script = interpreting the SAS scripts and the rest of the frame executor; binding = semantics and "
           "uniforms; preshader = pass arguments and state expressions; GL = inside the driver's draw/clear "
           "calls.\n\n";
     md << "| scene | effect | technique | map | script | binding | preshader | overhead (sum) | GL |\n"
           "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const Json& run : results["runs"]) {
-        const Json& c = run["runtime_cpu_ms"];
+        const Json& c = run["full_cost"]["runtime_cpu_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
            << runtime::formatFixed(c["script"].get<double>(), 3) << " | "
@@ -408,6 +523,11 @@ int benchCommand(const Arguments& args) {
         leaveOutModes.push_back(mode == "on");
     }
     if (leaveOutModes.empty()) leaveOutModes.push_back(true);
+    const std::string timeAxis = args.value("--time", "full");
+    if (timeAxis != "full" && timeAxis != "steady") {
+        std::cerr << "shadowfx bench: --time expects full or steady, got '" << timeAxis << "'\n";
+        return 2;
+    }
     const int frames = args.intValue("--frames", 10);
     const int warmup = args.intValue("--warmup", 2);
     const int width = args.intValue("--width", 640);
@@ -629,71 +749,20 @@ int benchCommand(const Arguments& args) {
                         options.technique = technique.name;
                         options.timePasses = true;
                         options.leaveOut = leaveOut;
-                        double firstFrameMs = 0.0;
-
-                        std::vector<double> frameMs, gpuMs, script, binding, preshader, gl, overhead;
-                        std::vector<std::vector<double>> passGpu, passCpu;
-                        std::vector<std::string> passNames;
-                        std::vector<int> passDraws;
-                        // One scene edited in place (the renderer's caches see only the camera move).
-                        runtime::Scene moving = t.scene;
-                        const auto orbitTo = [&](int step) {
-                            const glm::vec3 offset = t.scene.camera.position - t.scene.camera.target;
-                            const glm::mat4 turn =
-                                glm::rotate(glm::mat4(1.0f), glm::radians(cameraOrbit * step),
-                                            glm::vec3(0.0f, 1.0f, 0.0f));
-                            moving.camera.position =
-                                t.scene.camera.target + glm::vec3(turn * glm::vec4(offset, 0.0f));
-                        };
-                        for (int frame = 0; frame < warmup + frames; ++frame) {
-                            runtime::FrameStats stats;
-                            if (cameraOrbit != 0.0f) orbitTo(frame + 1);
-                            const auto start = Clock::now();
-                            // With timePasses, render() returns once the GPU has finished the frame.
-                            if (!timed->render(moving, options, sink, &stats) || sink.errors() > 0) {
-                                progress.end();
-                                return 1;
-                            }
-                            const double wall =
-                                std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-                            if (frame == 0) firstFrameMs = wall;
-                            if (frame < warmup) continue;
-                            frameMs.push_back(wall);
-                            double gpu = 0.0;
-                            if (passNames.empty()) {
-                                for (const runtime::PassTiming& pass : stats.passTimings) {
-                                    passNames.push_back(pass.pass);
-                                    passDraws.push_back(pass.draws);
-                                }
-                                passGpu.resize(passNames.size());
-                                passCpu.resize(passNames.size());
-                            }
-                            for (size_t p = 0; p < stats.passTimings.size() && p < passNames.size(); ++p) {
-                                passGpu[p].push_back(ms(stats.passTimings[p].gpuNs));
-                                passCpu[p].push_back(ms(stats.passTimings[p].cpuNs));
-                                gpu += ms(stats.passTimings[p].gpuNs);
-                            }
-                            gpuMs.push_back(gpu);
-                            script.push_back(ms(stats.cpu.scriptNs()));
-                            binding.push_back(ms(stats.cpu.bindingNs));
-                            preshader.push_back(ms(stats.cpu.preshaderNs));
-                            gl.push_back(ms(stats.cpu.glNs));
-                            overhead.push_back(
-                                ms(stats.cpu.scriptNs() + stats.cpu.bindingNs + stats.cpu.preshaderNs));
+                        // Full cost first: its first frame finds nothing cached. Without leave-out nothing
+                        // is reused either way, and the one set of frames is both.
+                        runtime::FrameOptions fullOptions = options;
+                        fullOptions.reuseTargets = false;
+                        TimedFrames full, steady;
+                        const bool ok = timeFrames(*timed, t.scene, fullOptions, warmup, frames, cameraOrbit,
+                                                   sink, full) &&
+                                        (!leaveOut || timeFrames(*timed, t.scene, options, warmup, frames,
+                                                                 cameraOrbit, sink, steady));
+                        if (!ok) {
+                            progress.end();
+                            return 1;
                         }
-                        // One more frame, untimed, counts what a frame like the timed ones writes (occlusion
-                        // queries would perturb the timing): one more orbit step when the camera moves.
-                        runtime::FrameStats counted;
-                        {
-                            runtime::FrameOptions countOptions = options;
-                            countOptions.timePasses = false;
-                            countOptions.countTexels = true;
-                            if (cameraOrbit != 0.0f) orbitTo(warmup + frames + 1);
-                            if (!timed->render(moving, countOptions, sink, &counted) || sink.errors() > 0) {
-                                progress.end();
-                                return 1;
-                            }
-                        }
+                        if (!leaveOut) steady = full;
                         // The shaded frame the error image is drawn over: at the scene's own camera.
                         if (cameraOrbit != 0.0f) {
                             runtime::FrameOptions stillOptions = options;
@@ -716,37 +785,13 @@ int benchCommand(const Arguments& args) {
                                     {"gl_renderer", glRenderer},
                                     {"frames", frames},
                                     {"warmup_frames", warmup},
-                                    {"frame_time_ms", toJson(spreadOf(frameMs))},
-                                    {"gpu_time_ms", toJson(spreadOf(gpuMs))},
                                     {"leave_out", leaveOut},
                                     {"camera_orbit_degrees_per_frame", cameraOrbit},
-                                    {"first_frame_ms", firstFrameMs},
-                                    {"work", Json{{"passes_run", counted.passesRun},
-                                                  {"passes_left_out", counted.passesLeftOut},
-                                                  {"draws", counted.draws},
-                                                  {"culled", counted.culled},
-                                                  {"triangles", counted.triangles}}}};
-                        Json passes = Json::array();
-                        for (size_t p = 0; p < passNames.size(); ++p) {
-                            Json pass{{"name", passNames[p]},
-                                      {"gpu_ms", spreadOf(passGpu[p]).median},
-                                      {"cpu_ms", spreadOf(passCpu[p]).median},
-                                      {"draws", passDraws[p]}};
-                            if (p < counted.passes.size()) {
-                                const runtime::PassStats& work = counted.passes[p];
-                                pass["left_out"] = work.leftOut;
-                                pass["culled"] = work.culled;
-                                pass["triangles"] = work.triangles;
-                                pass["texels_written"] = work.texelsWritten;
-                            }
-                            passes.push_back(std::move(pass));
-                        }
-                        record["passes"] = passes;
-                        record["runtime_cpu_ms"] = Json{{"script", spreadOf(script).median},
-                                                        {"binding", spreadOf(binding).median},
-                                                        {"preshader", spreadOf(preshader).median},
-                                                        {"gl", spreadOf(gl).median},
-                                                        {"overhead", spreadOf(overhead).median}};
+                                    {"first_frame_ms", full.firstFrameMs}};
+                        // The steady state keeps the fields' names of schema 1; the full cost sits beside.
+                        const Json steadyJson = timingJson(steady);
+                        for (const auto& [key, value] : steadyJson.items()) record[key] = value;
+                        record["full_cost"] = timingJson(full);
                         record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
                                                   {"mean_texel_footprint_px", aliasing.meanFootprint},
                                                   {"p95_texel_footprint_px", aliasing.p95Footprint},
@@ -823,7 +868,8 @@ int benchCommand(const Arguments& args) {
                                  {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
                                  {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
                                  {"camera_orbit_degrees_per_frame", cameraOrbit},
-                                 {"leave_out", leaveOutModes}}},
+                                 {"leave_out", leaveOutModes},
+                                 {"time_axis", timeAxis}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};
     {
@@ -834,7 +880,7 @@ int benchCommand(const Arguments& args) {
             return 1;
         }
     }
-    const std::string plotNote = plotErrorVsTime(outDir, runs);
+    const std::string plotNote = plotErrorVsTime(outDir, runs, timeAxis == "full");
     if (!plotNote.empty()) std::cerr << "bench: " << plotNote << "\n";
     writeReport(outDir / "report.md", results, plotNote);
     std::cout << (outDir / "report.md").string() << "\n";

@@ -232,7 +232,7 @@ const shadowfx::cli::Command kCommands[] = {
      {"--out"},
      {"--effects", "--scenes", "--map-sizes", "--techniques", "--frames", "--warmup", "--width", "--height",
       "--area-samples", "--area-radius", "--light-angle-to-view", "--camera-orbit", "--backend", "--set",
-      "-I", "-D", "--leave-out"},
+      "-I", "-D", "--leave-out", "--time"},
      {"--no-leave-out"},
      shadowfx::cli::benchCommand,
      -1},

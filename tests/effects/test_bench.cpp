@@ -102,7 +102,8 @@ TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
     const Json results = readJson(out / "results.json");
     const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
     EXPECT_TRUE(validate(results, schema, schema, "$"));
-    EXPECT_EQ(results["schema_version"], 1);
+    EXPECT_EQ(results["schema_version"], 2);
+    EXPECT_EQ(results["config"]["time_axis"], "full");
 
     // thesis_fxcomposer has techniques main and hardware: 2 techniques x 2 sizes x 1 scene.
     ASSERT_EQ(results["runs"].size(), 4u);
@@ -114,6 +115,17 @@ TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
         EXPECT_GT(run["frame_time_ms"]["median"].get<double>(), 0.0);
         EXPECT_FALSE(run["passes"].empty());
         EXPECT_GT(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 0.0);
+        // The full cost draws every pass of the technique; the steady state (a static scene) reuses the
+        // map, so it draws fewer of them and never more draws.
+        const Json& full = run["full_cost"];
+        const int passes = run["technique"] == "main" ? 3 : 2;
+        EXPECT_EQ(full["work"]["passes_run"].get<int>(), passes) << run.dump(2);
+        EXPECT_EQ(full["work"]["passes_left_out"].get<int>(), 0);
+        EXPECT_EQ(full["passes"].size(), static_cast<size_t>(passes));
+        EXPECT_GE(run["work"]["passes_left_out"].get<int>(), 1);
+        EXPECT_EQ(run["work"]["passes_run"].get<int>() + run["work"]["passes_left_out"].get<int>(), passes);
+        EXPECT_GT(full["work"]["draws"].get<int>(), run["work"]["draws"].get<int>());
+        EXPECT_GT(full["frame_time_ms"]["median"].get<double>(), 0.0);
         ASSERT_TRUE(run["error_image"].is_string());
         EXPECT_TRUE(std::filesystem::exists(out / run["error_image"].get<std::string>()));
     }
@@ -138,6 +150,11 @@ TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
                 output),
         1);
     EXPECT_NE(output.find("no-such-scene"), std::string::npos) << output;
+    output.clear();
+    EXPECT_EQ(
+        runTool("bench --effects effects/thesis_fxcomposer.fx --time fastest --out " + out.string(), output),
+        2);
+    EXPECT_NE(output.find("--time"), std::string::npos) << output;
 }
 
 // --light-angle-to-view turns the light, and the footprint is scored with each effect's own light fit: the
