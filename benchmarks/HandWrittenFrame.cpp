@@ -1,6 +1,7 @@
 // HandWrittenFrame: see HandWrittenFrame.h.
 //
 // [SECTION] Uniform blocks  which member holds what, written the way SPIRV-Cross laid the block out
+// [SECTION] Uniform ring    a persistently mapped buffer per pass, a region per frame in flight
 // [SECTION] Set-up          programs, meshes, targets, samplers, the BVH (once)
 // [SECTION] Frame           light fit, culled lists, three passes
 #include "HandWrittenFrame.h"
@@ -12,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
 
@@ -61,11 +63,15 @@ struct HandWrittenFrame::Pass {
     std::vector<uint32_t> vaos;  // per mesh
     std::vector<std::pair<int, glm::vec4>> defaults;  // attributes a mesh may lack: (location, value)
     std::vector<std::pair<int, bool>> samplers;       // (unit, true = the shadow map, false = the noise)
+    // Every draw's blocks go straight into a persistently mapped buffer with a region per frame in
+    // flight; a fence per region says when the GPU no longer reads what it held.
+    static constexpr int kRegions = 3;
     uint32_t buffer = 0;
-    std::vector<uint8_t> staging;
+    uint8_t* mapped = nullptr;
+    size_t regionSize = 0;
+    std::array<GLsync, kRegions> fences{};
+    int region = 0;
 };
-
-namespace {}  // namespace
 
 struct HandWrittenFrame::FrameValues {
     glm::mat4 view{1.0f}, projection{1.0f}, viewInverse{1.0f};
@@ -244,6 +250,40 @@ std::optional<size_t> findParameter(const fx::CompiledEffect& effect, const std:
 
 }  // namespace
 
+namespace {
+
+// [SECTION] Uniform ring
+
+void releaseRing(HandWrittenFrame::Pass& pass) {
+    for (GLsync& fence : pass.fences) {
+        if (fence) gl::DeleteSync(fence);
+        fence = nullptr;
+    }
+    if (!pass.buffer) return;
+    gl::BindBuffer(GL_UNIFORM_BUFFER, pass.buffer);
+    gl::UnmapBuffer(GL_UNIFORM_BUFFER);
+    gl::DeleteBuffers(1, &pass.buffer);
+    pass.buffer = 0;
+    pass.mapped = nullptr;
+}
+
+// Makes each region hold at least `bytes` (with room to grow: reallocated rarely, after a glFinish).
+void reserveRing(HandWrittenFrame::Pass& pass, size_t bytes) {
+    if (bytes <= pass.regionSize && pass.mapped) return;
+    gl::Finish();
+    releaseRing(pass);
+    pass.regionSize = std::max<size_t>(bytes + bytes / 2, 64 * 1024);
+    const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    const auto capacity = static_cast<GLsizeiptr>(pass.regionSize * HandWrittenFrame::Pass::kRegions);
+    gl::GenBuffers(1, &pass.buffer);
+    gl::BindBuffer(GL_UNIFORM_BUFFER, pass.buffer);
+    gl::BufferStorage(GL_UNIFORM_BUFFER, capacity, nullptr, flags);
+    pass.mapped = static_cast<uint8_t*>(gl::MapBufferRange(GL_UNIFORM_BUFFER, 0, capacity, flags));
+    pass.region = 0;
+}
+
+}  // namespace
+
 // [SECTION] Set-up
 
 std::unique_ptr<HandWrittenFrame> HandWrittenFrame::create(const fx::CompiledEffect& effect,
@@ -401,7 +441,6 @@ bool HandWrittenFrame::setUp(const fx::CompiledEffect& effect, const runtime::Sc
             pass->vaos.push_back(vao);
         }
         gl::BindVertexArray(0);
-        gl::GenBuffers(1, &pass->buffer);
         return pass;
     };
     mShadowPass = makePass(*shadow, true);
@@ -438,7 +477,7 @@ HandWrittenFrame::~HandWrittenFrame() {
         if (!pass) continue;
         gl::DeleteProgram(pass->program);
         gl::DeleteVertexArrays(static_cast<GLsizei>(pass->vaos.size()), pass->vaos.data());
-        gl::DeleteBuffers(1, &pass->buffer);
+        releaseRing(*pass);
     }
     for (const MeshBuffers& mesh : mMeshes) {
         const uint32_t buffers[] = {mesh.positions, mesh.normals, mesh.texcoords, mesh.indices};
@@ -523,7 +562,7 @@ void HandWrittenFrame::render(const runtime::Scene& scene) {
     gl::BindVertexArray(0);
 }
 
-// Every draw's blocks go into one buffer, uploaded once; each draw binds its ranges.
+// Every draw's blocks are written into this frame's region of the pass's ring; each draw binds its ranges.
 void HandWrittenFrame::drawPass(Pass& pass, const std::vector<uint32_t>& objects, const FrameValues& frame) {
     std::vector<size_t> stride(pass.blocks.size()), start(pass.blocks.size());
     size_t total = 0;
@@ -533,12 +572,20 @@ void HandWrittenFrame::drawPass(Pass& pass, const std::vector<uint32_t>& objects
         start[b] = total;
         total += stride[b] * objects.size();
     }
-    pass.staging.resize(total);
+    reserveRing(pass, total);
+    GLsync& fence = pass.fences[static_cast<size_t>(pass.region)];
+    if (fence) {
+        while (gl::ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+        }
+        gl::DeleteSync(fence);
+        fence = nullptr;
+    }
+    const size_t base = static_cast<size_t>(pass.region) * pass.regionSize;
     for (size_t i = 0; i < objects.size(); ++i) {
         const runtime::SceneObject& object = *mObjects[objects[i]];
         for (size_t b = 0; b < pass.blocks.size(); ++b) {
             const Block& block = pass.blocks[b];
-            uint8_t* data = pass.staging.data() + start[b] + i * stride[b];
+            uint8_t* data = pass.mapped + base + start[b] + i * stride[b];
             std::memcpy(data, block.base.data(), block.size);
             for (const Member& member : block.perDraw) writeObjectMember(data, member, frame, object);
         }
@@ -551,16 +598,16 @@ void HandWrittenFrame::drawPass(Pass& pass, const std::vector<uint32_t>& objects
     }
     for (const auto& [location, value] : pass.defaults)
         gl::VertexAttrib4fv(static_cast<GLuint>(location), &value.x);
-    gl::BindBuffer(GL_UNIFORM_BUFFER, pass.buffer);
-    gl::BufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(total), pass.staging.data(), GL_STREAM_DRAW);
     for (size_t i = 0; i < objects.size(); ++i) {
         for (size_t b = 0; b < pass.blocks.size(); ++b)
             gl::BindBufferRange(GL_UNIFORM_BUFFER, static_cast<GLuint>(pass.blocks[b].binding), pass.buffer,
-                                static_cast<GLintptr>(start[b] + i * stride[b]), pass.blocks[b].size);
+                                static_cast<GLintptr>(base + start[b] + i * stride[b]), pass.blocks[b].size);
         const size_t mesh = mObjectMesh[objects[i]];
         gl::BindVertexArray(pass.vaos[mesh]);
         gl::DrawElements(GL_TRIANGLES, mMeshes[mesh].indexCount, GL_UNSIGNED_INT, nullptr);
     }
+    fence = gl::FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    pass.region = (pass.region + 1) % Pass::kRegions;
 }
 
 runtime::FrameImage HandWrittenFrame::readFrame() const {

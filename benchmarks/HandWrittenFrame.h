@@ -4,8 +4,9 @@
 // shadow test. It takes the GLSL, block layouts and sampler units of the compiled effect (the text
 // `shadowfx compile` prints), so both draw the same shaders; everything else is written out by hand, the
 // way a careful GL programmer would: one VAO per mesh and pass set up once, the culled lists from the same
-// BVH and receiver region as the runtime's leave-out, per-object uniform blocks written into one buffer
-// per pass with a single upload and bound by range per draw, states set once per pass.
+// BVH and receiver region as the runtime's leave-out, every draw's uniform blocks written straight into
+// a persistently mapped buffer (a region per frame in flight) and bound by range, states set once per
+// pass.
 //
 // Needs a current GL 4.5 context for its whole life. Knows the thesis effect's parameters by name: a
 // changed effect fails create() with the member it does not know, rather than drawing something else.
