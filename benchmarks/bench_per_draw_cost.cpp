@@ -12,8 +12,8 @@
 //   draws, hand_draws             draws per frame (they must agree).
 //
 //   build/benchmarks/bench_per_draw_cost [--width=W --height=H --map-size=N --frames=N]
-//   (default 512x512, a 2048² map, 10 frames per side; --width=128 --height=128 --map-size=512 for a
-//   quick run on llvmpipe)
+//   [--only=shadowfx|hand] (default 512x512, a 2048² map, 10 frames per side; --width=128 --height=128
+//   --map-size=512 for a quick run on llvmpipe; --only renders one side, for perf record)
 #include "HandWrittenFrame.h"
 
 #include <fx/EffectCompiler.h>
@@ -44,6 +44,7 @@ struct Settings {
     int height = 512;
     int mapSize = 2048;
     int frames = 10;
+    std::string only;  // "shadowfx" or "hand": render that side alone (for a profiler), no ratios
 } gSettings;
 
 runtime::GlContext& context() {
@@ -123,6 +124,13 @@ void PerDrawCost(benchmark::State& state, const std::string& sceneName) {
     bool shadowfxFirst = true;
     for (auto _ : state) {
         Sample ours, theirs;
+        if (!gSettings.only.empty()) {
+            const Sample alone = gSettings.only == "hand"
+                                     ? timeFrame([&] { hand->render(*scene); })
+                                     : timeFrame([&] { renderer->render(*scene, options, diagnostics); });
+            state.SetIterationTime(alone.wallMs * 1e-3);
+            continue;
+        }
         // Alternate the order so that neither always runs right after the other's GPU work.
         if (shadowfxFirst) {
             ours = timeFrame([&] { renderer->render(*scene, options, diagnostics); });
@@ -172,6 +180,10 @@ void readSettings(int& argc, char** argv) {
             into = std::max(1, std::atoi(argv[i] + length + 1));
             return true;
         };
+        if (std::strncmp(argv[i], "--only=", 7) == 0) {
+            gSettings.only = argv[i] + 7;
+            continue;
+        }
         if (value("--width", gSettings.width) || value("--height", gSettings.height) ||
             value("--map-size", gSettings.mapSize) || value("--frames", gSettings.frames))
             continue;

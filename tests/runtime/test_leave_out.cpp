@@ -326,6 +326,24 @@ TEST_P(ShadowMapCache, ReusedOnlyWhileUnchanged) {
 
 INSTANTIATE_TEST_SUITE_P(ThesisEffect, ShadowMapCache, ::testing::Values("main", "hardware"));
 
+// The thesis effect's map pass binds a depth target with ZEnable = false (BlendOp=min keeps the nearest
+// depth): its draws neither test nor write depth, so the clear of that target is dead and the target is
+// never allocated; the hardware technique, which tests depth, keeps both.
+TEST(DeadWork, DepthTargetWithoutDepthTestIsNotCleared) {
+    auto renderer = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(renderer);
+    const Scene scene = gridScene(Light::Type::Directional);
+    const Frame main = renderFrame(*renderer, scene, "main", true);
+    ASSERT_TRUE(findPass(main.stats, "ClearShadowMap"));
+    EXPECT_EQ(findPass(main.stats, "ClearShadowMap")->clears, 1);
+    EXPECT_FALSE(renderer->readTarget("ShadDepthTarget", nullptr, nullptr, nullptr));
+    EXPECT_EQ(differingPixels(main.image, renderFrame(*renderer, scene, "main", false).image), 0u);
+    EXPECT_TRUE(notConstant(main.image));
+
+    renderFrame(*renderer, scene, "hardware", true);
+    EXPECT_TRUE(renderer->readTarget("ShadDepthTarget", nullptr, nullptr, nullptr));
+}
+
 // FrameOptions::reuseTargets off (what `bench` times as a technique's full cost): the same static frame
 // again redraws the map, so every pass of the technique runs, culling still applies, and the image is the
 // one reuse gives.

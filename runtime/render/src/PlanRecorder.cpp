@@ -121,10 +121,14 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         if (states.get(kColorWrites[slot]) != 0.0) op.writes.push_back(mColors[slot]);
     }
     if (mDepth != kNone) {
-        op.reads.push_back(mDepth);
-        const bool depthWrites = states.get(fx::RenderStateId::ZEnable) != 0.0 &&
-                                 states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
-        if (depthWrites || states.get(fx::RenderStateId::StencilEnable) != 0.0) op.writes.push_back(mDepth);
+        // Without the depth and stencil tests a draw neither reads nor writes its depth target: the thesis
+        // effect's BlendOp=min map pass binds one with ZEnable = false, and clearing it every frame for
+        // nobody cost a 2048² D24S8 clear.
+        const bool depthTest = states.get(fx::RenderStateId::ZEnable) != 0.0;
+        const bool stencilTest = states.get(fx::RenderStateId::StencilEnable) != 0.0;
+        if (depthTest || stencilTest) op.reads.push_back(mDepth);
+        const bool depthWrites = depthTest && states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
+        if (depthWrites || stencilTest) op.writes.push_back(mDepth);
     }
     for (const fx::SamplerBinding* binding : passSamplers(pass)) {
         const fx::SamplerDesc* desc = mResources.effect().findSampler(binding->samplerParameter);
