@@ -2,6 +2,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <utility>
 
@@ -117,6 +118,16 @@ bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
 void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
     if (mVao == 0) return;
     gl::BindVertexArray(mVao);
+    const auto sameInput = [](const fx::VertexInput& a, const fx::VertexInput& b) {
+        return a.location == b.location && a.components == b.components && a.semantic == b.semantic;
+    };
+    if (!mLayout.empty() &&
+        std::equal(inputs.begin(), inputs.end(), mLayout.begin(), mLayout.end(), sameInput)) {
+        gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
+        gl::BindVertexArray(0);
+        return;
+    }
+    bool allStreams = true;
     uint32_t enabled = 0;
     for (const fx::VertexInput& input : inputs) {
         if (input.location < 0 || input.location >= 32) continue;
@@ -149,6 +160,7 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
             gl::EnableVertexAttribArray(location);
             enabled |= 1u << location;
         } else {
+            allStreams = false;
             std::array<float, 4> value = defaultVertexValue(semantic);
             gl::DisableVertexAttribArray(location);
             gl::VertexAttrib4f(location, value[0], value[1], value[2], value[3]);
@@ -159,6 +171,8 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
         gl::DisableVertexAttribArray(GLuint(__builtin_ctz(stale)));
     }
     mEnabledLocations = enabled;
+    mLayout.clear();
+    if (allStreams) mLayout = inputs;
     gl::BindBuffer(GL_ARRAY_BUFFER, 0);
     gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
     gl::BindVertexArray(0);
@@ -192,6 +206,7 @@ GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
         mIndexCount = other.mIndexCount;
         mVertexCount = other.mVertexCount;
         mEnabledLocations = std::exchange(other.mEnabledLocations, 0);
+        mLayout = std::exchange(other.mLayout, {});
     }
     return *this;
 }

@@ -72,6 +72,9 @@ private:
     size_t mIndexCount = 0;
     size_t mVertexCount = 0;
     uint32_t mEnabledLocations = 0;  // bit i: attribute array i enabled in mVao
+    // The inputs mVao's arrays were last set up for, when every one of them came from a stream (defaults are
+    // context state, not VAO state): a draw with the same inputs only binds the VAO.
+    std::vector<fx::VertexInput> mLayout;
 };
 
 }  // namespace runtime
