@@ -20,6 +20,7 @@
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
 #include <runtime/Scene.h>
+#include <runtime/SceneFile.h>
 #include <runtime/ShadowMetrics.h>
 #include <runtime/ShadowMeasurement.h>
 #include <runtime/DiagnosticLog.h>
@@ -46,7 +47,7 @@ namespace shadowfx::cli {
 const char* const kBenchUsage =
     "usage: shadowfx bench --effects EFFECT.fx[,...] --out DIR [options]\n"
     "  --effects LIST        effect files, comma-separated (a shell glob works too: --effects effects/*.fx)\n"
-    "  --scenes LIST         built-in scenes, comma-separated (default boxes)\n"
+    "  --scenes LIST         built-in scene names or scene files (.json), comma-separated (default boxes)\n"
     "  --map-sizes LIST      shadow-map sizes, passed as -D SHADOWFX_SHADOW_MAP_SIZE=N (default 1024)\n"
     "  --techniques LIST     only these techniques (default: every technique of every effect)\n"
     "  --frames N            timed frames per run, after the warm-up (default 10)\n"
@@ -601,36 +602,45 @@ int benchCommand(const Arguments& args) {
     const std::string glRenderer = context->renderer();
     std::cerr << "bench: " << glRenderer << "\n";
 
-    // Ground truth, once per scene: it depends on neither the effect nor the map size.
-    std::vector<runtime::SceneTruth> truths;
-    truths.reserve(sceneNames.size());  // runtime::SceneTruth::light points into its own scene
-    Json truthJson = Json::array();
+    // Every scene loaded first: a scene that cannot be loaded stops the bench before anything is measured.
+    // A .json name is a scene file (its errors are located: file:line:column); any other name is a built-in
+    // scene, whose own diagnostic names a missing mesh file and the Debian package that ships it.
+    std::vector<runtime::Scene> scenes;
     for (const std::string& name : sceneNames) {
-        // The scene's own diagnostic names a missing mesh file and the Debian package that ships it.
-        std::optional<runtime::Scene> scene = runtime::makeBuiltinScene(name, &sink);
-        if (!scene) {
-            std::cerr << "shadowfx bench: no scene '" << name << "' (built-in scenes:";
+        const int errorsBefore = sink.errors();
+        std::optional<runtime::Scene> scene = runtime::loadScene(name, sink);
+        if (!scene || sink.errors() > errorsBefore) {
+            std::cerr << "shadowfx bench: cannot load scene '" << name
+                      << "' (a scene file ending in .json, or a built-in scene:";
             for (const std::string& known : runtime::builtinSceneNames()) std::cerr << " " << known;
             std::cerr << ")\n";
             return 1;
         }
+        scenes.push_back(std::move(*scene));
+    }
+    // Ground truth, once per scene: it depends on neither the effect nor the map size.
+    std::vector<runtime::SceneTruth> truths;
+    truths.reserve(sceneNames.size());  // runtime::SceneTruth::light points into its own scene
+    Json truthJson = Json::array();
+    for (size_t i = 0; i < sceneNames.size(); ++i) {
+        const std::string& name = sceneNames[i];
+        runtime::Scene& scene = scenes[i];
         if (areaRadius)
-            for (runtime::Light& light : scene->lights) light.areaRadius = *areaRadius;
+            for (runtime::Light& light : scene.lights) light.areaRadius = *areaRadius;
         if (lightAngle)
-            for (runtime::Light& light : scene->lights)
+            for (runtime::Light& light : scene.lights)
                 if (light.type == runtime::Light::Type::Directional)
-                    light.direction = directionAtAngleToView(scene->camera, *lightAngle);
-        std::cerr << "bench: ground truth for " << name << " (" << scene->triangleCount()
+                    light.direction = directionAtAngleToView(scene.camera, *lightAngle);
+        std::cerr << "bench: ground truth for " << name << " (" << scene.triangleCount()
                   << " triangles)...\n";
         runtime::SceneTruth& t = truths.emplace_back();
         std::string truthError;
-        if (!runtime::measureSceneTruth(t, std::move(*scene), width, height, truthOptions, sink,
-                                        truthError)) {
+        if (!runtime::measureSceneTruth(t, std::move(scene), width, height, truthOptions, sink, truthError)) {
             std::cerr << "shadowfx bench: " << truthError << "\n";
             return 1;
         }
         truthJson.push_back(
-            Json{{"scene", name},
+            Json{{"scene", t.scene.name},
                  {"soft", t.truth.soft},
                  {"samples_per_pixel", t.truth.samplesPerPixel},
                  {"rays", t.truth.raysCast},

@@ -157,6 +157,66 @@ TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
     EXPECT_NE(output.find("--time"), std::string::npos) << output;
 }
 
+// --scenes takes scene files as render and check do, mixed with built-in names: each is measured under its
+// own name (the file's "name"), and a broken file stops the bench with its located error and no results.
+TEST(Bench, ScenesTakeSceneFilesMixedWithBuiltinNames) {
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_files";
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories(out);
+    const std::filesystem::path scene = out / "pillar.json";
+    std::ofstream(scene) << R"({
+  "name": "pillar-on-plane",
+  "objects": [
+    {"name": "ground", "mesh": {"primitive": "plane", "size": 10}},
+    {"name": "pillar", "mesh": {"primitive": "box", "size": 1.0}, "translate": [0, 1, 0], "scale": [1, 2, 1]}
+  ],
+  "camera": {"position": [0, 6, -8], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 40},
+  "lights": [{"name": "light0", "type": "directional", "direction": [0.5, -1, 0.3]}]
+}
+)";
+    std::string output;
+    ASSERT_EQ(runTool("bench --effects effects/thesis_fxcomposer.fx --techniques hardware --scenes " +
+                          scene.string() +
+                          ",dual-l --map-sizes 256 --frames 1 --warmup 0 --width 96 --height 72 "
+                          "--out " +
+                          out.string(),
+                      output),
+              0)
+        << output;
+    const Json results = readJson(out / "results.json");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(results, schema, schema, "$"));
+    ASSERT_EQ(results["runs"].size(), 2u);
+    EXPECT_EQ(results["runs"][0]["scene"], "pillar-on-plane");
+    EXPECT_EQ(results["runs"][1]["scene"], "dual-l");
+    EXPECT_EQ(results["ground_truth"][0]["scene"], "pillar-on-plane");
+    const Json& error = results["runs"][0]["error"];
+    ASSERT_TRUE(error.is_object());
+    EXPECT_GT(error["receiver_pixels"].get<int>(), 96 * 72 / 4);
+    EXPECT_LT(error["misclassified_percent"].get<double>(), 5.0);
+
+    // A file that is not JSON: its line and column, a non-zero exit, no results left behind.
+    const std::filesystem::path broken = out / "broken.json";
+    std::ofstream(broken) << "{\n  \"objects\": [\n    {\"mesh\": }\n  ]\n}\n";
+    std::filesystem::remove(out / "results.json");
+    output.clear();
+    EXPECT_NE(runTool("bench --effects effects/thesis_fxcomposer.fx --scenes boxes," + broken.string() +
+                          " --out " + out.string(),
+                      output),
+              0);
+    EXPECT_NE(output.find(broken.string() + ":3:"), std::string::npos) << output;
+    EXPECT_NE(output.find("error"), std::string::npos) << output;
+    EXPECT_FALSE(std::filesystem::exists(out / "results.json"));
+
+    // A file that does not exist is named as well.
+    output.clear();
+    EXPECT_NE(runTool("bench --effects effects/thesis_fxcomposer.fx --scenes " +
+                          (out / "missing.json").string() + " --out " + out.string(),
+                      output),
+              0);
+    EXPECT_NE(output.find("missing.json"), std::string::npos) << output;
+}
+
 // --light-angle-to-view turns the light, and the footprint is scored with each effect's own light fit: the
 // focused map spends its texels on what the camera sees, so its texels cover fewer pixels than the uniform
 // map's with the same size and filter.
