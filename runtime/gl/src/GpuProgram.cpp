@@ -81,19 +81,20 @@ GLuint compileShader(GLenum kind, const std::string& source, std::string& log) {
 
 }  // namespace
 
-std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass,
-                                               fx::DiagnosticSink& diagnostics) {
+std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
+                                               Stages stages) {
     std::unique_ptr<GpuProgram> program(new GpuProgram());
     if (pass.vertex.glsl.empty() || pass.fragment.glsl.empty())
         return program;  // a pass of script commands only
 
+    const bool withPixel = stages == Stages::VertexAndPixel;
     std::string log;
     const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
-    const GLuint fs = compileShader(GL_FRAGMENT_SHADER, pass.fragment.glsl, log);
-    if (vs && fs) {
+    const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, pass.fragment.glsl, log) : 0;
+    if (vs && (fs || !withPixel)) {
         program->mProgram = gl::CreateProgram();
         gl::AttachShader(program->mProgram, vs);
-        gl::AttachShader(program->mProgram, fs);
+        if (fs) gl::AttachShader(program->mProgram, fs);
         gl::LinkProgram(program->mProgram);
         GLint ok = GL_FALSE;
         gl::GetProgramiv(program->mProgram, GL_LINK_STATUS, &ok);
@@ -114,14 +115,23 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass,
         return nullptr;
     }
 
-    const fx::StageProgram* stages[2] = {&pass.vertex, &pass.fragment};
+    const fx::StageProgram* linked[2] = {&pass.vertex, withPixel ? &pass.fragment : nullptr};
     for (int i = 0; i < 2; ++i) {
         StageBlock& block = program->mBlocks[i];
-        block.stage = stages[i];
-        if (stages[i]->uniformBlockSize == 0 || stages[i]->uniformBlockBinding < 0) continue;
-        block.data.assign(stages[i]->uniformBlockSize, 0);
+        block.stage = linked[i];
+        if (!linked[i] || linked[i]->uniformBlockSize == 0 || linked[i]->uniformBlockBinding < 0) continue;
+        block.data.assign(linked[i]->uniformBlockSize, 0);
     }
     return program;
+}
+
+bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {
+    // SPIRV-Cross spells each of these one way in the GLSL it writes.
+    static constexpr const char* kSideEffects[] = {
+        "discard", "gl_FragDepth", "gl_SampleMask", "imageStore", "imageAtomic", "atomic", "buffer "};
+    for (const char* word : kSideEffects)
+        if (pixel.glsl.find(word) != std::string::npos) return true;
+    return false;
 }
 
 GpuProgram::~GpuProgram() {

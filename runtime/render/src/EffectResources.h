@@ -50,8 +50,11 @@ public:
 
     // [SECTION] GL resources
     std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
-    std::vector<std::vector<PassPreshaders>> preshaders;             // [technique][pass]
-    std::map<size_t, GpuTexture> textures;                           // by texture parameter index
+    // The vertex stage alone, for passes that draw with no colour write (FrameExecutor::draw); linked on
+    // first use, null where the pass's pixel shader has side effects (GpuProgram::pixelShaderHasSideEffects).
+    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> depthOnlyPrograms;  // by technique, pass
+    std::vector<std::vector<PassPreshaders>> preshaders;                                 // [technique][pass]
+    std::map<size_t, GpuTexture> textures;  // by texture parameter index
     // Mipmapped render targets written since their mip chain was last generated: regenerated before a
     // pass samples them (D3D9's AUTOGENMIPMAP).
     std::set<const GpuTexture*> staleMipChains;

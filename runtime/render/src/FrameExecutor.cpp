@@ -149,7 +149,9 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         nextOp(buffer ? PlannedOp::Kind::DrawBuffer : PlannedOp::Kind::DrawGeometry, passIndex);
     if (leftOut(op)) return;
     if (!bindTargets()) return;
-    applyStates(pass, passIndex, op);
+    const RenderStateBlock& states = applyStates(pass, passIndex, op);
+    GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
+    if (vertexOnly) program = vertexOnly;
     bindSamplers(pass.vertex);
     bindSamplers(pass.fragment);
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
@@ -168,6 +170,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     }
     evaluateArguments(passIndex, use, false);
 
+    const int drawsBefore = mStats.draws;
     GLuint query = 0;
     if (mOptions.countTexels) {
         gl::GenQueries(1, &query);
@@ -193,6 +196,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
         }
     }
+    if (PassStats* record = currentPass(); record && vertexOnly)
+        record->depthOnlyDraws += mStats.draws - drawsBefore;
     if (query) {
         gl::EndQuery(GL_SAMPLES_PASSED);
         if (!mStats.passes.empty())
@@ -300,7 +305,8 @@ bool FrameExecutor::isColorTarget(const GpuTexture* texture) const {
                        [texture](const RenderTargetAttachment& color) { return color.texture == texture; });
 }
 
-void FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op) {
+const RenderStateBlock& FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex,
+                                                   const PlannedOp* op) {
     const RenderStateBlock* block = op ? &op->states : nullptr;
     if (!block) {
         PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
@@ -318,6 +324,43 @@ void FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex, 
     // objects can be mixed with non-culled open surfaces in the same scene") need both in one pass: a
     // culled open plane would vanish.
     mCullClosedOnly = pass.cullClosedOnly && block->get(fx::RenderStateId::CullMode) != 1.0;
+    return *block;
+}
+
+// A pass that masks every colour write (the hardware shadow map's ColorWriteEnable = 0) still had its
+// colour target bound and its pixel shader run for every fragment, only for the results to be thrown
+// away; on llvmpipe that shading was most of the light pass's time. D3D9 leaves this to the driver; GL
+// lets the runtime say it: a framebuffer with the depth-stencil target alone (draw buffers GL_NONE) and a
+// program without a fragment stage. The pixel shader is kept where it can change depth or coverage
+// (discard, clip, depth output: GpuProgram::pixelShaderHasSideEffects).
+GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIndex,
+                                     const RenderStateBlock& states) {
+    static constexpr fx::RenderStateId kColorWrites[] = {
+        fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
+        fx::RenderStateId::ColorWriteEnable2, fx::RenderStateId::ColorWriteEnable3};
+    if (!mTargets.depth.texture) return nullptr;
+    for (size_t slot = 0; slot < mTargets.colors.size(); ++slot)
+        if (mTargets.colors[slot].texture && states.get(kColorWrites[slot]) != 0.0) return nullptr;
+    if (GpuProgram::pixelShaderHasSideEffects(pass.fragment)) return nullptr;
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    const std::pair<size_t, size_t> key{mTechnique, passIndex};
+    auto found = mResources.depthOnlyPrograms.find(key);
+    if (found == mResources.depthOnlyPrograms.end()) {
+        // An optimization, not the effect's program: a driver that refuses it costs speed, not the frame.
+        fx::DiagnosticList ignored;
+        found = mResources.depthOnlyPrograms
+                    .emplace(key, GpuProgram::create(pass, ignored, GpuProgram::Stages::DepthOnly))
+                    .first;
+    }
+    if (!found->second) return nullptr;  // stored null: it did not link, draw the full pass
+    RenderTargets depthOnlyTargets;
+    depthOnlyTargets.depth = mTargets.depth;
+    std::string error;
+    if (!mResources.framebuffers.bind(depthOnlyTargets, error)) {
+        mResources.framebuffers.bind(mTargets, error);  // bound by bindTargets() a moment ago
+        return nullptr;
+    }
+    return found->second.get();
 }
 
 void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {

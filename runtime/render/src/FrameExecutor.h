@@ -65,7 +65,12 @@ private:
     bool isColorTarget(const GpuTexture* texture) const;
     // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
     // evaluates them.
-    void applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op);
+    // Applies the pass's render states and returns them.
+    const RenderStateBlock& applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op);
+    // For a draw whose states write no colour to any bound target: binds the depth-stencil target alone and
+    // returns the pass's vertex-only program, or null where the draw needs its colour targets or pixel
+    // shader after all (see draw()).
+    GpuProgram* depthOnly(const fx::CompiledPass& pass, size_t passIndex, const RenderStateBlock& states);
     void bindSamplers(const fx::StageProgram& stage);
     // Runs the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per pass
     // (perObject false) and the per-object ones per draw (perObject true); without, all per draw. Each

@@ -16,7 +16,8 @@ struct PassStats {
                              // last frame), "scene" (its LeaveOutWhen holds), or several joined by "+" in
                              // that order; a pass with only some operations left out ran
     int draws = 0;
-    int culled = 0;  // objects a Draw=Geometry left out
+    int depthOnlyDraws = 0;  // of `draws`, drawn without colour targets or pixel shader (depthOnlyPasses)
+    int culled = 0;          // objects a Draw=Geometry left out
     uint64_t triangles = 0;
     int clears = 0;
     uint64_t texelsWritten = 0;  // cleared texels + fragments drawn (the latter with countTexels)

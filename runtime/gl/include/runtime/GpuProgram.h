@@ -47,9 +47,19 @@ private:
 
 class GpuProgram {
 public:
+    // Which stages a program links. DepthOnly links the vertex stage alone, for a pass that writes no
+    // colour: the rasterizer then writes depth (and stencil) without running a fragment program.
+    enum class Stages { VertexAndPixel, DepthOnly };
+
     // Compiles and links the pass's GLSL. Returns nullptr and reports LinkError (with the driver's log)
     // at the pass's location on failure.
-    static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics);
+    static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
+                                              Stages stages = Stages::VertexAndPixel);
+
+    // True if the pixel shader can change what a pass without colour writes leaves behind: it discards
+    // (clip(), texkill, an alpha test written as clip), writes depth or the sample mask, or stores to
+    // images or buffers. Only a pass whose pixel shader cannot may drop it (Stages::DepthOnly).
+    static bool pixelShaderHasSideEffects(const fx::StageProgram& pixel);
     ~GpuProgram();
     GpuProgram(const GpuProgram&) = delete;
     GpuProgram& operator=(const GpuProgram&) = delete;

@@ -42,6 +42,10 @@ struct FrameOptions {
     // Count the fragments each pass writes (GL_SAMPLES_PASSED queries) into PassStats::texelsWritten;
     // clears count their targets' texels either way.
     bool countTexels = false;
+    // Draw passes that write no colour (ColorWriteEnable = 0 on every bound target) into their depth-stencil
+    // target alone and without a pixel shader where it has no side effect (PassStats::depthOnlyDraws). The
+    // image is the same either way; off draws them as D3D9 states them (for comparison).
+    bool depthOnlyPasses = true;
     // Render targets the caller reads after the frame (readTarget): outputs like the frame's colour, so
     // leave-out keeps the passes that write them.
     std::vector<std::string> outputTargets;

@@ -1,0 +1,115 @@
+// Depth-only passes: a pass that writes no colour (ColorWriteEnable = 0 on every bound target) draws into
+// its depth-stencil target alone with the vertex stage alone (FrameExecutor::depthOnly), and the frame is
+// byte for byte the frame drawn the D3D9 way (colour target bound, pixel shader run, writes masked).
+#include "EffectHarness.h"
+
+#include <runtime/BuiltinScenes.h>
+#include <runtime/GpuProgram.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace shadowfx::test {
+namespace {
+
+struct Frame {
+    runtime::FrameImage image;
+    int depthOnlyDraws = 0;
+};
+
+Frame renderWith(runtime::EffectRenderer& renderer, const runtime::Scene& scene, const std::string& technique,
+                 bool depthOnlyPasses, bool leaveOut = true) {
+    fx::DiagnosticList diagnostics;
+    runtime::FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    options.technique = technique;
+    options.depthOnlyPasses = depthOnlyPasses;
+    options.leaveOut = leaveOut;
+    runtime::FrameStats stats;
+    EXPECT_TRUE(renderer.render(scene, options, diagnostics, &stats) && !diagnostics.hasErrors())
+        << diagnostics.str();
+    Frame frame{renderer.readFrame(), 0};
+    for (const runtime::PassStats& pass : stats.passes) frame.depthOnlyDraws += pass.depthOnlyDraws;
+    return frame;
+}
+
+// A frame with shadows in it: light and dark receivers, not one colour.
+::testing::AssertionResult hasLightAndShadow(const runtime::FrameImage& image) {
+    float darkest = 1.0f, brightest = 0.0f;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float l = luminance(image.pixel(x, y));
+            darkest = std::min(darkest, l);
+            brightest = std::max(brightest, l);
+        }
+    if (brightest - darkest < 0.2f)
+        return ::testing::AssertionFailure()
+               << "a near-constant frame: luminance " << darkest << " to " << brightest;
+    return ::testing::AssertionSuccess();
+}
+
+struct Case {
+    const char* effect;
+    const char* technique;
+    const char* scene;
+};
+
+class DepthOnlyPasses : public ::testing::TestWithParam<Case> {};
+
+TEST_P(DepthOnlyPasses, SameBytesAsTheMaskedColourPass) {
+    const Case c = GetParam();
+    // One renderer each: a second frame of the same renderer would reuse the first one's shadow map.
+    std::unique_ptr<runtime::EffectRenderer> first = loadEffect(sourcePath(c.effect), true);
+    std::unique_ptr<runtime::EffectRenderer> second = loadEffect(sourcePath(c.effect), true);
+    ASSERT_TRUE(first && second);
+    const runtime::Scene scene = *runtime::makeBuiltinScene(c.scene);
+    const Frame masked = renderWith(*first, scene, c.technique, false);
+    const Frame depthOnly = renderWith(*second, scene, c.technique, true);
+    EXPECT_EQ(masked.depthOnlyDraws, 0);
+    EXPECT_GT(depthOnly.depthOnlyDraws, 0) << "the light pass writes no colour: it should draw depth only";
+    EXPECT_TRUE(hasLightAndShadow(depthOnly.image));
+    ASSERT_EQ(masked.image.rgba.size(), depthOnly.image.rgba.size());
+    EXPECT_TRUE(masked.image.rgba == depthOnly.image.rgba) << "the depth-only pass changed the frame";
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedEffects, DepthOnlyPasses,
+                         ::testing::Values(Case{"effects/thesis_fxcomposer.fx", "hardware", "boxes"},
+                                           Case{"effects/bias.fx", "slope_state", "dual-l"},
+                                           Case{"effects/depth_formats.fx", "d24", "double-torus"}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                             return std::string(info.param.technique);
+                         });
+
+// A pixel shader that discards decides which fragments write depth: its pass keeps it (and its targets).
+TEST(DepthOnlyPasses, APixelShaderThatDiscardsIsKept) {
+    std::unique_ptr<runtime::EffectRenderer> renderer = loadEffect(R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; string Format = "R32F"; >;
+texture MapDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 64}; string Format = "D24S8"; >;
+struct Out { float4 Position : POSITION; float X : TEXCOORD0; };
+Out VS(float4 p : POSITION) { Out o; o.Position = mul(float4(p.xyz, 1), WorldViewProjection); o.X = p.x; return o; }
+float4 Clipped(Out i) : COLOR { clip(frac(i.X) - 0.5); return 1; }
+float4 Plain(Out i) : COLOR { return 1; }
+technique t < string Script = "Pass=Depth; Pass=Show;"; > {
+    pass Depth < string Script = "RenderColorTarget0=Map; RenderDepthStencilTarget=MapDepth; Clear=Depth; Draw=Geometry;"; >
+    { ColorWriteEnable = 0; ZEnable = true; ZWriteEnable = true;
+      VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Clipped(); }
+    pass Show < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=; Clear=Color; Clear=Depth; Draw=Geometry;"; >
+    { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Plain(); }
+}
+)",
+                                                                   false, "clipped.fx");
+    ASSERT_TRUE(renderer);
+    const fx::CompiledPass& depth = renderer->effect().techniques[0].passes[0];
+    const fx::CompiledPass& show = renderer->effect().techniques[0].passes[1];
+    EXPECT_TRUE(runtime::GpuProgram::pixelShaderHasSideEffects(depth.fragment)) << depth.fragment.glsl;
+    EXPECT_FALSE(runtime::GpuProgram::pixelShaderHasSideEffects(show.fragment)) << show.fragment.glsl;
+    // Leave-out off: nothing reads MapDepth, so leave-out would drop the pass as dead.
+    const Frame frame = renderWith(*renderer, *runtime::makeBuiltinScene("boxes"), "t", true, false);
+    EXPECT_EQ(frame.depthOnlyDraws, 0);
+}
+
+}  // namespace
+}  // namespace shadowfx::test
