@@ -16,6 +16,8 @@ packages=(
   libembree-dev gnuplot-nox
   # `shadowfx view`: Dear ImGui (static, with its GLFW/OpenGL3 backends); Xvfb runs its test without a display.
   libimgui-dev xvfb
+  # `shadowfx bench --peers osg`: OpenSceneGraph's osgShadow on the same scenes (benchmarks/peers/).
+  libopenscenegraph-dev
   # scripts/gamma_sweep.py (the main job's γ sweep) and scripts/bench_paired_ratios.py.
   python3
 )
