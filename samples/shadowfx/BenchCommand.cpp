@@ -11,6 +11,7 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
+#include "PeerRun.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -45,7 +46,7 @@
 namespace shadowfx::cli {
 
 const char* const kBenchUsage =
-    "usage: shadowfx bench --effects EFFECT.fx[,...] --out DIR [options]\n"
+    "usage: shadowfx bench --effects EFFECT.fx[,...] [--peers osg] --out DIR [options]\n"
     "  --effects LIST        effect files, comma-separated (a shell glob works too: --effects effects/*.fx)\n"
     "  --scenes LIST         built-in scene names or scene files (.json), comma-separated (default boxes)\n"
     "  --map-sizes LIST      shadow-map sizes, passed as -D SHADOWFX_SHADOW_MAP_SIZE=N (default 1024)\n"
@@ -74,6 +75,10 @@ const char* const kBenchUsage =
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
+    "  --peers LIST          also run other libraries' shadow techniques on the same scenes and map sizes,\n"
+    "                        scored against the same ground truth: osg (OpenSceneGraph's osgShadow, built\n"
+    "                        when OpenSceneGraph was found; docs/peers.md). --effects may then be left out\n"
+    "  --peer-techniques LIST  only these of the peers' techniques (default: all; the peer lists them)\n"
     "  --out DIR             results.json, report.md, error_vs_time.png and errors/*.png go here\n";
 
 namespace {
@@ -344,6 +349,57 @@ std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& run
     return "";
 }
 
+// Per scene and map size, the most exact shadowfx run and the most exact run of each peer, and the ratio of
+// their median frame times (shadowfx ÷ peer): nothing when no peer ran.
+void writeSideBySide(std::ostream& md, const Json& runs) {
+    struct Best {
+        const Json* run = nullptr;
+        void offer(const Json& candidate) {
+            if (!candidate["error"].is_object()) return;
+            if (!run || candidate["error"]["misclassified_percent"].get<double>() <
+                            (*run)["error"]["misclassified_percent"].get<double>())
+                run = &candidate;
+        }
+    };
+    // (scene, map size) -> best shadowfx run, and best run per peer
+    std::map<std::pair<std::string, int>, std::pair<Best, std::map<std::string, Best>>> best;
+    bool anyPeer = false;
+    for (const Json& run : runs) {
+        auto& entry = best[{run["scene"].get<std::string>(), run["map_size"].get<int>()}];
+        if (run["peer"].is_string()) {
+            anyPeer = true;
+            entry.second[run["effect"].get<std::string>()].offer(run);
+        } else {
+            entry.first.offer(run);
+        }
+    }
+    if (!anyPeer) return;
+    const auto describe = [](const Json& run) {
+        return run["effect_name"].get<std::string>() + "/" + run["technique"].get<std::string>() + " " +
+               runtime::formatFixed(run["error"]["misclassified_percent"].get<double>(), 3) + " % in " +
+               runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) + " ms";
+    };
+    md << "\n## Side by side with the peers\n\n"
+          "The most exact run of each side (least misclassified %) per scene and map size; ratio = median "
+          "full-cost frame time (every map redrawn each frame, as the peers do) of shadowfx's ÷ the "
+          "peer's.\n\n"
+          "| scene | map | shadowfx | peer | frame-time ratio |\n|---|---:|---|---|---:|\n";
+    for (const auto& [key, entry] : best) {
+        for (const auto& [peer, peerBest] : entry.second) {
+            if (!peerBest.run) continue;
+            md << "| " << key.first << " | " << key.second << " | "
+               << (entry.first.run ? describe(*entry.first.run) : std::string("–")) << " | "
+               << describe(*peerBest.run) << " | ";
+            if (entry.first.run)
+                md << runtime::formatFixed(
+                    (*entry.first.run)["full_cost"]["frame_time_ms"]["median"].get<double>() /
+                        (*peerBest.run)["full_cost"]["frame_time_ms"]["median"].get<double>(),
+                    2);
+            md << " |\n";
+        }
+    }
+}
+
 void writeReport(const std::filesystem::path& path, const Json& results, const std::string& plotNote) {
     std::ofstream md(path);
     md << "# shadowfx bench\n\n";
@@ -402,15 +458,21 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         md << runtime::formatFixed(frame["median"].get<double>(), 2) << " ["
            << runtime::formatFixed(frame["min"].get<double>(), 2) << "–"
            << runtime::formatFixed(frame["max"].get<double>(), 2) << "] | "
-           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
-           << runtime::formatFixed(full["gpu_time_ms"]["median"].get<double>(), 2) << " | "
-           << runtime::formatFixed(full["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
-           << runtime::formatFixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
-           << runtime::formatFixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
-           << runtime::formatFixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
+           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | ";
+        // A peer's row has frame times and errors only: its passes are the peer library's own.
+        if (run["peer"].is_string()) {
+            md << "– | – | – | ";
+        } else {
+            md << runtime::formatFixed(full["gpu_time_ms"]["median"].get<double>(), 2) << " | "
+               << runtime::formatFixed(full["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
+               << runtime::formatFixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
+               << runtime::formatFixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
+               << runtime::formatFixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
+        }
         if (run["error_image"].is_string()) md << "[png](" << run["error_image"].get<std::string>() << ")";
         md << " |\n";
     }
+    writeSideBySide(md, results["runs"]);
     md << "\n## Passes (full cost, median per frame)\n\n";
     md << "| scene | effect | technique | map | pass | GPU ms | CPU ms | draws "
           "|\n|---|---|---|---:|---|---:|---:|---:|\n";
@@ -436,13 +498,14 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
           "left out | draws | culled | triangles | speed-up |\n"
           "|---|---|---|---:|---|---:|---:|---:|---|---:|---:|---:|---:|\n";
     for (const Json& run : results["runs"]) {
+        if (run["peer"].is_string()) continue;
         const Json& work = run["work"];
         std::string speedUp;
         if (run["leave_out"].get<bool>()) {
             for (const Json& other : results["runs"]) {
-                if (other["leave_out"].get<bool>() || other["scene"] != run["scene"] ||
-                    other["effect"] != run["effect"] || other["technique"] != run["technique"] ||
-                    other["map_size"] != run["map_size"])
+                if (other["peer"].is_string() || other["leave_out"].get<bool>() ||
+                    other["scene"] != run["scene"] || other["effect"] != run["effect"] ||
+                    other["technique"] != run["technique"] || other["map_size"] != run["map_size"])
                     continue;
                 speedUp = runtime::formatFixed(other["frame_time_ms"]["median"].get<double>() /
                                                    run["frame_time_ms"]["median"].get<double>(),
@@ -467,6 +530,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     md << "| scene | effect | technique | map | script | binding | preshader | overhead (sum) | GL |\n"
           "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const Json& run : results["runs"]) {
+        if (run["peer"].is_string()) continue;
         const Json& c = run["full_cost"]["runtime_cpu_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
            << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
@@ -483,6 +547,14 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
            << " | " << (truth["soft"].get<bool>() ? "yes" : "no") << " | " << truth["rays"].get<uint64_t>()
            << " | " << runtime::formatFixed(truth["seconds"].get<double>(), 2) << " |\n";
     }
+}
+
+// Receivers the ground truth classifies as shadowed: what a blank (all-lit) frame would get wrong.
+int64_t shadowedReceivers(const runtime::SceneTruth& t) {
+    int64_t count = 0;
+    for (size_t i = 0; i < t.receivers.size() && i < t.truth.visibility.size(); ++i)
+        count += t.receivers[i] && t.truth.visibility[i] < runtime::kShadowedBelow ? 1 : 0;
+    return count;
 }
 
 // The direction at `degrees` from the camera's view direction V, turned toward straight down: cos G V +
@@ -533,8 +605,52 @@ int benchCommand(const Arguments& args) {
     const int warmup = args.intValue("--warmup", 2);
     const int width = args.intValue("--width", 640);
     const int height = args.intValue("--height", 480);
-    if (effects.empty() || sceneNames.empty() || mapSizes.empty()) {
-        std::cerr << "shadowfx bench: needs --effects, and non-empty --scenes and --map-sizes (see --help)\n";
+    // Peers: each name's program, found where this build put it, and the techniques to run.
+    struct Peer {
+        std::string name;
+        std::string program;
+        std::vector<std::string> techniques;
+    };
+    std::vector<Peer> peers;
+    const std::vector<std::string> peerTechniqueFilter = splitList(args.value("--peer-techniques"));
+    for (const std::string& name : splitList(args.value("--peers"))) {
+        Peer peer{name, findPeerProgram(name), {}};
+        if (name != "osg") {
+            std::cerr << "shadowfx bench: --peers: unknown peer '" << name << "' (known: osg)\n";
+            return 2;
+        }
+        if (peer.program.empty()) {
+            std::cerr << "shadowfx bench: --peers " << name << ": shadowfx-" << name
+                      << "-peer was not built (OpenSceneGraph was not found when configuring; "
+                         "scripts/install-deps.sh installs libopenscenegraph-dev)\n";
+            return 2;
+        }
+        const std::vector<std::string> offered = peerTechniques(peer.program);
+        if (offered.empty()) {
+            std::cerr << "shadowfx bench: --peers " << name << ": " << peer.program << " does not run\n";
+            return 1;
+        }
+        for (const std::string& technique : offered)
+            if (peerTechniqueFilter.empty() ||
+                std::find(peerTechniqueFilter.begin(), peerTechniqueFilter.end(), technique) !=
+                    peerTechniqueFilter.end())
+                peer.techniques.push_back(technique);
+        peers.push_back(std::move(peer));
+    }
+    for (const std::string& technique : peerTechniqueFilter) {
+        bool offered = false;
+        for (const Peer& peer : peers)
+            offered = offered || std::find(peer.techniques.begin(), peer.techniques.end(), technique) !=
+                                     peer.techniques.end();
+        if (!offered) {
+            std::cerr << "shadowfx bench: --peer-techniques: no peer offers '" << technique << "'\n";
+            return 2;
+        }
+    }
+    if ((effects.empty() && peers.empty()) || sceneNames.empty() || mapSizes.empty()) {
+        std::cerr
+            << "shadowfx bench: needs --effects or --peers, and non-empty --scenes and --map-sizes (see "
+               "--help)\n";
         return 2;
     }
     if (frames < 1 || warmup < 0 || width <= 0 || height <= 0 || width > 16384 || height > 16384) {
@@ -646,6 +762,7 @@ int benchCommand(const Arguments& args) {
                  {"rays", t.truth.raysCast},
                  {"normal_offset", truthOptions.normalOffset * std::max(t.scene.bounds().radius(), 1e-3f)},
                  {"receiver_pixels", std::count(t.receivers.begin(), t.receivers.end(), uint8_t{1})},
+                 {"shadowed_receiver_pixels", shadowedReceivers(t)},
                  {"seconds", t.seconds}});
     }
 
@@ -705,10 +822,11 @@ int benchCommand(const Arguments& args) {
             variants.emplace(std::make_pair(effect, mapSize), std::move(variant));
         }
     }
-    if (runCount == 0) {
+    if (runCount == 0 && !effects.empty()) {
         std::cerr << "shadowfx bench: no technique matches --techniques\n";
         return 2;
     }
+    for (const Peer& peer : peers) runCount += peer.techniques.size() * mapSizes.size() * truths.size();
 
     Json runs = Json::array();
     Progress progress(runCount);
@@ -786,6 +904,7 @@ int benchCommand(const Arguments& args) {
 
                         Json record{{"effect", effect},
                                     {"effect_name", effectName},
+                                    {"peer", nullptr},
                                     {"technique", technique.name},
                                     {"scene", t.scene.name},
                                     {"map_size", mapSize},
@@ -853,6 +972,99 @@ int benchCommand(const Arguments& args) {
             }
         }
     }
+    // [SECTION] Peers: the same scenes, map sizes, frame counts and truth; the peer's frame is scored as an
+    // effect's visibility frame is.
+    for (const Peer& peer : peers) {
+        const std::filesystem::path workDir = outDir / "peers" / peer.name;
+        std::filesystem::create_directories(workDir, fsError);
+        for (int mapSize : mapSizes) {
+            for (size_t scene = 0; scene < truths.size(); ++scene) {
+                const runtime::SceneTruth& t = truths[scene];
+                for (const std::string& technique : peer.techniques) {
+                    progress.show(peer.name + " " + technique + " on " + t.scene.name + ", map " +
+                                  std::to_string(mapSize));
+                    PeerRequest request{
+                        peer.program, sceneNames[scene], technique, mapSize, width, height, frames, warmup};
+                    std::string peerError;
+                    const std::optional<PeerResult> result = runPeer(request, t, workDir, peerError);
+                    if (!result) {
+                        progress.end();
+                        std::cerr << "shadowfx bench: --peers " << peer.name << ": " << peerError << "\n";
+                        return 1;
+                    }
+                    const runtime::ShadowErrors errors =
+                        runtime::compareVisibility(t.truth.visibility, result->visibility, t.receivers);
+                    const Spread frameTimes = spreadOf(result->frameMs);
+                    Json record{{"effect", peer.name},
+                                {"effect_name", peer.name},
+                                {"peer", peer.name + "/" + technique},
+                                {"technique", technique},
+                                {"scene", t.scene.name},
+                                {"map_size", mapSize},
+                                {"map_size_honoured", true},
+                                {"width", width},
+                                {"height", height},
+                                {"gl_renderer", result->glRenderer},
+                                {"peer_library_version", result->libraryVersion},
+                                {"frames", frames},
+                                {"warmup_frames", warmup},
+                                {"leave_out", false},
+                                {"camera_orbit_degrees_per_frame", 0.0},
+                                {"first_frame_ms", result->frameMs.front()},
+                                {"frame_time_ms", toJson(frameTimes)},
+                                {"gpu_time_ms", nullptr},
+                                {"work", nullptr},
+                                {"passes", Json::array()},
+                                {"runtime_cpu_ms", nullptr},
+                                // osgShadow redraws every map each frame: its frames are full cost.
+                                {"full_cost", Json{{"frame_time_ms", toJson(frameTimes)},
+                                                   {"gpu_time_ms", nullptr},
+                                                   {"work", nullptr},
+                                                   {"passes", Json::array()},
+                                                   {"runtime_cpu_ms", nullptr}}},
+                                {"aliasing", nullptr},
+                                {"ground_truth", Json{{"soft", t.truth.soft},
+                                                      {"samples_per_pixel", t.truth.samplesPerPixel}}},
+                                {"error", Json{{"receiver_pixels", errors.receiverPixels},
+                                               {"false_shadow_pixels", errors.falseShadowPixels},
+                                               {"false_light_pixels", errors.falseLightPixels},
+                                               {"false_shadow_percent", errors.falseShadowPercent},
+                                               {"false_light_percent", errors.falseLightPercent},
+                                               {"misclassified_percent", errors.misclassifiedPercent},
+                                               {"mae", errors.meanAbsoluteError},
+                                               {"p95_abs_error", errors.p95AbsoluteError},
+                                               {"penumbra_pixels", errors.penumbraPixels},
+                                               {"penumbra_mae", errors.penumbraPixels > 0
+                                                                    ? Json(errors.penumbraMeanAbsoluteError)
+                                                                    : Json(nullptr)}}},
+                                {"error_image", nullptr}};
+                    // The error image over the peer's own frame (its visibility in grey).
+                    runtime::FrameImage frame;
+                    frame.width = width;
+                    frame.height = height;
+                    frame.rgba.resize(result->visibility.size() * 4);
+                    for (size_t i = 0; i < result->visibility.size(); ++i) {
+                        const auto grey = static_cast<uint8_t>(result->visibility[i] * 255.0f + 0.5f);
+                        frame.rgba[i * 4] = frame.rgba[i * 4 + 1] = frame.rgba[i * 4 + 2] = grey;
+                        frame.rgba[i * 4 + 3] = 255;
+                    }
+                    const std::string image = "errors/" +
+                                              safeName(peer.name + "_" + technique + "_" + t.scene.name +
+                                                       "_" + std::to_string(mapSize)) +
+                                              ".png";
+                    std::string writeError;
+                    if (runtime::writePng(
+                            runtime::errorImage(frame, t.truth.visibility, result->visibility, t.receivers),
+                            (outDir / image).string(), writeError)) {
+                        record["error_image"] = image;
+                    } else {
+                        std::cerr << "\nbench: " << writeError << "\n";
+                    }
+                    runs.push_back(std::move(record));
+                }
+            }
+        }
+    }
     progress.end();
     for (const auto& [name, value] : assignments) {
         if (assignedSomewhere.count(name) == 0) {
@@ -877,6 +1089,8 @@ int benchCommand(const Arguments& args) {
                                  {"area_samples", truthOptions.areaSamples},
                                  {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
                                  {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
+                                 {"peers", splitList(args.value("--peers"))},
+                                 {"peer_techniques", peerTechniqueFilter},
                                  {"camera_orbit_degrees_per_frame", cameraOrbit},
                                  {"leave_out", leaveOutModes},
                                  {"time_axis", timeAxis}}},

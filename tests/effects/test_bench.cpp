@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace shadowfx::test {
 namespace {
@@ -215,6 +216,69 @@ TEST(Bench, ScenesTakeSceneFilesMixedWithBuiltinNames) {
                       output),
               0);
     EXPECT_NE(output.find("missing.json"), std::string::npos) << output;
+}
+
+// --peers osg: OpenSceneGraph's osgShadow on the same scene, scored against the same truth. With a map far
+// finer than the frame the peer's shadow is all but exact, so its error is small only if its frame lines up
+// with the G-buffer pixel for pixel: a frame off by a pixel, mirrored, blank or black fails the bound (the
+// scene keeps a large part of its receivers in shadow).
+TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
+#ifndef SHADOWFX_OSG_PEER_BUILT
+    GTEST_SKIP() << "shadowfx-osg-peer is not built (OpenSceneGraph not found, or a sanitized build)";
+#else
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_peer";
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories(out);
+    const std::filesystem::path scene = out / "wall.json";
+    // A wall and a post under a low sun from the side: long shadows across the ground, edges in both axes.
+    std::ofstream(scene) << R"({
+  "name": "wall-and-post",
+  "objects": [
+    {"name": "ground", "mesh": {"primitive": "plane", "size": 12}},
+    {"name": "wall", "mesh": {"primitive": "box", "size": 1.0}, "translate": [-1.5, 1, 1], "scale": [3, 2, 0.3]},
+    {"name": "post", "mesh": {"primitive": "box", "size": 1.0}, "translate": [2, 1.5, -1], "scale": [0.6, 3, 0.6]}
+  ],
+  "camera": {"position": [1, 7, -9], "target": [0, 0, 0.5], "fov": 55, "near": 0.1, "far": 40},
+  "lights": [{"name": "light0", "type": "directional", "direction": [0.8, -0.6, 0.35]}]
+}
+)";
+    std::string output;
+    ASSERT_EQ(
+        runTool("bench --peers osg --peer-techniques ShadowMap,VDSM-ortho-1 --scenes " + scene.string() +
+                    " --map-sizes 4096 --frames 1 --warmup 0 --width 96 --height 72 --out " + out.string(),
+                output),
+        0)
+        << output;
+    const Json results = readJson(out / "results.json");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(results, schema, schema, "$"));
+    const Json& truth = results["ground_truth"][0];
+    const double receivers = truth["receiver_pixels"].get<double>();
+    ASSERT_GT(receivers, 96 * 72 / 3);
+    EXPECT_GT(truth["shadowed_receiver_pixels"].get<double>(), 0.15 * receivers)
+        << "the scene must keep a large part of its receivers in shadow, or a blank frame would pass";
+    ASSERT_EQ(results["runs"].size(), 2u);
+    for (const Json& run : results["runs"]) {
+        ASSERT_TRUE(run["peer"].is_string()) << run.dump(2);
+        EXPECT_EQ(run["peer"], "osg/" + run["technique"].get<std::string>());
+        EXPECT_EQ(run["effect"], "osg");
+        ASSERT_TRUE(run["error"].is_object());
+        EXPECT_EQ(run["error"]["receiver_pixels"].get<double>(), receivers);
+        EXPECT_LT(run["error"]["misclassified_percent"].get<double>(), 1.5) << run.dump(2);
+        EXPECT_GT(run["frame_time_ms"]["median"].get<double>(), 0.0);
+        EXPECT_TRUE(run["gpu_time_ms"].is_null());
+        ASSERT_TRUE(run["error_image"].is_string());
+        EXPECT_TRUE(std::filesystem::exists(out / run["error_image"].get<std::string>()));
+    }
+    std::ifstream report(out / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("| osg | ShadowMap |"), std::string::npos) << text;
+
+    output.clear();
+    EXPECT_EQ(runTool("bench --peers osg --peer-techniques NoSuchTechnique --out " + out.string(), output),
+              2);
+    EXPECT_NE(output.find("NoSuchTechnique"), std::string::npos) << output;
+#endif
 }
 
 // --light-angle-to-view turns the light, and the footprint is scored with each effect's own light fit: the

@@ -1,0 +1,133 @@
+// PeerRun: see PeerRun.h.
+#include "PeerRun.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace shadowfx::cli {
+
+namespace {
+
+// One argument for /bin/sh: single-quoted, a quote inside closed, escaped and reopened.
+std::string shellQuoted(const std::string& text) {
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+std::string safeName(std::string text) {
+    for (char& c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    return text;
+}
+
+std::filesystem::path ownDirectory() {
+    std::error_code ignored;
+    return std::filesystem::read_symlink("/proc/self/exe", ignored).parent_path();
+}
+
+// A binary PGM (P5, 8 bits) as the peer writes it: values / 255, rows top to bottom.
+bool readPgm(const std::filesystem::path& path, int& width, int& height, std::vector<float>& values) {
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    int maxValue = 0;
+    in >> magic >> width >> height >> maxValue;
+    in.get();  // the one whitespace byte before the pixels
+    if (!in || magic != "P5" || maxValue != 255 || width <= 0 || height <= 0) return false;
+    std::vector<unsigned char> bytes(static_cast<size_t>(width) * static_cast<size_t>(height));
+    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!in) return false;
+    values.resize(bytes.size());
+    for (size_t i = 0; i < bytes.size(); ++i) values[i] = bytes[i] / 255.0f;
+    return true;
+}
+
+}  // namespace
+
+std::string findPeerProgram(const std::string& name) {
+    const std::string program = "shadowfx-" + name + "-peer";
+#ifdef SHADOWFX_OSG_PEER_PATH
+    if (name == "osg" && std::filesystem::exists(SHADOWFX_OSG_PEER_PATH)) return SHADOWFX_OSG_PEER_PATH;
+#endif
+    const std::filesystem::path installed = ownDirectory() / program;
+    if (std::filesystem::exists(installed)) return installed.string();
+    return "";
+}
+
+std::vector<std::string> peerTechniques(const std::string& program) {
+    std::vector<std::string> names;
+    FILE* pipe = popen((shellQuoted(program) + " --technique list 2>/dev/null").c_str(), "r");
+    if (!pipe) return names;
+    char line[256];
+    while (std::fgets(line, sizeof line, pipe)) {
+        std::string name(line);
+        while (!name.empty() && (name.back() == '\n' || name.back() == '\r')) name.pop_back();
+        if (!name.empty()) names.push_back(name);
+    }
+    if (pclose(pipe) != 0) names.clear();
+    return names;
+}
+
+std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::SceneTruth& truth,
+                                  const std::filesystem::path& workDir, std::string& error) {
+    const std::string base =
+        safeName(request.technique + "_" + truth.scene.name + "_" + std::to_string(request.mapSize));
+    const std::filesystem::path frame = workDir / (base + ".pgm");
+    const std::filesystem::path json = workDir / (base + ".json");
+    const std::filesystem::path log = workDir / (base + ".log");
+    std::ostringstream command;
+    command << shellQuoted(request.program) << " --scene " << shellQuoted(request.scene) << " --technique "
+            << shellQuoted(request.technique) << " --map-size " << request.mapSize << " --width "
+            << request.width << " --height " << request.height << " --frames " << request.frames
+            << " --warmup " << request.warmup << " --out-visibility " << shellQuoted(frame.string())
+            << " --out-json " << shellQuoted(json.string());
+    if (truth.light && truth.light->type == runtime::Light::Type::Directional) {
+        char direction[96];
+        std::snprintf(direction, sizeof direction, "%.9g,%.9g,%.9g", truth.light->direction.x,
+                      truth.light->direction.y, truth.light->direction.z);
+        command << " --light-direction " << direction;
+    }
+    command << " >" << shellQuoted(log.string()) << " 2>&1";
+    if (std::system(command.str().c_str()) != 0) {
+        std::ifstream in(log);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        error = request.program + " failed on " + truth.scene.name + " (" + request.technique + "): " + text;
+        return std::nullopt;
+    }
+    PeerResult result;
+    int width = 0, height = 0;
+    if (!readPgm(frame, width, height, result.visibility)) {
+        error = "cannot read the peer's frame " + frame.string();
+        return std::nullopt;
+    }
+    if (width != truth.gbuffer.width || height != truth.gbuffer.height) {
+        error = "the peer's frame is " + std::to_string(width) + "x" + std::to_string(height) +
+                ", the G-buffer's " + std::to_string(truth.gbuffer.width) + "x" +
+                std::to_string(truth.gbuffer.height);
+        return std::nullopt;
+    }
+    std::filesystem::remove(frame);
+    try {
+        std::ifstream in(json);
+        const nlohmann::json record = nlohmann::json::parse(in);
+        result.frameMs = record.at("frame_ms").get<std::vector<double>>();
+        result.glRenderer = record.at("gl_renderer").get<std::string>();
+        result.libraryVersion = record.value("osg_version", "");
+    } catch (const std::exception& e) {
+        error = "cannot read the peer's record " + json.string() + ": " + e.what();
+        return std::nullopt;
+    }
+    if (result.frameMs.empty()) {
+        error = "the peer timed no frames";
+        return std::nullopt;
+    }
+    return result;
+}
+
+}  // namespace shadowfx::cli

@@ -1,0 +1,47 @@
+// PeerRun: one run of another library's shadow technique on a shadowfx scene (`shadowfx bench --peers`):
+// the peer program renders the scene with the technique, times its frames and writes a visibility frame
+// (lit 1, shadowed 0), which is scored against the same ray-cast ground truth as shadowfx's effects.
+// docs/peers.md describes the peers and how their frames are made comparable.
+#pragma once
+
+#include <runtime/ShadowMeasurement.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowfx::cli {
+
+struct PeerRequest {
+    std::string program;    // the peer's executable
+    std::string scene;      // as --scenes named it: a built-in name or a scene file
+    std::string technique;  // the peer's name for it ("ShadowMap", "VDSM-persp-2", ...)
+    int mapSize = 1024;
+    int width = 640;
+    int height = 480;
+    int frames = 10;
+    int warmup = 2;
+};
+
+struct PeerResult {
+    std::vector<double> frameMs;    // the timed frames, wall time until the GPU finished
+    std::vector<float> visibility;  // per pixel, rows top to bottom (the G-buffer's order)
+    std::string glRenderer;
+    std::string libraryVersion;
+};
+
+// Where the built peer `name` ("osg") is: next to this build's shadowfx, or next to the installed one;
+// empty if it was not built (its library was not found when configuring).
+std::string findPeerProgram(const std::string& name);
+
+// The techniques the peer program offers (it lists them), in its order; empty if it cannot be run.
+std::vector<std::string> peerTechniques(const std::string& program);
+
+// Runs the peer for `request` on the scene of `truth` (its light's direction is passed on, so that a light
+// turned by --light-angle-to-view is the peer's light too). Its JSON and log are left in `workDir`.
+// nullopt, with why in `error`, if the program fails or its frame is not the G-buffer's size.
+std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::SceneTruth& truth,
+                                  const std::filesystem::path& workDir, std::string& error);
+
+}  // namespace shadowfx::cli
