@@ -230,16 +230,17 @@ TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
     std::filesystem::remove_all(out);
     std::filesystem::create_directories(out);
     const std::filesystem::path scene = out / "wall.json";
-    // A wall and a post under a low sun from the side: long shadows across the ground, edges in both axes.
+    // A wall and a post with the light behind them: long shadows towards the camera, edges in both axes
+    // (a quarter of the receivers in shadow).
     std::ofstream(scene) << R"({
   "name": "wall-and-post",
   "objects": [
     {"name": "ground", "mesh": {"primitive": "plane", "size": 12}},
-    {"name": "wall", "mesh": {"primitive": "box", "size": 1.0}, "translate": [-1.5, 1, 1], "scale": [3, 2, 0.3]},
-    {"name": "post", "mesh": {"primitive": "box", "size": 1.0}, "translate": [2, 1.5, -1], "scale": [0.6, 3, 0.6]}
+    {"name": "wall", "mesh": {"primitive": "box", "size": 1.0}, "translate": [-1, 1.25, 0.5], "scale": [5, 2.5, 0.3]},
+    {"name": "post", "mesh": {"primitive": "box", "size": 1.0}, "translate": [2.5, 1.5, -2], "scale": [0.8, 3, 0.8]}
   ],
-  "camera": {"position": [1, 7, -9], "target": [0, 0, 0.5], "fov": 55, "near": 0.1, "far": 40},
-  "lights": [{"name": "light0", "type": "directional", "direction": [0.8, -0.6, 0.35]}]
+  "camera": {"position": [0, 8, -9], "target": [0, 0, 0.5], "fov": 55, "near": 0.1, "far": 40},
+  "lights": [{"name": "light0", "type": "directional", "direction": [0.3, -0.45, -0.8]}]
 }
 )";
     std::string output;
@@ -264,7 +265,7 @@ TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
         EXPECT_EQ(run["effect"], "osg");
         ASSERT_TRUE(run["error"].is_object());
         EXPECT_EQ(run["error"]["receiver_pixels"].get<double>(), receivers);
-        EXPECT_LT(run["error"]["misclassified_percent"].get<double>(), 1.5) << run.dump(2);
+        EXPECT_LT(run["error"]["misclassified_percent"].get<double>(), 1.0) << run.dump(2);
         EXPECT_GT(run["frame_time_ms"]["median"].get<double>(), 0.0);
         EXPECT_TRUE(run["gpu_time_ms"].is_null());
         ASSERT_TRUE(run["error_image"].is_string());
