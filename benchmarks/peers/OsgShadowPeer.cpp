@@ -464,6 +464,9 @@ int main(int argc, char** argv) {
     camera->setReadBuffer(GL_BACK);
     const runtime::Camera& eye = scene->camera;
     camera->setViewMatrixAsLookAt(mirrored(eye.position), mirrored(eye.target), mirrored(eye.up));
+    // The scene's near and far planes, as shadowfx's camera has them: OSG would otherwise compute its own
+    // from the bounds, draw what lies beyond the far plane and fit its view-dependent maps to that depth.
+    camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setProjectionMatrixAsPerspective(glm::degrees(eye.fovY),
                                              static_cast<double>(options.width) / options.height,
                                              eye.nearPlane, eye.farPlane);
