@@ -1,6 +1,9 @@
 // Preprocessor: glslang's preprocessor with an effect-aware includer; its errors become diagnostics.
 #include "Preprocessor.h"
 
+#include "CaseBlindPath.h"
+#include "SourceText.h"
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
@@ -182,6 +185,11 @@ public:
 
     // Why the include of `headerName` failed (for the "Could not process include" error), if it did.
     std::map<std::string, std::string> failures;
+    // Includes found only by ignoring case: the including file, the name as written, the file opened.
+    struct CaseMismatch {
+        std::string includer, header, found;
+    };
+    std::vector<CaseMismatch> caseMismatches;
 
 private:
     IncludeResult* include(const char* headerName, const char* includerName, size_t depth, bool system) {
@@ -209,18 +217,31 @@ private:
                 (isOnChain(header, includer) ? " (recursive include of '" + header + "')" : "");
             return nullptr;
         }
+        // D3DX and FX Composer look beside the including file, then beside the root effect, then in the
+        // include paths.
         std::vector<std::string> candidates;
         if (!header.empty() && header[0] == '/')
             candidates.push_back(header);
         else {
             candidates.push_back(normalizePath(folderOf(includer) + header));
+            candidates.push_back(normalizePath(folderOf(mOut.includedFiles.front()) + header));
             for (const std::string& dir : mOptions.includeDirs)
                 candidates.push_back(normalizePath(dir.empty() ? header : dir + "/" + header));
         }
-        for (const std::string& candidate : candidates) {
+        // The systems these effects were written on have case-blind file names: a name that differs
+        // only in case is found too (on disk only), with a warning, after every exact candidate.
+        const size_t exactCandidates = candidates.size();
+        if (!mOptions.readFile)
+            for (size_t i = 0; i < exactCandidates; ++i)
+                if (std::optional<std::string> found = findPathIgnoringCase(candidates[i]))
+                    candidates.push_back(*found);
+        for (size_t i = 0; i < candidates.size(); ++i) {
+            const std::string& candidate = candidates[i];
             std::optional<std::string> text =
                 mOptions.readFile ? mOptions.readFile(candidate) : readFromDisk(candidate);
             if (!text) continue;
+            text = decodeSourceText(*text);
+            if (i >= exactCandidates) caseMismatches.push_back({includer, headerName, candidate});
             mTotalBytes += text->size();
             if (mTotalBytes > mOptions.maxSourceBytes) {
                 failures[headerName] =
@@ -264,9 +285,10 @@ std::string folderOf(const std::string& path) {
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
-bool preprocessEffect(const std::string& source, const std::string& path, const ParseOptions& options,
+bool preprocessEffect(const std::string& bytes, const std::string& path, const ParseOptions& options,
                       DiagnosticSink& diagnostics, PreprocessedSource& out) {
     initializeGlslang();
+    const std::string source = decodeSourceText(bytes);
     out.files[path] = markStringizing(source);
     out.includedFiles = {path};
     if (source.size() > options.maxSourceBytes) {
@@ -347,6 +369,23 @@ bool preprocessEffect(const std::string& source, const std::string& path, const 
             diagnostics.report(DiagId::PreprocessorError, loc, {message});
         }
         reported = true;
+    }
+    for (const EffectIncluder::CaseMismatch& mismatch : includer.caseMismatches) {
+        // Point at the directive that named the file.
+        SourceLoc loc{mismatch.includer, 0, 0};
+        if (auto file = out.files.find(mismatch.includer); file != out.files.end()) {
+            std::istringstream lines(file->second);
+            std::string text;
+            for (int number = 1; std::getline(lines, text); ++number) {
+                const size_t at = text.find(mismatch.header);
+                if (at != std::string::npos && text.find("include") != std::string::npos) {
+                    loc.line = number;
+                    loc.column = static_cast<int>(at);
+                    break;
+                }
+            }
+        }
+        diagnostics.report(DiagId::IncludeCaseMismatch, loc, {mismatch.header, mismatch.found});
     }
     if (!ok && !reported)
         diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0}, {"preprocessing failed"});

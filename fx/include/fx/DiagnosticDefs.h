@@ -8,6 +8,8 @@
 // [SECTION] Input and preprocessing
 FX_DIAGNOSTIC(FileNotFound, Error, "cannot open file '{0}'")
 FX_DIAGNOSTIC(IncludeNotFound, Error, "cannot open include file '{0}'")
+FX_DIAGNOSTIC(IncludeCaseMismatch, Warning,
+              "include file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
 FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
@@ -30,7 +32,10 @@ FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
 FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
-FX_DIAGNOSTIC(ScriptUnknownTechnique, Error, "script names technique '{0}', which the effect does not have")
+FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
+              "script names technique '{0}', which the effect does not have; skipped")
+FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
+              "script names no technique the effect has; running its first technique, '{0}'")
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
 FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
 FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is accepted and ignored")
@@ -55,7 +60,8 @@ FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
-FX_DIAGNOSTIC(TextureFileMissing, Error, "texture file '{0}' not found (looked for '{1}')")
+FX_DIAGNOSTIC(TextureCaseMismatch, Warning,
+              "texture file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
 FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}")
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
 FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
