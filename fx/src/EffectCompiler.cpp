@@ -10,6 +10,7 @@
 #include <fx/EffectCompiler.h>
 #include <fx/Preshader.h>
 
+#include "CaseBlindPath.h"
 #include "HlslToSpirv.h"
 #include "PassLowering.h"
 #include "SpirvToGlsl.h"
@@ -80,7 +81,6 @@ private:
     void parameterInfo();
     void passAnnotations(const Pass& source, CompiledPass& pass);
     void textures();
-    static bool isLoadableImage(const std::string& resource);
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
     void samplers();
     void scripts();
@@ -208,7 +208,16 @@ void Compiler::textures() {
         TextureDesc t;
         t.parameter = i;
         t.loc = p.loc;
-        t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube : BaseType::Texture2D;
+        t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube
+                 : p.type.base == BaseType::Texture3D ? BaseType::Texture3D
+                                                      : BaseType::Texture2D;
+        // An untyped `texture` says what it holds in FX Composer's ResourceType annotation.
+        if (const Annotation* a = p.annotation("ResourceType");
+            a && p.type.base == BaseType::Texture && a->value.kind == Expr::Kind::String) {
+            if (equalsIgnoreCase(a->value.text, "Cube")) t.type = BaseType::TextureCube;
+            if (equalsIgnoreCase(a->value.text, "3D") || equalsIgnoreCase(a->value.text, "Volume"))
+                t.type = BaseType::Texture3D;
+        }
         std::string semantic = upper(p.semantic);
         t.kind = semantic == "RENDERCOLORTARGET"          ? TextureDesc::Kind::RenderColorTarget
                  : semantic == "RENDERDEPTHSTENCILTARGET" ? TextureDesc::Kind::RenderDepthStencilTarget
@@ -239,12 +248,27 @@ void Compiler::textures() {
             }
             return true;
         };
-        if (const Annotation* a = p.annotation("Dimensions")) {
-            if (auto v = eval(a->value, &int2); v && checkSize(v->data[0], v->data[1], a->loc)) {
-                t.width = static_cast<int>(v->data[0]);
-                t.height = static_cast<int>(v->data[1]);
-            }
+        // FX Composer also treated a texture as a render target when only its size annotations said so
+        // (`RenderTargetDimensions`, `ViewPortRatio`), with no RENDERCOLORTARGET semantic; its Format
+        // tells colour from depth.
+        if (t.kind == TextureDesc::Kind::Runtime && p.semantic.empty() &&
+            (p.annotation("RenderTargetDimensions") || p.annotation("ViewPortRatio"))) {
+            const Annotation* format = p.annotation("Format");
+            const std::optional<TextureFormat> f = format && format->value.kind == Expr::Kind::String
+                                                       ? parseTextureFormat(format->value.text)
+                                                       : std::nullopt;
+            depth = f && isDepthFormat(*f);
+            t.kind =
+                depth ? TextureDesc::Kind::RenderDepthStencilTarget : TextureDesc::Kind::RenderColorTarget;
+            t.format = depth ? TextureFormat::D24S8 : TextureFormat::RGBA8;
         }
+        for (const char* dimensions : {"Dimensions", "RenderTargetDimensions"})
+            if (const Annotation* a = p.annotation(dimensions)) {
+                if (auto v = eval(a->value, &int2); v && checkSize(v->data[0], v->data[1], a->loc)) {
+                    t.width = static_cast<int>(v->data[0]);
+                    t.height = static_cast<int>(v->data[1]);
+                }
+            }
         const Annotation* w = p.annotation("width");
         const Annotation* h = p.annotation("height");
         if (w || h) {
@@ -289,27 +313,25 @@ void Compiler::textures() {
         if (!resource.empty() && t.kind == TextureDesc::Kind::Runtime) {
             t.kind = TextureDesc::Kind::File;
             t.resourceName = resource;
-            std::filesystem::path path = base / resource;
+            std::string name = resource;  // "textures\\rock.dds" names a folder on Windows
+            for (char& c : name)
+                if (c == '\\') c = '/';
+            std::filesystem::path path = base / name;
             std::error_code ec;
-            if (std::filesystem::exists(path, ec))
+            if (std::filesystem::exists(path, ec)) {
                 t.resolvedPath = path.string();
-            else if (isLoadableImage(resource))
-                // The effect cannot render as written without it: an error, unlike a format shadowfx
-                // could not read anyway (DDS in FX Composer's samples), which stays a warning.
-                error(DiagId::TextureFileMissing, resourceLoc, {resource, path.lexically_normal().string()});
-            else
-                mDiagnostics.report(DiagId::TextureFileNotFound, p.loc, {resource});
+            } else if (std::optional<std::string> found = detail::findPathIgnoringCase(path.string())) {
+                t.resolvedPath = *found;
+                mDiagnostics.report(DiagId::TextureCaseMismatch, resourceLoc, {resource, *found});
+            } else {
+                // FX Composer drew with a default texture when a file was missing, and so do we, whatever
+                // the file's type: a located warning, and a neutral (white) texture at run time.
+                mDiagnostics.report(DiagId::TextureFileNotFound, resourceLoc, {resource});
+            }
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
         mOut->textures.push_back(std::move(t));
     }
-}
-
-bool Compiler::isLoadableImage(const std::string& resource) {
-    std::string extension = upper(std::filesystem::path(resource).extension().string());
-    for (const char* known : {".PNG", ".HDR", ".TGA", ".JPG", ".JPEG", ".BMP"})
-        if (extension == known) return true;
-    return false;
 }
 
 // `string Procedural = "noise"; int Seed = 7;` with Dimensions (default 64x64) and Format (default
@@ -368,6 +390,14 @@ void Compiler::samplers() {
                     error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
                 else
                     s.texture = it->second;
+                // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.
+                if (s.texture && mEffect.parameters[*s.texture].type.base == BaseType::Texture &&
+                    (p.type.base == BaseType::SamplerCube || p.type.base == BaseType::Sampler3D)) {
+                    for (TextureDesc& t : mOut->textures)
+                        if (t.parameter == *s.texture)
+                            t.type = p.type.base == BaseType::SamplerCube ? BaseType::TextureCube
+                                                                          : BaseType::Texture3D;
+                }
                 continue;
             }
             std::vector<float> value;
@@ -476,20 +506,34 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
             case ScriptCommand::Kind::RenderColorTarget:
             case ScriptCommand::Kind::RenderDepthStencilTarget: {
                 if (c.value.empty()) break;
+                // What textures() made of the declaration: a RENDERCOLORTARGET semantic, or FX Composer's
+                // size annotations alone.
                 auto it = mIndex.find(c.value);
-                std::string semantic =
-                    it == mIndex.end() ? "" : upper(mEffect.parameters[it->second].semantic);
-                bool wantDepth = c.kind == ScriptCommand::Kind::RenderDepthStencilTarget;
-                if (semantic != (wantDepth ? "RENDERDEPTHSTENCILTARGET" : "RENDERCOLORTARGET"))
-                    error(DiagId::ScriptUnknownTarget, c.loc, {c.value});
+                const bool wantDepth = c.kind == ScriptCommand::Kind::RenderDepthStencilTarget;
+                const TextureDesc::Kind want = wantDepth ? TextureDesc::Kind::RenderDepthStencilTarget
+                                                         : TextureDesc::Kind::RenderColorTarget;
+                bool isTarget = false;
+                for (const TextureDesc& t : mOut->textures)
+                    isTarget =
+                        isTarget || (it != mIndex.end() && t.parameter == it->second && t.kind == want);
+                if (!isTarget) error(DiagId::ScriptUnknownTarget, c.loc, {c.value});
                 break;
             }
             case ScriptCommand::Kind::Technique: {
-                for (const std::string& name :
-                     {c.selectorCondition.empty() ? c.value : c.selectorTrue,
-                      c.selectorCondition.empty() ? std::string() : c.selectorFalse})
-                    if (!name.empty() && !mEffect.findTechnique(name))
-                        error(DiagId::ScriptUnknownTechnique, c.loc, {name});
+                // D3DX and FX Composer never failed an effect over its technique selector: names the
+                // effect lacks (its D3D10 twins, techniques a #define renamed) are skipped with a warning,
+                // and with none left the first technique runs (runtime/src/ScriptInterpreter.cpp).
+                const std::vector<std::string> names =
+                    c.selectorCondition.empty() ? std::vector<std::string>{c.value} : c.selectorAlternatives;
+                bool any = false;
+                for (const std::string& name : names) {
+                    any = any || mEffect.findTechnique(name);
+                    if (!mEffect.findTechnique(name))
+                        mDiagnostics.report(DiagId::ScriptUnknownTechnique, c.loc, {name});
+                }
+                if (!any && !mEffect.techniques.empty())
+                    mDiagnostics.report(DiagId::ScriptTechniqueFallback, c.loc,
+                                        {mEffect.techniques.front().name});
                 break;
             }
             case ScriptCommand::Kind::LoopByCount: {
@@ -738,6 +782,24 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
         if (const Parameter* p = mEffect.findParameter(s.value.text);
             p && p->initializer && p->initializer->kind == Expr::Kind::Compile)
             return &*p->initializer;
+    }
+    // `VertexShader = (vsArray[CurNumBones]);`, the DirectX SDK's skinning idiom: an element of a shader
+    // array, the index a constant or a parameter. D3DX chose the element at every draw; shadowfx chooses
+    // it once, from the index's initial value.
+    if (s.value.kind == Expr::Kind::Index && s.value.args.size() == 2 &&
+        s.value.args[0].kind == Expr::Kind::Identifier) {
+        const Parameter* p = mEffect.findParameter(s.value.args[0].text);
+        TypeDesc scalar;
+        const std::optional<Value> index = eval(s.value.args[1], &scalar);
+        if (p && p->initializer && p->initializer->kind == Expr::Kind::InitList && index) {
+            const int i = index->asInt();
+            if (i >= 0 && static_cast<size_t>(i) < p->initializer->args.size() &&
+                p->initializer->args[static_cast<size_t>(i)].kind == Expr::Kind::Compile)
+                return &p->initializer->args[static_cast<size_t>(i)];
+            error(DiagId::InvalidCompileExpression, s.value.args[1].loc,
+                  {"index " + std::to_string(i) + " is outside shader array '" + p->name + "'"});
+            return nullptr;
+        }
     }
     error(DiagId::InvalidCompileExpression, s.value.loc,
           {"'" + s.value.str() + "' is not a compile expression"});

@@ -12,6 +12,7 @@
 
 #include "Lexer.h"
 #include "Preprocessor.h"
+#include "UserFunctionInliner.h"
 
 #include <cmath>
 #include <cstring>
@@ -146,6 +147,7 @@ private:
         throw SyntaxError{};
     }
     void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        if (mSpeculative) throw SyntaxError{};  // trying a reading that may not fit: nothing to report
         mDiag.report(id, loc, args);
         if (mDiag.errors() >= kMaxErrors) throw TooManyErrors{};
     }
@@ -316,30 +318,69 @@ private:
             fail(DiagId::UnexpectedToken, token.loc, {"a dimension 1..4", value.str()});
         return static_cast<int>(number);
     }
-    static bool constantValue(const Expr& e, double& out) {
+    // A compile-time constant: literals, the effect's `static const` / `const` scalars declared before
+    // (D3D9 sizes arrays with them: `float4x3 m[MAX_MATRICES]`), casts and integer arithmetic.
+    bool constantValue(const Expr& e, double& out, int depth = 0) const {
+        if (depth > 32) return false;
+        auto integer = [](double x) {
+            return std::isfinite(x) && std::abs(x) < 2147483648.0 ? static_cast<int64_t>(x) : int64_t{0};
+        };
         switch (e.kind) {
             case Expr::Kind::Number:
             case Expr::Kind::Bool:
                 out = e.number;
                 return true;
+            case Expr::Kind::Identifier: {
+                const Parameter* p = mEffect.findParameter(e.text);
+                if (!p || !(p->isConst || p->isStatic) || !p->initializer || !p->type.isNumeric() ||
+                    !p->type.arrayDims.empty())
+                    return false;
+                if (!constantValue(*p->initializer, out, depth + 1)) return false;
+                if (p->type.base == BaseType::Int || p->type.base == BaseType::UInt) out = std::trunc(out);
+                return true;
+            }
+            case Expr::Kind::Cast:
+            case Expr::Kind::Call:
+                // (int)x, int(x), float(x)
+                if (e.args.size() != 1 || !constantValue(e.args[0], out, depth + 1)) return false;
+                if (e.kind == Expr::Kind::Call && e.text != "int" && e.text != "uint" && e.text != "float")
+                    return false;
+                if ((e.kind == Expr::Kind::Cast &&
+                     (e.castType.base == BaseType::Int || e.castType.base == BaseType::UInt)) ||
+                    e.text == "int" || e.text == "uint")
+                    out = std::trunc(out);
+                return true;
             case Expr::Kind::Unary: {
                 double a;
-                if (e.args.size() != 1 || !constantValue(e.args[0], a)) return false;
+                if (e.args.size() != 1 || !constantValue(e.args[0], a, depth + 1)) return false;
                 out = e.text == "-" ? -a : e.text == "+" ? a : e.text == "!" ? !a : 0;
                 return e.text != "~";
             }
+            case Expr::Kind::Ternary: {
+                double c;
+                if (e.args.size() != 3 || !constantValue(e.args[0], c, depth + 1)) return false;
+                return constantValue(e.args[c != 0 ? 1 : 2], out, depth + 1);
+            }
             case Expr::Kind::Binary: {
                 double a, b;
-                if (e.args.size() != 2 || !constantValue(e.args[0], a) || !constantValue(e.args[1], b))
+                if (e.args.size() != 2 || !constantValue(e.args[0], a, depth + 1) ||
+                    !constantValue(e.args[1], b, depth + 1))
                     return false;
+                const int64_t ia = integer(a), ib = integer(b);
                 if (e.text == "+")
                     out = a + b;
                 else if (e.text == "-")
                     out = a - b;
                 else if (e.text == "*")
                     out = a * b;
-                else if (e.text == "/" && b != 0)
-                    out = a / b;
+                else if (e.text == "/" && b != 0)  // whole operands divide as HLSL's ints do
+                    out = a == std::trunc(a) && b == std::trunc(b) ? std::trunc(a / b) : a / b;
+                else if (e.text == "%" && ib != 0)
+                    out = static_cast<double>(ia % ib);
+                else if (e.text == "<<" && ib >= 0 && ib < 32)
+                    out = static_cast<double>(ia * (int64_t{1} << ib));
+                else if (e.text == ">>" && ib >= 0 && ib < 32)
+                    out = static_cast<double>(ia >> ib);
                 else
                     return false;
                 return true;
@@ -675,6 +716,7 @@ private:
         } else {
             if (!check("{")) unexpected("'{' or ';'");
             const Token& open = advance();
+            const size_t bodyBegin = mPos;
             int depth = 1;
             while (depth > 0) {
                 if (atEnd()) unclosed("{", open);
@@ -683,11 +725,61 @@ private:
                 advance();
             }
             last = mPos - 1;
+            decl.straightBody = parseStraightBody(bodyBegin, last);
         }
         decl.hlslText = sliceText(first, last);
         decl.hlslLoc = sliceLoc(first);
         mEffect.functions.push_back(std::move(decl));
         mEffect.order.push_back({DeclRef::Kind::Function, mEffect.functions.size() - 1});
+    }
+
+    // The statements of tokens [begin, end) if they are straight-line code (FunctionDecl::straightBody),
+    // else nothing. Tried without reporting: any other body is HLSL's business, not the effect parser's.
+    std::vector<FunctionDecl::Statement> parseStraightBody(size_t begin, size_t end) {
+        using Statement = FunctionDecl::Statement;
+        const size_t resume = mPos;
+        std::vector<Statement> body;
+        mSpeculative = true;
+        try {
+            mPos = begin;
+            while (mPos < end) {
+                Statement statement;
+                if (accept("return")) {
+                    statement.kind = Statement::Kind::Return;
+                    statement.value = parseExpr();
+                    statement.hasValue = true;
+                } else if (peek().kind == Token::Kind::Identifier &&
+                           (peek(1).is("=") || peek(1).is("+=") || peek(1).is("-=") || peek(1).is("*=") ||
+                            peek(1).is("/="))) {
+                    statement.kind = Statement::Kind::Assign;
+                    statement.name = advance().text;
+                    statement.op = advance().text;
+                    statement.value = parseExpr();
+                    statement.hasValue = true;
+                } else {
+                    accept("const");
+                    accept("static");
+                    statement.kind = Statement::Kind::Declare;
+                    statement.type = parseType();
+                    statement.name = expectIdentifier("a name").text;
+                    if (check("[")) throw SyntaxError{};  // local arrays: not straight-line values
+                    if (accept("=")) {
+                        statement.value = parseExpr();
+                        statement.hasValue = true;
+                    }
+                }
+                expect(";");
+                body.push_back(std::move(statement));
+            }
+            if (mPos != end || body.empty() || body.back().kind != Statement::Kind::Return) body.clear();
+            for (size_t i = 0; i + 1 < body.size(); ++i)
+                if (body[i].kind == Statement::Kind::Return) body.clear();
+        } catch (const SyntaxError&) {
+            body.clear();
+        }
+        mSpeculative = false;
+        mPos = resume;
+        return body;
     }
 
     // [SECTION] Annotations
@@ -783,6 +875,7 @@ private:
             expect(")");
             expect(";");
             normalizeCompileShader(value);
+            normalizeNull(value);
             std::string stage = name.text.substr(3);
             if (stage == "VertexShader" || stage == "PixelShader") {
                 state.name = stage;
@@ -816,6 +909,7 @@ private:
         if (check("asm")) fail(DiagId::UnsupportedFeature, peek().loc, {"asm shaders are not supported"});
         state.value = parseExpr();
         normalizeCompileShader(state.value);
+        normalizeNull(state.value);
         expect(";");
         std::optional<RenderStateId> id = findRenderState(state.name);
         if (!id) {
@@ -831,6 +925,11 @@ private:
         else
             resolveStateValue(state.value, info.domain, state.name);
         pass.states.push_back(std::move(state));
+    }
+
+    // D3DX's effect compiler took `null` (any case) for `NULL`; spell it one way for what follows.
+    static void normalizeNull(Expr& e) {
+        if (e.kind == Expr::Kind::Identifier && equalsIgnoreCase(e.text, "NULL")) e.text = "NULL";
     }
 
     // CompileShader(vs_4_0, VS(args)) -> Compile expression, anywhere in `e`.
@@ -866,6 +965,12 @@ private:
             }
         }
         if (v.kind == Expr::Kind::Number && v.number == 0) return;
+        if (v.kind == Expr::Kind::Index && !v.args.empty() && v.args[0].kind == Expr::Kind::Identifier) {
+            const Parameter* p = mEffect.findParameter(v.args[0].text);
+            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader) &&
+                !p->type.arrayDims.empty())
+                return;  // an element of a shader array (EffectCompiler resolves the index)
+        }
         error(DiagId::InvalidStateValue, v.loc,
               {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
     }
@@ -1258,6 +1363,7 @@ private:
     std::set<std::string> mTypeNames;
     int mDepth = 0;
     bool mNoGreater = false;
+    bool mSpeculative = false;  // parseStraightBody(): errors throw without a report
 };
 
 }  // namespace
@@ -1275,6 +1381,7 @@ std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::
     Parser parser(std::move(tokens), pp.text, *effect, counted);
     parser.parseEffect();
     if (counted.errors() > 0) return nullptr;
+    detail::inlineUserFunctionCalls(*effect);
     return effect;
 }
 

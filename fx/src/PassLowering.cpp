@@ -44,6 +44,8 @@ std::pair<std::string, int> splitSemantic(const std::string& canonical) {
 
 std::string canonicalSemantic(const std::string& semantic) {
     std::string s = upper(semantic);
+    // D3D9's `TEXCOORD0_centroid` modifier: the interpolation is taken in gatherFields().
+    if (s.size() > 9 && s.compare(s.size() - 9, 9, "_CENTROID") == 0) s.resize(s.size() - 9);
     // Indexed semantics get their index spelled out so that TEXCOORD and TEXCOORD0 are one key.
     static const char* kIndexed[] = {"TEXCOORD", "COLOR",       "NORMAL",       "TANGENT",
                                      "BINORMAL", "BLENDWEIGHT", "BLENDINDICES", "POSITION",
@@ -78,6 +80,19 @@ std::string vertexInputSemantic(int location) {
     return "";
 }
 
+// Vertex inputs D3D9 declared that no mesh here supplies (a second tangent frame, more blend weights,
+// point size, fog): they read a constant, as an unbound D3D9 stream reads its default.
+std::optional<std::string> vertexInputDefault(const std::string& semantic) {
+    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
+    if (name == "PSIZE") return "float4(1, 1, 1, 1)";
+    if (name == "FOG" || name == "TESSFACTOR" || name == "DEPTH" || name == "SAMPLE")
+        return "float4(0, 0, 0, 0)";
+    for (const char* known : {"POSITION", "NORMAL", "TEXCOORD", "COLOR", "TANGENT", "BINORMAL", "BLENDWEIGHT",
+                              "BLENDINDICES", "POSITIONT"})
+        if (name == known && index < 16) return name == "COLOR" ? "float4(1, 1, 1, 1)" : "float4(0, 0, 0, 1)";
+    return std::nullopt;
+}
+
 std::optional<int> varyingLocation(const std::string& semantic) {
     auto [name, index] = splitSemantic(canonicalSemantic(semantic));
     if (name == "TEXCOORD" && index < 8) return index;
@@ -86,6 +101,9 @@ std::optional<int> varyingLocation(const std::string& semantic) {
     if (name == "TANGENT" && index == 0) return 11;
     if (name == "BINORMAL" && index == 0) return 12;
     if (name == "FOG" && index == 0) return 13;
+    // vs_3_0 has ten texture-coordinate outputs; matrix varyings spill into the indices above them.
+    if (name == "TEXCOORD" && index < 16) return 14 + index - 8;
+    if (name == "COLOR" && index < 4) return 22 + index - 2;
     return std::nullopt;
 }
 
@@ -348,7 +366,16 @@ struct Field {
     std::string semantic;  // canonical
     std::string interpolation;
     SourceLoc loc;
+    // A matrix's column: D3D9 gives a matrix varying or input one register per column (its default
+    // column_major packing), at consecutive semantic indices. lvalue names the whole matrix then, and
+    // type is the column's vector.
+    int column = -1;
 };
+
+// The value a field holds, for an output: the column of a matrix or the lvalue itself.
+std::string fieldValue(const Field& f) {
+    return f.column < 0 ? f.lvalue : "transpose(" + f.lvalue + ")[" + std::to_string(f.column) + "]";
+}
 
 void gatherFields(const Effect& effect, const TypeDesc& type, const std::string& semantic,
                   const std::string& interpolation, const std::string& lvalue, const SourceLoc& loc,
@@ -362,7 +389,34 @@ void gatherFields(const Effect& effect, const TypeDesc& type, const std::string&
         return;
     }
     if (semantic.empty()) return;  // left zero, as an unbound D3D9 register reads
-    out.push_back(Field{lvalue, type, canonicalSemantic(semantic), interpolation, loc});
+    const std::string canonical = canonicalSemantic(semantic);
+    const std::string upperSemantic = upper(semantic);
+    const bool centroid =
+        upperSemantic.size() > 9 && upperSemantic.compare(upperSemantic.size() - 9, 9, "_CENTROID") == 0;
+    const std::string interp = centroid && interpolation.empty() ? std::string("centroid") : interpolation;
+    auto [name, index] = splitSemantic(canonical);
+    if (!type.arrayDims.empty() && depth <= 8) {
+        // An array takes consecutive semantic indices, each element as many as it needs.
+        TypeDesc element = type;
+        element.arrayDims.erase(element.arrayDims.begin());
+        int perElement = 1;
+        for (int dim : element.arrayDims) perElement *= std::max(dim, 1);
+        if (element.shape == Shape::Matrix) perElement *= element.cols;
+        for (int i = 0; i < std::min(type.arrayDims.front(), 32); ++i)
+            gatherFields(effect, element, name + std::to_string(index + i * perElement), interp,
+                         lvalue + "[" + std::to_string(i) + "]", loc, out, depth + 1);
+        return;
+    }
+    if (type.shape == Shape::Matrix) {
+        TypeDesc column = type;
+        column.shape = type.rows == 1 ? Shape::Scalar : Shape::Vector;
+        column.cols = type.rows;
+        column.rows = 1;
+        for (int k = 0; k < type.cols; ++k)
+            out.push_back(Field{lvalue, column, name + std::to_string(index + k), interp, loc, k});
+        return;
+    }
+    out.push_back(Field{lvalue, type, canonical, interp, loc});
 }
 
 int fieldComponents(const Field& f) {
@@ -376,6 +430,18 @@ std::string narrowTo(const Field& f, const std::string& expr) {
     TypeDesc t = f.type;
     t.arrayDims.clear();
     return "(" + hlslTypeName(t) + ")(" + expr + kSwizzle[n] + ")";
+}
+
+// The statement that stores `source` (a float4) into a field: the whole lvalue, or each row's element of
+// a matrix column.
+std::string assignField(const Field& f, const std::string& source) {
+    if (f.column < 0) return "    " + f.lvalue + " = " + narrowTo(f, source) + ";\n";
+    std::string body;
+    static const char kComponents[] = "xyzw";
+    for (int r = 0; r < std::clamp(f.type.cols, 1, 4); ++r)
+        body += "    " + f.lvalue + "[" + std::to_string(r) + "][" + std::to_string(f.column) + "] = (" +
+                source + ")." + kComponents[r] + ";\n";
+    return body;
 }
 
 class WrapperBuilder {
@@ -463,6 +529,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
     std::map<int, std::pair<TypeDesc, std::string>> attributes;  // location -> (type, semantic)
     for (const Field& f : fields) {
         auto location = vertexInputLocation(f.semantic);
+        if (!location && vertexInputDefault(f.semantic)) continue;
         if (!location || f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
             return fail(DiagId::UnsupportedFeature, f.loc,
                         {"vertex input semantic '" + f.semantic + "' is not supported"});
@@ -477,9 +544,17 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
                   std::to_string(location) + " : FX_IN" + std::to_string(location);
     }
     for (const Field& f : fields) {
-        int location = *vertexInputLocation(f.semantic);
-        const TypeDesc& declared = attributes[location].first;
-        std::string src = "fx_in" + std::to_string(location);
+        const std::optional<int> location = vertexInputLocation(f.semantic);
+        if (!location) {
+            body += assignField(f, *vertexInputDefault(f.semantic));
+            continue;
+        }
+        const TypeDesc& declared = attributes[*location].first;
+        std::string src = "fx_in" + std::to_string(*location);
+        if (f.column >= 0) {
+            body += assignField(f, src);  // the attribute is as wide as the column
+            continue;
+        }
         static const char* kSwizzle[] = {"", ".x", ".xy", ".xyz", ""};
         if (f.type.cols < declared.cols) src += kSwizzle[std::clamp(f.type.cols, 1, 4)];
         body += "    " + f.lvalue + " = " + src + ";\n";
@@ -511,12 +586,9 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             body += "    " + f.lvalue + " = " +
                     (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
         } else if (auto location = varyingLocation(s)) {
-            if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
-                return fail(DiagId::UnsupportedFeature, f.loc,
-                            {"matrix or array varying '" + f.lvalue + "'"});
             varyings.insert(*location);
             if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
-            body += "    " + f.lvalue + " = " + narrowTo(f, "fx_v" + std::to_string(*location)) + ";\n";
+            body += assignField(f, "fx_v" + std::to_string(*location));
         } else {
             return fail(DiagId::UnsupportedFeature, f.loc,
                         {"pixel input semantic '" + f.semantic + "' is not supported"});
@@ -549,15 +621,13 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely
                        // rely on it
         } else if (auto location = varyingLocation(s)) {
-            if (f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
-                return fail(DiagId::UnsupportedFeature, f.loc,
-                            {"matrix or array varying '" + f.lvalue + "'"});
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
                        std::to_string(*location) + ";\n";
             int n = std::clamp(f.type.cols, 1, 4);
-            std::string v = "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + f.lvalue + ")";
+            std::string v =
+                "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + fieldValue(f) + ")";
             body += "    fx_out." + name + " = " +
                     (n == 4 ? v
                             : "float4(" + v +
@@ -735,10 +805,18 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                         TypeDesc t = p.type;
                         if (t.base == BaseType::Sampler) {
                             const Parameter* tex = samplerTexture(effect, p);
-                            t.base = tex && tex->type.base == BaseType::TextureCube ? BaseType::SamplerCube
-                                     : tex && tex->type.base == BaseType::Texture3D ? BaseType::Sampler3D
-                                     : tex && tex->type.base == BaseType::Texture1D ? BaseType::Sampler1D
-                                                                                    : BaseType::Sampler2D;
+                            // An untyped texture's ResourceType annotation says "Cube" or "3D".
+                            const Annotation* kind = tex ? tex->annotation("ResourceType") : nullptr;
+                            const std::string resourceType =
+                                kind && kind->value.kind == Expr::Kind::String ? upper(kind->value.text) : "";
+                            t.base =
+                                tex && (tex->type.base == BaseType::TextureCube || resourceType == "CUBE")
+                                    ? BaseType::SamplerCube
+                                : tex && (tex->type.base == BaseType::Texture3D || resourceType == "3D" ||
+                                          resourceType == "VOLUME")
+                                    ? BaseType::Sampler3D
+                                : tex && tex->type.base == BaseType::Texture1D ? BaseType::Sampler1D
+                                                                               : BaseType::Sampler2D;
                         }
                         hlsl += hlslTypeName(t) + " " + p.name + arraySuffix(p.type) + ";\n";
                     }

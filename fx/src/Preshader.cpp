@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <map>
 
@@ -79,6 +80,14 @@ Value makeValue(const TypeDesc& type, std::vector<float> data) {
     return v;
 }
 
+// HLSL's value for an integer that does not fit 32 bits (the D3DCOLOR idiom `int c = 0xff202080;`, a
+// `0xFFFFFFFF` mask): the low 32 bits, as two's complement. A plain cast of such a double is undefined.
+int32_t wrapToInt32(double x) {
+    if (!std::isfinite(x)) return 0;
+    const double wrapped = std::fmod(std::trunc(x), 4294967296.0);  // (-2^32, 2^32)
+    return static_cast<int32_t>(static_cast<uint32_t>(static_cast<int64_t>(wrapped)));
+}
+
 // Stores a component in the representation of its base type: bools 0/1, ints truncated.
 float normalizeComponent(BaseType base, float x) {
     switch (base) {
@@ -87,7 +96,7 @@ float normalizeComponent(BaseType base, float x) {
         case BaseType::Int:
             return std::trunc(x);
         case BaseType::UInt:
-            return x < 0 ? static_cast<float>(static_cast<uint32_t>(static_cast<int64_t>(x))) : std::trunc(x);
+            return x < 0 ? static_cast<float>(static_cast<uint32_t>(wrapToInt32(x))) : std::trunc(x);
         default:
             return x;
     }
@@ -221,7 +230,7 @@ std::optional<Value> Evaluator::unary(const std::string& op, Value a, const Sour
         else if (op == "!")
             x = x == 0.0f ? 1.0f : 0.0f;
         else if (op == "~")
-            x = static_cast<float>(~static_cast<int32_t>(x));
+            x = static_cast<float>(~wrapToInt32(x));
     }
     if (op == "!") a.type.base = BaseType::Bool;
     if (op == "-" && a.type.base == BaseType::Bool) a.type.base = BaseType::Int;
@@ -248,7 +257,7 @@ std::optional<Value> Evaluator::binary(const std::string& op, Value av, Value bv
     std::vector<float> out(a->data.size());
     for (size_t i = 0; i < out.size(); ++i) {
         float x = a->data[i], y = b->data[i];
-        auto ix = static_cast<int64_t>(x), iy = static_cast<int64_t>(y);
+        const int64_t ix = wrapToInt32(x), iy = wrapToInt32(y);
         float r = 0.0f;
         if (op == "+")
             r = x + y;
@@ -745,7 +754,7 @@ public:
         using Op = PreshaderProgram::Instruction::Op;
         switch (e.kind) {
             case Expr::Kind::Number:
-                constant(e.isInteger ? Value::integer(static_cast<int>(e.number))
+                constant(e.isInteger ? Value::integer(wrapToInt32(e.number))
                                      : Value::scalar(static_cast<float>(e.number)));
                 return;
             case Expr::Kind::Bool:

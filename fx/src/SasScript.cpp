@@ -108,16 +108,44 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
             } else {
                 bool ok = true;
                 switch (command.kind) {
-                    case ScriptCommand::Kind::Clear:
-                        if (equalsIgnoreCase(value, "Color"))
-                            command.clear = ScriptCommand::ClearWhat::Color;
-                        else if (equalsIgnoreCase(value, "Depth"))
-                            command.clear = ScriptCommand::ClearWhat::Depth;
-                        else if (equalsIgnoreCase(value, "Stencil"))
-                            command.clear = ScriptCommand::ClearWhat::Stencil;
-                        else
-                            ok = false, invalid("expected Color, Depth or Stencil");
+                    case ScriptCommand::Kind::Clear: {
+                        // Every form FX Composer took: Color (also Color0..3), Depth, Stencil, the
+                        // combinations DepthStencil and All, and lists joined by '|' or '+'; one
+                        // command for each buffer.
+                        std::vector<ScriptCommand::ClearWhat> what;
+                        size_t from = 0;
+                        while (ok && from <= value.size()) {
+                            size_t bar = value.find_first_of("|+,", from);
+                            if (bar == std::string::npos) bar = value.size();
+                            const std::string word = trim(std::string_view(value).substr(from, bar - from));
+                            from = bar + 1;
+                            const bool color =
+                                equalsIgnoreCase(word, "Color") ||
+                                (word.size() == 6 && equalsIgnoreCase(word.substr(0, 5), "Color") &&
+                                 word[5] >= '0' && word[5] <= '3');
+                            const bool all = equalsIgnoreCase(word, "All");
+                            const bool depthStencil = equalsIgnoreCase(word, "DepthStencil") ||
+                                                      equalsIgnoreCase(word, "Depth_Stencil");
+                            if (color || all) what.push_back(ScriptCommand::ClearWhat::Color);
+                            if (equalsIgnoreCase(word, "Depth") || equalsIgnoreCase(word, "ZBuffer") || all ||
+                                depthStencil)
+                                what.push_back(ScriptCommand::ClearWhat::Depth);
+                            if (equalsIgnoreCase(word, "Stencil") || all || depthStencil)
+                                what.push_back(ScriptCommand::ClearWhat::Stencil);
+                            if (!color && !all && !depthStencil && !equalsIgnoreCase(word, "Depth") &&
+                                !equalsIgnoreCase(word, "ZBuffer") && !equalsIgnoreCase(word, "Stencil"))
+                                ok = false, invalid("expected Color, Depth, Stencil, DepthStencil or All");
+                        }
+                        if (!ok) break;
+                        command.clear = what.front();
+                        for (size_t k = 1; k < what.size(); ++k) {
+                            ScriptCommand more = command;
+                            more.clear = what[k];
+                            commands.push_back(command);
+                            command = more;
+                        }
                         break;
+                    }
                     case ScriptCommand::Kind::Draw:
                         if (equalsIgnoreCase(value, "Geometry"))
                             command.draw = ScriptCommand::DrawWhat::Geometry;
@@ -139,20 +167,28 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                             ok = false, invalid("expected a technique name");
                             break;
                         }
+                        // Condition?A:B, and FX Composer's list of alternatives
+                        // `Technique?Simple:Simple10:Textured:Textured10`.
                         size_t question = value.find('?');
                         if (question != std::string::npos) {
-                            size_t colon = value.find(':', question);
                             command.selectorCondition = trim(std::string_view(value).substr(0, question));
-                            if (colon == std::string::npos) {
+                            for (size_t from = question + 1;;) {
+                                const size_t colon = value.find(':', from);
+                                command.selectorAlternatives.push_back(
+                                    trim(std::string_view(value).substr(from, colon - from)));
+                                if (colon == std::string::npos) break;
+                                from = colon + 1;
+                            }
+                            const bool emptyName = std::any_of(
+                                command.selectorAlternatives.begin(), command.selectorAlternatives.end(),
+                                [](const std::string& name) { return name.empty(); });
+                            if (command.selectorCondition.empty() || emptyName) {
                                 ok = false, invalid("expected Condition?TechniqueA:TechniqueB");
                                 break;
                             }
-                            command.selectorTrue =
-                                trim(std::string_view(value).substr(question + 1, colon - question - 1));
-                            command.selectorFalse = trim(std::string_view(value).substr(colon + 1));
-                            if (command.selectorCondition.empty() || command.selectorTrue.empty() ||
-                                command.selectorFalse.empty())
-                                ok = false, invalid("expected Condition?TechniqueA:TechniqueB");
+                            command.selectorTrue = command.selectorAlternatives.front();
+                            if (command.selectorAlternatives.size() > 1)
+                                command.selectorFalse = command.selectorAlternatives[1];
                         }
                         break;
                     }
@@ -186,8 +222,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         break;
                     }
                     case ScriptCommand::Kind::ScriptExternal:
-                        diagnostics.report(DiagId::ScriptCommandIgnored, loc, {name});
-                        break;
+                        break;  // the host draws the scene here (runtime/src/ScriptInterpreter.cpp)
                     default:
                         break;
                 }

@@ -155,7 +155,7 @@ struct TextureDesc {
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;
-    BaseType type = BaseType::Texture2D;  // Texture2D or TextureCube
+    BaseType type = BaseType::Texture2D;  // Texture2D, TextureCube or Texture3D
     TextureFormat format = TextureFormat::RGBA8;
     int width = 0;  // Dimensions / width,height annotations; 0 when sized by viewportRatio
     int height = 0;

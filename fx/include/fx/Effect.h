@@ -141,6 +141,20 @@ struct FunctionDecl {
     std::string hlslText;  // the whole definition (attributes, signature and body)
     SourceLoc hlslLoc;     // where hlslText starts
     SourceLoc loc;         // the name's location
+
+    // A body of straight-line code: local declarations, assignments to locals, and a final return. Such
+    // a function, called in a pass's compile arguments or states, is inlined there and evaluated on the
+    // host as D3DX's preshaders did (fx/src/UserFunctionInliner.cpp). Empty for any other body.
+    struct Statement {
+        enum class Kind { Declare, Assign, Return };
+        Kind kind = Kind::Return;
+        TypeDesc type;     // Declare
+        std::string name;  // Declare, Assign: the local
+        std::string op;    // Assign: "=", "+=", "-=", "*=", "/="
+        Expr value;        // Declare's initializer, Assign's right-hand side, Return's value
+        bool hasValue = false;
+    };
+    std::vector<Statement> straightBody;
 };
 
 // Top-level HLSL the effect compiler passes through verbatim: typedefs, cbuffers, and anything else that

@@ -43,12 +43,15 @@ struct ScriptCommand {
         -1;         // RenderPort=light0.cascadeK: K (a sub-view of the light, runtime/CascadedShadowMaps.h)
     SourceLoc loc;  // where the command's name stands in the user's file
 
-    // Technique=Cond?A:B
+    // Technique=Cond?A:B: a bool parameter Cond picks A or B. When Cond is not a parameter (FX Composer's
+    // `Technique=Technique?Simple:Simple10:Textured:Textured10`), the names after '?' are alternatives
+    // and the first one the effect has runs.
     std::string selectorCondition;
-    std::string selectorTrue;
-    std::string selectorFalse;
-    ClearWhat clear = ClearWhat::Color;  // Clear
-    DrawWhat draw = DrawWhat::Geometry;  // Draw
+    std::string selectorTrue;                       // the first alternative
+    std::string selectorFalse;                      // the second alternative ("" if there is one)
+    std::vector<std::string> selectorAlternatives;  // every name after '?', in order
+    ClearWhat clear = ClearWhat::Color;             // Clear
+    DrawWhat draw = DrawWhat::Geometry;             // Draw
 };
 
 // Parses the value of a Script annotation. `script` is the annotation's string expression, whose string
