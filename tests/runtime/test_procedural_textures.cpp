@@ -165,17 +165,25 @@ sampler S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT;
     ASSERT_TRUE(render(*renderer, boxes(), 8, 8, "", {"A", "B", "C", "D"}));
 }
 
-TEST_F(FileTextures, MissingFileIsAnErrorAtTheResourceName) {
-    const std::string path = writeEffect(R"(texture T < string ResourceName = "images/nothere.png"; >;
+// FX Composer drew with a default texture when a file was missing: a warning at the resource name, the
+// same for a PNG as for a DDS, and the effect still compiles.
+TEST_F(FileTextures, MissingFileIsAWarningAtTheResourceNameWhateverItsType) {
+    for (const char* name : {"images/nothere.png", "images/nothere.dds"}) {
+        SCOPED_TRACE(name);
+        const std::string path = writeEffect(std::string(R"(texture T < string ResourceName = ")") + name +
+                                             R"("; >;
 sampler S = sampler_state { texture = <T>; };)");
-    fx::DiagnosticList diagnostics;
-    auto effect = fx::parseEffectFile(path, {}, diagnostics);
-    ASSERT_TRUE(effect);
-    auto compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
-    EXPECT_TRUE(diagnostics.hasErrors());
-    EXPECT_NE(diagnostics.str().find("textured.fx:1:35: error: texture file 'images/nothere.png' not found"),
-              std::string::npos)
-        << diagnostics.str();
+        fx::DiagnosticList diagnostics;
+        auto effect = fx::parseEffectFile(path, {}, diagnostics);
+        ASSERT_TRUE(effect);
+        auto compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+        EXPECT_TRUE(compiled);
+        EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+        EXPECT_NE(diagnostics.str().find(std::string("textured.fx:1:35: warning: cannot load texture '") +
+                                         name + "'; using a neutral texture"),
+                  std::string::npos)
+            << diagnostics.str();
+    }
 }
 
 // [SECTION] Render targets

@@ -53,18 +53,31 @@ GpuTexture GpuTexture::createCube(fx::TextureFormat format, int size, int mipLev
     return GpuTexture(GL_TEXTURE_CUBE_MAP, format, size, size, levels);
 }
 
-GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels)
+GpuTexture GpuTexture::create3D(fx::TextureFormat format, int width, int height, int depth, int mipLevels) {
+    width = std::max(width, 1);
+    height = std::max(height, 1);
+    depth = std::max(depth, 1);
+    const int chain = fullMipChainLength(std::max(width, depth), std::max(height, depth));
+    const int levels = mipLevels <= 0 ? chain : std::min(mipLevels, chain);
+    return GpuTexture(GL_TEXTURE_3D, format, width, height, levels, depth);
+}
+
+GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels, int depth)
     : mTarget(target),
       mFormat(format),
       mWidth(width),
       mHeight(height),
+      mDepth(depth),
       mLevels(levels),
       mSerial(gNextSerial++) {
     gl::GenTextures(1, &mId);
     gl::BindTexture(mTarget, mId);
     // Immutable storage: complete by construction, whatever the filter (a mutable texture with one
     // level and the default mipmapped min filter samples as black).
-    gl::TexStorage2D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight);
+    if (mTarget == GL_TEXTURE_3D)
+        gl::TexStorage3D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight, mDepth);
+    else
+        gl::TexStorage2D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight);
     gl::TexParameteri(mTarget, GL_TEXTURE_MAX_LEVEL, mLevels - 1);
     // Sampler objects override these; they matter only for code that samples without one.
     gl::TexParameteri(mTarget, GL_TEXTURE_MIN_FILTER, mLevels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
@@ -88,6 +101,7 @@ GpuTexture& GpuTexture::operator=(GpuTexture&& other) noexcept {
         mFormat = other.mFormat;
         mWidth = other.mWidth;
         mHeight = other.mHeight;
+        mDepth = other.mDepth;
         mLevels = other.mLevels;
         mSerial = std::exchange(other.mSerial, 0);
     }
@@ -109,6 +123,13 @@ void GpuTexture::uploadRGBA8(const uint8_t* pixels, int level, int face) {
 
 void GpuTexture::uploadRGBA32F(const float* pixels, int level, int face) {
     upload(pixels, GL_FLOAT, level, face);
+}
+
+void GpuTexture::uploadVolumeRGBA32F(const float* pixels, int level) {
+    gl::BindTexture(mTarget, mId);
+    gl::TexSubImage3D(mTarget, level, 0, 0, 0, std::max(mWidth >> level, 1), std::max(mHeight >> level, 1),
+                      std::max(mDepth >> level, 1), GL_RGBA, GL_FLOAT, pixels);
+    gl::BindTexture(mTarget, 0);
 }
 
 void GpuTexture::generateMipmaps() const {

@@ -30,6 +30,8 @@ public:
     // mipLevels <= 0 means a full chain (D3D's Levels = 0).
     static GpuTexture create2D(fx::TextureFormat format, int width, int height, int mipLevels = 1);
     static GpuTexture createCube(fx::TextureFormat format, int size, int mipLevels = 1);
+    // A volume texture (DDS volume files): `depth` slices; mipLevels <= 0 is the chain of the largest side.
+    static GpuTexture create3D(fx::TextureFormat format, int width, int height, int depth, int mipLevels = 1);
 
     GpuTexture() = default;
     ~GpuTexture();
@@ -43,11 +45,13 @@ public:
     void uploadRGBA8(const uint8_t* pixels, int level = 0, int face = 0);
     // Same with RGBA float pixels.
     void uploadRGBA32F(const float* pixels, int level = 0, int face = 0);
+    // Every slice of one level of a volume texture, slice after slice, as RGBA floats.
+    void uploadVolumeRGBA32F(const float* pixels, int level = 0);
     void generateMipmaps() const;  // GL storage only: the object itself does not change
     void setLabel(const std::string& label);
 
     GLuint id() const { return mId; }
-    GLenum target() const { return mTarget; }  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP
+    GLenum target() const { return mTarget; }  // GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP or GL_TEXTURE_3D
     fx::TextureFormat format() const { return mFormat; }
     const GlTextureFormat& glFormat() const { return glTextureFormat(mFormat); }
     bool isDepth() const { return glFormat().isDepth; }
@@ -63,7 +67,7 @@ public:
     static int fullMipChainLength(int width, int height);
 
 private:
-    GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels);
+    GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels, int depth = 1);
     void upload(const void* pixels, GLenum type, int level, int face);
 
     GLuint mId = 0;
@@ -71,6 +75,7 @@ private:
     fx::TextureFormat mFormat = fx::TextureFormat::RGBA8;
     int mWidth = 0;
     int mHeight = 0;
+    int mDepth = 1;  // slices of a 3D texture
     int mLevels = 0;
     uint64_t mSerial = 0;
 };

@@ -1,0 +1,159 @@
+// DDS texture files, which nearly every FX Composer and DirectX SDK effect names: 2D with a mip chain,
+// DXT1/3/5, cube and volume textures, read through OpenImageIO. The files are written by the test
+// (DdsWriter.h) with a colour per face, level and slice, and a full-screen pass samples them at known
+// coordinates; what lands in the frame is compared with what was written.
+#include "DdsWriter.h"
+#include "effects/EffectHarness.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace shadowfx::test {
+namespace {
+
+class DdsTextures : public ::testing::Test {
+protected:
+    std::filesystem::path mDir =
+        std::filesystem::temp_directory_path() /
+        ("shadowfx_dds_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    void SetUp() override {
+        std::filesystem::remove_all(mDir);
+        std::filesystem::create_directories(mDir);
+    }
+    void TearDown() override { std::filesystem::remove_all(mDir); }
+
+    // An 8x1 frame: pixel i returns `lookup` with uv = ((i + 0.5) / 8, 0.5).
+    std::unique_ptr<runtime::EffectRenderer> effect(const std::string& declarations,
+                                                    const std::string& lookup) {
+        const std::filesystem::path path = mDir / "dds.fx";
+        std::ofstream(path) << declarations << R"(
+struct Quad { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+Quad VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Quad o; o.Position = p; o.UV = uv; return o; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return )"
+                            << lookup << R"(; }
+technique t { pass p < string Script = "RenderColorTarget0=; Draw=Buffer;"; > {
+    ZEnable = false; VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+        return loadEffect(path.string(), true);
+    }
+
+    runtime::FrameImage frame(runtime::EffectRenderer& renderer) {
+        static const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+        EXPECT_TRUE(render(renderer, scene, 8, 1));
+        return renderer.readFrame();
+    }
+};
+
+::testing::AssertionResult near(const uint8_t* pixel, DdsColor expected, int tolerance = 3) {
+    const int e[4] = {expected.r, expected.g, expected.b, expected.a};
+    for (int c = 0; c < 4; ++c)
+        if (std::abs(pixel[c] - e[c]) > tolerance)
+            return ::testing::AssertionFailure()
+                   << "pixel (" << int(pixel[0]) << ", " << int(pixel[1]) << ", " << int(pixel[2]) << ", "
+                   << int(pixel[3]) << ") expected (" << e[0] << ", " << e[1] << ", " << e[2] << ", " << e[3]
+                   << ")";
+    return ::testing::AssertionSuccess();
+}
+
+// A colour per level (red), column (green) and slice (blue).
+DdsColor ramp(int face, int level, int x, int, int z) {
+    return DdsColor{static_cast<uint8_t>(30 + 40 * face + 20 * level), static_cast<uint8_t>(16 * x + 8),
+                    static_cast<uint8_t>(60 * z + 20), 255};
+}
+
+TEST_F(DdsTextures, UncompressedMipChainKeepsEveryStoredLevel) {
+    ASSERT_TRUE(DdsWriter::write((mDir / "ramp.dds").string(), DdsWriter::Layout::Flat,
+                                 DdsWriter::Compression::None, 8, 4, 1, 3, ramp));
+    auto renderer = effect(R"(texture T < string ResourceName = "ramp.dds"; >;
+sampler2D S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT; MipFilter = POINT; };)",
+                           "float4(tex2Dlod(S, float4(uv, 0, 0)).rg, tex2Dlod(S, float4(uv, 0, 1)).r, 1)");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    for (int x = 0; x < 8; ++x) {
+        // Level 1 is 4 texels wide: pixel x reads its texel x / 2; its red is level 1's (50), not level 0's.
+        EXPECT_TRUE(near(image.pixel(x, 0), DdsColor{30, static_cast<uint8_t>(16 * x + 8), 50, 255})) << x;
+    }
+}
+
+TEST_F(DdsTextures, Dxt1Dxt3AndDxt5Decode) {
+    auto blocks = [](int, int, int x, int, int) {
+        return DdsColor{static_cast<uint8_t>(x < 4 ? 248 : 0), static_cast<uint8_t>(x < 4 ? 0 : 252),
+                        static_cast<uint8_t>(x < 4 ? 0 : 248), static_cast<uint8_t>(x < 4 ? 255 : 136)};
+    };
+    for (auto compression :
+         {DdsWriter::Compression::Dxt1, DdsWriter::Compression::Dxt3, DdsWriter::Compression::Dxt5}) {
+        SCOPED_TRACE(static_cast<int>(compression));
+        ASSERT_TRUE(DdsWriter::write((mDir / "blocks.dds").string(), DdsWriter::Layout::Flat, compression, 8,
+                                     8, 1, 1, blocks));
+        auto renderer = effect(R"(texture T < string ResourceName = "blocks.dds"; >;
+sampler2D S = sampler_state { texture = <T>; MinFilter = POINT; MagFilter = POINT; MipFilter = NONE; };)",
+                               "tex2D(S, uv)");
+        ASSERT_TRUE(renderer);
+        const runtime::FrameImage image = frame(*renderer);
+        ASSERT_TRUE(notConstant(image));
+        const uint8_t alpha = compression == DdsWriter::Compression::Dxt1 ? 255 : 136;
+        EXPECT_TRUE(near(image.pixel(1, 0), DdsColor{255, 0, 0, 255}, 8));
+        EXPECT_TRUE(near(image.pixel(6, 0), DdsColor{0, 255, 255, alpha}, 8));
+    }
+}
+
+TEST_F(DdsTextures, CubeMapFacesLandOnTheirDirections) {
+    ASSERT_TRUE(DdsWriter::write((mDir / "cube.dds").string(), DdsWriter::Layout::Cube,
+                                 DdsWriter::Compression::None, 4, 4, 1, 1, ramp));
+    // Pixel i looks along axis i / 2 (of +X -X +Y -Y +Z -Z), for i < 6.
+    auto renderer = effect(R"(texture Env < string ResourceName = "cube.dds"; string ResourceType = "Cube"; >;
+samplerCUBE S = sampler_state { texture = <Env>; MinFilter = POINT; MagFilter = POINT; MipFilter = NONE; };
+float3 axis(float i) {
+    float3 d[6] = { float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0), float3(0, -1, 0), float3(0, 0, 1),
+                    float3(0, 0, -1) };
+    return d[min((int)i, 5)];
+})",
+                           "texCUBE(S, axis(floor(uv.x * 8)))");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    for (int face = 0; face < 6; ++face) EXPECT_NEAR(image.pixel(face, 0)[0], 30 + 40 * face, 2) << face;
+}
+
+TEST_F(DdsTextures, VolumeSlicesLandAtTheirDepth) {
+    ASSERT_TRUE(DdsWriter::write((mDir / "volume.dds").string(), DdsWriter::Layout::Volume,
+                                 DdsWriter::Compression::None, 4, 4, 4, 1, ramp));
+    auto renderer = effect(R"(texture3D V < string ResourceName = "volume.dds"; >;
+sampler3D S = sampler_state { texture = <V>; MinFilter = POINT; MagFilter = POINT; MipFilter = NONE; };)",
+                           "tex3D(S, float3(0.1, 0.5, uv.x))");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    for (int x = 0; x < 8; ++x) EXPECT_NEAR(image.pixel(x, 0)[2], 60 * (x / 2) + 20, 2) << x;
+}
+
+// A file of another kind than the effect samples: a located warning and the neutral texture, not black.
+TEST_F(DdsTextures, CubeFileBehindA2DSamplerIsAWarningAndNeutral) {
+    ASSERT_TRUE(DdsWriter::write((mDir / "cube.dds").string(), DdsWriter::Layout::Cube,
+                                 DdsWriter::Compression::None, 4, 4, 1, 1, ramp));
+    sharedContext();
+    const std::filesystem::path path = mDir / "dds.fx";
+    std::ofstream(path) << R"(texture T < string ResourceName = "cube.dds"; >;
+sampler2D S = sampler_state { texture = <T>; };
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return tex2D(S, float2(0.5, 0.5)); }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+    fx::DiagnosticList diagnostics;
+    auto parsed = fx::parseEffectFile(path.string(), {}, diagnostics);
+    ASSERT_TRUE(parsed) << diagnostics.str();
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
+    ASSERT_TRUE(renderer) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors());
+    EXPECT_NE(diagnostics.str().find("dds.fx:1:9: warning: texture file 'cube.dds' holds a cube texture"),
+              std::string::npos)
+        << diagnostics.str();
+}
+
+}  // namespace
+}  // namespace shadowfx::test
