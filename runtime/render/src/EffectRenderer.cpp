@@ -151,7 +151,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         void setClearStencil(int) override {}
         void clear(fx::ScriptCommand::ClearWhat) override {}
         void draw(const fx::CompiledPass&, fx::ScriptCommand::DrawWhat) override {}
-        void reportIgnored(const fx::ScriptCommand&) override {}
+        void drawScene(const fx::ScriptCommand&) override {}
         const fx::Value* parameter(const std::string& name) const override { return resources.find(name); }
         void setParameter(const std::string&, const fx::Value&) override {}
     };

@@ -3,6 +3,7 @@
 
 #include <runtime/Image.h>
 #include <private/runtime/ProceduralTexture.h>
+#include <runtime/TextureFile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,15 +28,68 @@ GpuTexture makeNoiseTexture() {
 }
 
 // White: the neutral value for textures the effect multiplies with.
-GpuTexture makeNeutralTexture(bool cube) {
+GpuTexture makeNeutralTexture(fx::BaseType type) {
     const uint8_t white[4] = {255, 255, 255, 255};
-    if (cube) {
+    if (type == fx::BaseType::Texture3D) {
+        const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        GpuTexture texture = GpuTexture::create3D(fx::TextureFormat::RGBA8, 1, 1, 1);
+        texture.uploadVolumeRGBA32F(one);
+        return texture;
+    }
+    if (type == fx::BaseType::TextureCube) {
         GpuTexture texture = GpuTexture::createCube(fx::TextureFormat::RGBA8, 1);
         for (int face = 0; face < 6; ++face) texture.uploadRGBA8(white, 0, face);
         return texture;
     }
     GpuTexture texture = GpuTexture::create2D(fx::TextureFormat::RGBA8, 1, 1);
     texture.uploadRGBA8(white);
+    return texture;
+}
+
+const char* textureFileKindName(TextureFile::Kind kind) {
+    return kind == TextureFile::Kind::Cube ? "cube" : kind == TextureFile::Kind::Volume ? "volume" : "2D";
+}
+
+// A DDS file's texture, when its kind is what the effect samples: every level the file has (a cube's
+// smaller levels regenerated), float storage so that no file format loses range. nullopt on a mismatch.
+std::optional<GpuTexture> makeFileTexture(const TextureFile& file, const fx::TextureDesc& desc) {
+    const bool wantCube = desc.type == fx::BaseType::TextureCube;
+    const bool wantVolume = desc.type == fx::BaseType::Texture3D;
+    if (wantCube != (file.kind == TextureFile::Kind::Cube) ||
+        wantVolume != (file.kind == TextureFile::Kind::Volume))
+        return std::nullopt;
+    // Only levels of the size the chain expects (a truncated file keeps what it has).
+    int levels = 0;
+    for (const std::vector<float>& level : file.levels) {
+        const size_t w = static_cast<size_t>(std::max(file.width >> levels, 1));
+        const size_t h = static_cast<size_t>(std::max(file.height >> levels, 1));
+        const size_t d = static_cast<size_t>(std::max(file.depth >> levels, 1));
+        const size_t faces = file.kind == TextureFile::Kind::Cube ? 6 : 1;
+        if (level.size() != w * h * d * faces * 4) break;
+        ++levels;
+    }
+    const bool regenerate = levels == 1 && desc.mipLevels != 1;
+    const int storageLevels = regenerate ? 0 : levels;
+    const fx::TextureFormat format = fx::TextureFormat::RGBA16F;
+    if (file.kind == TextureFile::Kind::Cube) {
+        GpuTexture texture = GpuTexture::createCube(format, file.width, storageLevels);
+        const size_t face = static_cast<size_t>(file.width) * static_cast<size_t>(file.height) * 4;
+        for (int f = 0; f < 6; ++f)
+            texture.uploadRGBA32F(file.levels[0].data() + face * static_cast<size_t>(f), 0, f);
+        texture.generateMipmaps();
+        return texture;
+    }
+    if (file.kind == TextureFile::Kind::Volume) {
+        GpuTexture texture = GpuTexture::create3D(format, file.width, file.height, file.depth, storageLevels);
+        for (int level = 0; level < levels; ++level)
+            texture.uploadVolumeRGBA32F(file.levels[static_cast<size_t>(level)].data(), level);
+        if (regenerate) texture.generateMipmaps();
+        return texture;
+    }
+    GpuTexture texture = GpuTexture::create2D(format, file.width, file.height, storageLevels);
+    for (int level = 0; level < levels; ++level)
+        texture.uploadRGBA32F(file.levels[static_cast<size_t>(level)].data(), level);
+    if (regenerate) texture.generateMipmaps();
     return texture;
 }
 
@@ -149,7 +203,35 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
             textures[desc.parameter] = std::move(texture);
             continue;
         }
-        if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() && !cube) {
+        if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() &&
+            isTextureFile(desc.resolvedPath)) {
+            std::string error;
+            std::optional<TextureFile> file = loadTextureFile(desc.resolvedPath, error);
+            if (!file) {
+                diagnostics.report(fx::DiagId::TextureFileUnreadable, desc.loc, {desc.resourceName, error});
+                return false;
+            }
+            std::optional<GpuTexture> texture = makeFileTexture(*file, desc);
+            if (!texture) {
+                // A cube file behind a 2D sampler (or the like) samples as black in GL: say so, and draw
+                // with the neutral texture as for a missing file.
+                diagnostics.report(fx::Diagnostic{
+                    fx::DiagId::TextureFileNotFound, fx::Severity::Warning, desc.loc,
+                    "texture file '" + desc.resourceName + "' holds a " + textureFileKindName(file->kind) +
+                        " texture, but the effect samples it as a " +
+                        (cube                                   ? "cube"
+                         : desc.type == fx::BaseType::Texture3D ? "volume"
+                                                                : "2D") +
+                        " texture; using a neutral texture"});
+                textures[desc.parameter] = makeNeutralTexture(desc.type);
+                continue;
+            }
+            texture->setLabel(parameterInfo()[desc.parameter].name);
+            textures[desc.parameter] = std::move(*texture);
+            continue;
+        }
+        if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() && !cube &&
+            desc.type != fx::BaseType::Texture3D) {
             std::string error;
             std::optional<Image> image = loadImageFile(desc.resolvedPath, error);
             if (!image) {
@@ -170,7 +252,7 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
             textures[desc.parameter] = std::move(texture);
             continue;
         }
-        textures[desc.parameter] = makeNeutralTexture(cube);
+        textures[desc.parameter] = makeNeutralTexture(desc.type);
     }
     return true;
 }

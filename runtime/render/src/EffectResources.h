@@ -11,6 +11,7 @@
 #include <runtime/GpuProgram.h>
 #include <runtime/GpuTexture.h>
 #include <runtime/InstanceBvh.h>
+#include "HostScene.h"
 #include "PassPreshaders.h"
 #include <runtime/SamplerObject.h>
 #include "SemanticBinder.h"
@@ -61,6 +62,7 @@ public:
     std::map<size_t, SamplerObject> samplers;
     std::map<size_t, SamplerObject> comparisonSamplers;
     GpuMesh quad;
+    HostScenePainter hostScene;  // ScriptExternal=color
     FramebufferCache framebuffers;
     GpuTexture frameColor;
     GpuTexture frameDepth;

@@ -207,9 +207,18 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     }
 }
 
-void FrameExecutor::reportIgnored(const fx::ScriptCommand& command) {
-    mDiagnostics.report(fx::DiagId::ScriptCommandIgnored, command.loc,
-                        {std::string(fx::scriptCommandName(command.kind))});
+void FrameExecutor::drawScene(const fx::ScriptCommand&) {
+    if (leftOut(nextOp(PlannedOp::Kind::DrawGeometry, mCurrentPass))) return;
+    if (!bindTargets()) return;
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    applyRenderStates(RenderStateBlock::defaults());
+    for (const SceneObject& object : mScene.objects) {
+        if (!object.mesh) continue;
+        GpuMesh& mesh = mResources.gpuMesh(object.mesh);
+        mResources.hostScene.draw(mScene, object, mPort.view, mPort.projection, mesh);
+        ++mStats.draws;
+        mStats.triangles += mesh.indexCount() / 3;
+    }
 }
 
 void FrameExecutor::setParameter(const std::string& name, const fx::Value& value) {

@@ -43,7 +43,7 @@ public:
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
     void clear(fx::ScriptCommand::ClearWhat what) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
-    void reportIgnored(const fx::ScriptCommand& command) override;
+    void drawScene(const fx::ScriptCommand& command) override;
     const fx::Value* parameter(const std::string& name) const override { return mResources.find(name); }
     void setParameter(const std::string& name, const fx::Value& value) override;
 

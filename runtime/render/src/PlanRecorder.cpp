@@ -98,6 +98,22 @@ void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
     mPlan.ops.push_back(std::move(op));
 }
 
+void PlanRecorder::drawScene(const fx::ScriptCommand&) {
+    PlannedOp op;
+    op.kind = PlannedOp::Kind::DrawGeometry;
+    op.pass = mPass;
+    op.writes = colorTargets();
+    op.reads = op.writes;
+    if (mDepth != kNone) {
+        op.writes.push_back(mDepth);
+        op.reads.push_back(mDepth);
+    }
+    uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp);  // "HostScne"
+    h = hashBytes(h, &mPort.view, sizeof(mPort.view));
+    op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
+    mPlan.ops.push_back(std::move(op));
+}
+
 void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
     const size_t index = passIndex(pass);
     const GpuProgram* program = mResources.programs[mTechnique][index].get();

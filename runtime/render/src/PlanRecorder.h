@@ -38,7 +38,9 @@ public:
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
     void clear(fx::ScriptCommand::ClearWhat what) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
-    void reportIgnored(const fx::ScriptCommand&) override {}
+    // The host's scene draw writes the bound targets like a pass of its own; its signature changes with
+    // the scene and the camera, so it is never taken for cached.
+    void drawScene(const fx::ScriptCommand& command) override;
     const fx::Value* parameter(const std::string& name) const override;
     void setParameter(const std::string& name, const fx::Value& value) override;
 

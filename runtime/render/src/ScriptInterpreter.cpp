@@ -1,5 +1,7 @@
 #include "ScriptInterpreter.h"
 
+#include "HostScene.h"
+
 #include <fx/RenderStates.h>
 
 #include <cstdlib>
@@ -50,11 +52,19 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
             } else if (const fx::Value* condition = target.parameter(command.selectorCondition)) {
                 name = condition->asBool() ? command.selectorTrue : command.selectorFalse;
             } else {
-                // FX Composer's `Technique=Technique?Main:Main10;` lists alternatives (D3D9 / D3D10) rather
-                // than testing a parameter: take the first one the effect has.
-                name =
-                    effect.findTechnique(command.selectorTrue) ? command.selectorTrue : command.selectorFalse;
+                // FX Composer's `Technique=Technique?Simple:Simple10:Textured:Textured10;` lists
+                // alternatives (D3D9 / D3D10 twins) rather than testing a parameter: the first one the
+                // effect has runs.
+                for (const std::string& alternative : command.selectorAlternatives) {
+                    if (effect.findTechnique(alternative)) {
+                        name = alternative;
+                        break;
+                    }
+                }
             }
+            // A selector never fails the effect: with no name it has, the first technique runs (the
+            // compiler warned about the names).
+            if (!effect.findTechnique(name)) name.clear();
             break;
         }
     }
@@ -71,8 +81,42 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
     return nullptr;
 }
 
+bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
+    bool frameBound = true;
+    // A pass script runs where its Pass= stands, so walk it in place; a pass named twice is walked twice.
+    const auto walk = [&](const std::vector<Command>& commands, const auto& self, int depth) -> bool {
+        for (const Command& command : commands) {
+            if (command.kind == Command::Kind::RenderColorTarget && command.index == 0)
+                frameBound = command.value.empty();
+            if (command.kind == Command::Kind::Clear && command.clear == Command::ClearWhat::Color &&
+                frameBound)
+                return true;
+            if (command.kind == Command::Kind::Pass && depth == 0)
+                if (const fx::CompiledPass* pass = findPass(technique, command.value);
+                    pass && pass->hasScript && self(pass->script, self, 1))
+                    return true;
+        }
+        return false;
+    };
+    if (technique.hasScript) return walk(technique.script, walk, 0);
+    for (const fx::CompiledPass& pass : technique.passes)
+        if (pass.hasScript && walk(pass.script, walk, 1)) return true;
+    return false;
+}
+
 bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, ScriptTarget& target,
                             fx::DiagnosticSink& diagnostics) {
+    if (!clearsFrame(technique)) {
+        // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
+        // clears to the host background, as in FX Composer.
+        target.setClearColor(
+            fx::Value::vector({kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a}));
+        target.setClearDepth(1.0f);
+        target.setClearStencil(0);
+        for (Command::ClearWhat what :
+             {Command::ClearWhat::Color, Command::ClearWhat::Depth, Command::ClearWhat::Stencil})
+            target.clear(what);
+    }
     if (technique.hasScript) return runCommands(technique.script, technique, nullptr, target, diagnostics);
     // No script: every pass in order, as D3DX would run them.
     for (const fx::CompiledPass& pass : technique.passes) {
@@ -203,7 +247,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 }
                 break;
             case Command::Kind::ScriptExternal:
-                target.reportIgnored(command);
+                target.drawScene(command);
                 break;
             case Command::Kind::Technique:
             case Command::Kind::ScriptOrder:

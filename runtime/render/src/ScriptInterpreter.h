@@ -27,7 +27,8 @@ public:
     virtual void setClearStencil(int stencil) = 0;
     virtual void clear(fx::ScriptCommand::ClearWhat what) = 0;
     virtual void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) = 0;
-    virtual void reportIgnored(const fx::ScriptCommand& command) = 0;
+    // ScriptExternal=color: the host draws the scene into the current targets (HostScene.h).
+    virtual void drawScene(const fx::ScriptCommand& command) = 0;
     // Parameter access for Loop*/ClearSet*/Technique= selectors.
     virtual const fx::Value* parameter(const std::string& name) const = 0;
     virtual void setParameter(const std::string& name, const fx::Value& value) = 0;
@@ -46,9 +47,14 @@ public:
                                                         fx::DiagnosticSink& diagnostics);
 
     // Runs the technique's script (or, without one, every pass in order), each pass's script (or, without
-    // one, Draw=Geometry). Returns false if the script could not run to its end.
+    // one, Draw=Geometry). Before a technique whose scripts never clear the frame's colour target, the host
+    // clears the frame (HostScene.h). Returns false if the script could not run to its end.
     static bool run(const fx::CompiledTechnique& technique, ScriptTarget& target,
                     fx::DiagnosticSink& diagnostics);
+
+    // Whether the technique's scripts clear the frame's own colour target (a Clear=Color while
+    // RenderColorTarget0 is the frame), as FX Composer's scene effects do; material effects do not.
+    static bool clearsFrame(const fx::CompiledTechnique& technique);
 
 private:
     static bool runCommands(const std::vector<fx::ScriptCommand>& commands,

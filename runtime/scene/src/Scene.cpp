@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -195,9 +196,30 @@ Bounds Scene::objectBounds() const {
     return any ? result : Bounds{};
 }
 
+namespace {
+bool sameIgnoringCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+}  // namespace
+
+// D3D's names are case-blind, and FX Composer's SAS binds `Object = "PointLight0"` (also SpotLight0,
+// DirectionalLight0) to the scene's first light whatever its type: an exact match first, then the name
+// without regard to case, then the light type prefix dropped.
 const Light* Scene::findLight(std::string_view lightName) const {
     for (const auto& light : lights)
         if (light.name == lightName) return &light;
+    for (const auto& light : lights)
+        if (sameIgnoringCase(light.name, lightName)) return &light;
+    for (std::string_view prefix : {"Point", "Spot", "Directional", "Dir"}) {
+        if (lightName.size() > prefix.size() &&
+            sameIgnoringCase(lightName.substr(0, prefix.size()), prefix)) {
+            const std::string_view rest = lightName.substr(prefix.size());
+            if (rest.size() > 5 && sameIgnoringCase(rest.substr(0, 5), "light")) return findLight(rest);
+        }
+    }
     return nullptr;
 }
 

@@ -1,0 +1,199 @@
+// FX Composer and DirectX SDK effects run as their host ran them: the host clears the frame to its
+// background before a material effect that never clears, draws the scene where a post effect's script
+// says ScriptExternal=color, picks the first technique a selector names that exists, binds
+// `Object = "PointLight0"` to the scene's light0, and evaluates user functions in compile arguments on the
+// host. Each effect here is written in one of those styles (tests/data/fxcomposer/); a blank frame fails
+// every test.
+#include "../../runtime/render/src/HostScene.h"
+#include "EffectHarness.h"
+
+#include <cmath>
+
+namespace shadowfx::test {
+namespace {
+
+constexpr int kWidth = 96;
+constexpr int kHeight = 72;
+
+struct Loaded {
+    std::unique_ptr<runtime::EffectRenderer> renderer;
+    fx::DiagnosticList diagnostics;  // parse and compile
+};
+
+Loaded load(const std::string& path) {
+    sharedContext();
+    Loaded out;
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, fx::ParseOptions{}, out.diagnostics);
+    if (!effect) {
+        ADD_FAILURE() << out.diagnostics.str();
+        return out;
+    }
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, out.diagnostics);
+    if (!compiled || out.diagnostics.hasErrors()) {
+        ADD_FAILURE() << out.diagnostics.str();
+        return out;
+    }
+    out.renderer = runtime::EffectRenderer::create(compiled, out.diagnostics);
+    if (!out.renderer) ADD_FAILURE() << out.diagnostics.str();
+    return out;
+}
+
+int count(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
+    int n = 0;
+    for (const fx::Diagnostic& d : diagnostics.items()) n += d.id == id;
+    return n;
+}
+
+bool isBackground(const uint8_t* p) {
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(p[c] - std::lround(runtime::kHostBackground[c] * 255.0f)) > 1) return false;
+    return true;
+}
+
+// The share of pixels that are not the host background.
+double coverage(const runtime::FrameImage& frame) {
+    size_t object = 0;
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) object += !isBackground(frame.pixel(x, y));
+    return static_cast<double>(object) / (frame.width * frame.height);
+}
+
+// A material effect (ScriptClass "object", no Clear anywhere, ZFunc LessEqual) draws the lit object on
+// the host's background. Without the host clear the depth buffer rejects every fragment or the frame keeps
+// whatever it held.
+TEST(FxComposerHost, MaterialEffectThatNeverClearsDrawsTheLitObjectOnTheHostBackground) {
+    Loaded loaded = load("tests/data/fxcomposer/material_phong.fx");
+    ASSERT_TRUE(loaded.renderer);
+    // Technique?Simple:Simple10:Textured:Textured10 — Simple10 and Textured10 do not exist: warnings only.
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::ScriptUnknownTechnique), 2) << loaded.diagnostics.str();
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::TextureFileNotFound), 1) << loaded.diagnostics.str();
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    fx::DiagnosticList diagnostics;
+    runtime::FrameOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    runtime::FrameStats stats;
+    ASSERT_TRUE(loaded.renderer->render(scene, options, diagnostics, &stats)) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    ASSERT_EQ(stats.passes.size(), 1u);
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_TRUE(isBackground(frame.pixel(0, 0)));
+    EXPECT_TRUE(isBackground(frame.pixel(kWidth - 1, 0)));  // the sky above the ground plane
+    const double covered = coverage(frame);
+    EXPECT_GT(covered, 0.05);
+    EXPECT_LT(covered, 0.9);
+    // Lit: the brightest object pixel is far above the ambient term (0.07), so the lamp (bound through
+    // "PointLight0" to the scene's light0) reaches it.
+    float brightest = 0.0f;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (!isBackground(frame.pixel(x, y)))
+                brightest = std::max(brightest, luminance(frame.pixel(x, y)));
+    EXPECT_GT(brightest, 0.5f);
+}
+
+// The lamp parameter names "PointLight0" (and its colour "Pointlight0"): moving the scene's light0 must
+// change the picture, which it cannot if the names do not bind.
+TEST(FxComposerHost, LightNamedPointLight0FollowsTheScenesLight0) {
+    Loaded loaded = load("tests/data/fxcomposer/material_phong.fx");
+    ASSERT_TRUE(loaded.renderer);
+    runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_FALSE(scene.lights.empty());
+    ASSERT_TRUE(scene.findLight("PointLight0"));
+    ASSERT_TRUE(scene.findLight("SPOTLIGHT0"));
+    ASSERT_TRUE(scene.findLight("DirectionalLight0"));
+    EXPECT_EQ(scene.findLight("Light7"), nullptr);
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage first = loaded.renderer->readFrame();
+    scene.lights[0].position = -scene.lights[0].position;
+    scene.lights[0].direction = -scene.lights[0].direction;
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage second = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(second));
+    int differing = 0;
+    for (size_t i = 0; i < first.rgba.size(); i += 4)
+        differing += std::abs(first.rgba[i] - second.rgba[i]) > 8;
+    EXPECT_GT(differing, kWidth * kHeight / 50);
+}
+
+// A post effect built on ScriptExternal=color: the host draws the scene into SceneTexture (declared with
+// ViewPortRatio only), and the effect's pass inverts it into the frame. With Amount 0 the frame is the
+// host's scene itself; with Amount 1 every pixel is its inverse.
+TEST(FxComposerHost, PostEffectProcessesTheSceneTheHostDrawsAtScriptExternal) {
+    Loaded loaded = load("tests/data/fxcomposer/post_invert.fx");
+    ASSERT_TRUE(loaded.renderer);
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::ScriptCommandIgnored), 0) << loaded.diagnostics.str();
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    const size_t amount = *loaded.renderer->findParameter("Amount");
+
+    loaded.renderer->setParameter(amount, fx::Value::scalar(0.0f));
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage plain = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(plain));  // the scene, not the empty target
+
+    loaded.renderer->setParameter(amount, fx::Value::scalar(1.0f));
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage inverted = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(inverted));
+    int mismatches = 0;
+    for (size_t i = 0; i < plain.rgba.size(); i += 4)
+        for (int c = 0; c < 3; ++c)
+            mismatches += std::abs(255 - plain.rgba[i + c] - inverted.rgba[i + c]) > 2;
+    EXPECT_EQ(mismatches, 0);
+    // The script's own clear (ClearColor black) shows where the scene has no object: inverted to white.
+    EXPECT_EQ(inverted.pixel(0, 0)[0], 255);
+}
+
+// A DirectX SDK style effect: D3DCOLOR ints above INT_MAX, arrays sized by static const ints, skinning
+// and point-size inputs, a centroid varying, a matrix varying, vs_1_1/vs_2_0 in a shader array, and a
+// compile argument that calls the effect's own function (evaluated on the host at every frame).
+TEST(FxComposerHost, DirectXSdkEffectRendersAndEvaluatesItsUserFunctionOnTheHost) {
+    Loaded loaded = load("tests/data/fxcomposer/sdk_skinned.fx");
+    ASSERT_TRUE(loaded.renderer);
+    runtime::EffectRenderer& renderer = *loaded.renderer;
+    EXPECT_EQ(renderer.parameter(*renderer.findParameter("BackgroundColor")).asInt(),
+              static_cast<int32_t>(0xff202080u));
+    EXPECT_EQ(renderer.parameter(*renderer.findParameter("Mask")).asInt(), -1);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    auto meanObjectLuminance = [&](float brightness) {
+        renderer.setParameter(*renderer.findParameter("Brightness"), fx::Value::scalar(brightness));
+        EXPECT_TRUE(render(renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer.readFrame();
+        EXPECT_TRUE(notConstant(frame));
+        double sum = 0;
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x)
+                if (!isBackground(frame.pixel(x, y))) sum += luminance(frame.pixel(x, y)), ++n;
+        EXPECT_GT(n, kWidth * kHeight / 20);
+        return n ? sum / n : 0.0;
+    };
+    // gain(b, 1.5) = saturate(1.5 b + 0.25): 0.4 at b = 0.1, 1 at b = 0.9.
+    const double dim = meanObjectLuminance(0.1f);
+    const double bright = meanObjectLuminance(0.9f);
+    EXPECT_GT(bright, dim * 1.5);
+}
+
+// The material effect as Windows editors save it (UTF-8 with a byte-order mark, UTF-16 LE with CRLF,
+// UTF-16 BE, CRLF): each copy renders the original's frame exactly.
+TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    Loaded original = load("tests/data/fxcomposer/material_phong.fx");
+    ASSERT_TRUE(original.renderer);
+    ASSERT_TRUE(render(*original.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage expected = original.renderer->readFrame();
+    ASSERT_TRUE(notConstant(expected));
+    for (const char* copy : {"material_phong_utf8_bom.fx", "material_phong_utf16le.fx",
+                             "material_phong_utf16be.fx", "material_phong_crlf.fx"}) {
+        SCOPED_TRACE(copy);
+        Loaded loaded = load(std::string("tests/data/fxcomposer/encodings/") + copy);
+        ASSERT_TRUE(loaded.renderer);
+        ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+        EXPECT_EQ(loaded.renderer->readFrame().rgba, expected.rgba);
+    }
+}
+
+}  // namespace
+}  // namespace shadowfx::test
