@@ -10,12 +10,15 @@
 // Outcomes: PASS; QUALITY_WARNING (passes, but a measured value is above 80% of its bound, or the technique
 // of a shadowing effect declares no ExpectMisclassifiedBelow); NOT_SUPPORTED (the check cannot run here: a
 // backend that creates no context, a penumbra bound on a scene without an area light, no goldens for this
-// renderer); FAIL. Only FAIL makes the exit status 1.
+// renderer, an effect from elsewhere that carries no expectations and no goldens); FAIL. Only FAIL makes the
+// exit status 1. An effect library ported from FX Composer thus gets one table of compile, link, GL-error,
+// NaN and blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`).
 #include "CheckCommand.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <fx/Preshader.h>
+#include <fx/RenderStates.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
@@ -399,6 +402,9 @@ struct EffectPlan {
     std::string name;               // stem
     std::filesystem::path goldens;  // EFFECT_DIR/golden/EFFECT
     std::vector<TechniquePlan> techniques;
+    // False for an effect from elsewhere (an FX Composer library): no Expect* annotation and no goldens.
+    // Its techniques get the render checks only; shadow quality and goldens are NOT_SUPPORTED.
+    bool carriesExpectations = true;
 };
 
 // A scene with the truths the checks need: `hard` for ExpectMisclassifiedBelow (the light as a point), and
@@ -551,7 +557,7 @@ private:
         // Expectations against the ground truth.
         std::optional<runtime::VisibilityScore> hardScore, softScore;
         const Expectations& expect = technique.expect;
-        if (expect.shadows) {
+        if (expect.shadows && effect.carriesExpectations) {
             const bool expects = expect.misclassifiedBelow || expect.penumbraMaeBelow;
             if (!expects) {
                 row("misclassified", Outcome::QualityWarning,
@@ -612,7 +618,10 @@ private:
         if (compare) {
             const GoldenPlace place = findGolden(effect.goldens, technique.name, sceneName, key);
             std::string error;
-            if (!place.forThisRenderer) {
+            if (!effect.carriesExpectations) {
+                row("golden", mSettings.requireGoldens ? Outcome::Fail : Outcome::NotSupported,
+                    "the effect has no goldens (" + effect.goldens.string() + ")");
+            } else if (!place.forThisRenderer) {
                 row("golden", mSettings.requireGoldens ? Outcome::Fail : Outcome::NotSupported, place.note);
             } else if (!std::filesystem::exists(place.path)) {
                 row("golden", Outcome::Fail,
@@ -782,6 +791,12 @@ int checkCommand(const Arguments& args) {
             ++matched;  // reported: --technique cannot be judged on an effect that does not parse
             continue;
         }
+        plan.carriesExpectations = std::filesystem::exists(plan.goldens);
+        for (const fx::Technique& technique : effect->techniques)
+            for (const fx::Annotation& a : technique.annotations)
+                plan.carriesExpectations =
+                    plan.carriesExpectations ||
+                    (a.name.size() > 6 && fx::equalsIgnoreCase(a.name.substr(0, 6), "Expect"));
         for (const fx::Technique& technique : effect->techniques) {
             if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                       technique.name) == techniqueFilter.end())

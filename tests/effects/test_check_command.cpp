@@ -219,6 +219,38 @@ TEST(CheckCommand, ARendererWithoutGoldensIsNotSupportedUnlessRequired) {
     EXPECT_EQ(result.exitCode, 1) << result.output;
 }
 
+// A library ported from FX Composer carries no Expect* annotations and no goldens: every technique gets
+// its render row (compile, link, GL errors, NaN, blank frame), goldens are NOT_SUPPORTED, and a technique
+// that draws a blank frame still FAILs.
+TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
+    const fs::path dir = fs::temp_directory_path() / "shadowfx_check_foreign";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy(kSource + "/tests/data/fxcomposer", dir, fs::copy_options::recursive);
+    const fs::path junit = dir / "out.xml";
+    RunResult result =
+        run("check " + (dir / "material_phong.fx").string() + " " + (dir / "post_invert.fx").string() + " " +
+            (dir / "sdk_skinned.fx").string() + " --backend egl --junit " + junit.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* technique : {"Simple", "Textured", "Main", "t0"}) {
+        EXPECT_EQ(row(result.output, technique, "boxes", "render").rfind("PASS", 0), 0u)
+            << technique << result.output;
+        EXPECT_EQ(row(result.output, technique, "boxes", "golden").rfind("NOT_SUPPORTED", 0), 0u)
+            << technique << result.output;
+        EXPECT_EQ(row(result.output, technique, "boxes", "misclassified"), "") << technique << result.output;
+    }
+    EXPECT_EQ(attribute(readText(junit), "testsuites", "failures"), 0);
+
+    // The material effect with its draw removed: the host's background alone is a blank frame.
+    std::string text = readText(dir / "material_phong.fx");
+    for (size_t at; (at = text.find("Draw=geometry;")) != std::string::npos;) text.replace(at, 14, "");
+    std::ofstream(dir / "material_phong.fx") << text;
+    result = run("check " + (dir / "material_phong.fx").string() + " --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(row(result.output, "Simple", "boxes", "render").rfind("FAIL", 0), 0u) << result.output;
+    fs::remove_all(dir);
+}
+
 TEST(CheckCommand, ABlankFrameFails) {
     // The technique clears and draws nothing.
     const EffectCopy copy("blank", "\"Pass=p0;\"", "\"\"", "plain_lit");
