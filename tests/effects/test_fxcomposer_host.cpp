@@ -176,6 +176,30 @@ TEST(FxComposerHost, DirectXSdkEffectRendersAndEvaluatesItsUserFunctionOnTheHost
     EXPECT_GT(bright, dim * 1.5);
 }
 
+// A vertex shader with `PixelShader = NULL` (the DirectX SDK's vs_1_1 effects) ran D3D9's fixed-function
+// pixel stage: the object shows its interpolated COLOR0.
+TEST(FxComposerHost, NullPixelShaderDrawsTheVertexColour) {
+    auto renderer = loadEffect(R"(float4x4 Wvp : WorldViewProjection;
+struct V { float4 Pos : POSITION; float4 Diffuse : COLOR0; };
+V VS(float4 p : POSITION) { V o; o.Pos = mul(p, Wvp); o.Diffuse = float4(1, 0, 0, 1); return o; }
+technique t { pass p { VertexShader = compile vs_1_1 VS(); PixelShader = null; } }
+)",
+                               false);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_TRUE(isBackground(frame.pixel(0, 0)));
+    int red = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            red += p[0] == 255 && p[1] == 0 && p[2] == 0;
+        }
+    EXPECT_GT(red, kWidth * kHeight / 20);
+}
+
 // The material effect as Windows editors save it (UTF-8 with a byte-order mark, UTF-16 LE with CRLF,
 // UTF-16 BE, CRLF): each copy renders the original's frame exactly.
 TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {

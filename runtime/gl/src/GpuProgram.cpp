@@ -84,13 +84,24 @@ GLuint compileShader(GLenum kind, const std::string& source, std::string& log) {
 std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
                                                Stages stages) {
     std::unique_ptr<GpuProgram> program(new GpuProgram());
-    if (pass.vertex.glsl.empty() || pass.fragment.glsl.empty())
-        return program;  // a pass of script commands only
+    if (pass.vertex.glsl.empty()) return program;  // a pass of script commands only
+
+    // A vertex shader without a pixel shader (`PixelShader = NULL;`, or none assigned) ran D3D9's
+    // fixed-function pixel stage, which with no texture stage set outputs the interpolated diffuse
+    // colour: COLOR0 (varying location 8, fx/src/PassLowering.cpp) where the vertex shader writes it,
+    // else D3D's default diffuse, white.
+    const bool writesColor0 = pass.vertex.glsl.find("layout(location = 8) out") != std::string::npos;
+    const std::string fixedFunctionPixels =
+        writesColor0 ? "#version 450\nlayout(location = 8) in vec4 fx_v8;\nlayout(location = 0) out vec4 "
+                       "fx_color;\nvoid main() { fx_color = fx_v8; }\n"
+                     : "#version 450\nlayout(location = 0) out vec4 fx_color;\nvoid main() { fx_color = "
+                       "vec4(1.0); }\n";
+    const std::string& fragment = pass.fragment.glsl.empty() ? fixedFunctionPixels : pass.fragment.glsl;
 
     const bool withPixel = stages == Stages::VertexAndPixel;
     std::string log;
     const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
-    const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, pass.fragment.glsl, log) : 0;
+    const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, fragment, log) : 0;
     if (vs && (fs || !withPixel)) {
         program->mProgram = gl::CreateProgram();
         gl::AttachShader(program->mProgram, vs);
