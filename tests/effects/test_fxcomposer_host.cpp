@@ -8,6 +8,7 @@
 #include "EffectHarness.h"
 
 #include <cmath>
+#include <filesystem>
 
 namespace shadowfx::test {
 namespace {
@@ -198,6 +199,28 @@ technique t { pass p { VertexShader = compile vs_1_1 VS(); PixelShader = null; }
             red += p[0] == 255 && p[1] == 0 && p[2] == 0;
         }
     EXPECT_GT(red, kWidth * kHeight / 20);
+}
+
+// Every effect written in FX Composer's or the DirectX SDK's style (tests/data/fxcomposer/, the encoded
+// copies included) compiles without errors and draws a frame that is not blank with every technique.
+TEST(FxComposerHost, EveryFxComposerStyleEffectDrawsANonBlankFrameWithEveryTechnique) {
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    int effects = 0;
+    for (const char* folder : {"tests/data/fxcomposer", "tests/data/fxcomposer/encodings"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+            if (entry.path().extension() != ".fx") continue;
+            ++effects;
+            SCOPED_TRACE(entry.path().string());
+            Loaded loaded = load(entry.path().string());
+            ASSERT_TRUE(loaded.renderer);
+            for (const fx::CompiledTechnique& technique : loaded.renderer->effect().techniques) {
+                SCOPED_TRACE(technique.name);
+                ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight, technique.name));
+                EXPECT_TRUE(notConstant(loaded.renderer->readFrame()));
+            }
+        }
+    }
+    EXPECT_GE(effects, 10);
 }
 
 // The material effect as Windows editors save it (UTF-8 with a byte-order mark, UTF-16 LE with CRLF,
