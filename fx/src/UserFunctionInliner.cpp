@@ -11,6 +11,9 @@ namespace {
 
 // Functions call functions; a recursive one (which HLSL forbids anyway) must not recurse here.
 constexpr int kMaxInlineDepth = 16;
+// Every use of a parameter copies its argument, so nested calls grow the expression geometrically; past
+// this many nodes in all, the rest of the calls stay calls (and are reported where they stand).
+constexpr int kMaxInlinedNodes = 1 << 16;
 
 class Inliner {
 public:
@@ -54,6 +57,7 @@ private:
 
     // `e` with every name bound in `scope` replaced by its expression, and calls inlined.
     Expr substitute(const Expr& e, const std::map<std::string, Expr>& scope, int depth) {
+        --mBudget;
         if (e.kind == Expr::Kind::Identifier) {
             auto bound = scope.find(e.text);
             if (bound != scope.end()) return bound->second;
@@ -66,6 +70,7 @@ private:
 
     std::optional<Expr> expand(const FunctionDecl& function, const Expr& call, int depth) {
         using Statement = FunctionDecl::Statement;
+        if (mBudget <= 0) return std::nullopt;
         std::map<std::string, Expr> scope;
         std::map<std::string, TypeDesc> types;
         for (size_t i = 0; i < function.params.size(); ++i) {
@@ -97,14 +102,19 @@ private:
                     scope[statement.name] = cast(type->second, std::move(value), call.loc);
                     break;
                 }
-                case Statement::Kind::Return:
-                    return cast(function.returnType, substitute(statement.value, scope, depth), call.loc);
+                case Statement::Kind::Return: {
+                    Expr result =
+                        cast(function.returnType, substitute(statement.value, scope, depth), call.loc);
+                    if (mBudget <= 0) return std::nullopt;
+                    return result;
+                }
             }
         }
         return std::nullopt;
     }
 
     const Effect& mEffect;
+    int mBudget = kMaxInlinedNodes;
 };
 
 }  // namespace
