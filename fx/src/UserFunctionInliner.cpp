@@ -55,12 +55,25 @@ private:
         return e;
     }
 
+    // The nodes of `e`, counted up to `limit`.
+    static int nodes(const Expr& e, int limit) {
+        int count = 1;
+        for (const Expr& arg : e.args) {
+            if (count > limit) break;
+            count += nodes(arg, limit - count);
+        }
+        return count;
+    }
+
     // `e` with every name bound in `scope` replaced by its expression, and calls inlined.
     Expr substitute(const Expr& e, const std::map<std::string, Expr>& scope, int depth) {
         --mBudget;
         if (e.kind == Expr::Kind::Identifier) {
             auto bound = scope.find(e.text);
-            if (bound != scope.end()) return bound->second;
+            if (bound != scope.end()) {
+                mBudget -= nodes(bound->second, mBudget);
+                return bound->second;
+            }
         }
         Expr out = e;
         for (size_t i = 0; i < out.args.size(); ++i) out.args[i] = substitute(e.args[i], scope, depth);
