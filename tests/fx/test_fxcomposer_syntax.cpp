@@ -159,6 +159,16 @@ TEST(FxComposerSyntax, SelectorNamingNoTechniqueWarnsAndNeverFails) {
     EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
     EXPECT_EQ(count(diagnostics, DiagId::ScriptUnknownTechnique), 2) << diagnostics.str();
     EXPECT_EQ(count(diagnostics, DiagId::ScriptTechniqueFallback), 1) << diagnostics.str();
+
+    // A plain name (a technique a #define renamed) is no different.
+    DiagnosticList plain;
+    compiled = compile(
+        std::string("float Script : STANDARDSGLOBAL < string Script = \"Technique=Missing;\"; > = 0.8;\n") +
+            kEffect,
+        plain);
+    ASSERT_TRUE(compiled) << plain.str();
+    EXPECT_FALSE(plain.hasErrors()) << plain.str();
+    EXPECT_EQ(count(plain, DiagId::ScriptTechniqueFallback), 1) << plain.str();
 }
 
 // [SECTION] D3D9 HLSL and effect syntax

@@ -80,21 +80,21 @@ TEST(SasScript, UnknownCommandLocatedInConcatenatedString) {
 
 TEST(SasScript, InvalidValues) {
     DiagnosticList diags;
-    auto commands = parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?b;Pass",
-                                   SourceLoc{"s.fx", 5, 1}, diags);
+    auto commands =
+        parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?;Pass", SourceLoc{"s.fx", 5, 1}, diags);
     EXPECT_TRUE(commands.empty());
     ASSERT_EQ(diags.errorCount(), 5u) << diags.str();
     for (const Diagnostic& d : diags.items()) EXPECT_EQ(d.id, DiagId::InvalidScriptCommand);
     EXPECT_EQ(diags.items()[1].loc.column, 18);
 }
 
-TEST(SasScript, ScriptExternalIsIgnoredWithWarning) {
+// ScriptExternal=color is where the host draws the scene (runtime/src/HostScene.h): a command like any other.
+TEST(SasScript, ScriptExternalIsACommandForTheHost) {
     DiagnosticList diags;
     auto commands = parseSasScript("ScriptExternal=color;", SourceLoc{"s.fx", 1, 1}, diags);
-    EXPECT_EQ(commands.size(), 1u);
-    EXPECT_FALSE(diags.hasErrors());
-    ASSERT_EQ(diags.items().size(), 1u);
-    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptCommandIgnored);
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::ScriptExternal);
+    EXPECT_TRUE(diags.items().empty()) << diags.str();
 }
 
 // RenderPort=lightN.cascadeK (or lightN.faceK, a PSMCube face) names a light's sub-view

@@ -1,4 +1,4 @@
-// Clear takes Color, Depth or Stencil.
+// Clear takes Color, Depth, Stencil, DepthStencil or All.
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 float4 PS() : COLOR { return 1; }
 technique t < string Script = "Clear=Everything; Pass=p;"; >

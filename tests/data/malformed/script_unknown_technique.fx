@@ -1,5 +1,0 @@
-// The global script selects a technique that does not exist.
-float Script : STANDARDSGLOBAL < string Script = "Technique=Missing;"; > = 0.8;
-float4 VS(float4 p : POSITION) : POSITION { return p; }
-float4 PS() : COLOR { return 1; }
-technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
