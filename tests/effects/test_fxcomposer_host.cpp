@@ -6,6 +6,7 @@
 // every test.
 #include "../../runtime/render/src/HostScene.h"
 #include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
 
 #include <cmath>
 #include <filesystem>

@@ -295,12 +295,9 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
     ASSERT_TRUE(compiled && !diagnostics.hasErrors()) << diagnostics.str();
     const CompiledPass& pass = compiled->techniques[0].passes[0];
     ASSERT_EQ(pass.arguments.size(), 1u);
-    auto lookup = [&](std::string_view name) -> const Value* {
-        const Parameter* p = compiled->effect->findParameter(std::string(name));
-        return p ? &compiled->initialValues[static_cast<size_t>(p - compiled->effect->parameters.data())]
-                 : nullptr;
-    };
-    std::optional<Value> gain = evaluate(pass.arguments[0].expr, lookup, nullptr, &diagnostics);
+    // The inlined call compiled to a preshader program over the parameter slots.
+    EXPECT_FALSE(pass.arguments[0].value.isConstant());
+    std::optional<Value> gain = pass.arguments[0].value.run(compiled->initialValues, &diagnostics);
     ASSERT_TRUE(gain) << diagnostics.str();
     EXPECT_FLOAT_EQ(gain->asFloat(), 1.0f);  // saturate(0.5 * 1.5 + 0.25)
 }

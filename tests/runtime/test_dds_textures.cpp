@@ -4,6 +4,7 @@
 // coordinates; what lands in the frame is compared with what was written.
 #include "DdsWriter.h"
 #include "effects/EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
 
 #include <cmath>
 #include <filesystem>
