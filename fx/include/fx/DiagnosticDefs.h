@@ -38,7 +38,6 @@ FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
               "script names no technique the effect has; running its first technique, '{0}'")
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
 FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
-FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is accepted and ignored")
 
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
