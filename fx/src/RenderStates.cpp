@@ -38,6 +38,12 @@ const EnumValue kEnumValues[] = {
 #include <fx/RenderStateDefs.h>
 };
 
+const StateObjectField kObjectFields[] = {
+#define FX_OBJECT_FIELD(object, field, domain, def, state) \
+    {StateObjectKind::object, #field, StateDomain::domain, static_cast<double>(def), RenderStateId::state},
+#include <fx/RenderStateDefs.h>
+};
+
 // Compares ignoring case and underscores ("INV_SRC_ALPHA" == "InvSrcAlpha").
 bool equalsLoose(std::string_view a, std::string_view b) {
     size_t i = 0, j = 0;
@@ -60,26 +66,30 @@ std::vector<std::string_view> domainPrefixes(StateDomain domain) {
     switch (domain) {
         case StateDomain::Cull:
             return {"D3DCULL_"};
-        case StateDomain::Fill:
-            return {"D3DFILL_"};
         case StateDomain::Shade:
             return {"D3DSHADE_"};
         case StateDomain::Cmp:
-            return {"D3DCMP_", "D3D10_COMPARISON_", "COMPARISON_"};
+            return {"D3DCMP_", "D3D10_COMPARISON_", "D3D11_COMPARISON_", "COMPARISON_"};
         case StateDomain::Blend:
-            return {"D3DBLEND_", "D3D10_BLEND_"};
+            return {"D3DBLEND_", "D3D10_BLEND_", "D3D11_BLEND_"};
         case StateDomain::BlendOp:
-            return {"D3DBLENDOP_", "D3D10_BLEND_OP_"};
+            return {"D3DBLENDOP_", "D3D10_BLEND_OP_", "D3D11_BLEND_OP_"};
         case StateDomain::StencilOp:
-            return {"D3DSTENCILOP_", "D3D10_STENCIL_OP_"};
+            return {"D3DSTENCILOP_", "D3D10_STENCIL_OP_", "D3D11_STENCIL_OP_"};
         case StateDomain::Address:
-            return {"D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_"};
+            return {"D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_", "D3D11_TEXTURE_ADDRESS_"};
         case StateDomain::TexFilter:
             return {"D3DTEXF_"};
         case StateDomain::Filter10:
             return {"D3D10_FILTER_", "D3D11_FILTER_"};
+        case StateDomain::Cull10:
+            return {"D3D10_CULL_", "D3D11_CULL_"};
+        case StateDomain::DepthWriteMask:
+            return {"D3D10_DEPTH_WRITE_MASK_", "D3D11_DEPTH_WRITE_MASK_"};
+        case StateDomain::Fill:
+            return {"D3DFILL_", "D3D10_FILL_", "D3D11_FILL_"};
         case StateDomain::ColorMask:
-            return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_"};
+            return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_", "D3D11_COLOR_WRITE_ENABLE_"};
         default:
             return {};
     }
@@ -144,6 +154,31 @@ std::vector<std::string_view> enumValueNames(StateDomain domain) {
     return names;
 }
 
+std::vector<const StateObjectField*> stateObjectFields(StateObjectKind object) {
+    std::vector<const StateObjectField*> fields;
+    for (const StateObjectField& f : kObjectFields)
+        if (f.object == object) fields.push_back(&f);
+    return fields;
+}
+
+const StateObjectField* findStateObjectField(StateObjectKind object, std::string_view name) {
+    for (const StateObjectField& f : kObjectFields)
+        if (f.object == object && equalsIgnoreCase(f.name, name)) return &f;
+    return nullptr;
+}
+
+std::string_view stateObjectTypeName(StateObjectKind object) {
+    switch (object) {
+        case StateObjectKind::Rasterizer:
+            return "RasterizerState";
+        case StateObjectKind::DepthStencil:
+            return "DepthStencilState";
+        case StateObjectKind::Blend:
+            return "BlendState";
+    }
+    return "?";
+}
+
 std::string_view domainName(StateDomain domain) {
     switch (domain) {
         case StateDomain::Bool:
@@ -180,6 +215,10 @@ std::string_view domainName(StateDomain domain) {
             return "TexFilter";
         case StateDomain::Filter10:
             return "Filter10";
+        case StateDomain::Cull10:
+            return "Cull10";
+        case StateDomain::DepthWriteMask:
+            return "DepthWriteMask";
     }
     return "?";
 }

@@ -5,6 +5,9 @@
 // FX_RENDER_STATE(Name, Domain, DefaultValue)      pass states
 // FX_SAMPLER_STATE(Name, Domain, DefaultValue)     sampler_state states
 // FX_STATE_ALIAS(Alias, Name)                      another spelling of a state (pass or sampler)
+// FX_OBJECT_FIELD(Object, Field, Domain, D3D10Default, RenderState)
+//                                                  a field of a D3D10 state object (Rasterizer,
+//                                                  DepthStencil, Blend) and the pass state it sets
 // FX_ENUM_VALUE(Domain, Name, Value)               the named values of an enum domain
 //
 // Domains: Bool, Int (unsigned/int), Float, ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
@@ -23,6 +26,9 @@
 #endif
 #ifndef FX_ENUM_VALUE
 #define FX_ENUM_VALUE(domain, name, value)
+#endif
+#ifndef FX_OBJECT_FIELD
+#define FX_OBJECT_FIELD(object, field, domain, def, state)
 #endif
 
 // [SECTION] Pass states
@@ -57,6 +63,14 @@ FX_RENDER_STATE(MultiSampleAntialias, Bool, 1)
 // and far planes (GL_DEPTH_CLAMP), the "pancaking" of casters in front of a light frustum fitted to
 // receivers.
 FX_RENDER_STATE(DepthClipEnable, Bool, 1)
+// D3D10's rasterizer and blend fields with no D3D9 state. DepthBiasUnits is D3D10's integer DepthBias, in
+// multiples of the smallest resolvable depth difference (glPolygonOffset's `units` as they are);
+// DepthBiasClamp bounds the total bias (0 = unbounded, as D3D9 always was).
+FX_RENDER_STATE(DepthBiasUnits, Float, 0)
+FX_RENDER_STATE(DepthBiasClamp, Float, 0)
+FX_RENDER_STATE(AntialiasedLineEnable, Bool, 0)
+FX_RENDER_STATE(AlphaToCoverageEnable, Bool, 0)
+FX_RENDER_STATE(SampleMask, Int, 0xffffffff)
 FX_RENDER_STATE(StencilEnable, Bool, 0)
 FX_RENDER_STATE(StencilFunc, Cmp, 8)  // ALWAYS
 FX_RENDER_STATE(StencilRef, Int, 0)
@@ -100,13 +114,56 @@ FX_SAMPLER_STATE(MipMapLodBias, Float, 0)
 FX_SAMPLER_STATE(MaxMipLevel, Int, 0)
 FX_SAMPLER_STATE(MaxAnisotropy, Int, 1)
 FX_SAMPLER_STATE(SRGBTexture, Bool, 0)
-FX_SAMPLER_STATE(Filter, Filter10, 0x15)  // D3D10 MIN_MAG_MIP_LINEAR; decomposed by the compiler
-FX_SAMPLER_STATE(ComparisonFunc, Cmp, 0)  // D3D10 style; 0 = not a comparison sampler
+FX_SAMPLER_STATE(Filter, Filter10, 0x15)          // D3D10 MIN_MAG_MIP_LINEAR; decomposed by the compiler
+FX_SAMPLER_STATE(ComparisonFunc, Cmp, 0)          // D3D10 style; 0 = not a comparison sampler
+FX_SAMPLER_STATE(MinLOD, Float, -3.402823466e38)  // D3D10 style
+FX_SAMPLER_STATE(MaxLOD, Float, 3.402823466e38)
 
 FX_STATE_ALIAS(AddressS, AddressU)
 FX_STATE_ALIAS(AddressT, AddressV)
 FX_STATE_ALIAS(AddressR, AddressW)
 FX_STATE_ALIAS(MipMapLODBias, MipMapLodBias)
+FX_STATE_ALIAS(MipLODBias, MipMapLodBias)
+
+// [SECTION] D3D10 state objects
+// Every field of D3D10/11's RasterizerState, DepthStencilState and BlendState with its D3D10 default (which
+// is what a field a state object leaves out takes, and what a technique10/11 pass that sets no such object
+// runs with). Where D3D10 and D3D9 differ: DepthFunc LESS (D3D9 LESSEQUAL), stencil masks 0xff (D3D9
+// 0xffffffff), MultisampleEnable false (D3D9 true). CullMode is folded with FrontCounterClockwise into
+// D3D9's CullMode by the parser; BlendEnable[i] and RenderTargetWriteMask[i] take a render-target index.
+FX_OBJECT_FIELD(Rasterizer, FillMode, Fill, 3, FillMode)    // SOLID
+FX_OBJECT_FIELD(Rasterizer, CullMode, Cull10, 3, CullMode)  // BACK
+FX_OBJECT_FIELD(Rasterizer, FrontCounterClockwise, Bool, 0, CullMode)
+FX_OBJECT_FIELD(Rasterizer, DepthBias, Int, 0, DepthBiasUnits)
+FX_OBJECT_FIELD(Rasterizer, DepthBiasClamp, Float, 0, DepthBiasClamp)
+FX_OBJECT_FIELD(Rasterizer, SlopeScaledDepthBias, Float, 0, SlopeScaleDepthBias)
+FX_OBJECT_FIELD(Rasterizer, DepthClipEnable, Bool, 1, DepthClipEnable)
+FX_OBJECT_FIELD(Rasterizer, ScissorEnable, Bool, 0, ScissorTestEnable)
+FX_OBJECT_FIELD(Rasterizer, MultisampleEnable, Bool, 0, MultiSampleAntialias)
+FX_OBJECT_FIELD(Rasterizer, AntialiasedLineEnable, Bool, 0, AntialiasedLineEnable)
+FX_OBJECT_FIELD(DepthStencil, DepthEnable, Bool, 1, ZEnable)
+FX_OBJECT_FIELD(DepthStencil, DepthWriteMask, DepthWriteMask, 1, ZWriteEnable)  // ALL
+FX_OBJECT_FIELD(DepthStencil, DepthFunc, Cmp, 2, ZFunc)                         // LESS
+FX_OBJECT_FIELD(DepthStencil, StencilEnable, Bool, 0, StencilEnable)
+FX_OBJECT_FIELD(DepthStencil, StencilReadMask, Int, 0xff, StencilMask)
+FX_OBJECT_FIELD(DepthStencil, StencilWriteMask, Int, 0xff, StencilWriteMask)
+FX_OBJECT_FIELD(DepthStencil, FrontFaceStencilFunc, Cmp, 8, StencilFunc)        // ALWAYS
+FX_OBJECT_FIELD(DepthStencil, FrontFaceStencilFail, StencilOp, 1, StencilFail)  // KEEP
+FX_OBJECT_FIELD(DepthStencil, FrontFaceStencilDepthFail, StencilOp, 1, StencilZFail)
+FX_OBJECT_FIELD(DepthStencil, FrontFaceStencilPass, StencilOp, 1, StencilPass)
+FX_OBJECT_FIELD(DepthStencil, BackFaceStencilFunc, Cmp, 8, CCW_StencilFunc)
+FX_OBJECT_FIELD(DepthStencil, BackFaceStencilFail, StencilOp, 1, CCW_StencilFail)
+FX_OBJECT_FIELD(DepthStencil, BackFaceStencilDepthFail, StencilOp, 1, CCW_StencilZFail)
+FX_OBJECT_FIELD(DepthStencil, BackFaceStencilPass, StencilOp, 1, CCW_StencilPass)
+FX_OBJECT_FIELD(Blend, AlphaToCoverageEnable, Bool, 0, AlphaToCoverageEnable)
+FX_OBJECT_FIELD(Blend, BlendEnable, Bool, 0, AlphaBlendEnable)
+FX_OBJECT_FIELD(Blend, SrcBlend, Blend, 2, SrcBlend)    // ONE
+FX_OBJECT_FIELD(Blend, DestBlend, Blend, 1, DestBlend)  // ZERO
+FX_OBJECT_FIELD(Blend, BlendOp, BlendOp, 1, BlendOp)    // ADD
+FX_OBJECT_FIELD(Blend, SrcBlendAlpha, Blend, 2, SrcBlendAlpha)
+FX_OBJECT_FIELD(Blend, DestBlendAlpha, Blend, 1, DestBlendAlpha)
+FX_OBJECT_FIELD(Blend, BlendOpAlpha, BlendOp, 1, BlendOpAlpha)
+FX_OBJECT_FIELD(Blend, RenderTargetWriteMask, ColorMask, 15, ColorWriteEnable)
 
 // [SECTION] Enum domains (D3D9 numeric values)
 FX_ENUM_VALUE(Bool, False, 0)
@@ -117,6 +174,11 @@ FX_ENUM_VALUE(Cull, CCW, 3)
 FX_ENUM_VALUE(Fill, Point, 1)
 FX_ENUM_VALUE(Fill, Wireframe, 2)
 FX_ENUM_VALUE(Fill, Solid, 3)
+FX_ENUM_VALUE(Cull10, None, 1)  // D3D10_CULL_MODE: which faces, not which winding
+FX_ENUM_VALUE(Cull10, Front, 2)
+FX_ENUM_VALUE(Cull10, Back, 3)
+FX_ENUM_VALUE(DepthWriteMask, Zero, 0)
+FX_ENUM_VALUE(DepthWriteMask, All, 1)
 FX_ENUM_VALUE(Shade, Flat, 1)
 FX_ENUM_VALUE(Shade, Gouraud, 2)
 FX_ENUM_VALUE(Shade, Phong, 3)
@@ -180,6 +242,11 @@ FX_ENUM_VALUE(Filter10, MIN_MAG_LINEAR_MIP_POINT, 0x14)
 FX_ENUM_VALUE(Filter10, MIN_MAG_MIP_LINEAR, 0x15)
 FX_ENUM_VALUE(Filter10, ANISOTROPIC, 0x55)
 FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_MIP_POINT, 0x80)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_POINT_MIP_LINEAR, 0x81)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_POINT_MAG_LINEAR_MIP_POINT, 0x84)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_POINT_MAG_MIP_LINEAR, 0x85)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_LINEAR_MAG_MIP_POINT, 0x90)
+FX_ENUM_VALUE(Filter10, COMPARISON_MIN_LINEAR_MAG_POINT_MIP_LINEAR, 0x91)
 FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_LINEAR_MIP_POINT, 0x94)
 FX_ENUM_VALUE(Filter10, COMPARISON_MIN_MAG_MIP_LINEAR, 0x95)
 FX_ENUM_VALUE(Filter10, COMPARISON_ANISOTROPIC, 0xd5)
@@ -188,3 +255,4 @@ FX_ENUM_VALUE(Filter10, COMPARISON_ANISOTROPIC, 0xd5)
 #undef FX_SAMPLER_STATE
 #undef FX_STATE_ALIAS
 #undef FX_ENUM_VALUE
+#undef FX_OBJECT_FIELD

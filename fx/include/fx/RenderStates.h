@@ -26,7 +26,9 @@ enum class StateDomain {
     StencilOp,
     Address,
     TexFilter,
-    Filter10,  // D3D10 Filter = MIN_MAG_LINEAR_MIP_POINT
+    Filter10,        // D3D10 Filter = MIN_MAG_LINEAR_MIP_POINT
+    Cull10,          // D3D10 CullMode: NONE, FRONT, BACK
+    DepthWriteMask,  // D3D10 DepthWriteMask: ZERO, ALL
 };
 
 enum class RenderStateId {
@@ -40,6 +42,23 @@ enum class SamplerStateId {
 #include <fx/RenderStateDefs.h>
     Count
 };
+
+// The D3D10 state objects (RenderStateDefs.h, FX_OBJECT_FIELD).
+enum class StateObjectKind { Rasterizer, DepthStencil, Blend };
+
+struct StateObjectField {
+    StateObjectKind object;
+    std::string_view name;  // canonical spelling ("SlopeScaledDepthBias")
+    StateDomain domain;
+    double defaultValue;  // D3D10's
+    RenderStateId state;  // the pass state it sets
+};
+
+// Every field of one object kind, in table order.
+std::vector<const StateObjectField*> stateObjectFields(StateObjectKind object);
+// Case-insensitive.
+const StateObjectField* findStateObjectField(StateObjectKind object, std::string_view name);
+std::string_view stateObjectTypeName(StateObjectKind object);  // "RasterizerState", ...
 
 struct StateInfo {
     std::string_view name;  // canonical spelling

@@ -164,16 +164,24 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
             break;
     }
     float depthBias = float(value(RenderStateId::DepthBias));
+    // D3D10's integer DepthBias is already in GL's units (multiples of the smallest resolvable difference).
+    // Its DepthBiasClamp needs GL 4.6's glPolygonOffsetClamp: recorded, not applied on this GL 4.5 runtime.
+    float depthBiasUnits = float(value(RenderStateId::DepthBiasUnits));
     float slopeScale = float(value(RenderStateId::SlopeScaleDepthBias));
-    bool offset = depthBias != 0.0f || slopeScale != 0.0f;
+    bool offset = depthBias != 0.0f || slopeScale != 0.0f || depthBiasUnits != 0.0f;
     enable(GL_POLYGON_OFFSET_FILL, offset);
     enable(GL_POLYGON_OFFSET_LINE, offset);
     enable(GL_POLYGON_OFFSET_POINT, offset);
-    gl::PolygonOffset(slopeScale, depthBias * std::ldexp(1.0f, depthBits > 0 ? depthBits : 24));
+    gl::PolygonOffset(slopeScale,
+                      depthBias * std::ldexp(1.0f, depthBits > 0 ? depthBits : 24) + depthBiasUnits);
     enable(GL_SCISSOR_TEST, flag(RenderStateId::ScissorTestEnable));
     enable(GL_MULTISAMPLE, flag(RenderStateId::MultiSampleAntialias));
     enable(GL_DEPTH_CLAMP, !flag(RenderStateId::DepthClipEnable));
     enable(GL_FRAMEBUFFER_SRGB, flag(RenderStateId::SRGBWriteEnable));
+    enable(GL_SAMPLE_ALPHA_TO_COVERAGE, flag(RenderStateId::AlphaToCoverageEnable));
+    const uint32_t sampleMask = bits(RenderStateId::SampleMask);
+    enable(GL_SAMPLE_MASK, sampleMask != 0xffffffffu);
+    gl::SampleMaski(0, sampleMask);
 
     // [SECTION] Blending. One blend state for all targets, as D3D9 (no independent blend).
     enable(GL_BLEND, flag(RenderStateId::AlphaBlendEnable));
