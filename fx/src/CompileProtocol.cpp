@@ -91,6 +91,8 @@ void writeProgram(Writer& w, const StageProgram& p) {
         w.str(s.glslName);
         w.u32(static_cast<uint32_t>(s.unit));
         w.u32(s.depthCompare ? 1u : 0u);
+        w.str(s.pairTexture);
+        w.str(s.pairSampler);
     }
     w.u32(static_cast<uint32_t>(p.inputs.size()));
     for (const VertexInput& i : p.inputs) {
@@ -116,11 +118,13 @@ void readProgram(Reader& r, StageProgram& p) {
         u.hlslColumnsContiguous = flags & 1u;
         u.active = flags & 2u;
     }
-    p.samplers.resize(r.count(12));
+    p.samplers.resize(r.count(20));
     for (SamplerBinding& s : p.samplers) {
         s.glslName = r.str();
         s.unit = r.i32();
         s.depthCompare = r.u32() != 0;
+        s.pairTexture = r.str();
+        s.pairSampler = r.str();
     }
     p.inputs.resize(r.count(12));
     for (VertexInput& i : p.inputs) {

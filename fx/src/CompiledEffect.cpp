@@ -9,6 +9,8 @@ namespace fx {
 const CompiledTechnique* CompiledEffect::findTechnique(const std::string& name) const {
     for (const CompiledTechnique& t : techniques)
         if (t.name == name) return &t;
+    for (const CompiledTechnique& t : techniques)
+        if (!t.group.empty() && t.group + "." + t.name == name) return &t;
     return nullptr;
 }
 

@@ -30,6 +30,13 @@ bool TypeDesc::isSampler() const {
     return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState;
 }
 
+bool TypeDesc::isStateObject() const {
+    return base >= BaseType::RasterizerState && base <= BaseType::BlendState;
+}
+bool TypeDesc::isShader() const {
+    return base >= BaseType::VertexShader && base <= BaseType::ComputeShader;
+}
+
 int TypeDesc::componentCount() const {
     int count = rows * cols;
     for (int dim : arrayDims) count *= std::max(dim, 1);
@@ -89,6 +96,20 @@ std::string TypeDesc::hlslName() const {
             return "VertexShader";
         case BaseType::PixelShader:
             return "PixelShader";
+        case BaseType::GeometryShader:
+            return "GeometryShader";
+        case BaseType::HullShader:
+            return "HullShader";
+        case BaseType::DomainShader:
+            return "DomainShader";
+        case BaseType::ComputeShader:
+            return "ComputeShader";
+        case BaseType::RasterizerState:
+            return "RasterizerState";
+        case BaseType::DepthStencilState:
+            return "DepthStencilState";
+        case BaseType::BlendState:
+            return "BlendState";
         case BaseType::Struct:
             return structName;
     }
@@ -238,6 +259,8 @@ const StructDecl* Effect::findStruct(const std::string& name) const {
 const Technique* Effect::findTechnique(const std::string& name) const {
     for (const Technique& technique : techniques)
         if (technique.name == name) return &technique;
+    for (const Technique& technique : techniques)
+        if (!technique.group.empty() && technique.group + "." + technique.name == name) return &technique;
     return nullptr;
 }
 

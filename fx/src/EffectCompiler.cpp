@@ -83,6 +83,7 @@ private:
     void textures();
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
     void samplers();
+    void assignPairUnits();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
     void validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique);
@@ -371,11 +372,22 @@ void Compiler::samplers() {
     int unit = 0;
     for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
         const Parameter& p = mEffect.parameters[i];
-        if (!(p.type.base >= BaseType::Sampler && p.type.base <= BaseType::SamplerCube)) continue;
-        mSamplerUnits[p.name] = unit++;
+        if (!p.type.isSampler()) continue;
         SamplerDesc s;
         s.parameter = i;
         s.loc = p.loc;
+        const bool d3d10 =
+            p.type.base == BaseType::SamplerState || p.type.base == BaseType::SamplerComparisonState;
+        if (d3d10) {
+            // D3D10's sampler defaults (D3D11_SAMPLER_DESC's, which FX11 uses) differ from D3D9's: trilinear
+            // and clamped, white border; a comparison sampler compares with NEVER until told otherwise.
+            s.minFilter = s.magFilter = s.mipFilter = 2;
+            s.addressU = s.addressV = s.addressW = 3;
+            for (float& c : s.borderColor) c = 1.0f;
+            s.comparisonFunc = p.type.base == BaseType::SamplerComparisonState ? 1 : 0;
+        } else {
+            mSamplerUnits[p.name] = unit++;  // D3D10 samplers get units per (texture, sampler) pair
+        }
         bool hasComparison = false;
         for (const StateAssignment& a : p.samplerState) {
             auto id = findSamplerState(a.name);
@@ -440,6 +452,12 @@ void Compiler::samplers() {
                 case SamplerStateId::MipMapLodBias:
                     s.mipLodBias = value[0];
                     break;
+                case SamplerStateId::MinLOD:
+                    s.minLod = std::max(value[0], -1000.0f);
+                    break;
+                case SamplerStateId::MaxLOD:
+                    s.maxLod = std::min(value[0], 1000.0f);
+                    break;
                 case SamplerStateId::ComparisonFunc:
                     s.comparisonFunc = n;
                     break;
@@ -469,8 +487,25 @@ void Compiler::samplers() {
             }
         }
         if (hasComparison && s.comparisonFunc == 0) s.comparisonFunc = 4;  // LESSEQUAL
+        // A D3D10 SamplerState compares only through SampleCmp on a SamplerComparisonState.
+        if (p.type.base == BaseType::SamplerState) s.comparisonFunc = 0;
         mOut->samplers.push_back(s);
     }
+}
+
+// D3D10 (texture, sampler) pairs: units after the D3D9 samplers', one per pair a pass samples (the same
+// in both stages, so that they link to one GL sampler unit).
+void Compiler::assignPairUnits() {
+    const int first = static_cast<int>(mSamplerUnits.size());
+    for (CompiledTechnique& technique : mOut->techniques)
+        for (CompiledPass& pass : technique.passes) {
+            std::map<std::string, int> units;
+            for (StageProgram* stage : {&pass.vertex, &pass.fragment})
+                for (SamplerBinding& s : stage->samplers)
+                    if (!s.pairTexture.empty())
+                        s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
+                                     .first->second;
+        }
 }
 
 // [SECTION] Scripts
@@ -655,8 +690,13 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
         }
     }
     for (SamplerBinding& s : program.samplers) {
-        auto it = mIndex.find(s.glslName);
-        if (it != mIndex.end()) s.samplerParameter = it->second;
+        auto it = mIndex.find(s.pairTexture.empty() ? s.glslName : s.pairSampler);
+        if (it != mIndex.end())
+            s.samplerParameter = it->second;
+        else if (!s.pairTexture.empty())
+            s.samplerParameter = kNoSampler;  // Texture2D.Load: the texture alone
+        if (auto texture = mIndex.find(s.pairTexture); !s.pairTexture.empty() && texture != mIndex.end())
+            s.textureParameter = texture->second;
     }
 }
 
@@ -859,10 +899,11 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     scripts();
     bool found = mOptions.technique.empty();
     for (const Technique& t : mEffect.techniques) {
-        if (!mOptions.technique.empty() && t.name != mOptions.technique) continue;
+        if (!mOptions.technique.empty() && mEffect.findTechnique(mOptions.technique) != &t) continue;
         found = true;
         CompiledTechnique technique;
         technique.name = t.name;
+        technique.group = t.group;
         technique.loc = t.loc;
         technique.script = script(t.annotations, technique.hasScript);
         validateScript(technique.script, &t);
@@ -872,6 +913,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         mOut->techniques.push_back(std::move(technique));
     }
     finishPendingStages();
+    assignPairUnits();
     // An empty file, or one of helpers only; said only when nothing else is wrong with it.
     if (mEffect.techniques.empty() && !mFailed)
         error(DiagId::NoTechniques, SourceLoc{mEffect.path, 1, 1}, {});

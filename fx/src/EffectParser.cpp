@@ -5,7 +5,11 @@
 //  - global parameters with storage classes, semantics, annotations and initializers
 //  - textures, samplers with sampler_state blocks (validated against the sampler state table)
 //  - structs, functions (HLSL kept as text slices), typedefs and cbuffers (verbatim)
-//  - techniques (technique/technique10/technique11), passes, render states (validated, enums resolved)
+//  - techniques (technique/technique10/technique11, fxgroup), passes, render states (validated, enums
+//    resolved); D3D10 state objects expanded into the pass states they set (RenderStateDefs.h)
+//  - cbuffer/tbuffer members as effect parameters
+//  - techniques GL cannot run (stream output, dynamic linkage, stages shadowfx does not lower) left out
+//    with a located warning; an effect all of whose techniques are left out is an error
 //  - error recovery per top-level declaration, at most kMaxErrors errors, bounded recursion
 #include <fx/EffectParser.h>
 #include <fx/RenderStates.h>
@@ -14,6 +18,7 @@
 #include "Preprocessor.h"
 #include "UserFunctionInliner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -79,6 +84,13 @@ bool parseObjectTypeName(const std::string& name, TypeDesc& type) {
         {"SamplerComparisonState", BaseType::SamplerComparisonState},
         {"VertexShader", BaseType::VertexShader},
         {"PixelShader", BaseType::PixelShader},
+        {"GeometryShader", BaseType::GeometryShader},
+        {"HullShader", BaseType::HullShader},
+        {"DomainShader", BaseType::DomainShader},
+        {"ComputeShader", BaseType::ComputeShader},
+        {"RasterizerState", BaseType::RasterizerState},
+        {"DepthStencilState", BaseType::DepthStencilState},
+        {"BlendState", BaseType::BlendState},
         {"string", BaseType::String},
         {"void", BaseType::Void},
     };
@@ -109,6 +121,14 @@ public:
                 }
             }
         } catch (const TooManyErrors&) {
+            return;
+        }
+        if (mEffect.techniques.empty() && mFirstRefused) {
+            try {
+                error(DiagId::AllTechniquesRefused, mFirstRefused->loc,
+                      {mFirstRefused->name, mFirstRefused->reason});
+            } catch (const TooManyErrors&) {
+            }
         }
     }
 
@@ -245,9 +265,22 @@ private:
                isTemplatedObject(token.text);
     }
     static bool isTemplatedObject(const std::string& name) {
-        static const char* kNames[] = {"Texture2DArray", "TextureCubeArray", "Texture2DMS",
-                                       "Texture1DArray", "Buffer",           "RWTexture2D",
-                                       "RWBuffer",       "StructuredBuffer"};
+        static const char* kNames[] = {"Texture2DArray",
+                                       "TextureCubeArray",
+                                       "Texture2DMS",
+                                       "Texture2DMSArray",
+                                       "Texture1DArray",
+                                       "Buffer",
+                                       "RWTexture1D",
+                                       "RWTexture2D",
+                                       "RWTexture3D",
+                                       "RWBuffer",
+                                       "StructuredBuffer",
+                                       "RWStructuredBuffer",
+                                       "ByteAddressBuffer",
+                                       "RWByteAddressBuffer",
+                                       "AppendStructuredBuffer",
+                                       "ConsumeStructuredBuffer"};
         for (const char* n : kNames)
             if (name == n) return true;
         return false;
@@ -296,7 +329,9 @@ private:
         }
         if (isTemplatedObject(name.text)) {
             fail(DiagId::UnsupportedFeature, name.loc,
-                 {"type '" + name.text + "' is not supported in effects"});
+                 {"type '" + name.text +
+                  "' is not supported in effects: shadowfx creates no array, multisample or buffer resources "
+                  "for them"});
         }
         fail(DiagId::UnknownType, name.loc, {name.text});
     }
@@ -451,10 +486,18 @@ private:
             return;
         }
         if (token.kind != Token::Kind::Identifier && !token.is("[")) unexpected("a declaration");
-        if (token.text == "technique" || token.text == "technique10" || token.text == "technique11") {
-            parseTechnique();
+        if (isTechniqueKeyword(token)) {
+            parseTechnique("");
             return;
         }
+        if (token.text == "fxgroup") {
+            parseGroup();
+            return;
+        }
+        if (token.text == "interface" || token.text == "class")
+            fail(DiagId::UnsupportedFeature, token.loc,
+                 {"dynamic shader linkage ('" + token.text +
+                  "') is not supported: GLSL has no interfaces or classes to bind at run time"});
         if (token.text == "struct") {
             parseStruct();
             return;
@@ -467,7 +510,7 @@ private:
             return;
         }
         if (token.text == "cbuffer" || token.text == "tbuffer") {
-            parseVerbatimBlock();
+            parseConstantBuffer();
             return;
         }
         parseDeclaration();
@@ -487,23 +530,24 @@ private:
         addVerbatim(first, last);
     }
 
-    void parseVerbatimBlock() {
-        size_t first = mPos;
+    // `cbuffer Name : register(b0) { float4x4 World : WORLD; ... };`: its members are effect parameters
+    // like any global (semantics, annotations, initializers), bound by semantic; GL gets them in the
+    // stage's one uniform block, as D3D9's globals.
+    void parseConstantBuffer() {
         const Token& keyword = advance();
         expectIdentifier("a name");
         parseSemantics();
+        if (check("<")) parseAnnotations();
         if (!check("{")) unexpected("'{'");
         const Token& open = advance();
-        int depth = 1;
-        while (depth > 0) {
-            if (atEnd()) unclosed(keyword.text == "cbuffer" ? "cbuffer" : "tbuffer", open);
-            if (check("{")) ++depth;
-            if (check("}")) --depth;
-            advance();
+        while (!check("}")) {
+            if (atEnd() || isTechniqueKeyword(peek()))
+                unclosed(keyword.text == "cbuffer" ? "cbuffer" : "tbuffer", open);
+            if (accept(";")) continue;
+            parseDeclaration(/*inBuffer*/ true);
         }
-        size_t last = mPos - 1;
-        if (check(";")) last = mPos, advance();
-        addVerbatim(first, last);
+        advance();
+        accept(";");
     }
 
     void addVerbatim(size_t first, size_t last) {
@@ -527,9 +571,7 @@ private:
         if (!check("{")) unexpected("'{'");
         const Token& open = advance();
         while (!check("}")) {
-            if (atEnd() || check("struct") || check("technique") || check("technique10") ||
-                check("technique11"))
-                unclosed("struct", keyword);
+            if (atEnd() || check("struct") || isTechniqueKeyword(peek())) unclosed("struct", keyword);
             StructMember member;
             static const char* kInterpolation[] = {"linear", "centroid", "nointerpolation", "noperspective",
                                                    "sample"};
@@ -580,7 +622,7 @@ private:
         bool rowMajor = false;
     };
 
-    void parseDeclaration() {
+    void parseDeclaration(bool inBuffer = false) {
         size_t first = mPos;
         if (check("[")) {  // [numthreads(...)], [maxvertexcount(...)] before a function
             while (check("[")) skipBalanced("[", "]");
@@ -615,10 +657,12 @@ private:
         type.rowMajor = storage.rowMajor;
         const Token& name = expectIdentifier("a name");
         if (check("(")) {
+            if (inBuffer) unexpected("a member declaration");
             parseFunction(first, type, name);
             return;
         }
         bool firstDeclarator = true;
+        bool endsInBlock = false;
         std::vector<size_t> declared;
         const Token* declName = &name;
         for (;;) {
@@ -634,8 +678,15 @@ private:
             parseArrayDims(parameter.type);
             parameter.semantic = parseSemantics();
             if (check("<")) parameter.annotations = parseAnnotations();
+            endsInBlock = check("{");
             if (parameter.type.isSampler() && check("{")) {
                 parameter.samplerState = parseSamplerStateBlock();  // D3D10: SamplerState s { ... };
+            } else if (parameter.type.isStateObject()) {
+                if (!parameter.type.arrayDims.empty())
+                    fail(DiagId::UnsupportedFeature, parameter.loc,
+                         {"arrays of state objects are not supported"});
+                if (check("{"))
+                    parameter.objectState = parseObjectStateBlock(objectKind(parameter.type.base));
             } else if (accept("=")) {
                 if (check("sampler_state")) {
                     advance();
@@ -656,7 +707,8 @@ private:
         }
         (void)firstDeclarator;
         size_t last = mPos;
-        expect(";");
+        // fxc takes a D3D10 state block without the ';' after its '}'.
+        if (!(endsInBlock && !check(";"))) expect(";");
         if (storage.isStatic && !declared.empty()) {
             // The whole declaration goes with its first declarator; the others share it.
             Parameter& p = mEffect.parameters[declared.front()];
@@ -818,10 +870,33 @@ private:
 
     // [SECTION] Techniques and passes
 
-    void parseTechnique() {
+    static bool isTechniqueKeyword(const Token& token) {
+        return token.is("technique") || token.is("technique10") || token.is("technique11");
+    }
+
+    // `fxgroup Name { technique11 A { ... } ... }` (D3D11): its techniques keep their names and are also
+    // found as "Name.A".
+    void parseGroup() {
+        const Token& keyword = advance();
+        const Token& name = expectIdentifier("a group name");
+        if (check("<")) parseAnnotations();
+        if (!check("{")) unexpected("'{'");
+        advance();
+        while (!check("}")) {
+            if (atEnd() || check("fxgroup")) unclosed("fxgroup", keyword);
+            if (!isTechniqueKeyword(peek())) unexpected("'technique11' or '}'");
+            parseTechnique(name.text);
+        }
+        advance();
+        accept(";");
+    }
+
+    void parseTechnique(const std::string& group) {
         const Token& keyword = advance();
         Technique technique;
         technique.loc = keyword.loc;
+        technique.group = group;
+        technique.d3d10 = keyword.is("technique10") || keyword.is("technique11");
         if (peek().kind == Token::Kind::Identifier) {
             technique.name = peek().text;
             technique.loc = advance().loc;
@@ -829,20 +904,35 @@ private:
         if (check("<")) technique.annotations = parseAnnotations();
         if (!check("{")) unexpected("'{'");
         advance();
+        mRefusal.reset();
         while (!check("}")) {
-            if (atEnd() || check("technique") || check("technique10") || check("technique11"))
-                unclosed("technique", keyword);
+            if (atEnd() || isTechniqueKeyword(peek())) unclosed("technique", keyword);
             if (!check("pass")) unexpected("'pass' or '}'");
-            technique.passes.push_back(parsePass());
+            technique.passes.push_back(parsePass(technique.d3d10));
         }
         advance();
         accept(";");
-        if (!technique.name.empty() && mEffect.findTechnique(technique.name))
-            error(DiagId::Redefinition, technique.loc, {technique.name});
+        for (const Technique& other : mEffect.techniques)
+            if (!technique.name.empty() && other.name == technique.name && other.group == technique.group)
+                error(DiagId::Redefinition, technique.loc, {technique.name});
+        if (mRefusal) {
+            // Never silently: the technique is named, with what GL cannot run and where it stands.
+            const std::string name = technique.name.empty() ? "(unnamed)" : technique.name;
+            mDiag.report(DiagId::TechniqueRefused, mRefusal->loc, {name, mRefusal->reason});
+            if (!mFirstRefused) mFirstRefused = Refused{name, mRefusal->reason, mRefusal->loc};
+            mRefusal.reset();
+            return;
+        }
         mEffect.techniques.push_back(std::move(technique));
     }
 
-    Pass parsePass() {
+    // Something in the technique being parsed that GL cannot run: the technique is left out (the first
+    // reason is reported), the rest of the effect still runs.
+    void refuseTechnique(const SourceLoc& loc, const std::string& reason) {
+        if (!mRefusal) mRefusal = Refused{"", reason, loc};
+    }
+
+    Pass parsePass(bool d3d10) {
         const Token& keyword = advance();
         Pass pass;
         pass.loc = keyword.loc;
@@ -853,14 +943,238 @@ private:
         if (check("<")) pass.annotations = parseAnnotations();
         if (!check("{")) unexpected("'{'");
         advance();
+        mObjectsSet.clear();
         while (!check("}")) {
-            if (atEnd() || check("pass") || check("technique") || check("technique10") ||
-                check("technique11"))
-                unclosed("pass", keyword);
+            if (atEnd() || check("pass") || isTechniqueKeyword(peek())) unclosed("pass", keyword);
             parsePassState(pass);
         }
         advance();
+        if (d3d10) {
+            // A D3D10 pass that sets no rasterizer, depth-stencil or blend state runs with D3D10's
+            // defaults for it, not D3D9's (DepthFunc LESS, stencil masks 0xff, ...): expanded first, so
+            // that anything the pass sets wins.
+            std::vector<StateAssignment> defaults;
+            for (StateObjectKind kind :
+                 {StateObjectKind::Rasterizer, StateObjectKind::DepthStencil, StateObjectKind::Blend})
+                if (!mObjectsSet.count(kind)) expandStateObject(kind, {}, pass.loc, defaults);
+            pass.states.insert(pass.states.begin(), defaults.begin(), defaults.end());
+        }
         return pass;
+    }
+
+    static StateObjectKind objectKind(BaseType base) {
+        return base == BaseType::RasterizerState     ? StateObjectKind::Rasterizer
+               : base == BaseType::DepthStencilState ? StateObjectKind::DepthStencil
+                                                     : StateObjectKind::Blend;
+    }
+
+    // Set*Shader(...) and Set*State(...) in a D3D10 pass.
+    void parseSetCall(Pass& pass, const Token& name) {
+        advance();  // '('
+        std::vector<Expr> args;
+        if (!check(")")) {
+            args.push_back(parseExpr());
+            while (accept(",")) args.push_back(parseExpr());
+        }
+        expect(")");
+        expect(";");
+        std::string what = name.text.substr(3);
+        for (StateObjectKind kind :
+             {StateObjectKind::Rasterizer, StateObjectKind::DepthStencil, StateObjectKind::Blend}) {
+            if (what != stateObjectTypeName(kind)) continue;
+            setStateObject(pass, name, kind, args);
+            return;
+        }
+        const bool isShader = what == "VertexShader" || what == "PixelShader" || what == "GeometryShader" ||
+                              what == "HullShader" || what == "DomainShader" || what == "ComputeShader";
+        if (!isShader) {
+            error(DiagId::UnknownState, name.loc, {name.text});
+            return;
+        }
+        if (args.size() != 1) {
+            error(DiagId::InvalidStateValue, name.loc, {name.text, "expected one shader"});
+            return;
+        }
+        Expr value = std::move(args[0]);
+        if (value.kind == Expr::Kind::Call && value.text == "BindInterfaces") {
+            refuseTechnique(
+                value.loc,
+                "dynamic shader linkage (BindInterfaces) is not supported: GLSL has no interfaces "
+                "to bind at run time");
+            return;
+        }
+        if (value.kind == Expr::Kind::Call &&
+            (value.text == "ConstructGSWithSO" || value.text == "ConstructGSWithSO")) {
+            refuseTechnique(value.loc,
+                            "stream output (ConstructGSWithSO) is not supported: shadowfx has no transform "
+                            "feedback");
+            return;
+        }
+        normalizeCompileShader(value);
+        normalizeNull(value);
+        const bool none = (value.kind == Expr::Kind::Identifier && value.text == "NULL") ||
+                          (value.kind == Expr::Kind::Number && value.number == 0);
+        if (what == "VertexShader" || what == "PixelShader") {
+            StateAssignment state;
+            state.name = what;
+            state.loc = name.loc;
+            state.value = std::move(value);
+            validateShaderValue(state);
+            pass.states.push_back(std::move(state));
+            return;
+        }
+        if (none) return;
+        if (value.kind == Expr::Kind::Identifier && !mEffect.findParameter(value.text)) {
+            error(DiagId::UnknownIdentifier, value.loc, {value.text});
+            return;
+        }
+        std::string stage = what.substr(0, what.size() - 6);  // "Geometry"
+        for (char& c : stage) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        refuseTechnique(name.loc,
+                        what == "ComputeShader"
+                            ? "compute shaders are dispatched by an application, not drawn by a pass"
+                            : stage + " shaders are not supported by shadowfx's pass lowering");
+    }
+
+    // SetRasterizerState(rs), SetDepthStencilState(ds, stencilRef), SetBlendState(bs, factor, sampleMask):
+    // the object's fields (its block, D3D10 defaults for the rest) become the pass's states.
+    void setStateObject(Pass& pass, const Token& name, StateObjectKind kind, std::vector<Expr>& args) {
+        const size_t expected = kind == StateObjectKind::Rasterizer     ? 1
+                                : kind == StateObjectKind::DepthStencil ? 2
+                                                                        : 3;
+        if (args.size() != expected) {
+            error(DiagId::InvalidStateValue, name.loc,
+                  {name.text, "expected " + std::to_string(expected) + " argument(s), found " +
+                                  std::to_string(args.size())});
+            return;
+        }
+        const Expr& object = args[0];
+        const std::vector<StateAssignment>* block = nullptr;
+        static const std::vector<StateAssignment> kNone;
+        if (object.kind == Expr::Kind::Identifier && equalsIgnoreCase(object.text, "NULL")) {
+            block = &kNone;  // NULL: the D3D10 defaults
+        } else if (object.kind == Expr::Kind::Identifier) {
+            const Parameter* p = mEffect.findParameter(object.text);
+            if (!p) {
+                error(DiagId::UnknownIdentifier, object.loc, {object.text});
+                return;
+            }
+            if (!p->type.isStateObject() || objectKind(p->type.base) != kind) {
+                error(
+                    DiagId::InvalidStateValue, object.loc,
+                    {name.text, "'" + object.text + "' is not a " + std::string(stateObjectTypeName(kind))});
+                return;
+            }
+            block = &p->objectState;
+        } else {
+            error(DiagId::InvalidStateValue, object.loc,
+                  {name.text, "expected the name of a " + std::string(stateObjectTypeName(kind))});
+            return;
+        }
+        mObjectsSet.insert(kind);
+        expandStateObject(kind, *block, name.loc, pass.states);
+        auto add = [&](RenderStateId id, Expr value) {
+            StateAssignment state;
+            state.name = std::string(renderStateInfo(id).name);
+            state.loc = value.loc.valid() ? value.loc : name.loc;
+            state.value = std::move(value);
+            resolveStateValue(state.value, renderStateInfo(id).domain, state.name);
+            pass.states.push_back(std::move(state));
+        };
+        if (kind == StateObjectKind::DepthStencil) add(RenderStateId::StencilRef, std::move(args[1]));
+        if (kind == StateObjectKind::Blend) {
+            // D3D10's blend factor is a float4; the state table's BlendFactor a packed D3DCOLOR.
+            Expr& factor = args[1];
+            double rgba[4];
+            if ((factor.kind == Expr::Kind::InitList ||
+                 (factor.kind == Expr::Kind::Call && factor.text == "float4")) &&
+                factor.args.size() == 4 &&
+                std::all_of(factor.args.begin(), factor.args.end(),
+                            [&, i = 0](const Expr& c) mutable { return constantValue(c, rgba[i++]); })) {
+                auto channel = [](double x) {
+                    return static_cast<uint32_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255));
+                };
+                const uint32_t packed = channel(rgba[3]) << 24 | channel(rgba[0]) << 16 |
+                                        channel(rgba[1]) << 8 | channel(rgba[2]);
+                factor = numberExpr(static_cast<double>(packed), factor.loc);
+            }
+            add(RenderStateId::BlendFactor, std::move(factor));
+            add(RenderStateId::SampleMask, std::move(args[2]));
+        }
+    }
+
+    static Expr numberExpr(double value, const SourceLoc& loc) {
+        Expr e;
+        e.kind = Expr::Kind::Number;
+        e.number = value;
+        e.isInteger = value == std::trunc(value);
+        e.loc = loc;
+        return e;
+    }
+
+    // Every field of a state object of `kind` as pass states: the block's value, or D3D10's default.
+    void expandStateObject(StateObjectKind kind, const std::vector<StateAssignment>& block,
+                           const SourceLoc& loc, std::vector<StateAssignment>& out) {
+        auto find = [&](std::string_view field, int index) -> const StateAssignment* {
+            const StateAssignment* found = nullptr;
+            for (const StateAssignment& a : block)
+                if (equalsIgnoreCase(a.name, field) && (a.index < 0 ? 0 : a.index) == index) found = &a;
+            return found;  // the last assignment wins, as in a pass
+        };
+        auto push = [&](RenderStateId id, Expr value, const SourceLoc& at) {
+            StateAssignment state;
+            state.name = std::string(renderStateInfo(id).name);
+            state.loc = at;
+            state.value = std::move(value);
+            out.push_back(std::move(state));
+        };
+        for (const StateObjectField* field : stateObjectFields(kind)) {
+            const StateAssignment* a = find(field->name, 0);
+            if (field->name == "FrontCounterClockwise") continue;  // folded into CullMode below
+            if (field->name == "CullMode") {
+                // D3D9's CullMode names the winding that is culled (CW or CCW), D3D10's the facing (FRONT or
+                // BACK) with FrontCounterClockwise saying which winding faces front.
+                const StateAssignment* ccw = find("FrontCounterClockwise", 0);
+                double cull = field->defaultValue, frontCcw = 0;
+                if ((a && !constantValue(a->value, cull)) || (ccw && !constantValue(ccw->value, frontCcw))) {
+                    error(
+                        DiagId::InvalidStateValue, (a && !constantValue(a->value, cull) ? a : ccw)->value.loc,
+                        {a ? a->name : ccw->name, "must be a constant (it decides which winding is culled)"});
+                    continue;
+                }
+                double d3d9 = cull == 1 ? 1 : (frontCcw != 0) == (cull == 3) ? 2 : 3;
+                push(RenderStateId::CullMode, numberExpr(d3d9, a ? a->loc : loc), a ? a->loc : loc);
+                continue;
+            }
+            push(field->state, a ? a->value : numberExpr(field->defaultValue, loc), a ? a->loc : loc);
+            // The per-render-target fields: GL applies one blend to every target here, and write masks to
+            // the first four.
+            for (int index = 1; index < 8; ++index) {
+                const StateAssignment* other = find(field->name, index);
+                if (!other) continue;
+                if (field->name == "RenderTargetWriteMask" && index < 4) {
+                    static constexpr RenderStateId kMasks[] = {
+                        RenderStateId::ColorWriteEnable, RenderStateId::ColorWriteEnable1,
+                        RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3};
+                    push(kMasks[index], other->value, other->loc);
+                    continue;
+                }
+                double first = a ? 0 : field->defaultValue, value = 0;
+                const bool same = (a ? constantValue(a->value, first) : true) &&
+                                  constantValue(other->value, value) && value == first;
+                const bool allWritten = field->name == "RenderTargetWriteMask" &&
+                                        constantValue(other->value, value) && value == 15;
+                if (!same && !allWritten)
+                    error(DiagId::UnsupportedFeature, other->loc,
+                          {std::string(field->name) + "[" + std::to_string(index) +
+                           "] differs from render target 0's; shadowfx applies one blend state to every "
+                           "target"});
+            }
+        }
+        if (kind == StateObjectKind::DepthStencil)
+            push(RenderStateId::TwoSidedStencilMode, numberExpr(1, loc), loc);
+        if (kind == StateObjectKind::Blend)
+            push(RenderStateId::SeparateAlphaBlendEnable, numberExpr(1, loc), loc);
     }
 
     void parsePassState(Pass& pass) {
@@ -868,30 +1182,9 @@ private:
         StateAssignment state;
         state.name = name.text;
         state.loc = name.loc;
-        // D3D10: SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(NULL);
+        // D3D10: SetVertexShader(CompileShader(vs_4_0, VS())); SetRasterizerState(rs); ...
         if (name.text.size() > 3 && name.text.compare(0, 3, "Set") == 0 && check("(")) {
-            advance();
-            Expr value = parseExpr();
-            expect(")");
-            expect(";");
-            normalizeCompileShader(value);
-            normalizeNull(value);
-            std::string stage = name.text.substr(3);
-            if (stage == "VertexShader" || stage == "PixelShader") {
-                state.name = stage;
-                state.value = std::move(value);
-                validateShaderValue(state);
-                pass.states.push_back(std::move(state));
-                return;
-            }
-            if (stage == "GeometryShader" || stage == "HullShader" || stage == "DomainShader" ||
-                stage == "ComputeShader") {
-                if (!(value.kind == Expr::Kind::Identifier && value.text == "NULL") &&
-                    !(value.kind == Expr::Kind::Number && value.number == 0))
-                    error(DiagId::UnsupportedFeature, name.loc, {stage + " stages are not supported"});
-                return;  // NULL: nothing to do
-            }
-            error(DiagId::UnknownState, name.loc, {name.text});
+            parseSetCall(pass, name);
             return;
         }
         if (accept("[")) {
@@ -1048,6 +1341,46 @@ private:
             e.isInteger = true;
             e.loc = loc;
         }
+    }
+
+    // `{ Field = value; Field[i] = value; ... }` of a D3D10 state object, validated against its fields.
+    std::vector<StateAssignment> parseObjectStateBlock(StateObjectKind kind) {
+        const Token& open = advance();  // '{'
+        std::vector<StateAssignment> states;
+        while (!check("}")) {
+            if (atEnd() || isTechniqueKeyword(peek()))
+                unclosed(std::string(stateObjectTypeName(kind)).c_str(), open);
+            const Token& name = expectIdentifier("a state name");
+            StateAssignment state;
+            state.name = name.text;
+            state.loc = name.loc;
+            if (accept("[")) {
+                const Token& indexToken = peek();
+                Expr index = parseExpr();
+                double number = 0;
+                if (!constantValue(index, number) || !(number >= 0 && number <= 7) ||
+                    number != std::trunc(number))
+                    fail(DiagId::UnexpectedToken, indexToken.loc,
+                         {"a render-target index 0..7", index.str()});
+                state.index = static_cast<int>(number);
+                expect("]");
+            }
+            expect("=");
+            state.value = parseExpr();
+            expect(";");
+            const StateObjectField* field = findStateObjectField(kind, state.name);
+            if (!field) {
+                error(DiagId::UnknownState, state.loc, {state.name});
+                continue;
+            }
+            if (state.index > 0 && field->object != StateObjectKind::Blend)
+                error(DiagId::UnexpectedToken, state.loc, {"a state without an index", state.name});
+            state.name = std::string(field->name);
+            resolveStateValue(state.value, field->domain, state.name);
+            states.push_back(std::move(state));
+        }
+        advance();
+        return states;
     }
 
     std::vector<StateAssignment> parseSamplerStateBlock() {
@@ -1361,6 +1694,14 @@ private:
     Effect& mEffect;
     detail::CountingSink& mDiag;
     std::set<std::string> mTypeNames;
+    struct Refused {
+        std::string name;
+        std::string reason;
+        SourceLoc loc;
+    };
+    std::optional<Refused> mRefusal;        // of the technique being parsed
+    std::optional<Refused> mFirstRefused;   // the first technique left out
+    std::set<StateObjectKind> mObjectsSet;  // the state objects the pass being parsed sets
     int mDepth = 0;
     bool mNoGreater = false;
     bool mSpeculative = false;  // parseStraightBody(): errors throw without a report

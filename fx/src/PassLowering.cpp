@@ -14,6 +14,7 @@
 #include <cctype>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -107,6 +108,33 @@ std::optional<int> varyingLocation(const std::string& semantic) {
     return std::nullopt;
 }
 
+// D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR"). Such names get the locations
+// above the D3D9 table's (24..31), in the order of their sorted names over the whole effect, so that every
+// stage of every pass agrees.
+static std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
+    std::set<std::string> names;
+    auto add = [&](const std::string& s) {
+        const std::string c = canonicalSemantic(s);
+        if (!c.empty() && c.rfind("SV_", 0) != 0 && !varyingLocation(c) && c != "POSITION0" && c != "VPOS" &&
+            c != "VPOS0" && c != "VFACE" && c.rfind("PSIZE", 0) != 0 && c.rfind("DEPTH", 0) != 0 &&
+            !vertexInputLocation(c))
+            names.insert(splitSemantic(c).first + std::to_string(splitSemantic(c).second));
+    };
+    for (const StructDecl& s : effect.structs)
+        for (const StructMember& m : s.members) add(m.semantic);
+    for (const FunctionDecl& f : effect.functions) {
+        add(f.returnSemantic);
+        for (const FunctionParam& p : f.params) add(p.semantic);
+    }
+    const std::string key = splitSemantic(canonicalSemantic(semantic)).first +
+                            std::to_string(splitSemantic(canonicalSemantic(semantic)).second);
+    auto it = names.find(key);
+    if (it == names.end()) return std::nullopt;
+    const int index = static_cast<int>(std::distance(names.begin(), it));
+    if (index >= 8) return std::nullopt;
+    return 24 + index;
+}
+
 // [SECTION] Types and literals
 
 std::string hlslTypeName(const TypeDesc& type) {
@@ -122,11 +150,10 @@ std::string hlslTypeName(const TypeDesc& type) {
             break;
         case BaseType::Void:
         case BaseType::String:
-        case BaseType::VertexShader:
-        case BaseType::PixelShader:
             concrete.base = BaseType::Float;
             break;
         default:
+            if (type.isShader() || type.isStateObject()) concrete.base = BaseType::Float;
             break;
     }
     const bool rowMajor = type.shape == Shape::Matrix && type.rowMajor;
@@ -486,11 +513,18 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
     else
         return fail(DiagId::InvalidCompileExpression, mCompile.loc,
                     {"no argument for uniform parameter '" + p.name + "' of '" + mFn.name + "'"});
-    if (isSamplerType(p.type) || p.type.base == BaseType::SamplerState) {
+    if (p.type.isSampler() || p.type.isTexture()) {
         const Parameter* s = expr->kind == Expr::Kind::Identifier ? findParam(mEffect, expr->text) : nullptr;
-        if (!s || !isSamplerType(s->type))
-            return fail(DiagId::InvalidCompileExpression, expr->loc,
-                        {"argument for sampler parameter '" + p.name + "' must name an effect sampler"});
+        const bool fits =
+            s && (p.type.isTexture() ? s->type.isTexture()
+                  : p.type.base == BaseType::SamplerState || p.type.base == BaseType::SamplerComparisonState
+                      ? s->type.base == p.type.base
+                      : isSamplerType(s->type));
+        if (!fits)
+            return fail(
+                DiagId::InvalidCompileExpression, expr->loc,
+                {"argument for " + std::string(p.type.isTexture() ? "texture" : "sampler") + " parameter '" +
+                 p.name + "' must name an effect " + (p.type.isTexture() ? "texture" : "sampler")});
         value = s->name;
         return true;
     }
@@ -527,7 +561,12 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
 bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
     // One attribute per semantic, as wide as its widest use.
     std::map<int, std::pair<TypeDesc, std::string>> attributes;  // location -> (type, semantic)
+    std::set<std::string> systemValues;
     for (const Field& f : fields) {
+        if (f.semantic == "SV_VERTEXID" || f.semantic == "SV_INSTANCEID") {
+            systemValues.insert(f.semantic);
+            continue;
+        }
         auto location = vertexInputLocation(f.semantic);
         if (!location && vertexInputDefault(f.semantic)) continue;
         if (!location || f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
@@ -543,7 +582,17 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
         params += "[[vk::location(" + std::to_string(location) + ")]] " + hlslTypeName(t) + " fx_in" +
                   std::to_string(location) + " : FX_IN" + std::to_string(location);
     }
+    for (const std::string& s : systemValues) {
+        if (!params.empty()) params += ",\n    ";
+        params +=
+            s == "SV_VERTEXID" ? "uint fx_vertexId : SV_VertexID" : "uint fx_instanceId : SV_InstanceID";
+    }
     for (const Field& f : fields) {
+        if (f.semantic == "SV_VERTEXID" || f.semantic == "SV_INSTANCEID") {
+            const std::string id = f.semantic == "SV_VERTEXID" ? "fx_vertexId" : "fx_instanceId";
+            body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + id + ", 0, 0, 0)") + ";\n";
+            continue;
+        }
         const std::optional<int> location = vertexInputLocation(f.semantic);
         if (!location) {
             body += assignField(f, *vertexInputDefault(f.semantic));
@@ -563,6 +612,8 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
 }
 
 bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
+    std::set<std::string> systemValues;
+    std::vector<std::string> systemParams;
     std::set<int> varyings;
     std::map<int, std::string> interpolation;
     bool fragCoord = false, frontFace = false;
@@ -585,7 +636,14 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             frontFace = true;
             body += "    " + f.lvalue + " = " +
                     (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
-        } else if (auto location = varyingLocation(s)) {
+        } else if (s == "SV_PRIMITIVEID" || s == "SV_SAMPLEINDEX") {
+            const std::string name = s == "SV_PRIMITIVEID" ? "fx_primitiveId" : "fx_sampleIndex";
+            if (systemValues.insert(name).second)
+                systemParams.push_back("uint " + name +
+                                       (s == "SV_PRIMITIVEID" ? " : SV_PrimitiveID" : " : SV_SampleIndex"));
+            body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + name + ", 0, 0, 0)") + ";\n";
+        } else if (auto location =
+                       varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             varyings.insert(*location);
             if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
             body += assignField(f, "fx_v" + std::to_string(*location));
@@ -603,6 +661,7 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
     }
     if (fragCoord) add("float4 fx_fragCoord : SV_Position");
     if (frontFace) add("bool fx_frontFace : SV_IsFrontFace");
+    for (const std::string& p : systemParams) add(p);
     return true;
 }
 
@@ -620,7 +679,19 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
         } else if (s.rfind("PSIZE", 0) == 0) {
             continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely
                        // rely on it
-        } else if (auto location = varyingLocation(s)) {
+        } else if (s.rfind("SV_CLIPDISTANCE", 0) == 0 || s.rfind("SV_CULLDISTANCE", 0) == 0) {
+            // gl_ClipDistance / gl_CullDistance; the runtime enables the clip planes the program writes.
+            const bool clip = s[3] == 'C' && s[4] == 'L';
+            const std::string index = s.substr(15).empty() ? "0" : s.substr(15);
+            const std::string name = std::string(clip ? "fx_clip" : "fx_cull") + index;
+            if (!used.insert(1000 + (clip ? 0 : 100) + std::stoi(index)).second) continue;
+            TypeDesc t = f.type;
+            t.arrayDims.clear();
+            members += "    " + hlslTypeName(t) + " " + name +
+                       (clip ? " : SV_ClipDistance" : " : SV_CullDistance") + index + ";\n";
+            body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
+        } else if (auto location =
+                       varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
@@ -783,6 +854,18 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     }
 
     std::set<std::string> reached = reachableFunctions(effect, fn->name);
+    // D3D10 textures and sampler objects are declared only where the unit's code names them: a D3D9
+    // effect's `texture2D` is reached through its sampler_state alone.
+    std::set<std::string> named;
+    auto nameAll = [&](const std::string& text) {
+        for (const std::string& id : identifiersIn(text)) named.insert(id);
+    };
+    for (const FunctionDecl& f : effect.functions)
+        if (reached.count(f.name)) nameAll(f.hlslText);
+    for (const Parameter& p : effect.parameters)
+        if (p.isStatic) nameAll(p.hlslText);
+    for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
+    nameAll(wrapper);
     std::set<std::string> usedDepth;
     std::string& hlsl = out.hlsl;
     hlsl += "// shadowfx: " + std::string(stage == ShaderStage::Vertex ? "vertex" : "pixel") + " shader " +
@@ -796,6 +879,11 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                     emitAt(hlsl, rewriteIntrinsics(p.hlslText, depth), p.hlslLoc);
                 } else if (isNumericType(p.type) && p.type.base != BaseType::String) {
                     // A plain global: it lands in the $Global block; the runtime fills it.
+                    hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
+                } else if (((p.type.isTexture() && p.type.base != BaseType::Texture) ||
+                            p.type.base == BaseType::SamplerState ||
+                            p.type.base == BaseType::SamplerComparisonState) &&
+                           named.count(p.name)) {
                     hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
                 } else if (isSamplerType(p.type)) {
                     if (depth.count(p.name)) {

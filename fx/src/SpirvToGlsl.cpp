@@ -11,7 +11,7 @@
 namespace fx {
 
 std::string spirvToGlslOptionsKey() {
-    return "spirv-cross glsl450 core novk";
+    return "spirv-cross glsl450 core novk pairs";
 }
 
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
@@ -33,10 +33,30 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
 
         // DX9 sampler2D is already a combined sampler; the depth-compare pairs (Texture2D fx_depth_S +
         // SamplerComparisonState fx_cmp_S) become one sampler2DShadow, renamed back to S.
+        // Texture2D.Load (texelFetch) samples with no sampler: GLSL still needs a combined one.
+        const spirv_cross::VariableID loadSampler = compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
         program.samplers.clear();
         for (const spirv_cross::CombinedImageSampler& c : compiler.get_combined_image_samplers()) {
             std::string image = compiler.get_name(c.image_id);
+            if (image.rfind("fx_depth_", 0) != 0) {
+                // A D3D10 (texture, sampler) pair: one GL sampler per pair the code uses; the effect
+                // compiler gives it a unit once every stage of the pass is known (no binding here).
+                SamplerBinding s;
+                s.pairTexture = image;
+                s.pairSampler = c.sampler_id == loadSampler ? "" : compiler.get_name(c.sampler_id);
+                s.depthCompare = compiler.get_type_from_variable(c.combined_id).image.depth;
+                std::string name = "fx_pair_" + image + "_" +
+                                   (s.pairSampler.empty() ? "load" : s.pairSampler) +
+                                   (s.depthCompare ? "_cmp" : "");
+                for (size_t at = name.find("__"); at != std::string::npos; at = name.find("__"))
+                    name.replace(at, 2, "_u_");  // GLSL reserves names with "__"
+                compiler.set_name(c.combined_id, name);
+                s.glslName = name;
+                s.unit = -1;
+                program.samplers.push_back(s);
+                continue;
+            }
             std::string name = image.rfind("fx_depth_", 0) == 0 ? image.substr(9) : image;
             compiler.set_name(c.combined_id, name);
             auto unit = options.samplerUnits.find(name);
@@ -56,7 +76,11 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(binding));
             bool known = false;
             for (const SamplerBinding& s : program.samplers) known |= s.glslName == name;
-            if (!known) program.samplers.push_back(SamplerBinding{name, binding, 0, false});
+            if (known) continue;
+            SamplerBinding s;
+            s.glslName = name;
+            s.unit = binding;
+            program.samplers.push_back(s);
         }
 
         program.uniforms.clear();

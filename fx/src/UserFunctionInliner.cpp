@@ -138,9 +138,7 @@ void inlineUserFunctionCalls(Effect& effect) {
         for (Pass& pass : technique.passes)
             for (StateAssignment& state : pass.states) inliner.rewrite(state.value);
     for (Parameter& parameter : effect.parameters)
-        if (parameter.initializer &&
-            (parameter.type.base == BaseType::VertexShader || parameter.type.base == BaseType::PixelShader))
-            inliner.rewrite(*parameter.initializer);
+        if (parameter.initializer && parameter.type.isShader()) inliner.rewrite(*parameter.initializer);
 }
 
 }  // namespace fx::detail

@@ -41,11 +41,20 @@ struct UniformBinding {
     bool active = true;
 };
 
+// SamplerBinding::samplerParameter of a texture read without a sampler (Texture2D.Load).
+inline constexpr size_t kNoSampler = static_cast<size_t>(-1);
+
 struct SamplerBinding {
     std::string glslName;         // the sampler uniform in the GLSL
-    int unit = 0;                 // texture unit (layout(binding) in the GLSL)
+    int unit = 0;                 // texture unit (layout(binding) in the GLSL, or set by name at link)
     size_t samplerParameter = 0;  // Effect::parameters index of the effect's sampler
     bool depthCompare = false;    // a sampler2DShadow: the bound texture must compare
+    // D3D10's separate textures and samplers: GL's combined sampler for one (Texture2D, SamplerState)
+    // pair the code samples with. The texture bound is `textureParameter`, not the sampler's own
+    // (SamplerDesc::texture); the unit is the pass's (assigned after both stages compiled).
+    std::string pairTexture;  // the effect's texture and sampler names ("" if not a pair)
+    std::string pairSampler;
+    std::optional<size_t> textureParameter;  // Effect::parameters index of pairTexture
 };
 
 // A vertex shader input, bound by semantic ("POSITION", "NORMAL", "TEXCOORD0", "COLOR0", "TANGENT",
@@ -119,6 +128,7 @@ struct CompiledPass {
 
 struct CompiledTechnique {
     std::string name;
+    std::string group;  // the D3D11 `fxgroup` holding it ("" if none); findTechnique takes "group.name"
     SourceLoc loc;
     std::vector<CompiledPass> passes;
     bool hasScript = false;
@@ -175,6 +185,7 @@ struct SamplerDesc {
     float borderColor[4] = {0, 0, 0, 0};
     int maxAnisotropy = 1;
     float mipLodBias = 0.0f;
+    float minLod = -1000.0f, maxLod = 1000.0f;  // D3D10 MinLOD/MaxLOD (GL's defaults otherwise)
     int comparisonFunc = 0;  // D3D9 CMP value; 0 = none (depth targets compare with LESSEQUAL by default)
     SourceLoc loc;
 };
@@ -210,6 +221,7 @@ struct CompiledEffect {
     bool hasGlobalScript = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
 
+    // By name; a technique in an fxgroup also by "group.name".
     const CompiledTechnique* findTechnique(const std::string& name) const;
     const TextureDesc* findTexture(size_t parameter) const;
     const SamplerDesc* findSampler(size_t parameter) const;

@@ -25,6 +25,9 @@ FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (ex
 FX_DIAGNOSTIC(InvalidStateValue, Error, "invalid value for state '{0}': {1}")
 FX_DIAGNOSTIC(InvalidAnnotation, Error, "invalid annotation '{0}': {1}")
 FX_DIAGNOSTIC(InvalidInitializer, Error, "invalid initializer for '{0}': {1}")
+FX_DIAGNOSTIC(TechniqueRefused, Warning, "technique '{0}' is left out: {1}")
+FX_DIAGNOSTIC(AllTechniquesRefused, Error,
+              "every technique of the effect is left out (the first: '{0}', {1}); nothing can run")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")

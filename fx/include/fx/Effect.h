@@ -88,7 +88,10 @@ struct Parameter {
     std::vector<Annotation> annotations;        // < ... >
     std::optional<Expr> initializer;            // = expr / = { ... } / = compile ...
     std::vector<StateAssignment> samplerState;  // sampler_state { ... }; empty for non-samplers
-    bool isStatic = false;                      // `static`: a shader-private global, not a parameter
+    // A D3D10 state object's block (`RasterizerState rs { CullMode = NONE; };`), its fields validated
+    // against RenderStateDefs.h's FX_OBJECT_FIELD table; empty for other parameters.
+    std::vector<StateAssignment> objectState;
+    bool isStatic = false;  // `static`: a shader-private global, not a parameter
     bool isConst = false;
     bool isUniform = false;  // written `uniform`
     bool isShared = false;
@@ -175,6 +178,8 @@ struct Pass {
 
 struct Technique {
     std::string name;
+    std::string group;   // the D3D11 `fxgroup` holding it; "" if none
+    bool d3d10 = false;  // technique10 / technique11: its passes start from D3D10's state defaults
     std::vector<Annotation> annotations;
     std::vector<Pass> passes;
     SourceLoc loc;
@@ -218,6 +223,7 @@ struct Effect {
 
     const Parameter* findParameter(const std::string& name) const;  // case-sensitive, as HLSL
     const StructDecl* findStruct(const std::string& name) const;
+    // By name; a technique in an fxgroup also by "group.name".
     const Technique* findTechnique(const std::string& name) const;
     // All overloads of a function, in source order.
     std::vector<const FunctionDecl*> findFunctions(const std::string& name) const;

@@ -31,6 +31,13 @@ enum class BaseType {
     SamplerComparisonState,  // D3D10 `SamplerComparisonState`
     VertexShader,            // `vertexshader vs = compile vs_3_0 ...;`
     PixelShader,
+    GeometryShader,  // D3D10 shader variables of the stages GL runs only through other means
+    HullShader,
+    DomainShader,
+    ComputeShader,
+    RasterizerState,  // D3D10 state objects: `RasterizerState rs { CullMode = NONE; };`
+    DepthStencilState,
+    BlendState,
     Struct,
 };
 
@@ -48,6 +55,8 @@ struct TypeDesc {
     bool isNumeric() const;      // bool/int/uint/half/float/double
     bool isTexture() const;      // Texture..TextureCube
     bool isSampler() const;      // Sampler..SamplerComparisonState
+    bool isStateObject() const;  // RasterizerState, DepthStencilState, BlendState
+    bool isShader() const;       // VertexShader..ComputeShader
     int componentCount() const;  // rows*cols, times array elements
     // HLSL spelling: "float4x4", "float3", "bool", "sampler2D", "MyStruct" (without array dims).
     std::string hlslName() const;

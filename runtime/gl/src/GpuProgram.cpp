@@ -1,6 +1,7 @@
 #include <runtime/GpuProgram.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -126,7 +127,18 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
         return nullptr;
     }
 
+    // SV_ClipDistance: GL clips only against the planes enabled, so enable those the program writes.
+    if (const size_t at = pass.vertex.glsl.find("gl_ClipDistance["); at != std::string::npos)
+        program->mClipDistances = std::clamp(std::atoi(pass.vertex.glsl.c_str() + at + 16), 0, 8);
     const fx::StageProgram* linked[2] = {&pass.vertex, withPixel ? &pass.fragment : nullptr};
+    // D3D10 pairs carry no layout(binding): their units are the pass's (fx's assignPairUnits).
+    for (const fx::StageProgram* stage : linked)
+        if (stage)
+            for (const fx::SamplerBinding& s : stage->samplers)
+                if (!s.pairTexture.empty() && s.unit >= 0) {
+                    const GLint location = gl::GetUniformLocation(program->mProgram, s.glslName.c_str());
+                    if (location >= 0) gl::ProgramUniform1i(program->mProgram, location, s.unit);
+                }
     for (int i = 0; i < 2; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
@@ -151,6 +163,12 @@ GpuProgram::~GpuProgram() {
 
 void GpuProgram::bind() {
     gl::UseProgram(mProgram);
+    for (int i = 0; i < 8; ++i) {
+        if (i < mClipDistances)
+            gl::Enable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+        else
+            gl::Disable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    }
     for (StageBlock& block : mBlocks) block.uploaded.clear();
 }
 

@@ -71,6 +71,8 @@ SamplerObject::SamplerObject(const fx::SamplerDesc& desc, bool depthCompare)
         desc.magFilter == kTexfPoint || desc.magFilter == kTexfNone ? GL_NEAREST : GL_LINEAR);
     gl::SamplerParameterfv(mId, GL_TEXTURE_BORDER_COLOR, desc.borderColor);
     gl::SamplerParameterf(mId, GL_TEXTURE_LOD_BIAS, desc.mipLodBias);
+    gl::SamplerParameterf(mId, GL_TEXTURE_MIN_LOD, desc.minLod);
+    gl::SamplerParameterf(mId, GL_TEXTURE_MAX_LOD, desc.maxLod);
 
     bool anisotropic = desc.minFilter == kTexfAnisotropic || desc.magFilter == kTexfAnisotropic;
     if (anisotropic && desc.maxAnisotropy > 1) {

@@ -376,8 +376,12 @@ void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {
     for (const fx::SamplerBinding& binding : stage.samplers) {
         const fx::SamplerDesc* desc = mResources.effect().findSampler(binding.samplerParameter);
         const GpuTexture* texture = nullptr;
-        if (desc && desc->texture) {
-            auto it = mResources.textures.find(*desc->texture);
+        // A D3D10 pair samples its own texture through the sampler's states.
+        const std::optional<size_t> textureParameter = binding.textureParameter ? binding.textureParameter
+                                                       : desc                   ? desc->texture
+                                                                                : std::nullopt;
+        if (textureParameter) {
+            auto it = mResources.textures.find(*textureParameter);
             if (it != mResources.textures.end()) texture = &it->second;
         }
         // Not while the pass renders into it (the chain would be built before the draw that changes it).

@@ -148,7 +148,10 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     }
     for (const fx::SamplerBinding* binding : passSamplers(pass)) {
         const fx::SamplerDesc* desc = mResources.effect().findSampler(binding->samplerParameter);
-        if (desc && desc->texture) op.reads.push_back(static_cast<int>(*desc->texture));
+        if (binding->textureParameter)
+            op.reads.push_back(static_cast<int>(*binding->textureParameter));
+        else if (desc && desc->texture)
+            op.reads.push_back(static_cast<int>(*desc->texture));
     }
 
     const PassUse& use = mUses[index];

@@ -84,6 +84,7 @@ private:
 
     GLuint mProgram = 0;
     StageBlock mBlocks[2];
+    int mClipDistances = 0;  // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
 };
 
 }  // namespace runtime
