@@ -1,0 +1,208 @@
+// Effects in the Direct3D 10/11 form rendered through the real pipeline: hardware PCF with a
+// SamplerComparisonState through RenderPort=light0 against the ray-cast truth, D3D10's state defaults
+// (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang, and a
+// technique11 twin rendering the same frame as its D3D9 technique.
+#include "VisibilityHarness.h"
+
+#include <runtime/BuiltinScenes.h>
+#include <runtime/ShadowMetrics.h>
+
+#include <gtest/gtest.h>
+
+namespace shadowfx::test {
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+runtime::Scene scene(const char* name) {
+    auto s = runtime::makeBuiltinScene(name, nullptr);
+    if (!s) throw std::runtime_error(std::string("no scene ") + name);
+    return std::move(*s);
+}
+
+struct Counts {
+    size_t red = 0, green = 0;
+};
+
+// Pixels that are pure red or pure green (what the state tests' shaders write).
+Counts countRedGreen(const runtime::FrameImage& image) {
+    Counts c;
+    for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+        const uint8_t* p = &image.rgba[i];
+        if (p[0] == 255 && p[1] == 0 && p[2] == 0) ++c.red;
+        if (p[0] == 0 && p[1] == 255 && p[2] == 0) ++c.green;
+    }
+    return c;
+}
+
+Counts renderCounts(runtime::EffectRenderer& renderer, const std::string& technique) {
+    EXPECT_TRUE(render(renderer, scene("teapot"), kWidth, kHeight, technique));
+    return countRedGreen(renderer.readFrame());
+}
+
+// [SECTION] Hardware PCF in the D3D11 form
+
+TEST(D3d10Effects, SampleCmpThroughRenderPortLight0MatchesTheRayCastTruth) {
+    constexpr int kTruthWidth = 320, kTruthHeight = 240;
+    auto renderer = loadVisibilityEffect("tests/data/d3d10/shadow_cmp.fx");
+    ASSERT_TRUE(renderer);
+    const SceneTruth t = computeSceneTruth(scene("dual-l"), kTruthWidth, kTruthHeight);
+    const std::vector<float> lit(t.truth.visibility.size(), 1.0f);
+    const double blank =
+        runtime::compareVisibility(t.truth.visibility, lit, t.receivers).misclassifiedPercent;
+    constexpr double kBound = 0.2;  // effects/pcf.fx's `hardware` bound on this scene is 0.1 % at 1024²
+    ASSERT_LT(kBound * 4, blank) << "an all-lit image must fail the bound by far";
+    ASSERT_TRUE(render(*renderer, t.scene, kTruthWidth, kTruthHeight, "HardwarePcf"));
+    const std::vector<float> visibility = runtime::visibilityFromFrame(renderer->readFrame());
+    const runtime::ShadowErrors errors =
+        runtime::compareVisibility(t.truth.visibility, visibility, t.receivers);
+    EXPECT_LT(errors.misclassifiedPercent, kBound);
+    // Filtered: some receiver pixels at shadow edges are neither 0 nor 1.
+    size_t fractional = 0;
+    for (float v : visibility) fractional += v > 0.05f && v < 0.95f;
+    EXPECT_GT(fractional, 10u);
+}
+
+TEST(D3d10Effects, ShadowedFrameIsShadedAndNotConstant) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/shadow_cmp.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("dual-l"), kWidth, kHeight));
+    EXPECT_TRUE(notConstant(renderer->readFrame()));
+}
+
+// [SECTION] State defaults on pixels
+
+const char* kStateEffect = R"(
+float4x4 Wvp : WorldViewProjection;
+float4 VS(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), Wvp); }
+float4 Red() : SV_Target { return float4(1, 0, 0, 1); }
+float4 Green() : SV_Target { return float4(0, 1, 0, 1); }
+float4 Faces(bool front : SV_IsFrontFace) : SV_Target { return front ? float4(0, 1, 0, 1) : float4(1, 0, 0, 1); }
+DepthStencilState NoDepth { DepthEnable = FALSE; };
+RasterizerState NoCulling { CullMode = NONE; };
+
+// The same triangles twice, red then green: the second pass passes the depth test only with LESSEQUAL.
+technique11 SameDepth10
+{
+    pass A { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Red())); }
+    pass B { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Green())); }
+}
+technique SameDepth9
+{
+    pass A { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Red(); }
+    pass B { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Green(); }
+}
+// Without a depth test, back faces would draw over front ones in red: culled, none do.
+technique11 DefaultCull10
+{
+    pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Faces()));
+           SetDepthStencilState(NoDepth, 0); }
+}
+technique11 NoCull10
+{
+    pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Faces()));
+           SetDepthStencilState(NoDepth, 0); SetRasterizerState(NoCulling); }
+}
+)";
+
+TEST(D3d10Effects, D3d10PassesDefaultToDepthFuncLessAndD3d9PassesToLessEqual) {
+    auto renderer = loadEffect(kStateEffect, false, "states.fx");
+    ASSERT_TRUE(renderer);
+    const Counts d3d10 = renderCounts(*renderer, "SameDepth10");
+    EXPECT_GT(d3d10.red, 1000u);
+    EXPECT_EQ(d3d10.green, 0u);
+    const Counts d3d9 = renderCounts(*renderer, "SameDepth9");
+    EXPECT_GT(d3d9.green, 1000u);
+    EXPECT_EQ(d3d9.red, 0u);
+}
+
+TEST(D3d10Effects, APassThatSetsNoRasterizerStateCullsBackFaces) {
+    auto renderer = loadEffect(kStateEffect, false, "states.fx");
+    ASSERT_TRUE(renderer);
+    const Counts culled = renderCounts(*renderer, "DefaultCull10");
+    EXPECT_GT(culled.green, 1000u);
+    EXPECT_EQ(culled.red, 0u);
+    const Counts all = renderCounts(*renderer, "NoCull10");
+    EXPECT_GT(all.red, 100u);  // the teapot's inside, seen through the spout and under the lid
+}
+
+// [SECTION] Texture objects and their methods
+
+TEST(D3d10Effects, TextureMethodsSampleThroughSamplerStates) {
+    auto renderer = loadEffect(R"(
+cbuffer Frame { float4x4 Wvp : WorldViewProjection; float Scale < string UIName = "Scale"; > = 0.25; };
+Texture2D Noise < string Procedural = "noise"; int Seed = 3; float2 Dimensions = {64, 64}; >;
+SamplerState Linear { AddressU = WRAP; AddressV = WRAP; };
+SamplerState Point { Filter = MIN_MAG_MIP_POINT; AddressU = WRAP; AddressV = WRAP; };
+struct VsOut { float4 Position : SV_Position; float2 Uv : SURFACE_UV; };
+VsOut VS(float3 p : POSITION, float2 uv : TEXCOORD0)
+{
+    VsOut o;
+    o.Position = mul(float4(p, 1), Wvp);
+    o.Uv = p.xy * 4;
+    return o;
+}
+float4 PS(VsOut i) : SV_Target
+{
+    uint w, h;
+    Noise.GetDimensions(w, h);
+    float4 c = Noise.Sample(Linear, i.Uv) + Noise.SampleLevel(Point, i.Uv, 0) + Noise.SampleBias(Linear, i.Uv, 0.5)
+             + Noise.SampleGrad(Linear, i.Uv, ddx(i.Uv), ddy(i.Uv)) + Noise.Gather(Point, i.Uv)
+             + Noise.Load(int3(int2(i.Position.xy) % int2(w, h), 0));
+    return float4(c.rgb * Scale, 1);
+}
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                               false, "texture_methods.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    EXPECT_TRUE(notConstant(renderer->readFrame()));
+}
+
+// [SECTION] SAS scripts on the D3D11 form
+
+TEST(D3d10Effects, Technique11TwinRendersTheFrameOfItsD3d9Technique) {
+    auto renderer = loadEffect(R"(
+float Script : STANDARDSGLOBAL < string ScriptClass = "object"; string ScriptOrder = "standard";
+    string ScriptOutput = "color"; string Script = "Technique=Technique?Lit11:Lit9;"; > = 0.8;
+float4x4 Wvp : WorldViewProjection;
+float4x4 World : World;
+float4x4 WorldIT : WorldInverseTranspose;
+float3 Lamp : POSITION < string Object = "PointLight0"; string Space = "World"; > = {2, 4, 3};
+struct VIn { float4 P : POSITION; float3 N : NORMAL; };
+struct VOut { float4 P : POSITION; float3 N : TEXCOORD0; float3 L : TEXCOORD1; };
+VOut VS(VIn i)
+{
+    VOut o;
+    o.P = mul(float4(i.P.xyz, 1), Wvp);
+    o.N = mul(i.N, (float3x3)WorldIT);
+    o.L = Lamp - mul(float4(i.P.xyz, 1), World).xyz;
+    return o;
+}
+float4 PS(VOut i) : COLOR { return float4(saturate(dot(normalize(i.N), normalize(i.L))) * float3(0.9, 0.6, 0.3) + 0.1, 1); }
+DepthStencilState LessEqual { DepthFunc = LESS_EQUAL; };
+technique Lit9 < string Script = "Pass=p0;"; >
+{
+    pass p0 < string Script = "Draw=geometry;"; >
+    { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); ZFunc = LessEqual; CullMode = CCW; }
+}
+technique11 Lit11 < string Script = "Pass=p0;"; >
+{
+    pass p0 < string Script = "Draw=geometry;"; >
+    { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+      SetDepthStencilState(LessEqual, 0); }
+}
+)",
+                               false, "twins.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Lit9"));
+    const runtime::FrameImage d3d9 = renderer->readFrame();
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Lit11"));
+    const runtime::FrameImage d3d11 = renderer->readFrame();
+    ASSERT_TRUE(notConstant(d3d9));
+    EXPECT_TRUE(d3d9.rgba == d3d11.rgba);
+}
+
+}  // namespace
+}  // namespace shadowfx::test

@@ -1,0 +1,352 @@
+// The Direct3D 10/11 effect form (what FX11 compiles) on the fx side (no GL): technique10/technique11 and
+// fxgroup, Set*Shader and Set*State in passes, state objects expanded with D3D10's defaults (which differ
+// from D3D9's), D3D10 sampler defaults, cbuffer members as parameters, (texture, sampler) pairs, and the
+// techniques GL cannot run left out with a located warning.
+#include <fx/CompiledEffect.h>
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <optional>
+
+namespace fx {
+namespace {
+
+std::shared_ptr<const CompiledEffect> compile(const std::string& source, DiagnosticList& diagnostics) {
+    std::shared_ptr<Effect> effect = parseEffectSource(source, "d3d10.fx", ParseOptions{}, diagnostics);
+    if (!effect) return nullptr;
+    return compileEffect(effect, CompileOptions{}, diagnostics);
+}
+
+// "file:line:column: severity: message", as the CLI prints it.
+std::string str(const Diagnostic& d) {
+    return d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + ": " +
+           std::string(severityName(d.severity)) + ": " + d.message;
+}
+
+const Diagnostic* find(const DiagnosticList& diagnostics, DiagId id) {
+    for (const Diagnostic& d : diagnostics.items())
+        if (d.id == id) return &d;
+    return nullptr;
+}
+
+// The constant a pass sets a state to (the last setting wins, as the runtime applies them in order).
+std::optional<double> stateOf(const CompiledPass& pass, RenderStateId id) {
+    std::optional<double> value;
+    for (const RenderStateSetting& s : pass.states)
+        if (s.id == id) value = s.constant;
+    return value;
+}
+
+const char* kShaders = R"(
+cbuffer PerObject : register(b0)
+{
+    float4x4 Wvp : WorldViewProjection;
+    float4 Tint < string UIName = "Tint"; > = {1, 0.5, 0.25, 1};
+};
+struct VsOut { float4 Position : SV_Position; float2 Uv : UV_COORDS; };
+VsOut VS(float3 p : POSITION, uint id : SV_VertexID)
+{
+    VsOut o;
+    o.Position = mul(float4(p, 1), Wvp);
+    o.Uv = float2(id & 1, id >> 1);
+    return o;
+}
+float4 PS(VsOut i) : SV_Target0 { return Tint * float4(i.Uv, 1, 1); }
+)";
+
+std::string withTechniques(const std::string& techniques) {
+    return std::string(kShaders) + techniques;
+}
+
+// [SECTION] Techniques, groups and shaders
+
+TEST(D3d10Syntax, Technique10Technique11AndGroupsCompile) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+VertexShader SharedVs = CompileShader(vs_4_0, VS());
+technique10 T10 { pass P { SetVertexShader(SharedVs); SetGeometryShader(NULL); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+fxgroup Materials < string Note = "group"; >
+{
+    technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(NULL); SetDomainShader(NULL);
+                               SetPixelShader(CompileShader(ps_5_0, PS())); SetComputeShader(NULL); } }
+}
+fxgroup Other { technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(NULL); } } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 3u);
+    EXPECT_EQ(compiled->findTechnique("T10"), &compiled->techniques[0]);
+    EXPECT_EQ(compiled->findTechnique("Plain"), &compiled->techniques[1]);
+    EXPECT_EQ(compiled->findTechnique("Materials.Plain"), &compiled->techniques[1]);
+    EXPECT_EQ(compiled->findTechnique("Other.Plain"), &compiled->techniques[2]);
+    EXPECT_EQ(compiled->techniques[2].group, "Other");
+    EXPECT_FALSE(compiled->techniques[0].passes[0].vertex.glsl.empty());
+    EXPECT_NE(compiled->techniques[0].passes[0].vertex.glsl.find("gl_VertexID"), std::string::npos);
+    EXPECT_TRUE(compiled->techniques[2].passes[0].fragment.glsl.empty());
+}
+
+TEST(D3d10Syntax, TechniqueSelectedByGroupQualifiedName) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(withTechniques(R"(
+fxgroup A { technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } } }
+fxgroup B { technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(NULL); } } }
+)"),
+                                                       "d3d10.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    CompileOptions options;
+    options.technique = "B.T";
+    auto compiled = compileEffect(effect, options, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 1u);
+    EXPECT_EQ(compiled->techniques[0].group, "B");
+}
+
+TEST(D3d10Syntax, TechniquesGlCannotRunAreLeftOutWithALocatedWarning) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+GeometryShader Gs = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw");
+technique10 Streamed { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw")); } }
+technique11 Tessellated { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(CompileShader(hs_5_0, PS())); } }
+technique11 Linked { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), Light)); } }
+technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 1u);
+    EXPECT_EQ(compiled->techniques[0].name, "Kept");
+    std::vector<std::string> warnings;
+    for (const Diagnostic& d : diagnostics.items())
+        if (d.id == DiagId::TechniqueRefused) warnings.push_back(str(d));
+    ASSERT_EQ(warnings.size(), 3u) << diagnostics.str();
+    EXPECT_NE(warnings[0].find("d3d10.fx:19:23: warning: technique 'Streamed' is left out: stream output"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[1].find("d3d10.fx:20:80: warning: technique 'Tessellated' is left out: hull shaders"),
+              std::string::npos)
+        << warnings[1];
+    EXPECT_NE(warnings[2].find("'Linked' is left out: dynamic shader linkage (BindInterfaces)"),
+              std::string::npos)
+        << warnings[2];
+}
+
+TEST(D3d10Syntax, AnEffectWhoseTechniquesAreAllLeftOutFails) {
+    DiagnosticList diagnostics;
+    auto effect = parseEffectSource(withTechniques(R"(
+technique11 OnlyOne { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(CompileShader(gs_5_0, VS())); } }
+)"),
+                                    "d3d10.fx", ParseOptions{}, diagnostics);
+    EXPECT_FALSE(effect);
+    const Diagnostic* d = find(diagnostics, DiagId::AllTechniquesRefused);
+    ASSERT_TRUE(d) << diagnostics.str();
+    EXPECT_EQ(d->loc.line, 17);  // the geometry shader's SetGeometryShader
+    EXPECT_NE(str(*d).find("'OnlyOne', geometry shaders are not supported"), std::string::npos) << str(*d);
+}
+
+TEST(D3d10Syntax, DynamicLinkageIsRefusedWhereItIsDeclared) {
+    DiagnosticList diagnostics;
+    auto effect = parseEffectSource("interface ILight { float3 Light(); };\n" + withTechniques(""),
+                                    "d3d10.fx", ParseOptions{}, diagnostics);
+    EXPECT_FALSE(effect);
+    const Diagnostic* d = find(diagnostics, DiagId::UnsupportedFeature);
+    ASSERT_TRUE(d) << diagnostics.str();
+    EXPECT_EQ(d->loc.line, 1);
+    EXPECT_EQ(d->loc.column, 1);
+    EXPECT_NE(str(*d).find("dynamic shader linkage ('interface')"), std::string::npos);
+}
+
+// [SECTION] State objects and defaults
+
+TEST(D3d10Syntax, PassesStartFromD3d10DefaultsWhichDifferFromD3d9s) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+technique11 Modern { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+technique Classic { pass { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& modern = compiled->techniques[0].passes[0];
+    const CompiledPass& classic = compiled->techniques[1].passes[0];
+    EXPECT_EQ(stateOf(modern, RenderStateId::ZFunc), 2.0);  // LESS (D3D9: LESSEQUAL)
+    EXPECT_EQ(stateOf(modern, RenderStateId::StencilMask), 255.0);
+    EXPECT_EQ(stateOf(modern, RenderStateId::StencilWriteMask), 255.0);
+    EXPECT_EQ(stateOf(modern, RenderStateId::MultiSampleAntialias), 0.0);
+    EXPECT_EQ(stateOf(modern, RenderStateId::CullMode), 3.0);  // BACK with clockwise front faces
+    EXPECT_EQ(stateOf(modern, RenderStateId::DepthBiasClamp), 0.0);
+    EXPECT_TRUE(classic.states.empty());  // D3D9's defaults come from the state table
+    EXPECT_EQ(renderStateInfo(RenderStateId::ZFunc).defaultValue, 4.0);
+    EXPECT_EQ(renderStateInfo(RenderStateId::StencilMask).defaultValue, 4294967295.0);
+}
+
+TEST(D3d10Syntax, StateObjectsSetEveryFieldTheyNameAndDefaultTheRest) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+RasterizerState FrontCcw { CullMode = Back; FrontCounterClockwise = TRUE; DepthBias = 4; SlopeScaledDepthBias = 1.5; DepthClipEnable = FALSE; }
+RasterizerState CullFront { CullMode = FRONT; FillMode = WIREFRAME; };
+DepthStencilState Stencilled { DepthEnable = FALSE; DepthWriteMask = ZERO; StencilEnable = TRUE;
+    FrontFaceStencilPass = INCR_SAT; BackFaceStencilFunc = NOT_EQUAL; StencilReadMask = 0x0F; };
+BlendState Additive { BlendEnable[0] = TRUE; SrcBlend = SRC_ALPHA; DestBlend = ONE; BlendOpAlpha = REV_SUBTRACT;
+    RenderTargetWriteMask[0] = 0x07; RenderTargetWriteMask[1] = 0; };
+technique11 T
+{
+    pass A { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+             SetRasterizerState(FrontCcw); SetDepthStencilState(Stencilled, 7);
+             SetBlendState(Additive, float4(1, 0, 0, 1), 0xFFFFFFFF); }
+    pass B { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+             SetRasterizerState(CullFront); }
+}
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& a = compiled->techniques[0].passes[0];
+    EXPECT_EQ(stateOf(a, RenderStateId::CullMode), 2.0);  // back faces are clockwise ones here
+    EXPECT_EQ(stateOf(a, RenderStateId::DepthBiasUnits), 4.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::SlopeScaleDepthBias), 1.5);
+    EXPECT_EQ(stateOf(a, RenderStateId::DepthClipEnable), 0.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::FillMode), 3.0);  // defaulted: SOLID
+    EXPECT_EQ(stateOf(a, RenderStateId::ZEnable), 0.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::ZWriteEnable), 0.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::ZFunc), 2.0);  // defaulted: LESS
+    EXPECT_EQ(stateOf(a, RenderStateId::StencilPass), 4.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::CCW_StencilFunc), 6.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::StencilMask), 15.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::StencilRef), 7.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::TwoSidedStencilMode), 1.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::AlphaBlendEnable), 1.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::SrcBlend), 5.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::DestBlend), 2.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::BlendOpAlpha), 3.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::ColorWriteEnable), 7.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::ColorWriteEnable1), 0.0);
+    EXPECT_EQ(stateOf(a, RenderStateId::BlendFactor), static_cast<double>(0xFFFF0000u));
+    const CompiledPass& b = compiled->techniques[0].passes[1];
+    EXPECT_EQ(stateOf(b, RenderStateId::CullMode), 2.0);  // FRONT: the clockwise ones
+    EXPECT_EQ(stateOf(b, RenderStateId::FillMode), 2.0);
+    EXPECT_EQ(stateOf(b, RenderStateId::ZFunc), 2.0);  // no depth-stencil object: D3D10's default
+    EXPECT_EQ(stateOf(b, RenderStateId::AlphaBlendEnable), 0.0);
+}
+
+TEST(D3d10Syntax, StateObjectErrorsAreLocated) {
+    struct Case {
+        const char* source;
+        int line, column;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"RasterizerState R { CullMod = NONE; };", 1, 21, "unknown state 'CullMod'"},
+        {"RasterizerState R { CullMode = CCW; };", 1, 32, "'CCW' is not a value of state 'CullMode'"},
+        {"BlendState B { BlendEnable[0] = TRUE; BlendEnable[1] = FALSE; };\ntechnique11 T { pass { "
+         "SetBlendState(B, "
+         "float4(0,0,0,0), 0xFFFFFFFF); } }",
+         1, 39, "BlendEnable[1] differs from render target 0's"},
+        {"DepthStencilState D { DepthEnable = FALSE; };\ntechnique11 T { pass { SetRasterizerState(D); } }",
+         2, 43, "'D' is not a RasterizerState"},
+        {"technique11 T { pass { SetDepthStencilState(Nowhere, 0); } }", 1, 45,
+         "unknown identifier 'Nowhere'"},
+        {"BlendState B { };\ntechnique11 T { pass { SetBlendState(B); } }", 2, 24,
+         "expected 3 argument(s), found 1"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.source);
+        DiagnosticList diagnostics;
+        auto effect = parseEffectSource(c.source, "d3d10.fx", ParseOptions{}, diagnostics);
+        EXPECT_FALSE(effect);
+        ASSERT_TRUE(diagnostics.hasErrors());
+        const Diagnostic& first = diagnostics.items().front();
+        EXPECT_EQ(first.loc.line, c.line) << diagnostics.str();
+        EXPECT_EQ(first.loc.column, c.column) << diagnostics.str();
+        EXPECT_NE(str(first).find(c.message), std::string::npos) << diagnostics.str();
+    }
+}
+
+// [SECTION] Resources
+
+TEST(D3d10Syntax, SamplerObjectsTakeD3d10DefaultsAndD3d9SamplersKeepTheirs) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+Texture2D Albedo;
+texture2D OldAlbedo;
+SamplerState Plain { };
+SamplerState Bordered { Filter = MIN_MAG_MIP_POINT; AddressU = BORDER; BorderColor = float4(0, 0, 0, 0); MaxLOD = 2; MinLOD = 1; };
+SamplerComparisonState Compare { Filter = COMPARISON_MIN_MAG_LINEAR_MIP_POINT; };
+sampler2D OldSampler = sampler_state { Texture = <OldAlbedo>; };
+float4 SamplePS(VsOut i) : SV_Target
+{
+    return Albedo.Sample(Plain, i.Uv) + Albedo.SampleLevel(Bordered, i.Uv, 0) + tex2D(OldSampler, i.Uv);
+}
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, SamplePS())); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    auto sampler = [&](const char* name) -> const SamplerDesc& {
+        for (const SamplerDesc& s : compiled->samplers)
+            if (compiled->parameters[s.parameter].name == name) return s;
+        ADD_FAILURE() << name;
+        return compiled->samplers.front();
+    };
+    const SamplerDesc& plain = sampler("Plain");
+    EXPECT_EQ(plain.minFilter, 2);
+    EXPECT_EQ(plain.mipFilter, 2);
+    EXPECT_EQ(plain.addressU, 3);  // CLAMP
+    EXPECT_EQ(plain.borderColor[0], 1.0f);
+    EXPECT_EQ(plain.comparisonFunc, 0);
+    const SamplerDesc& bordered = sampler("Bordered");
+    EXPECT_EQ(bordered.minFilter, 1);
+    EXPECT_EQ(bordered.addressU, 4);
+    EXPECT_EQ(bordered.addressV, 3);
+    EXPECT_EQ(bordered.borderColor[0], 0.0f);
+    EXPECT_EQ(bordered.minLod, 1.0f);
+    EXPECT_EQ(bordered.maxLod, 2.0f);
+    EXPECT_EQ(sampler("Compare").comparisonFunc, 1);  // NEVER, D3D11's default, until told otherwise
+    const SamplerDesc& old = sampler("OldSampler");
+    EXPECT_EQ(old.minFilter, 1);  // D3D9: POINT, WRAP
+    EXPECT_EQ(old.addressU, 1);
+
+    // Each (texture, sampler) pair the code samples is one GL sampler with the pair's texture, on a unit
+    // after the D3D9 samplers'.
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    std::vector<const SamplerBinding*> pairs;
+    for (const SamplerBinding& s : pass.fragment.samplers)
+        if (!s.pairTexture.empty()) pairs.push_back(&s);
+    ASSERT_EQ(pairs.size(), 2u) << pass.fragment.glsl;
+    for (const SamplerBinding* s : pairs) {
+        EXPECT_EQ(s->pairTexture, "Albedo");
+        ASSERT_TRUE(s->textureParameter);
+        EXPECT_EQ(compiled->parameters[*s->textureParameter].name, "Albedo");
+        EXPECT_GE(s->unit, 1);
+    }
+    EXPECT_NE(pairs[0]->unit, pairs[1]->unit);
+}
+
+TEST(D3d10Syntax, ConstantBufferMembersAreParametersWithSemanticsAndAnnotations) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect =
+        parseEffectSource(withTechniques(""), "d3d10.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    const Parameter* wvp = effect->findParameter("Wvp");
+    ASSERT_TRUE(wvp);
+    EXPECT_EQ(wvp->semantic, "WorldViewProjection");
+    const Parameter* tint = effect->findParameter("Tint");
+    ASSERT_TRUE(tint);
+    ASSERT_TRUE(tint->annotation("UIName"));
+    ASSERT_TRUE(tint->initializer);
+}
+
+TEST(D3d10Syntax, CustomVaryingSemanticsLinkAcrossStages) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    EXPECT_NE(pass.vertex.glsl.find("layout(location = 24) out"), std::string::npos) << pass.vertex.glsl;
+    EXPECT_NE(pass.fragment.glsl.find("layout(location = 24) in"), std::string::npos) << pass.fragment.glsl;
+}
+
+}  // namespace
+}  // namespace fx
