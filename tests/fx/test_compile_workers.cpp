@@ -264,7 +264,16 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     outcome.messages = {{true, "a.fx", 3, 7, "'x' : undeclared identifier"}, {false, "", 0, 0, "w"}};
     outcome.program.glsl = "#version 450\n";
     outcome.program.uniforms.push_back({"Bias", {}, 0, {}, 16, 4, 0, 0, false, false});
-    outcome.program.samplers.push_back({"ShadowMap", 3, 0, true});
+    fx::SamplerBinding sampler;
+    sampler.glslName = "ShadowMap";
+    sampler.unit = 3;
+    sampler.depthCompare = true;
+    outcome.program.samplers.push_back(sampler);
+    fx::SamplerBinding pair;  // a D3D10 (texture, sampler) pair
+    pair.glslName = "fx_pair_Albedo_Linear";
+    pair.pairTexture = "Albedo";
+    pair.pairSampler = "Linear";
+    outcome.program.samplers.push_back(pair);
     outcome.program.inputs.push_back({"TEXCOORD0", 2, 2});
     std::optional<fx::StageOutcome> o = fx::decodeOutcome(fx::encodeOutcome(outcome));
     ASSERT_TRUE(o);
@@ -277,6 +286,9 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     EXPECT_FALSE(o->program.uniforms[0].active);
     EXPECT_FALSE(o->program.uniforms[0].hlslColumnsContiguous);
     EXPECT_TRUE(o->program.samplers[0].depthCompare);
+    ASSERT_EQ(o->program.samplers.size(), 2u);
+    EXPECT_EQ(o->program.samplers[1].pairTexture, "Albedo");
+    EXPECT_EQ(o->program.samplers[1].pairSampler, "Linear");
     EXPECT_EQ(o->program.inputs[0].components, 2);
 }
 
