@@ -650,6 +650,10 @@ private:
                 break;
             advance();
         }
+        if (!inBuffer && (check("cbuffer") || check("tbuffer"))) {  // FX10's `shared cbuffer Name { ... }`
+            parseConstantBuffer();
+            return;
+        }
         if (peek().kind == Token::Kind::Identifier && !isTypeName(peek()) &&
             peek(1).kind == Token::Kind::Identifier)
             fail(DiagId::UnknownType, peek().loc, {peek().text});

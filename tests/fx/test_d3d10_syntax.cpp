@@ -334,6 +334,15 @@ TEST(D3d10Syntax, ConstantBufferMembersAreParametersWithSemanticsAndAnnotations)
     ASSERT_TRUE(tint);
     ASSERT_TRUE(tint->annotation("UIName"));
     ASSERT_TRUE(tint->initializer);
+
+    // FX10's shared constant buffers (shared with other effects of a pool) and tbuffers read the same.
+    auto pooled =
+        parseEffectSource("shared cbuffer Pool { float4x4 View : View; };\ntbuffer Lights { float3 Dir; };",
+                          "pool.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(pooled) << diagnostics.str();
+    ASSERT_TRUE(pooled->findParameter("View"));
+    EXPECT_EQ(pooled->findParameter("View")->semantic, "View");
+    EXPECT_TRUE(pooled->findParameter("Dir"));
 }
 
 TEST(D3d10Syntax, CustomVaryingSemanticsLinkAcrossStages) {

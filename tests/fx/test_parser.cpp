@@ -282,10 +282,10 @@ float b;
     EXPECT_EQ(effect->order[2].kind, DeclRef::Kind::Parameter);
     EXPECT_EQ(effect->order[3].kind, DeclRef::Kind::Function);
     EXPECT_EQ(effect->order[4].kind, DeclRef::Kind::Verbatim);
-    EXPECT_EQ(effect->order[5].kind, DeclRef::Kind::Verbatim);
+    EXPECT_EQ(effect->order[5].kind, DeclRef::Kind::Parameter);  // a cbuffer's member is a parameter
     EXPECT_EQ(effect->order[6].kind, DeclRef::Kind::Parameter);
     EXPECT_EQ(effect->verbatim[0].hlslText, "typedef float4 color;");
-    EXPECT_EQ(effect->verbatim[1].hlslText, "cbuffer cb { float4 q;};");
+    EXPECT_EQ(effect->parameters[effect->order[5].index].name, "q");
     const Parameter* k = effect->findParameter("k");
     ASSERT_TRUE(k);
     EXPECT_TRUE(k->isStatic);
@@ -476,12 +476,13 @@ technique T9 {
     const Technique* t10 = effect->findTechnique("T10");
     ASSERT_TRUE(t10);
     const Pass& p0 = t10->passes[0];
-    ASSERT_EQ(p0.states.size(), 2u);
-    EXPECT_EQ(p0.states[0].name, "VertexShader");
-    EXPECT_EQ(p0.states[0].value.kind, Expr::Kind::Compile);
-    EXPECT_EQ(p0.states[0].value.profile, "vs_4_0");
-    EXPECT_EQ(p0.states[1].name, "PixelShader");
-    EXPECT_EQ(p0.states[1].value.text, "PS");
+    // The shaders, after D3D10's default states (test_d3d10_syntax).
+    ASSERT_TRUE(findState(p0.states, "VertexShader"));
+    EXPECT_EQ(findState(p0.states, "VertexShader")->value.kind, Expr::Kind::Compile);
+    EXPECT_EQ(findState(p0.states, "VertexShader")->value.profile, "vs_4_0");
+    ASSERT_TRUE(findState(p0.states, "PixelShader"));
+    EXPECT_EQ(findState(p0.states, "PixelShader")->value.text, "PS");
+    EXPECT_EQ(findState(p0.states, "ZFunc")->value.number, 2);
     EXPECT_EQ(effect->findParameter("vsVar")->type.base, BaseType::VertexShader);
     EXPECT_EQ(effect->findParameter("vsVar")->initializer->kind, Expr::Kind::Compile);
 
