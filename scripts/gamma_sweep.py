@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The γ sweep of issue #6 (README, "Light-space parameterizations"): every light-space parameterization's
+"""The γ sweep (docs/techniques/light-space-parameterizations.md): every light-space parameterization's
 shadow error, texel footprint and frame time as the light turns from along the view (γ = 0°) to across it
 (γ = 90°), on one scene, at equal total shadow-map texels.
 

@@ -1,5 +1,5 @@
-// StressCases: the configurations of issue #9, built from the built-in "boxes" and "behind" scenes.
-// Every case changes one thing of an ordinary configuration, so a failure names its cause.
+// StressCases: the extreme configurations `shadowfx stress` runs, built from the built-in "boxes" and
+// "behind" scenes. Every case changes one thing of an ordinary configuration, so a failure names its cause.
 #include <runtime/BuiltinScenes.h>
 #include <runtime/StressCases.h>
 
@@ -157,9 +157,10 @@ const std::vector<std::pair<std::string, CaseMaker>>& caseTable() {
          }},
         {"light-behind-viewer",
          [] {
-             return variant("light-behind-viewer",
-                            "Kozlov 2004's case: light and casters behind the viewer, shadows falling into view",
-                            "behind-ordinary", *makeBuiltinScene("behind"), false);
+             return variant(
+                 "light-behind-viewer",
+                 "Kozlov 2004's case: light and casters behind the viewer, shadows falling into view",
+                 "behind-ordinary", *makeBuiltinScene("behind"), false);
          }},
         {"grazing",
          [] {
