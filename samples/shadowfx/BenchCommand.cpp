@@ -87,7 +87,22 @@ using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
 constexpr int kSchemaVersion = 2;
 
-// [SECTION] Diagnostics
+// [SECTION] Result records
+
+// One run's shadow error as results.json writes it, for shadowfx's runs and the peers' alike.
+Json errorJson(const runtime::ShadowErrors& errors) {
+    return Json{
+        {"receiver_pixels", errors.receiverPixels},
+        {"false_shadow_pixels", errors.falseShadowPixels},
+        {"false_light_pixels", errors.falseLightPixels},
+        {"false_shadow_percent", errors.falseShadowPercent},
+        {"false_light_percent", errors.falseLightPercent},
+        {"misclassified_percent", errors.misclassifiedPercent},
+        {"mae", errors.meanAbsoluteError},
+        {"p95_abs_error", errors.p95AbsoluteError},
+        {"penumbra_pixels", errors.penumbraPixels},
+        {"penumbra_mae", errors.penumbraPixels > 0 ? Json(errors.penumbraMeanAbsoluteError) : Json(nullptr)}};
+}
 
 // [SECTION] Statistics
 
@@ -940,19 +955,7 @@ int benchCommand(const Arguments& args) {
                             }
                             const std::vector<float>& effectVisibility = score->visibility;
                             const runtime::ShadowErrors& errors = score->errors;
-                            record["error"] =
-                                Json{{"receiver_pixels", errors.receiverPixels},
-                                     {"false_shadow_pixels", errors.falseShadowPixels},
-                                     {"false_light_pixels", errors.falseLightPixels},
-                                     {"false_shadow_percent", errors.falseShadowPercent},
-                                     {"false_light_percent", errors.falseLightPercent},
-                                     {"misclassified_percent", errors.misclassifiedPercent},
-                                     {"mae", errors.meanAbsoluteError},
-                                     {"p95_abs_error", errors.p95AbsoluteError},
-                                     {"penumbra_pixels", errors.penumbraPixels},
-                                     {"penumbra_mae", errors.penumbraPixels > 0
-                                                          ? Json(errors.penumbraMeanAbsoluteError)
-                                                          : Json(nullptr)}};
+                            record["error"] = errorJson(errors);
                             const std::string image = "errors/" +
                                                       safeName(effectName + "_" + technique.name + "_" +
                                                                t.scene.name + "_" + std::to_string(mapSize)) +
@@ -1025,18 +1028,7 @@ int benchCommand(const Arguments& args) {
                                 {"aliasing", nullptr},
                                 {"ground_truth", Json{{"soft", t.truth.soft},
                                                       {"samples_per_pixel", t.truth.samplesPerPixel}}},
-                                {"error", Json{{"receiver_pixels", errors.receiverPixels},
-                                               {"false_shadow_pixels", errors.falseShadowPixels},
-                                               {"false_light_pixels", errors.falseLightPixels},
-                                               {"false_shadow_percent", errors.falseShadowPercent},
-                                               {"false_light_percent", errors.falseLightPercent},
-                                               {"misclassified_percent", errors.misclassifiedPercent},
-                                               {"mae", errors.meanAbsoluteError},
-                                               {"p95_abs_error", errors.p95AbsoluteError},
-                                               {"penumbra_pixels", errors.penumbraPixels},
-                                               {"penumbra_mae", errors.penumbraPixels > 0
-                                                                    ? Json(errors.penumbraMeanAbsoluteError)
-                                                                    : Json(nullptr)}}},
+                                {"error", errorJson(errors)},
                                 {"error_image", nullptr}};
                     // The error image over the peer's own frame (its visibility in grey).
                     runtime::FrameImage frame;
