@@ -1,19 +1,23 @@
 // bench_per_draw_cost: what the effect layer costs. The thesis effect's `main` frame (effects/
 // thesis_fxcomposer.fx) rendered by shadowfx (EffectRenderer, leave-out culling on, nothing reused: the
-// full cost bench reports) and by the same frame written by hand against GL 4.5 (HandWrittenFrame.h:
-// the same GLSL, meshes, culled lists and states), alternating frame by frame so that both see the same
-// machine load. Per scene (boxes, forest-fifth, forest) the counters are the medians of
-//   frame_ms / hand_frame_ms      wall time of one frame, glFinish included;
-//   cpu_ms / hand_cpu_ms          CPU time of the calling thread until the frame is issued (before
-//                                 glFinish): on llvmpipe this includes the driver's vertex work;
-//   frame_ratio, cpu_ratio        shadowfx ÷ hand-written;
-//   runtime_cpu_ms                the runtime's own CPU time (script, binding, preshaders: FrameStats::cpu,
-//                                 from extra frames with FrameOptions::timePasses);
-//   draws, hand_draws             draws per frame (they must agree).
+// full cost bench reports), once with batching (one instanced draw per mesh, FrameOptions::batching) and
+// once without (every object alone), and by the same frame written by hand against GL 4.5
+// (HandWrittenFrame.h: the same GLSL, meshes, culled lists and states, object by object), rotating the
+// order frame by frame so that all three see the same machine load. Per scene (boxes, forest-fifth,
+// forest) the counters are the medians of
+//   frame_ms / single_frame_ms / hand_frame_ms   wall time of one frame, glFinish included;
+//   cpu_ms / single_cpu_ms / hand_cpu_ms         CPU time of the calling thread until the frame is issued
+//                                                (before glFinish): on llvmpipe this includes the driver's
+//                                                vertex work;
+//   frame_ratio, cpu_ratio (single_…)            shadowfx batched (unbatched) ÷ hand-written;
+//   runtime_cpu_ms, single_runtime_cpu_ms        the runtime's own CPU time (script, binding, preshaders:
+//                                                FrameStats::cpu less its GL share, from extra frames with
+//                                                FrameOptions::timePasses);
+//   map_draws, scene_draws, single_draws, hand_draws   draws per pass (batched) and per frame.
 //
 //   build/benchmarks/bench_per_draw_cost [--width=W --height=H --map-size=N --frames=N]
-//   [--only=shadowfx|hand] (default 512x512, a 2048² map, 10 frames per side; --width=128 --height=128
-//   --map-size=512 for a quick run on llvmpipe; --only renders one side, for perf record)
+//   [--only=shadowfx|single|hand] (default 512x512, a 2048² map, 10 frames per side; --width=128
+//   --height=128 --map-size=512 for a quick run on llvmpipe; --only renders one side, for perf record)
 #include "HandWrittenFrame.h"
 
 #include <fx/EffectCompiler.h>
@@ -44,7 +48,7 @@ struct Settings {
     int height = 512;
     int mapSize = 2048;
     int frames = 10;
-    std::string only;  // "shadowfx" or "hand": render that side alone (for a profiler), no ratios
+    std::string only;  // "shadowfx", "single" or "hand": render that side alone (for a profiler), no ratios
 } gSettings;
 
 runtime::GlContext& context() {
@@ -114,59 +118,91 @@ void PerDrawCost(benchmark::State& state, const std::string& sceneName) {
     options.height = gSettings.height;
     options.technique = "main";
     options.reuseTargets = false;
-    runtime::FrameStats stats;
+    runtime::FrameOptions single = options;
+    single.batching = false;
     for (int warm = 0; warm < 2; ++warm) {
-        renderer->render(*scene, options, diagnostics, &stats);
+        renderer->render(*scene, options, diagnostics);
+        renderer->render(*scene, single, diagnostics);
         hand->render(*scene);
         gl::Finish();
     }
-    std::vector<double> wall, cpu, handWall, handCpu;
-    bool shadowfxFirst = true;
+    std::vector<double> wall, cpu, singleWall, singleCpu, handWall, handCpu;
+    int rotation = 0;
     for (auto _ : state) {
-        Sample ours, theirs;
+        const auto batchedFrame = [&] {
+            return timeFrame([&] { renderer->render(*scene, options, diagnostics); });
+        };
+        const auto singleFrame = [&] {
+            return timeFrame([&] { renderer->render(*scene, single, diagnostics); });
+        };
+        const auto handFrame = [&] { return timeFrame([&] { hand->render(*scene); }); };
         if (!gSettings.only.empty()) {
-            const Sample alone = gSettings.only == "hand"
-                                     ? timeFrame([&] { hand->render(*scene); })
-                                     : timeFrame([&] { renderer->render(*scene, options, diagnostics); });
+            const Sample alone = gSettings.only == "hand"     ? handFrame()
+                                 : gSettings.only == "single" ? singleFrame()
+                                                              : batchedFrame();
             state.SetIterationTime(alone.wallMs * 1e-3);
             continue;
         }
-        // Alternate the order so that neither always runs right after the other's GPU work.
-        if (shadowfxFirst) {
-            ours = timeFrame([&] { renderer->render(*scene, options, diagnostics); });
-            theirs = timeFrame([&] { hand->render(*scene); });
-        } else {
-            theirs = timeFrame([&] { hand->render(*scene); });
-            ours = timeFrame([&] { renderer->render(*scene, options, diagnostics); });
+        // Rotate the order so that none always runs right after another's GPU work.
+        Sample ours, alone, theirs;
+        for (int k = 0; k < 3; ++k) {
+            switch ((rotation + k) % 3) {
+                case 0:
+                    ours = batchedFrame();
+                    break;
+                case 1:
+                    alone = singleFrame();
+                    break;
+                default:
+                    theirs = handFrame();
+                    break;
+            }
         }
-        shadowfxFirst = !shadowfxFirst;
+        rotation = (rotation + 1) % 3;
         wall.push_back(ours.wallMs);
         cpu.push_back(ours.cpuMs);
+        singleWall.push_back(alone.wallMs);
+        singleCpu.push_back(alone.cpuMs);
         handWall.push_back(theirs.wallMs);
         handCpu.push_back(theirs.cpuMs);
-        state.SetIterationTime((ours.wallMs + theirs.wallMs) * 1e-3);
+        state.SetIterationTime((ours.wallMs + alone.wallMs + theirs.wallMs) * 1e-3);
     }
     // The runtime's own share, from frames that time it (their queries make them unfit for the above).
-    std::vector<double> own;
-    runtime::FrameOptions timed = options;
-    timed.timePasses = true;
-    for (int i = 0; i < 5; ++i) {
-        runtime::FrameStats frame;
-        renderer->render(*scene, timed, diagnostics, &frame);
-        own.push_back(static_cast<double>(frame.cpu.totalNs - frame.cpu.glNs) * 1e-6);
-        stats = frame;
-    }
+    const auto ownCpu = [&](const runtime::FrameOptions& frameOptions, runtime::FrameStats& stats) {
+        std::vector<double> own;
+        runtime::FrameOptions timed = frameOptions;
+        timed.timePasses = true;
+        for (int i = 0; i < 5; ++i) {
+            renderer->render(*scene, timed, diagnostics, &stats);
+            own.push_back(static_cast<double>(stats.cpu.totalNs - stats.cpu.glNs) * 1e-6);
+        }
+        return median(own);
+    };
+    runtime::FrameStats stats, singleStats;
+    const double runtimeCpu = ownCpu(options, stats);
+    const double singleRuntimeCpu = ownCpu(single, singleStats);
     if (diagnostics.hasErrors()) state.SkipWithError(diagnostics.str().c_str());
-    const double frameMs = median(wall), handFrameMs = median(handWall);
-    const double cpuMs = median(cpu), handCpuMs = median(handCpu);
+    if (wall.empty()) return;
+    const double frameMs = median(wall), singleFrameMs = median(singleWall), handFrameMs = median(handWall);
+    const double cpuMs = median(cpu), singleCpuMs = median(singleCpu), handCpuMs = median(handCpu);
     state.counters["frame_ms"] = frameMs;
+    state.counters["single_frame_ms"] = singleFrameMs;
     state.counters["hand_frame_ms"] = handFrameMs;
     state.counters["frame_ratio"] = frameMs / handFrameMs;
+    state.counters["single_frame_ratio"] = singleFrameMs / handFrameMs;
     state.counters["cpu_ms"] = cpuMs;
+    state.counters["single_cpu_ms"] = singleCpuMs;
     state.counters["hand_cpu_ms"] = handCpuMs;
     state.counters["cpu_ratio"] = cpuMs / handCpuMs;
-    state.counters["runtime_cpu_ms"] = median(own);
+    state.counters["single_cpu_ratio"] = singleCpuMs / handCpuMs;
+    state.counters["runtime_cpu_ms"] = runtimeCpu;
+    state.counters["single_runtime_cpu_ms"] = singleRuntimeCpu;
+    for (const runtime::PassStats& pass : stats.passes) {
+        if (pass.pass == "RenderShadowMap") state.counters["map_draws"] = pass.draws;
+        if (pass.pass == "RenderScene") state.counters["scene_draws"] = pass.draws;
+    }
     state.counters["draws"] = stats.draws;
+    state.counters["single_draws"] = singleStats.draws;
     state.counters["hand_draws"] = hand->shadowDraws() + hand->sceneDraws();
 }
 

@@ -72,6 +72,8 @@ const char* const kBenchUsage =
     "  --leave-out LIST      on, off or on,off: leave-out (culling, dead and cached passes) as a run\n"
     "                        dimension; on,off times both in one run (default on)\n"
     "  --no-leave-out        the same as --leave-out off\n"
+    "  --no-batching         draw every object alone instead of one instanced draw per mesh (the image is\n"
+    "                        the same; for comparing the per-draw cost)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
@@ -892,6 +894,7 @@ int benchCommand(const Arguments& args) {
                         options.technique = technique.name;
                         options.timePasses = true;
                         options.leaveOut = leaveOut;
+                        options.batching = !args.flag("--no-batching");
                         // Full cost first: its first frame finds nothing cached. Without leave-out nothing
                         // is reused either way, and the one set of frames is both.
                         runtime::FrameOptions fullOptions = options;
@@ -1085,7 +1088,8 @@ int benchCommand(const Arguments& args) {
                                  {"peer_techniques", peerTechniqueFilter},
                                  {"camera_orbit_degrees_per_frame", cameraOrbit},
                                  {"leave_out", leaveOutModes},
-                                 {"time_axis", timeAxis}}},
+                                 {"time_axis", timeAxis},
+                                 {"batching", !args.flag("--no-batching")}}},
                  {"ground_truth", truthJson},
                  {"runs", runs}};
     {

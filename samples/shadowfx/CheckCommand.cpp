@@ -59,6 +59,7 @@ const char* const kCheckUsage =
     "  --width W, --height H frame size (default 320x240, the size goldens are made at)\n"
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
     "  --list-techniques     print each effect's technique names, one per line, and exit\n"
+    "  --no-batching         draw every object alone, not one instanced draw per mesh (the same images)\n"
     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
     "Technique annotations read: string ExpectScenes, float ExpectMisclassifiedBelow (percent of receiver\n"
     "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (area lights), int ExpectMapSize, bool\n"
@@ -437,6 +438,7 @@ struct Settings {
     int height = 240;
     bool update = false;
     bool requireGoldens = false;
+    bool batching = true;
     std::vector<std::string> sceneOverride;
     std::filesystem::path outDir;
     runtime::GroundTruthOptions truthOptions;
@@ -541,6 +543,7 @@ private:
         frameOptions.width = mSettings.width;
         frameOptions.height = mSettings.height;
         frameOptions.technique = technique.name;
+        frameOptions.batching = mSettings.batching;
 
         // Compiles, links and renders without GL errors; no NaN in any target; not blank.
         mSink.mark();
@@ -736,6 +739,7 @@ int checkCommand(const Arguments& args) {
     settings.height = args.intValue("--height", 240);
     settings.update = args.flag("--update");
     settings.requireGoldens = args.flag("--require-goldens");
+    settings.batching = !args.flag("--no-batching");
     settings.sceneOverride = splitList(args.value("--scenes"));
     settings.outDir = args.value("--out", "out/check");
     settings.truthOptions.areaSamples = args.intValue("--area-samples", 256);

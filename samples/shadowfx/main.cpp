@@ -115,6 +115,7 @@ int renderCommand(const Arguments& args) {
     frame.height = height;
     frame.technique = args.value("--technique");
     frame.leaveOut = !args.flag("--no-leave-out");
+    frame.batching = !args.flag("--no-batching");
     frame.countTexels = args.flag("--stats");
     runtime::FrameStats stats;
     if (!renderer->render(*scene, frame, sink, &stats) || sink.errors() > 0) return 1;
@@ -126,8 +127,9 @@ int renderCommand(const Arguments& args) {
         return 1;
     }
     if (args.flag("--stats") || verbose) {
-        std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws, "
-                  << stats.triangles << " triangles, " << stats.clears << " clears";
+        std::cerr << "shadowfx: " << stats.passesRun << " passes, " << stats.draws << " draws ("
+                  << stats.objects << " objects), " << stats.triangles << " triangles, " << stats.clears
+                  << " clears";
         std::cerr << " (leave-out " << (frame.leaveOut ? "on" : "off") << ": " << stats.passesLeftOut
                   << " passes left out, " << stats.culled << " objects culled)\n";
     }
@@ -135,9 +137,9 @@ int renderCommand(const Arguments& args) {
         for (const runtime::PassStats& pass : stats.passes) {
             std::cerr << "  pass " << pass.pass << ": "
                       << (pass.leftOut.empty() ? std::string("ran") : "left out (" + pass.leftOut + ")")
-                      << ", " << pass.draws << " draws, " << pass.culled << " culled, " << pass.triangles
-                      << " triangles, " << pass.clears << " clears, " << pass.texelsWritten
-                      << " texels written\n";
+                      << ", " << pass.draws << " draws (" << pass.objects << " objects), " << pass.culled
+                      << " culled, " << pass.triangles << " triangles, " << pass.clears << " clears, "
+                      << pass.texelsWritten << " texels written\n";
         }
     }
     std::cout << out << "\n";
@@ -204,10 +206,11 @@ const shadowfx::cli::Command kCommands[] = {
      "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
      "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
      "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
+     "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
      "  --verbose             print the GL renderer and notes\n",
      {"--out"},
      {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
-     {"--stats", "--verbose", "--no-leave-out"},
+     {"--stats", "--verbose", "--no-leave-out", "--no-batching"},
      renderCommand},
     {"compile",
      "print the generated GLSL of every pass, or the diagnostics",
@@ -250,7 +253,7 @@ const shadowfx::cli::Command kCommands[] = {
       "--time",
       "--peers",
       "--peer-techniques"},
-     {"--no-leave-out"},
+     {"--no-leave-out", "--no-batching"},
      shadowfx::cli::benchCommand,
      -1},
     {"check",
@@ -259,7 +262,7 @@ const shadowfx::cli::Command kCommands[] = {
      {},
      {"--technique", "--scenes", "--backend", "--junit", "--out", "--width", "--height", "--area-samples",
       "-I", "-D"},
-     {"--update", "--require-goldens", "--list-techniques"},
+     {"--update", "--require-goldens", "--list-techniques", "--no-batching"},
      shadowfx::cli::checkCommand,
      -1},
     {"stress",

@@ -115,7 +115,7 @@ bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
     }
 }
 
-void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
+void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances) {
     if (mVao == 0) return;
     gl::BindVertexArray(mVao);
     const auto sameInput = [](const fx::VertexInput& a, const fx::VertexInput& b) {
@@ -123,7 +123,7 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
     };
     if (!mLayout.empty() &&
         std::equal(inputs.begin(), inputs.end(), mLayout.begin(), mLayout.end(), sameInput)) {
-        gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
+        drawElements(instances);
         gl::BindVertexArray(0);
         return;
     }
@@ -174,8 +174,16 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs) {
     mLayout.clear();
     if (allStreams) mLayout = inputs;
     gl::BindBuffer(GL_ARRAY_BUFFER, 0);
-    gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
+    drawElements(instances);
     gl::BindVertexArray(0);
+}
+
+void GpuMesh::drawElements(int instances) const {
+    if (instances == 1) {
+        gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
+    } else {
+        gl::DrawElementsInstanced(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr, instances);
+    }
 }
 
 void GpuMesh::release() {

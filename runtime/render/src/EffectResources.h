@@ -5,6 +5,7 @@
 // target holds after the frames so far.
 #pragma once
 
+#include "BatchedPass.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
 #include <runtime/GpuMesh.h>
@@ -54,8 +55,16 @@ public:
     // The vertex stage alone, for passes that draw with no colour write (FrameExecutor::draw); linked on
     // first use, null where the pass's pixel shader has side effects (GpuProgram::pixelShaderHasSideEffects).
     std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> depthOnlyPrograms;  // by technique, pass
-    std::vector<std::vector<PassPreshaders>> preshaders;                                 // [technique][pass]
-    std::map<size_t, GpuTexture> textures;  // by texture parameter index
+    // Passes drawn instanced (FrameOptions::batching), by technique and pass: made on first use for the
+    // pass's per-object flags; `pass` null where the variant cannot be made or linked.
+    struct BatchedSlot {
+        std::vector<bool> perObjectParameter;
+        std::vector<bool> perObjectArgument;
+        std::unique_ptr<BatchedPass> pass;
+    };
+    std::map<std::pair<size_t, size_t>, BatchedSlot> batchedPasses;
+    std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
+    std::map<size_t, GpuTexture> textures;                // by texture parameter index
     // Mipmapped render targets written since their mip chain was last generated: regenerated before a
     // pass samples them (D3D9's AUTOGENMIPMAP).
     std::set<const GpuTexture*> staleMipChains;

@@ -7,6 +7,7 @@
 #include <runtime/RenderStateApplier.h>
 
 #include <algorithm>
+#include <cstring>
 
 namespace runtime {
 
@@ -160,8 +161,17 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         gl::Viewport(tile.x, tile.y, tile.z, tile.w);
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
     }
-    program->bind();
     const PassUse& use = mUses[passIndex];
+    BatchedPass* batched = buffer ? nullptr : batchedPass(pass, passIndex, use);
+    if (batched) {
+        GpuProgram* variant = batched->program(vertexOnly != nullptr);
+        if (variant) {
+            program = variant;
+        } else {
+            batched = nullptr;
+        }
+    }
+    program->bind();
     if (mOptions.leaveOut) {
         // Per-frame and per-port values once per pass; drawWith() then binds only per-object ones.
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
@@ -178,22 +188,28 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     }
     if (buffer) {
         drawWith(pass, passIndex, *program, use, nullptr, mResources.quad);
-    } else if (mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight)) {
-        mVisible.clear();
-        cull(op, mVisible);
-        int drawable = 0;
-        for (const SceneObject& object : mScene.objects) drawable += object.mesh ? 1 : 0;
-        for (uint32_t index : mVisible) {
-            const SceneObject& object = mScene.objects[index];
-            drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
-        }
-        const int culled = drawable - static_cast<int>(mVisible.size());
-        mStats.culled += culled;
-        if (PassStats* record = currentPass()) record->culled += culled;
     } else {
-        for (const SceneObject& object : mScene.objects) {
-            if (!object.mesh) continue;
-            drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
+        mVisible.clear();
+        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight);
+        int drawable = 0;
+        for (size_t index = 0; index < mScene.objects.size(); ++index) {
+            if (!mScene.objects[index].mesh) continue;
+            ++drawable;
+            if (!culling) mVisible.push_back(static_cast<uint32_t>(index));
+        }
+        if (culling) cull(op, mVisible);
+        if (batched) {
+            drawBatched(pass, passIndex, *program, use, *batched, states);
+        } else {
+            for (uint32_t index : mVisible) {
+                const SceneObject& object = mScene.objects[index];
+                drawWith(pass, passIndex, *program, use, &object, mResources.gpuMesh(object.mesh));
+            }
+        }
+        if (culling) {
+            const int culled = drawable - static_cast<int>(mVisible.size());
+            mStats.culled += culled;
+            if (PassStats* record = currentPass()) record->culled += culled;
         }
     }
     if (PassStats* record = currentPass(); record && vertexOnly)
@@ -439,13 +455,147 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
         mesh.draw(pass.vertex.inputs);
         if (drawUnculled) gl::Enable(GL_CULL_FACE);
     }
-    const uint64_t triangles = mesh.indexCount() / 3;
+    countDraw(mesh, 1);
+}
+
+void FrameExecutor::countDraw(const GpuMesh& mesh, int objects) {
+    const uint64_t triangles = mesh.indexCount() / 3 * static_cast<uint64_t>(objects);
     ++mStats.draws;
+    mStats.objects += objects;
     mTimer.countDraw();
     mStats.triangles += triangles;
     if (PassStats* record = currentPass()) {
         ++record->draws;
+        record->objects += objects;
         record->triangles += triangles;
+    }
+}
+
+// [SECTION] Batching
+
+BatchedPass* FrameExecutor::batchedPass(const fx::CompiledPass& pass, size_t passIndex, const PassUse& use) {
+    // Per-frame values are bound once per pass only with leave-out; without it every draw binds all.
+    if (!mOptions.batching || !mOptions.leaveOut) return nullptr;
+    mPerObject.assign(use.used.size(), false);
+    for (size_t p = 0; p < use.used.size(); ++p)
+        mPerObject[p] = use.used[p] && !mResources.pinned[p] && mBinder.isPerObject(p);
+    EffectResources::BatchedSlot& slot = mResources.batchedPasses[{mTechnique, passIndex}];
+    if (slot.perObjectParameter != mPerObject || slot.perObjectArgument != use.argumentPerObject) {
+        slot.perObjectParameter = mPerObject;
+        slot.perObjectArgument = use.argumentPerObject;
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+        slot.pass = BatchedPass::create(pass, mPerObject, use.argumentPerObject);
+    }
+    return slot.pass.get();
+}
+
+// True if drawing the pass's objects in another order leaves the same image: fragments that meet at a
+// pixel are resolved by the depth test (strict or not, with depth writes) or by a min/max blend, and no
+// stencil operation counts them. Draws whose states do not say so keep their order: only consecutive
+// objects with the same mesh share an instanced draw. (Two different meshes' fragments at exactly the
+// same depth would resolve to the one drawn first; coplanar surfaces of different meshes are rare and
+// fight in any renderer.)
+bool FrameExecutor::orderFree(const RenderStateBlock& states) {
+    using Id = fx::RenderStateId;
+    constexpr double kMin = 4, kMax = 5;  // D3DBLENDOP
+    if (states.get(Id::StencilEnable) != 0.0 || states.get(Id::AlphaToCoverageEnable) != 0.0) return false;
+    if (states.get(Id::AlphaBlendEnable) != 0.0) {
+        const auto minMax = [](double op) { return op == kMin || op == kMax; };
+        return minMax(states.get(Id::BlendOp)) &&
+               (states.get(Id::SeparateAlphaBlendEnable) == 0.0 || minMax(states.get(Id::BlendOpAlpha)));
+    }
+    const double func = states.get(Id::ZFunc);  // D3DCMP: LESS 2, LESSEQUAL 4, GREATER 5, GREATEREQUAL 7
+    return states.get(Id::ZEnable) != 0.0 && states.get(Id::ZWriteEnable) != 0.0 &&
+           (func == 2 || func == 4 || func == 5 || func == 7);
+}
+
+void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
+                                const PassUse& use, BatchedPass& batched, const RenderStateBlock& states) {
+    // The objects' records: packed again only for objects that changed or whose values derive from
+    // something that did (the port's or a light's matrices, the other inputs of per-object compile
+    // arguments: their values, since stamps change whenever passes with other ports bind them).
+    mContext.clear();
+    mBinder.objectContext(mPort, use.used, mContext);
+    for (size_t a = 0; a < pass.arguments.size(); ++a) {
+        if (a >= use.argumentPerObject.size() || !use.argumentPerObject[a]) continue;
+        for (size_t p : pass.arguments[a].value.inputs()) {
+            if (p >= mPerObject.size() || mPerObject[p]) continue;
+            const std::vector<float>& data = mResources.values[p].data;
+            const size_t at = mContext.size();
+            mContext.resize(at + data.size() + 1);
+            mContext[at] = static_cast<uint32_t>(p);
+            if (!data.empty())
+                std::memcpy(mContext.data() + at + 1, data.data(), data.size() * sizeof(float));
+        }
+    }
+    batched.beginRecords(mContext, mScene.objects.size());
+    const auto bindObject = [&](const SceneObject& object) {
+        {
+            PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+            mBinder.bind(mPort, &object, mOptions.time, mResources.values, mResources.pinned,
+                         SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
+        }
+        evaluateArguments(passIndex, use, true);
+    };
+    for (uint32_t index : mVisible) {
+        const SceneObject& object = mScene.objects[index];
+        if (batched.recordCurrent(index, object)) continue;
+        bindObject(object);
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        batched.packRecord(index, object, mResources.values, mArguments);
+    }
+    // The values as drawing object by object leaves them (the last object's), for whatever reads them next.
+    if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()]);
+
+    // The instance lists: one run per mesh (in order of first appearance, each keeping its objects' order),
+    // or per run of consecutive objects with one mesh where the order matters.
+    const bool anyOrder = orderFree(states);
+    mBatches.clear();
+    mBatchOf.clear();
+    mObjectBatch.resize(mVisible.size());
+    for (size_t i = 0; i < mVisible.size(); ++i) {
+        const Mesh* mesh = mScene.objects[mVisible[i]].mesh.get();
+        size_t batch = mBatches.size();
+        if (anyOrder) {
+            auto [it, inserted] = mBatchOf.emplace(mesh, mBatches.size());
+            batch = it->second;
+            if (inserted) mBatches.push_back(Batch{mVisible[i], 0, 0});
+        } else if (!mBatches.empty() && mScene.objects[mBatches.back().first].mesh.get() == mesh) {
+            batch = mBatches.size() - 1;
+        } else {
+            mBatches.push_back(Batch{mVisible[i], 0, 0});
+        }
+        ++mBatches[batch].count;
+        mObjectBatch[i] = batch;
+    }
+    const size_t alignment = batched.listAlignment();
+    size_t size = 0;
+    for (Batch& batch : mBatches) {
+        batch.offset = size;
+        size = (size + batch.count + alignment - 1) / alignment * alignment;
+        batch.count = 0;  // counted again while filling
+    }
+    mInstanceList.assign(size, 0);
+    for (size_t i = 0; i < mVisible.size(); ++i) {
+        Batch& batch = mBatches[mObjectBatch[i]];
+        mInstanceList[batch.offset + batch.count++] = mVisible[i];
+    }
+    {
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+    }
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    batched.setInstances(mInstanceList);
+    batched.bindRecords();
+    for (const Batch& batch : mBatches) {
+        const SceneObject& object = mScene.objects[batch.first];
+        GpuMesh& mesh = mResources.gpuMesh(object.mesh);
+        batched.bindInstances(batch.offset, batch.count);
+        const bool drawUnculled = mCullClosedOnly && !object.mesh->closed;
+        if (drawUnculled) gl::Disable(GL_CULL_FACE);
+        mesh.draw(batched.pass().vertex.inputs, static_cast<int>(batch.count));
+        if (drawUnculled) gl::Enable(GL_CULL_FACE);
+        countDraw(mesh, static_cast<int>(batch.count));
     }
 }
 

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <set>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,6 +79,14 @@ private:
     void evaluateArguments(size_t passIndex, const PassUse& use, bool perObject);
     void drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use,
                   const SceneObject* object, GpuMesh& mesh);
+    void countDraw(const GpuMesh& mesh, int objects);
+    // FrameOptions::batching: the pass's instanced variant for its current per-object parameters, or null
+    // where it is drawn object by object.
+    BatchedPass* batchedPass(const fx::CompiledPass& pass, size_t passIndex, const PassUse& use);
+    static bool orderFree(const RenderStateBlock& states);
+    // Draws mVisible as one instanced draw per mesh (BatchedPass.h).
+    void drawBatched(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use,
+                     BatchedPass& batched, const RenderStateBlock& states);
 
     EffectResources& mResources;
     const Scene& mScene;
@@ -96,6 +105,18 @@ private:
     std::array<int, 4> mPassLeftOut{};                     // per LeftOut reason
     std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
     std::vector<uint32_t> mVisible;
+    // Batching's per-pass scratch (drawBatched).
+    struct Batch {
+        uint32_t first;  // its first object
+        size_t offset;   // in mInstanceList
+        size_t count;
+    };
+    std::vector<bool> mPerObject;  // per parameter: bound per object in the current pass
+    std::vector<uint32_t> mContext;
+    std::vector<Batch> mBatches;
+    std::unordered_map<const Mesh*, size_t> mBatchOf;
+    std::vector<size_t> mObjectBatch;
+    std::vector<uint32_t> mInstanceList;
     std::vector<fx::Value> mArguments;
     RenderTargets mTargets;
     RenderPortView mPort;

@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cctype>
 #include <cmath>
 #include <optional>
@@ -286,6 +287,29 @@ bool SemanticBinder::isPerObject(size_t parameter) const {
     return std::any_of(mBindings.begin(), mBindings.end(), [parameter](const Binding& b) {
         return b.parameter == parameter && dependsOnObject(b.kind);
     });
+}
+
+void SemanticBinder::objectContext(const RenderPortView& port, const std::vector<bool>& used,
+                                   std::vector<uint32_t>& out) const {
+    const auto append = [&out](const glm::mat4& m) {
+        const size_t at = out.size();
+        out.resize(at + 16);
+        std::memcpy(out.data() + at, &m[0][0], 16 * sizeof(float));
+    };
+    append(port.view);
+    append(port.projection);
+    out.push_back(static_cast<uint32_t>(port.lightIndex));
+    out.push_back(static_cast<uint32_t>(port.cascade));
+    for (const Binding& binding : mBindings) {
+        if (!dependsOnObject(binding.kind) || binding.parameter >= used.size() || !used[binding.parameter])
+            continue;
+        append(binding.lightView);
+        append(binding.lightProjection);
+        for (const LightView& cascade : binding.lightCascades) {
+            append(cascade.view);
+            append(cascade.projection);
+        }
+    }
 }
 
 bool SemanticBinder::projectionSource(size_t parameter, const Light*& light) const {

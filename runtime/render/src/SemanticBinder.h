@@ -85,6 +85,11 @@ public:
 
     // True if the parameter's bound value depends on the drawn object.
     bool isPerObject(size_t parameter) const;
+    // What the per-object values of the parameters `used` selects derive from besides the object (the
+    // port's matrices and cascade, the matrices of annotated lights), appended to `out` as bit patterns:
+    // equal contexts and equal objects bind equal values (what batching's per-object records are kept by).
+    void objectContext(const RenderPortView& port, const std::vector<bool>& used,
+                       std::vector<uint32_t>& out) const;
     // For a View/Projection-derived matrix (View, Projection, WorldView, ViewProjection,
     // WorldViewProjection and their variants): the light it is annotated with, or null for the render
     // port's matrices. False for any other parameter. What culling checks a pass projects with.

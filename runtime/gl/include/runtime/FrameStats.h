@@ -16,6 +16,7 @@ struct PassStats {
                              // last frame), "scene" (its LeaveOutWhen holds), or several joined by "+" in
                              // that order; a pass with only some operations left out ran
     int draws = 0;
+    int objects = 0;         // objects drawn: one per draw, or several per instanced draw (batching)
     int depthOnlyDraws = 0;  // of `draws`, drawn without colour targets or pixel shader (depthOnlyPasses)
     int culled = 0;          // objects a Draw=Geometry left out
     uint64_t triangles = 0;
@@ -49,6 +50,7 @@ struct FrameCpuTime {
 struct FrameStats {
     int passesRun = 0;  // Pass= commands executed (passes that only clear included)
     int draws = 0;
+    int objects = 0;  // objects drawn (PassStats::objects)
     uint64_t triangles = 0;
     int clears = 0;
     int culled = 0;         // objects left out of Draw=Geometry commands

@@ -50,8 +50,8 @@ public:
 
     // Binds the VAO, enables exactly the locations in `inputs` (feeding a mesh attribute or a default),
     // disables the locations enabled by the previous draw, and draws the triangle list. The program must
-    // be current.
-    void draw(const std::vector<fx::VertexInput>& inputs);
+    // be current. `instances` > 1 draws that many instances in one call (gl_InstanceID 0..instances-1).
+    void draw(const std::vector<fx::VertexInput>& inputs, int instances = 1);
 
     bool hasAttribute(VertexSemantic semantic) const;
     size_t indexCount() const { return mIndexCount; }
@@ -64,6 +64,7 @@ private:
         int components = 0;
     };
     void release();
+    void drawElements(int instances) const;
     void uploadStream(Stream stream, const float* data, int components);
 
     GLuint mVao = 0;

@@ -46,6 +46,12 @@ struct FrameOptions {
     // target alone and without a pixel shader where it has no side effect (PassStats::depthOnlyDraws). The
     // image is the same either way; off draws them as D3D9 states them (for comparison).
     bool depthOnlyPasses = true;
+    // With leaveOut: draw the objects of a Draw=Geometry that share a mesh as one instanced draw, their
+    // per-object values (World and what derives from it, the object's colour and id, compile arguments
+    // computed from them) read from a buffer by instance (fx/InstancedPass.h). Passes the instanced
+    // variant cannot express are drawn object by object. The image is the same either way; off draws
+    // every object alone (for comparison).
+    bool batching = true;
     // Render targets the caller reads after the frame (readTarget): outputs like the frame's colour, so
     // leave-out keeps the passes that write them.
     std::vector<std::string> outputTargets;
