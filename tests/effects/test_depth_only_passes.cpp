@@ -1,6 +1,7 @@
 // Depth-only passes: a pass that writes no colour (ColorWriteEnable = 0 on every bound target) draws into
 // its depth-stencil target alone with the vertex stage alone (FrameExecutor::depthOnly), and the frame is
-// byte for byte the frame drawn the D3D9 way (colour target bound, pixel shader run, writes masked).
+// byte for byte the frame drawn the D3D9 way (colour target bound, pixel shader run, writes masked). And
+// depth clears, which clear stencil too when no pass tests it, but not when one does.
 #include "EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -107,8 +108,38 @@ technique t < string Script = "Pass=Depth; Pass=Show;"; > {
     EXPECT_TRUE(runtime::GpuProgram::pixelShaderHasSideEffects(depth.fragment)) << depth.fragment.glsl;
     EXPECT_FALSE(runtime::GpuProgram::pixelShaderHasSideEffects(show.fragment)) << show.fragment.glsl;
     // Leave-out off: nothing reads MapDepth, so leave-out would drop the pass as dead.
-    const Frame frame = renderWith(*renderer, *runtime::makeBuiltinScene("boxes"), "t", true, false);
+    const Frame frame = renderWith(*renderer, *runtime::makeBuiltinScene("boxes"), "t", true);
     EXPECT_EQ(frame.depthOnlyDraws, 0);
+}
+
+// A depth clear may take the stencil bits with it (one whole-texel clear instead of a masked one) only when
+// no pass tests stencil. Here one does: the first pass marks the boxes' pixels in stencil, the second
+// clears depth alone and draws white where the mark is. Were the mark cleared with the depth, the frame
+// would be the clear colour alone.
+TEST(DepthClears, KeepTheStencilThatALaterPassTests) {
+    std::unique_ptr<runtime::EffectRenderer> renderer = loadEffect(R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(float4(p.xyz, 1), WorldViewProjection); }
+float4 QuadVS(float4 p : POSITION) : POSITION { return p; }
+float4 White() : COLOR { return 1; }
+technique t < string Script = "Pass=Mark; Pass=Show;"; > {
+    pass Mark < string Script = "Clear=Color; Clear=Depth; Clear=Stencil; Draw=Geometry;"; >
+    { ColorWriteEnable = 0; StencilEnable = true; StencilFunc = Always; StencilPass = Replace; StencilRef = 1;
+      VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 White(); }
+    pass Show < string Script = "Clear=Depth; Draw=Buffer;"; >
+    { ZEnable = false; StencilEnable = true; StencilFunc = Equal; StencilRef = 1;
+      VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 White(); }
+}
+)",
+                                                                   false, "stencil.fx");
+    ASSERT_TRUE(renderer);
+    const Frame frame = renderWith(*renderer, *runtime::makeBuiltinScene("boxes"), "t", true);
+    int white = 0;
+    for (int y = 0; y < frame.image.height; ++y)
+        for (int x = 0; x < frame.image.width; ++x) white += luminance(frame.image.pixel(x, y)) > 0.99f;
+    const int pixels = frame.image.width * frame.image.height;
+    EXPECT_GT(white, pixels / 10) << "the stencil mark did not survive the depth clear";
+    EXPECT_LT(white, pixels * 9 / 10) << "the stencil test passed everywhere";
 }
 
 }  // namespace

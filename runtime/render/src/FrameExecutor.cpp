@@ -23,7 +23,8 @@ FrameExecutor::FrameExecutor(EffectResources& resources, const Scene& scene, con
       mTechnique(techniqueIndex),
       mBinder(binder),
       mUses(uses),
-      mPlan(plan) {
+      mPlan(plan),
+      mStencilUnread(!techniqueTestsStencil(resources.effect().techniques[techniqueIndex])) {
     mTargets.colors[0].texture = &resources.frameColor;
     mTargets.depth.texture = &resources.frameDepth;
     setRenderPort("", -1, {});
@@ -112,7 +113,10 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
             break;
         case fx::ScriptCommand::ClearWhat::Depth:
             request.depth = mClearDepth;
-            if (mTargets.depth.texture) texels += texelCount(*mTargets.depth.texture);
+            if (mTargets.depth.texture) {
+                texels += texelCount(*mTargets.depth.texture);
+                if (mStencilUnread && mTargets.depth.texture->glFormat().hasStencil) request.stencil = 0;
+            }
             break;
         case fx::ScriptCommand::ClearWhat::Stencil:
             if (mTargets.depth.texture && mTargets.depth.texture->glFormat().hasStencil) {

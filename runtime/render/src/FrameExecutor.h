@@ -125,6 +125,7 @@ private:
     std::array<float, 4> mClearColor{0.0f, 0.0f, 0.0f, 0.0f};  // D3D's Clear defaults
     float mClearDepth = 1.0f;
     int mClearStencil = 0;
+    const bool mStencilUnread;  // no pass tests stencil: depth clears take it along (techniqueTestsStencil)
     bool mFailed = false;
     bool mCullClosedOnly = false;  // the pass's CullClosedOnly applies (applyStates)
     std::set<size_t> mWarnedPasses;

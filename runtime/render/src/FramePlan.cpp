@@ -1,5 +1,7 @@
 #include <private/runtime/FramePlan.h>
 
+#include <fx/CompiledEffect.h>
+
 #include <algorithm>
 #include <cstring>
 #include <set>
@@ -24,6 +26,16 @@ uint64_t hashBytes(uint64_t seed, const void* data, size_t size) {
     uint64_t tail = size;
     for (; i < size; ++i) tail = (tail << 8) | bytes[i];
     return hashCombine(seed, tail);
+}
+
+bool techniqueTestsStencil(const fx::CompiledTechnique& technique) {
+    for (const fx::CompiledPass& pass : technique.passes)
+        for (const fx::RenderStateSetting& setting : pass.states)
+            if ((setting.id == fx::RenderStateId::StencilEnable ||
+                 setting.id == fx::RenderStateId::TwoSidedStencilMode) &&
+                setting.constant.value_or(1.0) != 0.0)
+                return true;
+    return false;
 }
 
 void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {

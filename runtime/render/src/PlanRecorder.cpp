@@ -38,7 +38,8 @@ PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const
       mDiagnostics(diagnostics),
       mValues(resources.values),
       mStamps(resources.stamps),
-      mPadTexels(kReceiverPadTexels) {
+      mPadTexels(kReceiverPadTexels),
+      mStencilTested(techniqueTestsStencil(resources.effect().techniques[technique])) {
     mColors.fill(kNone);
     mColors[0] = kFrameColor;
     setRenderPort("", -1, {});
@@ -80,6 +81,10 @@ void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
             op.kind = PlannedOp::Kind::ClearDepth;
             if (mDepth != kNone) op.writes = {mDepth};
             value = hashBytes(0, &mClearDepth, sizeof(mClearDepth));
+            if (mStencilTested) {  // the stencil bits survive the clear for a later pass's test
+                op.wholeTarget = false;
+                op.reads = op.writes;
+            }
             break;
         case fx::ScriptCommand::ClearWhat::Stencil:
             op.kind = PlannedOp::Kind::ClearStencil;

@@ -70,7 +70,8 @@ private:
     RenderPortView mPort;
     size_t mPass = 0;
     bool mSceneSaysSkip = false;
-    float mPadTexels = 0.0f;  // receiverPadTexels of the current pass
+    float mPadTexels = 0.0f;    // receiverPadTexels of the current pass
+    const bool mStencilTested;  // a pass tests stencil: a depth clear keeps it (techniqueTestsStencil)
     std::vector<float> mClearColor;
     float mClearDepth = 1.0f;
     int mClearStencil = 0;

@@ -19,6 +19,10 @@
 #include <map>
 #include <vector>
 
+namespace fx {
+struct CompiledTechnique;
+}
+
 namespace runtime {
 
 // A resource an operation writes or reads: a texture parameter index, or the frame's own targets.
@@ -77,6 +81,12 @@ private:
     std::map<int, std::vector<ReceiverRegion>> mRegions;  // per written target, its draws' regions
     std::vector<int> mRedrawn;                            // targets whose operations ran
 };
+
+// Whether a pass of the technique enables the stencil test (a state a preshader computes counts as yes).
+// When none does, no draw reads a stencil value, so a depth clear clears the stencil bits with it (one
+// whole-texel clear instead of a masked one: a quarter of llvmpipe's rasterizer time on a 2048² D24S8
+// map) and overwrites its whole target; when one does, a depth clear keeps stencil, a partial write.
+bool techniqueTestsStencil(const fx::CompiledTechnique& technique);
 
 // 64-bit hash combining (splitmix64 finalizer over the running value and each word).
 uint64_t hashCombine(uint64_t seed, uint64_t value);
