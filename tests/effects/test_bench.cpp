@@ -3,6 +3,7 @@
 // figures must be sane (the thesis effect's shadows are mostly right). Also the per-pass timings of
 // FrameOptions::timePasses that the bench and the viewer read.
 #include "CliRunner.h"
+#include "ScratchDirectory.h"
 #include <runtime/BuiltinScenes.h>
 #include "EffectHarness.h"
 
@@ -89,8 +90,8 @@ int runTool(const std::string& arguments, std::string& output) {
 }
 
 TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench";
-    std::filesystem::remove_all(out);
+    const shadowfx::test::ScratchDirectory scratch("bench");
+    const std::filesystem::path out = scratch / "out";
     std::string output;
     const int code = runTool(
         "bench --effects effects/thesis_fxcomposer.fx --scenes boxes --map-sizes 256,512 "
@@ -145,7 +146,8 @@ TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
 
 TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
     std::string output;
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_bad";
+    const shadowfx::test::ScratchDirectory scratch("bench_bad");
+    const std::filesystem::path out = scratch / "out";
     EXPECT_EQ(
         runTool("bench --effects effects/thesis_fxcomposer.fx --scenes no-such-scene --out " + out.string(),
                 output),
@@ -161,8 +163,8 @@ TEST(Bench, UnknownSceneIsAnErrorThatNamesIt) {
 // --scenes takes scene files as render and check do, mixed with built-in names: each is measured under its
 // own name (the file's "name"), and a broken file stops the bench with its located error and no results.
 TEST(Bench, ScenesTakeSceneFilesMixedWithBuiltinNames) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_files";
-    std::filesystem::remove_all(out);
+    const shadowfx::test::ScratchDirectory scratch("bench_files");
+    const std::filesystem::path out = scratch / "out";
     std::filesystem::create_directories(out);
     const std::filesystem::path scene = out / "pillar.json";
     std::ofstream(scene) << R"({
@@ -226,8 +228,8 @@ TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
 #ifndef SHADOWFX_OSG_PEER_BUILT
     GTEST_SKIP() << "shadowfx-osg-peer is not built (OpenSceneGraph not found, or a sanitized build)";
 #else
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_peer";
-    std::filesystem::remove_all(out);
+    const shadowfx::test::ScratchDirectory scratch("bench_peer");
+    const std::filesystem::path out = scratch / "out";
     std::filesystem::create_directories(out);
     const std::filesystem::path scene = out / "wall.json";
     // A wall and a post with the light behind them: long shadows towards the camera, edges in both axes
@@ -286,8 +288,8 @@ TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
 // focused map spends its texels on what the camera sees, so its texels cover fewer pixels than the uniform
 // map's with the same size and filter.
 TEST(Bench, LightAngleAndTheEffectsOwnFitForTheFootprint) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_angle";
-    std::filesystem::remove_all(out);
+    const shadowfx::test::ScratchDirectory scratch("bench_angle");
+    const std::filesystem::path out = scratch / "out";
     std::string output;
     ASSERT_EQ(
         runTool("bench --effects effects/pcf.fx,effects/focused.fx --techniques bilinear --scenes boxes "
@@ -316,7 +318,8 @@ TEST(Bench, LightAngleAndTheEffectsOwnFitForTheFootprint) {
 // --camera-orbit turns the camera before every frame: a view-dependent map (LiSPSM's) is redrawn each frame
 // instead of reused, while the errors are still scored at the scene's own camera (the same as still).
 TEST(Bench, CameraOrbitRedrawsViewDependentMaps) {
-    const std::filesystem::path out = std::filesystem::temp_directory_path() / "shadowfx_test_bench_orbit";
+    const shadowfx::test::ScratchDirectory scratch("bench_orbit");
+    const std::filesystem::path out = scratch / "out";
     auto runWith = [&](const std::string& orbit) {
         std::filesystem::remove_all(out);
         std::string output;

@@ -2,6 +2,7 @@
 // broken on purpose (bias removed, golden moved, golden missing, nothing drawn) written to a temporary
 // folder at test time. Each run uses one backend (EGL) to stay fast; the CTest `check` tests run both.
 #include "CliRunner.h"
+#include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -46,9 +47,8 @@ std::string row(const std::string& output, const std::string& technique, const s
 class EffectCopy {
 public:
     EffectCopy(const std::string& name, const std::string& from = "", const std::string& to = "",
-               const std::string& effect = "thesis_fxcomposer") {
-        mDir = fs::temp_directory_path() / ("shadowfx_check_" + name);
-        fs::remove_all(mDir);
+               const std::string& effect = "thesis_fxcomposer")
+        : mScratch("check_" + name), mDir(mScratch.path()) {
         fs::create_directories(mDir / "golden");
         fs::copy(kSource + "/effects/include", mDir / "include", fs::copy_options::recursive);
         fs::copy(kSource + "/effects/golden/" + effect, mDir / "golden" / effect,
@@ -62,7 +62,6 @@ public:
         mEffect = mDir / (effect + ".fx");
         std::ofstream(mEffect) << text;
     }
-    ~EffectCopy() { fs::remove_all(mDir); }
     std::string effect() const { return mEffect.string(); }
     fs::path dir() const { return mDir; }
     fs::path golden(const std::string& technique, const std::string& scene) const {
@@ -70,6 +69,7 @@ public:
     }
 
 private:
+    shadowfx::test::ScratchDirectory mScratch;
     fs::path mDir;
     fs::path mEffect;
 };
@@ -100,11 +100,11 @@ long occurrences(const std::string& text, const std::string& what) {
 }
 
 TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
-    const fs::path junit = fs::temp_directory_path() / "shadowfx_check_shipped.xml";
-    fs::remove(junit);
+    const shadowfx::test::ScratchDirectory scratch("check_shipped");
+    const fs::path junit = scratch / "check.xml";
     const RunResult result =
         run("check effects/thesis_fxcomposer.fx effects/plain_lit.fx --backend egl --junit " +
-            junit.string() + " --out " + (fs::temp_directory_path() / "shadowfx_check_out").string());
+            junit.string() + " --out " + (scratch / "out").string());
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(row(result.output, "main", "dual-l", "misclassified").find("PASS"), std::string::npos)
         << result.output;
@@ -223,9 +223,8 @@ TEST(CheckCommand, ARendererWithoutGoldensIsNotSupportedUnlessRequired) {
 // its render row (compile, link, GL errors, NaN, blank frame), goldens are NOT_SUPPORTED, and a technique
 // that draws a blank frame still FAILs.
 TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
-    const fs::path dir = fs::temp_directory_path() / "shadowfx_check_foreign";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const shadowfx::test::ScratchDirectory scratch("check_foreign");
+    const fs::path dir = scratch.path();
     fs::copy(kSource + "/tests/data/fxcomposer", dir, fs::copy_options::recursive);
     const fs::path junit = dir / "out.xml";
     RunResult result =
@@ -248,7 +247,6 @@ TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
     result = run("check " + (dir / "material_phong.fx").string() + " --backend egl");
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_EQ(row(result.output, "Simple", "boxes", "render").rfind("FAIL", 0), 0u) << result.output;
-    fs::remove_all(dir);
 }
 
 TEST(CheckCommand, ABlankFrameFails) {

@@ -1,6 +1,7 @@
 // The shadowfx command as users script against it: exit codes, `path:line:column: error:` diagnostics for
 // each class of bad input, no output image after a failure, and the --help of every subcommand.
 #include "CliRunner.h"
+#include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -25,8 +26,8 @@ class BadInputs : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {
     const BadInput& bad = GetParam();
-    const std::string out =
-        std::filesystem::temp_directory_path() / ("shadowfx_bad_" + std::string(bad.file) + ".png");
+    const shadowfx::test::ScratchDirectory scratch("bad");
+    const std::string out = scratch / (std::string(bad.file) + ".png");
     std::ofstream(out) << "stale";  // a stale image from an earlier run must not survive a failure
     const RunResult result = run("render tests/data/bad/" + std::string(bad.file) + " --out " + out);
     EXPECT_FALSE(result.crashed) << result.output;
@@ -57,8 +58,8 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(Cli, RenderWritesAPng) {
-    const std::string out = std::filesystem::temp_directory_path() / "shadowfx_cli_render.png";
-    std::filesystem::remove(out);
+    const shadowfx::test::ScratchDirectory scratch("cli_render");
+    const std::string out = scratch / "render.png";
     const RunResult result = run("render effects/thesis_fxcomposer.fx --out " + out +
                                  " --width 160 --height 120 --set PCF=true --stats");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -80,8 +81,8 @@ TEST(Cli, CompilePrintsGlslForEveryPass) {
 // glslang crashes on the pixel shader: every command that compiles reports it where the function is and
 // exits 1, never with the signal; render writes no image.
 TEST(Cli, ACrashOfTheHlslCompilerIsALocatedErrorForCompileCheckAndRender) {
-    const std::string out = std::filesystem::temp_directory_path() / "shadowfx_cli_glslang_crash.png";
-    std::filesystem::remove(out);
+    const shadowfx::test::ScratchDirectory scratch("cli_glslang_crash");
+    const std::string out = scratch / "render.png";
     for (const std::string& command : std::vector<std::string>{"compile", "check", "render --out " + out}) {
         const RunResult result = run(command + " tests/data/glslang_crashes/normalize_postdecrement.fx");
         EXPECT_FALSE(result.crashed) << command << "\n" << result.output;

@@ -8,6 +8,7 @@
 // asserts the bound. A bound alone would pass a blank image where shadows are small, so the test also
 // demands that the effect shadows most pixels the truth shadows and lights most pixels the truth lights.
 #include "CliRunner.h"
+#include "ScratchDirectory.h"
 #include "EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -172,10 +173,10 @@ INSTANTIATE_TEST_SUITE_P(
         return name;
     });
 
-// Weiskopf & Ertl 2003, §6 and Fig. 5: with a heavily undersampled map, dual shadow maps with back-face culling beat
-// midpoint maps without culling (self-shadowing at light-space silhouettes) and a constant bias. Measured
-// on dual-l at 256^2, 320x240 (llvmpipe): dual + culling 0.07 %, midpoint 0.53 %, constant bias at the
-// effect's default 0.003: 2.45 % misclassified.
+// Weiskopf & Ertl 2003, §6 and Fig. 5: with a heavily undersampled map, dual shadow maps with back-face
+// culling beat midpoint maps without culling (self-shadowing at light-space silhouettes) and a constant bias.
+// Measured on dual-l at 256^2, 320x240 (llvmpipe): dual + culling 0.07 %, midpoint 0.53 %, constant bias at
+// the effect's default 0.003: 2.45 % misclassified.
 TEST(DepthLayerRanking, DualLayersWithCullingBeatMidpointAndConstantBiasOnDualL) {
     const SceneTruth& t = truthFor("dual-l");
     auto misclassified = [&](const std::string& effect, const std::string& technique) {
@@ -205,7 +206,8 @@ int runTool(const std::string& arguments, std::string& output) {
 // How the README's constant-bias sweep is run: --set reaches the effect (a tiny bias gives acne, the
 // default does not), is recorded in results.json, and a parameter no effect has is a usage error.
 TEST(BiasSweep, BenchSetSetsTheParameterInEveryEffectThatHasIt) {
-    const std::string out = (std::filesystem::temp_directory_path() / "shadowfx_test_bias_sweep").string();
+    const shadowfx::test::ScratchDirectory scratch("bias_sweep");
+    const std::string out = (scratch / "out").string();
     const std::string common =
         "bench --effects effects/bias.fx,effects/id_buffer.fx --techniques constant "
         "--scenes dual-l --map-sizes 256 --frames 1 --warmup 0 --width 96 --height 72 "

@@ -1,6 +1,7 @@
 // `shadowfx stress` as users script against it: the case list, usage errors, declared limitations reported
 // as xfail without failing the run, an undeclared one failing it with an error image, and the JSON.
 #include "CliRunner.h"
+#include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -16,13 +17,6 @@ namespace {
 using shadowfx::test::kSource;
 using shadowfx::test::run;
 using shadowfx::test::RunResult;
-
-std::filesystem::path freshDirectory(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 
 nlohmann::json readJson(const std::filesystem::path& path) {
     std::ifstream in(path);
@@ -48,7 +42,8 @@ TEST(StressCommand, ListsItsCasesAndRejectsUnknownOnes) {
 }
 
 TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {
-    const std::filesystem::path out = freshDirectory("shadowfx_stress_declared");
+    const shadowfx::test::ScratchDirectory scratch("stress_declared");
+    const std::filesystem::path out = scratch.path();
     const RunResult result =
         run("stress effects/thesis_fxcomposer.fx --techniques main "
             "--cases ordinary,grazing,far-from-origin,empty --out " +
@@ -73,7 +68,8 @@ TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {
 // Each run reports the texel footprint of the effect's own light fit: with the light behind the viewer,
 // LiSPSM's p95 footprint is a fraction of the runtime's uniform map's (the case's own footprint).
 TEST(StressCommand, ReportsTheFootprintOfTheEffectsOwnFit) {
-    const std::filesystem::path out = freshDirectory("shadowfx_stress_footprint");
+    const shadowfx::test::ScratchDirectory scratch("stress_footprint");
+    const std::filesystem::path out = scratch.path();
     const RunResult result =
         run("stress effects/lispsm.fx --cases light-behind-viewer --out " + out.string());
     EXPECT_EQ(result.exitCode, 0) << result.output;
@@ -90,7 +86,8 @@ TEST(StressCommand, ReportsTheFootprintOfTheEffectsOwnFit) {
 
 TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
     // The thesis effect without its StressExpectedFailures annotations.
-    const std::filesystem::path dir = freshDirectory("shadowfx_stress_undeclared");
+    const shadowfx::test::ScratchDirectory scratch("stress_undeclared");
+    const std::filesystem::path dir = scratch.path();
     std::ifstream in(kSource + "/effects/thesis_fxcomposer.fx");
     std::stringstream text;
     text << in.rdbuf();

@@ -3,6 +3,7 @@
 // (DdsWriter.h) with a colour per face, level and slice, and a full-screen pass samples them at known
 // coordinates; what lands in the frame is compared with what was written.
 #include "DdsWriter.h"
+#include "ScratchDirectory.h"
 #include "effects/EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
@@ -15,14 +16,8 @@ namespace {
 
 class DdsTextures : public ::testing::Test {
 protected:
-    std::filesystem::path mDir =
-        std::filesystem::temp_directory_path() /
-        ("shadowfx_dds_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    void SetUp() override {
-        std::filesystem::remove_all(mDir);
-        std::filesystem::create_directories(mDir);
-    }
-    void TearDown() override { std::filesystem::remove_all(mDir); }
+    ScratchDirectory mScratch{"dds"};
+    std::filesystem::path mDir = mScratch.path();
 
     // An 8x1 frame: pixel i returns `lookup` with uv = ((i + 0.5) / 8, 0.5).
     std::unique_ptr<runtime::EffectRenderer> effect(const std::string& declarations,

@@ -2,6 +2,7 @@
 // whole pipeline (parse, compile, EffectRenderer on llvmpipe): procedural noise (`string Procedural =
 // "noise"`), file textures (PNG, HDR) by ResourceName relative to the effect and the error for a missing
 // one, mipmapped render targets regenerated before they are sampled, and multiple render targets.
+#include "ScratchDirectory.h"
 #include "effects/EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -111,15 +112,9 @@ TEST(ProceduralNoise, UnknownGeneratorIsAnErrorAtTheAnnotation) {
 class FileTextures : public ::testing::Test {
 protected:
     // One folder per test: CTest runs the tests of this file as parallel processes.
-    std::filesystem::path mDir =
-        std::filesystem::temp_directory_path() /
-        ("shadowfx_file_textures_" +
-         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    void SetUp() override {
-        std::filesystem::remove_all(mDir);
-        std::filesystem::create_directories(mDir / "images");
-    }
-    void TearDown() override { std::filesystem::remove_all(mDir); }
+    shadowfx::test::ScratchDirectory mScratch{"file_textures"};
+    std::filesystem::path mDir = mScratch.path();
+    void SetUp() override { std::filesystem::create_directories(mDir / "images"); }
     std::string writeEffect(const std::string& declarations) {
         const std::filesystem::path path = mDir / "textured.fx";
         std::ofstream(path) << fullScreenEffect(
