@@ -267,5 +267,47 @@ struct Outputs { float4 a : COLOR0; float4 b : COLOR1; float4 c : COLOR2; float4
     EXPECT_EQ((*d)[7 * 4 + 2], 5.0f);
 }
 
+// A target larger than the frame, drawn with the frame's (smaller) depth buffer: GL would draw and clear only
+// the overlap. Without the depth test the runtime binds the target alone and the whole of it is drawn, as on
+// D3D9's drivers; with the depth test only the overlap is, and a warning names the pass.
+TEST(RenderTargetSizes, ATargetLargerThanTheDepthBufferIsDrawnWholeWhenDepthIsNotTested) {
+    const std::string declarations =
+        R"(texture Big : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "R32F"; >;
+float4 Background = {0.5, 0.5, 0.5, 0.5};
+)";
+    const std::string script = "RenderColorTarget0=Big; ClearSetColor=Background; Clear=Color; Draw=Buffer;";
+    for (const bool depthTest : {false, true}) {
+        std::string source =
+            fullScreenEffect(declarations, "float4 PS(float2 uv : TEXCOORD0) : COLOR { return 2; }", script);
+        if (depthTest) source.replace(source.find("ZEnable = false"), 15, "ZEnable = true");
+        auto renderer = loadEffect(source, false);
+        ASSERT_TRUE(renderer);
+        fx::DiagnosticList diagnostics;
+        runtime::FrameOptions options;
+        options.width = 16;
+        options.height = 16;
+        options.outputTargets = {"Big"};
+        ASSERT_TRUE(renderer->render(boxes(), options, diagnostics)) << diagnostics.str();
+        int width = 0, height = 0, channels = 0;
+        auto big = renderer->readTarget("Big", &width, &height, &channels);
+        ASSERT_TRUE(big);
+        ASSERT_EQ(width * height, 64 * 48);
+        int drawn = 0, cleared = 0;
+        for (int i = 0; i < width * height; ++i) {
+            drawn += (*big)[size_t(i * channels)] == 2.0f;
+            cleared += (*big)[size_t(i * channels)] == 0.5f;
+        }
+        const bool warned = diagnostics.str().find("smaller 16x16 depth-stencil target") != std::string::npos;
+        if (depthTest) {
+            EXPECT_EQ(drawn, 16 * 16) << "the overlap with the 16x16 depth buffer";
+            EXPECT_EQ(cleared, 64 * 48 - 16 * 16) << "the colour clear covers the whole target";
+            EXPECT_TRUE(warned) << diagnostics.str();
+        } else {
+            EXPECT_EQ(drawn, 64 * 48);
+            EXPECT_FALSE(warned) << diagnostics.str();
+        }
+    }
+}
+
 }  // namespace
 }  // namespace shadowfx::test

@@ -96,7 +96,7 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
                                      ? PlannedOp::Kind::ClearDepth
                                      : PlannedOp::Kind::ClearStencil;
     if (leftOut(nextOp(kind, mCurrentPass))) return;
-    if (!bindTargets()) return;
+    if (!bindTargets(what != fx::ScriptCommand::ClearWhat::Color)) return;
     const bool tileOnly = mPort.cascade >= 0;  // D3D clears the viewport: a cascade port its tile
     if (tileOnly) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
@@ -153,8 +153,10 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     const PlannedOp* op =
         nextOp(buffer ? PlannedOp::Kind::DrawBuffer : PlannedOp::Kind::DrawGeometry, passIndex);
     if (leftOut(op)) return;
-    if (!bindTargets()) return;
     const RenderStateBlock& states = applyStates(pass, passIndex, op);
+    const bool usesDepth =
+        states.get(fx::RenderStateId::ZEnable) != 0.0 || states.get(fx::RenderStateId::StencilEnable) != 0.0;
+    if (!bindTargets(usesDepth, &pass)) return;
     GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
     if (vertexOnly) program = vertexOnly;
     bindSamplers(pass.vertex);
@@ -229,7 +231,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
 
 void FrameExecutor::drawScene(const fx::ScriptCommand&) {
     if (leftOut(nextOp(PlannedOp::Kind::DrawGeometry, mCurrentPass))) return;
-    if (!bindTargets()) return;
+    if (!bindTargets(true)) return;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     applyRenderStates(RenderStateBlock::defaults());
     for (const SceneObject& object : mScene.objects) {
@@ -315,11 +317,41 @@ const GpuTexture* FrameExecutor::target(const std::string& name) {
     return &texture->second;
 }
 
-bool FrameExecutor::bindTargets() {
+bool FrameExecutor::depthTargetIsSmaller() const {
+    const RenderTargetAttachment& depth = mTargets.depth;
+    if (!depth.texture) return false;
+    const int width = std::max(1, depth.texture->width() >> depth.level);
+    const int height = std::max(1, depth.texture->height() >> depth.level);
+    return width < mTargets.width() || height < mTargets.height();
+}
+
+// D3D9 wants a depth-stencil surface at least as large as the colour targets; GL draws and clears only
+// where all attachments overlap. A clear or draw that uses neither depth nor stencil is bound without a
+// smaller surface, so it covers its colour targets as D3D9's drivers did (a float shadow map drawn with
+// ZEnable = false and the frame's depth buffer); a draw that tests them covers the overlap, with a warning.
+bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
     if (mFailed) return false;
     std::string error;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-    if (!mResources.framebuffers.bind(mTargets, error)) {
+    RenderTargets targets = mTargets;
+    if (depthTargetIsSmaller()) {
+        if (!usesDepth) {
+            targets.depth = {};
+        } else if (pass && mWarnedDepthSizes.insert(pass).second) {
+            const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
+            const RenderTargetAttachment& depth = mTargets.depth;
+            mDiagnostics.report(fx::Diagnostic{
+                fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass->loc,
+                "pass '" + pass->name + "' tests depth or stencil in a " +
+                    size(mTargets.width(), mTargets.height()) + " colour target with a smaller " +
+                    size(std::max(1, depth.texture->width() >> depth.level),
+                         std::max(1, depth.texture->height() >> depth.level)) +
+                    " depth-stencil target: only their overlap is drawn (D3D9 requires the depth-stencil "
+                    "surface to be at least as large; set RenderDepthStencilTarget to one of the colour "
+                    "target's size)"});
+        }
+    }
+    if (!mResources.framebuffers.bind(targets, error)) {
         fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
         return false;
     }
@@ -367,7 +399,8 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
     static constexpr fx::RenderStateId kColorWrites[] = {
         fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
         fx::RenderStateId::ColorWriteEnable2, fx::RenderStateId::ColorWriteEnable3};
-    if (!mTargets.depth.texture) return nullptr;
+    // A smaller depth target alone would set a smaller viewport than the colour-bound draw's.
+    if (!mTargets.depth.texture || depthTargetIsSmaller()) return nullptr;
     for (size_t slot = 0; slot < mTargets.colors.size(); ++slot)
         if (mTargets.colors[slot].texture && states.get(kColorWrites[slot]) != 0.0) return nullptr;
     if (GpuProgram::pixelShaderHasSideEffects(pass.fragment)) return nullptr;
@@ -386,7 +419,7 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
     depthOnlyTargets.depth = mTargets.depth;
     std::string error;
     if (!mResources.framebuffers.bind(depthOnlyTargets, error)) {
-        mResources.framebuffers.bind(mTargets, error);  // bound by bindTargets() a moment ago
+        mResources.framebuffers.bind(mTargets, error);  // as bindTargets() bound them a moment ago
         return nullptr;
     }
     return found->second.get();

@@ -62,7 +62,10 @@ private:
     // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
     void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const;
     const GpuTexture* target(const std::string& name);
-    bool bindTargets();
+    // Binds mTargets; without the depth-stencil target when it is smaller than the colour targets and
+    // the operation does not use it (`usesDepth`), with a warning for `pass` when it does.
+    bool bindTargets(bool usesDepth, const fx::CompiledPass* pass = nullptr);
+    bool depthTargetIsSmaller() const;
     bool isColorTarget(const GpuTexture* texture) const;
     // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
     // evaluates them.
@@ -129,6 +132,7 @@ private:
     bool mFailed = false;
     bool mCullClosedOnly = false;  // the pass's CullClosedOnly applies (applyStates)
     std::set<size_t> mWarnedPasses;
+    std::set<const fx::CompiledPass*> mWarnedDepthSizes;  // passes warned of a smaller depth target
 };
 
 }  // namespace runtime
