@@ -48,7 +48,9 @@ GpuProgram* BatchedPass::program(bool depthOnly) {
 
 // [SECTION] Per-object records
 
-void BatchedPass::beginRecords(const std::vector<uint32_t>& context, size_t objectCount) {
+void BatchedPass::beginRecords(const std::vector<uint32_t>& context, size_t objectCount,
+                               uint64_t sceneStamp) {
+    mSceneStamp = sceneStamp;
     if (context != mContext) {
         mContext = context;
         ++mContextGeneration;
@@ -60,16 +62,19 @@ void BatchedPass::beginRecords(const std::vector<uint32_t>& context, size_t obje
     }
 }
 
-bool BatchedPass::recordCurrent(size_t index, const SceneObject& object) const {
-    const RecordKey& key = mKeys[index];
-    return key.valid && key.context == mContextGeneration && key.world == object.world &&
-           key.color == object.color && key.id == object.id;
+bool BatchedPass::recordCurrent(size_t index, const SceneObject& object) {
+    RecordKey& key = mKeys[index];
+    if (!key.valid || key.context != mContextGeneration) return false;
+    if (key.sceneStamp == mSceneStamp) return true;  // no object changed since it was last compared
+    if (key.world != object.world || key.color != object.color || key.id != object.id) return false;
+    key.sceneStamp = mSceneStamp;
+    return true;
 }
 
 void BatchedPass::packRecord(size_t index, const SceneObject& object,
                              const std::vector<fx::Value>& parameters,
                              const std::vector<fx::Value>& arguments) {
-    mKeys[index] = RecordKey{true, mContextGeneration, object.world, object.color, object.id};
+    mKeys[index] = RecordKey{true, mContextGeneration, mSceneStamp, object.world, object.color, object.id};
     const size_t size = mVariant.recordSize;
     if (size == 0) return;
     mScratch.assign(size, 0);

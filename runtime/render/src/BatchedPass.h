@@ -44,10 +44,11 @@ public:
     // [SECTION] Per-object records
     // Starts a pass's records: `context` is what the objects' values derive from besides the objects
     // (SemanticBinder::objectContext, the stamps of the per-pass inputs of per-object compile arguments);
-    // when it differs from the last pass's, every record is stale.
-    void beginRecords(const std::vector<uint32_t>& context, size_t objectCount);
+    // when it differs from the last pass's, every record is stale. `sceneStamp` is leave-out's stamp of the
+    // scene's objects (EffectResources::SceneCache): while it stays, no object changed.
+    void beginRecords(const std::vector<uint32_t>& context, size_t objectCount, uint64_t sceneStamp);
     // True if object `index`'s record was packed in this context from an object equal to `object`.
-    bool recordCurrent(size_t index, const SceneObject& object) const;
+    bool recordCurrent(size_t index, const SceneObject& object);
     // Packs object `index`'s record from the bound values and the evaluated compile arguments.
     void packRecord(size_t index, const SceneObject& object, const std::vector<fx::Value>& parameters,
                     const std::vector<fx::Value>& arguments);
@@ -68,6 +69,7 @@ private:
     struct RecordKey {
         bool valid = false;
         uint64_t context = 0;
+        uint64_t sceneStamp = 0;  // of the scene in which the object was last seen equal
         glm::mat4 world{1.0f};
         glm::vec3 color{0.0f};
         uint32_t id = 0;
@@ -81,6 +83,7 @@ private:
 
     std::vector<uint32_t> mContext;
     uint64_t mContextGeneration = 1;
+    uint64_t mSceneStamp = 0;
     std::vector<RecordKey> mKeys;  // per scene object
     std::vector<uint8_t> mRecords;
     std::vector<uint8_t> mScratch;

@@ -565,7 +565,7 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
                 std::memcpy(mContext.data() + at + 1, data.data(), data.size() * sizeof(float));
         }
     }
-    batched.beginRecords(mContext, mScene.objects.size());
+    batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp);
     const auto bindObject = [&](const SceneObject& object) {
         {
             PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
