@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace fx {
@@ -65,6 +66,31 @@ std::vector<HlslMessage> parseGlslangLog(const std::string& log) {
     return out;
 }
 
+namespace {
+
+// Whether the module declares a function-local variable of an image, sampler or sampled-image type.
+bool hasOpaqueTemporaries(const std::vector<uint32_t>& spirv) {
+    constexpr uint32_t kOpTypeImage = 25, kOpTypeSampler = 26, kOpTypeSampledImage = 27, kOpTypePointer = 32,
+                       kOpVariable = 59, kStorageFunction = 7;
+    std::set<uint32_t> opaque, opaquePointers;
+    for (size_t at = 5; at < spirv.size();) {
+        const uint32_t opcode = spirv[at] & 0xffff, words = spirv[at] >> 16;
+        if (words == 0 || at + words > spirv.size()) break;
+        if ((opcode == kOpTypeImage || opcode == kOpTypeSampler || opcode == kOpTypeSampledImage) &&
+            words > 1)
+            opaque.insert(spirv[at + 1]);
+        else if (opcode == kOpTypePointer && words > 3 && spirv[at + 2] == kStorageFunction &&
+                 opaque.count(spirv[at + 3]))
+            opaquePointers.insert(spirv[at + 1]);
+        else if (opcode == kOpVariable && words > 3 && opaquePointers.count(spirv[at + 1]))
+            return true;
+        at += words;
+    }
+    return false;
+}
+
+}  // namespace
+
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
                                      const std::string& entryPoint) {
     initGlslang();
@@ -92,6 +118,16 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;
             glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &spvOptions);
+            // A texture or sampler object handed to a user function is copied into a temporary by
+            // glslang's HLSL front end, which SPIR-V cannot express until spirv-opt legalizes it (inlines
+            // and forwards the copy); without that, SPIRV-Cross pairs the temporary ("param"), not the
+            // effect's texture, and the pair is bound to nothing. Only such units are legalized: the
+            // optimizer rewrites the whole unit, every other unit stays as glslang wrote it.
+            if (hasOpaqueTemporaries(result.spirv)) {
+                result.spirv.clear();
+                spvOptions.disableOptimizer = false;
+                glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &spvOptions);
+            }
             result.success = !result.spirv.empty();
         } else {
             result.log += program.getInfoLog();

@@ -322,6 +322,31 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
     EXPECT_NE(pairs[0]->unit, pairs[1]->unit);
 }
 
+// A texture and sampler handed down through user functions (two calls deep) still pair the effect's
+// texture and sampler: glslang copies such arguments into temporaries, which the unit is legalized to
+// forward (the pair was "param"/"param" and bound to no texture before).
+TEST(D3d10Syntax, PairsPassedThroughFunctionsNameTheEffectsTextureAndSampler) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(R"(
+Texture2D Albedo;
+SamplerState Point { Filter = MIN_MAG_MIP_POINT; };
+float Inner(Texture2D t, SamplerState s, float2 uv) { return t.Sample(s, uv).x; }
+float Outer(Texture2D t, SamplerState s, float2 uv) { return Inner(t, s, uv) + Inner(t, s, uv * 2); }
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS(float4 p : SV_Position) : SV_Target { return Outer(Albedo, Point, p.xy).xxxx; }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    ASSERT_EQ(pass.fragment.samplers.size(), 1u) << pass.fragment.glsl;
+    const SamplerBinding& pair = pass.fragment.samplers[0];
+    EXPECT_EQ(pair.pairTexture, "Albedo") << pass.fragment.glsl;
+    EXPECT_EQ(pair.pairSampler, "Point");
+    ASSERT_TRUE(pair.textureParameter);
+    EXPECT_EQ(compiled->parameters[*pair.textureParameter].name, "Albedo");
+}
+
 TEST(D3d10Syntax, ConstantBufferMembersAreParametersWithSemanticsAndAnnotations) {
     DiagnosticList diagnostics;
     std::shared_ptr<Effect> effect =
