@@ -5,7 +5,9 @@
 // rendered from light0 into it with BlendOp=min (no depth buffer: the blend keeps the nearest occluder),
 // then the scene is rendered with the shadow test. `PCF` switches to bilinear percentage-closer filtering
 // and `JITTER` adds the listing's noise-texture jitter. Technique `hardware` renders a depth target instead
-// and samples it with depth comparison, as NVIDIA's D3D9 hardware shadow maps did.
+// and samples it with depth comparison, as NVIDIA's D3D9 hardware shadow maps did. Technique `main11` is
+// `main` in Direct3D 11's form (docs/d3d10.md): the runtime's matrices in a cbuffer, the maps Texture2Ds
+// read with `.Sample` through SamplerStates, the pass states from state objects; it renders the same image.
 //
 // Depth conventions: the light's projection maps the scene into clip depth [0, 1]; the shadow map stores
 // that depth times ZMaxValue (the listing's fixed-range scaling, with ShadowRange = 1 for this range).
@@ -92,20 +94,24 @@ float2 SHADOW_SIZE
 > = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
 
 // [SECTION] Matrices and lights bound by the runtime
-float4x4 WorldITMatrix : WorldInverseTranspose <string UIWidget = "None";>;
-float4x4 WorldViewProjectionMatrix : WorldViewProjection <string UIWidget = "None";>;
-float4x4 WorldMatrix : World <string UIWidget = "None";>;
-float4x4 ViewIMatrix : ViewInverse <string UIWidget = "None";>;
+// A cbuffer for the D3D11 form; its members are parameters like any other, for the D3D9 techniques too.
+cbuffer RuntimeMatrices
+{
+    float4x4 WorldITMatrix : WorldInverseTranspose <string UIWidget = "None";>;
+    float4x4 WorldViewProjectionMatrix : WorldViewProjection <string UIWidget = "None";>;
+    float4x4 WorldMatrix : World <string UIWidget = "None";>;
+    float4x4 ViewIMatrix : ViewInverse <string UIWidget = "None";>;
 
-float4x4 LightViewMatrix : View
-<
-    string frustum = "light0";
->;
+    float4x4 LightViewMatrix : View
+    <
+        string frustum = "light0";
+    >;
 
-float4x4 LightProjectionMatrix : Projection
-<
-    string frustum = "light0";
->;
+    float4x4 LightProjectionMatrix : Projection
+    <
+        string frustum = "light0";
+    >;
+};
 
 float3 LightColor : LightColor
 <
@@ -124,7 +130,7 @@ float3 SurfaceColor : Diffuse
 > = {0.8, 0.8, 0.8};
 
 // [SECTION] Textures and samplers
-texture ShadowMap : RENDERCOLORTARGET
+Texture2D ShadowMap : RENDERCOLORTARGET
 <
     float2 Dimensions = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
     string Format = "R32F";
@@ -158,7 +164,7 @@ sampler ShadowDepthSampler = sampler_state
     MipFilter = None;
 };
 
-texture NoiseTexture : noise;
+Texture2D NoiseTexture : noise;
 
 sampler NoiseSampler = sampler_state
 {
@@ -169,6 +175,40 @@ sampler NoiseSampler = sampler_state
     MINFILTER = LINEAR;
     MAGFILTER = LINEAR;
 };
+
+// The same samplers for the D3D11 form, which samples a texture through a separate sampler object.
+// D3D11 has no "no mip filter": a point mip filter with MaxLOD 0 reads level 0, as MipFilter = NONE does.
+SamplerState ShadowMapPoint
+{
+    Filter = MIN_MAG_MIP_POINT;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MaxLOD = 0;
+};
+
+SamplerState NoiseWrap
+{
+    Filter = MIN_MAG_LINEAR_MIP_POINT;
+    AddressU = WRAP;
+    AddressV = WRAP;
+    MaxLOD = 0;
+};
+
+// `main`'s pass states as D3D10 state objects: the shadow map keeps the nearest occluder by blending with
+// min, without a depth buffer; the scene pass culls back faces (D3D10's default) and tests LESS_EQUAL.
+RasterizerState NoCulling { CullMode = NONE; };
+BlendState KeepNearest
+{
+    BlendEnable[0] = TRUE;
+    SrcBlend = ONE;
+    DestBlend = ONE;
+    BlendOp = MIN;
+    SrcBlendAlpha = ONE;
+    DestBlendAlpha = ONE;
+    BlendOpAlpha = MIN;
+};
+DepthStencilState NoDepth { DepthEnable = FALSE; DepthWriteMask = ZERO; };
+DepthStencilState DepthLessEqual { DepthEnable = TRUE; DepthWriteMask = ALL; DepthFunc = LESS_EQUAL; };
 
 // [SECTION] Shaders
 struct VertexFormat
@@ -227,20 +267,35 @@ VertexOutput RenderSceneVS(VertexFormat IN, uniform float4x4 ShadowViewProjectio
     return OUT;
 }
 
-float GetShadow(float4 LP)
+// The listing's lookup: the shadow-map position and the depth compared there, both jittered by `noise`
+// under JITTER.
+float3 ShadowLookup(float4 LP, float4 noise)
 {
     float2 nuv = ShadowMapUV(LP);
-    float4 noise = tex2D(NoiseSampler, LP.xy * 64);
     if (JITTER)
         nuv += JITTER_AMOUNT * (0.5 - noise.xy) / SHADOW_SIZE;
 
     float depth = (LP.z / LP.w / ShadowRange - Bias) * ZMaxValue;
     if (JITTER)
         depth -= (noise.z - 0.5) * 0.001 * ShadowRangeMultiplier;
+    return float3(nuv, depth);
+}
 
+float GetShadow(float4 LP)
+{
+    float3 lookup = ShadowLookup(LP, tex2D(NoiseSampler, LP.xy * 64));
     if (PCF)
-        return ShadowTestBilinear(ShadowMapSampler, nuv, depth, SHADOW_SIZE);
-    return ShadowTest(ShadowMapSampler, nuv, depth);
+        return ShadowTestBilinear(ShadowMapSampler, lookup.xy, lookup.z, SHADOW_SIZE);
+    return ShadowTest(ShadowMapSampler, lookup.xy, lookup.z);
+}
+
+// GetShadow in the D3D11 form: Texture2D.Sample through SamplerStates.
+float GetShadow11(float4 LP)
+{
+    float3 lookup = ShadowLookup(LP, NoiseTexture.Sample(NoiseWrap, LP.xy * 64));
+    if (PCF)
+        return ShadowTestBilinear(ShadowMap, ShadowMapPoint, lookup.xy, lookup.z, SHADOW_SIZE);
+    return ShadowTest(ShadowMap, ShadowMapPoint, lookup.xy, lookup.z);
 }
 
 float4 Shade(VertexOutput IN, float shadowed)
@@ -264,6 +319,15 @@ float4 RenderScenePS(VertexOutput IN) : COLOR
     return float4(GetShadow(IN.LP).xxx, 1);
 #else
     return Shade(IN, GetShadow(IN.LP));
+#endif
+}
+
+float4 RenderScene11PS(VertexOutput IN) : SV_Target
+{
+#ifdef SHADOWFX_VISIBILITY
+    return float4(GetShadow11(IN.LP).xxx, 1);
+#else
+    return Shade(IN, GetShadow11(IN.LP));
 #endif
 }
 
@@ -352,6 +416,68 @@ technique main
 
         VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));
         PixelShader = compile ps_3_0 RenderScenePS();
+    }
+}
+
+technique11 main11
+<
+    // `main` in the D3D11 form renders the same image: the same expectations and known limitations.
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.095;
+    int ExpectMapSize = 1024;
+    string Script = "Pass=ClearShadowMap;"
+                    "Pass=RenderShadowMap;"
+                    "Pass=RenderScene;";
+    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
+                                    "light-behind-viewer: uniform map, perspective aliasing";
+>
+{
+    pass ClearShadowMap
+    <
+        string Script = "RenderColorTarget0=ShadowMap;"
+                        "RenderDepthStencilTarget=ShadDepthTarget;"
+                        "RenderPort=light0;"
+                        "ClearSetColor=ShadowClearColor;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Color;"
+                        "Clear=Depth;";
+    >
+    {
+    }
+
+    pass RenderShadowMap
+    <
+        string Script = "RenderColorTarget0=ShadowMap;"
+                        "RenderDepthStencilTarget=ShadDepthTarget;"
+                        "RenderPort=light0;"
+                        "Draw=geometry;";
+    >
+    {
+        SetVertexShader(CompileShader(vs_5_0, RenderShadowMapVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix)))));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_5_0, RenderShadowMapPS()));
+        SetRasterizerState(NoCulling);
+        SetBlendState(KeepNearest, float4(0, 0, 0, 0), 0xFFFFFFFF);
+        SetDepthStencilState(NoDepth, 0);
+    }
+
+    pass RenderScene
+    <
+        string Script = "RenderColorTarget0=;"
+                        "RenderDepthStencilTarget=;"
+                        "RenderPort=;"
+                        "ClearSetColor=ClearColor;"
+                        "ClearSetDepth=ClearDepth;"
+                        "Clear=Color;"
+                        "Clear=Depth;"
+                        "Draw=Geometry;";
+    >
+    {
+        SetVertexShader(CompileShader(vs_5_0, RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix))));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_5_0, RenderScene11PS()));
+        SetBlendState(NULL, float4(0, 0, 0, 0), 0xFFFFFFFF);
+        SetDepthStencilState(DepthLessEqual, 0);  // and D3D10's default rasterizer state: back faces culled
     }
 }
 

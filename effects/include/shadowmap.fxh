@@ -33,4 +33,23 @@ float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 map
     return lerp(lerp(s00, s10, weight.x), lerp(s01, s11, weight.x), weight.y);
 }
 
+// The same two tests in Direct3D 10's form: the map a Texture2D read through a (point) SamplerState.
+float ShadowTest(Texture2D shadowMap, SamplerState pointSampler, float2 uv, float depth)
+{
+    return shadowMap.Sample(pointSampler, uv).x >= depth ? 1.0 : 0.0;
+}
+
+float ShadowTestBilinear(Texture2D shadowMap, SamplerState pointSampler, float2 uv, float depth, float2 mapSize)
+{
+    float2 texel = uv * mapSize - 0.5;
+    float2 weight = frac(texel);
+    float2 base = (floor(texel) + 0.5) / mapSize;
+    float2 step = 1.0 / mapSize;
+    float s00 = ShadowTest(shadowMap, pointSampler, base, depth);
+    float s10 = ShadowTest(shadowMap, pointSampler, base + float2(step.x, 0), depth);
+    float s01 = ShadowTest(shadowMap, pointSampler, base + float2(0, step.y), depth);
+    float s11 = ShadowTest(shadowMap, pointSampler, base + step, depth);
+    return lerp(lerp(s00, s10, weight.x), lerp(s01, s11, weight.x), weight.y);
+}
+
 #endif

@@ -120,9 +120,9 @@ TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
     EXPECT_EQ(occurrences(xml, "<testsuite "), 2);
     EXPECT_EQ(occurrences(xml, "</testsuite>"), 2);
     const long testcases = occurrences(xml, "<testcase ");
-    // thesis: 2 techniques x 2 scenes x (render, misclassified, golden); plain_lit: 2 scenes x (render,
-    // golden)
-    EXPECT_EQ(testcases, 2 * 2 * 3 + 2 * 2);
+    // thesis: 3 techniques (main, its D3D11 twin main11, hardware) x 2 scenes x (render, misclassified,
+    // golden); plain_lit: 2 scenes x (render, golden)
+    EXPECT_EQ(testcases, 3 * 2 * 3 + 2 * 2);
     EXPECT_EQ(attribute(xml, "testsuites", "tests"), testcases);
     EXPECT_EQ(attribute(xml, "testsuites", "failures"), 0);
     EXPECT_EQ(occurrences(xml, "<failure "), 0);
@@ -336,7 +336,7 @@ TEST(CheckCommand, AMisspeltExpectationIsAnError) {
 TEST(CheckCommand, ListsTechniquesAndRejectsBadUsage) {
     const RunResult list = run("check --list-techniques effects/thesis_fxcomposer.fx");
     EXPECT_EQ(list.exitCode, 0);
-    EXPECT_EQ(list.output, "main\nhardware\n");
+    EXPECT_EQ(list.output, "main\nmain11\nhardware\n");
     EXPECT_EQ(run("check").exitCode, 2);
     EXPECT_EQ(run("check effects/plain_lit.fx --backend vulkan").exitCode, 2);
     EXPECT_EQ(run("check effects/plain_lit.fx --width 0").exitCode, 2);
