@@ -259,6 +259,24 @@ TEST_F(GlStates, DepthBiasOffsetsDepthInDepthUnits) {
     EXPECT_NEAR(sloped - plain, 0.075f, 0.01f);
 }
 
+// D3D10's DepthBiasClamp bounds the whole offset (in depth units) through glPolygonOffsetClamp, which
+// llvmpipe offers (ARB_polygon_offset_clamp): the 0.01 bias above stops at 0.002.
+TEST_F(GlStates, DepthBiasClampBoundsTheOffset) {
+    ASSERT_TRUE(gl::PolygonOffsetClamp) << "this GL has no glPolygonOffsetClamp";
+    GpuMesh quad = testsupport::clipSpaceQuad(0.5f);
+    GpuTexture depth = GpuTexture::create2D(fx::TextureFormat::D32F, kSize, kSize);
+    bindTargets(nullptr, &depth);
+    FramebufferCache::clear({{}, 1.0f, 0});
+    applyRenderStates(withStates({{RenderStateId::DepthBias, 0.01}, {RenderStateId::DepthBiasClamp, 0.002}}));
+    drawColor(quad, 1, 1, 1, 1);
+    EXPECT_NEAR(readFloatTexture(depth).sample(5, 5, 0), 0.502f, 2e-4);
+    // 0 is D3D10's "no clamp": the full bias.
+    FramebufferCache::clear({{}, 1.0f, 0});
+    applyRenderStates(withStates({{RenderStateId::DepthBias, 0.01}, {RenderStateId::DepthBiasClamp, 0.0}}));
+    drawColor(quad, 1, 1, 1, 1);
+    EXPECT_NEAR(readFloatTexture(depth).sample(5, 5, 0), 0.51f, 2e-4);
+}
+
 TEST_F(GlStates, StencilReplaceThenEqualMasksDrawing) {
     GpuTexture color = GpuTexture::create2D(fx::TextureFormat::RGBA8, kSize, kSize);
     GpuTexture depth = GpuTexture::create2D(fx::TextureFormat::D24S8, kSize, kSize);

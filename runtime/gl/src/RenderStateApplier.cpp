@@ -165,15 +165,20 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
     }
     float depthBias = float(value(RenderStateId::DepthBias));
     // D3D10's integer DepthBias is already in GL's units (multiples of the smallest resolvable difference).
-    // Its DepthBiasClamp needs GL 4.6's glPolygonOffsetClamp: recorded, not applied on this GL 4.5 runtime.
+    // Its DepthBiasClamp bounds the total offset in depth units, as glPolygonOffsetClamp's `clamp` does
+    // (GL 4.6 / ARB_polygon_offset_clamp; without it the bias stays unbounded, and the effect runtime warns).
     float depthBiasUnits = float(value(RenderStateId::DepthBiasUnits));
+    float depthBiasClamp = float(value(RenderStateId::DepthBiasClamp));
     float slopeScale = float(value(RenderStateId::SlopeScaleDepthBias));
     bool offset = depthBias != 0.0f || slopeScale != 0.0f || depthBiasUnits != 0.0f;
     enable(GL_POLYGON_OFFSET_FILL, offset);
     enable(GL_POLYGON_OFFSET_LINE, offset);
     enable(GL_POLYGON_OFFSET_POINT, offset);
-    gl::PolygonOffset(slopeScale,
-                      depthBias * std::ldexp(1.0f, depthBits > 0 ? depthBits : 24) + depthBiasUnits);
+    const float units = depthBias * std::ldexp(1.0f, depthBits > 0 ? depthBits : 24) + depthBiasUnits;
+    if (gl::PolygonOffsetClamp)
+        gl::PolygonOffsetClamp(slopeScale, units, depthBiasClamp);
+    else
+        gl::PolygonOffset(slopeScale, units);
     enable(GL_SCISSOR_TEST, flag(RenderStateId::ScissorTestEnable));
     enable(GL_MULTISAMPLE, flag(RenderStateId::MultiSampleAntialias));
     enable(GL_DEPTH_CLAMP, !flag(RenderStateId::DepthClipEnable));

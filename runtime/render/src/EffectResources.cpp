@@ -196,6 +196,14 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         for (const fx::CompiledPass& pass : technique.passes) {
             std::unique_ptr<GpuProgram> program = GpuProgram::create(pass, diagnostics);
             ok = ok && program != nullptr;
+            // D3D10's DepthBiasClamp needs glPolygonOffsetClamp; without it the bias is applied unbounded.
+            for (const fx::RenderStateSetting& setting : pass.states)
+                if (setting.id == fx::RenderStateId::DepthBiasClamp && !gl::PolygonOffsetClamp &&
+                    !(setting.constant && *setting.constant == 0.0))
+                    diagnostics.report(fx::Diagnostic{
+                        fx::DiagId::UnsupportedFeature, fx::Severity::Warning, setting.loc,
+                        "DepthBiasClamp is not applied: this OpenGL has no glPolygonOffsetClamp (GL 4.6 or "
+                        "ARB_polygon_offset_clamp); the depth bias is unbounded"});
             passes.push_back(std::move(program));
             preshaders.emplace_back(pass);
         }

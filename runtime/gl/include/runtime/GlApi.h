@@ -26,4 +26,9 @@ bool load(GetProcAddressFn getProcAddress, std::string& missing);
 // True once load() has succeeded at least once in this process.
 bool isLoaded();
 
+// Beyond core 4.5, loaded by load() where the context offers it, else nullptr: glPolygonOffsetClamp (GL 4.6,
+// ARB_polygon_offset_clamp, or EXT_polygon_offset_clamp's glPolygonOffsetClampEXT), which D3D10's
+// DepthBiasClamp needs.
+extern PFNGLPOLYGONOFFSETCLAMPPROC PolygonOffsetClamp;
+
 }  // namespace gl

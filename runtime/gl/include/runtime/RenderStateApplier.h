@@ -17,6 +17,8 @@
 //   Measured on llvmpipe (Mesa 22.3): D32F gets exactly DepthBias; D16/D24 get 2 x DepthBias, because GL
 //   leaves r implementation-defined and llvmpipe uses 2 / 2^bits for UNORM depth. Pinned by
 //   test_gl_states (DepthBiasOffsetsDepthInDepthUnits); prefer D32F shadow maps where the bias matters.
+//   D3D10's DepthBiasClamp -> glPolygonOffsetClamp's `clamp` where the context has it
+//   (gl::PolygonOffsetClamp).
 // - AlphaTestEnable/AlphaFunc/AlphaRef: the core profile has no alpha test. They are recorded in the
 //   block and left to shaders (the effect compiler or the pass's own clip()); applyRenderStates ignores
 //   them.
