@@ -21,7 +21,9 @@ uint64_t fnv1a(uint64_t h, std::string_view text) {
 
 uint64_t CompileCache::hash(std::string_view hlsl, ShaderStage stage, std::string_view options) {
     uint64_t h = fnv1a(kFnvOffset, hlsl);
-    h = fnv1a(h, stage == ShaderStage::Vertex ? "vertex" : "fragment");
+    h = fnv1a(h, stage == ShaderStage::Vertex     ? "vertex"
+                 : stage == ShaderStage::Fragment ? "fragment"
+                                                  : "geometry");
     return fnv1a(h, options);
 }
 

@@ -4,6 +4,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -158,7 +159,7 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     StageJob job;
     job.hlsl = r.str();
     uint32_t stage = r.u32();
-    job.stage = stage == 0 ? ShaderStage::Vertex : ShaderStage::Fragment;
+    job.stage = static_cast<ShaderStage>(std::min<uint32_t>(stage, 2));
     job.entryPoint = r.str();
     job.cross.uniformBlockName = r.str();
     job.cross.uniformBlockBinding = r.i32();
@@ -168,7 +169,7 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     }
     job.cross.depthSamplers.resize(r.count(4));
     for (std::string& s : job.cross.depthSamplers) s = r.str();
-    if (!r.done() || stage > 1) return std::nullopt;
+    if (!r.done() || stage > 2) return std::nullopt;
     return job;
 }
 

@@ -117,11 +117,19 @@ private:
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
     std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
+    // The current pass's geometry shader outputs (by varying location), which its pixel shader reads.
+    std::optional<std::map<int, TypeDesc>> mGeometryOutputs;
     bool mFailed = false;
     std::vector<PendingStage> mPending;
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;
 };
+
+StageProgram& stageProgram(CompiledPass& pass, ShaderStage stage) {
+    return stage == ShaderStage::Vertex     ? pass.vertex
+           : stage == ShaderStage::Fragment ? pass.fragment
+                                            : pass.geometry;
+}
 
 // [SECTION] Initial values
 
@@ -500,7 +508,7 @@ void Compiler::assignPairUnits() {
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes) {
             std::map<std::string, int> units;
-            for (StageProgram* stage : {&pass.vertex, &pass.fragment})
+            for (StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
                 for (SamplerBinding& s : stage->samplers)
                     if (!s.pairTexture.empty())
                         s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
@@ -701,11 +709,13 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 }
 
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
-    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, mDiagnostics);
+    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, mDiagnostics,
+                              mGeometryOutputs ? &*mGeometryOutputs : nullptr);
     if (!lowered) {
         mFailed = true;
         return false;
     }
+    if (stage == ShaderStage::Geometry) mGeometryOutputs = lowered->varyingOutputs;
     // The stage's new arguments, as programs over the parameters they read.
     for (size_t a = pass.arguments.size(); a < mPassArguments.size(); ++a) {
         const LoweredArgument& argument = mPassArguments[a];
@@ -713,7 +723,7 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
             CompileArgument{compilePreshader(argument.expr, slotResolver(), &argument.type), argument.type,
                             argument.memberName});
     }
-    StageProgram& program = stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
+    StageProgram& program = stageProgram(pass, stage);
     std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
     uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
     // A unit already waiting for a worker is looked up once that job is done (finishPendingStages).
@@ -729,9 +739,12 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
         job.hlsl = lowered->hlsl;
         job.stage = stage;
         job.entryPoint = kWrapperEntryPoint;
-        bool vertex = stage == ShaderStage::Vertex;
-        job.cross.uniformBlockName = vertex ? "fx_VsGlobals" : "fx_PsGlobals";
-        job.cross.uniformBlockBinding = vertex ? 0 : 1;
+        job.cross.uniformBlockName = stage == ShaderStage::Vertex     ? "fx_VsGlobals"
+                                     : stage == ShaderStage::Fragment ? "fx_PsGlobals"
+                                                                      : "fx_GsGlobals";
+        job.cross.uniformBlockBinding = stage == ShaderStage::Vertex     ? 0
+                                        : stage == ShaderStage::Fragment ? 1
+                                                                         : 2;
         job.cross.samplerUnits = mSamplerUnits;
         job.cross.depthSamplers = lowered->depthSamplers;
         mJobs.push_back(std::move(job));
@@ -800,7 +813,7 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
         }
-        StageProgram& program = lowered.stage == ShaderStage::Vertex ? pass.vertex : pass.fragment;
+        StageProgram& program = stageProgram(pass, lowered.stage);
         program = outcome.program;
         program.stage = lowered.stage;
         program.entryPoint = lowered.entryPoint;
@@ -849,14 +862,22 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
 CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
     mPassArguments.clear();
+    mGeometryOutputs.reset();
     pass.name = p.name;
     pass.loc = p.loc;
+    // The geometry shader first, wherever the pass sets it: the pixel shader's inputs take its outputs'
+    // types.
+    for (const StateAssignment& s : p.states)
+        if (findRenderState(s.name) == RenderStateId::GeometryShader)
+            if (const Expr* compile = shaderExpr(s))
+                compileStage(*compile, ShaderStage::Geometry, pass, slot);
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
         if (!id) {
             error(DiagId::UnknownState, s.loc, {s.name});
             continue;
         }
+        if (*id == RenderStateId::GeometryShader) continue;
         if (*id == RenderStateId::VertexShader || *id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile,

@@ -624,8 +624,22 @@ private:
 
     void parseDeclaration(bool inBuffer = false) {
         size_t first = mPos;
-        if (check("[")) {  // [numthreads(...)], [maxvertexcount(...)] before a function
-            while (check("[")) skipBalanced("[", "]");
+        mMaxVertexCount = 0;
+        while (check("[")) {  // [numthreads(...)], [maxvertexcount(...)] before a function
+            if (peek(1).is("maxvertexcount") && peek(2).is("(")) {
+                const Token& attribute = peek(1);
+                mPos += 3;
+                Expr count = parseExpr();
+                double number = 0;
+                if (!constantValue(count, number) || number < 1 || number > 1024 ||
+                    number != static_cast<double>(static_cast<int>(number)))
+                    fail(DiagId::UnexpectedToken, attribute.loc, {"a vertex count 1..1024", count.str()});
+                mMaxVertexCount = static_cast<int>(number);
+                expect(")");
+                expect("]");
+                continue;
+            }
+            skipBalanced("[", "]");
         }
         Storage storage;
         for (;;) {
@@ -726,6 +740,7 @@ private:
         decl.name = name.text;
         decl.loc = name.loc;
         decl.returnType = returnType;
+        decl.maxVertexCount = mMaxVertexCount;
         expect("(");
         if (check("void") && peek(1).is(")")) advance();
         while (!check(")")) {
@@ -746,14 +761,23 @@ private:
                 else if (t.is("linear") || t.is("centroid") || t.is("nointerpolation") ||
                          t.is("noperspective") || t.is("sample"))
                     param.interpolation = t.text;
-                else if (t.is("const") || t.is("point") || t.is("line") || t.is("triangle") ||
-                         t.is("lineadj") || t.is("triangleadj") || t.is("precise") || t.is("row_major") ||
-                         t.is("column_major")) {
+                else if (t.is("point") || t.is("line") || t.is("triangle") || t.is("lineadj") ||
+                         t.is("triangleadj"))
+                    param.primitive = t.text;
+                else if (t.is("const") || t.is("precise") || t.is("row_major") || t.is("column_major")) {
                 } else
                     modifier = false;
                 if (modifier) advance();
             }
-            param.type = parseType();
+            if (peek().is("PointStream") || peek().is("LineStream") || peek().is("TriangleStream")) {
+                // A geometry shader's output stream: the parameter's type is its element.
+                param.stream = advance().text;
+                expect("<");
+                param.type = parseType();
+                expectCloseAngle();
+            } else {
+                param.type = parseType();
+            }
             const Token& paramName = expectIdentifier("a parameter name");
             param.name = paramName.text;
             param.loc = paramName.loc;
@@ -1018,7 +1042,7 @@ private:
         normalizeNull(value);
         const bool none = (value.kind == Expr::Kind::Identifier && value.text == "NULL") ||
                           (value.kind == Expr::Kind::Number && value.number == 0);
-        if (what == "VertexShader" || what == "PixelShader") {
+        if (what == "VertexShader" || what == "PixelShader" || what == "GeometryShader") {
             StateAssignment state;
             state.name = what;
             state.loc = name.loc;
@@ -1254,7 +1278,8 @@ private:
         if (v.kind == Expr::Kind::Identifier) {
             if (v.text == "NULL") return;
             const Parameter* p = mEffect.findParameter(v.text);
-            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader))
+            if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader ||
+                      p->type.base == BaseType::GeometryShader))
                 return;
             if (!p) {
                 error(DiagId::UnknownIdentifier, v.loc, {v.text});
@@ -1705,6 +1730,7 @@ private:
     };
     std::optional<Refused> mRefusal;        // of the technique being parsed
     std::optional<Refused> mFirstRefused;   // the first technique left out
+    int mMaxVertexCount = 0;                // the [maxvertexcount(n)] before the declaration being parsed
     std::set<StateObjectKind> mObjectsSet;  // the state objects the pass being parsed sets
     int mDepth = 0;
     bool mNoGreater = false;

@@ -95,7 +95,9 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
                                      const std::string& entryPoint) {
     initGlslang();
     HlslCompileResult result;
-    EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+    EShLanguage language = stage == ShaderStage::Vertex     ? EShLangVertex
+                           : stage == ShaderStage::Fragment ? EShLangFragment
+                                                            : EShLangGeometry;
     glslang::TShader shader(language);
     const char* text = source.c_str();
     shader.setStrings(&text, 1);

@@ -471,18 +471,39 @@ std::string assignField(const Field& f, const std::string& source) {
     return body;
 }
 
+// "float4(v, 0, 1)": a varying of n components read as the float4 the field assignments take.
+std::string widenToFloat4(const std::string& name, int components) {
+    switch (components) {
+        case 1:
+            return "float4(" + name + ", 0, 0, 1)";
+        case 2:
+            return "float4(" + name + ", 0, 1)";
+        case 3:
+            return "float4(" + name + ", 1)";
+        default:
+            return name;
+    }
+}
+
 class WrapperBuilder {
 public:
     WrapperBuilder(const Effect& effect, const FunctionDecl& fn, const Expr& compile, ShaderStage stage,
-                   std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics)
+                   std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
+                   const std::map<int, TypeDesc>* geometryOutputs)
         : mEffect(effect),
           mFn(fn),
           mCompile(compile),
           mStage(stage),
           mArguments(arguments),
-          mDiagnostics(diagnostics) {}
+          mDiagnostics(diagnostics),
+          mGeometryOutputs(geometryOutputs) {}
 
     bool build(std::string& globals, std::string& wrapper);
+
+    // A geometry shader's output stream element: its name and its redeclaration with varying locations.
+    const std::string& streamStruct() const { return mStreamStruct; }
+    const std::string& streamStructText() const { return mStreamStructText; }
+    const std::map<int, TypeDesc>& varyingOutputs() const { return mVaryingOutputs; }
 
 private:
     bool fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
@@ -494,6 +515,8 @@ private:
     bool pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body);
     bool vertexOutputs(const std::vector<Field>& fields, std::string& members, std::string& body);
     bool pixelOutputs(const std::vector<Field>& fields, std::string& members, std::string& body);
+    bool buildGeometry(std::string& globals, std::string& wrapper);
+    bool streamElement(const FunctionParam& stream);
 
     const Effect& mEffect;
     const FunctionDecl& mFn;
@@ -501,6 +524,10 @@ private:
     ShaderStage mStage;
     std::vector<LoweredArgument>& mArguments;
     DiagnosticSink& mDiagnostics;
+    const std::map<int, TypeDesc>* mGeometryOutputs;
+    std::string mStreamStruct;
+    std::string mStreamStructText;
+    std::map<int, TypeDesc> mVaryingOutputs;
 };
 
 bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value,
@@ -646,17 +673,29 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             varyings.insert(*location);
             if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
-            body += assignField(f, "fx_v" + std::to_string(*location));
+            std::string source = "fx_v" + std::to_string(*location);
+            if (mGeometryOutputs) {
+                auto written = mGeometryOutputs->find(*location);
+                if (written == mGeometryOutputs->end())
+                    return fail(DiagId::UnsupportedFeature, f.loc,
+                                {"pixel input semantic '" + f.semantic +
+                                 "' is not written by the pass's geometry shader"});
+                source = widenToFloat4(source, written->second.cols);
+            }
+            body += assignField(f, source);
         } else {
             return fail(DiagId::UnsupportedFeature, f.loc,
                         {"pixel input semantic '" + f.semantic + "' is not supported"});
         }
     }
     auto add = [&](const std::string& p) { params += (params.empty() ? "" : ",\n    ") + p; };
-    // Varyings are float4 in both stages so that they link whatever width each stage declares.
+    // Varyings are float4 in both stages so that they link whatever width each stage declares; after a
+    // geometry shader, they take the types its output struct declares.
     for (int location : varyings) {
         std::string interp = interpolation.count(location) ? interpolation[location] + " " : "";
-        add("[[vk::location(" + std::to_string(location) + ")]] " + interp + "float4 fx_v" +
+        const std::string type =
+            mGeometryOutputs ? hlslTypeName(mGeometryOutputs->at(location)) : std::string("float4");
+        add("[[vk::location(" + std::to_string(location) + ")]] " + interp + type + " fx_v" +
             std::to_string(location) + " : FX_V" + std::to_string(location));
     }
     if (fragCoord) add("float4 fx_fragCoord : SV_Position");
@@ -737,7 +776,151 @@ bool WrapperBuilder::pixelOutputs(const std::vector<Field>& fields, std::string&
     return true;
 }
 
+// The stream's element struct, redeclared with the varying location of each member's semantic (glslang
+// assigns the locations of a geometry shader's outputs from the struct it appends): members must be
+// scalars or vectors with a POSITION/SV_Position, varying or SV_ClipDistance semantic.
+bool WrapperBuilder::streamElement(const FunctionParam& stream) {
+    const StructDecl* decl =
+        stream.type.base == BaseType::Struct ? findStructDecl(mEffect, stream.type.structName) : nullptr;
+    if (!decl || !stream.type.arrayDims.empty())
+        return fail(DiagId::UnsupportedFeature, stream.loc,
+                    {"the element of geometry shader stream '" + stream.name + "' must be a struct"});
+    mStreamStruct = decl->name;
+    std::string members;
+    for (const StructMember& m : decl->members) {
+        const std::string semantic = canonicalSemantic(m.semantic);
+        if (m.type.base == BaseType::Struct || !m.type.arrayDims.empty() || m.type.shape == Shape::Matrix)
+            return fail(DiagId::UnsupportedFeature, m.loc,
+                        {"geometry shader output '" + m.name +
+                         "' must be a scalar or a vector (structs, arrays and matrices are not supported)"});
+        std::string declared = hlslTypeName(m.type) + " " + m.name;
+        if (semantic == "POSITION0" || semantic == "SV_POSITION") {
+            members += "    " + declared + " : SV_Position;\n";
+        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0) {
+            members += "    " + declared + " : " + m.semantic + ";\n";
+        } else if (auto location = varyingLocation(semantic) ? varyingLocation(semantic)
+                                                             : customVaryingLocation(mEffect, semantic)) {
+            if (m.type.base != BaseType::Float && m.type.base != BaseType::Half && m.interpolation.empty())
+                return fail(
+                    DiagId::UnsupportedFeature, m.loc,
+                    {"geometry shader output '" + m.name + "' of an integer type must be 'nointerpolation'"});
+            const std::string at = std::to_string(*location);
+            members += "    [[vk::location(" + at + ")]] " +
+                       (m.interpolation.empty() ? std::string() : m.interpolation + " ") + declared +
+                       " : FX_V" + at + ";\n";
+            mVaryingOutputs[*location] = m.type;
+        } else {
+            return fail(DiagId::UnsupportedFeature, m.loc,
+                        {"geometry shader output semantic '" + m.semantic + "' is not supported"});
+        }
+    }
+    mStreamStructText = "struct " + decl->name + "\n{\n" + members + "};\n";
+    return true;
+}
+
+// A geometry shader: [maxvertexcount(n)] void GS(triangle In input[3], inout TriangleStream<Out> s).
+// The wrapper is a geometry shader of the same primitive and vertex count that rebuilds `input` from the
+// vertex stage's SV_Position and float4 varyings and passes its own stream through.
+bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
+    if (mFn.maxVertexCount <= 0)
+        return fail(DiagId::UnsupportedFeature, mFn.loc,
+                    {"geometry shader '" + mFn.name + "' has no [maxvertexcount(n)] attribute"});
+    const FunctionParam* input = nullptr;
+    const FunctionParam* stream = nullptr;
+    std::string params, locals, body, callArgs;
+    size_t uniformIndex = 0;
+    bool primitiveId = false;
+    for (size_t i = 0; i < mFn.params.size(); ++i) {
+        const FunctionParam& p = mFn.params[i];
+        std::string arg;
+        if (p.isUniform) {
+            if (!uniformArgument(p, uniformIndex++, arg, globals)) return false;
+        } else if (!p.stream.empty()) {
+            if (stream)
+                return fail(DiagId::UnsupportedFeature, p.loc,
+                            {"geometry shader '" + mFn.name + "' has more than one output stream"});
+            stream = &p;
+            arg = "fx_stream";
+        } else if (!p.primitive.empty()) {
+            if (input)
+                return fail(DiagId::UnsupportedFeature, p.loc,
+                            {"geometry shader '" + mFn.name + "' has more than one input primitive"});
+            input = &p;
+            arg = "fx_p" + std::to_string(i);
+        } else if (canonicalSemantic(p.semantic) == "SV_PRIMITIVEID") {
+            primitiveId = true;
+            arg = "(" + hlslTypeName(p.type) + ")fx_primitiveId";
+        } else {
+            return fail(DiagId::UnsupportedFeature, p.loc,
+                        {"geometry shader parameter '" + p.name +
+                         "' is not supported (expected the input primitive, the output stream, "
+                         "SV_PrimitiveID or a uniform)"});
+        }
+        callArgs += (i ? ", " : "") + arg;
+    }
+    if (uniformIndex < mCompile.args.size())
+        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
+                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
+                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    if (!input || !stream)
+        return fail(DiagId::UnsupportedFeature, mFn.loc,
+                    {"geometry shader '" + mFn.name +
+                     "' needs an input primitive ('triangle T input[3]') and an output stream "
+                     "('inout TriangleStream<T> stream')"});
+    if (input->primitive != "triangle")
+        return fail(DiagId::UnsupportedFeature, input->loc,
+                    {"geometry shader input primitive '" + input->primitive +
+                     "' is not supported: shadowfx draws meshes as triangle lists, which a 'triangle' "
+                     "input takes"});
+    if (input->type.arrayDims.size() != 1 || input->type.arrayDims[0] != 3)
+        return fail(DiagId::UnsupportedFeature, input->loc,
+                    {"geometry shader input '" + input->name + "' must be an array of 3 vertices"});
+    if (stream->direction != FunctionParam::Direction::InOut)
+        return fail(DiagId::UnsupportedFeature, stream->loc,
+                    {"geometry shader stream '" + stream->name + "' must be 'inout'"});
+    if (!streamElement(*stream)) return false;
+
+    TypeDesc vertex = input->type;
+    vertex.arrayDims.clear();
+    const std::string inputName = "fx_p" + std::to_string(input - mFn.params.data());
+    locals += "    " + hlslTypeName(vertex) + " " + inputName + "[3];\n";
+    for (int k = 0; k < 3; ++k)  // glslang has no zero cast of an array: element by element
+        locals += "    " + inputName + "[" + std::to_string(k) + "] = (" + hlslTypeName(vertex) + ")0;\n";
+    std::set<int> varyings;
+    for (int k = 0; k < 3; ++k) {
+        std::vector<Field> fields;
+        gatherFields(mEffect, vertex, input->semantic, input->interpolation,
+                     inputName + "[" + std::to_string(k) + "]", input->loc, fields);
+        const std::string from = "fx_in[" + std::to_string(k) + "].";
+        for (const Field& f : fields) {
+            if (f.semantic == "POSITION0" || f.semantic == "SV_POSITION") {
+                body += assignField(f, from + "fx_position");
+            } else if (auto location = varyingLocation(f.semantic)
+                                           ? varyingLocation(f.semantic)
+                                           : customVaryingLocation(mEffect, f.semantic)) {
+                varyings.insert(*location);
+                body += assignField(f, from + "fx_v" + std::to_string(*location));
+            } else {
+                return fail(DiagId::UnsupportedFeature, f.loc,
+                            {"geometry shader input semantic '" + f.semantic + "' is not supported"});
+            }
+        }
+    }
+    std::string inputMembers = "    float4 fx_position : SV_Position;\n";
+    for (int location : varyings)
+        inputMembers += "    [[vk::location(" + std::to_string(location) + ")]] float4 fx_v" +
+                        std::to_string(location) + " : FX_V" + std::to_string(location) + ";\n";
+    params = "triangle fx_GsInput fx_in[3], inout " + stream->stream + "<" + mStreamStruct + "> fx_stream";
+    if (primitiveId) params += ", uint fx_primitiveId : SV_PrimitiveID";
+    wrapper += "struct fx_GsInput {\n" + inputMembers + "};\n";
+    wrapper += "[maxvertexcount(" + std::to_string(mFn.maxVertexCount) + ")]\nvoid " +
+               std::string(kWrapperEntryPoint) + "(" + params + ")\n{\n";
+    wrapper += locals + body + "    " + mFn.name + "(" + callArgs + ");\n}\n";
+    return true;
+}
+
 bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
+    if (mStage == ShaderStage::Geometry) return buildGeometry(globals, wrapper);
     std::vector<Field> inputs, outputs;
     std::string locals, call, callArgs;
     size_t uniformIndex = 0;
@@ -793,11 +976,14 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
     static const char* kVersions[] = {"1_1", "1_2",           "1_3",           "1_4", "2_0",
                                       "2_a", "2_b",           "2_sw",          "3_0", "3_sw",
                                       "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"};
-    std::string prefix = stage == ShaderStage::Vertex ? "vs_" : "ps_";
+    std::string prefix = stage == ShaderStage::Vertex     ? "vs_"
+                         : stage == ShaderStage::Fragment ? "ps_"
+                                                          : "gs_";
     std::string p = profile;
     for (char& c : p) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (p.rfind(prefix, 0) != 0) return false;
     std::string version = p.substr(3);
+    if (stage == ShaderStage::Geometry) return version == "4_0" || version == "4_1" || version == "5_0";
     if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4"))
         return false;
     if (stage == ShaderStage::Fragment && version == "1_1") return true;
@@ -810,17 +996,21 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 // [SECTION] lowerStage()
 
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
-                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics) {
+                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
+                                       const std::map<int, TypeDesc>* geometryOutputs) {
+    auto stageName = [](ShaderStage s) {
+        return s == ShaderStage::Vertex ? "vertex" : s == ShaderStage::Fragment ? "pixel" : "geometry";
+    };
     if (!profileMatches(compile.profile, stage)) {
         // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
-        const ShaderStage other = stage == ShaderStage::Vertex ? ShaderStage::Fragment : ShaderStage::Vertex;
-        auto stageName = [](ShaderStage s) { return s == ShaderStage::Vertex ? "vertex" : "pixel"; };
-        if (profileMatches(compile.profile, other))
-            diagnostics.report(DiagId::InvalidCompileExpression, compile.loc,
-                               {"'" + compile.profile + "' is a " + stageName(other) +
-                                "-shader profile, used for the " + stageName(stage) + " shader"});
-        else
-            diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
+        for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry})
+            if (other != stage && profileMatches(compile.profile, other)) {
+                diagnostics.report(DiagId::InvalidCompileExpression, compile.loc,
+                                   {"'" + compile.profile + "' is a " + stageName(other) +
+                                    "-shader profile, used for the " + stageName(stage) + " shader"});
+                return std::nullopt;
+            }
+        diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
         return std::nullopt;
     }
     const FunctionDecl* fn = nullptr;
@@ -847,11 +1037,13 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     // Wrapper first (it may fail on arguments) but emitted last.
     size_t firstArgument = arguments.size();
     std::string argumentGlobals, wrapper;
-    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics);
+    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
+                           stage == ShaderStage::Fragment ? geometryOutputs : nullptr);
     if (!builder.build(argumentGlobals, wrapper)) {
         arguments.resize(firstArgument);
         return std::nullopt;
     }
+    out.varyingOutputs = builder.varyingOutputs();
 
     std::set<std::string> reached = reachableFunctions(effect, fn->name);
     // D3D10 textures and sampler objects are declared only where the unit's code names them: a D3D9
@@ -868,8 +1060,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     nameAll(wrapper);
     std::set<std::string> usedDepth;
     std::string& hlsl = out.hlsl;
-    hlsl += "// shadowfx: " + std::string(stage == ShaderStage::Vertex ? "vertex" : "pixel") + " shader " +
-            fn->name + " (" + compile.profile + ")\n";
+    hlsl += "// shadowfx: " + std::string(stageName(stage)) + " shader " + fn->name + " (" + compile.profile +
+            ")\n";
     hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + kLitReplacement;
     for (const DeclRef& ref : effect.order) {
         switch (ref.kind) {
@@ -913,7 +1105,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
             }
             case DeclRef::Kind::Struct: {
                 const StructDecl& s = effect.structs[ref.index];
-                emitAt(hlsl, s.hlslText, s.hlslLoc);
+                const bool stream = !builder.streamStruct().empty() && s.name == builder.streamStruct();
+                emitAt(hlsl, stream ? builder.streamStructText() : s.hlslText, s.hlslLoc);
                 break;
             }
             case DeclRef::Kind::Function: {

@@ -6,13 +6,16 @@
 // a generated wrapper `fx_main` takes D3D9-semantic inputs at fixed locations, rebuilds the user's
 // structs, calls the user's function with the compile expression's uniform arguments, and writes the
 // results to SV_Position / fixed varying locations / SV_Target n, so that stages link by semantic as on
-// D3D9.
+// D3D9. A geometry shader's wrapper rebuilds its input array the same way and hands the user's function
+// its output stream; the stream's element struct is redeclared in that unit with the varying locations
+// of its members' semantics.
 #pragma once
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
 #include <fx/Effect.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +45,9 @@ struct LoweredStage {
     std::string hlsl;
     SourceLoc compileLoc;                    // the compile expression: where generated-code errors go
     std::vector<std::string> depthSamplers;  // effect samplers sampled with depth comparison
+    // A geometry shader's outputs by varying location, as its output struct declares them: the pixel
+    // shader after it declares its inputs with these types (GL links a location's types exactly).
+    std::map<int, TypeDesc> varyingOutputs;
 };
 
 // An argument of a compile expression bound to a `uniform` entry-point parameter, as lowering finds it:
@@ -54,9 +60,11 @@ struct LoweredArgument {
 
 // Lowers the shader of one stage of a pass. `compile` is the state's Compile expression. Compile
 // arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
-// there). Returns nullopt after reporting an error.
+// there). A pixel shader after a geometry shader takes `geometryOutputs` (that stage's varyingOutputs).
+// Returns nullopt after reporting an error.
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
-                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics);
+                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
+                                       const std::map<int, TypeDesc>* geometryOutputs = nullptr);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
 // they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.

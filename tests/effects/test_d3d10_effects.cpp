@@ -1,13 +1,16 @@
 // Effects in the Direct3D 10/11 form rendered through the real pipeline: hardware PCF with a
 // SamplerComparisonState through RenderPort=light0 against the ray-cast truth, D3D10's state defaults
-// (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang, and a
-// technique11 twin rendering the same frame as its D3D9 technique.
+// (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang, a
+// geometry shader expanding a triangle into a quad, and a technique11 twin rendering the same frame as its
+// D3D9 technique.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
 #include <runtime/ShadowMetrics.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace shadowfx::test {
 namespace {
@@ -158,6 +161,47 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
     EXPECT_TRUE(notConstant(renderer->readFrame()));
+}
+
+// [SECTION] Geometry shaders
+
+// The quad tests/data/d3d10/geometry_sprite.fx's geometry shader emits: (2 HalfSize)² / 4 of the frame,
+// centred, in the vertex shader's green, its blue the quad's u from 0 at the left to 1 at the right.
+TEST(D3d10Effects, GeometryShaderExpandsTheFirstTriangleIntoACentredQuad) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/geometry_sprite.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Sprites"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    size_t inside = 0, outside = 0;
+    int left = kWidth, right = -1, top = kHeight, bottom = -1;
+    uint8_t blueAtLeft = 0, blueAtRight = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const uint8_t* p = &frame.rgba[(static_cast<size_t>(y) * kWidth + x) * 4];
+            if (p[0] != 0 || p[1] != 255) continue;  // not the sprite's colour
+            const bool central =
+                x >= kWidth / 4 && x < 3 * kWidth / 4 && y >= kHeight / 4 && y < 3 * kHeight / 4;
+            ++(central ? inside : outside);
+            if (x < left) left = x, blueAtLeft = p[2];
+            if (x > right) right = x, blueAtRight = p[2];
+            top = std::min(top, y);
+            bottom = std::max(bottom, y);
+        }
+    // HalfSize 0.5: the central quarter of the frame, every pixel of it and nothing else.
+    EXPECT_EQ(inside, static_cast<size_t>(kWidth * kHeight / 4));
+    EXPECT_EQ(outside, 0u);
+    EXPECT_EQ(left, kWidth / 4);
+    EXPECT_EQ(right, 3 * kWidth / 4 - 1);
+    EXPECT_EQ(top, kHeight / 4);
+    EXPECT_EQ(bottom, 3 * kHeight / 4 - 1);
+    // The float2 UV crossed the geometry stage: u rises from the left edge to the right one.
+    EXPECT_LT(blueAtLeft, 8);
+    EXPECT_GT(blueAtRight, 247);
+
+    // Without the geometry shader the same pass draws the teapot, not the quad.
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "NoSprites"));
+    const runtime::FrameImage meshes = renderer->readFrame();
+    EXPECT_FALSE(meshes.rgba == frame.rgba);
 }
 
 // [SECTION] SAS scripts on the D3D11 form

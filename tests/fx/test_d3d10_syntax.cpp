@@ -137,14 +137,62 @@ technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixel
 TEST(D3d10Syntax, AnEffectWhoseTechniquesAreAllLeftOutFails) {
     DiagnosticList diagnostics;
     auto effect = parseEffectSource(withTechniques(R"(
-technique11 OnlyOne { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(CompileShader(gs_5_0, VS())); } }
+technique11 OnlyOne { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetDomainShader(CompileShader(ds_5_0, VS())); } }
 )"),
                                     "d3d10.fx", ParseOptions{}, diagnostics);
     EXPECT_FALSE(effect);
     const Diagnostic* d = find(diagnostics, DiagId::AllTechniquesRefused);
     ASSERT_TRUE(d) << diagnostics.str();
-    EXPECT_EQ(d->loc.line, 17);  // the geometry shader's SetGeometryShader
-    EXPECT_NE(str(*d).find("'OnlyOne', geometry shaders are not supported"), std::string::npos) << str(*d);
+    EXPECT_EQ(d->loc.line, 17);  // the SetDomainShader
+    EXPECT_NE(str(*d).find("'OnlyOne', domain shaders are not supported"), std::string::npos) << str(*d);
+}
+
+// A geometry shader's declaration as the parser records it, and the pass's geometry stage as GLSL: the
+// input primitive and vertex count reach the layout qualifiers, the stream element's members their
+// varying locations, and the pixel shader's input takes the element member's type (float2).
+TEST(D3d10Syntax, GeometryShadersBecomeTheGeometryStageOfThePass) {
+    const char* source = R"(
+float4x4 Wvp : WorldViewProjection;
+float Grow = 0.1;
+struct V { float4 p : SV_Position; float4 c : COLOR0; };
+struct G { float4 p : SV_Position; float2 uv : TEXCOORD2; float4 c : COLOR0; };
+V VS(float3 p : POSITION) { V v; v.p = mul(float4(p, 1), Wvp); v.c = 1; return v; }
+[maxvertexcount(6)]
+void GS(triangle V tri[3], inout TriangleStream<G> s, uniform float scale)
+{
+    for (int i = 0; i < 3; ++i) { G g; g.p = tri[i].p * (1 + Grow * scale); g.uv = g.p.xy; g.c = tri[i].c; s.Append(g); }
+}
+float4 PS(G g) : SV_Target { return g.c * g.uv.x; }
+GeometryShader Shared = CompileShader(gs_4_0, GS(Grow * 2));
+technique10 T { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(Shared);
+                       SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(source, "d3d10.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    const FunctionDecl* gs = effect->findFunctions("GS").front();
+    EXPECT_EQ(gs->maxVertexCount, 6);
+    EXPECT_EQ(gs->params[0].primitive, "triangle");
+    EXPECT_EQ(gs->params[1].stream, "TriangleStream");
+    EXPECT_EQ(gs->params[1].type.structName, "G");
+    auto compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    const std::string& glsl = pass.geometry.glsl;
+    EXPECT_EQ(pass.geometry.stage, ShaderStage::Geometry);
+    EXPECT_NE(glsl.find("layout(triangles) in;"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("max_vertices = 6"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("layout(location = 2) out vec2"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("layout(location = 8) out vec4"), std::string::npos) << glsl;
+    EXPECT_NE(pass.fragment.glsl.find("layout(location = 2) in vec2"), std::string::npos)
+        << pass.fragment.glsl;
+    // Its own uniform block, holding the parameter it reads and its compile argument.
+    EXPECT_EQ(pass.geometry.uniformBlockBinding, 2);
+    std::vector<std::string> members;
+    for (const UniformBinding& u : pass.geometry.uniforms)
+        if (u.active) members.push_back(u.name);
+    EXPECT_NE(std::find(members.begin(), members.end(), "Grow"), members.end());
+    EXPECT_NE(std::find(members.begin(), members.end(), "fx_arg0"), members.end());
 }
 
 TEST(D3d10Syntax, DynamicLinkageIsRefusedWhereItIsDeclared) {

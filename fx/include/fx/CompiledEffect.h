@@ -19,7 +19,7 @@ namespace fx {
 
 struct Effect;  // fx/Effect.h: the syntax tree, which the runtime does not read
 
-enum class ShaderStage { Vertex, Fragment };
+enum class ShaderStage { Vertex, Fragment, Geometry };
 
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
 struct UniformBinding {
@@ -120,6 +120,7 @@ struct CompiledPass {
     float filterReachTexels = 0.0f;
     StageProgram vertex;
     StageProgram fragment;
+    StageProgram geometry;  // D3D10's geometry shader (SetGeometryShader); empty glsl when the pass has none
     std::vector<CompileArgument> arguments;
     std::vector<RenderStateSetting> states;  // in source order, shaders excluded
     bool hasScript = false;

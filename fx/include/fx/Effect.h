@@ -131,6 +131,10 @@ struct FunctionParam {
     std::string interpolation;
     Direction direction = Direction::In;
     bool isUniform = false;  // `uniform`: given by the compile expression's arguments
+    // A geometry shader's input primitive (`triangle VSOut input[3]`: "triangle"; "" elsewhere) and output
+    // stream (`inout TriangleStream<GSOut> s`: "TriangleStream", with `type` the element struct).
+    std::string primitive;
+    std::string stream;
     std::optional<Expr> defaultValue;
     SourceLoc loc;
 };
@@ -140,10 +144,11 @@ struct FunctionDecl {
     TypeDesc returnType;
     std::string returnSemantic;  // float4 PS(...) : COLOR  ->  "COLOR"
     std::vector<FunctionParam> params;
-    bool hasBody = true;   // false for a prototype
-    std::string hlslText;  // the whole definition (attributes, signature and body)
-    SourceLoc hlslLoc;     // where hlslText starts
-    SourceLoc loc;         // the name's location
+    int maxVertexCount = 0;  // a geometry shader's [maxvertexcount(n)]; 0 if the function has none
+    bool hasBody = true;     // false for a prototype
+    std::string hlslText;    // the whole definition (attributes, signature and body)
+    SourceLoc hlslLoc;       // where hlslText starts
+    SourceLoc loc;           // the name's location
 
     // A body of straight-line code: local declarations, assignments to locals, and a final return. Such
     // a function, called in a pass's compile arguments or states, is inlined there and evaluated on the

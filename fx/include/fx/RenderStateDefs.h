@@ -11,8 +11,8 @@
 // FX_ENUM_VALUE(Domain, Name, Value)               the named values of an enum domain
 //
 // Domains: Bool, Int (unsigned/int), Float, ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
-// Shader (VertexShader/PixelShader), TextureRef (Texture = <t>), and the enum domains listed below.
-// Default values are D3D9's documented defaults. Define the macros you need; undefined ones expand to
+// Shader (VertexShader/PixelShader/GeometryShader), TextureRef (Texture = <t>), and the enum domains listed
+// below. Default values are D3D9's documented defaults. Define the macros you need; undefined ones expand to
 // nothing. This file undefines them all at the end.
 
 #ifndef FX_RENDER_STATE
@@ -34,6 +34,7 @@
 // [SECTION] Pass states
 FX_RENDER_STATE(VertexShader, Shader, 0)
 FX_RENDER_STATE(PixelShader, Shader, 0)
+FX_RENDER_STATE(GeometryShader, Shader, 0)  // D3D10: SetGeometryShader
 FX_RENDER_STATE(ZEnable, Bool, 1)
 FX_RENDER_STATE(ZWriteEnable, Bool, 1)
 FX_RENDER_STATE(ZFunc, Cmp, 4)      // LESSEQUAL

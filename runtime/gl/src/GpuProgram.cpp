@@ -103,9 +103,13 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     std::string log;
     const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
     const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, fragment, log) : 0;
-    if (vs && (fs || !withPixel)) {
+    // D3D10's geometry shader runs in both variants: it decides what is rasterized.
+    const bool withGeometry = !pass.geometry.glsl.empty();
+    const GLuint gs = withGeometry ? compileShader(GL_GEOMETRY_SHADER, pass.geometry.glsl, log) : 0;
+    if (vs && (fs || !withPixel) && (gs || !withGeometry)) {
         program->mProgram = gl::CreateProgram();
         gl::AttachShader(program->mProgram, vs);
+        if (gs) gl::AttachShader(program->mProgram, gs);
         if (fs) gl::AttachShader(program->mProgram, fs);
         gl::LinkProgram(program->mProgram);
         GLint ok = GL_FALSE;
@@ -122,6 +126,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     }
     if (vs) gl::DeleteShader(vs);
     if (fs) gl::DeleteShader(fs);
+    if (gs) gl::DeleteShader(gs);
     if (!program->mProgram) {
         diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
         return nullptr;
@@ -130,7 +135,8 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     // SV_ClipDistance: GL clips only against the planes enabled, so enable those the program writes.
     if (const size_t at = pass.vertex.glsl.find("gl_ClipDistance["); at != std::string::npos)
         program->mClipDistances = std::clamp(std::atoi(pass.vertex.glsl.c_str() + at + 16), 0, 8);
-    const fx::StageProgram* linked[2] = {&pass.vertex, withPixel ? &pass.fragment : nullptr};
+    const fx::StageProgram* linked[3] = {&pass.vertex, withPixel ? &pass.fragment : nullptr,
+                                         withGeometry ? &pass.geometry : nullptr};
     // D3D10 pairs carry no layout(binding): their units are the pass's (fx's assignPairUnits).
     for (const fx::StageProgram* stage : linked)
         if (stage)
@@ -139,7 +145,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
                     const GLint location = gl::GetUniformLocation(program->mProgram, s.glslName.c_str());
                     if (location >= 0) gl::ProgramUniform1i(program->mProgram, location, s.unit);
                 }
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 3; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
         if (!linked[i] || linked[i]->uniformBlockSize == 0 || linked[i]->uniformBlockBinding < 0) continue;

@@ -160,6 +160,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
     if (vertexOnly) program = vertexOnly;
     bindSamplers(pass.vertex);
+    bindSamplers(pass.geometry);
     bindSamplers(pass.fragment);
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
     if (mPort.cascade >= 0) {

@@ -66,9 +66,9 @@ public:
 
     bool hasShaders() const { return mProgram != 0; }
 
-    // Makes the program current; the next upload() binds both blocks whatever they hold.
+    // Makes the program current; the next upload() binds every stage's block whatever it holds.
     void bind();
-    // Packs both stages' uniform blocks from `parameters` (one value per effect parameter) and `arguments`
+    // Packs the stages' uniform blocks from `parameters` (one value per effect parameter) and `arguments`
     // (one value per CompiledPass::arguments entry) and uploads a block only where its bytes changed since
     // this program's last upload (per-pass values stay put between the draws of a pass).
     void upload(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments,
@@ -83,7 +83,7 @@ private:
     GpuProgram() = default;
 
     GLuint mProgram = 0;
-    StageBlock mBlocks[2];
+    StageBlock mBlocks[3];   // vertex, pixel, geometry
     int mClipDistances = 0;  // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
 };
 

@@ -1,0 +1,8 @@
+// A geometry shader that takes points: shadowfx draws meshes as triangle lists.
+struct V { float4 p : SV_Position; };
+V VS(float3 p : POSITION) { V v; v.p = float4(p, 1); return v; }
+[maxvertexcount(4)]
+void GS(point V pt[1], inout TriangleStream<V> s) { s.Append(pt[0]); }
+float4 PS() : SV_Target { return 1; }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(CompileShader(gs_5_0, GS()));
+                       SetPixelShader(CompileShader(ps_5_0, PS())); } }
