@@ -152,6 +152,12 @@ std::optional<InstancedPass> instancedPass(const CompiledPass& pass,
         whyNot = "the pass has no vertex shader";
         return std::nullopt;
     }
+    // A geometry stage would need the object index passed through it and its own block's per-object
+    // values from the records: not done, such passes draw object by object.
+    if (!pass.geometry.glsl.empty()) {
+        whyNot = "the pass has a geometry shader";
+        return std::nullopt;
+    }
     const std::string varying = "layout(location = " + std::to_string(kObjectVaryingLocation) + ")";
     for (const StageProgram* stage : {&pass.vertex, &pass.fragment}) {
         // The effect's own instance ids would count this variant's instances; its own storage buffers

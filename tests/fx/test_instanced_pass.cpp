@@ -151,5 +151,26 @@ TEST(InstancedPass, RefusesCodeThatReadsItsInstanceId) {
     EXPECT_NE(whyNot.find("gl_InstanceID"), std::string::npos) << whyNot;
 }
 
+const char* kGeometryStage = R"(
+float4x4 WorldViewProjection : WorldViewProjection;
+struct V { float4 p : SV_Position; };
+V VS(float4 Position : POSITION) { V v; v.p = mul(Position, WorldViewProjection); return v; }
+[maxvertexcount(3)]
+void GS(triangle V tri[3], inout TriangleStream<V> s) { s.Append(tri[0]); s.Append(tri[1]); s.Append(tri[2]); }
+float4 PS() : SV_Target { return 1; }
+technique11 main { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, GS()));
+                            SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+
+// A geometry stage between them would have to pass the object index on and read per-object values too.
+TEST(InstancedPass, RefusesAPassWithAGeometryShader) {
+    auto effect = compile(kGeometryStage);
+    ASSERT_TRUE(effect);
+    std::string whyNot;
+    EXPECT_FALSE(
+        instancedPass(effect->techniques[0].passes[0], flags(*effect, {"WorldViewProjection"}), {}, whyNot));
+    EXPECT_NE(whyNot.find("geometry shader"), std::string::npos) << whyNot;
+}
+
 }  // namespace
 }  // namespace fx
