@@ -318,12 +318,17 @@ const GpuTexture* FrameExecutor::target(const std::string& name) {
     return &texture->second;
 }
 
-bool FrameExecutor::depthTargetIsSmaller() const {
+glm::ivec2 FrameExecutor::depthTargetSize() const {
     const RenderTargetAttachment& depth = mTargets.depth;
-    if (!depth.texture) return false;
-    const int width = std::max(1, depth.texture->width() >> depth.level);
-    const int height = std::max(1, depth.texture->height() >> depth.level);
-    return width < mTargets.width() || height < mTargets.height();
+    if (!depth.texture) return glm::ivec2(0);
+    return glm::ivec2(std::max(1, depth.texture->width() >> depth.level),
+                      std::max(1, depth.texture->height() >> depth.level));
+}
+
+bool FrameExecutor::depthTargetIsSmaller() const {
+    if (!mTargets.depth.texture) return false;
+    const glm::ivec2 size = depthTargetSize();
+    return size.x < mTargets.width() || size.y < mTargets.height();
 }
 
 // D3D9 wants a depth-stencil surface at least as large as the colour targets; GL draws and clears only
@@ -340,13 +345,12 @@ bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
             targets.depth = {};
         } else if (pass && mWarnedDepthSizes.insert(pass).second) {
             const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
-            const RenderTargetAttachment& depth = mTargets.depth;
+            const glm::ivec2 depthSize = depthTargetSize();
             mDiagnostics.report(fx::Diagnostic{
                 fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass->loc,
                 "pass '" + pass->name + "' tests depth or stencil in a " +
                     size(mTargets.width(), mTargets.height()) + " colour target with a smaller " +
-                    size(std::max(1, depth.texture->width() >> depth.level),
-                         std::max(1, depth.texture->height() >> depth.level)) +
+                    size(depthSize.x, depthSize.y) +
                     " depth-stencil target: only their overlap is drawn (D3D9 requires the depth-stencil "
                     "surface to be at least as large; set RenderDepthStencilTarget to one of the colour "
                     "target's size)"});

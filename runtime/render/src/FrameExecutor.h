@@ -65,6 +65,7 @@ private:
     // Binds mTargets; without the depth-stencil target when it is smaller than the colour targets and
     // the operation does not use it (`usesDepth`), with a warning for `pass` when it does.
     bool bindTargets(bool usesDepth, const fx::CompiledPass* pass = nullptr);
+    glm::ivec2 depthTargetSize() const;  // at its mip level; 0x0 without one
     bool depthTargetIsSmaller() const;
     bool isColorTarget(const GpuTexture* texture) const;
     // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
