@@ -95,6 +95,18 @@ void writeProgram(Writer& w, const StageProgram& p) {
         w.str(s.pairTexture);
         w.str(s.pairSampler);
     }
+    w.u32(static_cast<uint32_t>(p.storageBuffers.size()));
+    for (const StorageBufferBinding& b : p.storageBuffers) {
+        w.str(b.blockName);
+        w.u32(b.glStride);
+        w.u32(b.d3dStride);
+        w.u32(static_cast<uint32_t>(b.runs.size()));
+        for (const StorageBufferBinding::Run& run : b.runs) {
+            w.u32(run.d3dOffset);
+            w.u32(run.glOffset);
+            w.u32(run.bytes);
+        }
+    }
     w.u32(static_cast<uint32_t>(p.inputs.size()));
     for (const VertexInput& i : p.inputs) {
         w.str(i.semantic);
@@ -126,6 +138,18 @@ void readProgram(Reader& r, StageProgram& p) {
         s.depthCompare = r.u32() != 0;
         s.pairTexture = r.str();
         s.pairSampler = r.str();
+    }
+    p.storageBuffers.resize(r.count(16));
+    for (StorageBufferBinding& b : p.storageBuffers) {
+        b.blockName = r.str();
+        b.glStride = r.u32();
+        b.d3dStride = r.u32();
+        b.runs.resize(r.count(12));
+        for (StorageBufferBinding::Run& run : b.runs) {
+            run.d3dOffset = r.u32();
+            run.glOffset = r.u32();
+            run.bytes = r.u32();
+        }
     }
     p.inputs.resize(r.count(12));
     for (VertexInput& i : p.inputs) {

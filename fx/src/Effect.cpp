@@ -24,7 +24,10 @@ bool TypeDesc::isNumeric() const {
 }
 
 bool TypeDesc::isTexture() const {
-    return base >= BaseType::Texture && base <= BaseType::TextureCube;
+    return base >= BaseType::Texture && base <= BaseType::Texture2DMS;
+}
+bool TypeDesc::isBuffer() const {
+    return base >= BaseType::Buffer && base <= BaseType::ByteAddressBuffer;
 }
 bool TypeDesc::isSampler() const {
     return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState;
@@ -44,6 +47,9 @@ int TypeDesc::componentCount() const {
 }
 
 std::string TypeDesc::hlslName() const {
+    auto withTemplate = [this](const char* object) {
+        return templateArgs.empty() ? std::string(object) : std::string(object) + "<" + templateArgs + ">";
+    };
     std::string name;
     switch (base) {
         case BaseType::Void:
@@ -78,6 +84,20 @@ std::string TypeDesc::hlslName() const {
             return "Texture3D";
         case BaseType::TextureCube:
             return "TextureCube";
+        case BaseType::Texture1DArray:
+            return withTemplate("Texture1DArray");
+        case BaseType::Texture2DArray:
+            return withTemplate("Texture2DArray");
+        case BaseType::TextureCubeArray:
+            return withTemplate("TextureCubeArray");
+        case BaseType::Texture2DMS:
+            return withTemplate("Texture2DMS");
+        case BaseType::Buffer:
+            return withTemplate("Buffer");
+        case BaseType::StructuredBuffer:
+            return withTemplate("StructuredBuffer");
+        case BaseType::ByteAddressBuffer:
+            return "ByteAddressBuffer";
         case BaseType::Sampler:
             return "sampler";
         case BaseType::Sampler1D:

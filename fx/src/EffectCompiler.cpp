@@ -82,6 +82,7 @@ private:
     void passAnnotations(const Pass& source, CompiledPass& pass);
     void textures();
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
+    void resourceShape(const Parameter& p, TextureDesc& t);
     void samplers();
     void assignPairUnits();
     void scripts();
@@ -219,7 +220,10 @@ void Compiler::textures() {
         t.loc = p.loc;
         t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube
                  : p.type.base == BaseType::Texture3D ? BaseType::Texture3D
-                                                      : BaseType::Texture2D;
+                 : p.type.base >= BaseType::Texture1DArray && p.type.base <= BaseType::Texture2DMS
+                     ? p.type.base
+                     : BaseType::Texture2D;
+        resourceShape(p, t);
         // An untyped `texture` says what it holds in FX Composer's ResourceType annotation.
         if (const Annotation* a = p.annotation("ResourceType");
             a && p.type.base == BaseType::Texture && a->value.kind == Expr::Kind::String) {
@@ -339,8 +343,62 @@ void Compiler::textures() {
             }
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
+        const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
+                           t.type == BaseType::TextureCubeArray;
+        if (array && (t.kind == TextureDesc::Kind::RenderColorTarget ||
+                      t.kind == TextureDesc::Kind::RenderDepthStencilTarget))
+            error(DiagId::UnsupportedFeature, p.loc,
+                  {"texture array '" + p.name +
+                   "' cannot be a render target: a pass's RenderColorTarget has no way to choose the "
+                   "element it renders into"});
+        if (t.type == BaseType::Texture2DMS && t.samples == 0) {
+            if (t.kind == TextureDesc::Kind::RenderColorTarget ||
+                t.kind == TextureDesc::Kind::RenderDepthStencilTarget)
+                error(DiagId::TypeMismatch, p.loc,
+                      {"Texture2DMS '" + p.name +
+                       "': a multisample render target needs its sample count (Texture2DMS<float4, 4>)"});
+            t.samples = 1;
+        }
         mOut->textures.push_back(std::move(t));
     }
+}
+
+// A D3D10 array's element count (`int ArraySize = N;`, default 1) and a Texture2DMS<T, N>'s sample count.
+void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
+    const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
+                       t.type == BaseType::TextureCubeArray;
+    if (const Annotation* a = p.annotation("ArraySize")) {
+        TypeDesc scalar;
+        std::optional<Value> v = array ? eval(a->value, &scalar) : std::nullopt;
+        const float n = v ? v->asFloat() : 0.0f;
+        if (!array)
+            error(DiagId::InvalidAnnotation, a->loc, {"ArraySize", "only a texture array has elements"});
+        else if (!(n >= 1 && n <= 2048 && n == std::floor(n)))
+            error(DiagId::InvalidAnnotation, a->value.loc, {"ArraySize", "must be an integer in 1..2048"});
+        else
+            t.arraySize = static_cast<int>(n);
+    }
+    if (t.type != BaseType::Texture2DMS) return;
+    // `Texture2DMS<float4, 4>`: the count follows the element type; D3D10 allows 1..32, GL's limit is the
+    // driver's (GL_MAX_COLOR_TEXTURE_SAMPLES, at least 1), checked when the runtime creates it.
+    const std::string& args = p.type.templateArgs;
+    const size_t comma = args.rfind(',');
+    std::string count = comma == std::string::npos ? "" : args.substr(comma + 1);
+    count.erase(0, count.find_first_not_of(" \t"));
+    count.erase(count.find_last_not_of(" \t") + 1);
+    if (comma == std::string::npos) {
+        t.samples = 0;  // `Texture2DMS<float4>`: any count (SM 5); a render target needs one (below)
+        return;
+    }
+    const bool digits =
+        !count.empty() && count.size() <= 2 && count.find_first_not_of("0123456789") == std::string::npos;
+    const int n = digits ? std::atoi(count.c_str()) : 0;
+    if (n < 1 || n > 32)
+        error(DiagId::TypeMismatch, p.loc,
+              {"Texture2DMS '" + p.name +
+               "': its sample count must be the second template argument, 1..32 (Texture2DMS<float4, 4>)"});
+    else
+        t.samples = static_cast<int>(n);
 }
 
 // `string Procedural = "noise"; int Seed = 7;` with Dimensions (default 64x64) and Format (default
@@ -706,6 +764,8 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
         if (auto texture = mIndex.find(s.pairTexture); !s.pairTexture.empty() && texture != mIndex.end())
             s.textureParameter = texture->second;
     }
+    for (StorageBufferBinding& b : program.storageBuffers)
+        if (auto it = mIndex.find(b.blockName); it != mIndex.end()) b.parameter = it->second;
 }
 
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -327,13 +328,43 @@ private:
             type.structName = name.text;
             return type;
         }
+        if (std::optional<BaseType> base = supportedResource(name.text)) {
+            advance();
+            type.base = *base;
+            if (check("<")) type.templateArgs = angleText();
+            return type;
+        }
         if (isTemplatedObject(name.text)) {
+            const bool readWrite = name.text.rfind("RW", 0) == 0 || name.text.rfind("Append", 0) == 0 ||
+                                   name.text.rfind("Consume", 0) == 0;
             fail(DiagId::UnsupportedFeature, name.loc,
-                 {"type '" + name.text +
-                  "' is not supported in effects: shadowfx creates no array, multisample or buffer resources "
-                  "for them"});
+                 {"type '" + name.text + "' is not supported in effects: " +
+                  (readWrite ? "read-write resources are bound by the application (FX11 sets unordered "
+                               "access views outside passes); a pass binds none"
+                             : "shadowfx creates no multisample array resources")});
         }
         fail(DiagId::UnknownType, name.loc, {name.text});
+    }
+    // The D3D10 resources that GL holds: array and multisample textures, buffer textures and storage blocks.
+    static std::optional<BaseType> supportedResource(const std::string& name) {
+        static const std::pair<const char*, BaseType> kResources[] = {
+            {"Texture1DArray", BaseType::Texture1DArray},
+            {"Texture2DArray", BaseType::Texture2DArray},
+            {"TextureCubeArray", BaseType::TextureCubeArray},
+            {"Texture2DMS", BaseType::Texture2DMS},
+            {"Buffer", BaseType::Buffer},
+            {"StructuredBuffer", BaseType::StructuredBuffer},
+            {"ByteAddressBuffer", BaseType::ByteAddressBuffer}};
+        for (const auto& [spelling, base] : kResources)
+            if (name == spelling) return base;
+        return std::nullopt;
+    }
+    // `<float4, 4>`: the text between the angle brackets as written, consumed.
+    std::string angleText() {
+        const size_t open = mPos;
+        skipAngles();
+        if (mPos - open < 3) return "";
+        return sliceText(open + 1, mPos - 2);
     }
     void skipAngles() {
         expect("<");

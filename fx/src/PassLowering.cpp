@@ -1072,7 +1072,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                 } else if (isNumericType(p.type) && p.type.base != BaseType::String) {
                     // A plain global: it lands in the $Global block; the runtime fills it.
                     hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
-                } else if (((p.type.isTexture() && p.type.base != BaseType::Texture) ||
+                } else if (((p.type.isTexture() && p.type.base != BaseType::Texture) || p.type.isBuffer() ||
                             p.type.base == BaseType::SamplerState ||
                             p.type.base == BaseType::SamplerComparisonState) &&
                            named.count(p.name)) {

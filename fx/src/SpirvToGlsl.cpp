@@ -14,6 +14,55 @@ std::string spirvToGlslOptionsKey() {
     return "spirv-cross glsl450 core novk pairs";
 }
 
+namespace {
+
+// The runs of bytes one element of type `type` occupies at `glOffset` in a GL block, in D3D order, each
+// at `d3dCursor` in a D3D element (members packed at 4-byte alignment), which advances past them.
+void storageRuns(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::SPIRType& type,
+                 uint32_t glOffset, uint32_t& d3dCursor, std::vector<StorageBufferBinding::Run>& runs) {
+    auto add = [&](uint32_t gl, uint32_t bytes) {
+        if (!runs.empty() && runs.back().d3dOffset + runs.back().bytes == d3dCursor &&
+            runs.back().glOffset + runs.back().bytes == gl) {
+            runs.back().bytes += bytes;
+        } else {
+            runs.push_back({d3dCursor, gl, bytes});
+        }
+        d3dCursor += bytes;
+    };
+    if (type.basetype != spirv_cross::SPIRType::Struct) {
+        add(glOffset, type.vecsize * type.columns * std::max(type.width, 32u) / 8);
+        return;
+    }
+    for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+        const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
+        const uint32_t offset = glOffset + compiler.type_struct_member_offset(type, i);
+        uint32_t count = 1, stride = 0;
+        const spirv_cross::SPIRType* element = &member;
+        if (!member.array.empty()) {
+            for (uint32_t dim : member.array) count *= std::max(dim, 1u);
+            stride = compiler.type_struct_member_array_stride(type, i);
+            while (!element->array.empty()) element = &compiler.get_type(element->parent_type);
+        }
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t at = offset + k * stride;
+            if (element->basetype == spirv_cross::SPIRType::Struct) {
+                storageRuns(compiler, *element, at, d3dCursor, runs);
+            } else if (element->columns > 1) {
+                // A matrix: its contiguous vectors (HLSL's columns, or its rows when row_major) in turn.
+                const bool rowMajor = compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
+                const uint32_t vectors = rowMajor ? element->vecsize : element->columns;
+                const uint32_t bytes = (rowMajor ? element->columns : element->vecsize) * 4;
+                const uint32_t matrixStride = compiler.type_struct_member_matrix_stride(type, i);
+                for (uint32_t v = 0; v < vectors; ++v) add(at + v * matrixStride, bytes);
+            } else {
+                add(at, element->vecsize * std::max(element->width, 32u) / 8);
+            }
+        }
+    }
+}
+
+}  // namespace
+
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
                  StageProgram& program, std::string& error) {
     try {
@@ -81,6 +130,31 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             s.glslName = name;
             s.unit = binding;
             program.samplers.push_back(s);
+        }
+
+        // Buffer<T>: a texel buffer that GLSL reads as a samplerBuffer (texelFetch); like a pair without a
+        // sampler, it gets a unit of the pass's.
+        for (const spirv_cross::Resource& r : resources.separate_images) {
+            if (compiler.get_type(r.type_id).image.dim != spv::DimBuffer) continue;
+            SamplerBinding s;
+            s.glslName = compiler.get_name(r.id);
+            s.pairTexture = s.glslName;
+            s.unit = -1;
+            program.samplers.push_back(s);
+        }
+        program.storageBuffers.clear();
+        for (const spirv_cross::Resource& r : resources.storage_buffers) {
+            // glslang's block for a StructuredBuffer<T> or ByteAddressBuffer holds one runtime array of T.
+            const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
+            if (block.member_types.size() != 1) continue;
+            const std::string name = compiler.get_name(r.id);
+            compiler.set_name(r.base_type_id, name);  // what GL's program interface calls the block
+            StorageBufferBinding b;
+            b.blockName = name;
+            b.glStride = compiler.type_struct_member_array_stride(block, 0);
+            const spirv_cross::SPIRType& array = compiler.get_type(block.member_types[0]);
+            storageRuns(compiler, compiler.get_type(array.parent_type), 0, b.d3dStride, b.runs);
+            program.storageBuffers.push_back(std::move(b));
         }
 
         program.uniforms.clear();

@@ -57,6 +57,22 @@ struct SamplerBinding {
     std::optional<size_t> textureParameter;  // Effect::parameters index of pairTexture
 };
 
+// A D3D10 StructuredBuffer<T> or ByteAddressBuffer a stage reads: a GL shader storage block (std430).
+// The application writes elements as D3D packs them (members 4-byte aligned, no padding); the runtime
+// copies each run of a member's bytes to where the GL block has it.
+struct StorageBufferBinding {
+    struct Run {
+        uint32_t d3dOffset = 0;  // within a D3D element
+        uint32_t glOffset = 0;   // within a GL element
+        uint32_t bytes = 0;
+    };
+    std::string blockName;   // the GLSL block (the parameter's name)
+    size_t parameter = 0;    // Effect::parameters index
+    uint32_t glStride = 0;   // bytes per element in the GL block
+    uint32_t d3dStride = 0;  // bytes per element as D3D packs it
+    std::vector<Run> runs;   // in D3D order, covering the element
+};
+
 // A vertex shader input, bound by semantic ("POSITION", "NORMAL", "TEXCOORD0", "COLOR0", "TANGENT",
 // "BINORMAL"): the runtime feeds the mesh attribute with that semantic, or a defined default.
 struct VertexInput {
@@ -75,9 +91,12 @@ struct StageProgram {
     int uniformBlockBinding = -1;
     uint32_t uniformBlockSize = 0;
     std::vector<UniformBinding> uniforms;
+    // D3D10 pairs, and Buffer<T> as a GL buffer texture: a SamplerBinding with pairTexture the buffer's
+    // name and no sampler.
     std::vector<SamplerBinding> samplers;
-    std::vector<VertexInput> inputs;  // vertex stage
-    uint64_t sourceHash = 0;          // hash of hlsl + options: the compile cache's key
+    std::vector<StorageBufferBinding> storageBuffers;  // the runtime binds them per program (GpuProgram)
+    std::vector<VertexInput> inputs;                   // vertex stage
+    uint64_t sourceHash = 0;                           // hash of hlsl + options: the compile cache's key
 };
 
 // An argument of a compile expression bound to a `uniform` entry-point parameter; the runtime runs `value`
@@ -166,9 +185,13 @@ struct TextureDesc {
     };
     size_t parameter = 0;  // Effect::parameters index
     Kind kind = Kind::File;
-    BaseType type = BaseType::Texture2D;  // Texture2D, TextureCube or Texture3D
+    // Texture2D, TextureCube, Texture3D, or a D3D10 Texture1DArray, Texture2DArray, TextureCubeArray,
+    // Texture2DMS
+    BaseType type = BaseType::Texture2D;
     TextureFormat format = TextureFormat::RGBA8;
-    int width = 0;  // Dimensions / width,height annotations; 0 when sized by viewportRatio
+    int arraySize = 1;  // an array's elements (`int ArraySize = N;`, cubes for a TextureCubeArray)
+    int samples = 1;    // Texture2DMS<T, N>: N (1 when the type leaves it out)
+    int width = 0;      // Dimensions / width,height annotations; 0 when sized by viewportRatio
     int height = 0;
     float viewportRatio[2] = {1.0f, 1.0f};  // ViewPortRatio (used when width == 0)
     int mipLevels = 1;

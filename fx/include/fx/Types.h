@@ -22,7 +22,16 @@ enum class BaseType {
     Texture2D,
     Texture3D,
     TextureCube,
-    Sampler,  // untyped `sampler`
+    // D3D10 resources that GL holds as array, multisample or buffer textures and storage buffers; their
+    // template arguments ("float4", "float4, 4", "Particle") are TypeDesc::templateArgs.
+    Texture1DArray,
+    Texture2DArray,
+    TextureCubeArray,
+    Texture2DMS,        // Texture2DMS<T, N>: N samples per texel
+    Buffer,             // Buffer<T>: typed elements (a GL buffer texture)
+    StructuredBuffer,   // StructuredBuffer<T>: a GL shader storage block of T
+    ByteAddressBuffer,  // raw 32-bit words: a GL shader storage block of uint
+    Sampler,            // untyped `sampler`
     Sampler1D,
     Sampler2D,
     Sampler3D,
@@ -51,9 +60,14 @@ struct TypeDesc {
     std::vector<int> arrayDims;  // float4 a[3][2] -> {3, 2}; empty when not an array
     std::string structName;      // base == Struct
     bool rowMajor = false;       // declared `row_major` (HLSL default is column_major)
+    // The template arguments of a D3D10 array, multisample or buffer resource as written, without the
+    // angle brackets ("float4, 4"); empty elsewhere (Texture2D<float4>'s are dropped: glslang's default
+    // float4 is what D3D9-era code expects).
+    std::string templateArgs;
 
     bool isNumeric() const;      // bool/int/uint/half/float/double
-    bool isTexture() const;      // Texture..TextureCube
+    bool isTexture() const;      // Texture..Texture2DMS: what TextureDesc describes
+    bool isBuffer() const;       // Buffer, StructuredBuffer, ByteAddressBuffer
     bool isSampler() const;      // Sampler..SamplerComparisonState
     bool isStateObject() const;  // RasterizerState, DepthStencilState, BlendState
     bool isShader() const;       // VertexShader..ComputeShader

@@ -1,3 +1,3 @@
-// A structured buffer, which shadowfx's passes do not bind.
+// A read-write structured buffer: FX11 binds unordered access views from the application, never a pass.
 struct Particle { float3 Position; float Age; };
-StructuredBuffer<Particle> Particles;
+RWStructuredBuffer<Particle> Particles;
