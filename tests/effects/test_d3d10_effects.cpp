@@ -1,8 +1,8 @@
 // Effects in the Direct3D 10/11 form rendered through the real pipeline: hardware PCF with a
 // SamplerComparisonState through RenderPort=light0 against the ray-cast truth, D3D10's state defaults
-// (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang, a
-// geometry shader expanding a triangle into a quad, and a technique11 twin rendering the same frame as its
-// D3D9 technique.
+// (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang,
+// texture arrays, buffers and a multisample target on pixels, a geometry shader expanding a triangle into
+// a quad, and a technique11 twin rendering the same frame as its D3D9 technique.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 namespace shadowfx::test {
 namespace {
@@ -161,6 +164,239 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
     EXPECT_TRUE(notConstant(renderer->readFrame()));
+}
+
+// [SECTION] Texture arrays
+
+// A full-screen pass per technique (Draw=Buffer), depth and culling off.
+std::string fullScreenTechniques(const std::vector<std::string>& pixelShaders) {
+    std::string text = R"(
+struct QuadVertex { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+struct QuadOut { float4 Position : SV_Position; float2 UV : TEXCOORD0; };
+QuadOut QuadVS(QuadVertex v) { QuadOut o; o.Position = v.Position; o.UV = v.UV; return o; }
+DepthStencilState NoDepth { DepthEnable = FALSE; };
+RasterizerState NoCulling { CullMode = NONE; };
+)";
+    for (const std::string& ps : pixelShaders)
+        text += "technique11 " + ps +
+                " < string Script = \"Pass=p;\"; > { pass p < string Script = \"Draw=Buffer;\"; > {" +
+                " SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, " +
+                ps + "())); SetDepthStencilState(NoDepth, 0); SetRasterizerState(NoCulling); } }\n";
+    return text;
+}
+
+constexpr int kStripWidth = 96, kStripHeight = 16;
+
+// The frame's pixel at the middle of third `third` (0..2) of its width.
+const uint8_t* third(const runtime::FrameImage& image, int third) {
+    return image.pixel(kStripWidth / 6 + third * kStripWidth / 3, kStripHeight / 2);
+}
+
+::testing::AssertionResult isColor(const uint8_t* p, int r, int g, int b) {
+    if (std::abs(p[0] - r) <= 2 && std::abs(p[1] - g) <= 2 && std::abs(p[2] - b) <= 2)
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "pixel (" << int(p[0]) << ", " << int(p[1]) << ", " << int(p[2])
+                                         << ") expected (" << r << ", " << g << ", " << b << ")";
+}
+
+// `elements` layers of `width` x `height` texels, layer i all `colors[i]`.
+runtime::TextureData solidLayers(int width, int height, const std::vector<glm::vec3>& colors, int elements) {
+    runtime::TextureData data;
+    data.width = width;
+    data.height = height;
+    data.elements = elements;
+    for (const glm::vec3& c : colors)
+        for (int t = 0; t < width * height; ++t) data.rgba.insert(data.rgba.end(), {c.r, c.g, c.b, 1.0f});
+    return data;
+}
+
+TEST(D3d10Effects, TextureArraysSetThroughTheApiShowTheElementTheCodeSelects) {
+    auto renderer = loadEffect(R"(
+Texture2DArray Layers;
+Texture2DArray Unset < int ArraySize = 5; >;
+TextureCubeArray Cubes;
+Texture1DArray Strips;
+SamplerState Point { Filter = MIN_MAG_MIP_POINT; };
+SamplerComparisonState Less { ComparisonFunc = LESS; };
+// Left to right: elements 0, 1 and 2 of Layers.
+float4 Slices(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    return Layers.Sample(Point, float3(uv, floor(uv.x * 3)));
+}
+// Left: Load of Layers' element 2, full only if GetDimensions counts 3 elements; middle: cube 1's +X
+// face; right: element 1 of Strips.
+float4 Others(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    uint w, h, elements, levels;
+    Layers.GetDimensions(0, w, h, elements, levels);
+    if (uv.x < 1.0 / 3) return Layers.Load(int4(1, 1, 2, 0)) * (elements == 3 ? 1 : 0.5);
+    if (uv.x < 2.0 / 3) return Cubes.SampleLevel(Point, float4(1, 0, 0, 1), 0);
+    return Strips.Sample(Point, float2(0.9, 1));
+}
+// An array nobody set: white in each of its ArraySize elements.
+float4 Default(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    uint w, h, elements;
+    Unset.GetDimensions(w, h, elements);
+    return float4(Unset.Sample(Point, float3(uv, 4)).rgb * (elements == 5 ? 1 : 0.5), 1);
+}
+// Compiles and links (a comparison reads a depth array, which passes have no way to render yet).
+float4 Compare(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    return Layers.SampleCmpLevelZero(Less, float3(uv, 1), 0.5) + Cubes.SampleCmp(Less, float4(1, 0, 0, 1), 0.5);
+}
+)" + fullScreenTechniques({"Slices", "Others", "Default", "Compare"}),
+                               false, "arrays.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene boxes = scene("boxes");
+    ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, "Default"));
+    EXPECT_TRUE(isColor(third(renderer->readFrame(), 1), 255, 255, 255));
+
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Layers"),
+                                     solidLayers(2, 2, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, 3), diagnostics))
+        << diagnostics.str();
+    std::vector<glm::vec3> faces(6, glm::vec3(0.2f));
+    faces.push_back({1, 1, 0});  // cube 1, +X
+    faces.insert(faces.end(), 5, glm::vec3(1, 0, 1));
+    ASSERT_TRUE(
+        renderer->setTexture(*renderer->findParameter("Cubes"), solidLayers(1, 1, faces, 2), diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Strips"),
+                                     solidLayers(4, 1, {{1, 0, 0}, {0, 1, 1}}, 2), diagnostics))
+        << diagnostics.str();
+    // A cube array's texels must fill six faces per cube.
+    EXPECT_FALSE(
+        renderer->setTexture(*renderer->findParameter("Cubes"), solidLayers(1, 1, faces, 3), diagnostics));
+
+    ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, "Slices"));
+    const runtime::FrameImage slices = renderer->readFrame();
+    EXPECT_TRUE(isColor(third(slices, 0), 255, 0, 0));
+    EXPECT_TRUE(isColor(third(slices, 1), 0, 255, 0));
+    EXPECT_TRUE(isColor(third(slices, 2), 0, 0, 255));
+    ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, "Others"));
+    const runtime::FrameImage others = renderer->readFrame();
+    EXPECT_TRUE(isColor(third(others, 0), 0, 0, 255));
+    EXPECT_TRUE(isColor(third(others, 1), 255, 255, 0));
+    EXPECT_TRUE(isColor(third(others, 2), 0, 255, 255));
+}
+
+// [SECTION] Buffers
+
+TEST(D3d10Effects, BuffersSetThroughTheApiReachThePixelsAndUnsetOnesReadZero) {
+    auto renderer = loadEffect(R"(
+// D3D packs a Light in 24 bytes; GL's std430 block pads it to 32, so the runtime repacks.
+struct Light { float3 Color; float Intensity; float2 Offset; };
+StructuredBuffer<Light> Lights;
+Buffer<float4> Colors;
+ByteAddressBuffer Raw;
+StructuredBuffer<float4> UnsetStructured;
+Buffer<float> UnsetTyped;
+ByteAddressBuffer UnsetRaw;
+// Left: Lights[1]'s members; middle: Colors[3], full only if Lights counts 2 elements; right: three
+// words of Raw from byte 4.
+float4 Read(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    uint count, stride;
+    Lights.GetDimensions(count, stride);
+    if (uv.x < 1.0 / 3) return float4(Lights[1].Offset, Lights[1].Intensity, 1);
+    if (uv.x < 2.0 / 3) return Colors.Load(3) * (count == 2 ? 1 : 0.5);
+    return float4(asfloat(Raw.Load3(4)), 1);
+}
+float4 Zeros(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    return float4(0.5 + UnsetStructured[0].rgb + UnsetTyped[0] + asfloat(UnsetRaw.Load(0)), 1);
+}
+)" + fullScreenTechniques({"Read", "Zeros"}),
+                               false, "buffers.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene boxes = scene("boxes");
+    ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, "Zeros"));
+    EXPECT_TRUE(isColor(third(renderer->readFrame(), 1), 128, 128, 128));
+
+    fx::DiagnosticList diagnostics;
+    const float lights[2][6] = {{1, 0, 0, 1, 0, 0}, {0, 1, 0, 0.5f, 0.25f, 0.75f}};
+    EXPECT_FALSE(renderer->setBuffer(*renderer->findParameter("Lights"), lights, 2, 32, diagnostics));
+    ASSERT_TRUE(
+        renderer->setBuffer(*renderer->findParameter("Lights"), lights, 2, sizeof lights[0], diagnostics))
+        << diagnostics.str();
+    const float colors[4][4] = {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {0, 0.5f, 1, 1}};
+    ASSERT_TRUE(
+        renderer->setBuffer(*renderer->findParameter("Colors"), colors, 4, sizeof colors[0], diagnostics))
+        << diagnostics.str();
+    const float raw[4] = {9, 1, 0.5f, 0};
+    ASSERT_TRUE(renderer->setBuffer(*renderer->findParameter("Raw"), raw, 4, 4, diagnostics))
+        << diagnostics.str();
+
+    ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, "Read"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_TRUE(isColor(third(frame, 0), 64, 191, 128));
+    EXPECT_TRUE(isColor(third(frame, 1), 0, 128, 255));
+    EXPECT_TRUE(isColor(third(frame, 2), 255, 128, 0));
+}
+
+// [SECTION] Multisample render targets
+
+// A parallelogram with slanted sides drawn into a 4-sample target, then read per sample by a second pass:
+// red the mean of the samples, green where they differ, blue GetDimensions' sample count / 4.
+TEST(D3d10Effects, MultisampleTargetIsReadPerSampleByALaterPass) {
+    auto renderer = loadEffect(R"(
+Texture2DMS<float4, 4> Coverage : RENDERCOLORTARGET;
+float4 Black = {0, 0, 0, 1};
+struct QuadVertex { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+float4 Slanted(QuadVertex v) : SV_Position
+{
+    return float4(v.Position.x * 0.5 + v.Position.y * 0.3, v.Position.y * 0.8, 0.5, 1);
+}
+float4 QuadVS(QuadVertex v) : SV_Position { return v.Position; }
+float4 White() : SV_Target { return 1; }
+float4 PerSample(float4 p : SV_Position) : SV_Target
+{
+    uint w, h, samples;
+    Coverage.GetDimensions(w, h, samples);
+    const int2 at = int2(p.xy);
+    const float4 first = Coverage.Load(at, 0);
+    float sum = 0;
+    bool differ = false;
+    for (int i = 0; i < 4; ++i) {
+        const float4 s = Coverage.Load(at, i);
+        sum += s.r;
+        differ = differ || any(s != first);
+    }
+    return float4(sum / 4, differ ? 1 : 0, samples / 4.0, 1);
+}
+DepthStencilState NoDepth { DepthEnable = FALSE; };
+RasterizerState Multisampled { CullMode = NONE; MultisampleEnable = TRUE; };
+technique11 Msaa < string Script = "Pass=Draw; Pass=Read;"; >
+{
+    pass Draw < string Script = "RenderColorTarget0=Coverage; ClearSetColor=Black; Clear=Color; Draw=Buffer;"; >
+    { SetVertexShader(CompileShader(vs_5_0, Slanted())); SetPixelShader(CompileShader(ps_5_0, White()));
+      SetDepthStencilState(NoDepth, 0); SetRasterizerState(Multisampled); }
+    pass Read < string Script = "RenderColorTarget0=; Draw=Buffer;"; >
+    { SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, PerSample()));
+      SetDepthStencilState(NoDepth, 0); SetRasterizerState(Multisampled); }
+}
+)",
+                               false, "multisample.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight * 2));
+    const runtime::FrameImage frame = renderer->readFrame();
+    size_t inside = 0, outside = 0, edges = 0, partial = 0, fourSamples = 0;
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            inside += p[0] == 255 && p[1] == 0;
+            outside += p[0] == 0 && p[1] == 0;
+            edges += p[1] == 255;
+            partial += p[1] == 255 && p[0] > 0 && p[0] < 255;
+            fourSamples += p[2] == 255;
+        }
+    EXPECT_GT(inside, 400u);
+    EXPECT_GT(outside, 400u);
+    // Both slanted sides cross every covered row; where the samples differ, the mean is a fraction.
+    EXPECT_GE(edges, static_cast<size_t>(2 * kStripHeight));
+    EXPECT_EQ(partial, edges);
+    EXPECT_EQ(fourSamples, static_cast<size_t>(frame.width * frame.height));
 }
 
 // [SECTION] Geometry shaders

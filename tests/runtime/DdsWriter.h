@@ -4,6 +4,7 @@
 // format; cube maps store each face's mip chain in turn (+X -X +Y -Y +Z -Z), volumes each level's slices.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <functional>
@@ -105,6 +106,50 @@ public:
                 }
             }
         }
+        std::ofstream file(path, std::ios::binary);
+        file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
+        return static_cast<bool>(file);
+    }
+
+    // A Direct3D 10 array (DDS_HEADER_DXT10, DXGI_FORMAT_R8G8B8A8_UNORM, one level): `elements` 2D
+    // textures, or cubes with `cube` (`texel(face, 0, x, y, element)`), each element's faces in turn.
+    // `truncateBy` drops bytes off the end, for the error test.
+    static bool writeDx10Array(const std::string& path, int width, int height, int elements, bool cube,
+                               const Texels& texel, size_t truncateBy = 0) {
+        std::vector<uint8_t> out;
+        auto u32 = [&](uint32_t v) {
+            for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+        };
+        out.insert(out.end(), {'D', 'D', 'S', ' '});
+        u32(124);
+        u32(0x1 | 0x2 | 0x4 | 0x1000 | 0x8);
+        u32(static_cast<uint32_t>(height));
+        u32(static_cast<uint32_t>(width));
+        u32(static_cast<uint32_t>(width * 4));
+        u32(0);
+        u32(1);
+        for (int i = 0; i < 11; ++i) u32(0);
+        u32(32);
+        u32(0x4);  // DDPF_FOURCC
+        out.insert(out.end(), {'D', 'X', '1', '0'});
+        for (int i = 0; i < 5; ++i) u32(0);
+        u32(0x1000 | (cube ? 0x8 : 0));
+        u32(cube ? 0x200 | 0xFC00 : 0);
+        for (int i = 0; i < 3; ++i) u32(0);
+        // DDS_HEADER_DXT10
+        u32(28);  // DXGI_FORMAT_R8G8B8A8_UNORM
+        u32(3);   // D3D10_RESOURCE_DIMENSION_TEXTURE2D
+        u32(cube ? 0x4 : 0);
+        u32(static_cast<uint32_t>(elements));
+        u32(0);
+        for (int element = 0; element < elements; ++element)
+            for (int face = 0; face < (cube ? 6 : 1); ++face)
+                for (int y = 0; y < height; ++y)
+                    for (int x = 0; x < width; ++x) {
+                        const DdsColor c = texel(face, 0, x, y, element);
+                        out.insert(out.end(), {c.r, c.g, c.b, c.a});
+                    }
+        out.resize(out.size() - std::min(truncateBy, out.size()));
         std::ofstream file(path, std::ios::binary);
         file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
         return static_cast<bool>(file);

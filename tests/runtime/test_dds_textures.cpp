@@ -1,5 +1,6 @@
 // DDS texture files, which nearly every FX Composer and DirectX SDK effect names: 2D with a mip chain,
-// DXT1/3/5, cube and volume textures, read through OpenImageIO. The files are written by the test
+// DXT1/3/5, cube and volume textures, read through OpenImageIO, and Direct3D 10's arrays of 2D textures
+// and of cubes. The files are written by the test
 // (DdsWriter.h) with a colour per face, level and slice, and a full-screen pass samples them at known
 // coordinates; what lands in the frame is compared with what was written.
 #include "DdsWriter.h"
@@ -148,6 +149,68 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_FALSE(diagnostics.hasErrors());
     EXPECT_NE(diagnostics.str().find("dds.fx:1:9: warning: texture file 'cube.dds' holds a cube texture"),
               std::string::npos)
+        << diagnostics.str();
+}
+
+// [SECTION] Direct3D 10 arrays (DX10 header, arraySize > 1)
+
+DdsColor byElement(int face, int, int, int, int element) {
+    return DdsColor{static_cast<uint8_t>(30 + 40 * face), 10, static_cast<uint8_t>(100 * element + 50), 255};
+}
+
+TEST_F(DdsTextures, Texture2DArrayElementsComeFromADx10ArrayFile) {
+    ASSERT_TRUE(DdsWriter::writeDx10Array((mDir / "layers.dds").string(), 2, 2, 3, false, byElement));
+    // Pixel x reads element x / 2; element 3 does not exist and clamps to 2, as in D3D.
+    auto renderer = effect(R"(Texture2DArray T < string ResourceName = "layers.dds"; >;
+SamplerState S { Filter = MIN_MAG_MIP_POINT; };)",
+                           "T.Sample(S, float3(uv, floor(uv.x * 4)))");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    for (int x = 0; x < 8; ++x)
+        EXPECT_TRUE(near(image.pixel(x, 0),
+                         DdsColor{30, 10, static_cast<uint8_t>(50 + 100 * std::min(x / 2, 2)), 255}))
+            << x;
+}
+
+TEST_F(DdsTextures, TextureCubeArrayCubesAndFacesComeFromADx10ArrayFile) {
+    ASSERT_TRUE(DdsWriter::writeDx10Array((mDir / "cubes.dds").string(), 2, 2, 2, true, byElement));
+    // Pixel x looks along axis x % 4 (of +X -X +Y -Y) in cube x / 4.
+    auto renderer = effect(R"(TextureCubeArray C < string ResourceName = "cubes.dds"; >;
+SamplerState S { Filter = MIN_MAG_MIP_POINT; };
+float3 axis(float i) {
+    float3 d[4] = { float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0), float3(0, -1, 0) };
+    return d[min((int)i, 3)];
+})",
+                           "C.SampleLevel(S, float4(axis(floor(uv.x * 8) % 4), floor(uv.x * 2)), 0)");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    for (int x = 0; x < 8; ++x)
+        EXPECT_TRUE(near(image.pixel(x, 0), DdsColor{static_cast<uint8_t>(30 + 40 * (x % 4)), 10,
+                                                     static_cast<uint8_t>(50 + 100 * (x / 4)), 255}))
+            << x;
+}
+
+TEST_F(DdsTextures, TruncatedDx10ArrayIsALocatedError) {
+    ASSERT_TRUE(DdsWriter::writeDx10Array((mDir / "short.dds").string(), 2, 2, 3, false, byElement, 5));
+    sharedContext();
+    const std::filesystem::path path = mDir / "dds.fx";
+    std::ofstream(path) << R"(Texture2DArray T < string ResourceName = "short.dds"; >;
+SamplerState S;
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS() : SV_Target { return T.Sample(S, float3(0.5, 0.5, 2)); }
+technique11 t { pass p { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)";
+    fx::DiagnosticList diagnostics;
+    auto parsed = fx::parseEffectFile(path.string(), {}, diagnostics);
+    ASSERT_TRUE(parsed) << diagnostics.str();
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_FALSE(runtime::EffectRenderer::create(compiled, diagnostics));
+    EXPECT_NE(diagnostics.str().find("dds.fx:1:16: error:"), std::string::npos) << diagnostics.str();
+    EXPECT_NE(diagnostics.str().find("the file ends inside element 2's data"), std::string::npos)
         << diagnostics.str();
 }
 

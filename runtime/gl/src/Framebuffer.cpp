@@ -17,7 +17,8 @@ void attach(GLenum attachment, const RenderTargetAttachment& target) {
                                  GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + target.face), texture.id(),
                                  target.level);
     } else {
-        gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture.id(), target.level);
+        // GL_TEXTURE_2D, or GL_TEXTURE_2D_MULTISAMPLE for D3D10's Texture2DMS targets.
+        gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment, texture.target(), texture.id(), target.level);
     }
 }
 

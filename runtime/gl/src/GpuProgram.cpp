@@ -145,6 +145,18 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
                     const GLint location = gl::GetUniformLocation(program->mProgram, s.glslName.c_str());
                     if (location >= 0) gl::ProgramUniform1i(program->mProgram, location, s.unit);
                 }
+    // StructuredBuffer and ByteAddressBuffer blocks: binding points by the pass's order of parameters.
+    const std::vector<size_t> storage = storageBufferParameters(pass);
+    for (const fx::StageProgram* stage : linked)
+        if (stage)
+            for (const fx::StorageBufferBinding& b : stage->storageBuffers) {
+                const GLuint index = gl::GetProgramResourceIndex(program->mProgram, GL_SHADER_STORAGE_BLOCK,
+                                                                 b.blockName.c_str());
+                const auto at = std::find(storage.begin(), storage.end(), b.parameter);
+                if (index != GL_INVALID_INDEX && at != storage.end())
+                    gl::ShaderStorageBlockBinding(program->mProgram, index,
+                                                  static_cast<GLuint>(at - storage.begin()));
+            }
     for (int i = 0; i < 3; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
@@ -152,6 +164,15 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
         block.data.assign(linked[i]->uniformBlockSize, 0);
     }
     return program;
+}
+
+std::vector<size_t> GpuProgram::storageBufferParameters(const fx::CompiledPass& pass) {
+    std::vector<size_t> parameters;
+    for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+        for (const fx::StorageBufferBinding& b : stage->storageBuffers) parameters.push_back(b.parameter);
+    std::sort(parameters.begin(), parameters.end());
+    parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
+    return parameters;
 }
 
 bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {

@@ -62,6 +62,47 @@ GpuTexture GpuTexture::create3D(fx::TextureFormat format, int width, int height,
     return GpuTexture(GL_TEXTURE_3D, format, width, height, levels, depth);
 }
 
+GpuTexture GpuTexture::create1DArray(fx::TextureFormat format, int width, int elements, int mipLevels) {
+    width = std::max(width, 1);
+    const int chain = fullMipChainLength(width, 1);
+    return GpuTexture(GL_TEXTURE_1D_ARRAY, format, width, 1,
+                      mipLevels <= 0 ? chain : std::min(mipLevels, chain), std::max(elements, 1));
+}
+
+GpuTexture GpuTexture::create2DArray(fx::TextureFormat format, int width, int height, int elements,
+                                     int mipLevels) {
+    width = std::max(width, 1);
+    height = std::max(height, 1);
+    const int chain = fullMipChainLength(width, height);
+    return GpuTexture(GL_TEXTURE_2D_ARRAY, format, width, height,
+                      mipLevels <= 0 ? chain : std::min(mipLevels, chain), std::max(elements, 1));
+}
+
+GpuTexture GpuTexture::createCubeArray(fx::TextureFormat format, int size, int cubes, int mipLevels) {
+    size = std::max(size, 1);
+    const int chain = fullMipChainLength(size, size);
+    return GpuTexture(GL_TEXTURE_CUBE_MAP_ARRAY, format, size, size,
+                      mipLevels <= 0 ? chain : std::min(mipLevels, chain), 6 * std::max(cubes, 1));
+}
+
+GpuTexture GpuTexture::create2DMultisample(fx::TextureFormat format, int width, int height, int samples) {
+    GpuTexture texture;
+    texture.mTarget = GL_TEXTURE_2D_MULTISAMPLE;
+    texture.mFormat = format;
+    texture.mWidth = std::max(width, 1);
+    texture.mHeight = std::max(height, 1);
+    texture.mLevels = 1;
+    texture.mSamples = std::max(samples, 1);
+    texture.mSerial = gNextSerial++;
+    gl::GenTextures(1, &texture.mId);
+    gl::BindTexture(texture.mTarget, texture.mId);
+    // Fixed sample locations: every texel's sample i sits at the same place, as D3D's standard patterns.
+    gl::TexStorage2DMultisample(texture.mTarget, texture.mSamples, texture.glFormat().internalFormat,
+                                texture.mWidth, texture.mHeight, GL_TRUE);
+    gl::BindTexture(texture.mTarget, 0);
+    return texture;
+}
+
 GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels, int depth)
     : mTarget(target),
       mFormat(format),
@@ -74,8 +115,10 @@ GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int h
     gl::BindTexture(mTarget, mId);
     // Immutable storage: complete by construction, whatever the filter (a mutable texture with one
     // level and the default mipmapped min filter samples as black).
-    if (mTarget == GL_TEXTURE_3D)
+    if (mTarget == GL_TEXTURE_3D || mTarget == GL_TEXTURE_2D_ARRAY || mTarget == GL_TEXTURE_CUBE_MAP_ARRAY)
         gl::TexStorage3D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight, mDepth);
+    else if (mTarget == GL_TEXTURE_1D_ARRAY)
+        gl::TexStorage2D(mTarget, mLevels, glFormat().internalFormat, mWidth, mDepth);
     else
         gl::TexStorage2D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight);
     gl::TexParameteri(mTarget, GL_TEXTURE_MAX_LEVEL, mLevels - 1);
@@ -103,6 +146,7 @@ GpuTexture& GpuTexture::operator=(GpuTexture&& other) noexcept {
         mHeight = other.mHeight;
         mDepth = other.mDepth;
         mLevels = other.mLevels;
+        mSamples = other.mSamples;
         mSerial = std::exchange(other.mSerial, 0);
     }
     return *this;
@@ -129,6 +173,17 @@ void GpuTexture::uploadVolumeRGBA32F(const float* pixels, int level) {
     gl::BindTexture(mTarget, mId);
     gl::TexSubImage3D(mTarget, level, 0, 0, 0, std::max(mWidth >> level, 1), std::max(mHeight >> level, 1),
                       std::max(mDepth >> level, 1), GL_RGBA, GL_FLOAT, pixels);
+    gl::BindTexture(mTarget, 0);
+}
+
+void GpuTexture::uploadLayerRGBA32F(const float* pixels, int level, int layer) {
+    const int width = std::max(mWidth >> level, 1);
+    gl::BindTexture(mTarget, mId);
+    if (mTarget == GL_TEXTURE_1D_ARRAY)
+        gl::TexSubImage2D(mTarget, level, 0, layer, width, 1, GL_RGBA, GL_FLOAT, pixels);
+    else
+        gl::TexSubImage3D(mTarget, level, 0, 0, layer, width, std::max(mHeight >> level, 1), 1, GL_RGBA,
+                          GL_FLOAT, pixels);
     gl::BindTexture(mTarget, 0);
 }
 

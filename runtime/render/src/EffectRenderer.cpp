@@ -61,6 +61,15 @@ bool EffectRenderer::isPinned(size_t index) const {
     return mImpl->pinned.at(index);
 }
 
+bool EffectRenderer::setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics) {
+    return mImpl->setTexture(index, data, diagnostics);
+}
+
+bool EffectRenderer::setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
+                               fx::DiagnosticSink& diagnostics) {
+    return mImpl->setBuffer(index, bytes, elements, elementBytes, diagnostics);
+}
+
 bool EffectRenderer::setParameterFromText(std::string_view name, std::string_view text,
                                           fx::DiagnosticSink& diagnostics) {
     const std::optional<size_t> index = findParameter(name);

@@ -29,9 +29,36 @@ GpuTexture makeNoiseTexture() {
     return texture;
 }
 
-// White: the neutral value for textures the effect multiplies with.
-GpuTexture makeNeutralTexture(fx::BaseType type) {
+bool isArrayType(fx::BaseType type) {
+    return type == fx::BaseType::Texture1DArray || type == fx::BaseType::Texture2DArray ||
+           type == fx::BaseType::TextureCubeArray;
+}
+
+// An array texture of a D3D10 array type: `elements` elements (cubes for a TextureCubeArray).
+GpuTexture makeArrayTexture(fx::BaseType type, fx::TextureFormat format, int width, int height, int elements,
+                            int mipLevels) {
+    if (type == fx::BaseType::Texture1DArray)
+        return GpuTexture::create1DArray(format, width, elements, mipLevels);
+    if (type == fx::BaseType::TextureCubeArray)
+        return GpuTexture::createCubeArray(format, width, elements, mipLevels);
+    return GpuTexture::create2DArray(format, width, height, elements, mipLevels);
+}
+
+// White: the neutral value for textures the effect multiplies with. A texture array gets its ArraySize
+// elements of it, so that GetDimensions reports what the effect declared.
+GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples = 1) {
     const uint8_t white[4] = {255, 255, 255, 255};
+    if (type == fx::BaseType::Texture2DMS) {
+        GpuTexture texture = GpuTexture::create2DMultisample(fx::TextureFormat::RGBA8, 1, 1, samples);
+        gl::ClearTexImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+        return texture;
+    }
+    if (isArrayType(type)) {
+        const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        GpuTexture texture = makeArrayTexture(type, fx::TextureFormat::RGBA8, 1, 1, elements, 1);
+        for (int layer = 0; layer < texture.layers(); ++layer) texture.uploadLayerRGBA32F(one, 0, layer);
+        return texture;
+    }
     if (type == fx::BaseType::Texture3D) {
         const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
         GpuTexture texture = GpuTexture::create3D(fx::TextureFormat::RGBA8, 1, 1, 1);
@@ -48,13 +75,69 @@ GpuTexture makeNeutralTexture(fx::BaseType type) {
     return texture;
 }
 
-const char* textureFileKindName(TextureFile::Kind kind) {
-    return kind == TextureFile::Kind::Cube ? "cube" : kind == TextureFile::Kind::Volume ? "volume" : "2D";
+std::string textureFileKindName(const TextureFile& file) {
+    const std::string kind = file.kind == TextureFile::Kind::Cube     ? "cube"
+                             : file.kind == TextureFile::Kind::Volume ? "volume"
+                                                                      : "2D";
+    return file.elements > 1 ? kind + " array (" + std::to_string(file.elements) + " elements)" : kind;
+}
+
+std::string textureTypeName(fx::BaseType type) {
+    switch (type) {
+        case fx::BaseType::TextureCube:
+            return "cube";
+        case fx::BaseType::Texture3D:
+            return "volume";
+        case fx::BaseType::Texture1DArray:
+            return "1D array";
+        case fx::BaseType::Texture2DArray:
+            return "2D array";
+        case fx::BaseType::TextureCubeArray:
+            return "cube array";
+        default:
+            return "2D";
+    }
+}
+
+// A texture array from a file's levels (each level every layer in turn).
+GpuTexture makeFileArray(const TextureFile& file, const fx::TextureDesc& desc) {
+    const size_t faces = file.kind == TextureFile::Kind::Cube ? 6 : 1;
+    const size_t layers = faces * static_cast<size_t>(file.elements);
+    int levels = 0;
+    for (const std::vector<float>& level : file.levels) {
+        const size_t w = static_cast<size_t>(std::max(file.width >> levels, 1));
+        const size_t h = static_cast<size_t>(std::max(file.height >> levels, 1));
+        if (level.size() != w * h * layers * 4) break;
+        ++levels;
+    }
+    const bool regenerate = levels == 1 && desc.mipLevels != 1;
+    GpuTexture texture = makeArrayTexture(desc.type, fx::TextureFormat::RGBA16F, file.width, file.height,
+                                          file.elements, regenerate ? 0 : levels);
+    for (int level = 0; level < levels; ++level) {
+        const size_t layerFloats = static_cast<size_t>(std::max(file.width >> level, 1)) *
+                                   static_cast<size_t>(std::max(file.height >> level, 1)) * 4;
+        for (size_t layer = 0; layer < layers; ++layer)
+            texture.uploadLayerRGBA32F(file.levels[static_cast<size_t>(level)].data() + layer * layerFloats,
+                                       level, static_cast<int>(layer));
+    }
+    if (regenerate) texture.generateMipmaps();
+    return texture;
 }
 
 // A DDS file's texture, when its kind is what the effect samples: every level the file has (a cube's
 // smaller levels regenerated), float storage so that no file format loses range. nullopt on a mismatch.
 std::optional<GpuTexture> makeFileTexture(const TextureFile& file, const fx::TextureDesc& desc) {
+    // A Texture2DArray takes any 2D file (one element or more), a Texture1DArray one a texel high, a
+    // TextureCubeArray any cube file; a plain texture takes no array.
+    if (isArrayType(desc.type)) {
+        const bool fits = desc.type == fx::BaseType::TextureCubeArray
+                              ? file.kind == TextureFile::Kind::Cube
+                              : file.kind == TextureFile::Kind::Flat &&
+                                    (desc.type == fx::BaseType::Texture2DArray || file.height == 1);
+        if (!fits || file.levels.empty()) return std::nullopt;
+        return makeFileArray(file, desc);
+    }
+    if (file.elements > 1) return std::nullopt;
     const bool wantCube = desc.type == fx::BaseType::TextureCube;
     const bool wantVolume = desc.type == fx::BaseType::Texture3D;
     if (wantCube != (file.kind == TextureFile::Kind::Cube) ||
@@ -93,6 +176,47 @@ std::optional<GpuTexture> makeFileTexture(const TextureFile& file, const fx::Tex
         texture.uploadRGBA32F(file.levels[static_cast<size_t>(level)].data(), level);
     if (regenerate) texture.generateMipmaps();
     return texture;
+}
+
+// A Buffer<T>'s texel: T's GL buffer-texture format and size. nullopt for a T GL cannot hold as texels
+// (doubles, structs, 16-bit types).
+struct TexelFormat {
+    GLenum format;
+    size_t bytes;
+};
+std::optional<TexelFormat> bufferTexelFormat(const std::string& templateArgs) {
+    std::string t;
+    for (char c : templateArgs)
+        if (c != ' ' && c != '\t') t += c;
+    if (t.empty()) t = "float4";  // Buffer without <T> reads float4s
+    static const struct {
+        const char* name;
+        GLenum formats[4];
+    } kTypes[] = {{"float", {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F}},
+                  {"int", {GL_R32I, GL_RG32I, GL_RGB32I, GL_RGBA32I}},
+                  {"uint", {GL_R32UI, GL_RG32UI, GL_RGB32UI, GL_RGBA32UI}}};
+    for (const auto& type : kTypes) {
+        const std::string name = type.name;
+        if (t.rfind(name, 0) != 0) continue;
+        const std::string rest = t.substr(name.size());
+        const int n = rest.empty()                                           ? 1
+                      : rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4' ? rest[0] - '0'
+                                                                             : 0;
+        if (n == 0) continue;
+        return TexelFormat{type.formats[n - 1], static_cast<size_t>(n) * 4};
+    }
+    return std::nullopt;
+}
+
+// The storage layout a pass's code gives a StructuredBuffer or ByteAddressBuffer (the first found; every
+// unit declares the same type the same way); null if no pass reads it.
+const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, size_t parameter) {
+    for (const fx::CompiledTechnique& technique : effect.techniques)
+        for (const fx::CompiledPass& pass : technique.passes)
+            for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+                for (const fx::StorageBufferBinding& b : stage->storageBuffers)
+                    if (b.parameter == parameter) return &b;
+    return nullptr;
 }
 
 // Four independent lanes of (lane ^ word) * odd, rotated: each step is a bijection of the lane for a
@@ -214,7 +338,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         r.samplers.emplace(desc.parameter, SamplerObject(desc, false));
         r.comparisonSamplers.emplace(desc.parameter, SamplerObject(desc, true));
     }
-    if (!r.createFileTextures(diagnostics)) return nullptr;
+    if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
     r.uniformRing = std::make_unique<UniformRing>();
     return resources;
@@ -233,10 +357,24 @@ const fx::Value* EffectResources::find(std::string_view name) const {
 
 bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
+        if (desc.type == fx::BaseType::Texture2DMS) {
+            GLint most = 0;
+            gl::GetIntegerv(
+                isDepthFormat(desc.format) ? GL_MAX_DEPTH_TEXTURE_SAMPLES : GL_MAX_COLOR_TEXTURE_SAMPLES,
+                &most);
+            if (desc.samples > most) {
+                diagnostics.report(
+                    fx::DiagId::UnsupportedFeature, desc.loc,
+                    {"'" + parameterInfo()[desc.parameter].name + "' has " + std::to_string(desc.samples) +
+                     " samples per texel; this OpenGL holds at most " + std::to_string(most)});
+                return false;
+            }
+        }
         if (isRenderTarget(desc)) continue;
         const bool cube = desc.type == fx::BaseType::TextureCube;
         const std::string& semantic = parameterInfo()[desc.parameter].semantic;
-        if (desc.kind == fx::TextureDesc::Kind::Runtime && fx::equalsIgnoreCase(semantic, "noise") && !cube) {
+        if (desc.kind == fx::TextureDesc::Kind::Runtime && fx::equalsIgnoreCase(semantic, "noise") &&
+            desc.type == fx::BaseType::Texture2D) {
             textures[desc.parameter] = makeNoiseTexture();
             continue;
         }
@@ -261,13 +399,10 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
                 // with the neutral texture as for a missing file.
                 diagnostics.report(fx::Diagnostic{
                     fx::DiagId::TextureFileNotFound, fx::Severity::Warning, desc.loc,
-                    "texture file '" + desc.resourceName + "' holds a " + textureFileKindName(file->kind) +
-                        " texture, but the effect samples it as a " +
-                        (cube                                   ? "cube"
-                         : desc.type == fx::BaseType::Texture3D ? "volume"
-                                                                : "2D") +
+                    "texture file '" + desc.resourceName + "' holds a " + textureFileKindName(*file) +
+                        " texture, but the effect samples it as a " + textureTypeName(desc.type) +
                         " texture; using a neutral texture"});
-                textures[desc.parameter] = makeNeutralTexture(desc.type);
+                textures[desc.parameter] = makeNeutralTexture(desc.type, desc.arraySize, desc.samples);
                 continue;
             }
             texture->setLabel(parameterInfo()[desc.parameter].name);
@@ -275,7 +410,7 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
             continue;
         }
         if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() && !cube &&
-            desc.type != fx::BaseType::Texture3D) {
+            desc.type == fx::BaseType::Texture2D) {
             std::string error;
             std::optional<Image> image = loadImageFile(desc.resolvedPath, error);
             if (!image) {
@@ -296,7 +431,7 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
             textures[desc.parameter] = std::move(texture);
             continue;
         }
-        textures[desc.parameter] = makeNeutralTexture(desc.type);
+        textures[desc.parameter] = makeNeutralTexture(desc.type, desc.arraySize, desc.samples);
     }
     return true;
 }
@@ -318,10 +453,128 @@ void EffectResources::ensureFrameResources(int width, int height, const std::set
         if (it != textures.end()) framebuffers.evict(it->second);
         GpuTexture texture = desc.type == fx::BaseType::TextureCube
                                  ? GpuTexture::createCube(desc.format, w, desc.mipLevels)
+                             : desc.type == fx::BaseType::Texture2DMS
+                                 ? GpuTexture::create2DMultisample(desc.format, w, h, desc.samples)
                                  : GpuTexture::create2D(desc.format, w, h, desc.mipLevels);
         texture.setLabel(parameterInfo()[desc.parameter].name);
         textures[desc.parameter] = std::move(texture);
     }
+}
+
+bool EffectResources::setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics) {
+    const fx::TextureDesc* desc = index < parameterInfo().size() ? mCompiled->findTexture(index) : nullptr;
+    const fx::SourceLoc where =
+        index < parameterInfo().size() ? parameterInfo()[index].loc : fx::SourceLoc{mCompiled->path, 0, 0};
+    auto refuse = [&](const std::string& why) {
+        diagnostics.report(fx::Diagnostic{fx::DiagId::TypeMismatch, fx::Severity::Error, where, why});
+        return false;
+    };
+    if (!desc || isRenderTarget(*desc) || desc->type == fx::BaseType::Texture3D ||
+        desc->type == fx::BaseType::Texture2DMS)
+        return refuse("setTexture: parameter " + std::to_string(index) +
+                      " is not a 2D, cube or array texture that passes only read");
+    const bool cube = desc->type == fx::BaseType::TextureCube || desc->type == fx::BaseType::TextureCubeArray;
+    const int elements = isArrayType(desc->type) ? data.elements : 1;
+    const size_t layers = static_cast<size_t>(std::max(elements, 0)) * (cube ? 6 : 1);
+    const bool sizeOk =
+        data.width >= 1 && data.height >= 1 && data.width <= 16384 && data.height <= 16384 && elements >= 1 &&
+        elements <= 2048 && (!cube || data.width == data.height) &&
+        (desc->type != fx::BaseType::Texture1DArray || data.height == 1) &&
+        data.rgba.size() == static_cast<size_t>(data.width) * static_cast<size_t>(data.height) * layers * 4;
+    if (!sizeOk)
+        return refuse("setTexture: '" + parameterInfo()[index].name + "' (" +
+                      parameterInfo()[index].type.hlslName() + ") needs width x height x " +
+                      (cube ? "6 faces x " : "") + "elements RGBA texels" + (cube ? ", square faces" : ""));
+    const int levels = desc->mipLevels == 1 ? 1 : 0;
+    const fx::TextureFormat format = fx::TextureFormat::RGBA32F;
+    const size_t layerFloats = static_cast<size_t>(data.width) * static_cast<size_t>(data.height) * 4;
+    GpuTexture texture;
+    if (isArrayType(desc->type)) {
+        texture = makeArrayTexture(desc->type, format, data.width, data.height, elements, levels);
+        for (size_t layer = 0; layer < layers; ++layer)
+            texture.uploadLayerRGBA32F(data.rgba.data() + layer * layerFloats, 0, static_cast<int>(layer));
+    } else if (cube) {
+        texture = GpuTexture::createCube(format, data.width, levels);
+        for (int face = 0; face < 6; ++face)
+            texture.uploadRGBA32F(data.rgba.data() + static_cast<size_t>(face) * layerFloats, 0, face);
+    } else {
+        texture = GpuTexture::create2D(format, data.width, data.height, levels);
+        texture.uploadRGBA32F(data.rgba.data());
+    }
+    texture.generateMipmaps();
+    texture.setLabel(parameterInfo()[index].name);
+    textures[index] = std::move(texture);
+    // What render targets hold after earlier frames was drawn from the old texels: nothing is reused.
+    targetHistory.clear();
+    return true;
+}
+
+// Zeros until the application sets them: what D3D10 reads from a resource slot with nothing bound.
+bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
+    for (size_t i = 0; i < parameterInfo().size(); ++i) {
+        const fx::TypeDesc& type = parameterInfo()[i].type;
+        if (!type.isBuffer()) continue;
+        if (type.base == fx::BaseType::Buffer) {
+            const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
+            if (!texel) {
+                diagnostics.report(
+                    fx::DiagId::UnsupportedFeature, parameterInfo()[i].loc,
+                    {"Buffer<" + type.templateArgs +
+                     ">: GL buffer textures hold 32-bit float, int and uint elements of 1 to 4 "
+                     "components"});
+                return false;
+            }
+            buffers[i] = GpuBuffer::create(nullptr, texel->bytes, texel->format);
+            continue;
+        }
+        const fx::StorageBufferBinding* layout = storageLayout(*mCompiled, i);
+        buffers[i] = GpuBuffer::create(nullptr, layout ? std::max<size_t>(layout->glStride, 4) : 16);
+    }
+    return true;
+}
+
+bool EffectResources::setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
+                                fx::DiagnosticSink& diagnostics) {
+    const bool isBuffer = index < parameterInfo().size() && parameterInfo()[index].type.isBuffer();
+    auto refuse = [&](const std::string& why) {
+        const fx::SourceLoc where = index < parameterInfo().size() ? parameterInfo()[index].loc
+                                                                   : fx::SourceLoc{mCompiled->path, 0, 0};
+        diagnostics.report(fx::Diagnostic{fx::DiagId::TypeMismatch, fx::Severity::Error, where, why});
+        return false;
+    };
+    if (!isBuffer)
+        return refuse("setBuffer: parameter " + std::to_string(index) +
+                      " is not a Buffer, StructuredBuffer or ByteAddressBuffer");
+    const fx::TypeDesc& type = parameterInfo()[index].type;
+    const std::string what = "setBuffer: '" + parameterInfo()[index].name + "' (" + type.hlslName() + ") ";
+    if ((bytes == nullptr && elements > 0) || elements > (size_t(1) << 28) || elementBytes > 65536)
+        return refuse(what + "got no bytes or too many");
+    const size_t total = elements * elementBytes;
+    if (type.base == fx::BaseType::Buffer) {
+        const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
+        if (!texel || elementBytes != texel->bytes)
+            return refuse(what + "takes elements of " + std::to_string(texel ? texel->bytes : 0) + " bytes");
+        buffers[index] = GpuBuffer::create(bytes, total, texel->format);
+    } else if (type.base == fx::BaseType::ByteAddressBuffer) {
+        if (total % 4 != 0) return refuse(what + "takes whole 32-bit words");
+        buffers[index] = GpuBuffer::create(bytes, total);
+    } else if (const fx::StorageBufferBinding* layout = storageLayout(*mCompiled, index)) {
+        if (elementBytes != layout->d3dStride)
+            return refuse(what + "takes elements of " + std::to_string(layout->d3dStride) +
+                          " bytes (its members packed as D3D packs them)");
+        // From D3D's packing to the GL block's (std430 aligns vectors and pads elements).
+        std::vector<uint8_t> packed(elements * layout->glStride, 0);
+        const auto* in = static_cast<const uint8_t*>(bytes);
+        for (size_t e = 0; e < elements; ++e)
+            for (const fx::StorageBufferBinding::Run& run : layout->runs)
+                std::memcpy(packed.data() + e * layout->glStride + run.glOffset,
+                            in + e * layout->d3dStride + run.d3dOffset, run.bytes);
+        buffers[index] = GpuBuffer::create(packed.data(), packed.size());
+    } else {
+        buffers[index] = GpuBuffer::create(bytes, total);  // no pass reads it
+    }
+    targetHistory.clear();  // as for setTexture
+    return true;
 }
 
 GpuMesh& EffectResources::gpuMesh(const std::shared_ptr<const Mesh>& mesh) {

@@ -8,6 +8,7 @@
 #include "BatchedPass.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
+#include <runtime/GpuBuffer.h>
 #include <runtime/GpuMesh.h>
 #include <runtime/GpuProgram.h>
 #include <runtime/GpuTexture.h>
@@ -19,6 +20,7 @@
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
+#include <runtime/EffectRenderer.h>
 #include <runtime/Scene.h>
 
 #include <map>
@@ -65,6 +67,7 @@ public:
     std::map<std::pair<size_t, size_t>, BatchedSlot> batchedPasses;
     std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
     std::map<size_t, GpuTexture> textures;                // by texture parameter index
+    std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)
     // Mipmapped render targets written since their mip chain was last generated: regenerated before a
     // pass samples them (D3D9's AUTOGENMIPMAP).
     std::set<const GpuTexture*> staleMipChains;
@@ -94,12 +97,18 @@ public:
     // allocate (null: all); others already allocated are still resized.
     void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
+    // EffectRenderer::setTexture.
+    bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
+    // EffectRenderer::setBuffer.
+    bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
+                   fx::DiagnosticSink& diagnostics);
     void updateSceneCache(const Scene& scene);
     // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
     uint64_t targetIdentity(int resource) const;
 
 private:
     bool createFileTextures(fx::DiagnosticSink& diagnostics);
+    bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
 
     std::shared_ptr<const fx::CompiledEffect> mCompiled;
     std::unordered_map<std::string, size_t> mParameterIndex;

@@ -162,6 +162,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     bindSamplers(pass.vertex);
     bindSamplers(pass.geometry);
     bindSamplers(pass.fragment);
+    bindStorageBuffers(pass);
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
     if (mPort.cascade >= 0) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
@@ -340,6 +341,11 @@ bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
     std::string error;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     RenderTargets targets = mTargets;
+    // A multisample colour target with a depth target of another sample count cannot be one framebuffer;
+    // a pass that tests no depth is drawn without it, as above.
+    const bool otherSamples = mTargets.depth.texture && mTargets.colors[0].texture &&
+                              mTargets.depth.texture->samples() != mTargets.colors[0].texture->samples();
+    if (otherSamples && !usesDepth) targets.depth = {};
     if (depthTargetIsSmaller()) {
         if (!usesDepth) {
             targets.depth = {};
@@ -448,8 +454,12 @@ void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {
             texture->generateMipmaps();
         }
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
+        auto buffer =
+            textureParameter ? mResources.buffers.find(*textureParameter) : mResources.buffers.end();
         if (texture) {
             gl::BindTexture(texture->target(), texture->id());
+        } else if (buffer != mResources.buffers.end() && buffer->second.texture()) {
+            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->second.texture());  // Buffer<T>
         } else {
             gl::BindTexture(GL_TEXTURE_2D, 0);
         }
@@ -460,6 +470,15 @@ void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {
         } else {
             SamplerObject::unbind(binding.unit);
         }
+    }
+}
+
+void FrameExecutor::bindStorageBuffers(const fx::CompiledPass& pass) {
+    const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
+    for (size_t binding = 0; binding < parameters.size(); ++binding) {
+        auto buffer = mResources.buffers.find(parameters[binding]);
+        if (buffer != mResources.buffers.end())
+            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
     }
 }
 

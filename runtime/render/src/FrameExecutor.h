@@ -77,6 +77,7 @@ private:
     // shader after all (see draw()).
     GpuProgram* depthOnly(const fx::CompiledPass& pass, size_t passIndex, const RenderStateBlock& states);
     void bindSamplers(const fx::StageProgram& stage);
+    void bindStorageBuffers(const fx::CompiledPass& pass);
     // Runs the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per pass
     // (perObject false) and the per-object ones per draw (perObject true); without, all per draw. Each
     // runs only if a parameter it reads changed (PassPreshaders).

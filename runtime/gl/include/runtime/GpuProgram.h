@@ -66,6 +66,11 @@ public:
 
     bool hasShaders() const { return mProgram != 0; }
 
+    // The effect parameters behind the pass's storage blocks (StructuredBuffer, ByteAddressBuffer), in
+    // the order of their binding points: parameter k is bound at GL_SHADER_STORAGE_BUFFER binding k in
+    // every program linked from the pass.
+    static std::vector<size_t> storageBufferParameters(const fx::CompiledPass& pass);
+
     // Makes the program current; the next upload() binds every stage's block whatever it holds.
     void bind();
     // Packs the stages' uniform blocks from `parameters` (one value per effect parameter) and `arguments`

@@ -32,6 +32,16 @@ public:
     static GpuTexture createCube(fx::TextureFormat format, int size, int mipLevels = 1);
     // A volume texture (DDS volume files): `depth` slices; mipLevels <= 0 is the chain of the largest side.
     static GpuTexture create3D(fx::TextureFormat format, int width, int height, int depth, int mipLevels = 1);
+    // D3D10's texture arrays: `elements` layers (a cube array's are cubes: 6 layers each); a 1D array's
+    // height is 1.
+    static GpuTexture create1DArray(fx::TextureFormat format, int width, int elements, int mipLevels = 1);
+    static GpuTexture create2DArray(fx::TextureFormat format, int width, int height, int elements,
+                                    int mipLevels = 1);
+    static GpuTexture createCubeArray(fx::TextureFormat format, int size, int cubes, int mipLevels = 1);
+    // D3D10's Texture2DMS: `samples` per texel (at most the driver's GL_MAX_COLOR_TEXTURE_SAMPLES or
+    // GL_MAX_DEPTH_TEXTURE_SAMPLES, which the caller checks), one level, contents undefined until drawn or
+    // cleared.
+    static GpuTexture create2DMultisample(fx::TextureFormat format, int width, int height, int samples);
 
     GpuTexture() = default;
     ~GpuTexture();
@@ -47,11 +57,15 @@ public:
     void uploadRGBA32F(const float* pixels, int level = 0, int face = 0);
     // Every slice of one level of a volume texture, slice after slice, as RGBA floats.
     void uploadVolumeRGBA32F(const float* pixels, int level = 0);
+    // One layer of one level of an array texture as RGBA floats (a cube array's layer is cube * 6 + face).
+    void uploadLayerRGBA32F(const float* pixels, int level, int layer);
     void generateMipmaps() const;  // GL storage only: the object itself does not change
     void setLabel(const std::string& label);
 
     GLuint id() const { return mId; }
-    GLenum target() const { return mTarget; }  // GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP or GL_TEXTURE_3D
+    // GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_3D, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY or
+    // GL_TEXTURE_CUBE_MAP_ARRAY
+    GLenum target() const { return mTarget; }
     fx::TextureFormat format() const { return mFormat; }
     const GlTextureFormat& glFormat() const { return glTextureFormat(mFormat); }
     bool isDepth() const { return glFormat().isDepth; }
@@ -59,6 +73,12 @@ public:
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int mipLevels() const { return mLevels; }
+    bool isArray() const {
+        return mTarget == GL_TEXTURE_1D_ARRAY || mTarget == GL_TEXTURE_2D_ARRAY ||
+               mTarget == GL_TEXTURE_CUBE_MAP_ARRAY;
+    }
+    int layers() const { return isArray() ? mDepth : 1; }  // an array's layers (6 per cube)
+    int samples() const { return mSamples; }               // 1 unless multisampled
     // Unique for the life of the process, unlike GL names, which GL reuses after deletion: what the
     // framebuffer cache keys on.
     uint64_t serial() const { return mSerial; }
@@ -75,8 +95,9 @@ private:
     fx::TextureFormat mFormat = fx::TextureFormat::RGBA8;
     int mWidth = 0;
     int mHeight = 0;
-    int mDepth = 1;  // slices of a 3D texture
+    int mDepth = 1;  // slices of a 3D texture, layers of an array
     int mLevels = 0;
+    int mSamples = 1;
     uint64_t mSerial = 0;
 };
 

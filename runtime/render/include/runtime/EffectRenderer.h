@@ -57,6 +57,15 @@ struct FrameOptions {
     std::vector<std::string> outputTargets;
 };
 
+// Texels for EffectRenderer::setTexture: RGBA floats, top row first, layer after layer: a cube's six faces
+// (+X -X +Y -Y +Z -Z), an array's elements, a cube array's cubes (each six faces) in turn.
+struct TextureData {
+    int width = 0;
+    int height = 1;
+    int elements = 1;  // an array's elements (cubes for a TextureCubeArray); 1 for other textures
+    std::vector<float> rgba;
+};
+
 class EffectResources;  // opaque: what the renderer owns (runtime/render/src/EffectResources.h)
 
 class EffectRenderer {
@@ -79,6 +88,18 @@ public:
     bool isPinned(size_t index) const;
     // Parses VALUE for the parameter's type ("0.5", "true", "1,0,0", "{1, 0, 0}") and sets it.
     bool setParameterFromText(std::string_view name, std::string_view text, fx::DiagnosticSink& diagnostics);
+    // Gives a texture parameter that is not a render target the application's texels (replacing its file
+    // or default), as a texture of the parameter's type: Texture2D, TextureCube, Texture1DArray (height
+    // 1), Texture2DArray, TextureCubeArray; mip levels as the effect declares them (generated). False,
+    // with a diagnostic, for another parameter or texels that do not fill width x height x layers.
+    bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
+    // Gives a D3D10 buffer parameter its contents: `elements` elements of `elementBytes` each, laid out as
+    // D3D lays them out (Buffer<T>: T's components as 32-bit values; StructuredBuffer<T>: T packed with
+    // 4-byte alignment, as FX11 applications fill them; ByteAddressBuffer: raw bytes, elementBytes 4 per
+    // word). Until set, a buffer reads as zeros, as an unbound D3D10 resource does. False, with a
+    // diagnostic, for another parameter or an element size that is not the type's.
+    bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
+                   fx::DiagnosticSink& diagnostics);
 
     // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
     // GL error occurred.
