@@ -7,6 +7,7 @@
 #include "ScratchDirectory.h"
 #include "effects/EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
+#include <runtime/TextureFile.h>
 
 #include <cmath>
 #include <filesystem>
@@ -212,6 +213,20 @@ technique11 t { pass p { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
     EXPECT_NE(diagnostics.str().find("dds.fx:1:16: error:"), std::string::npos) << diagnostics.str();
     EXPECT_NE(diagnostics.str().find("the file ends inside element 2's data"), std::string::npos)
         << diagnostics.str();
+
+    // A header that claims 16384² texels per element is refused before anything that size is allocated.
+    const std::string huge = (mDir / "huge.dds").string();
+    ASSERT_TRUE(DdsWriter::writeDx10Array(huge, 2, 2, 3, false, byElement));
+    {
+        std::fstream file(huge, std::ios::in | std::ios::out | std::ios::binary);
+        const char side[4] = {0, 0x40, 0, 0};  // 16384, little-endian
+        file.seekp(12);
+        file.write(side, 4);
+        file.write(side, 4);
+    }
+    std::string error;
+    EXPECT_FALSE(runtime::loadTextureFile(huge, error));
+    EXPECT_EQ(error, "the file ends inside element 0's data");
 }
 
 }  // namespace

@@ -133,6 +133,17 @@ std::optional<TextureFile> readDx10Array(const std::string& path, std::string& e
     file.height = static_cast<int>(height);
     file.elements = static_cast<int>(elements);
     const size_t layers = size_t(elements) * (cube ? 6 : 1);
+    // The data's size is checked before any allocation: a header may claim 2048 elements of 16384² texels.
+    size_t chainBytes = 0;
+    for (uint32_t level = 0; level < levels; ++level)
+        chainBytes +=
+            size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u) * size_t(layout->bytes);
+    const size_t elementBytes = chainBytes * (cube ? 6 : 1);
+    if ((bytes.size() - 148) / elementBytes < elements) {
+        error =
+            "the file ends inside element " + std::to_string((bytes.size() - 148) / elementBytes) + "'s data";
+        return TextureFile{};
+    }
     file.levels.resize(levels);
     for (uint32_t level = 0; level < levels; ++level)
         file.levels[level].resize(size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u) *
@@ -141,10 +152,6 @@ std::optional<TextureFile> readDx10Array(const std::string& path, std::string& e
     for (size_t layer = 0; layer < layers; ++layer) {
         for (uint32_t level = 0; level < levels; ++level) {
             const size_t texels = size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u);
-            if (bytes.size() - at < texels * size_t(layout->bytes)) {
-                error = "the file ends inside element " + std::to_string(layer / (cube ? 6 : 1)) + "'s data";
-                return TextureFile{};
-            }
             float* out = file.levels[level].data() + layer * texels * 4;
             for (size_t t = 0; t < texels; ++t, at += size_t(layout->bytes))
                 decodeTexel(format, bytes.data() + at, out + t * 4);
