@@ -484,5 +484,78 @@ technique11 Lit11 < string Script = "Pass=p0;"; >
     EXPECT_TRUE(d3d9.rgba == d3d11.rgba);
 }
 
+// [SECTION] Parameters bound by their conventional names
+
+// FX11 and D3DX applications set parameters by name, so effects written for them carry no semantics. Each
+// naming style below must draw the frame its explicit-semantic counterpart draws; a name outside the
+// conventions stays the user's (zero here) and draws nothing.
+const char* kNamedEffect = R"(
+float4x4 Wvp : WorldViewProjection;
+float4x4 SemWorld : World;
+float4x4 SemWorldIT : WorldInverseTranspose;
+float4x4 SemViewProj : ViewProjection;
+float3 SemEye : CameraPosition;
+cbuffer cbPerObject { float4x4 gWorldViewProj; float4x4 gWorld; float4x4 gWorldInvTranspose; };
+matrix World; matrix View; matrix Projection;
+float4x4 g_mWorldViewProjection;
+float4x4 matViewProj;
+float3 gEyePosW;
+float4x4 gTransform;
+
+struct Lit { float4 pos : SV_Position; float3 normal : NORMAL; float3 toEye : TEXCOORD0; };
+float4 Red() : SV_Target { return float4(1, 0, 0, 1); }
+float4 Shade(Lit i) : SV_Target {
+    return float4(saturate(dot(normalize(i.normal), normalize(i.toEye))).xxx, 1);
+}
+float4 BySemantic(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), Wvp); }
+float4 Luna(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), gWorldViewProj); }
+float4 Tutorial(float3 p : POSITION) : SV_Position {
+    return mul(mul(mul(float4(p, 1), World), View), Projection);
+}
+float4 Dxut(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), g_mWorldViewProjection); }
+float4 Unconventional(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), gTransform); }
+Lit LitBySemantic(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    float4 w = mul(float4(p, 1), SemWorld);
+    o.pos = mul(w, SemViewProj);
+    o.normal = mul(n, (float3x3)SemWorldIT);
+    o.toEye = SemEye - w.xyz;
+    return o;
+}
+Lit LitByName(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    float4 w = mul(float4(p, 1), gWorld);
+    o.pos = mul(w, matViewProj);
+    o.normal = mul(n, (float3x3)gWorldInvTranspose);
+    o.toEye = gEyePosW - w.xyz;
+    return o;
+}
+technique11 Semantic { pass { SetVertexShader(CompileShader(vs_5_0, BySemantic())); SetPixelShader(CompileShader(ps_5_0, Red())); } }
+technique11 LunaStyle { pass { SetVertexShader(CompileShader(vs_5_0, Luna())); SetPixelShader(CompileShader(ps_5_0, Red())); } }
+technique10 TutorialStyle { pass { SetVertexShader(CompileShader(vs_4_0, Tutorial())); SetPixelShader(CompileShader(ps_4_0, Red())); } }
+technique10 DxutStyle { pass { SetVertexShader(CompileShader(vs_4_0, Dxut())); SetPixelShader(CompileShader(ps_4_0, Red())); } }
+technique11 NoConvention { pass { SetVertexShader(CompileShader(vs_5_0, Unconventional())); SetPixelShader(CompileShader(ps_5_0, Red())); } }
+technique11 LitSemantic { pass { SetVertexShader(CompileShader(vs_5_0, LitBySemantic())); SetPixelShader(CompileShader(ps_5_0, Shade())); } }
+technique11 LitNames { pass { SetVertexShader(CompileShader(vs_5_0, LitByName())); SetPixelShader(CompileShader(ps_5_0, Shade())); } }
+)";
+
+TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
+    auto renderer = loadEffect(kNamedEffect, false, "named.fx");
+    ASSERT_TRUE(renderer);
+    const Counts semantic = renderCounts(*renderer, "Semantic");
+    ASSERT_GT(semantic.red, 1000u);
+    for (const char* technique : {"LunaStyle", "TutorialStyle", "DxutStyle"}) {
+        const Counts named = renderCounts(*renderer, technique);
+        EXPECT_EQ(named.red, semantic.red) << technique;
+    }
+    EXPECT_EQ(renderCounts(*renderer, "NoConvention").red, 0u);
+
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "LitSemantic"));
+    const runtime::FrameImage bySemantic = renderer->readFrame();
+    ASSERT_TRUE(notConstant(bySemantic));
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "LitNames"));
+    EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
+}
+
 }  // namespace
 }  // namespace shadowfx::test

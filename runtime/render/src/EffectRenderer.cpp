@@ -35,6 +35,13 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
                                                        fx::DiagnosticSink& diagnostics) {
     std::unique_ptr<EffectResources> resources = EffectResources::create(std::move(effect), diagnostics);
     if (!resources) return nullptr;
+    for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
+        const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
+        if (!semantic.empty())
+            diagnostics.report(fx::DiagId::Unused, parameter.loc,
+                               {"parameter '" + parameter.name + "' has no semantic; bound as '" + semantic +
+                                "' by its name, as an application setting it by name would"});
+    }
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(resources)));
 }
 

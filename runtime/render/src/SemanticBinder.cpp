@@ -132,6 +132,102 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
     return false;
 }
 
+namespace {
+
+bool consumePrefix(std::string& text, std::string_view prefix) {
+    if (text.size() <= prefix.size() || text.compare(0, prefix.size(), prefix) != 0) return false;
+    text.erase(0, prefix.size());
+    return true;
+}
+
+// `name` without its scope prefix (g_, m_, g before a capital) and Hungarian type prefix (m, mat, mtx,
+// v, vec, f before a capital), underscores removed, in capitals.
+std::string conventionalStem(std::string_view name) {
+    std::string text(name);
+    const auto capitalAt = [&text](size_t i) {
+        return i < text.size() && (std::isupper(static_cast<unsigned char>(text[i])) || text[i] == '_');
+    };
+    if (text.rfind("g_", 0) == 0 || text.rfind("m_", 0) == 0) {
+        text.erase(0, 2);
+    } else if (text.size() > 1 && text[0] == 'g' && capitalAt(1)) {
+        text.erase(0, 1);
+    }
+    for (std::string_view hungarian : {"mtx", "mat", "vec", "m", "v", "f"}) {
+        if (text.rfind(hungarian, 0) == 0 && capitalAt(hungarian.size())) {
+            text.erase(0, hungarian.size());
+            break;
+        }
+    }
+    std::string stem;
+    for (char c : text)
+        if (c != '_') stem += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return stem;
+}
+
+}  // namespace
+
+std::string SemanticBinder::conventionalSemantic(const fx::ParameterInfo& parameter) {
+    if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return "";
+    std::string stem = conventionalStem(parameter.name);
+    const fx::TypeDesc& type = parameter.type;
+    if (type.shape == fx::Shape::Matrix) {
+        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return "";
+        if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
+        std::string modifier;
+        if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||
+            consumeSuffix(stem, "INVTRANS") || consumeSuffix(stem, "IT")) {
+            modifier = "InverseTranspose";
+        } else if (consumeSuffix(stem, "INVERSE") || consumeSuffix(stem, "INV") ||
+                   consumePrefix(stem, "INVERSE") || consumePrefix(stem, "INV")) {
+            modifier = "Inverse";
+        }
+        static const std::pair<const char*, const char*> kMatrixNames[] = {
+            {"WORLD", "World"},
+            {"MODEL", "World"},
+            {"VIEW", "View"},
+            {"PROJ", "Projection"},
+            {"PROJECTION", "Projection"},
+            {"WORLDVIEW", "WorldView"},
+            {"MODELVIEW", "WorldView"},
+            {"WV", "WorldView"},
+            {"VIEWPROJ", "ViewProjection"},
+            {"VIEWPROJECTION", "ViewProjection"},
+            {"VP", "ViewProjection"},
+            {"WORLDVIEWPROJ", "WorldViewProjection"},
+            {"WORLDVIEWPROJECTION", "WorldViewProjection"},
+            {"MODELVIEWPROJ", "WorldViewProjection"},
+            {"MODELVIEWPROJECTION", "WorldViewProjection"},
+            {"WVP", "WorldViewProjection"},
+            {"MVP", "WorldViewProjection"},
+        };
+        for (const auto& [text, semantic] : kMatrixNames)
+            if (stem == text) return semantic + modifier;
+        return "";
+    }
+    const bool isVector = type.shape == fx::Shape::Vector && type.cols >= 3 && type.arrayDims.empty();
+    if (isVector) {
+        static const std::pair<const char*, const char*> kVectorNames[] = {
+            {"EYEPOS", "CameraPosition"},         {"EYEPOSW", "CameraPosition"},
+            {"EYEPOSITION", "CameraPosition"},    {"EYEPOSITIONW", "CameraPosition"},
+            {"EYEPT", "CameraPosition"},          {"EYE", "CameraPosition"},
+            {"CAMERAPOS", "CameraPosition"},      {"CAMERAPOSW", "CameraPosition"},
+            {"CAMERAPOSITION", "CameraPosition"}, {"CAMPOS", "CameraPosition"},
+            {"VIEWPOS", "CameraPosition"},        {"VIEWPOSITION", "CameraPosition"},
+            {"VIEWERPOS", "CameraPosition"},      {"LIGHTDIR", "LightDirection"},
+            {"LIGHTDIRW", "LightDirection"},      {"LIGHTDIRECTION", "LightDirection"},
+            {"LIGHTPOS", "LightPosition"},        {"LIGHTPOSW", "LightPosition"},
+            {"LIGHTPOSITION", "LightPosition"},
+        };
+        for (const auto& [text, semantic] : kVectorNames)
+            if (stem == text) return semantic;
+        return "";
+    }
+    if (type.shape == fx::Shape::Scalar && type.arrayDims.empty() &&
+        (stem == "TIME" || stem == "TOTALTIME" || stem == "APPTIME"))
+        return "Time";
+    return "";
+}
+
 SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
                                const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
                                fx::DiagnosticSink& diagnostics)
@@ -186,9 +282,12 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
-        if (parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) continue;
+        if (parameter.isStatic || !parameter.type.isNumeric()) continue;
+        const std::string semantic =
+            parameter.semantic.empty() ? conventionalSemantic(parameter) : parameter.semantic;
+        if (semantic.empty()) continue;
         Binding binding{i, Kind::World};
-        if (!classify(parameter.semantic, binding.kind, binding.inverse, binding.transpose)) continue;
+        if (!classify(semantic, binding.kind, binding.inverse, binding.transpose)) continue;
 
         const std::string& lightName = parameter.light;
         const bool isCascadeProperty =
@@ -199,7 +298,7 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
             binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius || isCascadeProperty;
         // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
         // LightPosition/LightDirection/LightColor default to light0.
-        const std::string upperSemantic = upper(parameter.semantic);
+        const std::string upperSemantic = upper(semantic);
         if (!lightName.empty() ||
             (isLightProperty && (upperSemantic.rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
             const std::string name = lightName.empty() ? std::string("light0") : lightName;

@@ -20,7 +20,9 @@
 // (runtime/PerspectiveShadowCubeMap.h) bind to the same arrays, plus CubeFaceSelect (float4x4: world -> the
 // cube frame whose dominant axis picks a point's face). Scene-driven choices: SceneHasClosedObjects (true
 // if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
-// filter needed).
+// filter needed). A parameter without a semantic whose name follows D3D applications' conventions
+// (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`) is bound as the semantic it spells
+// (conventionalSemantic below).
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -70,6 +72,17 @@ public:
     SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
                    const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
                    fx::DiagnosticSink& diagnostics);
+
+    // The semantic a parameter written without one is bound by, from its name, or "" for none. FX11 and
+    // D3DX applications set parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`,
+    // `matView`, `g_vEyePt`, `g_fTime`), so an effect written for them has no semantics to bind by; these
+    // conventional names are read as the semantic they spell, where the parameter's type fits it (a
+    // matrix for a matrix name, a vector for a position or direction, a scalar for a time). Prefixes
+    // `g_`/`g`/`m_` and Hungarian `m`/`mat`/`mtx`/`v`/`vec`/`f` go, then underscores and case; suffixes
+    // `Matrix`, `Inv`/`Inverse`, `IT`/`InvTranspose`/`InverseTranspose`, a leading `Inv`; a world-space
+    // `W` on a position. A parameter with a semantic keeps it, and parameters named otherwise stay the
+    // user's.
+    static std::string conventionalSemantic(const fx::ParameterInfo& parameter);
 
     // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
     // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
