@@ -130,6 +130,10 @@ std::string TypeDesc::hlslName() const {
             return "DepthStencilState";
         case BaseType::BlendState:
             return "BlendState";
+        case BaseType::RenderTargetView:
+            return "RenderTargetView";
+        case BaseType::DepthStencilView:
+            return "DepthStencilView";
         case BaseType::Struct:
             return structName;
     }

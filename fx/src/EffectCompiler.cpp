@@ -895,6 +895,13 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
         if (const Parameter* p = mEffect.findParameter(s.value.text);
             p && p->initializer && p->initializer->kind == Expr::Kind::Compile)
             return &*p->initializer;
+        // FX10's `GeometryShader gsNone = NULL;` (or `= 0;`): a variable that holds no shader.
+        if (const Parameter* p = mEffect.findParameter(s.value.text);
+            p && p->type.isShader() && p->initializer &&
+            ((p->initializer->kind == Expr::Kind::Identifier &&
+              (p->initializer->text == "NULL" || p->initializer->text == "null")) ||
+             (p->initializer->kind == Expr::Kind::Number && p->initializer->number == 0)))
+            return nullptr;
     }
     // `VertexShader = (vsArray[CurNumBones]);`, the DirectX SDK's skinning idiom: an element of a shader
     // array, the index a constant or a parameter. D3DX chose the element at every draw; shadowfx chooses

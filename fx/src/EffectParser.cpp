@@ -92,6 +92,8 @@ bool parseObjectTypeName(const std::string& name, TypeDesc& type) {
         {"RasterizerState", BaseType::RasterizerState},
         {"DepthStencilState", BaseType::DepthStencilState},
         {"BlendState", BaseType::BlendState},
+        {"RenderTargetView", BaseType::RenderTargetView},
+        {"DepthStencilView", BaseType::DepthStencilView},
         {"string", BaseType::String},
         {"void", BaseType::Void},
     };

@@ -539,6 +539,26 @@ technique11 LitSemantic { pass { SetVertexShader(CompileShader(vs_5_0, LitBySema
 technique11 LitNames { pass { SetVertexShader(CompileShader(vs_5_0, LitByName())); SetPixelShader(CompileShader(ps_5_0, Shade())); } }
 )";
 
+// A struct-typed cbuffer member no application set reads zero, as in D3D10: the object is drawn in the
+// grey the code adds to it, not in colours from stray block contents.
+TEST(D3d10Effects, StructMembersOfConstantBuffersReadZeroUntilSet) {
+    auto renderer = loadEffect(R"(
+struct Material { float4 Diffuse; float4 Specular; };
+cbuffer cbPerObject { float4x4 gWorldViewProj; Material gMaterial; float4 gTint = float4(0, 0, 1, 1); };
+float4 VS(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), gWorldViewProj); }
+float4 PS() : SV_Target { return gMaterial.Diffuse + gMaterial.Specular + float4(0.5, 0.5, 0, 1) + gTint; }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                               false, "material.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    size_t drawn = 0;
+    for (size_t i = 0; i + 3 < frame.rgba.size(); i += 4)
+        drawn += frame.rgba[i] == 128 && frame.rgba[i + 1] == 128 && frame.rgba[i + 2] == 255;
+    EXPECT_GT(drawn, 1000u);
+}
+
 TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     auto renderer = loadEffect(kNamedEffect, false, "named.fx");
     ASSERT_TRUE(renderer);

@@ -89,6 +89,31 @@ fxgroup Other { technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0,
     EXPECT_TRUE(compiled->techniques[2].passes[0].fragment.glsl.empty());
 }
 
+// FX10 effects name "no shader" through a variable and declare the views their application binds; a
+// struct-typed cbuffer member (a light or material record) reaches the code.
+TEST(D3d10Syntax, NullShaderVariablesViewVariablesAndStructMembersCompile) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+struct Material { float4 Diffuse; float4 Specular; };
+cbuffer PerMaterial { Material gMaterial; Material gLayers[2]; };
+RenderTargetView g_pRTV;
+DepthStencilView g_pDSV;
+GeometryShader gsNone = NULL;
+VertexShader vsMain = CompileShader(vs_4_0, VS());
+float4 MaterialPS(VsOut i) : SV_Target { return gMaterial.Diffuse + gLayers[1].Specular + Tint; }
+technique10 Pool { pass { SetVertexShader(vsMain); SetGeometryShader(gsNone); SetPixelShader(CompileShader(ps_4_0, MaterialPS())); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques.at(0).passes.at(0);
+    EXPECT_TRUE(pass.geometry.glsl.empty());
+    EXPECT_NE(pass.fragment.glsl.find("gMaterial"), std::string::npos) << pass.fragment.glsl;
+    EXPECT_NE(pass.fragment.glsl.find("gLayers"), std::string::npos) << pass.fragment.glsl;
+    ASSERT_TRUE(compiled->effect->findParameter("g_pRTV"));
+    EXPECT_EQ(compiled->effect->findParameter("g_pDSV")->type.hlslName(), "DepthStencilView");
+}
+
 TEST(D3d10Syntax, TechniqueSelectedByGroupQualifiedName) {
     DiagnosticList diagnostics;
     std::shared_ptr<Effect> effect = parseEffectSource(withTechniques(R"(

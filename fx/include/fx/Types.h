@@ -47,6 +47,8 @@ enum class BaseType {
     RasterizerState,  // D3D10 state objects: `RasterizerState rs { CullMode = NONE; };`
     DepthStencilState,
     BlendState,
+    RenderTargetView,  // FX10's view variables: an application sets them; nothing in an effect reads them
+    DepthStencilView,
     Struct,
 };
 

@@ -31,6 +31,7 @@ void writeScalar(std::vector<uint8_t>& block, size_t offset, fx::BaseType base, 
 void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value,
                          std::vector<uint8_t>& block) {
     const fx::TypeDesc& type = member.type;
+    if (type.base == fx::BaseType::Struct) return;  // struct parameters hold no values: they stay zero
     const int rows = type.shape == fx::Shape::Matrix ? type.rows : 1;
     const int cols = type.shape == fx::Shape::Scalar ? 1 : type.cols;
     const size_t perElement = static_cast<size_t>(rows * cols);
