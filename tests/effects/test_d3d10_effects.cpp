@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -538,6 +539,26 @@ technique11 NoConvention { pass { SetVertexShader(CompileShader(vs_5_0, Unconven
 technique11 LitSemantic { pass { SetVertexShader(CompileShader(vs_5_0, LitBySemantic())); SetPixelShader(CompileShader(ps_5_0, Shade())); } }
 technique11 LitNames { pass { SetVertexShader(CompileShader(vs_5_0, LitByName())); SetPixelShader(CompileShader(ps_5_0, Shade())); } }
 )";
+
+// Effects written in the styles of D3D10/11 code in the wild (SDK samples and tutorials, a textbook's
+// lit effects, FX10 pools, full-screen passes, later HLSL), none with semantics: every technique of each
+// compiles, links and draws a frame that is not one colour.
+TEST(D3d10Effects, EffectsInTheStylesOfForeignCodeRenderEveryTechnique) {
+    size_t effects = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/data/d3d10/styles"))) {
+        if (entry.path().extension() != ".fx") continue;
+        ++effects;
+        auto renderer = loadEffect(entry.path().string(), true);
+        ASSERT_TRUE(renderer) << entry.path();
+        ASSERT_FALSE(renderer->effect().techniques.empty()) << entry.path();
+        for (const fx::CompiledTechnique& technique : renderer->effect().techniques) {
+            ASSERT_TRUE(render(*renderer, scene("teapot"), 96, 72, technique.name))
+                << entry.path() << " " << technique.name;
+            EXPECT_TRUE(notConstant(renderer->readFrame())) << entry.path() << " " << technique.name;
+        }
+    }
+    EXPECT_GE(effects, 6u);
+}
 
 // A struct-typed cbuffer member no application set reads zero, as in D3D10: the object is drawn in the
 // grey the code adds to it, not in colours from stray block contents.
