@@ -121,6 +121,9 @@ private:
     // The current pass's geometry shader outputs (by varying location), which its pixel shader reads.
     std::optional<std::map<int, TypeDesc>> mGeometryOutputs;
     bool mFailed = false;
+    // The diagnostics of the current technique's stages that the lowering could not express
+    // (UnsupportedFeature), held back until run() knows whether another technique can run.
+    std::vector<Diagnostic> mTechniqueUnsupported;
     std::vector<PendingStage> mPending;
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;
@@ -769,8 +772,21 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 }
 
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
-    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, mDiagnostics,
+    DiagnosticList lowering;
+    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, lowering,
                               mGeometryOutputs ? &*mGeometryOutputs : nullptr);
+    // What the pass lowering cannot express (a semantic or stage form shadowfx has no GL counterpart
+    // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
+    const bool onlyUnsupported =
+        !lowered && std::all_of(lowering.items().begin(), lowering.items().end(), [](const Diagnostic& d) {
+            return d.severity != Severity::Error || d.id == DiagId::UnsupportedFeature;
+        });
+    if (onlyUnsupported) {
+        mTechniqueUnsupported.insert(mTechniqueUnsupported.end(), lowering.items().begin(),
+                                     lowering.items().end());
+        return false;
+    }
+    for (const Diagnostic& d : lowering.items()) mDiagnostics.report(d);
     if (!lowered) {
         mFailed = true;
         return false;
@@ -986,6 +1002,11 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     samplers();
     scripts();
     bool found = mOptions.technique.empty();
+    // Techniques whose code uses what the lowering cannot express, with what it said. D3DX offered the
+    // next valid technique where one did not validate (FindNextValidTechnique): such a technique is left
+    // out with a warning while another technique can run; where none can, its errors fail the effect as
+    // they stand.
+    std::vector<std::pair<std::string, std::vector<Diagnostic>>> invalid;
     for (const Technique& t : mEffect.techniques) {
         if (!mOptions.technique.empty() && mEffect.findTechnique(mOptions.technique) != &t) continue;
         found = true;
@@ -995,10 +1016,28 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         technique.loc = t.loc;
         technique.script = script(t.annotations, technique.hasScript);
         validateScript(technique.script, &t);
+        mTechniqueUnsupported.clear();
         for (const Pass& p : t.passes)
             technique.passes.push_back(
                 compilePass(p, PassSlot{mOut->techniques.size(), technique.passes.size()}));
+        if (!mTechniqueUnsupported.empty()) {
+            const size_t index = mOut->techniques.size();
+            std::erase_if(mPending,
+                          [index](const PendingStage& stage) { return stage.slot.technique == index; });
+            invalid.emplace_back(t.name.empty() ? "(unnamed)" : t.name, std::move(mTechniqueUnsupported));
+            continue;
+        }
         mOut->techniques.push_back(std::move(technique));
+    }
+    for (auto& [name, diagnostics] : invalid) {
+        if (mOut->techniques.empty()) {
+            for (const Diagnostic& d : diagnostics) mDiagnostics.report(d);
+            mFailed = true;
+            continue;
+        }
+        const auto first = std::find_if(diagnostics.begin(), diagnostics.end(),
+                                        [](const Diagnostic& d) { return d.severity == Severity::Error; });
+        mDiagnostics.report(DiagId::TechniqueRefused, first->loc, {name, first->message});
     }
     finishPendingStages();
     assignPairUnits();

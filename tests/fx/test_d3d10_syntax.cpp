@@ -159,6 +159,37 @@ technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixel
         << warnings[2];
 }
 
+// A technique whose code uses what the pass lowering cannot express is left out with a located warning
+// while another technique runs (D3DX's next valid technique); alone, its errors fail the effect.
+TEST(D3d10Syntax, ATechniqueTheLoweringCannotExpressIsLeftOutWhileAnotherRuns) {
+    const std::string coverage = R"(
+float4 CoveragePS(VsOut i, uint mask : SV_Coverage) : SV_Target { return Tint * mask; }
+technique11 Coverage { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, CoveragePS())); } }
+)";
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(coverage + R"(
+technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 1u);
+    EXPECT_EQ(compiled->techniques[0].name, "Plain");
+    EXPECT_FALSE(compiled->techniques[0].passes[0].fragment.glsl.empty());
+    const Diagnostic* refused = find(diagnostics, DiagId::TechniqueRefused);
+    ASSERT_TRUE(refused) << diagnostics.str();
+    EXPECT_EQ(str(*refused),
+              "d3d10.fx:17:33: warning: technique 'Coverage' is left out: pixel input semantic "
+              "'SV_COVERAGE' is not supported");
+
+    DiagnosticList alone;
+    EXPECT_FALSE(compile(withTechniques(coverage), alone));
+    const Diagnostic* error = find(alone, DiagId::UnsupportedFeature);
+    ASSERT_TRUE(error) << alone.str();
+    EXPECT_EQ(error->severity, Severity::Error);
+    EXPECT_FALSE(find(alone, DiagId::TechniqueRefused)) << alone.str();
+}
+
 TEST(D3d10Syntax, AnEffectWhoseTechniquesAreAllLeftOutFails) {
     DiagnosticList diagnostics;
     auto effect = parseEffectSource(withTechniques(R"(
