@@ -23,7 +23,9 @@ uint64_t CompileCache::hash(std::string_view hlsl, ShaderStage stage, std::strin
     uint64_t h = fnv1a(kFnvOffset, hlsl);
     h = fnv1a(h, stage == ShaderStage::Vertex     ? "vertex"
                  : stage == ShaderStage::Fragment ? "fragment"
-                                                  : "geometry");
+                 : stage == ShaderStage::Geometry ? "geometry"
+                 : stage == ShaderStage::Hull     ? "hull"
+                                                  : "domain");
     return fnv1a(h, options);
 }
 

@@ -183,7 +183,7 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     StageJob job;
     job.hlsl = r.str();
     uint32_t stage = r.u32();
-    job.stage = static_cast<ShaderStage>(std::min<uint32_t>(stage, 2));
+    job.stage = static_cast<ShaderStage>(std::min<uint32_t>(stage, 4));
     job.entryPoint = r.str();
     job.cross.uniformBlockName = r.str();
     job.cross.uniformBlockBinding = r.i32();
@@ -193,7 +193,7 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     }
     job.cross.depthSamplers.resize(r.count(4));
     for (std::string& s : job.cross.depthSamplers) s = r.str();
-    if (!r.done() || stage > 2) return std::nullopt;
+    if (!r.done() || stage > 4) return std::nullopt;
     return job;
 }
 

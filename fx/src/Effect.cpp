@@ -258,6 +258,12 @@ const Annotation* findAnnotation(const std::vector<Annotation>& annotations, con
 }
 }  // namespace
 
+const FunctionAttribute* FunctionDecl::attribute(const std::string& attributeName) const {
+    for (const FunctionAttribute& a : attributes)
+        if (equalsIgnoreCase(a.name, attributeName)) return &a;
+    return nullptr;
+}
+
 const Annotation* Parameter::annotation(const std::string& annotationName) const {
     return findAnnotation(annotations, annotationName);
 }

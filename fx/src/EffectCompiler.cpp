@@ -120,6 +120,8 @@ private:
     std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
     // The current pass's geometry shader outputs (by varying location), which its pixel shader reads.
     std::optional<std::map<int, TypeDesc>> mGeometryOutputs;
+    // The current pass's hull shader, whose partitioning and output topology its domain shader takes.
+    const FunctionDecl* mHull = nullptr;
     bool mFailed = false;
     // The diagnostics of the current technique's stages that the lowering could not express
     // (UnsupportedFeature), held back until run() knows whether another technique can run.
@@ -132,7 +134,9 @@ private:
 StageProgram& stageProgram(CompiledPass& pass, ShaderStage stage) {
     return stage == ShaderStage::Vertex     ? pass.vertex
            : stage == ShaderStage::Fragment ? pass.fragment
-                                            : pass.geometry;
+           : stage == ShaderStage::Geometry ? pass.geometry
+           : stage == ShaderStage::Hull     ? pass.hull
+                                            : pass.domain;
 }
 
 // [SECTION] Initial values
@@ -569,7 +573,8 @@ void Compiler::assignPairUnits() {
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes) {
             std::map<std::string, int> units;
-            for (StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+            for (StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
                 for (SamplerBinding& s : stage->samplers)
                     if (!s.pairTexture.empty())
                         s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
@@ -774,7 +779,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
     DiagnosticList lowering;
     auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, lowering,
-                              mGeometryOutputs ? &*mGeometryOutputs : nullptr);
+                              mGeometryOutputs ? &*mGeometryOutputs : nullptr, mHull);
     // What the pass lowering cannot express (a semantic or stage form shadowfx has no GL counterpart
     // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
     const bool onlyUnsupported =
@@ -791,7 +796,15 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
         mFailed = true;
         return false;
     }
-    if (stage == ShaderStage::Geometry) mGeometryOutputs = lowered->varyingOutputs;
+    if (stage == ShaderStage::Geometry) {
+        mGeometryOutputs = lowered->varyingOutputs;
+        pass.primitive = lowered->primitive;
+    }
+    if (stage == ShaderStage::Hull) {
+        pass.patchVertices = lowered->patchVertices;
+        const std::vector<const FunctionDecl*> hull = mEffect.findFunctions(lowered->entryPoint);
+        mHull = hull.empty() ? nullptr : hull.front();
+    }
     // The stage's new arguments, as programs over the parameters they read.
     for (size_t a = pass.arguments.size(); a < mPassArguments.size(); ++a) {
         const LoweredArgument& argument = mPassArguments[a];
@@ -817,10 +830,11 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
         job.entryPoint = kWrapperEntryPoint;
         job.cross.uniformBlockName = stage == ShaderStage::Vertex     ? "fx_VsGlobals"
                                      : stage == ShaderStage::Fragment ? "fx_PsGlobals"
-                                                                      : "fx_GsGlobals";
-        job.cross.uniformBlockBinding = stage == ShaderStage::Vertex     ? 0
-                                        : stage == ShaderStage::Fragment ? 1
-                                                                         : 2;
+                                     : stage == ShaderStage::Geometry ? "fx_GsGlobals"
+                                     : stage == ShaderStage::Hull     ? "fx_HsGlobals"
+                                                                      : "fx_DsGlobals";
+        // One uniform block binding per stage: the stage enum's order.
+        job.cross.uniformBlockBinding = static_cast<int>(stage);
         job.cross.samplerUnits = mSamplerUnits;
         job.cross.depthSamplers = lowered->depthSamplers;
         mJobs.push_back(std::move(job));
@@ -946,21 +960,51 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
     mPassArguments.clear();
     mGeometryOutputs.reset();
+    mHull = nullptr;
     pass.name = p.name;
     pass.loc = p.loc;
     // The geometry shader first, wherever the pass sets it: the pixel shader's inputs take its outputs'
-    // types.
-    for (const StateAssignment& s : p.states)
-        if (findRenderState(s.name) == RenderStateId::GeometryShader)
+    // types. The hull shader before the domain shader, which takes its tessellator settings.
+    const StateAssignment* hull = nullptr;
+    const StateAssignment* domain = nullptr;
+    const StateAssignment* geometry = nullptr;
+    for (const StateAssignment& s : p.states) {
+        const std::optional<RenderStateId> id = findRenderState(s.name);
+        if (id == RenderStateId::GeometryShader) {
+            geometry = &s;
             if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile, ShaderStage::Geometry, pass, slot);
+        } else if (id == RenderStateId::HullShader || id == RenderStateId::DomainShader) {
+            const bool set = !(s.value.kind == Expr::Kind::Identifier && s.value.text == "NULL") &&
+                             !(s.value.kind == Expr::Kind::Number && s.value.number == 0);
+            (id == RenderStateId::HullShader ? hull : domain) = set ? &s : nullptr;
+        }
+    }
+    if (hull && !domain) {
+        error(DiagId::UnsupportedFeature, hull->loc,
+              {"a hull shader needs a domain shader in the same pass (SetDomainShader)"});
+    } else if (domain && !hull) {
+        error(DiagId::UnsupportedFeature, domain->loc,
+              {"a domain shader needs a hull shader in the same pass (SetHullShader)"});
+    } else if (hull && domain) {
+        const Expr* hullCompile = shaderExpr(*hull);
+        if (hullCompile && compileStage(*hullCompile, ShaderStage::Hull, pass, slot))
+            if (const Expr* domainCompile = shaderExpr(*domain))
+                compileStage(*domainCompile, ShaderStage::Domain, pass, slot);
+        if (geometry && pass.primitive != CompiledPass::DrawPrimitive::Triangles)
+            error(DiagId::UnsupportedFeature, geometry->loc,
+                  {"a geometry shader after tessellation takes 'triangle' input: the domain shader outputs "
+                   "triangles"});
+    }
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
         if (!id) {
             error(DiagId::UnknownState, s.loc, {s.name});
             continue;
         }
-        if (*id == RenderStateId::GeometryShader) continue;
+        if (*id == RenderStateId::GeometryShader || *id == RenderStateId::HullShader ||
+            *id == RenderStateId::DomainShader)
+            continue;
         if (*id == RenderStateId::VertexShader || *id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile,

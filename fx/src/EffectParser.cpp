@@ -658,7 +658,25 @@ private:
     void parseDeclaration(bool inBuffer = false) {
         size_t first = mPos;
         mMaxVertexCount = 0;
-        while (check("[")) {  // [numthreads(...)], [maxvertexcount(...)] before a function
+        mAttributes.clear();
+        while (check("[")) {  // [numthreads(...)], [maxvertexcount(...)], [domain("tri")] before a function
+            if (peek(1).kind == Token::Kind::Identifier) {
+                // Every attribute is kept as written; the pass lowering reads those of hull and domain
+                // shaders.
+                FunctionAttribute attribute;
+                attribute.name = peek(1).text;
+                attribute.loc = peek(1).loc;
+                size_t open = mPos;
+                skipBalanced("[", "]");
+                attribute.text = sliceText(open, mPos - 1);
+                if (mTokens[open + 2].is("(") && mPos - open > 5) {
+                    const Token& argument = mTokens[open + 3];
+                    attribute.argument =
+                        argument.kind == Token::Kind::String ? argument.text : sliceText(open + 3, mPos - 3);
+                }
+                mAttributes.push_back(std::move(attribute));
+                mPos = open;
+            }
             if (peek(1).is("maxvertexcount") && peek(2).is("(")) {
                 const Token& attribute = peek(1);
                 mPos += 3;
@@ -774,6 +792,7 @@ private:
         decl.loc = name.loc;
         decl.returnType = returnType;
         decl.maxVertexCount = mMaxVertexCount;
+        decl.attributes = mAttributes;
         expect("(");
         if (check("void") && peek(1).is(")")) advance();
         while (!check(")")) {
@@ -802,7 +821,20 @@ private:
                     modifier = false;
                 if (modifier) advance();
             }
-            if (peek().is("PointStream") || peek().is("LineStream") || peek().is("TriangleStream")) {
+            if (peek().is("InputPatch") || peek().is("OutputPatch")) {
+                // A hull or domain shader's control points: the parameter's type is their element.
+                param.patch = advance().text;
+                expect("<");
+                param.type = parseType();
+                expect(",");
+                Expr size = parseExpr(true);  // '>' closes the template
+                double number = 0;
+                if (!constantValue(size, number) || number < 1 || number > 32 ||
+                    number != static_cast<double>(static_cast<int>(number)))
+                    fail(DiagId::UnexpectedToken, size.loc, {"a control point count 1..32", size.str()});
+                param.patchSize = static_cast<int>(number);
+                expectCloseAngle();
+            } else if (peek().is("PointStream") || peek().is("LineStream") || peek().is("TriangleStream")) {
                 // A geometry shader's output stream: the parameter's type is its element.
                 param.stream = advance().text;
                 expect("<");
@@ -1075,7 +1107,8 @@ private:
         normalizeNull(value);
         const bool none = (value.kind == Expr::Kind::Identifier && value.text == "NULL") ||
                           (value.kind == Expr::Kind::Number && value.number == 0);
-        if (what == "VertexShader" || what == "PixelShader" || what == "GeometryShader") {
+        if (what == "VertexShader" || what == "PixelShader" || what == "GeometryShader" ||
+            what == "HullShader" || what == "DomainShader") {
             StateAssignment state;
             state.name = what;
             state.loc = name.loc;
@@ -1089,12 +1122,7 @@ private:
             error(DiagId::UnknownIdentifier, value.loc, {value.text});
             return;
         }
-        std::string stage = what.substr(0, what.size() - 6);  // "Geometry"
-        for (char& c : stage) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        refuseTechnique(name.loc,
-                        what == "ComputeShader"
-                            ? "compute shaders are dispatched by an application, not drawn by a pass"
-                            : stage + " shaders are not supported by shadowfx's pass lowering");
+        refuseTechnique(name.loc, "compute shaders are dispatched by an application, not drawn by a pass");
     }
 
     // SetRasterizerState(rs), SetDepthStencilState(ds, stencilRef), SetBlendState(bs, factor, sampleMask):
@@ -1312,7 +1340,8 @@ private:
             if (v.text == "NULL") return;
             const Parameter* p = mEffect.findParameter(v.text);
             if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader ||
-                      p->type.base == BaseType::GeometryShader))
+                      p->type.base == BaseType::GeometryShader || p->type.base == BaseType::HullShader ||
+                      p->type.base == BaseType::DomainShader))
                 return;
             if (!p) {
                 error(DiagId::UnknownIdentifier, v.loc, {v.text});
@@ -1761,10 +1790,11 @@ private:
         std::string reason;
         SourceLoc loc;
     };
-    std::optional<Refused> mRefusal;        // of the technique being parsed
-    std::optional<Refused> mFirstRefused;   // the first technique left out
-    int mMaxVertexCount = 0;                // the [maxvertexcount(n)] before the declaration being parsed
-    std::set<StateObjectKind> mObjectsSet;  // the state objects the pass being parsed sets
+    std::optional<Refused> mRefusal;       // of the technique being parsed
+    std::optional<Refused> mFirstRefused;  // the first technique left out
+    int mMaxVertexCount = 0;               // the [maxvertexcount(n)] before the declaration being parsed
+    std::vector<FunctionAttribute> mAttributes;  // the attributes before the declaration being parsed
+    std::set<StateObjectKind> mObjectsSet;       // the state objects the pass being parsed sets
     int mDepth = 0;
     bool mNoGreater = false;
     bool mSpeculative = false;  // parseStraightBody(): errors throw without a report

@@ -97,7 +97,9 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
     HlslCompileResult result;
     EShLanguage language = stage == ShaderStage::Vertex     ? EShLangVertex
                            : stage == ShaderStage::Fragment ? EShLangFragment
-                                                            : EShLangGeometry;
+                           : stage == ShaderStage::Geometry ? EShLangGeometry
+                           : stage == ShaderStage::Hull     ? EShLangTessControl
+                                                            : EShLangTessEvaluation;
     glslang::TShader shader(language);
     const char* text = source.c_str();
     shader.setStrings(&text, 1);

@@ -158,6 +158,10 @@ std::optional<InstancedPass> instancedPass(const CompiledPass& pass,
         whyNot = "the pass has a geometry shader";
         return std::nullopt;
     }
+    if (!pass.hull.glsl.empty()) {
+        whyNot = "the pass has tessellation shaders";
+        return std::nullopt;
+    }
     const std::string varying = "layout(location = " + std::to_string(kObjectVaryingLocation) + ")";
     for (const StageProgram* stage : {&pass.vertex, &pass.fragment}) {
         // The effect's own instance ids would count this variant's instances; its own storage buffers

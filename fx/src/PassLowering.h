@@ -8,7 +8,9 @@
 // results to SV_Position / fixed varying locations / SV_Target n, so that stages link by semantic as on
 // D3D9. A geometry shader's wrapper rebuilds its input array the same way and hands the user's function
 // its output stream; the stream's element struct is redeclared in that unit with the varying locations
-// of its members' semantics.
+// of its members' semantics. A hull shader's wrapper rebuilds its input patch likewise and writes its
+// control points and patch constants as float4 varyings (patch constants through a generated patch-constant
+// function around the user's); a domain shader's wrapper reads them back into the user's structs.
 #pragma once
 
 #include <fx/CompiledEffect.h>
@@ -48,6 +50,9 @@ struct LoweredStage {
     // A geometry shader's outputs by varying location, as its output struct declares them: the pixel
     // shader after it declares its inputs with these types (GL links a location's types exactly).
     std::map<int, TypeDesc> varyingOutputs;
+    int patchVertices = 0;  // a hull shader's control points per input patch (its InputPatch<T, n>)
+    // A geometry shader's input primitive, as the pass's draws must give it.
+    CompiledPass::DrawPrimitive primitive = CompiledPass::DrawPrimitive::Triangles;
 };
 
 // An argument of a compile expression bound to a `uniform` entry-point parameter, as lowering finds it:
@@ -60,11 +65,13 @@ struct LoweredArgument {
 
 // Lowers the shader of one stage of a pass. `compile` is the state's Compile expression. Compile
 // arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
-// there). A pixel shader after a geometry shader takes `geometryOutputs` (that stage's varyingOutputs).
-// Returns nullopt after reporting an error.
+// there). A pixel shader after a geometry shader takes `geometryOutputs` (that stage's varyingOutputs); a
+// domain shader takes the pass's `hull` shader (whose partitioning and output topology GL's tessellation
+// evaluation stage declares). Returns nullopt after reporting an error.
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
-                                       const std::map<int, TypeDesc>* geometryOutputs = nullptr);
+                                       const std::map<int, TypeDesc>* geometryOutputs = nullptr,
+                                       const FunctionDecl* hull = nullptr);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
 // they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.

@@ -154,12 +154,15 @@ int compileCommand(const Arguments& args) {
     const bool showHlsl = args.flag("--hlsl");
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         for (const fx::CompiledPass& pass : technique.passes) {
-            for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment}) {
+            for (const fx::StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment}) {
                 if (stage->entryPoint.empty()) continue;
                 std::cout << "// technique " << technique.name << ", pass " << pass.name << ", "
                           << (stage->stage == fx::ShaderStage::Vertex     ? "vertex"
                               : stage->stage == fx::ShaderStage::Fragment ? "pixel"
-                                                                          : "geometry")
+                              : stage->stage == fx::ShaderStage::Geometry ? "geometry"
+                              : stage->stage == fx::ShaderStage::Hull     ? "hull"
+                                                                          : "domain")
                           << " shader " << stage->entryPoint << " (" << stage->profile << ")\n";
                 if (showHlsl) std::cout << "// generated HLSL:\n" << stage->hlsl << "\n// GLSL:\n";
                 std::cout << stage->glsl << "\n";

@@ -2,17 +2,24 @@
 // SamplerComparisonState through RenderPort=light0 against the ray-cast truth, D3D10's state defaults
 // (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang,
 // texture arrays, buffers and a multisample target on pixels, a geometry shader expanding a triangle into
-// a quad, and a technique11 twin rendering the same frame as its D3D9 technique.
+// a quad, geometry shaders taking points, edges and triangles with adjacency, hull and domain shaders
+// whose tessellation factors, domain locations and patch constants show on pixels, and a technique11
+// twin rendering the same frame as its D3D9 technique.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
+#include <runtime/Mesh.h>
 #include <runtime/ShadowMetrics.h>
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -439,6 +446,196 @@ TEST(D3d10Effects, GeometryShaderExpandsTheFirstTriangleIntoACentredQuad) {
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "NoSprites"));
     const runtime::FrameImage meshes = renderer->readFrame();
     EXPECT_FALSE(meshes.rgba == frame.rgba);
+}
+
+// tests/data/d3d10/geometry_inputs.fx's geometry shaders address pixels of a 64 x 64 frame by their
+// SV_PrimitiveID; the scene is one torus whose seam vertices repeat (with positions a few ulps apart).
+constexpr int kInputsSize = 64;
+
+runtime::Scene torusAlone() {
+    runtime::Scene s;
+    runtime::SceneObject object;
+    object.name = "torus";
+    object.mesh = std::make_shared<runtime::Mesh>(runtime::makeTorus(1.0f, 0.4f, 12, 8));
+    s.objects.push_back(object);
+    return s;
+}
+
+std::vector<bool> whitePixels(const runtime::FrameImage& frame) {
+    std::vector<bool> white(kInputsSize * kInputsSize);
+    for (size_t i = 0; i < white.size(); ++i)
+        white[i] = frame.rgba[i * 4] == 255 && frame.rgba[i * 4 + 1] == 255 && frame.rgba[i * 4 + 2] == 255;
+    return white;
+}
+
+// `point` input: the mesh's vertices drawn as points, each one expanded into a 2 x 2 sprite in the vertex
+// shader's colour: exactly four pixels per vertex, at the blocks 0 .. vertices - 1 and nowhere else.
+TEST(D3d10Effects, PointInputGeometryShaderExpandsEveryVertexIntoASprite) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/geometry_inputs.fx"), true);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = torusAlone();
+    const size_t vertices = scene.objects[0].mesh->positions.size();
+    ASSERT_LE(vertices, 32u * 32u);
+    ASSERT_TRUE(render(*renderer, scene, kInputsSize, kInputsSize, "Sprites"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    size_t green = 0, misplaced = 0;
+    for (int y = 0; y < kInputsSize; ++y)
+        for (int x = 0; x < kInputsSize; ++x) {
+            const uint8_t* p = &frame.rgba[(static_cast<size_t>(y) * kInputsSize + x) * 4];
+            if (p[0] != 0 || p[1] != 255 || p[2] != 0) continue;
+            ++green;
+            misplaced += static_cast<size_t>((y / 2) * 32 + x / 2) >= vertices;
+        }
+    EXPECT_EQ(green, 4 * vertices);
+    EXPECT_EQ(misplaced, 0u);
+}
+
+// `triangleadj` input: the silhouette edges as seen from the light, pixel 3 t + i for edge i of triangle
+// t, against the same test computed here from the mesh with its own (brute-force) neighbour search.
+TEST(D3d10Effects, TriangleAdjacencyGeometryShaderFindsTheSilhouetteEdges) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/geometry_inputs.fx"), true);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = torusAlone();
+    const runtime::Mesh& mesh = *scene.objects[0].mesh;
+    ASSERT_LE(mesh.indices.size(), static_cast<size_t>(kInputsSize * kInputsSize));
+    const glm::vec3 toLight = -glm::vec3(0.6f, -0.7f, 0.4f);
+    auto near = [](const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-4f; };
+    auto vertex = [&](size_t t, size_t k) { return mesh.positions[mesh.indices[3 * t + k % 3]]; };
+    auto normal = [](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+        return glm::cross(b - a, c - a);
+    };
+    const size_t triangles = mesh.triangleCount();
+    std::vector<bool> expected(kInputsSize * kInputsSize, false);
+    size_t silhouettes = 0;
+    for (size_t t = 0; t < triangles; ++t) {
+        if (glm::dot(normal(vertex(t, 0), vertex(t, 1), vertex(t, 2)), toLight) <= 0) continue;
+        for (size_t i = 0; i < 3; ++i) {
+            const glm::vec3 a = vertex(t, i), b = vertex(t, i + 1);
+            bool neighbourFacesAway = true;  // no neighbour: the edge bounds the mesh
+            for (size_t u = 0; u < triangles; ++u)
+                for (size_t k = 0; k < 3 && u != t; ++k)
+                    if (near(vertex(u, k), b) && near(vertex(u, k + 1), a))
+                        neighbourFacesAway = glm::dot(normal(b, a, vertex(u, k + 2)), toLight) <= 0;
+            if (neighbourFacesAway) expected[3 * t + i] = true, ++silhouettes;
+        }
+    }
+    ASSERT_GT(silhouettes, 8u);
+    ASSERT_TRUE(render(*renderer, scene, kInputsSize, kInputsSize, "Silhouettes"));
+    const std::vector<bool> found = whitePixels(renderer->readFrame());
+    EXPECT_EQ(std::count(found.begin(), found.end(), true), static_cast<long>(silhouettes));
+    EXPECT_TRUE(found == expected);
+}
+
+// `line` input: every edge of the mesh once. A closed torus of 12 x 8 quads has 96 distinct vertices,
+// 192 triangles and so 288 edges (Euler: V - E + F = 0); its seams repeat vertices that must not count.
+TEST(D3d10Effects, LineInputGeometryShaderGetsEveryEdgeOnce) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/geometry_inputs.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, torusAlone(), kInputsSize, kInputsSize, "Edges"));
+    const std::vector<bool> found = whitePixels(renderer->readFrame());
+    EXPECT_EQ(std::count(found.begin(), found.end(), true), 288);
+    EXPECT_TRUE(std::all_of(found.begin(), found.begin() + 288, [](bool b) { return b; }));
+}
+
+// [SECTION] Tessellation
+
+constexpr int kTessSize = 96;
+
+// The white pixels of a wireframe frame, and the runs of white pixels along its middle row.
+struct Wire {
+    size_t pixels = 0;
+    int runs = 0;
+};
+
+Wire renderWire(runtime::EffectRenderer& renderer, const std::string& technique, const char* factor) {
+    fx::DiagnosticList diagnostics;
+    EXPECT_TRUE(renderer.setParameterFromText("TessFactor", factor, diagnostics)) << diagnostics.str();
+    EXPECT_TRUE(render(renderer, scene("teapot"), kTessSize, kTessSize, technique));
+    const runtime::FrameImage frame = renderer.readFrame();
+    auto white = [&](int x, int y) {
+        const uint8_t* p = &frame.rgba[(static_cast<size_t>(y) * kTessSize + x) * 4];
+        return p[0] == 255 && p[1] == 255 && p[2] == 255;
+    };
+    Wire w;
+    for (int y = 0; y < kTessSize; ++y)
+        for (int x = 0; x < kTessSize; ++x) w.pixels += white(x, y);
+    for (int x = 0; x < kTessSize; ++x)
+        w.runs += white(x, kTessSize / 2) && (x == 0 || !white(x - 1, kTessSize / 2));
+    return w;
+}
+
+// tests/data/d3d10/tessellation.fx draws one domain triangle in wireframe with the factor TessFactor: at
+// 1 it is the triangle alone (a row through its middle crosses its two slanted edges), at 8 the
+// tessellator's edges cross that row many times and cover several times the pixels.
+TEST(D3d10Effects, TessellationFactorsReachTheTessellator) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/tessellation.fx"), true);
+    ASSERT_TRUE(renderer);
+    const Wire one = renderWire(*renderer, "WireInteger", "1");
+    const Wire eight = renderWire(*renderer, "WireInteger", "8");
+    EXPECT_EQ(one.runs, 2);
+    EXPECT_GT(one.pixels, static_cast<size_t>(2 * kTessSize));  // the outline, not a blank frame
+    EXPECT_GE(eight.runs, 8);
+    EXPECT_GT(eight.pixels, 3 * one.pixels);
+    // fractional_odd partitioning at 8 makes 9 segments of two lengths, integer partitioning 8 equal ones.
+    const Wire odd = renderWire(*renderer, "WireFractionalOdd", "8");
+    EXPECT_GE(odd.runs, 8);
+    EXPECT_NE(odd.pixels, eight.pixels);
+    const Wire oddOne = renderWire(*renderer, "WireFractionalOdd", "1");
+    EXPECT_EQ(oddOne.runs, 2);
+}
+
+// The filled domain triangle's colour is half its SV_DomainLocation plus half a patch constant: every
+// pixel inside it equals what the pixel centre's barycentric coordinates give, so u, v and w reach the
+// domain shader at the corners the DS puts them and the patch constant crosses from the hull shader.
+TEST(D3d10Effects, DomainLocationAndPatchConstantsReachTheDomainShader) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/tessellation.fx"), true);
+    ASSERT_TRUE(renderer);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("TessFactor", "5", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, "Corners"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    // The corners in clip space (y up); frame rows run from the top.
+    const glm::vec2 a(-0.9f, -0.9f), b(0.0f, 0.9f), c(0.9f, -0.9f);
+    const glm::vec3 tint(0.25f, 0.5f, 0.75f);
+    size_t inside = 0, wrong = 0;
+    for (int y = 0; y < kTessSize; ++y)
+        for (int x = 0; x < kTessSize; ++x) {
+            const glm::vec2 p((x + 0.5f) / kTessSize * 2 - 1, 1 - (y + 0.5f) / kTessSize * 2);
+            const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+            const float v = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / area;
+            const float w = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / area;
+            const glm::vec3 uvw(1 - v - w, v, w);
+            if (glm::min(uvw.x, glm::min(uvw.y, uvw.z)) < 0.03f) continue;  // outside or on an edge
+            ++inside;
+            const glm::vec3 expected = (0.5f * uvw + 0.5f * tint) * 255.0f;
+            const uint8_t* got = &frame.rgba[(static_cast<size_t>(y) * kTessSize + x) * 4];
+            for (int k = 0; k < 3; ++k) wrong += std::abs(got[k] - expected[k]) > 3.0f;
+        }
+    EXPECT_GT(inside, static_cast<size_t>(kTessSize * kTessSize / 4));
+    EXPECT_EQ(wrong, 0u);
+}
+
+// Through VS -> HS -> DS -> PS at factor 1 the meshes come out as the plain pass draws them, back faces
+// culled by D3D10's default rasterizer state: the control points and their float3 POSITION link by
+// semantic, and the tessellator winds its triangles as the mesh does.
+TEST(D3d10Effects, TessellatedMeshAtFactorOneDrawsTheFrameOfThePlainPass) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/tessellation.fx"), true);
+    ASSERT_TRUE(renderer);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("TessFactor", "1", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, "Plain"));
+    const runtime::FrameImage plain = renderer->readFrame();
+    ASSERT_TRUE(notConstant(plain));
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, "Mesh"));
+    const runtime::FrameImage tessellated = renderer->readFrame();
+    size_t differing = 0;
+    for (size_t i = 0; i + 3 < plain.rgba.size(); i += 4)
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(plain.rgba[i + k] - tessellated.rgba[i + k]) > 2) {
+                ++differing;
+                break;
+            }
+    EXPECT_LE(differing, static_cast<size_t>(kTessSize * kTessSize / 200));
 }
 
 // [SECTION] SAS scripts on the D3D11 form

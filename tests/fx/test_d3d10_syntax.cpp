@@ -136,7 +136,7 @@ TEST(D3d10Syntax, TechniquesGlCannotRunAreLeftOutWithALocatedWarning) {
 GeometryShader Gs = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw");
 technique10 Streamed { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
     SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw")); } }
-technique11 Tessellated { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(CompileShader(hs_5_0, PS())); } }
+technique11 Computed { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetComputeShader(CompileShader(cs_5_0, PS())); } }
 technique11 Linked { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), Light)); } }
 technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
 )"),
@@ -151,7 +151,7 @@ technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixel
     EXPECT_NE(warnings[0].find("d3d10.fx:19:23: warning: technique 'Streamed' is left out: stream output"),
               std::string::npos)
         << warnings[0];
-    EXPECT_NE(warnings[1].find("d3d10.fx:20:80: warning: technique 'Tessellated' is left out: hull shaders"),
+    EXPECT_NE(warnings[1].find("d3d10.fx:20:77: warning: technique 'Computed' is left out: compute shaders"),
               std::string::npos)
         << warnings[1];
     EXPECT_NE(warnings[2].find("'Linked' is left out: dynamic shader linkage (BindInterfaces)"),
@@ -193,14 +193,14 @@ technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixe
 TEST(D3d10Syntax, AnEffectWhoseTechniquesAreAllLeftOutFails) {
     DiagnosticList diagnostics;
     auto effect = parseEffectSource(withTechniques(R"(
-technique11 OnlyOne { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetDomainShader(CompileShader(ds_5_0, VS())); } }
+technique11 OnlyOne { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetComputeShader(CompileShader(cs_5_0, VS())); } }
 )"),
                                     "d3d10.fx", ParseOptions{}, diagnostics);
     EXPECT_FALSE(effect);
     const Diagnostic* d = find(diagnostics, DiagId::AllTechniquesRefused);
     ASSERT_TRUE(d) << diagnostics.str();
-    EXPECT_EQ(d->loc.line, 17);  // the SetDomainShader
-    EXPECT_NE(str(*d).find("'OnlyOne', domain shaders are not supported"), std::string::npos) << str(*d);
+    EXPECT_EQ(d->loc.line, 17);  // the SetComputeShader
+    EXPECT_NE(str(*d).find("'OnlyOne', compute shaders are dispatched"), std::string::npos) << str(*d);
 }
 
 // A geometry shader's declaration as the parser records it, and the pass's geometry stage as GLSL: the
@@ -249,6 +249,82 @@ technique10 T { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometry
         if (u.active) members.push_back(u.name);
     EXPECT_NE(std::find(members.begin(), members.end(), "Grow"), members.end());
     EXPECT_NE(std::find(members.begin(), members.end(), "fx_arg0"), members.end());
+}
+
+// Hull and domain shaders as the parser records them and as GL's tessellation stages: the hull shader's
+// attributes and patches, three control points per patch, the partitioning and (GL-wound) output
+// topology declared in the evaluation stage, each stage with its own uniform block.
+TEST(D3d10Syntax, HullAndDomainShadersBecomeTheTessellationStagesOfThePass) {
+    const char* source = R"(
+float Factor = 4;
+struct V { float3 p : POSITION; };
+struct C { float e[3] : SV_TessFactor; float i : SV_InsideTessFactor; };
+struct D { float4 p : SV_Position; };
+V VS(float3 p : POSITION) { V v; v.p = p; return v; }
+C PCF(InputPatch<V, 3> ip) { C c; c.e[0] = c.e[1] = c.e[2] = c.i = Factor; return c; }
+[domain("tri")]
+[partitioning("fractional_odd")]
+[outputtopology("triangle_cw")]
+[outputcontrolpoints(3)]
+[patchconstantfunc("PCF")]
+V HS(InputPatch<V, 3> ip, uint i : SV_OutputControlPointID) { return ip[i]; }
+[domain("tri")]
+D DS(C c, float3 uvw : SV_DomainLocation, const OutputPatch<V, 3> op)
+{
+    D d; d.p = float4(uvw.x * op[0].p + uvw.y * op[1].p + uvw.z * op[2].p, 1); return d;
+}
+float4 PS() : SV_Target { return 1; }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetHullShader(CompileShader(hs_5_0, HS()));
+                       SetDomainShader(CompileShader(ds_5_0, DS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)";
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(source, "d3d10.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    const FunctionDecl* hs = effect->findFunctions("HS").front();
+    ASSERT_EQ(hs->attributes.size(), 5u);
+    ASSERT_TRUE(hs->attribute("PatchConstantFunc"));
+    EXPECT_EQ(hs->attribute("PatchConstantFunc")->argument, "PCF");
+    EXPECT_EQ(hs->attribute("outputcontrolpoints")->argument, "3");
+    EXPECT_EQ(hs->params[0].patch, "InputPatch");
+    EXPECT_EQ(hs->params[0].patchSize, 3);
+    EXPECT_EQ(hs->params[0].type.structName, "V");
+    auto compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    EXPECT_EQ(pass.patchVertices, 3);
+    EXPECT_EQ(pass.hull.stage, ShaderStage::Hull);
+    EXPECT_EQ(pass.domain.stage, ShaderStage::Domain);
+    EXPECT_NE(pass.hull.glsl.find("layout(vertices = 3) out;"), std::string::npos) << pass.hull.glsl;
+    EXPECT_NE(pass.hull.glsl.find("gl_TessLevelOuter[2]"), std::string::npos) << pass.hull.glsl;
+    EXPECT_NE(pass.domain.glsl.find("layout(triangles, ccw, fractional_odd_spacing) in;"), std::string::npos)
+        << pass.domain.glsl;
+    EXPECT_EQ(pass.hull.uniformBlockBinding, 3);
+    EXPECT_EQ(pass.domain.uniformBlockBinding, 4);
+    ASSERT_FALSE(pass.hull.uniforms.empty());
+    EXPECT_EQ(pass.hull.uniforms[0].name, "Factor");
+}
+
+// A geometry shader's input primitive decides what the pass's draws feed it.
+TEST(D3d10Syntax, GeometryShaderInputPrimitiveChoosesTheDrawPrimitive) {
+    for (const auto& [input, primitive] :
+         {std::pair{"point V v[1]", CompiledPass::DrawPrimitive::Points},
+          std::pair{"line V v[2]", CompiledPass::DrawPrimitive::Lines},
+          std::pair{"triangle V v[3]", CompiledPass::DrawPrimitive::Triangles},
+          std::pair{"triangleadj V v[6]", CompiledPass::DrawPrimitive::TrianglesAdjacency}}) {
+        DiagnosticList diagnostics;
+        auto compiled = compile(std::string(R"(
+struct V { float4 p : SV_Position; };
+V VS(float3 p : POSITION) { V v; v.p = float4(p, 1); return v; }
+[maxvertexcount(1)]
+void GS()") + input + R"(, inout PointStream<V> s) { s.Append(v[0]); }
+float4 PS() : SV_Target { return 1; }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(CompileShader(gs_5_0, GS()));
+                       SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                                diagnostics);
+        ASSERT_TRUE(compiled) << input << "\n" << diagnostics.str();
+        EXPECT_EQ(compiled->techniques[0].passes[0].primitive, primitive) << input;
+    }
 }
 
 TEST(D3d10Syntax, DynamicLinkageIsRefusedWhereItIsDeclared) {

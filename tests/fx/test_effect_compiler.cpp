@@ -324,7 +324,7 @@ technique t { pass p {
 TEST(EffectCompiler, UnsupportedProfile) {
     DiagnosticList diags;
     std::string src =
-        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile hs_5_0 PS(); } }\n";
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile cs_5_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
     EXPECT_EQ(diags.items().back().id, DiagId::UnsupportedProfile) << diags.str();

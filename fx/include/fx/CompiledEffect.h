@@ -19,7 +19,8 @@ namespace fx {
 
 struct Effect;  // fx/Effect.h: the syntax tree, which the runtime does not read
 
-enum class ShaderStage { Vertex, Fragment, Geometry };
+// Hull and Domain are D3D11's names for GL's tessellation control and evaluation stages.
+enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain };
 
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
 struct UniformBinding {
@@ -140,6 +141,16 @@ struct CompiledPass {
     StageProgram vertex;
     StageProgram fragment;
     StageProgram geometry;  // D3D10's geometry shader (SetGeometryShader); empty glsl when the pass has none
+    StageProgram hull;      // D3D11's hull shader (SetHullShader): GL's tessellation control stage
+    StageProgram domain;    // D3D11's domain shader (SetDomainShader): GL's tessellation evaluation stage
+    // With a hull shader: the control points of one patch (its InputPatch<T, n>), drawn as GL_PATCHES of
+    // that many vertices; 0 draws triangle lists.
+    int patchVertices = 0;
+    // What the pass's draws give a geometry shader, by its input primitive: the meshes' triangles, their
+    // vertices as points (`point`), their edges once each as lines (`line`), or their triangles with the
+    // neighbours across each edge (`triangleadj`).
+    enum class DrawPrimitive { Triangles, Points, Lines, TrianglesAdjacency };
+    DrawPrimitive primitive = DrawPrimitive::Triangles;
     std::vector<CompileArgument> arguments;
     std::vector<RenderStateSetting> states;  // in source order, shaders excluded
     bool hasScript = false;

@@ -135,7 +135,20 @@ struct FunctionParam {
     // stream (`inout TriangleStream<GSOut> s`: "TriangleStream", with `type` the element struct).
     std::string primitive;
     std::string stream;
+    // A hull or domain shader's control points (`InputPatch<VSOut, 3> ip`: "InputPatch" and 3, with `type`
+    // the element struct; "OutputPatch" likewise); "" and 0 elsewhere.
+    std::string patch;
+    int patchSize = 0;
     std::optional<Expr> defaultValue;
+    SourceLoc loc;
+};
+
+// `[domain("tri")]` before a function: name "domain", argument "tri" (a string's text without its quotes,
+// or the expression's spelling), text the whole attribute as written.
+struct FunctionAttribute {
+    std::string name;
+    std::string argument;
+    std::string text;
     SourceLoc loc;
 };
 
@@ -145,10 +158,12 @@ struct FunctionDecl {
     std::string returnSemantic;  // float4 PS(...) : COLOR  ->  "COLOR"
     std::vector<FunctionParam> params;
     int maxVertexCount = 0;  // a geometry shader's [maxvertexcount(n)]; 0 if the function has none
-    bool hasBody = true;     // false for a prototype
-    std::string hlslText;    // the whole definition (attributes, signature and body)
-    SourceLoc hlslLoc;       // where hlslText starts
-    SourceLoc loc;           // the name's location
+    std::vector<FunctionAttribute> attributes;  // every [attribute] before the function, in order
+    const FunctionAttribute* attribute(const std::string& attributeName) const;  // case-insensitive lookup
+    bool hasBody = true;                                                         // false for a prototype
+    std::string hlslText;  // the whole definition (attributes, signature and body)
+    SourceLoc hlslLoc;     // where hlslText starts
+    SourceLoc loc;         // the name's location
 
     // A body of straight-line code: local declarations, assignments to locals, and a final return. Such
     // a function, called in a pass's compile arguments or states, is inlined there and evaluated on the

@@ -115,7 +115,8 @@ bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
     }
 }
 
-void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances) {
+void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances, int patchVertices,
+                   fx::CompiledPass::DrawPrimitive primitive) {
     if (mVao == 0) return;
     gl::BindVertexArray(mVao);
     const auto sameInput = [](const fx::VertexInput& a, const fx::VertexInput& b) {
@@ -123,7 +124,7 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances) {
     };
     if (!mLayout.empty() &&
         std::equal(inputs.begin(), inputs.end(), mLayout.begin(), mLayout.end(), sameInput)) {
-        drawElements(instances);
+        drawElements(instances, patchVertices, primitive);
         gl::BindVertexArray(0);
         return;
     }
@@ -174,16 +175,58 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances) {
     mLayout.clear();
     if (allStreams) mLayout = inputs;
     gl::BindBuffer(GL_ARRAY_BUFFER, 0);
-    drawElements(instances);
+    drawElements(instances, patchVertices, primitive);
     gl::BindVertexArray(0);
 }
 
-void GpuMesh::drawElements(int instances) const {
-    if (instances == 1) {
-        gl::DrawElements(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr);
-    } else {
-        gl::DrawElementsInstanced(GL_TRIANGLES, GLsizei(mIndexCount), GL_UNSIGNED_INT, nullptr, instances);
+void GpuMesh::drawElements(int instances, int patchVertices, fx::CompiledPass::DrawPrimitive primitive) {
+    using Primitive = fx::CompiledPass::DrawPrimitive;
+    if (primitive == Primitive::Points) {  // every vertex once, whatever the triangles
+        gl::DrawArraysInstanced(GL_POINTS, 0, GLsizei(mVertexCount), instances);
+        return;
     }
+    GLenum mode = GL_TRIANGLES;
+    size_t count = mIndexCount;
+    bool derived = false;
+    if (patchVertices > 0) {
+        gl::PatchParameteri(GL_PATCH_VERTICES, patchVertices);
+        mode = GL_PATCHES;
+    } else if (primitive == Primitive::Lines || primitive == Primitive::TrianglesAdjacency) {
+        const auto& [buffer, indexCount] = derivedIndices(primitive);
+        gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+        mode = primitive == Primitive::Lines ? GL_LINES : GL_TRIANGLES_ADJACENCY;
+        count = indexCount;
+        derived = true;
+    }
+    if (instances == 1) {
+        gl::DrawElements(mode, GLsizei(count), GL_UNSIGNED_INT, nullptr);
+    } else {
+        gl::DrawElementsInstanced(mode, GLsizei(count), GL_UNSIGNED_INT, nullptr, instances);
+    }
+    if (derived) gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mIndexBuffer);  // VAO state: the triangles again
+}
+
+const std::pair<GLuint, size_t>& GpuMesh::derivedIndices(fx::CompiledPass::DrawPrimitive primitive) {
+    const bool lines = primitive == fx::CompiledPass::DrawPrimitive::Lines;
+    std::pair<GLuint, size_t>& derived = lines ? mEdgeIndices : mAdjacencyIndices;
+    if (derived.first != 0) return derived;
+    // Built from what the buffers hold (the Mesh is not kept): read back once, then kept with the mesh.
+    std::vector<glm::vec3> positions(mVertexCount);
+    std::vector<uint32_t> indices(mIndexCount);
+    gl::BindBuffer(GL_ARRAY_BUFFER, mStreams[kPosition].buffer);
+    gl::GetBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(positions.size() * sizeof(glm::vec3)),
+                         positions.data());
+    gl::BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl::GetBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(indices.size() * sizeof(uint32_t)),
+                         indices.data());
+    const std::vector<uint32_t> list =
+        lines ? edgeIndices(positions, indices) : adjacencyIndices(positions, indices);
+    gl::GenBuffers(1, &derived.first);
+    gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, derived.first);
+    gl::BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(uint32_t)), list.data(),
+                   GL_STATIC_DRAW);
+    derived.second = list.size();
+    return derived;
 }
 
 void GpuMesh::release() {
@@ -192,6 +235,10 @@ void GpuMesh::release() {
         stream = {};
     }
     if (mIndexBuffer != 0) gl::DeleteBuffers(1, &mIndexBuffer);
+    for (std::pair<GLuint, size_t>* derived : {&mEdgeIndices, &mAdjacencyIndices}) {
+        if (derived->first != 0) gl::DeleteBuffers(1, &derived->first);
+        *derived = {0, 0};
+    }
     if (mVao != 0) gl::DeleteVertexArrays(1, &mVao);
     mIndexBuffer = 0;
     mVao = 0;
@@ -210,6 +257,8 @@ GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
         release();
         mVao = std::exchange(other.mVao, 0);
         mIndexBuffer = std::exchange(other.mIndexBuffer, 0);
+        mEdgeIndices = std::exchange(other.mEdgeIndices, {0, 0});
+        mAdjacencyIndices = std::exchange(other.mAdjacencyIndices, {0, 0});
         mStreams = std::exchange(other.mStreams, {});
         mIndexCount = other.mIndexCount;
         mVertexCount = other.mVertexCount;

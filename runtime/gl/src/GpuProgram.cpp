@@ -107,9 +107,16 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     // D3D10's geometry shader runs in both variants: it decides what is rasterized.
     const bool withGeometry = !pass.geometry.glsl.empty();
     const GLuint gs = withGeometry ? compileShader(GL_GEOMETRY_SHADER, pass.geometry.glsl, log) : 0;
-    if (vs && (fs || !withPixel) && (gs || !withGeometry)) {
+    // So do D3D11's hull and domain shaders (GL's tessellation stages); the effect compiler has made sure
+    // a pass has both or neither.
+    const bool withTessellation = !pass.hull.glsl.empty() && !pass.domain.glsl.empty();
+    const GLuint tcs = withTessellation ? compileShader(GL_TESS_CONTROL_SHADER, pass.hull.glsl, log) : 0;
+    const GLuint tes = withTessellation ? compileShader(GL_TESS_EVALUATION_SHADER, pass.domain.glsl, log) : 0;
+    if (vs && (fs || !withPixel) && (gs || !withGeometry) && ((tcs && tes) || !withTessellation)) {
         program->mProgram = gl::CreateProgram();
         gl::AttachShader(program->mProgram, vs);
+        if (tcs) gl::AttachShader(program->mProgram, tcs);
+        if (tes) gl::AttachShader(program->mProgram, tes);
         if (gs) gl::AttachShader(program->mProgram, gs);
         if (fs) gl::AttachShader(program->mProgram, fs);
         gl::LinkProgram(program->mProgram);
@@ -128,6 +135,8 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     if (vs) gl::DeleteShader(vs);
     if (fs) gl::DeleteShader(fs);
     if (gs) gl::DeleteShader(gs);
+    if (tcs) gl::DeleteShader(tcs);
+    if (tes) gl::DeleteShader(tes);
     if (!program->mProgram) {
         diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
         return nullptr;
@@ -136,8 +145,9 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     // SV_ClipDistance: GL clips only against the planes enabled, so enable those the program writes.
     if (const size_t at = pass.vertex.glsl.find("gl_ClipDistance["); at != std::string::npos)
         program->mClipDistances = std::clamp(std::atoi(pass.vertex.glsl.c_str() + at + 16), 0, 8);
-    const fx::StageProgram* linked[3] = {&pass.vertex, withPixel ? &pass.fragment : nullptr,
-                                         withGeometry ? &pass.geometry : nullptr};
+    const fx::StageProgram* linked[5] = {
+        &pass.vertex, withPixel ? &pass.fragment : nullptr, withGeometry ? &pass.geometry : nullptr,
+        withTessellation ? &pass.hull : nullptr, withTessellation ? &pass.domain : nullptr};
     // D3D10 pairs carry no layout(binding): their units are the pass's (fx's assignPairUnits).
     for (const fx::StageProgram* stage : linked)
         if (stage)
@@ -158,7 +168,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
                     gl::ShaderStorageBlockBinding(program->mProgram, index,
                                                   static_cast<GLuint>(at - storage.begin()));
             }
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 5; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
         if (!linked[i] || linked[i]->uniformBlockSize == 0 || linked[i]->uniformBlockBinding < 0) continue;
@@ -169,7 +179,8 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
 
 std::vector<size_t> GpuProgram::storageBufferParameters(const fx::CompiledPass& pass) {
     std::vector<size_t> parameters;
-    for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
         for (const fx::StorageBufferBinding& b : stage->storageBuffers) parameters.push_back(b.parameter);
     std::sort(parameters.begin(), parameters.end());
     parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());

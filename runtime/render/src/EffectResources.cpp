@@ -213,7 +213,8 @@ std::optional<TexelFormat> bufferTexelFormat(const std::string& templateArgs) {
 const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, size_t parameter) {
     for (const fx::CompiledTechnique& technique : effect.techniques)
         for (const fx::CompiledPass& pass : technique.passes)
-            for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+            for (const fx::StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
                 for (const fx::StorageBufferBinding& b : stage->storageBuffers)
                     if (b.parameter == parameter) return &b;
     return nullptr;

@@ -160,6 +160,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
     if (vertexOnly) program = vertexOnly;
     bindSamplers(pass.vertex);
+    bindSamplers(pass.hull);
+    bindSamplers(pass.domain);
     bindSamplers(pass.geometry);
     bindSamplers(pass.fragment);
     bindStorageBuffers(pass);
@@ -513,7 +515,7 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
         const bool drawUnculled = mCullClosedOnly && object && !(object->mesh && object->mesh->closed);
         if (drawUnculled) gl::Disable(GL_CULL_FACE);
-        mesh.draw(pass.vertex.inputs);
+        mesh.draw(pass.vertex.inputs, 1, pass.patchVertices, pass.primitive);
         if (drawUnculled) gl::Enable(GL_CULL_FACE);
     }
     countDraw(mesh, 1);

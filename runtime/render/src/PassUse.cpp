@@ -21,7 +21,8 @@ std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t cou
     for (const fx::CompiledPass& pass : technique.passes) {
         PassUse use;
         use.used.assign(count, false);
-        for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+        for (const fx::StageProgram* stage :
+             {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
             for (const fx::UniformBinding& member : stage->uniforms)
                 if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
                     member.index < count)

@@ -16,7 +16,8 @@ constexpr float kReceiverPadTexels = 8.0f;
 
 std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
     std::vector<const fx::SamplerBinding*> samplers;
-    for (const fx::StageProgram* stage : {&pass.vertex, &pass.geometry, &pass.fragment})
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
         for (const fx::SamplerBinding& binding : stage->samplers) samplers.push_back(&binding);
     return samplers;
 }

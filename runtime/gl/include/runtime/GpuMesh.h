@@ -51,7 +51,11 @@ public:
     // Binds the VAO, enables exactly the locations in `inputs` (feeding a mesh attribute or a default),
     // disables the locations enabled by the previous draw, and draws the triangle list. The program must
     // be current. `instances` > 1 draws that many instances in one call (gl_InstanceID 0..instances-1).
-    void draw(const std::vector<fx::VertexInput>& inputs, int instances = 1);
+    // `patchVertices` > 0 draws the triangles as GL_PATCHES of that many control points (tessellation);
+    // `primitive` draws the vertices as points, the unique edges as lines or the triangles with adjacency
+    // instead (a geometry shader's input; the index buffers are built at the first such draw and kept).
+    void draw(const std::vector<fx::VertexInput>& inputs, int instances = 1, int patchVertices = 0,
+              fx::CompiledPass::DrawPrimitive primitive = fx::CompiledPass::DrawPrimitive::Triangles);
 
     bool hasAttribute(VertexSemantic semantic) const;
     size_t indexCount() const { return mIndexCount; }
@@ -64,11 +68,15 @@ private:
         int components = 0;
     };
     void release();
-    void drawElements(int instances) const;
+    void drawElements(int instances, int patchVertices, fx::CompiledPass::DrawPrimitive primitive);
+    // The element buffer of lines or triangles with adjacency, built from the triangle list on first use.
+    const std::pair<GLuint, size_t>& derivedIndices(fx::CompiledPass::DrawPrimitive primitive);
     void uploadStream(Stream stream, const float* data, int components);
 
     GLuint mVao = 0;
     GLuint mIndexBuffer = 0;
+    std::pair<GLuint, size_t> mEdgeIndices{0, 0};       // GL_LINES: each welded edge once
+    std::pair<GLuint, size_t> mAdjacencyIndices{0, 0};  // GL_TRIANGLES_ADJACENCY: 6 per triangle
     std::array<StreamBuffer, kStreamCount> mStreams{};
     size_t mIndexCount = 0;
     size_t mVertexCount = 0;

@@ -88,7 +88,7 @@ private:
     GpuProgram() = default;
 
     GLuint mProgram = 0;
-    StageBlock mBlocks[3];   // vertex, pixel, geometry
+    StageBlock mBlocks[5];   // vertex, pixel, geometry, hull, domain
     int mClipDistances = 0;  // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
 };
 

@@ -42,4 +42,17 @@ Mesh makeHeightField(float sizeX, float sizeZ, int divisions, float (*height)(fl
 // Appends `other` (its positions moved by `offset`) to `mesh`: how one mesh is made of several shapes.
 void appendMesh(Mesh& mesh, const Mesh& other, const glm::vec3& offset = glm::vec3(0.0f));
 
+// Index lists derived from a triangle list for geometry shaders' other input primitives. Vertices within
+// 1e-5 of the mesh's extent of each other are welded, so that the seams where normals or UVs split still
+// join their triangles.
+// edgeIndices: every edge once, as a line list (two indices each, in the first triangle's order).
+std::vector<uint32_t> edgeIndices(const std::vector<glm::vec3>& positions,
+                                  const std::vector<uint32_t>& indices);
+// adjacencyIndices: GL_TRIANGLES_ADJACENCY's six per triangle (v0, n01, v1, n12, v2, n20), nij the vertex
+// opposite edge ij in the other triangle on that edge. An edge with no other triangle (the mesh's
+// boundary) or with more than one takes the triangle's own opposite vertex: the neighbour is the
+// triangle itself wound backwards, so a boundary edge of a triangle facing the light is on the silhouette.
+std::vector<uint32_t> adjacencyIndices(const std::vector<glm::vec3>& positions,
+                                       const std::vector<uint32_t>& indices);
+
 }  // namespace runtime
