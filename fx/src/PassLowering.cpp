@@ -516,6 +516,9 @@ private:
         return false;
     }
     bool uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value, std::string& globals);
+    // False (reported at CompileShader) when the call gives more arguments than the `uniformCount`
+    // uniform parameters of the function took.
+    bool everyArgumentTaken(size_t uniformCount);
     bool vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body);
     bool pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body);
     bool vertexOutputs(const std::vector<Field>& fields, std::string& members, std::string& body);
@@ -544,6 +547,13 @@ private:
     std::string mStreamStructText;
     std::map<int, TypeDesc> mVaryingOutputs;
 };
+
+bool WrapperBuilder::everyArgumentTaken(size_t uniformCount) {
+    if (uniformCount >= mCompile.args.size()) return true;
+    return fail(DiagId::InvalidCompileExpression, mCompile.loc,
+                {"'" + mFn.name + "' has " + std::to_string(uniformCount) + " uniform parameter(s), " +
+                 std::to_string(mCompile.args.size()) + " argument(s) given"});
+}
 
 bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value,
                                      std::string& globals) {
@@ -875,10 +885,7 @@ bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
         }
         callArgs += (i ? ", " : "") + arg;
     }
-    if (uniformIndex < mCompile.args.size())
-        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
-                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    if (!everyArgumentTaken(uniformIndex)) return false;
     if (!input || !stream)
         return fail(DiagId::UnsupportedFeature, mFn.loc,
                     {"geometry shader '" + mFn.name +
@@ -1107,10 +1114,7 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
         }
         callArgs += (i ? ", " : "") + arg;
     }
-    if (uniformIndex < mCompile.args.size())
-        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
-                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    if (!everyArgumentTaken(uniformIndex)) return false;
     if (!input)
         return fail(DiagId::UnsupportedFeature, mFn.loc,
                     {"hull shader '" + mFn.name + "' needs an input patch ('InputPatch<T, 3> patch')"});
@@ -1264,10 +1268,7 @@ bool WrapperBuilder::buildDomain(std::string& globals, std::string& wrapper) {
         }
         callArgs += (i ? ", " : "") + arg;
     }
-    if (uniformIndex < mCompile.args.size())
-        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
-                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    if (!everyArgumentTaken(uniformIndex)) return false;
     std::string call = "    " + mFn.name + "(" + callArgs + ");\n";
     if (mFn.returnType.base != BaseType::Void) {
         locals += "    " + hlslTypeName(mFn.returnType) + " fx_r;\n";
@@ -1322,10 +1323,7 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
         }
         callArgs += (i ? ", " : "") + arg;
     }
-    if (uniformIndex < mCompile.args.size())
-        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                    {"'" + mFn.name + "' has " + std::to_string(uniformIndex) + " uniform parameter(s), " +
-                     std::to_string(mCompile.args.size()) + " argument(s) given"});
+    if (!everyArgumentTaken(uniformIndex)) return false;
     bool hasReturn = mFn.returnType.base != BaseType::Void;
     if (hasReturn) {
         TypeDesc t = mFn.returnType;
