@@ -34,4 +34,4 @@ configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/shadowfxConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/shadowfxConfig.cmake ${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cmake
-        DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})
+        ${CMAKE_CURRENT_LIST_DIR}/FindSquish.cmake DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})

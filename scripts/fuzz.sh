@@ -10,7 +10,7 @@ seconds="${1:-60}"
 shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script)
+  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script fuzz_dds_file)
   [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
@@ -43,6 +43,8 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
     fuzz_sas_script)  # the value of every Script annotation
       grep -rhoE 'Script *= *"[^"]*"' effects tests/data | sed -E 's/^Script *= *"(.*)"$/\1/' | sort -u |
         while read -r s; do printf '%s' "$s" > "$dir/$(printf '%s' "$s" | md5sum | cut -c1-16)"; done ;;
+    fuzz_dds_file)  # one small file of each family: masks, float components, blocks, a DX10 header
+      cp fuzz/seeds/*.dds "$dir/" ;;
     fuzz_scene_file)
       find scenes tests/data -name '*.json' 2>/dev/null | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done
       [ -n "$(ls -A "$dir")" ] || echo '{}' > "$dir/empty.json" ;;

@@ -12,8 +12,8 @@ packages=(
   libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglfw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libstb-dev
   libassimp-dev nlohmann-json3-dev
-  # Texture files FX Composer and DirectX SDK effects name: DDS (2D, cube, volume, DXT1/3/5, mip chains).
-  libopenimageio-dev
+  # DXT blocks of the DDS texture files FX Composer and DirectX SDK effects name (runtime/TextureFile.h).
+  libsquish-dev
   # Meshes the built-in scenes read where Debian installs them (runtime/assets/src/AssetScenes.cpp).
   glmark2-data assimp-testmodels
   # `shadowfx bench`: Embree casts the ground truth's shadow rays; gnuplot draws error_vs_time.png.

@@ -1,5 +1,6 @@
 // DdsWriter: writes DirectDraw Surface files for texture tests, so that no binary file is checked in:
-// uncompressed A8R8G8B8 (2D, cube, volume, with mip chains) and DXT1/DXT3/DXT5 blocks of one colour.
+// uncompressed A8R8G8B8 (2D, cube, volume, with mip chains), DXT1/DXT3/DXT5 blocks of one colour, and
+// single surfaces of any pixel format whose bytes the test encodes.
 // Layout after Microsoft's DDS_HEADER documentation: "DDS ", a 124-byte header with a 32-byte pixel
 // format; cube maps store each face's mip chain in turn (+X -X +Y -Y +Z -Z), volumes each level's slices.
 #pragma once
@@ -106,6 +107,47 @@ public:
                 }
             }
         }
+        std::ofstream file(path, std::ios::binary);
+        file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
+        return static_cast<bool>(file);
+    }
+
+    // D3D9's DDS_PIXELFORMAT: flags (DDPF_*), FourCC, bits per texel and the R, G, B, A masks.
+    struct PixelFormat {
+        uint32_t flags = 0, fourCC = 0, bits = 0, r = 0, g = 0, b = 0, a = 0;
+    };
+
+    // One 2D level whose bytes the caller encoded: in `format`, or with a DX10 header naming `dxgiFormat`
+    // when that is not 0.
+    static bool writeSurface(const std::string& path, int width, int height, PixelFormat format,
+                             const std::vector<uint8_t>& data, uint32_t dxgiFormat = 0) {
+        std::vector<uint8_t> out;
+        auto u32 = [&](uint32_t v) {
+            for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+        };
+        out.insert(out.end(), {'D', 'D', 'S', ' '});
+        u32(124);
+        u32(0x1 | 0x2 | 0x4 | 0x1000);
+        u32(static_cast<uint32_t>(height));
+        u32(static_cast<uint32_t>(width));
+        u32(0);
+        u32(0);
+        u32(1);
+        for (int i = 0; i < 11; ++i) u32(0);
+        u32(32);
+        if (dxgiFormat != 0) format = PixelFormat{0x4, 0x30315844};  // DDPF_FOURCC, "DX10"
+        for (uint32_t v : {format.flags, format.fourCC, format.bits, format.r, format.g, format.b, format.a})
+            u32(v);
+        u32(0x1000);
+        for (int i = 0; i < 4; ++i) u32(0);
+        if (dxgiFormat != 0) {
+            u32(dxgiFormat);
+            u32(3);  // D3D10_RESOURCE_DIMENSION_TEXTURE2D
+            u32(0);
+            u32(1);
+            u32(0);
+        }
+        out.insert(out.end(), data.begin(), data.end());
         std::ofstream file(path, std::ios::binary);
         file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
         return static_cast<bool>(file);

@@ -1,5 +1,5 @@
 // DDS texture files, which nearly every FX Composer and DirectX SDK effect names: 2D with a mip chain,
-// DXT1/3/5, cube and volume textures, read through OpenImageIO, and Direct3D 10's arrays of 2D textures
+// DXT1/3/5, cube and volume textures, read by runtime/TextureFile.h, and Direct3D 10's arrays of 2D textures
 // and of cubes. The files are written by the test
 // (DdsWriter.h) with a colour per face, level and slice, and a full-screen pass samples them at known
 // coordinates; what lands in the frame is compared with what was written.
@@ -10,6 +10,8 @@
 #include <runtime/TextureFile.h>
 
 #include <cmath>
+#include <cstring>
+#include <initializer_list>
 #include <filesystem>
 #include <fstream>
 
@@ -151,6 +153,121 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_NE(diagnostics.str().find("dds.fx:1:9: warning: texture file 'cube.dds' holds a cube texture"),
               std::string::npos)
         << diagnostics.str();
+}
+
+// A cube map's stored levels are used, face by face, not regenerated from level 0.
+TEST_F(DdsTextures, CubeMapKeepsItsStoredMipLevels) {
+    ASSERT_TRUE(DdsWriter::write((mDir / "cube.dds").string(), DdsWriter::Layout::Cube,
+                                 DdsWriter::Compression::None, 4, 4, 1, 3, ramp));
+    auto renderer = effect(R"(texture Env < string ResourceName = "cube.dds"; string ResourceType = "Cube"; >;
+samplerCUBE S = sampler_state { texture = <Env>; MinFilter = POINT; MagFilter = POINT; MipFilter = POINT; };
+float3 axis(float i) {
+    float3 d[6] = { float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0), float3(0, -1, 0), float3(0, 0, 1),
+                    float3(0, 0, -1) };
+    return d[min((int)i, 5)];
+})",
+                           "texCUBElod(S, float4(axis(floor(uv.x * 8)), 1))");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage image = frame(*renderer);
+    ASSERT_TRUE(notConstant(image));
+    // Level 1's red is 20 above level 0's on every face; a chain regenerated from level 0 would keep it.
+    for (int face = 0; face < 6; ++face) EXPECT_NEAR(image.pixel(face, 0)[0], 50 + 40 * face, 2) << face;
+}
+
+// [SECTION] The reader alone: formats, channels a format lacks, damaged files (no GL)
+
+std::vector<float> firstTexel(const std::filesystem::path& path) {
+    std::string error;
+    const std::optional<runtime::TextureFile> file = runtime::loadTextureFile(path.string(), error);
+    EXPECT_TRUE(file) << error;
+    if (!file || file->levels.empty() || file->levels[0].size() < 4) return {};
+    return {file->levels[0].begin(), file->levels[0].begin() + 4};
+}
+
+std::vector<uint8_t> bytesOf(std::initializer_list<float> values) {
+    std::vector<uint8_t> bytes(values.size() * 4);
+    std::memcpy(bytes.data(), values.begin(), bytes.size());
+    return bytes;
+}
+
+TEST(DdsReader, D3d9FormatsReadMissingChannelsAsOneAndDxgiFormatsAsZero) {
+    ScratchDirectory scratch{"dds-reader"};
+    const std::filesystem::path r32f = scratch.path() / "r32f.dds", dxgi = scratch.path() / "r32.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(r32f.string(), 1, 1, {0x4, 114}, bytesOf({0.25f})));  // D3DFMT_R32F
+    EXPECT_EQ(firstTexel(r32f), (std::vector<float>{0.25f, 1, 1, 1}));
+    ASSERT_TRUE(DdsWriter::writeSurface(dxgi.string(), 1, 1, {}, bytesOf({0.25f}), 41));  // R32_FLOAT
+    EXPECT_EQ(firstTexel(dxgi), (std::vector<float>{0.25f, 0, 0, 1}));
+
+    // D3DFMT_A16B16G16R16F: halves 1.0, -2.0, 0.5, 65504.
+    const std::filesystem::path half = scratch.path() / "half.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(half.string(), 1, 1, {0x4, 113},
+                                        {0x00, 0x3c, 0x00, 0xc0, 0x00, 0x38, 0xff, 0x7b}));
+    EXPECT_EQ(firstTexel(half), (std::vector<float>{1.0f, -2.0f, 0.5f, 65504.0f}));
+}
+
+TEST(DdsReader, MaskFormatsLuminanceAndAlpha) {
+    ScratchDirectory scratch{"dds-reader"};
+    // R5G6B5: red 31 (full), green 0, blue 16 of 31.
+    const std::filesystem::path rgb565 = scratch.path() / "565.dds";
+    const uint16_t texel = uint16_t(31 << 11 | 16);
+    ASSERT_TRUE(DdsWriter::writeSurface(rgb565.string(), 1, 1, {0x40, 0, 16, 0xf800, 0x07e0, 0x001f, 0},
+                                        {uint8_t(texel), uint8_t(texel >> 8)}));
+    const std::vector<float> c = firstTexel(rgb565);
+    ASSERT_EQ(c.size(), 4u);
+    EXPECT_FLOAT_EQ(c[0], 1.0f);
+    EXPECT_FLOAT_EQ(c[1], 0.0f);
+    EXPECT_FLOAT_EQ(c[2], 16.0f / 31.0f);
+    EXPECT_FLOAT_EQ(c[3], 1.0f);  // no DDPF_ALPHAPIXELS: opaque
+    // A8L8: luminance 51 fills red, green and blue; alpha 204.
+    const std::filesystem::path a8l8 = scratch.path() / "a8l8.dds";
+    ASSERT_TRUE(
+        DdsWriter::writeSurface(a8l8.string(), 1, 1, {0x20000 | 0x1, 0, 16, 0xff, 0, 0, 0xff00}, {51, 204}));
+    EXPECT_EQ(firstTexel(a8l8), (std::vector<float>{0.2f, 0.2f, 0.2f, 0.8f}));
+    // A8: colour 0, as D3D9 read it.
+    const std::filesystem::path a8 = scratch.path() / "a8.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(a8.string(), 1, 1, {0x2, 0, 8, 0, 0, 0, 0xff}, {255}));
+    EXPECT_EQ(firstTexel(a8), (std::vector<float>{0, 0, 0, 1}));
+}
+
+TEST(DdsReader, Bc4AndBc5BlocksDecodeIntoRedAndGreen) {
+    ScratchDirectory scratch{"dds-reader"};
+    // Endpoints 255 and 0 (eight values); texel 0's index 1 (= e1 = 0), texel 1's index 2 ((6*255+0)/7).
+    const std::vector<uint8_t> bc4 = {255, 0, 0b010001, 0, 0, 0, 0, 0};
+    const std::filesystem::path ati1 = scratch.path() / "ati1.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(ati1.string(), 4, 4, {0x4, 0x31495441}, bc4));  // "ATI1"
+    std::string error;
+    std::optional<runtime::TextureFile> file = runtime::loadTextureFile(ati1.string(), error);
+    ASSERT_TRUE(file) << error;
+    EXPECT_EQ(std::vector<float>(file->levels[0].begin(), file->levels[0].begin() + 8),
+              (std::vector<float>{0, 0, 0, 1, 6.0f / 7.0f, 0, 0, 1}));
+    // BC5 (DXGI 83): red from the first half, green from the second (endpoints 10 <= 200: six values).
+    std::vector<uint8_t> bc5 = bc4;
+    bc5.insert(bc5.end(), {10, 200, 0, 0, 0, 0, 0, 0});
+    const std::filesystem::path bc5File = scratch.path() / "bc5.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(bc5File.string(), 4, 4, {}, bc5, 83));
+    file = runtime::loadTextureFile(bc5File.string(), error);
+    ASSERT_TRUE(file) << error;
+    EXPECT_EQ(std::vector<float>(file->levels[0].begin(), file->levels[0].begin() + 4),
+              (std::vector<float>{0, 10.0f / 255.0f, 0, 1}));
+}
+
+TEST(DdsReader, DamagedFilesAreErrorsThatSayWhat) {
+    ScratchDirectory scratch{"dds-reader"};
+    std::string error;
+    const std::filesystem::path text = scratch.path() / "text.dds";
+    std::ofstream(text) << "not a texture";
+    EXPECT_FALSE(runtime::loadTextureFile(text.string(), error));
+    EXPECT_EQ(error, "not a DDS file (no \"DDS \" magic and 124-byte header)");
+
+    const std::filesystem::path shortFile = scratch.path() / "short.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(shortFile.string(), 2, 2, {0x4, 114}, bytesOf({1, 2, 3})));
+    EXPECT_FALSE(runtime::loadTextureFile(shortFile.string(), error));
+    EXPECT_EQ(error, "the file ends inside its texel data (12 of 16 bytes)");
+
+    const std::filesystem::path unknown = scratch.path() / "unknown.dds";
+    ASSERT_TRUE(DdsWriter::writeSurface(unknown.string(), 1, 1, {0x4, 0x31545848}, bytesOf({1})));  // "HXT1"
+    EXPECT_FALSE(runtime::loadTextureFile(unknown.string(), error));
+    EXPECT_NE(error.find("pixel format 'HXT1'"), std::string::npos) << error;
 }
 
 // [SECTION] Direct3D 10 arrays (DX10 header, arraySize > 1)

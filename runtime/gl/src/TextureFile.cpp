@@ -1,9 +1,19 @@
-// TextureFile: DDS through OpenImageIO (see TextureFile.h).
+// TextureFile: the DDS reader (see TextureFile.h). Block-compressed formats are decoded by libsquish;
+// everything else here. Layout after Microsoft's "DDS" programming guide: "DDS ", the 124-byte DDS_HEADER
+// with its 32-byte DDS_PIXELFORMAT, the 20-byte DDS_HEADER_DXT10 when the FourCC is "DX10", then the data:
+// per array element, per cube face, per mip level, that level's depth slices, rows top first, no padding.
+//
+// [SECTION] Reading bytes
+// [SECTION] Texel formats (D3D9 pixel formats, D3D9 FourCC codes, DXGI formats)
+// [SECTION] Header
+// [SECTION] Decoding
 #include <runtime/TextureFile.h>
 
-#include <OpenImageIO/imageio.h>
+#include <squish.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -17,34 +27,10 @@ namespace runtime {
 
 namespace {
 
-// Widens `channels` samples per texel to RGBA: one channel is luminance (L8), two luminance and alpha.
-std::vector<float> toRGBA(const std::vector<float>& samples, int channels) {
-    const size_t texels = samples.size() / static_cast<size_t>(channels);
-    std::vector<float> rgba(texels * 4);
-    for (size_t i = 0; i < texels; ++i) {
-        const float* in = &samples[i * static_cast<size_t>(channels)];
-        float* out = &rgba[i * 4];
-        if (channels <= 2) {
-            out[0] = out[1] = out[2] = in[0];
-            out[3] = channels == 2 ? in[1] : 1.0f;
-        } else {
-            out[0] = in[0];
-            out[1] = in[1];
-            out[2] = in[2];
-            out[3] = channels >= 4 ? in[3] : 1.0f;
-        }
-    }
-    return rgba;
-}
+// [SECTION] Reading bytes
 
-// [SECTION] DX10-header arrays
-// Layout after Microsoft's "DDS_HEADER_DXT10" documentation: "DDS ", the 124-byte DDS_HEADER, the
-// 20-byte DX10 header (dxgiFormat, resourceDimension, miscFlag, arraySize, miscFlags2), then per element
-// (per face of a cube) its whole mip chain.
-
-uint32_t readU32(const std::vector<uint8_t>& bytes, size_t at) {
-    return uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 |
-           uint32_t(bytes[at + 3]) << 24;
+uint32_t readU32(const uint8_t* at) {
+    return uint32_t(at[0]) | uint32_t(at[1]) << 8 | uint32_t(at[2]) << 16 | uint32_t(at[3]) << 24;
 }
 
 float halfToFloat(uint16_t h) {
@@ -61,103 +47,366 @@ float halfToFloat(uint16_t h) {
     return sign ? -value : value;
 }
 
-// One texel of the DXGI formats read here, as RGBA (channels a format lacks read as D3D does: 0, alpha 1).
-struct DxgiLayout {
-    uint32_t format;
-    int bytes;
-};
-constexpr DxgiLayout kDxgiFormats[] = {{2, 16}, {10, 8}, {28, 4}, {29, 4},
-                                       {41, 4}, {61, 1}, {87, 4}, {91, 4}};
+// [SECTION] Texel formats
+// Three families cover what D3D9 and D3D10 wrote to DDS files:
+// - bit masks over a texel of at most 32 bits (every D3D9 pixel format with masks, and the DXGI formats
+//   that are such a texel: R8G8B8A8, B8G8R8A8, R10G10B10A2, R8G8, R8, A8);
+// - whole components of 16 or 32 bits (the float formats, and 16-bit UNORM);
+// - 4x4 blocks: DXT1-5 (BC1-3) decoded by libsquish; ATI1/ATI2 (BC4/BC5) here, since Debian's libsquish
+//   1.15 decodes their blocks as colour blocks.
+// A channel a format lacks reads as Direct3D reads it: D3D9's formats 1 in every missing channel (its
+// "Texture Formats" page: "the default value for formats that do not contain all channels" is 1), DXGI's
+// 0 in a missing colour channel and 1 in a missing alpha.
 
-void decodeTexel(uint32_t format, const uint8_t* in, float* out) {
-    out[0] = out[1] = out[2] = 0.0f;
-    out[3] = 1.0f;
-    switch (format) {
-        case 2:  // R32G32B32A32_FLOAT
-            std::memcpy(out, in, 16);
-            break;
-        case 10:  // R16G16B16A16_FLOAT
-            for (int c = 0; c < 4; ++c) out[c] = halfToFloat(uint16_t(in[2 * c] | in[2 * c + 1] << 8));
-            break;
-        case 28:  // R8G8B8A8_UNORM (_SRGB: the bytes as stored, like the 8-bit files above)
-        case 29:
-            for (int c = 0; c < 4; ++c) out[c] = in[c] / 255.0f;
-            break;
-        case 41:  // R32_FLOAT
-            std::memcpy(out, in, 4);
-            break;
-        case 61:  // R8_UNORM
-            out[0] = in[0] / 255.0f;
-            break;
-        default:  // 87, 91: B8G8R8A8_UNORM(_SRGB)
-            out[0] = in[2] / 255.0f;
-            out[1] = in[1] / 255.0f;
-            out[2] = in[0] / 255.0f;
-            out[3] = in[3] / 255.0f;
-            break;
+enum class Component { Unorm16, Half, Float };
+
+struct TexelFormat {
+    enum class Family { Masks, Components, Blocks };
+    Family family = Family::Masks;
+    int bytes = 0;  // per texel; per 4x4 block for Blocks
+    // Masks: the R, G, B, A masks (0: channel absent); `luminance` replicates R into G and B.
+    std::array<uint32_t, 4> masks{};
+    bool luminance = false;
+    // Components: the type and, for R, G, B, A, the stored component it reads (-1: absent).
+    Component component = Component::Float;
+    std::array<int, 4> swizzle{-1, -1, -1, -1};
+    // Blocks: libsquish's flag for BC1-3, else BC4 (1 channel) or BC5 (2) decoded here.
+    int squishFlags = 0;
+    int blockChannels = 4;
+    float missingColour = 0.0f;  // what an absent R, G or B reads
+};
+
+TexelFormat masks(int bits, uint32_t r, uint32_t g, uint32_t b, uint32_t a, float missingColour,
+                  bool luminance = false) {
+    TexelFormat f;
+    f.family = TexelFormat::Family::Masks;
+    f.bytes = bits / 8;
+    f.masks = {r, g, b, a};
+    f.luminance = luminance;
+    f.missingColour = missingColour;
+    return f;
+}
+
+TexelFormat components(Component component, int count, std::array<int, 4> swizzle, float missingColour) {
+    TexelFormat f;
+    f.family = TexelFormat::Family::Components;
+    f.component = component;
+    f.bytes = count * (component == Component::Float ? 4 : 2);
+    f.swizzle = swizzle;
+    f.missingColour = missingColour;
+    return f;
+}
+
+TexelFormat blocks(int squishFlags, int bytes, int channels = 4) {
+    TexelFormat f;
+    f.family = TexelFormat::Family::Blocks;
+    f.bytes = bytes;
+    f.squishFlags = squishFlags;
+    f.blockChannels = channels;
+    return f;
+}
+
+constexpr std::array<int, 4> kR = {0, -1, -1, -1}, kRG = {0, 1, -1, -1}, kRGBA = {0, 1, 2, 3};
+
+std::optional<TexelFormat> fourCCFormat(uint32_t fourCC) {
+    auto code = [](const char* s) { return readU32(reinterpret_cast<const uint8_t*>(s)); };
+    // DXT2 and DXT4 hold premultiplied alpha; D3D9 sampled their texels as stored, as here.
+    if (fourCC == code("DXT1")) return blocks(squish::kDxt1, 8);
+    if (fourCC == code("DXT2") || fourCC == code("DXT3")) return blocks(squish::kDxt3, 16);
+    if (fourCC == code("DXT4") || fourCC == code("DXT5")) return blocks(squish::kDxt5, 16);
+    if (fourCC == code("ATI1") || fourCC == code("BC4U")) return blocks(0, 8, 1);
+    if (fourCC == code("ATI2") || fourCC == code("BC5U")) return blocks(0, 16, 2);
+    // D3DFORMAT values stored as the FourCC.
+    switch (fourCC) {
+        case 36:  // D3DFMT_A16B16G16R16
+            return components(Component::Unorm16, 4, kRGBA, 1.0f);
+        case 111:  // D3DFMT_R16F
+            return components(Component::Half, 1, kR, 1.0f);
+        case 112:  // D3DFMT_G16R16F
+            return components(Component::Half, 2, kRG, 1.0f);
+        case 113:  // D3DFMT_A16B16G16R16F
+            return components(Component::Half, 4, kRGBA, 1.0f);
+        case 114:  // D3DFMT_R32F
+            return components(Component::Float, 1, kR, 1.0f);
+        case 115:  // D3DFMT_G32R32F
+            return components(Component::Float, 2, kRG, 1.0f);
+        case 116:  // D3DFMT_A32B32G32R32F
+            return components(Component::Float, 4, kRGBA, 1.0f);
+        default:
+            return std::nullopt;
     }
 }
 
-// nullopt when the file is not a DX10-header array (OpenImageIO reads it); otherwise the array, or an
-// error in `error` (and an empty TextureFile).
-std::optional<TextureFile> readDx10Array(const std::string& path, std::string& error) {
-    std::ifstream in(path, std::ios::binary);
-    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (bytes.size() < 148 || std::memcmp(bytes.data(), "DDS ", 4) != 0 ||
-        std::memcmp(bytes.data() + 84, "DX10", 4) != 0 || readU32(bytes, 140) <= 1)
+std::optional<TexelFormat> dxgiFormat(uint32_t format) {
+    switch (format) {
+        case 2:  // R32G32B32A32_FLOAT
+            return components(Component::Float, 4, kRGBA, 0.0f);
+        case 10:  // R16G16B16A16_FLOAT
+            return components(Component::Half, 4, kRGBA, 0.0f);
+        case 11:  // R16G16B16A16_UNORM
+            return components(Component::Unorm16, 4, kRGBA, 0.0f);
+        case 16:  // R32G32_FLOAT
+            return components(Component::Float, 2, kRG, 0.0f);
+        case 24:  // R10G10B10A2_UNORM
+            return masks(32, 0x3ffu, 0xffc00u, 0x3ff00000u, 0xc0000000u, 0.0f);
+        case 28:  // R8G8B8A8_UNORM(_SRGB): the bytes as stored; the effect's sampler decides on sRGB
+        case 29:
+            return masks(32, 0xffu, 0xff00u, 0xff0000u, 0xff000000u, 0.0f);
+        case 34:  // R16G16_FLOAT
+            return components(Component::Half, 2, kRG, 0.0f);
+        case 41:  // R32_FLOAT
+            return components(Component::Float, 1, kR, 0.0f);
+        case 49:  // R8G8_UNORM
+            return masks(16, 0xffu, 0xff00u, 0, 0, 0.0f);
+        case 54:  // R16_FLOAT
+            return components(Component::Half, 1, kR, 0.0f);
+        case 56:  // R16_UNORM
+            return components(Component::Unorm16, 1, kR, 0.0f);
+        case 61:  // R8_UNORM
+            return masks(8, 0xffu, 0, 0, 0, 0.0f);
+        case 65:  // A8_UNORM
+            return masks(8, 0, 0, 0, 0xffu, 0.0f);
+        case 71:  // BC1_UNORM(_SRGB)
+        case 72:
+            return blocks(squish::kDxt1, 8);
+        case 74:  // BC2
+        case 75:
+            return blocks(squish::kDxt3, 16);
+        case 77:  // BC3
+        case 78:
+            return blocks(squish::kDxt5, 16);
+        case 80:  // BC4_UNORM
+            return blocks(0, 8, 1);
+        case 83:  // BC5_UNORM
+            return blocks(0, 16, 2);
+        case 87:  // B8G8R8A8_UNORM(_SRGB)
+        case 91:
+            return masks(32, 0xff0000u, 0xff00u, 0xffu, 0xff000000u, 0.0f);
+        case 88:  // B8G8R8X8_UNORM(_SRGB)
+        case 93:
+            return masks(32, 0xff0000u, 0xff00u, 0xffu, 0, 0.0f);
+        default:
+            return std::nullopt;
+    }
+}
+
+// [SECTION] Header
+
+// DDS_PIXELFORMAT flags, DDS_HEADER caps2 flags and DX10 header fields the reader looks at.
+constexpr uint32_t kAlphaPixels = 0x1, kAlpha = 0x2, kFourCC = 0x4, kRgb = 0x40, kLuminance = 0x20000;
+constexpr uint32_t kCaps2Cube = 0x200, kCaps2AllFaces = 0xfc00, kCaps2Volume = 0x200000;
+constexpr uint32_t kMipMapCountFlag = 0x20000;
+constexpr uint32_t kDx10Texture1D = 2, kDx10Texture2D = 3, kDx10Texture3D = 4, kDx10MiscCube = 0x4;
+// Direct3D 11's resource limits: what a DDS file may hold (and what is checked before allocating).
+constexpr uint32_t kMaxSide2D = 16384, kMaxSide3D = 2048, kMaxElements = 2048;
+
+struct Layout {
+    TextureFile::Kind kind = TextureFile::Kind::Flat;
+    uint32_t width = 0, height = 0, depth = 1, levels = 1, elements = 1;
+    TexelFormat format;
+    size_t dataOffset = 0;
+};
+
+// The bytes one mip level of one face takes in the file.
+size_t levelBytes(const Layout& layout, uint32_t level) {
+    const size_t w = std::max(layout.width >> level, 1u), h = std::max(layout.height >> level, 1u);
+    const size_t d = std::max(layout.depth >> level, 1u);
+    if (layout.format.family == TexelFormat::Family::Blocks)
+        return ((w + 3) / 4) * ((h + 3) / 4) * size_t(layout.format.bytes) * d;
+    return w * h * d * size_t(layout.format.bytes);
+}
+
+std::optional<TexelFormat> legacyFormat(const uint8_t* pf, std::string& error) {
+    const uint32_t flags = readU32(pf + 4);
+    if (flags & kFourCC) {
+        const uint32_t fourCC = readU32(pf + 8);
+        if (std::optional<TexelFormat> format = fourCCFormat(fourCC)) return format;
+        std::string name;
+        for (int i = 0; i < 4; ++i) {
+            const char c = static_cast<char>(fourCC >> (8 * i));
+            name += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+        }
+        error = "pixel format '" + name + "' (FourCC " + std::to_string(fourCC) +
+                ") is not read (DXT1-5, ATI1/ATI2 and the D3D9 float and 16-bit formats are)";
         return std::nullopt;
-    TextureFile file;
-    const uint32_t format = readU32(bytes, 128);
-    const uint32_t dimension = readU32(bytes, 132);
-    const bool cube = (readU32(bytes, 136) & 0x4u) != 0;
-    const uint32_t elements = readU32(bytes, 140);
-    const uint32_t width = readU32(bytes, 16);
-    const uint32_t height = dimension == 2 ? 1 : readU32(bytes, 12);
-    const uint32_t levels = std::max(readU32(bytes, 28), 1u);
-    const DxgiLayout* layout = nullptr;
-    for (const DxgiLayout& l : kDxgiFormats)
-        if (l.format == format) layout = &l;
-    if (!layout) {
-        error = "DXGI format " + std::to_string(format) +
-                " is not read in DDS arrays (the uncompressed R8G8B8A8, B8G8R8A8, R16G16B16A16_FLOAT, "
-                "R32G32B32A32_FLOAT, R8_UNORM and R32_FLOAT are)";
-        return TextureFile{};
     }
-    if ((dimension != 2 && dimension != 3) || width == 0 || height == 0 || width > 16384 || height > 16384 ||
-        elements > 2048 || levels > 15 || (cube && (dimension != 3 || width != height))) {
-        error = "malformed DX10 array header";
-        return TextureFile{};
+    const uint32_t bits = readU32(pf + 12);
+    if (!(flags & (kRgb | kLuminance | kAlpha)) || (bits != 8 && bits != 16 && bits != 24 && bits != 32)) {
+        error = "pixel format flags " + std::to_string(flags) + " with " + std::to_string(bits) +
+                " bits per texel are not read (RGB, luminance and alpha masks of 8 to 32 bits are)";
+        return std::nullopt;
     }
-    file.kind = cube ? TextureFile::Kind::Cube : TextureFile::Kind::Flat;
-    file.width = static_cast<int>(width);
-    file.height = static_cast<int>(height);
-    file.elements = static_cast<int>(elements);
-    const size_t layers = size_t(elements) * (cube ? 6 : 1);
-    // The data's size is checked before any allocation: a header may claim 2048 elements of 16384² texels.
-    size_t chainBytes = 0;
-    for (uint32_t level = 0; level < levels; ++level)
-        chainBytes +=
-            size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u) * size_t(layout->bytes);
-    const size_t elementBytes = chainBytes * (cube ? 6 : 1);
-    if ((bytes.size() - 148) / elementBytes < elements) {
-        error =
-            "the file ends inside element " + std::to_string((bytes.size() - 148) / elementBytes) + "'s data";
-        return TextureFile{};
+    const uint32_t alphaMask = (flags & (kAlphaPixels | kAlpha)) ? readU32(pf + 28) : 0;
+    if (flags & kAlpha && !(flags & (kRgb | kLuminance))) return masks(int(bits), 0, 0, 0, alphaMask, 0.0f);
+    if (flags & kLuminance) return masks(int(bits), readU32(pf + 16), 0, 0, alphaMask, 1.0f, true);
+    return masks(int(bits), readU32(pf + 16), readU32(pf + 20), readU32(pf + 24), alphaMask, 1.0f);
+}
+
+std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::string& error) {
+    if (bytes.size() < 128 || std::memcmp(bytes.data(), "DDS ", 4) != 0 || readU32(&bytes[4]) != 124) {
+        error = "not a DDS file (no \"DDS \" magic and 124-byte header)";
+        return std::nullopt;
     }
-    file.levels.resize(levels);
-    for (uint32_t level = 0; level < levels; ++level)
-        file.levels[level].resize(size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u) *
-                                  layers * 4);
-    size_t at = 148;
-    for (size_t layer = 0; layer < layers; ++layer) {
-        for (uint32_t level = 0; level < levels; ++level) {
-            const size_t texels = size_t(std::max(width >> level, 1u)) * std::max(height >> level, 1u);
-            float* out = file.levels[level].data() + layer * texels * 4;
-            for (size_t t = 0; t < texels; ++t, at += size_t(layout->bytes))
-                decodeTexel(format, bytes.data() + at, out + t * 4);
+    const uint8_t* header = bytes.data() + 4;  // DDS_HEADER
+    const uint8_t* pf = header + 72;           // DDS_PIXELFORMAT
+    Layout layout;
+    layout.height = readU32(header + 8);
+    layout.width = readU32(header + 12);
+    const uint32_t depth = readU32(header + 20);
+    const uint32_t mipCount = readU32(header + 24);
+    layout.levels = (readU32(header + 4) & kMipMapCountFlag) || mipCount > 1 ? std::max(mipCount, 1u) : 1u;
+    const uint32_t caps2 = readU32(header + 108);
+    layout.dataOffset = 128;
+    const bool dx10 = (readU32(pf + 4) & kFourCC) && std::memcmp(pf + 8, "DX10", 4) == 0;
+    if (dx10) {
+        if (bytes.size() < 148) {
+            error = "the file ends inside its DX10 header";
+            return std::nullopt;
+        }
+        const uint8_t* ext = bytes.data() + 128;
+        const uint32_t dxgi = readU32(ext);
+        std::optional<TexelFormat> format = dxgiFormat(dxgi);
+        if (!format) {
+            error = "DXGI format " + std::to_string(dxgi) +
+                    " is not read (the 8-, 16- and 32-bit UNORM and FLOAT colour formats and BC1-5 are)";
+            return std::nullopt;
+        }
+        layout.format = *format;
+        const uint32_t dimension = readU32(ext + 4);
+        if (dimension != kDx10Texture1D && dimension != kDx10Texture2D && dimension != kDx10Texture3D) {
+            error = "DX10 resource dimension " + std::to_string(dimension) + " is not a texture";
+            return std::nullopt;
+        }
+        if (dimension == kDx10Texture1D) layout.height = 1;
+        layout.kind = dimension == kDx10Texture3D          ? TextureFile::Kind::Volume
+                      : (readU32(ext + 8) & kDx10MiscCube) ? TextureFile::Kind::Cube
+                                                           : TextureFile::Kind::Flat;
+        layout.elements = std::max(readU32(ext + 12), 1u);
+        layout.dataOffset = 148;
+    } else {
+        std::optional<TexelFormat> format = legacyFormat(pf, error);
+        if (!format) return std::nullopt;
+        layout.format = *format;
+        if (caps2 & kCaps2Cube) {
+            // D3D9 allowed cube maps with some faces left out; a cube texture needs all six.
+            if ((caps2 & kCaps2AllFaces) != kCaps2AllFaces) {
+                error = "a cube map with fewer than six faces is not read";
+                return std::nullopt;
+            }
+            layout.kind = TextureFile::Kind::Cube;
+        } else if (caps2 & kCaps2Volume) {
+            layout.kind = TextureFile::Kind::Volume;
         }
     }
-    return file;
+    if (layout.kind == TextureFile::Kind::Volume) layout.depth = std::max(depth, 1u);
+    const uint32_t maxSide = layout.kind == TextureFile::Kind::Volume ? kMaxSide3D : kMaxSide2D;
+    if (layout.width == 0 || layout.height == 0 || layout.width > maxSide || layout.height > maxSide ||
+        layout.depth > kMaxSide3D || layout.elements > kMaxElements ||
+        (layout.kind == TextureFile::Kind::Volume && layout.elements > 1) ||
+        (layout.kind == TextureFile::Kind::Cube && layout.width != layout.height)) {
+        error = "malformed header: " + std::to_string(layout.width) + "x" + std::to_string(layout.height) +
+                "x" + std::to_string(layout.depth) + ", " + std::to_string(layout.elements) +
+                " elements (sides up to " + std::to_string(maxSide) + ", square cube faces)";
+        return std::nullopt;
+    }
+    // A mip chain ends at 1x1x1; a count beyond that is the writer's mistake, not more data.
+    const uint32_t fullChain =
+        uint32_t(std::bit_width(std::max({layout.width, layout.height, layout.depth})));
+    layout.levels = std::min(layout.levels, fullChain);
+    return layout;
+}
+
+// [SECTION] Decoding
+
+// One texel of a Masks or Components format as RGBA.
+void decodeTexel(const TexelFormat& f, const uint8_t* in, float* out) {
+    if (f.family == TexelFormat::Family::Masks) {
+        uint32_t texel = 0;
+        for (int i = 0; i < f.bytes; ++i) texel |= uint32_t(in[i]) << (8 * i);
+        for (int c = 0; c < 4; ++c) {
+            const uint32_t mask = f.masks[size_t(c)];
+            if (!mask) {
+                out[c] = c == 3 ? 1.0f : f.missingColour;
+                continue;
+            }
+            const int shift = std::countr_zero(mask);
+            out[c] = float((texel & mask) >> shift) / float(mask >> shift);
+        }
+        if (f.luminance) out[1] = out[2] = out[0];
+        return;
+    }
+    const int size = f.component == Component::Float ? 4 : 2;
+    for (int c = 0; c < 4; ++c) {
+        const int stored = f.swizzle[size_t(c)];
+        if (stored < 0) {
+            out[c] = c == 3 ? 1.0f : f.missingColour;
+            continue;
+        }
+        const uint8_t* at = in + stored * size;
+        if (f.component == Component::Float) {
+            std::memcpy(&out[c], at, 4);
+        } else {
+            const uint16_t v = uint16_t(at[0] | at[1] << 8);
+            out[c] = f.component == Component::Half ? halfToFloat(v) : float(v) / 65535.0f;
+        }
+    }
+}
+
+// One channel of a 4x4 BC4 block (also each half of a BC5 block, and BC3's alpha): two 8-bit endpoints
+// and sixteen 3-bit indices into the 8 (or, with e0 <= e1, 6 plus 0 and 1) values between them
+// (Direct3D 10's "Block Compression" documentation, BC4).
+void decodeBc4Channel(const uint8_t* block, int w, int h, int bx, int by, int channel, float* out) {
+    const float e0 = block[0] / 255.0f, e1 = block[1] / 255.0f;
+    float values[8] = {e0, e1};
+    if (block[0] > block[1]) {
+        for (int i = 1; i < 7; ++i) values[i + 1] = (float(7 - i) * e0 + float(i) * e1) / 7.0f;
+    } else {
+        for (int i = 1; i < 5; ++i) values[i + 1] = (float(5 - i) * e0 + float(i) * e1) / 5.0f;
+        values[6] = 0.0f;
+        values[7] = 1.0f;
+    }
+    uint64_t indices = 0;
+    for (int i = 0; i < 6; ++i) indices |= uint64_t(block[2 + i]) << (8 * i);
+    for (int i = 0; i < 16; ++i) {
+        const int x = bx * 4 + i % 4, y = by * 4 + i / 4;
+        if (x < w && y < h)
+            out[(size_t(y) * size_t(w) + size_t(x)) * 4 + size_t(channel)] = values[(indices >> (3 * i)) & 7];
+    }
+}
+
+// One face's level (every depth slice) from `in` into `out` as RGBA floats.
+void decodeSurface(const Layout& layout, uint32_t level, const uint8_t* in, float* out) {
+    const int w = int(std::max(layout.width >> level, 1u)), h = int(std::max(layout.height >> level, 1u));
+    const int d = int(std::max(layout.depth >> level, 1u));
+    const size_t texels = size_t(w) * size_t(h);
+    const TexelFormat& f = layout.format;
+    if (f.family != TexelFormat::Family::Blocks) {
+        for (size_t t = 0; t < texels * size_t(d); ++t) decodeTexel(f, in + t * size_t(f.bytes), out + t * 4);
+        return;
+    }
+    const int blocksX = (w + 3) / 4, blocksY = (h + 3) / 4;
+    const size_t sliceBytes = size_t(blocksX) * size_t(blocksY) * size_t(f.bytes);
+    std::vector<uint8_t> rgba(f.squishFlags ? texels * 4 : 0);
+    for (int z = 0; z < d; ++z) {
+        const uint8_t* slice = in + size_t(z) * sliceBytes;
+        float* target = out + size_t(z) * texels * 4;
+        if (f.squishFlags) {
+            squish::DecompressImage(rgba.data(), w, h, slice, f.squishFlags);
+            for (size_t i = 0; i < texels * 4; ++i) target[i] = rgba[i] / 255.0f;
+            continue;
+        }
+        // BC4 and BC5: the channels a block holds; the rest read as DXGI defines (colour 0, alpha 1).
+        for (size_t t = 0; t < texels; ++t) {
+            target[t * 4 + 1] = target[t * 4 + 2] = 0.0f;
+            target[t * 4 + 3] = 1.0f;
+        }
+        for (int by = 0; by < blocksY; ++by)
+            for (int bx = 0; bx < blocksX; ++bx) {
+                const uint8_t* block = slice + (size_t(by) * size_t(blocksX) + size_t(bx)) * size_t(f.bytes);
+                for (int channel = 0; channel < f.blockChannels; ++channel)
+                    decodeBc4Channel(block + 8 * channel, w, h, bx, by, channel, target);
+            }
+    }
 }
 
 }  // namespace
@@ -169,52 +418,54 @@ bool isTextureFile(const std::string& path) {
 }
 
 std::optional<TextureFile> loadTextureFile(const std::string& path, std::string& error) {
-    std::string arrayError;
-    if (std::optional<TextureFile> array = readDx10Array(path, arrayError)) {
-        if (arrayError.empty()) return array;
-        error = arrayError;
-        return std::nullopt;
-    }
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) {
-        error = OIIO::geterror();
-        if (error.empty()) error = "not a readable image";
+        error = "cannot open the file";
         return std::nullopt;
     }
+    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return decodeTextureFile(bytes, error);
+}
+
+std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes, std::string& error) {
+    const std::optional<Layout> layout = readLayout(bytes, error);
+    if (!layout) return std::nullopt;
+
+    // The data's size is checked before any allocation: a header may claim 2048 elements of 16384² texels.
+    const size_t faces = layout->kind == TextureFile::Kind::Cube ? 6 : 1;
+    size_t chainBytes = 0;
+    for (uint32_t level = 0; level < layout->levels; ++level) chainBytes += levelBytes(*layout, level);
+    const size_t elementBytes = chainBytes * faces;
+    const size_t available = bytes.size() - layout->dataOffset;
+    if (available / elementBytes < layout->elements) {
+        const size_t complete = available / elementBytes;
+        error = layout->elements > 1 ? "the file ends inside element " + std::to_string(complete) + "'s data"
+                                     : "the file ends inside its texel data (" + std::to_string(available) +
+                                           " of " + std::to_string(elementBytes) + " bytes)";
+        return std::nullopt;
+    }
+
     TextureFile file;
-    const std::string format = in->spec().get_string_attribute("textureformat");
-    file.kind = format == "CubeFace Environment" ? TextureFile::Kind::Cube
-                : format == "Volume Texture"     ? TextureFile::Kind::Volume
-                                                 : TextureFile::Kind::Flat;
-    for (int level = 0; in->seek_subimage(0, level); ++level) {
-        if (file.kind == TextureFile::Kind::Cube && level > 0) break;
-        const OIIO::ImageSpec& spec = in->spec();
-        if (spec.width <= 0 || spec.height <= 0 || spec.depth <= 0 || spec.nchannels <= 0) {
-            error = "empty image";
-            return std::nullopt;
-        }
-        std::vector<float> samples(static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) *
-                                   static_cast<size_t>(spec.depth) * static_cast<size_t>(spec.nchannels));
-        if (!in->read_image(0, level, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, samples.data())) {
-            error = in->geterror();
-            return std::nullopt;
-        }
-        if (level == 0) {
-            file.width = spec.width;
-            // A cube map arrives as its six faces stacked top to bottom.
-            file.height = file.kind == TextureFile::Kind::Cube ? spec.height / 6 : spec.height;
-            file.depth = spec.depth;
-            if (file.kind == TextureFile::Kind::Cube && (file.height != file.width || spec.height % 6 != 0)) {
-                error = "cube map faces are not square";
-                return std::nullopt;
-            }
-        }
-        file.levels.push_back(toRGBA(samples, spec.nchannels));
+    file.kind = layout->kind;
+    file.width = int(layout->width);
+    file.height = int(layout->height);
+    file.depth = int(layout->depth);
+    file.elements = int(layout->elements);
+    const size_t layers = faces * layout->elements;
+    file.levels.resize(layout->levels);
+    std::vector<size_t> layerFloats(layout->levels);
+    for (uint32_t level = 0; level < layout->levels; ++level) {
+        layerFloats[level] = size_t(std::max(layout->width >> level, 1u)) *
+                             std::max(layout->height >> level, 1u) * std::max(layout->depth >> level, 1u) * 4;
+        file.levels[level].resize(layerFloats[level] * layers);
     }
-    if (file.levels.empty()) {
-        error = "no image data";
-        return std::nullopt;
-    }
+    // The file holds each layer's whole chain in turn; TextureFile holds each level's layers in turn.
+    const uint8_t* at = bytes.data() + layout->dataOffset;
+    for (size_t layer = 0; layer < layers; ++layer)
+        for (uint32_t level = 0; level < layout->levels; ++level) {
+            decodeSurface(*layout, level, at, file.levels[level].data() + layer * layerFloats[level]);
+            at += levelBytes(*layout, level);
+        }
     return file;
 }
 

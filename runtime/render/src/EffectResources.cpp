@@ -124,8 +124,8 @@ GpuTexture makeFileArray(const TextureFile& file, const fx::TextureDesc& desc) {
     return texture;
 }
 
-// A DDS file's texture, when its kind is what the effect samples: every level the file has (a cube's
-// smaller levels regenerated), float storage so that no file format loses range. nullopt on a mismatch.
+// A DDS file's texture, when its kind is what the effect samples: every level the file has, float storage
+// so that no file format loses range. nullopt on a mismatch.
 std::optional<GpuTexture> makeFileTexture(const TextureFile& file, const fx::TextureDesc& desc) {
     // A Texture2DArray takes any 2D file (one element or more), a Texture1DArray one a texel high, a
     // TextureCubeArray any cube file; a plain texture takes no array.
@@ -158,10 +158,14 @@ std::optional<GpuTexture> makeFileTexture(const TextureFile& file, const fx::Tex
     const fx::TextureFormat format = fx::TextureFormat::RGBA16F;
     if (file.kind == TextureFile::Kind::Cube) {
         GpuTexture texture = GpuTexture::createCube(format, file.width, storageLevels);
-        const size_t face = static_cast<size_t>(file.width) * static_cast<size_t>(file.height) * 4;
-        for (int f = 0; f < 6; ++f)
-            texture.uploadRGBA32F(file.levels[0].data() + face * static_cast<size_t>(f), 0, f);
-        texture.generateMipmaps();
+        for (int level = 0; level < levels; ++level) {
+            const size_t face = static_cast<size_t>(std::max(file.width >> level, 1)) *
+                                static_cast<size_t>(std::max(file.height >> level, 1)) * 4;
+            for (int f = 0; f < 6; ++f)
+                texture.uploadRGBA32F(
+                    file.levels[static_cast<size_t>(level)].data() + face * static_cast<size_t>(f), level, f);
+        }
+        if (regenerate) texture.generateMipmaps();
         return texture;
     }
     if (file.kind == TextureFile::Kind::Volume) {

@@ -1,11 +1,13 @@
 // TextureFile: DirectDraw Surface files, the texture format of FX Composer's and the DirectX SDK's
-// effects (2D, cube and volume textures; uncompressed or DXT1/3/5; mip chains), read through
-// OpenImageIO and handed over as RGBA floats. Direct3D 10's arrays (a DX10 header with arraySize > 1, 2D,
-// 1D or cube elements) are read here, since OpenImageIO 2.4 reads their first element only; uncompressed
-// formats only.
+// effects: 2D, cube and volume textures and Direct3D 10's arrays (a DX10 header, 1D, 2D or cube
+// elements), in D3D9's mask, FourCC and float formats and the DXGI colour formats with BC1-5, with their
+// mip chains, handed over as RGBA floats. Read here with libsquish decoding DXT blocks: no image library's
+// dependency tree comes with the runtime (docs/fxcomposer.md, "Textures", lists the formats).
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,9 +21,7 @@ struct TextureFile {
     int depth = 1;     // volume slices
     int elements = 1;  // a DX10-header array's elements (arraySize; cubes of a cube array)
     // RGBA floats per mip level, top row first: Flat width x height; Volume every slice in turn; Cube the
-    // six faces in turn (+X -X +Y -Y +Z -Z); an array each element in turn. Cube maps that are not arrays
-    // carry level 0 only: OpenImageIO 2.4 misreads the smaller levels of DDS cube maps, so the runtime
-    // regenerates them.
+    // six faces in turn (+X -X +Y -Y +Z -Z); an array each element in turn.
     std::vector<std::vector<float>> levels;
 };
 
@@ -30,5 +30,8 @@ bool isTextureFile(const std::string& path);
 
 // Reads every level. nullopt, with `error` set, if the file cannot be read.
 std::optional<TextureFile> loadTextureFile(const std::string& path, std::string& error);
+
+// The same from a DDS file's bytes (fuzz/fuzz_dds_file.cpp feeds it any bytes).
+std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes, std::string& error);
 
 }  // namespace runtime
