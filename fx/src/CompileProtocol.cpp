@@ -112,6 +112,8 @@ void writeProgram(Writer& w, const StageProgram& p) {
         w.str(i.semantic);
         w.u32(static_cast<uint32_t>(i.location));
         w.u32(static_cast<uint32_t>(i.components));
+        w.u32(static_cast<uint32_t>(i.stream.stream));
+        w.u32(static_cast<uint32_t>(i.stream.index));
     }
 }
 
@@ -151,11 +153,14 @@ void readProgram(Reader& r, StageProgram& p) {
             run.bytes = r.u32();
         }
     }
-    p.inputs.resize(r.count(12));
+    p.inputs.resize(r.count(20));
     for (VertexInput& i : p.inputs) {
         i.semantic = r.str();
         i.location = r.i32();
         i.components = r.i32();
+        i.stream.stream = static_cast<VertexStream>(
+            std::min<uint32_t>(r.u32(), static_cast<uint32_t>(VertexStream::BlendIndices)));
+        i.stream.index = r.i32();
     }
 }
 

@@ -56,31 +56,6 @@ std::string canonicalSemantic(const std::string& semantic) {
     return s;
 }
 
-std::optional<int> vertexInputLocation(const std::string& semantic) {
-    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
-    if ((name == "POSITION" || name == "SV_POSITION") && index == 0) return 0;
-    if (name == "NORMAL" && index == 0) return 1;
-    if (name == "TEXCOORD" && index < 8) return 2 + index;
-    if (name == "COLOR" && index < 2) return 10 + index;
-    if (name == "TANGENT" && index == 0) return 12;
-    if (name == "BINORMAL" && index == 0) return 13;
-    if (name == "BLENDWEIGHT" && index == 0) return 14;
-    if (name == "BLENDINDICES" && index == 0) return 15;
-    return std::nullopt;
-}
-
-std::string vertexInputSemantic(int location) {
-    if (location == 0) return "POSITION";
-    if (location == 1) return "NORMAL";
-    if (location >= 2 && location < 10) return "TEXCOORD" + std::to_string(location - 2);
-    if (location >= 10 && location < 12) return "COLOR" + std::to_string(location - 10);
-    if (location == 12) return "TANGENT";
-    if (location == 13) return "BINORMAL";
-    if (location == 14) return "BLENDWEIGHT";
-    if (location == 15) return "BLENDINDICES";
-    return "";
-}
-
 // Vertex inputs D3D9 declared that no mesh here supplies (a second tangent frame, more blend weights,
 // point size, fog): they read a constant, as an unbound D3D9 stream reads its default.
 std::optional<std::string> vertexInputDefault(const std::string& semantic) {
@@ -108,31 +83,43 @@ std::optional<int> varyingLocation(const std::string& semantic) {
     return std::nullopt;
 }
 
-// D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR"). Such names get the locations
-// above the D3D9 table's (24..31), in the order of their sorted names over the whole effect, so that every
-// stage of every pass agrees.
+// D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR", the SDK's "TEXTURE0".."TEXTURE8").
+// Such names get the locations above the D3D9 table's (24..31), then the table's locations no semantic of
+// the effect uses, in the order of their sorted names over the whole effect, so that every stage of every
+// pass agrees. The names of vertex inputs count too (a struct may be both), which only costs locations.
 static std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
     std::set<std::string> names;
-    auto add = [&](const std::string& s) {
+    std::set<int> tableUsed;
+    auto add = [&](const std::string& s, const TypeDesc& type) {
         const std::string c = canonicalSemantic(s);
+        // A matrix or an array takes consecutive indices (gatherFields): every one of them is used.
+        int span = type.shape == Shape::Matrix ? std::max(type.cols, 1) : 1;
+        for (int d : type.arrayDims) span *= std::clamp(d, 1, 32);
+        const auto [name, first] = splitSemantic(c);
+        for (int k = 0; k < std::min(span, 32); ++k)
+            if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
+                tableUsed.insert(*location);
         if (!c.empty() && c.rfind("SV_", 0) != 0 && !varyingLocation(c) && c != "POSITION0" && c != "VPOS" &&
             c != "VPOS0" && c != "VFACE" && c.rfind("PSIZE", 0) != 0 && c.rfind("DEPTH", 0) != 0 &&
             !vertexInputLocation(c))
             names.insert(splitSemantic(c).first + std::to_string(splitSemantic(c).second));
     };
     for (const StructDecl& s : effect.structs)
-        for (const StructMember& m : s.members) add(m.semantic);
+        for (const StructMember& m : s.members) add(m.semantic, m.type);
     for (const FunctionDecl& f : effect.functions) {
-        add(f.returnSemantic);
-        for (const FunctionParam& p : f.params) add(p.semantic);
+        add(f.returnSemantic, f.returnType);
+        for (const FunctionParam& p : f.params) add(p.semantic, p.type);
     }
     const std::string key = splitSemantic(canonicalSemantic(semantic)).first +
                             std::to_string(splitSemantic(canonicalSemantic(semantic)).second);
     auto it = names.find(key);
     if (it == names.end()) return std::nullopt;
     const int index = static_cast<int>(std::distance(names.begin(), it));
-    if (index >= 8) return std::nullopt;
-    return 24 + index;
+    if (index < 8) return 24 + index;
+    int free = index - 8;
+    for (int location = 0; location < 24; ++location)
+        if (!tableUsed.count(location) && free-- == 0) return location;
+    return std::nullopt;
 }
 
 // [SECTION] Types and literals
@@ -610,25 +597,49 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
     return true;
 }
 
+// The attribute location feeding a vertex input: D3D9's names exactly, D3D10's free input-layout names by
+// their prefix; nullopt where the input reads a constant (D3D9 names no mesh supplies, unknown names).
+std::optional<int> vertexInputAttribute(const std::string& semantic) {
+    if (const std::optional<int> location = vertexInputLocation(semantic)) return location;
+    if (vertexInputDefault(semantic)) return std::nullopt;
+    return vertexStreamByName(semantic);
+}
+
+// What an input of a name no stream fits reads: 0, (0,0,0,1) for a position-like float4 (a w of 0 would
+// put it at infinity), and the identity's column for a matrix (a per-instance transform, which the
+// object's World already carries here).
+std::string unmatchedVertexInput(const Field& f) {
+    if (f.column >= 0) {
+        std::string v = "float4(";
+        for (int k = 0; k < 4; ++k) v += std::string(k ? ", " : "") + (k == f.column ? "1" : "0");
+        return v + ")";
+    }
+    if (f.type.cols == 4 && f.semantic.find("POS") != std::string::npos) return "float4(0, 0, 0, 1)";
+    return "float4(0, 0, 0, 0)";
+}
+
 bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
-    // One attribute per semantic, as wide as its widest use.
-    std::map<int, std::pair<TypeDesc, std::string>> attributes;  // location -> (type, semantic)
+    // One attribute per location, as wide as its widest use. GL takes no bool attributes, and the runtime
+    // feeds every stream as floats, so integer and bool inputs read a float attribute converted.
+    std::map<int, TypeDesc> attributes;
     std::set<std::string> systemValues;
     for (const Field& f : fields) {
         if (f.semantic == "SV_VERTEXID" || f.semantic == "SV_INSTANCEID") {
             systemValues.insert(f.semantic);
             continue;
         }
-        auto location = vertexInputLocation(f.semantic);
-        if (!location && vertexInputDefault(f.semantic)) continue;
-        if (!location || f.type.shape == Shape::Matrix || !f.type.arrayDims.empty())
+        const std::optional<int> location = vertexInputAttribute(f.semantic);
+        if (!location) continue;
+        if (!f.type.arrayDims.empty())
             return fail(DiagId::UnsupportedFeature, f.loc,
-                        {"vertex input semantic '" + f.semantic + "' is not supported"});
-        auto [it, inserted] = attributes.try_emplace(*location, f.type, f.semantic);
-        if (!inserted && f.type.cols > it->second.first.cols) it->second.first = f.type;
+                        {"vertex input '" + f.semantic + "' is nested too deeply"});
+        TypeDesc t = f.type;
+        t.base = BaseType::Float;
+        auto [it, inserted] = attributes.try_emplace(*location, t);
+        if (!inserted && t.cols > it->second.cols) it->second = t;
     }
-    for (auto& [location, attr] : attributes) {
-        TypeDesc t = attr.first;
+    for (auto& [location, type] : attributes) {
+        TypeDesc t = type;
         t.shape = t.cols == 1 ? Shape::Scalar : Shape::Vector;
         if (!params.empty()) params += ",\n    ";
         params += "[[vk::location(" + std::to_string(location) + ")]] " + hlslTypeName(t) + " fx_in" +
@@ -645,20 +656,29 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + id + ", 0, 0, 0)") + ";\n";
             continue;
         }
-        const std::optional<int> location = vertexInputLocation(f.semantic);
+        const std::optional<int> location = vertexInputAttribute(f.semantic);
         if (!location) {
-            body += assignField(f, *vertexInputDefault(f.semantic));
+            if (std::optional<std::string> d3d9 = vertexInputDefault(f.semantic)) {
+                body += assignField(f, *d3d9);
+                continue;
+            }
+            const std::string constant = unmatchedVertexInput(f);
+            if (f.column <= 0)  // a matrix once, not per column
+                mDiagnostics.report(DiagId::VertexInputConstant, f.loc,
+                                    {f.semantic, f.column == 0 ? "identity matrix" : constant});
+            body += assignField(f, constant);
             continue;
         }
-        const TypeDesc& declared = attributes[*location].first;
         std::string src = "fx_in" + std::to_string(*location);
         if (f.column >= 0) {
             body += assignField(f, src);  // the attribute is as wide as the column
             continue;
         }
         static const char* kSwizzle[] = {"", ".x", ".xy", ".xyz", ""};
-        if (f.type.cols < declared.cols) src += kSwizzle[std::clamp(f.type.cols, 1, 4)];
-        body += "    " + f.lvalue + " = " + src + ";\n";
+        if (f.type.cols < attributes[*location].cols) src += kSwizzle[std::clamp(f.type.cols, 1, 4)];
+        TypeDesc t = f.type;
+        t.arrayDims.clear();
+        body += "    " + f.lvalue + " = (" + hlslTypeName(t) + ")(" + src + ");\n";
     }
     return true;
 }

@@ -16,6 +16,7 @@
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
 #include <fx/Effect.h>
+#include <fx/VertexStreams.h>
 
 #include <map>
 #include <optional>
@@ -25,10 +26,7 @@
 namespace fx {
 
 // [SECTION] Semantic tables
-// Vertex attribute locations: POSITION 0, NORMAL 1, TEXCOORD0..7 -> 2..9, COLOR0..1 -> 10..11,
-// TANGENT 12, BINORMAL 13, BLENDWEIGHT 14, BLENDINDICES 15.
-std::optional<int> vertexInputLocation(const std::string& semantic);
-std::string vertexInputSemantic(int location);  // the inverse ("TEXCOORD0"); "" if none
+// Vertex attribute locations: fx/VertexStreams.h (vertexInputLocation, vertexInputSemantic).
 // Varying locations shared by both stages: TEXCOORDn -> n, COLORn -> 8+n, NORMAL 10, TANGENT 11,
 // BINORMAL 12, FOG 13. Returns nullopt for semantics that are not varyings (POSITION, PSIZE, VPOS...).
 std::optional<int> varyingLocation(const std::string& semantic);

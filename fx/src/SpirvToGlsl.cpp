@@ -200,8 +200,10 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                 if (!compiler.has_decoration(r.id, spv::DecorationLocation)) continue;
                 int location = static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation));
                 const spirv_cross::SPIRType& t = compiler.get_type(r.type_id);
-                program.inputs.push_back(
-                    VertexInput{vertexInputSemantic(location), location, static_cast<int>(t.vecsize)});
+                const std::optional<VertexStreamSlot> stream = vertexStreamAt(location);
+                if (!stream) continue;  // the lowering declares attributes at the table's locations only
+                program.inputs.push_back(VertexInput{vertexInputSemantic(location), location,
+                                                     static_cast<int>(t.vecsize), *stream});
                 // Attribute names say their semantic, for anyone reading the GLSL or a GL debugger.
                 compiler.set_name(r.id, "fx_attr_" + vertexInputSemantic(location));
             }

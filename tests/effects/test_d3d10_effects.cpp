@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -793,6 +794,112 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     ASSERT_TRUE(notConstant(bySemantic));
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "LitNames"));
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
+}
+
+// [SECTION] Input layouts and free-named varyings
+
+// Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.
+std::unique_ptr<runtime::EffectRenderer> loadKeeping(const std::string& file,
+                                                     fx::DiagnosticList& diagnostics) {
+    sharedContext();
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(file, fx::ParseOptions{}, diagnostics);
+    if (!effect) return nullptr;
+    std::shared_ptr<fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    if (!compiled || diagnostics.hasErrors()) return nullptr;
+    return runtime::EffectRenderer::create(compiled, diagnostics);
+}
+
+// "file:line:column: severity: message" of each diagnostic with `id`, as the CLI prints them.
+std::vector<std::string> messagesOf(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
+    std::vector<std::string> out;
+    for (const fx::Diagnostic& d : diagnostics.items())
+        if (d.id == id)
+            out.push_back(d.loc.file + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
+                          ": " + std::string(fx::severityName(d.severity)) + ": " + d.message);
+    return out;
+}
+
+TEST(D3d10Effects, VertexInputsOfAnyNameRenderTheFrameOfTheD3d9Names) {
+    fx::DiagnosticList diagnostics;
+    auto renderer = loadKeeping(sourcePath("tests/data/d3d10/input_layout_names.fx"), diagnostics);
+    ASSERT_TRUE(renderer) << diagnostics.str();
+    // The inputs no stream fits are named once each, at their declarations.
+    const std::vector<std::string> notes = messagesOf(diagnostics, fx::DiagId::VertexInputConstant);
+    ASSERT_EQ(notes.size(), 3u) << diagnostics.str();
+    EXPECT_NE(notes[0].find("input_layout_names.fx:16:"), std::string::npos) << notes[0];
+    EXPECT_NE(notes[0].find("vertex input 'INST0' matches no mesh stream by its name; it reads the constant "
+                            "float4(0, 0, 0, 0)"),
+              std::string::npos)
+        << notes[0];
+    EXPECT_NE(notes[2].find("'MTRANSFORM0'"), std::string::npos) << notes[2];
+    EXPECT_NE(notes[2].find("identity matrix"), std::string::npos) << notes[2];
+
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Named"));
+    const runtime::FrameImage named = renderer->readFrame();
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Layout"));
+    const runtime::FrameImage layout = renderer->readFrame();
+    EXPECT_TRUE(layout.rgba == named.rgba);
+    // The frame shows the streams: the normal's |x| in red and u in green vary over the teapot, blue is 0
+    // (the background, the corner's colour, excepted).
+    const uint8_t* background = layout.pixel(0, 0);
+    std::set<int> reds, greens;
+    size_t drawn = 0, blue = 0;
+    for (size_t i = 0; i + 3 < layout.rgba.size(); i += 4) {
+        if (std::equal(background, background + 3, &layout.rgba[i])) continue;
+        ++drawn;
+        reds.insert(layout.rgba[i]);
+        greens.insert(layout.rgba[i + 1]);
+        blue += layout.rgba[i + 2] != 0;
+    }
+    EXPECT_GT(drawn, 1000u);
+    EXPECT_GT(reds.size(), 64u);
+    EXPECT_GT(greens.size(), 64u);
+    EXPECT_EQ(blue, 0u);
+}
+
+// The SDK's geometry shaders pass TEXTURE0..TEXTURE8 on: more free-named varyings than the eight locations
+// above D3D9's table, through a geometry stage to the pixel shader.
+TEST(D3d10Effects, MoreThanEightFreeNamedVaryingsCrossTheGeometryStage) {
+    std::string members, sum;
+    for (int i = 0; i < 10; ++i) {
+        members += "float Value" + std::to_string(i) + " : TEXTURE" + std::to_string(i) + "; ";
+        sum += "+ v.Value" + std::to_string(i);
+    }
+    std::string setValues;
+    for (int i = 0; i < 10; ++i) setValues += "o.Value" + std::to_string(i) + " = 0.1; ";
+    auto renderer = loadEffect(R"(
+float4x4 g_mWorldViewProjection;
+struct Vertex { float4 Pos : SV_Position; )" +
+                                   members + R"( };
+Vertex VS(float3 pos : POS)
+{
+    Vertex o;
+    o.Pos = mul(float4(pos, 1), g_mWorldViewProjection);
+    )" + setValues + R"(
+    return o;
+}
+[maxvertexcount(3)]
+void GS(triangle Vertex input[3], inout TriangleStream<Vertex> stream)
+{
+    for (int k = 0; k < 3; ++k) stream.Append(input[k]);
+}
+float4 PS(Vertex v) : SV_Target { return float4(0 )" +
+                                   sum + R"(, 0, 1, 1); }
+technique10 T { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, GS()));
+                       SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                               false, "varyings.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    size_t full = 0, other = 0;
+    for (size_t i = 0; i + 3 < frame.rgba.size(); i += 4) {
+        if (frame.rgba[i + 2] != 255) continue;  // the teapot: blue 1
+        ++(frame.rgba[i] >= 254 ? full : other);
+    }
+    EXPECT_GT(full, 1000u);  // ten varyings of 0.1 each summed to 1
+    EXPECT_EQ(other, 0u);
 }
 
 }  // namespace

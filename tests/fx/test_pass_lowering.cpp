@@ -113,5 +113,31 @@ TEST(SemanticTables, LocationsAreFixed) {
     EXPECT_FALSE(varyingLocation("PSIZE"));
 }
 
+// D3D10 input layouts' names, as the SDK samples and applications spelled them.
+TEST(SemanticTables, FreeVertexInputNamesMatchTheMeshStreamsByPrefix) {
+    EXPECT_EQ(vertexStreamByName("POS"), 0);
+    EXPECT_EQ(vertexStreamByName("PosL"), 0);
+    EXPECT_EQ(vertexStreamByName("NORM"), 1);
+    EXPECT_EQ(vertexStreamByName("TEXTURE0"), 2);
+    EXPECT_EQ(vertexStreamByName("uv1"), 3);
+    EXPECT_EQ(vertexStreamByName("TEX7"), 9);
+    EXPECT_EQ(vertexStreamByName("COLOUR1"), 11);
+    EXPECT_EQ(vertexStreamByName("TANGENT"), 12);
+    EXPECT_EQ(vertexStreamByName("BITANGENT"), 13);
+    EXPECT_EQ(vertexStreamByName("BINORM"), 13);
+    EXPECT_EQ(vertexStreamByName("BLENDWEIGHTS"), 14);
+    EXPECT_EQ(vertexStreamByName("BLENDIND"), 15);
+    EXPECT_FALSE(vertexStreamByName("TEXTURE8"));  // the mesh has no ninth UV stream
+    EXPECT_FALSE(vertexStreamByName("POS1"));
+    EXPECT_FALSE(vertexStreamByName("INST0"));
+    EXPECT_FALSE(vertexStreamByName("PATCHUV"));
+    EXPECT_FALSE(vertexStreamByName("TEX99999999999"));
+    const std::optional<VertexStreamSlot> slot = vertexStreamAt(3);
+    ASSERT_TRUE(slot);
+    EXPECT_EQ(slot->stream, VertexStream::Texcoord);
+    EXPECT_EQ(slot->index, 1);
+    EXPECT_FALSE(vertexStreamAt(16));
+}
+
 }  // namespace
 }  // namespace fx

@@ -8,6 +8,7 @@
 #include <fx/RenderStates.h>
 #include <fx/SasScript.h>
 #include <fx/Value.h>
+#include <fx/VertexStreams.h>
 
 #include <cstdint>
 #include <memory>
@@ -74,12 +75,14 @@ struct StorageBufferBinding {
     std::vector<Run> runs;   // in D3D order, covering the element
 };
 
-// A vertex shader input, bound by semantic ("POSITION", "NORMAL", "TEXCOORD0", "COLOR0", "TANGENT",
-// "BINORMAL"): the runtime feeds the mesh attribute with that semantic, or a defined default.
+// A vertex shader input at its attribute location: the runtime feeds it the mesh stream the compiler chose
+// (fx/VertexStreams.h, whatever name the effect gave the input), or a defined default where the mesh has
+// no such stream.
 struct VertexInput {
-    std::string semantic;  // upper case, index included: "TEXCOORD0"
+    std::string semantic;  // the stream's D3D9 name, index included ("TEXCOORD0"), for readers of the GLSL
     int location = 0;
     int components = 4;
+    VertexStreamSlot stream;
 };
 
 struct StageProgram {

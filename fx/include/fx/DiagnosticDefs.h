@@ -59,6 +59,8 @@ FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
 FX_DIAGNOSTIC(UnknownIdentifier, Error, "unknown identifier '{0}'")
 FX_DIAGNOSTIC(TypeMismatch, Error, "{0}")
 FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
+FX_DIAGNOSTIC(VertexInputConstant, Note,
+              "vertex input '{0}' matches no mesh stream by its name; it reads the constant {1}")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")

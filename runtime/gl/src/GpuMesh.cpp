@@ -3,46 +3,21 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <utility>
 
 namespace runtime {
 
-ParsedSemantic parseVertexSemantic(std::string_view semantic) {
-    std::string upper;
-    for (char c : semantic) upper += char(std::toupper(static_cast<unsigned char>(c)));
-    if (upper.rfind("SV_", 0) == 0) upper.erase(0, 3);
-    size_t digits = upper.size();
-    while (digits > 0 && std::isdigit(static_cast<unsigned char>(upper[digits - 1]))) --digits;
-    ParsedSemantic parsed;
-    parsed.index = digits < upper.size() ? std::stoi(upper.substr(digits)) : 0;
-    std::string_view name = std::string_view(upper).substr(0, digits);
-    if (name == "POSITION")
-        parsed.semantic = VertexSemantic::Position;
-    else if (name == "NORMAL")
-        parsed.semantic = VertexSemantic::Normal;
-    else if (name == "TEXCOORD")
-        parsed.semantic = VertexSemantic::Texcoord;
-    else if (name == "COLOR")
-        parsed.semantic = VertexSemantic::Color;
-    else if (name == "TANGENT")
-        parsed.semantic = VertexSemantic::Tangent;
-    else if (name == "BINORMAL")
-        parsed.semantic = VertexSemantic::Binormal;
-    return parsed;
-}
-
-std::array<float, 4> defaultVertexValue(const ParsedSemantic& semantic) {
-    switch (semantic.semantic) {
-        case VertexSemantic::Position:
+std::array<float, 4> defaultVertexValue(fx::VertexStream stream) {
+    switch (stream) {
+        case fx::VertexStream::Position:
             return {0, 0, 0, 1};
-        case VertexSemantic::Normal:
+        case fx::VertexStream::Normal:
             return {0, 1, 0, 0};
-        case VertexSemantic::Color:
+        case fx::VertexStream::Color:
             return {1, 1, 1, 1};
-        case VertexSemantic::Tangent:
+        case fx::VertexStream::Tangent:
             return {1, 0, 0, 1};
-        case VertexSemantic::Binormal:
+        case fx::VertexStream::Binormal:
             return {0, 0, -1, 0};  // cross((0,1,0), (1,0,0)) * 1
         default:
             return {0, 0, 0, 0};
@@ -98,29 +73,13 @@ void GpuMesh::uploadStream(Stream stream, const float* data, int components) {
                    GL_STATIC_DRAW);
 }
 
-bool GpuMesh::hasAttribute(VertexSemantic semantic) const {
-    switch (semantic) {
-        case VertexSemantic::Position:
-            return mStreams[kPosition].buffer != 0;
-        case VertexSemantic::Normal:
-            return mStreams[kNormal].buffer != 0;
-        case VertexSemantic::Texcoord:
-            return mStreams[kTexcoord].buffer != 0;
-        case VertexSemantic::Tangent:
-            return mStreams[kTangent].buffer != 0;
-        case VertexSemantic::Binormal:
-            return mStreams[kBinormal].buffer != 0;
-        default:
-            return false;
-    }
-}
-
 void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances, int patchVertices,
                    fx::CompiledPass::DrawPrimitive primitive) {
     if (mVao == 0) return;
     gl::BindVertexArray(mVao);
     const auto sameInput = [](const fx::VertexInput& a, const fx::VertexInput& b) {
-        return a.location == b.location && a.components == b.components && a.semantic == b.semantic;
+        return a.location == b.location && a.components == b.components &&
+               a.stream.stream == b.stream.stream && a.stream.index == b.stream.index;
     };
     if (!mLayout.empty() &&
         std::equal(inputs.begin(), inputs.end(), mLayout.begin(), mLayout.end(), sameInput)) {
@@ -132,23 +91,22 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances, in
     uint32_t enabled = 0;
     for (const fx::VertexInput& input : inputs) {
         if (input.location < 0 || input.location >= 32) continue;
-        ParsedSemantic semantic = parseVertexSemantic(input.semantic);
         const StreamBuffer* stream = nullptr;
-        switch (semantic.semantic) {
-            case VertexSemantic::Position:
+        switch (input.stream.stream) {
+            case fx::VertexStream::Position:
                 stream = &mStreams[kPosition];
                 break;
-            case VertexSemantic::Normal:
+            case fx::VertexStream::Normal:
                 stream = &mStreams[kNormal];
                 break;
             // The mesh carries one UV set; TEXCOORD1+ read the default rather than repeating set 0.
-            case VertexSemantic::Texcoord:
-                stream = semantic.index == 0 ? &mStreams[kTexcoord] : nullptr;
+            case fx::VertexStream::Texcoord:
+                stream = input.stream.index == 0 ? &mStreams[kTexcoord] : nullptr;
                 break;
-            case VertexSemantic::Tangent:
+            case fx::VertexStream::Tangent:
                 stream = &mStreams[kTangent];
                 break;
-            case VertexSemantic::Binormal:
+            case fx::VertexStream::Binormal:
                 stream = &mStreams[kBinormal];
                 break;
             default:
@@ -162,7 +120,7 @@ void GpuMesh::draw(const std::vector<fx::VertexInput>& inputs, int instances, in
             enabled |= 1u << location;
         } else {
             allStreams = false;
-            std::array<float, 4> value = defaultVertexValue(semantic);
+            std::array<float, 4> value = defaultVertexValue(input.stream.stream);
             gl::DisableVertexAttribArray(location);
             gl::VertexAttrib4f(location, value[0], value[1], value[2], value[3]);
         }

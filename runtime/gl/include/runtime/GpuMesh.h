@@ -1,5 +1,6 @@
 // GpuMesh: a runtime::Mesh in GL buffers plus a VAO, drawn with whatever vertex inputs the current program
-// asks for. Inputs bind by semantic, never by attribute order:
+// asks for. Inputs bind by the stream the compiler chose for each (fx::VertexStream), never by attribute
+// order:
 //   POSITION -> positions, NORMAL -> normals, TEXCOORD0 -> texcoords, TANGENT -> tangents,
 //   BINORMAL -> cross(normal, tangent.xyz) * tangent.w, computed at upload.
 // An input the mesh lacks reads a constant default (glVertexAttrib4f, attribute array disabled):
@@ -21,21 +22,12 @@
 #include <runtime/Mesh.h>
 
 #include <array>
-#include <string_view>
 #include <vector>
 
 namespace runtime {
 
-enum class VertexSemantic { Position, Normal, Texcoord, Color, Tangent, Binormal, Other };
-
-struct ParsedSemantic {
-    VertexSemantic semantic = VertexSemantic::Other;
-    int index = 0;  // "TEXCOORD3" -> 3; no digits -> 0
-};
-// Case-insensitive; "POSITION0" == "POSITION"; "SV_POSITION" too.
-ParsedSemantic parseVertexSemantic(std::string_view semantic);
-// The constant a missing input reads (see above).
-std::array<float, 4> defaultVertexValue(const ParsedSemantic& semantic);
+// The constant a missing stream reads (see above).
+std::array<float, 4> defaultVertexValue(fx::VertexStream stream);
 
 class GpuMesh {
 public:
@@ -57,7 +49,6 @@ public:
     void draw(const std::vector<fx::VertexInput>& inputs, int instances = 1, int patchVertices = 0,
               fx::CompiledPass::DrawPrimitive primitive = fx::CompiledPass::DrawPrimitive::Triangles);
 
-    bool hasAttribute(VertexSemantic semantic) const;
     size_t indexCount() const { return mIndexCount; }
     size_t vertexCount() const { return mVertexCount; }
 

@@ -1,0 +1,73 @@
+//--------------------------------------------------------------------------------------
+// Vertex inputs by the names D3D10 applications gave their input layouts: "POS", "NORM", "TEXTURE0" are
+// matched to the mesh's position, normal and texture-coordinate streams; "INST0" (an instance stream the
+// scene has no data for) reads 0, a bool "VISIBLE" reads false (GL takes no bool attributes: a float
+// attribute converted), and a per-instance "mTransform" matrix reads the identity. Technique Layout
+// therefore draws exactly the frame of technique Named, which spells the D3D9 names: the normal in red,
+// u in green, and blue 0 unless a constant input went wrong.
+//--------------------------------------------------------------------------------------
+float4x4 g_mWorldViewProjection;
+
+struct VS_INPUT_LAYOUT
+{
+    float3 Pos       : POS;
+    float3 Norm      : NORM;
+    float2 Tex       : TEXTURE0;
+    float4 Instance  : INST0;
+    bool   Visible   : VISIBLE;
+    float4x4 mTransform : mTransform;
+};
+
+struct VS_INPUT_NAMED
+{
+    float3 Pos  : POSITION;
+    float3 Norm : NORMAL;
+    float2 Tex  : TEXCOORD0;
+};
+
+struct PS_INPUT
+{
+    float4 Pos   : SV_POSITION;
+    float4 Color : COLOR0;
+};
+
+PS_INPUT LayoutVS(VS_INPUT_LAYOUT input)
+{
+    PS_INPUT output;
+    output.Pos = mul(mul(float4(input.Pos, 1), input.mTransform), g_mWorldViewProjection);
+    output.Color = float4(abs(input.Norm.x), input.Tex.x, input.Instance.x + (input.Visible ? 1 : 0), 1);
+    return output;
+}
+
+PS_INPUT NamedVS(VS_INPUT_NAMED input)
+{
+    PS_INPUT output;
+    output.Pos = mul(float4(input.Pos, 1), g_mWorldViewProjection);
+    output.Color = float4(abs(input.Norm.x), input.Tex.x, 0, 1);
+    return output;
+}
+
+float4 PS(PS_INPUT input) : SV_Target
+{
+    return input.Color;
+}
+
+technique10 Layout
+{
+    pass P0
+    {
+        SetVertexShader(CompileShader(vs_4_0, LayoutVS()));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
+
+technique10 Named
+{
+    pass P0
+    {
+        SetVertexShader(CompileShader(vs_4_0, NamedVS()));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
