@@ -1096,11 +1096,17 @@ private:
                 "to bind at run time");
             return;
         }
-        if (value.kind == Expr::Kind::Call &&
-            (value.text == "ConstructGSWithSO" || value.text == "ConstructGSWithSO")) {
-            refuseTechnique(value.loc,
-                            "stream output (ConstructGSWithSO) is not supported: shadowfx has no transform "
-                            "feedback");
+        // Stream output, inline or through a shader variable (`GeometryShader gsSO = ConstructGSWithSO(
+        // CompileShader(gs_4_0, GS()), "POSITION.xyz; ...");`): only the techniques that use it are left
+        // out, at the pass that sets it.
+        const Parameter* variable =
+            value.kind == Expr::Kind::Identifier ? mEffect.findParameter(value.text) : nullptr;
+        if ((value.kind == Expr::Kind::Call && value.text == "ConstructGSWithSO") ||
+            (variable && variable->initializer && variable->initializer->kind == Expr::Kind::Call &&
+             variable->initializer->text == "ConstructGSWithSO")) {
+            refuseTechnique(value.loc, std::string("stream output (ConstructGSWithSO") +
+                                           (variable ? ", held by '" + variable->name + "'" : "") +
+                                           ") is not supported: shadowfx has no transform feedback");
             return;
         }
         normalizeCompileShader(value);

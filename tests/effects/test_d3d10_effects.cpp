@@ -796,7 +796,7 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
 }
 
-// [SECTION] Input layouts and free-named varyings
+// [SECTION] Input layouts, free-named varyings and stream output
 
 // Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.
 std::unique_ptr<runtime::EffectRenderer> loadKeeping(const std::string& file,
@@ -900,6 +900,25 @@ technique10 T { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometry
     }
     EXPECT_GT(full, 1000u);  // ten varyings of 0.1 each summed to 1
     EXPECT_EQ(other, 0u);
+}
+
+TEST(D3d10Effects, AStreamOutputTechniqueIsLeftOutWhileTheSceneTechniqueRenders) {
+    fx::DiagnosticList diagnostics;
+    auto renderer = loadKeeping(sourcePath("tests/data/d3d10/stream_output_refused.fx"), diagnostics);
+    ASSERT_TRUE(renderer) << diagnostics.str();
+    const std::vector<std::string> refused = messagesOf(diagnostics, fx::DiagId::TechniqueRefused);
+    ASSERT_EQ(refused.size(), 1u) << diagnostics.str();
+    EXPECT_NE(refused[0].find("stream_output_refused.fx:60:27: warning: technique 'AdvanceParticles' is left "
+                              "out: stream output (ConstructGSWithSO, held by 'gsStreamOut')"),
+              std::string::npos)
+        << refused[0];
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "RenderScene"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_TRUE(notConstant(frame));
+    std::set<uint32_t> colours;
+    for (size_t i = 0; i + 3 < frame.rgba.size(); i += 4)
+        colours.insert(uint32_t(frame.rgba[i]) << 16 | uint32_t(frame.rgba[i + 1]) << 8 | frame.rgba[i + 2]);
+    EXPECT_GT(colours.size(), 64u);  // the normals, shaded
 }
 
 }  // namespace

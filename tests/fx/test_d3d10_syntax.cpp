@@ -139,6 +139,7 @@ technique10 Streamed { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
 technique11 Computed { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetComputeShader(CompileShader(cs_5_0, PS())); } }
 technique11 Linked { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), Light)); } }
 technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+technique10 StreamedThroughAVariable { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(Gs); } }
 )"),
                             diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
@@ -147,7 +148,13 @@ technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixel
     std::vector<std::string> warnings;
     for (const Diagnostic& d : diagnostics.items())
         if (d.id == DiagId::TechniqueRefused) warnings.push_back(str(d));
-    ASSERT_EQ(warnings.size(), 3u) << diagnostics.str();
+    ASSERT_EQ(warnings.size(), 4u) << diagnostics.str();
+    // The shader variable holding ConstructGSWithSO is refused where a pass sets it, not where it is
+    // declared: the file's other techniques still run.
+    EXPECT_NE(warnings[3].find("d3d10.fx:23:111: warning: technique 'StreamedThroughAVariable' is left out: "
+                               "stream output (ConstructGSWithSO, held by 'Gs')"),
+              std::string::npos)
+        << warnings[3];
     EXPECT_NE(warnings[0].find("d3d10.fx:19:23: warning: technique 'Streamed' is left out: stream output"),
               std::string::npos)
         << warnings[0];
