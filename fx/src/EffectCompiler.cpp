@@ -5,6 +5,7 @@
 // [SECTION] Scripts
 // [SECTION] Stages: lowering, cache, glslang, SPIRV-Cross, reflection
 // [SECTION] Passes and techniques
+
 #include <fx/CompileCache.h>
 #include <fx/CompileWorkers.h>
 #include <fx/EffectCompiler.h>
@@ -917,6 +918,15 @@ void Compiler::finishPendingStages() {
 
 // [SECTION] Passes and techniques
 
+// A pass whose blend factors name the pixel shader's second output (SRC1_COLOR .. INV_SRC1_ALPHA).
+bool blendsDualSource(const CompiledPass& pass) {
+    return std::any_of(pass.states.begin(), pass.states.end(), [](const RenderStateSetting& s) {
+        const bool factor = s.id == RenderStateId::SrcBlend || s.id == RenderStateId::DestBlend ||
+                            s.id == RenderStateId::SrcBlendAlpha || s.id == RenderStateId::DestBlendAlpha;
+        return factor && s.constant && *s.constant >= 16 && *s.constant <= 19;
+    });
+}
+
 const Expr* Compiler::shaderExpr(const StateAssignment& s) {
     if (s.value.kind == Expr::Kind::Compile) return &s.value;
     if (s.value.kind == Expr::Kind::Identifier) {
@@ -1084,6 +1094,9 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         mDiagnostics.report(DiagId::TechniqueRefused, first->loc, {name, first->message});
     }
     finishPendingStages();
+    for (CompiledTechnique& technique : mOut->techniques)
+        for (CompiledPass& pass : technique.passes)
+            if (blendsDualSource(pass)) declareDualSourceOutput(pass.fragment.glsl);
     assignPairUnits();
     // An empty file, or one of helpers only; said only when nothing else is wrong with it.
     if (mEffect.techniques.empty() && !mFailed)

@@ -1242,34 +1242,48 @@ private:
                 continue;
             }
             push(field->state, a ? a->value : numberExpr(field->defaultValue, loc), a ? a->loc : loc);
-            // The per-render-target fields: GL applies one blend to every target here, and write masks to
-            // the first four.
-            for (int index = 1; index < 8; ++index) {
-                const StateAssignment* other = find(field->name, index);
-                if (!other) continue;
-                if (field->name == "RenderTargetWriteMask" && index < 4) {
-                    static constexpr RenderStateId kMasks[] = {
-                        RenderStateId::ColorWriteEnable, RenderStateId::ColorWriteEnable1,
-                        RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3};
-                    push(kMasks[index], other->value, other->loc);
-                    continue;
-                }
-                double first = a ? 0 : field->defaultValue, value = 0;
-                const bool same = (a ? constantValue(a->value, first) : true) &&
-                                  constantValue(other->value, value) && value == first;
-                const bool allWritten = field->name == "RenderTargetWriteMask" &&
-                                        constantValue(other->value, value) && value == 15;
-                if (!same && !allWritten)
-                    error(DiagId::UnsupportedFeature, other->loc,
-                          {std::string(field->name) + "[" + std::to_string(index) +
-                           "] differs from render target 0's; shadowfx applies one blend state to every "
-                           "target"});
-            }
+            if (kind == StateObjectKind::Blend) expandTargetBlend(*field, loc, find, push);
         }
         if (kind == StateObjectKind::DepthStencil)
             push(RenderStateId::TwoSidedStencilMode, numberExpr(1, loc), loc);
-        if (kind == StateObjectKind::Blend)
+        if (kind == StateObjectKind::Blend) {
             push(RenderStateId::SeparateAlphaBlendEnable, numberExpr(1, loc), loc);
+            push(RenderStateId::IndependentBlendEnable, numberExpr(1, loc), loc);
+        }
+    }
+
+    // A BlendState field for render targets 1..7 (D3D10's independent blend, GL's glBlendFuncSeparatei and
+    // friends): `BlendEnable[i]` is each target's own (FALSE unless set, as D3D10 has it); the factors and
+    // operations are target 0's unless indexed (D3D10.0 has one set for all targets, D3D10.1 and FX11 one
+    // per target); `RenderTargetWriteMask[i]` sets target i's write mask (the runtime draws into four).
+    template <typename Find, typename Push>
+    void expandTargetBlend(const StateObjectField& field, const SourceLoc& loc, Find& find, Push& push) {
+        const std::string_view target0 = renderStateInfo(field.state).name;
+        for (int index = 1; index < 8; ++index) {
+            const StateAssignment* own = find(field.name, index);
+            const std::optional<RenderStateId> state =
+                findRenderState(std::string(target0) + std::to_string(index));
+            if (field.name == "RenderTargetWriteMask" && index >= 4) {
+                double mask = 0;
+                if (own && !(constantValue(own->value, mask) && mask == 15))
+                    error(DiagId::UnsupportedFeature, own->loc,
+                          {"RenderTargetWriteMask[" + std::to_string(index) +
+                           "] masks a render target the runtime never binds (it draws into four)"});
+                continue;
+            }
+            if (!state) {  // AlphaToCoverageEnable: one for the whole blend state
+                if (own)
+                    error(DiagId::UnsupportedFeature, own->loc,
+                          {std::string(field.name) + " takes no render-target index"});
+                continue;
+            }
+            const StateAssignment* source = own                           ? own
+                                            : field.name == "BlendEnable" ? nullptr
+                                                                          : find(field.name, 0);
+            if (!own && field.name == "RenderTargetWriteMask") continue;  // the state's default, 15
+            const SourceLoc at = source ? source->loc : loc;
+            push(*state, source ? source->value : numberExpr(field.defaultValue, at), at);
+        }
     }
 
     void parsePassState(Pass& pass) {

@@ -223,4 +223,9 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
     }
 }
 
+void declareDualSourceOutput(std::string& fragmentGlsl) {
+    fragmentGlsl = std::regex_replace(fragmentGlsl, std::regex(R"(layout\(location = 1\) out )"),
+                                      "layout(location = 0, index = 1) out ");
+}
+
 }  // namespace fx

@@ -29,4 +29,9 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
 
 std::string spirvToGlslOptionsKey();
 
+// Dual-source blending (D3D10's SRC1_* factors) reads the pixel shader's SV_Target1 as the second source of
+// target 0, which GL takes from the output at location 0, index 1. glslang's HLSL has no attribute for the
+// index, so a fragment stage's location-1 output is redeclared in its GLSL.
+void declareDualSourceOutput(std::string& fragmentGlsl);
+
 }  // namespace fx

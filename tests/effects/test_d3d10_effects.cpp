@@ -796,7 +796,7 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
 }
 
-// [SECTION] Input layouts, free-named varyings and stream output
+// [SECTION] Input layouts, stream output and blending
 
 // Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.
 std::unique_ptr<runtime::EffectRenderer> loadKeeping(const std::string& file,
@@ -919,6 +919,24 @@ TEST(D3d10Effects, AStreamOutputTechniqueIsLeftOutWhileTheSceneTechniqueRenders)
     for (size_t i = 0; i + 3 < frame.rgba.size(); i += 4)
         colours.insert(uint32_t(frame.rgba[i]) << 16 | uint32_t(frame.rgba[i + 1]) << 8 | frame.rgba[i + 2]);
     EXPECT_GT(colours.size(), 64u);  // the normals, shaded
+}
+
+TEST(D3d10Effects, EachRenderTargetBlendsByItsOwnBlendStateFields) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/independent_blend.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight, "PerTarget"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_TRUE(isColor(third(frame, 0), 191, 191, 191));  // 0.25 + 0.5: ONE + ONE
+    EXPECT_TRUE(isColor(third(frame, 1), 128, 128, 128));  // not blended: no BlendEnable[1]
+    EXPECT_TRUE(isColor(third(frame, 2), 64, 64, 64));     // ZERO + ONE keeps the clear colour
+}
+
+TEST(D3d10Effects, DualSourceBlendingTakesTheSecondOutputAsTheFactor) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/independent_blend.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight, "DualSource"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    for (int t = 0; t < 3; ++t) EXPECT_TRUE(isColor(third(frame, t), 128, 64, 0)) << t;
 }
 
 }  // namespace

@@ -417,6 +417,29 @@ technique11 T
     EXPECT_EQ(stateOf(b, RenderStateId::AlphaBlendEnable), 0.0);
 }
 
+TEST(D3d10Syntax, BlendStatesBlendEachRenderTargetByItsOwnFields) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+BlendState PerTarget { BlendEnable[0] = TRUE; SrcBlend = ONE; DestBlend = ONE; BlendEnable[2] = TRUE;
+    SrcBlend[2] = ZERO; DestBlend[2] = SRC1_COLOR; BlendOp[2] = MAX; DestBlendAlpha[3] = INV_SRC1_ALPHA; };
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+    SetBlendState(PerTarget, float4(0, 0, 0, 0), 0xFFFFFFFF); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    EXPECT_EQ(stateOf(pass, RenderStateId::IndependentBlendEnable), 1.0);
+    EXPECT_EQ(stateOf(pass, RenderStateId::AlphaBlendEnable), 1.0);
+    EXPECT_EQ(stateOf(pass, RenderStateId::AlphaBlendEnable1), 0.0);  // D3D10: FALSE unless set
+    EXPECT_EQ(stateOf(pass, RenderStateId::SrcBlend1), 2.0);          // target 0's ONE
+    EXPECT_EQ(stateOf(pass, RenderStateId::AlphaBlendEnable2), 1.0);
+    EXPECT_EQ(stateOf(pass, RenderStateId::SrcBlend2), 1.0);    // ZERO
+    EXPECT_EQ(stateOf(pass, RenderStateId::DestBlend2), 16.0);  // SRC1_COLOR
+    EXPECT_EQ(stateOf(pass, RenderStateId::BlendOp2), 5.0);     // MAX
+    EXPECT_EQ(stateOf(pass, RenderStateId::DestBlendAlpha3), 19.0);
+    EXPECT_EQ(stateOf(pass, RenderStateId::DestBlend7), 2.0);  // target 0's ONE
+}
+
 TEST(D3d10Syntax, StateObjectErrorsAreLocated) {
     struct Case {
         const char* source;
@@ -426,10 +449,13 @@ TEST(D3d10Syntax, StateObjectErrorsAreLocated) {
     const Case cases[] = {
         {"RasterizerState R { CullMod = NONE; };", 1, 21, "unknown state 'CullMod'"},
         {"RasterizerState R { CullMode = CCW; };", 1, 32, "'CCW' is not a value of state 'CullMode'"},
-        {"BlendState B { BlendEnable[0] = TRUE; BlendEnable[1] = FALSE; };\ntechnique11 T { pass { "
+        {"BlendState B { BlendEnable[0] = TRUE; RenderTargetWriteMask[5] = 0; };\ntechnique11 T { pass { "
          "SetBlendState(B, "
          "float4(0,0,0,0), 0xFFFFFFFF); } }",
-         1, 39, "BlendEnable[1] differs from render target 0's"},
+         1, 39, "RenderTargetWriteMask[5] masks a render target the runtime never binds"},
+        {"BlendState B { AlphaToCoverageEnable[1] = TRUE; };\ntechnique11 T { pass { SetBlendState(B, "
+         "float4(0,0,0,0), 0xFFFFFFFF); } }",
+         1, 16, "AlphaToCoverageEnable takes no render-target index"},
         {"DepthStencilState D { DepthEnable = FALSE; };\ntechnique11 T { pass { SetRasterizerState(D); } }",
          2, 43, "'D' is not a RasterizerState"},
         {"technique11 T { pass { SetDepthStencilState(Nowhere, 0); } }", 1, 45,

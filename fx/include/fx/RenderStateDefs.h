@@ -96,6 +96,27 @@ FX_RENDER_STATE(SpecularEnable, Bool, 0)
 FX_RENDER_STATE(NormalizeNormals, Bool, 0)
 FX_RENDER_STATE(PointSpriteEnable, Bool, 0)
 FX_RENDER_STATE(SRGBWriteEnable, Bool, 0)
+// D3D10's independent blend, set from a BlendState's per-target fields (BlendEnable[i], SrcBlend[i], ...):
+// with IndependentBlendEnable, render target i (1..7) blends by the states suffixed i and target 0 by the
+// unsuffixed ones (glEnablei, glBlendFuncSeparatei, glBlendEquationSeparatei); without it every target
+// blends by the unsuffixed ones, as in D3D9.
+FX_RENDER_STATE(IndependentBlendEnable, Bool, 0)
+#define FX_TARGET_BLEND_STATES(i)                  \
+    FX_RENDER_STATE(AlphaBlendEnable##i, Bool, 0)  \
+    FX_RENDER_STATE(SrcBlend##i, Blend, 2)         \
+    FX_RENDER_STATE(DestBlend##i, Blend, 1)        \
+    FX_RENDER_STATE(BlendOp##i, BlendOp, 1)        \
+    FX_RENDER_STATE(SrcBlendAlpha##i, Blend, 2)    \
+    FX_RENDER_STATE(DestBlendAlpha##i, Blend, 1)   \
+    FX_RENDER_STATE(BlendOpAlpha##i, BlendOp, 1)
+FX_TARGET_BLEND_STATES(1)
+FX_TARGET_BLEND_STATES(2)
+FX_TARGET_BLEND_STATES(3)
+FX_TARGET_BLEND_STATES(4)
+FX_TARGET_BLEND_STATES(5)
+FX_TARGET_BLEND_STATES(6)
+FX_TARGET_BLEND_STATES(7)
+#undef FX_TARGET_BLEND_STATES
 
 FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
 FX_STATE_ALIAS(DepthEnable, ZEnable)
@@ -206,6 +227,11 @@ FX_ENUM_VALUE(Blend, InvDestColor, 10)
 FX_ENUM_VALUE(Blend, SrcAlphaSat, 11)
 FX_ENUM_VALUE(Blend, BlendFactor, 14)
 FX_ENUM_VALUE(Blend, InvBlendFactor, 15)
+// Dual-source blending: the pixel shader's second output (SV_Target1) as the source (GL 3.3's GL_SRC1_*).
+FX_ENUM_VALUE(Blend, Src1Color, 16)
+FX_ENUM_VALUE(Blend, InvSrc1Color, 17)
+FX_ENUM_VALUE(Blend, Src1Alpha, 18)
+FX_ENUM_VALUE(Blend, InvSrc1Alpha, 19)
 FX_ENUM_VALUE(BlendOp, Add, 1)
 FX_ENUM_VALUE(BlendOp, Subtract, 2)
 FX_ENUM_VALUE(BlendOp, RevSubtract, 3)

@@ -108,8 +108,12 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
                    targets.depth);
         }
         // Slot i always writes GL_COLOR_ATTACHMENTi: a shader's COLORi output stays at location i even when
-        // a lower slot is empty, as with D3D's SetRenderTarget(i).
-        gl::DrawBuffers(4, entry.drawBuffers.data());
+        // a lower slot is empty, as with D3D's SetRenderTarget(i). The list ends at the last bound slot:
+        // GL counts the listed buffers against GL_MAX_DUAL_SOURCE_DRAW_BUFFERS (1) for dual-source blending.
+        GLsizei drawBufferCount = 1;
+        for (GLsizei i = 0; i < 4; ++i)
+            if (entry.drawBuffers[size_t(i)] != GL_NONE) drawBufferCount = i + 1;
+        gl::DrawBuffers(drawBufferCount, entry.drawBuffers.data());
         GLenum firstColor = GL_NONE;
         for (GLenum buffer : entry.drawBuffers) {
             if (buffer != GL_NONE) {

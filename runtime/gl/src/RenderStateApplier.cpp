@@ -69,9 +69,13 @@ GLenum glBlendFactorFromD3d(int d3dBlend) {
         case 15:
             return GL_ONE_MINUS_CONSTANT_COLOR;
         case 16:
-            return GL_SRC1_COLOR;  // D3D9Ex SRCCOLOR2
+            return GL_SRC1_COLOR;  // D3D10 SRC1_COLOR (D3D9Ex SRCCOLOR2)
         case 17:
             return GL_ONE_MINUS_SRC1_COLOR;
+        case 18:
+            return GL_SRC1_ALPHA;  // D3D10 SRC1_ALPHA
+        case 19:
+            return GL_ONE_MINUS_SRC1_ALPHA;
         default:
             return GL_ONE;
     }
@@ -188,7 +192,9 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
     enable(GL_SAMPLE_MASK, sampleMask != 0xffffffffu);
     gl::SampleMaski(0, sampleMask);
 
-    // [SECTION] Blending. One blend state for all targets, as D3D9 (no independent blend).
+    // [SECTION] Blending. One blend state for all targets as in D3D9, or D3D10's independent blend: target
+    // i by the states suffixed i (RenderStateDefs.h). The calls without an index set every target, so a
+    // pass after an independent one starts from one blend again.
     enable(GL_BLEND, flag(RenderStateId::AlphaBlendEnable));
     GLenum srcColor = glBlendFactorFromD3d(integer(RenderStateId::SrcBlend));
     GLenum dstColor = glBlendFactorFromD3d(integer(RenderStateId::DestBlend));
@@ -201,6 +207,27 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
     }
     gl::BlendFuncSeparate(srcColor, dstColor, srcAlpha, dstAlpha);
     gl::BlendEquationSeparate(opColor, opAlpha);
+    if (flag(RenderStateId::IndependentBlendEnable)) {
+        // The seven states of target i follow target 1's in the table, in the same order.
+        constexpr int kPerTarget =
+            int(RenderStateId::AlphaBlendEnable2) - int(RenderStateId::AlphaBlendEnable1);
+        for (int target = 1; target < 8; ++target) {
+            const auto at = [&](RenderStateId target1) {
+                return RenderStateId(int(target1) + (target - 1) * kPerTarget);
+            };
+            const GLuint i = GLuint(target);
+            if (flag(at(RenderStateId::AlphaBlendEnable1)))
+                gl::Enablei(GL_BLEND, i);
+            else
+                gl::Disablei(GL_BLEND, i);
+            gl::BlendFuncSeparatei(i, glBlendFactorFromD3d(integer(at(RenderStateId::SrcBlend1))),
+                                   glBlendFactorFromD3d(integer(at(RenderStateId::DestBlend1))),
+                                   glBlendFactorFromD3d(integer(at(RenderStateId::SrcBlendAlpha1))),
+                                   glBlendFactorFromD3d(integer(at(RenderStateId::DestBlendAlpha1))));
+            gl::BlendEquationSeparatei(i, glBlendEquationFromD3d(integer(at(RenderStateId::BlendOp1))),
+                                       glBlendEquationFromD3d(integer(at(RenderStateId::BlendOpAlpha1))));
+        }
+    }
     uint32_t factor = bits(RenderStateId::BlendFactor);  // D3DCOLOR: 0xAARRGGBB
     gl::BlendColor(float((factor >> 16) & 0xff) / 255.0f, float((factor >> 8) & 0xff) / 255.0f,
                    float(factor & 0xff) / 255.0f, float((factor >> 24) & 0xff) / 255.0f);
