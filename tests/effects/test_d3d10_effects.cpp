@@ -3,8 +3,10 @@
 // (DepthFunc LESS, back faces culled) against D3D9's on pixels, Texture2D methods through glslang,
 // texture arrays, buffers and a multisample target on pixels, a geometry shader expanding a triangle into
 // a quad, geometry shaders taking points, edges and triangles with adjacency, hull and domain shaders
-// whose tessellation factors, domain locations and patch constants show on pixels, and a technique11
-// twin rendering the same frame as its D3D9 technique.
+// whose tessellation factors, domain locations and patch constants show on pixels, a technique11 twin
+// rendering the same frame as its D3D9 technique, vertex inputs by input-layout names, more than eight
+// free-named varyings, a stream-output technique left out beside a scene technique, per-target and
+// dual-source blending, and a multisample target above the driver's sample count.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -796,7 +798,7 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
 }
 
-// [SECTION] Input layouts, stream output and blending
+// [SECTION] Input layouts, stream output, blending and sample counts
 
 // Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.
 std::unique_ptr<runtime::EffectRenderer> loadKeeping(const std::string& file,
@@ -937,6 +939,55 @@ TEST(D3d10Effects, DualSourceBlendingTakesTheSecondOutputAsTheFactor) {
     ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight, "DualSource"));
     const runtime::FrameImage frame = renderer->readFrame();
     for (int t = 0; t < 3; ++t) EXPECT_TRUE(isColor(third(frame, t), 128, 64, 0)) << t;
+}
+
+TEST(D3d10Effects, MoreSamplesThanTheDriverHoldsGetItsMostWithAWarning) {
+    const std::string source = R"(
+Texture2DMS<float4, 32> Coverage : RENDERCOLORTARGET;
+float4 Black = {0, 0, 0, 1};
+struct QuadVertex { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+float4 QuadVS(QuadVertex v) : SV_Position { return v.Position; }
+float4 White() : SV_Target { return 1; }
+float4 Count(float4 p : SV_Position) : SV_Target
+{
+    uint w, h, samples;
+    Coverage.GetDimensions(w, h, samples);
+    return float4(Coverage.Load(int2(p.xy), 0).r, 0, samples / 32.0, 1);
+}
+DepthStencilState NoDepth { DepthEnable = FALSE; };
+technique11 Msaa < string Script = "Pass=Draw; Pass=Read;"; >
+{
+    pass Draw < string Script = "RenderColorTarget0=Coverage; ClearSetColor=Black; Clear=Color; Draw=Buffer;"; >
+    { SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, White()));
+      SetDepthStencilState(NoDepth, 0); }
+    pass Read < string Script = "RenderColorTarget0=; Draw=Buffer;"; >
+    { SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, Count()));
+      SetDepthStencilState(NoDepth, 0); }
+}
+)";
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectSource(source, "samples.fx", fx::ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
+    ASSERT_TRUE(renderer) << diagnostics.str();
+    const std::vector<std::string> reduced = messagesOf(diagnostics, fx::DiagId::SampleCountReduced);
+    ASSERT_EQ(reduced.size(), 1u) << diagnostics.str();
+    EXPECT_NE(reduced[0].find("samples.fx:2:25: warning: 'Coverage' has 32 samples per texel; this OpenGL "
+                              "holds at most "),
+              std::string::npos)
+        << reduced[0];
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    // Every pixel read the target's white, and the count it has is a fraction of 32 (blue), 1 or more.
+    const uint8_t* first = frame.pixel(0, 0);
+    EXPECT_EQ(first[0], 255);
+    EXPECT_GT(first[2], 0);
+    EXPECT_LT(first[2], 255);
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) ASSERT_TRUE(isColor(frame.pixel(x, y), 255, 0, first[2]));
 }
 
 }  // namespace

@@ -69,6 +69,8 @@ FX_DIAGNOSTIC(TextureCaseMismatch, Warning,
 FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}")
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
 FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
+FX_DIAGNOSTIC(SampleCountReduced, Warning,
+              "'{0}' has {1} samples per texel; this OpenGL holds at most {2}, which it gets instead")
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
 FX_DIAGNOSTIC(NoTechniques, Error, "the file has no techniques")
 FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")

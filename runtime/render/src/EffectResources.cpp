@@ -44,6 +44,15 @@ GpuTexture makeArrayTexture(fx::BaseType type, fx::TextureFormat format, int wid
     return GpuTexture::create2DArray(format, width, height, elements, mipLevels);
 }
 
+// A multisample texture's sample count: the effect's, or the most this GL's textures of its kind hold (an
+// effect written for 8 samples runs with 4 where the driver offers 4; loading warns).
+int supportedSamples(const fx::TextureDesc& desc) {
+    GLint most = 0;
+    gl::GetIntegerv(isDepthFormat(desc.format) ? GL_MAX_DEPTH_TEXTURE_SAMPLES : GL_MAX_COLOR_TEXTURE_SAMPLES,
+                    &most);
+    return std::max(1, std::min(desc.samples, int(most)));
+}
+
 // White: the neutral value for textures the effect multiplies with. A texture array gets its ArraySize
 // elements of it, so that GetDimensions reports what the effect declared.
 GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples = 1) {
@@ -362,19 +371,10 @@ const fx::Value* EffectResources::find(std::string_view name) const {
 
 bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
-        if (desc.type == fx::BaseType::Texture2DMS) {
-            GLint most = 0;
-            gl::GetIntegerv(
-                isDepthFormat(desc.format) ? GL_MAX_DEPTH_TEXTURE_SAMPLES : GL_MAX_COLOR_TEXTURE_SAMPLES,
-                &most);
-            if (desc.samples > most) {
-                diagnostics.report(
-                    fx::DiagId::UnsupportedFeature, desc.loc,
-                    {"'" + parameterInfo()[desc.parameter].name + "' has " + std::to_string(desc.samples) +
-                     " samples per texel; this OpenGL holds at most " + std::to_string(most)});
-                return false;
-            }
-        }
+        if (desc.type == fx::BaseType::Texture2DMS && supportedSamples(desc) < desc.samples)
+            diagnostics.report(fx::DiagId::SampleCountReduced, desc.loc,
+                               {parameterInfo()[desc.parameter].name, std::to_string(desc.samples),
+                                std::to_string(supportedSamples(desc))});
         if (isRenderTarget(desc)) continue;
         const bool cube = desc.type == fx::BaseType::TextureCube;
         const std::string& semantic = parameterInfo()[desc.parameter].semantic;
@@ -407,7 +407,8 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
                     "texture file '" + desc.resourceName + "' holds a " + textureFileKindName(*file) +
                         " texture, but the effect samples it as a " + textureTypeName(desc.type) +
                         " texture; using a neutral texture"});
-                textures[desc.parameter] = makeNeutralTexture(desc.type, desc.arraySize, desc.samples);
+                textures[desc.parameter] =
+                    makeNeutralTexture(desc.type, desc.arraySize, supportedSamples(desc));
                 continue;
             }
             texture->setLabel(parameterInfo()[desc.parameter].name);
@@ -436,7 +437,7 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
             textures[desc.parameter] = std::move(texture);
             continue;
         }
-        textures[desc.parameter] = makeNeutralTexture(desc.type, desc.arraySize, desc.samples);
+        textures[desc.parameter] = makeNeutralTexture(desc.type, desc.arraySize, supportedSamples(desc));
     }
     return true;
 }
@@ -459,7 +460,7 @@ void EffectResources::ensureFrameResources(int width, int height, const std::set
         GpuTexture texture = desc.type == fx::BaseType::TextureCube
                                  ? GpuTexture::createCube(desc.format, w, desc.mipLevels)
                              : desc.type == fx::BaseType::Texture2DMS
-                                 ? GpuTexture::create2DMultisample(desc.format, w, h, desc.samples)
+                                 ? GpuTexture::create2DMultisample(desc.format, w, h, supportedSamples(desc))
                                  : GpuTexture::create2D(desc.format, w, h, desc.mipLevels);
         texture.setLabel(parameterInfo()[desc.parameter].name);
         textures[desc.parameter] = std::move(texture);
