@@ -414,13 +414,14 @@ bool HandWrittenFrame::setUp(const fx::CompiledEffect& effect, const runtime::Sc
                 uint32_t buffer = 0;
                 int components = 3;
                 glm::vec4 fallback(0.0f);
-                if (input.semantic == "POSITION") {
+                using fx::VertexStream;
+                if (input.stream.stream == VertexStream::Position) {
                     buffer = mesh.positions;
                     fallback = glm::vec4(0, 0, 0, 1);
-                } else if (input.semantic == "NORMAL") {
+                } else if (input.stream.stream == VertexStream::Normal) {
                     buffer = mesh.normals;
                     fallback = glm::vec4(0, 1, 0, 0);
-                } else if (input.semantic == "TEXCOORD0") {
+                } else if (input.stream.stream == VertexStream::Texcoord && input.stream.index == 0) {
                     buffer = mesh.texcoords;
                     components = 2;
                 } else {

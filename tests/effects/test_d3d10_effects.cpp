@@ -969,7 +969,8 @@ technique11 Msaa < string Script = "Pass=Draw; Pass=Read;"; >
     fx::DiagnosticList diagnostics;
     auto effect = fx::parseEffectSource(source, "samples.fx", fx::ParseOptions{}, diagnostics);
     ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    std::shared_ptr<fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
     auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
     ASSERT_TRUE(renderer) << diagnostics.str();

@@ -274,7 +274,7 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     pair.pairTexture = "Albedo";
     pair.pairSampler = "Linear";
     outcome.program.samplers.push_back(pair);
-    outcome.program.inputs.push_back({"TEXCOORD0", 2, 2});
+    outcome.program.inputs.push_back({"TEXCOORD0", 2, 2, {fx::VertexStream::Texcoord, 0}});
     std::optional<fx::StageOutcome> o = fx::decodeOutcome(fx::encodeOutcome(outcome));
     ASSERT_TRUE(o);
     EXPECT_EQ(o->status, outcome.status);
@@ -290,6 +290,7 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     EXPECT_EQ(o->program.samplers[1].pairTexture, "Albedo");
     EXPECT_EQ(o->program.samplers[1].pairSampler, "Linear");
     EXPECT_EQ(o->program.inputs[0].components, 2);
+    EXPECT_EQ(o->program.inputs[0].stream.stream, fx::VertexStream::Texcoord);
 }
 
 TEST(CompileProtocol, TruncatedOrForeignMessagesAreRejected) {

@@ -93,7 +93,8 @@ layout(location = 0) out vec4 outColor;
 void main() { outColor = uColor; }
 )";
 
-inline const std::vector<fx::VertexInput> kPositionOnly = {{"POSITION", 0, 4}};
+inline const std::vector<fx::VertexInput> kPositionOnly = {
+    {"POSITION", 0, 4, {fx::VertexStream::Position, 0}}};
 
 // A mesh of clip-space triangles (x, y, z per vertex, indices in order).
 inline runtime::GpuMesh clipSpaceTriangles(const std::vector<glm::vec3>& vertices) {

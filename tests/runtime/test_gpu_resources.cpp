@@ -157,7 +157,8 @@ TEST_F(GpuResources, FullScreenQuadTexcoordsStartTopLeft) {
     program.use();
     applyRenderStates(RenderStateBlock::defaults());
     GpuMesh quad = GpuMesh::makeFullScreenQuad();
-    quad.draw({{"POSITION", 0, 4}, {"TEXCOORD0", 3, 2}});
+    quad.draw({{"POSITION", 0, 4, {fx::VertexStream::Position, 0}},
+               {"TEXCOORD0", 3, 2, {fx::VertexStream::Texcoord, 0}}});
     Image image = readFloatTexture(target);
     const float half = 0.5f / kSize;
     EXPECT_NEAR(image.sample(0, 0, 0), half, 1e-5);
@@ -195,8 +196,11 @@ void main() { outColor = value; }
     program.use();
     applyRenderStates(RenderStateBlock::defaults());
     GpuMesh quad = testsupport::clipSpaceQuad(0.5f);  // positions only
-    const std::vector<fx::VertexInput> inputs = {
-        {"POSITION", 0, 4}, {"COLOR0", 1, 4}, {"NORMAL", 2, 4}, {"TANGENT0", 5, 4}, {"BINORMAL0", 6, 4}};
+    const std::vector<fx::VertexInput> inputs = {{"POSITION", 0, 4, {fx::VertexStream::Position, 0}},
+                                                 {"COLOR0", 1, 4, {fx::VertexStream::Color, 0}},
+                                                 {"NORMAL", 2, 4, {fx::VertexStream::Normal, 0}},
+                                                 {"TANGENT0", 5, 4, {fx::VertexStream::Tangent, 0}},
+                                                 {"BINORMAL0", 6, 4, {fx::VertexStream::Binormal, 0}}};
     const glm::vec4 expected[4] = {{1, 1, 1, 1}, {0, 1, 0, 0}, {1, 0, 0, 1}, {0, 0, -1, 0}};
     for (int which = 0; which < 4; ++which) {
         gl::Uniform1i(gl::GetUniformLocation(program.id(), "uWhich"), which);
