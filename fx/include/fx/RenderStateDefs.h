@@ -101,13 +101,13 @@ FX_RENDER_STATE(SRGBWriteEnable, Bool, 0)
 // unsuffixed ones (glEnablei, glBlendFuncSeparatei, glBlendEquationSeparatei); without it every target
 // blends by the unsuffixed ones, as in D3D9.
 FX_RENDER_STATE(IndependentBlendEnable, Bool, 0)
-#define FX_TARGET_BLEND_STATES(i)                  \
-    FX_RENDER_STATE(AlphaBlendEnable##i, Bool, 0)  \
-    FX_RENDER_STATE(SrcBlend##i, Blend, 2)         \
-    FX_RENDER_STATE(DestBlend##i, Blend, 1)        \
-    FX_RENDER_STATE(BlendOp##i, BlendOp, 1)        \
-    FX_RENDER_STATE(SrcBlendAlpha##i, Blend, 2)    \
-    FX_RENDER_STATE(DestBlendAlpha##i, Blend, 1)   \
+#define FX_TARGET_BLEND_STATES(i)                 \
+    FX_RENDER_STATE(AlphaBlendEnable##i, Bool, 0) \
+    FX_RENDER_STATE(SrcBlend##i, Blend, 2)        \
+    FX_RENDER_STATE(DestBlend##i, Blend, 1)       \
+    FX_RENDER_STATE(BlendOp##i, BlendOp, 1)       \
+    FX_RENDER_STATE(SrcBlendAlpha##i, Blend, 2)   \
+    FX_RENDER_STATE(DestBlendAlpha##i, Blend, 1)  \
     FX_RENDER_STATE(BlendOpAlpha##i, BlendOp, 1)
 FX_TARGET_BLEND_STATES(1)
 FX_TARGET_BLEND_STATES(2)
