@@ -57,9 +57,9 @@ constexpr FormatName kFormats[] = {
     {"D32", TextureFormat::D32F},
     {"D32F", TextureFormat::D32F},
     {"D32F_LOCKABLE", TextureFormat::D32F},
+    {"A16B16G16R16", TextureFormat::RGBA16},
     // Formats without an exact counterpart here take the nearest one that holds at least their precision:
-    // 16-bit normalized channels go to half floats, luminance and alpha formats to RGBA8.
-    {"A16B16G16R16", TextureFormat::RGBA16F},
+    // other 16-bit normalized channels go to half floats, luminance and alpha formats to RGBA8.
     {"G16R16", TextureFormat::RG16F},
     {"A2R10G10B10", TextureFormat::RGBA16F},
     {"A2B10G10R10", TextureFormat::RGBA16F},
@@ -97,7 +97,7 @@ constexpr FormatName kFormats[] = {
     {"R8G8B8A8_TYPELESS", TextureFormat::RGBA8},
     {"R10G10B10A2_UNORM", TextureFormat::RGBA16F},
     {"R11G11B10_FLOAT", TextureFormat::RGBA16F},
-    {"R16G16B16A16_UNORM", TextureFormat::RGBA16F},
+    {"R16G16B16A16_UNORM", TextureFormat::RGBA16},
     {"R16G16_UNORM", TextureFormat::RG16F},
     {"R8_UNORM", TextureFormat::RGBA8},
     {"A8_UNORM", TextureFormat::RGBA8},
@@ -110,6 +110,7 @@ constexpr FormatName kFormats[] = {
     {"RGBA32F", TextureFormat::RGBA32F},
     {"RG16F", TextureFormat::RG16F},
     {"RG32F", TextureFormat::RG32F},
+    {"RGBA16", TextureFormat::RGBA16},
     {"DEPTH24_STENCIL8", TextureFormat::D24S8},
     {"DEPTH32F", TextureFormat::D32F},
     {"DEPTH16", TextureFormat::D16},
@@ -143,6 +144,8 @@ std::string_view textureFormatName(TextureFormat format) {
             return "RG16F";
         case TextureFormat::RG32F:
             return "RG32F";
+        case TextureFormat::RGBA16:
+            return "RGBA16";
         case TextureFormat::D16:
             return "D16";
         case TextureFormat::D24S8:

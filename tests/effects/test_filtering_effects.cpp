@@ -1,9 +1,10 @@
-// The shadow-filtering effects (effects/pcf.fx, effects/vsm.fx) against the ray-cast ground truth and
-// against independent computations: every technique stays under the misclassification bound its
-// `ExpectMisclassifiedBelow` annotation asserts (the measured value it came from is the comment beside it
-// in the effect), PCF filters at shadow edges but not inside the umbra, the light-space noise of
+// The shadow-filtering effects (effects/pcf.fx, vsm.fx, esm.fx, evsm.fx, msm.fx) against the ray-cast
+// ground truth and against independent computations: every technique stays under the misclassification
+// bound its `ExpectMisclassifiedBelow` annotation asserts (the measured value it came from is the comment
+// beside it in the effect), PCF filters at shadow edges but not inside the umbra, the light-space noise of
 // `jittered_noise` stays on the surface when the camera moves, VSM's visibility is the Chebyshev bound of
-// its own moments map computed on the CPU, and the minimum-variance guard keeps a flat receiver clean.
+// its own moments map computed on the CPU, the minimum-variance guard keeps a flat receiver clean, and the
+// moment shadow maps' quantization and bound agree with what the moments of known depths require.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -70,6 +71,18 @@ TEST(FilteringEffects, PcfTechniquesStayUnderTheirAnnotatedBounds) {
 
 TEST(FilteringEffects, VsmTechniquesStayUnderTheirAnnotatedBounds) {
     expectUnderAnnotatedBound("effects/vsm.fx");
+}
+
+TEST(FilteringEffects, EsmTechniquesStayUnderTheirAnnotatedBounds) {
+    expectUnderAnnotatedBound("effects/esm.fx");
+}
+
+TEST(FilteringEffects, EvsmTechniquesStayUnderTheirAnnotatedBounds) {
+    expectUnderAnnotatedBound("effects/evsm.fx");
+}
+
+TEST(FilteringEffects, MsmTechniquesStayUnderTheirAnnotatedBounds) {
+    expectUnderAnnotatedBound("effects/msm.fx");
 }
 
 // [SECTION] PCF filters edges, not the umbra
@@ -260,6 +273,74 @@ TEST(FilteringEffects, MinimumVarianceKeepsAFlatReceiverLit) {
     EXPECT_LT(withGuard.falseShadowPercent, 0.5) << "acne on the flat receiver despite MinVariance";
     EXPECT_GT(withoutGuard.falseShadowPercent, 10 * withGuard.falseShadowPercent + 1.0)
         << "the scene must show the problem the guard solves";
+}
+
+// [SECTION] Moment shadow maps against independent computations
+
+// A Draw=Buffer pass of one row, `width` pixels wide: pixel i runs `body` with `z` = (i + 0.5) / width and
+// returns its float4. The shader includes effects/include/msm.fxh. Values come back through an RGBA8 frame.
+runtime::FrameImage runMsmRow(const std::string& body, int width) {
+    const std::string source = R"(#include "include/msm.fxh"
+float W = 0.5;
+float Z1 = 0.3;
+float Z2 = 0.6;
+struct Quad { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+Quad VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Quad o; o.Position = p; o.UV = uv; return o; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { float z = uv.x; )" +
+                               body + R"( }
+technique t { pass p < string Script = "RenderColorTarget0=; Draw=Buffer;"; > {
+    ZEnable = false; VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+    auto renderer = loadEffect(source, false, sourcePath("effects/msm_check.fx"));
+    if (!renderer) return {};
+    static const runtime::Scene scene = *runtime::makeBuiltinScene("boxes", nullptr);
+    EXPECT_TRUE(render(*renderer, scene, width, 1));
+    return renderer->readFrame();
+}
+
+// Peters & Klein 2015's quantization: its two matrices are inverses (a dequantized texel is the moments
+// computed directly, to 1e-5 of their range), and the moments of every depth in [0, 1] land in [0, 1]^4 (to
+// float32 rounding: the map is as wide as the range, touching 0 and 1), so that 16-bit normalized storage
+// holds them.
+TEST(FilteringEffects, MsmQuantizationIsInvertibleAndFitsNormalizedStorage) {
+    const int width = 256;
+    const runtime::FrameImage roundTrip = runMsmRow(
+        "float4 b = PowerMoments(z); float4 e = saturate(abs(DequantizeMoments(QuantizeMoments(b)) - b) * "
+        "1e5); "
+        "return float4(e.x, e.y, max(e.z, e.w), 1);",
+        width);
+    ASSERT_EQ(roundTrip.width, width);
+    for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_LT(roundTrip.pixel(x, 0)[c], 255) << "pixel " << x << " channel " << c;
+    // In range: 1 where every component is in [0, 1], else 0.
+    const runtime::FrameImage range = runMsmRow(
+        "float4 q = QuantizeMoments(PowerMoments(z)); float inside = all(q >= -1e-5) && all(q <= 1 + 1e-5) ? "
+        "1.0 : 0.0; "
+        "return float4(inside, inside, inside, 1);",
+        width);
+    for (int x = 0; x < width; ++x) EXPECT_EQ(range.pixel(x, 0)[0], 255) << "depth " << (x + 0.5) / width;
+}
+
+// The Hamburger 4MSM on the moments of two occluder depths, weight W at Z1 = 0.3 and 1 - W at Z2 = 0.6: four
+// moments determine such a distribution exactly, so the sharpest lower bound is the distribution's own
+// fraction in front of the receiver: 0 in front of Z1, W between, 1 behind Z2 (to the moment bias). The
+// expectation comes from the distribution, not from the algorithm.
+TEST(FilteringEffects, Hamburger4MsmRecoversATwoDepthDistribution) {
+    const int width = 100;
+    const runtime::FrameImage image = runMsmRow(
+        "float4 b = W * PowerMoments(Z1) + (1 - W) * PowerMoments(Z2); float g = Hamburger4MsmShadow(b, z, "
+        "3e-6); "
+        "return float4(g, g, g, 1);",
+        width);
+    ASSERT_EQ(image.width, width);
+    ASSERT_TRUE(notConstant(image));
+    for (int x = 0; x < width; ++x) {
+        const double z = (x + 0.5) / width;
+        if (std::abs(z - 0.3) < 0.03 || std::abs(z - 0.6) < 0.03) continue;  // the bound ramps at the atoms
+        const double expected = z < 0.3 ? 0.0 : z < 0.6 ? 0.5 : 1.0;
+        EXPECT_NEAR(image.pixel(x, 0)[0] / 255.0, expected, 0.03) << "receiver depth " << z;
+    }
 }
 
 // [SECTION] The light's size

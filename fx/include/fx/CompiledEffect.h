@@ -177,6 +177,7 @@ enum class TextureFormat {
     R32F,
     RG16F,
     RG32F,
+    RGBA16,  // 16-bit normalized channels (D3D9's A16B16G16R16): what quantized moment maps need
     D16,
     D24S8,
     D24X8,

@@ -23,6 +23,7 @@ const GlTextureFormat& glTextureFormat(fx::TextureFormat format) {
         /* R32F    */ {GL_R32F, GL_RED, GL_FLOAT, 1, false, false, true, 0},
         /* RG16F   */ {GL_RG16F, GL_RG, GL_FLOAT, 2, false, false, true, 0},
         /* RG32F   */ {GL_RG32F, GL_RG, GL_FLOAT, 2, false, false, true, 0},
+        /* RGBA16  */ {GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, 4, false, false, false, 0},
         /* D16     */ {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_FLOAT, 1, true, false, false, 16},
         /* D24S8   */ {GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 1, true, true, false, 24},
         /* D24X8   */ {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, 1, true, false, false, 24},
