@@ -133,7 +133,8 @@ private:
         LightAreaRadius,
         ObjectColor,
         Ambient,
-        SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
+        SceneHasClosedObjects,  // scene-driven choices (docs/measurement.md, "Leave-out"): effects branch or
+                                // loop on them
         CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
         CascadeAtlasRects,
         CascadeSplitDepths,
