@@ -8,9 +8,11 @@
 //   shadowfx check EFFECT.fx [...]                       expectations, goldens, JUnit (CheckCommand)
 //   shadowfx stress [EFFECT.fx ...] [--reduced]          extreme configurations (StressCommand)
 //   shadowfx view EFFECT.fx [...]                        window, hot reload, parameters (ViewCommand)
+//   shadowfx new NAME [--from pcf|vsm|minimal]           a technique skeleton NAME.fx (NewCommand)
 #include "BenchCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
+#include "NewCommand.h"
 #include "StressCommand.h"
 #include "ViewCommand.h"
 
@@ -208,7 +210,6 @@ const shadowfx::cli::Command kCommands[] = {
      "                        bunny, horse, spider, engine; default boxes) or a scene file (.json)\n"
      "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
      "  --backend NAME        auto, osmesa or egl (default auto)\n"
-     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
      "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
      "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
      "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
@@ -221,8 +222,7 @@ const shadowfx::cli::Command kCommands[] = {
      "print the generated GLSL of every pass, or the diagnostics",
      "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl]\n"
      "  --technique NAME      only this technique\n"
-     "  --hlsl                also print the HLSL unit generated for each stage\n"
-     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n",
+     "  --hlsl                also print the HLSL unit generated for each stage\n",
      {},
      {"--technique", "-I", "-D"},
      {"--hlsl", "--verbose"},
@@ -286,6 +286,13 @@ const shadowfx::cli::Command kCommands[] = {
      {"--scene", "--technique", "--width", "--height", "--frames", "--screenshot", "-I", "-D"},
      {},
      shadowfx::cli::viewCommand},
+    {"new",
+     "write a technique skeleton NAME.fx in the current folder, ready for render, check, bench, stress",
+     shadowfx::cli::kNewUsage,
+     {},
+     {"--from"},
+     {},
+     shadowfx::cli::newCommand},
 };
 
 }  // namespace
