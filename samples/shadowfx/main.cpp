@@ -23,6 +23,7 @@
 #include <runtime/Scene.h>
 #include <runtime/SceneFile.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -186,14 +187,24 @@ int infoCommand(const Arguments& args) {
         for (const fx::CompiledPass& pass : technique.passes) std::cout << " " << pass.name;
         std::cout << "\n";
     }
+    const std::vector<std::string> bound = runtime::EffectRenderer::boundSemantics();
+    auto binds = [&](const std::string& semantic) {
+        return std::any_of(bound.begin(), bound.end(),
+                           [&](const std::string& name) { return fx::equalsIgnoreCase(name, semantic); });
+    };
     std::cout << "parameters:\n";
     for (size_t i = 0; i < effect.parameters.size(); ++i) {
         const fx::Parameter& p = effect.parameters[i];
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
+        if (!p.semantic.empty() && p.type.isNumeric() && !binds(p.semantic))
+            std::cout << "  (not bound by shadowfx: keeps its default value)";
         std::cout << "\n";
     }
+    std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";
+    for (const std::string& name : bound) std::cout << " " << name;
+    std::cout << "\n";
     return 0;
 }
 

@@ -75,6 +75,11 @@ public:
     static std::unique_ptr<EffectRenderer> create(std::shared_ptr<const fx::CompiledEffect> effect,
                                                   fx::DiagnosticSink& diagnostics);
     ~EffectRenderer();
+    // The semantics the runtime gives parameters values by (case-insensitive): the matrices with their
+    // Inverse/Transpose/InverseTranspose forms, camera, light, object and scene values, the light fits'
+    // tunables, and STANDARDSGLOBAL (the script parameter). create() warns of a numeric parameter whose
+    // semantic is none of them: it keeps its default value.
+    static std::vector<std::string> boundSemantics();
     EffectRenderer(const EffectRenderer&) = delete;
     EffectRenderer& operator=(const EffectRenderer&) = delete;
 
