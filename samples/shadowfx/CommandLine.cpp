@@ -92,7 +92,8 @@ struct Parser {
             }
         }
         if (command.positionals >= 0 && args.positionalCount() != static_cast<size_t>(command.positionals)) {
-            std::cerr << "shadowfx " << command.name << ": expected one effect file (see --help)\n";
+            std::cerr << "shadowfx " << command.name << ": expected one " << command.positionalName
+                      << " (see --help)\n";
             return false;
         }
         return true;

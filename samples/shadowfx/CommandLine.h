@@ -39,6 +39,7 @@ struct Command {
     // Number of positional arguments (effect files) the command takes; -1 = any (`bench --effects
     // effects/*.fx`, where the shell's glob leaves every file after the first as a positional argument).
     int positionals = 1;
+    const char* positionalName = "effect file";  // what the positional argument is, for usage errors
 };
 
 // "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of --scenes, --techniques, --effects, ...

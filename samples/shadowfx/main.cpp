@@ -303,7 +303,9 @@ const shadowfx::cli::Command kCommands[] = {
      {},
      {"--from"},
      {},
-     shadowfx::cli::newCommand},
+     shadowfx::cli::newCommand,
+     1,
+     "name, NAME"},
 };
 
 }  // namespace

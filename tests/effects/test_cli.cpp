@@ -127,6 +127,22 @@ TEST(Cli, AnUnboundSemanticIsALocatedWarningAndInfoListsTheBoundOnes) {
     EXPECT_NE(info.output.find(" WorldViewProjectionInverseTranspose "), std::string::npos) << info.output;
 }
 
+// `new` writes into the working directory (the source root here), so only its refusals run in this test;
+// the whole loop is CTest installed_authoring.
+TEST(Cli, NewRefusesBadNamesAndSkeletonsWithoutWriting) {
+    const RunResult missing = run("new");
+    EXPECT_EQ(missing.exitCode, 2) << missing.output;
+    EXPECT_NE(missing.output.find("expected one name, NAME"), std::string::npos) << missing.output;
+    const RunResult badName = run("new 9lives");
+    EXPECT_EQ(badName.exitCode, 2) << badName.output;
+    EXPECT_FALSE(std::filesystem::exists(kSource + "/9lives.fx"));
+    const RunResult badSkeleton = run("new unwritten --from esm");
+    EXPECT_EQ(badSkeleton.exitCode, 2) << badSkeleton.output;
+    EXPECT_NE(badSkeleton.output.find("--from must be pcf, vsm or minimal"), std::string::npos)
+        << badSkeleton.output;
+    EXPECT_FALSE(std::filesystem::exists(kSource + "/unwritten.fx"));
+}
+
 TEST(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run("render effects/thesis_fxcomposer.fx").exitCode, 2);  // --out missing
     EXPECT_EQ(run("render effects/thesis_fxcomposer.fx --out x.png --backend vulkan").exitCode, 2);
