@@ -35,3 +35,11 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cma
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/shadowfxConfig.cmake ${PROJECT_BINARY_DIR}/shadowfxConfigVersion.cmake
         ${CMAKE_CURRENT_LIST_DIR}/FindSquish.cmake DESTINATION ${SHADOWFX_INSTALL_CMAKEDIR})
+# The effect library (samples/shadowfx/EffectLibrary.h): the headers of effects/include, the shipped effects
+# (stress's uniform reference among them) and the skeletons of `shadowfx new`, where the installed tool
+# looks for them: share/shadowfx/effects. The goldens stay in the source tree: they belong to its CI.
+set(SHADOWFX_INSTALL_EFFECTSDIR ${CMAKE_INSTALL_DATADIR}/shadowfx/effects)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/effects/include ${PROJECT_SOURCE_DIR}/effects/templates
+        DESTINATION ${SHADOWFX_INSTALL_EFFECTSDIR})
+file(GLOB SHADOWFX_SHIPPED_EFFECTS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/effects/*.fx)
+install(FILES ${SHADOWFX_SHIPPED_EFFECTS} DESTINATION ${SHADOWFX_INSTALL_EFFECTSDIR})

@@ -2,8 +2,8 @@
 // §2; Scherzer 2005, Fig. 6 bottom row): only the faces turned away from the light go into the map, so the
 // depth a lit surface is tested against is the far side of its own solid, and self-shadowing moves to
 // the far side, which its own shading darkens anyway. It needs closed objects; open ones (the ground
-// plane) are drawn without culling through the pass annotation CullClosedOnly (README, "Writing
-// effects"), and a small constant Bias keeps those from shadowing themselves.
+// plane) are drawn without culling through the pass annotation CullClosedOnly (docs/compiled-effect.md), and
+// a small constant Bias keeps those from shadowing themselves.
 //
 // Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE and SHADOWFX_VISIBILITY (include/shadow_scene.fxh).
 
@@ -57,7 +57,7 @@ float4 BackFaceShadowPS(ReceiverVertexOutput IN) : COLOR
 
 technique main
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly), "
                                     "under a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";

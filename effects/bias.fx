@@ -192,7 +192,7 @@ float4 DepthTargetPS(ReceiverVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique constant
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
@@ -210,7 +210,7 @@ technique constant
 
 technique slope_state
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
@@ -244,7 +244,7 @@ technique slope_state
 
 technique slope_shader
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
@@ -261,7 +261,7 @@ technique slope_shader
 
 technique linear_z
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"

@@ -12,7 +12,7 @@
 // once, then BlurLoops more times (LoopByCount, ping-pong); the map-sized depth target stays bound in the
 // blur passes (effects/vsm.fx). Every other object gets bilinear PCF of the depth. The blur's width is
 // fixed: it does not follow the occluder distance, as Kozlov 2004 says ("adjust the blurring radius").
-// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing effects").
+// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks").
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -221,7 +221,7 @@ float4 BlurredPS(SceneVertexOutput IN) : COLOR
 
 technique blurred
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing, widened by "
                                     "the blurred receiver marks";
     string Script = "Pass=RenderShadowMap; Pass=BlurMarksX; Pass=BlurY;"
@@ -237,8 +237,9 @@ technique blurred
 {
     pass RenderShadowMap
     <
-        // Light-pass culling keeps casters this far from a visible receiver (README, "Leave-out"): the
-        // receiver marks spread BlurRadiusTexels x (1 + BlurLoops), 8 by default; 40 leaves room to tune.
+        // Light-pass culling keeps casters this far from a visible receiver (docs/measurement.md,
+        // "Leave-out"): the receiver marks spread BlurRadiusTexels x (1 + BlurLoops), 8 by default; 40 leaves
+        // room to tune.
         float FilterReachTexels = 40;
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=ShadowDepth;"

@@ -1,7 +1,8 @@
 // cascades.fx: cascaded (parallel-split) shadow maps (Lehőcz 2007, "Kaszádolt shadow map-ek", and Scherzer 2005 §1):
 // the view depth range is split into four slices and each gets its own orthographic,
 // stabilized map, all four as 512² tiles of one 1024² atlas: the same texels as focused.fx's single 1024²
-// map, spent near the viewer where the eye sees them large (README, "Light-space parameterizations").
+// map, spent near the viewer where the eye sees them large
+// (docs/techniques/light-space-parameterizations.md).
 //
 // The runtime's `Cascaded` provider (runtime/CascadedShadowMaps.h) fits the cascades; each depth pass renders
 // through RenderPort=light0.cascadeK into tile K, with light0's View/Projection parameters bound to cascade
@@ -322,7 +323,7 @@ float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
 // Each receiver reads its own cascade; the next one takes over at the split.
 technique hard
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
                                     "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
                                     "17 %, the uniform map 42 %)";
@@ -338,7 +339,7 @@ technique hard
 // The same, cross-faded over the last CascadeBlend share of each cascade's depth range.
 technique blended
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
                                     "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
                                     "17 %, the uniform map 42 %)";

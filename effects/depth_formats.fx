@@ -157,7 +157,7 @@ float4 Fixed24PS(ReceiverVertexOutput IN) : COLOR
 
 technique d16
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
@@ -173,7 +173,7 @@ technique d16
 
 technique d24
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
@@ -189,7 +189,7 @@ technique d24
 
 technique r32f
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"

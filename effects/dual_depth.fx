@@ -78,7 +78,7 @@ float4 SinglePassDualShadowPS(ReceiverVertexOutput IN) : COLOR
 
 technique peel
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
                                     "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
@@ -93,7 +93,7 @@ technique peel
 
 technique peel_cull
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
                                     "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
@@ -108,7 +108,7 @@ technique peel_cull
 
 technique single_pass
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
                                     "Offset: a constant bias; "
                                     "light-behind-viewer: uniform map, perspective aliasing";

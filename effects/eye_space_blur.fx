@@ -12,7 +12,7 @@
 // reading the blurred term at its pixel. The blur skips samples whose eye depth differs from the centre's by
 // more than DepthTolerance of it, so lit background and other objects do not bleed across silhouettes (an
 // addition: the paper does not say how it treats silhouettes).
-// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing effects").
+// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks").
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -248,7 +248,7 @@ float4 ShadeBlurredPS(EyeVertexOutput IN) : COLOR
 
 technique blur
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground (blurred, not removed); "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderShadowTerm;"

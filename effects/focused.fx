@@ -1,8 +1,8 @@
 // focused.fx: a directional light's shadow map focused on what the camera sees (Scherzer 2005 §4.1):
 // an orthographic fit to the intersection body B = view
 // frustum ∩ scene bounds, extruded toward the light so that every caster of a visible shadow is in the map.
-// The same texels as pcf.fx's `bilinear`, spent on B instead of the whole scene (README, "Light-space
-// parameterizations").
+// The same texels as pcf.fx's `bilinear`, spent on B instead of the whole scene
+// (docs/techniques/light-space-parameterizations.md).
 #define LIGHT_PARAMETERIZATION "Focused"
 #include "include/lightspace.fxh"
 
@@ -15,7 +15,7 @@ bool Pancake : LightPancaking
 
 technique bilinear
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne "
                                     "on the ground (17 %, the uniform map 42 %)";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";

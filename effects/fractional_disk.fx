@@ -36,8 +36,8 @@
 //
 // `-D FD_SHOW_EARLY_OUT=1`: the final pass writes 1 where the pixel took the early out (umbra or full light
 // decided from the preprocessed map, or no occluder near), 0 where it filtered, for the share of early-out
-// pixels (tests/effects/test_soft_shadow_effects.cpp, README "Shadow techniques: soft shadows").
-// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing effects").
+// pixels (tests/effects/test_soft_shadow_effects.cpp, docs/techniques/soft-shadows.md).
+// Measurement hooks SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks").
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -398,8 +398,8 @@ float4 DirectPS(SceneVertexOutput IN) : COLOR
 #define BACK_FACE_PASS                                                                                      \
     pass RenderBackFaces                                                                                    \
     <                                                                                                       \
-        /* Light-pass culling keeps casters this far from a visible receiver (README, "Leave-out"): the */   \
-        /* disk reaches MaxRadiusTexels, at most 32, plus one texel. */                                     \
+        /* Light-pass culling keeps casters this far from a visible receiver (docs/measurement.md,  */     \
+        /* "Leave-out"): the disk reaches MaxRadiusTexels, at most 32, plus one texel. */                   \
         float FilterReachTexels = 33;                                                                       \
         string Script = "RenderColorTarget0=DiskMap;"                                                       \
                         "RenderDepthStencilTarget=ShadowDepth;"                                             \
@@ -458,7 +458,7 @@ float4 DirectPS(SceneVertexOutput IN) : COLOR
 
 technique preprocessed
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly); "
                                     "the slope bias (ReceiverSlope, capped at 10) does not cover a 0.5 degree sun; "
                                     "behind-ordinary: the minimum disk radius (MinRadiusTexels) softens "
@@ -490,7 +490,7 @@ technique preprocessed
 
 technique direct
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the open ground stays in the back-face map (CullClosedOnly); "
                                     "the slope bias (ReceiverSlope, capped at 10) does not cover a 0.5 degree sun; "
                                     "behind-ordinary: the minimum disk radius (MinRadiusTexels) softens "

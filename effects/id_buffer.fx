@@ -61,7 +61,7 @@ float4 IdShadowPS(ReceiverVertexOutput IN) : COLOR
 
 technique main
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: ids alias along the casters' silhouettes where texels stretch "
                                     "over the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";

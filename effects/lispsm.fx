@@ -2,7 +2,7 @@
 // the focused fit of focused.fx followed by a perspective warp along the view
 // direction made perpendicular to the light, with n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Near the
 // viewer it spends more texels, far away fewer; as the light turns parallel to the view (γ -> 0) the warp
-// fades out and the map becomes focused.fx's (README, "Light-space parameterizations").
+// fades out and the map becomes focused.fx's (docs/techniques/light-space-parameterizations.md).
 #define LIGHT_PARAMETERIZATION "LiSPSM"
 #include "include/lightspace.fxh"
 
@@ -30,7 +30,7 @@ bool MiddleVector : LiSPSMMiddleVector
 
 technique bilinear
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "near-far-huge: z_n = 0.001 makes n_opt of eq. 1 tiny: the warp leaves "
                                     "the far receivers few texels (0.76 %, the uniform map 0.03 %)";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";

@@ -35,7 +35,7 @@ float Script : STANDARDSGLOBAL
 
 technique peel
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
@@ -48,7 +48,7 @@ technique peel
 
 technique peel_cull
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";

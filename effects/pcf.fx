@@ -16,10 +16,10 @@
 // The depth map is an R32F colour target holding light clip-space depth, rendered with a depth buffer.
 // The depth comparison is offset by Bias plus SlopeBias x the kernel's footprint in depth (wider kernels
 // reach further across a sloped receiver). Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY
-// (README, "Writing effects"); conformance bounds for `shadowfx check` on each technique: misclassified %
-// of receiver pixels against the hard ray-cast truth, and the mean |visibility - truth| against the
-// area-light truth of the same scenes with areaRadius 2, both measured at 320x240 with a 1024² map
-// (`shadowfx bench --width 320 --height 240 --map-sizes 1024 [--area-radius 2]`, llvmpipe); each bound is
+// (docs/scoring.md, "Measurement hooks"); conformance bounds for `shadowfx check` on each technique:
+// misclassified % of receiver pixels against the hard ray-cast truth, and the mean |visibility - truth|
+// against the area-light truth of the same scenes with areaRadius 2, both measured at 320x240 with a 1024²
+// map (`shadowfx bench --width 320 --height 240 --map-sizes 1024 [--area-radius 2]`, llvmpipe); each bound is
 // about 1.5-2x the larger measured value.
 
 #include "include/lighting.fxh"
@@ -136,7 +136,8 @@ SamplerComparisonState ShadowDepthCompare
 RasterizerState NoCulling { CullMode = NONE; };
 DepthStencilState DepthLessEqual { DepthEnable = TRUE; DepthWriteMask = ALL; DepthFunc = LESS_EQUAL; };
 
-// Uniform white noise, the same on every machine (README, "Writing effects": procedural textures).
+// Uniform white noise, the same on every machine (docs/effect-format.md, "What the runtime provides":
+// procedural textures).
 texture JitterNoise
 <
     string Procedural = "noise";
@@ -259,7 +260,7 @@ float4 PoissonPS(SceneVertexOutput IN) : COLOR
 
 technique bilinear
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
@@ -275,7 +276,7 @@ technique bilinear
 
 technique hardware
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
@@ -291,7 +292,7 @@ technique hardware
 
 technique11 hardware11
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
@@ -340,7 +341,7 @@ technique11 hardware11
 
 technique jittered4x4
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
@@ -356,7 +357,7 @@ technique jittered4x4
 
 technique jittered_noise
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
@@ -372,7 +373,7 @@ technique jittered_noise
 
 technique poisson
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";

@@ -7,7 +7,7 @@
 // The light is a disk of radius LightAreaRadius (the light semantic; scene lights' `areaRadius`,
 // `shadowfx bench --area-radius R`); its geometry seen from the map is in include/light_size.fxh.
 // The depth map is pcf.fx's: R32F light clip depth z/w. Measurement hooks SHADOWFX_SHADOW_MAP_SIZE,
-// SHADOWFX_VISIBILITY (README, "Writing effects"). Bounds measured at 320x240 with a 1024² map
+// SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks"). Bounds measured at 320x240 with a 1024² map
 // (`shadowfx bench --width 320 --height 240 --map-sizes 1024 --area-radius 2`, llvmpipe).
 
 #include "include/lighting.fxh"
@@ -207,7 +207,7 @@ float4 PcssPS(SceneVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique pcss
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: constant bias, acne on the ground under a kernel up to 32 "
                                     "texels; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
@@ -222,9 +222,9 @@ technique pcss
 {
     pass RenderShadowMap
     <
-        // Light-pass culling keeps the casters within this many texels of a visible receiver (README,
-        // "Leave-out"): the blocker search and the filter reach MaxSearchTexels and MaxPenumbraTexels,
-        // at most 64 (their sliders' limit), plus one bilinear texel.
+        // Light-pass culling keeps the casters within this many texels of a visible receiver
+        // (docs/measurement.md, "Leave-out"): the blocker search and the filter reach MaxSearchTexels and
+        // MaxPenumbraTexels, at most 64 (their sliders' limit), plus one bilinear texel.
         float FilterReachTexels = 65;
         string Script = "RenderColorTarget0=ShadowMap;"
                         "RenderDepthStencilTarget=ShadowDepth;"

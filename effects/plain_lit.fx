@@ -62,8 +62,8 @@ float4 LitPS(VertexOutput IN) : COLOR
 
 technique lit
 <
-    // Conformance (shadowfx check, README "Conformance"): no shadows, so only compile, render, non-blank
-    // and golden checks.
+    // Conformance (shadowfx check, docs/measurement.md, "shadowfx check"): no shadows, so only compile,
+    // render, non-blank and golden checks.
     bool ExpectShadows = false;
     string ExpectScenes = "boxes,teapot";
     string Script = "ClearSetColor=ClearColor;"

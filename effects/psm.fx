@@ -4,7 +4,7 @@
 // the viewer), so near receivers get more texels than far ones. The runtime's PSM provider
 // (runtime/PerspectiveShadowMap.h) adds Kozlov's inverse projection for casters behind the viewer, the
 // virtual slide-back and unit-cube clipping, and fades into focused.fx's map where the light comes close to
-// the receivers in post-perspective space (README, "Light-space parameterizations").
+// the receivers in post-perspective space (docs/techniques/light-space-parameterizations.md).
 #define LIGHT_PARAMETERIZATION "PSM"
 #define LIGHTSPACE_SCENE_PS PsmBilinearPS
 #include "include/lightspace.fxh"
@@ -63,7 +63,7 @@ float4 PsmBilinearPS(SceneVertexOutput IN) : COLOR
 
 technique bilinear
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne "
                                     "on the ground (14.4 %, the uniform map 41.8 %)";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";

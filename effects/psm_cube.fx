@@ -2,7 +2,7 @@
 // Care and Feeding", Kozlov 2004 §14.2.2): in the camera's
 // post-perspective space the sun is a point L', and six 90-degree perspectives from L' (a "cube map with
 // displaced centre") hold the receivers however close L' comes to them, where psm.fx's single map has to
-// fade into focused.fx's (README, "Light-space parameterizations").
+// fade into focused.fx's (docs/techniques/light-space-parameterizations.md).
 //
 // The runtime's `PSMCube` provider (runtime/PerspectiveShadowCubeMap.h) fits the faces, each to the
 // receivers within it; each depth pass renders through RenderPort=light0.faceK into face K's tile of one
@@ -191,7 +191,7 @@ float4 CubePS(SceneVertexOutput IN) : COLOR
 
 technique bilinear
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures =
         "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on the ground (3.2 %; psm.fx "
         "14.4 %, the uniform map 41.8 %); "

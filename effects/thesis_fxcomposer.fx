@@ -12,9 +12,9 @@
 // Depth conventions: the light's projection maps the scene into clip depth [0, 1]; the shadow map stores
 // that depth times ZMaxValue (the listing's fixed-range scaling, with ShadowRange = 1 for this range).
 //
-// Measurement hooks (README, "Writing effects"): SHADOWFX_SHADOW_MAP_SIZE overrides the shadow map's size,
-// and SHADOWFX_VISIBILITY makes the scene passes write the shadow factor (1 lit, 0 shadowed) instead of
-// the shaded colour, for `shadowfx bench`'s comparison with the ray-cast ground truth.
+// Measurement hooks (docs/scoring.md, "Measurement hooks"): SHADOWFX_SHADOW_MAP_SIZE overrides the shadow
+// map's size, and SHADOWFX_VISIBILITY makes the scene passes write the shadow factor (1 lit, 0 shadowed)
+// instead of the shaded colour, for `shadowfx bench`'s comparison with the ray-cast ground truth.
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -347,18 +347,18 @@ float4 RenderSceneHardwarePS(VertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique main
 <
-    // Conformance (shadowfx check, README "Conformance"): measured at 320x240 with a 1024² map on llvmpipe,
-    // 0.057 % misclassified on dual-l and 0.063 % on teapot; bound 1.5x the larger.
+    // Conformance (shadowfx check, docs/measurement.md, "shadowfx check"): measured at 320x240 with a 1024²
+    // map on llvmpipe, 0.057 % misclassified on dual-l and 0.063 % on teapot; bound 1.5x the larger.
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.095;
     int ExpectMapSize = 1024;
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
-    // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
-    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
-    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
-    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
+    // Known limitations `shadowfx stress` reports as xfail (docs/measurement.md, "shadowfx stress"): a
+    // constant depth bias cannot follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007,
+    // "Slope-scale bias"); a view-independent map magnifies its texels where the shadows of casters behind
+    // the viewer run towards the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
 >
@@ -490,10 +490,10 @@ technique hardware
     int ExpectMapSize = 1024;
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
-    // Known limitations `shadowfx stress` reports as xfail (README, "Stress"): a constant depth bias cannot
-    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
-    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
-    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
+    // Known limitations `shadowfx stress` reports as xfail (docs/measurement.md, "shadowfx stress"): a
+    // constant depth bias cannot follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007,
+    // "Slope-scale bias"); a view-independent map magnifies its texels where the shadows of casters behind
+    // the viewer run towards the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
     string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
                                     "light-behind-viewer: uniform map, perspective aliasing";
 >

@@ -2,7 +2,8 @@
 // in the light view of focused.fx, a trapezoid around the focus body whose top lies on the viewer's side is
 // warped onto the square so that the nearest TSMFocus of what the camera sees gets 80% of the map's height
 // (the 80% rule). Depth stays z/w with w constant along each light ray; as the light turns into the view
-// cone the warp fades out and the map becomes focused.fx's (README, "Light-space parameterizations").
+// cone the warp fades out and the map becomes focused.fx's
+// (docs/techniques/light-space-parameterizations.md).
 #define LIGHT_PARAMETERIZATION "TSM"
 #include "include/lightspace.fxh"
 

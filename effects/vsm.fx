@@ -10,9 +10,9 @@
 //
 // LightBleedReduction cuts the bound's tail (light leaking where occluders overlap); MinVariance is the
 // floor on sigma^2 that keeps the bound finite and acne-free on flat receivers (the numerical problem the
-// thesis warns of). Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (README, "Writing
-// effects"); conformance bounds for `shadowfx check` on each technique, measured as in
-// pcf.fx (320x240, 1024² map, hard truth and --area-radius 2; bounds about 1.5-2x the larger value).
+// thesis warns of). Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE, SHADOWFX_VISIBILITY (docs/scoring.md,
+// "Measurement hooks"); conformance bounds for `shadowfx check` on each technique, measured as in pcf.fx
+// (320x240, 1024² map, hard truth and --area-radius 2; bounds about 1.5-2x the larger value).
 
 #include "include/lighting.fxh"
 #include "include/shadowmap.fxh"
@@ -218,7 +218,7 @@ float4 VsmMipPS(SceneVertexOutput IN) : COLOR
 
 technique vsm
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
@@ -233,7 +233,7 @@ technique vsm
 
 technique vsm_blur
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing; fov-1: the blur "
                                     "widens shadows by its kernel, and a texel spans 33 pixels under a 1 "
                                     "degree lens";
@@ -281,7 +281,7 @@ technique vsm_blur
 
 technique vsm_mip
 <
-    // Measured by `shadowfx stress` (README, "Stress"); reported as xfail.
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";

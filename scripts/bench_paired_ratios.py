@@ -4,7 +4,7 @@
 Wall-clock medians of one `shadowfx bench` run drift by 2x on a loaded machine because bench times one
 technique after the other. Here each repetition runs the four techniques back to back (short bench runs),
 takes each one's median frame time relative to constant bias's in the same repetition, and reports the
-median [min-max] of those ratios over the repetitions (README, "Shadow techniques: depth bias and layers").
+median [min-max] of those ratios over the repetitions (docs/techniques/depth-bias-and-layers.md).
 
 usage: scripts/bench_paired_ratios.py [SCENE ...]   (default: dual-l double-torus; run from the repository
 root after building build/samples/shadowfx/shadowfx)

@@ -1,7 +1,8 @@
-// lightspace.fxh: a shadow map whose light matrices come from a light-space parameterization (README,
-// "Light-space parameterizations"), tested with 2x2 bilinear PCF as in pcf.fx's `bilinear`. An effect
-// defines LIGHT_PARAMETERIZATION (the provider's name, a string) and includes this file; the runtime fits
-// light0's view and projection per frame, and RenderPort=light0 renders the map with the same matrices.
+// lightspace.fxh: a shadow map whose light matrices come from a light-space parameterization
+// (docs/techniques/light-space-parameterizations.md), tested with 2x2 bilinear PCF as in pcf.fx's `bilinear`.
+// An effect defines LIGHT_PARAMETERIZATION (the provider's name, a string) and includes this file; the
+// runtime fits light0's view and projection per frame, and RenderPort=light0 renders the map with the same
+// matrices.
 //
 // Depth is the light clip-space z/w the depth pass writes (shadowscene.fxh): along one light ray w is
 // constant, so depth order is kept under the perspective warp of LiSPSM too.

@@ -2,7 +2,7 @@
 // by the two families' camera passes (shadow_scene.fxh: bias and depth layers; shadowscene.fxh: filtering,
 // soft shadows and light-space parameterizations): the object and light matrices, the light's colour, the
 // clear values and Blinn-Phong shading with a shadow factor, with the SHADOWFX_VISIBILITY measurement hook
-// (README, "Writing effects"). Include lighting.fxh first.
+// (docs/scoring.md, "Measurement hooks"). Include lighting.fxh first.
 #ifndef SHADOWFX_SCENE_BINDINGS_FXH
 #define SHADOWFX_SCENE_BINDINGS_FXH
 
@@ -12,8 +12,8 @@ float4x4 WorldViewProjectionMatrix : WorldViewProjection <string UIWidget = "Non
 float4x4 WorldMatrix : World <string UIWidget = "None";>;
 float4x4 ViewIMatrix : ViewInverse <string UIWidget = "None";>;
 // LIGHT_PARAMETERIZATION (a string: "Uniform", "Focused", "LiSPSM", "TSM", "PSM", "Cascaded"), defined
-// before this include, chooses the provider of light0's matrices (README, "Light-space parameterizations");
-// the default is Uniform.
+// before this include, chooses the provider of light0's matrices
+// (docs/techniques/light-space-parameterizations.md); the default is Uniform.
 #ifndef LIGHT_PARAMETERIZATION
 #define LIGHT_PARAMETERIZATION "Uniform"
 #endif

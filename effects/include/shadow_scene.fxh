@@ -1,7 +1,7 @@
 // shadow_scene.fxh: the camera pass of a shadow-map effect, shared by the depth-bias and depth-layer
 // effects (bias.fx, back_faces.fx, depth_formats.fx, midpoint.fx, dual_depth.fx, id_buffer.fx): the
 // bindings and shading of scene_bindings.fxh, the shadow map's depth buffer and the receiver vertex shader
-// (README, "Writing effects").
+// (docs/scoring.md, "Measurement hooks").
 //
 // Depth convention of these effects: a shadow map stores the light's clip depth z/w in [0, 1] (the light's
 // projection is fitted to the scene bounds, so 1 is the far plane) and is cleared to 1 (NoOccluder). A

@@ -72,7 +72,8 @@ float ReceiverSlope(SceneVertexOutput IN)
     return min(sqrt(1 - cosine * cosine) / max(cosine, 1e-3), 10.0);
 }
 
-// The measurement hook (README, "Writing effects"): the shadow factor itself under SHADOWFX_VISIBILITY.
+// The measurement hook (docs/scoring.md, "Measurement hooks"): the shadow factor itself under
+// SHADOWFX_VISIBILITY.
 float4 ShadeOrVisibility(SceneVertexOutput IN, float shadow)
 {
     return ShadedOrVisibility(IN.WNormal, IN.WView, IN.LightVec, shadow);

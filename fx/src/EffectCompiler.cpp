@@ -472,8 +472,13 @@ void Compiler::samplers() {
             const StateInfo& info = samplerStateInfo(*id);
             if (*id == SamplerStateId::Texture) {
                 auto it = mIndex.find(a.value.text);
-                if (it == mIndex.end() || !mEffect.parameters[it->second].type.isTexture())
+                if (it == mIndex.end())
                     error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
+                else if (const TypeDesc& type = mEffect.parameters[it->second].type; !type.isTexture())
+                    // Declared, but of the wrong type: say so in the author's terms.
+                    error(DiagId::InvalidStateValue, a.value.loc,
+                          {a.name,
+                           "'" + a.value.text + "' is a " + type.hlslName() + " parameter, not a texture"});
                 else
                     s.texture = it->second;
                 // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.

@@ -194,8 +194,9 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                     }
                     case ScriptCommand::Kind::RenderPort: {
                         // lightN.cascadeK addresses one cascade of a light, lightN.faceK one face of a
-                        // PSMCube cube map: both are the light's sub-view K (README, "Light-space
-                        // parameterizations"); whether the light has sub-view K is known only per frame.
+                        // PSMCube cube map: both are the light's sub-view K
+                        // (docs/techniques/light-space-parameterizations.md); whether the light has sub-view
+                        // K is known only per frame.
                         const size_t dot = value.find('.');
                         if (dot == std::string::npos) break;
                         const std::string light = trim(std::string_view(value).substr(0, dot));

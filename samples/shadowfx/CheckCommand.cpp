@@ -60,10 +60,11 @@ const char* const kCheckUsage =
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
     "  --list-techniques     print each effect's technique names, one per line, and exit\n"
     "  --no-batching         draw every object alone, not one instanced draw per mesh (the same images)\n"
-    "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
     "Technique annotations read: string ExpectScenes, float ExpectMisclassifiedBelow (percent of receiver\n"
-    "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (area lights), int ExpectMapSize, bool\n"
-    "ExpectShadows. Goldens: EFFECT_DIR/golden/EFFECT/TECHNIQUE/SCENE.png (README, \"Conformance\").\n"
+    "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (mean |error| over the penumbra of an area\n"
+    "light), int ExpectMapSize, bool ExpectShadows (docs/scoring.md). Goldens:\n"
+    "EFFECT_DIR/golden/EFFECT/TECHNIQUE/SCENE.png, written there by --update; an effect without that folder\n"
+    "yet is NOT_SUPPORTED for goldens (docs/measurement.md).\n"
     "Exit status: 0 if nothing FAILs, 1 on any FAIL, 2 on usage errors.\n";
 
 namespace {
@@ -568,7 +569,7 @@ private:
             } else if (!visibility) {
                 row("expectations", Outcome::Fail,
                     "expectations declared, but the effect's pixel shaders ignore SHADOWFX_VISIBILITY "
-                    "(README, \"Writing effects\")");
+                    "(docs/scoring.md, \"Measurement hooks\")");
             } else {
                 mSink.mark();
                 hardScore = runtime::scoreVisibility(*visibility, t, scene.hard, frameOptions, mSink);
@@ -593,11 +594,16 @@ private:
                 if (!softScore) {
                     row("penumbra", Outcome::NotSupported,
                         "the scene's light has no areaRadius: no penumbra to measure");
+                } else if (softScore->errors.penumbraPixels == 0) {
+                    row("penumbra", Outcome::NotSupported, "no receiver pixel of the scene is in penumbra");
                 } else {
-                    const double mae = softScore->errors.meanAbsoluteError;
+                    // The penumbra MAE, as bench reports it: over all receivers the fully lit and umbra
+                    // pixels would hide how well the penumbra itself is drawn.
+                    const double mae = softScore->errors.penumbraMeanAbsoluteError;
                     row("penumbra", judge(mae, *expect.penumbraMaeBelow),
-                        "MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
+                        "penumbra MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
                             runtime::formatFixed(*expect.penumbraMaeBelow, 4) + " (" +
+                            std::to_string(softScore->errors.penumbraPixels) + " penumbra pixels, " +
                             std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
                 }
             }
@@ -626,6 +632,10 @@ private:
                     "the effect has no goldens (" + effect.goldens.string() + ")");
             } else if (!place.forThisRenderer) {
                 row("golden", mSettings.requireGoldens ? Outcome::Fail : Outcome::NotSupported, place.note);
+            } else if (!std::filesystem::exists(effect.goldens)) {
+                // A new effect: no renderer has goldens yet, which is this renderer having none.
+                row("golden", mSettings.requireGoldens ? Outcome::Fail : Outcome::NotSupported,
+                    "no goldens yet: shadowfx check --update writes them to " + effect.goldens.string());
             } else if (!std::filesystem::exists(place.path)) {
                 row("golden", Outcome::Fail,
                     "missing golden " + place.path.string() + " (write it with shadowfx check --update)");

@@ -1,7 +1,9 @@
 #include "CommandLine.h"
+#include "EffectLibrary.h"
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -18,6 +20,10 @@ std::vector<std::string> splitList(const std::string& text) {
 fx::ParseOptions effectParseOptions(const Arguments& args) {
     fx::ParseOptions options;
     options.includeDirs = args.all("-I");
+    // The library comes last, as FX Composer's include paths came after the effect's own folder: a header
+    // of the effect's own, or of an -I folder, with a library header's name wins.
+    if (const std::filesystem::path library = effectLibraryDir(); !library.empty())
+        options.includeDirs.push_back(library.string());
     for (const std::string& define : args.all("-D")) {
         const size_t eq = define.find('=');
         options.defines.emplace_back(define.substr(0, eq),
@@ -86,7 +92,8 @@ struct Parser {
             }
         }
         if (command.positionals >= 0 && args.positionalCount() != static_cast<size_t>(command.positionals)) {
-            std::cerr << "shadowfx " << command.name << ": expected one effect file (see --help)\n";
+            std::cerr << "shadowfx " << command.name << ": expected one " << command.positionalName
+                      << " (see --help)\n";
             return false;
         }
         return true;
@@ -94,6 +101,18 @@ struct Parser {
 };
 
 namespace {
+void printEffectOptions() {
+    const std::filesystem::path library = effectLibraryDir();
+    std::cout << "  -I DIR                include folder (repeatable)\n"
+                 "  -D NAME[=VALUE]       preprocessor definition (repeatable; VALUE defaults to 1)\n"
+                 "#include \"FILE\" looks beside the including file, beside the effect, in each -I folder,\n"
+                 "then in the effect library: "
+              << (library.empty()
+                      ? std::string("not found (the tool is neither installed nor in its build tree)")
+                      : library.string())
+              << "\n(docs/effect-library/README.md).\n";
+}
+
 void printOverview(std::span<const Command> commands) {
     std::cout
         << "usage: shadowfx COMMAND [options]   (shadowfx COMMAND --help for its options)\n\ncommands:\n";
@@ -114,6 +133,9 @@ int dispatch(int argc, char** argv, std::span<const Command> commands) {
         for (int i = 2; i < argc; ++i) {
             if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
                 std::cout << command.summary << "\n" << command.usage;
+                if (std::find(command.valueOptions.begin(), command.valueOptions.end(), "-I") !=
+                    command.valueOptions.end())
+                    printEffectOptions();
                 return 0;
             }
         }

@@ -39,12 +39,15 @@ struct Command {
     // Number of positional arguments (effect files) the command takes; -1 = any (`bench --effects
     // effects/*.fx`, where the shell's glob leaves every file after the first as a positional argument).
     int positionals = 1;
+    const char* positionalName = "effect file";  // what the positional argument is, for usage errors
 };
 
 // "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of --scenes, --techniques, --effects, ...
 std::vector<std::string> splitList(const std::string& text);
 
-// The preprocessor options every effect-reading subcommand takes: -I DIR and -D NAME[=VALUE] (VALUE 1).
+// The preprocessor options every effect-reading subcommand takes: -I DIR and -D NAME[=VALUE] (VALUE 1),
+// with the effect library (EffectLibrary.h) searched after the -I folders. A command that has -I among its
+// value options gets both listed in its --help.
 fx::ParseOptions effectParseOptions(const Arguments& args);
 
 // Parses argv for the named subcommand and runs it. Exit codes: the command's; 2 for usage errors.

@@ -4,10 +4,11 @@
 // [SECTION] Runs        effect x technique x case: render, finite values, error, shimmer
 // [SECTION] Output      the table on stdout, stress.json and report.md
 //
-// Effects are compiled with SHADOWFX_VISIBILITY (README, "Writing effects"), so the frame is the shadow
-// factor and can be scored against the truth; an effect that does not expose it gets the finite-value and
-// GL checks only.
+// Effects are compiled with SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks"), so the frame is the
+// shadow factor and can be scored against the truth; an effect that does not expose it gets the finite-value
+// and GL checks only.
 #include "StressCommand.h"
+#include "EffectLibrary.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -46,10 +47,9 @@ const char* const kStressUsage =
     "  --list                print the cases and exit\n"
     "  --width W, --height H frame size (default 320x240)\n"
     "  --map-size N          -D SHADOWFX_SHADOW_MAP_SIZE=N (default 1024)\n"
-    "  --uniform FILE:TECH   the uniform shadow map every method is held to\n"
-    "                        (default effects/thesis_fxcomposer.fx:main)\n"
+    "  --uniform FILE:TECH   the uniform shadow map every method is held to (default: the effect\n"
+    "                        library's thesis_fxcomposer.fx:main, wherever stress runs from)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
-    "  -I DIR, -D NAME=VALUE include directory, preprocessor definition (every effect)\n"
     "  --out DIR             stress.json, report.md and errors/*.png (failed runs) go here\n"
     "                        (default out/stress)\n"
     "exit status: 0 if every run passes, 1 if one fails, 2 for usage errors\n";
@@ -223,8 +223,9 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
             outcome.fail("render failed: " + sink.takeErrors());
             return outcome;
         }
-        // The light matrices this effect renders with (its Parameterization annotation, README "Light-space
-        // parameterizations"), held to the same checks as the runtime's uniform ones above.
+        // The light matrices this effect renders with (its Parameterization annotation,
+        // docs/techniques/light-space-parameterizations.md), held to the same checks as the runtime's uniform
+        // ones above.
         if (&frame == &truth.frames.front() && !frame.scene.lights.empty()) {
             const std::optional<runtime::LightFit> fit =
                 renderer.lightFit(frame.scene, frame.scene.lights.front().name, options);
@@ -335,7 +336,9 @@ void judge(Outcome& outcome) {
         outcome.fail("error " + runtime::formatPercent(error) + " > " +
                      std::to_string(static_cast<int>(kOrdinaryFactor)) + "x the ordinary case's " +
                      runtime::formatPercent(*outcome.ordinary) + " + 1 point");
-    if (outcome.uniform && error > kUniformFactor * *outcome.uniform + kUniformSlack)
+    if (!outcome.uniform)
+        outcome.fail("the uniform map's error on this case is unknown: the comparison cannot be evaluated");
+    else if (error > kUniformFactor * *outcome.uniform + kUniformSlack)
         outcome.fail("error " + runtime::formatPercent(error) + " > 1.5x the uniform map's " +
                      runtime::formatPercent(*outcome.uniform) + " + 0.5 point");
 }
@@ -466,7 +469,16 @@ int stressCommand(const Arguments& args) {
         std::cerr << "shadowfx stress: --width/--height must be in 1..4096 and --map-size in 1..16384\n";
         return 2;
     }
-    const std::string uniformSpec = args.value("--uniform", "effects/thesis_fxcomposer.fx:main");
+    // The reference comes from the effect library, not the working directory: a rule whose reference is
+    // missing cannot be evaluated, and that is an error, never a pass.
+    const std::filesystem::path library = effectLibraryDir();
+    const std::string uniformSpec =
+        args.value("--uniform", library.empty() ? "" : (library / "thesis_fxcomposer.fx").string() + ":main");
+    if (uniformSpec.empty()) {
+        std::cerr << "shadowfx stress: no effect library found for the default --uniform: give --uniform "
+                     "FILE:TECHNIQUE\n";
+        return 2;
+    }
     const size_t colon = uniformSpec.rfind(':');
     if (colon == std::string::npos) {
         std::cerr << "shadowfx stress: --uniform wants FILE:TECHNIQUE\n";
@@ -474,6 +486,10 @@ int stressCommand(const Arguments& args) {
     }
     const std::string uniformPath = uniformSpec.substr(0, colon),
                       uniformTechnique = uniformSpec.substr(colon + 1);
+    if (!std::filesystem::is_regular_file(uniformPath)) {
+        std::cerr << "shadowfx stress: the uniform reference " << uniformPath << " does not exist\n";
+        return 2;
+    }
     const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
     if (!backend) {
         std::cerr << "shadowfx stress: --backend must be auto, osmesa or egl\n";
@@ -518,7 +534,7 @@ int stressCommand(const Arguments& args) {
 
     // The uniform map's error per case, the bar every method is held to.
     std::map<std::string, double> uniformError;
-    if (std::filesystem::exists(uniformPath)) {
+    {
         std::optional<EffectUnderTest> uniform = compileForStress(uniformPath, parseOptions, mapSize, sink);
         std::unique_ptr<runtime::EffectRenderer> renderer =
             uniform ? runtime::EffectRenderer::create(uniform->visibility, sink) : nullptr;
@@ -527,10 +543,23 @@ int stressCommand(const Arguments& args) {
                       << " failed: " << sink.takeErrors() << "\n";
             return 1;
         }
+        if (!uniform->exposesVisibility) {
+            std::cerr << "shadowfx stress: the uniform reference " << uniformSpec
+                      << " ignores SHADOWFX_VISIBILITY: its error cannot be measured (docs/scoring.md)\n";
+            return 1;
+        }
         for (const std::string& name : ordered) {
             Outcome o = runCase(*renderer, uniform->exposesVisibility, uniformTechnique, truths.at(name),
                                 width, height, mapSize, sink);
-            if (o.misclassified) uniformError[name] = *o.misclassified;
+            if (o.misclassified) {
+                uniformError[name] = *o.misclassified;
+            } else if (truths.at(name).frames.front().receiverCount > 0) {
+                std::string why;
+                for (const std::string& reason : o.reasons) why += (why.empty() ? "" : "; ") + reason;
+                std::cerr << "shadowfx stress: the uniform reference " << uniformSpec << " gives no error on "
+                          << name << ": " << why << "\n";
+                return 1;
+            }
         }
     }
 

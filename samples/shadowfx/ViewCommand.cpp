@@ -41,7 +41,6 @@ const char* const kViewUsage =
     "  --width W, --height H window size (default 1280x800)\n"
     "  --frames N            render N frames, then exit (tests, CI under Xvfb)\n"
     "  --screenshot FILE.png write the last frame (the effect's image, without the panel) on exit\n"
-    "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
     "Saving the effect or a file it includes reloads it; a broken save keeps the last good effect.\n"
     "Mouse: left drag orbits, wheel zooms, right drag moves the light. Keys: arrows move the light,\n"
     "R reloads, F12 or P writes a screenshot (shadowfx_view_N.png), Esc quits.\n";

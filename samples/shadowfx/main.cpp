@@ -8,9 +8,11 @@
 //   shadowfx check EFFECT.fx [...]                       expectations, goldens, JUnit (CheckCommand)
 //   shadowfx stress [EFFECT.fx ...] [--reduced]          extreme configurations (StressCommand)
 //   shadowfx view EFFECT.fx [...]                        window, hot reload, parameters (ViewCommand)
+//   shadowfx new NAME [--from pcf|vsm|minimal]           a technique skeleton NAME.fx (NewCommand)
 #include "BenchCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
+#include "NewCommand.h"
 #include "StressCommand.h"
 #include "ViewCommand.h"
 
@@ -21,6 +23,7 @@
 #include <runtime/Scene.h>
 #include <runtime/SceneFile.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -184,14 +187,24 @@ int infoCommand(const Arguments& args) {
         for (const fx::CompiledPass& pass : technique.passes) std::cout << " " << pass.name;
         std::cout << "\n";
     }
+    const std::vector<std::string> bound = runtime::EffectRenderer::boundSemantics();
+    auto binds = [&](const std::string& semantic) {
+        return std::any_of(bound.begin(), bound.end(),
+                           [&](const std::string& name) { return fx::equalsIgnoreCase(name, semantic); });
+    };
     std::cout << "parameters:\n";
     for (size_t i = 0; i < effect.parameters.size(); ++i) {
         const fx::Parameter& p = effect.parameters[i];
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
+        if (!p.semantic.empty() && p.type.isNumeric() && !binds(p.semantic))
+            std::cout << "  (not bound by shadowfx: keeps its default value)";
         std::cout << "\n";
     }
+    std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";
+    for (const std::string& name : bound) std::cout << " " << name;
+    std::cout << "\n";
     return 0;
 }
 
@@ -208,7 +221,6 @@ const shadowfx::cli::Command kCommands[] = {
      "                        bunny, horse, spider, engine; default boxes) or a scene file (.json)\n"
      "  --set PARAM=VALUE     set a parameter (repeatable): --set PCF=true --set Bias=0.002\n"
      "  --backend NAME        auto, osmesa or egl (default auto)\n"
-     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n"
      "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
      "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
      "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
@@ -221,8 +233,7 @@ const shadowfx::cli::Command kCommands[] = {
      "print the generated GLSL of every pass, or the diagnostics",
      "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl]\n"
      "  --technique NAME      only this technique\n"
-     "  --hlsl                also print the HLSL unit generated for each stage\n"
-     "  -I DIR, -D NAME=VALUE include directory, preprocessor definition\n",
+     "  --hlsl                also print the HLSL unit generated for each stage\n",
      {},
      {"--technique", "-I", "-D"},
      {"--hlsl", "--verbose"},
@@ -286,6 +297,15 @@ const shadowfx::cli::Command kCommands[] = {
      {"--scene", "--technique", "--width", "--height", "--frames", "--screenshot", "-I", "-D"},
      {},
      shadowfx::cli::viewCommand},
+    {"new",
+     "write a technique skeleton NAME.fx in the current folder, ready for render, check, bench, stress",
+     shadowfx::cli::kNewUsage,
+     {},
+     {"--from"},
+     {},
+     shadowfx::cli::newCommand,
+     1,
+     "name, NAME"},
 };
 
 }  // namespace

@@ -106,6 +106,43 @@ TEST(Cli, EverySubcommandHasHelp) {
     }
 }
 
+// A semantic nothing binds looks bound in the source while its value silently stays the default: render
+// warns at the parameter, and info marks it and lists the semantics shadowfx binds.
+TEST(Cli, AnUnboundSemanticIsALocatedWarningAndInfoListsTheBoundOnes) {
+    const std::string effect = "tests/data/authoring/unbound_semantic.fx";
+    const RunResult render = run("render " + effect + " --width 64 --height 48 --out /dev/null");
+    EXPECT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_NE(
+        render.output.find(effect + ":3:8: warning: parameter 'MapSize' has semantic 'ShadowMapDimensions', "
+                                    "which shadowfx does not bind: it keeps its default value"),
+        std::string::npos)
+        << render.output;
+    EXPECT_EQ(render.output.find("'WorldViewProjection', which"), std::string::npos) << render.output;
+
+    const RunResult info = run("info " + effect);
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("MapSize : ShadowMapDimensions  (not bound by shadowfx"), std::string::npos)
+        << info.output;
+    EXPECT_NE(info.output.find("semantics shadowfx binds"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find(" WorldViewProjectionInverseTranspose "), std::string::npos) << info.output;
+}
+
+// `new` writes into the working directory (the source root here), so only its refusals run in this test;
+// the whole loop is CTest installed_authoring.
+TEST(Cli, NewRefusesBadNamesAndSkeletonsWithoutWriting) {
+    const RunResult missing = run("new");
+    EXPECT_EQ(missing.exitCode, 2) << missing.output;
+    EXPECT_NE(missing.output.find("expected one name, NAME"), std::string::npos) << missing.output;
+    const RunResult badName = run("new 9lives");
+    EXPECT_EQ(badName.exitCode, 2) << badName.output;
+    EXPECT_FALSE(std::filesystem::exists(kSource + "/9lives.fx"));
+    const RunResult badSkeleton = run("new unwritten --from esm");
+    EXPECT_EQ(badSkeleton.exitCode, 2) << badSkeleton.output;
+    EXPECT_NE(badSkeleton.output.find("--from must be pcf, vsm or minimal"), std::string::npos)
+        << badSkeleton.output;
+    EXPECT_FALSE(std::filesystem::exists(kSource + "/unwritten.fx"));
+}
+
 TEST(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run("render effects/thesis_fxcomposer.fx").exitCode, 2);  // --out missing
     EXPECT_EQ(run("render effects/thesis_fxcomposer.fx --out x.png --backend vulkan").exitCode, 2);

@@ -272,7 +272,8 @@ std::vector<Hit> hitsThroughTexel(const runtime::Scene& scene, int x, int y) {
     const runtime::Light& light = scene.lights[0];
     const glm::mat4 viewProjection = light.projection(bounds) * light.view(bounds);
     const glm::mat4 inverse = glm::inverse(viewProjection);
-    // Texel centre -> NDC; v grows downwards (row 0 is the top row, README "Writing effects").
+    // Texel centre -> NDC; v grows downwards (row 0 is the top row, docs/effect-format.md, "What the runtime
+    // provides").
     const float ndcX = 2.0f * (x + 0.5f) / kMapSize - 1.0f;
     const float ndcY = 1.0f - 2.0f * (y + 0.5f) / kMapSize;
     const glm::vec4 nearPoint = inverse * glm::vec4(ndcX, ndcY, 0.0f, 1.0f);

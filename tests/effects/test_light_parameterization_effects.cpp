@@ -1,4 +1,4 @@
-// The Parameterization annotation end to end (README, "Light-space parameterizations"): focused.fx,
+// The Parameterization annotation end to end (docs/techniques/light-space-parameterizations.md): focused.fx,
 // lispsm.fx, tsm.fx and psm.fx bind their light matrices from the provider's fit, which is what
 // RenderPort=light0 renders with (EffectRenderer::lightFit), not the uniform fit; an unknown or conflicting
 // name is an error at the annotation. Pancaking clamps the casters before the receivers' depth range onto

@@ -104,4 +104,30 @@ TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / "errors" / "undeclared.main.grazing.png"));
 }
 
+// The uniform reference is part of a rule: one that is missing, or whose error cannot be measured, stops the
+// run instead of letting every technique pass the comparison unchecked.
+TEST(StressCommand, AUniformReferenceThatCannotBeEvaluatedIsAnError) {
+    const shadowfx::test::ScratchDirectory scratch("stress_uniform");
+    const std::string out = " --out " + (scratch.path() / "out").string();
+    const RunResult missing =
+        run("stress effects/pcf.fx --techniques bilinear --cases ordinary --uniform nowhere.fx:main" + out);
+    EXPECT_EQ(missing.exitCode, 2) << missing.output;
+    EXPECT_NE(missing.output.find("the uniform reference nowhere.fx does not exist"), std::string::npos)
+        << missing.output;
+    // plain_lit.fx draws no shadow and ignores SHADOWFX_VISIBILITY: it has no error to compare with.
+    const RunResult blind =
+        run("stress effects/pcf.fx --techniques bilinear --cases ordinary --uniform "
+            "effects/plain_lit.fx:main" +
+            out);
+    EXPECT_EQ(blind.exitCode, 1) << blind.output;
+    EXPECT_NE(blind.output.find("ignores SHADOWFX_VISIBILITY"), std::string::npos) << blind.output;
+    // A technique the reference does not have renders nothing to compare with either.
+    const RunResult absent =
+        run("stress effects/pcf.fx --techniques bilinear --cases ordinary --uniform "
+            "effects/thesis_fxcomposer.fx:nosuchtechnique" +
+            out);
+    EXPECT_EQ(absent.exitCode, 1) << absent.output;
+    EXPECT_NE(absent.output.find("gives no error on ordinary"), std::string::npos) << absent.output;
+}
+
 }  // namespace

@@ -363,6 +363,23 @@ TEST(EffectCompiler, UnknownTextureFormat) {
     EXPECT_EQ(diags.items()[0].loc.line, 1);
 }
 
+// A sampler's Texture naming a parameter that exists but is no texture says it is the wrong type, at the
+// reference.
+TEST(EffectCompiler, ASamplerTextureOfTheWrongTypeSaysSo) {
+    DiagnosticList diags;
+    std::string src =
+        "float Exponent = 40;\n"
+        "sampler S = sampler_state { Texture = <Exponent>; };\n"
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
+    EXPECT_FALSE(compile(src, diags));
+    ASSERT_FALSE(diags.items().empty());
+    EXPECT_EQ(diags.items()[0].id, DiagId::InvalidStateValue) << diags.str();
+    EXPECT_EQ(diags.items()[0].loc.line, 2) << diags.str();
+    EXPECT_EQ(diags.items()[0].loc.column, 39) << diags.str();  // at <Exponent>
+    EXPECT_NE(diags.str().find("'Exponent' is a float parameter, not a texture"), std::string::npos)
+        << diags.str();
+}
+
 TEST(EffectCompiler, InvalidDimensions) {
     DiagnosticList diags;
     std::string src =

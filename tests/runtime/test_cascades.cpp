@@ -1,4 +1,4 @@
-// Cascaded shadow maps in the runtime (README, "Light-space parameterizations"):
+// Cascaded shadow maps in the runtime (docs/techniques/light-space-parameterizations.md):
 // - RenderPort=light0.cascadeK renders into tile K of the bound atlas only, with light0's annotated
 //   matrices bound to cascade K's (the CascadeViewProjection semantic's element K), and a Clear under it
 //   clears that tile only;

@@ -81,7 +81,8 @@ TEST_F(GlStates, BlendOpMinKeepsTheMinimumOnAnR32FTarget) {
 }
 
 // DepthClipEnable = false clamps depth instead of clipping: a quad in front of the near plane (z = -0.5)
-// is drawn, where by default it is clipped away (pancaking, README "Light-space parameterizations").
+// is drawn, where by default it is clipped away (pancaking,
+// docs/techniques/light-space-parameterizations.md).
 TEST_F(GlStates, DepthClipDisabledDrawsWhatLiesBeforeTheNearPlane) {
     GpuTexture target = GpuTexture::create2D(fx::TextureFormat::R32F, kSize, kSize);
     GpuTexture depth = GpuTexture::create2D(fx::TextureFormat::D24S8, kSize, kSize);

@@ -1,4 +1,4 @@
-// psm_cube.fx in the runtime (README, "Light-space parameterizations"): its six face passes render
+// psm_cube.fx in the runtime (docs/techniques/light-space-parameterizations.md): its six face passes render
 // through RenderPort=light0.faceK; a face that no receiver uses is left out ("scene") and the frame is the
 // one every pass drawn in full gives; with the light low in front of the viewer (Kozlov 2004's problem case)
 // several faces run.

@@ -122,7 +122,7 @@ struct RenderStateSetting {
 };
 
 // `string LeaveOutWhen = "...";` on a pass: the scene condition under which the effect guarantees that
-// later passes do not need what the pass writes (README, "Leave-out").
+// later passes do not need what the pass writes (docs/measurement.md, "Leave-out").
 enum class LeaveOutCondition {
     Never,
     NoClosedObjects,  // no object's mesh is closed: a second depth layer finds nothing

@@ -78,6 +78,9 @@ FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
 FX_DIAGNOSTIC(Unused, Note, "{0}")
+FX_DIAGNOSTIC(UnboundSemantic, Warning,
+              "parameter '{0}' has semantic '{1}', which shadowfx does not bind: it keeps its default value "
+              "(shadowfx info lists the semantics shadowfx binds)")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")

@@ -100,9 +100,9 @@ Scene makeForestScene() {
 }
 
 Scene makeForestFifthScene() {
-    // The leave-out measurement's viewpoint (README, "Leave-out"): the same forest, seen to 110 m instead
-    // of 70, so that about a fifth of the trees lies in the view frustum (shadowfx render --stats counts
-    // them: the scene pass's draws over its draws plus culled objects).
+    // The leave-out measurement's viewpoint (docs/measurement.md, "Leave-out"): the same forest, seen to 110
+    // m instead of 70, so that about a fifth of the trees lies in the view frustum (shadowfx render --stats
+    // counts them: the scene pass's draws over its draws plus culled objects).
     Scene scene = makeForestScene();
     scene.name = "forest-fifth";
     scene.camera.farPlane = 110.0f;

@@ -41,8 +41,17 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
             diagnostics.report(fx::DiagId::Unused, parameter.loc,
                                {"parameter '" + parameter.name + "' has no semantic; bound as '" + semantic +
                                 "' by its name, as an application setting it by name would"});
+        // A semantic nothing reads looks bound in the source while the value silently stays the default.
+        if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
+            !SemanticBinder::takesSemantic(parameter.semantic))
+            diagnostics.report(fx::DiagId::UnboundSemantic, parameter.loc,
+                               {parameter.name, parameter.semantic});
     }
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(resources)));
+}
+
+std::vector<std::string> EffectRenderer::boundSemantics() {
+    return SemanticBinder::semanticNames();
 }
 
 const fx::CompiledEffect& EffectRenderer::effect() const {

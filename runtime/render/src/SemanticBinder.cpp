@@ -75,6 +75,48 @@ void storeElements(fx::Value& value, const std::vector<float>& elements, int row
 
 }  // namespace
 
+namespace {
+
+// The semantics bind() gives values, as the docs spell them (matched case-insensitively).
+constexpr std::pair<const char*, SemanticBinder::Kind> kMatrixSemantics[] = {
+    {"World", SemanticBinder::Kind::World},
+    {"View", SemanticBinder::Kind::View},
+    {"Projection", SemanticBinder::Kind::Projection},
+    {"WorldView", SemanticBinder::Kind::WorldView},
+    {"ViewProjection", SemanticBinder::Kind::ViewProjection},
+    {"WorldViewProjection", SemanticBinder::Kind::WorldViewProjection},
+};
+constexpr const char* kMatrixSuffixes[] = {"Inverse", "Transpose", "InverseTranspose"};
+constexpr std::pair<const char*, SemanticBinder::Kind> kOtherSemantics[] = {
+    {"ViewportPixelSize", SemanticBinder::Kind::ViewportPixelSize},
+    {"Time", SemanticBinder::Kind::Time},
+    {"CameraPosition", SemanticBinder::Kind::CameraPosition},
+    {"EyePosition", SemanticBinder::Kind::CameraPosition},
+    {"ObjectId", SemanticBinder::Kind::ObjectId},
+    {"Position", SemanticBinder::Kind::LightPosition},
+    {"LightPosition", SemanticBinder::Kind::LightPosition},
+    {"Direction", SemanticBinder::Kind::LightDirection},
+    {"LightDirection", SemanticBinder::Kind::LightDirection},
+    {"LightColor", SemanticBinder::Kind::LightColor},
+    {"LightAreaRadius", SemanticBinder::Kind::LightAreaRadius},
+    {"LightSize", SemanticBinder::Kind::LightAreaRadius},
+    {"Diffuse", SemanticBinder::Kind::ObjectColor},
+    {"MaterialDiffuse", SemanticBinder::Kind::ObjectColor},
+    {"DiffuseColor", SemanticBinder::Kind::ObjectColor},
+    {"Ambient", SemanticBinder::Kind::Ambient},
+    {"SceneHasClosedObjects", SemanticBinder::Kind::SceneHasClosedObjects},
+    {"CascadeViewProjection", SemanticBinder::Kind::CascadeViewProjection},
+    {"CascadeAtlasRects", SemanticBinder::Kind::CascadeAtlasRects},
+    {"CascadeSplitDepths", SemanticBinder::Kind::CascadeSplitDepths},
+    {"CubeFaceSelect", SemanticBinder::Kind::CubeFaceSelect},
+};
+// Read by the light fits as tunables (SemanticBinder's constructor), not bound.
+constexpr const char* kTunableSemantics[] = {
+    "LiSPSMNScale", "LiSPSMDepthExtent", "LiSPSMMiddleVector", "LightPancaking",     "TSMFocus",
+    "PSMSlideBack", "PSMMaxWarpRatio",   "CascadeCount",       "CascadeSplitLambda", "CascadeBlend"};
+
+}  // namespace
+
 bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose) {
     std::string name = upper(semantic);
     inverse = transpose = false;
@@ -85,51 +127,43 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
     } else if (consumeSuffix(name, "INVERSE")) {
         inverse = true;
     }
-    static const std::pair<const char*, Kind> kMatrices[] = {
-        {"WORLD", Kind::World},
-        {"VIEW", Kind::View},
-        {"PROJECTION", Kind::Projection},
-        {"WORLDVIEW", Kind::WorldView},
-        {"VIEWPROJECTION", Kind::ViewProjection},
-        {"WORLDVIEWPROJECTION", Kind::WorldViewProjection},
-    };
-    for (const auto& [text, matrixKind] : kMatrices) {
-        if (name == text) {
+    for (const auto& [text, matrixKind] : kMatrixSemantics) {
+        if (name == upper(text)) {
             kind = matrixKind;
             return true;
         }
     }
     if (inverse || transpose) return false;
-    static const std::pair<const char*, Kind> kOthers[] = {
-        {"VIEWPORTPIXELSIZE", Kind::ViewportPixelSize},
-        {"TIME", Kind::Time},
-        {"CAMERAPOSITION", Kind::CameraPosition},
-        {"EYEPOSITION", Kind::CameraPosition},
-        {"OBJECTID", Kind::ObjectId},
-        {"POSITION", Kind::LightPosition},
-        {"LIGHTPOSITION", Kind::LightPosition},
-        {"DIRECTION", Kind::LightDirection},
-        {"LIGHTDIRECTION", Kind::LightDirection},
-        {"LIGHTCOLOR", Kind::LightColor},
-        {"LIGHTAREARADIUS", Kind::LightAreaRadius},
-        {"LIGHTSIZE", Kind::LightAreaRadius},
-        {"DIFFUSE", Kind::ObjectColor},
-        {"MATERIALDIFFUSE", Kind::ObjectColor},
-        {"DIFFUSECOLOR", Kind::ObjectColor},
-        {"AMBIENT", Kind::Ambient},
-        {"SCENEHASCLOSEDOBJECTS", Kind::SceneHasClosedObjects},
-        {"CASCADEVIEWPROJECTION", Kind::CascadeViewProjection},
-        {"CASCADEATLASRECTS", Kind::CascadeAtlasRects},
-        {"CASCADESPLITDEPTHS", Kind::CascadeSplitDepths},
-        {"CUBEFACESELECT", Kind::CubeFaceSelect},
-    };
-    for (const auto& [text, otherKind] : kOthers) {
-        if (name == text) {
+    for (const auto& [text, otherKind] : kOtherSemantics) {
+        if (name == upper(text)) {
             kind = otherKind;
             return true;
         }
     }
     return false;
+}
+
+bool SemanticBinder::takesSemantic(const std::string& semantic) {
+    Kind kind;
+    bool inverse = false, transpose = false;
+    if (classify(semantic, kind, inverse, transpose)) return true;
+    const std::string name = upper(semantic);
+    // STANDARDSGLOBAL marks the script parameter the compiler reads (fx/EffectCompiler.cpp).
+    if (name == "STANDARDSGLOBAL") return true;
+    return std::any_of(std::begin(kTunableSemantics), std::end(kTunableSemantics),
+                       [&](const char* tunable) { return name == upper(tunable); });
+}
+
+std::vector<std::string> SemanticBinder::semanticNames() {
+    std::vector<std::string> names;
+    for (const auto& [text, kind] : kMatrixSemantics) {
+        names.push_back(text);
+        for (const char* suffix : kMatrixSuffixes) names.push_back(std::string(text) + suffix);
+    }
+    for (const auto& [text, kind] : kOtherSemantics) names.push_back(text);
+    for (const char* text : kTunableSemantics) names.push_back(text);
+    names.push_back("STANDARDSGLOBAL");
+    return names;
 }
 
 namespace {

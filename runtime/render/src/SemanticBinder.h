@@ -115,7 +115,13 @@ public:
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;
 
-private:
+    // True if some part of the runtime gives a parameter with this semantic its value or reads it (bound
+    // here, a light fit's tunable, the script's STANDARDSGLOBAL); a parameter with any other semantic keeps
+    // its default value.
+    static bool takesSemantic(const std::string& semantic);
+    // Every semantic takesSemantic accepts, as the docs spell them (shadowfx info lists them).
+    static std::vector<std::string> semanticNames();
+
     enum class Kind {
         World,
         View,
@@ -133,12 +139,15 @@ private:
         LightAreaRadius,
         ObjectColor,
         Ambient,
-        SceneHasClosedObjects,  // scene-driven choices (README, "Leave-out"): effects branch or loop on them
+        SceneHasClosedObjects,  // scene-driven choices (docs/measurement.md, "Leave-out"): effects branch or
+                                // loop on them
         CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
         CascadeAtlasRects,
         CascadeSplitDepths,
         CubeFaceSelect,  // a PSMCube light's face selection (LightFit::faceSelect)
     };
+
+private:
     struct Binding {
         size_t parameter;
         Kind kind;

@@ -1,5 +1,5 @@
 // SceneFile: scenes described in JSON (meshes from files through assimp or built-in primitives, objects
-// with transforms and instancing, camera, lights, bounds). README.md's "Scenes" section shows the format;
+// with transforms and instancing, camera, lights, bounds). docs/scenes.md shows the format;
 // scenes/*.json are examples.
 #pragma once
 

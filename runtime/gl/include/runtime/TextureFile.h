@@ -2,7 +2,8 @@
 // effects: 2D, cube and volume textures and Direct3D 10's arrays (a DX10 header, 1D, 2D or cube
 // elements), in D3D9's mask, FourCC and float formats and the DXGI colour formats with BC1-5, with their
 // mip chains, handed over as RGBA floats. Read here with libsquish decoding DXT blocks: no image library's
-// dependency tree comes with the runtime (docs/fxcomposer.md, "Textures", lists the formats).
+// dependency tree comes with the runtime (docs/fxcomposer.md, "What is supported",
+// lists the formats under Textures).
 #pragma once
 
 #include <cstdint>

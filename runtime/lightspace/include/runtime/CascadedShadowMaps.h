@@ -1,9 +1,9 @@
-// CascadedShadowMaps: the `Cascaded` light parameterization (README, "Light-space parameterizations"):
-// the camera's view depth range is split into slices, and each slice gets its own orthographic shadow map
-// of the same size, so that near receivers get small texels and far ones large texels. Lehőcz 2007 (§
-// "Kaszádolt shadow map-ek" ) describes the idea: one map for
-// the viewer's neighbourhood, the next of the same size for twice the distance, and so on; Scherzer 2005 §1
-// (the survey) names it as the simple answer to perspective aliasing. The split schemes below are the
+// CascadedShadowMaps: the `Cascaded` light parameterization
+// (docs/techniques/light-space-parameterizations.md): the camera's view depth range is split into slices, and
+// each slice gets its own orthographic shadow map of the same size, so that near receivers get small texels
+// and far ones large texels. Lehőcz 2007 (§ "Kaszádolt shadow map-ek" ) describes the idea: one map for the
+// viewer's neighbourhood, the next of the same size for twice the distance, and so on; Scherzer 2005 §1 (the
+// survey) names it as the simple answer to perspective aliasing. The split schemes below are the
 // parallel-split shadow maps' (Zhang et al. 2006, not among the seeds): logarithmic (Lehőcz 2007's constant
 // ratio), uniform, and the practical blend of both.
 //

@@ -1,5 +1,5 @@
-// LightParameterization: the providers of a light's view and projection (README, "Light-space
-// parameterizations"). An effect chooses one per light through the annotation
+// LightParameterization: the providers of a light's view and projection
+// (docs/techniques/light-space-parameterizations.md). An effect chooses one per light through the annotation
 // `string Parameterization = "..."` on its light matrices; RenderPort=lightN and every parameter annotated
 // with that light then use the same fit, computed once per frame.
 //
@@ -41,7 +41,8 @@ enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM, PSMCube, 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
-// The tunables an effect sets through parameters with these semantics (README).
+// The tunables an effect sets through parameters with these semantics
+// (docs/techniques/light-space-parameterizations.md).
 struct LightTunables {
     // LiSPSMNScale: multiplies n_opt. 1 = the optimum of Scherzer 2005 eq. 1; larger weakens the warp (toward
     // Focused), smaller strengthens it.

@@ -30,10 +30,10 @@ struct FrameOptions {
     // runtime's own CPU time into FrameStats::cpu. render() then waits for the GPU to finish the frame, so
     // its wall time is the frame's; normal renders leave it off and pay for no queries.
     bool timePasses = false;
-    // Leave out what the scene does not need (README, "Leave-out"): draws culled per pass through a BVH
-    // (camera passes to the view frustum, light passes to the casters whose shadow can reach what the
-    // camera sees), passes whose writes nobody reads, light passes whose targets would come out as last
-    // frame's, per-frame semantics bound per pass instead of per draw. The image is the same either way.
+    // Leave out what the scene does not need (docs/measurement.md, "Leave-out"): draws culled per pass
+    // through a BVH (camera passes to the view frustum, light passes to the casters whose shadow can reach
+    // what the camera sees), passes whose writes nobody reads, light passes whose targets would come out as
+    // last frame's, per-frame semantics bound per pass instead of per draw. The image is the same either way.
     bool leaveOut = true;
     // With leaveOut: keep render targets whose contents would come out as last frame's (leave-out's cached
     // passes). False redraws them as if the light or the objects had moved: every pass runs, culling and
@@ -75,6 +75,11 @@ public:
     static std::unique_ptr<EffectRenderer> create(std::shared_ptr<const fx::CompiledEffect> effect,
                                                   fx::DiagnosticSink& diagnostics);
     ~EffectRenderer();
+    // The semantics the runtime gives parameters values by (case-insensitive): the matrices with their
+    // Inverse/Transpose/InverseTranspose forms, camera, light, object and scene values, the light fits'
+    // tunables, and STANDARDSGLOBAL (the script parameter). create() warns of a numeric parameter whose
+    // semantic is none of them: it keeps its default value.
+    static std::vector<std::string> boundSemantics();
     EffectRenderer(const EffectRenderer&) = delete;
     EffectRenderer& operator=(const EffectRenderer&) = delete;
 
@@ -107,8 +112,8 @@ public:
                 FrameStats* stats = nullptr);
 
     // The matrices light `lightName` renders with in this effect (the Parameterization annotation of its
-    // light matrices, README "Light-space parameterizations") for `scene` in a frame of `options`' size:
-    // what RenderPort=lightN and the annotated parameters get. nullopt if the scene has no such light.
+    // light matrices, docs/techniques/light-space-parameterizations.md) for `scene` in a frame of `options`'
+    // size: what RenderPort=lightN and the annotated parameters get. nullopt if the scene has no such light.
     std::optional<LightFit> lightFit(const Scene& scene, std::string_view lightName,
                                      const FrameOptions& options) const;
 

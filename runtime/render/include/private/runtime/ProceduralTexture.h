@@ -1,5 +1,6 @@
 // ProceduralTexture: texels of the textures an effect asks the runtime to generate
-// (`string Procedural = "noise"; int Seed = 7;` on a texture parameter; README, "Writing effects").
+// (`string Procedural = "noise"; int Seed = 7;` on a texture parameter; docs/effect-format.md, "What the
+// runtime provides").
 //
 // The noise is uniform white noise, independent per texel and channel, from PCG32 (O'Neill, "PCG: A
 // Family of Simple Fast Space-Efficient Statistically Good Algorithms for Random Number Generation",
