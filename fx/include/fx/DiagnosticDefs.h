@@ -11,6 +11,9 @@ FX_DIAGNOSTIC(IncludeNotFound, Error, "cannot open include file '{0}'")
 FX_DIAGNOSTIC(IncludeCaseMismatch, Warning,
               "include file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
 FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
+FX_DIAGNOSTIC(IncludeTrailingText, Warning, "text after the include file name is ignored: '{0}'")
+FX_DIAGNOSTIC(UndefinedConditionCall, Warning,
+              "'{0}' is not a function-like macro here: its call in this condition reads as 0")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
 
