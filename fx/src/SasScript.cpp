@@ -64,6 +64,10 @@ std::string_view scriptCommandName(ScriptCommand::Kind kind) {
     return "?";
 }
 
+bool scriptNameMatches(std::string_view written, std::string_view declared) {
+    return equalsIgnoreCase(written, declared);
+}
+
 std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& diagnostics) {
     std::vector<ScriptCommand> commands;
     const std::string& text = script.text;
@@ -109,6 +113,15 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                 bool ok = true;
                 switch (command.kind) {
                     case ScriptCommand::Kind::Clear: {
+                        // `Clear=;` names no buffer: FX Composer warned and cleared nothing.
+                        if (value.empty()) {
+                            diagnostics.report(DiagId::ScriptCommandIgnored, loc,
+                                               {name,
+                                                "it names no buffer (Color, Depth, Stencil, "
+                                                "DepthStencil or All); nothing is cleared"});
+                            ok = false;
+                            break;
+                        }
                         // Every form FX Composer took: Color (also Color0..3), Depth, Stencil, the
                         // combinations DepthStencil and All, and lists joined by '|' or '+'; one
                         // command for each buffer.

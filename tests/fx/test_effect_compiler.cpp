@@ -390,8 +390,9 @@ technique t < string Script = "Pass=p; Pass=nope;"; >
             pass = true;
             EXPECT_EQ(d.loc.line, 3);
         }
-        if (d.id == DiagId::ScriptUnknownTarget) {
+        if (d.id == DiagId::ScriptCommandIgnored) {  // FX Composer warned and drew on
             target = true;
+            EXPECT_EQ(d.severity, Severity::Warning);
             EXPECT_EQ(d.loc.line, 5);
         }
     }

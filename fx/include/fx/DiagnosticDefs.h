@@ -38,6 +38,7 @@ FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
 FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
+FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is ignored: {1}")
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
               "script names technique '{0}', which the effect does not have; skipped")
 FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
