@@ -890,6 +890,23 @@ std::vector<StageOutcome> Compiler::runJobs() {
     return outcomes;
 }
 
+// SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
+// and, where the cause is known, what in the effect led there.
+std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
+    const char* stage = lowered.stage == ShaderStage::Vertex     ? "vertex"
+                        : lowered.stage == ShaderStage::Fragment ? "pixel"
+                        : lowered.stage == ShaderStage::Geometry ? "geometry"
+                        : lowered.stage == ShaderStage::Hull     ? "hull"
+                                                                 : "domain";
+    std::string cause;
+    if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
+        cause =
+            "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
+            "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
+    return cause + "the " + std::string(stage) + " shader '" + lowered.entryPoint + "' (" + lowered.profile +
+           ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+}
+
 SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {
     std::vector<const FunctionDecl*> functions = mEffect.findFunctions(lowered.entryPoint);
     return functions.empty() || !functions.front()->loc.valid() ? lowered.compileLoc : functions.front()->loc;
@@ -917,7 +934,9 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             case Status::CrossFailed:
-                if (first) error(DiagId::CrossCompileError, lowered.compileLoc, {outcome.crossError});
+                if (first)
+                    error(DiagId::CrossCompileError, lowered.compileLoc,
+                          {crossErrorInEffectTerms(outcome.crossError, lowered)});
                 mFailed = true;
                 continue;
             case Status::Crashed:
