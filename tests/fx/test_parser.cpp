@@ -525,6 +525,10 @@ TECHNIQUE T {
         ColorWriteEnable1 = None;
         ColorWriteEnable2 = all;
         ColorWriteEnable3 = false;
+        FogTableMode = NONE;
+        FOGVERTEXMODE = D3DFOG_LINEAR;
+        FogColor = 0x00336699;
+        RangeFogEnable = FALSE;
     }
 }
 Technique11 T11 { Pass { SetPixelShader(CompileShader(ps_4_0, PS())); } }
@@ -551,6 +555,7 @@ Technique11 T11 { Pass { SetPixelShader(CompileShader(ps_4_0, PS())); } }
     EXPECT_EQ(findState(p.states, "ColorWriteEnable1")->value.number, 0);
     EXPECT_EQ(findState(p.states, "ColorWriteEnable2")->value.number, 15);
     EXPECT_EQ(findState(p.states, "ColorWriteEnable3")->value.number, 0);
+    EXPECT_EQ(findState(p.states, "FOGVERTEXMODE")->value.number, 3);
     ASSERT_TRUE(effect->findTechnique("T11"));
     EXPECT_TRUE(effect->findTechnique("T11")->d3d10);
 }

@@ -96,6 +96,15 @@ FX_RENDER_STATE(SpecularEnable, Bool, 0)
 FX_RENDER_STATE(NormalizeNormals, Bool, 0)
 FX_RENDER_STATE(PointSpriteEnable, Bool, 0)
 FX_RENDER_STATE(SRGBWriteEnable, Bool, 0)
+// D3D9's fixed-function fog, which the SDK's samples switch off beside their shaders (FogTableMode = NONE):
+// accepted, and without effect, as FogEnable.
+FX_RENDER_STATE(FogColor, Color, 0)
+FX_RENDER_STATE(FogTableMode, FogMode, 0)   // NONE
+FX_RENDER_STATE(FogVertexMode, FogMode, 0)  // NONE
+FX_RENDER_STATE(FogStart, Float, 0)
+FX_RENDER_STATE(FogEnd, Float, 1)
+FX_RENDER_STATE(FogDensity, Float, 1)
+FX_RENDER_STATE(RangeFogEnable, Bool, 0)
 
 FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
 FX_STATE_ALIAS(DepthEnable, ZEnable)
@@ -182,6 +191,10 @@ FX_ENUM_VALUE(Cull10, Front, 2)
 FX_ENUM_VALUE(Cull10, Back, 3)
 FX_ENUM_VALUE(DepthWriteMask, Zero, 0)
 FX_ENUM_VALUE(DepthWriteMask, All, 1)
+FX_ENUM_VALUE(FogMode, None, 0)
+FX_ENUM_VALUE(FogMode, Exp, 1)
+FX_ENUM_VALUE(FogMode, Exp2, 2)
+FX_ENUM_VALUE(FogMode, Linear, 3)
 FX_ENUM_VALUE(Shade, Flat, 1)
 FX_ENUM_VALUE(Shade, Gouraud, 2)
 FX_ENUM_VALUE(Shade, Phong, 3)
