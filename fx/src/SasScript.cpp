@@ -130,8 +130,12 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         while (ok && from <= value.size()) {
                             size_t bar = value.find_first_of("|+,", from);
                             if (bar == std::string::npos) bar = value.size();
-                            const std::string word = trim(std::string_view(value).substr(from, bar - from));
+                            std::string word = trim(std::string_view(value).substr(from, bar - from));
                             from = bar + 1;
+                            // FX Composer's `Clear=Depth0;`: the one depth-stencil buffer.
+                            if (word.size() > 1 && word.back() == '0' &&
+                                !equalsIgnoreCase(word.substr(0, word.size() - 1), "Color"))
+                                word.pop_back();
                             const bool color =
                                 equalsIgnoreCase(word, "Color") ||
                                 (word.size() == 6 && equalsIgnoreCase(word.substr(0, 5), "Color") &&
