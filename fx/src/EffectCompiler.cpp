@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace fx {
 
@@ -88,7 +89,7 @@ private:
     void assignPairUnits();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
-    void validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique);
+    void validateScript(std::vector<ScriptCommand>& commands, const Technique* technique);
     // A stage's place in mOut: technique and pass index.
     struct PassSlot {
         size_t technique = 0;
@@ -606,16 +607,41 @@ std::vector<ScriptCommand> Compiler::script(const std::vector<Annotation>& annot
     return {};
 }
 
-void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const Technique* technique) {
+void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Technique* technique) {
     int loops = 0;
-    for (const ScriptCommand& c : commands) {
+    // Commands FX Composer warned about and skipped: left out of the compiled script, so that the runtime
+    // runs what FX Composer ran.
+    std::vector<bool> ignored(commands.size(), false);
+    for (size_t index = 0; index < commands.size(); ++index) {
+        const ScriptCommand& c = commands[index];
+        auto ignore = [&](const std::string& why) {
+            mDiagnostics.report(DiagId::ScriptCommandIgnored, c.loc,
+                                {std::string(scriptCommandName(c.kind)), why});
+            ignored[index] = true;
+        };
         switch (c.kind) {
             case ScriptCommand::Kind::Pass: {
                 bool found = false;
                 if (technique)
-                    for (const Pass& p : technique->passes) found |= p.name == c.value;
+                    for (const Pass& p : technique->passes) found |= scriptNameMatches(c.value, p.name);
                 if (!found)
                     error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
+                break;
+            }
+            case ScriptCommand::Kind::ClearSetColor:
+            case ScriptCommand::Kind::ClearSetDepth:
+            case ScriptCommand::Kind::ClearSetStencil: {
+                // A parameter's name or a literal ("0.5", "1,0,0,1"), as the runtime reads it.
+                bool literal = true;
+                std::stringstream items(c.value);
+                for (std::string item; std::getline(items, item, ',');) {
+                    char* end = nullptr;
+                    std::strtod(item.c_str(), &end);
+                    literal = literal && end != item.c_str();
+                }
+                if (!mIndex.count(c.value) && !literal)
+                    ignore("'" + c.value +
+                           "' is neither a parameter nor a number; the clear value stays as it was");
                 break;
             }
             case ScriptCommand::Kind::RenderColorTarget:
@@ -631,7 +657,9 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
                 for (const TextureDesc& t : mOut->textures)
                     isTarget =
                         isTarget || (it != mIndex.end() && t.parameter == it->second && t.kind == want);
-                if (!isTarget) error(DiagId::ScriptUnknownTarget, c.loc, {c.value});
+                if (!isTarget)
+                    ignore("'" + c.value + "' is not a " + (wantDepth ? "depth-stencil" : "render") +
+                           "-target texture; the pass draws into the target bound before");
                 break;
             }
             case ScriptCommand::Kind::Technique: {
@@ -681,6 +709,13 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
     }
     if (loops > 0 && !commands.empty())
         error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {"LoopByCount without LoopEnd"});
+    size_t kept = 0;
+    for (size_t index = 0; index < commands.size(); ++index) {
+        if (ignored[index]) continue;
+        if (kept != index) commands[kept] = std::move(commands[index]);  // never onto itself
+        ++kept;
+    }
+    commands.resize(kept);
 }
 
 void Compiler::scripts() {
@@ -861,6 +896,23 @@ std::vector<StageOutcome> Compiler::runJobs() {
     return outcomes;
 }
 
+// SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
+// and, where the cause is known, what in the effect led there.
+std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
+    const char* stage = lowered.stage == ShaderStage::Vertex     ? "vertex"
+                        : lowered.stage == ShaderStage::Fragment ? "pixel"
+                        : lowered.stage == ShaderStage::Geometry ? "geometry"
+                        : lowered.stage == ShaderStage::Hull     ? "hull"
+                                                                 : "domain";
+    std::string cause;
+    if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
+        cause =
+            "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
+            "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
+    return cause + "the " + std::string(stage) + " shader '" + lowered.entryPoint + "' (" + lowered.profile +
+           ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+}
+
 SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {
     std::vector<const FunctionDecl*> functions = mEffect.findFunctions(lowered.entryPoint);
     return functions.empty() || !functions.front()->loc.valid() ? lowered.compileLoc : functions.front()->loc;
@@ -888,7 +940,9 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             case Status::CrossFailed:
-                if (first) error(DiagId::CrossCompileError, lowered.compileLoc, {outcome.crossError});
+                if (first)
+                    error(DiagId::CrossCompileError, lowered.compileLoc,
+                          {crossErrorInEffectTerms(outcome.crossError, lowered)});
                 mFailed = true;
                 continue;
             case Status::Crashed:

@@ -126,6 +126,7 @@ public:
         } catch (const TooManyErrors&) {
             return;
         }
+        retypeSamplersOfTextureObjects();
         if (mEffect.techniques.empty() && mFirstRefused) {
             try {
                 error(DiagId::AllTechniquesRefused, mFirstRefused->loc,
@@ -136,6 +137,35 @@ public:
     }
 
 private:
+    // fxc's D3D10 and later profiles read `sampler` as `SamplerState`: a `sampler` that the code passes to a
+    // texture object's Sample or Gather methods (MonoGame's `sampler NameSampler : register(s0);` beside
+    // `Texture2D Name`) is one, and glslang's D3D9 mode would take it for a combined sampler that
+    // SPIRV-Cross cannot pair with the texture. A sampler also read with tex2D() and its kin stays D3D9's.
+    void retypeSamplersOfTextureObjects() {
+        std::set<std::string> byObject, comparing, byIntrinsic;
+        for (size_t i = 0; i + 3 < mTokens.size(); ++i) {
+            const Token& a = mTokens[i];
+            if (a.is(".") && mTokens[i + 1].kind == Token::Kind::Identifier && mTokens[i + 2].is("(") &&
+                mTokens[i + 3].kind == Token::Kind::Identifier) {
+                const std::string& method = mTokens[i + 1].text;
+                if (method.rfind("Sample", 0) == 0 || method.rfind("Gather", 0) == 0 ||
+                    method.rfind("CalculateLevelOfDetail", 0) == 0)
+                    (method.find("Cmp") != std::string::npos ? comparing : byObject)
+                        .insert(mTokens[i + 3].text);
+            }
+            if (a.kind == Token::Kind::Identifier && a.text.rfind("tex", 0) == 0 && mTokens[i + 1].is("(") &&
+                mTokens[i + 2].kind == Token::Kind::Identifier)
+                byIntrinsic.insert(mTokens[i + 2].text);
+        }
+        for (Parameter& p : mEffect.parameters) {
+            if (p.type.base != BaseType::Sampler || byIntrinsic.count(p.name)) continue;
+            if (comparing.count(p.name))
+                p.type.base = BaseType::SamplerComparisonState;
+            else if (byObject.count(p.name))
+                p.type.base = BaseType::SamplerState;
+        }
+    }
+
     // [SECTION] Tokens
 
     const Token& peek(size_t ahead = 0) const {
@@ -407,8 +437,45 @@ private:
                 if (p->type.base == BaseType::Int || p->type.base == BaseType::UInt) out = std::trunc(out);
                 return true;
             }
-            case Expr::Kind::Cast:
+            case Expr::Kind::Member: {
+                // One component of a constant vector: `SIZE.x` of `static const int2 SIZE = int2(4, 2);`.
+                static const std::string kComponents[] = {"xyzw", "rgba"};
+                int component = -1;
+                for (const std::string& set : kComponents)
+                    if (e.text.size() == 1 && set.find(e.text[0]) != std::string::npos)
+                        component = static_cast<int>(set.find(e.text[0]));
+                if (component < 0 || e.args.size() != 1) return false;
+                const Expr* vector = &e.args[0];
+                if (vector->kind == Expr::Kind::Identifier) {
+                    const Parameter* p = mEffect.findParameter(vector->text);
+                    if (!p || !(p->isConst || p->isStatic) || !p->initializer || !p->type.arrayDims.empty())
+                        return false;
+                    vector = &*p->initializer;
+                }
+                TypeDesc constructed;
+                const bool constructor =
+                    vector->kind == Expr::Kind::Call && parseScalarTypeName(vector->text, constructed);
+                if ((!constructor && vector->kind != Expr::Kind::InitList) ||
+                    static_cast<int>(vector->args.size()) <= component)
+                    return false;
+                return constantValue(vector->args[static_cast<size_t>(component)], out, depth + 1);
+            }
             case Expr::Kind::Call:
+                // min, max and abs of constants: fxc folded them in array sizes.
+                if ((e.text == "min" || e.text == "max") && e.args.size() == 2) {
+                    double a, b;
+                    if (!constantValue(e.args[0], a, depth + 1) || !constantValue(e.args[1], b, depth + 1))
+                        return false;
+                    out = e.text == "min" ? std::min(a, b) : std::max(a, b);
+                    return true;
+                }
+                if (e.text == "abs" && e.args.size() == 1) {
+                    if (!constantValue(e.args[0], out, depth + 1)) return false;
+                    out = std::abs(out);
+                    return true;
+                }
+                [[fallthrough]];
+            case Expr::Kind::Cast:
                 // (int)x, int(x), float(x)
                 if (e.args.size() != 1 || !constantValue(e.args[0], out, depth + 1)) return false;
                 if (e.kind == Expr::Kind::Call && e.text != "int" && e.text != "uint" && e.text != "float")
@@ -1419,6 +1486,13 @@ private:
                 }
                 return;
             }
+            case Expr::Kind::Bool:
+                // MonoGame's `ColorWriteEnable = true;` writes every channel, not only red (1).
+                if (domain == StateDomain::ColorMask) {
+                    e.kind = Expr::Kind::Number;
+                    e.number = e.number != 0 ? 15 : 0;
+                }
+                return;
             case Expr::Kind::String:  // `ZEnable = "yes";` was kept and read as 0
                 if (domain != StateDomain::TextureRef)
                     error(DiagId::InvalidStateValue, e.loc, {stateName, "expected a value, found a string"});
@@ -1832,6 +1906,7 @@ std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::
     effect->includedFiles = pp.includedFiles;
     std::vector<Token> tokens = detail::lexEffect(pp.text, path, pp.files, effect->sourceMap, counted);
     if (counted.errors() > 0) return nullptr;
+    detail::spellKeywordsAsHlsl(tokens, pp.text);
     Parser parser(std::move(tokens), pp.text, *effect, counted);
     parser.parseEffect();
     if (counted.errors() > 0) return nullptr;

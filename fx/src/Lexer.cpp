@@ -1,6 +1,8 @@
 // Lexer: preprocessed text -> tokens with the user's locations.
 #include "Lexer.h"
 
+#include <fx/RenderStates.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -284,6 +286,24 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
     }
     tokens.push_back(end);
     return tokens;
+}
+
+void spellKeywordsAsHlsl(std::vector<Token>& tokens, std::string& text) {
+    // The effect-framework keywords and the type keywords effects wrote capitalized. Not `texture`
+    // (already case-blind as a parameter type) nor `true`/`false` (macros in some headers).
+    static const char* const kKeywords[] = {"technique",    "technique10",   "technique11",    "pass",
+                                            "compile",      "CompileShader", "sampler_state",  "matrix",
+                                            "VertexShader", "PixelShader",   "GeometryShader", "fxgroup"};
+    for (Token& token : tokens) {
+        if (token.kind != Token::Kind::Identifier) continue;
+        for (const char* keyword : kKeywords) {
+            if (token.text == keyword || !equalsIgnoreCase(token.text, keyword)) continue;
+            token.text = keyword;
+            if (token.end - token.begin == token.text.size())
+                text.replace(token.begin, token.text.size(), keyword);
+            break;
+        }
+    }
 }
 
 }  // namespace fx::detail

@@ -33,4 +33,10 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                              const std::map<std::string, std::string>& files, SourceMap& sourceMap,
                              DiagnosticSink& diagnostics);
 
+// fxc read the effect keywords in any case (`Technique`, `PASS`, `Compile`, `Matrix`, `VERTEXSHADER`;
+// strict mode only warned, X3086 "alternate cases ... are deprecated"): spells them as HLSL does, in the
+// tokens and in `text` alike (same length, so token offsets stay valid), so that both the effect parser and
+// glslang, which reads the functions' text, see one spelling.
+void spellKeywordsAsHlsl(std::vector<Token>& tokens, std::string& text);
+
 }  // namespace fx::detail

@@ -53,6 +53,12 @@ std::string canonicalSemantic(const std::string& semantic) {
                                      "PSIZE",    "FOG",         "DEPTH",        "SV_TARGET"};
     for (const char* name : kIndexed)
         if (s == name) return s + "0";
+    // fxc reads a system value with index 0 as the system value (`SV_Position0`, `SV_Depth0`,
+    // `SV_IsFrontFace0`); only SV_Target and the clip and cull distances are indexed.
+    if (s.size() > 4 && s.rfind("SV_", 0) == 0 && s.back() == '0' &&
+        !std::isdigit(static_cast<unsigned char>(s[s.size() - 2])) && s.rfind("SV_TARGET", 0) != 0 &&
+        s.rfind("SV_CLIPDISTANCE", 0) != 0 && s.rfind("SV_CULLDISTANCE", 0) != 0)
+        s.pop_back();
     return s;
 }
 
@@ -1371,9 +1377,16 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
 }
 
 bool profileMatches(const std::string& profile, ShaderStage stage) {
-    static const char* kVersions[] = {"1_1", "1_2",           "1_3",           "1_4", "2_0",
-                                      "2_a", "2_b",           "2_sw",          "3_0", "3_sw",
-                                      "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"};
+    // The DXC-era profiles too (5_1, 6_0..6_8): engines' headers select them on newer back ends for the
+    // same code, which glslang compiles alike.
+    static const char* kVersions[] = {"1_1",  "1_2", "1_3",  "1_4", "2_0",           "2_a",           "2_b",
+                                      "2_sw", "3_0", "3_sw", "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1",
+                                      "5_0",  "5_1", "6_0",  "6_1", "6_2",           "6_3",           "6_4",
+                                      "6_5",  "6_6", "6_7",  "6_8"};
+    auto modern = [](const std::string& v) {
+        return v == "5_0" || v == "5_1" ||
+               (v.size() == 3 && v[0] == '6' && v[1] == '_' && v[2] >= '0' && v[2] <= '8');
+    };
     std::string prefix = stage == ShaderStage::Vertex     ? "vs_"
                          : stage == ShaderStage::Fragment ? "ps_"
                          : stage == ShaderStage::Geometry ? "gs_"
@@ -1383,8 +1396,8 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
     for (char& c : p) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (p.rfind(prefix, 0) != 0) return false;
     std::string version = p.substr(3);
-    if (stage == ShaderStage::Hull || stage == ShaderStage::Domain) return version == "5_0";
-    if (stage == ShaderStage::Geometry) return version == "4_0" || version == "4_1" || version == "5_0";
+    if (stage == ShaderStage::Hull || stage == ShaderStage::Domain) return modern(version);
+    if (stage == ShaderStage::Geometry) return version == "4_0" || version == "4_1" || modern(version);
     if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4"))
         return false;
     if (stage == ShaderStage::Fragment && version == "1_1") return true;

@@ -2,6 +2,7 @@
 #include "Preprocessor.h"
 
 #include "CaseBlindPath.h"
+#include "FxcDirectives.h"
 #include "SourceText.h"
 
 #include <glslang/Public/ResourceLimits.h>
@@ -172,8 +173,13 @@ std::string lineOf(const std::string& text, int line) {
 
 class EffectIncluder : public glslang::TShader::Includer {
 public:
-    EffectIncluder(const ParseOptions& options, PreprocessedSource& out, size_t totalBytes)
-        : mOptions(options), mOut(out), mTotalBytes(totalBytes) {}
+    EffectIncluder(const ParseOptions& options, PreprocessedSource& out, size_t totalBytes,
+                   FxcDirectives& directives, DiagnosticSink& diagnostics)
+        : mOptions(options),
+          mOut(out),
+          mTotalBytes(totalBytes),
+          mDirectives(directives),
+          mDiagnostics(diagnostics) {}
 
     IncludeResult* includeSystem(const char* headerName, const char* includerName, size_t depth) override {
         return include(headerName, includerName, depth, /*system*/ true);
@@ -250,10 +256,18 @@ private:
             }
             mParents[candidate] = includer;
             auto stored = mOut.files.emplace(candidate, markStringizing(*text)).first;
+            // What glslang reads: rewritten once per file, however often it is included.
+            auto forGlslang = mGlslangTexts.find(candidate);
+            if (forGlslang == mGlslangTexts.end())
+                forGlslang =
+                    mGlslangTexts
+                        .emplace(candidate, mDirectives.rewrite(stored->second, candidate, mDiagnostics))
+                        .first;
             bool seen = false;
             for (const std::string& file : mOut.includedFiles) seen = seen || file == candidate;
             if (!seen) mOut.includedFiles.push_back(candidate);
-            return new IncludeResult(candidate, stored->second.data(), stored->second.size(), nullptr);
+            return new IncludeResult(candidate, forGlslang->second.data(), forGlslang->second.size(),
+                                     nullptr);
         }
         failures[headerName] = "";
         return nullptr;
@@ -275,7 +289,10 @@ private:
     const ParseOptions& mOptions;
     PreprocessedSource& mOut;
     size_t mTotalBytes;
+    FxcDirectives& mDirectives;
+    DiagnosticSink& mDiagnostics;
     std::map<std::string, std::string> mParents;
+    std::map<std::string, std::string> mGlslangTexts;  // by file; glslang reads them until it is done
 };
 
 }  // namespace
@@ -298,20 +315,24 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     }
     if (!checkCharacters(source, path, diagnostics)) return false;
 
-    std::string preamble;
+    // An effect sees fxc's predefined macros, which are none (fxc and D3DX documented no predefined
+    // macro; DXC's __SHADER_TARGET_* came after them), not glslang's: engines' shared headers branch on
+    // `#if defined(VULKAN)`.
+    std::string preamble = FxcDirectives::undefineGlslangPredefines();
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
+    FxcDirectives directives;
     glslang::TShader shader(EShLangFragment);
-    const std::string& mainText = out.files[path];
+    const std::string mainText = directives.rewrite(out.files[path], path, diagnostics);
     const char* strings[] = {mainText.c_str()};
     const int lengths[] = {static_cast<int>(mainText.size())};
     const char* names[] = {path.c_str()};
     shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
     shader.setEnvInput(glslang::EShSourceHlsl, EShLangFragment, glslang::EShClientVulkan, 100);
     shader.setEntryPoint("main");
-    if (!preamble.empty()) shader.setPreamble(preamble.c_str());
+    shader.setPreamble(preamble.c_str());
 
-    EffectIncluder includer(options, out, source.size());
+    EffectIncluder includer(options, out, source.size(), directives, diagnostics);
     std::string text;
     auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgOnlyPreprocessor);
     bool ok =
@@ -389,6 +410,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     }
     if (!ok && !reported)
         diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0}, {"preprocessing failed"});
+    directives.takeUndefinedCallMarkers(text, diagnostics);
     out.text = std::move(text);
     return ok && !reported;
 }

@@ -90,6 +90,8 @@ std::vector<std::string_view> domainPrefixes(StateDomain domain) {
             return {"D3DFILL_", "D3D10_FILL_", "D3D11_FILL_"};
         case StateDomain::ColorMask:
             return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_", "D3D11_COLOR_WRITE_ENABLE_"};
+        case StateDomain::FogMode:
+            return {"D3DFOG_"};
         default:
             return {};
     }
@@ -219,6 +221,8 @@ std::string_view domainName(StateDomain domain) {
             return "Cull10";
         case StateDomain::DepthWriteMask:
             return "DepthWriteMask";
+        case StateDomain::FogMode:
+            return "FogMode";
     }
     return "?";
 }

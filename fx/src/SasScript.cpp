@@ -64,6 +64,10 @@ std::string_view scriptCommandName(ScriptCommand::Kind kind) {
     return "?";
 }
 
+bool scriptNameMatches(std::string_view written, std::string_view declared) {
+    return equalsIgnoreCase(written, declared);
+}
+
 std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& diagnostics) {
     std::vector<ScriptCommand> commands;
     const std::string& text = script.text;
@@ -109,6 +113,15 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                 bool ok = true;
                 switch (command.kind) {
                     case ScriptCommand::Kind::Clear: {
+                        // `Clear=;` names no buffer: FX Composer warned and cleared nothing.
+                        if (value.empty()) {
+                            diagnostics.report(DiagId::ScriptCommandIgnored, loc,
+                                               {name,
+                                                "it names no buffer (Color, Depth, Stencil, "
+                                                "DepthStencil or All); nothing is cleared"});
+                            ok = false;
+                            break;
+                        }
                         // Every form FX Composer took: Color (also Color0..3), Depth, Stencil, the
                         // combinations DepthStencil and All, and lists joined by '|' or '+'; one
                         // command for each buffer.
@@ -117,8 +130,12 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         while (ok && from <= value.size()) {
                             size_t bar = value.find_first_of("|+,", from);
                             if (bar == std::string::npos) bar = value.size();
-                            const std::string word = trim(std::string_view(value).substr(from, bar - from));
+                            std::string word = trim(std::string_view(value).substr(from, bar - from));
                             from = bar + 1;
+                            // FX Composer's `Clear=Depth0;`: the one depth-stencil buffer.
+                            if (word.size() > 1 && word.back() == '0' &&
+                                !equalsIgnoreCase(word.substr(0, word.size() - 1), "Color"))
+                                word.pop_back();
                             const bool color =
                                 equalsIgnoreCase(word, "Color") ||
                                 (word.size() == 6 && equalsIgnoreCase(word.substr(0, 5), "Color") &&

@@ -407,8 +407,9 @@ technique t < string Script = "Pass=p; Pass=nope;"; >
             pass = true;
             EXPECT_EQ(d.loc.line, 3);
         }
-        if (d.id == DiagId::ScriptUnknownTarget) {
+        if (d.id == DiagId::ScriptCommandIgnored) {  // FX Composer warned and drew on
             target = true;
+            EXPECT_EQ(d.severity, Severity::Warning);
             EXPECT_EQ(d.loc.line, 5);
         }
     }
@@ -472,6 +473,25 @@ technique t
     EXPECT_EQ(error.loc.file, "leave_out.fx");
     EXPECT_EQ(error.loc.line, 6);
     EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);
+}
+
+// SPIRV-Cross's own words never reach the user alone: its failure names the shader of the effect and, for a
+// D3D9 sampler handed to Texture2D.Sample, what in the effect caused it.
+TEST(EffectCompiler, CrossCompileErrorSaysWhatInTheEffectCausedIt) {
+    DiagnosticList diags;
+    EXPECT_FALSE(compile(R"(Texture2D Tex;
+sampler2D Samp;
+float4 PS(float2 uv : TEXCOORD0) : SV_Target { return Tex.Sample(Samp, uv) + tex2D(Samp, uv); }
+technique11 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                         diags));
+    ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
+    const Diagnostic& d = diags.items().back();
+    EXPECT_EQ(d.id, DiagId::CrossCompileError);
+    EXPECT_EQ(d.loc.line, 4);
+    EXPECT_NE(d.message.find("Sample or Gather method is given a D3D9 sampler"), std::string::npos)
+        << d.message;
+    EXPECT_NE(d.message.find("the pixel shader 'PS' (ps_4_0)"), std::string::npos) << d.message;
 }
 
 }  // namespace

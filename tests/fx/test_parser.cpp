@@ -501,6 +501,72 @@ technique T9 {
     EXPECT_EQ(findState(p.states, "PixelShader")->value.text, "NULL");
 }
 
+// D3DX read the effect keywords, states and values in any case (fxc's strict mode warned, X3086), and
+// MonoGame's ColorWriteEnable takes All, None, true and false. The HLSL text glslang reads gets the
+// keywords spelled as HLSL spells them.
+TEST(Parser, CaseBlindEffectGrammar) {
+    auto effect = parseOk(R"(
+shared MATRIX Wvp : WORLDVIEWPROJECTION;
+static const int N = 3;
+float4 Lights[3 * N - 1];
+static const int2 Grid = int2(2, 3);
+float4 Cells[Grid.x * Grid.y + max(N, 1) - abs(-3)];
+Matrix Identity(Matrix m) { return m; }
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, Identity(Wvp)); }
+float4 PS() : COLOR { return 1; }
+VERTEXSHADER vsVar = COMPILE vs_3_0 VS();
+TECHNIQUE T {
+    PASS P0 {
+        VertexShader = vsVar;
+        pixelshader = Compile ps_3_0 PS();
+        ZENABLE = TRUE;
+        cullmode = NONE;
+        COLORWRITEENABLE = true;
+        ColorWriteEnable1 = None;
+        ColorWriteEnable2 = all;
+        ColorWriteEnable3 = false;
+        FogTableMode = NONE;
+        FOGVERTEXMODE = D3DFOG_LINEAR;
+        FogColor = 0x00336699;
+        RangeFogEnable = FALSE;
+    }
+}
+Technique11 T11 { Pass { SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)");
+    ASSERT_TRUE(effect);
+    const Parameter* wvp = effect->findParameter("Wvp");
+    ASSERT_TRUE(wvp);
+    EXPECT_TRUE(wvp->isShared);
+    EXPECT_EQ(wvp->type.shape, Shape::Matrix);
+    EXPECT_EQ(effect->findParameter("Lights")->type.arrayDims, std::vector<int>{8});
+    EXPECT_EQ(effect->findParameter("Cells")->type.arrayDims, std::vector<int>{6});
+    EXPECT_EQ(effect->findParameter("vsVar")->type.base, BaseType::VertexShader);
+    EXPECT_EQ(effect->findParameter("vsVar")->initializer->kind, Expr::Kind::Compile);
+    ASSERT_FALSE(effect->findFunctions("Identity").empty());
+    EXPECT_EQ(effect->findFunctions("Identity").front()->hlslText.rfind("matrix Identity(matrix m)", 0), 0u);
+    const Technique* t = effect->findTechnique("T");
+    ASSERT_TRUE(t);
+    ASSERT_EQ(t->passes.size(), 1u);
+    const Pass& p = t->passes[0];
+    EXPECT_EQ(p.name, "P0");
+    EXPECT_EQ(findState(p.states, "PixelShader")->value.kind, Expr::Kind::Compile);
+    EXPECT_EQ(findState(p.states, "cullmode")->value.number, 1);
+    EXPECT_EQ(findState(p.states, "COLORWRITEENABLE")->value.number, 15);
+    EXPECT_EQ(findState(p.states, "ColorWriteEnable1")->value.number, 0);
+    EXPECT_EQ(findState(p.states, "ColorWriteEnable2")->value.number, 15);
+    EXPECT_EQ(findState(p.states, "ColorWriteEnable3")->value.number, 0);
+    EXPECT_EQ(findState(p.states, "FOGVERTEXMODE")->value.number, 3);
+    ASSERT_TRUE(effect->findTechnique("T11"));
+    EXPECT_TRUE(effect->findTechnique("T11")->d3d10);
+}
+
+// Script names match declarations case-blind, in the compiler's checks as in the runtime.
+TEST(Parser, ScriptNamesMatchCaseBlind) {
+    EXPECT_TRUE(scriptNameMatches("p0", "P0"));
+    EXPECT_TRUE(scriptNameMatches("Blur_Pass", "BLUR_PASS"));
+    EXPECT_FALSE(scriptNameMatches("p0", "p01"));
+}
+
 TEST(Parser, ExpressionsPrecedenceAndForms) {
     auto effect = parseOk(R"(
 float4x4 M;

@@ -171,3 +171,95 @@ float GLUE(Bi, as) = 1;
     EXPECT_EQ(shadow->annotation("Note")->value.text, "#not");
     EXPECT_TRUE(effect->findParameter("Bias"));
 }
+
+// glslang predefines VULKAN (and GL_* names) for HLSL input; fxc predefined none of them, and engines'
+// headers branch on `#if defined(VULKAN)`.
+TEST(Preprocessor, NoGlslangPredefines) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#if defined(VULKAN) || defined(GL_SPIRV) || defined(GL_core_profile)
+float vulkan;
+#elif defined(GL_GOOGLE_include_directive) || defined(GL_ARB_gpu_shader5) || defined(GL_NV_mesh_shader)
+float extensions;
+#else
+float fxc;
+#endif
+)",
+                                    "main.fx", memoryOptions({}), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(effect->findParameter("fxc"));
+    EXPECT_FALSE(effect->findParameter("vulkan"));
+    EXPECT_FALSE(effect->findParameter("extensions"));
+    EXPECT_FALSE(diags.hasErrors());
+}
+
+// A condition calling a name that is no function-like macro reads the call as 0 with a warning at the
+// name (MonoGame's effect preprocessor), in #if and #elif, in the main file and in includes; a call in a
+// condition that is never evaluated warns nothing, and a defined macro is called as usual.
+TEST(Preprocessor, UndefinedMacroCallInConditionReadsZero) {
+    std::map<std::string, std::string> files = {
+        {"inc.fxh", "#if HAS(X)\nfloat inInclude;\n#endif\nfloat incEnd;\n"}};
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#if foo(1)
+float a;
+#elif bar(2, 3) || 1
+float b;
+#else
+float c;
+#endif
+#define twice(x) ((x) * 2)
+#if twice(1) == 2 && !foo ( 7 )
+float d;
+#endif
+#if 0
+#if never(1)
+#endif
+#endif
+#include "inc.fxh"
+float last;
+)",
+                                    "main.fx", memoryOptions(files), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(effect->findParameter("a"));
+    EXPECT_TRUE(effect->findParameter("b"));
+    EXPECT_FALSE(effect->findParameter("c"));
+    EXPECT_TRUE(effect->findParameter("d"));
+    EXPECT_FALSE(effect->findParameter("inInclude"));
+    // The guards the rewrite adds keep every line where the user wrote it.
+    EXPECT_EQ(effect->findParameter("b")->loc.line, 4);
+    EXPECT_EQ(effect->findParameter("d")->loc.line, 10);
+    EXPECT_EQ(effect->findParameter("last")->loc.line, 17);
+    EXPECT_EQ(effect->findParameter("incEnd")->loc.line, 4);
+    EXPECT_EQ(effect->findParameter("incEnd")->loc.file, "inc.fxh");
+    std::vector<std::string> warnings;
+    for (const Diagnostic& d : diags.items()) {
+        EXPECT_EQ(d.id, DiagId::UndefinedConditionCall) << d.message;
+        EXPECT_EQ(d.severity, Severity::Warning);
+        warnings.push_back(d.loc.str() + " " + d.message);
+    }
+    EXPECT_EQ(warnings,
+              (std::vector<std::string>{
+                  "main.fx:1:5 'foo' is not a function-like macro here: its call in this condition "
+                  "reads as 0",
+                  "main.fx:3:7 'bar' is not a function-like macro here: its call in this condition "
+                  "reads as 0",
+                  "main.fx:9:23 'foo' is not a function-like macro here: its call in this condition "
+                  "reads as 0",
+                  "inc.fxh:1:5 'HAS' is not a function-like macro here: its call in this condition "
+                  "reads as 0"}));
+}
+
+// FX11 game code wrote `#include "x.fxh";`: fxc warned about the text after the file name and went on.
+TEST(Preprocessor, TextAfterIncludeFileNameIsIgnoredWithWarning) {
+    std::map<std::string, std::string> files = {{"a.fxh", "float fromA;\n"}, {"b.fxh", "float fromB;\n"}};
+    DiagnosticList diags;
+    auto effect = parseEffectSource("#include \"a.fxh\" ;\n#include <b.fxh> // a comment\nfloat after;\n",
+                                    "main.fx", memoryOptions(files), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(effect->findParameter("fromA"));
+    EXPECT_TRUE(effect->findParameter("fromB"));
+    EXPECT_EQ(effect->findParameter("after")->loc.line, 3);
+    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
+    EXPECT_EQ(diags.items()[0].id, DiagId::IncludeTrailingText);
+    EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
+    EXPECT_EQ(diags.items()[0].loc.str(), "main.fx:1:18");
+}

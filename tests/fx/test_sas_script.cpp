@@ -127,3 +127,20 @@ TEST(SasScript, RenderPortCascades) {
             << errors.str();
     }
 }
+
+// What FX Composer took and D3DX's SAS hosts documented less: `Clear=Depth0` (the one depth buffer),
+// `Color0`; `Clear=` names no buffer and is left out with a warning, not an error.
+TEST(SasScript, ClearFormsFxComposerTook) {
+    DiagnosticList diags;
+    auto commands =
+        parseSasScript("Clear=Color0;Clear=Depth0;Clear=;Clear=Stencil0;", SourceLoc{"s.fx", 2, 1}, diags);
+    EXPECT_FALSE(diags.hasErrors()) << diags.str();
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].clear, ScriptCommand::ClearWhat::Color);
+    EXPECT_EQ(commands[1].clear, ScriptCommand::ClearWhat::Depth);
+    EXPECT_EQ(commands[2].clear, ScriptCommand::ClearWhat::Stencil);
+    ASSERT_EQ(diags.items().size(), 1u);
+    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptCommandIgnored);
+    EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
+    EXPECT_EQ(diags.items()[0].loc.column, 27);
+}

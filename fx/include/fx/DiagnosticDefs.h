@@ -11,6 +11,9 @@ FX_DIAGNOSTIC(IncludeNotFound, Error, "cannot open include file '{0}'")
 FX_DIAGNOSTIC(IncludeCaseMismatch, Warning,
               "include file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
 FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
+FX_DIAGNOSTIC(IncludeTrailingText, Warning, "text after the include file name is ignored: '{0}'")
+FX_DIAGNOSTIC(UndefinedConditionCall, Warning,
+              "'{0}' is not a function-like macro here: its call in this condition reads as 0")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
 
@@ -35,6 +38,7 @@ FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
 FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
+FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is ignored: {1}")
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
               "script names technique '{0}', which the effect does not have; skipped")
 FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,

@@ -117,6 +117,15 @@ FX_TARGET_BLEND_STATES(5)
 FX_TARGET_BLEND_STATES(6)
 FX_TARGET_BLEND_STATES(7)
 #undef FX_TARGET_BLEND_STATES
+// D3D9's fixed-function fog, which the SDK's samples switch off beside their shaders (FogTableMode = NONE):
+// accepted, and without effect, as FogEnable.
+FX_RENDER_STATE(FogColor, Color, 0)
+FX_RENDER_STATE(FogTableMode, FogMode, 0)   // NONE
+FX_RENDER_STATE(FogVertexMode, FogMode, 0)  // NONE
+FX_RENDER_STATE(FogStart, Float, 0)
+FX_RENDER_STATE(FogEnd, Float, 1)
+FX_RENDER_STATE(FogDensity, Float, 1)
+FX_RENDER_STATE(RangeFogEnable, Bool, 0)
 
 FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
 FX_STATE_ALIAS(DepthEnable, ZEnable)
@@ -203,6 +212,10 @@ FX_ENUM_VALUE(Cull10, Front, 2)
 FX_ENUM_VALUE(Cull10, Back, 3)
 FX_ENUM_VALUE(DepthWriteMask, Zero, 0)
 FX_ENUM_VALUE(DepthWriteMask, All, 1)
+FX_ENUM_VALUE(FogMode, None, 0)
+FX_ENUM_VALUE(FogMode, Exp, 1)
+FX_ENUM_VALUE(FogMode, Exp2, 2)
+FX_ENUM_VALUE(FogMode, Linear, 3)
 FX_ENUM_VALUE(Shade, Flat, 1)
 FX_ENUM_VALUE(Shade, Gouraud, 2)
 FX_ENUM_VALUE(Shade, Phong, 3)
@@ -249,6 +262,9 @@ FX_ENUM_VALUE(ColorMask, Red, 1)
 FX_ENUM_VALUE(ColorMask, Green, 2)
 FX_ENUM_VALUE(ColorMask, Blue, 4)
 FX_ENUM_VALUE(ColorMask, Alpha, 8)
+// MonoGame's names for every channel and for none (its effect compiler also takes true and false).
+FX_ENUM_VALUE(ColorMask, All, 15)
+FX_ENUM_VALUE(ColorMask, None, 0)
 FX_ENUM_VALUE(Address, Wrap, 1)
 FX_ENUM_VALUE(Address, Mirror, 2)
 FX_ENUM_VALUE(Address, Clamp, 3)

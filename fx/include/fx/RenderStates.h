@@ -29,6 +29,7 @@ enum class StateDomain {
     Filter10,        // D3D10 Filter = MIN_MAG_LINEAR_MIP_POINT
     Cull10,          // D3D10 CullMode: NONE, FRONT, BACK
     DepthWriteMask,  // D3D10 DepthWriteMask: ZERO, ALL
+    FogMode,         // FogTableMode, FogVertexMode: NONE, EXP, EXP2, LINEAR
 };
 
 enum class RenderStateId {

@@ -6,6 +6,7 @@
 #include <fx/Diagnostics.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fx {
@@ -64,5 +65,9 @@ std::vector<ScriptCommand> parseSasScript(const std::string& text, const SourceL
                                           DiagnosticSink& diagnostics);
 
 std::string_view scriptCommandName(ScriptCommand::Kind kind);
+
+// Whether the name a script writes (`Pass=p0`) names the declaration `declared` (`pass P0`): case-blind, as
+// FX Composer and D3DX matched them. The compiler's checks and the runtime's interpreter both ask this.
+bool scriptNameMatches(std::string_view written, std::string_view declared);
 
 }  // namespace fx

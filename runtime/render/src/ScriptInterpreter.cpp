@@ -31,7 +31,7 @@ std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget
 
 const fx::CompiledPass* findPass(const fx::CompiledTechnique& technique, const std::string& name) {
     for (const fx::CompiledPass& pass : technique.passes)
-        if (fx::equalsIgnoreCase(pass.name, name)) return &pass;
+        if (fx::scriptNameMatches(name, pass.name)) return &pass;
     return nullptr;
 }
 

@@ -1,4 +1,4 @@
-// Script pass names are matched exactly.
+// A script names a pass the technique lacks (names match case-blind; P2 is still not p).
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 float4 PS() : COLOR { return 1; }
 technique t < string Script = "Pass=P2;"; >

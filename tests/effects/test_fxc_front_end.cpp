@@ -1,0 +1,112 @@
+// The effect language as fxc, D3DX9, FX Composer and MonoGame read it, not as glslang does: effects written
+// in the styles of shipped game sets, MonoGame's stock effects and FX Composer scripts
+// (tests/data/fxcomposer/) load with the warnings those tools gave, and draw every colour channel.
+#include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
+
+#include <algorithm>
+
+namespace shadowfx::test {
+namespace {
+
+struct Loaded {
+    std::unique_ptr<runtime::EffectRenderer> renderer;
+    fx::DiagnosticList diagnostics;  // parse and compile
+};
+
+Loaded load(const std::string& path) {
+    sharedContext();
+    Loaded out;
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, fx::ParseOptions{}, out.diagnostics);
+    if (!effect) {
+        ADD_FAILURE() << "parse failed:\n" << out.diagnostics.str();
+        return out;
+    }
+    std::shared_ptr<fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, out.diagnostics);
+    if (!compiled || out.diagnostics.hasErrors()) {
+        ADD_FAILURE() << "compile failed:\n" << out.diagnostics.str();
+        return out;
+    }
+    out.renderer = runtime::EffectRenderer::create(compiled, out.diagnostics);
+    if (!out.renderer) ADD_FAILURE() << "renderer creation failed:\n" << out.diagnostics.str();
+    return out;
+}
+
+int count(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
+    return static_cast<int>(std::count_if(diagnostics.items().begin(), diagnostics.items().end(),
+                                          [&](const fx::Diagnostic& d) { return d.id == id; }));
+}
+
+// Fails on a blank or constant frame, and on one that lacks a channel: a colour mask read as red alone
+// (`ColorWriteEnable = true` taken for 1) leaves green and blue at the clear colour everywhere.
+::testing::AssertionResult drawsEveryChannel(const runtime::FrameImage& image) {
+    if (::testing::AssertionResult varied = notConstant(image); !varied) return varied;
+    int low[3] = {255, 255, 255}, high[3] = {0, 0, 0};
+    for (size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+        for (int c = 0; c < 3; ++c) {
+            low[c] = std::min<int>(low[c], image.rgba[i + c]);
+            high[c] = std::max<int>(high[c], image.rgba[i + c]);
+        }
+    for (int c = 0; c < 3; ++c)
+        if (high[c] - low[c] < 64)
+            return ::testing::AssertionFailure()
+                   << "channel " << c << " spans only " << low[c] << ".." << high[c];
+    return ::testing::AssertionSuccess();
+}
+
+// Keywords, states and values in any case, `shared` parameters, `float4 a[3 * N - 4]`, an include line
+// with text after its file name and `#if MACRO(X)` on an undefined macro: one warning each, and the
+// frame lit by both coloured lights.
+TEST(FxcFrontEnd, GameCoreStyleEffect) {
+    Loaded loaded = load("tests/data/fxcomposer/game_core_style.fx");
+    ASSERT_TRUE(loaded.renderer);
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::IncludeTrailingText), 1) << loaded.diagnostics.str();
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::UndefinedConditionCall), 1) << loaded.diagnostics.str();
+    const fx::Effect& effect = *loaded.renderer->effect().effect;
+    ASSERT_TRUE(effect.findParameter("WorldViewProj"));
+    EXPECT_TRUE(effect.findParameter("WorldViewProj")->isShared);
+    EXPECT_EQ(effect.findParameter("WorldViewProj")->type.shape, fx::Shape::Matrix);
+    ASSERT_TRUE(effect.findParameter("LightColors"));
+    EXPECT_EQ(effect.findParameter("LightColors")->type.arrayDims, std::vector<int>{2});
+    ASSERT_TRUE(effect.findTechnique("Main"));
+    EXPECT_EQ(effect.findTechnique("Main")->passes.size(), 1u);
+
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+}
+
+// MonoGame's stock-effect macros: a `sampler` without sampler_state sampled by a Texture2D, SV_Position0
+// and SV_Target0, ColorWriteEnable = true and All, and vs_6_0/ps_6_0: both techniques draw.
+TEST(FxcFrontEnd, MonoGameStyleEffect) {
+    Loaded loaded = load("tests/data/fxcomposer/monogame_style.fx");
+    ASSERT_TRUE(loaded.renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    for (const char* technique : {"BasicEffect", "BasicEffect_SM6"}) {
+        SCOPED_TRACE(technique);
+        ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72, technique));
+        EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+    }
+}
+
+// ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
+// warnings, and the pass (named `P0`, scripted `Pass=p0`) draws into the frame.
+TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {
+    Loaded loaded = load("tests/data/fxcomposer/tolerated_script.fx");
+    ASSERT_TRUE(loaded.renderer);
+    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::ScriptCommandIgnored), 3) << loaded.diagnostics.str();
+    for (const fx::Diagnostic& d : loaded.diagnostics.items())
+        if (d.id == fx::DiagId::ScriptCommandIgnored) {
+            EXPECT_EQ(d.severity, fx::Severity::Warning);
+            EXPECT_EQ(d.loc.file, "tests/data/fxcomposer/tolerated_script.fx");
+            EXPECT_GE(d.loc.line, 28);
+            EXPECT_LE(d.loc.line, 30);
+        }
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+}
+
+}  // namespace
+}  // namespace shadowfx::test
