@@ -665,7 +665,7 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
             }
             case ScriptCommand::Kind::LoopEnd:
                 if (--loops < 0) {
-                    error(DiagId::ScriptUnbalancedLoop, c.loc, {"LoopEnd without LoopByCount"});
+                    error(DiagId::ScriptLoopEndWithoutLoop, c.loc, {});
                     loops = 0;
                 }
                 break;
@@ -673,8 +673,7 @@ void Compiler::validateScript(const std::vector<ScriptCommand>& commands, const 
                 break;
         }
     }
-    if (loops > 0 && !commands.empty())
-        error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {"LoopByCount without LoopEnd"});
+    if (loops > 0 && !commands.empty()) error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {});
 }
 
 void Compiler::scripts() {

@@ -38,9 +38,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
         const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
         if (!semantic.empty())
-            diagnostics.report(fx::DiagId::Unused, parameter.loc,
-                               {"parameter '" + parameter.name + "' has no semantic; bound as '" + semantic +
-                                "' by its name, as an application setting it by name would"});
+            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc, {parameter.name, semantic});
     }
     return std::unique_ptr<EffectRenderer>(new EffectRenderer(std::move(resources)));
 }
