@@ -901,6 +901,10 @@ void Compiler::finishPendingStages() {
                 if (first) error(DiagId::CompileWorkerFailed, function, {outcome.crossError});
                 mFailed = true;
                 continue;
+            case Status::SanitizerReport:
+                if (first) error(DiagId::CompileWorkerSanitizerReport, function, {outcome.crossError});
+                mFailed = true;
+                continue;
         }
         StageProgram& program = stageProgram(pass, lowered.stage);
         program = outcome.program;

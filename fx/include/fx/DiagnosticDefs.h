@@ -60,6 +60,9 @@ FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this sha
 FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
               "the HLSL compiler did not finish this shader within {0} ms and was stopped")
 FX_DIAGNOSTIC(CompileWorkerFailed, Error, "the HLSL compiler's worker process failed: {0}")
+FX_DIAGNOSTIC(CompileWorkerSanitizerReport, Error,
+              "the HLSL compiler's worker process stopped on a sanitizer report ({0}); the report is on "
+              "standard error")
 FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
               "no shadowfx-compile-worker found (set SHADOWFX_COMPILE_WORKER); compiling in this process, "
               "where a crash of the HLSL compiler ends the program")
