@@ -228,8 +228,11 @@ TEST(Bench, ScenesTakeSceneFilesMixedWithBuiltinNames) {
 // with the G-buffer pixel for pixel: a frame off by a pixel, mirrored, blank or black fails the bound (the
 // scene keeps a large part of its receivers in shadow).
 TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
-#ifndef SHADOWFX_OSG_PEER_BUILT
-    GTEST_SKIP() << "shadowfx-osg-peer is not built (OpenSceneGraph not found, or a sanitized build)";
+#if defined(SHADOWFX_OSG_PEER_SANITIZED)
+    GTEST_SKIP() << "sanitized build: shadowfx-osg-peer is not built (OpenSceneGraph is not instrumented)";
+#elif !defined(SHADOWFX_OSG_PEER_BUILT)
+    FAIL() << "shadowfx-osg-peer is not built: CMake did not find OpenSceneGraph 3.6 "
+              "(libopenscenegraph-dev, which scripts/install-deps.sh installs)";
 #else
     const shadowfx::test::ScratchDirectory scratch("bench_peer");
     const std::filesystem::path out = scratch / "out";
