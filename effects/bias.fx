@@ -193,8 +193,8 @@ float4 DepthTargetPS(ReceiverVertexOutput IN) : COLOR
 technique constant
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -211,7 +211,7 @@ technique constant
 technique slope_state
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -245,7 +245,7 @@ technique slope_state
 technique slope_shader
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -262,7 +262,7 @@ technique slope_shader
 technique linear_z
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

@@ -222,8 +222,8 @@ float4 BlurredPS(SceneVertexOutput IN) : COLOR
 technique blurred
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing, widened by "
-                                    "the blurred receiver marks";
+    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: uniform map, perspective "
+                                    "aliasing, widened by the blurred receiver marks";
     string Script = "Pass=RenderShadowMap; Pass=BlurMarksX; Pass=BlurY;"
                     "LoopByCount=BlurLoops; Pass=BlurX; Pass=BlurY; LoopEnd=;"
                     "Pass=RenderScene;";

@@ -324,9 +324,9 @@ float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
 technique hard
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
-                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
-                                    "17 %, the uniform map 42 %)";
+    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
+                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
+                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
@@ -340,9 +340,9 @@ technique hard
 technique blended
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
-                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
-                                    "17 %, the uniform map 42 %)";
+    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
+                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
+                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
@@ -355,9 +355,9 @@ technique blended
 // `blended` in the D3D11 form: the same image, the same expectations and known limitations.
 technique11 blended11
 <
-    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on "
-                                    "the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 point; focused.fx "
-                                    "17 %, the uniform map 42 %)";
+    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
+                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
+                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;

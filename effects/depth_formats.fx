@@ -158,8 +158,8 @@ float4 Fixed24PS(ReceiverVertexOutput IN) : COLOR
 technique d16
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -174,8 +174,8 @@ technique d16
 technique d24
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -190,8 +190,8 @@ technique d24
 technique r32f
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

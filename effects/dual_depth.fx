@@ -79,9 +79,9 @@ float4 SinglePassDualShadowPS(ReceiverVertexOutput IN) : COLOR
 technique peel
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
-                                    "Offset: a constant bias; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
+                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
+                                    "uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.8;  // measured 0.53 % dual-l, 0.34 % double-torus
@@ -94,9 +94,9 @@ technique peel
 technique peel_cull
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
-                                    "Offset: a constant bias; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
+                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
+                                    "uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.52;  // measured 0.07 % dual-l, 0.32 % double-torus
@@ -109,9 +109,9 @@ technique peel_cull
 technique single_pass
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the open ground has no second layer, so its z_dual is z1 + "
-                                    "Offset: a constant bias; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
+                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
+                                    "uniform map, perspective aliasing";
     string Script = "Pass=ClearFrontBack;"
                     "Pass=RenderFrontBack;"
                     "Pass=RenderScene;";

@@ -249,8 +249,9 @@ float4 ShadeBlurredPS(EyeVertexOutput IN) : COLOR
 technique blur
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground (blurred, not removed); "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground (blurred, not "
+                                    "removed); light-behind-viewer [ordinary]: uniform map, perspective "
+                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderShadowTerm;"
                     "LoopByCount=Iterations; Pass=BlurX; Pass=BlurY; LoopEnd=;"
                     "Pass=RenderScene;";

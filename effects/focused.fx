@@ -16,8 +16,8 @@ bool Pancake : LightPancaking
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne "
-                                    "on the ground (17 %, the uniform map 42 %)";
+    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
+                                    "leaves acne on the ground (17 %, the uniform map 42 %)";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.08;  // measured 0.013 % on dual-l, 0.037 % on teapot (hard truth)

@@ -62,9 +62,9 @@ float4 IdShadowPS(ReceiverVertexOutput IN) : COLOR
 technique main
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: ids alias along the casters' silhouettes where texels stretch "
-                                    "over the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: ids alias along the casters' silhouettes where "
+                                    "texels stretch over the ground; light-behind-viewer [ordinary]: uniform "
+                                    "map, perspective aliasing";
     string Script = "Pass=RenderIdMap;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";

@@ -31,8 +31,9 @@ bool MiddleVector : LiSPSMMiddleVector
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "near-far-huge: z_n = 0.001 makes n_opt of eq. 1 tiny: the warp leaves "
-                                    "the far receivers few texels (0.76 %, the uniform map 0.03 %)";
+    string StressExpectedFailures = "near-far-huge [uniform]: z_n = 0.001 makes n_opt of eq. 1 tiny: the "
+                                    "warp leaves the far receivers few texels (0.76 %, the uniform map 0.03 "
+                                    "%)";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.12;  // measured 0.031 % on dual-l, 0.061 % on teapot (hard truth)

@@ -261,8 +261,8 @@ float4 PoissonPS(SceneVertexOutput IN) : COLOR
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -277,8 +277,8 @@ technique bilinear
 technique hardware
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -293,8 +293,8 @@ technique hardware
 technique11 hardware11
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // the same image as `hardware`
@@ -342,8 +342,9 @@ technique11 hardware11
 technique jittered4x4
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
+                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
+                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.024 % on dual-l, 0.055 % on teapot (hard truth)
@@ -358,8 +359,9 @@ technique jittered4x4
 technique jittered_noise
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
+                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
+                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -374,8 +376,9 @@ technique jittered_noise
 technique poisson
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: the kernel-scaled SlopeBias does not cover a 0.5 degree slope; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
+                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
+                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.016 % on dual-l, 0.041 % on teapot (hard truth)

@@ -208,9 +208,9 @@ float4 PcssPS(SceneVertexOutput IN) : COLOR
 technique pcss
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground under a kernel up to 32 "
-                                    "texels; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground under a kernel up "
+                                    "to 32 texels; light-behind-viewer [ordinary]: uniform map, perspective "
+                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     // measured 0.013 % on dual-l, 0.053 % on teapot (hard truth); 0.084 / 0.116 % against the area-light

@@ -192,12 +192,13 @@ float4 CubePS(SceneVertexOutput IN) : COLOR
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures =
-        "grazing: a 0.5 degree sun; the capped receiver-plane bias leaves acne on the ground (3.2 %; psm.fx "
-        "14.4 %, the uniform map 41.8 %); "
-        "behind-ordinary: the light low in front of the viewer lies just above the ground in post-perspective "
-        "space, and the faces' texels on the near ground stretch along the light (1.6 % false light at "
-        "1024^2, 0.097 % at 4096^2: resolution; psm.fx fades into focused.fx there, 0.097 %)";
+    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
+                                    "leaves acne on the ground (3.2 %, psm.fx 14.4 %, the uniform map 41.8 "
+                                    "%); behind-ordinary [uniform]: the light low in front of the viewer "
+                                    "lies just above the ground in post-perspective space, and the faces' "
+                                    "texels on the near ground stretch along the light (1.6 % false light at "
+                                    "1024^2, 0.097 % at 4096^2: resolution, psm.fx fades into focused.fx "
+                                    "there, 0.097 %)";
     string Script = "Pass=ClearAtlas; Pass=Face0; Pass=Face1; Pass=Face2; Pass=Face3; Pass=Face4; Pass=Face5;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";

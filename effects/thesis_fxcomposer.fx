@@ -356,11 +356,11 @@ technique main
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
     // Known limitations `shadowfx stress` reports as xfail (docs/measurement.md, "shadowfx stress"): a
-    // constant depth bias cannot follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007,
-    // "Slope-scale bias"); a view-independent map magnifies its texels where the shadows of casters behind
-    // the viewer run towards the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
+    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
+    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
 >
 {
     pass ClearShadowMap
@@ -428,8 +428,8 @@ technique11 main11
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
 >
 {
     pass ClearShadowMap
@@ -491,11 +491,11 @@ technique hardware
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     // Known limitations `shadowfx stress` reports as xfail (docs/measurement.md, "shadowfx stress"): a
-    // constant depth bias cannot follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007,
-    // "Slope-scale bias"); a view-independent map magnifies its texels where the shadows of casters behind
-    // the viewer run towards the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
-    string StressExpectedFailures = "grazing: constant bias, acne on the ground; "
-                                    "light-behind-viewer: uniform map, perspective aliasing";
+    // follow the ground's depth slope under a sun 0.5 degrees high (Lehőcz 2007, "Slope-scale bias"); a
+    // view-independent map magnifies its texels where the shadows of casters behind the viewer run towards
+    // the camera (Kozlov 2004, §14.2; the parameterizations of issue #6 attack it).
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
+                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
 >
 {
     pass RenderShadowDepth

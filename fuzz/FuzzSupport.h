@@ -34,7 +34,9 @@ inline std::string text(const uint8_t* data, size_t size) {
 // Parse + compile one input with `options`; traps when the result and the diagnostics disagree (an
 // effect without errors that did not compile, or errors with an effect), the finding of both compiler
 // targets. glslang is slow on huge units, so inputs over 64 KiB are left to the parser target.
-inline int compileInput(const uint8_t* data, size_t size, const fx::CompileOptions& options) {
+// `inspect`, when given, sees the diagnostics of every compiled input.
+inline int compileInput(const uint8_t* data, size_t size, const fx::CompileOptions& options,
+                        void (*inspect)(const fx::DiagnosticList&) = nullptr) {
     if (size > (64u << 10)) return 0;
     const std::string input = text(data, size);
     fx::DiagnosticList diagnostics;
@@ -43,6 +45,7 @@ inline int compileInput(const uint8_t* data, size_t size, const fx::CompileOptio
     if (!effect) return 0;
     std::unique_ptr<fx::CompiledEffect> compiled = fx::compileEffect(effect, options, diagnostics);
     if ((compiled != nullptr) == diagnostics.hasErrors()) __builtin_trap();
+    if (inspect) inspect(diagnostics);
     (void)diagnostics.str();
     return 0;
 }

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in fuzz/ with clang into build-fuzz/ and runs each for SECONDS (default 60)
 # on one core, one after the other. Corpora grow in build-fuzz/corpus/TARGET/ (seeded from effects/,
-# tests/data/, fuzz/seeds/ and scenes/); a crash leaves build-fuzz/artifacts/TARGET/crash-* and fails the script.
+# tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
+# any finding in build-fuzz/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
+# an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
+# input. It runs every target before it exits.
 # Every crash found is fixed and added to tests/data/malformed/ with its golden diagnostics.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
@@ -59,13 +62,25 @@ for target in "${targets[@]}"; do
   # Run in an empty folder: the scene loader resolves mesh paths there, not in the repository.
   work="$(mktemp -d)"
   echo "== $target: ${seconds}s"
-  if ! (cd "$work" && "$root/build-fuzz/fuzz/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
-          -rss_limit_mb=3072 -print_final_stats=1 -artifact_prefix="$root/build-fuzz/artifacts/$target/" \
-          "$root/build-fuzz/corpus/$target" 2>&1 | tee "$root/build-fuzz/$target.log" | grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+==ERROR|SUMMARY)' ); then
-    :
+  # The fuzzer's own exit status (a crash, leak, timeout or OOM exits non-zero), its artifacts, and the
+  # number of inputs it ran: a target that starts and runs nothing tests nothing.
+  log="$root/build-fuzz/$target.log"
+  fuzzer_status=0
+  (cd "$work" && "$root/build-fuzz/fuzz/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
+     -rss_limit_mb=3072 -print_final_stats=1 -artifact_prefix="$root/build-fuzz/artifacts/$target/" \
+     "$root/build-fuzz/corpus/$target" >"$log" 2>&1) || fuzzer_status=$?
+  grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+==ERROR|SUMMARY)' "$log" || echo "$target: no statistics in $log"
+  if [ "$fuzzer_status" -ne 0 ]; then
+    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-fuzz/$target.log)"; status=1
   fi
-  if ls "build-fuzz/artifacts/$target"/crash-* "build-fuzz/artifacts/$target"/timeout-* "build-fuzz/artifacts/$target"/oom-* >/dev/null 2>&1; then
-    echo "$target: findings in build-fuzz/artifacts/$target/"; status=1
+  findings=$(find "build-fuzz/artifacts/$target" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
+    -o -name 'timeout-*' -o -name 'oom-*' -o -name 'slow-unit-*' \) | sort)
+  if [ -n "$findings" ]; then
+    echo "$target: findings in build-fuzz/artifacts/$target/:"; echo "$findings"; status=1
+  fi
+  executed=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -1)
+  if [ "${executed:-0}" -eq 0 ]; then
+    echo "$target: ran no input (log: build-fuzz/$target.log)"; status=1
   fi
   echo "corpus: $(ls "build-fuzz/corpus/$target" | wc -l) inputs"
   rm -rf "$work"

@@ -2,13 +2,17 @@
 # Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ and runs the whole
 # test suite under them. A sanitizer report fails the test that triggered it.
 #
-# Leak checking (LeakSanitizer) covers the GL-free tests (CTest label "fx": parser, compiler, corpus)
-# completely. The GL tests (labels "runtime", "effects") run with ASan and UBSan but without LeakSanitizer:
+# Leak checking (LeakSanitizer) covers the GL-free tests (CTest label "fx": parser, compiler, corpus): the
+# test processes at exit, and the compile workers they start (glslang, SPIRV-Cross, our stage-compile
+# code) after every job, since the workers inherit ASAN_OPTIONS; a worker's finding fails its compile with
+# CompileWorkerSanitizerReport (docs/testing.md, "Sanitizers"). The GL tests (labels "runtime", "effects") run with ASan and UBSan but without LeakSanitizer:
 # Mesa's EGL path dlopen()s swrast_dri.so and dlclose()s it before exit, so its one-time allocations are
 # reported from "<unknown module>" frames that no suppression can name (and our own frames sit below
 # them, which we must not suppress). Set SHADOWFX_LEAKS_EVERYWHERE=1 to check them anyway. Leaks of GL
 # objects and memory across effect load/unload are covered by tests/runtime/test_load_unload_leaks.cpp.
 # Named Mesa/LLVM leaks are suppressed in scripts/lsan-suppressions.txt, one reason each.
+# The one test skipped here, and named in CTest's list of skipped tests: the OSG peer's
+# (Bench.PeerOsgRowsAreScoredAgainstTheSameTruth), since this build does not build the peer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

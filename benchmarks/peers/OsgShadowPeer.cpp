@@ -45,6 +45,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -350,6 +351,34 @@ osg::ref_ptr<osgShadow::ShadowTechnique> makeTechnique(const std::string& name, 
     return nullptr;
 }
 
+// The sizes of the depth textures the technique made, found by asking GL about every texture name up to
+// the first unused run of them: the pbuffer has no depth texture of its own, so these are the shadow maps.
+// What the technique did with the requested size, not what it was told.
+std::vector<std::pair<int, int>> shadowMapSizes() {
+    std::vector<std::pair<int, int>> sizes;
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    for (GLuint name = 1, unused = 0; unused < 64; ++name) {
+        if (!glIsTexture(name)) {
+            ++unused;
+            continue;
+        }
+        unused = 0;
+        glBindTexture(GL_TEXTURE_2D, name);
+        if (glGetError() != GL_NO_ERROR) continue;  // not a 2D texture
+        GLint width = 0, height = 0, format = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &height);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+        const bool depth = format == GL_DEPTH_COMPONENT || format == GL_DEPTH_COMPONENT16 ||
+                           format == GL_DEPTH_COMPONENT24 || format == GL_DEPTH_COMPONENT32 ||
+                           format == 0x8CAC /* GL_DEPTH_COMPONENT32F */;
+        if (depth && width > 0) sizes.emplace_back(width, height);
+    }
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
+    return sizes;
+}
+
 }  // namespace
 
 // [SECTION] Frames
@@ -502,10 +531,19 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
+    // Honoured: it made shadow maps, each of the requested size (PSSM's splits and VDSM's maps are each
+    // one texture of that size).
+    const std::vector<std::pair<int, int>> mapSizes = shadowMapSizes();
+    const bool honoured =
+        !mapSizes.empty() && std::all_of(mapSizes.begin(), mapSizes.end(), [&](const std::pair<int, int>& s) {
+            return s.first == options.mapSize && s.second == options.mapSize;
+        });
     nlohmann::ordered_json record{{"peer", "osg/" + options.technique},
                                   {"technique", options.technique},
                                   {"scene", scene->name},
                                   {"map_size", options.mapSize},
+                                  {"shadow_map_sizes", mapSizes},
+                                  {"map_size_honoured", honoured},
                                   {"width", options.width},
                                   {"height", options.height},
                                   {"gl_renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER))},

@@ -234,7 +234,8 @@ std::optional<StageOutcome> decodeOutcome(const std::string& payload) {
     outcome.crossError = r.str();
     outcome.signal = r.i32();
     readProgram(r, outcome.program);
-    if (!r.done() || status > static_cast<uint32_t>(StageOutcome::Status::WorkerFailed)) return std::nullopt;
+    if (!r.done() || status > static_cast<uint32_t>(StageOutcome::Status::SanitizerReport))
+        return std::nullopt;
     outcome.status = static_cast<StageOutcome::Status>(status);
     return outcome;
 }
@@ -279,7 +280,7 @@ bool receiveAll(int fd, char* data, size_t size) {
     return true;
 }
 
-int serveCompileRequests(int fd) {
+int serveCompileRequests(int fd, bool (*jobLeftNoFinding)()) {
     // For the tests of the time limit and of a worker killed mid-request only: a unit containing this
     // marker makes the worker hang instead of compiling.
     const char* hangMarker = std::getenv("SHADOWFX_COMPILE_WORKER_TEST_HANG");
@@ -295,6 +296,7 @@ int serveCompileRequests(int fd) {
         if (hangMarker && *hangMarker && job->hlsl.find(hangMarker) != std::string::npos)
             for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
         std::string reply = frame(FrameKind::Reply, encodeOutcome(compileStageInProcess(*job)));
+        if (jobLeftNoFinding && !jobLeftNoFinding()) return kWorkerSanitizerExitStatus;
         if (!sendAll(fd, reply.data(), reply.size())) return 2;
     }
 }

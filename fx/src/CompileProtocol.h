@@ -42,7 +42,15 @@ std::optional<FrameHeader> parseFrameHeader(const char* header);
 bool sendAll(int fd, const char* data, size_t size);
 bool receiveAll(int fd, char* data, size_t size);
 
+// The exit status of a worker that stopped on a sanitizer finding (an AddressSanitizer, UBSan or
+// LeakSanitizer report on its standard error) instead of answering: the worker sets it as the sanitizers'
+// `exitcode` and uses it after its own leak check, and the compiler reports it as such, never as an
+// ordinary crash.
+inline constexpr int kWorkerSanitizerExitStatus = 86;
+
 // The worker side: answers requests on `fd` until the stream ends; returns the process exit status.
-int serveCompileRequests(int fd);
+// `jobLeftNoFinding`, when given, runs after each job and before its reply; false ends the worker with
+// kWorkerSanitizerExitStatus and no reply (the sanitized worker's leak check).
+int serveCompileRequests(int fd, bool (*jobLeftNoFinding)() = nullptr);
 
 }  // namespace fx

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
@@ -79,6 +80,15 @@ StageOutcome failure(StageOutcome::Status status, std::string text, int signal =
     outcome.crossError = std::move(text);
     outcome.signal = signal;
     return outcome;
+}
+
+// A worker that exited instead of answering: a sanitizer finding (its report is on standard error, which
+// workers share with the compiler) or any other exit, `when` said after the status.
+StageOutcome exitedOutcome(int exitStatus, const std::string& when) {
+    const std::string text = "exit status " + std::to_string(exitStatus) + (when.empty() ? "" : " " + when);
+    return failure(exitStatus == kWorkerSanitizerExitStatus ? StageOutcome::Status::SanitizerReport
+                                                            : StageOutcome::Status::Crashed,
+                   text);
 }
 
 }  // namespace
@@ -226,7 +236,11 @@ struct CompileWorkers::Impl {
             if (!acquire(worker, error))
                 return failure(StageOutcome::Status::WorkerFailed, "cannot start '" + path + "': " + error);
             if (!sendAll(worker.fd, request.data(), request.size())) {
-                discard(worker, true);
+                // Killed from outside while idle: replaced and sent again. A worker that exited by itself
+                // while idle ran nothing since its last reply, yet its status is a finding, never dropped.
+                const int status = discard(worker, true);
+                if (status != -1 && WIFEXITED(status))
+                    return exitedOutcome(WEXITSTATUS(status), "while idle");
                 if (attempt == 0) continue;
                 return failure(StageOutcome::Status::WorkerFailed, "the worker does not accept requests");
             }
@@ -250,10 +264,8 @@ struct CompileWorkers::Impl {
                 int status = discard(worker, false);
                 if (status != -1 && WIFSIGNALED(status))
                     return failure(StageOutcome::Status::Crashed, "", WTERMSIG(status));
-                return failure(StageOutcome::Status::Crashed,
-                               status != -1 && WIFEXITED(status)
-                                   ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                   : "stream closed");
+                if (status != -1 && WIFEXITED(status)) return exitedOutcome(WEXITSTATUS(status), "");
+                return failure(StageOutcome::Status::Crashed, "stream closed");
             }
             std::optional<StageOutcome> outcome;
             if (h && h->kind == FrameKind::Reply) outcome = decodeOutcome(payload);
@@ -280,7 +292,16 @@ CompileWorkers::~CompileWorkers() {
     for (const Worker& worker : mImpl->idle) close(worker.fd);  // end of stream: the worker exits
     for (const Worker& worker : mImpl->idle) {
         int status = 0;
-        waitpid(worker.pid, &status, 0);
+        if (waitpid(worker.pid, &status, 0) != worker.pid || !WIFEXITED(status) || WEXITSTATUS(status) == 0)
+            continue;  // reaped, or killed from outside while idle (as a compile would have found it)
+        // A worker that failed on its way out reaches no compile and no caller. In a sanitizer build that
+        // must still fail the run, as the sanitizers fail a process that ends with a finding: stop here.
+        if (kAddressSanitizer) {
+            std::fprintf(stderr,
+                         "shadowfx-compile-worker (pid %d) exited with status %d after its last job\n",
+                         static_cast<int>(worker.pid), WEXITSTATUS(status));
+            std::abort();
+        }
     }
 }
 

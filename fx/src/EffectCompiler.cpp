@@ -699,7 +699,7 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             }
             case ScriptCommand::Kind::LoopEnd:
                 if (--loops < 0) {
-                    error(DiagId::ScriptUnbalancedLoop, c.loc, {"LoopEnd without LoopByCount"});
+                    error(DiagId::ScriptLoopEndWithoutLoop, c.loc, {});
                     loops = 0;
                 }
                 break;
@@ -707,8 +707,7 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 break;
         }
     }
-    if (loops > 0 && !commands.empty())
-        error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {"LoopByCount without LoopEnd"});
+    if (loops > 0 && !commands.empty()) error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {});
     size_t kept = 0;
     for (size_t index = 0; index < commands.size(); ++index) {
         if (ignored[index]) continue;
@@ -960,6 +959,10 @@ void Compiler::finishPendingStages() {
             }
             case Status::WorkerFailed:
                 if (first) error(DiagId::CompileWorkerFailed, function, {outcome.crossError});
+                mFailed = true;
+                continue;
+            case Status::SanitizerReport:
+                if (first) error(DiagId::CompileWorkerSanitizerReport, function, {outcome.crossError});
                 mFailed = true;
                 continue;
         }

@@ -309,8 +309,8 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     out.files[path] = markStringizing(source);
     out.includedFiles = {path};
     if (source.size() > options.maxSourceBytes) {
-        diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0},
-                           {"source exceeds " + std::to_string(options.maxSourceBytes) + " bytes"});
+        diagnostics.report(DiagId::SourceTooLarge, SourceLoc{path, 0, 0},
+                           {std::to_string(options.maxSourceBytes)});
         return false;
     }
     if (!checkCharacters(source, path, diagnostics)) return false;
@@ -382,8 +382,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
             if (quote != std::string::npos) loc.column = static_cast<int>(quote) + 1;
             auto failure = includer.failures.find(header);
             if (failure != includer.failures.end() && !failure->second.empty())
-                diagnostics.report(DiagId::PreprocessorError, loc,
-                                   {"cannot include '" + header + "': " + failure->second});
+                diagnostics.report(DiagId::IncludeFailed, loc, {header, failure->second});
             else
                 diagnostics.report(DiagId::IncludeNotFound, loc, {header});
         } else {
@@ -408,8 +407,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
         }
         diagnostics.report(DiagId::IncludeCaseMismatch, loc, {mismatch.header, mismatch.found});
     }
-    if (!ok && !reported)
-        diagnostics.report(DiagId::PreprocessorError, SourceLoc{path, 0, 0}, {"preprocessing failed"});
+    if (!ok && !reported) diagnostics.report(DiagId::PreprocessingFailed, SourceLoc{path, 0, 0}, {});
     directives.takeUndefinedCallMarkers(text, diagnostics);
     out.text = std::move(text);
     return ok && !reported;

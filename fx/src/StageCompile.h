@@ -21,12 +21,13 @@ struct StageJob {
 
 struct StageOutcome {
     enum class Status {
-        Compiled,      // `program` holds GLSL and reflection
-        HlslFailed,    // glslang rejected the unit: `messages` say why
-        CrossFailed,   // SPIRV-Cross threw: `crossError`
-        Crashed,       // the worker died (`signal`, 0 if it exited) before it answered
-        TimedOut,      // the worker took longer than the time limit and was killed
-        WorkerFailed,  // no worker could be started, or it answered something unreadable: `crossError`
+        Compiled,         // `program` holds GLSL and reflection
+        HlslFailed,       // glslang rejected the unit: `messages` say why
+        CrossFailed,      // SPIRV-Cross threw: `crossError`
+        Crashed,          // the worker died (`signal`, 0 if it exited) before it answered
+        TimedOut,         // the worker took longer than the time limit and was killed
+        WorkerFailed,     // no worker could be started, or it answered something unreadable: `crossError`
+        SanitizerReport,  // the worker stopped on a sanitizer finding (kWorkerSanitizerExitStatus)
     };
     Status status = Status::Compiled;
     std::vector<HlslMessage> messages;  // glslang's errors and warnings (any status)

@@ -1006,7 +1006,7 @@ int benchCommand(const Arguments& args) {
                                 {"technique", technique},
                                 {"scene", t.scene.name},
                                 {"map_size", mapSize},
-                                {"map_size_honoured", true},
+                                {"map_size_honoured", result->mapSizeHonoured},
                                 {"width", width},
                                 {"height", height},
                                 {"gl_renderer", result->glRenderer},

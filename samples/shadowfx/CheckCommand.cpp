@@ -49,7 +49,8 @@ const char* const kCheckUsage =
     "  --scenes LIST         scenes for every technique, overriding their ExpectScenes annotations\n"
     "                        (built-in names or scene .json files; default: ExpectScenes, else boxes)\n"
     "  --backend LIST        all, osmesa, egl or a comma-separated list (default all: each one that\n"
-    "                        creates a context; one that cannot is NOT_SUPPORTED)\n"
+    "                        creates a context; one that cannot is NOT_SUPPORTED, a named one that\n"
+    "                        cannot FAILs; no context at all exits 1)\n"
     "  --junit FILE          also write the results as JUnit XML\n"
     "  --out DIR             images of failures: "
     "DIR/EFFECT/TECHNIQUE/SCENE.{result,reference,errormask}.png\n"
@@ -458,7 +459,9 @@ public:
                                        std::move(check), outcome, std::move(detail)});
     }
 
-    void runBackend(runtime::Backend backend, const std::vector<EffectPlan>& effects) {
+    // False if the backend creates no context: its rows are NOT_SUPPORTED, or FAIL where the user named
+    // the backend (`required`).
+    bool runBackend(runtime::Backend backend, bool required, const std::vector<EffectPlan>& effects) {
         const std::string backendLabel(runtime::backendName(backend));
         runtime::ContextOptions contextOptions;
         contextOptions.backend = backend;
@@ -466,8 +469,9 @@ public:
         std::unique_ptr<runtime::GlContext> context = runtime::createContext(contextOptions, contextError);
         if (!context) {
             for (const EffectPlan& effect : effects)
-                add(backendLabel, effect.name, "-", "-", "backend", Outcome::NotSupported, contextError);
-            return;
+                add(backendLabel, effect.name, "-", "-", "backend",
+                    required ? Outcome::Fail : Outcome::NotSupported, contextError);
+            return false;
         }
         const std::string glRenderer = context->renderer();
         const std::string key = rendererKey(glRenderer);
@@ -500,6 +504,7 @@ public:
                 }
             }
         }
+        return true;
     }
 
 private:
@@ -760,7 +765,11 @@ int checkCommand(const Arguments& args) {
         return 2;
     }
     std::vector<runtime::Backend> backends;
-    for (const std::string& name : splitList(args.value("--backend", "all"))) {
+    const std::vector<std::string> backendNames = splitList(args.value("--backend", "all"));
+    // Backends the user named (not through "all") must create a context.
+    const bool backendsNamed =
+        std::find(backendNames.begin(), backendNames.end(), "all") == backendNames.end();
+    for (const std::string& name : backendNames) {
         if (name == "all") {
             for (runtime::Backend b : {runtime::Backend::EGL, runtime::Backend::OSMesa})
                 backends.push_back(b);
@@ -861,7 +870,9 @@ int checkCommand(const Arguments& args) {
         return 2;
     }
 
-    for (runtime::Backend backend : backends) checker.runBackend(backend, plans);
+    bool anyContext = false;
+    for (runtime::Backend backend : backends)
+        anyContext = checker.runBackend(backend, backendsNamed, plans) || anyContext;
 
     const std::vector<CheckResult>& results = checker.results();
     printTable(results);
@@ -877,6 +888,10 @@ int checkCommand(const Arguments& args) {
             std::cerr << "shadowfx check: cannot write " << junit << "\n";
             return 1;
         }
+    }
+    if (!anyContext) {
+        std::cerr << "shadowfx check: no backend could create a GL context: nothing was rendered\n";
+        return 1;
     }
     return counts[Outcome::Fail] > 0 ? 1 : 0;
 }

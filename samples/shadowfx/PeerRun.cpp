@@ -119,6 +119,7 @@ std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::Sce
         result.frameMs = record.at("frame_ms").get<std::vector<double>>();
         result.glRenderer = record.at("gl_renderer").get<std::string>();
         result.libraryVersion = record.value("osg_version", "");
+        result.mapSizeHonoured = record.at("map_size_honoured").get<bool>();
     } catch (const std::exception& e) {
         error = "cannot read the peer's record " + json.string() + ": " + e.what();
         return std::nullopt;

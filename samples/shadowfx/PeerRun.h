@@ -29,6 +29,7 @@ struct PeerResult {
     std::vector<float> visibility;  // per pixel, rows top to bottom (the G-buffer's order)
     std::string glRenderer;
     std::string libraryVersion;
+    bool mapSizeHonoured = false;  // every shadow map the peer made has the requested size (it reports)
 };
 
 // Where the built peer `name` ("osg") is: next to this build's shadowfx, or next to the installed one;

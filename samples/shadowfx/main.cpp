@@ -287,7 +287,7 @@ const shadowfx::cli::Command kCommands[] = {
      {},
      {"--effects", "--cases", "--techniques", "--width", "--height", "--map-size", "--uniform", "--backend",
       "--out", "-I", "-D"},
-     {"--reduced", "--list"},
+     {"--reduced", "--list", "--strict"},
      shadowfx::cli::stressCommand,
      -1},
     {"view",

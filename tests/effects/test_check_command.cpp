@@ -9,6 +9,7 @@
 #include <runtime/EffectRenderer.h>
 #include <runtime/ImageCompare.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -97,6 +98,19 @@ long occurrences(const std::string& text, const std::string& what) {
     long count = 0;
     for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
     return count;
+}
+
+// A check that could render nothing is not a pass. Mesa's EGL finds no driver under a wrong
+// LIBGL_DRIVERS_PATH (OSMesa carries its own): the named backend is a FAIL and the exit status 1.
+TEST(CheckCommand, NoGlContextExitsNonZero) {
+    const shadowfx::test::ScratchDirectory scratch("check_no_context");
+    setenv("LIBGL_DRIVERS_PATH", "/nonexistent", 1);
+    const RunResult result =
+        run("check effects/plain_lit.fx --backend egl --out " + (scratch / "out").string());
+    unsetenv("LIBGL_DRIVERS_PATH");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("no backend could create a GL context"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("1 FAIL"), std::string::npos) << result.output;
 }
 
 TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {

@@ -1,5 +1,6 @@
 // `shadowfx stress` as users script against it: the case list, usage errors, declared limitations reported
-// as xfail without failing the run, an undeclared one failing it with an error image, and the JSON.
+// as xfail without failing the run, an undeclared one failing it with an error image, a declaration that
+// excuses only the criteria it names, an xpass failing --strict, and the JSON.
 #include "CliRunner.h"
 #include "ScratchDirectory.h"
 
@@ -128,6 +129,65 @@ TEST(StressCommand, AUniformReferenceThatCannotBeEvaluatedIsAnError) {
             out);
     EXPECT_EQ(absent.exitCode, 1) << absent.output;
     EXPECT_NE(absent.output.find("gives no error on ordinary"), std::string::npos) << absent.output;
+}
+
+// The thesis effect with its declarations replaced by `declaration` on technique main.
+std::filesystem::path declaredEffect(const std::filesystem::path& dir, const std::string& declaration) {
+    std::ifstream in(kSource + "/effects/thesis_fxcomposer.fx");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string effect = text.str();
+    const std::string key = "string StressExpectedFailures";
+    for (size_t at = effect.find(key); at != std::string::npos; at = effect.find(key))
+        effect.replace(at, key.size(), "string StressIgnoredNote");
+    const size_t open = effect.find('<', effect.find("technique main"));
+    effect.insert(open + 1, "\n    string StressExpectedFailures = \"" + declaration + "\";");
+    const std::filesystem::path path = dir / "declared.fx";
+    std::ofstream(path) << effect;
+    return path;
+}
+
+// A declaration excuses the criteria it names and no others: grazing fails on the error criteria, and a
+// declaration naming only shimmer leaves it a FAIL.
+TEST(StressCommand, ADeclarationExcusesOnlyTheCriteriaItNames) {
+    const shadowfx::test::ScratchDirectory scratch("stress_criteria");
+    const std::filesystem::path effect =
+        declaredEffect(scratch.path(), "grazing [shimmer]: the wrong criterion");
+    const RunResult result =
+        run("stress " + effect.string() + " -I effects --techniques main --cases grazing --out " +
+            (scratch.path() / "out").string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const nlohmann::json json = readJson(scratch.path() / "out" / "stress.json");
+    const nlohmann::json* grazing = find(json["results"], "main", "grazing");
+    ASSERT_NE(grazing, nullptr);
+    EXPECT_EQ((*grazing)["result"], "FAIL") << grazing->dump();
+    EXPECT_EQ((*grazing)["excused_criteria"], nlohmann::json::array({"shimmer"}));
+    EXPECT_NE((*grazing)["failed_criteria"], nlohmann::json::array()) << grazing->dump();
+
+    const RunResult bare =
+        run("stress " + declaredEffect(scratch.path(), "grazing: no criteria").string() +
+            " -I effects --techniques main --cases ordinary --out " + (scratch.path() / "bare").string());
+    EXPECT_EQ(bare.exitCode, 1) << bare.output;
+    EXPECT_NE(bare.output.find("names no criteria"), std::string::npos) << bare.output;
+}
+
+// A declared limitation that passes is an xpass: reported, and a failure under --strict.
+TEST(StressCommand, ADeclaredCaseThatPassesIsAnXpassThatFailsStrict) {
+    const shadowfx::test::ScratchDirectory scratch("stress_xpass");
+    const std::filesystem::path effect =
+        declaredEffect(scratch.path(), "far-from-origin [ordinary]: declared, yet it passes");
+    const std::string arguments = "stress " + effect.string() +
+                                  " -I effects --techniques main --cases far-from-origin --out " +
+                                  (scratch.path() / "out").string();
+    const RunResult lenient = run(arguments);
+    EXPECT_EQ(lenient.exitCode, 0) << lenient.output;
+    EXPECT_NE(lenient.output.find("xpass"), std::string::npos) << lenient.output;
+    const nlohmann::json json = readJson(scratch.path() / "out" / "stress.json");
+    const nlohmann::json* far = find(json["results"], "main", "far-from-origin");
+    ASSERT_NE(far, nullptr);
+    EXPECT_EQ((*far)["result"], "xpass") << far->dump();
+    const RunResult strict = run(arguments + " --strict");
+    EXPECT_EQ(strict.exitCode, 1) << strict.output;
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The malformed-input corpus: every tests/data/malformed/*.fx (and a few inputs generated here because
 // they are too large to check in) is parsed and compiled through fx::parseEffectSource + fx::compileEffect.
-// Each must report at least one error, must not crash, and its diagnostics (fx::DiagnosticList::str(),
-// paths relative to the repository root) must equal the golden file beside it (NAME.out).
+// Each must report at least one error, must not crash, and its diagnostics (as fx::DiagnosticList::str()
+// prints them, paths relative to the repository root, each followed by its stable id in brackets) must
+// equal the golden file beside it (NAME.out): a message moved to another id fails as a changed text does.
 //
 // A missing golden fails. To regenerate the goldens after a deliberate change of messages, run
 //     SHADOWFX_UPDATE_GOLDEN=1 build/tests/test_malformed_corpus      (or: ... test_malformed_corpus
@@ -28,6 +29,14 @@ namespace fs = std::filesystem;
 const std::string kSourceDir = SHADOWFX_SOURCE_DIR;
 const std::string kCorpus =
     "tests/data/malformed";  // relative to the repository root, as diagnostics show it
+
+// "file:line:column: severity: message [Id]", one diagnostic a line.
+std::string withIds(const fx::DiagnosticList& diagnostics) {
+    std::string out;
+    for (const fx::Diagnostic& d : diagnostics.items())
+        out += fx::renderDiagnostic(d, false) + " [" + std::string(fx::diagnosticName(d.id)) + "]\n";
+    return out;
+}
 
 std::optional<std::string> readFile(const std::string& path) {
     std::error_code error;
@@ -189,7 +198,7 @@ TEST_P(MalformedCorpus, ReportsTheGoldenDiagnostics) {
         EXPECT_EQ(compiled == nullptr, diagnostics.hasErrors())
             << "compileEffect's result disagrees with its diagnostics";
     }
-    const std::string actual = diagnostics.str();
+    const std::string actual = withIds(diagnostics);
     EXPECT_TRUE(diagnostics.hasErrors())
         << c.path << " is accepted, but the corpus is for inputs that must fail:\n"
         << actual;

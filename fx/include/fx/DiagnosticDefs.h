@@ -10,10 +10,14 @@ FX_DIAGNOSTIC(FileNotFound, Error, "cannot open file '{0}'")
 FX_DIAGNOSTIC(IncludeNotFound, Error, "cannot open include file '{0}'")
 FX_DIAGNOSTIC(IncludeCaseMismatch, Warning,
               "include file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
+// glslang's preprocessor message, as it words it (#error text, macro errors).
 FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
 FX_DIAGNOSTIC(IncludeTrailingText, Warning, "text after the include file name is ignored: '{0}'")
 FX_DIAGNOSTIC(UndefinedConditionCall, Warning,
               "'{0}' is not a function-like macro here: its call in this condition reads as 0")
+FX_DIAGNOSTIC(SourceTooLarge, Error, "source exceeds {0} bytes")
+FX_DIAGNOSTIC(IncludeFailed, Error, "cannot include '{0}': {1}")
+FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
 
@@ -43,13 +47,16 @@ FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
               "script names technique '{0}', which the effect does not have; skipped")
 FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
               "script names no technique the effect has; running its first technique, '{0}'")
-FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "{0}")
+FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "LoopByCount without LoopEnd")
+FX_DIAGNOSTIC(ScriptLoopEndWithoutLoop, Error, "LoopEnd without LoopByCount")
+FX_DIAGNOSTIC(ScriptLoopIndexOutsideLoop, Error, "LoopGetIndex outside a loop")
 FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
 
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
 FX_DIAGNOSTIC(InvalidCompileExpression, Error, "invalid compile expression: {0}")
 FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
+// glslang's own HLSL error and warning text.
 FX_DIAGNOSTIC(HlslError, Error, "{0}")
 FX_DIAGNOSTIC(HlslWarning, Warning, "{0}")
 FX_DIAGNOSTIC(CrossCompileError, Error, "SPIR-V to GLSL: {0}")
@@ -57,6 +64,9 @@ FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this sha
 FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
               "the HLSL compiler did not finish this shader within {0} ms and was stopped")
 FX_DIAGNOSTIC(CompileWorkerFailed, Error, "the HLSL compiler's worker process failed: {0}")
+FX_DIAGNOSTIC(CompileWorkerSanitizerReport, Error,
+              "the HLSL compiler's worker process stopped on a sanitizer report ({0}); the report is on "
+              "standard error")
 FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
               "no shadowfx-compile-worker found (set SHADOWFX_COMPILE_WORKER); compiling in this process, "
               "where a crash of the HLSL compiler ends the program")
@@ -81,10 +91,14 @@ FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
 FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
-FX_DIAGNOSTIC(Unused, Note, "{0}")
 FX_DIAGNOSTIC(UnboundSemantic, Warning,
               "parameter '{0}' has semantic '{1}', which shadowfx does not bind: it keeps its default value "
               "(shadowfx info lists the semantics shadowfx binds)")
+FX_DIAGNOSTIC(ParameterBoundByName, Note,
+              "parameter '{0}' has no semantic; bound as '{1}' by its name, as an application setting it by "
+              "name would")
+FX_DIAGNOSTIC(ParameterNamesMissingLight, Note,
+              "parameter '{0}' names light '{1}', which the scene does not have; it keeps its value")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")

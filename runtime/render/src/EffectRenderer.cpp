@@ -38,9 +38,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
         const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
         if (!semantic.empty())
-            diagnostics.report(fx::DiagId::Unused, parameter.loc,
-                               {"parameter '" + parameter.name + "' has no semantic; bound as '" + semantic +
-                                "' by its name, as an application setting it by name would"});
+            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc, {parameter.name, semantic});
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
             !SemanticBinder::takesSemantic(parameter.semantic))

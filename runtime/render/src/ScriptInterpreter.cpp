@@ -222,8 +222,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
             }
             case Command::Kind::LoopGetIndex:
                 if (loops.empty()) {
-                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc,
-                                       {"LoopGetIndex outside a loop"});
+                    diagnostics.report(fx::DiagId::ScriptLoopIndexOutsideLoop, command.loc, {});
                     return false;
                 }
                 loops.back().indexParameter = command.value;
@@ -231,8 +230,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 break;
             case Command::Kind::LoopEnd:
                 if (loops.empty()) {
-                    diagnostics.report(fx::DiagId::ScriptUnbalancedLoop, command.loc,
-                                       {"LoopEnd without LoopByCount"});
+                    diagnostics.report(fx::DiagId::ScriptLoopEndWithoutLoop, command.loc, {});
                     return false;
                 }
                 if (loops.back().remaining > 0) {
@@ -259,8 +257,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
     }
     if (!loops.empty()) {
         diagnostics.report(fx::DiagId::ScriptUnbalancedLoop,
-                           commands.empty() ? fx::SourceLoc{} : commands.back().loc,
-                           {"LoopByCount without LoopEnd"});
+                           commands.empty() ? fx::SourceLoc{} : commands.back().loc, {});
         return false;
     }
     return true;

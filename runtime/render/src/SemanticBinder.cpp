@@ -338,9 +338,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
             const std::string name = lightName.empty() ? std::string("light0") : lightName;
             binding.light = scene.findLight(name);
             if (!binding.light) {
-                diagnostics.report(fx::DiagId::Unused, parameter.loc,
-                                   {"parameter '" + parameter.name + "' names light '" + name +
-                                    "', which the scene does not have; it keeps its value"});
+                diagnostics.report(fx::DiagId::ParameterNamesMissingLight, parameter.loc,
+                                   {parameter.name, name});
                 continue;
             }
             if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
