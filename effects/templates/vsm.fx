@@ -162,9 +162,9 @@ technique main
     float ExpectMisclassifiedBelow = 0.5;  // % of receiver pixels against the hard-shadow truth
     int ExpectMapSize = 1024;
     // Cases of `shadowfx stress` that are a known limitation of the method, with the reason.
-    string StressExpectedFailures = "light-behind-viewer: uniform map, perspective aliasing; fov-1: the blur "
-                                    "widens shadows by its kernel, and a texel spans 33 pixels under a 1 "
-                                    "degree lens";
+    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: uniform map, perspective "
+                                    "aliasing; fov-1 [ordinary, uniform]: the blur widens shadows by its "
+                                    "kernel, and a texel spans 33 pixels under a 1 degree lens";
 >
 {
     pass RenderMap
