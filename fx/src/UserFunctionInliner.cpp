@@ -15,12 +15,20 @@ namespace {
 // Functions call functions; a recursive one (which HLSL forbids anyway) must not recurse here.
 constexpr int kMaxInlineDepth = 16;
 // Every use of a parameter copies its argument, so nested calls grow the expression geometrically; past
-// this many nodes in all, the rest of the calls stay calls (and are reported where they stand).
-constexpr int kMaxInlinedNodes = 1 << 16;
+// this many nodes in one host expression, the rest of its calls stay calls (and are reported where they
+// stand). rgb_to_hsv of FX Composer's colour-space include ends at about 23000 nodes, having copied some
+// 70000 on the way.
+constexpr int kMaxInlinedNodes = 1 << 18;
 
 class Inliner {
 public:
     explicit Inliner(const Effect& effect) : mEffect(effect) {}
+
+    // Rewrites a whole host expression (rewrite()), with a budget of its own.
+    void rewriteExpression(Expr& e, bool expandStatics) {
+        mBudget = kMaxInlinedNodes;
+        rewrite(e, 0, expandStatics);
+    }
 
     // Rewrites calls inside `e`, bottom-up, and, if `expandStatics`, names of statics.
     void rewrite(Expr& e, int depth = 0, bool expandStatics = true) {
@@ -104,12 +112,15 @@ private:
     }
 
     // The function's locals (parameters included) as expressions over the call's arguments, with their
-    // declared types, and the names of the enclosing scope a branch assigned.
+    // declared types, and how often a branch assigned each name of the enclosing scope.
     struct Locals {
         std::map<std::string, Expr> values;
         std::map<std::string, TypeDesc> types;
-        std::set<std::string> assigned;
+        std::map<std::string, int> assigned;
     };
+
+    // Marks the per-component selects assignComponents builds: (mask, new components, old value).
+    static constexpr const char* kComponentSelect = "components";
 
     static Expr node(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<Expr> args) {
         Expr e;
@@ -161,9 +172,34 @@ private:
         if (columns == 1) return cast(type, std::move(value), loc);
         TypeDesc boolean = type;
         boolean.base = BaseType::Bool;
-        return node(Expr::Kind::Ternary, loc, "",
+        return node(Expr::Kind::Ternary, loc, kComponentSelect,
                     {node(Expr::Kind::Call, loc, boolean.hlslName(), std::move(mask)),
                      node(Expr::Kind::Call, loc, type.hlslName(), std::move(spread)), std::move(old)});
+    }
+
+    // `name` after `if (condition) then else otherwise`: `condition ? then : otherwise`. When one branch
+    // only wrote some components, once (`if (h.x < 0) h.x += 1;`), the condition joins that write's mask
+    // instead, so the old value is copied once rather than on both sides: chains of such branches
+    // (rgb_to_hsv) would otherwise grow as a power of two.
+    Expr merge(const Expr& condition, const std::string& name, Locals& then, Locals& otherwise,
+               const SourceLoc& loc) {
+        const auto once = [&](const Locals& branch) {
+            auto it = branch.assigned.find(name);
+            return it != branch.assigned.end() && it->second == 1;
+        };
+        const auto untouched = [&](const Locals& branch) { return !branch.assigned.count(name); };
+        for (const bool inThen : {true, false}) {
+            Locals& written = inThen ? then : otherwise;
+            Expr& value = written.values[name];
+            if (!once(written) || !untouched(inThen ? otherwise : then) ||
+                value.kind != Expr::Kind::Ternary || value.text != kComponentSelect)
+                continue;
+            Expr taken = condition;
+            if (!inThen) taken = node(Expr::Kind::Unary, loc, "!", {std::move(taken)});
+            value.args[0] = node(Expr::Kind::Binary, loc, "&&", {std::move(value.args[0]), std::move(taken)});
+            return value;
+        }
+        return node(Expr::Kind::Ternary, loc, "", {condition, then.values[name], otherwise.values[name]});
     }
 
     // Runs `statements` (none of them a return) over `locals`; false if one cannot become an expression.
@@ -209,7 +245,7 @@ private:
                         if (!whole) return false;
                         locals.values[statement.name] = std::move(*whole);
                     }
-                    if (!declaredHere.count(statement.name)) locals.assigned.insert(statement.name);
+                    if (!declaredHere.count(statement.name)) ++locals.assigned[statement.name];
                     break;
                 }
                 case Statement::Kind::If: {
@@ -222,13 +258,15 @@ private:
                     if (!execute(statement.then, then, loc, depth) ||
                         !execute(statement.otherwise, otherwise, loc, depth))
                         return false;
-                    std::set<std::string> changed = then.assigned;
-                    changed.insert(otherwise.assigned.begin(), otherwise.assigned.end());
+                    std::set<std::string> changed;
+                    for (const Locals* branch : {&then, &otherwise})
+                        for (const auto& [name, count] : branch->assigned) changed.insert(name);
                     for (const std::string& name : changed) {
-                        locals.values[name] = node(Expr::Kind::Ternary, loc, "",
-                                                   {condition, then.values[name], otherwise.values[name]});
-                        mBudget -= nodes(locals.values[name], mBudget);
-                        if (!declaredHere.count(name)) locals.assigned.insert(name);
+                        // What the branches built is counted already; the merge adds the copies.
+                        const int before = nodes(locals.values[name], mBudget);
+                        locals.values[name] = merge(condition, name, then, otherwise, loc);
+                        mBudget -= std::max(0, nodes(locals.values[name], mBudget) - before);
+                        if (!declaredHere.count(name)) ++locals.assigned[name];
                     }
                     break;
                 }
@@ -268,12 +306,13 @@ void inlineUserFunctionCalls(Effect& effect) {
     // declaration order over the values before them, so their own static names stay names.
     for (Parameter& parameter : effect.parameters)
         if (parameter.initializer && parameter.type.isNumeric())
-            inliner.rewrite(*parameter.initializer, 0, false);
+            inliner.rewriteExpression(*parameter.initializer, false);
     for (Technique& technique : effect.techniques)
         for (Pass& pass : technique.passes)
-            for (StateAssignment& state : pass.states) inliner.rewrite(state.value);
+            for (StateAssignment& state : pass.states) inliner.rewriteExpression(state.value, true);
     for (Parameter& parameter : effect.parameters)
-        if (parameter.initializer && parameter.type.isShader()) inliner.rewrite(*parameter.initializer);
+        if (parameter.initializer && parameter.type.isShader())
+            inliner.rewriteExpression(*parameter.initializer, true);
 }
 
 }  // namespace fx::detail

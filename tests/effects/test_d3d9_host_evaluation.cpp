@@ -6,6 +6,8 @@
 #include <runtime/BuiltinScenes.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace shadowfx::test {
 namespace {
@@ -168,6 +170,70 @@ TEST(D3d9HostEvaluation, FunctionWithBranchesFollowsItsInput) {
     frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(pixelsOf(frame, kWidth, kHeight, 191, 128, 51), kMinObjectPixels);  // (0.75, 0.5, 0.2)
+}
+
+// The hue, saturation and value of a colour, in the style of FX Composer's colour-space include: a chain of
+// else-ifs and two wrap-arounds over one vector, the shape whose inlined expression grows fastest. The
+// host's value must equal the formula's for colours that take each branch of the chain.
+constexpr const char* kHueSaturationValue = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float3 Key = {0.2, 0.7, 0.3};
+float lowest(float3 c) { float m = (c.x < c.y) ? c.x : c.y; m = (m < c.z) ? m : c.z; return m; }
+float highest(float3 c) { float m = (c.x > c.y) ? c.x : c.y; m = (m > c.z) ? m : c.z; return m; }
+float3 to_hsv(float3 c) {
+    float3 hsv = (0.0).xxx;
+    float hi = highest(c);
+    float span = hi - lowest(c);
+    hsv.z = hi;
+    if (span != 0) {
+        hsv.y = span / hi;
+        float3 d;
+        d = (((hi.xxx - c) / 6.0) + (span / 2.0)) / span;
+        if (c.x == hi) hsv.x = d.z - d.y;
+        else if (c.y == hi) hsv.x = (1.0 / 3.0) + d.x - d.z;
+        else if (c.z == hi) hsv.x = (2.0 / 3.0) + d.y - d.x;
+        if (hsv.x < 0.0) { hsv.x += 1.0; }
+        if (hsv.x > 1.0) { hsv.x -= 1.0; }
+    }
+    return hsv;
+}
+static float3 KeyHsv = to_hsv(Key);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(KeyHsv); } }
+)";
+
+// Smith 1978, "Color gamut transform pairs", the hexcone model: hue in [0, 1), saturation, value.
+std::array<float, 3> hueSaturationValue(float r, float g, float b) {
+    const float hi = std::max({r, g, b}), lo = std::min({r, g, b}), span = hi - lo;
+    if (span == 0.0f) return {0.0f, 0.0f, hi};
+    float h = hi == r ? (g - b) / span : hi == g ? 2.0f + (b - r) / span : 4.0f + (r - g) / span;
+    h /= 6.0f;
+    if (h < 0.0f) h += 1.0f;
+    return {h, span / hi, hi};
+}
+
+TEST(D3d9HostEvaluation, ChainedBranchesOverOneVector) {
+    auto renderer = loadEffect(kHueSaturationValue, false, "hue_saturation_value.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    for (const std::array<float, 3>& key :
+         {std::array<float, 3>{0.2f, 0.7f, 0.3f}, {0.9f, 0.1f, 0.3f}, {0.1f, 0.2f, 0.8f}}) {
+        const std::string text =
+            std::to_string(key[0]) + "," + std::to_string(key[1]) + "," + std::to_string(key[2]);
+        SCOPED_TRACE(text);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Key", text, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        const std::array<float, 3> hsv = hueSaturationValue(key[0], key[1], key[2]);
+        EXPECT_GE(pixelsOf(frame, kWidth, kHeight, static_cast<int>(std::lround(hsv[0] * 255)),
+                           static_cast<int>(std::lround(hsv[1] * 255)),
+                           static_cast<int>(std::lround(hsv[2] * 255))),
+                  kMinObjectPixels);
+    }
 }
 
 }  // namespace
