@@ -120,8 +120,9 @@ private:
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
     std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
-    // The current pass's geometry shader outputs (by varying location), which its pixel shader reads.
-    std::optional<std::map<int, TypeDesc>> mGeometryOutputs;
+    // The outputs (by varying location) of the current pass's stage before its pixel shader: its geometry
+    // shader's, else its vertex shader's (none after tessellation), which the pixel shader reads.
+    std::optional<std::map<int, TypeDesc>> mPreviousOutputs;
     // The current pass's hull shader, whose partitioning and output topology its domain shader takes.
     const FunctionDecl* mHull = nullptr;
     bool mFailed = false;
@@ -819,7 +820,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
     DiagnosticList lowering;
     auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, lowering,
-                              mGeometryOutputs ? &*mGeometryOutputs : nullptr, mHull);
+                              mPreviousOutputs ? &*mPreviousOutputs : nullptr, mHull);
     // What the pass lowering cannot express (a semantic or stage form shadowfx has no GL counterpart
     // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
     const bool onlyUnsupported =
@@ -836,8 +837,10 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
         mFailed = true;
         return false;
     }
+    if (stage == ShaderStage::Vertex && !mPreviousOutputs && !mHull)
+        mPreviousOutputs = lowered->varyingOutputs;
     if (stage == ShaderStage::Geometry) {
-        mGeometryOutputs = lowered->varyingOutputs;
+        mPreviousOutputs = lowered->varyingOutputs;
         pass.primitive = lowered->primitive;
     }
     if (stage == ShaderStage::Hull) {
@@ -1031,7 +1034,7 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
 CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
     mPassArguments.clear();
-    mGeometryOutputs.reset();
+    mPreviousOutputs.reset();
     mHull = nullptr;
     pass.name = p.name;
     pass.loc = p.loc;
@@ -1068,6 +1071,10 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                   {"a geometry shader after tessellation takes 'triangle' input: the domain shader outputs "
                    "triangles"});
     }
+    // The vertex shader before the pixel shader, whose inputs it may leave unwritten.
+    for (const StateAssignment& s : p.states)
+        if (findRenderState(s.name) == RenderStateId::VertexShader)
+            if (const Expr* compile = shaderExpr(s)) compileStage(*compile, ShaderStage::Vertex, pass, slot);
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
         if (!id) {
@@ -1075,13 +1082,11 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
             continue;
         }
         if (*id == RenderStateId::GeometryShader || *id == RenderStateId::HullShader ||
-            *id == RenderStateId::DomainShader)
+            *id == RenderStateId::DomainShader || *id == RenderStateId::VertexShader)
             continue;
-        if (*id == RenderStateId::VertexShader || *id == RenderStateId::PixelShader) {
+        if (*id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))
-                compileStage(*compile,
-                             *id == RenderStateId::VertexShader ? ShaderStage::Vertex : ShaderStage::Fragment,
-                             pass, slot);
+                compileStage(*compile, ShaderStage::Fragment, pass, slot);
             continue;
         }
         const StateInfo& info = renderStateInfo(*id);

@@ -945,7 +945,7 @@ private:
         mEffect.order.push_back({DeclRef::Kind::Function, mEffect.functions.size() - 1});
     }
 
-    // The statements of tokens [begin, end) if they are straight-line code (FunctionDecl::straightBody),
+    // The statements of tokens [begin, end) if they are code without loops (FunctionDecl::straightBody),
     // else nothing. Tried without reporting: any other body is HLSL's business, not the effect parser's.
     std::vector<FunctionDecl::Statement> parseStraightBody(size_t begin, size_t end) {
         using Statement = FunctionDecl::Statement;
@@ -954,35 +954,7 @@ private:
         mSpeculative = true;
         try {
             mPos = begin;
-            while (mPos < end) {
-                Statement statement;
-                if (accept("return")) {
-                    statement.kind = Statement::Kind::Return;
-                    statement.value = parseExpr();
-                    statement.hasValue = true;
-                } else if (peek().kind == Token::Kind::Identifier &&
-                           (peek(1).is("=") || peek(1).is("+=") || peek(1).is("-=") || peek(1).is("*=") ||
-                            peek(1).is("/="))) {
-                    statement.kind = Statement::Kind::Assign;
-                    statement.name = advance().text;
-                    statement.op = advance().text;
-                    statement.value = parseExpr();
-                    statement.hasValue = true;
-                } else {
-                    accept("const");
-                    accept("static");
-                    statement.kind = Statement::Kind::Declare;
-                    statement.type = parseType();
-                    statement.name = expectIdentifier("a name").text;
-                    if (check("[")) throw SyntaxError{};  // local arrays: not straight-line values
-                    if (accept("=")) {
-                        statement.value = parseExpr();
-                        statement.hasValue = true;
-                    }
-                }
-                expect(";");
-                body.push_back(std::move(statement));
-            }
+            while (mPos < end) parseStraightStatement(body);
             if (mPos != end || body.empty() || body.back().kind != Statement::Kind::Return) body.clear();
             for (size_t i = 0; i + 1 < body.size(); ++i)
                 if (body[i].kind == Statement::Kind::Return) body.clear();
@@ -992,6 +964,73 @@ private:
         mSpeculative = false;
         mPos = resume;
         return body;
+    }
+
+    static bool isAssignment(const Token& t) {
+        return t.is("=") || t.is("+=") || t.is("-=") || t.is("*=") || t.is("/=");
+    }
+
+    // One statement (a block's statements, a declaration's declarators) appended to `out`; throws
+    // SyntaxError on anything else (loops, calls for their effect, returns inside branches).
+    void parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
+        using Statement = FunctionDecl::Statement;
+        if (accept(";")) return;
+        if (accept("{")) {
+            while (!accept("}")) {
+                if (atEnd()) throw SyntaxError{};
+                parseStraightStatement(out);
+            }
+            return;
+        }
+        Statement statement;
+        if (accept("if")) {
+            statement.kind = Statement::Kind::If;
+            expect("(");
+            statement.value = parseExpr();
+            expect(")");
+            parseStraightStatement(statement.then);
+            if (accept("else")) parseStraightStatement(statement.otherwise);
+            for (const std::vector<Statement>* branch : {&statement.then, &statement.otherwise})
+                for (const Statement& s : *branch)
+                    if (s.kind == Statement::Kind::Return) throw SyntaxError{};
+            out.push_back(std::move(statement));
+            return;
+        }
+        if (accept("return")) {
+            statement.kind = Statement::Kind::Return;
+            statement.value = parseExpr();
+            statement.hasValue = true;
+        } else if (peek().kind == Token::Kind::Identifier &&
+                   (isAssignment(peek(1)) ||
+                    (peek(1).is(".") && peek(2).kind == Token::Kind::Identifier && isAssignment(peek(3))))) {
+            statement.kind = Statement::Kind::Assign;
+            statement.name = advance().text;
+            if (accept(".")) statement.member = advance().text;
+            statement.op = advance().text;
+            statement.value = parseExpr();
+            statement.hasValue = true;
+        } else {
+            accept("const");
+            accept("static");
+            const TypeDesc type = parseType();
+            for (;;) {
+                Statement declaration;
+                declaration.kind = Statement::Kind::Declare;
+                declaration.type = type;
+                declaration.name = expectIdentifier("a name").text;
+                if (check("[")) throw SyntaxError{};  // local arrays: not straight-line values
+                if (accept("=")) {
+                    declaration.value = parseExpr();
+                    declaration.hasValue = true;
+                }
+                out.push_back(std::move(declaration));
+                if (!accept(",")) break;
+            }
+            expect(";");
+            return;
+        }
+        expect(";");
+        out.push_back(std::move(statement));
     }
 
     // [SECTION] Annotations

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <iterator>
 #include <map>
@@ -154,6 +155,14 @@ std::string hlslTypeName(const TypeDesc& type) {
 }
 
 namespace {
+
+TypeDesc float4Type() {
+    TypeDesc t;
+    t.base = BaseType::Float;
+    t.shape = Shape::Vector;
+    t.cols = 4;
+    return t;
+}
 
 bool isNumericType(const TypeDesc& t) {
     return t.base == BaseType::Bool || t.base == BaseType::Int || t.base == BaseType::UInt ||
@@ -353,6 +362,56 @@ void emitAt(std::string& out, const std::string& text, const SourceLoc& loc) {
     out += "\n";
 }
 
+// glslang's HLSL front end reports "Recursion detected" for a user function called in a static's
+// initializer (`static float4x4 BiasXf = make_bias_mat(Bias);`, FX Composer's shadow includes). Such a
+// static is declared without its initializer, and the entry point assigns it before anything else runs:
+// the value each invocation sees is the same. `declaration` and `assignment` are empty for any other
+// static, and for a declaration of several names or an initializer list.
+struct SplitStatic {
+    std::string declaration;
+    std::string assignment;
+};
+
+SplitStatic splitStaticInitializer(const Effect& effect, const Parameter& p) {
+    const std::string& text = p.hlslText;
+    size_t equals = std::string::npos;
+    int nesting = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '(' || c == '[' || c == '{') ++nesting;
+        if (c == ')' || c == ']' || c == '}') --nesting;
+        const bool comparison = (i + 1 < text.size() && text[i + 1] == '=') ||
+                                (i > 0 && std::strchr("=<>!", text[i - 1]) != nullptr);
+        if (c == '=' && nesting == 0 && !comparison) {
+            if (equals != std::string::npos) return {};
+            equals = i;
+        }
+        if (c == ',' && nesting == 0) return {};
+    }
+    if (equals == std::string::npos) return {};
+    std::string value = text.substr(equals + 1);
+    const size_t semicolon = value.rfind(';');
+    if (semicolon == std::string::npos) return {};
+    value.erase(semicolon);
+    if (value.find_first_not_of(" \t\r\n") == std::string::npos ||
+        value[value.find_first_not_of(" \t\r\n")] == '{')
+        return {};
+    const std::set<std::string> names = identifiersIn(value);
+    const bool callsFunction = std::any_of(effect.functions.begin(), effect.functions.end(),
+                                           [&](const FunctionDecl& f) { return names.count(f.name) > 0; });
+    if (!callsFunction) return {};
+    // The entry point must be able to assign a `static const`; nothing else writes it.
+    std::string declaration = text.substr(0, equals);
+    for (size_t at = declaration.find("const"); at != std::string::npos;
+         at = declaration.find("const", at + 1)) {
+        const size_t end = at + 5;
+        if ((at == 0 || !isIdentChar(declaration[at - 1])) &&
+            (end >= declaration.size() || !isIdentChar(declaration[end])))
+            declaration.erase(at, 5);
+    }
+    return {declaration + ";", p.name + " = " + value + ";"};
+}
+
 // Functions the entry point reaches (by name, over-approximated by identifiers in the bodies), plus any
 // named by static initializers and verbatim declarations. Unreached functions are not emitted, so that
 // editing one function only changes the units (and cache keys) of the passes that use it.
@@ -482,14 +541,14 @@ class WrapperBuilder {
 public:
     WrapperBuilder(const Effect& effect, const FunctionDecl& fn, const Expr& compile, ShaderStage stage,
                    std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
-                   const std::map<int, TypeDesc>* geometryOutputs, const FunctionDecl* hull)
+                   const std::map<int, TypeDesc>* previousOutputs, const FunctionDecl* hull)
         : mEffect(effect),
           mFn(fn),
           mCompile(compile),
           mStage(stage),
           mArguments(arguments),
           mDiagnostics(diagnostics),
-          mGeometryOutputs(geometryOutputs),
+          mPreviousOutputs(previousOutputs),
           mHull(hull) {}
 
     bool build(std::string& globals, std::string& wrapper);
@@ -531,7 +590,7 @@ private:
     ShaderStage mStage;
     std::vector<LoweredArgument>& mArguments;
     DiagnosticSink& mDiagnostics;
-    const std::map<int, TypeDesc>* mGeometryOutputs;
+    const std::map<int, TypeDesc>* mPreviousOutputs;
     const FunctionDecl* mHull;
     int mPatchVertices = 0;
     CompiledPass::DrawPrimitive mPrimitive = CompiledPass::DrawPrimitive::Triangles;
@@ -722,17 +781,19 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + name + ", 0, 0, 0)") + ";\n";
         } else if (auto location =
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
-            varyings.insert(*location);
-            if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
             std::string source = "fx_v" + std::to_string(*location);
-            if (mGeometryOutputs) {
-                auto written = mGeometryOutputs->find(*location);
-                if (written == mGeometryOutputs->end())
-                    return fail(DiagId::UnsupportedFeature, f.loc,
-                                {"pixel input semantic '" + f.semantic +
-                                 "' is not written by the pass's geometry shader"});
+            if (mPreviousOutputs) {
+                auto written = mPreviousOutputs->find(*location);
+                if (written == mPreviousOutputs->end()) {
+                    // D3D9 and D3D10 link by register: an input the stage before does not write reads 0,
+                    // where GL refuses to link the program.
+                    body += assignField(f, "float4(0, 0, 0, 0)");
+                    continue;
+                }
                 source = widenToFloat4(source, written->second.cols);
             }
+            varyings.insert(*location);
+            if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
             body += assignField(f, source);
         } else {
             return fail(DiagId::UnsupportedFeature, f.loc,
@@ -745,7 +806,7 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
     for (int location : varyings) {
         std::string interp = interpolation.count(location) ? interpolation[location] + " " : "";
         const std::string type =
-            mGeometryOutputs ? hlslTypeName(mGeometryOutputs->at(location)) : std::string("float4");
+            mPreviousOutputs ? hlslTypeName(mPreviousOutputs->at(location)) : std::string("float4");
         add("[[vk::location(" + std::to_string(location) + ")]] " + interp + type + " fx_v" +
             std::to_string(location) + " : FX_V" + std::to_string(location));
     }
@@ -786,6 +847,7 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
+            mVaryingOutputs[*location] = float4Type();
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
                        std::to_string(*location) + ";\n";
             int n = std::clamp(f.type.cols, 1, 4);
@@ -1341,7 +1403,15 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
             TypeDesc t = p.type;
             std::string dims = arraySuffix(t);
             t.arrayDims.clear();
-            locals += "    " + hlslTypeName(t) + " " + arg + dims + " = (" + hlslTypeName(t) + dims + ")0;\n";
+            if (p.type.arrayDims.empty()) {
+                locals += "    " + hlslTypeName(t) + " " + arg + " = (" + hlslTypeName(t) + ")0;\n";
+            } else {
+                // glslang casts no scalar to an array (`(float2[5])0`, an array-typed input such as
+                // `float2 JitterUV[5] : TEXCOORD1`): each element is zeroed on its own.
+                locals += "    " + hlslTypeName(t) + " " + arg + dims + ";\n";
+                for (int e = 0; p.type.arrayDims.size() == 1 && e < p.type.arrayDims.front(); ++e)
+                    locals += "    " + arg + "[" + std::to_string(e) + "] = (" + hlslTypeName(t) + ")0;\n";
+            }
             if (p.direction != FunctionParam::Direction::Out)
                 gatherFields(mEffect, p.type, p.semantic, p.interpolation, arg, p.loc, inputs);
             if (p.direction != FunctionParam::Direction::In)
@@ -1411,7 +1481,7 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
-                                       const std::map<int, TypeDesc>* geometryOutputs,
+                                       const std::map<int, TypeDesc>* previousOutputs,
                                        const FunctionDecl* hull) {
     auto stageName = [](ShaderStage s) {
         return s == ShaderStage::Vertex     ? "vertex"
@@ -1458,7 +1528,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     size_t firstArgument = arguments.size();
     std::string argumentGlobals, wrapper;
     WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
-                           stage == ShaderStage::Fragment ? geometryOutputs : nullptr,
+                           stage == ShaderStage::Fragment ? previousOutputs : nullptr,
                            stage == ShaderStage::Domain ? hull : nullptr);
     if (!builder.build(argumentGlobals, wrapper)) {
         arguments.resize(firstArgument);
@@ -1484,6 +1554,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
     nameAll(wrapper);
     std::set<std::string> usedDepth;
+    std::string staticAssignments;  // what the entry point assigns first (splitStaticInitializer)
     std::string& hlsl = out.hlsl;
     hlsl += "// shadowfx: " + std::string(stageName(stage)) + " shader " + fn->name + " (" + compile.profile +
             ")\n";
@@ -1493,7 +1564,13 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
             case DeclRef::Kind::Parameter: {
                 const Parameter& p = effect.parameters[ref.index];
                 if (p.isStatic) {
-                    emitAt(hlsl, rewriteIntrinsics(p.hlslText, depth), p.hlslLoc);
+                    const SplitStatic split = splitStaticInitializer(effect, p);
+                    if (split.declaration.empty()) {
+                        emitAt(hlsl, rewriteIntrinsics(p.hlslText, depth), p.hlslLoc);
+                    } else {
+                        emitAt(hlsl, split.declaration, p.hlslLoc);
+                        emitAt(staticAssignments, rewriteIntrinsics(split.assignment, depth), p.hlslLoc);
+                    }
                 } else if (isNumericType(p.type) && p.type.base != BaseType::String) {
                     // A plain global: it lands in the $Global block; the runtime fills it.
                     hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
@@ -1549,6 +1626,12 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                 break;
             }
         }
+    }
+    if (!staticAssignments.empty()) {
+        const size_t entry = wrapper.find(std::string(kWrapperEntryPoint) + "(");
+        const size_t body = entry == std::string::npos ? entry : wrapper.find(")\n{\n", entry);
+        if (body != std::string::npos)
+            wrapper.insert(body + 4, staticAssignments + "#line 1 \"" + std::string(kGeneratedFile) + "\"\n");
     }
     hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + argumentGlobals + wrapper;
     out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());

@@ -45,8 +45,9 @@ struct LoweredStage {
     std::string hlsl;
     SourceLoc compileLoc;                    // the compile expression: where generated-code errors go
     std::vector<std::string> depthSamplers;  // effect samplers sampled with depth comparison
-    // A geometry shader's outputs by varying location, as its output struct declares them: the pixel
-    // shader after it declares its inputs with these types (GL links a location's types exactly).
+    // A geometry shader's outputs by varying location, as its output struct declares them, or a vertex
+    // shader's (float4 each): the pixel shader after it declares its inputs with these types (GL links a
+    // location's types exactly), and reads 0 for an input that is not among them.
     std::map<int, TypeDesc> varyingOutputs;
     int patchVertices = 0;  // a hull shader's control points per input patch (its InputPatch<T, n>)
     // A geometry shader's input primitive, as the pass's draws must give it.
@@ -63,12 +64,12 @@ struct LoweredArgument {
 
 // Lowers the shader of one stage of a pass. `compile` is the state's Compile expression. Compile
 // arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
-// there). A pixel shader after a geometry shader takes `geometryOutputs` (that stage's varyingOutputs); a
-// domain shader takes the pass's `hull` shader (whose partitioning and output topology GL's tessellation
-// evaluation stage declares). Returns nullopt after reporting an error.
+// there). A pixel shader takes `previousOutputs`, the varyingOutputs of the stage before it (geometry or
+// vertex shader) where known; a domain shader takes the pass's `hull` shader (whose partitioning and output
+// topology GL's tessellation evaluation stage declares). Returns nullopt after reporting an error.
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
-                                       const std::map<int, TypeDesc>* geometryOutputs = nullptr,
+                                       const std::map<int, TypeDesc>* previousOutputs = nullptr,
                                        const FunctionDecl* hull = nullptr);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):

@@ -3,7 +3,10 @@
 // cast, so that `float3 c = 1;` or an int parameter truncates exactly as the function would.
 #include "UserFunctionInliner.h"
 
+#include <algorithm>
+#include <cstring>
 #include <map>
+#include <set>
 
 namespace fx::detail {
 
@@ -12,20 +15,35 @@ namespace {
 // Functions call functions; a recursive one (which HLSL forbids anyway) must not recurse here.
 constexpr int kMaxInlineDepth = 16;
 // Every use of a parameter copies its argument, so nested calls grow the expression geometrically; past
-// this many nodes in all, the rest of the calls stay calls (and are reported where they stand).
-constexpr int kMaxInlinedNodes = 1 << 16;
+// this many nodes in one host expression, the rest of its calls stay calls (and are reported where they
+// stand). rgb_to_hsv of FX Composer's colour-space include ends at about 23000 nodes, having copied some
+// 70000 on the way.
+constexpr int kMaxInlinedNodes = 1 << 18;
 
 class Inliner {
 public:
     explicit Inliner(const Effect& effect) : mEffect(effect) {}
 
-    // Rewrites calls inside `e`, bottom-up.
-    void rewrite(Expr& e, int depth = 0) {
+    // Rewrites a whole host expression (rewrite()), with a budget of its own.
+    void rewriteExpression(Expr& e, bool expandStatics) {
+        mBudget = kMaxInlinedNodes;
+        rewrite(e, 0, expandStatics);
+    }
+
+    // Rewrites calls inside `e`, bottom-up, and, if `expandStatics`, names of statics.
+    void rewrite(Expr& e, int depth = 0, bool expandStatics = true) {
         if (e.kind == Expr::Kind::Compile) {  // the entry point itself is no call; its arguments are
-            for (Expr& arg : e.args) rewrite(arg, depth);
+            for (Expr& arg : e.args) rewrite(arg, depth, expandStatics);
             return;
         }
-        for (Expr& arg : e.args) rewrite(arg, depth);
+        if (expandStatics && e.kind == Expr::Kind::Identifier && depth < kMaxInlineDepth) {
+            if (const Parameter* computed = staticValue(e.text)) {
+                e = cast(computed->type, *computed->initializer, e.loc);
+                rewrite(e, depth + 1, expandStatics);
+            }
+            return;
+        }
+        for (Expr& arg : e.args) rewrite(arg, depth, expandStatics);
         if (e.kind != Expr::Kind::Call || depth >= kMaxInlineDepth) return;
         const FunctionDecl* function = find(e.text, e.args.size());
         if (!function) return;
@@ -34,13 +52,25 @@ public:
     }
 
 private:
+    // A `static` global computed from others (`static float2 TexelOffsets = Offset / ScreenSize;`): D3DX
+    // recomputed it whenever an input changed, a bound semantic such as VIEWPORTPIXELSIZE included. Its
+    // slot holds the value of the defaults only, so a host expression that reads it reads the
+    // initializer instead, and the runtime re-runs that expression when an input changes.
+    const Parameter* staticValue(const std::string& name) const {
+        const Parameter* p = mEffect.findParameter(name);
+        if (!p || !p->isStatic || !p->initializer || !p->type.isNumeric() ||
+            p->initializer->kind == Expr::Kind::Compile)
+            return nullptr;
+        return p;
+    }
+
     const FunctionDecl* find(const std::string& name, size_t arguments) const {
         for (const FunctionDecl& f : mEffect.functions) {
             if (f.name != name || !f.hasBody || f.straightBody.empty() || f.params.size() != arguments)
                 continue;
             bool plain = true;
             for (const FunctionParam& p : f.params)
-                plain = plain && p.direction == FunctionParam::Direction::In && !p.isUniform;
+                plain = plain && p.direction == FunctionParam::Direction::In;
             if (plain) return &f;
         }
         return nullptr;
@@ -81,49 +111,187 @@ private:
         return out;
     }
 
-    std::optional<Expr> expand(const FunctionDecl& function, const Expr& call, int depth) {
-        using Statement = FunctionDecl::Statement;
-        if (mBudget <= 0) return std::nullopt;
-        std::map<std::string, Expr> scope;
+    // The function's locals (parameters included) as expressions over the call's arguments, with their
+    // declared types, and how often a branch assigned each name of the enclosing scope.
+    struct Locals {
+        std::map<std::string, Expr> values;
         std::map<std::string, TypeDesc> types;
-        for (size_t i = 0; i < function.params.size(); ++i) {
-            const FunctionParam& p = function.params[i];
-            scope[p.name] = cast(p.type, call.args[i], call.loc);
-            types[p.name] = p.type;
+        std::map<std::string, int> assigned;
+    };
+
+    // Marks the per-component selects assignComponents builds: (mask, new components, old value).
+    static constexpr const char* kComponentSelect = "components";
+
+    static Expr node(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<Expr> args) {
+        Expr e;
+        e.kind = kind;
+        e.loc = loc;
+        e.text = std::move(text);
+        e.args = std::move(args);
+        return e;
+    }
+
+    // `local.member = value` (`dir.x = ...`, `c.rgb += ...`): the local becomes a per-component select
+    // between the value, widened to the local's type, and its old value.
+    std::optional<Expr> assignComponents(const TypeDesc& type, const std::string& member, Expr old,
+                                         Expr value, const SourceLoc& loc) {
+        if (!type.arrayDims.empty() || (type.shape != Shape::Vector && type.shape != Shape::Scalar))
+            return std::nullopt;
+        const int columns = type.shape == Shape::Scalar ? 1 : type.cols;
+        std::vector<int> written;
+        for (char c : member) {
+            const char* at = std::strchr("xyzw", c);
+            const char* colour = std::strchr("rgba", c);
+            const int index = c == '\0' ? -1
+                              : at      ? static_cast<int>(at - "xyzw")
+                              : colour  ? static_cast<int>(colour - "rgba")
+                                        : -1;
+            if (index < 0 || index >= columns) return std::nullopt;
+            written.push_back(index);
         }
-        for (const Statement& statement : function.straightBody) {
+        TypeDesc component = type;
+        component.shape = Shape::Scalar;
+        component.cols = 1;
+        std::vector<Expr> spread, mask;
+        for (int i = 0; i < columns; ++i) {
+            const auto k = std::find(written.begin(), written.end(), i);
+            Expr flag;
+            flag.kind = Expr::Kind::Bool;
+            flag.loc = loc;
+            flag.number = k != written.end() ? 1.0 : 0.0;
+            mask.push_back(std::move(flag));
+            Expr zero;
+            zero.kind = Expr::Kind::Number;
+            zero.loc = loc;
+            spread.push_back(
+                k == written.end() ? std::move(zero)
+                : written.size() == 1
+                    ? cast(component, value, loc)
+                    : node(Expr::Kind::Member, loc, std::string(1, "xyzw"[k - written.begin()]), {value}));
+        }
+        if (columns == 1) return cast(type, std::move(value), loc);
+        TypeDesc boolean = type;
+        boolean.base = BaseType::Bool;
+        return node(Expr::Kind::Ternary, loc, kComponentSelect,
+                    {node(Expr::Kind::Call, loc, boolean.hlslName(), std::move(mask)),
+                     node(Expr::Kind::Call, loc, type.hlslName(), std::move(spread)), std::move(old)});
+    }
+
+    // `name` after `if (condition) then else otherwise`: `condition ? then : otherwise`. When one branch
+    // only wrote some components, once (`if (h.x < 0) h.x += 1;`), the condition joins that write's mask
+    // instead, so the old value is copied once rather than on both sides: chains of such branches
+    // (rgb_to_hsv) would otherwise grow as a power of two.
+    Expr merge(const Expr& condition, const std::string& name, Locals& then, Locals& otherwise,
+               const SourceLoc& loc) {
+        const auto once = [&](const Locals& branch) {
+            auto it = branch.assigned.find(name);
+            return it != branch.assigned.end() && it->second == 1;
+        };
+        const auto untouched = [&](const Locals& branch) { return !branch.assigned.count(name); };
+        for (const bool inThen : {true, false}) {
+            Locals& written = inThen ? then : otherwise;
+            Expr& value = written.values[name];
+            if (!once(written) || !untouched(inThen ? otherwise : then) ||
+                value.kind != Expr::Kind::Ternary || value.text != kComponentSelect)
+                continue;
+            Expr taken = condition;
+            if (!inThen) taken = node(Expr::Kind::Unary, loc, "!", {std::move(taken)});
+            value.args[0] = node(Expr::Kind::Binary, loc, "&&", {std::move(value.args[0]), std::move(taken)});
+            return value;
+        }
+        return node(Expr::Kind::Ternary, loc, "", {condition, then.values[name], otherwise.values[name]});
+    }
+
+    // Runs `statements` (none of them a return) over `locals`; false if one cannot become an expression.
+    bool execute(const std::vector<FunctionDecl::Statement>& statements, Locals& locals, const SourceLoc& loc,
+                 int depth) {
+        using Statement = FunctionDecl::Statement;
+        std::set<std::string> declaredHere;
+        for (const Statement& statement : statements) {
+            if (mBudget <= 0) return false;
             switch (statement.kind) {
-                case Statement::Kind::Declare:
-                    if (!statement.hasValue) return std::nullopt;  // an uninitialized local: not a value
-                    scope[statement.name] =
-                        cast(statement.type, substitute(statement.value, scope, depth), call.loc);
-                    types[statement.name] = statement.type;
+                case Statement::Kind::Declare: {
+                    // A name declared again in a branch would hide the outer one: not worth following.
+                    if (locals.types.count(statement.name) && !declaredHere.count(statement.name))
+                        return false;
+                    Expr zero;
+                    zero.kind = Expr::Kind::Number;
+                    zero.loc = loc;
+                    // An uninitialized local reads 0 here; HLSL leaves it undefined until written.
+                    locals.values[statement.name] = cast(
+                        statement.type,
+                        statement.hasValue ? substitute(statement.value, locals.values, depth) : zero, loc);
+                    locals.types[statement.name] = statement.type;
+                    declaredHere.insert(statement.name);
                     break;
+                }
                 case Statement::Kind::Assign: {
-                    auto type = types.find(statement.name);
-                    if (type == types.end()) return std::nullopt;  // assigns a global: not ours to fold
-                    Expr value = substitute(statement.value, scope, depth);
+                    auto type = locals.types.find(statement.name);
+                    if (type == locals.types.end()) return false;  // assigns a global: not ours to fold
+                    Expr old = locals.values[statement.name];
+                    Expr value = substitute(statement.value, locals.values, depth);
                     if (statement.op != "=") {
-                        Expr combined;
-                        combined.kind = Expr::Kind::Binary;
-                        combined.loc = call.loc;
-                        combined.text = statement.op.substr(0, 1);
-                        combined.args.push_back(scope[statement.name]);
-                        combined.args.push_back(std::move(value));
-                        value = std::move(combined);
+                        Expr target = statement.member.empty()
+                                          ? old
+                                          : node(Expr::Kind::Member, loc, statement.member, {old});
+                        value = node(Expr::Kind::Binary, loc, statement.op.substr(0, 1),
+                                     {std::move(target), std::move(value)});
                     }
-                    scope[statement.name] = cast(type->second, std::move(value), call.loc);
+                    if (statement.member.empty()) {
+                        locals.values[statement.name] = cast(type->second, std::move(value), loc);
+                    } else {
+                        std::optional<Expr> whole = assignComponents(type->second, statement.member,
+                                                                     std::move(old), std::move(value), loc);
+                        if (!whole) return false;
+                        locals.values[statement.name] = std::move(*whole);
+                    }
+                    if (!declaredHere.count(statement.name)) ++locals.assigned[statement.name];
                     break;
                 }
-                case Statement::Kind::Return: {
-                    Expr result =
-                        cast(function.returnType, substitute(statement.value, scope, depth), call.loc);
-                    if (mBudget <= 0) return std::nullopt;
-                    return result;
+                case Statement::Kind::If: {
+                    // Both branches run on copies; what either assigns becomes `condition ? then : else`,
+                    // which the host evaluates as the branch taken (PreshaderProgram's Select).
+                    const Expr condition = substitute(statement.value, locals.values, depth);
+                    Locals then = locals, otherwise = locals;
+                    then.assigned.clear();
+                    otherwise.assigned.clear();
+                    if (!execute(statement.then, then, loc, depth) ||
+                        !execute(statement.otherwise, otherwise, loc, depth))
+                        return false;
+                    std::set<std::string> changed;
+                    for (const Locals* branch : {&then, &otherwise})
+                        for (const auto& [name, count] : branch->assigned) changed.insert(name);
+                    for (const std::string& name : changed) {
+                        // What the branches built is counted already; the merge adds the copies.
+                        const int before = nodes(locals.values[name], mBudget);
+                        locals.values[name] = merge(condition, name, then, otherwise, loc);
+                        mBudget -= std::max(0, nodes(locals.values[name], mBudget) - before);
+                        if (!declaredHere.count(name)) ++locals.assigned[name];
+                    }
+                    break;
                 }
+                case Statement::Kind::Return:
+                    return false;
             }
         }
-        return std::nullopt;
+        return true;
+    }
+
+    std::optional<Expr> expand(const FunctionDecl& function, const Expr& call, int depth) {
+        if (mBudget <= 0 || function.straightBody.empty()) return std::nullopt;
+        Locals locals;
+        for (size_t i = 0; i < function.params.size(); ++i) {
+            const FunctionParam& p = function.params[i];
+            locals.values[p.name] = cast(p.type, call.args[i], call.loc);
+            locals.types[p.name] = p.type;
+        }
+        const std::vector<FunctionDecl::Statement> body(function.straightBody.begin(),
+                                                        function.straightBody.end() - 1);
+        if (!execute(body, locals, call.loc, depth)) return std::nullopt;
+        Expr result = cast(function.returnType,
+                           substitute(function.straightBody.back().value, locals.values, depth), call.loc);
+        if (mBudget <= 0) return std::nullopt;
+        return result;
     }
 
     const Effect& mEffect;
@@ -134,11 +302,17 @@ private:
 
 void inlineUserFunctionCalls(Effect& effect) {
     Inliner inliner(effect);
+    // Initializers first, so that a static's expansion carries its calls inlined. They are evaluated in
+    // declaration order over the values before them, so their own static names stay names.
+    for (Parameter& parameter : effect.parameters)
+        if (parameter.initializer && parameter.type.isNumeric())
+            inliner.rewriteExpression(*parameter.initializer, false);
     for (Technique& technique : effect.techniques)
         for (Pass& pass : technique.passes)
-            for (StateAssignment& state : pass.states) inliner.rewrite(state.value);
+            for (StateAssignment& state : pass.states) inliner.rewriteExpression(state.value, true);
     for (Parameter& parameter : effect.parameters)
-        if (parameter.initializer && parameter.type.isShader()) inliner.rewrite(*parameter.initializer);
+        if (parameter.initializer && parameter.type.isShader())
+            inliner.rewriteExpression(*parameter.initializer, true);
 }
 
 }  // namespace fx::detail

@@ -165,17 +165,20 @@ struct FunctionDecl {
     SourceLoc hlslLoc;     // where hlslText starts
     SourceLoc loc;         // the name's location
 
-    // A body of straight-line code: local declarations, assignments to locals, and a final return. Such
-    // a function, called in a pass's compile arguments or states, is inlined there and evaluated on the
-    // host as D3DX's preshaders did (fx/src/UserFunctionInliner.cpp). Empty for any other body.
+    // A body of side-effect-free code without loops: local declarations, assignments to locals and their
+    // components, if/else, and a final return. Such a function, called in a pass's compile arguments,
+    // states or a static's initializer, is inlined there and evaluated on the host as D3DX's preshaders
+    // did (fx/src/UserFunctionInliner.cpp). Empty for any other body.
     struct Statement {
-        enum class Kind { Declare, Assign, Return };
+        enum class Kind { Declare, Assign, If, Return };
         Kind kind = Kind::Return;
-        TypeDesc type;     // Declare
-        std::string name;  // Declare, Assign: the local
-        std::string op;    // Assign: "=", "+=", "-=", "*=", "/="
-        Expr value;        // Declare's initializer, Assign's right-hand side, Return's value
+        TypeDesc type;       // Declare
+        std::string name;    // Declare, Assign: the local
+        std::string member;  // Assign: the swizzle written (`v.xy = ...`), or "" for the whole local
+        std::string op;      // Assign: "=", "+=", "-=", "*=", "/="
+        Expr value;  // Declare's initializer, Assign's right-hand side, Return's value, If's condition
         bool hasValue = false;
+        std::vector<Statement> then, otherwise;  // If
     };
     std::vector<Statement> straightBody;
 };

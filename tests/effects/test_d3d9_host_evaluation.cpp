@@ -1,0 +1,240 @@
+// What D3DX9 computed on the host for an effect, computed here too and recomputed when its inputs change:
+// statics over host-bound parameters passed as compile arguments, and the effect's own functions called
+// from them. Each test is a minimal effect in the manner of FX Composer's shader library, rendered and
+// checked by pixels.
+#include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace shadowfx::test {
+namespace {
+
+// A scene pass into a target, then a full-screen pass that copies it with the half-texel offset D3D9
+// needed, computed as FX Composer's quad include computes it: a static over the viewport size, which the
+// runtime binds only when it knows the frame's size (the parameter has no default, so a value computed
+// from the defaults alone is 0.5 / 0 and every pixel reads one point of the target).
+constexpr const char* kTexelOffsetPost = R"(
+float4x4 WvpXf : WorldViewProjection;
+float4x4 WorldXf : World;
+
+half2 QuadScreenSize : VIEWPORTPIXELSIZE < string UIWidget = "None"; >;
+half QuadTexOffset < string UIWidget = "None"; > = 0.5;
+static half2 QuadTexelOffsets = half2(QuadTexOffset / (QuadScreenSize.x), QuadTexOffset / (QuadScreenSize.y));
+
+texture SceneTexture : RENDERCOLORTARGET < float2 ViewPortRatio = {1.0, 1.0}; string Format = "A8R8G8B8"; >;
+sampler2D SceneSampler = sampler_state {
+    texture = <SceneTexture>; AddressU = Clamp; AddressV = Clamp;
+    MagFilter = Linear; MinFilter = Linear; MipFilter = Point;
+};
+texture DepthBuffer : RENDERDEPTHSTENCILTARGET < float2 ViewPortRatio = {1.0, 1.0}; string Format = "D24S8"; >;
+
+struct QuadVertexOutput { half4 Position : POSITION; half2 UV : TEXCOORD0; };
+
+QuadVertexOutput ScreenQuadVS2(half3 Position : POSITION, half3 TexCoord : TEXCOORD0, uniform half2 TexelOffsets) {
+    QuadVertexOutput OUT;
+    OUT.Position = half4(Position, 1);
+    OUT.UV = half2(TexCoord.xy + TexelOffsets);
+    return OUT;
+}
+
+float4 SceneVS(float3 Position : POSITION, float3 Normal : NORMAL, out float3 WorldNormal : TEXCOORD0) : POSITION {
+    WorldNormal = mul(float4(Normal, 0), WorldXf).xyz;
+    return mul(float4(Position, 1), WvpXf);
+}
+float4 ScenePS(float3 WorldNormal : TEXCOORD0) : COLOR {
+    return float4(0.5 + 0.5 * normalize(WorldNormal), 1);
+}
+float4 CopyPS(QuadVertexOutput IN, uniform sampler2D Source) : COLOR {
+    return tex2D(Source, IN.UV);
+}
+
+float4 ClearColor = {0.1, 0.1, 0.1, 1};
+float ClearDepth = 1.0;
+
+technique Main < string Script =
+    "RenderColorTarget0=SceneTexture; RenderDepthStencilTarget=DepthBuffer;"
+    "ClearSetColor=ClearColor; ClearSetDepth=ClearDepth; Clear=Color; Clear=Depth;"
+    "Pass=Scene; RenderColorTarget0=; RenderDepthStencilTarget=; Pass=Copy;"; > {
+    pass Scene < string Script = "Draw=geometry;"; > {
+        VertexShader = compile vs_3_0 SceneVS();
+        PixelShader = compile ps_3_0 ScenePS();
+        ZEnable = true;
+        CullMode = None;
+    }
+    pass Copy < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 ScreenQuadVS2(QuadTexelOffsets);
+        PixelShader = compile ps_3_0 CopyPS(SceneSampler);
+        ZEnable = false;
+    }
+}
+)";
+
+// Every channel of `frame` at (x, y) lies within the range of the target's texels around it: the copy may
+// filter between neighbours, it may not read somewhere else.
+int pixelsOutsideNeighbourhood(const runtime::FrameImage& frame, const std::vector<float>& target, int width,
+                               int height, int channels) {
+    int outside = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* f = frame.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                float low = 1.0f, high = 0.0f;
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int sx = std::clamp(x + dx, 0, width - 1),
+                                  sy = std::clamp(y + dy, 0, height - 1);
+                        const float s = target[static_cast<size_t>((sy * width + sx) * channels + c)];
+                        low = std::min(low, s);
+                        high = std::max(high, s);
+                    }
+                }
+                const float v = f[c] / 255.0f;
+                if (v < low - 2.0f / 255 || v > high + 2.0f / 255) {
+                    ++outside;
+                    break;
+                }
+            }
+        }
+    }
+    return outside;
+}
+
+TEST(D3d9HostEvaluation, StaticTexelOffsetFollowsTheViewportSize) {
+    auto renderer = loadEffect(kTexelOffsetPost, false, "texel_offset_post.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    for (const auto& [width, height] : {std::pair{96, 64}, std::pair{64, 80}}) {
+        SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
+        ASSERT_TRUE(render(*renderer, scene, width, height, "", {"SceneTexture"}));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        int w = 0, h = 0, channels = 0;
+        auto target = renderer->readTarget("SceneTexture", &w, &h, &channels);
+        ASSERT_TRUE(target);
+        ASSERT_EQ(w, width);
+        ASSERT_EQ(h, height);
+        EXPECT_EQ(pixelsOutsideNeighbourhood(frame, *target, width, height, channels), 0);
+    }
+}
+
+// A compile argument computed by the effect's own function, with a local declared without a value,
+// component assignments, nested if/else and an intrinsic, over a tweakable: evaluated on the host, and
+// again when the tweakable changes (the other branch is taken then).
+constexpr const char* kBranchingFunction = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.8;
+float3 hue_of(float3 c) {
+    float3 r = (0.0).xxx;
+    float m = max(c.x, max(c.y, c.z));
+    float3 unused;
+    r.z = m;
+    if (m != 0) {
+        r.y = 0.5;
+        if (c.x == m) r.x = 0.25;
+        else r.x = 0.75;
+    }
+    return r;
+}
+static float3 Derived = hue_of(float3(Level, 0.2, 0.1));
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
+)";
+
+int pixelsOf(const runtime::FrameImage& frame, int width, int height, int r, int g, int b) {
+    int count = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            count += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
+        }
+    return count;
+}
+
+TEST(D3d9HostEvaluation, FunctionWithBranchesFollowsItsInput) {
+    auto renderer = loadEffect(kBranchingFunction, false, "branching_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(pixelsOf(frame, kWidth, kHeight, 64, 128, 204), kMinObjectPixels);  // (0.25, 0.5, 0.8)
+
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.1", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(pixelsOf(frame, kWidth, kHeight, 191, 128, 51), kMinObjectPixels);  // (0.75, 0.5, 0.2)
+}
+
+// The hue, saturation and value of a colour, in the style of FX Composer's colour-space include: a chain of
+// else-ifs and two wrap-arounds over one vector, the shape whose inlined expression grows fastest. The
+// host's value must equal the formula's for colours that take each branch of the chain.
+constexpr const char* kHueSaturationValue = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float3 Key = {0.2, 0.7, 0.3};
+float lowest(float3 c) { float m = (c.x < c.y) ? c.x : c.y; m = (m < c.z) ? m : c.z; return m; }
+float highest(float3 c) { float m = (c.x > c.y) ? c.x : c.y; m = (m > c.z) ? m : c.z; return m; }
+float3 to_hsv(float3 c) {
+    float3 hsv = (0.0).xxx;
+    float hi = highest(c);
+    float span = hi - lowest(c);
+    hsv.z = hi;
+    if (span != 0) {
+        hsv.y = span / hi;
+        float3 d;
+        d = (((hi.xxx - c) / 6.0) + (span / 2.0)) / span;
+        if (c.x == hi) hsv.x = d.z - d.y;
+        else if (c.y == hi) hsv.x = (1.0 / 3.0) + d.x - d.z;
+        else if (c.z == hi) hsv.x = (2.0 / 3.0) + d.y - d.x;
+        if (hsv.x < 0.0) { hsv.x += 1.0; }
+        if (hsv.x > 1.0) { hsv.x -= 1.0; }
+    }
+    return hsv;
+}
+static float3 KeyHsv = to_hsv(Key);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(KeyHsv); } }
+)";
+
+// Smith 1978, "Color gamut transform pairs", the hexcone model: hue in [0, 1), saturation, value.
+std::array<float, 3> hueSaturationValue(float r, float g, float b) {
+    const float hi = std::max({r, g, b}), lo = std::min({r, g, b}), span = hi - lo;
+    if (span == 0.0f) return {0.0f, 0.0f, hi};
+    float h = hi == r ? (g - b) / span : hi == g ? 2.0f + (b - r) / span : 4.0f + (r - g) / span;
+    h /= 6.0f;
+    if (h < 0.0f) h += 1.0f;
+    return {h, span / hi, hi};
+}
+
+TEST(D3d9HostEvaluation, ChainedBranchesOverOneVector) {
+    auto renderer = loadEffect(kHueSaturationValue, false, "hue_saturation_value.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    for (const std::array<float, 3>& key :
+         {std::array<float, 3>{0.2f, 0.7f, 0.3f}, {0.9f, 0.1f, 0.3f}, {0.1f, 0.2f, 0.8f}}) {
+        const std::string text =
+            std::to_string(key[0]) + "," + std::to_string(key[1]) + "," + std::to_string(key[2]);
+        SCOPED_TRACE(text);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Key", text, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        const std::array<float, 3> hsv = hueSaturationValue(key[0], key[1], key[2]);
+        EXPECT_GE(pixelsOf(frame, kWidth, kHeight, static_cast<int>(std::lround(hsv[0] * 255)),
+                           static_cast<int>(std::lround(hsv[1] * 255)),
+                           static_cast<int>(std::lround(hsv[2] * 255))),
+                  kMinObjectPixels);
+    }
+}
+
+}  // namespace
+}  // namespace shadowfx::test

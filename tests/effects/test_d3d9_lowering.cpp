@@ -1,0 +1,83 @@
+// D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
+// a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
+// (TEXCOORD1..n), a literal bool compile argument, and a static initialized by a call of the effect's own
+// function. Minimal effects written for these tests, checked by pixels.
+#include "EffectHarness.h"
+#include <runtime/BuiltinScenes.h>
+
+namespace shadowfx::test {
+namespace {
+
+// The pixels of `frame` whose colour is `rgb` (within one step of 8 bits).
+int pixelsOf(const runtime::FrameImage& frame, int width, int height, int r, int g, int b) {
+    int count = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            count += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
+        }
+    return count;
+}
+
+// The scene's objects cover this share of the frame at least (the teapot at 64x48).
+constexpr int kMinObjectPixels = 64 * 48 / 20;
+
+// The vertex shader writes TEXCOORD0 only; the pixel shader also reads TEXCOORD1 and COLOR1, which D3D9
+// reads as 0. The objects come out in exactly the colour of the written part.
+constexpr const char* kUnwrittenInput = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+struct VsOut { float4 Position : POSITION; float2 Written : TEXCOORD0; };
+VsOut VS(float3 Position : POSITION) {
+    VsOut o;
+    o.Position = mul(float4(Position, 1), WorldViewProj);
+    o.Written = float2(0.2, 0.6);
+    return o;
+}
+float4 PS(float2 Written : TEXCOORD0, float2 Unwritten : TEXCOORD1, float4 Colour : COLOR1) : COLOR {
+    return float4(Written.x + Unwritten.x + Colour.r, Written.y + Unwritten.y + Colour.g, 0.4 + Colour.b, 1);
+}
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, PixelInputTheVertexShaderDoesNotWriteReadsZero) {
+    auto renderer = loadEffect(kUnwrittenInput, false, "unwritten_input.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(pixelsOf(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+}
+
+// `float2 Jitter[3] : TEXCOORD1` takes TEXCOORD1..3; `uniform bool` is given a literal `true`; the static
+// is computed by a function of the effect (which glslang's HLSL front end reports as recursion when it
+// stands in the static's initializer).
+constexpr const char* kArraysAndStatics = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Gain = 0.5;
+float4 tint(float g) { float4 c = float4(g, g * 0.5, 0, 1); if (g > 2) c = 0; return c; }
+static float4 Tint = tint(Gain);
+struct VsOut { float4 Position : POSITION; float2 Jitter[3] : TEXCOORD1; };
+VsOut VS(float3 Position : POSITION, uniform bool Spread) {
+    VsOut o;
+    o.Position = mul(float4(Position, 1), WorldViewProj);
+    for (int i = 0; i < 3; i++) o.Jitter[i] = Spread ? float2(0.1 * i, 0.2) : float2(0, 0);
+    return o;
+}
+float4 PS(float2 Jitter[3] : TEXCOORD1) : COLOR {
+    return float4(Tint.r + Jitter[2].x, Tint.g + Jitter[1].x, Jitter[0].y, 1);
+}
+technique T { pass P { VertexShader = compile vs_2_0 VS(true); PixelShader = compile ps_2_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, ArrayInputBoolLiteralArgumentAndStaticFromAFunction) {
+    auto renderer = loadEffect(kArraysAndStatics, false, "arrays_and_statics.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    // (0.5 + 0.2, 0.25 + 0.1, 0.2): each element of the array came through its own semantic.
+    EXPECT_GE(pixelsOf(frame, 64, 48, 179, 89, 51), kMinObjectPixels);
+}
+
+}  // namespace
+}  // namespace shadowfx::test
