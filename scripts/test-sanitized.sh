@@ -5,7 +5,7 @@
 # Leak checking (LeakSanitizer) covers the GL-free tests (CTest label "fx": parser, compiler, corpus): the
 # test processes at exit, and the compile workers they start (glslang, SPIRV-Cross, our stage-compile
 # code) after every job, since the workers inherit ASAN_OPTIONS; a worker's finding fails its compile with
-# CompileWorkerSanitizerReport (docs/testing.md, "Sanitizers"). The GL tests (labels "runtime", "effects") run with ASan and UBSan but without LeakSanitizer:
+# CompileWorkerSanitizerReport (docs/testing.md, "Robustness"). The GL tests (labels "runtime", "effects") run with ASan and UBSan but without LeakSanitizer:
 # Mesa's EGL path dlopen()s swrast_dri.so and dlclose()s it before exit, so its one-time allocations are
 # reported from "<unknown module>" frames that no suppression can name (and our own frames sit below
 # them, which we must not suppress). Set SHADOWFX_LEAKS_EVERYWHERE=1 to check them anyway. Leaks of GL
