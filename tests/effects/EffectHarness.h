@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,6 +58,50 @@ inline std::unique_ptr<runtime::EffectRenderer> loadEffect(const std::string& fi
         runtime::EffectRenderer::create(compiled, diagnostics);
     if (!renderer) ADD_FAILURE() << "renderer creation failed:\n" << diagnostics.str();
     return renderer;
+}
+
+// An effect file's renderer with every diagnostic of parsing, compiling and creating it, for tests that
+// check warnings. Fails the current test on any error.
+struct LoadedEffect {
+    std::unique_ptr<runtime::EffectRenderer> renderer;
+    fx::DiagnosticList diagnostics;
+};
+
+inline LoadedEffect loadEffectWithDiagnostics(const std::string& path) {
+    sharedContext();
+    LoadedEffect out;
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, fx::ParseOptions{}, out.diagnostics);
+    if (!effect) {
+        ADD_FAILURE() << "parse failed:\n" << out.diagnostics.str();
+        return out;
+    }
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, out.diagnostics);
+    if (!compiled || out.diagnostics.hasErrors()) {
+        ADD_FAILURE() << "compile failed:\n" << out.diagnostics.str();
+        return out;
+    }
+    out.renderer = runtime::EffectRenderer::create(compiled, out.diagnostics);
+    if (!out.renderer) ADD_FAILURE() << "renderer creation failed:\n" << out.diagnostics.str();
+    return out;
+}
+
+// How many diagnostics of `diagnostics` have `id`.
+inline int countDiagnostics(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
+    int n = 0;
+    for (const fx::Diagnostic& d : diagnostics.items()) n += d.id == id;
+    return n;
+}
+
+// The pixels of `frame` whose colour is (r, g, b), within one step of 8 bits.
+inline int countPixelsOfColour(const runtime::FrameImage& frame, int width, int height, int r, int g, int b) {
+    int count = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            count += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
+        }
+    return count;
 }
 
 // `outputs`: render targets the test reads back (FrameOptions::outputTargets), kept by leave-out.

@@ -144,16 +144,6 @@ float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
 technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
 )";
 
-int pixelsOf(const runtime::FrameImage& frame, int width, int height, int r, int g, int b) {
-    int count = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const uint8_t* p = frame.pixel(x, y);
-            count += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
-        }
-    return count;
-}
-
 TEST(D3d9HostEvaluation, FunctionWithBranchesFollowsItsInput) {
     auto renderer = loadEffect(kBranchingFunction, false, "branching_function.fx");
     ASSERT_TRUE(renderer);
@@ -162,14 +152,16 @@ TEST(D3d9HostEvaluation, FunctionWithBranchesFollowsItsInput) {
     ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
     runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(pixelsOf(frame, kWidth, kHeight, 64, 128, 204), kMinObjectPixels);  // (0.25, 0.5, 0.8)
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 64, 128, 204),
+              kMinObjectPixels);  // (0.25, 0.5, 0.8)
 
     fx::DiagnosticList diagnostics;
     ASSERT_TRUE(renderer->setParameterFromText("Level", "0.1", diagnostics)) << diagnostics.str();
     ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
     frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(pixelsOf(frame, kWidth, kHeight, 191, 128, 51), kMinObjectPixels);  // (0.75, 0.5, 0.2)
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 191, 128, 51),
+              kMinObjectPixels);  // (0.75, 0.5, 0.2)
 }
 
 // The hue, saturation and value of a colour, in the style of FX Composer's colour-space include: a chain of
@@ -229,9 +221,9 @@ TEST(D3d9HostEvaluation, ChainedBranchesOverOneVector) {
         const runtime::FrameImage frame = renderer->readFrame();
         ASSERT_TRUE(notConstant(frame));
         const std::array<float, 3> hsv = hueSaturationValue(key[0], key[1], key[2]);
-        EXPECT_GE(pixelsOf(frame, kWidth, kHeight, static_cast<int>(std::lround(hsv[0] * 255)),
-                           static_cast<int>(std::lround(hsv[1] * 255)),
-                           static_cast<int>(std::lround(hsv[2] * 255))),
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, static_cast<int>(std::lround(hsv[0] * 255)),
+                                      static_cast<int>(std::lround(hsv[1] * 255)),
+                                      static_cast<int>(std::lround(hsv[2] * 255))),
                   kMinObjectPixels);
     }
 }

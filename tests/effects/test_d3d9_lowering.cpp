@@ -8,17 +8,6 @@
 namespace shadowfx::test {
 namespace {
 
-// The pixels of `frame` whose colour is `rgb` (within one step of 8 bits).
-int pixelsOf(const runtime::FrameImage& frame, int width, int height, int r, int g, int b) {
-    int count = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const uint8_t* p = frame.pixel(x, y);
-            count += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
-        }
-    return count;
-}
-
 // The scene's objects cover this share of the frame at least (the teapot at 64x48).
 constexpr int kMinObjectPixels = 64 * 48 / 20;
 
@@ -45,7 +34,7 @@ TEST(D3d9Lowering, PixelInputTheVertexShaderDoesNotWriteReadsZero) {
     ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(pixelsOf(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
 }
 
 // `float2 Jitter[3] : TEXCOORD1` takes TEXCOORD1..3; `uniform bool` is given a literal `true`; the static
@@ -76,7 +65,7 @@ TEST(D3d9Lowering, ArrayInputBoolLiteralArgumentAndStaticFromAFunction) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     // (0.5 + 0.2, 0.25 + 0.1, 0.2): each element of the array came through its own semantic.
-    EXPECT_GE(pixelsOf(frame, 64, 48, 179, 89, 51), kMinObjectPixels);
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 179, 89, 51), kMinObjectPixels);
 }
 
 }  // namespace

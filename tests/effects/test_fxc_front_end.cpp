@@ -9,35 +9,6 @@
 namespace shadowfx::test {
 namespace {
 
-struct Loaded {
-    std::unique_ptr<runtime::EffectRenderer> renderer;
-    fx::DiagnosticList diagnostics;  // parse and compile
-};
-
-Loaded load(const std::string& path) {
-    sharedContext();
-    Loaded out;
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, fx::ParseOptions{}, out.diagnostics);
-    if (!effect) {
-        ADD_FAILURE() << "parse failed:\n" << out.diagnostics.str();
-        return out;
-    }
-    std::shared_ptr<fx::CompiledEffect> compiled =
-        fx::compileEffect(effect, fx::CompileOptions{}, out.diagnostics);
-    if (!compiled || out.diagnostics.hasErrors()) {
-        ADD_FAILURE() << "compile failed:\n" << out.diagnostics.str();
-        return out;
-    }
-    out.renderer = runtime::EffectRenderer::create(compiled, out.diagnostics);
-    if (!out.renderer) ADD_FAILURE() << "renderer creation failed:\n" << out.diagnostics.str();
-    return out;
-}
-
-int count(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
-    return static_cast<int>(std::count_if(diagnostics.items().begin(), diagnostics.items().end(),
-                                          [&](const fx::Diagnostic& d) { return d.id == id; }));
-}
-
 // Fails on a blank or constant frame, and on one that lacks a channel: a colour mask read as red alone
 // (`ColorWriteEnable = true` taken for 1) leaves green and blue at the clear colour everywhere.
 ::testing::AssertionResult drawsEveryChannel(const runtime::FrameImage& image) {
@@ -59,10 +30,12 @@ int count(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
 // with text after its file name and `#if MACRO(X)` on an undefined macro: one warning each, and the
 // frame lit by both coloured lights.
 TEST(FxcFrontEnd, GameCoreStyleEffect) {
-    Loaded loaded = load("tests/data/fxcomposer/game_core_style.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/game_core_style.fx");
     ASSERT_TRUE(loaded.renderer);
-    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::IncludeTrailingText), 1) << loaded.diagnostics.str();
-    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::UndefinedConditionCall), 1) << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::IncludeTrailingText), 1)
+        << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::UndefinedConditionCall), 1)
+        << loaded.diagnostics.str();
     const fx::Effect& effect = *loaded.renderer->effect().effect;
     ASSERT_TRUE(effect.findParameter("WorldViewProj"));
     EXPECT_TRUE(effect.findParameter("WorldViewProj")->isShared);
@@ -80,7 +53,7 @@ TEST(FxcFrontEnd, GameCoreStyleEffect) {
 // MonoGame's stock-effect macros: a `sampler` without sampler_state sampled by a Texture2D, SV_Position0
 // and SV_Target0, ColorWriteEnable = true and All, and vs_6_0/ps_6_0: both techniques draw.
 TEST(FxcFrontEnd, MonoGameStyleEffect) {
-    Loaded loaded = load("tests/data/fxcomposer/monogame_style.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/monogame_style.fx");
     ASSERT_TRUE(loaded.renderer);
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
     for (const char* technique : {"BasicEffect", "BasicEffect_SM6"}) {
@@ -93,9 +66,10 @@ TEST(FxcFrontEnd, MonoGameStyleEffect) {
 // ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
 // warnings, and the pass (named `P0`, scripted `Pass=p0`) draws into the frame.
 TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {
-    Loaded loaded = load("tests/data/fxcomposer/tolerated_script.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/tolerated_script.fx");
     ASSERT_TRUE(loaded.renderer);
-    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::ScriptCommandIgnored), 3) << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::ScriptCommandIgnored), 3)
+        << loaded.diagnostics.str();
     for (const fx::Diagnostic& d : loaded.diagnostics.items())
         if (d.id == fx::DiagId::ScriptCommandIgnored) {
             EXPECT_EQ(d.severity, fx::Severity::Warning);

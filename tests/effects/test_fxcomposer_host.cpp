@@ -17,36 +17,6 @@ namespace {
 constexpr int kWidth = 96;
 constexpr int kHeight = 72;
 
-struct Loaded {
-    std::unique_ptr<runtime::EffectRenderer> renderer;
-    fx::DiagnosticList diagnostics;  // parse and compile
-};
-
-Loaded load(const std::string& path) {
-    sharedContext();
-    Loaded out;
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, fx::ParseOptions{}, out.diagnostics);
-    if (!effect) {
-        ADD_FAILURE() << out.diagnostics.str();
-        return out;
-    }
-    std::shared_ptr<const fx::CompiledEffect> compiled =
-        fx::compileEffect(effect, fx::CompileOptions{}, out.diagnostics);
-    if (!compiled || out.diagnostics.hasErrors()) {
-        ADD_FAILURE() << out.diagnostics.str();
-        return out;
-    }
-    out.renderer = runtime::EffectRenderer::create(compiled, out.diagnostics);
-    if (!out.renderer) ADD_FAILURE() << out.diagnostics.str();
-    return out;
-}
-
-int count(const fx::DiagnosticList& diagnostics, fx::DiagId id) {
-    int n = 0;
-    for (const fx::Diagnostic& d : diagnostics.items()) n += d.id == id;
-    return n;
-}
-
 bool isBackground(const uint8_t* p) {
     for (int c = 0; c < 3; ++c)
         if (std::abs(p[c] - std::lround(runtime::kHostBackground[c] * 255.0f)) > 1) return false;
@@ -65,11 +35,13 @@ double coverage(const runtime::FrameImage& frame) {
 // the host's background. Without the host clear the depth buffer rejects every fragment or the frame keeps
 // whatever it held.
 TEST(FxComposerHost, MaterialEffectThatNeverClearsDrawsTheLitObjectOnTheHostBackground) {
-    Loaded loaded = load("tests/data/fxcomposer/material_phong.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/material_phong.fx");
     ASSERT_TRUE(loaded.renderer);
     // Technique?Simple:Simple10:Textured:Textured10 — Simple10 and Textured10 do not exist: warnings only.
-    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::ScriptUnknownTechnique), 2) << loaded.diagnostics.str();
-    EXPECT_EQ(count(loaded.diagnostics, fx::DiagId::TextureFileNotFound), 1) << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::ScriptUnknownTechnique), 2)
+        << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::TextureFileNotFound), 1)
+        << loaded.diagnostics.str();
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
     fx::DiagnosticList diagnostics;
     runtime::FrameOptions options;
@@ -99,7 +71,7 @@ TEST(FxComposerHost, MaterialEffectThatNeverClearsDrawsTheLitObjectOnTheHostBack
 // The lamp parameter names "PointLight0" (and its colour "Pointlight0"): moving the scene's light0 must
 // change the picture, which it cannot if the names do not bind.
 TEST(FxComposerHost, LightNamedPointLight0FollowsTheScenesLight0) {
-    Loaded loaded = load("tests/data/fxcomposer/material_phong.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/material_phong.fx");
     ASSERT_TRUE(loaded.renderer);
     runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
     ASSERT_FALSE(scene.lights.empty());
@@ -124,7 +96,7 @@ TEST(FxComposerHost, LightNamedPointLight0FollowsTheScenesLight0) {
 // ViewPortRatio only), and the effect's pass inverts it into the frame. With Amount 0 the frame is the
 // host's scene itself; with Amount 1 every pixel is its inverse.
 TEST(FxComposerHost, PostEffectProcessesTheSceneTheHostDrawsAtScriptExternal) {
-    Loaded loaded = load("tests/data/fxcomposer/post_invert.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/post_invert.fx");
     ASSERT_TRUE(loaded.renderer);
     const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
     const size_t amount = *loaded.renderer->findParameter("Amount");
@@ -151,7 +123,7 @@ TEST(FxComposerHost, PostEffectProcessesTheSceneTheHostDrawsAtScriptExternal) {
 // and point-size inputs, a centroid varying, a matrix varying, vs_1_1/vs_2_0 in a shader array, and a
 // compile argument that calls the effect's own function (evaluated on the host at every frame).
 TEST(FxComposerHost, DirectXSdkEffectRendersAndEvaluatesItsUserFunctionOnTheHost) {
-    Loaded loaded = load("tests/data/fxcomposer/sdk_skinned.fx");
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/sdk_skinned.fx");
     ASSERT_TRUE(loaded.renderer);
     runtime::EffectRenderer& renderer = *loaded.renderer;
     EXPECT_EQ(renderer.parameter(*renderer.findParameter("BackgroundColor")).asInt(),
@@ -211,7 +183,7 @@ TEST(FxComposerHost, EveryFxComposerStyleEffectDrawsANonBlankFrameWithEveryTechn
             if (entry.path().extension() != ".fx") continue;
             ++effects;
             SCOPED_TRACE(entry.path().string());
-            Loaded loaded = load(entry.path().string());
+            LoadedEffect loaded = loadEffectWithDiagnostics(entry.path().string());
             ASSERT_TRUE(loaded.renderer);
             for (const fx::CompiledTechnique& technique : loaded.renderer->effect().techniques) {
                 SCOPED_TRACE(technique.name);
@@ -227,7 +199,7 @@ TEST(FxComposerHost, EveryFxComposerStyleEffectDrawsANonBlankFrameWithEveryTechn
 // UTF-16 BE, CRLF): each copy renders the original's frame exactly.
 TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    Loaded original = load("tests/data/fxcomposer/material_phong.fx");
+    LoadedEffect original = loadEffectWithDiagnostics("tests/data/fxcomposer/material_phong.fx");
     ASSERT_TRUE(original.renderer);
     ASSERT_TRUE(render(*original.renderer, scene, kWidth, kHeight));
     const runtime::FrameImage expected = original.renderer->readFrame();
@@ -235,7 +207,8 @@ TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {
     for (const char* copy : {"material_phong_utf8_bom.fx", "material_phong_utf16le.fx",
                              "material_phong_utf16be.fx", "material_phong_crlf.fx"}) {
         SCOPED_TRACE(copy);
-        Loaded loaded = load(std::string("tests/data/fxcomposer/encodings/") + copy);
+        LoadedEffect loaded =
+            loadEffectWithDiagnostics(std::string("tests/data/fxcomposer/encodings/") + copy);
         ASSERT_TRUE(loaded.renderer);
         ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
         EXPECT_EQ(loaded.renderer->readFrame().rgba, expected.rgba);
