@@ -12,7 +12,8 @@
 // backend that creates no context, a penumbra bound on a scene without an area light, no goldens for this
 // renderer, an effect from elsewhere that carries no expectations and no goldens); FAIL. Only FAIL makes the
 // exit status 1. An effect library ported from FX Composer thus gets one table of compile, link, GL-error,
-// NaN and blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`).
+// NaN and blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`), and one line per
+// effect: drawn, blank or failed, with a summary line.
 #include "CheckCommand.h"
 
 #include <fx/EffectCompiler.h>
@@ -37,6 +38,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <string_view>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -260,6 +262,9 @@ std::string nonFiniteTargets(const runtime::EffectRenderer& renderer) {
     return "render target " + found->texture + " holds " + std::to_string(found->count) + " NaN/Inf values";
 }
 
+// How blankness() begins its answer: the effect summary tells a blank frame from a failure by it.
+constexpr std::string_view kBlankFrame = "the frame is ";
+
 // "" if the frame shows something; else why it is blank: one colour everywhere, or fewer than 0.1% of the
 // pixels differ from the most common colour (the clear colour, in practice).
 std::string blankness(const runtime::FrameImage& frame) {
@@ -270,17 +275,54 @@ std::string blankness(const runtime::FrameImage& frame) {
         ++counts[static_cast<uint32_t>(p[0]) | static_cast<uint32_t>(p[1]) << 8 |
                  static_cast<uint32_t>(p[2]) << 16];
     }
-    if (counts.size() <= 1) return "the frame is one constant colour";
+    if (counts.size() <= 1) return std::string(kBlankFrame) + "one constant colour";
     size_t dominant = 0;
     for (const auto& entry : counts) dominant = std::max(dominant, entry.second);
     const size_t others = pixels - dominant;
     if (others * 1000 < pixels)
-        return "the frame is blank: only " + std::to_string(others) + " of " + std::to_string(pixels) +
-               " pixels differ from its most common colour";
+        return std::string(kBlankFrame) + "blank: only " + std::to_string(others) + " of " +
+               std::to_string(pixels) + " pixels differ from its most common colour";
     return "";
 }
 
 // [SECTION] Output
+
+// One line per effect, for a run over a library (`check lib/*.fx`): `drawn` when every frame it rendered
+// shows something, `blank` with the first blank frame, `failed` with the first error that kept it from
+// compiling or rendering; then `N effects: A drawn, B blank, C failed`. Expectations and goldens are the
+// table's business: this says whether the effects draw at all.
+void printEffectSummary(const std::vector<CheckResult>& results) {
+    struct EffectStatus {
+        std::string failure;  // technique: first compile or render error
+        std::string blank;    // technique: first blank frame
+    };
+    std::vector<std::string> order;
+    std::map<std::string, EffectStatus> status;
+    for (const CheckResult& r : results) {
+        if (!status.count(r.effect)) order.push_back(r.effect);
+        EffectStatus& s = status[r.effect];
+        if (r.outcome != Outcome::Fail || (r.check != "compile" && r.check != "render")) continue;
+        std::string& slot = r.detail.rfind(kBlankFrame, 0) == 0 ? s.blank : s.failure;
+        if (slot.empty()) slot = (r.technique == "-" ? "" : r.technique + ": ") + r.detail;
+    }
+    size_t drawn = 0, blank = 0, failed = 0;
+    std::cout << "\n";
+    for (const std::string& effect : order) {
+        const EffectStatus& s = status[effect];
+        if (!s.failure.empty()) {
+            ++failed;
+            std::cout << effect << ": failed: " << s.failure.substr(0, s.failure.find('\n')) << "\n";
+        } else if (!s.blank.empty()) {
+            ++blank;
+            std::cout << effect << ": blank: " << s.blank << "\n";
+        } else {
+            ++drawn;
+            std::cout << effect << ": drawn\n";
+        }
+    }
+    std::cout << order.size() << (order.size() == 1 ? " effect: " : " effects: ") << drawn << " drawn, "
+              << blank << " blank, " << failed << " failed\n";
+}
 
 void printTable(const std::vector<CheckResult>& results) {
     const std::vector<std::string> header{"RESULT", "BACKEND", "EFFECT", "TECHNIQUE",
@@ -876,6 +918,7 @@ int checkCommand(const Arguments& args) {
 
     const std::vector<CheckResult>& results = checker.results();
     printTable(results);
+    printEffectSummary(results);
     std::map<Outcome, size_t> counts;
     for (const CheckResult& r : results) ++counts[r.outcome];
     std::cout << "\n"

@@ -274,6 +274,10 @@ TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
         EXPECT_EQ(row(result.output, technique, "boxes", "misclassified"), "") << technique << result.output;
     }
     EXPECT_EQ(attribute(readText(junit), "testsuites", "failures"), 0);
+    // A library run reads as one line per effect and a summary.
+    for (const char* line : {"\nmaterial_phong: drawn\n", "\npost_invert: drawn\n", "\nsdk_skinned: drawn\n",
+                             "\n3 effects: 3 drawn, 0 blank, 0 failed\n"})
+        EXPECT_NE(result.output.find(line), std::string::npos) << line << result.output;
 
     // The material effect with its draw removed: the host's background alone is a blank frame.
     std::string text = readText(dir / "material_phong.fx");
@@ -282,6 +286,10 @@ TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
     result = run("check " + (dir / "material_phong.fx").string() + " --backend egl");
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_EQ(row(result.output, "Simple", "boxes", "render").rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(result.output.find("\nmaterial_phong: blank: Simple: the frame is "), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("\n1 effect: 0 drawn, 1 blank, 0 failed\n"), std::string::npos)
+        << result.output;
 }
 
 TEST(CheckCommand, ABlankFrameFails) {
@@ -345,6 +353,9 @@ TEST(CheckCommand, CompileErrorsFailWithTheirLocation) {
     EXPECT_NE(result.output.find("FAIL"), std::string::npos) << result.output;
     EXPECT_NE(row(result.output, "\\S+", "-", "compile").find("hlsl_error.fx:6:18: error:"),
               std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("\nhlsl_error: failed: "), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("\n1 effect: 0 drawn, 0 blank, 1 failed\n"), std::string::npos)
         << result.output;
 }
 
