@@ -31,9 +31,9 @@ protected:
 };
 
 constexpr fx::TextureFormat kAllFormats[] = {
-    fx::TextureFormat::RGBA8, fx::TextureFormat::RGBA16F, fx::TextureFormat::RGBA32F, fx::TextureFormat::R16F,
-    fx::TextureFormat::R32F,  fx::TextureFormat::RG16F,   fx::TextureFormat::RG32F,   fx::TextureFormat::RGBA16,
-    fx::TextureFormat::D16,
+    fx::TextureFormat::RGBA8, fx::TextureFormat::RGBA16F, fx::TextureFormat::RGBA32F,
+    fx::TextureFormat::R16F,  fx::TextureFormat::R32F,    fx::TextureFormat::RG16F,
+    fx::TextureFormat::RG32F, fx::TextureFormat::RGBA16,  fx::TextureFormat::D16,
     fx::TextureFormat::D24S8, fx::TextureFormat::D24X8,   fx::TextureFormat::D32F,
 };
 
