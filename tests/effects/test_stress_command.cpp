@@ -85,10 +85,8 @@ TEST(StressCommand, ReportsTheFootprintOfTheEffectsOwnFit) {
     EXPECT_LT((*lispsm)["p95_footprint"].get<double>(), 0.5 * uniform);
 }
 
-TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
-    // The thesis effect without its StressExpectedFailures annotations.
-    const shadowfx::test::ScratchDirectory scratch("stress_undeclared");
-    const std::filesystem::path dir = scratch.path();
+// The thesis effect's text with its StressExpectedFailures annotations renamed, so that none applies.
+std::string thesisWithoutDeclarations() {
     std::ifstream in(kSource + "/effects/thesis_fxcomposer.fx");
     std::stringstream text;
     text << in.rdbuf();
@@ -96,7 +94,14 @@ TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
     const std::string key = "string StressExpectedFailures";
     for (size_t at = effect.find(key); at != std::string::npos; at = effect.find(key))
         effect.replace(at, key.size(), "string StressIgnoredNote");
-    std::ofstream(dir / "undeclared.fx") << effect;
+    return effect;
+}
+
+TEST(StressCommand, AnUndeclaredFailureFailsTheRunAndWritesItsErrorImage) {
+    // The thesis effect without its StressExpectedFailures annotations.
+    const shadowfx::test::ScratchDirectory scratch("stress_undeclared");
+    const std::filesystem::path dir = scratch.path();
+    std::ofstream(dir / "undeclared.fx") << thesisWithoutDeclarations();
     const RunResult result =
         run("stress " + (dir / "undeclared.fx").string() +
             " -I effects --techniques main --cases grazing --out " + (dir / "out").string());
@@ -133,13 +138,7 @@ TEST(StressCommand, AUniformReferenceThatCannotBeEvaluatedIsAnError) {
 
 // The thesis effect with its declarations replaced by `declaration` on technique main.
 std::filesystem::path declaredEffect(const std::filesystem::path& dir, const std::string& declaration) {
-    std::ifstream in(kSource + "/effects/thesis_fxcomposer.fx");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string effect = text.str();
-    const std::string key = "string StressExpectedFailures";
-    for (size_t at = effect.find(key); at != std::string::npos; at = effect.find(key))
-        effect.replace(at, key.size(), "string StressIgnoredNote");
+    std::string effect = thesisWithoutDeclarations();
     const size_t open = effect.find('<', effect.find("technique main"));
     effect.insert(open + 1, "\n    string StressExpectedFailures = \"" + declaration + "\";");
     const std::filesystem::path path = dir / "declared.fx";
