@@ -1,6 +1,8 @@
 // CompiledEffect: lookups and the texture-format table.
 #include <fx/CompiledEffect.h>
 
+#include "CaseFolding.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -118,8 +120,7 @@ constexpr FormatName kFormats[] = {
 }  // namespace
 
 std::optional<TextureFormat> parseTextureFormat(std::string_view name) {
-    std::string upper(name);
-    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    std::string upper = upperCase(name);
     // Accept the prefixed spellings too: D3DFMT_A8R8G8B8, DXGI_FORMAT_R32_FLOAT.
     for (std::string_view prefix : {std::string_view("D3DFMT_"), std::string_view("DXGI_FORMAT_")})
         if (upper.rfind(prefix, 0) == 0) upper.erase(0, prefix.size());

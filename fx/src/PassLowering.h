@@ -18,20 +18,15 @@
 #include <fx/Effect.h>
 #include <fx/VertexStreams.h>
 
+#include "HlslSpelling.h"
+#include "SemanticTables.h"
+
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace fx {
-
-// [SECTION] Semantic tables
-// Vertex attribute locations: fx/VertexStreams.h (vertexInputLocation, vertexInputSemantic).
-// Varying locations shared by both stages: TEXCOORDn -> n, COLORn -> 8+n, NORMAL 10, TANGENT 11,
-// BINORMAL 12, FOG 13. Returns nullopt for semantics that are not varyings (POSITION, PSIZE, VPOS...).
-std::optional<int> varyingLocation(const std::string& semantic);
-// "texcoord" -> "TEXCOORD0", "COLOR" -> "COLOR0", "SV_Position" -> "SV_POSITION".
-std::string canonicalSemantic(const std::string& semantic);
 
 // The generated entry point's name in every unit.
 inline constexpr const char* kWrapperEntryPoint = "fx_main";
@@ -77,8 +72,5 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
 bool isDepthCompareSampler(const Effect& effect, const Parameter& sampler);
 // The texture parameter a sampler's sampler_state names (Texture = <t>), if any.
 const Parameter* samplerTexture(const Effect& effect, const Parameter& sampler);
-
-// HLSL spelling of a type for a declaration ("float4x4", "row_major float4x3", "sampler2D").
-std::string hlslTypeName(const TypeDesc& type);
 
 }  // namespace fx

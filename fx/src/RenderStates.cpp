@@ -3,6 +3,8 @@
 // ("INV_SRC_ALPHA" for InvSrcAlpha).
 #include <fx/RenderStates.h>
 
+#include "CaseFolding.h"
+
 #include <cctype>
 
 namespace fx {
@@ -117,6 +119,12 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
         if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
             return false;
     return true;
+}
+
+std::string upperCase(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
 }
 
 const StateInfo& renderStateInfo(RenderStateId id) {

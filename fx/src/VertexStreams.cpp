@@ -1,6 +1,8 @@
 // VertexStreams: the attribute table and the free-name matching (see VertexStreams.h).
 #include <fx/VertexStreams.h>
 
+#include "CaseFolding.h"
+
 #include <array>
 #include <cctype>
 
@@ -28,8 +30,7 @@ constexpr std::array<StreamRange, 8> kStreams = {{
 
 // "TEXCOORD3" -> ("TEXCOORD", 3), upper case; no trailing digits -> index 0.
 std::pair<std::string, int> splitUpper(const std::string& semantic) {
-    std::string s;
-    for (char c : semantic) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    std::string s = upperCase(semantic);
     size_t end = s.size();
     while (end > 0 && std::isdigit(static_cast<unsigned char>(s[end - 1]))) --end;
     // Beyond nine digits the index cannot be a stream's; treat it as too large rather than overflow.

@@ -90,7 +90,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
 
     // A vertex shader without a pixel shader (`PixelShader = NULL;`, or none assigned) ran D3D9's
     // fixed-function pixel stage, which with no texture stage set outputs the interpolated diffuse
-    // colour: COLOR0 (varying location 8, fx/src/PassLowering.cpp) where the vertex shader writes it,
+    // colour: COLOR0 (varying location 8, fx/src/SemanticTables.cpp) where the vertex shader writes it,
     // else D3D's default diffuse, white.
     const bool writesColor0 = pass.vertex.glsl.find("layout(location = 8) out") != std::string::npos;
     const std::string fixedFunctionPixels =

@@ -148,7 +148,7 @@ bool SemanticBinder::takesSemantic(const std::string& semantic) {
     bool inverse = false, transpose = false;
     if (classify(semantic, kind, inverse, transpose)) return true;
     const std::string name = upper(semantic);
-    // STANDARDSGLOBAL marks the script parameter the compiler reads (fx/EffectCompiler.cpp).
+    // STANDARDSGLOBAL marks the script parameter the compiler reads (fx/src/ScriptValidation.cpp).
     if (name == "STANDARDSGLOBAL") return true;
     return std::any_of(std::begin(kTunableSemantics), std::end(kTunableSemantics),
                        [&](const char* tunable) { return name == upper(tunable); });

@@ -1,0 +1,120 @@
+// Compiler: the effect compiler's state over one effect (EffectCompiler.h's compileEffect), its stages
+// defined in the files named after them:
+//   EffectCompiler.cpp       initial values, parameter info, passes and techniques, run()
+//   ResourceDescriptors.cpp  textures, samplers and their units
+//   ScriptValidation.cpp     SAS scripts checked and resolved against the effect
+//   StageCompilation.cpp     lowering, the cache, glslang and SPIRV-Cross (in workers or here), reflection
+//   HlslMessages.cpp         glslang's and SPIRV-Cross's messages said at the user's source
+#pragma once
+
+#include <fx/CompileCache.h>
+#include <fx/CompileWorkers.h>
+#include <fx/EffectCompiler.h>
+#include <fx/Preshader.h>
+
+#include "PassLowering.h"
+#include "StageCompile.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fx::detail {
+
+class Compiler {
+public:
+    Compiler(std::shared_ptr<const Effect> effect, const CompileOptions& options, DiagnosticSink& diagnostics)
+        : mEffect(*effect), mOptions(options), mDiagnostics(diagnostics) {
+        mOut = std::make_unique<CompiledEffect>();
+        mOut->effect = std::move(effect);
+    }
+
+    std::unique_ptr<CompiledEffect> run();
+
+private:
+    void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+        mDiagnostics.report(id, loc, args);
+        mFailed = true;
+    }
+    std::optional<Value> eval(const Expr& e, const TypeDesc* type) {
+        auto v = evaluate(
+            e, [this](std::string_view n) { return lookup(n); }, type, &mDiagnostics);
+        if (!v) mFailed = true;
+        return v;
+    }
+    // Parameters are the preshaders' slots, by their index in the effect.
+    SlotResolver slotResolver() const {
+        return [this](std::string_view name) -> std::optional<size_t> {
+            auto it = mIndex.find(std::string(name));
+            if (it == mIndex.end()) return std::nullopt;
+            return it->second;
+        };
+    }
+    const Value* lookup(std::string_view name) const {
+        auto it = mIndex.find(std::string(name));
+        return it == mIndex.end() || it->second >= mOut->initialValues.size()
+                   ? nullptr
+                   : &mOut->initialValues[it->second];
+    }
+
+    void initialValues();
+    void parameterInfo();
+    void passAnnotations(const Pass& source, CompiledPass& pass);
+    void textures();
+    void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
+    void resourceShape(const Parameter& p, TextureDesc& t);
+    void samplers();
+    void assignPairUnits();
+    void scripts();
+    std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
+    void validateScript(std::vector<ScriptCommand>& commands, const Technique* technique);
+    // A stage's place in mOut: technique and pass index.
+    struct PassSlot {
+        size_t technique = 0;
+        size_t pass = 0;
+    };
+    // A stage the cache did not have: compiled with all the others once every pass is lowered, so that
+    // the stages of an effect compile concurrently across the worker pool.
+    struct PendingStage {
+        PassSlot slot;
+        LoweredStage lowered;
+        uint64_t key = 0;
+        size_t job = 0;  // index into mJobs (identical units share one job)
+    };
+    bool compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot);
+    std::vector<StageOutcome> runJobs();
+    void finishPendingStages();
+    SourceLoc functionLocation(const LoweredStage& lowered) const;
+    void reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered);
+    SourceLoc userLocation(const HlslMessage& m, const LoweredStage& lowered) const;
+    void resolveReflection(StageProgram& program, const CompiledPass& pass);
+    const Expr* shaderExpr(const StateAssignment& s);
+    CompiledPass compilePass(const Pass& p, PassSlot slot);
+
+    const Effect& mEffect;
+    const CompileOptions& mOptions;
+    DiagnosticSink& mDiagnostics;
+    std::unique_ptr<CompiledEffect> mOut;
+    std::map<std::string, size_t> mIndex;  // parameter name -> index
+    std::map<std::string, int> mSamplerUnits;
+    std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
+    // The outputs (by varying location) of the current pass's stage before its pixel shader: its geometry
+    // shader's, else its vertex shader's (none after tessellation), which the pixel shader reads.
+    std::optional<std::map<int, TypeDesc>> mPreviousOutputs;
+    // The current pass's hull shader, whose partitioning and output topology its domain shader takes.
+    const FunctionDecl* mHull = nullptr;
+    bool mFailed = false;
+    // The diagnostics of the current technique's stages that the lowering could not express
+    // (UnsupportedFeature), held back until run() knows whether another technique can run.
+    std::vector<Diagnostic> mTechniqueUnsupported;
+    std::vector<PendingStage> mPending;
+    std::vector<StageJob> mJobs;
+    std::map<uint64_t, size_t> mJobByKey;
+};
+
+// SPIRV-Cross's message about a stage it could not write, said in the effect's terms.
+std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered);
+
+}  // namespace fx::detail

@@ -1,0 +1,170 @@
+// GeometryWrapper: a geometry shader's wrapper: its input array rebuilt like a vertex shader's outputs, the
+// user's function handed its output stream, the stream's element redeclared with varying locations (see
+// StageWrapper.h).
+#include "StageWrapper.h"
+
+#include "HlslSpelling.h"
+#include "SemanticTables.h"
+
+#include <algorithm>
+
+namespace fx {
+
+// The stream's element struct, redeclared with the varying location of each member's semantic (glslang
+// assigns the locations of a geometry shader's outputs from the struct it appends): members must be
+// scalars or vectors with a POSITION/SV_Position, varying or SV_ClipDistance semantic.
+bool WrapperBuilder::streamElement(const FunctionParam& stream) {
+    const StructDecl* decl =
+        stream.type.base == BaseType::Struct ? mEffect.findStruct(stream.type.structName) : nullptr;
+    if (!decl || !stream.type.arrayDims.empty())
+        return fail(DiagId::UnsupportedFeature, stream.loc,
+                    {"the element of geometry shader stream '" + stream.name + "' must be a struct"});
+    mStreamStruct = decl->name;
+    std::string members;
+    for (const StructMember& m : decl->members) {
+        const std::string semantic = canonicalSemantic(m.semantic);
+        if (m.type.base == BaseType::Struct || !m.type.arrayDims.empty() || m.type.shape == Shape::Matrix)
+            return fail(DiagId::UnsupportedFeature, m.loc,
+                        {"geometry shader output '" + m.name +
+                         "' must be a scalar or a vector (structs, arrays and matrices are not supported)"});
+        std::string declared = hlslTypeName(m.type) + " " + m.name;
+        if (semantic == "POSITION0" || semantic == "SV_POSITION") {
+            members += "    " + declared + " : SV_Position;\n";
+        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0) {
+            members += "    " + declared + " : " + m.semantic + ";\n";
+        } else if (auto location = varyingLocation(semantic) ? varyingLocation(semantic)
+                                                             : customVaryingLocation(mEffect, semantic)) {
+            if (m.type.base != BaseType::Float && m.type.base != BaseType::Half && m.interpolation.empty())
+                return fail(
+                    DiagId::UnsupportedFeature, m.loc,
+                    {"geometry shader output '" + m.name + "' of an integer type must be 'nointerpolation'"});
+            const std::string at = std::to_string(*location);
+            members += "    [[vk::location(" + at + ")]] " +
+                       (m.interpolation.empty() ? std::string() : m.interpolation + " ") + declared +
+                       " : FX_V" + at + ";\n";
+            mVaryingOutputs[*location] = m.type;
+        } else {
+            return fail(DiagId::UnsupportedFeature, m.loc,
+                        {"geometry shader output semantic '" + m.semantic + "' is not supported"});
+        }
+    }
+    mStreamStructText = "struct " + decl->name + "\n{\n" + members + "};\n";
+    return true;
+}
+
+// A geometry shader: [maxvertexcount(n)] void GS(triangle In input[3], inout TriangleStream<Out> s).
+// The wrapper is a geometry shader of the same primitive and vertex count that rebuilds `input` from the
+// vertex stage's SV_Position and float4 varyings and passes its own stream through.
+bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
+    if (mFn.maxVertexCount <= 0)
+        return fail(DiagId::UnsupportedFeature, mFn.loc,
+                    {"geometry shader '" + mFn.name + "' has no [maxvertexcount(n)] attribute"});
+    const FunctionParam* input = nullptr;
+    const FunctionParam* stream = nullptr;
+    std::string params, locals, body, callArgs;
+    size_t uniformIndex = 0;
+    bool primitiveId = false;
+    for (size_t i = 0; i < mFn.params.size(); ++i) {
+        const FunctionParam& p = mFn.params[i];
+        std::string arg;
+        if (p.isUniform) {
+            if (!uniformArgument(p, uniformIndex++, arg, globals)) return false;
+        } else if (!p.stream.empty()) {
+            if (stream)
+                return fail(DiagId::UnsupportedFeature, p.loc,
+                            {"geometry shader '" + mFn.name + "' has more than one output stream"});
+            stream = &p;
+            arg = "fx_stream";
+        } else if (!p.primitive.empty()) {
+            if (input)
+                return fail(DiagId::UnsupportedFeature, p.loc,
+                            {"geometry shader '" + mFn.name + "' has more than one input primitive"});
+            input = &p;
+            arg = "fx_p" + std::to_string(i);
+        } else if (canonicalSemantic(p.semantic) == "SV_PRIMITIVEID") {
+            primitiveId = true;
+            arg = "(" + hlslTypeName(p.type) + ")fx_primitiveId";
+        } else {
+            return fail(DiagId::UnsupportedFeature, p.loc,
+                        {"geometry shader parameter '" + p.name +
+                         "' is not supported (expected the input primitive, the output stream, "
+                         "SV_PrimitiveID or a uniform)"});
+        }
+        callArgs += (i ? ", " : "") + arg;
+    }
+    if (!everyArgumentTaken(uniformIndex)) return false;
+    if (!input || !stream)
+        return fail(DiagId::UnsupportedFeature, mFn.loc,
+                    {"geometry shader '" + mFn.name +
+                     "' needs an input primitive ('triangle T input[3]') and an output stream "
+                     "('inout TriangleStream<T> stream')"});
+    // What the pass's draws give each primitive: a mesh's triangles, its vertices, its edges or its
+    // triangles with their neighbours (GpuMesh builds the edge and adjacency lists).
+    using Primitive = CompiledPass::DrawPrimitive;
+    static const std::map<std::string, std::pair<int, Primitive>> kInputs = {
+        {"point", {1, Primitive::Points}},
+        {"line", {2, Primitive::Lines}},
+        {"triangle", {3, Primitive::Triangles}},
+        {"triangleadj", {6, Primitive::TrianglesAdjacency}}};
+    if (input->primitive == "lineadj")
+        return fail(
+            DiagId::UnsupportedFeature, input->loc,
+            {"geometry shader input primitive 'lineadj' is not supported: a mesh's triangles define no "
+             "line strips, so an edge has no single continuation at either end"});
+    const auto kind = kInputs.find(input->primitive);
+    if (kind == kInputs.end())
+        return fail(DiagId::UnsupportedFeature, input->loc,
+                    {"geometry shader input primitive '" + input->primitive + "' is not supported"});
+    const int count = kind->second.first;
+    mPrimitive = kind->second.second;
+    if (input->type.arrayDims.size() != 1 || input->type.arrayDims[0] != count)
+        return fail(
+            DiagId::UnsupportedFeature, input->loc,
+            {"geometry shader input '" + input->name + "' must be an array of " + std::to_string(count) +
+             " vertices ('" + input->primitive + " T " + input->name + "[" + std::to_string(count) + "]')"});
+    if (stream->direction != FunctionParam::Direction::InOut)
+        return fail(DiagId::UnsupportedFeature, stream->loc,
+                    {"geometry shader stream '" + stream->name + "' must be 'inout'"});
+    if (!streamElement(*stream)) return false;
+
+    TypeDesc vertex = input->type;
+    vertex.arrayDims.clear();
+    const std::string inputName = "fx_p" + std::to_string(input - mFn.params.data());
+    locals += "    " + hlslTypeName(vertex) + " " + inputName + "[" + std::to_string(count) + "];\n";
+    for (int k = 0; k < count; ++k)  // glslang has no zero cast of an array: element by element
+        locals += "    " + inputName + "[" + std::to_string(k) + "] = (" + hlslTypeName(vertex) + ")0;\n";
+    std::set<int> varyings;
+    for (int k = 0; k < count; ++k) {
+        std::vector<Field> fields;
+        gatherFields(mEffect, vertex, input->semantic, input->interpolation,
+                     inputName + "[" + std::to_string(k) + "]", input->loc, fields);
+        const std::string from = "fx_in[" + std::to_string(k) + "].";
+        for (const Field& f : fields) {
+            if (f.semantic == "POSITION0" || f.semantic == "SV_POSITION") {
+                body += assignField(f, from + "fx_position");
+            } else if (auto location = varyingLocation(f.semantic)
+                                           ? varyingLocation(f.semantic)
+                                           : customVaryingLocation(mEffect, f.semantic)) {
+                varyings.insert(*location);
+                body += assignField(f, from + "fx_v" + std::to_string(*location));
+            } else {
+                return fail(DiagId::UnsupportedFeature, f.loc,
+                            {"geometry shader input semantic '" + f.semantic + "' is not supported"});
+            }
+        }
+    }
+    std::string inputMembers = "    float4 fx_position : SV_Position;\n";
+    for (int location : varyings)
+        inputMembers += "    [[vk::location(" + std::to_string(location) + ")]] float4 fx_v" +
+                        std::to_string(location) + " : FX_V" + std::to_string(location) + ";\n";
+    params = input->primitive + " fx_GsInput fx_in[" + std::to_string(count) + "], inout " + stream->stream +
+             "<" + mStreamStruct + "> fx_stream";
+    if (primitiveId) params += ", uint fx_primitiveId : SV_PrimitiveID";
+    wrapper += "struct fx_GsInput {\n" + inputMembers + "};\n";
+    wrapper += "[maxvertexcount(" + std::to_string(mFn.maxVertexCount) + ")]\nvoid " +
+               std::string(kWrapperEntryPoint) + "(" + params + ")\n{\n";
+    wrapper += locals + body + "    " + mFn.name + "(" + callArgs + ");\n}\n";
+    return true;
+}
+
+}  // namespace fx

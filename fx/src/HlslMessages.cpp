@@ -1,0 +1,88 @@
+// HlslMessages: what glslang and SPIRV-Cross say about a generated unit, said at the user's source: the
+// .fx line through #line, generated code at the pass's compile expression (see Compiler.h).
+
+#include "Compiler.h"
+
+namespace fx::detail {
+
+SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lowered) const {
+    if (m.file.empty() || m.file == kGeneratedFile || m.line <= 0) return lowered.compileLoc;
+    SourceLoc loc{m.file, m.line, m.column};
+    if (loc.column == 0) {
+        // glslang 12 gives no column: find the token the message quotes ('name' : ...) on that line of the
+        // unit, whose columns are the preprocessed text's (declarations are padded to their column).
+        std::string line, file;
+        int number = 0;
+        size_t pos = 0;
+        const std::string& text = lowered.hlsl;
+        while (pos < text.size()) {
+            size_t end = text.find('\n', pos);
+            if (end == std::string::npos) end = text.size();
+            std::string l = text.substr(pos, end - pos);
+            pos = end + 1;
+            if (l.rfind("#line ", 0) == 0) {
+                size_t q = l.find('"');
+                number = std::stoi(l.substr(6)) - 1;
+                file = q == std::string::npos ? file : l.substr(q + 1, l.rfind('"') - q - 1);
+            } else {
+                ++number;
+                if (file == m.file && number == m.line) {
+                    line = l;
+                    break;
+                }
+            }
+        }
+        size_t q1 = m.text.find('\''), q2 = q1 == std::string::npos ? q1 : m.text.find('\'', q1 + 1);
+        size_t column = std::string::npos;
+        if (q2 != std::string::npos && q2 > q1 + 1) column = line.find(m.text.substr(q1 + 1, q2 - q1 - 1));
+        if (column == std::string::npos) column = line.find_first_not_of(" \t");
+        loc.column = column == std::string::npos ? 0 : static_cast<int>(column) + 1;
+    }
+    return mEffect.sourceMap.map(loc);
+}
+
+void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered) {
+    // After glslang's first error its parser recovers with generic follow-ons at column 1 ("'declaration'
+    // : Expected", "'' : Could not perform requested binary operation") that only repeat the first one.
+    bool hadError = false;
+    auto isFollowOn = [](const std::string& text) {
+        return text.rfind("'declaration' : Expected", 0) == 0 ||
+               text.rfind("'function call arguments' : Expected", 0) == 0 || text.rfind("'' : ", 0) == 0;
+    };
+    for (const HlslMessage& m : messages) {
+        if (m.error && hadError && isFollowOn(m.text)) continue;
+        hadError = hadError || m.error;
+        SourceLoc loc = userLocation(m, lowered);
+        std::string text = m.text;
+        while (!text.empty() && text.back() == ' ') text.pop_back();
+        if (m.file == kGeneratedFile) text += " (in the code generated for '" + lowered.entryPoint + "')";
+        if (m.error)
+            error(DiagId::HlslError, loc, {text});
+        else if (m.file != kGeneratedFile)
+            mDiagnostics.report(DiagId::HlslWarning, loc, {text});
+    }
+}
+
+// SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
+// and, where the cause is known, what in the effect led there.
+std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
+    const char* stage = lowered.stage == ShaderStage::Vertex     ? "vertex"
+                        : lowered.stage == ShaderStage::Fragment ? "pixel"
+                        : lowered.stage == ShaderStage::Geometry ? "geometry"
+                        : lowered.stage == ShaderStage::Hull     ? "hull"
+                                                                 : "domain";
+    std::string cause;
+    if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
+        cause =
+            "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
+            "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
+    return cause + "the " + std::string(stage) + " shader '" + lowered.entryPoint + "' (" + lowered.profile +
+           ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+}
+
+SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {
+    std::vector<const FunctionDecl*> functions = mEffect.findFunctions(lowered.entryPoint);
+    return functions.empty() || !functions.front()->loc.valid() ? lowered.compileLoc : functions.front()->loc;
+}
+
+}  // namespace fx::detail

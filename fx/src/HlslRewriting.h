@@ -1,0 +1,31 @@
+// HlslRewriting: the lowering's edits of the user's HLSL text, made on identifiers outside comments and
+// string literals: the intrinsic calls glslang gets wrong or cannot express rewritten, the names a text
+// uses collected. Private to fx.
+#pragma once
+
+#include <set>
+#include <string>
+
+namespace fx {
+
+// glslang 12.0 decomposes HLSL's lit() with n.h * m where HLSL specifies pow(n.h, m) (its specular term
+// then grows linearly with the exponent and saturates everything lit). Every unit gets a correct lit and
+// calls of lit( are renamed to it by rewriteIntrinsics. HLSL: lit(n.l, n.h, m) = (1, max(n.l, 0),
+// (n.l < 0 || n.h < 0) ? 0 : pow(n.h, m), 1).
+inline constexpr const char* kLitReplacement =
+    "float4 fx_lit(float n_dot_l, float n_dot_h, float m)\n"
+    "{ return float4(1, max(n_dot_l, 0), (n_dot_l < 0 || n_dot_h < 0) ? 0 : pow(max(n_dot_h, 0), m), 1); }\n";
+
+bool isIdentChar(char c);
+// Identifiers of HLSL text, skipping comments and string literals.
+std::set<std::string> identifiersIn(const std::string& text);
+// Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
+// calls of the comparison helpers. A depth sampler reaching a function through a parameter is not
+// rewritten: the parameter's name is not S (and if it is, it names the global anyway).
+std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers);
+// The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
+// the texel (filtered when the sampler filters linearly), in every component.
+std::string depthSamplerHelpers(const std::string& s);
+
+}  // namespace fx

@@ -1,0 +1,184 @@
+// Parser: functions, and the loop-free bodies host expressions may call (see Parser.h).
+#include "Parser.h"
+
+#include <algorithm>
+
+namespace fx::detail {
+
+void Parser::parseFunction(size_t first, const TypeDesc& returnType, const Token& name) {
+    FunctionDecl decl;
+    decl.name = name.text;
+    decl.loc = name.loc;
+    decl.returnType = returnType;
+    decl.maxVertexCount = mMaxVertexCount;
+    decl.attributes = mAttributes;
+    expect("(");
+    if (check("void") && peek(1).is(")")) advance();
+    while (!check(")")) {
+        if (!decl.params.empty()) expect(",");
+        FunctionParam param;
+        bool modifier = true;
+        while (modifier) {
+            modifier = true;
+            const Token& t = peek();
+            if (t.is("in"))
+                param.direction = FunctionParam::Direction::In;
+            else if (t.is("out"))
+                param.direction = FunctionParam::Direction::Out;
+            else if (t.is("inout"))
+                param.direction = FunctionParam::Direction::InOut;
+            else if (t.is("uniform"))
+                param.isUniform = true;
+            else if (t.is("linear") || t.is("centroid") || t.is("nointerpolation") || t.is("noperspective") ||
+                     t.is("sample"))
+                param.interpolation = t.text;
+            else if (t.is("point") || t.is("line") || t.is("triangle") || t.is("lineadj") ||
+                     t.is("triangleadj"))
+                param.primitive = t.text;
+            else if (t.is("const") || t.is("precise") || t.is("row_major") || t.is("column_major")) {
+            } else
+                modifier = false;
+            if (modifier) advance();
+        }
+        if (peek().is("InputPatch") || peek().is("OutputPatch")) {
+            // A hull or domain shader's control points: the parameter's type is their element.
+            param.patch = advance().text;
+            expect("<");
+            param.type = parseType();
+            expect(",");
+            Expr size = parseExpr(true);  // '>' closes the template
+            double number = 0;
+            if (!foldConstant(mEffect, size, number) || number < 1 || number > 32 ||
+                number != static_cast<double>(static_cast<int>(number)))
+                fail(DiagId::UnexpectedToken, size.loc, {"a control point count 1..32", size.str()});
+            param.patchSize = static_cast<int>(number);
+            expectCloseAngle();
+        } else if (peek().is("PointStream") || peek().is("LineStream") || peek().is("TriangleStream")) {
+            // A geometry shader's output stream: the parameter's type is its element.
+            param.stream = advance().text;
+            expect("<");
+            param.type = parseType();
+            expectCloseAngle();
+        } else {
+            param.type = parseType();
+        }
+        const Token& paramName = expectIdentifier("a parameter name");
+        param.name = paramName.text;
+        param.loc = paramName.loc;
+        parseArrayDims(param.type);
+        param.semantic = parseSemantics();
+        if (accept("=")) param.defaultValue = parseExpr();
+        decl.params.push_back(std::move(param));
+    }
+    advance();  // ')'
+    decl.returnSemantic = parseSemantics();
+    size_t last;
+    if (check(";")) {
+        decl.hasBody = false;
+        last = mPos;
+        advance();
+    } else {
+        if (!check("{")) unexpected("'{' or ';'");
+        const Token& open = advance();
+        const size_t bodyBegin = mPos;
+        int depth = 1;
+        while (depth > 0) {
+            if (atEnd()) unclosed("{", open);
+            if (check("{")) ++depth;
+            if (check("}")) --depth;
+            advance();
+        }
+        last = mPos - 1;
+        decl.straightBody = parseStraightBody(bodyBegin, last);
+    }
+    decl.hlslText = sliceText(first, last);
+    decl.hlslLoc = sliceLoc(first);
+    mEffect.functions.push_back(std::move(decl));
+    mEffect.order.push_back({DeclRef::Kind::Function, mEffect.functions.size() - 1});
+}
+
+std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, size_t end) {
+    using Statement = FunctionDecl::Statement;
+    const size_t resume = mPos;
+    std::vector<Statement> body;
+    mSpeculative = true;
+    try {
+        mPos = begin;
+        while (mPos < end) parseStraightStatement(body);
+        if (mPos != end || body.empty() || body.back().kind != Statement::Kind::Return) body.clear();
+        for (size_t i = 0; i + 1 < body.size(); ++i)
+            if (body[i].kind == Statement::Kind::Return) body.clear();
+    } catch (const SyntaxError&) {
+        body.clear();
+    }
+    mSpeculative = false;
+    mPos = resume;
+    return body;
+}
+
+bool Parser::isAssignment(const Token& t) {
+    return t.is("=") || t.is("+=") || t.is("-=") || t.is("*=") || t.is("/=");
+}
+
+void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
+    using Statement = FunctionDecl::Statement;
+    if (accept(";")) return;
+    if (accept("{")) {
+        while (!accept("}")) {
+            if (atEnd()) throw SyntaxError{};
+            parseStraightStatement(out);
+        }
+        return;
+    }
+    Statement statement;
+    if (accept("if")) {
+        statement.kind = Statement::Kind::If;
+        expect("(");
+        statement.value = parseExpr();
+        expect(")");
+        parseStraightStatement(statement.then);
+        if (accept("else")) parseStraightStatement(statement.otherwise);
+        for (const std::vector<Statement>* branch : {&statement.then, &statement.otherwise})
+            for (const Statement& s : *branch)
+                if (s.kind == Statement::Kind::Return) throw SyntaxError{};
+        out.push_back(std::move(statement));
+        return;
+    }
+    if (accept("return")) {
+        statement.kind = Statement::Kind::Return;
+        statement.value = parseExpr();
+        statement.hasValue = true;
+    } else if (peek().kind == Token::Kind::Identifier &&
+               (isAssignment(peek(1)) ||
+                (peek(1).is(".") && peek(2).kind == Token::Kind::Identifier && isAssignment(peek(3))))) {
+        statement.kind = Statement::Kind::Assign;
+        statement.name = advance().text;
+        if (accept(".")) statement.member = advance().text;
+        statement.op = advance().text;
+        statement.value = parseExpr();
+        statement.hasValue = true;
+    } else {
+        accept("const");
+        accept("static");
+        const TypeDesc type = parseType();
+        for (;;) {
+            Statement declaration;
+            declaration.kind = Statement::Kind::Declare;
+            declaration.type = type;
+            declaration.name = expectIdentifier("a name").text;
+            if (check("[")) throw SyntaxError{};  // local arrays: not straight-line values
+            if (accept("=")) {
+                declaration.value = parseExpr();
+                declaration.hasValue = true;
+            }
+            out.push_back(std::move(declaration));
+            if (!accept(",")) break;
+        }
+        expect(";");
+        return;
+    }
+    expect(";");
+    out.push_back(std::move(statement));
+}
+
+}  // namespace fx::detail

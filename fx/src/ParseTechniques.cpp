@@ -1,0 +1,269 @@
+// Parser: techniques, passes and state blocks (see Parser.h); what the states mean: StateAssignments.h.
+#include "Parser.h"
+
+#include "ConstantFolding.h"
+
+#include <cmath>
+
+namespace fx::detail {
+
+bool Parser::isTechniqueKeyword(const Token& token) {
+    return token.is("technique") || token.is("technique10") || token.is("technique11");
+}
+
+void Parser::parseGroup() {
+    const Token& keyword = advance();
+    const Token& name = expectIdentifier("a group name");
+    if (check("<")) parseAnnotations();
+    if (!check("{")) unexpected("'{'");
+    advance();
+    while (!check("}")) {
+        if (atEnd() || check("fxgroup")) unclosed("fxgroup", keyword);
+        if (!isTechniqueKeyword(peek())) unexpected("'technique11' or '}'");
+        parseTechnique(name.text);
+    }
+    advance();
+    accept(";");
+}
+
+void Parser::parseTechnique(const std::string& group) {
+    const Token& keyword = advance();
+    Technique technique;
+    technique.loc = keyword.loc;
+    technique.group = group;
+    technique.d3d10 = keyword.is("technique10") || keyword.is("technique11");
+    if (peek().kind == Token::Kind::Identifier) {
+        technique.name = peek().text;
+        technique.loc = advance().loc;
+    }
+    if (check("<")) technique.annotations = parseAnnotations();
+    if (!check("{")) unexpected("'{'");
+    advance();
+    mRefusals.beginTechnique();
+    while (!check("}")) {
+        if (atEnd() || isTechniqueKeyword(peek())) unclosed("technique", keyword);
+        if (!check("pass")) unexpected("'pass' or '}'");
+        technique.passes.push_back(parsePass(technique.d3d10));
+    }
+    advance();
+    accept(";");
+    for (const Technique& other : mEffect.techniques)
+        if (!technique.name.empty() && other.name == technique.name && other.group == technique.group)
+            error(DiagId::Redefinition, technique.loc, {technique.name});
+    if (mRefusals.leaveOut(technique.name, mDiag)) return;
+    mEffect.techniques.push_back(std::move(technique));
+}
+
+Pass Parser::parsePass(bool d3d10) {
+    const Token& keyword = advance();
+    Pass pass;
+    pass.loc = keyword.loc;
+    if (peek().kind == Token::Kind::Identifier) {
+        pass.name = peek().text;
+        pass.loc = advance().loc;
+    }
+    if (check("<")) pass.annotations = parseAnnotations();
+    if (!check("{")) unexpected("'{'");
+    advance();
+    mObjectsSet.clear();
+    while (!check("}")) {
+        if (atEnd() || check("pass") || isTechniqueKeyword(peek())) unclosed("pass", keyword);
+        parsePassState(pass);
+    }
+    advance();
+    if (d3d10) {
+        // A D3D10 pass that sets no rasterizer, depth-stencil or blend state runs with D3D10's
+        // defaults for it, not D3D9's (DepthFunc LESS, stencil masks 0xff, ...): expanded first, so
+        // that anything the pass sets wins.
+        std::vector<StateAssignment> defaults;
+        for (StateObjectKind kind :
+             {StateObjectKind::Rasterizer, StateObjectKind::DepthStencil, StateObjectKind::Blend})
+            if (!mObjectsSet.count(kind)) mStates.expandStateObject(kind, {}, pass.loc, defaults);
+        pass.states.insert(pass.states.begin(), defaults.begin(), defaults.end());
+    }
+    return pass;
+}
+
+void Parser::parseSetCall(Pass& pass, const Token& name) {
+    advance();  // '('
+    std::vector<Expr> args;
+    if (!check(")")) {
+        args.push_back(parseExpr());
+        while (accept(",")) args.push_back(parseExpr());
+    }
+    expect(")");
+    expect(";");
+    std::string what = name.text.substr(3);
+    for (StateObjectKind kind :
+         {StateObjectKind::Rasterizer, StateObjectKind::DepthStencil, StateObjectKind::Blend}) {
+        if (what != stateObjectTypeName(kind)) continue;
+        if (mStates.setStateObject(pass, name, kind, args)) mObjectsSet.insert(kind);
+        return;
+    }
+    const bool isShader = what == "VertexShader" || what == "PixelShader" || what == "GeometryShader" ||
+                          what == "HullShader" || what == "DomainShader" || what == "ComputeShader";
+    if (!isShader) {
+        error(DiagId::UnknownState, name.loc, {name.text});
+        return;
+    }
+    if (args.size() != 1) {
+        error(DiagId::InvalidStateValue, name.loc, {name.text, "expected one shader"});
+        return;
+    }
+    Expr value = std::move(args[0]);
+    if (std::optional<std::string> reason = unsupportedShaderValue(value, mEffect)) {
+        mRefusals.refuse(value.loc, *reason);
+        return;
+    }
+    mStates.normalizeCompileShader(value);
+    mStates.normalizeNull(value);
+    const bool none = (value.kind == Expr::Kind::Identifier && value.text == "NULL") ||
+                      (value.kind == Expr::Kind::Number && value.number == 0);
+    if (what == "VertexShader" || what == "PixelShader" || what == "GeometryShader" || what == "HullShader" ||
+        what == "DomainShader") {
+        StateAssignment state;
+        state.name = what;
+        state.loc = name.loc;
+        state.value = std::move(value);
+        mStates.validateShaderValue(state);
+        pass.states.push_back(std::move(state));
+        return;
+    }
+    if (none) return;
+    if (value.kind == Expr::Kind::Identifier && !mEffect.findParameter(value.text)) {
+        error(DiagId::UnknownIdentifier, value.loc, {value.text});
+        return;
+    }
+    mRefusals.refuse(name.loc, kComputeShaderRefusal);
+}
+
+void Parser::parsePassState(Pass& pass) {
+    const Token& name = expectIdentifier("a state name");
+    StateAssignment state;
+    state.name = name.text;
+    state.loc = name.loc;
+    // D3D10: SetVertexShader(CompileShader(vs_4_0, VS())); SetRasterizerState(rs); ...
+    if (name.text.size() > 3 && name.text.compare(0, 3, "Set") == 0 && check("(")) {
+        parseSetCall(pass, name);
+        return;
+    }
+    if (accept("[")) {
+        const Token& indexToken = peek();
+        Expr index = parseExpr();
+        double number = 0;
+        // D3D9's largest indexed state is Sampler[0..15]; the bound also keeps the cast defined.
+        if (!foldConstant(mEffect, index, number) || !(number >= 0 && number <= 15) ||
+            number != static_cast<double>(static_cast<int>(number)))
+            fail(DiagId::UnexpectedToken, indexToken.loc, {"a constant index 0..15", index.str()});
+        state.index = static_cast<int>(number);
+        expect("]");
+    }
+    expect("=");
+    if (check("asm")) fail(DiagId::UnsupportedFeature, peek().loc, {"asm shaders are not supported"});
+    state.value = parseExpr();
+    mStates.normalizeCompileShader(state.value);
+    mStates.normalizeNull(state.value);
+    expect(";");
+    std::optional<RenderStateId> id = findRenderState(state.name);
+    if (!id) {
+        if (equalsIgnoreCase(state.name, "GeometryShader") && state.value.kind == Expr::Kind::Identifier &&
+            state.value.text == "NULL")
+            return;
+        error(DiagId::UnknownState, state.loc, {state.name});
+        return;
+    }
+    const StateInfo& info = renderStateInfo(*id);
+    if (info.domain == StateDomain::Shader)
+        mStates.validateShaderValue(state);
+    else
+        mStates.resolveStateValue(state.value, info.domain, state.name);
+    pass.states.push_back(std::move(state));
+}
+
+std::vector<StateAssignment> Parser::parseObjectStateBlock(StateObjectKind kind) {
+    const Token& open = advance();  // '{'
+    std::vector<StateAssignment> states;
+    while (!check("}")) {
+        if (atEnd() || isTechniqueKeyword(peek()))
+            unclosed(std::string(stateObjectTypeName(kind)).c_str(), open);
+        const Token& name = expectIdentifier("a state name");
+        StateAssignment state;
+        state.name = name.text;
+        state.loc = name.loc;
+        if (accept("[")) {
+            const Token& indexToken = peek();
+            Expr index = parseExpr();
+            double number = 0;
+            if (!foldConstant(mEffect, index, number) || !(number >= 0 && number <= 7) ||
+                number != std::trunc(number))
+                fail(DiagId::UnexpectedToken, indexToken.loc, {"a render-target index 0..7", index.str()});
+            state.index = static_cast<int>(number);
+            expect("]");
+        }
+        expect("=");
+        state.value = parseExpr();
+        expect(";");
+        const StateObjectField* field = findStateObjectField(kind, state.name);
+        if (!field) {
+            error(DiagId::UnknownState, state.loc, {state.name});
+            continue;
+        }
+        if (state.index > 0 && field->object != StateObjectKind::Blend)
+            error(DiagId::UnexpectedToken, state.loc, {"a state without an index", state.name});
+        state.name = std::string(field->name);
+        mStates.resolveStateValue(state.value, field->domain, state.name);
+        states.push_back(std::move(state));
+    }
+    advance();
+    return states;
+}
+
+std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
+    if (!check("{")) unexpected("'{'");
+    const Token& open = advance();
+    std::vector<StateAssignment> states;
+    while (!check("}")) {
+        if (atEnd() || check("technique") || check("sampler_state")) unclosed("sampler_state", open);
+        const Token& name = expectIdentifier("a sampler state name");
+        StateAssignment state;
+        state.name = name.text;
+        state.loc = name.loc;
+        if (accept("[")) {
+            Expr index = parseExpr();
+            double number = 0;
+            if (foldConstant(mEffect, index, number) && number >= 0 &&
+                number <= 15)  // keeps the cast defined
+                state.index = static_cast<int>(number);
+            expect("]");
+        }
+        expect("=");
+        state.value = parseExpr();
+        expect(";");
+        std::optional<SamplerStateId> id = findSamplerState(state.name);
+        if (!id) {
+            error(DiagId::UnknownState, state.loc, {state.name});
+            continue;
+        }
+        const StateInfo& info = samplerStateInfo(*id);
+        if (info.domain == StateDomain::TextureRef) {
+            Expr& v = state.value;
+            if (v.kind == Expr::Kind::Identifier) v.kind = Expr::Kind::TextureRef;  // (t) and t
+            if (v.kind != Expr::Kind::TextureRef) {
+                error(DiagId::InvalidStateValue, v.loc, {state.name, "expected <texture>"});
+                continue;
+            }
+            const Parameter* texture = mEffect.findParameter(v.text);
+            if (!texture) {
+                error(DiagId::UnknownIdentifier, v.loc, {v.text});
+                continue;
+            }
+        } else {
+            mStates.resolveStateValue(state.value, info.domain, state.name);
+        }
+        states.push_back(std::move(state));
+    }
+    advance();
+    return states;
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,385 @@
+// ResourceDescriptors: the effect's textures (files, render targets, procedural), samplers and the GL
+// units they are bound to (see Compiler.h).
+
+#include "Compiler.h"
+#include "CaseFolding.h"
+
+#include "CaseBlindPath.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace fx::detail {
+
+void Compiler::textures() {
+    std::filesystem::path base = std::filesystem::path(mEffect.path).parent_path();
+    for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
+        const Parameter& p = mEffect.parameters[i];
+        if (!p.type.isTexture()) continue;
+        TextureDesc t;
+        t.parameter = i;
+        t.loc = p.loc;
+        t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube
+                 : p.type.base == BaseType::Texture3D ? BaseType::Texture3D
+                 : p.type.base >= BaseType::Texture1DArray && p.type.base <= BaseType::Texture2DMS
+                     ? p.type.base
+                     : BaseType::Texture2D;
+        resourceShape(p, t);
+        // An untyped `texture` says what it holds in FX Composer's ResourceType annotation.
+        if (const Annotation* a = p.annotation("ResourceType");
+            a && p.type.base == BaseType::Texture && a->value.kind == Expr::Kind::String) {
+            if (equalsIgnoreCase(a->value.text, "Cube")) t.type = BaseType::TextureCube;
+            if (equalsIgnoreCase(a->value.text, "3D") || equalsIgnoreCase(a->value.text, "Volume"))
+                t.type = BaseType::Texture3D;
+        }
+        std::string semantic = upperCase(p.semantic);
+        t.kind = semantic == "RENDERCOLORTARGET"          ? TextureDesc::Kind::RenderColorTarget
+                 : semantic == "RENDERDEPTHSTENCILTARGET" ? TextureDesc::Kind::RenderDepthStencilTarget
+                                                          : TextureDesc::Kind::Runtime;
+        bool depth = t.kind == TextureDesc::Kind::RenderDepthStencilTarget;
+        t.format = depth ? TextureFormat::D24S8 : TextureFormat::RGBA8;
+        TypeDesc int2;
+        int2.base = BaseType::Float;
+        int2.shape = Shape::Vector;
+        int2.cols = 2;
+        TypeDesc scalar;
+        // Written so that NaN, infinities and fractions below 1 fail too (`w <= 0` let NaN and 0.5 through,
+        // and the cast of NaN or 1e30 to an integer was undefined behaviour).
+        const int maxSize = mOptions.maxRenderTargetSize;
+        auto checkSize = [&](float w, float h, const SourceLoc& loc) {
+            auto inRange = [&](float side) { return side >= 1 && side <= static_cast<float>(maxSize); };
+            if (!inRange(w) || !inRange(h)) {
+                auto shown = [](float side) {
+                    if (side != side) return std::string("NaN");
+                    char text[32];
+                    std::snprintf(text, sizeof text, "%g", static_cast<double>(side));
+                    return std::string(text);
+                };
+                error(
+                    DiagId::InvalidDimensions, loc,
+                    {shown(w) + "x" + shown(h) + " (each side must be 1.." + std::to_string(maxSize) + ")"});
+                return false;
+            }
+            return true;
+        };
+        // FX Composer also treated a texture as a render target when only its size annotations said so
+        // (`RenderTargetDimensions`, `ViewPortRatio`), with no RENDERCOLORTARGET semantic; its Format
+        // tells colour from depth.
+        if (t.kind == TextureDesc::Kind::Runtime && p.semantic.empty() &&
+            (p.annotation("RenderTargetDimensions") || p.annotation("ViewPortRatio"))) {
+            const Annotation* format = p.annotation("Format");
+            const std::optional<TextureFormat> f = format && format->value.kind == Expr::Kind::String
+                                                       ? parseTextureFormat(format->value.text)
+                                                       : std::nullopt;
+            depth = f && isDepthFormat(*f);
+            t.kind =
+                depth ? TextureDesc::Kind::RenderDepthStencilTarget : TextureDesc::Kind::RenderColorTarget;
+            t.format = depth ? TextureFormat::D24S8 : TextureFormat::RGBA8;
+        }
+        for (const char* dimensions : {"Dimensions", "RenderTargetDimensions"})
+            if (const Annotation* a = p.annotation(dimensions)) {
+                if (auto v = eval(a->value, &int2); v && checkSize(v->data[0], v->data[1], a->loc)) {
+                    t.width = static_cast<int>(v->data[0]);
+                    t.height = static_cast<int>(v->data[1]);
+                }
+            }
+        const Annotation* w = p.annotation("width");
+        const Annotation* h = p.annotation("height");
+        if (w || h) {
+            auto wv = w ? eval(w->value, &scalar) : std::optional<Value>(Value::scalar(1));
+            auto hv = h ? eval(h->value, &scalar) : wv;
+            if (wv && hv && checkSize(wv->asFloat(), hv->asFloat(), (w ? w : h)->loc)) {
+                t.width = static_cast<int>(wv->asFloat());
+                t.height = static_cast<int>(hv->asFloat());
+            }
+        }
+        if (const Annotation* a = p.annotation("ViewPortRatio")) {
+            if (auto v = eval(a->value, nullptr)) {
+                t.viewportRatio[0] = v->data.empty() ? 1.0f : v->data[0];
+                t.viewportRatio[1] = v->data.size() > 1 ? v->data[1] : t.viewportRatio[0];
+                if (t.viewportRatio[0] <= 0 || t.viewportRatio[1] <= 0 || t.viewportRatio[0] > 16 ||
+                    t.viewportRatio[1] > 16)
+                    error(DiagId::InvalidDimensions, a->loc, {"ViewPortRatio must be in (0, 16]"});
+            }
+        }
+        if (const Annotation* a = p.annotation("Format")) {
+            if (a->value.kind != Expr::Kind::String) {
+                error(DiagId::InvalidTextureFormat, a->value.loc, {a->value.str()});
+            } else if (auto f = parseTextureFormat(a->value.text)) {
+                t.format = *f;
+            } else {
+                error(DiagId::InvalidTextureFormat, a->value.loc, {a->value.text});
+            }
+        }
+        if (const Annotation* a = p.annotation("MipLevels")) {
+            if (auto v = eval(a->value, &scalar)) t.mipLevels = std::max(0, v->asInt());
+        }
+        if (const Annotation* a = p.annotation("Procedural")) procedural(p, *a, t);
+        std::string resource;
+        SourceLoc resourceLoc = p.loc;
+        if (const Annotation* a = p.annotation("ResourceName"); a && a->value.kind == Expr::Kind::String) {
+            resource = a->value.text;
+            resourceLoc = a->value.loc;
+        } else if (p.initializer && p.initializer->kind == Expr::Kind::String) {
+            resource = p.initializer->text;
+            resourceLoc = p.initializer->loc;
+        }
+        if (!resource.empty() && t.kind == TextureDesc::Kind::Runtime) {
+            t.kind = TextureDesc::Kind::File;
+            t.resourceName = resource;
+            std::string name = resource;  // "textures\\rock.dds" names a folder on Windows
+            for (char& c : name)
+                if (c == '\\') c = '/';
+            std::filesystem::path path = base / name;
+            std::error_code ec;
+            if (std::filesystem::exists(path, ec)) {
+                t.resolvedPath = path.string();
+            } else if (std::optional<std::string> found = detail::findPathIgnoringCase(path.string())) {
+                t.resolvedPath = *found;
+                mDiagnostics.report(DiagId::TextureCaseMismatch, resourceLoc, {resource, *found});
+            } else {
+                // FX Composer drew with a default texture when a file was missing, and so do we, whatever
+                // the file's type: a located warning, and a neutral (white) texture at run time.
+                mDiagnostics.report(DiagId::TextureFileNotFound, resourceLoc, {resource});
+            }
+        }
+        if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
+        const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
+                           t.type == BaseType::TextureCubeArray;
+        if (array && (t.kind == TextureDesc::Kind::RenderColorTarget ||
+                      t.kind == TextureDesc::Kind::RenderDepthStencilTarget))
+            error(DiagId::UnsupportedFeature, p.loc,
+                  {"texture array '" + p.name +
+                   "' cannot be a render target: a pass's RenderColorTarget has no way to choose the "
+                   "element it renders into"});
+        if (t.type == BaseType::Texture2DMS && t.samples == 0) {
+            if (t.kind == TextureDesc::Kind::RenderColorTarget ||
+                t.kind == TextureDesc::Kind::RenderDepthStencilTarget)
+                error(DiagId::TypeMismatch, p.loc,
+                      {"Texture2DMS '" + p.name +
+                       "': a multisample render target needs its sample count (Texture2DMS<float4, 4>)"});
+            t.samples = 1;
+        }
+        mOut->textures.push_back(std::move(t));
+    }
+}
+
+// A D3D10 array's element count (`int ArraySize = N;`, default 1) and a Texture2DMS<T, N>'s sample count.
+void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
+    const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
+                       t.type == BaseType::TextureCubeArray;
+    if (const Annotation* a = p.annotation("ArraySize")) {
+        TypeDesc scalar;
+        std::optional<Value> v = array ? eval(a->value, &scalar) : std::nullopt;
+        const float n = v ? v->asFloat() : 0.0f;
+        if (!array)
+            error(DiagId::InvalidAnnotation, a->loc, {"ArraySize", "only a texture array has elements"});
+        else if (!(n >= 1 && n <= 2048 && n == std::floor(n)))
+            error(DiagId::InvalidAnnotation, a->value.loc, {"ArraySize", "must be an integer in 1..2048"});
+        else
+            t.arraySize = static_cast<int>(n);
+    }
+    if (t.type != BaseType::Texture2DMS) return;
+    // `Texture2DMS<float4, 4>`: the count follows the element type; D3D10 allows 1..32, GL's limit is the
+    // driver's (GL_MAX_COLOR_TEXTURE_SAMPLES, at least 1), checked when the runtime creates it.
+    const std::string& args = p.type.templateArgs;
+    const size_t comma = args.rfind(',');
+    std::string count = comma == std::string::npos ? "" : args.substr(comma + 1);
+    count.erase(0, count.find_first_not_of(" \t"));
+    count.erase(count.find_last_not_of(" \t") + 1);
+    if (comma == std::string::npos) {
+        t.samples = 0;  // `Texture2DMS<float4>`: any count (SM 5); a render target needs one (below)
+        return;
+    }
+    const bool digits =
+        !count.empty() && count.size() <= 2 && count.find_first_not_of("0123456789") == std::string::npos;
+    const int n = digits ? std::atoi(count.c_str()) : 0;
+    if (n < 1 || n > 32)
+        error(DiagId::TypeMismatch, p.loc,
+              {"Texture2DMS '" + p.name +
+               "': its sample count must be the second template argument, 1..32 (Texture2DMS<float4, 4>)"});
+    else
+        t.samples = static_cast<int>(n);
+}
+
+// `string Procedural = "noise"; int Seed = 7;` with Dimensions (default 64x64) and Format (default
+// A8R8G8B8): a texture the runtime generates once when it creates the effect.
+void Compiler::procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t) {
+    if (t.kind != TextureDesc::Kind::Runtime || t.type != BaseType::Texture2D) {
+        error(DiagId::InvalidAnnotation, annotation.loc,
+              {"Procedural", "only a 2D texture that is not a render target can be procedural"});
+        return;
+    }
+    if (annotation.value.kind != Expr::Kind::String || !equalsIgnoreCase(annotation.value.text, "noise")) {
+        error(DiagId::InvalidAnnotation, annotation.value.loc,
+              {"Procedural", "'" + annotation.value.str() + "' is not a generator (known: \"noise\")"});
+        return;
+    }
+    if (isDepthFormat(t.format)) {
+        error(DiagId::InvalidAnnotation, annotation.loc,
+              {"Procedural", "a noise texture needs a colour format"});
+        return;
+    }
+    t.kind = TextureDesc::Kind::Procedural;
+    if (t.width == 0) t.width = t.height = 64;
+    if (const Annotation* seed = p.annotation("Seed")) {
+        TypeDesc scalar;
+        if (auto v = eval(seed->value, &scalar)) {
+            const float value = v->asFloat();
+            if (!(value >= 0 && value <= 4294967295.0f && value == std::floor(value)))
+                error(DiagId::InvalidAnnotation, seed->value.loc,
+                      {"Seed", "must be an integer between 0 and 4294967295"});
+            else
+                t.seed = static_cast<uint32_t>(value);
+        }
+    }
+}
+
+void Compiler::samplers() {
+    int unit = 0;
+    for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
+        const Parameter& p = mEffect.parameters[i];
+        if (!p.type.isSampler()) continue;
+        SamplerDesc s;
+        s.parameter = i;
+        s.loc = p.loc;
+        const bool d3d10 =
+            p.type.base == BaseType::SamplerState || p.type.base == BaseType::SamplerComparisonState;
+        if (d3d10) {
+            // D3D10's sampler defaults (D3D11_SAMPLER_DESC's, which FX11 uses) differ from D3D9's: trilinear
+            // and clamped, white border; a comparison sampler compares with NEVER until told otherwise.
+            s.minFilter = s.magFilter = s.mipFilter = 2;
+            s.addressU = s.addressV = s.addressW = 3;
+            for (float& c : s.borderColor) c = 1.0f;
+            s.comparisonFunc = p.type.base == BaseType::SamplerComparisonState ? 1 : 0;
+        } else {
+            mSamplerUnits[p.name] = unit++;  // D3D10 samplers get units per (texture, sampler) pair
+        }
+        bool hasComparison = false;
+        for (const StateAssignment& a : p.samplerState) {
+            auto id = findSamplerState(a.name);
+            if (!id) {
+                error(DiagId::UnknownState, a.loc, {a.name});
+                continue;
+            }
+            const StateInfo& info = samplerStateInfo(*id);
+            if (*id == SamplerStateId::Texture) {
+                auto it = mIndex.find(a.value.text);
+                if (it == mIndex.end())
+                    error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
+                else if (const TypeDesc& type = mEffect.parameters[it->second].type; !type.isTexture())
+                    // Declared, but of the wrong type: say so in the author's terms.
+                    error(DiagId::InvalidStateValue, a.value.loc,
+                          {a.name,
+                           "'" + a.value.text + "' is a " + type.hlslName() + " parameter, not a texture"});
+                else
+                    s.texture = it->second;
+                // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.
+                if (s.texture && mEffect.parameters[*s.texture].type.base == BaseType::Texture &&
+                    (p.type.base == BaseType::SamplerCube || p.type.base == BaseType::Sampler3D)) {
+                    for (TextureDesc& t : mOut->textures)
+                        if (t.parameter == *s.texture)
+                            t.type = p.type.base == BaseType::SamplerCube ? BaseType::TextureCube
+                                                                          : BaseType::Texture3D;
+                }
+                continue;
+            }
+            std::vector<float> value;
+            if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
+                auto e = findEnumValue(info.domain, a.value.text);
+                if (!e) {
+                    error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
+                    continue;
+                }
+                value = {static_cast<float>(*e)};
+            } else if (auto v = eval(a.value, nullptr)) {
+                value = v->data;
+            } else {
+                continue;
+            }
+            if (value.empty()) continue;
+            int n = static_cast<int>(value[0]);
+            switch (*id) {
+                case SamplerStateId::AddressU:
+                    s.addressU = n;
+                    break;
+                case SamplerStateId::AddressV:
+                    s.addressV = n;
+                    break;
+                case SamplerStateId::AddressW:
+                    s.addressW = n;
+                    break;
+                case SamplerStateId::MinFilter:
+                    s.minFilter = n;
+                    break;
+                case SamplerStateId::MagFilter:
+                    s.magFilter = n;
+                    break;
+                case SamplerStateId::MipFilter:
+                    s.mipFilter = n;
+                    break;
+                case SamplerStateId::MaxAnisotropy:
+                    s.maxAnisotropy = n;
+                    break;
+                case SamplerStateId::MipMapLodBias:
+                    s.mipLodBias = value[0];
+                    break;
+                case SamplerStateId::MinLOD:
+                    s.minLod = std::max(value[0], -1000.0f);
+                    break;
+                case SamplerStateId::MaxLOD:
+                    s.maxLod = std::min(value[0], 1000.0f);
+                    break;
+                case SamplerStateId::ComparisonFunc:
+                    s.comparisonFunc = n;
+                    break;
+                case SamplerStateId::BorderColor:
+                    if (value.size() >= 4) {
+                        for (int k = 0; k < 4; ++k) s.borderColor[k] = value[static_cast<size_t>(k)];
+                    } else {  // packed D3DCOLOR 0xAARRGGBB
+                        auto c = static_cast<uint32_t>(static_cast<int64_t>(value[0]));
+                        s.borderColor[0] = static_cast<float>((c >> 16) & 255) / 255.0f;
+                        s.borderColor[1] = static_cast<float>((c >> 8) & 255) / 255.0f;
+                        s.borderColor[2] = static_cast<float>(c & 255) / 255.0f;
+                        s.borderColor[3] = static_cast<float>((c >> 24) & 255) / 255.0f;
+                    }
+                    break;
+                case SamplerStateId::Filter: {
+                    // D3D10_FILTER bits: mip linear 0x1, mag linear 0x4, min linear 0x10, anisotropic 0x40,
+                    // comparison 0x80.
+                    auto tex = [&](int bit) { return (n & 0x40) ? 3 : ((n & bit) ? 2 : 1); };
+                    s.minFilter = tex(0x10);
+                    s.magFilter = tex(0x04);
+                    s.mipFilter = (n & 0x01) ? 2 : 1;
+                    hasComparison = (n & 0x80) != 0;
+                    break;
+                }
+                default:
+                    break;
+            }
+        }
+        if (hasComparison && s.comparisonFunc == 0) s.comparisonFunc = 4;  // LESSEQUAL
+        // A D3D10 SamplerState compares only through SampleCmp on a SamplerComparisonState.
+        if (p.type.base == BaseType::SamplerState) s.comparisonFunc = 0;
+        mOut->samplers.push_back(s);
+    }
+}
+
+// D3D10 (texture, sampler) pairs: units after the D3D9 samplers', one per pair a pass samples (the same
+// in both stages, so that they link to one GL sampler unit).
+void Compiler::assignPairUnits() {
+    const int first = static_cast<int>(mSamplerUnits.size());
+    for (CompiledTechnique& technique : mOut->techniques)
+        for (CompiledPass& pass : technique.passes) {
+            std::map<std::string, int> units;
+            for (StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+                for (SamplerBinding& s : stage->samplers)
+                    if (!s.pairTexture.empty())
+                        s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
+                                     .first->second;
+        }
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,147 @@
+// ScriptValidation: SAS Script annotations parsed and checked against the effect: passes, targets and
+// loops resolved where the compiler can (see Compiler.h).
+
+#include "Compiler.h"
+#include "CaseFolding.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace fx::detail {
+
+std::vector<ScriptCommand> Compiler::script(const std::vector<Annotation>& annotations, bool& has) {
+    has = false;
+    for (const Annotation& a : annotations) {
+        if (!equalsIgnoreCase(a.name, "Script") || a.value.kind != Expr::Kind::String) continue;
+        has = true;
+        DiagnosticList local;
+        auto commands = parseSasScript(a.value, local);
+        for (const Diagnostic& d : local.items()) {
+            if (d.severity == Severity::Error) mFailed = true;
+            mDiagnostics.report(d);
+        }
+        return commands;
+    }
+    return {};
+}
+
+void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Technique* technique) {
+    int loops = 0;
+    // Commands FX Composer warned about and skipped: left out of the compiled script, so that the runtime
+    // runs what FX Composer ran.
+    std::vector<bool> ignored(commands.size(), false);
+    for (size_t index = 0; index < commands.size(); ++index) {
+        const ScriptCommand& c = commands[index];
+        auto ignore = [&](const std::string& why) {
+            mDiagnostics.report(DiagId::ScriptCommandIgnored, c.loc,
+                                {std::string(scriptCommandName(c.kind)), why});
+            ignored[index] = true;
+        };
+        switch (c.kind) {
+            case ScriptCommand::Kind::Pass: {
+                bool found = false;
+                if (technique)
+                    for (const Pass& p : technique->passes) found |= scriptNameMatches(c.value, p.name);
+                if (!found)
+                    error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
+                break;
+            }
+            case ScriptCommand::Kind::ClearSetColor:
+            case ScriptCommand::Kind::ClearSetDepth:
+            case ScriptCommand::Kind::ClearSetStencil: {
+                // A parameter's name or a literal ("0.5", "1,0,0,1"), as the runtime reads it.
+                bool literal = true;
+                std::stringstream items(c.value);
+                for (std::string item; std::getline(items, item, ',');) {
+                    char* end = nullptr;
+                    std::strtod(item.c_str(), &end);
+                    literal = literal && end != item.c_str();
+                }
+                if (!mIndex.count(c.value) && !literal)
+                    ignore("'" + c.value +
+                           "' is neither a parameter nor a number; the clear value stays as it was");
+                break;
+            }
+            case ScriptCommand::Kind::RenderColorTarget:
+            case ScriptCommand::Kind::RenderDepthStencilTarget: {
+                if (c.value.empty()) break;
+                // What textures() made of the declaration: a RENDERCOLORTARGET semantic, or FX Composer's
+                // size annotations alone.
+                auto it = mIndex.find(c.value);
+                const bool wantDepth = c.kind == ScriptCommand::Kind::RenderDepthStencilTarget;
+                const TextureDesc::Kind want = wantDepth ? TextureDesc::Kind::RenderDepthStencilTarget
+                                                         : TextureDesc::Kind::RenderColorTarget;
+                bool isTarget = false;
+                for (const TextureDesc& t : mOut->textures)
+                    isTarget =
+                        isTarget || (it != mIndex.end() && t.parameter == it->second && t.kind == want);
+                if (!isTarget)
+                    ignore("'" + c.value + "' is not a " + (wantDepth ? "depth-stencil" : "render") +
+                           "-target texture; the pass draws into the target bound before");
+                break;
+            }
+            case ScriptCommand::Kind::Technique: {
+                // D3DX and FX Composer never failed an effect over its technique selector: names the
+                // effect lacks (its D3D10 twins, techniques a #define renamed) are skipped with a warning,
+                // and with none left the first technique runs (runtime/src/ScriptInterpreter.cpp).
+                const std::vector<std::string> names =
+                    c.selectorCondition.empty() ? std::vector<std::string>{c.value} : c.selectorAlternatives;
+                bool any = false;
+                for (const std::string& name : names) {
+                    any = any || mEffect.findTechnique(name);
+                    if (!mEffect.findTechnique(name))
+                        mDiagnostics.report(DiagId::ScriptUnknownTechnique, c.loc, {name});
+                }
+                if (!any && !mEffect.techniques.empty())
+                    mDiagnostics.report(DiagId::ScriptTechniqueFallback, c.loc,
+                                        {mEffect.techniques.front().name});
+                break;
+            }
+            case ScriptCommand::Kind::LoopByCount: {
+                ++loops;
+                // A literal count is checked here, once, rather than failing every frame in the runtime
+                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
+                const char* text = c.value.c_str();
+                char* end = nullptr;
+                const double count = std::strtod(text, &end);
+                if (end != text && *end == '\0' && !mIndex.count(c.value)) {
+                    if (!(count >= 0) || std::floor(count) != count)
+                        error(DiagId::InvalidScriptCommand, c.loc,
+                              {"LoopByCount", "'" + c.value + "' is not a non-negative whole count"});
+                    else if (count > mOptions.maxScriptLoopCount)
+                        error(DiagId::InvalidScriptCommand, c.loc,
+                              {"LoopByCount", c.value + " iterations exceed the limit of " +
+                                                  std::to_string(mOptions.maxScriptLoopCount)});
+                }
+                break;
+            }
+            case ScriptCommand::Kind::LoopEnd:
+                if (--loops < 0) {
+                    error(DiagId::ScriptLoopEndWithoutLoop, c.loc, {});
+                    loops = 0;
+                }
+                break;
+            default:
+                break;
+        }
+    }
+    if (loops > 0 && !commands.empty()) error(DiagId::ScriptUnbalancedLoop, commands.back().loc, {});
+    size_t kept = 0;
+    for (size_t index = 0; index < commands.size(); ++index) {
+        if (ignored[index]) continue;
+        if (kept != index) commands[kept] = std::move(commands[index]);  // never onto itself
+        ++kept;
+    }
+    commands.resize(kept);
+}
+
+void Compiler::scripts() {
+    for (const Parameter& p : mEffect.parameters) {
+        if (upperCase(p.semantic) != "STANDARDSGLOBAL") continue;
+        mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);
+        validateScript(mOut->globalScript, nullptr);
+    }
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,108 @@
+// SemanticTables: see SemanticTables.h.
+#include "SemanticTables.h"
+#include "CaseFolding.h"
+
+#include <fx/RenderStates.h>
+#include <fx/VertexStreams.h>
+
+#include <algorithm>
+#include <cctype>
+#include <iterator>
+#include <set>
+
+namespace fx {
+
+// Splits "TEXCOORD3" into ("TEXCOORD", 3); no trailing digits -> index 0.
+std::pair<std::string, int> splitSemantic(const std::string& canonical) {
+    size_t end = canonical.size();
+    while (end > 0 && std::isdigit(static_cast<unsigned char>(canonical[end - 1]))) --end;
+    if (end == canonical.size()) return {canonical, 0};
+    return {canonical.substr(0, end), std::stoi(canonical.substr(end))};
+}
+
+std::string canonicalSemantic(const std::string& semantic) {
+    std::string s = upperCase(semantic);
+    // D3D9's `TEXCOORD0_centroid` modifier: the interpolation is taken in gatherFields().
+    if (s.size() > 9 && s.compare(s.size() - 9, 9, "_CENTROID") == 0) s.resize(s.size() - 9);
+    // Indexed semantics get their index spelled out so that TEXCOORD and TEXCOORD0 are one key.
+    static const char* kIndexed[] = {"TEXCOORD", "COLOR",       "NORMAL",       "TANGENT",
+                                     "BINORMAL", "BLENDWEIGHT", "BLENDINDICES", "POSITION",
+                                     "PSIZE",    "FOG",         "DEPTH",        "SV_TARGET"};
+    for (const char* name : kIndexed)
+        if (s == name) return s + "0";
+    // fxc reads a system value with index 0 as the system value (`SV_Position0`, `SV_Depth0`,
+    // `SV_IsFrontFace0`); only SV_Target and the clip and cull distances are indexed.
+    if (s.size() > 4 && s.rfind("SV_", 0) == 0 && s.back() == '0' &&
+        !std::isdigit(static_cast<unsigned char>(s[s.size() - 2])) && s.rfind("SV_TARGET", 0) != 0 &&
+        s.rfind("SV_CLIPDISTANCE", 0) != 0 && s.rfind("SV_CULLDISTANCE", 0) != 0)
+        s.pop_back();
+    return s;
+}
+
+// Vertex inputs D3D9 declared that no mesh here supplies (a second tangent frame, more blend weights,
+// point size, fog): they read a constant, as an unbound D3D9 stream reads its default.
+std::optional<std::string> vertexInputDefault(const std::string& semantic) {
+    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
+    if (name == "PSIZE") return "float4(1, 1, 1, 1)";
+    if (name == "FOG" || name == "TESSFACTOR" || name == "DEPTH" || name == "SAMPLE")
+        return "float4(0, 0, 0, 0)";
+    for (const char* known : {"POSITION", "NORMAL", "TEXCOORD", "COLOR", "TANGENT", "BINORMAL", "BLENDWEIGHT",
+                              "BLENDINDICES", "POSITIONT"})
+        if (name == known && index < 16) return name == "COLOR" ? "float4(1, 1, 1, 1)" : "float4(0, 0, 0, 1)";
+    return std::nullopt;
+}
+
+std::optional<int> varyingLocation(const std::string& semantic) {
+    auto [name, index] = splitSemantic(canonicalSemantic(semantic));
+    if (name == "TEXCOORD" && index < 8) return index;
+    if (name == "COLOR" && index < 2) return 8 + index;
+    if (name == "NORMAL" && index == 0) return 10;
+    if (name == "TANGENT" && index == 0) return 11;
+    if (name == "BINORMAL" && index == 0) return 12;
+    if (name == "FOG" && index == 0) return 13;
+    // vs_3_0 has ten texture-coordinate outputs; matrix varyings spill into the indices above them.
+    if (name == "TEXCOORD" && index < 16) return 14 + index - 8;
+    if (name == "COLOR" && index < 4) return 22 + index - 2;
+    return std::nullopt;
+}
+
+// D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR", the SDK's "TEXTURE0".."TEXTURE8").
+// Such names get the locations above the D3D9 table's (24..31), then the table's locations no semantic of
+// the effect uses, in the order of their sorted names over the whole effect, so that every stage of every
+// pass agrees. The names of vertex inputs count too (a struct may be both), which only costs locations.
+std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
+    std::set<std::string> names;
+    std::set<int> tableUsed;
+    auto add = [&](const std::string& s, const TypeDesc& type) {
+        const std::string c = canonicalSemantic(s);
+        // A matrix or an array takes consecutive indices (gatherFields): every one of them is used.
+        int span = type.shape == Shape::Matrix ? std::max(type.cols, 1) : 1;
+        for (int d : type.arrayDims) span *= std::clamp(d, 1, 32);
+        const auto [name, first] = splitSemantic(c);
+        for (int k = 0; k < std::min(span, 32); ++k)
+            if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
+                tableUsed.insert(*location);
+        if (!c.empty() && c.rfind("SV_", 0) != 0 && !varyingLocation(c) && c != "POSITION0" && c != "VPOS" &&
+            c != "VPOS0" && c != "VFACE" && c.rfind("PSIZE", 0) != 0 && c.rfind("DEPTH", 0) != 0 &&
+            !vertexInputLocation(c))
+            names.insert(splitSemantic(c).first + std::to_string(splitSemantic(c).second));
+    };
+    for (const StructDecl& s : effect.structs)
+        for (const StructMember& m : s.members) add(m.semantic, m.type);
+    for (const FunctionDecl& f : effect.functions) {
+        add(f.returnSemantic, f.returnType);
+        for (const FunctionParam& p : f.params) add(p.semantic, p.type);
+    }
+    const std::string key = splitSemantic(canonicalSemantic(semantic)).first +
+                            std::to_string(splitSemantic(canonicalSemantic(semantic)).second);
+    auto it = names.find(key);
+    if (it == names.end()) return std::nullopt;
+    const int index = static_cast<int>(std::distance(names.begin(), it));
+    if (index < 8) return 24 + index;
+    int free = index - 8;
+    for (int location = 0; location < 24; ++location)
+        if (!tableUsed.count(location) && free-- == 0) return location;
+    return std::nullopt;
+}
+
+}  // namespace fx

@@ -1,0 +1,196 @@
+// StageCompilation: a pass's stages lowered, looked up in the cache, compiled together (in worker
+// processes or here) and their reflection resolved to the effect's parameters (see Compiler.h).
+
+#include "Compiler.h"
+
+#include "HlslToSpirv.h"
+#include "SpirvToGlsl.h"
+
+namespace fx::detail {
+
+namespace {
+
+StageProgram& stageProgram(CompiledPass& pass, ShaderStage stage) {
+    return stage == ShaderStage::Vertex     ? pass.vertex
+           : stage == ShaderStage::Fragment ? pass.fragment
+           : stage == ShaderStage::Geometry ? pass.geometry
+           : stage == ShaderStage::Hull     ? pass.hull
+                                            : pass.domain;
+}
+
+}  // namespace
+
+void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass) {
+    // Indices are resolved on every compile, cache hit or not: an unchanged unit may belong to an effect
+    // whose parameter list changed elsewhere (a texture added before it).
+    for (UniformBinding& u : program.uniforms) {
+        for (size_t a = 0; a < pass.arguments.size(); ++a)
+            if (pass.arguments[a].memberName == u.name) {
+                u.source = UniformBinding::Source::CompileArgument;
+                u.index = a;
+                u.type = pass.arguments[a].type;
+            }
+        if (u.source == UniformBinding::Source::Parameter) {
+            auto it = mIndex.find(u.name);
+            if (it != mIndex.end()) {
+                u.index = it->second;
+                u.type = mEffect.parameters[it->second].type;
+            }
+        }
+    }
+    for (SamplerBinding& s : program.samplers) {
+        auto it = mIndex.find(s.pairTexture.empty() ? s.glslName : s.pairSampler);
+        if (it != mIndex.end())
+            s.samplerParameter = it->second;
+        else if (!s.pairTexture.empty())
+            s.samplerParameter = kNoSampler;  // Texture2D.Load: the texture alone
+        if (auto texture = mIndex.find(s.pairTexture); !s.pairTexture.empty() && texture != mIndex.end())
+            s.textureParameter = texture->second;
+    }
+    for (StorageBufferBinding& b : program.storageBuffers)
+        if (auto it = mIndex.find(b.blockName); it != mIndex.end()) b.parameter = it->second;
+}
+
+bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
+    DiagnosticList lowering;
+    auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, lowering,
+                              mPreviousOutputs ? &*mPreviousOutputs : nullptr, mHull);
+    // What the pass lowering cannot express (a semantic or stage form shadowfx has no GL counterpart
+    // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
+    const bool onlyUnsupported =
+        !lowered && std::all_of(lowering.items().begin(), lowering.items().end(), [](const Diagnostic& d) {
+            return d.severity != Severity::Error || d.id == DiagId::UnsupportedFeature;
+        });
+    if (onlyUnsupported) {
+        mTechniqueUnsupported.insert(mTechniqueUnsupported.end(), lowering.items().begin(),
+                                     lowering.items().end());
+        return false;
+    }
+    for (const Diagnostic& d : lowering.items()) mDiagnostics.report(d);
+    if (!lowered) {
+        mFailed = true;
+        return false;
+    }
+    if (stage == ShaderStage::Vertex && !mPreviousOutputs && !mHull)
+        mPreviousOutputs = lowered->varyingOutputs;
+    if (stage == ShaderStage::Geometry) {
+        mPreviousOutputs = lowered->varyingOutputs;
+        pass.primitive = lowered->primitive;
+    }
+    if (stage == ShaderStage::Hull) {
+        pass.patchVertices = lowered->patchVertices;
+        const std::vector<const FunctionDecl*> hull = mEffect.findFunctions(lowered->entryPoint);
+        mHull = hull.empty() ? nullptr : hull.front();
+    }
+    // The stage's new arguments, as programs over the parameters they read.
+    for (size_t a = pass.arguments.size(); a < mPassArguments.size(); ++a) {
+        const LoweredArgument& argument = mPassArguments[a];
+        pass.arguments.push_back(
+            CompileArgument{compilePreshader(argument.expr, slotResolver(), &argument.type), argument.type,
+                            argument.memberName});
+    }
+    StageProgram& program = stageProgram(pass, stage);
+    std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
+    uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
+    // A unit already waiting for a worker is looked up once that job is done (finishPendingStages).
+    const bool waiting = mJobByKey.count(key) > 0;
+    if (const StageProgram* cached = mOptions.cache && !waiting ? mOptions.cache->find(key) : nullptr) {
+        program = *cached;
+        resolveReflection(program, pass);
+        return true;
+    }
+    auto [it, added] = mJobByKey.emplace(key, mJobs.size());
+    if (added) {
+        StageJob job;
+        job.hlsl = lowered->hlsl;
+        job.stage = stage;
+        job.entryPoint = kWrapperEntryPoint;
+        job.cross.uniformBlockName = stage == ShaderStage::Vertex     ? "fx_VsGlobals"
+                                     : stage == ShaderStage::Fragment ? "fx_PsGlobals"
+                                     : stage == ShaderStage::Geometry ? "fx_GsGlobals"
+                                     : stage == ShaderStage::Hull     ? "fx_HsGlobals"
+                                                                      : "fx_DsGlobals";
+        // One uniform block binding per stage: the stage enum's order.
+        job.cross.uniformBlockBinding = static_cast<int>(stage);
+        job.cross.samplerUnits = mSamplerUnits;
+        job.cross.depthSamplers = lowered->depthSamplers;
+        mJobs.push_back(std::move(job));
+    }
+    mPending.push_back(PendingStage{slot, std::move(*lowered), key, it->second});
+    return true;
+}
+
+std::vector<StageOutcome> Compiler::runJobs() {
+    std::vector<StageOutcome> outcomes;
+    if (mJobs.empty()) return outcomes;
+    if (mOptions.isolation == CompileIsolation::Workers) {
+        CompileWorkers& workers = mOptions.workers ? *mOptions.workers : CompileWorkers::shared();
+        if (workers.available()) return workers.run(mJobs);
+        mDiagnostics.report(DiagId::CompileWorkerNotFound, SourceLoc{mEffect.path, 0, 0});
+    }
+    for (const StageJob& job : mJobs) outcomes.push_back(compileStageInProcess(job));
+    return outcomes;
+}
+
+void Compiler::finishPendingStages() {
+    std::vector<StageOutcome> outcomes = runJobs();
+    std::vector<bool> reported(outcomes.size(), false);
+    for (PendingStage& pending : mPending) {
+        const StageOutcome& outcome = outcomes[pending.job];
+        const LoweredStage& lowered = pending.lowered;
+        CompiledPass& pass = mOut->techniques[pending.slot.technique].passes[pending.slot.pass];
+        // A unit shared by several passes is reported once, at the first.
+        const bool first = !reported[pending.job];
+        reported[pending.job] = true;
+        if (first) reportHlslMessages(outcome.messages, lowered);
+        // The repeats of a unit count as cache hits (misses if it failed), as when stages compiled singly.
+        if (!first && mOptions.cache) mOptions.cache->find(pending.key);
+        const SourceLoc function = functionLocation(lowered);
+        using Status = StageOutcome::Status;
+        switch (outcome.status) {
+            case Status::Compiled:
+                break;
+            case Status::HlslFailed:
+                mFailed = true;
+                continue;
+            case Status::CrossFailed:
+                if (first)
+                    error(DiagId::CrossCompileError, lowered.compileLoc,
+                          {crossErrorInEffectTerms(outcome.crossError, lowered)});
+                mFailed = true;
+                continue;
+            case Status::Crashed:
+                if (first)
+                    error(DiagId::HlslCompilerCrashed, function,
+                          {outcome.signal ? "signal " + std::to_string(outcome.signal) : outcome.crossError});
+                mFailed = true;
+                continue;
+            case Status::TimedOut: {
+                CompileWorkers& workers = mOptions.workers ? *mOptions.workers : CompileWorkers::shared();
+                if (first)
+                    error(DiagId::HlslCompilerTimedOut, function, {std::to_string(workers.timeLimitMs())});
+                mFailed = true;
+                continue;
+            }
+            case Status::WorkerFailed:
+                if (first) error(DiagId::CompileWorkerFailed, function, {outcome.crossError});
+                mFailed = true;
+                continue;
+            case Status::SanitizerReport:
+                if (first) error(DiagId::CompileWorkerSanitizerReport, function, {outcome.crossError});
+                mFailed = true;
+                continue;
+        }
+        StageProgram& program = stageProgram(pass, lowered.stage);
+        program = outcome.program;
+        program.stage = lowered.stage;
+        program.entryPoint = lowered.entryPoint;
+        program.profile = lowered.profile;
+        program.hlsl = lowered.hlsl;
+        program.sourceHash = pending.key;
+        if (mOptions.cache) mOptions.cache->store(pending.key, program);
+        resolveReflection(program, pass);
+    }
+}
+
+}  // namespace fx::detail

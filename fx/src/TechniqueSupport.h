@@ -1,0 +1,55 @@
+// TechniqueSupport: which techniques GL can run, and how those it cannot are left out. D3DX offered the
+// next valid technique where one did not validate (FindNextValidTechnique): a technique that uses what GL
+// cannot run is left out with a located warning naming it while another technique can run; an effect none
+// of whose techniques runs is an error. The parser finds some reasons in the syntax (stream output,
+// dynamic linkage, compute shaders), the compiler the rest in the lowering's diagnostics. Private to fx.
+#pragma once
+
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fx::detail {
+
+// Why GL cannot run a D3D10 pass's Set*Shader(value), where the value says so by itself: dynamic linkage
+// (BindInterfaces) or stream output (ConstructGSWithSO, inline or held by a shader variable).
+std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect& effect);
+// Why a pass that sets a compute shader is left out.
+inline constexpr const char* kComputeShaderRefusal =
+    "compute shaders are dispatched by an application, not drawn by a pass";
+
+// The parser's refusals: the first reason of the technique being parsed, the first technique left out.
+class TechniqueRefusals {
+public:
+    struct Refused {
+        std::string name;
+        std::string reason;
+        SourceLoc loc;
+    };
+    void beginTechnique() { mCurrent.reset(); }
+    // Something in the technique being parsed that GL cannot run: the first reason is reported.
+    void refuse(const SourceLoc& loc, const std::string& reason) {
+        if (!mCurrent) mCurrent = Refused{"", reason, loc};
+    }
+    // At the technique's end: true when it is left out, reported (never silently: the technique is named,
+    // with what GL cannot run and where it stands).
+    bool leaveOut(const std::string& techniqueName, DiagnosticSink& diagnostics);
+    const std::optional<Refused>& first() const { return mFirst; }
+
+private:
+    std::optional<Refused> mCurrent;  // of the technique being parsed
+    std::optional<Refused> mFirst;    // the first technique left out
+};
+
+// The compiler's: techniques whose code uses what the lowering cannot express, by name with what it said
+// (UnsupportedFeature errors). Left out with a warning at the first error while `anotherRuns`; otherwise
+// their diagnostics are reported as they stand and the result is false (the effect fails).
+bool reportUnsupportedTechniques(
+    const std::vector<std::pair<std::string, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
+    DiagnosticSink& diagnostics);
+
+}  // namespace fx::detail
