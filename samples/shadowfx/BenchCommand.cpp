@@ -11,6 +11,7 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
+#include "ParameterSweep.h"
 #include "PeerRun.h"
 
 #include <fx/EffectCompiler.h>
@@ -76,6 +77,11 @@ const char* const kBenchUsage =
     "                        the same; for comparing the per-draw cost)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --set PARAM=VALUE     set a parameter of every effect that has it (repeatable): --set Bias=0.002\n"
+    "  --set PARAM=V1,V2,... a sweep: one run per value, each a row of the one report and plot;\n"
+    "                        ranges START:STOP:xF (times F) or START:STOP:+S (plus S), STOP included:\n"
+    "                        --set Exponent=10:80:x2 is 10,20,40,80. Several sweeps run their cross\n"
+    "                        product (at most 64 settings); a vector's sweep braces each value:\n"
+    "                        --set LightColor={1,0,0},{0,1,0} (docs/measurement.md, \"Sweeps\")\n"
     "  --peers LIST          also run other libraries' shadow techniques on the same scenes and map sizes,\n"
     "                        scored against the same ground truth: osg (OpenSceneGraph's osgShadow, built\n"
     "                        when OpenSceneGraph was found; docs/peers.md). --effects may then be left out\n"
@@ -273,6 +279,16 @@ private:
 
 // [SECTION] Output
 
+// The run's technique and, in a sweep, the setting of its parameters: "main (Exponent=10)".
+std::string techniqueLabel(const Json& run) {
+    std::string label = run["technique"].get<std::string>();
+    if (!run.contains("setting")) return label;
+    std::string values;
+    for (const auto& [name, value] : run["setting"].items())
+        values += (values.empty() ? "" : ", ") + name + "=" + value.get<std::string>();
+    return label + " (" + values + ")";
+}
+
 // Points on the Pareto front of (time, error): no other run is at least as fast and strictly more exact.
 std::vector<size_t> paretoFront(const std::vector<std::pair<double, double>>& points) {
     std::vector<size_t> order(points.size());
@@ -305,8 +321,8 @@ std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& run
         const Json& time = fullCost ? run["full_cost"]["frame_time_ms"] : run["frame_time_ms"];
         points.emplace_back(time["median"].get<double>(),
                             run["error"]["misclassified_percent"].get<double>());
-        labels.push_back(run["effect_name"].get<std::string>() + "/" + run["technique"].get<std::string>() +
-                         " " + std::to_string(run["map_size"].get<int>()));
+        labels.push_back(run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
+                         std::to_string(run["map_size"].get<int>()));
         sceneOfRun.push_back(run["scene"].get<std::string>());
         sceneIndex.emplace(sceneOfRun.back(), static_cast<int>(sceneIndex.size()));
     }
@@ -391,7 +407,7 @@ void writeSideBySide(std::ostream& md, const Json& runs) {
     }
     if (!anyPeer) return;
     const auto describe = [](const Json& run) {
-        return run["effect_name"].get<std::string>() + "/" + run["technique"].get<std::string>() + " " +
+        return run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
                runtime::formatFixed(run["error"]["misclassified_percent"].get<double>(), 3) + " % in " +
                runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) + " ms";
     };
@@ -457,7 +473,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         const Json& full = run["full_cost"];
         const Json& frame = full["frame_time_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | ";
+           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | ";
         if (run["error"].is_object()) {
             const Json& e = run["error"];
             md << runtime::formatFixed(e["misclassified_percent"].get<double>(), 3) << " | "
@@ -495,7 +511,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     for (const Json& run : results["runs"]) {
         for (const Json& pass : run["full_cost"]["passes"]) {
             md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-               << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+               << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
                << pass["name"].get<std::string>() << " | "
                << runtime::formatFixed(pass["gpu_ms"].get<double>(), 3) << " | "
                << runtime::formatFixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>()
@@ -521,7 +537,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
             for (const Json& other : results["runs"]) {
                 if (other["peer"].is_string() || other["leave_out"].get<bool>() ||
                     other["scene"] != run["scene"] || other["effect"] != run["effect"] ||
-                    other["technique"] != run["technique"] || other["map_size"] != run["map_size"])
+                    techniqueLabel(other) != techniqueLabel(run) || other["map_size"] != run["map_size"])
                     continue;
                 speedUp = runtime::formatFixed(other["frame_time_ms"]["median"].get<double>() /
                                                    run["frame_time_ms"]["median"].get<double>(),
@@ -530,7 +546,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
             }
         }
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
            << (run["leave_out"].get<bool>() ? "on" : "off") << " | "
            << runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) << " | "
            << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
@@ -549,7 +565,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
         if (run["peer"].is_string()) continue;
         const Json& c = run["full_cost"]["runtime_cpu_ms"];
         md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << run["technique"].get<std::string>() << " | " << run["map_size"].get<int>() << " | "
+           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
            << runtime::formatFixed(c["script"].get<double>(), 3) << " | "
            << runtime::formatFixed(c["binding"].get<double>(), 3) << " | "
            << runtime::formatFixed(c["preshader"].get<double>(), 3) << " | "
@@ -784,15 +800,31 @@ int benchCommand(const Arguments& args) {
 
     const fx::ParseOptions baseOptions = effectParseOptions(args);
 
-    // --set applies to each effect that has the parameter; one that no effect has is a usage error.
-    std::vector<std::pair<std::string, std::string>> assignments;
+    // --set applies to each effect that has the parameter; one that no effect has is a usage error. A
+    // later --set of the same parameter replaces an earlier one.
+    std::vector<ParameterSweep> sweeps;
+    size_t settingCount = 1;
     for (const std::string& assignment : args.all("--set")) {
-        const size_t eq = assignment.find('=');
-        if (eq == std::string::npos) {
-            std::cerr << "shadowfx bench: --set expects PARAM=VALUE, got '" << assignment << "'\n";
+        std::string sweepError;
+        std::optional<ParameterSweep> sweep = parseSweep(assignment, sweepError);
+        if (!sweep) {
+            std::cerr << "shadowfx bench: --set " << sweepError << "\n";
             return 2;
         }
-        assignments.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
+        std::erase_if(sweeps, [&](const ParameterSweep& s) { return s.parameter == sweep->parameter; });
+        sweeps.push_back(std::move(*sweep));
+    }
+    std::string product;
+    for (const ParameterSweep& sweep : sweeps) {
+        settingCount *= sweep.values.size();
+        product += (product.empty() ? "" : " x ") + std::to_string(sweep.values.size());
+    }
+    if (settingCount > kMaxSweepSettings) {
+        std::cerr << "shadowfx bench: --set: " << product << " = " << settingCount << " settings, more than "
+                  << kMaxSweepSettings
+                  << " (each setting is a run of every effect, scene, map size and technique): sweep fewer "
+                     "values or split the bench\n";
+        return 2;
     }
     std::set<std::string> assignedSomewhere;
 
@@ -830,10 +862,12 @@ int benchCommand(const Arguments& args) {
             if (!variant.honoursMapSize)
                 std::cerr << "bench: " << effect << " has no " << size << "x" << size
                           << " render target (SHADOWFX_SHADOW_MAP_SIZE unused): run at its own size only\n";
+            std::vector<std::string> swept;
+            const size_t settings = settingsFor(*variant.timed, sweeps, swept).size();
             for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
                 if (techniqueFilter.empty() || std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                          technique.name) != techniqueFilter.end())
-                    runCount += truths.size() * leaveOutModes.size();
+                    runCount += settings * truths.size() * leaveOutModes.size();
             }
             variants.emplace(std::make_pair(effect, mapSize), std::move(variant));
         }
@@ -857,121 +891,139 @@ int benchCommand(const Arguments& args) {
             std::unique_ptr<runtime::EffectRenderer> visibility =
                 runtime::EffectRenderer::create(variant.visibility, sink);
             if (!timed || !visibility) return 1;
-            for (const auto& [name, value] : assignments) {
-                if (!timed->findParameter(name)) continue;
-                if (!timed->setParameterFromText(name, value, sink) ||
-                    !visibility->setParameterFromText(name, value, sink))
-                    return 1;
-                assignedSomewhere.insert(name);
-            }
-            for (const runtime::SceneTruth& t : truths) {
-                // The footprint of the map this effect renders: its parameterization of the light.
-                runtime::FrameOptions fitOptions;
-                fitOptions.width = width;
-                fitOptions.height = height;
-                const std::optional<runtime::LightFit> fit =
-                    timed->lightFit(t.scene, t.light->name, fitOptions);
-                const runtime::Bounds bounds = t.scene.bounds();
-                // A cascaded map or a cube map: each receiver in the texels of its own cascade's or face's
-                // tile.
-                const runtime::AliasingMeasure aliasing =
-                    fit ? runtime::fitAliasing(t.gbuffer, t.receivers, t.scene.camera.view(), *fit, mapSize)
-                        : runtime::perspectiveAliasing(t.gbuffer, t.receivers, t.light->view(bounds),
-                                                       t.light->projection(bounds), mapSize);
-                for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
-                    if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
-                                                              technique.name) == techniqueFilter.end())
-                        continue;
-                    // Leave-out on before off: a frame without leave-out leaves maps that an "on" run's
-                    // first frame could reuse, and that first frame is meant to find nothing cached.
-                    for (const bool leaveOut : leaveOutModes) {
-                        progress.show(effectName + " " + technique.name + " on " + t.scene.name + ", map " +
-                                      std::to_string(mapSize) + (leaveOut ? "" : ", no leave-out"));
-                        runtime::FrameOptions options;
-                        options.width = width;
-                        options.height = height;
-                        options.technique = technique.name;
-                        options.timePasses = true;
-                        options.leaveOut = leaveOut;
-                        options.batching = !args.flag("--no-batching");
-                        // Full cost first: its first frame finds nothing cached. Without leave-out nothing
-                        // is reused either way, and the one set of frames is both.
-                        runtime::FrameOptions fullOptions = options;
-                        fullOptions.reuseTargets = false;
-                        TimedFrames full, steady;
-                        const bool ok = timeFrames(*timed, t.scene, fullOptions, warmup, frames, cameraOrbit,
-                                                   sink, full) &&
-                                        (!leaveOut || timeFrames(*timed, t.scene, options, warmup, frames,
-                                                                 cameraOrbit, sink, steady));
-                        if (!ok) {
-                            progress.end();
-                            return 1;
-                        }
-                        if (!leaveOut) steady = full;
-                        // The shaded frame the error image is drawn over: at the scene's own camera.
-                        if (cameraOrbit != 0.0f) {
-                            runtime::FrameOptions stillOptions = options;
-                            stillOptions.timePasses = false;
-                            if (!timed->render(t.scene, stillOptions, sink) || sink.errors() > 0) {
+            // Each setting of the sweeps is its own set of runs; its label names it in every output.
+            std::vector<std::string> swept;
+            for (const Setting& setting : settingsFor(*variant.timed, sweeps, swept)) {
+                for (const auto& [name, value] : setting) {
+                    if (!timed->setParameterFromText(name, value, sink) ||
+                        !visibility->setParameterFromText(name, value, sink))
+                        return 1;
+                    assignedSomewhere.insert(name);
+                }
+                const std::string label = settingLabel(setting, swept);
+                for (const runtime::SceneTruth& t : truths) {
+                    // The footprint of the map this effect renders: its parameterization of the light.
+                    runtime::FrameOptions fitOptions;
+                    fitOptions.width = width;
+                    fitOptions.height = height;
+                    const std::optional<runtime::LightFit> fit =
+                        timed->lightFit(t.scene, t.light->name, fitOptions);
+                    const runtime::Bounds bounds = t.scene.bounds();
+                    // A cascaded map or a cube map: each receiver in the texels of its own cascade's or
+                    // face's tile.
+                    const runtime::AliasingMeasure aliasing =
+                        fit ? runtime::fitAliasing(t.gbuffer, t.receivers, t.scene.camera.view(), *fit,
+                                                   mapSize)
+                            : runtime::perspectiveAliasing(t.gbuffer, t.receivers, t.light->view(bounds),
+                                                           t.light->projection(bounds), mapSize);
+                    for (const fx::CompiledTechnique& technique : variant.timed->techniques) {
+                        if (!techniqueFilter.empty() &&
+                            std::find(techniqueFilter.begin(), techniqueFilter.end(), technique.name) ==
+                                techniqueFilter.end())
+                            continue;
+                        // Leave-out on before off: a frame without leave-out leaves maps that an "on" run's
+                        // first frame could reuse, and that first frame is meant to find nothing cached.
+                        for (const bool leaveOut : leaveOutModes) {
+                            progress.show(effectName + " " + technique.name +
+                                          (label.empty() ? "" : " " + label) + " on " + t.scene.name +
+                                          ", map " + std::to_string(mapSize) +
+                                          (leaveOut ? "" : ", no leave-out"));
+                            runtime::FrameOptions options;
+                            options.width = width;
+                            options.height = height;
+                            options.technique = technique.name;
+                            options.timePasses = true;
+                            options.leaveOut = leaveOut;
+                            options.batching = !args.flag("--no-batching");
+                            // Full cost first: its first frame finds nothing cached. Without leave-out
+                            // nothing is reused either way, and the one set of frames is both.
+                            runtime::FrameOptions fullOptions = options;
+                            fullOptions.reuseTargets = false;
+                            TimedFrames full, steady;
+                            const bool ok = timeFrames(*timed, t.scene, fullOptions, warmup, frames,
+                                                       cameraOrbit, sink, full) &&
+                                            (!leaveOut || timeFrames(*timed, t.scene, options, warmup, frames,
+                                                                     cameraOrbit, sink, steady));
+                            if (!ok) {
                                 progress.end();
                                 return 1;
                             }
-                        }
-                        const runtime::FrameImage shaded = timed->readFrame();
+                            if (!leaveOut) steady = full;
+                            // The shaded frame the error image is drawn over: at the scene's own camera.
+                            if (cameraOrbit != 0.0f) {
+                                runtime::FrameOptions stillOptions = options;
+                                stillOptions.timePasses = false;
+                                if (!timed->render(t.scene, stillOptions, sink) || sink.errors() > 0) {
+                                    progress.end();
+                                    return 1;
+                                }
+                            }
+                            const runtime::FrameImage shaded = timed->readFrame();
 
-                        Json record{{"effect", effect},
-                                    {"effect_name", effectName},
-                                    {"peer", nullptr},
-                                    {"technique", technique.name},
-                                    {"scene", t.scene.name},
-                                    {"map_size", mapSize},
-                                    {"map_size_honoured", variant.honoursMapSize},
-                                    {"width", width},
-                                    {"height", height},
-                                    {"gl_renderer", glRenderer},
-                                    {"frames", frames},
-                                    {"warmup_frames", warmup},
-                                    {"leave_out", leaveOut},
-                                    {"camera_orbit_degrees_per_frame", cameraOrbit},
-                                    {"first_frame_ms", full.firstFrameMs}};
-                        // The steady state keeps the fields' names of schema 1; the full cost sits beside.
-                        const Json steadyJson = timingJson(steady);
-                        for (const auto& [key, value] : steadyJson.items()) record[key] = value;
-                        record["full_cost"] = timingJson(full);
-                        record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
-                                                  {"mean_texel_footprint_px", aliasing.meanFootprint},
-                                                  {"p95_texel_footprint_px", aliasing.p95Footprint},
-                                                  {"pixels", aliasing.pixels}};
-                        record["ground_truth"] =
-                            Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
-                        record["error"] = nullptr;
-                        record["error_image"] = nullptr;
-                        if (variant.exposesVisibility) {
-                            runtime::FrameOptions visibilityOptions = options;
-                            visibilityOptions.timePasses = false;
-                            const std::optional<runtime::VisibilityScore> score =
-                                runtime::scoreVisibility(*visibility, t, t.truth, visibilityOptions, sink);
-                            if (!score || sink.errors() > 0) {
-                                progress.end();
-                                return 1;
+                            Json record{{"effect", effect},
+                                        {"effect_name", effectName},
+                                        {"peer", nullptr},
+                                        {"technique", technique.name},
+                                        {"scene", t.scene.name},
+                                        {"map_size", mapSize},
+                                        {"map_size_honoured", variant.honoursMapSize},
+                                        {"width", width},
+                                        {"height", height},
+                                        {"gl_renderer", glRenderer},
+                                        {"frames", frames},
+                                        {"warmup_frames", warmup},
+                                        {"leave_out", leaveOut},
+                                        {"camera_orbit_degrees_per_frame", cameraOrbit},
+                                        {"first_frame_ms", full.firstFrameMs}};
+                            if (!label.empty()) {
+                                Json values = Json::object();
+                                for (const auto& [name, value] : setting)
+                                    if (std::find(swept.begin(), swept.end(), name) != swept.end())
+                                        values[name] = value;
+                                record["setting"] = values;
                             }
-                            const std::vector<float>& effectVisibility = score->visibility;
-                            const runtime::ShadowErrors& errors = score->errors;
-                            record["error"] = errorJson(errors);
-                            const std::string image = "errors/" +
-                                                      safeName(effectName + "_" + technique.name + "_" +
-                                                               t.scene.name + "_" + std::to_string(mapSize)) +
-                                                      ".png";
-                            std::string writeError;
-                            if (runtime::writePng(runtime::errorImage(shaded, t.truth.visibility,
-                                                                      effectVisibility, t.receivers),
-                                                  (outDir / image).string(), writeError)) {
-                                record["error_image"] = image;
-                            } else {
-                                std::cerr << "\nbench: " << writeError << "\n";
+                            // The steady state keeps the fields' names of schema 1; the full cost sits
+                            // beside.
+                            const Json steadyJson = timingJson(steady);
+                            for (const auto& [key, value] : steadyJson.items()) record[key] = value;
+                            record["full_cost"] = timingJson(full);
+                            record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
+                                                      {"mean_texel_footprint_px", aliasing.meanFootprint},
+                                                      {"p95_texel_footprint_px", aliasing.p95Footprint},
+                                                      {"pixels", aliasing.pixels}};
+                            record["ground_truth"] =
+                                Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
+                            record["error"] = nullptr;
+                            record["error_image"] = nullptr;
+                            if (variant.exposesVisibility) {
+                                runtime::FrameOptions visibilityOptions = options;
+                                visibilityOptions.timePasses = false;
+                                const std::optional<runtime::VisibilityScore> score =
+                                    runtime::scoreVisibility(*visibility, t, t.truth, visibilityOptions,
+                                                             sink);
+                                if (!score || sink.errors() > 0) {
+                                    progress.end();
+                                    return 1;
+                                }
+                                const std::vector<float>& effectVisibility = score->visibility;
+                                const runtime::ShadowErrors& errors = score->errors;
+                                record["error"] = errorJson(errors);
+                                const std::string image =
+                                    "errors/" +
+                                    safeName(effectName + "_" + technique.name + "_" + t.scene.name + "_" +
+                                             std::to_string(mapSize) + (label.empty() ? "" : "_" + label)) +
+                                    ".png";
+                                std::string writeError;
+                                if (runtime::writePng(runtime::errorImage(shaded, t.truth.visibility,
+                                                                          effectVisibility, t.receivers),
+                                                      (outDir / image).string(), writeError)) {
+                                    record["error_image"] = image;
+                                } else {
+                                    std::cerr << "\nbench: " << writeError << "\n";
+                                }
                             }
+                            runs.push_back(std::move(record));
                         }
-                        runs.push_back(std::move(record));
                     }
                 }
             }
@@ -1060,9 +1112,10 @@ int benchCommand(const Arguments& args) {
         }
     }
     progress.end();
-    for (const auto& [name, value] : assignments) {
-        if (assignedSomewhere.count(name) == 0) {
-            std::cerr << "shadowfx bench: --set " << name << ": no effect has a parameter '" << name << "'\n";
+    for (const ParameterSweep& sweep : sweeps) {
+        if (assignedSomewhere.count(sweep.parameter) == 0) {
+            std::cerr << "shadowfx bench: --set " << sweep.parameter << ": no effect has a parameter '"
+                      << sweep.parameter << "'\n";
             return 2;
         }
     }

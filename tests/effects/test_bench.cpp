@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace shadowfx::test {
 namespace {
@@ -159,6 +160,53 @@ TEST(Bench, TinyRunWritesResultsThatValidateAgainstTheSchema) {
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
         EXPECT_TRUE(std::filesystem::exists(out / "error_vs_time.png"));
     }
+}
+
+// --set with several values is a sweep: one row per value in results.json, report.md and the plot, each
+// naming its setting, and each rendered with its own value (the errors differ). A single value beside it
+// stays as before sweeps: the rows name no setting for it. A cross product over the cap is a usage error
+// that says how the count came about.
+TEST(Bench, SetWithSeveralValuesSweepsInOneReport) {
+    const shadowfx::test::ScratchDirectory scratch("bench_sweep");
+    const std::filesystem::path out = scratch / "out";
+    std::string output;
+    ASSERT_EQ(runTool("bench --effects effects/esm.fx --scenes boxes --map-sizes 256 --frames 1 --warmup 0 "
+                      "--width 96 --height 72 --set Exponent=10:40:x2 --set BlurTaps=3 --out " +
+                          out.string(),
+                      output),
+              0)
+        << output;
+    const Json results = readJson(out / "results.json");
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    EXPECT_TRUE(validate(results, schema, schema, "$"));
+    ASSERT_EQ(results["runs"].size(), 3u) << results.dump(2);
+    const std::vector<std::string> exponents{"10", "20", "40"};
+    std::set<std::string> images;
+    for (size_t i = 0; i < exponents.size(); ++i) {
+        const Json& run = results["runs"][i];
+        EXPECT_EQ(run["setting"], Json({{"Exponent", exponents[i]}})) << run.dump(2);
+        ASSERT_TRUE(run["error"].is_object());
+        ASSERT_TRUE(run["error_image"].is_string());
+        images.insert(run["error_image"].get<std::string>());
+    }
+    EXPECT_EQ(images.size(), 3u) << "each setting has its own error image";
+    EXPECT_NE(results["runs"][0]["error"]["mae"], results["runs"][2]["error"]["mae"])
+        << "exponent 10 and 40 rendered alike: the sweep's values were not applied";
+    std::ifstream report(out / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    for (const std::string& exponent : exponents)
+        EXPECT_NE(text.find("| esm | esm (Exponent=" + exponent + ") | 256 |"), std::string::npos) << text;
+    std::ifstream plot(out / "error_vs_time.dat");
+    const std::string data((std::istreambuf_iterator<char>(plot)), std::istreambuf_iterator<char>());
+    for (const std::string& exponent : exponents)
+        EXPECT_NE(data.find("\"esm/esm (Exponent=" + exponent + ") 256\""), std::string::npos) << data;
+
+    output.clear();
+    EXPECT_EQ(runTool("bench --effects effects/esm.fx --set Exponent=1:80:+1 --set BlurTaps=1,3 --out " +
+                          out.string(),
+                      output),
+              2);
+    EXPECT_NE(output.find("80 x 2 = 160 settings, more than 64"), std::string::npos) << output;
 }
 
 // The control of the bound above: an effect that draws no shadow at all (its visibility frame is 1
