@@ -16,7 +16,7 @@ packages=(
   libsquish-dev
   # Meshes the built-in scenes read where Debian installs them (runtime/assets/src/AssetScenes.cpp).
   glmark2-data assimp-testmodels
-  # `shadowfx bench`: Embree casts the ground truth's shadow rays; gnuplot draws error_vs_time.png.
+  # `shadowfx bench`: Embree casts the ground truth's shadow rays; gnuplot draws scripts/gamma_sweep.py's plot.
   libembree-dev gnuplot-nox
   # `shadowfx view`: Dear ImGui (static, with its GLFW/OpenGL3 backends); Xvfb runs its test without a display.
   libimgui-dev xvfb

@@ -35,7 +35,7 @@ echo "main: wrote $(pwd)/out/thesis_fxcomposer.png"
 step "bench" "$shadowfx" bench --effects effects/thesis_fxcomposer.fx \
   --techniques main,hardware --scenes boxes,teapot --map-sizes 512,1024 --frames 5 --warmup 2 \
   --width 640 --height 480 --out out/bench
-echo "main: bench report $(pwd)/out/bench/report.md (results.json, error_vs_time.png, errors/*.png beside it)"
+echo "main: bench report $(pwd)/out/bench/report.md (results.json, error_vs_time.svg, errors/*.png beside it)"
 step "γ sweep" bash -c 'python3 scripts/gamma_sweep.py --scene forest --out out/gamma > out/gamma.txt'
 echo "main: γ sweep $(pwd)/out/gamma/report.md (gamma.json, gamma.png beside it)"
 step "stress" bash -c "'$shadowfx' stress --out out/stress > out/stress.txt"

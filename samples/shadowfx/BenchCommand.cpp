@@ -3,7 +3,7 @@
 // [SECTION] Diagnostics each distinct message once
 // [SECTION] Statistics  median and spread of the timed frames
 // [SECTION] Runs        ground truth per scene, then effect x map size x scene x technique
-// [SECTION] Output      results.json, report.md, error_vs_time.png through gnuplot
+// [SECTION] Output      results.json, report.md, error_vs_time.svg (ErrorTimePlot.h)
 //
 // Each effect is compiled twice per map size: as written (the timed frames) and with SHADOWFX_VISIBILITY
 // (one frame whose colour is the shadow factor, scored against the ground truth). Timing the visibility
@@ -11,6 +11,7 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
+#include "ErrorTimePlot.h"
 #include "ParameterSweep.h"
 #include "PeerRun.h"
 
@@ -66,7 +67,7 @@ const char* const kBenchUsage =
     "                        warm-up and timed frame, so that view-dependent shadow maps are redrawn every\n"
     "                        frame as in a walk-through (default 0: a still camera, whose maps leave-out\n"
     "                        reuses); errors are scored at the scene's own camera\n"
-    "  --time full|steady    the time error_vs_time.png plots (default full): full = every pass drawn\n"
+    "  --time full|steady    the time error_vs_time.svg plots (default full): full = every pass drawn\n"
     "                        each frame, nothing reused (what a moving light or moving objects cost);\n"
     "                        steady = leave-out reusing unchanged shadow maps (a static scene); both are\n"
     "                        timed and reported either way\n"
@@ -86,7 +87,7 @@ const char* const kBenchUsage =
     "                        scored against the same ground truth: osg (OpenSceneGraph's osgShadow, built\n"
     "                        when OpenSceneGraph was found; docs/peers.md). --effects may then be left out\n"
     "  --peer-techniques LIST  only these of the peers' techniques (default: all; the peer lists them)\n"
-    "  --out DIR             results.json, report.md, error_vs_time.png and errors/*.png go here\n";
+    "  --out DIR             results.json, report.md, error_vs_time.svg and errors/*.png go here\n";
 
 namespace {
 
@@ -289,95 +290,25 @@ std::string techniqueLabel(const Json& run) {
     return label + " (" + values + ")";
 }
 
-// Points on the Pareto front of (time, error): no other run is at least as fast and strictly more exact.
-std::vector<size_t> paretoFront(const std::vector<std::pair<double, double>>& points) {
-    std::vector<size_t> order(points.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return points[a].first != points[b].first ? points[a].first < points[b].first
-                                                  : points[a].second < points[b].second;
-    });
-    std::vector<size_t> front;
-    double bestError = std::numeric_limits<double>::infinity();
-    for (size_t i : order) {
-        if (points[i].second < bestError) {
-            front.push_back(i);
-            bestError = points[i].second;
-        }
-    }
-    return front;
-}
-
-// Writes the data and script next to the PNG (so the plot can be redrawn or restyled) and runs gnuplot.
-// Returns a note for the report: where the plot is, or why there is none.
+// error_vs_time.svg (ErrorTimePlot.h). Returns a note for the report: why there is no plot, or "".
 // `fullCost`: the x axis is the full cost (every pass drawn), else the steady state.
 std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& runs, bool fullCost) {
-    std::vector<std::pair<double, double>> points;
-    std::vector<std::string> labels;
-    std::vector<std::string> sceneOfRun;
-    std::map<std::string, int> sceneIndex;
+    std::vector<PlotPoint> points;
     for (const Json& run : runs) {
         if (!run["error"].is_object()) continue;
         const Json& time = fullCost ? run["full_cost"]["frame_time_ms"] : run["frame_time_ms"];
-        points.emplace_back(time["median"].get<double>(),
-                            run["error"]["misclassified_percent"].get<double>());
-        labels.push_back(run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
-                         std::to_string(run["map_size"].get<int>()));
-        sceneOfRun.push_back(run["scene"].get<std::string>());
-        sceneIndex.emplace(sceneOfRun.back(), static_cast<int>(sceneIndex.size()));
+        points.push_back(PlotPoint{time["median"].get<double>(),
+                                   run["error"]["misclassified_percent"].get<double>(),
+                                   run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
+                                       std::to_string(run["map_size"].get<int>()),
+                                   run["scene"].get<std::string>()});
     }
     if (points.empty()) return "no run exposes its shadow term (SHADOWFX_VISIBILITY): nothing to plot";
-    {
-        std::ofstream data(outDir / "error_vs_time.dat");
-        data << "# median_frame_ms misclassified_percent \"label\" scene_index scene\n";
-        for (size_t i = 0; i < points.size(); ++i)
-            data << points[i].first << " " << points[i].second << " \"" << labels[i] << "\" "
-                 << sceneIndex[sceneOfRun[i]] << " " << sceneOfRun[i] << "\n";
-        // One front per scene: runs of different scenes are not alternatives to each other.
-        for (const auto& [scene, index] : sceneIndex) {
-            std::vector<std::pair<double, double>> scenePoints;
-            for (size_t i = 0; i < points.size(); ++i)
-                if (sceneOfRun[i] == scene) scenePoints.push_back(points[i]);
-            data << "\n\n# Pareto front of scene " << scene << "\n";
-            for (size_t i : paretoFront(scenePoints))
-                data << scenePoints[i].first << " " << scenePoints[i].second << "\n";
-        }
-    }
-    {
-        std::ofstream script(outDir / "error_vs_time.gp");
-        script << "set terminal pngcairo size 1100,750 font ',10' noenhanced\n"
-                  "set output 'error_vs_time.png'\n"
-                  "set title 'Shadow error against frame time (one marker per effect/technique/scene/map "
-                  "size)'\n"
-               << "set xlabel 'median frame time, "
-               << (fullCost ? "full cost: every pass drawn" : "steady state: unchanged maps reused")
-               << " (ms, log scale)'\n"
-                  "set ylabel 'misclassified receiver pixels (%)'\n"
-                  "set grid\n"
-                  "set key outside right top\n"
-                  "set logscale x\nset yrange [0:*]\n"
-                  "plot ";
-        bool first = true;
-        for (const auto& [scene, index] : sceneIndex) {
-            script << (first ? "" : ", ") << "'error_vs_time.dat' index 0 using 1:($4==" << index
-                   << " ? $2 : 1/0) with points pt 7 ps 1.5 title 'scene " << scene << "'";
-            first = false;
-        }
-        script
-            << ", 'error_vs_time.dat' index 0 using 1:2:3 with labels offset 0.8,0.6 left font ',8' notitle"
-               ", for [s=1:"
-            << sceneIndex.size()
-            << "] 'error_vs_time.dat' index s using 1:2 with steps lw 2 dt 2 "
-               "lc rgb '#444444' title (s == 1 ? 'Pareto front (per scene)' : '')\n";
-    }
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-        return "gnuplot is not installed (Debian package gnuplot-nox): error_vs_time.png skipped; "
-               "error_vs_time.dat and error_vs_time.gp are there to plot later";
-    const std::string command = "cd '" + outDir.string() + "' && gnuplot error_vs_time.gp 2>gnuplot.log";
-    if (std::system(command.c_str()) != 0)
-        return "gnuplot failed (see " + (outDir / "gnuplot.log").string() + "): error_vs_time.png skipped";
-    std::error_code ignored;
-    std::filesystem::remove(outDir / "gnuplot.log", ignored);
+    std::string error;
+    if (!writeErrorTimePlot((outDir / "error_vs_time.svg").string(), points,
+                            fullCost ? "full cost: every pass drawn" : "steady state: unchanged maps reused",
+                            error))
+        return error + ": no plot";
     return "";
 }
 
@@ -458,7 +389,7 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
           "then pay for the scene pass alone). The plot's axis is the "
        << (fullAxis ? "full cost" : "steady-state time (`--time steady`)") << ".\n\n";
     if (plotNote.empty()) {
-        md << "![error against frame time](error_vs_time.png)\n\n";
+        md << "![error against frame time](error_vs_time.svg)\n\n";
     } else {
         md << "_" << plotNote << "_\n\n";
     }

@@ -15,6 +15,7 @@
 // NaN and blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`), and one line per
 // effect: drawn, blank or failed, with a summary line.
 #include "CheckCommand.h"
+#include "XmlText.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -346,33 +347,6 @@ void printTable(const std::vector<CheckResult>& results) {
     };
     print(header);
     for (const CheckResult& r : results) print(cells(r));
-}
-
-std::string xmlEscape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&apos;";
-                break;
-            default:
-                // XML 1.0 allows no control characters but tab, newline and carriage return.
-                if (static_cast<unsigned char>(c) >= 0x20 || c == '\t' || c == '\n' || c == '\r') out += c;
-        }
-    }
-    return out;
 }
 
 // JUnit XML as Jenkins, GitLab and GitHub's test reporters read it: one <testsuite> per effect, one
