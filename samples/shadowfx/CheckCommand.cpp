@@ -62,11 +62,15 @@ const char* const kCheckUsage =
     "  --require-goldens     a renderer without goldens FAILs instead of NOT_SUPPORTED\n"
     "  --width W, --height H frame size (default 320x240, the size goldens are made at)\n"
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
+    "  --area-radius R       the penumbra checks give every scene's light this areaRadius, overriding\n"
+    "                        ExpectAreaRadius (0: no area light, the penumbra rows NOT_SUPPORTED)\n"
     "  --list-techniques     print each effect's technique names, one per line, and exit\n"
     "  --no-batching         draw every object alone, not one instanced draw per mesh (the same images)\n"
     "Technique annotations read: string ExpectScenes, float ExpectMisclassifiedBelow (percent of receiver\n"
     "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (mean |error| over the penumbra of an area\n"
-    "light), int ExpectMapSize, bool ExpectShadows (docs/scoring.md). Goldens:\n"
+    "light), float ExpectAreaRadius (the light's areaRadius for the penumbra check), int ExpectMapSize,\n"
+    "bool ExpectShadows (docs/scoring.md). A bound is a number for every scene or a string of per-scene\n"
+    "bounds: \"dual-l=0.25, teapot=0.12\". Goldens:\n"
     "EFFECT_DIR/golden/EFFECT/TECHNIQUE/SCENE.png, written there by --update; an effect without that folder\n"
     "yet is NOT_SUPPORTED for goldens (docs/measurement.md).\n"
     "Exit status: 0 if nothing FAILs, 1 on any FAIL, 2 on usage errors.\n";
@@ -110,12 +114,34 @@ Outcome judge(double measured, double bound) {
 
 // [SECTION] Expectations
 
+// A scene as the table and per-scene bounds name it: a scene file's stem, a built-in scene's name.
+std::string sceneLabel(const std::string& scene) {
+    return scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0
+               ? std::filesystem::path(scene).stem().string()
+               : scene;
+}
+
+// A bound for every scene, or one per scene where a technique's error differs by scene (a number, or a
+// string "dual-l=0.25, teapot=0.12").
+struct SceneBound {
+    std::optional<double> everyScene;
+    std::map<std::string, double> perScene;  // by scene label (a scene file's stem)
+
+    bool declared() const { return everyScene || !perScene.empty(); }
+    std::optional<double> forScene(const std::string& scene) const {
+        if (everyScene) return everyScene;
+        const auto found = perScene.find(scene);
+        return found == perScene.end() ? std::nullopt : std::optional<double>(found->second);
+    }
+};
+
 struct Expectations {
     std::vector<std::string> scenes{"boxes"};
-    std::optional<double> misclassifiedBelow;  // percent of receiver pixels
-    std::optional<double> penumbraMaeBelow;    // mean |visibility - truth|, area lights
-    std::optional<int> mapSize;                // SHADOWFX_SHADOW_MAP_SIZE for the check's renders
-    bool shadows = true;                       // false: compile, render, non-blank and golden only
+    SceneBound misclassifiedBelow;    // percent of receiver pixels
+    SceneBound penumbraMaeBelow;      // mean |visibility - truth| over the penumbra, area lights
+    std::optional<float> areaRadius;  // light0's areaRadius for the penumbra check
+    std::optional<int> mapSize;       // SHADOWFX_SHADOW_MAP_SIZE for the check's renders
+    bool shadows = true;              // false: compile, render, non-blank and golden only
 };
 
 // Reads the Expect* annotations of `technique` (names case-insensitive, as annotation lookups are). A value
@@ -123,8 +149,9 @@ struct Expectations {
 bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
     bool ok = true;
     // A misspelt expectation would silently check nothing.
-    static const std::set<std::string> kKnown{"expectscenes", "expectmisclassifiedbelow",
-                                              "expectpenumbramaebelow", "expectmapsize", "expectshadows"};
+    static const std::set<std::string> kKnown{"expectscenes",           "expectmisclassifiedbelow",
+                                              "expectpenumbramaebelow", "expectarearadius",
+                                              "expectmapsize",          "expectshadows"};
     for (const fx::Annotation& a : technique.annotations) {
         std::string lower = a.name;
         for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -132,7 +159,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
             sink.report(fx::DiagId::InvalidAnnotation, a.loc,
                         {a.name,
                          "not an expectation shadowfx check knows (ExpectScenes, ExpectMisclassifiedBelow, "
-                         "ExpectPenumbraMaeBelow, ExpectMapSize, ExpectShadows)"});
+                         "ExpectPenumbraMaeBelow, ExpectAreaRadius, ExpectMapSize, ExpectShadows)"});
             ok = false;
         }
     }
@@ -166,8 +193,54 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
             }
         }
     }
-    out.misclassifiedBelow = number("ExpectMisclassifiedBelow");
-    out.penumbraMaeBelow = number("ExpectPenumbraMaeBelow");
+    // A number, or "scene=bound, ..." naming each scene of ExpectScenes once (a misspelt or forgotten scene
+    // would silently check nothing).
+    auto bound = [&](const char* name) {
+        SceneBound result;
+        const fx::Annotation* a = technique.annotation(name);
+        if (!a || a->value.kind != fx::Expr::Kind::String) {
+            result.everyScene = number(name);
+            return result;
+        }
+        auto invalid = [&](const std::string& why) {
+            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, why});
+            ok = false;
+            return SceneBound{};
+        };
+        for (std::string entry : splitList(a->value.text)) {
+            const size_t eq = entry.find('=');
+            std::string scene = entry.substr(0, eq);
+            scene.erase(0, scene.find_first_not_of(" \t"));
+            scene.erase(scene.find_last_not_of(" \t") + 1);
+            const std::string text = eq == std::string::npos ? "" : entry.substr(eq + 1);
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (scene.empty() || text.empty() || *end != '\0' || !std::isfinite(value))
+                return invalid("expected a number, or per-scene bounds \"SCENE=BOUND, ...\", got '" + entry +
+                               "'");
+            const std::string label = sceneLabel(scene);
+            if (std::none_of(out.scenes.begin(), out.scenes.end(),
+                             [&](const std::string& listed) { return sceneLabel(listed) == label; }))
+                return invalid("scene '" + scene + "' is not one of ExpectScenes");
+            if (!result.perScene.emplace(label, value).second)
+                return invalid("scene '" + scene + "' is given twice");
+        }
+        for (const std::string& listed : out.scenes)
+            if (result.perScene.count(sceneLabel(listed)) == 0)
+                return invalid("no bound for scene '" + listed + "' of ExpectScenes");
+        return result;
+    };
+    out.misclassifiedBelow = bound("ExpectMisclassifiedBelow");
+    out.penumbraMaeBelow = bound("ExpectPenumbraMaeBelow");
+    if (std::optional<double> radius = number("ExpectAreaRadius")) {
+        if (!(*radius > 0.0 && *radius < 1e6)) {
+            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectAreaRadius")->loc,
+                        {"ExpectAreaRadius", "expected a radius above 0"});
+            ok = false;
+        } else {
+            out.areaRadius = static_cast<float>(*radius);
+        }
+    }
     if (std::optional<double> size = number("ExpectMapSize")) {
         if (*size < 1 || *size > 16384 || *size != std::floor(*size)) {
             sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectMapSize")->loc,
@@ -445,12 +518,6 @@ std::string resolveScene(const std::string& scene, const std::filesystem::path& 
     return scene;
 }
 
-std::string sceneLabel(const std::string& scene) {
-    return scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0
-               ? std::filesystem::path(scene).stem().string()
-               : scene;
-}
-
 struct Settings {
     int width = 320;
     int height = 240;
@@ -458,6 +525,7 @@ struct Settings {
     bool requireGoldens = false;
     bool batching = true;
     std::vector<std::string> sceneOverride;
+    std::optional<float> areaRadius;  // --area-radius: the penumbra checks' light size, over ExpectAreaRadius
     std::filesystem::path outDir;
     runtime::GroundTruthOptions truthOptions;
     runtime::FuzzyCompareOptions compare;
@@ -492,7 +560,14 @@ public:
         const std::string glRenderer = context->renderer();
         const std::string key = rendererKey(glRenderer);
         std::cerr << "check: " << backendLabel << ": " << glRenderer << "\n";
-        std::map<std::string, std::unique_ptr<CheckScene>> scenes;  // by resolved name, this context's
+        // By resolved name and the areaRadius given to its lights (-1: as the scene declares it), this
+        // context's.
+        std::map<std::pair<std::string, float>, std::unique_ptr<CheckScene>> scenes;
+        const auto measured = [&](const std::string& resolved, std::optional<float> areaRadius) {
+            std::unique_ptr<CheckScene>& scene = scenes[{resolved, areaRadius.value_or(-1.0f)}];
+            if (!scene) scene = measureScene(resolved, areaRadius);
+            return scene.get();
+        };
 
         for (const EffectPlan& effect : effects) {
             for (const TechniquePlan& technique : effect.techniques) {
@@ -513,10 +588,17 @@ public:
                     mSettings.sceneOverride.empty() ? technique.expect.scenes : mSettings.sceneOverride;
                 for (const std::string& sceneName : names) {
                     const std::string resolved = resolveScene(sceneName, effectDir);
-                    std::unique_ptr<CheckScene>& scene = scenes[resolved];
-                    if (!scene) scene = measureScene(resolved);
+                    const CheckScene* scene = measured(resolved, std::nullopt);
+                    // The penumbra bound holds for the light size it was measured at: the scene with that
+                    // areaRadius, its own where neither the command nor the technique gives one.
+                    const std::optional<float> areaRadius =
+                        mSettings.areaRadius ? mSettings.areaRadius : technique.expect.areaRadius;
+                    const CheckScene* penumbraScene =
+                        technique.expect.penumbraMaeBelow.declared() && areaRadius
+                            ? measured(resolved, areaRadius)
+                            : scene;
                     checkScene(backendLabel, key, glRenderer, effect, technique, sceneLabel(sceneName),
-                               *scene, *shaded, visibility.get());
+                               *scene, *penumbraScene, *shaded, visibility.get());
                 }
             }
         }
@@ -524,7 +606,8 @@ public:
     }
 
 private:
-    std::unique_ptr<CheckScene> measureScene(const std::string& name) {
+    // `areaRadius`: every light gets it, for the penumbra check alone (no hard truth is cast then).
+    std::unique_ptr<CheckScene> measureScene(const std::string& name, std::optional<float> areaRadius) {
         auto scene = std::make_unique<CheckScene>();
         mSink.mark();
         std::optional<runtime::Scene> loaded = runtime::loadScene(name, mSink);
@@ -532,11 +615,14 @@ private:
             scene->error = mSink.firstError("no scene '" + name + "'");
             return scene;
         }
+        if (areaRadius)
+            for (runtime::Light& light : loaded->lights) light.areaRadius = *areaRadius;
         if (!runtime::measureSceneTruth(scene->measured, std::move(*loaded), mSettings.width,
                                         mSettings.height, mSettings.truthOptions, mSink, scene->error))
             return scene;
         const runtime::SceneTruth& t = scene->measured;
         scene->soft = t.light->areaRadius > 0.0f;
+        if (areaRadius) return scene;
         if (scene->soft) {
             runtime::Light point = *t.light;
             point.areaRadius = 0.0f;
@@ -549,7 +635,7 @@ private:
 
     void checkScene(const std::string& backend, const std::string& key, const std::string& glRenderer,
                     const EffectPlan& effect, const TechniquePlan& technique, const std::string& sceneName,
-                    const CheckScene& scene, runtime::EffectRenderer& shaded,
+                    const CheckScene& scene, const CheckScene& penumbraScene, runtime::EffectRenderer& shaded,
                     runtime::EffectRenderer* visibility) {
         removeStaleImages(effect.name, technique.name, sceneName);
         const size_t firstRow = mResults.size();
@@ -582,8 +668,10 @@ private:
         // Expectations against the ground truth.
         std::optional<runtime::VisibilityScore> hardScore, softScore;
         const Expectations& expect = technique.expect;
+        const std::optional<double> misclassifiedBelow = expect.misclassifiedBelow.forScene(sceneName);
+        const std::optional<double> penumbraMaeBelow = expect.penumbraMaeBelow.forScene(sceneName);
         if (expect.shadows && effect.carriesExpectations) {
-            const bool expects = expect.misclassifiedBelow || expect.penumbraMaeBelow;
+            const bool expects = expect.misclassifiedBelow.declared() || expect.penumbraMaeBelow.declared();
             if (!expects) {
                 row("misclassified", Outcome::QualityWarning,
                     "the technique declares no ExpectMisclassifiedBelow (or ExpectShadows = false)");
@@ -594,38 +682,72 @@ private:
             } else {
                 mSink.mark();
                 hardScore = runtime::scoreVisibility(*visibility, t, scene.hard, frameOptions, mSink);
-                if (scene.soft && hardScore)
-                    softScore = runtime::scoreVisibility(*visibility, t, t.truth, frameOptions, mSink);
+                if (penumbraMaeBelow && penumbraScene.error.empty() && penumbraScene.soft && hardScore)
+                    softScore = runtime::scoreVisibility(*visibility, penumbraScene.measured,
+                                                         penumbraScene.measured.truth, frameOptions, mSink);
                 if (!hardScore || mSink.failed()) {
                     row("expectations", Outcome::Fail,
                         mSink.firstError("the SHADOWFX_VISIBILITY variant could not be rendered"));
                     hardScore.reset();
                 }
             }
-            if (hardScore && expect.misclassifiedBelow) {
+            // Per-scene bounds name the scenes of ExpectScenes; --scenes may check others.
+            const auto noBoundHere = [&](const char* check, const char* annotation) {
+                row(check, Outcome::NotSupported,
+                    std::string(annotation) + " gives bounds for other scenes, none for this one");
+            };
+            if (hardScore && expect.misclassifiedBelow.declared() && !misclassifiedBelow)
+                noBoundHere("misclassified", "ExpectMisclassifiedBelow");
+            if (hardScore && misclassifiedBelow) {
                 const runtime::ShadowErrors& e = hardScore->errors;
-                row("misclassified", judge(e.misclassifiedPercent, *expect.misclassifiedBelow),
+                row("misclassified", judge(e.misclassifiedPercent, *misclassifiedBelow),
                     runtime::formatFixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
-                        runtime::formatFixed(*expect.misclassifiedBelow, 3) + " % (false shadow " +
+                        runtime::formatFixed(*misclassifiedBelow, 3) + " % (false shadow " +
                         runtime::formatFixed(e.falseShadowPercent, 3) + " %, false light " +
                         runtime::formatFixed(e.falseLightPercent, 3) + " %, " +
                         std::to_string(e.receiverPixels) + " receiver pixels)");
             }
-            if (hardScore && expect.penumbraMaeBelow) {
-                if (!softScore) {
+            if (hardScore && expect.penumbraMaeBelow.declared() && !penumbraMaeBelow)
+                noBoundHere("penumbra", "ExpectPenumbraMaeBelow");
+            if (hardScore && penumbraMaeBelow) {
+                if (!penumbraScene.error.empty()) {
+                    row("penumbra", Outcome::Fail, penumbraScene.error);
+                } else if (!penumbraScene.soft) {
                     row("penumbra", Outcome::NotSupported,
-                        "the scene's light has no areaRadius: no penumbra to measure");
+                        "the scene's light has no areaRadius: no penumbra to measure (declare "
+                        "ExpectAreaRadius "
+                        "or give --area-radius; docs/scoring.md)");
+                } else if (!softScore) {
+                    row("penumbra", Outcome::Fail,
+                        mSink.firstError("the SHADOWFX_VISIBILITY variant could not be rendered"));
                 } else if (softScore->errors.penumbraPixels == 0) {
                     row("penumbra", Outcome::NotSupported, "no receiver pixel of the scene is in penumbra");
                 } else {
                     // The penumbra MAE, as bench reports it: over all receivers the fully lit and umbra
                     // pixels would hide how well the penumbra itself is drawn.
                     const double mae = softScore->errors.penumbraMeanAbsoluteError;
-                    row("penumbra", judge(mae, *expect.penumbraMaeBelow),
-                        "penumbra MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
-                            runtime::formatFixed(*expect.penumbraMaeBelow, 4) + " (" +
-                            std::to_string(softScore->errors.penumbraPixels) + " penumbra pixels, " +
-                            std::to_string(t.truth.samplesPerPixel) + " light samples per pixel)");
+                    // A bound that a frame without shadows meets checks nothing.
+                    const runtime::SceneTruth& soft = penumbraScene.measured;
+                    const double blankMae =
+                        runtime::compareVisibility(soft.truth.visibility,
+                                                   std::vector<float>(soft.truth.visibility.size(), 1.0f),
+                                                   soft.receivers)
+                            .penumbraMeanAbsoluteError;
+                    if (!(*penumbraMaeBelow < blankMae)) {
+                        row("penumbra", Outcome::Fail,
+                            "the bound " + runtime::formatFixed(*penumbraMaeBelow, 4) +
+                                " passes a frame without shadows (penumbra MAE " +
+                                runtime::formatFixed(blankMae, 4) + "): it checks nothing");
+                    } else {
+                        row("penumbra", judge(mae, *penumbraMaeBelow),
+                            "penumbra MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
+                                runtime::formatFixed(*penumbraMaeBelow, 4) + " (" +
+                                std::to_string(softScore->errors.penumbraPixels) +
+                                " penumbra pixels, areaRadius " +
+                                runtime::formatFixed(penumbraScene.measured.light->areaRadius, 3) + ", " +
+                                std::to_string(penumbraScene.measured.truth.samplesPerPixel) +
+                                " light samples per pixel)");
+                    }
                 }
             }
         }
@@ -774,6 +896,15 @@ int checkCommand(const Arguments& args) {
     settings.sceneOverride = splitList(args.value("--scenes"));
     settings.outDir = args.value("--out", "out/check");
     settings.truthOptions.areaSamples = args.intValue("--area-samples", 256);
+    if (const std::string text = args.value("--area-radius"); !text.empty()) {
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (*end != '\0' || !(value >= 0.0f && value < 1e6f)) {
+            std::cerr << "shadowfx check: --area-radius: '" << text << "' is not a radius >= 0\n";
+            return 2;
+        }
+        settings.areaRadius = value;
+    }
     if (settings.width <= 0 || settings.height <= 0 || settings.width > 16384 || settings.height > 16384 ||
         settings.truthOptions.areaSamples < 1) {
         std::cerr

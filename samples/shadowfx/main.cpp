@@ -277,7 +277,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kCheckUsage,
      {},
      {"--technique", "--scenes", "--backend", "--junit", "--out", "--width", "--height", "--area-samples",
-      "-I", "-D"},
+      "--area-radius", "-I", "-D"},
      {"--update", "--require-goldens", "--list-techniques", "--no-batching"},
      shadowfx::cli::checkCommand,
      -1},

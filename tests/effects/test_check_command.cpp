@@ -347,6 +347,57 @@ TEST(CheckCommand, PenumbraBoundIsMeasuredOnlyUnderAnAreaLight) {
         << result.output;
 }
 
+// ExpectAreaRadius gives the scenes an area light for the penumbra check alone, so dual-l and teapot,
+// which have none, are judged; the golden and misclassified checks keep the scene as it is (they pass as
+// in the shipped effect). Per-scene bounds judge each scene by its own: the hard shadow's penumbra MAE (0.21
+// on dual-l, 0.16 on teapot) fails dual-l's 0.0002 and passes teapot's 0.3. A bound that a frame without
+// shadows meets (its penumbra MAE is 0.43 on dual-l) fails: it checks nothing. --area-radius 0 takes the
+// area light away again.
+TEST(CheckCommand, ExpectAreaRadiusGivesThePenumbraBoundAnAreaLightPerScene) {
+    const EffectCopy copy("area_radius", "float ExpectMisclassifiedBelow = 0.075;",
+                          "float ExpectMisclassifiedBelow = 0.075; float ExpectAreaRadius = 2; "
+                          "string ExpectPenumbraMaeBelow = \"dual-l=0.0002, teapot=0.3\";");
+    const RunResult result =
+        run("check " + copy.effect() + " --technique hardware --backend egl --area-samples 16");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string dualL = row(result.output, "hardware", "dual-l", "penumbra");
+    EXPECT_EQ(dualL.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(dualL.find("expected below 0.0002"), std::string::npos) << dualL;
+    EXPECT_NE(dualL.find("areaRadius 2.000"), std::string::npos) << dualL;
+    EXPECT_EQ(row(result.output, "hardware", "teapot", "penumbra").rfind("PASS", 0), 0u) << result.output;
+    for (const char* scene : {"dual-l", "teapot"}) {
+        EXPECT_EQ(row(result.output, "hardware", scene, "golden").rfind("PASS", 0), 0u) << result.output;
+        EXPECT_EQ(row(result.output, "hardware", scene, "misclassified").rfind("PASS", 0), 0u)
+            << result.output;
+    }
+
+    const EffectCopy loose("area_radius_loose", "float ExpectMisclassifiedBelow = 0.075;",
+                           "float ExpectMisclassifiedBelow = 0.075; float ExpectAreaRadius = 2; "
+                           "float ExpectPenumbraMaeBelow = 0.99;");
+    const RunResult blank = run("check " + loose.effect() +
+                                " --technique hardware --scenes dual-l --backend egl --area-samples 16");
+    EXPECT_EQ(blank.exitCode, 1) << blank.output;
+    const std::string line = row(blank.output, "hardware", "dual-l", "penumbra");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << blank.output;
+    EXPECT_NE(line.find("passes a frame without shadows"), std::string::npos) << line;
+
+    const RunResult without = run("check " + loose.effect() +
+                                  " --technique hardware --scenes dual-l --backend egl --area-radius 0");
+    EXPECT_EQ(without.exitCode, 0) << without.output;
+    EXPECT_EQ(row(without.output, "hardware", "dual-l", "penumbra").rfind("NOT_SUPPORTED", 0), 0u)
+        << without.output;
+}
+
+TEST(CheckCommand, PerSceneBoundsNameEachSceneOnce) {
+    const EffectCopy copy("per_scene", "float ExpectMisclassifiedBelow = 0.075;",
+                          "string ExpectMisclassifiedBelow = \"dual-l=0.075\";");
+    const RunResult result = run("check " + copy.effect() + " --technique hardware --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const std::string line = row(result.output, "hardware", "-", "expectations");
+    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
+    EXPECT_NE(line.find("no bound for scene 'teapot' of ExpectScenes"), std::string::npos) << line;
+}
+
 TEST(CheckCommand, CompileErrorsFailWithTheirLocation) {
     const RunResult result = run("check tests/data/bad/hlsl_error.fx --backend egl");
     EXPECT_EQ(result.exitCode, 1) << result.output;
