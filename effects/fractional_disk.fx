@@ -476,7 +476,9 @@ technique preprocessed
     // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.157 % against the area-light
     // truth's classification (--area-radius 2)
     float ExpectMisclassifiedBelow = 0.25;
-    float ExpectPenumbraMaeBelow = 0.003;  // measured 0.0017 on dual-l, 0.0017 on teapot (--area-radius 2)
+    // penumbra MAE 0.086 on dual-l, 0.200 on teapot (320x240, bench --area-radius 2)
+    string ExpectPenumbraMaeBelow = "dual-l=0.13, teapot=0.31";
+    float ExpectAreaRadius = 2;  // the light size the penumbra bound holds for
     int ExpectMapSize = 1024;
 >
 {
@@ -503,7 +505,9 @@ technique direct
     // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.169 % against the area-light
     // truth's classification (--area-radius 2)
     float ExpectMisclassifiedBelow = 0.26;
-    float ExpectPenumbraMaeBelow = 0.007;  // measured 0.0046 on dual-l, 0.0021 on teapot (--area-radius 2)
+    // penumbra MAE 0.085 on dual-l, 0.201 on teapot (320x240, bench --area-radius 2)
+    string ExpectPenumbraMaeBelow = "dual-l=0.13, teapot=0.31";
+    float ExpectAreaRadius = 2;  // the light size the penumbra bound holds for
     int ExpectMapSize = 1024;
 >
 {
