@@ -386,7 +386,8 @@ void writeReport(const std::filesystem::path& path, const Json& results, const s
     md << "Time: **full cost** = every pass drawn each frame, leave-out's reuse of unchanged shadow maps off "
           "(what a moving light or moving objects cost: compare techniques by this); **steady** = the same "
           "frames with that reuse (a static light and scene: with leave-out on, `main`-like techniques "
-          "then pay for the scene pass alone). The plot's axis is the "
+          "then pay for the scene pass alone; a technique that blurs its map every frame pays the full cost, "
+          "docs/scoring.md, \"Full cost and steady state\"). The plot's axis is the "
        << (fullAxis ? "full cost" : "steady-state time (`--time steady`)") << ".\n\n";
     if (plotNote.empty()) {
         md << "![error against frame time](error_vs_time.svg)\n\n";
