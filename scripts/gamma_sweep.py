@@ -33,6 +33,8 @@ METHODS = {
     "lispsm": ("effects/lispsm.fx", "bilinear", ()),
     "lispsm-middle": ("effects/lispsm.fx", "bilinear", ("MiddleVector=1",)),
     "lispsm-n4": ("effects/lispsm.fx", "bilinear", ("NScale=4",)),
+    "lispsm-wimmer": ("effects/lispsm.fx", "bilinear", ("NOpt=Wimmer2004",)),
+    "lispsm-scherzer": ("effects/lispsm.fx", "bilinear", ("NOpt=Scherzer2005",)),
     "tsm": ("effects/tsm.fx", "bilinear", ()),
     "psm": ("effects/psm.fx", "bilinear", ()),
     "psm-cube": ("effects/psm_cube.fx", "bilinear", ()),

@@ -14,6 +14,12 @@
 #include "pcf.fxh"
 #include "shadowscene.fxh"
 
+// The largest depth change per texel the receiver-plane bias follows (NDC depth); beyond it the plane is
+// taken for a silhouette, whose derivatives say nothing about the surface. An effect may define it first.
+#ifndef LIGHTSPACE_RECEIVER_PLANE_CAP
+#define LIGHTSPACE_RECEIVER_PLANE_CAP 0.01
+#endif
+
 #ifdef SHADOWFX_SHADOW_MAP_SIZE
 #define SHADOW_MAP_SIZE SHADOWFX_SHADOW_MAP_SIZE
 #else
@@ -91,7 +97,7 @@ float ReceiverPlaneBias(SceneVertexOutput IN, float depth)
     // d depth / d texel = (d depth / d screen) (d texel / d screen)^-1
     float2 perTexel = float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
                       (abs(determinant) > 1e-12 ? determinant : 1e-12);
-    return SlopeBias * min(abs(perTexel.x) + abs(perTexel.y), 0.01);
+    return SlopeBias * min(abs(perTexel.x) + abs(perTexel.y), LIGHTSPACE_RECEIVER_PLANE_CAP);
 }
 
 // The receiver's depth for the test, moved toward the light by

@@ -9,9 +9,11 @@
 
 #include <runtime/BuiltinScenes.h>
 #include <runtime/LightParameterization.h>
+#include <runtime/SceneFile.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 namespace {
@@ -137,6 +139,47 @@ TEST(PsmEffect, SlideBackParameterReachesTheProvider) {
     const LightFit expected = fitLight(LightParameterization::PSM, *scene, scene->bounds(), 160.0f / 120.0f,
                                        *scene->findLight("light0"), tunables);
     EXPECT_EQ(slid->projection, expected.projection);
+}
+
+// lispsm.fx's NOpt (semantic LiSPSMNOpt) reaches the provider: "Wimmer2004" (the default) and "Scherzer2005"
+// give the fits fitLight computes with those choices, which differ on the city field (its camera sees the
+// scene begin far beyond the near plane); an unknown name is a located error and the fit stays.
+TEST(LispsmEffect, NOptParameterReachesTheProvider) {
+    auto renderer = loadEffect(sourcePath("effects/lispsm.fx"), true);
+    ASSERT_TRUE(renderer);
+    fx::DiagnosticList loading;
+    const std::optional<Scene> scene = loadScene(sourcePath("scenes/city_field.json"), loading);
+    ASSERT_TRUE(scene) << loading.str();
+    FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    const Light& light = *scene->findLight("light0");
+    auto expected = [&](LispsmN choice) {
+        LightTunables tunables;
+        tunables.lispsmN = choice;
+        return fitLight(LightParameterization::LiSPSM, *scene, scene->bounds(), 160.0f / 120.0f, light,
+                        tunables);
+    };
+    const std::optional<LightFit> wimmer = renderer->lightFit(*scene, "light0", options);
+    ASSERT_TRUE(wimmer);
+    EXPECT_EQ(wimmer->projection, expected(LispsmN::Wimmer2004).projection);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Scherzer2005", diagnostics)) << diagnostics.str();
+    const std::optional<LightFit> scherzer = renderer->lightFit(*scene, "light0", options);
+    ASSERT_TRUE(scherzer);
+    EXPECT_EQ(scherzer->projection, expected(LispsmN::Scherzer2005).projection);
+    EXPECT_NE(scherzer->projection, wimmer->projection);
+    EXPECT_GT(scherzer->warp, wimmer->warp);
+
+    ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Lloyd2006", diagnostics));
+    fx::DiagnosticList rendering;
+    renderer->render(*scene, options, rendering);
+    const auto error = std::find_if(rendering.items().begin(), rendering.items().end(),
+                                    [](const fx::Diagnostic& d) { return d.id == fx::DiagId::TypeMismatch; });
+    ASSERT_NE(error, rendering.items().end()) << rendering.str();
+    EXPECT_NE(error->message.find("'Lloyd2006' is not a choice of LiSPSM's n"), std::string::npos)
+        << error->message;
+    EXPECT_NE(error->loc.line, 0);
 }
 
 const fx::Diagnostic* findInvalidAnnotation(const fx::DiagnosticList& diagnostics) {

@@ -148,16 +148,20 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
         }
         const double zn = scene.camera.nearPlane;
         const double nopt = (zn + std::sqrt(zn * (zn + (hi - lo) * sinGamma))) / sinGamma;
-        const LightFit fit = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
+        LightTunables scherzer;
+        scherzer.lispsmN = LispsmN::Scherzer2005;
+        const LightFit fit =
+            fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], scherzer);
         EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt) << elevation;
-        LightTunables visible;  // Δz from a visibility algorithm replaces d sin γ (Scherzer 2005 §4.4)
+        LightTunables visible =
+            scherzer;  // Δz from a visibility algorithm replaces d sin γ (Scherzer 2005 §4.4)
         visible.lispsmDepthExtent = 50.0f;
         const double noptVisible = (zn + std::sqrt(zn * (zn + 50.0))) / sinGamma;
         EXPECT_NEAR(
             1.0 / fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0], visible)
                       .warp,
             noptVisible, 1e-3 * noptVisible);
-        LightTunables weaker;
+        LightTunables weaker = scherzer;
         weaker.lispsmNScale = 2.0f;
         EXPECT_NEAR(
             1.0 /
@@ -166,12 +170,60 @@ TEST(LightParameterizations, LispsmFitUsesNoptOfTheBody) {
     }
 }
 
-// With LiSPSMMiddleVector, V_P is Scherzer 2005 §4.4's middle vector: the sum of the eye-to-vertex vectors of B,
-// made perpendicular to the light, recomputed here from B's vertices (intersectionBody of the clamped
+// LispsmN::Wimmer2004 (the default): Wimmer, Scherzer & Purgathofer 2004's n_opt = (z_n + sqrt(z_n z_f)) /
+// sin γ with z_n, z_f the view-space depth range of B, recomputed here in double from the camera and B's
+// vertices (the first half of focusBody). The camera stands 30 m outside the terrain box looking across it,
+// so B begins far beyond the near plane and the two choices differ: Wimmer 2004's z_n is B's, and its warp is
+// weaker.
+TEST(LightParameterizations, LispsmWimmer2004UsesTheDepthRangeOfB) {
+    for (float elevation : {-5.0f, -20.0f, -60.0f}) {
+        const glm::vec3 view = fromAngles(-10.0f, 0.0f);
+        Scene scene = terrain(view, fromAngles(elevation, 30.0f));
+        scene.camera.position = {0.0f, 12.0f, -130.0f};
+        scene.camera.target = scene.camera.position + view;
+        scene.camera.farPlane = 150.0f;
+        const Bounds bounds = scene.bounds();
+        const glm::vec3 light = scene.lights[0].direction;
+        const double sinGamma = glm::length(glm::cross(light, view));
+        const std::vector<glm::vec3> body = focusBody(scene.camera, kAspect, bounds, light);
+        double zn = 1e30, zf = -1e30;
+        for (size_t i = 0; i < body.size() / 2; ++i) {
+            const double depth = glm::dot(glm::dvec3(body[i] - scene.camera.position), glm::dvec3(view));
+            zn = std::min(zn, depth);
+            zf = std::max(zf, depth);
+        }
+        ASSERT_GT(zn, 20.0) << "the camera must see B begin far beyond its near plane";
+        const double nopt = (zn + std::sqrt(zn * zf)) / sinGamma;
+        const LightFit fit = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect, scene.lights[0]);
+        EXPECT_NEAR(1.0 / fit.warp, nopt, 1e-3 * nopt) << elevation;  // the default
+        LightTunables scherzerTunables;
+        scherzerTunables.lispsmN = LispsmN::Scherzer2005;
+        const LightFit scherzer = fitLight(LightParameterization::LiSPSM, scene, bounds, kAspect,
+                                           scene.lights[0], scherzerTunables);
+        EXPECT_GT(scherzer.warp, 2.0f * fit.warp) << elevation;
+        // Still a fit: B and its extrusion inside the clip volume.
+        for (const glm::vec3& p : body) {
+            const glm::vec4 clip = fit.projection * fit.view * glm::vec4(p, 1.0f);
+            ASSERT_GT(clip.w, 0.0f);
+            for (int axis = 0; axis < 3; ++axis) {
+                const float ndc = clip[axis] / clip.w;
+                EXPECT_GE(ndc, axis == 2 ? -1e-3f : -1.0f - 1e-3f);
+                EXPECT_LE(ndc, 1.0f + 1e-3f);
+            }
+        }
+    }
+    EXPECT_EQ(parseLispsmN("wimmer2004"), LispsmN::Wimmer2004);
+    EXPECT_EQ(parseLispsmN("Scherzer2005"), LispsmN::Scherzer2005);
+    EXPECT_FALSE(parseLispsmN("Lloyd"));
+}
+
+// With LiSPSMMiddleVector, V_P is Scherzer 2005 §4.4's middle vector: the sum of the eye-to-vertex vectors of
+// B, made perpendicular to the light, recomputed here from B's vertices (intersectionBody of the clamped
 // frustum = the first half of focusBody); the light view's y axis is V_P and n_opt uses its γ.
 TEST(LightParameterizations, LispsmMiddleVectorIsTheSumOverB) {
     LightTunables middle;
     middle.lispsmMiddleVector = true;
+    middle.lispsmN = LispsmN::Scherzer2005;  // n_opt recomputed below from eq. 1
     // Looking along the terrain's long side from near one edge: B leans toward the bounds' inside.
     const glm::vec3 view = glm::normalize(glm::vec3(0.6f, -0.05f, 1.0f));
     const Scene scene = terrain(view, fromAngles(-40.0f, 100.0f));

@@ -36,8 +36,8 @@ void widen(float& lo, float& hi, float absolute) {
     hi += margin;
 }
 
-// Scherzer 2005 §4.4's "middle vector" of B: the direction from the eye into the middle of B's volume, found as
-// the sum of the vectors from the eye to B's vertices (the first half of focusBody's points; the far ones
+// Scherzer 2005 §4.4's "middle vector" of B: the direction from the eye into the middle of B's volume, found
+// as the sum of the vectors from the eye to B's vertices (the first half of focusBody's points; the far ones
 // weigh more, as the seed wants). The view direction where that sum vanishes (the eye inside a symmetric B).
 glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body) {
     glm::dvec3 sum(0.0);
@@ -47,8 +47,8 @@ glm::vec3 middleVector(const Camera& camera, const std::vector<glm::vec3>& body)
 }
 
 // A spot light keeps its perspective and its depth range; Focused (and LiSPSM, without a warp) crop its
-// window to the receivers of B clipped by the light frustum (Scherzer 2005 §4.1). Every caster of a shadow on a
-// receiver lies on the segment from that receiver to the light, and the whole segment projects onto the
+// window to the receivers of B clipped by the light frustum (Scherzer 2005 §4.1). Every caster of a shadow on
+// a receiver lies on the segment from that receiver to the light, and the whole segment projects onto the
 // receiver's map position, so the receivers' window holds all casters. The window is the tighter of two
 // conservative ones: the light frustum ∩ B's bounding box, and, when all of B lies before the light's
 // plane, B's own projection. The uniform fit where B misses the light frustum.
@@ -124,11 +124,33 @@ const char* lightParameterizationName(LightParameterization method) {
     return "Uniform";
 }
 
+std::optional<LispsmN> parseLispsmN(std::string_view name) {
+    for (LispsmN choice : {LispsmN::Scherzer2005, LispsmN::Wimmer2004})
+        if (equalsIgnoringCase(name, lispsmNName(choice))) return choice;
+    return std::nullopt;
+}
+
+const char* lispsmNName(LispsmN choice) {
+    return choice == LispsmN::Wimmer2004 ? "Wimmer2004" : "Scherzer2005";
+}
+
 // Scherzer 2005 §4.4 eq. 1 with Δz = d · sin γ as in the LiSPSM
 // reference code (Lehőcz 2007): 1 / n_opt = sin γ / (z_n + sqrt(z_n (z_n + Δz))).
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma) {
     const float zn = std::max(nearPlane, 1e-6f);
     return std::max(sinGamma, 0.0f) / (zn + std::sqrt(zn * (zn + std::max(depthExtent, 0.0f))));
+}
+
+glm::vec2 bodyViewDepthRange(const Camera& camera, const std::vector<glm::vec3>& body) {
+    const glm::vec3 viewDir = glm::normalize(camera.target - camera.position);
+    glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+    for (size_t i = 0; i < body.size() / 2; ++i) {
+        const float depth = glm::dot(body[i] - camera.position, viewDir);
+        range = {std::min(range.x, depth), std::max(range.y, depth)};
+    }
+    range.x = std::max(range.x, camera.nearPlane);
+    range.y = std::max(range.y, range.x);
+    return range;
 }
 
 std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
@@ -197,9 +219,16 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
         yMax = std::max(yMax, y);
     }
     if (method == LightParameterization::LiSPSM) {
-        const float d = yMax - yMin;
-        const float deltaZ = tunables.lispsmDepthExtent > 0.0f ? tunables.lispsmDepthExtent : d * sinGamma;
-        fit.warp = lispsmWarp(camera.nearPlane, deltaZ, sinGamma) / std::max(tunables.lispsmNScale, 1e-3f);
+        float zNear = camera.nearPlane, deltaZ = 0.0f;
+        if (tunables.lispsmN == LispsmN::Wimmer2004) {
+            const glm::vec2 depths = bodyViewDepthRange(camera, body);
+            zNear = depths.x;
+            deltaZ = depths.y - depths.x;
+        } else {
+            deltaZ =
+                tunables.lispsmDepthExtent > 0.0f ? tunables.lispsmDepthExtent : (yMax - yMin) * sinGamma;
+        }
+        fit.warp = lispsmWarp(zNear, deltaZ, sinGamma) / std::max(tunables.lispsmNScale, 1e-3f);
     }
     // The warp P: a perspective projection along +y whose projection centre lies n = 1 / warp before the
     // near side of B, at the eye's x. In homogeneous form w = 1 + warp (y - yMin), so warp = 0 is the

@@ -111,9 +111,10 @@ constexpr std::pair<const char*, SemanticBinder::Kind> kOtherSemantics[] = {
     {"CubeFaceSelect", SemanticBinder::Kind::CubeFaceSelect},
 };
 // Read by the light fits as tunables (SemanticBinder's constructor), not bound.
-constexpr const char* kTunableSemantics[] = {
-    "LiSPSMNScale", "LiSPSMDepthExtent", "LiSPSMMiddleVector", "LightPancaking",     "TSMFocus",
-    "PSMSlideBack", "PSMMaxWarpRatio",   "CascadeCount",       "CascadeSplitLambda", "CascadeBlend"};
+constexpr const char* kTunableSemantics[] = {"LiSPSMNScale",       "LiSPSMNOpt",      "LiSPSMDepthExtent",
+                                             "LiSPSMMiddleVector", "LightPancaking",  "TSMFocus",
+                                             "PSMSlideBack",       "PSMMaxWarpRatio", "CascadeCount",
+                                             "CascadeSplitLambda", "CascadeBlend"};
 
 }  // namespace
 
@@ -287,6 +288,16 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
                 mTunables.cascadeCount = static_cast<int>(std::lround(values[i].data[0]));
             if (upperSemantic == "CASCADESPLITLAMBDA") mTunables.cascadeSplitLambda = values[i].data[0];
             if (upperSemantic == "CASCADEBLEND") mTunables.cascadeBlend = values[i].data[0];
+        }
+        if (upperSemantic == "LISPSMNOPT" && i < values.size()) {
+            if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
+                mTunables.lispsmN = *choice;
+            } else {
+                diagnostics.report(
+                    fx::DiagId::TypeMismatch, parameter.loc,
+                    {"'" + values[i].string + "' is not a choice of LiSPSM's n for parameter '" +
+                     parameter.name + "' (expected \"Scherzer2005\" or \"Wimmer2004\")"});
+            }
         }
         const std::string& lightName = parameter.light;
         if (!parameter.hasParameterization || lightName.empty()) continue;

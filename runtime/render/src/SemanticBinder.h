@@ -11,8 +11,8 @@
 // A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" | "TSM";`
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
-// LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking, TSMFocus, PSMSlideBack, PSMMaxWarpRatio,
-// CascadeCount, CascadeSplitLambda and CascadeBlend. A `Cascaded` light's sub-views
+// LiSPSMNOpt (a string), LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking, TSMFocus, PSMSlideBack,
+// PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda and CascadeBlend. A `Cascaded` light's sub-views
 // (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
 // projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
 // of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade

@@ -41,15 +41,31 @@ enum class LightParameterization { Uniform, Focused, LiSPSM, TSM, PSM, PSMCube, 
 std::optional<LightParameterization> parseLightParameterization(std::string_view name);
 const char* lightParameterizationName(LightParameterization method);
 
+// Where LiSPSM's n_opt takes z_n and the depth extent from
+// (docs/techniques/light-space-parameterizations.md). Both use n_opt = (z_n + sqrt(z_n z_f)) / sin γ; they
+// differ in z_n and z_f:
+//   Scherzer2005  z_n the camera's near plane, z_f = z_n + Δz with Δz = d sin γ (d: B's extent along V_P,
+//                 as the reference code) or LiSPSMDepthExtent (Scherzer 2005 §4.4, eq. 1)
+//   Wimmer2004    z_n, z_f the nearest and farthest view-space depth of B (Wimmer, Scherzer & Purgathofer
+//                 2004, n_opt = z_n + sqrt(z_n z_f) for a light perpendicular to the view, over sin γ)
+enum class LispsmN { Scherzer2005, Wimmer2004 };
+
+// "Scherzer2005", "Wimmer2004" (case-insensitive); nullopt for anything else.
+std::optional<LispsmN> parseLispsmN(std::string_view name);
+const char* lispsmNName(LispsmN choice);
+
 // The tunables an effect sets through parameters with these semantics
 // (docs/techniques/light-space-parameterizations.md).
 struct LightTunables {
-    // LiSPSMNScale: multiplies n_opt. 1 = the optimum of Scherzer 2005 eq. 1; larger weakens the warp (toward
+    // LiSPSMNScale: multiplies n_opt. 1 = the optimum (LiSPSMNOpt); larger weakens the warp (toward
     // Focused), smaller strengthens it.
     float lispsmNScale = 1.0f;
     // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
     // algorithm, Scherzer 2005 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
     float lispsmDepthExtent = 0.0f;
+    // LiSPSMNOpt (a string): whose z_n and z_f n_opt takes (LispsmN). Wimmer2004 measured best on the γ
+    // sweep, a city field and a street against the sun (docs/results/2026-12-03-lispsm-n.md).
+    LispsmN lispsmN = LispsmN::Wimmer2004;
     // LiSPSMMiddleVector: V_P from B's "middle vector" (Scherzer §4.4: the sum of the vectors from the eye
     // to B's vertices, which leans toward where B has volume) instead of the view direction of eq. 3.
     bool lispsmMiddleVector = false;
@@ -107,8 +123,13 @@ struct LightFit {
 };
 
 // Scherzer eq. 1: n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Returns its reciprocal, the warp strength,
-// which goes to 0 (no warp: the focused fit) as sin γ -> 0 instead of dividing by zero.
+// which goes to 0 (no warp: the focused fit) as sin γ -> 0 instead of dividing by zero. Wimmer et al. 2004's
+// n_opt is the same expression with Δz = z_f - z_n.
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma);
+
+// The nearest and farthest view-space depth (along the camera's view direction) of B, the first half of
+// focusBody's points, the nearest no closer than the camera's near plane: Wimmer et al. 2004's z_n, z_f.
+glm::vec2 bodyViewDepthRange(const Camera& camera, const std::vector<glm::vec3>& body);
 
 // Where receivers (B) and the casters that can shadow them lie, in world space: B's vertices, then the same
 // vertices moved toward the light until they leave the scene bounds. Empty if the camera sees no part of
