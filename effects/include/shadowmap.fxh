@@ -18,6 +18,19 @@ float ShadowTest(sampler2D shadowMap, float2 uv, float depth)
     return tex2D(shadowMap, uv).x >= depth ? 1.0 : 0.0;
 }
 
+// The receiver plane's depth change per shadow-map texel along u and v (receiver-plane depth bias, Isidoro
+// 2006): (d depth / d screen) (d texel / d screen)^-1 from the screen derivatives of `texel` (the map
+// position in texels) and `depth`; a degenerate Jacobian (the plane seen edge-on) divides by 1e-12.
+float2 ReceiverPlaneDepthPerTexel(float2 texel, float depth)
+{
+    float2 uvX = ddx(texel);
+    float2 uvY = ddy(texel);
+    float2 zXY = float2(ddx(depth), ddy(depth));
+    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
+    return float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
+           (abs(determinant) > 1e-12 ? determinant : 1e-12);
+}
+
 // Bilinear percentage-closer filtering (Lehőcz 2007, "Percentage closer filtering"): the four nearest texels
 // are compared with `depth` and the results are weighted by the fractional texel position of `uv`.
 float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 mapSize)
