@@ -150,9 +150,7 @@ float3 CascadeLookup(int k, float3 world, float3 dWorldX, float3 dWorldY)
     float3 ndcY = (clipY.xyz - ndc * clipY.w) / clip.w;
     float2 uvX = float2(0.5, -0.5) * ndcX.xy * tileSize;
     float2 uvY = float2(0.5, -0.5) * ndcY.xy * tileSize;
-    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
-    float2 perTexel = float2(ndcX.z * uvY.y - ndcY.z * uvX.y, ndcY.z * uvX.x - ndcX.z * uvY.x) /
-                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    float2 perTexel = DepthPerTexel(uvX, uvY, float2(ndcX.z, ndcY.z));
     // Capped at 0.1 of the cascade's depth range, not lightspace.fxh's 0.01 of B's: a cascade's range is a
     // fraction of B's, and 0.01 of it left a 0.5 degree sun's acne on the ground (stress `grazing`: 33 %;
     // 0.1: 1.3 %, at the price of a little light leaking on teapot: 0.045 -> 0.067 %).

@@ -143,9 +143,7 @@ float FaceShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
     float3 ndcY = (clipY.xyz - ndc * clipY.w) / clip.w;
     float2 uvX = float2(0.5, -0.5) * ndcX.xy * tileSize;
     float2 uvY = float2(0.5, -0.5) * ndcY.xy * tileSize;
-    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
-    float2 perTexel = float2(ndcX.z * uvY.y - ndcY.z * uvX.y, ndcY.z * uvX.x - ndcX.z * uvY.x) /
-                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    float2 perTexel = DepthPerTexel(uvX, uvY, float2(ndcX.z, ndcY.z));
     float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 25.0 * texelWorld * depthPerWorld);
     float depth = ndc.z - Bias * texelWorld * depthPerWorld - SlopeBias * slopeBias;
     // Bilinear PCF inside the tile: its four texels never reach into a neighbouring tile.

@@ -92,11 +92,7 @@ float ReceiverPlaneBias(SceneVertexOutput IN, float depth)
 {
     float2 uvX = ddx(ShadowMapUV(IN.LP)) * ShadowMapSize;
     float2 uvY = ddy(ShadowMapUV(IN.LP)) * ShadowMapSize;
-    float2 zXY = float2(ddx(depth), ddy(depth));
-    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
-    // d depth / d texel = (d depth / d screen) (d texel / d screen)^-1
-    float2 perTexel = float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
-                      (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    float2 perTexel = DepthPerTexel(uvX, uvY, float2(ddx(depth), ddy(depth)));
     return SlopeBias * min(abs(perTexel.x) + abs(perTexel.y), LIGHTSPACE_RECEIVER_PLANE_CAP);
 }
 

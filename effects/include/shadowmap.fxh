@@ -19,16 +19,20 @@ float ShadowTest(sampler2D shadowMap, float2 uv, float depth)
 }
 
 // The receiver plane's depth change per shadow-map texel along u and v (receiver-plane depth bias, Isidoro
-// 2006): (d depth / d screen) (d texel / d screen)^-1 from the screen derivatives of `texel` (the map
-// position in texels) and `depth`; a degenerate Jacobian (the plane seen edge-on) divides by 1e-12.
+// 2006): (d depth / d screen) (d texel / d screen)^-1, from the change per screen pixel along x and y of the
+// map position in texels (texelX, texelY) and of the depth (depthXY); a degenerate Jacobian (the plane seen
+// edge-on) divides by 1e-12.
+float2 DepthPerTexel(float2 texelX, float2 texelY, float2 depthXY)
+{
+    float determinant = texelX.x * texelY.y - texelX.y * texelY.x;
+    return float2(depthXY.x * texelY.y - depthXY.y * texelX.y, depthXY.y * texelX.x - depthXY.x * texelY.x) /
+           (abs(determinant) > 1e-12 ? determinant : 1e-12);
+}
+
+// DepthPerTexel from the screen derivatives of `texel` (the map position in texels) and `depth`.
 float2 ReceiverPlaneDepthPerTexel(float2 texel, float depth)
 {
-    float2 uvX = ddx(texel);
-    float2 uvY = ddy(texel);
-    float2 zXY = float2(ddx(depth), ddy(depth));
-    float determinant = uvX.x * uvY.y - uvX.y * uvY.x;
-    return float2(zXY.x * uvY.y - zXY.y * uvX.y, zXY.y * uvX.x - zXY.x * uvY.x) /
-           (abs(determinant) > 1e-12 ? determinant : 1e-12);
+    return DepthPerTexel(ddx(texel), ddy(texel), float2(ddx(depth), ddy(depth)));
 }
 
 // Bilinear percentage-closer filtering (Lehőcz 2007, "Percentage closer filtering"): the four nearest texels
