@@ -1,6 +1,8 @@
 // lispsm.fx: light space perspective shadow maps (Wimmer et al. 2004; Scherzer 2005 §4.4 and Lehőcz 2007):
 // the focused fit of focused.fx followed by a perspective warp along the view
-// direction made perpendicular to the light, with n_opt = (z_n + sqrt(z_n (z_n + Δz))) / sin γ. Near the
+// direction made perpendicular to the light, with n_opt = (z_n + sqrt(z_n z_f)) / sin γ, z_n and z_f B's
+// view-space depth range (Wimmer et al. 2004) or, with NOpt = "Scherzer2005", the near plane and
+// z_n + Δz (Scherzer 2005 eq. 1). Near the
 // viewer it spends more texels, far away fewer; as the light turns parallel to the view (γ -> 0) the warp
 // fades out and the map becomes focused.fx's (docs/techniques/light-space-parameterizations.md).
 #define LIGHT_PARAMETERIZATION "LiSPSM"

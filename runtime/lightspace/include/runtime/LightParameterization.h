@@ -60,8 +60,9 @@ struct LightTunables {
     // LiSPSMNScale: multiplies n_opt. 1 = the optimum (LiSPSMNOpt); larger weakens the warp (toward
     // Focused), smaller strengthens it.
     float lispsmNScale = 1.0f;
-    // LiSPSMDepthExtent: Δz of eq. 1 in world units when > 0 (e.g. a far plane from a visibility
-    // algorithm, Scherzer 2005 §4.4); 0 = the reference code's d · sin γ, d the extent of B along V_P.
+    // LiSPSMDepthExtent (Scherzer2005 only): Δz of eq. 1 in world units when > 0 (e.g. a far plane from a
+    // visibility algorithm, Scherzer 2005 §4.4); 0 = the reference code's d · sin γ, d the extent of B along
+    // V_P.
     float lispsmDepthExtent = 0.0f;
     // LiSPSMNOpt (a string): whose z_n and z_f n_opt takes (LispsmN). Wimmer2004 measured best on the γ
     // sweep, a city field and a street against the sun (docs/results/2026-12-03-lispsm-n.md).
