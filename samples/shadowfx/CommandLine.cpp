@@ -17,6 +17,12 @@ std::vector<std::string> splitList(const std::string& text) {
     return items;
 }
 
+void removeStaleOutput(const std::string& path) {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(path, error)))
+        std::filesystem::remove(path, error);
+}
+
 fx::ParseOptions effectParseOptions(const Arguments& args) {
     fx::ParseOptions options;
     options.includeDirs = args.all("-I");

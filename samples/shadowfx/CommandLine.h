@@ -45,6 +45,11 @@ struct Command {
 // "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of --scenes, --techniques, --effects, ...
 std::vector<std::string> splitList(const std::string& text);
 
+// Removes an output file a command is about to write, so that a failed run leaves nothing behind that
+// looks like a success; only a regular file: `--out /dev/null` (or a FIFO, or a link) is left alone, since
+// the tool may run as root and must never delete a device node.
+void removeStaleOutput(const std::string& path);
+
 // The preprocessor options every effect-reading subcommand takes: -I DIR and -D NAME[=VALUE] (VALUE 1),
 // with the effect library (EffectLibrary.h) searched after the -I folders. A command that has -I among its
 // value options gets both listed in its --help.

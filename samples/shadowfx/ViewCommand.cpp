@@ -389,8 +389,7 @@ int viewCommand(const Arguments& args) {
 
     int status = effect.renderer() ? 0 : 1;
     if (!screenshot.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove(screenshot, ignored);
+        removeStaleOutput(screenshot);
         std::string error;
         if (!effect.renderer()) {
             std::cerr << "shadowfx view: no screenshot: the effect never loaded\n";

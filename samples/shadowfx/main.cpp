@@ -33,6 +33,7 @@
 namespace {
 
 using shadowfx::cli::Arguments;
+using shadowfx::cli::removeStaleOutput;
 
 // Prints every diagnostic as "path:line:column: severity: message" with the source line and a caret.
 class StderrSink : public fx::DiagnosticSink {
@@ -66,9 +67,7 @@ int renderCommand(const Arguments& args) {
     const std::string out = args.value("--out");
     const bool verbose = args.flag("--verbose");
     StderrSink sink(verbose);
-    // A failed render must not leave an image behind that looks like a success.
-    std::error_code ignored;
-    std::filesystem::remove(out, ignored);
+    removeStaleOutput(out);
 
     const int width = args.intValue("--width", 800);
     const int height = args.intValue("--height", 600);
@@ -126,7 +125,7 @@ int renderCommand(const Arguments& args) {
     std::string writeError;
     if (!runtime::writePng(renderer->readFrame(), out, writeError)) {
         std::cerr << "shadowfx render: " << writeError << "\n";
-        std::filesystem::remove(out, ignored);
+        removeStaleOutput(out);
         return 1;
     }
     if (args.flag("--stats") || verbose) {

@@ -57,6 +57,18 @@ INSTANTIATE_TEST_SUITE_P(
         return name.substr(0, name.find('.'));
     });
 
+// The tool removes a stale image before it renders, and may run as root: a device given as the output must
+// survive both a failed and a successful run (it once deleted /dev/null).
+TEST(Cli, RenderToADeviceLeavesTheDevice) {
+    ASSERT_TRUE(std::filesystem::is_character_file("/dev/null"));
+    const RunResult failed = run("render tests/data/bad/syntax_error.fx --out /dev/null");
+    EXPECT_EQ(failed.exitCode, 1) << failed.output;
+    EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+    const RunResult rendered = run("render effects/plain_lit.fx --width 32 --height 24 --out /dev/null");
+    EXPECT_EQ(rendered.exitCode, 0) << rendered.output;
+    EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}
+
 TEST(Cli, RenderWritesAPng) {
     const shadowfx::test::ScratchDirectory scratch("cli_render");
     const std::string out = scratch / "render.png";
