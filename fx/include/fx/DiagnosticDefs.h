@@ -91,6 +91,9 @@ FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
 FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
+// What the GL driver said, compiling or linking a program that worked, about the GLSL shadowfx generated:
+// its line numbers are the generated GLSL's (`shadowfx compile` prints it), not the effect's.
+FX_DIAGNOSTIC(DriverShaderLog, Note, "the GL driver on the generated GLSL of {0}: {1}")
 FX_DIAGNOSTIC(UnboundSemantic, Warning,
               "parameter '{0}' has semantic '{1}', which shadowfx does not bind: it keeps its default value "
               "(shadowfx info lists the semantics shadowfx binds)")
