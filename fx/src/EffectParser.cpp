@@ -14,6 +14,7 @@
 #include "Parser.h"
 
 #include "ConstantFolding.h"
+#include "MacroNoteSink.h"
 #include "TypeNames.h"
 #include "UserFunctionInliner.h"
 
@@ -370,9 +371,10 @@ namespace fx {
 
 std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::string& path,
                                           const ParseOptions& options, DiagnosticSink& diagnostics) {
-    detail::CountingSink counted(diagnostics);
-    detail::PreprocessedSource pp;
     auto effect = std::make_shared<Effect>();
+    detail::MacroNoteSink noted(diagnostics, effect->sourceMap);
+    detail::CountingSink counted(noted);
+    detail::PreprocessedSource pp;
     effect->path = path;
     if (!detail::preprocessEffect(source, path, options, counted, pp)) return nullptr;
     effect->includedFiles = pp.includedFiles;

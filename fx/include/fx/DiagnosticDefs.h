@@ -20,6 +20,8 @@ FX_DIAGNOSTIC(IncludeFailed, Error, "cannot include '{0}': {1}")
 FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
+// Attached to a diagnostic at a macro's use (Diagnostic::notes), at the macro's #define.
+FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here")
 
 // [SECTION] Effect syntax
 FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
