@@ -66,18 +66,13 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
 // SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
 // and, where the cause is known, what in the effect led there.
 std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
-    const char* stage = lowered.stage == ShaderStage::Vertex     ? "vertex"
-                        : lowered.stage == ShaderStage::Fragment ? "pixel"
-                        : lowered.stage == ShaderStage::Geometry ? "geometry"
-                        : lowered.stage == ShaderStage::Hull     ? "hull"
-                                                                 : "domain";
     std::string cause;
     if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
         cause =
             "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
             "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
-    return cause + "the " + std::string(stage) + " shader '" + lowered.entryPoint + "' (" + lowered.profile +
-           ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+    return cause + "the " + std::string(shaderStageName(lowered.stage)) + " shader '" + lowered.entryPoint +
+           "' (" + lowered.profile + ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
 }
 
 SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {
