@@ -41,7 +41,7 @@ TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Diagnostics, BadInputs,
-    ::testing::Values(BadInput{"syntax_error.fx", "syntax_error.fx:3:1:", "';'"},
+    ::testing::Values(BadInput{"syntax_error.fx", "syntax_error.fx:2:18:", "expected ';' after '0.01'"},
                       BadInput{"unclosed_pass.fx", "unclosed_pass.fx:6:43:", "to close 'pass' at line 4"},
                       BadInput{"unknown_state.fx", "unknown_state.fx:7:9:", "CullMood"},
                       BadInput{"unknown_state_value.fx", "unknown_state_value.fx:7:19:", "Minimum"},

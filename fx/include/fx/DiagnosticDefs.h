@@ -25,6 +25,8 @@ FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here"
 
 // [SECTION] Effect syntax
 FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
+// At the end of the line whose statement lacks its ';' (the parser goes on as if it were there).
+FX_DIAGNOSTIC(MissingSemicolon, Error, "expected ';' after '{0}'")
 FX_DIAGNOSTIC(UnclosedBlock, Error, "'{0}' expected (to close '{1}' at line {2})")
 FX_DIAGNOSTIC(UnexpectedEndOfFile, Error, "unexpected end of file, expected {0}")
 FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
