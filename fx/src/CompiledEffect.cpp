@@ -1,4 +1,4 @@
-// CompiledEffect: lookups and the texture-format table.
+// CompiledEffect: lookups, stage names and the texture-format table.
 #include <fx/CompiledEffect.h>
 
 #include "CaseFolding.h"
@@ -7,6 +7,22 @@
 #include <cctype>
 
 namespace fx {
+
+std::string_view shaderStageName(ShaderStage stage) {
+    switch (stage) {
+        case ShaderStage::Vertex:
+            return "vertex";
+        case ShaderStage::Fragment:
+            return "pixel";
+        case ShaderStage::Geometry:
+            return "geometry";
+        case ShaderStage::Hull:
+            return "hull";
+        case ShaderStage::Domain:
+            return "domain";
+    }
+    return "vertex";
+}
 
 const CompiledTechnique* CompiledEffect::findTechnique(const std::string& name) const {
     for (const CompiledTechnique& t : techniques)

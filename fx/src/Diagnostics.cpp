@@ -84,7 +84,18 @@ std::string DiagnosticList::str() const {
     return out;
 }
 
+namespace {
+std::string renderOne(const Diagnostic& diagnostic, bool withSourceLine);
+}
+
 std::string renderDiagnostic(const Diagnostic& diagnostic, bool withSourceLine) {
+    std::string out = renderOne(diagnostic, withSourceLine);
+    for (const Diagnostic& note : diagnostic.notes) out += "\n" + renderDiagnostic(note, withSourceLine);
+    return out;
+}
+
+namespace {
+std::string renderOne(const Diagnostic& diagnostic, bool withSourceLine) {
     // A diagnostic about no file in particular (an unknown scene name) reads "error: message".
     std::string out = (diagnostic.loc.file.empty() ? std::string() : diagnostic.loc.str() + ": ") +
                       std::string(severityName(diagnostic.severity)) + ": " + diagnostic.message;
@@ -105,5 +116,6 @@ std::string renderDiagnostic(const Diagnostic& diagnostic, bool withSourceLine) 
     }
     return out;
 }
+}  // namespace
 
 }  // namespace fx

@@ -224,15 +224,14 @@ std::string Expr::str() const {
 
 // [SECTION] SourceMap
 
-void SourceMap::add(const std::string& file, int line, int preprocessedColumn, int column) {
+void SourceMap::add(const std::string& file, int line, int preprocessedColumn, int column, bool fromMacro) {
     auto& columns = mColumns[{file, line}];
-    std::pair<int, int> entry{preprocessedColumn, column};
-    auto it = std::lower_bound(columns.begin(), columns.end(), entry,
-                               [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (it != columns.end() && it->first == preprocessedColumn)
-        it->second = column;
+    auto it = std::lower_bound(columns.begin(), columns.end(), preprocessedColumn,
+                               [](const TokenColumn& entry, int p) { return entry.preprocessed < p; });
+    if (it != columns.end() && it->preprocessed == preprocessedColumn)
+        *it = TokenColumn{preprocessedColumn, column, fromMacro};
     else
-        columns.insert(it, entry);
+        columns.insert(it, TokenColumn{preprocessedColumn, column, fromMacro});
 }
 
 SourceLoc SourceMap::map(const SourceLoc& preprocessed) const {
@@ -240,12 +239,24 @@ SourceLoc SourceMap::map(const SourceLoc& preprocessed) const {
     auto found = mColumns.find({preprocessed.file, preprocessed.line});
     if (found == mColumns.end() || found->second.empty()) return out;
     const auto& columns = found->second;
-    auto it = std::upper_bound(columns.begin(), columns.end(), preprocessed.column,
-                               [](int column, const auto& entry) { return column < entry.first; });
+    auto it =
+        std::upper_bound(columns.begin(), columns.end(), preprocessed.column,
+                         [](int column, const TokenColumn& entry) { return column < entry.preprocessed; });
     if (it == columns.begin()) return out;  // before the first token: leave as is
     --it;
-    out.column = it->second + (preprocessed.column - it->first);  // keep the offset inside the token
+    // Keep the offset inside a token the user wrote; a macro's expansion stands at the macro's name.
+    out.column = it->fromMacro ? it->user : it->user + (preprocessed.column - it->preprocessed);
     return out;
+}
+
+void SourceMap::addExpansion(MacroExpansion expansion) {
+    auto key = std::make_tuple(expansion.use.file, expansion.use.line, expansion.use.column);
+    mExpansions.insert_or_assign(std::move(key), std::move(expansion));
+}
+
+const SourceMap::MacroExpansion* SourceMap::expansionAt(const SourceLoc& loc) const {
+    auto found = mExpansions.find(std::make_tuple(loc.file, loc.line, loc.column));
+    return found == mExpansions.end() ? nullptr : &found->second;
 }
 
 // [SECTION] Finders

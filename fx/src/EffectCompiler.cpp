@@ -5,6 +5,7 @@
 // [SECTION] Passes and techniques
 
 #include "Compiler.h"
+#include "MacroNoteSink.h"
 #include "TechniqueSupport.h"
 
 #include <algorithm>
@@ -295,7 +296,8 @@ namespace fx {
 std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effect,
                                               const CompileOptions& options, DiagnosticSink& diagnostics) {
     if (!effect) return nullptr;
-    return detail::Compiler(std::move(effect), options, diagnostics).run();
+    detail::MacroNoteSink noted(diagnostics, effect->sourceMap);
+    return detail::Compiler(std::move(effect), options, noted).run();
 }
 
 }  // namespace fx

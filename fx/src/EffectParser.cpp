@@ -14,11 +14,13 @@
 #include "Parser.h"
 
 #include "ConstantFolding.h"
+#include "MacroNoteSink.h"
 #include "TypeNames.h"
 #include "UserFunctionInliner.h"
 
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace fx::detail {
 
@@ -114,7 +116,20 @@ void Parser::unexpected(const std::string& expected) {
 }
 
 const Token& Parser::expect(const char* spelling) {
-    if (!check(spelling)) unexpected(std::string("'") + spelling + "'");
+    if (!check(spelling)) {
+        // A ';' missing at the end of a line: the statement that lacks it is the one above, not the next
+        // line's first token. Report it after the last token of that statement and go on as if it were
+        // there, so that the next statement parses and nothing follows from it.
+        const bool missingAtLineEnd = std::string_view(spelling) == ";" && mPos > 0 &&
+                                      (atEnd() || peek().loc.file != mTokens[mPos - 1].loc.file ||
+                                       peek().loc.line > mTokens[mPos - 1].loc.line);
+        if (!missingAtLineEnd) unexpected(std::string("'") + spelling + "'");
+        const Token& last = mTokens[mPos - 1];
+        SourceLoc after = last.loc;
+        if (!last.fromMacro) after.column += static_cast<int>(last.end - last.begin);
+        error(DiagId::MissingSemicolon, after, {describe(last)});
+        return peek();
+    }
     return advance();
 }
 
@@ -370,9 +385,10 @@ namespace fx {
 
 std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::string& path,
                                           const ParseOptions& options, DiagnosticSink& diagnostics) {
-    detail::CountingSink counted(diagnostics);
-    detail::PreprocessedSource pp;
     auto effect = std::make_shared<Effect>();
+    detail::MacroNoteSink noted(diagnostics, effect->sourceMap);
+    detail::CountingSink counted(noted);
+    detail::PreprocessedSource pp;
     effect->path = path;
     if (!detail::preprocessEffect(source, path, options, counted, pp)) return nullptr;
     effect->includedFiles = pp.includedFiles;

@@ -3,7 +3,49 @@
 
 #include "Compiler.h"
 
+#include <cctype>
+
 namespace fx::detail {
+
+namespace {
+
+// A line of the generated unit and the user's file and line it stands for (through its #line).
+struct UnitLine {
+    std::string file;
+    int number = 0;
+    std::string text;
+};
+
+std::vector<UnitLine> unitLines(const std::string& text) {
+    std::vector<UnitLine> lines;
+    std::string file;
+    int number = 0;
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        std::string l = text.substr(pos, end - pos);
+        pos = end + 1;
+        if (l.rfind("#line ", 0) == 0) {
+            size_t q = l.find('"');
+            number = std::stoi(l.substr(6)) - 1;
+            file = q == std::string::npos ? file : l.substr(q + 1, l.rfind('"') - q - 1);
+        } else {
+            lines.push_back({file, ++number, std::move(l)});
+        }
+    }
+    return lines;
+}
+
+// Where `line` ends, comments and trailing blanks left out; npos if it holds no code.
+size_t codeEnd(const std::string& line) {
+    const size_t comment = line.find("//");
+    const size_t last =
+        line.find_last_not_of(" \t\r", comment == std::string::npos ? std::string::npos : comment - 1);
+    return comment == 0 || last == std::string::npos ? std::string::npos : last + 1;
+}
+
+}  // namespace
 
 SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lowered) const {
     if (m.file.empty() || m.file == kGeneratedFile || m.line <= 0) return lowered.compileLoc;
@@ -11,25 +53,23 @@ SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lower
     if (loc.column == 0) {
         // glslang 12 gives no column: find the token the message quotes ('name' : ...) on that line of the
         // unit, whose columns are the preprocessed text's (declarations are padded to their column).
-        std::string line, file;
-        int number = 0;
-        size_t pos = 0;
-        const std::string& text = lowered.hlsl;
-        while (pos < text.size()) {
-            size_t end = text.find('\n', pos);
-            if (end == std::string::npos) end = text.size();
-            std::string l = text.substr(pos, end - pos);
-            pos = end + 1;
-            if (l.rfind("#line ", 0) == 0) {
-                size_t q = l.find('"');
-                number = std::stoi(l.substr(6)) - 1;
-                file = q == std::string::npos ? file : l.substr(q + 1, l.rfind('"') - q - 1);
-            } else {
-                ++number;
-                if (file == m.file && number == m.line) {
-                    line = l;
-                    break;
-                }
+        const std::vector<UnitLine> lines = unitLines(lowered.hlsl);
+        size_t at = 0;
+        while (at < lines.size() && !(lines[at].file == m.file && lines[at].number == m.line)) ++at;
+        const std::string line = at < lines.size() ? lines[at].text : std::string();
+        // "';' : Expected" names the token after the gap, the next line's first when the ';' is missing
+        // at the end of a line: point after that line's last token, where the ';' belongs.
+        if (m.text.rfind("';' : Expected", 0) == 0 && at < lines.size()) {
+            size_t previous = at;
+            while (previous > 0 && codeEnd(lines[previous - 1].text) == std::string::npos) --previous;
+            if (previous > 0 && lines[previous - 1].file == m.file) {
+                const UnitLine& before = lines[previous - 1];
+                // Only a line that ends an expression (a name, a number, ')' or ']') can be the one.
+                const char last = before.text[codeEnd(before.text) - 1];
+                if (std::isalnum(static_cast<unsigned char>(last)) || last == '_' || last == ')' ||
+                    last == ']')
+                    return mEffect.sourceMap.map(
+                        SourceLoc{before.file, before.number, static_cast<int>(codeEnd(before.text)) + 1});
             }
         }
         size_t q1 = m.text.find('\''), q2 = q1 == std::string::npos ? q1 : m.text.find('\'', q1 + 1);
@@ -66,18 +106,13 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
 // SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
 // and, where the cause is known, what in the effect led there.
 std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
-    const char* stage = lowered.stage == ShaderStage::Vertex     ? "vertex"
-                        : lowered.stage == ShaderStage::Fragment ? "pixel"
-                        : lowered.stage == ShaderStage::Geometry ? "geometry"
-                        : lowered.stage == ShaderStage::Hull     ? "hull"
-                                                                 : "domain";
     std::string cause;
     if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
         cause =
             "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
             "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
-    return cause + "the " + std::string(stage) + " shader '" + lowered.entryPoint + "' (" + lowered.profile +
-           ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+    return cause + "the " + std::string(shaderStageName(lowered.stage)) + " shader '" + lowered.entryPoint +
+           "' (" + lowered.profile + ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
 }
 
 SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {

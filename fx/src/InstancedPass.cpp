@@ -253,7 +253,9 @@ std::optional<InstancedPass> instancedPass(const CompiledPass& pass,
             objects + "layout(binding = " + std::to_string(kInstanceBufferBinding) +
             ", std430) readonly buffer fx_InstanceBuffer\n{\n    uint fx_instances[];\n};\n\n";
         if (pixelReadsObject) declarations += varying + " flat out uint fx_objectOut;\n";
-        declarations += "uint fx_object;\n\n";
+        // main() assigns it first thing; the initializer keeps drivers from warning that the functions
+        // above main() read it uninitialized (Mesa does).
+        declarations += "uint fx_object = 0u;\n\n";
         glsl.insert(declare, declarations);
         vertex.glsl = std::move(glsl);
     }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 
 namespace fx::detail {
 
@@ -74,6 +75,64 @@ size_t findToken(std::string_view line, std::string_view spelling, size_t from) 
     return std::string_view::npos;
 }
 
+// Where each macro of the user's files is defined (`#define NAME`), read from the files on first use.
+class MacroDefinitions {
+public:
+    explicit MacroDefinitions(const std::map<std::string, std::string>& files) : mFiles(files) {}
+
+    // The definition of `name` in effect at `line` of `file`: the last one above that line in the same
+    // file, else the last one in another file (a header included above); nullptr if none (a macro
+    // defined on the command line).
+    const SourceLoc* find(std::string_view name, const std::string& file, int line) {
+        if (!mRead) read();
+        auto found = mDefinitions.find(std::string(name));
+        if (found == mDefinitions.end()) return nullptr;
+        const SourceLoc* best = nullptr;
+        for (const SourceLoc& definition : found->second)
+            if (definition.file == file && definition.line < line) best = &definition;
+        if (best) return best;
+        for (const SourceLoc& definition : found->second)
+            if (definition.file != file) best = &definition;
+        return best;
+    }
+
+private:
+    void read() {
+        mRead = true;
+        for (const auto& [file, text] : mFiles) {
+            int number = 1;
+            for (size_t start = 0; start < text.size(); ++number) {
+                size_t end = text.find('\n', start);
+                if (end == std::string::npos) end = text.size();
+                std::string_view line(text.data() + start, end - start);
+                start = end + 1;
+                size_t at = line.find_first_not_of(" \t");
+                if (at == std::string_view::npos || line[at] != '#') continue;
+                at = line.find_first_not_of(" \t", at + 1);
+                if (at == std::string_view::npos || line.compare(at, 6, "define") != 0) continue;
+                at = line.find_first_not_of(" \t", at + 6);
+                if (at == std::string_view::npos || !isIdentStart(line[at])) continue;
+                size_t nameEnd = at;
+                while (nameEnd < line.size() && isIdentChar(line[nameEnd])) ++nameEnd;
+                mDefinitions[std::string(line.substr(at, nameEnd - at))].push_back(
+                    SourceLoc{file, number, static_cast<int>(at) + 1});
+            }
+        }
+    }
+
+    const std::map<std::string, std::string>& mFiles;
+    bool mRead = false;
+    std::map<std::string, std::vector<SourceLoc>> mDefinitions;  // in file order
+};
+
+// The identifier that starts at `at` in `line`, or "".
+std::string_view identifierAt(std::string_view line, size_t at) {
+    if (at >= line.size() || !isIdentStart(line[at])) return {};
+    size_t end = at;
+    while (end < line.size() && isIdentChar(line[end])) ++end;
+    return line.substr(at, end - at);
+}
+
 }  // namespace
 
 std::vector<Token> lexEffect(const std::string& text, const std::string& mainPath,
@@ -81,6 +140,10 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                              DiagnosticSink& diagnostics) {
     std::vector<Token> tokens;
     OriginalLines originals(files);
+    MacroDefinitions definitions(files);
+    // The last macro used on the current line: a token of an expansion found nowhere in the user's line
+    // stands at its name (the arguments of a function-like macro come before the rest of its body).
+    std::optional<SourceMap::MacroExpansion> lineExpansion;
     std::string file = mainPath;
     int line = 1;
     size_t lineStart = 0;
@@ -95,6 +158,7 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
         lineStart = next;
         origCursor = 0;
         atLineStart = true;
+        lineExpansion.reset();
     };
 
     while (pos < n) {
@@ -245,12 +309,24 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                 token.loc.column = static_cast<int>(at) + 1;
                 origCursor = at + spelling.size();
             } else {
-                // From a macro expansion: point at the next thing the user wrote (the macro's name).
+                // From a macro expansion: point at the macro's name, the next thing the user wrote, or
+                // the last macro used on this line.
+                token.fromMacro = true;
                 size_t next = orig->find_first_not_of(" \t", origCursor);
-                token.loc.column = static_cast<int>(next == std::string_view::npos ? orig->size() : next) + 1;
+                const std::string_view name = identifierAt(*orig, next);
+                if (const SourceLoc* definition =
+                        name.empty() ? nullptr : definitions.find(name, file, line)) {
+                    lineExpansion = SourceMap::MacroExpansion{
+                        std::string(name), SourceLoc{file, line, static_cast<int>(next) + 1}, *definition};
+                    if (!sourceMap.expansionAt(lineExpansion->use)) sourceMap.addExpansion(*lineExpansion);
+                }
+                token.loc.column =
+                    lineExpansion
+                        ? lineExpansion->use.column
+                        : static_cast<int>(next == std::string_view::npos ? orig->size() : next) + 1;
             }
         }
-        sourceMap.add(token.loc.file, token.loc.line, token.ppColumn, token.loc.column);
+        sourceMap.add(token.loc.file, token.loc.line, token.ppColumn, token.loc.column, token.fromMacro);
         // `__fx_stringize__ X` is what the preprocessor made of a D3DX `#X` (see markStringizing): the
         // marker and the substituted argument become the string literal "X".
         if (!tokens.empty() && tokens.back().kind == Token::Kind::Identifier &&

@@ -20,8 +20,9 @@ struct Token {
     bool isInteger = false;  // Number
     size_t begin = 0;        // offsets of the token's spelling in the preprocessed text
     size_t end = 0;
-    SourceLoc loc;     // the user's file, line and column
-    int ppColumn = 1;  // the column in the preprocessed text
+    SourceLoc loc;           // the user's file, line and column
+    int ppColumn = 1;        // the column in the preprocessed text
+    bool fromMacro = false;  // written by a macro's expansion, not found in the user's line; `loc` is the use
 
     bool is(const char* spelling) const {
         return kind != Kind::String && kind != Kind::End && text == spelling;

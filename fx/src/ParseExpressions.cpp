@@ -173,8 +173,8 @@ Expr Parser::parsePrimary() {
             while (peek().kind == Token::Kind::String) {
                 const Token& piece = advance();
                 SourceLoc pieceLoc = piece.loc;
-                pieceLoc.column += 1;  // after the quote
-                e.stringPieces.push_back({e.text.size(), pieceLoc});
+                if (!piece.fromMacro) pieceLoc.column += 1;  // after the quote
+                e.stringPieces.push_back({e.text.size(), pieceLoc, piece.fromMacro});
                 e.text += piece.text;
             }
             return e;

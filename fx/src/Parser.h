@@ -55,6 +55,8 @@ private:
     [[noreturn]] void fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
     void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
     [[noreturn]] void unexpected(const std::string& expected);
+    // The token, consumed. A ';' missing before a new line is reported after the line's last token
+    // (MissingSemicolon) and taken as there: nothing is consumed, nothing thrown.
     const Token& expect(const char* spelling);
     const Token& expectIdentifier(const char* what);
     // '>' closing an annotation or template; splits ">=" and ">>" so the rest is seen next.

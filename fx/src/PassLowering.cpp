@@ -169,21 +169,15 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
                                        const std::map<int, TypeDesc>* previousOutputs,
                                        const FunctionDecl* hull) {
-    auto stageName = [](ShaderStage s) {
-        return s == ShaderStage::Vertex     ? "vertex"
-               : s == ShaderStage::Fragment ? "pixel"
-               : s == ShaderStage::Geometry ? "geometry"
-               : s == ShaderStage::Hull     ? "hull"
-                                            : "domain";
-    };
     if (!profileMatches(compile.profile, stage)) {
         // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
         for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
                                   ShaderStage::Hull, ShaderStage::Domain})
             if (other != stage && profileMatches(compile.profile, other)) {
-                diagnostics.report(DiagId::InvalidCompileExpression, compile.loc,
-                                   {"'" + compile.profile + "' is a " + stageName(other) +
-                                    "-shader profile, used for the " + stageName(stage) + " shader"});
+                diagnostics.report(
+                    DiagId::InvalidCompileExpression, compile.loc,
+                    {"'" + compile.profile + "' is a " + std::string(shaderStageName(other)) +
+                     "-shader profile, used for the " + std::string(shaderStageName(stage)) + " shader"});
                 return std::nullopt;
             }
         diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
@@ -242,8 +236,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     std::set<std::string> usedDepth;
     std::string staticAssignments;  // what the entry point assigns first (splitStaticInitializer)
     std::string& hlsl = out.hlsl;
-    hlsl += "// shadowfx: " + std::string(stageName(stage)) + " shader " + fn->name + " (" + compile.profile +
-            ")\n";
+    hlsl += "// shadowfx: " + std::string(shaderStageName(stage)) + " shader " + fn->name + " (" +
+            compile.profile + ")\n";
     hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + kLitReplacement;
     for (const DeclRef& ref : effect.order) {
         switch (ref.kind) {

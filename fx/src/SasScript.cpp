@@ -52,7 +52,7 @@ SourceLoc locate(const Expr& script, size_t offset) {
     for (const Expr::StringPiece& p : script.stringPieces)
         if (p.offset <= offset) piece = &p;
     SourceLoc loc = piece->loc;
-    loc.column += static_cast<int>(offset - piece->offset);
+    if (!piece->fromMacro) loc.column += static_cast<int>(offset - piece->offset);
     return loc;
 }
 

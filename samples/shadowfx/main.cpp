@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -35,13 +36,18 @@ namespace {
 using shadowfx::cli::Arguments;
 using shadowfx::cli::removeStaleOutput;
 
-// Prints every diagnostic as "path:line:column: severity: message" with the source line and a caret.
+// Prints every diagnostic as "path:line:column: severity: message" with the source line and a caret;
+// notes with --verbose, the GL driver's words on the generated GLSL with --driver-log only (their line
+// numbers are the GLSL's, not the effect's).
 class StderrSink : public fx::DiagnosticSink {
 public:
     using fx::DiagnosticSink::report;
-    explicit StderrSink(bool verbose) : mVerbose(verbose) {}
+    explicit StderrSink(bool verbose, bool driverLog = false) : mVerbose(verbose), mDriverLog(driverLog) {}
     void report(const fx::Diagnostic& diagnostic) override {
-        if (diagnostic.severity == fx::Severity::Note && !mVerbose) return;
+        if (diagnostic.id == fx::DiagId::DriverShaderLog
+                ? !mDriverLog
+                : diagnostic.severity == fx::Severity::Note && !mVerbose)
+            return;
         if (diagnostic.severity == fx::Severity::Error) ++mErrors;
         std::cerr << fx::renderDiagnostic(diagnostic) << "\n";
     }
@@ -49,6 +55,7 @@ public:
 
 private:
     bool mVerbose;
+    bool mDriverLog;
     int mErrors = 0;
 };
 
@@ -66,7 +73,7 @@ std::shared_ptr<fx::CompiledEffect> loadEffect(const Arguments& args, const std:
 int renderCommand(const Arguments& args) {
     const std::string out = args.value("--out");
     const bool verbose = args.flag("--verbose");
-    StderrSink sink(verbose);
+    StderrSink sink(verbose, args.flag("--driver-log"));
     removeStaleOutput(out);
 
     const int width = args.intValue("--width", 800);
@@ -89,6 +96,9 @@ int renderCommand(const Arguments& args) {
     runtime::ContextOptions contextOptions;
     contextOptions.backend = *backend;
     contextOptions.debug = verbose;
+    // Mesa's on-disk shader cache skips compiling a shader it has seen before, and leaves its info log
+    // empty then: the driver's words would come only on a shader's first run on this machine.
+    if (args.flag("--driver-log")) setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     std::string contextError;
     std::unique_ptr<runtime::GlContext> context = runtime::createContext(contextOptions, contextError);
     if (!context) {
@@ -160,12 +170,8 @@ int compileCommand(const Arguments& args) {
                  {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment}) {
                 if (stage->entryPoint.empty()) continue;
                 std::cout << "// technique " << technique.name << ", pass " << pass.name << ", "
-                          << (stage->stage == fx::ShaderStage::Vertex     ? "vertex"
-                              : stage->stage == fx::ShaderStage::Fragment ? "pixel"
-                              : stage->stage == fx::ShaderStage::Geometry ? "geometry"
-                              : stage->stage == fx::ShaderStage::Hull     ? "hull"
-                                                                          : "domain")
-                          << " shader " << stage->entryPoint << " (" << stage->profile << ")\n";
+                          << fx::shaderStageName(stage->stage) << " shader " << stage->entryPoint << " ("
+                          << stage->profile << ")\n";
                 if (showHlsl) std::cout << "// generated HLSL:\n" << stage->hlsl << "\n// GLSL:\n";
                 std::cout << stage->glsl << "\n";
             }
@@ -223,10 +229,12 @@ const shadowfx::cli::Command kCommands[] = {
      "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
      "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
      "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
-     "  --verbose             print the GL renderer and notes\n",
+     "  --verbose             print the GL renderer and notes\n"
+     "  --driver-log          print what the GL driver said compiling each pass's generated GLSL (its\n"
+     "                        lines are the GLSL's, which `shadowfx compile` prints), at the pass\n",
      {"--out"},
      {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
-     {"--stats", "--verbose", "--no-leave-out", "--no-batching"},
+     {"--stats", "--verbose", "--driver-log", "--no-leave-out", "--no-batching"},
      renderCommand},
     {"compile",
      "print the generated GLSL of every pass, or the diagnostics",

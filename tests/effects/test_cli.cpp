@@ -41,7 +41,7 @@ TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Diagnostics, BadInputs,
-    ::testing::Values(BadInput{"syntax_error.fx", "syntax_error.fx:3:1:", "';'"},
+    ::testing::Values(BadInput{"syntax_error.fx", "syntax_error.fx:2:18:", "expected ';' after '0.01'"},
                       BadInput{"unclosed_pass.fx", "unclosed_pass.fx:6:43:", "to close 'pass' at line 4"},
                       BadInput{"unknown_state.fx", "unknown_state.fx:7:9:", "CullMood"},
                       BadInput{"unknown_state_value.fx", "unknown_state_value.fx:7:19:", "Minimum"},
@@ -137,6 +137,25 @@ TEST(Cli, AnUnboundSemanticIsALocatedWarningAndInfoListsTheBoundOnes) {
         << info.output;
     EXPECT_NE(info.output.find("semantics shadowfx binds"), std::string::npos) << info.output;
     EXPECT_NE(info.output.find(" WorldViewProjectionInverseTranspose "), std::string::npos) << info.output;
+}
+
+// The GL driver's warnings on the generated GLSL carry the GLSL's line numbers, which are nowhere in the
+// effect: render prints them only when asked (--driver-log, not --verbose), at the pass, naming the shader.
+TEST(Cli, DriverWarningsOnGeneratedGlslOnlyOnRequestAtThePass) {
+    const std::string effect = "tests/data/authoring/driver_warning.fx";
+    const RunResult verbose = run("render " + effect + " --width 64 --height 48 --verbose --out /dev/null");
+    EXPECT_EQ(verbose.exitCode, 0) << verbose.output;
+    EXPECT_EQ(verbose.output.find("used uninitialized"), std::string::npos) << verbose.output;
+
+    const RunResult asked = run("render " + effect + " --width 64 --height 48 --driver-log --out /dev/null");
+    EXPECT_EQ(asked.exitCode, 0) << asked.output;
+    const std::string expected =
+        effect + ":9:10: note: the GL driver on the generated GLSL of pixel shader 'PS' of pass 'lit': ";
+    const size_t at = asked.output.find(expected);
+    ASSERT_NE(at, std::string::npos) << asked.output;
+    const std::string line = asked.output.substr(at, asked.output.find('\n', at) - at);
+    EXPECT_NE(line.find("warning: `Gain' used uninitialized"), std::string::npos) << line;
+    EXPECT_EQ(asked.output.find("vertex shader 'VS'"), std::string::npos) << asked.output;
 }
 
 // `new` writes into the working directory (the source root here), so only its refusals run in this test;

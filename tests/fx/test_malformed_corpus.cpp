@@ -30,11 +30,18 @@ const std::string kSourceDir = SHADOWFX_SOURCE_DIR;
 const std::string kCorpus =
     "tests/data/malformed";  // relative to the repository root, as diagnostics show it
 
-// "file:line:column: severity: message [Id]", one diagnostic a line.
+// "file:line:column: severity: message [Id]", one diagnostic a line, each followed by its notes.
 std::string withIds(const fx::DiagnosticList& diagnostics) {
     std::string out;
-    for (const fx::Diagnostic& d : diagnostics.items())
-        out += fx::renderDiagnostic(d, false) + " [" + std::string(fx::diagnosticName(d.id)) + "]\n";
+    const auto line = [](const fx::Diagnostic& d) {
+        fx::Diagnostic alone = d;
+        alone.notes.clear();
+        return fx::renderDiagnostic(alone, false) + " [" + std::string(fx::diagnosticName(d.id)) + "]\n";
+    };
+    for (const fx::Diagnostic& d : diagnostics.items()) {
+        out += line(d);
+        for (const fx::Diagnostic& note : d.notes) out += line(note);
+    }
     return out;
 }
 

@@ -11,7 +11,9 @@
 #include "LeaveOutFrames.h"
 #include "effects/EffectHarness.h"
 
+#include <fx/InstancedPass.h>
 #include <runtime/BuiltinScenes.h>
+#include <runtime/GpuProgram.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -161,6 +163,29 @@ TEST(Batching, RecordsFollowObjectsAndCamera) {
     EXPECT_GT(differingPixels(same("object moved"), first), 0u);
     scene.camera.position += glm::vec3(1.0f, 0.5f, 0.0f);
     same("camera moved");
+}
+
+// The batched variant is GLSL shadowfx writes itself, so the driver must have nothing to say about it:
+// Mesa warned that the functions above main() read the instance's object index uninitialized.
+TEST(Batching, TheDriverHasNoWarningOnTheBatchedVariant) {
+    auto renderer = loadEffect(sourcePath("effects/plain_lit.fx"), true);
+    ASSERT_TRUE(renderer);
+    const fx::CompiledEffect& effect = renderer->effect();
+    std::vector<bool> perObject(effect.parameters.size(), false);
+    for (size_t i = 0; i < effect.parameters.size(); ++i)
+        perObject[i] = effect.parameters[i].semantic.rfind("World", 0) == 0;
+    const fx::CompiledPass& pass = effect.techniques.at(0).passes.at(0);
+    std::string whyNot;
+    const std::optional<fx::InstancedPass> variant =
+        fx::instancedPass(pass, perObject, std::vector<bool>(pass.arguments.size(), false), whyNot);
+    ASSERT_TRUE(variant) << whyNot;
+    ASSERT_NE(variant->pass.vertex.glsl.find("fx_objects[fx_object]"), std::string::npos)
+        << "the vertex stage reads no per-object value:\n"
+        << variant->pass.vertex.glsl;
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(GpuProgram::create(variant->pass, diagnostics)) << diagnostics.str();
+    EXPECT_EQ(shadowfx::test::countDiagnostics(diagnostics, fx::DiagId::DriverShaderLog), 0)
+        << diagnostics.str();
 }
 
 // A pinned per-object parameter holds the application's value for every object.

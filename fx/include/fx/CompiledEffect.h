@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fx {
@@ -22,6 +23,8 @@ struct Effect;  // fx/Effect.h: the syntax tree, which the runtime does not read
 
 // Hull and Domain are D3D11's names for GL's tessellation control and evaluation stages.
 enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain };
+// The stage as the effect's author names it: "vertex", "pixel", "geometry", "hull", "domain".
+std::string_view shaderStageName(ShaderStage stage);
 
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
 struct UniformBinding {

@@ -20,9 +20,13 @@ FX_DIAGNOSTIC(IncludeFailed, Error, "cannot include '{0}': {1}")
 FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
+// Attached to a diagnostic at a macro's use (Diagnostic::notes), at the macro's #define.
+FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here")
 
 // [SECTION] Effect syntax
 FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
+// At the end of the line whose statement lacks its ';' (the parser goes on as if it were there).
+FX_DIAGNOSTIC(MissingSemicolon, Error, "expected ';' after '{0}'")
 FX_DIAGNOSTIC(UnclosedBlock, Error, "'{0}' expected (to close '{1}' at line {2})")
 FX_DIAGNOSTIC(UnexpectedEndOfFile, Error, "unexpected end of file, expected {0}")
 FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
@@ -91,6 +95,9 @@ FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
 FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
 FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
+// What the GL driver said, compiling or linking a program that worked, about the GLSL shadowfx generated:
+// its line numbers are the generated GLSL's (`shadowfx compile` prints it), not the effect's.
+FX_DIAGNOSTIC(DriverShaderLog, Note, "the GL driver on the generated GLSL of {0}: {1}")
 FX_DIAGNOSTIC(UnboundSemantic, Warning,
               "parameter '{0}' has semantic '{1}', which shadowfx does not bind: it keeps its default value "
               "(shadowfx info lists the semantics shadowfx binds)")

@@ -22,6 +22,9 @@ struct Diagnostic {
     Severity severity;
     SourceLoc loc;
     std::string message;  // the filled-in template
+    // Notes that belong to this diagnostic and are printed after it, whatever a sink does with notes on
+    // their own: where the macro expanded at `loc` was defined.
+    std::vector<Diagnostic> notes = {};
 };
 
 // The stable name of an id ("UnknownState"), its default severity and its message template.
@@ -60,7 +63,7 @@ private:
 };
 
 // "file:line:column: error: message" plus, when the file can be read, the source line and a caret under
-// the column. What the CLI prints.
+// the column; then its notes, each the same way. What the CLI prints.
 std::string renderDiagnostic(const Diagnostic& diagnostic, bool withSourceLine = true);
 
 }  // namespace fx

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace fx {
@@ -42,10 +43,12 @@ struct Expr {
     };
 
     // One piece of a (possibly concatenated) string literal: where its characters start in `text`, and
-    // where the literal's first character (after the quote) stands in the source.
+    // where the literal's first character (after the quote) stands in the source. A literal that a macro
+    // wrote stands at the macro's use as a whole: its characters are in the macro's definition.
     struct StringPiece {
         size_t offset = 0;
         SourceLoc loc;
+        bool fromMacro = false;
     };
 
     Kind kind = Kind::Number;
@@ -215,15 +218,34 @@ struct Technique {
 // are not the user's; the lexer records, per token, where it really stood.
 class SourceMap {
 public:
-    // Records that the token at (file, line, preprocessedColumn) starts at `column` in the user's file.
-    void add(const std::string& file, int line, int preprocessedColumn, int column);
+    // Records that the token at (file, line, preprocessedColumn) starts at `column` in the user's file;
+    // `fromMacro`: the token is a macro's expansion, which stands as a whole at the macro's name there.
+    void add(const std::string& file, int line, int preprocessedColumn, int column, bool fromMacro = false);
     // The user's location for a location in preprocessed text; the column is mapped to the nearest
     // recorded token at or before it on that line (unchanged if the line has no record).
     SourceLoc map(const SourceLoc& preprocessed) const;
 
+    // A macro used in the user's file: tokens of its expansion stand at `use` (its name), and diagnostics
+    // there carry a note at `definition` (the name in its #define).
+    struct MacroExpansion {
+        std::string name;
+        SourceLoc use;
+        SourceLoc definition;
+    };
+    void addExpansion(MacroExpansion expansion);
+    // The expansion whose use is exactly at `loc`, if any.
+    const MacroExpansion* expansionAt(const SourceLoc& loc) const;
+
 private:
-    // (file, line) -> sorted (preprocessedColumn, column) pairs
-    std::map<std::pair<std::string, int>, std::vector<std::pair<int, int>>> mColumns;
+    struct TokenColumn {
+        int preprocessed;
+        int user;
+        bool fromMacro;
+    };
+    // (file, line) -> its tokens, sorted by preprocessed column
+    std::map<std::pair<std::string, int>, std::vector<TokenColumn>> mColumns;
+    std::map<std::tuple<std::string, int, int>, MacroExpansion>
+        mExpansions;  // by (file, line, column) of the use
 };
 
 // Where a top-level declaration stands among the others: HLSL needs them emitted in source order.

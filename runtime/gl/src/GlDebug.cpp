@@ -95,6 +95,10 @@ void installDebugCallback() {
     gl::DebugMessageCallback(onDebugMessage, nullptr);
     // Notifications (buffer placement hints and the like) would drown the messages that matter.
     gl::DebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DEBUG_SEVERITY_NOTIFICATION, 0, nullptr, GL_FALSE);
+    // The shader compiler's messages repeat the info logs, which GpuProgram reports at the pass they are
+    // about; here they would arrive without it.
+    gl::DebugMessageControl(GL_DEBUG_SOURCE_SHADER_COMPILER, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr,
+                            GL_FALSE);
 }
 
 std::string glErrorName(GLenum error) {

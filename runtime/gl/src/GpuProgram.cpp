@@ -62,22 +62,59 @@ void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& valu
 
 namespace {
 
-GLuint compileShader(GLenum kind, const std::string& source, std::string& log) {
+std::string shaderInfoLog(GLuint shader) {
+    GLint length = 0;
+    gl::GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    if (length <= 1) return {};
+    std::string info(static_cast<size_t>(length), '\0');
+    gl::GetShaderInfoLog(shader, length, nullptr, info.data());
+    return info.c_str();
+}
+
+std::string programInfoLog(GLuint program) {
+    GLint length = 0;
+    gl::GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    if (length <= 1) return {};
+    std::string info(static_cast<size_t>(length), '\0');
+    gl::GetProgramInfoLog(program, length, nullptr, info.data());
+    return info.c_str();
+}
+
+// What the driver says about a shader that compiled or a program that linked (Mesa's "0:37(42): warning:
+// `x' used uninitialized"): one note per line at the pass, naming the shader, since its line numbers are
+// the generated GLSL's. The CLI prints them on request only (--driver-log).
+void reportDriverLog(const std::string& log, const std::string& what, const fx::CompiledPass& pass,
+                     fx::DiagnosticSink& diagnostics) {
+    size_t start = 0;
+    while (start < log.size()) {
+        size_t end = log.find('\n', start);
+        if (end == std::string::npos) end = log.size();
+        std::string line = log.substr(start, end - start);
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+        if (!line.empty()) diagnostics.report(fx::DiagId::DriverShaderLog, pass.loc, {what, line});
+        start = end + 1;
+    }
+}
+
+// `stage` is null for the fixed-function pixel stage's stand-in.
+GLuint compileShader(GLenum kind, const std::string& source, const fx::StageProgram* stage,
+                     const fx::CompiledPass& pass, std::string& errors, fx::DiagnosticSink& diagnostics) {
     GLuint shader = gl::CreateShader(kind);
     const char* text = source.c_str();
     gl::ShaderSource(shader, 1, &text, nullptr);
     gl::CompileShader(shader);
     GLint ok = GL_FALSE;
     gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    const std::string log = shaderInfoLog(shader);
     if (!ok) {
-        GLint length = 0;
-        gl::GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-        std::string info(static_cast<size_t>(std::max(length, 1)), '\0');
-        gl::GetShaderInfoLog(shader, length, nullptr, info.data());
-        log += info.c_str();
+        errors += log;
         gl::DeleteShader(shader);
         return 0;
     }
+    const std::string what = stage ? std::string(fx::shaderStageName(stage->stage)) + " shader '" +
+                                         stage->entryPoint + "' of pass '" + pass.name + "'"
+                                   : "the fixed-function pixel stage of pass '" + pass.name + "'";
+    reportDriverLog(log, what, pass, diagnostics);
     return shader;
 }
 
@@ -102,16 +139,25 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
 
     const bool withPixel = stages == Stages::VertexAndPixel;
     std::string log;
-    const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, log);
-    const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, fragment, log) : 0;
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, &pass.vertex, pass, log, diagnostics);
+    const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, fragment,
+                                                pass.fragment.glsl.empty() ? nullptr : &pass.fragment, pass,
+                                                log, diagnostics)
+                                : 0;
     // D3D10's geometry shader runs in both variants: it decides what is rasterized.
     const bool withGeometry = !pass.geometry.glsl.empty();
-    const GLuint gs = withGeometry ? compileShader(GL_GEOMETRY_SHADER, pass.geometry.glsl, log) : 0;
+    const GLuint gs = withGeometry ? compileShader(GL_GEOMETRY_SHADER, pass.geometry.glsl, &pass.geometry,
+                                                   pass, log, diagnostics)
+                                   : 0;
     // So do D3D11's hull and domain shaders (GL's tessellation stages); the effect compiler has made sure
     // a pass has both or neither.
     const bool withTessellation = !pass.hull.glsl.empty() && !pass.domain.glsl.empty();
-    const GLuint tcs = withTessellation ? compileShader(GL_TESS_CONTROL_SHADER, pass.hull.glsl, log) : 0;
-    const GLuint tes = withTessellation ? compileShader(GL_TESS_EVALUATION_SHADER, pass.domain.glsl, log) : 0;
+    const GLuint tcs = withTessellation ? compileShader(GL_TESS_CONTROL_SHADER, pass.hull.glsl, &pass.hull,
+                                                        pass, log, diagnostics)
+                                        : 0;
+    const GLuint tes = withTessellation ? compileShader(GL_TESS_EVALUATION_SHADER, pass.domain.glsl,
+                                                        &pass.domain, pass, log, diagnostics)
+                                        : 0;
     if (vs && (fs || !withPixel) && (gs || !withGeometry) && ((tcs && tes) || !withTessellation)) {
         program->mProgram = gl::CreateProgram();
         gl::AttachShader(program->mProgram, vs);
@@ -123,13 +169,12 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
         GLint ok = GL_FALSE;
         gl::GetProgramiv(program->mProgram, GL_LINK_STATUS, &ok);
         if (!ok) {
-            GLint length = 0;
-            gl::GetProgramiv(program->mProgram, GL_INFO_LOG_LENGTH, &length);
-            std::string info(static_cast<size_t>(std::max(length, 1)), '\0');
-            gl::GetProgramInfoLog(program->mProgram, length, nullptr, info.data());
-            log += info.c_str();
+            log += programInfoLog(program->mProgram);
             gl::DeleteProgram(program->mProgram);
             program->mProgram = 0;
+        } else {
+            reportDriverLog(programInfoLog(program->mProgram), "pass '" + pass.name + "', linking", pass,
+                            diagnostics);
         }
     }
     if (vs) gl::DeleteShader(vs);

@@ -52,7 +52,8 @@ public:
     enum class Stages { VertexAndPixel, DepthOnly };
 
     // Compiles and links the pass's GLSL. Returns nullptr and reports LinkError (with the driver's log)
-    // at the pass's location on failure.
+    // at the pass's location on failure; on success, what the driver still said (warnings) is reported
+    // there as DriverShaderLog notes.
     static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
                                               Stages stages = Stages::VertexAndPixel);
 
