@@ -449,6 +449,10 @@ void EffectResources::ensureFrameResources(int width, int height, const std::set
         frameColor = GpuTexture::create2D(fx::TextureFormat::RGBA8, width, height);
         frameDepth = GpuTexture::create2D(fx::TextureFormat::D24S8, width, height);
     }
+    ensureRenderTargets(width, height, needed);
+}
+
+void EffectResources::ensureRenderTargets(int width, int height, const std::set<int>* needed) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
         if (!isRenderTarget(desc)) continue;
         const glm::ivec2 size = renderTargetSize(desc, width, height);

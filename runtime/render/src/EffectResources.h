@@ -80,6 +80,15 @@ public:
     GpuTexture frameDepth;
     std::unique_ptr<UniformRing> uniformRing;
 
+    // [SECTION] The application's textures
+    // A GL texture of the application's given to a texture parameter (EffectVariable::setTexture), bound
+    // wherever the parameter is sampled instead of the effect's own; the application keeps it alive.
+    struct ApplicationTexture {
+        GLuint name = 0;
+        GLenum target = GL_TEXTURE_2D;
+    };
+    std::map<size_t, ApplicationTexture> applicationTextures;
+
     // [SECTION] Between frames
     // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
     // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
@@ -96,6 +105,8 @@ public:
     // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
     // allocate (null: all); others already allocated are still resized.
     void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
+    // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
+    void ensureRenderTargets(int width, int height, const std::set<int>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     // EffectRenderer::setTexture.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
