@@ -355,6 +355,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
     if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
     r.uniformRing = std::make_unique<UniformRing>();
+    r.annotations = AnnotationTable(*r.mCompiled);
     return resources;
 }
 
