@@ -38,6 +38,7 @@ std::shared_ptr<const fx::CompiledEffect> compileThesis() {
 }
 
 std::unique_ptr<runtime::EffectRenderer> load(std::shared_ptr<const fx::CompiledEffect> compiled) {
+    sharedContext();
     fx::DiagnosticList diagnostics;
     auto renderer = runtime::EffectRenderer::create(std::move(compiled), diagnostics);
     EXPECT_TRUE(renderer) << diagnostics.str();
