@@ -150,8 +150,6 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
         program->bind();
         r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, frame.arguments, sink);
         program->upload(r.values, frame.arguments, *r.uniformRing);
-    } else {
-        gl::UseProgram(0);
     }
     frame.applied = std::make_pair(mTechnique, mPass);
     return true;

@@ -71,7 +71,8 @@ public:
     //   arguments evaluated over the current values, its uniform blocks, textures, samplers and storage
     //   buffers.
     // False, with a diagnostic, where the pass cannot be applied (an invalid handle, a render target that
-    // cannot be bound); a pass without shaders (a clear pass) applies targets and states only.
+    // cannot be bound); a pass without shaders (a clear pass) applies targets and states only, and leaves
+    // the bound program as it is.
     bool apply(fx::DiagnosticSink* diagnostics = nullptr) const;
     // After values changed (a per-object World between draws): evaluates the applied pass's compile
     // arguments again and uploads the blocks whose bytes changed, touching nothing else. Setting a value
