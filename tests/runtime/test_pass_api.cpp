@@ -273,8 +273,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ThesisFrame, ::testing::Values("boxes", "dual-l
 
 // [SECTION] Lookups and annotations
 
-// A D3D10 effect with an array, an application texture and a technique the compiler leaves out (GL has no
-// SV_Coverage input).
+// A D3D10/11 effect with an array, an application texture, a technique in an fxgroup and one the compiler
+// leaves out (GL has no SV_Coverage input).
 constexpr const char* kPalette = R"(
 float4x4 WorldViewProj : WORLDVIEWPROJECTION < string UIName = "Transform"; >;
 float4 Palette[3] < float2 Range = {0.25, 4}; >;
@@ -300,13 +300,16 @@ technique10 Coverage
         SetPixelShader(CompileShader(ps_4_0, CoveragePS()));
     }
 }
-technique10 Plain < string Purpose = "palette"; int Order = 2; >
+fxgroup Palettes
 {
-    pass Tinted < float Weight = 0.5; >
+    technique11 Plain < string Purpose = "palette"; int Order = 2; >
     {
-        SetVertexShader(CompileShader(vs_4_0, VS()));
-        SetGeometryShader(NULL);
-        SetPixelShader(CompileShader(ps_4_0, PS()));
+        pass Tinted < float Weight = 0.5; >
+        {
+            SetVertexShader(CompileShader(vs_4_0, VS()));
+            SetGeometryShader(NULL);
+            SetPixelShader(CompileShader(ps_4_0, PS()));
+        }
     }
 }
 )";
@@ -334,6 +337,10 @@ TEST(PassApi, LooksVariablesUpByNameSemanticAndIndex) {
     EXPECT_FALSE(effect->variable(effect->variableCount()).isValid());
     EXPECT_TRUE(effect->variable("Palette").element(2).isValid());
     EXPECT_FALSE(effect->variable("Palette").element(3).isValid());
+    EXPECT_EQ(effect->technique("Palettes.Plain").index(), effect->technique("Plain").index());
+    EXPECT_EQ(effect->technique("Plain").group(), "Palettes");
+    EXPECT_EQ(effect->technique(size_t(0)).name(), "Plain");
+    EXPECT_FALSE(effect->technique("Other.Plain").isValid());
     EXPECT_FALSE(effect->variable("Gain").element(0).isValid()) << "not an array";
     EXPECT_EQ(effect->variable("Palette").elementCount(), 3u);
     EXPECT_EQ(effect->variable("Palette").element(1).name(), "Palette[1]");
