@@ -273,8 +273,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ThesisFrame, ::testing::Values("boxes", "dual-l
 
 // [SECTION] Lookups and annotations
 
-// A D3D10/11 effect with an array, an application texture, a technique in an fxgroup and one the compiler
-// leaves out (GL has no SV_Coverage input).
+// A D3D10/11 effect with an array, an application texture, a technique in an fxgroup, one the parser leaves
+// out (GL has no stream output) and one the compiler leaves out (nor an SV_Coverage input).
 constexpr const char* kPalette = R"(
 float4x4 WorldViewProj : WORLDVIEWPROJECTION < string UIName = "Transform"; >;
 float4 Palette[3] < float2 Range = {0.25, 4}; >;
@@ -290,6 +290,16 @@ VsOut VS(float3 position : POSITION, float2 uv : TEXCOORD0)
     return o;
 }
 float4 PS(VsOut i) : SV_Target { return Albedo.Sample(PointClamp, i.uv) * Palette[1] * Gain; }
+float4 StreamVS(float3 p : POSITION) : SV_Position { return float4(p, 1); }
+technique10 Streamed
+{
+    pass
+    {
+        SetVertexShader(CompileShader(vs_4_0, StreamVS()));
+        SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, StreamVS()), "SV_POSITION.xyzw"));
+        SetPixelShader(NULL);
+    }
+}
 float4 CoveragePS(VsOut i, uint mask : SV_Coverage) : SV_Target { return Palette[0] * mask; }
 technique10 Coverage
 {
@@ -427,7 +437,11 @@ TEST(PassApi, ValidatesTechniquesWithTheReasonOneWasLeftOut) {
     EXPECT_EQ(plain.reason, "");
     const runtime::TechniqueValidation coverage = effect->validateTechnique("Coverage");
     EXPECT_FALSE(coverage.valid);
-    EXPECT_EQ(coverage.reason, "left out by the compiler: its TechniqueRefused warning says why");
+    EXPECT_EQ(coverage.reason, "pixel input semantic 'SV_COVERAGE' is not supported");
+    const runtime::TechniqueValidation streamed = effect->validateTechnique("Streamed");
+    EXPECT_FALSE(streamed.valid);
+    EXPECT_NE(streamed.reason.find("stream output (ConstructGSWithSO) is not supported"), std::string::npos)
+        << streamed.reason;
     const runtime::TechniqueValidation missing = effect->validateTechnique("Missing");
     EXPECT_FALSE(missing.valid);
     EXPECT_EQ(missing.reason, "the effect has no technique 'Missing'");

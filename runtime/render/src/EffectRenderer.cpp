@@ -20,7 +20,6 @@
 #include "ScriptInterpreter.h"
 #include "SemanticBinder.h"
 
-#include <fx/Effect.h>
 #include <fx/RenderStates.h>
 
 #include <algorithm>
@@ -165,10 +164,9 @@ EffectTechnique EffectRenderer::technique(std::string_view name) {
 TechniqueValidation EffectRenderer::validateTechnique(std::string_view name) const {
     const fx::CompiledEffect& effect = mImpl->effect();
     if (effect.findTechnique(std::string(name))) return {true, ""};
-    // The compiled effect does not keep the compiler's reason yet; its syntax tree still has the technique.
-    // (One the parser refused, for D3D10 features it recognizes and GL cannot run, is in neither.)
-    if (effect.effect && effect.effect->findTechnique(std::string(name)))
-        return {false, "left out by the compiler: its TechniqueRefused warning says why"};
+    for (const fx::RefusedTechnique& refused : effect.refusedTechniques)
+        if (refused.name == name || (!refused.group.empty() && refused.group + "." + refused.name == name))
+            return {false, refused.reason};
     return {false, "the effect has no technique '" + std::string(name) + "'"};
 }
 

@@ -124,9 +124,8 @@ private:
     size_t mTechnique = 0;
 };
 
-// D3DX9's ValidateTechnique: whether a technique of the effect can run here, and the reason it cannot. The
-// compiled effect does not keep the compiler's own words yet: a technique it left out (code the lowering
-// cannot express for GL) is named as left out, and its TechniqueRefused warning at compile time says why.
+// D3DX9's ValidateTechnique: whether a technique of the effect can run here, and the reason it cannot: for
+// a technique the parser or compiler left out (fx/RefusedTechnique.h), what it uses that GL cannot run.
 struct TechniqueValidation {
     bool valid = false;
     std::string reason;  // "" when valid
