@@ -152,7 +152,10 @@ GlStateSnapshot GlStateSnapshot::capture(const GlStateMask& mask) {
 }
 
 void GlStateSnapshot::restore() const {
-    if (mMask.program) gl::UseProgram(static_cast<GLuint>(mProgram));
+    // A program deleted while current stays current, and its name with it, until another is made current:
+    // then it is gone, and making its name current again is an error. Such a program goes back to none.
+    if (mMask.program)
+        gl::UseProgram(gl::IsProgram(static_cast<GLuint>(mProgram)) ? static_cast<GLuint>(mProgram) : 0);
     if (mMask.renderStates) {
         for (const Enable& e : mEnables) {
             if (e.on) {
