@@ -271,6 +271,40 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ThesisFrame, ::testing::Values("boxes", "dual-l
     return name;
 });
 
+// An application that draws into the effect's targets between two render(Scene) frames: the second frame
+// draws its shadow map again instead of reusing what it left there (leave-out's cached passes), so it
+// equals the first.
+TEST(PassApi, RenderSceneAfterTheApplicationDrewIntoTheTargetsDrawsThemAgain) {
+    sharedContext();
+    std::optional<runtime::Scene> scene = runtime::makeBuiltinScene("boxes");
+    ASSERT_TRUE(scene);
+    auto effect = load(compileThesis());
+    ASSERT_TRUE(effect);
+    runtime::FrameOptions options;
+    options.width = 160;
+    options.height = 120;
+    options.technique = "main";
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(effect->render(*scene, options, diagnostics)) << diagnostics.str();
+    const runtime::FrameImage first = effect->readFrame();
+
+    ApplicationTarget target(options.width, options.height);
+    runtime::EffectTechnique technique = effect->technique("main");
+    ASSERT_TRUE(technique.begin());
+    ASSERT_TRUE(technique.pass("ClearShadowMap").apply(&diagnostics)) << diagnostics.str();
+    gl::ClearColor(0, 0, 0, 0);  // every receiver behind an occluder at depth 0: all in shadow
+    gl::Clear(GL_COLOR_BUFFER_BIT);
+    technique.end();
+
+    runtime::FrameStats stats;
+    ASSERT_TRUE(effect->render(*scene, options, diagnostics, &stats)) << diagnostics.str();
+    const runtime::PassStats* shadow = shadowfx::test::findPass(stats, "RenderShadowMap");
+    ASSERT_TRUE(shadow);
+    EXPECT_EQ(shadow->leftOut, "") << "the map is drawn again";
+    EXPECT_TRUE(notConstant(first));
+    EXPECT_EQ(differingPixels(first, effect->readFrame()), 0u);
+}
+
 // [SECTION] Lookups and annotations
 
 // A D3D10/11 effect with an array, an application texture, a technique in an fxgroup, one the parser leaves
