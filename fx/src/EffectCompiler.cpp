@@ -251,7 +251,8 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     // next valid technique where one did not validate (FindNextValidTechnique): such a technique is left
     // out with a warning while another technique can run; where none can, its errors fail the effect as
     // they stand.
-    std::vector<std::pair<std::string, std::vector<Diagnostic>>> invalid;
+    std::vector<std::pair<const Technique*, std::vector<Diagnostic>>> invalid;
+    mOut->refusedTechniques = mEffect.refusedTechniques;
     for (const Technique& t : mEffect.techniques) {
         if (!mOptions.technique.empty() && mEffect.findTechnique(mOptions.technique) != &t) continue;
         found = true;
@@ -269,12 +270,14 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
             const size_t index = mOut->techniques.size();
             std::erase_if(mPending,
                           [index](const PendingStage& stage) { return stage.slot.technique == index; });
-            invalid.emplace_back(t.name.empty() ? "(unnamed)" : t.name, std::move(mTechniqueUnsupported));
+            invalid.emplace_back(&t, std::move(mTechniqueUnsupported));
             continue;
         }
         mOut->techniques.push_back(std::move(technique));
     }
-    if (!reportUnsupportedTechniques(invalid, !mOut->techniques.empty(), mDiagnostics)) mFailed = true;
+    if (!reportUnsupportedTechniques(invalid, !mOut->techniques.empty(), mDiagnostics,
+                                     mOut->refusedTechniques))
+        mFailed = true;
     finishPendingStages();
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes)

@@ -50,7 +50,7 @@ void Parser::parseTechnique(const std::string& group) {
     for (const Technique& other : mEffect.techniques)
         if (!technique.name.empty() && other.name == technique.name && other.group == technique.group)
             error(DiagId::Redefinition, technique.loc, {technique.name});
-    if (mRefusals.leaveOut(technique.name, mDiag)) return;
+    if (mRefusals.leaveOut(technique, mDiag, mEffect.refusedTechniques)) return;
     mEffect.techniques.push_back(std::move(technique));
 }
 

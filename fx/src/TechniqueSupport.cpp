@@ -23,20 +23,23 @@ std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effec
     return std::nullopt;
 }
 
-bool TechniqueRefusals::leaveOut(const std::string& techniqueName, DiagnosticSink& diagnostics) {
+bool TechniqueRefusals::leaveOut(const Technique& technique, DiagnosticSink& diagnostics,
+                                 std::vector<RefusedTechnique>& leftOut) {
     if (!mCurrent) return false;
-    const std::string name = techniqueName.empty() ? "(unnamed)" : techniqueName;
+    const std::string name = technique.name.empty() ? "(unnamed)" : technique.name;
     diagnostics.report(DiagId::TechniqueRefused, mCurrent->loc, {name, mCurrent->reason});
     if (!mFirst) mFirst = Refused{name, mCurrent->reason, mCurrent->loc};
+    leftOut.push_back({name, technique.group, mCurrent->reason, mCurrent->loc});
     mCurrent.reset();
     return true;
 }
 
 bool reportUnsupportedTechniques(
-    const std::vector<std::pair<std::string, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
-    DiagnosticSink& diagnostics) {
+    const std::vector<std::pair<const Technique*, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
+    DiagnosticSink& diagnostics, std::vector<RefusedTechnique>& leftOut) {
     bool reportedErrors = false;
-    for (const auto& [name, reasons] : techniques) {
+    for (const auto& [technique, reasons] : techniques) {
+        const std::string name = technique->name.empty() ? "(unnamed)" : technique->name;
         if (!anotherRuns) {
             for (const Diagnostic& d : reasons) diagnostics.report(d);
             reportedErrors = true;
@@ -45,6 +48,7 @@ bool reportUnsupportedTechniques(
         const auto first = std::find_if(reasons.begin(), reasons.end(),
                                         [](const Diagnostic& d) { return d.severity == Severity::Error; });
         diagnostics.report(DiagId::TechniqueRefused, first->loc, {name, first->message});
+        leftOut.push_back({name, technique->group, first->message, first->loc});
     }
     return !reportedErrors;
 }

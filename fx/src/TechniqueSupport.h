@@ -36,8 +36,9 @@ public:
         if (!mCurrent) mCurrent = Refused{"", reason, loc};
     }
     // At the technique's end: true when it is left out, reported (never silently: the technique is named,
-    // with what GL cannot run and where it stands).
-    bool leaveOut(const std::string& techniqueName, DiagnosticSink& diagnostics);
+    // with what GL cannot run and where it stands) and added to `leftOut`.
+    bool leaveOut(const Technique& technique, DiagnosticSink& diagnostics,
+                  std::vector<RefusedTechnique>& leftOut);
     const std::optional<Refused>& first() const { return mFirst; }
 
 private:
@@ -45,11 +46,12 @@ private:
     std::optional<Refused> mFirst;    // the first technique left out
 };
 
-// The compiler's: techniques whose code uses what the lowering cannot express, by name with what it said
-// (UnsupportedFeature errors). Left out with a warning at the first error while `anotherRuns`; otherwise
-// their diagnostics are reported as they stand and the result is false (the effect fails).
+// The compiler's: techniques whose code uses what the lowering cannot express, with what it said
+// (UnsupportedFeature errors). Left out with a warning at the first error while `anotherRuns`, and added to
+// `leftOut` with it; otherwise their diagnostics are reported as they stand and the result is false (the
+// effect fails).
 bool reportUnsupportedTechniques(
-    const std::vector<std::pair<std::string, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
-    DiagnosticSink& diagnostics);
+    const std::vector<std::pair<const Technique*, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
+    DiagnosticSink& diagnostics, std::vector<RefusedTechnique>& leftOut);
 
 }  // namespace fx::detail

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <fx/PreshaderProgram.h>
+#include <fx/RefusedTechnique.h>
 #include <fx/RenderStates.h>
 #include <fx/SasScript.h>
 #include <fx/Value.h>
@@ -260,6 +261,7 @@ struct CompiledEffect {
     std::vector<TextureDesc> textures;
     std::vector<SamplerDesc> samplers;
     std::vector<CompiledTechnique> techniques;
+    std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser or the compiler
     bool hasGlobalScript = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
 

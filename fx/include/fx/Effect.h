@@ -8,6 +8,7 @@
 // Nothing here knows about glslang, SPIR-V or OpenGL.
 #pragma once
 
+#include <fx/RefusedTechnique.h>
 #include <fx/SourceLoc.h>
 #include <fx/Types.h>
 
@@ -262,6 +263,7 @@ struct Effect {
     std::vector<FunctionDecl> functions;
     std::vector<VerbatimDecl> verbatim;
     std::vector<Technique> techniques;
+    std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser, each with a TechniqueRefused
     std::vector<DeclRef> order;  // parameters, structs, functions and verbatim declarations in source order
     std::vector<std::string> includedFiles;  // every file the preprocessor opened, main file first
     SourceMap sourceMap;

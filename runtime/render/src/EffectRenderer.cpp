@@ -20,6 +20,8 @@
 #include "ScriptInterpreter.h"
 #include "SemanticBinder.h"
 
+#include <fx/RenderStates.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -140,6 +142,55 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
     value.data = numbers;
     setParameter(*index, value);
     return true;
+}
+
+// [SECTION] The application's API
+
+size_t EffectRenderer::techniqueCount() const {
+    return mImpl->effect().techniques.size();
+}
+
+EffectTechnique EffectRenderer::technique(size_t index) {
+    if (index >= techniqueCount()) return {};
+    return EffectTechnique(mImpl.get(), index);
+}
+
+EffectTechnique EffectRenderer::technique(std::string_view name) {
+    const fx::CompiledTechnique* found = mImpl->effect().findTechnique(std::string(name));
+    if (!found) return {};
+    return EffectTechnique(mImpl.get(), static_cast<size_t>(found - mImpl->effect().techniques.data()));
+}
+
+TechniqueValidation EffectRenderer::validateTechnique(std::string_view name) const {
+    const fx::CompiledEffect& effect = mImpl->effect();
+    if (effect.findTechnique(std::string(name))) return {true, ""};
+    for (const fx::RefusedTechnique& refused : effect.refusedTechniques)
+        if (refused.name == name || (!refused.group.empty() && refused.group + "." + refused.name == name))
+            return {false, refused.reason};
+    return {false, "the effect has no technique '" + std::string(name) + "'"};
+}
+
+size_t EffectRenderer::variableCount() const {
+    return mImpl->values.size();
+}
+
+EffectVariable EffectRenderer::variable(size_t index) {
+    if (index >= variableCount()) return {};
+    return EffectVariable(mImpl.get(), index);
+}
+
+EffectVariable EffectRenderer::variable(std::string_view name) {
+    const std::optional<size_t> index = findParameter(name);
+    if (!index) return {};
+    return EffectVariable(mImpl.get(), *index);
+}
+
+EffectVariable EffectRenderer::variableBySemantic(std::string_view semantic) {
+    if (semantic.empty()) return {};
+    const std::vector<fx::ParameterInfo>& parameters = mImpl->parameterInfo();
+    for (size_t i = 0; i < parameters.size(); ++i)
+        if (fx::equalsIgnoreCase(parameters[i].semantic, semantic)) return EffectVariable(mImpl.get(), i);
+    return {};
 }
 
 // [SECTION] Frame

@@ -355,6 +355,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
     if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
     r.uniformRing = std::make_unique<UniformRing>();
+    r.annotations = AnnotationTable(*r.mCompiled);
     return resources;
 }
 
@@ -449,6 +450,10 @@ void EffectResources::ensureFrameResources(int width, int height, const std::set
         frameColor = GpuTexture::create2D(fx::TextureFormat::RGBA8, width, height);
         frameDepth = GpuTexture::create2D(fx::TextureFormat::D24S8, width, height);
     }
+    ensureRenderTargets(width, height, needed);
+}
+
+void EffectResources::ensureRenderTargets(int width, int height, const std::set<int>* needed) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
         if (!isRenderTarget(desc)) continue;
         const glm::ivec2 size = renderTargetSize(desc, width, height);

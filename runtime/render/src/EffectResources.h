@@ -5,6 +5,7 @@
 // target holds after the frames so far.
 #pragma once
 
+#include "AnnotationTable.h"
 #include "BatchedPass.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
@@ -12,6 +13,7 @@
 #include <runtime/GpuMesh.h>
 #include <runtime/GpuProgram.h>
 #include <runtime/GpuTexture.h>
+#include <runtime/GlStateSnapshot.h>
 #include <runtime/InstanceBvh.h>
 #include "HostScene.h"
 #include "PassPreshaders.h"
@@ -23,6 +25,7 @@
 #include <runtime/EffectRenderer.h>
 #include <runtime/Scene.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -80,6 +83,28 @@ public:
     GpuTexture frameDepth;
     std::unique_ptr<UniformRing> uniformRing;
 
+    // [SECTION] The application's passes (runtime/EffectPass.h)
+    AnnotationTable annotations;
+    // A GL texture of the application's given to a texture parameter (EffectVariable::setTexture), bound
+    // wherever the parameter is sampled instead of the effect's own; the application keeps it alive.
+    struct ApplicationTexture {
+        GLuint name = 0;
+        GLenum target = GL_TEXTURE_2D;
+    };
+    std::map<size_t, ApplicationTexture> applicationTextures;
+    struct ApplicationFrame {
+        std::optional<size_t> begun;           // the technique between begin() and end()
+        std::optional<GlStateSnapshot> saved;  // what end() restores
+        // The application's framebuffer and viewport, for passes whose script binds the frame's targets.
+        bool targetKnown = false;
+        GLint framebuffer = 0;
+        std::array<GLint, 4> viewport{};
+        int depthBits = 24;       // of the application's depth buffer (DepthBias, RenderStateApplier.h)
+        int boundDepthBits = 24;  // of the depth target bound now
+        std::optional<std::pair<size_t, size_t>> applied;  // the technique and pass last applied
+        std::vector<fx::Value> arguments;                  // its compile arguments' values
+    } application;
+
     // [SECTION] Between frames
     // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
     // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
@@ -96,6 +121,8 @@ public:
     // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
     // allocate (null: all); others already allocated are still resized.
     void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
+    // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
+    void ensureRenderTargets(int width, int height, const std::set<int>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     // EffectRenderer::setTexture.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);

@@ -3,6 +3,7 @@
 
 #include <runtime/GlDebug.h>
 #include <runtime/IntersectionBody.h>
+#include "PassBindings.h"
 #include "RenderPort.h"
 #include <runtime/RenderStateApplier.h>
 
@@ -159,12 +160,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     if (!bindTargets(usesDepth, &pass)) return;
     GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
     if (vertexOnly) program = vertexOnly;
-    bindSamplers(pass.vertex);
-    bindSamplers(pass.hull);
-    bindSamplers(pass.domain);
-    bindSamplers(pass.geometry);
-    bindSamplers(pass.fragment);
-    bindStorageBuffers(pass);
+    bindPassTextures(mResources, pass, mTargets);
+    bindPassStorageBuffers(mResources, pass);
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
     if (mPort.cascade >= 0) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
@@ -374,11 +371,6 @@ bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
     return true;
 }
 
-bool FrameExecutor::isColorTarget(const GpuTexture* texture) const {
-    return std::any_of(mTargets.colors.begin(), mTargets.colors.end(),
-                       [texture](const RenderTargetAttachment& color) { return color.texture == texture; });
-}
-
 const RenderStateBlock& FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex,
                                                    const PlannedOp* op) {
     const RenderStateBlock* block = op ? &op->states : nullptr;
@@ -387,11 +379,7 @@ const RenderStateBlock& FrameExecutor::applyStates(const fx::CompiledPass& pass,
         block = &mResources.preshaders[mTechnique][passIndex].states(mResources.values, mResources.stamps,
                                                                      mDiagnostics);
     }
-    // DepthBias units (RenderStateApplier.h): 2^-bits for UNORM depth; for D32F the resolvable
-    // difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24 bits.
-    const GpuTexture* depth = mTargets.depth.texture;
-    const int depthBits = depth ? std::clamp(depth->glFormat().depthBits, 16, 24) : 24;
-    applyRenderStates(*block, depthBits);
+    applyRenderStates(*block, depthBiasBits(mTargets.depth.texture));
     // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight)
     // meshes only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual
     // depth layers with back-face culling (Weiskopf & Ertl 2003, §4: "back face culling for solid
@@ -436,52 +424,6 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
         return nullptr;
     }
     return found->second.get();
-}
-
-void FrameExecutor::bindSamplers(const fx::StageProgram& stage) {
-    for (const fx::SamplerBinding& binding : stage.samplers) {
-        const fx::SamplerDesc* desc = mResources.effect().findSampler(binding.samplerParameter);
-        const GpuTexture* texture = nullptr;
-        // A D3D10 pair samples its own texture through the sampler's states.
-        const std::optional<size_t> textureParameter = binding.textureParameter ? binding.textureParameter
-                                                       : desc                   ? desc->texture
-                                                                                : std::nullopt;
-        if (textureParameter) {
-            auto it = mResources.textures.find(*textureParameter);
-            if (it != mResources.textures.end()) texture = &it->second;
-        }
-        // Not while the pass renders into it (the chain would be built before the draw that changes it).
-        if (texture && !isColorTarget(texture) && mResources.staleMipChains.erase(texture) > 0) {
-            PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-            texture->generateMipmaps();
-        }
-        gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
-        auto buffer =
-            textureParameter ? mResources.buffers.find(*textureParameter) : mResources.buffers.end();
-        if (texture) {
-            gl::BindTexture(texture->target(), texture->id());
-        } else if (buffer != mResources.buffers.end() && buffer->second.texture()) {
-            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->second.texture());  // Buffer<T>
-        } else {
-            gl::BindTexture(GL_TEXTURE_2D, 0);
-        }
-        auto& samplers = binding.depthCompare ? mResources.comparisonSamplers : mResources.samplers;
-        auto sampler = samplers.find(binding.samplerParameter);
-        if (sampler != samplers.end()) {
-            sampler->second.bind(binding.unit);
-        } else {
-            SamplerObject::unbind(binding.unit);
-        }
-    }
-}
-
-void FrameExecutor::bindStorageBuffers(const fx::CompiledPass& pass) {
-    const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
-    for (size_t binding = 0; binding < parameters.size(); ++binding) {
-        auto buffer = mResources.buffers.find(parameters[binding]);
-        if (buffer != mResources.buffers.end())
-            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
-    }
 }
 
 // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per

@@ -67,7 +67,6 @@ private:
     bool bindTargets(bool usesDepth, const fx::CompiledPass* pass = nullptr);
     glm::ivec2 depthTargetSize() const;  // at its mip level; 0x0 without one
     bool depthTargetIsSmaller() const;
-    bool isColorTarget(const GpuTexture* texture) const;
     // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
     // evaluates them.
     // Applies the pass's render states and returns them.
@@ -76,8 +75,6 @@ private:
     // returns the pass's vertex-only program, or null where the draw needs its colour targets or pixel
     // shader after all (see draw()).
     GpuProgram* depthOnly(const fx::CompiledPass& pass, size_t passIndex, const RenderStateBlock& states);
-    void bindSamplers(const fx::StageProgram& stage);
-    void bindStorageBuffers(const fx::CompiledPass& pass);
     // Runs the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per pass
     // (perObject false) and the per-object ones per draw (perObject true); without, all per draw. Each
     // runs only if a parameter it reads changed (PassPreshaders).

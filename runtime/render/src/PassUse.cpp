@@ -11,25 +11,30 @@ bool PassUse::projectsWith(const Light* portLight) const {
            std::find(lightMatrices.begin(), lightMatrices.end(), portLight) != lightMatrices.end();
 }
 
-std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t count,
-                              const SemanticBinder& binder) {
-    std::vector<PassUse> uses;
-    const auto mark = [count](const fx::PreshaderProgram& program, std::vector<bool>& used) {
+std::vector<bool> passValueReads(const fx::CompiledPass& pass, size_t count) {
+    std::vector<bool> used(count, false);
+    const auto mark = [&](const fx::PreshaderProgram& program) {
         for (size_t p : program.inputs())
             if (p < count) used[p] = true;
     };
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+        for (const fx::UniformBinding& member : stage->uniforms)
+            if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
+                member.index < count)
+                used[member.index] = true;
+    for (const fx::RenderStateSetting& setting : pass.states) mark(setting.value);
+    for (const fx::CompileArgument& argument : pass.arguments) mark(argument.value);
+    return used;
+}
+
+std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t count,
+                              const SemanticBinder& binder) {
+    std::vector<PassUse> uses;
     for (const fx::CompiledPass& pass : technique.passes) {
         PassUse use;
-        use.used.assign(count, false);
-        for (const fx::StageProgram* stage :
-             {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
-            for (const fx::UniformBinding& member : stage->uniforms)
-                if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
-                    member.index < count)
-                    use.used[member.index] = true;
-        for (const fx::RenderStateSetting& setting : pass.states) mark(setting.value, use.used);
+        use.used = passValueReads(pass, count);
         for (const fx::CompileArgument& argument : pass.arguments) {
-            mark(argument.value, use.used);
             const std::vector<size_t>& inputs = argument.value.inputs();
             const bool perObject = std::any_of(inputs.begin(), inputs.end(),
                                                [&binder](size_t p) { return binder.isPerObject(p); });

@@ -29,6 +29,10 @@ struct PassUse {
     bool projectsWith(const Light* portLight) const;
 };
 
+// Per effect parameter (`count` of them): whether the pass reads its value, in a uniform-block member its
+// code reads or in a state's or compile argument's expression.
+std::vector<bool> passValueReads(const fx::CompiledPass& pass, size_t count);
+
 // One PassUse per pass of `technique`, for the parameter count `parameters`.
 std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t parameters,
                               const SemanticBinder& binder);

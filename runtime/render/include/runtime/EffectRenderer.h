@@ -7,6 +7,8 @@
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
+#include <runtime/EffectPass.h>
+#include <runtime/EffectVariable.h>
 #include <runtime/FrameImage.h>
 #include <runtime/FrameStats.h>
 #include <runtime/LightParameterization.h>
@@ -105,6 +107,21 @@ public:
     // diagnostic, for another parameter or an element size that is not the type's.
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                    fx::DiagnosticSink& diagnostics);
+
+    // [SECTION] The application drives the passes (runtime/EffectPass.h, docs/api.md). Lookups return
+    // invalid handles for what the effect does not have.
+    size_t techniqueCount() const;
+    EffectTechnique technique(size_t index);
+    // By name; a technique in a D3D11 fxgroup also by "group.name".
+    EffectTechnique technique(std::string_view name);
+    // D3DX9's ValidateTechnique, by name: valid if the effect has it ready to apply; otherwise why not
+    // (what left it out, as its TechniqueRefused warning said; or that no technique has that name).
+    TechniqueValidation validateTechnique(std::string_view name) const;
+    size_t variableCount() const;
+    EffectVariable variable(size_t index);
+    EffectVariable variable(std::string_view name);  // case-sensitive, as HLSL names are
+    // The first parameter declared with `semantic`, case-blind as D3DX's GetParameterBySemantic.
+    EffectVariable variableBySemantic(std::string_view semantic);
 
     // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
     // GL error occurred.

@@ -1,0 +1,250 @@
+// EffectPass, EffectTechnique: see runtime/EffectPass.h. apply() binds a pass with the functions the SAS
+// host's FrameExecutor binds its passes with (PassBindings.h, PassPreshaders, GpuProgram, FramebufferCache,
+// applyRenderStates): one way to make GL ready for a pass, whichever client draws.
+#include <runtime/EffectPass.h>
+
+#include "EffectResources.h"
+#include "PassBindings.h"
+
+#include <runtime/RenderStateApplier.h>
+
+#include <fx/SasScript.h>
+
+#include <algorithm>
+
+namespace runtime {
+
+namespace {
+
+const fx::CompiledPass& compiledPass(const EffectResources& resources, size_t technique, size_t pass) {
+    return resources.effect().techniques[technique].passes[pass];
+}
+
+// DepthBias's depth bits (RenderStateApplier.h) of the framebuffer bound as GL_DRAW_FRAMEBUFFER.
+int boundDepthBits(GLint framebuffer) {
+    const GLenum attachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+    GLint type = GL_NONE, bits = 24, component = GL_UNSIGNED_NORMALIZED;
+    gl::GetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment,
+                                            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type == GL_NONE) return 24;
+    gl::GetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment,
+                                            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    gl::GetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment,
+                                            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &component);
+    return component == GL_FLOAT ? 24 : std::clamp(static_cast<int>(bits), 16, 24);
+}
+
+// The application's framebuffer and viewport, which passes that bind the frame's targets return to; the
+// effect's render targets are sized for that viewport (ViewPortRatio).
+void captureApplicationTarget(EffectResources& resources) {
+    EffectResources::ApplicationFrame& frame = resources.application;
+    gl::GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame.framebuffer);
+    gl::GetIntegerv(GL_VIEWPORT, frame.viewport.data());
+    frame.depthBits = boundDepthBits(frame.framebuffer);
+    frame.boundDepthBits = frame.depthBits;
+    frame.targetKnown = true;
+    resources.ensureRenderTargets(std::max(frame.viewport[2], 1), std::max(frame.viewport[3], 1));
+}
+
+// The targets a pass's Script annotation names (RenderColorTargetN, RenderDepthStencilTarget).
+struct ScriptTargets {
+    bool named = false;          // the script names a target at all
+    bool effectTargets = false;  // one of them is an effect texture ("" is the application's)
+    RenderTargets targets;
+    std::string missing;  // a named texture that is no allocated render target
+    fx::SourceLoc missingLoc;
+};
+
+ScriptTargets scriptTargets(const EffectResources& resources, const fx::CompiledPass& pass) {
+    ScriptTargets out;
+    for (const fx::ScriptCommand& command : pass.script) {
+        const bool color = command.kind == fx::ScriptCommand::Kind::RenderColorTarget;
+        if (!color && command.kind != fx::ScriptCommand::Kind::RenderDepthStencilTarget) continue;
+        if (color && (command.index < 0 || command.index >= RenderTargets::kMaxColorTargets)) continue;
+        out.named = true;
+        const GpuTexture* texture = nullptr;
+        if (!command.value.empty()) {
+            out.effectTargets = true;
+            const std::optional<size_t> index = resources.findParameter(command.value);
+            auto found = index ? resources.textures.find(*index) : resources.textures.end();
+            if (found == resources.textures.end()) {
+                out.missing = command.value;
+                out.missingLoc = command.loc;
+                continue;
+            }
+            texture = &found->second;
+        }
+        if (color) {
+            out.targets.colors[static_cast<size_t>(command.index)].texture = texture;
+        } else {
+            out.targets.depth.texture = texture;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+// [SECTION] EffectPass
+
+const std::string& EffectPass::name() const {
+    static const std::string none;
+    return isValid() ? compiledPass(*mResources, mTechnique, mPass).name : none;
+}
+
+std::vector<PassInput> EffectPass::inputSignature() const {
+    std::vector<PassInput> inputs;
+    if (!isValid()) return inputs;
+    for (const fx::VertexInput& input : compiledPass(*mResources, mTechnique, mPass).vertex.inputs)
+        inputs.push_back(PassInput{input.semantic, input.location, input.components});
+    std::sort(inputs.begin(), inputs.end(),
+              [](const PassInput& a, const PassInput& b) { return a.location < b.location; });
+    return inputs;
+}
+
+GlStateMask EffectPass::stateMask() const {
+    if (!isValid()) return {};
+    const fx::CompiledPass& pass = compiledPass(*mResources, mTechnique, mPass);
+    GlStateMask mask = passStateMask(pass);
+    mask.framebuffer = scriptTargets(*mResources, pass).named;
+    return mask;
+}
+
+bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
+    if (!isValid()) return false;
+    fx::DiagnosticList unreported;
+    fx::DiagnosticSink& sink = diagnostics ? *diagnostics : unreported;
+    EffectResources& r = *mResources;
+    EffectResources::ApplicationFrame& frame = r.application;
+    const fx::CompiledPass& pass = compiledPass(r, mTechnique, mPass);
+    if (!frame.targetKnown) captureApplicationTarget(r);
+
+    const ScriptTargets named = scriptTargets(r, pass);
+    if (!named.missing.empty()) {
+        sink.report(fx::DiagId::ScriptUnknownTarget, named.missingLoc, {named.missing});
+        return false;
+    }
+    if (named.effectTargets) {
+        std::string error;
+        if (!r.framebuffers.bind(named.targets, error)) {
+            sink.report(fx::DiagId::GlError, pass.loc,
+                        {"cannot bind the targets of pass '" + pass.name + "': " + error});
+            return false;
+        }
+        for (const RenderTargetAttachment& color : named.targets.colors)
+            if (color.texture && color.texture->mipLevels() > 1) r.staleMipChains.insert(color.texture);
+        // render(Scene) may no longer reuse what it left in the targets (leave-out's cached passes).
+        r.targetHistory.clear();
+        frame.boundDepthBits = depthBiasBits(named.targets.depth.texture);
+    } else if (named.named) {
+        gl::BindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(frame.framebuffer));
+        gl::Viewport(frame.viewport[0], frame.viewport[1], frame.viewport[2], frame.viewport[3]);
+        frame.boundDepthBits = frame.depthBits;
+    }
+
+    applyRenderStates(r.preshaders[mTechnique][mPass].states(r.values, r.stamps, sink), frame.boundDepthBits);
+    GpuProgram* program = r.programs[mTechnique][mPass].get();
+    if (program && program->hasShaders()) {
+        bindPassTextures(r, pass, named.targets);
+        bindPassStorageBuffers(r, pass);
+        program->bind();
+        r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, frame.arguments, sink);
+        program->upload(r.values, frame.arguments, *r.uniformRing);
+    }
+    frame.applied = std::make_pair(mTechnique, mPass);
+    return true;
+}
+
+bool EffectPass::commitChanges(fx::DiagnosticSink* diagnostics) const {
+    if (!isValid()) return false;
+    EffectResources& r = *mResources;
+    if (r.application.applied != std::make_pair(mTechnique, mPass)) return false;
+    GpuProgram* program = r.programs[mTechnique][mPass].get();
+    if (!program || !program->hasShaders()) return true;
+    fx::DiagnosticList unreported;
+    r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, r.application.arguments,
+                                              diagnostics ? *diagnostics : unreported);
+    program->upload(r.values, r.application.arguments, *r.uniformRing);
+    return true;
+}
+
+size_t EffectPass::annotationCount() const {
+    return isValid() ? mResources->annotations.pass(mTechnique, mPass).size() : 0;
+}
+
+EffectAnnotation EffectPass::annotation(size_t i) const {
+    return isValid() ? AnnotationTable::at(mResources->annotations.pass(mTechnique, mPass), i)
+                     : EffectAnnotation{};
+}
+
+EffectAnnotation EffectPass::annotation(std::string_view name) const {
+    return isValid() ? AnnotationTable::find(mResources->annotations.pass(mTechnique, mPass), name)
+                     : EffectAnnotation{};
+}
+
+// [SECTION] EffectTechnique
+
+const std::string& EffectTechnique::name() const {
+    static const std::string none;
+    return isValid() ? mResources->effect().techniques[mTechnique].name : none;
+}
+
+const std::string& EffectTechnique::group() const {
+    static const std::string none;
+    return isValid() ? mResources->effect().techniques[mTechnique].group : none;
+}
+
+size_t EffectTechnique::passCount() const {
+    return isValid() ? mResources->effect().techniques[mTechnique].passes.size() : 0;
+}
+
+EffectPass EffectTechnique::pass(size_t index) const {
+    if (index >= passCount()) return {};
+    return EffectPass(mResources, mTechnique, index);
+}
+
+EffectPass EffectTechnique::pass(std::string_view name) const {
+    for (size_t p = 0; p < passCount(); ++p)
+        if (fx::scriptNameMatches(name, mResources->effect().techniques[mTechnique].passes[p].name))
+            return EffectPass(mResources, mTechnique, p);
+    return {};
+}
+
+GlStateMask EffectTechnique::stateMask() const {
+    GlStateMask mask;
+    for (size_t p = 0; p < passCount(); ++p) mask.add(pass(p).stateMask());
+    return mask;
+}
+
+bool EffectTechnique::begin(bool saveState) const {
+    if (!isValid() || mResources->application.begun) return false;
+    EffectResources::ApplicationFrame& frame = mResources->application;
+    // Read before anything is written: allocating the render targets binds textures.
+    if (saveState) frame.saved = GlStateSnapshot::capture(stateMask());
+    captureApplicationTarget(*mResources);
+    frame.begun = mTechnique;
+    return true;
+}
+
+void EffectTechnique::end() const {
+    if (!isValid() || mResources->application.begun != mTechnique) return;
+    EffectResources::ApplicationFrame& frame = mResources->application;
+    if (frame.saved) frame.saved->restore();
+    frame = EffectResources::ApplicationFrame{};
+}
+
+size_t EffectTechnique::annotationCount() const {
+    return isValid() ? mResources->annotations.technique(mTechnique).size() : 0;
+}
+
+EffectAnnotation EffectTechnique::annotation(size_t i) const {
+    return isValid() ? AnnotationTable::at(mResources->annotations.technique(mTechnique), i)
+                     : EffectAnnotation{};
+}
+
+EffectAnnotation EffectTechnique::annotation(std::string_view name) const {
+    return isValid() ? AnnotationTable::find(mResources->annotations.technique(mTechnique), name)
+                     : EffectAnnotation{};
+}
+
+}  // namespace runtime

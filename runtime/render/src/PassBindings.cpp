@@ -1,0 +1,97 @@
+// PassBindings: see PassBindings.h.
+#include "PassBindings.h"
+
+#include <runtime/GlApi.h>
+
+#include <algorithm>
+#include <array>
+
+namespace runtime {
+
+namespace {
+
+void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage,
+                       const RenderTargets& drawing) {
+    for (const fx::SamplerBinding& binding : stage.samplers) {
+        const fx::SamplerDesc* desc = resources.effect().findSampler(binding.samplerParameter);
+        // A D3D10 pair samples its own texture through the sampler's states.
+        const std::optional<size_t> textureParameter = binding.textureParameter ? binding.textureParameter
+                                                       : desc                   ? desc->texture
+                                                                                : std::nullopt;
+        gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
+        auto application = textureParameter ? resources.applicationTextures.find(*textureParameter)
+                                            : resources.applicationTextures.end();
+        const GpuTexture* texture = nullptr;
+        if (textureParameter) {
+            auto it = resources.textures.find(*textureParameter);
+            if (it != resources.textures.end()) texture = &it->second;
+        }
+        const bool rendering = std::any_of(drawing.colors.begin(), drawing.colors.end(),
+                                           [texture](const auto& color) { return color.texture == texture; });
+        // Not while the pass renders into it (the chain would be built before the draw that changes it).
+        if (texture && !rendering && resources.staleMipChains.erase(texture) > 0) texture->generateMipmaps();
+        auto buffer = textureParameter ? resources.buffers.find(*textureParameter) : resources.buffers.end();
+        if (application != resources.applicationTextures.end()) {
+            gl::BindTexture(application->second.target, application->second.name);
+        } else if (texture) {
+            gl::BindTexture(texture->target(), texture->id());
+        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {
+            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->second.texture());  // Buffer<T>
+        } else {
+            gl::BindTexture(GL_TEXTURE_2D, 0);
+        }
+        auto& samplers = binding.depthCompare ? resources.comparisonSamplers : resources.samplers;
+        auto sampler = samplers.find(binding.samplerParameter);
+        if (sampler != samplers.end()) {
+            sampler->second.bind(binding.unit);
+        } else {
+            SamplerObject::unbind(binding.unit);
+        }
+    }
+}
+
+std::array<const fx::StageProgram*, 5> stagesOf(const fx::CompiledPass& pass) {
+    return {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment};
+}
+
+}  // namespace
+
+void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
+                      const RenderTargets& drawing) {
+    for (const fx::StageProgram* stage : stagesOf(pass)) bindStageTextures(resources, *stage, drawing);
+}
+
+void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
+    const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
+    for (size_t binding = 0; binding < parameters.size(); ++binding) {
+        auto buffer = resources.buffers.find(parameters[binding]);
+        if (buffer != resources.buffers.end())
+            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
+    }
+}
+
+int depthBiasBits(const GpuTexture* texture) {
+    return texture ? std::clamp(texture->glFormat().depthBits, 16, 24) : 24;
+}
+
+GlStateMask passStateMask(const fx::CompiledPass& pass) {
+    GlStateMask mask;
+    mask.renderStates = true;  // every state, set or not (RenderStateApplier.h)
+    if (pass.vertex.glsl.empty()) return mask;
+    mask.program = true;
+    for (const fx::StageProgram* stage : stagesOf(pass)) {
+        GlStateMask stageMask;
+        for (const fx::SamplerBinding& binding : stage->samplers)
+            stageMask.textureUnits.push_back(binding.unit);
+        if (stage->uniformBlockSize > 0 && stage->uniformBlockBinding >= 0)
+            stageMask.uniformBuffers.push_back(stage->uniformBlockBinding);
+        mask.add(stageMask);
+    }
+    GlStateMask storage;
+    for (size_t binding = 0; binding < GpuProgram::storageBufferParameters(pass).size(); ++binding)
+        storage.storageBuffers.push_back(static_cast<int>(binding));
+    mask.add(storage);
+    return mask;
+}
+
+}  // namespace runtime
