@@ -5,6 +5,8 @@
 
 #include <fx/Effect.h>
 
+#include "StringLocation.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -45,17 +47,6 @@ std::string trim(std::string_view text) {
     return std::string(text.substr(first, last - first + 1));
 }
 
-// The source location of character `offset` of the concatenated string.
-SourceLoc locate(const Expr& script, size_t offset) {
-    if (script.stringPieces.empty()) return script.loc;
-    const Expr::StringPiece* piece = &script.stringPieces.front();
-    for (const Expr::StringPiece& p : script.stringPieces)
-        if (p.offset <= offset) piece = &p;
-    SourceLoc loc = piece->loc;
-    if (!piece->fromMacro) loc.column += static_cast<int>(offset - piece->offset);
-    return loc;
-}
-
 }  // namespace
 
 std::string_view scriptCommandName(ScriptCommand::Kind kind) {
@@ -78,7 +69,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
         std::string_view item(text.data() + start, end - start);
         size_t lead = item.find_first_not_of(" \t\r\n");
         if (lead != std::string_view::npos) {
-            SourceLoc loc = locate(script, start + lead);
+            SourceLoc loc = detail::stringLocation(script, start + lead);
             size_t equals = item.find('=');
             std::string name = trim(item.substr(0, equals));
             std::string value =
