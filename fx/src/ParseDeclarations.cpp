@@ -252,6 +252,7 @@ void Parser::parseDeclaration(bool inBuffer) {
             } else {
                 parameter.initializer = parseExpr();
                 mStates.normalizeCompileShader(*parameter.initializer);
+                checkStreamOutput(*parameter.initializer);
             }
         }
         if (mEffect.findParameter(parameter.name))

@@ -2,6 +2,7 @@
 #include "Parser.h"
 
 #include "ConstantFolding.h"
+#include "StreamOutDeclaration.h"
 
 #include <cmath>
 
@@ -84,6 +85,12 @@ Pass Parser::parsePass(bool d3d10) {
     return pass;
 }
 
+void Parser::checkStreamOutput(const Expr& e) {
+    if (e.kind != Expr::Kind::Call || e.text != "ConstructGSWithSO") return;
+    validateConstructGSWithSO(e, [this](DiagId id, const SourceLoc& loc,
+                                        const std::vector<std::string>& args) { error(id, loc, args); });
+}
+
 void Parser::parseSetCall(Pass& pass, const Token& name) {
     advance();  // '('
     std::vector<Expr> args;
@@ -111,6 +118,10 @@ void Parser::parseSetCall(Pass& pass, const Token& name) {
         return;
     }
     Expr value = std::move(args[0]);
+    if (value.kind == Expr::Kind::Call && value.text == "ConstructGSWithSO") {
+        mStates.normalizeCompileShader(value);
+        checkStreamOutput(value);
+    }
     if (std::optional<std::string> reason = unsupportedShaderValue(value, mEffect)) {
         mRefusals.refuse(value.loc, *reason);
         return;

@@ -54,6 +54,9 @@ private:
 
     [[noreturn]] void fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
     void error(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
+    // Reports a malformed ConstructGSWithSO(shader, "declaration") in `e` (a variable's initializer or a
+    // pass's shader value); anything else passes.
+    void checkStreamOutput(const Expr& e);
     [[noreturn]] void unexpected(const std::string& expected);
     // The token, consumed. A ';' missing before a new line is reported after the line's last token
     // (MissingSemicolon) and taken as there: nothing is consumed, nothing thrown.

@@ -59,6 +59,7 @@ FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
 FX_DIAGNOSTIC(InvalidCompileExpression, Error, "invalid compile expression: {0}")
+FX_DIAGNOSTIC(InvalidStreamOutDeclaration, Error, "invalid stream-output declaration entry '{0}': {1}")
 FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
 // glslang's own HLSL error and warning text.
 FX_DIAGNOSTIC(HlslError, Error, "{0}")

@@ -1,0 +1,37 @@
+// StreamOutDeclaration: D3D10's stream-output declaration, the string of
+// `ConstructGSWithSO(CompileShader(gs_4_0, GS()), "POSITION.xyz; NORMAL.xyz; TIMER.x")`, read into the
+// elements a stream-output buffer holds, as D3D10_SO_DECLARATION_ENTRY lists them: per entry
+// `[slot:]SEMANTIC[index][.mask]` or `[slot:]$SKIP[.mask]`, entries separated by ';'. A malformed entry
+// is a located error at its characters, as fxc refused it. Private to fx.
+#pragma once
+
+#include <fx/Diagnostics.h>
+#include <fx/Effect.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace fx::detail {
+
+struct StreamOutElement {
+    int slot = 0;            // the output buffer (D3D10: 0..3)
+    std::string semantic;    // "$SKIP" for a gap of componentCount components
+    int semanticIndex = 0;   // TEXCOORD1 -> 1
+    int startComponent = 0;  // .yz -> 1
+    int componentCount = 4;  // .yz -> 2; no mask: all four
+    SourceLoc loc;
+};
+
+using ReportStreamOutError = std::function<void(DiagId, const SourceLoc&, const std::vector<std::string>&)>;
+
+// The elements of the string literal `declaration`; reports each malformed entry and leaves it out.
+std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
+                                                        const ReportStreamOutError& error);
+
+// Checks a `ConstructGSWithSO(shader, "declaration")` call, or FX11's
+// `ConstructGSWithSO(shader, "stream0", "stream1", "stream2", "stream3", rasterizedStream)` (a stream may
+// be NULL): its form and every declaration string.
+void validateConstructGSWithSO(const Expr& call, const ReportStreamOutError& error);
+
+}  // namespace fx::detail
