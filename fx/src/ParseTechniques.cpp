@@ -87,8 +87,10 @@ Pass Parser::parsePass(bool d3d10) {
 
 void Parser::checkStreamOutput(const Expr& e) {
     if (e.kind != Expr::Kind::Call || e.text != "ConstructGSWithSO") return;
-    validateConstructGSWithSO(e, [this](DiagId id, const SourceLoc& loc,
-                                        const std::vector<std::string>& args) { error(id, loc, args); });
+    validateConstructGSWithSO(e, mEffect,
+                              [this](DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+                                  error(id, loc, args);
+                              });
 }
 
 void Parser::parseSetCall(Pass& pass, const Token& name) {

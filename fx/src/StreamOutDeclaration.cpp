@@ -1,7 +1,12 @@
 // StreamOutDeclaration: see StreamOutDeclaration.h.
 #include "StreamOutDeclaration.h"
 
+#include "CaseFolding.h"
+#include "SemanticTables.h"
 #include "StringLocation.h"
+
+#include <map>
+#include <optional>
 
 #include <cctype>
 #include <string_view>
@@ -33,6 +38,55 @@ bool isBlank(char c) {
     return std::isspace(static_cast<unsigned char>(c)) != 0;
 }
 
+using OutputSignature = std::map<std::pair<std::string, int>, int>;  // (SEMANTIC, index) -> components
+
+// Adds an output with `semantic` of `type`; false where the output is not a plain scalar or vector (a
+// nested struct, an array, a matrix), whose signature this check does not follow.
+bool addOutput(const Effect& effect, const TypeDesc& type, const std::string& semantic,
+               OutputSignature& out) {
+    if (type.base == BaseType::Struct) {
+        const StructDecl* decl = effect.findStruct(type.structName);
+        if (!decl || !type.arrayDims.empty()) return false;
+        for (const StructMember& m : decl->members)
+            if (!addOutput(effect, m.type, m.semantic, out)) return false;
+        return true;
+    }
+    if (semantic.empty()) return true;
+    if (!type.arrayDims.empty() || type.shape == Shape::Matrix) return false;
+    out[splitSemantic(upperCase(semantic))] = type.shape == Shape::Vector ? type.cols : 1;
+    return true;
+}
+
+// The outputs the shader of `ConstructGSWithSO`'s first argument writes: a geometry shader's stream
+// element, or a vertex shader's return value and out parameters. Nothing where the function is not one
+// definition this check can read.
+std::optional<OutputSignature> outputSignature(const Expr& shader, const Effect& effect, std::string& name) {
+    const Expr* compiled = &shader;
+    if (shader.kind == Expr::Kind::Identifier) {
+        const Parameter* variable = effect.findParameter(shader.text);
+        if (!variable || !variable->initializer) return std::nullopt;
+        compiled = &*variable->initializer;
+    }
+    if (compiled->kind != Expr::Kind::Compile) return std::nullopt;
+    std::vector<const FunctionDecl*> overloads = effect.findFunctions(compiled->text);
+    if (overloads.size() != 1 || !overloads[0]->hasBody) return std::nullopt;
+    const FunctionDecl& fn = *overloads[0];
+    name = fn.name;
+    OutputSignature out;
+    bool stream = false;
+    for (const FunctionParam& p : fn.params) {
+        if (p.stream.empty()) continue;
+        stream = true;
+        if (!addOutput(effect, p.type, p.semantic, out)) return std::nullopt;
+    }
+    if (stream) return out;
+    if (!addOutput(effect, fn.returnType, fn.returnSemantic, out)) return std::nullopt;
+    for (const FunctionParam& p : fn.params)
+        if (p.direction != FunctionParam::Direction::In && !addOutput(effect, p.type, p.semantic, out))
+            return std::nullopt;
+    return out;
+}
+
 }  // namespace
 
 std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
@@ -50,6 +104,7 @@ std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
         if (first == last) continue;  // "a; b;" ends in an empty entry, which D3DX took
         const std::string entry = text.substr(first, last - first);
         StreamOutElement element;
+        element.text = entry;
         element.loc = stringLocation(declaration, first);
         auto fail = [&](const std::string& why) {
             error(DiagId::InvalidStreamOutDeclaration, element.loc, {entry, why});
@@ -97,7 +152,7 @@ std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
     return elements;
 }
 
-void validateConstructGSWithSO(const Expr& call, const ReportStreamOutError& error) {
+void validateConstructGSWithSO(const Expr& call, const Effect& effect, const ReportStreamOutError& error) {
     auto isNull = [](const Expr& e) {
         return (e.kind == Expr::Kind::Identifier && e.text == "NULL") ||
                (e.kind == Expr::Kind::Number && e.number == 0);
@@ -115,8 +170,25 @@ void validateConstructGSWithSO(const Expr& call, const ReportStreamOutError& err
              "\"stream1\", \"stream2\", \"stream3\", rasterizedStream)"});
         return;
     }
-    for (size_t i = 1; i < call.args.size() && i < 5; ++i)
-        if (call.args[i].kind == Expr::Kind::String) parseStreamOutDeclaration(call.args[i], error);
+    std::string function;
+    const std::optional<OutputSignature> outputs = outputSignature(call.args[0], effect, function);
+    for (size_t i = 1; i < call.args.size() && i < 5; ++i) {
+        if (call.args[i].kind != Expr::Kind::String) continue;
+        for (const StreamOutElement& e : parseStreamOutDeclaration(call.args[i], error)) {
+            if (!outputs || e.semantic == "$SKIP") continue;
+            const std::string semantic =
+                e.semantic + (e.semanticIndex ? std::to_string(e.semanticIndex) : "");
+            auto found = outputs->find({upperCase(e.semantic), e.semanticIndex});
+            if (found == outputs->end())
+                error(DiagId::InvalidStreamOutDeclaration, e.loc,
+                      {e.text, "'" + function + "' writes no output '" + semantic + "'"});
+            else if (e.startComponent + e.componentCount > found->second)
+                error(DiagId::InvalidStreamOutDeclaration, e.loc,
+                      {e.text, "output '" + semantic + "' of '" + function + "' has " +
+                                   std::to_string(found->second) + " component" +
+                                   (found->second == 1 ? "" : "s")});
+        }
+    }
 }
 
 }  // namespace fx::detail

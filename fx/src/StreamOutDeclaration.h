@@ -20,6 +20,7 @@ struct StreamOutElement {
     int semanticIndex = 0;   // TEXCOORD1 -> 1
     int startComponent = 0;  // .yz -> 1
     int componentCount = 4;  // .yz -> 2; no mask: all four
+    std::string text;        // the entry as written, for messages
     SourceLoc loc;
 };
 
@@ -31,7 +32,9 @@ std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
 
 // Checks a `ConstructGSWithSO(shader, "declaration")` call, or FX11's
 // `ConstructGSWithSO(shader, "stream0", "stream1", "stream2", "stream3", rasterizedStream)` (a stream may
-// be NULL): its form and every declaration string.
-void validateConstructGSWithSO(const Expr& call, const ReportStreamOutError& error);
+// be NULL): its form, every declaration string, and, where the shader's function and its outputs are known
+// (`effect` holds the declarations parsed so far), that each entry names an output of the shader and masks
+// components it has, as D3D10 matched the declaration against the output signature.
+void validateConstructGSWithSO(const Expr& call, const Effect& effect, const ReportStreamOutError& error);
 
 }  // namespace fx::detail

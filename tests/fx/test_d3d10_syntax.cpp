@@ -131,12 +131,13 @@ fxgroup B { technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS()));
 }
 
 TEST(D3d10Syntax, StreamOutDeclarationsAreReadEntryByEntryAndAMalformedEntryIsLocated) {
-    // Every form D3D10's and FX11's declarations take: slots, semantic indices, partial masks, gaps.
+    // Every form D3D10's and FX11's declarations take: slots, semantic indices, partial masks, gaps, any
+    // case; each entry names an output of VS (SV_Position, a float4, and UV_COORDS, a float2).
     DiagnosticList good;
     auto effect = parseEffectSource(withTechniques(R"(
-GeometryShader A = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "POSITION.xyz; NORMAL.xyz; TIMER.x");
-GeometryShader B = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "0:SV_POSITION; 1:TEXCOORD1.yz; $SKIP.xy; COLOR.rgba;");
-GeometryShader C = ConstructGSWithSO(CompileShader(vs_5_0, VS()), "POSITION.xyzw", NULL, "2:TEXCOORD0.x", NULL, 0);
+GeometryShader A = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw; UV_COORDS.xy");
+GeometryShader B = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "0:SV_Position; 1:UV_COORDS.y; $SKIP.xy; sv_position.rgba;");
+GeometryShader C = ConstructGSWithSO(CompileShader(vs_5_0, VS()), "SV_POSITION.xyzw", NULL, "2:UV_COORDS0.x", NULL, 0);
 )"),
                                     "d3d10.fx", ParseOptions{}, good);
     ASSERT_TRUE(effect) << good.str();
@@ -145,32 +146,31 @@ GeometryShader C = ConstructGSWithSO(CompileShader(vs_5_0, VS()), "POSITION.xyzw
 
     DiagnosticList bad;
     parseEffectSource(withTechniques(R"(
-GeometryShader A = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "POSITION.xyz; NORMAL.xz; TIMER.x");
-GeometryShader B = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "7:POSITION; .xy; TEX-COORD");
+GeometryShader A = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyz; UV_COORDS.xz; TIMER.x");
+GeometryShader B = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "7:POSITION; .xy; TEX-COORD; UV_COORDS1; UV_COORDS.xyz");
 GeometryShader C = ConstructGSWithSO(CompileShader(vs_4_0, VS()));
 )"),
                       "d3d10.fx", ParseOptions{}, bad);
     std::vector<std::string> errors;
     for (const Diagnostic& d : bad.items())
         if (d.severity == Severity::Error) errors.push_back(str(d));
-    ASSERT_EQ(errors.size(), 5u) << bad.str();
+    ASSERT_EQ(errors.size(), 8u) << bad.str();
     // Each entry's error stands at the entry's first character inside the string.
-    EXPECT_EQ(errors[0],
-              "d3d10.fx:17:82: error: invalid stream-output declaration entry 'NORMAL.xz': 'xz' is not "
-              "a component mask (contiguous components of xyzw)");
-    EXPECT_EQ(errors[1],
-              "d3d10.fx:18:68: error: invalid stream-output declaration entry '7:POSITION': the "
-              "output slot is not one of 0..3");
-    EXPECT_EQ(errors[2],
-              "d3d10.fx:18:80: error: invalid stream-output declaration entry '.xy': it names no "
-              "semantic");
-    EXPECT_EQ(errors[3],
-              "d3d10.fx:18:85: error: invalid stream-output declaration entry 'TEX-COORD': "
-              "'TEX-COORD' is not a semantic name with an optional index");
-    EXPECT_NE(errors[4].find("d3d10.fx:19:20: error: invalid compile expression: expected "
+    const std::string at = "error: invalid stream-output declaration entry ";
+    EXPECT_EQ(errors[0], "d3d10.fx:17:85: " + at +
+                             "'UV_COORDS.xz': 'xz' is not a component mask (contiguous components of xyzw)");
+    EXPECT_EQ(errors[1], "d3d10.fx:17:99: " + at + "'TIMER.x': 'VS' writes no output 'TIMER'");
+    EXPECT_EQ(errors[2], "d3d10.fx:18:68: " + at + "'7:POSITION': the output slot is not one of 0..3");
+    EXPECT_EQ(errors[3], "d3d10.fx:18:80: " + at + "'.xy': it names no semantic");
+    EXPECT_EQ(errors[4], "d3d10.fx:18:85: " + at +
+                             "'TEX-COORD': 'TEX-COORD' is not a semantic name with an optional index");
+    EXPECT_EQ(errors[5], "d3d10.fx:18:96: " + at + "'UV_COORDS1': 'VS' writes no output 'UV_COORDS1'");
+    EXPECT_EQ(errors[6],
+              "d3d10.fx:18:108: " + at + "'UV_COORDS.xyz': output 'UV_COORDS' of 'VS' has 2 components");
+    EXPECT_NE(errors[7].find("d3d10.fx:19:20: error: invalid compile expression: expected "
                              "ConstructGSWithSO(shader, \"declaration\")"),
               std::string::npos)
-        << errors[4];
+        << errors[7];
 }
 
 TEST(D3d10Syntax, TechniquesGlCannotRunAreLeftOutWithALocatedWarning) {
