@@ -40,10 +40,11 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
         };
         switch (c.kind) {
             case ScriptCommand::Kind::Pass: {
-                bool found = false;
-                if (technique)
-                    for (const Pass& p : technique->passes) found |= scriptNameMatches(c.value, p.name);
-                if (!found)
+                // The first pass whose name matches.
+                int& pass = commands[index].pass;
+                for (size_t k = 0; technique && k < technique->passes.size() && pass < 0; ++k)
+                    if (scriptNameMatches(c.value, technique->passes[k].name)) pass = static_cast<int>(k);
+                if (pass < 0)
                     error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
                 break;
             }
@@ -101,7 +102,8 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             case ScriptCommand::Kind::LoopByCount: {
                 ++loops;
                 // A literal count is checked here, once, rather than failing every frame in the runtime
-                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
+                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values against the same
+                // limit, CompiledEffect::maxScriptLoopCount).
                 const char* text = c.value.c_str();
                 char* end = nullptr;
                 const double count = std::strtod(text, &end);

@@ -276,7 +276,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, recorder, dryRunDiagnostics);
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, recorder, dryRunDiagnostics);
         std::vector<int> outputs;
         for (const std::string& name : options.outputTargets)
             if (const std::optional<size_t> index = findParameter(name))
@@ -299,7 +299,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran = ScriptInterpreter::run(*technique, executor, diagnostics);
+    const bool ran =
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();
