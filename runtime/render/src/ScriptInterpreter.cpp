@@ -2,10 +2,8 @@
 
 #include "HostScene.h"
 
+#include <fx/LiteralNumbers.h>
 #include <fx/RenderStates.h>
-
-#include <cstdlib>
-#include <sstream>
 
 namespace runtime {
 
@@ -13,20 +11,13 @@ namespace {
 
 using Command = fx::ScriptCommand;
 
-// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1").
+// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1"; fx/LiteralNumbers.h,
+// as the compiler checked it).
 std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget& target) {
     if (const fx::Value* value = target.parameter(text)) return *value;
-    std::vector<float> numbers;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ',')) {
-        char* end = nullptr;
-        const float number = std::strtof(item.c_str(), &end);
-        if (end == item.c_str()) return std::nullopt;
-        numbers.push_back(number);
-    }
-    if (numbers.empty()) return std::nullopt;
-    return numbers.size() == 1 ? fx::Value::scalar(numbers[0]) : fx::Value::vector(numbers);
+    const std::optional<std::vector<float>> numbers = fx::parseLiteralNumbers(text);
+    if (!numbers || numbers->empty()) return std::nullopt;
+    return numbers->size() == 1 ? fx::Value::scalar(numbers->front()) : fx::Value::vector(*numbers);
 }
 
 // The pass a Pass= names, by the index the compiler resolved.
