@@ -29,6 +29,7 @@ public:
         : mEffect(*effect), mOptions(options), mDiagnostics(diagnostics) {
         mOut = std::make_unique<CompiledEffect>();
         mOut->effect = std::move(effect);
+        mOut->maxScriptLoopCount = options.maxScriptLoopCount;
     }
 
     std::unique_ptr<CompiledEffect> run();

@@ -4,9 +4,9 @@
 #include "Compiler.h"
 #include "CaseFolding.h"
 
+#include <fx/LiteralNumbers.h>
+
 #include <cmath>
-#include <cstdlib>
-#include <sstream>
 
 namespace fx::detail {
 
@@ -40,10 +40,11 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
         };
         switch (c.kind) {
             case ScriptCommand::Kind::Pass: {
-                bool found = false;
-                if (technique)
-                    for (const Pass& p : technique->passes) found |= scriptNameMatches(c.value, p.name);
-                if (!found)
+                // The first pass whose name matches.
+                int& pass = commands[index].pass;
+                for (size_t k = 0; technique && k < technique->passes.size() && pass < 0; ++k)
+                    if (scriptNameMatches(c.value, technique->passes[k].name)) pass = static_cast<int>(k);
+                if (pass < 0)
                     error(DiagId::ScriptUnknownPass, c.loc, {c.value, technique ? technique->name : ""});
                 break;
             }
@@ -51,13 +52,8 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             case ScriptCommand::Kind::ClearSetDepth:
             case ScriptCommand::Kind::ClearSetStencil: {
                 // A parameter's name or a literal ("0.5", "1,0,0,1"), as the runtime reads it.
-                bool literal = true;
-                std::stringstream items(c.value);
-                for (std::string item; std::getline(items, item, ',');) {
-                    char* end = nullptr;
-                    std::strtod(item.c_str(), &end);
-                    literal = literal && end != item.c_str();
-                }
+                const std::optional<std::vector<float>> numbers = parseLiteralNumbers(c.value);
+                const bool literal = numbers && !numbers->empty();
                 if (!mIndex.count(c.value) && !literal)
                     ignore("'" + c.value +
                            "' is neither a parameter nor a number; the clear value stays as it was");
@@ -101,11 +97,11 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             case ScriptCommand::Kind::LoopByCount: {
                 ++loops;
                 // A literal count is checked here, once, rather than failing every frame in the runtime
-                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values, with the same limit).
-                const char* text = c.value.c_str();
-                char* end = nullptr;
-                const double count = std::strtod(text, &end);
-                if (end != text && *end == '\0' && !mIndex.count(c.value)) {
+                // (runtime/render/src/ScriptInterpreter.cpp checks parameter values against the same
+                // limit, CompiledEffect::maxScriptLoopCount).
+                const std::optional<std::vector<float>> numbers = parseLiteralNumbers(c.value);
+                if (numbers && numbers->size() == 1 && !mIndex.count(c.value)) {
+                    const double count = numbers->front();
                     if (!(count >= 0) || std::floor(count) != count)
                         error(DiagId::InvalidScriptCommand, c.loc,
                               {"LoopByCount", "'" + c.value + "' is not a non-negative whole count"});

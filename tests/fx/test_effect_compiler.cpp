@@ -454,6 +454,31 @@ TEST(EffectCompiler, PassAnnotationsAreResolvedPerPass) {
     }
 }
 
+// Pass= names a pass without regard to case, the first of equal names (scriptNameMatches); the compiler
+// resolves it to the pass's index, which is all the runtime reads.
+TEST(EffectCompiler, ScriptPassesAreResolvedToIndices) {
+    const std::string source = std::string(R"(float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "Pass=second; Pass=P0; Pass=Twice;"; >
+{
+    pass p0 { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+    pass Second { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+    pass twice { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+    pass twice { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+)");
+    DiagnosticList diags;
+    auto effect = parseEffectSource(source, "passes.fx", ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    auto compiled = compileEffect(effect, CompileOptions{}, diags);
+    ASSERT_TRUE(compiled) << diags.str();
+    const std::vector<ScriptCommand>& script = compiled->techniques[0].script;
+    ASSERT_EQ(script.size(), 3u);
+    EXPECT_EQ(script[0].pass, 1);
+    EXPECT_EQ(script[1].pass, 0);
+    EXPECT_EQ(script[2].pass, 2);
+}
+
 TEST(EffectCompiler, AnUnknownLeaveOutConditionIsALocatedError) {
     DiagnosticList diags;
     auto effect = parseEffectSource(R"(

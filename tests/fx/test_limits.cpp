@@ -13,6 +13,7 @@ namespace {
 
 struct Result {
     bool compiled = false;
+    int maxScriptLoopCount = 0;  // the compiled effect's, which the runtime's LoopByCount obeys
     DiagnosticList diagnostics;
 };
 
@@ -20,7 +21,11 @@ Result compile(const std::string& source, const CompileOptions& options) {
     Result result;
     ParseOptions parseOptions;
     auto effect = parseEffectSource(source, "limits.fx", parseOptions, result.diagnostics);
-    if (effect) result.compiled = compileEffect(effect, options, result.diagnostics) != nullptr;
+    if (!effect) return result;
+    if (auto compiled = compileEffect(effect, options, result.diagnostics)) {
+        result.compiled = true;
+        result.maxScriptLoopCount = compiled->maxScriptLoopCount;
+    }
     return result;
 }
 
@@ -72,12 +77,14 @@ TEST(Limits, LiteralLoopCountIsCheckedAtCompileTime) {
     CompileOptions options;
     EXPECT_EQ(options.maxScriptLoopCount, 1024);
     EXPECT_TRUE(compile(withLoop(1024), options).compiled);
+    EXPECT_EQ(compile(withLoop(1024), options).maxScriptLoopCount, 1024);
     Result tooMany = compile(withLoop(1025), options);
     EXPECT_FALSE(tooMany.compiled);
     EXPECT_TRUE(reports(tooMany, DiagId::InvalidScriptCommand, 3, 32));
 
     options.maxScriptLoopCount = 8;
     EXPECT_TRUE(compile(withLoop(8), options).compiled);
+    EXPECT_EQ(compile(withLoop(8), options).maxScriptLoopCount, 8);  // parameter counts: the same limit
     EXPECT_TRUE(reports(compile(withLoop(9), options), DiagId::InvalidScriptCommand, 3, 32));
 }
 

@@ -264,6 +264,9 @@ struct CompiledEffect {
     std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser or the compiler
     bool hasGlobalScript = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
+    // The most iterations one LoopByCount may run (CompileOptions::maxScriptLoopCount): the compiler
+    // checks literal counts, the runtime a parameter's value.
+    int maxScriptLoopCount = 1024;
 
     // By name; a technique in an fxgroup also by "group.name".
     const CompiledTechnique* findTechnique(const std::string& name) const;

@@ -25,7 +25,8 @@ struct CompileOptions {
     std::string technique;            // compile only this technique ("" = all)
     CompileCache* cache = nullptr;    // optional; shared across compiles (hot reload)
     int maxRenderTargetSize = 16384;  // largest render-target side (Dimensions, width/height) accepted
-    int maxScriptLoopCount = 1024;    // largest literal LoopByCount (the runtime checks parameter values)
+    int maxScriptLoopCount =
+        1024;  // largest LoopByCount: literal counts here, parameter values in the runtime
     CompileIsolation isolation = CompileIsolation::Workers;
     CompileWorkers* workers = nullptr;  // the pool to use; nullptr = CompileWorkers::shared()
 };

@@ -1,7 +1,8 @@
 // PreshaderProgram: an effect expression compiled for the host, the way D3DX compiles the expressions of
 // render states and shader arguments into preshaders. Parameters are slots (their indices in the effect),
-// operators, intrinsics, swizzles and types are resolved at compile time; running a program walks a flat
-// instruction list over the slots' current values, with no names and no syntax tree.
+// operators are opcodes and constructor types parsed at compile time; running a program walks a flat
+// instruction list over the slots' current values, with no parameter names and no syntax tree (intrinsics
+// and swizzles are found by their text once per instruction, never per component).
 //
 // Compiled from an Expr by fx/Preshader.h (compilePreshader); run by the runtime before a draw when one of
 // its input slots changed (inputs()).
@@ -25,8 +26,8 @@ public:
             Constant,   // push constants[operand]
             Load,       // push slots[operand]
             Fail,       // push an error (errors[operand]): an unknown name, a non-value
-            Unary,      // pop 1; `text` is the operator ("-", "!", "~", "+")
-            Binary,     // pop 2; `text` is the operator
+            Unary,      // pop 1; `operation` is the operator ("-", "!", "~", "+")
+            Binary,     // pop 2; `operation` is the operator
             Select,     // pop 3: condition, then, else (HLSL evaluates both; a scalar condition picks one)
             Construct,  // pop `count`: a `type` from their components (float4(...))
             Intrinsic,  // pop `count`: the intrinsic `text` (mul, normalize, ...)
@@ -35,12 +36,40 @@ public:
             Index,      // pop 2: base[index]
             Convert,    // pop 1: to `type` (casts, the program's target type)
         };
+        // Unary and Binary: the operator, resolved from its spelling when the program is compiled, so that
+        // running it compares no strings. Unknown: a spelling the host cannot evaluate (binary: an error
+        // at run time, naming `text`; unary: the value unchanged).
+        enum class Operator : uint8_t {
+            Add,
+            Subtract,
+            Multiply,
+            Divide,
+            Modulo,
+            Less,
+            Greater,
+            LessEqual,
+            GreaterEqual,
+            Equal,
+            NotEqual,
+            LogicalAnd,
+            LogicalOr,
+            BitAnd,
+            BitOr,
+            BitXor,
+            ShiftLeft,
+            ShiftRight,
+            Negate,      // unary -
+            Not,         // unary !
+            Complement,  // unary ~
+            Unknown,
+        };
         Op op = Op::Constant;
-        uint32_t operand = 0;  // Constant, Load, Fail
-        uint32_t count = 0;    // Construct, Intrinsic, InitList
-        std::string text;      // operator, intrinsic or member; never a parameter's name
-        TypeDesc type;         // Construct, Convert
-        SourceLoc loc;         // for the error it may report
+        Operator operation = Operator::Unknown;  // Unary, Binary
+        uint32_t operand = 0;                    // Constant, Load, Fail
+        uint32_t count = 0;                      // Construct, Intrinsic, InitList
+        std::string text;  // operator (for messages), intrinsic or member; never a parameter's name
+        TypeDesc type;     // Construct, Convert
+        SourceLoc loc;     // for the error it may report
     };
     struct Error {
         DiagId id;

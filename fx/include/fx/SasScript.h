@@ -38,7 +38,10 @@ struct ScriptCommand {
     enum class DrawWhat { Geometry, Buffer };
 
     Kind kind;
-    int index = 0;      // RenderColorTarget0..3
+    int index = 0;  // RenderColorTarget0..3
+    // Pass=: the index, in its technique's passes, of the pass the name matches (scriptNameMatches), which
+    // the compiler resolves; the runtime never looks a pass up by name. -1 in a script that names none.
+    int pass = -1;
     std::string value;  // the text after '=', trimmed ("" if empty); RenderPort: the light's name only
     int cascade =
         -1;         // RenderPort=light0.cascadeK: K (a sub-view of the light, runtime/CascadedShadowMaps.h)

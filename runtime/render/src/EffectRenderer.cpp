@@ -6,6 +6,8 @@
 // - FrameExecutor     the frame on GL, following the plan
 #include <runtime/EffectRenderer.h>
 
+#include <fx/LiteralNumbers.h>
+
 #include "EffectResources.h"
 #include "FrameExecutor.h"
 #include "PassUse.h"
@@ -26,7 +28,6 @@
 #include <cctype>
 #include <cmath>
 #include <set>
-#include <sstream>
 
 namespace runtime {
 
@@ -105,30 +106,15 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
                             " cannot be set from the command line"});
         return false;
     }
-    // Numbers separated by commas or spaces, optionally in braces; true/false for bools.
-    std::string cleaned;
-    for (char c : text) cleaned += (c == '{' || c == '}' || c == ',') ? ' ' : c;
-    std::istringstream stream(cleaned);
-    std::vector<float> numbers;
-    std::string word;
-    while (stream >> word) {
-        std::string lower = word;
-        std::transform(lower.begin(), lower.end(), lower.begin(),
-                       [](unsigned char c) { return std::tolower(c); });
-        if (lower == "true" || lower == "false") {
-            numbers.push_back(lower == "true" ? 1.0f : 0.0f);
-            continue;
-        }
-        char* end = nullptr;
-        const float number = std::strtof(word.c_str(), &end);
-        if (end != word.c_str() + word.size() || !std::isfinite(number)) {
-            diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
-                               {"'" + std::string(text) + "' is not a value of type " +
-                                parameter.type.hlslName() + " for parameter '" + parameter.name + "'"});
-            return false;
-        }
-        numbers.push_back(number);
+    // The literal grammar the scripts' values share (fx/LiteralNumbers.h).
+    const std::optional<std::vector<float>> parsed = fx::parseLiteralNumbers(text);
+    if (!parsed) {
+        diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
+                           {"'" + std::string(text) + "' is not a value of type " +
+                            parameter.type.hlslName() + " for parameter '" + parameter.name + "'"});
+        return false;
     }
+    std::vector<float> numbers = *parsed;
     const size_t expected = static_cast<size_t>(parameter.type.componentCount());
     if (numbers.size() == 1 && expected > 1) numbers.assign(expected, numbers[0]);  // HLSL scalar broadcast
     if (numbers.size() != expected) {
@@ -276,7 +262,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, recorder, dryRunDiagnostics);
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, recorder, dryRunDiagnostics);
         std::vector<int> outputs;
         for (const std::string& name : options.outputTargets)
             if (const std::optional<size_t> index = findParameter(name))
@@ -299,7 +285,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran = ScriptInterpreter::run(*technique, executor, diagnostics);
+    const bool ran =
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

@@ -2,10 +2,8 @@
 
 #include "HostScene.h"
 
+#include <fx/LiteralNumbers.h>
 #include <fx/RenderStates.h>
-
-#include <cstdlib>
-#include <sstream>
 
 namespace runtime {
 
@@ -13,26 +11,20 @@ namespace {
 
 using Command = fx::ScriptCommand;
 
-// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1").
+// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1"; fx/LiteralNumbers.h,
+// as the compiler checked it).
 std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget& target) {
     if (const fx::Value* value = target.parameter(text)) return *value;
-    std::vector<float> numbers;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ',')) {
-        char* end = nullptr;
-        const float number = std::strtof(item.c_str(), &end);
-        if (end == item.c_str()) return std::nullopt;
-        numbers.push_back(number);
-    }
-    if (numbers.empty()) return std::nullopt;
-    return numbers.size() == 1 ? fx::Value::scalar(numbers[0]) : fx::Value::vector(numbers);
+    const std::optional<std::vector<float>> numbers = fx::parseLiteralNumbers(text);
+    if (!numbers || numbers->empty()) return std::nullopt;
+    return numbers->size() == 1 ? fx::Value::scalar(numbers->front()) : fx::Value::vector(*numbers);
 }
 
-const fx::CompiledPass* findPass(const fx::CompiledTechnique& technique, const std::string& name) {
-    for (const fx::CompiledPass& pass : technique.passes)
-        if (fx::scriptNameMatches(name, pass.name)) return &pass;
-    return nullptr;
+// The pass a Pass= names, by the index the compiler resolved.
+const fx::CompiledPass* passOf(const fx::CompiledTechnique& technique, const Command& command) {
+    return command.pass >= 0 && static_cast<size_t>(command.pass) < technique.passes.size()
+               ? &technique.passes[static_cast<size_t>(command.pass)]
+               : nullptr;
 }
 
 }  // namespace
@@ -92,7 +84,7 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
                 frameBound)
                 return true;
             if (command.kind == Command::Kind::Pass && depth == 0)
-                if (const fx::CompiledPass* pass = findPass(technique, command.value);
+                if (const fx::CompiledPass* pass = passOf(technique, command);
                     pass && pass->hasScript && self(pass->script, self, 1))
                     return true;
         }
@@ -104,7 +96,7 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
     return false;
 }
 
-bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, ScriptTarget& target,
+bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopCount, ScriptTarget& target,
                             fx::DiagnosticSink& diagnostics) {
     if (!clearsFrame(technique)) {
         // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
@@ -117,21 +109,24 @@ bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, ScriptTarget
              {Command::ClearWhat::Color, Command::ClearWhat::Depth, Command::ClearWhat::Stencil})
             target.clear(what);
     }
-    if (technique.hasScript) return runCommands(technique.script, technique, nullptr, target, diagnostics);
+    if (technique.hasScript)
+        return runCommands(technique.script, technique, nullptr, maxLoopCount, target, diagnostics);
     // No script: every pass in order, as D3DX would run them.
-    for (const fx::CompiledPass& pass : technique.passes) {
+    for (size_t index = 0; index < technique.passes.size(); ++index) {
+        const fx::CompiledPass& pass = technique.passes[index];
         Command passCommand;
         passCommand.kind = Command::Kind::Pass;
         passCommand.value = pass.name;
+        passCommand.pass = static_cast<int>(index);
         passCommand.loc = pass.loc;
-        if (!runCommands({passCommand}, technique, nullptr, target, diagnostics)) return false;
+        if (!runCommands({passCommand}, technique, nullptr, maxLoopCount, target, diagnostics)) return false;
     }
     return true;
 }
 
 bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                                     const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                                    ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
+                                    int maxLoopCount, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     struct Loop {
         size_t body;    // index of the first command inside the loop
         int remaining;  // iterations still to run after this one
@@ -144,7 +139,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
         const Command& command = commands[i];
         switch (command.kind) {
             case Command::Kind::Pass: {
-                const fx::CompiledPass* next = findPass(technique, command.value);
+                const fx::CompiledPass* next = passOf(technique, command);
                 if (!next) {
                     diagnostics.report(fx::DiagId::ScriptUnknownPass, command.loc,
                                        {command.value, technique.name});
@@ -152,7 +147,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 }
                 target.beginPass(*next);
                 if (next->hasScript) {
-                    if (!runCommands(next->script, technique, next, target, diagnostics)) return false;
+                    if (!runCommands(next->script, technique, next, maxLoopCount, target, diagnostics))
+                        return false;
                 } else {
                     target.draw(*next, Command::DrawWhat::Geometry);
                 }
@@ -202,11 +198,11 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                         {"LoopByCount", "'" + command.value + "' is not a non-negative count"});
                     return false;
                 }
-                if (count > kMaxLoopCount) {
+                if (count > maxLoopCount) {
                     diagnostics.report(
                         fx::DiagId::InvalidScriptCommand, command.loc,
                         {"LoopByCount", std::to_string(count) + " iterations exceed the limit of " +
-                                            std::to_string(kMaxLoopCount)});
+                                            std::to_string(maxLoopCount)});
                     return false;
                 }
                 if (count == 0) {  // skip to the matching LoopEnd

@@ -36,9 +36,6 @@ public:
 
 class ScriptInterpreter {
 public:
-    // The most iterations one LoopByCount may run; more is reported and clamped, never a hang.
-    static constexpr int kMaxLoopCount = 1024;
-
     // The technique a frame runs: `requested` if given, else the STANDARDSGLOBAL script's Technique=
     // (with Cond?A:B selectors), else the first. nullptr (with UnknownTechnique) if it does not exist.
     static const fx::CompiledTechnique* selectTechnique(const fx::CompiledEffect& effect,
@@ -48,8 +45,10 @@ public:
 
     // Runs the technique's script (or, without one, every pass in order), each pass's script (or, without
     // one, Draw=Geometry). Before a technique whose scripts never clear the frame's colour target, the host
-    // clears the frame (HostScene.h). Returns false if the script could not run to its end.
-    static bool run(const fx::CompiledTechnique& technique, ScriptTarget& target,
+    // clears the frame (HostScene.h). A LoopByCount over `maxLoopCount` iterations (the effect's
+    // CompiledEffect::maxScriptLoopCount) is reported and the script stops, never a hang. Returns false if
+    // the script could not run to its end.
+    static bool run(const fx::CompiledTechnique& technique, int maxLoopCount, ScriptTarget& target,
                     fx::DiagnosticSink& diagnostics);
 
     // Whether the technique's scripts clear the frame's own colour target (a Clear=Color while
@@ -59,7 +58,7 @@ public:
 private:
     static bool runCommands(const std::vector<fx::ScriptCommand>& commands,
                             const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                            ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+                            int maxLoopCount, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
 };
 
 }  // namespace runtime
