@@ -38,6 +38,8 @@ step "bench" "$shadowfx" bench --effects effects/thesis_fxcomposer.fx \
 echo "main: bench report $(pwd)/out/bench/report.md (results.json, error_vs_time.svg, errors/*.png beside it)"
 step "γ sweep" bash -c 'python3 scripts/gamma_sweep.py --scene forest --out out/gamma > out/gamma.txt'
 echo "main: γ sweep $(pwd)/out/gamma/report.md (gamma.json, gamma.png beside it)"
-step "stress" bash -c "'$shadowfx' stress --out out/stress > out/stress.txt"
+# At CI's configuration (stress_ci_configuration in tests/CMakeLists.txt): the effects' StressExpectedFailures
+# are measured there, and a case near its criterion's edge can fall either side at another frame size.
+step "stress" bash -c "'$shadowfx' stress --width 240 --height 180 --map-size 1024 --out out/stress > out/stress.txt"
 echo "main: stress report $(pwd)/out/stress/report.md (stress.json beside it; failures also in out/stress.txt)"
 exit "$status"
