@@ -119,6 +119,43 @@ TEST(FxComposerHost, PostEffectProcessesTheSceneTheHostDrawsAtScriptExternal) {
     EXPECT_EQ(inverted.pixel(0, 0)[0], 255);
 }
 
+// The host's material lights by the mesh's normals: a plane facing a directional light is one flat colour
+// (with positions read as normals, as a lost stream binding once did, its shade would follow its pixels'
+// positions), and turning the light away from the plane darkens it.
+TEST(FxComposerHost, HostSceneShadesByTheMeshsNormals) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/post_invert.fx");
+    ASSERT_TRUE(loaded.renderer);
+    loaded.renderer->setParameter(*loaded.renderer->findParameter("Amount"), fx::Value::scalar(0.0f));
+    runtime::Scene scene;
+    runtime::SceneObject plane;
+    plane.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(40.0f, 40.0f, 8));
+    plane.color = glm::vec3(1.0f);
+    scene.objects.push_back(plane);
+    scene.camera.position = {0.0f, 6.0f, -6.0f};
+    scene.lights.push_back(runtime::Light{});  // straight down onto the plane
+
+    // The centre half of the frame, all on the plane; the brightest and darkest red there.
+    const auto redRange = [&](const runtime::FrameImage& frame) {
+        int low = 255, high = 0;
+        for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y)
+            for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
+                low = std::min<int>(low, frame.pixel(x, y)[0]);
+                high = std::max<int>(high, frame.pixel(x, y)[0]);
+            }
+        return std::pair{low, high};
+    };
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const auto [low, high] = redRange(loaded.renderer->readFrame());
+    EXPECT_LE(high - low, 1);
+    EXPECT_GE(low, 250);  // lit head-on: 0.2 + 0.8 of white
+
+    scene.lights.front().direction = glm::normalize(glm::vec3(1.0f, -0.25f, 0.0f));
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const auto [grazingLow, grazingHigh] = redRange(loaded.renderer->readFrame());
+    EXPECT_LE(grazingHigh - grazingLow, 1);
+    EXPECT_LT(grazingHigh, 150);  // 0.2 + 0.8 * 0.24 of white
+}
+
 // A DirectX SDK style effect: D3DCOLOR ints above INT_MAX, arrays sized by static const ints, skinning
 // and point-size inputs, a centroid varying, a matrix varying, vs_1_1/vs_2_0 in a shader array, and a
 // compile argument that calls the effect's own function (evaluated on the host at every frame).

@@ -101,7 +101,8 @@ void HostScenePainter::draw(const Scene& scene, const SceneObject& object, const
     gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightColor"), 1, glm::value_ptr(color));
     gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightDirection"), 1, glm::value_ptr(direction));
     gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightPosition"), 1, glm::value_ptr(position));
-    static const std::vector<fx::VertexInput> kInputs = {{"POSITION0", 0, 3}, {"NORMAL0", 1, 3}};
+    static const std::vector<fx::VertexInput> kInputs = {{"POSITION0", 0, 3, {fx::VertexStream::Position, 0}},
+                                                         {"NORMAL0", 1, 3, {fx::VertexStream::Normal, 0}}};
     mesh.draw(kInputs);
 }
 
