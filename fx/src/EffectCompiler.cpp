@@ -283,10 +283,9 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         for (CompiledPass& pass : technique.passes)
             if (blendsDualSource(pass)) declareDualSourceOutput(pass.fragment.glsl);
     assignPairUnits();
-    // An empty file, or one of helpers only; said only when nothing else is wrong with it.
-    if (mEffect.techniques.empty() && !mFailed)
-        error(DiagId::NoTechniques, SourceLoc{mEffect.path, 1, 1}, {});
-    else if (!found)
+    // A file without techniques compiles, as under fxc and D3DX: an effect pool's shared parameters,
+    // declarations for other effects. Only running it needs a technique (the runtime says so).
+    if (!found)
         error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
     if (mFailed) return nullptr;
     return std::move(mOut);

@@ -8,6 +8,25 @@
 
 namespace fx::detail {
 
+namespace {
+
+// The first identifier in `value` that names one of `earlier`: fxc evaluates an annotation alone, so a
+// value that reads another annotation of the block has nothing to read.
+const Expr* namedAnnotation(const Expr& value, const std::vector<Annotation>& earlier) {
+    if (value.kind == Expr::Kind::Identifier)
+        for (const Annotation& annotation : earlier)
+            if (annotation.name == value.text) return &value;
+    for (const Expr& argument : value.args)
+        if (const Expr* found = namedAnnotation(argument, earlier)) return found;
+    return nullptr;
+}
+
+bool isObjectType(const TypeDesc& type) {
+    return type.isTexture() || type.isBuffer() || type.isSampler() || type.isStateObject() || type.isShader();
+}
+
+}  // namespace
+
 void Parser::parseTopLevel() {
     const Token& token = peek();
     if (token.is(";")) {
@@ -115,12 +134,15 @@ void Parser::parseStruct() {
             }
         }
         bool rowMajor = member.type.rowMajor;
+        const Token& typeToken = peek();
         TypeDesc type = parseType();
         type.rowMajor = rowMajor;
+        const bool isObject = isObjectType(type);
         for (;;) {
             StructMember m = member;
             m.type = type;
             const Token& memberName = expectIdentifier("a member name");
+            if (isObject) error(DiagId::ObjectInStruct, memberName.loc, {memberName.text, typeToken.text});
             m.name = memberName.text;
             m.loc = memberName.loc;
             parseArrayDims(m.type);
@@ -281,16 +303,36 @@ std::vector<Annotation> Parser::parseAnnotations() {
     expect("<");
     while (!check(">") && !check(">=") && !check(">>")) {
         if (atEnd()) unexpected("'>' to close the annotations");
+        bool rowMajor = false;
+        while (check("row_major") || check("column_major")) rowMajor = advance().text == "row_major";
+        const Token& typeToken = peek();
         TypeDesc type = parseType();
+        type.rowMajor = rowMajor;
+        const bool isObject = isObjectType(type);
         for (;;) {
             Annotation annotation;
             annotation.type = type;
             const Token& name = expectIdentifier("an annotation name");
+            if (isObject) {
+                // Read past its initializer (a value or a state block) so that the rest of the block
+                // is still checked.
+                error(DiagId::ObjectAnnotation, name.loc, {name.text, typeToken.text});
+                for (int depth = 0; !atEnd() && !(depth == 0 && check(";"));) {
+                    if (check("{")) ++depth;
+                    if (check("}")) --depth;
+                    advance();
+                }
+                break;
+            }
             annotation.name = name.text;
             annotation.loc = name.loc;
+            for (const Annotation& earlier : annotations)
+                if (earlier.name == annotation.name) error(DiagId::Redefinition, name.loc, {name.text});
             parseArrayDims(annotation.type);
             expect("=");
             annotation.value = parseExpr(/*inAnnotation*/ true);
+            if (const Expr* named = namedAnnotation(annotation.value, annotations))
+                error(DiagId::AnnotationNamesAnnotation, named->loc, {annotation.name, named->text});
             // `string UIName = 3;` and `float UIMin = "low";` were kept and read as 0 or "" later.
             const bool isString = annotation.value.kind == Expr::Kind::String;
             if (annotation.type.base == BaseType::String && !isString)

@@ -1,5 +1,6 @@
 // Parser: functions, and the loop-free bodies host expressions may call (see Parser.h).
 #include "Parser.h"
+#include "TypeNames.h"
 
 #include <algorithm>
 
@@ -89,12 +90,33 @@ void Parser::parseFunction(size_t first, const TypeDesc& returnType, const Token
             advance();
         }
         last = mPos - 1;
+        rejectLocalAnnotations(bodyBegin, last);
         decl.straightBody = parseStraightBody(bodyBegin, last);
     }
     decl.hlslText = sliceText(first, last);
     decl.hlslLoc = sliceLoc(first);
     mEffect.functions.push_back(std::move(decl));
     mEffect.order.push_back({DeclRef::Kind::Function, mEffect.functions.size() - 1});
+}
+
+void Parser::rejectLocalAnnotations(size_t begin, size_t end) {
+    const auto isTypeName = [this](const Token& token) {
+        TypeDesc type;
+        return token.kind == Token::Kind::Identifier &&
+               (token.text == "vector" || token.text == "matrix" || mTypeNames.count(token.text) ||
+                parseScalarTypeName(token.text, type) || parseObjectTypeName(token.text, type));
+    };
+    // A declaration starts a statement: `T name <` there opens annotations, anywhere else it compares.
+    bool statementStart = true;
+    for (size_t i = begin; i < end; ++i) {
+        const Token& token = mTokens[i];
+        if (statementStart && i + 2 < end && isTypeName(token) &&
+            mTokens[i + 1].kind == Token::Kind::Identifier && mTokens[i + 2].is("<"))
+            error(DiagId::LocalAnnotation, mTokens[i + 2].loc, {mTokens[i + 1].text});
+        const bool modifier = token.is("const") || token.is("static") || token.is("uniform") ||
+                              token.is("row_major") || token.is("column_major") || token.is("precise");
+        statementStart = token.is(";") || token.is("{") || token.is("}") || (statementStart && modifier);
+    }
 }
 
 std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, size_t end) {

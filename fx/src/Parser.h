@@ -132,6 +132,8 @@ private:
     // The statements of tokens [begin, end) if they are code without loops (FunctionDecl::straightBody),
     // else nothing. Tried without reporting: any other body is HLSL's business, not the effect parser's.
     std::vector<FunctionDecl::Statement> parseStraightBody(size_t begin, size_t end);
+    // fxc refuses annotations on a function's local variables; glslang's HLSL front end drops them.
+    void rejectLocalAnnotations(size_t begin, size_t end);
 
     static bool isAssignment(const Token& t);
 
