@@ -40,7 +40,7 @@ def headings(page):
 # The forms a pointer takes in this tree:
 #   (docs/PAGE.md, "Section")   docs/PAGE.md   docs/PAGE.md#anchor   (README, "Section")
 #   [text](relative/page.md#anchor) in Markdown
-CITED_SOURCES = ["effects", "fx", "runtime", "samples", "benchmarks", "tests", "scripts", "cmake", "fuzz"]
+CITED_SOURCES = ["effects", "fx", "report", "runtime", "samples", "benchmarks", "tests", "scripts", "cmake", "fuzz"]
 SOURCE_SUFFIXES = {".fx", ".fxh", ".h", ".cpp", ".cmake", ".txt", ".py", ".sh", ".json"}
 PAGE_WITH_SECTION = re.compile(r'\b((?:docs/)[\w./-]+\.md)(?:#([\w-]+))?(?:,\s*\\?"([^"\\]+)\\?")?')
 README_SECTION = re.compile(r'\bREADME(?:\.md)?(?:,|\'s)?\s+\\?"([^"\\]+)\\?"')

@@ -2,7 +2,8 @@
 # Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ and runs the whole
 # test suite under them. A sanitizer report fails the test that triggered it.
 #
-# Leak checking (LeakSanitizer) covers the GL-free tests (CTest label "fx": parser, compiler, corpus): the
+# Leak checking (LeakSanitizer) covers the GL-free tests (CTest labels "fx": parser, compiler, corpus, and
+# "report": the report writers and shard merging): the
 # test processes at exit, and the compile workers they start (glslang, SPIRV-Cross, our stage-compile
 # code) after every job, since the workers inherit ASAN_OPTIONS; a worker's finding fails its compile with
 # CompileWorkerSanitizerReport (docs/testing.md, "Robustness"). The GL tests (labels "runtime", "effects") run with ASan and UBSan but without LeakSanitizer:
@@ -29,9 +30,9 @@ export LSAN_OPTIONS="suppressions=$(pwd)/scripts/lsan-suppressions.txt:print_sup
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 status=0
 ASAN_OPTIONS="detect_leaks=1:$asan" ctest --test-dir build-asan --output-on-failure -j "$(nproc)" --timeout 1200 \
-  -L '^fx$' || status=1
+  -L '^(fx|report)$' || status=1
 gl_leaks=0
 [ "${SHADOWFX_LEAKS_EVERYWHERE:-0}" = 1 ] && gl_leaks=1
 ASAN_OPTIONS="detect_leaks=$gl_leaks:$asan" ctest --test-dir build-asan --output-on-failure -j "$(nproc)" \
-  --timeout 1200 -LE '^fx$' || status=1
+  --timeout 1200 -LE '^(fx|report)$' || status=1
 exit $status

@@ -3,7 +3,11 @@
 // [SECTION] Diagnostics each distinct message once
 // [SECTION] Statistics  median and spread of the timed frames
 // [SECTION] Runs        ground truth per scene, then effect x map size x scene x technique
-// [SECTION] Output      results.json, report.md, error_vs_time.svg (ErrorTimePlot.h)
+// [SECTION] Output      results.json, report.md, error_vs_time.svg (report/BenchReport.h)
+//
+// With --shard K/N only the runs report/BenchShard.h deals to shard K are measured, each record keeping its
+// run_index; `bench merge` (BenchMergeCommand.cpp) joins the shards. With --truth-cache DIR each scene's
+// ground truth is read from DIR when it was cast before (runtime/TruthCache.h).
 //
 // Each effect is compiled twice per map size: as written (the timed frames) and with SHADOWFX_VISIBILITY
 // (one frame whose colour is the shadow factor, scored against the ground truth). Timing the visibility
@@ -11,7 +15,6 @@
 // would confuse shading with shadowing. The two variants share every shadow computation by construction
 // (the define only changes what the final pass returns).
 #include "BenchCommand.h"
-#include "ErrorTimePlot.h"
 #include "ParameterSweep.h"
 #include "PeerRun.h"
 
@@ -27,7 +30,9 @@
 #include <runtime/ShadowMetrics.h>
 #include <runtime/ShadowMeasurement.h>
 #include <runtime/DiagnosticLog.h>
-#include <runtime/NumberFormat.h>
+#include <runtime/TruthCache.h>
+#include <report/BenchReport.h>
+#include <report/BenchShard.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -37,8 +42,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <set>
@@ -49,6 +52,7 @@ namespace shadowfx::cli {
 
 const char* const kBenchUsage =
     "usage: shadowfx bench --effects EFFECT.fx[,...] [--peers osg] --out DIR [options]\n"
+    "       shadowfx bench merge OUT DIR...   (joins the outputs of --shard runs: bench merge --help)\n"
     "  --effects LIST        effect files, comma-separated (a shell glob works too: --effects effects/*.fx)\n"
     "  --scenes LIST         built-in scene names or scene files (.json), comma-separated (default boxes)\n"
     "  --map-sizes LIST      shadow-map sizes, passed as -D SHADOWFX_SHADOW_MAP_SIZE=N (default 1024)\n"
@@ -87,13 +91,18 @@ const char* const kBenchUsage =
     "                        scored against the same ground truth: osg (OpenSceneGraph's osgShadow, built\n"
     "                        when OpenSceneGraph was found; docs/peers.md). --effects may then be left out\n"
     "  --peer-techniques LIST  only these of the peers' techniques (default: all; the peer lists them)\n"
+    "  --shard K/N           measure only shard K of N of the runs (1 <= K <= N): run index i belongs to\n"
+    "                        shard (i mod N) + 1; join the N outputs with `shadowfx bench merge`\n"
+    "                        (docs/sharding.md)\n"
+    "  --truth-cache DIR     read each scene's ray-cast ground truth from DIR when it was cast before with\n"
+    "                        the same scene, light, camera, frame size and options; cast and store it\n"
+    "                        there otherwise (an entry that is stale or corrupt is cast again, never used)\n"
     "  --out DIR             results.json, report.md, error_vs_time.svg and errors/*.png go here\n";
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Json = nlohmann::ordered_json;
-constexpr int kSchemaVersion = 2;
+using Json = report::Json;
 
 // [SECTION] Result records
 
@@ -278,241 +287,6 @@ private:
     bool mTty;
 };
 
-// [SECTION] Output
-
-// The run's technique and, in a sweep, the setting of its parameters: "main (Exponent=10)".
-std::string techniqueLabel(const Json& run) {
-    std::string label = run["technique"].get<std::string>();
-    if (!run.contains("setting")) return label;
-    std::string values;
-    for (const auto& [name, value] : run["setting"].items())
-        values += (values.empty() ? "" : ", ") + name + "=" + value.get<std::string>();
-    return label + " (" + values + ")";
-}
-
-// error_vs_time.svg (ErrorTimePlot.h). Returns a note for the report: why there is no plot, or "".
-// `fullCost`: the x axis is the full cost (every pass drawn), else the steady state.
-std::string plotErrorVsTime(const std::filesystem::path& outDir, const Json& runs, bool fullCost) {
-    std::vector<PlotPoint> points;
-    for (const Json& run : runs) {
-        if (!run["error"].is_object()) continue;
-        const Json& time = fullCost ? run["full_cost"]["frame_time_ms"] : run["frame_time_ms"];
-        points.push_back(PlotPoint{time["median"].get<double>(),
-                                   run["error"]["misclassified_percent"].get<double>(),
-                                   run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
-                                       std::to_string(run["map_size"].get<int>()),
-                                   run["scene"].get<std::string>()});
-    }
-    if (points.empty()) return "no run exposes its shadow term (SHADOWFX_VISIBILITY): nothing to plot";
-    std::string error;
-    if (!writeErrorTimePlot((outDir / "error_vs_time.svg").string(), points,
-                            fullCost ? "full cost: every pass drawn" : "steady state: unchanged maps reused",
-                            error))
-        return error + ": no plot";
-    return "";
-}
-
-// Per scene and map size, the most exact shadowfx run and the most exact run of each peer, and the ratio of
-// their median frame times (shadowfx ÷ peer): nothing when no peer ran.
-void writeSideBySide(std::ostream& md, const Json& runs) {
-    struct Best {
-        const Json* run = nullptr;
-        void offer(const Json& candidate) {
-            if (!candidate["error"].is_object()) return;
-            if (!run || candidate["error"]["misclassified_percent"].get<double>() <
-                            (*run)["error"]["misclassified_percent"].get<double>())
-                run = &candidate;
-        }
-    };
-    // (scene, map size) -> best shadowfx run, and best run per peer
-    std::map<std::pair<std::string, int>, std::pair<Best, std::map<std::string, Best>>> best;
-    bool anyPeer = false;
-    for (const Json& run : runs) {
-        auto& entry = best[{run["scene"].get<std::string>(), run["map_size"].get<int>()}];
-        if (run["peer"].is_string()) {
-            anyPeer = true;
-            entry.second[run["effect"].get<std::string>()].offer(run);
-        } else {
-            entry.first.offer(run);
-        }
-    }
-    if (!anyPeer) return;
-    const auto describe = [](const Json& run) {
-        return run["effect_name"].get<std::string>() + "/" + techniqueLabel(run) + " " +
-               runtime::formatFixed(run["error"]["misclassified_percent"].get<double>(), 3) + " % in " +
-               runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) + " ms";
-    };
-    md << "\n## Side by side with the peers\n\n"
-          "The most exact run of each side (least misclassified %) per scene and map size; ratio = median "
-          "full-cost frame time (every map redrawn each frame, as the peers do) of shadowfx's ÷ the "
-          "peer's.\n\n"
-          "| scene | map | shadowfx | peer | frame-time ratio |\n|---|---:|---|---|---:|\n";
-    for (const auto& [key, entry] : best) {
-        for (const auto& [peer, peerBest] : entry.second) {
-            if (!peerBest.run) continue;
-            md << "| " << key.first << " | " << key.second << " | "
-               << (entry.first.run ? describe(*entry.first.run) : std::string("–")) << " | "
-               << describe(*peerBest.run) << " | ";
-            if (entry.first.run)
-                md << runtime::formatFixed(
-                    (*entry.first.run)["full_cost"]["frame_time_ms"]["median"].get<double>() /
-                        (*peerBest.run)["full_cost"]["frame_time_ms"]["median"].get<double>(),
-                    2);
-            md << " |\n";
-        }
-    }
-}
-
-void writeReport(const std::filesystem::path& path, const Json& results, const std::string& plotNote) {
-    std::ofstream md(path);
-    md << "# shadowfx bench\n\n";
-    md << "GL renderer: `" << results["gl_renderer"].get<std::string>() << "`  \n";
-    md << "Frames: " << results["config"]["warmup"].get<int>() << " warm-up, then "
-       << results["config"]["frames"].get<int>() << " timed; frame " << results["config"]["width"].get<int>()
-       << "x" << results["config"]["height"].get<int>() << "."
-       << (results["config"]["camera_orbit_degrees_per_frame"].get<double>() != 0.0
-               ? " The camera orbits " +
-                     runtime::formatFixed(results["config"]["camera_orbit_degrees_per_frame"].get<double>(),
-                                          2) +
-                     " degrees a frame (view-dependent maps redrawn every frame); errors at the scene's "
-                     "camera."
-               : std::string())
-       << "  \n";
-    md << "Errors are over receiver pixels (covered, N·L > 0) against the Embree ray-cast ground truth; "
-          "misclassified = false shadow + false light. Texel footprint: screen pixels covered by one "
-          "shadow-map "
-          "texel along its longest direction (Lloyd et al.), > 1 is undersampling.\n\n";
-    const bool fullAxis = results["config"]["time_axis"] == "full";
-    md << "Time: **full cost** = every pass drawn each frame, leave-out's reuse of unchanged shadow maps off "
-          "(what a moving light or moving objects cost: compare techniques by this); **steady** = the same "
-          "frames with that reuse (a static light and scene: with leave-out on, `main`-like techniques "
-          "then pay for the scene pass alone; a technique that blurs its map every frame pays the full cost, "
-          "docs/scoring.md, \"Full cost and steady state\"). The plot's axis is the "
-       << (fullAxis ? "full cost" : "steady-state time (`--time steady`)") << ".\n\n";
-    if (plotNote.empty()) {
-        md << "![error against frame time](error_vs_time.svg)\n\n";
-    } else {
-        md << "_" << plotNote << "_\n\n";
-    }
-    md << "## Runs\n\n";
-    md << "| scene | effect | technique | map | misclassified % | false shadow % | false light % | MAE | p95 "
-          "| penumbra MAE | "
-          "full ms (median [min–max]) | steady ms | full GPU ms | full runtime CPU ms | texel footprint max "
-          "/ "
-          "p95 / mean | errors |\n";
-    md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---|---|\n";
-    for (const Json& run : results["runs"]) {
-        const Json& full = run["full_cost"];
-        const Json& frame = full["frame_time_ms"];
-        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | ";
-        if (run["error"].is_object()) {
-            const Json& e = run["error"];
-            md << runtime::formatFixed(e["misclassified_percent"].get<double>(), 3) << " | "
-               << runtime::formatFixed(e["false_shadow_percent"].get<double>(), 3) << " | "
-               << runtime::formatFixed(e["false_light_percent"].get<double>(), 3) << " | "
-               << runtime::formatFixed(e["mae"].get<double>(), 4) << " | "
-               << runtime::formatFixed(e["p95_abs_error"].get<double>(), 3) << " | "
-               << (e["penumbra_mae"].is_number() ? runtime::formatFixed(e["penumbra_mae"].get<double>(), 4)
-                                                 : std::string("–"))
-               << " | ";
-        } else {
-            md << "n/a | n/a | n/a | n/a | n/a | n/a | ";
-        }
-        md << runtime::formatFixed(frame["median"].get<double>(), 2) << " ["
-           << runtime::formatFixed(frame["min"].get<double>(), 2) << "–"
-           << runtime::formatFixed(frame["max"].get<double>(), 2) << "] | "
-           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | ";
-        // A peer's row has frame times and errors only: its passes are the peer library's own.
-        if (run["peer"].is_string()) {
-            md << "– | – | – | ";
-        } else {
-            md << runtime::formatFixed(full["gpu_time_ms"]["median"].get<double>(), 2) << " | "
-               << runtime::formatFixed(full["runtime_cpu_ms"]["overhead"].get<double>(), 3) << " | "
-               << runtime::formatFixed(run["aliasing"]["max_texel_footprint_px"].get<double>(), 2) << " / "
-               << runtime::formatFixed(run["aliasing"]["p95_texel_footprint_px"].get<double>(), 2) << " / "
-               << runtime::formatFixed(run["aliasing"]["mean_texel_footprint_px"].get<double>(), 2) << " | ";
-        }
-        if (run["error_image"].is_string()) md << "[png](" << run["error_image"].get<std::string>() << ")";
-        md << " |\n";
-    }
-    writeSideBySide(md, results["runs"]);
-    md << "\n## Passes (full cost, median per frame)\n\n";
-    md << "| scene | effect | technique | map | pass | GPU ms | CPU ms | draws "
-          "|\n|---|---|---|---:|---|---:|---:|---:|\n";
-    for (const Json& run : results["runs"]) {
-        for (const Json& pass : run["full_cost"]["passes"]) {
-            md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-               << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
-               << pass["name"].get<std::string>() << " | "
-               << runtime::formatFixed(pass["gpu_ms"].get<double>(), 3) << " | "
-               << runtime::formatFixed(pass["cpu_ms"].get<double>(), 3) << " | " << pass["draws"].get<int>()
-               << " |\n";
-        }
-    }
-    md << "\n## Leave-out\n\n"
-          "Work of one steady-state frame (counted in an extra frame): passes run / left out (dead or "
-          "cached), draws, objects culled, triangles; full ms = the full cost's median. First frame = the "
-          "first warm-up frame (nothing "
-          "cached). "
-          "`speed-up` = median frame time without leave-out / with, where both were run.\n\n";
-    md << "| scene | effect | technique | map | leave-out | full ms | steady ms | first frame ms | passes "
-          "run "
-          "/ "
-          "left out | draws | culled | triangles | speed-up |\n"
-          "|---|---|---|---:|---|---:|---:|---:|---|---:|---:|---:|---:|\n";
-    for (const Json& run : results["runs"]) {
-        if (run["peer"].is_string()) continue;
-        const Json& work = run["work"];
-        std::string speedUp;
-        if (run["leave_out"].get<bool>()) {
-            for (const Json& other : results["runs"]) {
-                if (other["peer"].is_string() || other["leave_out"].get<bool>() ||
-                    other["scene"] != run["scene"] || other["effect"] != run["effect"] ||
-                    techniqueLabel(other) != techniqueLabel(run) || other["map_size"] != run["map_size"])
-                    continue;
-                speedUp = runtime::formatFixed(other["frame_time_ms"]["median"].get<double>() /
-                                                   run["frame_time_ms"]["median"].get<double>(),
-                                               2) +
-                          "x";
-            }
-        }
-        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
-           << (run["leave_out"].get<bool>() ? "on" : "off") << " | "
-           << runtime::formatFixed(run["full_cost"]["frame_time_ms"]["median"].get<double>(), 2) << " | "
-           << runtime::formatFixed(run["frame_time_ms"]["median"].get<double>(), 2) << " | "
-           << runtime::formatFixed(run["first_frame_ms"].get<double>(), 2) << " | "
-           << work["passes_run"].get<int>() << " / " << work["passes_left_out"].get<int>() << " | "
-           << work["draws"].get<int>() << " | " << work["culled"].get<int>() << " | "
-           << work["triangles"].get<uint64_t>() << " | " << speedUp << " |\n";
-    }
-    md << "\n## Runtime CPU time (full cost, median per frame, ms)\n\n"
-          "Script = interpreting the SAS scripts and the rest of the frame executor; binding = semantics and "
-          "uniforms; preshader = pass arguments and state expressions; GL = inside the driver's draw/clear "
-          "calls.\n\n";
-    md << "| scene | effect | technique | map | script | binding | preshader | overhead (sum) | GL |\n"
-          "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
-    for (const Json& run : results["runs"]) {
-        if (run["peer"].is_string()) continue;
-        const Json& c = run["full_cost"]["runtime_cpu_ms"];
-        md << "| " << run["scene"].get<std::string>() << " | " << run["effect_name"].get<std::string>()
-           << " | " << techniqueLabel(run) << " | " << run["map_size"].get<int>() << " | "
-           << runtime::formatFixed(c["script"].get<double>(), 3) << " | "
-           << runtime::formatFixed(c["binding"].get<double>(), 3) << " | "
-           << runtime::formatFixed(c["preshader"].get<double>(), 3) << " | "
-           << runtime::formatFixed(c["overhead"].get<double>(), 3) << " | "
-           << runtime::formatFixed(c["gl"].get<double>(), 3) << " |\n";
-    }
-    md << "\n## Ground truth\n\n| scene | lights samples / pixel | soft | rays | seconds "
-          "|\n|---|---:|---|---:|---:|\n";
-    for (const Json& truth : results["ground_truth"]) {
-        md << "| " << truth["scene"].get<std::string>() << " | " << truth["samples_per_pixel"].get<int>()
-           << " | " << (truth["soft"].get<bool>() ? "yes" : "no") << " | " << truth["rays"].get<uint64_t>()
-           << " | " << runtime::formatFixed(truth["seconds"].get<double>(), 2) << " |\n";
-    }
-}
-
 // Receivers the ground truth classifies as shadowed: what a blank (all-lit) frame would get wrong.
 int64_t shadowedReceivers(const runtime::SceneTruth& t) {
     int64_t count = 0;
@@ -661,6 +435,18 @@ int benchCommand(const Arguments& args) {
         cameraOrbit = value;
     }
 
+    std::optional<report::BenchShard> shard;
+    if (const std::string text = args.value("--shard"); !text.empty()) {
+        std::string shardError;
+        shard = report::parseBenchShard(text, shardError);
+        if (!shard) {
+            std::cerr << "shadowfx bench: --shard " << shardError << "\n";
+            return 2;
+        }
+    }
+    std::optional<runtime::TruthCache> truthCache;
+    if (const std::string dir = args.value("--truth-cache"); !dir.empty()) truthCache.emplace(dir);
+
     const std::filesystem::path outDir = args.value("--out");
     std::error_code fsError;
     std::filesystem::create_directories(outDir / "errors", fsError);
@@ -715,10 +501,13 @@ int benchCommand(const Arguments& args) {
                   << " triangles)...\n";
         runtime::SceneTruth& t = truths.emplace_back();
         std::string truthError;
-        if (!runtime::measureSceneTruth(t, std::move(scene), width, height, truthOptions, sink, truthError)) {
+        if (!runtime::measureSceneTruth(t, std::move(scene), width, height, truthOptions, sink, truthError,
+                                        truthCache ? &*truthCache : nullptr)) {
             std::cerr << "shadowfx bench: " << truthError << "\n";
             return 1;
         }
+        if (!t.cacheNote.empty()) std::cerr << "bench: --truth-cache: " << t.cacheNote << "\n";
+        if (t.cached) std::cerr << "bench: ground truth for " << name << " read from --truth-cache\n";
         truthJson.push_back(
             Json{{"scene", t.scene.name},
                  {"soft", t.truth.soft},
@@ -727,7 +516,8 @@ int benchCommand(const Arguments& args) {
                  {"normal_offset", truthOptions.normalOffset * std::max(t.scene.bounds().radius(), 1e-3f)},
                  {"receiver_pixels", std::count(t.receivers.begin(), t.receivers.end(), uint8_t{1})},
                  {"shadowed_receiver_pixels", shadowedReceivers(t)},
-                 {"seconds", t.seconds}});
+                 {"seconds", t.seconds},
+                 {"cached", t.cached}});
     }
 
     const fx::ParseOptions baseOptions = effectParseOptions(args);
@@ -811,7 +601,11 @@ int benchCommand(const Arguments& args) {
     for (const Peer& peer : peers) runCount += peer.techniques.size() * mapSizes.size() * truths.size();
 
     Json runs = Json::array();
-    Progress progress(runCount);
+    Progress progress(shard ? shard->runsOf(runCount) : runCount);
+    // Each run's place in the unsharded order, counted through the same loops whether or not this shard
+    // measures it (report/BenchShard.h).
+    size_t nextRunIndex = 0;
+    const auto measuredHere = [&](size_t runIndex) { return !shard || shard->takes(runIndex); };
     for (const std::string& effect : effects) {
         const std::string effectName = std::filesystem::path(effect).stem().string();
         for (int mapSize : mapSizes) {
@@ -856,6 +650,8 @@ int benchCommand(const Arguments& args) {
                         // Leave-out on before off: a frame without leave-out leaves maps that an "on" run's
                         // first frame could reuse, and that first frame is meant to find nothing cached.
                         for (const bool leaveOut : leaveOutModes) {
+                            const size_t runIndex = nextRunIndex++;
+                            if (!measuredHere(runIndex)) continue;
                             progress.show(effectName + " " + technique.name +
                                           (label.empty() ? "" : " " + label) + " on " + t.scene.name +
                                           ", map " + std::to_string(mapSize) +
@@ -892,7 +688,8 @@ int benchCommand(const Arguments& args) {
                             }
                             const runtime::FrameImage shaded = timed->readFrame();
 
-                            Json record{{"effect", effect},
+                            Json record{{"run_index", runIndex},
+                                        {"effect", effect},
                                         {"effect_name", effectName},
                                         {"peer", nullptr},
                                         {"technique", technique.name},
@@ -970,6 +767,8 @@ int benchCommand(const Arguments& args) {
             for (size_t scene = 0; scene < truths.size(); ++scene) {
                 const runtime::SceneTruth& t = truths[scene];
                 for (const std::string& technique : peer.techniques) {
+                    const size_t runIndex = nextRunIndex++;
+                    if (!measuredHere(runIndex)) continue;
                     progress.show(peer.name + " " + technique + " on " + t.scene.name + ", map " +
                                   std::to_string(mapSize));
                     PeerRequest request{
@@ -984,7 +783,8 @@ int benchCommand(const Arguments& args) {
                     const runtime::ShadowErrors errors =
                         runtime::compareVisibility(t.truth.visibility, result->visibility, t.receivers);
                     const Spread frameTimes = spreadOf(result->frameMs);
-                    Json record{{"effect", peer.name},
+                    Json record{{"run_index", runIndex},
+                                {"effect", peer.name},
                                 {"effect_name", peer.name},
                                 {"peer", peer.name + "/" + technique},
                                 {"technique", technique},
@@ -1052,41 +852,39 @@ int benchCommand(const Arguments& args) {
         }
     }
 
-    Json results{{"schema_version", kSchemaVersion},
-                 {"generator", "shadowfx bench"},
-                 {"gl_renderer", glRenderer},
-                 {"backend", std::string(runtime::backendName(context->backend()))},
-                 {"config", Json{{"effects", effects},
-                                 {"scenes", sceneNames},
-                                 {"map_sizes", mapSizes},
-                                 {"techniques", techniqueFilter},
-                                 {"set", args.all("--set")},
-                                 {"frames", frames},
-                                 {"warmup", warmup},
-                                 {"width", width},
-                                 {"height", height},
-                                 {"area_samples", truthOptions.areaSamples},
-                                 {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
-                                 {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
-                                 {"peers", splitList(args.value("--peers"))},
-                                 {"peer_techniques", peerTechniqueFilter},
-                                 {"camera_orbit_degrees_per_frame", cameraOrbit},
-                                 {"leave_out", leaveOutModes},
-                                 {"time_axis", timeAxis},
-                                 {"batching", !args.flag("--no-batching")}}},
-                 {"ground_truth", truthJson},
-                 {"runs", runs}};
-    {
-        std::ofstream out(outDir / "results.json");
-        out << results.dump(2) << "\n";
-        if (!out) {
-            std::cerr << "shadowfx bench: cannot write " << (outDir / "results.json").string() << "\n";
-            return 1;
-        }
+    Json results{
+        {"schema_version", report::kBenchSchemaVersion},
+        {"generator", "shadowfx bench"},
+        {"gl_renderer", glRenderer},
+        {"backend", std::string(runtime::backendName(context->backend()))},
+        {"config", Json{{"effects", effects},
+                        {"scenes", sceneNames},
+                        {"map_sizes", mapSizes},
+                        {"techniques", techniqueFilter},
+                        {"set", args.all("--set")},
+                        {"frames", frames},
+                        {"warmup", warmup},
+                        {"width", width},
+                        {"height", height},
+                        {"area_samples", truthOptions.areaSamples},
+                        {"area_radius", areaRadius ? Json(*areaRadius) : Json(nullptr)},
+                        {"light_angle_to_view", lightAngle ? Json(*lightAngle) : Json(nullptr)},
+                        {"peers", splitList(args.value("--peers"))},
+                        {"peer_techniques", peerTechniqueFilter},
+                        {"camera_orbit_degrees_per_frame", cameraOrbit},
+                        {"leave_out", leaveOutModes},
+                        {"time_axis", timeAxis},
+                        {"batching", !args.flag("--no-batching")}}},
+        {"shard", shard ? Json{{"index", shard->index}, {"count", shard->count}, {"runs_total", runCount}}
+                        : Json(nullptr)},
+        {"ground_truth", truthJson},
+        {"runs", runs}};
+    std::string plotNote, writeError;
+    if (!report::writeBenchOutputs(outDir, results, plotNote, writeError)) {
+        std::cerr << "shadowfx bench: " << writeError << "\n";
+        return 1;
     }
-    const std::string plotNote = plotErrorVsTime(outDir, runs, timeAxis == "full");
     if (!plotNote.empty()) std::cerr << "bench: " << plotNote << "\n";
-    writeReport(outDir / "report.md", results, plotNote);
     std::cout << (outDir / "report.md").string() << "\n";
     return 0;
 }

@@ -15,7 +15,7 @@
 // NaN and blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`), and one line per
 // effect: drawn, blank or failed, with a summary line.
 #include "CheckCommand.h"
-#include "XmlText.h"
+#include <report/XmlText.h>
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -30,7 +30,7 @@
 #include <runtime/ShadowMeasurement.h>
 #include <runtime/DiagnosticLog.h>
 #include <runtime/NonFiniteScan.h>
-#include <runtime/NumberFormat.h>
+#include <report/NumberFormat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +62,8 @@ const char* const kCheckUsage =
     "  --require-goldens     a renderer without goldens FAILs instead of NOT_SUPPORTED\n"
     "  --width W, --height H frame size (default 320x240, the size goldens are made at)\n"
     "  --area-samples N      ground-truth light samples per pixel for area lights (default 256)\n"
+    "  --truth-cache DIR     read each scene's ray-cast ground truth from DIR when it was cast before for\n"
+    "                        the same inputs, else cast and store it there (docs/sharding.md)\n"
     "  --area-radius R       the penumbra checks give every scene's light this areaRadius, overriding\n"
     "                        ExpectAreaRadius (0: no area light, the penumbra rows NOT_SUPPORTED)\n"
     "  --list-techniques     print each effect's technique names, one per line, and exit\n"
@@ -444,28 +446,28 @@ bool writeJunit(const std::string& path, const std::vector<CheckResult>& results
         << count(nullptr, Outcome::Fail) << "\" skipped=\"" << count(nullptr, Outcome::NotSupported)
         << "\" errors=\"0\">\n";
     for (const std::string& effect : effects) {
-        xml << "  <testsuite name=\"" << xmlEscape(effect) << "\" tests=\"" << total(&effect)
+        xml << "  <testsuite name=\"" << report::xmlEscape(effect) << "\" tests=\"" << total(&effect)
             << "\" failures=\"" << count(&effect, Outcome::Fail) << "\" skipped=\""
             << count(&effect, Outcome::NotSupported) << "\" errors=\"0\">\n";
         for (const CheckResult& r : results) {
             if (r.effect != effect) continue;
-            xml << "    <testcase classname=\"" << xmlEscape(r.effect + "." + r.technique) << "\" name=\""
-                << xmlEscape(r.scene + "." + r.check + "[" + r.backend + "]") << "\"";
+            xml << "    <testcase classname=\"" << report::xmlEscape(r.effect + "." + r.technique)
+                << "\" name=\"" << report::xmlEscape(r.scene + "." + r.check + "[" + r.backend + "]") << "\"";
             switch (r.outcome) {
                 case Outcome::Pass:
                     xml << "/>\n";
                     break;
                 case Outcome::QualityWarning:
-                    xml << ">\n      <system-out>QUALITY_WARNING: " << xmlEscape(r.detail)
+                    xml << ">\n      <system-out>QUALITY_WARNING: " << report::xmlEscape(r.detail)
                         << "</system-out>\n    </testcase>\n";
                     break;
                 case Outcome::NotSupported:
-                    xml << ">\n      <skipped message=\"NOT_SUPPORTED: " << xmlEscape(r.detail)
+                    xml << ">\n      <skipped message=\"NOT_SUPPORTED: " << report::xmlEscape(r.detail)
                         << "\"/>\n    </testcase>\n";
                     break;
                 case Outcome::Fail:
-                    xml << ">\n      <failure type=\"FAIL\" message=\"" << xmlEscape(r.detail) << "\">"
-                        << xmlEscape(r.detail) << "</failure>\n    </testcase>\n";
+                    xml << ">\n      <failure type=\"FAIL\" message=\"" << report::xmlEscape(r.detail)
+                        << "\">" << report::xmlEscape(r.detail) << "</failure>\n    </testcase>\n";
                     break;
             }
         }
@@ -528,6 +530,7 @@ struct Settings {
     std::optional<float> areaRadius;  // --area-radius: the penumbra checks' light size, over ExpectAreaRadius
     std::filesystem::path outDir;
     runtime::GroundTruthOptions truthOptions;
+    std::optional<runtime::TruthCache> truthCache;  // --truth-cache
     runtime::FuzzyCompareOptions compare;
 };
 
@@ -617,16 +620,22 @@ private:
         }
         if (areaRadius)
             for (runtime::Light& light : loaded->lights) light.areaRadius = *areaRadius;
+        const runtime::TruthCache* cache = mSettings.truthCache ? &*mSettings.truthCache : nullptr;
         if (!runtime::measureSceneTruth(scene->measured, std::move(*loaded), mSettings.width,
-                                        mSettings.height, mSettings.truthOptions, mSink, scene->error))
+                                        mSettings.height, mSettings.truthOptions, mSink, scene->error, cache))
             return scene;
         const runtime::SceneTruth& t = scene->measured;
+        if (!t.cacheNote.empty()) std::cerr << "check: --truth-cache: " << t.cacheNote << "\n";
         scene->soft = t.light->areaRadius > 0.0f;
         if (areaRadius) return scene;
         if (scene->soft) {
             runtime::Light point = *t.light;
             point.areaRadius = 0.0f;
-            scene->hard = runtime::ShadowRayCaster(t.scene).compute(t.gbuffer, point, mSettings.truthOptions);
+            bool cached = false;
+            std::string note;
+            scene->hard = runtime::castOrReadTruth(t.scene, point, t.gbuffer, mSettings.truthOptions, cache,
+                                                   cached, note);
+            if (!note.empty()) std::cerr << "check: --truth-cache: " << note << "\n";
         } else {
             scene->hard = t.truth;
         }
@@ -701,10 +710,10 @@ private:
             if (hardScore && misclassifiedBelow) {
                 const runtime::ShadowErrors& e = hardScore->errors;
                 row("misclassified", judge(e.misclassifiedPercent, *misclassifiedBelow),
-                    runtime::formatFixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
-                        runtime::formatFixed(*misclassifiedBelow, 3) + " % (false shadow " +
-                        runtime::formatFixed(e.falseShadowPercent, 3) + " %, false light " +
-                        runtime::formatFixed(e.falseLightPercent, 3) + " %, " +
+                    report::formatFixed(e.misclassifiedPercent, 3) + " % misclassified, expected below " +
+                        report::formatFixed(*misclassifiedBelow, 3) + " % (false shadow " +
+                        report::formatFixed(e.falseShadowPercent, 3) + " %, false light " +
+                        report::formatFixed(e.falseLightPercent, 3) + " %, " +
                         std::to_string(e.receiverPixels) + " receiver pixels)");
             }
             if (hardScore && expect.penumbraMaeBelow.declared() && !penumbraMaeBelow)
@@ -735,16 +744,16 @@ private:
                             .penumbraMeanAbsoluteError;
                     if (!(*penumbraMaeBelow < blankMae)) {
                         row("penumbra", Outcome::Fail,
-                            "the bound " + runtime::formatFixed(*penumbraMaeBelow, 4) +
+                            "the bound " + report::formatFixed(*penumbraMaeBelow, 4) +
                                 " passes a frame without shadows (penumbra MAE " +
-                                runtime::formatFixed(blankMae, 4) + "): it checks nothing");
+                                report::formatFixed(blankMae, 4) + "): it checks nothing");
                     } else {
                         row("penumbra", judge(mae, *penumbraMaeBelow),
-                            "penumbra MAE " + runtime::formatFixed(mae, 4) + ", expected below " +
-                                runtime::formatFixed(*penumbraMaeBelow, 4) + " (" +
+                            "penumbra MAE " + report::formatFixed(mae, 4) + ", expected below " +
+                                report::formatFixed(*penumbraMaeBelow, 4) + " (" +
                                 std::to_string(softScore->errors.penumbraPixels) +
                                 " penumbra pixels, areaRadius " +
-                                runtime::formatFixed(penumbraScene.measured.light->areaRadius, 3) + ", " +
+                                report::formatFixed(penumbraScene.measured.light->areaRadius, 3) + ", " +
                                 std::to_string(penumbraScene.measured.truth.samplesPerPixel) +
                                 " light samples per pixel)");
                     }
@@ -796,9 +805,9 @@ private:
                               std::to_string(golden->height) + ", the frame " + std::to_string(frame.width) +
                               "x" + std::to_string(frame.height)
                         : std::to_string(comparison->failingPixels) + " pixels differ (" +
-                              runtime::formatFixed(100.0 * comparison->failingFraction, 3) + " %, at most " +
-                              runtime::formatFixed(100.0 * bound, 3) + " % allowed), max error " +
-                              runtime::formatFixed(comparison->maxError, 3);
+                              report::formatFixed(100.0 * comparison->failingFraction, 3) + " %, at most " +
+                              report::formatFixed(100.0 * bound, 3) + " % allowed), max error " +
+                              report::formatFixed(comparison->maxError, 3);
                 row("golden", outcome, detail + " vs " + place.path.string());
             }
         }
@@ -896,6 +905,7 @@ int checkCommand(const Arguments& args) {
     settings.sceneOverride = splitList(args.value("--scenes"));
     settings.outDir = args.value("--out", "out/check");
     settings.truthOptions.areaSamples = args.intValue("--area-samples", 256);
+    if (const std::string dir = args.value("--truth-cache"); !dir.empty()) settings.truthCache.emplace(dir);
     if (const std::string text = args.value("--area-radius"); !text.empty()) {
         char* end = nullptr;
         const float value = std::strtof(text.c_str(), &end);

@@ -58,11 +58,12 @@ std::vector<std::string> Arguments::all(const std::string& name) const {
 
 struct Parser {
     // Returns false and prints what is wrong on a usage error.
-    static bool parse(const Command& command, int argc, char** argv, Arguments& args) {
+    // Arguments from argv[first] on (after the command's one or two words).
+    static bool parse(const Command& command, int argc, char** argv, int first, Arguments& args) {
         auto contains = [](const std::vector<std::string>& list, const std::string& s) {
             return std::find(list.begin(), list.end(), s) != list.end();
         };
-        for (int i = 2; i < argc; ++i) {
+        for (int i = first; i < argc; ++i) {
             std::string arg = argv[i];
             std::string attached;
             // -Idir and -DNAME=VALUE, as compilers accept them; --name=value as well.
@@ -122,8 +123,11 @@ void printEffectOptions() {
 void printOverview(std::span<const Command> commands) {
     std::cout
         << "usage: shadowfx COMMAND [options]   (shadowfx COMMAND --help for its options)\n\ncommands:\n";
+    size_t column = 10;
+    for (const Command& c : commands) column = std::max(column, std::string(c.name).size() + 2);
     for (const Command& c : commands)
-        std::cout << "  " << c.name << std::string(10 - std::string(c.name).size(), ' ') << c.summary << "\n";
+        std::cout << "  " << c.name << std::string(column - std::string(c.name).size(), ' ') << c.summary
+                  << "\n";
 }
 }  // namespace
 
@@ -133,10 +137,20 @@ int dispatch(int argc, char** argv, std::span<const Command> commands) {
         printOverview(commands);
         return argc < 2 ? 2 : 0;
     }
-    const std::string name = argv[1];
+    // A command of two words ("bench merge") is taken before the one-word command it starts with.
+    std::string name = argv[1];
+    int first = 2;
+    if (argc > 2) {
+        const std::string twoWords = name + " " + argv[2];
+        for (const Command& command : commands)
+            if (twoWords == command.name) {
+                name = twoWords;
+                first = 3;
+            }
+    }
     for (const Command& command : commands) {
         if (name != command.name) continue;
-        for (int i = 2; i < argc; ++i) {
+        for (int i = first; i < argc; ++i) {
             if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
                 std::cout << command.summary << "\n" << command.usage;
                 if (std::find(command.valueOptions.begin(), command.valueOptions.end(), "-I") !=
@@ -146,7 +160,7 @@ int dispatch(int argc, char** argv, std::span<const Command> commands) {
             }
         }
         Arguments args;
-        if (!Parser::parse(command, argc, argv, args)) return 2;
+        if (!Parser::parse(command, argc, argv, first, args)) return 2;
         return command.run(args);
     }
     std::cerr << "shadowfx: unknown command '" << name << "'\n";

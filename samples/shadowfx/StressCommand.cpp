@@ -21,7 +21,7 @@
 #include <runtime/StressCases.h>
 #include <runtime/DiagnosticLog.h>
 #include <runtime/NonFiniteScan.h>
-#include <runtime/NumberFormat.h>
+#include <report/NumberFormat.h>
 #include <runtime/ShadowMeasurement.h>
 
 #include <nlohmann/json.hpp>
@@ -51,6 +51,8 @@ const char* const kStressUsage =
     "  --uniform FILE:TECH   the uniform shadow map every method is held to (default: the effect\n"
     "                        library's thesis_fxcomposer.fx:main, wherever stress runs from)\n"
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
+    "  --truth-cache DIR     read each case's ray-cast ground truth from DIR when it was cast before for\n"
+    "                        the same inputs, else cast and store it there (docs/sharding.md)\n"
     "  --out DIR             stress.json, report.md and errors/*.png (failed runs) go here\n"
     "                        (default out/stress)\n"
     "exit status: 0 if every run passes or fails only where declared, 1 if one fails (or, with\n"
@@ -155,7 +157,7 @@ size_t countOutsideLightVolume(const runtime::GBuffer& gbuffer, const std::vecto
 }
 
 std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width, int height, int mapSize,
-                                      runtime::DiagnosticLog& sink) {
+                                      const runtime::TruthCache* cache, runtime::DiagnosticLog& sink) {
     CaseTruth truth;
     truth.stressCase = std::move(stressCase);
     const runtime::StressCase& c = truth.stressCase;
@@ -170,8 +172,9 @@ std::optional<CaseTruth> computeTruth(runtime::StressCase stressCase, int width,
         runtime::SceneTruth measured;
         std::string error;
         if (!runtime::measureSceneTruth(measured, c.truthScene ? *c.truthScene : frame.scene, width, height,
-                                        {}, sink, error))
+                                        {}, sink, error, cache))
             return std::nullopt;
+        if (!measured.cacheNote.empty()) std::cerr << "stress: --truth-cache: " << measured.cacheNote << "\n";
         frame.visibility = std::move(measured.truth.visibility);
         frame.receivers = std::move(measured.receivers);
         std::optional<runtime::GBuffer> gbuffer = std::move(measured.gbuffer);
@@ -359,9 +362,9 @@ Outcome runCase(runtime::EffectRenderer& renderer, bool exposesVisibility, const
         outcome.shimmerMean = sum / static_cast<double>(shadowed.size() - 1);
         outcome.shimmerMax = worst;
         if (*outcome.shimmerMean > kShimmerLimit)
-            outcome.fail(Criterion::Shimmer, "shimmer " + runtime::formatPercent(*outcome.shimmerMean) +
+            outcome.fail(Criterion::Shimmer, "shimmer " + report::formatPercent(*outcome.shimmerMean) +
                                                  " of steady pixels flip per frame (limit " +
-                                                 runtime::formatPercent(kShimmerLimit) + ")");
+                                                 report::formatPercent(kShimmerLimit) + ")");
     }
     return outcome;
 }
@@ -418,17 +421,17 @@ void judge(Outcome& outcome) {
     if (!outcome.misclassified || outcome.receivers < kMinScoredReceivers) return;
     const double error = *outcome.misclassified;
     if (outcome.ordinary && error > kOrdinaryFactor * *outcome.ordinary + kOrdinarySlack)
-        outcome.fail(Criterion::Ordinary, "error " + runtime::formatPercent(error) + " > " +
+        outcome.fail(Criterion::Ordinary, "error " + report::formatPercent(error) + " > " +
                                               std::to_string(static_cast<int>(kOrdinaryFactor)) +
                                               "x the ordinary case's " +
-                                              runtime::formatPercent(*outcome.ordinary) + " + 1 point");
+                                              report::formatPercent(*outcome.ordinary) + " + 1 point");
     if (!outcome.uniform)
         outcome.fail(Criterion::Uniform,
                      "the uniform map's error on this case is unknown: the comparison cannot be evaluated");
     else if (error > kUniformFactor * *outcome.uniform + kUniformSlack)
-        outcome.fail(Criterion::Uniform, "error " + runtime::formatPercent(error) +
+        outcome.fail(Criterion::Uniform, "error " + report::formatPercent(error) +
                                              " > 1.5x the uniform map's " +
-                                             runtime::formatPercent(*outcome.uniform) + " + 0.5 point");
+                                             report::formatPercent(*outcome.uniform) + " + 0.5 point");
 }
 
 struct EffectUnderTest {
@@ -463,7 +466,7 @@ Json optionalJson(const std::optional<double>& value) {
 }
 
 std::string cell(const std::optional<double>& value) {
-    return value ? runtime::formatPercent(*value) : "-";
+    return value ? report::formatPercent(*value) : "-";
 }
 
 void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
@@ -493,7 +496,7 @@ void printTable(std::ostream& out, const std::vector<Outcome>& outcomes,
         if (o.misclassified == std::nullopt && o.pass && o.receivers == 0) why = "no receiver pixels";
         if (o.misclassified && o.receivers < kMinScoredReceivers)
             why = std::to_string(o.receivers) + " receiver pixels: too few to judge the error";
-        const std::string shimmer = o.shimmerMean ? runtime::formatPercent(*o.shimmerMean) : "-";
+        const std::string shimmer = o.shimmerMean ? report::formatPercent(*o.shimmerMean) : "-";
         const std::string result = o.result();
         if (o.expectedFailure) {
             std::string criteria;
@@ -616,11 +619,13 @@ int stressCommand(const Arguments& args) {
     }
 
     runtime::DiagnosticLog sink;
+    std::optional<runtime::TruthCache> truthCache;
+    if (const std::string dir = args.value("--truth-cache"); !dir.empty()) truthCache.emplace(dir);
     std::map<std::string, CaseTruth> truths;
     for (const std::string& name : ordered) {
         std::cerr << "stress: ground truth for " << name << "\n";
-        std::optional<CaseTruth> truth =
-            computeTruth(*runtime::makeStressCase(name), width, height, mapSize, sink);
+        std::optional<CaseTruth> truth = computeTruth(*runtime::makeStressCase(name), width, height, mapSize,
+                                                      truthCache ? &*truthCache : nullptr, sink);
         if (!truth) {
             std::cerr << "shadowfx stress: case " << name
                       << ": the ground truth failed: " << sink.takeErrors() << "\n";

@@ -5,11 +5,13 @@
 //   shadowfx compile EFFECT.fx [--technique NAME]        print the generated GLSL, or the diagnostics
 //   shadowfx info EFFECT.fx                              list techniques, passes and parameters
 //   shadowfx bench --effects A.fx,B.fx --out DIR [...]   shadow error and frame time (BenchCommand)
+//   shadowfx bench merge OUT DIR...                      join --shard outputs (BenchMergeCommand)
 //   shadowfx check EFFECT.fx [...]                       expectations, goldens, JUnit (CheckCommand)
 //   shadowfx stress [EFFECT.fx ...] [--reduced]          extreme configurations (StressCommand)
 //   shadowfx view EFFECT.fx [...]                        window, hot reload, parameters (ViewCommand)
 //   shadowfx new NAME [--from pcf|vsm|minimal]           a technique skeleton NAME.fx (NewCommand)
 #include "BenchCommand.h"
+#include "BenchMergeCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
 #include "NewCommand.h"
@@ -275,16 +277,26 @@ const shadowfx::cli::Command kCommands[] = {
       "--leave-out",
       "--time",
       "--peers",
-      "--peer-techniques"},
+      "--peer-techniques",
+      "--shard",
+      "--truth-cache"},
      {"--no-leave-out", "--no-batching"},
      shadowfx::cli::benchCommand,
+     -1},
+    {"bench merge",
+     "join the outputs of `bench --shard K/N` into one results.json, report and plot",
+     shadowfx::cli::kBenchMergeUsage,
+     {},
+     {},
+     {},
+     shadowfx::cli::benchMergeCommand,
      -1},
     {"check",
      "conformance: render every technique headlessly, check its expectations and golden images",
      shadowfx::cli::kCheckUsage,
      {},
      {"--technique", "--scenes", "--backend", "--junit", "--out", "--width", "--height", "--area-samples",
-      "--area-radius", "-I", "-D"},
+      "--area-radius", "--truth-cache", "-I", "-D"},
      {"--update", "--require-goldens", "--list-techniques", "--no-batching"},
      shadowfx::cli::checkCommand,
      -1},
@@ -293,7 +305,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kStressUsage,
      {},
      {"--effects", "--cases", "--techniques", "--width", "--height", "--map-size", "--uniform", "--backend",
-      "--out", "-I", "-D"},
+      "--out", "--truth-cache", "-I", "-D"},
      {"--reduced", "--list", "--strict"},
      shadowfx::cli::stressCommand,
      -1},

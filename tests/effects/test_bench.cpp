@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <set>
 
 namespace shadowfx::test {
@@ -454,6 +455,153 @@ TEST(Bench, CameraOrbitRedrawsViewDependentMaps) {
     EXPECT_GE(a["work"]["passes_left_out"].get<int>(), 1) << "a still camera reuses the map";
     EXPECT_EQ(b["work"]["passes_left_out"].get<int>(), 0) << "an orbiting one redraws it";
     EXPECT_EQ(a["error"]["misclassified_percent"], b["error"]["misclassified_percent"]);
+}
+
+// What may differ between two runs of one bench command, or between a sharded and an unsharded one: the
+// times, and whether the ground truth was cast or read from --truth-cache. Everything else must be equal.
+Json withoutTimes(Json value) {
+    static const std::set<std::string> kTimeKeys{"first_frame_ms", "frame_time_ms",  "gpu_time_ms", "gpu_ms",
+                                                 "cpu_ms",         "runtime_cpu_ms", "seconds",     "cached"};
+    if (value.is_object()) {
+        for (const std::string& key : kTimeKeys) value.erase(key);
+        for (auto& [key, sub] : value.items()) sub = withoutTimes(sub);
+    } else if (value.is_array()) {
+        for (Json& sub : value) sub = withoutTimes(sub);
+    }
+    return value;
+}
+
+std::string readFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// report.md with every number replaced by '#': its structure, row order and names, not its times.
+std::string withoutNumbers(const std::string& text) {
+    return std::regex_replace(text, std::regex("[0-9]+([.][0-9]+)?"), "#");
+}
+
+// A small sweep (two scenes, two map sizes, two settings, leave-out on and off: 16 runs) as one run and as
+// three shards sharing a truth cache, merged: the merged results.json must equal the single run's but for
+// times, and so its report (numbers aside) and error images; merge must refuse what is not the three
+// shards of this command.
+TEST(BenchShards, ThreeShardsMergeIntoTheSingleRun) {
+    const shadowfx::test::ScratchDirectory scratch("bench_shards");
+    const std::string sweep =
+        "bench --effects effects/esm.fx --scenes boxes,torus --map-sizes 256,512 --set Exponent=10,40 "
+        "--leave-out on,off --frames 1 --warmup 0 --width 96 --height 72";
+    std::string output;
+    ASSERT_EQ(runTool(sweep + " --out " + (scratch / "single").string(), output), 0) << output;
+    const Json single = readJson(scratch / "single/results.json");
+    ASSERT_EQ(single["runs"].size(), 16u);
+    EXPECT_TRUE(single["shard"].is_null());
+
+    const Json schema = readJson(std::filesystem::path(SHADOWFX_SOURCE_DIR) / "docs/results.schema.json");
+    std::string shardDirs;
+    for (int k = 1; k <= 3; ++k) {
+        const std::filesystem::path dir = scratch / ("shard" + std::to_string(k));
+        shardDirs += " " + dir.string();
+        output.clear();
+        ASSERT_EQ(runTool(sweep + " --shard " + std::to_string(k) + "/3 --truth-cache " +
+                              (scratch / "truths").string() + " --out " + dir.string(),
+                          output),
+                  0)
+            << output;
+        const Json shard = readJson(dir / "results.json");
+        EXPECT_TRUE(validate(shard, schema, schema, "$"));
+        EXPECT_EQ(shard["shard"], Json({{"index", k}, {"count", 3}, {"runs_total", 16}}));
+        EXPECT_EQ(shard["runs"].size(), k == 1 ? 6u : 5u);
+        for (const Json& run : shard["runs"]) EXPECT_EQ(run["run_index"].get<int>() % 3, k - 1);
+        // Shard 1 cast the truths; the later shards read them.
+        for (const Json& truth : shard["ground_truth"]) EXPECT_EQ(truth["cached"], k > 1) << truth.dump();
+        EXPECT_NE(readFile(dir / "report.md").find("Shard " + std::to_string(k) + " of 3"),
+                  std::string::npos);
+    }
+
+    const std::filesystem::path merged = scratch / "merged";
+    output.clear();
+    ASSERT_EQ(runTool("bench merge " + merged.string() + shardDirs, output), 0) << output;
+    const Json joined = readJson(merged / "results.json");
+    EXPECT_TRUE(validate(joined, schema, schema, "$"));
+    EXPECT_EQ(withoutTimes(joined), withoutTimes(single));
+    EXPECT_EQ(withoutNumbers(readFile(merged / "report.md")),
+              withoutNumbers(readFile(scratch / "single/report.md")));
+    EXPECT_TRUE(std::filesystem::exists(merged / "error_vs_time.svg"));
+    size_t images = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(scratch / "single/errors")) {
+        ++images;
+        EXPECT_EQ(readFile(merged / "errors" / entry.path().filename()), readFile(entry.path()))
+            << entry.path().filename();
+    }
+    EXPECT_EQ(images, 8u) << "one error image per setting, scene and map size";
+
+    // Not the three shards of this command: refused, saying why.
+    const auto refusal = [&](const std::string& dirs) {
+        std::string text;
+        EXPECT_EQ(runTool("bench merge " + (scratch / "refused").string() + dirs, text), 1) << text;
+        return text;
+    };
+    const std::string one = (scratch / "shard1").string(), two = (scratch / "shard2").string();
+    EXPECT_NE(refusal(" " + one + " " + two).find("missing shard 3/3 (of 3)"), std::string::npos);
+    EXPECT_NE(refusal(shardDirs + " " + two).find("shard 2/3 given twice"), std::string::npos);
+    EXPECT_NE(refusal(" " + one + " " + (scratch / "single").string()).find("not a shard"),
+              std::string::npos);
+    output.clear();
+    ASSERT_EQ(runTool(sweep + " --map-sizes 256 --shard 3/3 --truth-cache " + (scratch / "truths").string() +
+                          " --out " + (scratch / "other").string(),
+                      output),
+              0)
+        << output;
+    EXPECT_NE(refusal(" " + one + " " + two + " " + (scratch / "other").string())
+                  .find("are shards of different bench commands (their config differs in: map_sizes)"),
+              std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(scratch / "refused/results.json"));
+
+    output.clear();
+    EXPECT_EQ(runTool(sweep + " --shard 4/3 --out " + (scratch / "bad").string(), output), 2);
+    EXPECT_NE(output.find("--shard '4/3': K must be between 1 and N"), std::string::npos) << output;
+}
+
+// --truth-cache: a second run reads the truth and scores exactly as the first; a corrupted entry is named,
+// cast again and repaired, the errors again the same.
+TEST(BenchShards, TruthCacheHitScoresAlikeAndACorruptEntryIsCastAgain) {
+    const shadowfx::test::ScratchDirectory scratch("bench_truth_cache");
+    const std::filesystem::path cache = scratch / "truths";
+    const std::string bench =
+        "bench --effects effects/thesis_fxcomposer.fx --techniques main --scenes boxes "
+        "--map-sizes 256 --frames 1 --warmup 0 --width 96 --height 72 --truth-cache " +
+        cache.string() + " --out ";
+    std::string output;
+    const auto runInto = [&](const std::string& name) {
+        output.clear();
+        EXPECT_EQ(runTool(bench + (scratch / name).string(), output), 0) << output;
+        return readJson(scratch / name / "results.json");
+    };
+    const Json cast = runInto("cast");
+    EXPECT_EQ(cast["ground_truth"][0]["cached"], false);
+    const Json read = runInto("read");
+    EXPECT_EQ(read["ground_truth"][0]["cached"], true) << output;
+    EXPECT_NE(output.find("ground truth for boxes read from --truth-cache"), std::string::npos) << output;
+    ASSERT_TRUE(cast["runs"][0]["error"].is_object());
+    EXPECT_EQ(withoutTimes(read), withoutTimes(cast));
+
+    // Flip one byte in the middle of every entry (there is one: one scene at one size).
+    size_t entries = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(cache)) {
+        ++entries;
+        std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+        const auto middle = static_cast<std::streamoff>(std::filesystem::file_size(entry.path()) / 2);
+        file.seekg(middle);
+        const char byte = static_cast<char>(file.get() ^ 0x10);
+        file.seekp(middle);
+        file.put(byte);
+    }
+    EXPECT_EQ(entries, 1u);
+    const Json recast = runInto("recast");
+    EXPECT_NE(output.find("checksum mismatch (corrupted): cast again"), std::string::npos) << output;
+    EXPECT_EQ(recast["ground_truth"][0]["cached"], false);
+    EXPECT_EQ(withoutTimes(recast), withoutTimes(cast));
+    EXPECT_EQ(runInto("repaired")["ground_truth"][0]["cached"], true) << "the entry was written again";
 }
 
 TEST(PassTimings, TimedFramesReportEveryPassWithItsDraws) {

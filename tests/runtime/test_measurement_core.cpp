@@ -2,7 +2,7 @@
 // the non-finite checks and the compiled variants of an effect.
 #include <runtime/DiagnosticLog.h>
 #include <runtime/NonFiniteScan.h>
-#include <runtime/NumberFormat.h>
+#include <report/NumberFormat.h>
 #include <runtime/ShadowMeasurement.h>
 
 #include <gtest/gtest.h>
@@ -45,10 +45,10 @@ TEST(DiagnosticLog, TakeErrorsJoinsTheFirstFourAndMarks) {
 }
 
 TEST(NumberFormat, FixedDigitsAndPercentPrecision) {
-    EXPECT_EQ(runtime::formatFixed(0.125, 3), "0.125");
-    EXPECT_EQ(runtime::formatFixed(2.0, 2), "2.00");
-    EXPECT_EQ(runtime::formatPercent(0.0421), "0.042%");
-    EXPECT_EQ(runtime::formatPercent(12.54), "12.5%");
+    EXPECT_EQ(report::formatFixed(0.125, 3), "0.125");
+    EXPECT_EQ(report::formatFixed(2.0, 2), "2.00");
+    EXPECT_EQ(report::formatPercent(0.0421), "0.042%");
+    EXPECT_EQ(report::formatPercent(12.54), "12.5%");
 }
 
 TEST(NonFiniteScan, MatrixWithNanOrInfIsNotFinite) {

@@ -11,8 +11,27 @@
 
 namespace runtime {
 
+GroundTruth castOrReadTruth(const Scene& scene, const Light& light, const GBuffer& gbuffer,
+                            const GroundTruthOptions& options, const TruthCache* cache, bool& cached,
+                            std::string& note) {
+    cached = false;
+    note.clear();
+    if (!cache) return ShadowRayCaster(scene).compute(gbuffer, light, options);
+    const uint64_t key = truthKey(scene, light, gbuffer, options);
+    TruthCache::Lookup lookup = cache->load(key, gbuffer.width, gbuffer.height);
+    if (lookup.truth) {
+        cached = true;
+        return std::move(*lookup.truth);
+    }
+    if (!lookup.rejected.empty()) note = lookup.rejected + ": cast again";
+    GroundTruth truth = ShadowRayCaster(scene).compute(gbuffer, light, options);
+    std::string storeError;
+    if (!cache->store(key, truth, storeError)) note += (note.empty() ? "" : "; ") + storeError;
+    return truth;
+}
+
 bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const GroundTruthOptions& options,
-                       fx::DiagnosticSink& sink, std::string& error) {
+                       fx::DiagnosticSink& sink, std::string& error, const TruthCache* cache) {
     t.scene = std::move(scene);
     t.light = t.scene.findLight("light0");
     if (!t.light && !t.scene.lights.empty()) t.light = &t.scene.lights[0];
@@ -27,8 +46,7 @@ bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const 
         return false;
     }
     t.gbuffer = std::move(*gbuffer);
-    const ShadowRayCaster caster(t.scene);
-    t.truth = caster.compute(t.gbuffer, *t.light, options);
+    t.truth = castOrReadTruth(t.scene, *t.light, t.gbuffer, options, cache, t.cached, t.cacheNote);
     t.receivers = receiverMask(t.gbuffer, *t.light);
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;

@@ -12,10 +12,15 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace runtime {
+
+// What compute() returns for given inputs, versioned: raise it with any change to the rays, the sampling or
+// the offsets, and every cached truth of an older version (runtime/TruthCache.h) is cast again.
+constexpr uint32_t kGroundTruthVersion = 1;
 
 struct GroundTruthOptions {
     // Samples per pixel for area lights, rounded to a square (stratified sqrt x sqrt grid, jittered).

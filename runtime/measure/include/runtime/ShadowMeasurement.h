@@ -12,6 +12,7 @@
 #include <runtime/GroundTruth.h>
 #include <runtime/Scene.h>
 #include <runtime/ShadowMetrics.h>
+#include <runtime/TruthCache.h>
 
 #include <memory>
 #include <optional>
@@ -29,13 +30,24 @@ struct SceneTruth {
     GBuffer gbuffer;
     GroundTruth truth;
     std::vector<uint8_t> receivers;
-    double seconds = 0.0;  // G-buffer and rays
+    double seconds = 0.0;  // G-buffer and rays (or reading the cached truth)
+    bool cached = false;   // the truth was read from a TruthCache, not cast
+    // What the measurer should hear about the cache: an entry rejected (and cast again), or one that could
+    // not be stored. Empty when there was nothing to say.
+    std::string cacheNote;
 };
 
-// Fills `t` for `scene` at width x height (needs a current GL context). False with `error` set if the
-// scene has no light or its G-buffer cannot be rendered.
+// Fills `t` for `scene` at width x height (needs a current GL context). With a `cache`, the truth is read
+// from it when it holds an intact entry for exactly these inputs, else cast and stored there
+// (TruthCache.h). False with `error` set if the scene has no light or its G-buffer cannot be rendered.
 bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const GroundTruthOptions& options,
-                       fx::DiagnosticSink& sink, std::string& error);
+                       fx::DiagnosticSink& sink, std::string& error, const TruthCache* cache = nullptr);
+
+// The truth of `light` over `gbuffer` in `scene`: from `cache` when it has it (`cached` set), else cast and
+// stored there; without a cache, cast. `note` as SceneTruth::cacheNote.
+GroundTruth castOrReadTruth(const Scene& scene, const Light& light, const GBuffer& gbuffer,
+                            const GroundTruthOptions& options, const TruthCache* cache, bool& cached,
+                            std::string& note);
 
 // Parses and compiles the effect at `path` with `options` plus the `extra` preprocessor definitions; only
 // `technique` when one is named.

@@ -1,10 +1,10 @@
 // NumberFormat: see NumberFormat.h.
-#include <runtime/NumberFormat.h>
+#include <report/NumberFormat.h>
 
 #include <iomanip>
 #include <sstream>
 
-namespace runtime {
+namespace report {
 
 std::string formatFixed(double value, int digits) {
     std::ostringstream out;
@@ -16,4 +16,4 @@ std::string formatPercent(double value) {
     return formatFixed(value, value < 10.0 ? 3 : 1) + "%";
 }
 
-}  // namespace runtime
+}  // namespace report

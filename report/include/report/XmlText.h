@@ -3,9 +3,9 @@
 
 #include <string>
 
-namespace shadowfx::cli {
+namespace report {
 
 // `text` with &, <, >, " and ' escaped and the control characters XML 1.0 forbids dropped.
 std::string xmlEscape(const std::string& text);
 
-}  // namespace shadowfx::cli
+}  // namespace report

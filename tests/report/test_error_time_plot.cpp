@@ -1,8 +1,8 @@
-// The bench's error-vs-time plot (samples/shadowfx/ErrorTimePlot.h): read back from the SVG it writes, no
+// The bench's error-vs-time plot (report/ErrorTimePlot.h): read back from the SVG it writes, no
 // two label boxes overlap and none covers a marker, even when the points cluster (a sweep whose settings
 // barely change time or error), and every run's label is either beside its marker or in the table of
 // numbered labels.
-#include "ErrorTimePlot.h"
+#include <report/ErrorTimePlot.h>
 #include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
@@ -61,11 +61,11 @@ bool overlap(const Rect& a, const Rect& b) {
 }
 
 // Writes the plot of `points` and checks it: returns the SVG.
-std::string plotAndCheck(const std::vector<cli::PlotPoint>& points, const std::string& name) {
+std::string plotAndCheck(const std::vector<report::PlotPoint>& points, const std::string& name) {
     const ScratchDirectory scratch("plot");
     const std::filesystem::path path = scratch / (name + ".svg");
     std::string error;
-    EXPECT_TRUE(cli::writeErrorTimePlot(path.string(), points, "full cost: every pass drawn", error))
+    EXPECT_TRUE(report::writeErrorTimePlot(path.string(), points, "full cost: every pass drawn", error))
         << error;
     const std::string svg = readText(path);
     const std::vector<Rect> boxes = labelBoxes(svg);
@@ -91,20 +91,20 @@ std::string plotAndCheck(const std::vector<cli::PlotPoint>& points, const std::s
 TEST(ErrorTimePlot, ClusteredPointsGetLabelsThatOverlapNothing) {
     // 40 runs within 1 % of each other in time and a few thousandths of a percent in error: a naive label
     // at a fixed offset from each marker would pile 40 labels onto one spot.
-    std::vector<cli::PlotPoint> points;
+    std::vector<report::PlotPoint> points;
     for (int i = 0; i < 40; ++i)
-        points.push_back(cli::PlotPoint{10.0 + 0.0025 * i, 0.5 + 0.001 * (i % 5),
-                                        "esm/esm (Exponent=" + std::to_string(10 + i) + ") 1024",
-                                        i % 2 ? "dual-l" : "teapot"});
+        points.push_back(report::PlotPoint{10.0 + 0.0025 * i, 0.5 + 0.001 * (i % 5),
+                                           "esm/esm (Exponent=" + std::to_string(10 + i) + ") 1024",
+                                           i % 2 ? "dual-l" : "teapot"});
     const std::string svg = plotAndCheck(points, "clustered");
     EXPECT_NE(svg.find("class=\"leader\""), std::string::npos) << "labels moved away get leader lines";
     EXPECT_NE(svg.find("numbered points:"), std::string::npos) << "a cluster this tight needs the table";
 }
 
 TEST(ErrorTimePlot, PointsApartKeepTheirLabelsBesideThem) {
-    const std::vector<cli::PlotPoint> points{{1.0, 0.1, "pcf/bilinear 1024", "boxes"},
-                                             {10.0, 2.0, "thesis_fxcomposer/main 1024", "boxes"},
-                                             {100.0, 5.0, "vsm/vsm_blur 1024", "teapot"}};
+    const std::vector<report::PlotPoint> points{{1.0, 0.1, "pcf/bilinear 1024", "boxes"},
+                                                {10.0, 2.0, "thesis_fxcomposer/main 1024", "boxes"},
+                                                {100.0, 5.0, "vsm/vsm_blur 1024", "teapot"}};
     const std::string svg = plotAndCheck(points, "apart");
     EXPECT_EQ(labelBoxes(svg).size(), 3u);
     EXPECT_EQ(svg.find("numbered points:"), std::string::npos) << svg;

@@ -1,9 +1,9 @@
-#include "LabelPlacement.h"
+#include <report/LabelPlacement.h>
 
 #include <cmath>
 #include <numbers>
 
-namespace shadowfx::cli {
+namespace report {
 
 namespace {
 
@@ -91,4 +91,4 @@ std::vector<PlacedLabel> placeLabels(const std::vector<std::pair<double, double>
     return placed;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace report

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowfx::cli {
+namespace report {
 
 struct Box {
     double x = 0, y = 0, width = 0, height = 0;  // top-left corner, in pixels (y down)
@@ -43,4 +43,4 @@ std::vector<PlacedLabel> placeLabels(const std::vector<std::pair<double, double>
                                      const std::vector<std::string>& labels, const Box& area,
                                      const LabelStyle& style);
 
-}  // namespace shadowfx::cli
+}  // namespace report

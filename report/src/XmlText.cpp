@@ -1,6 +1,6 @@
-#include "XmlText.h"
+#include <report/XmlText.h>
 
-namespace shadowfx::cli {
+namespace report {
 
 std::string xmlEscape(const std::string& text) {
     std::string out;
@@ -29,4 +29,4 @@ std::string xmlEscape(const std::string& text) {
     return out;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace report

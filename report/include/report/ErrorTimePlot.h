@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace shadowfx::cli {
+namespace report {
 
 struct PlotPoint {
     double timeMs = 0;
@@ -25,4 +25,4 @@ std::vector<size_t> paretoFront(const std::vector<std::pair<double, double>>& po
 bool writeErrorTimePlot(const std::string& path, const std::vector<PlotPoint>& points,
                         const std::string& timeAxis, std::string& error);
 
-}  // namespace shadowfx::cli
+}  // namespace report

@@ -1,6 +1,6 @@
-#include "ErrorTimePlot.h"
-#include "LabelPlacement.h"
-#include "XmlText.h"
+#include <report/ErrorTimePlot.h>
+#include <report/LabelPlacement.h>
+#include <report/XmlText.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <map>
 #include <sstream>
 
-namespace shadowfx::cli {
+namespace report {
 
 namespace {
 
@@ -234,4 +234,4 @@ bool writeErrorTimePlot(const std::string& path, const std::vector<PlotPoint>& p
     return true;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace report

@@ -3,10 +3,10 @@
 
 #include <string>
 
-namespace runtime {
+namespace report {
 
 std::string formatFixed(double value, int digits);  // "0.125" for (0.125, 3)
 // A percentage with three decimals below 10 and one above: "0.042%", "12.5%".
 std::string formatPercent(double value);
 
-}  // namespace runtime
+}  // namespace report
