@@ -102,7 +102,8 @@ private:
     // [N][M]... after a name
     void parseArrayDims(TypeDesc& type);
     // ": SEMANTIC", skipping ": register(...)" and ": packoffset(...)".
-    std::string parseSemantics();
+    // `samplerRegister`: where a `register(sN)` among them names N.
+    std::string parseSemantics(int* samplerRegister = nullptr);
     void skipBalanced(const char* open, const char* close);
 
     // [SECTION] Top level

@@ -100,6 +100,9 @@ struct Parameter {
     bool isUniform = false;  // written `uniform`
     bool isShared = false;
     bool isExtern = false;
+    // `: register(sN)`: the D3D9 sampler register N a pass's `MinFilter[N] = ...` reaches; -1 when the
+    // compiler assigns it (the used samplers in declaration order, as fxc did).
+    int samplerRegister = -1;
     SourceLoc loc;  // the name's location
     // For static globals only: the whole declaration as HLSL text from the preprocessed source.
     std::string hlslText;
