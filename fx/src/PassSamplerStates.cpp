@@ -10,32 +10,20 @@
 #include "Compiler.h"
 #include "StateAssignments.h"
 
+#include <fx/StageReads.h>
+
 #include <algorithm>
-#include <cctype>
 #include <set>
 
 namespace fx::detail {
 
 namespace {
 
-// True if `glsl` names `identifier` past its declaration: SPIRV-Cross declares every sampler the effect
-// declares in every stage, read or not, so a read is a second mention.
-bool reads(const std::string& glsl, const std::string& identifier) {
-    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    int mentions = 0;
-    for (size_t at = glsl.find(identifier); at != std::string::npos; at = glsl.find(identifier, at + 1)) {
-        const size_t end = at + identifier.size();
-        if ((at == 0 || !word(glsl[at - 1])) && (end == glsl.size() || !word(glsl[end])) && ++mentions > 1)
-            return true;
-    }
-    return false;
-}
-
 // The D3D9 register of each sampler parameter the stage samples through a combined sampler.
 std::map<size_t, int> samplerRegisters(const Effect& effect, const StageProgram& stage) {
     std::set<size_t> used;
     for (const SamplerBinding& b : stage.samplers)
-        if (b.pairTexture.empty() && b.samplerParameter != kNoSampler && reads(stage.glsl, b.glslName))
+        if (b.pairTexture.empty() && b.samplerParameter != kNoSampler && stageReads(stage, b.glslName))
             used.insert(b.samplerParameter);
     std::map<size_t, int> registers;
     std::set<int> taken;
