@@ -113,5 +113,27 @@ TEST(PointStates, SpriteTexcoordsRunFromTopLeftToBottomRight) {
         }
 }
 
+// What the pixel shader reads cannot follow a tweakable: a PointSpriteEnable that is not a constant is a
+// located error at the state.
+TEST(PointStates, SpritesFromAParameterAreALocatedError) {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectSource(
+        "bool Sprites = true;\n"
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR { return float4(uv, 0, 1); }\n"
+        "technique t { pass p { PointSpriteEnable = Sprites; PixelShader = compile ps_3_0 PS(); } }\n",
+        "sprites.fx", {}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics));
+    ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics.str();
+    const fx::Diagnostic& d = diagnostics.items()[0];
+    EXPECT_EQ(d.id, fx::DiagId::InvalidStateValue);
+    EXPECT_EQ(d.loc.line, 3);
+    EXPECT_EQ(d.loc.column, 24);
+    EXPECT_EQ(d.message,
+              "invalid value for state 'PointSpriteEnable': must be a constant (it decides what the "
+              "pixel shader reads)");
+}
+
 }  // namespace
 }  // namespace shadowfx::test
