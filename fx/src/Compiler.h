@@ -2,6 +2,7 @@
 // defined in the files named after them:
 //   EffectCompiler.cpp       initial values, parameter info, passes and techniques, run()
 //   ResourceDescriptors.cpp  textures, samplers and their units
+//   PassSamplerStates.cpp    a D3D9 pass's sampler-register states on the samplers they reach
 //   ScriptValidation.cpp     SAS scripts checked and resolved against the effect
 //   StageCompilation.cpp     lowering, the cache, glslang and SPIRV-Cross (in workers or here), reflection
 //   HlslMessages.cpp         glslang's and SPIRV-Cross's messages said at the user's source
@@ -67,6 +68,12 @@ private:
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
     void resourceShape(const Parameter& p, TextureDesc& t);
     void samplers();
+    void applySamplerState(const StateAssignment& a, BaseType samplerType, SamplerDesc& s,
+                           bool& hasComparison);
+    // The D3D9 sampler-register states of every pass (`MinFilter[0] = LINEAR;`), once its stages compiled.
+    void passSamplerStates();
+    void passSamplerStates(const Pass& source, CompiledPass& pass);
+    void pointSprites(CompiledPass& pass);
     void assignPairUnits();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
@@ -111,6 +118,8 @@ private:
     // (UnsupportedFeature), held back until run() knows whether another technique can run.
     std::vector<Diagnostic> mTechniqueUnsupported;
     std::vector<PendingStage> mPending;
+    // The passes that set sampler-register states, by where they stand in mOut.
+    std::vector<std::pair<PassSlot, const Pass*>> mSamplerRegisterPasses;
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;
 };

@@ -108,6 +108,16 @@ bool foldConstant(const Effect& effect, const Expr& e, double& out, int depth) {
                 out = static_cast<double>(ia * (int64_t{1} << ib));
             else if (e.text == ">>" && ib >= 0 && ib < 32)
                 out = static_cast<double>(ia >> ib);
+            else if (e.text == "<" || e.text == "<=" || e.text == ">" || e.text == ">=" || e.text == "==" ||
+                     e.text == "!=")  // a loop's condition over its counter
+                out = e.text == "<"    ? a < b
+                      : e.text == "<=" ? a <= b
+                      : e.text == ">"  ? a > b
+                      : e.text == ">=" ? a >= b
+                      : e.text == "==" ? a == b
+                                       : a != b;
+            else if (e.text == "&&" || e.text == "||")
+                out = e.text == "&&" ? (a != 0 && b != 0) : (a != 0 || b != 0);
             else
                 return false;
             return true;

@@ -7,7 +7,7 @@
 namespace fx::detail {
 
 // A compile-time constant: literals, the effect's `static const` / `const` scalars declared before
-// (D3D9 sizes arrays with them: `float4x3 m[MAX_MATRICES]`), casts and integer arithmetic.
+// (D3D9 sizes arrays with them: `float4x3 m[MAX_MATRICES]`), casts, integer arithmetic and comparisons.
 bool foldConstant(const Effect& effect, const Expr& e, double& out, int depth = 0);
 
 }  // namespace fx::detail

@@ -6,6 +6,8 @@
 
 #include "Compiler.h"
 #include "MacroNoteSink.h"
+#include "PointSprites.h"
+#include "StateAssignments.h"
 #include "TechniqueSupport.h"
 
 #include <algorithm>
@@ -199,8 +201,26 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     for (const StateAssignment& s : p.states)
         if (findRenderState(s.name) == RenderStateId::VertexShader)
             if (const Expr* compile = shaderExpr(s)) compileStage(*compile, ShaderStage::Vertex, pass, slot);
+    // Point sprites gave the pixel shader's texture coordinates the position in the sprite, whether the
+    // vertex shader wrote them or not: they stay inputs, which pointSprites() then reads from gl_PointCoord.
+    bool sprites = false;
+    for (const StateAssignment& s : p.states)
+        if (findRenderState(s.name) == RenderStateId::PointSpriteEnable)
+            sprites = (s.value.kind == Expr::Kind::Number || s.value.kind == Expr::Kind::Bool) &&
+                      s.value.number != 0;
+    if (sprites && mPreviousOutputs) {
+        TypeDesc float4;
+        float4.shape = Shape::Vector;
+        float4.cols = 4;
+        for (int texcoord = 0; texcoord < 8; ++texcoord) mPreviousOutputs->try_emplace(texcoord, float4);
+    }
+    bool setsSamplerRegisters = false;
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
+        if (!id && isSamplerRegisterState(s.name)) {
+            setsSamplerRegisters = true;  // applied once the stages compiled (passSamplerStates)
+            continue;
+        }
         if (!id) {
             error(DiagId::UnknownState, s.loc, {s.name});
             continue;
@@ -234,10 +254,27 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         if (!setting.constant) setting.value = compilePreshader(s.value, slotResolver(), nullptr);
         pass.states.push_back(std::move(setting));
     }
+    if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
     passAnnotations(p, pass);
     pass.script = script(p.annotations, pass.hasScript);
     validateScript(pass.script, nullptr);
     return pass;
+}
+
+// PointSpriteEnable = TRUE: the pixel shader's texture coordinates are the position in the point. It
+// decides what the pixel shader reads, so it is a constant, and the last setting of the pass counts.
+void Compiler::pointSprites(CompiledPass& pass) {
+    const RenderStateSetting* sprites = nullptr;
+    for (const RenderStateSetting& setting : pass.states)
+        if (setting.id == RenderStateId::PointSpriteEnable) sprites = &setting;
+    if (!sprites) return;
+    if (!sprites->constant) {
+        error(DiagId::InvalidStateValue, sprites->loc,
+              {"PointSpriteEnable", "must be a constant (it decides what the pixel shader reads)"});
+        return;
+    }
+    if (*sprites->constant != 0.0 && !pass.fragment.glsl.empty())
+        readPointSpriteCoordinates(pass.fragment.glsl);
 }
 
 std::unique_ptr<CompiledEffect> Compiler::run() {
@@ -270,6 +307,8 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
             const size_t index = mOut->techniques.size();
             std::erase_if(mPending,
                           [index](const PendingStage& stage) { return stage.slot.technique == index; });
+            std::erase_if(mSamplerRegisterPasses,
+                          [index](const auto& p) { return p.first.technique == index; });
             invalid.emplace_back(&t, std::move(mTechniqueUnsupported));
             continue;
         }
@@ -280,9 +319,12 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         mFailed = true;
     finishPendingStages();
     for (CompiledTechnique& technique : mOut->techniques)
-        for (CompiledPass& pass : technique.passes)
+        for (CompiledPass& pass : technique.passes) {
             if (blendsDualSource(pass)) declareDualSourceOutput(pass.fragment.glsl);
+            pointSprites(pass);
+        }
     assignPairUnits();
+    passSamplerStates();
     // A file without techniques compiles, as under fxc and D3DX: an effect pool's shared parameters,
     // declarations for other effects. Only running it needs a technique (the runtime says so).
     if (!found)

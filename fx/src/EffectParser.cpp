@@ -354,11 +354,19 @@ void Parser::parseArrayDims(TypeDesc& type) {
     }
 }
 
-std::string Parser::parseSemantics() {
+std::string Parser::parseSemantics(int* samplerRegister) {
     std::string semantic;
     while (check(":")) {
         advance();
         const Token& name = expectIdentifier("a semantic");
+        // `register(s3)`: the sampler register D3D9 passes address by index (`MinFilter[3] = ...`).
+        if (samplerRegister && name.text == "register" && check("(") &&
+            peek(1).kind == Token::Kind::Identifier && peek(2).is(")")) {
+            const std::string& reg = peek(1).text;
+            if (reg.size() > 1 && (reg[0] == 's' || reg[0] == 'S') &&
+                reg.find_first_not_of("0123456789", 1) == std::string::npos && reg.size() < 5)
+                *samplerRegister = std::stoi(reg.substr(1));
+        }
         if ((name.text == "register" || name.text == "packoffset") && check("(")) {
             skipBalanced("(", ")");
             continue;

@@ -255,7 +255,7 @@ void Parser::parseDeclaration(bool inBuffer) {
         parameter.isShared = storage.isShared;
         parameter.isExtern = storage.isExtern;
         parseArrayDims(parameter.type);
-        parameter.semantic = parseSemantics();
+        parameter.semantic = parseSemantics(&parameter.samplerRegister);
         if (check("<")) parameter.annotations = parseAnnotations();
         endsInBlock = check("{");
         if (parameter.type.isSampler() && check("{")) {

@@ -127,9 +127,7 @@ std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, siz
     try {
         mPos = begin;
         while (mPos < end) parseStraightStatement(body);
-        if (mPos != end || body.empty() || body.back().kind != Statement::Kind::Return) body.clear();
-        for (size_t i = 0; i + 1 < body.size(); ++i)
-            if (body[i].kind == Statement::Kind::Return) body.clear();
+        if (mPos != end || !endsInReturns(body)) body.clear();
     } catch (const SyntaxError&) {
         body.clear();
     }
@@ -152,6 +150,20 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         }
         return;
     }
+    // Loop attributes ([unroll], [loop], [unroll(8)], [fastopt]) change how fxc compiled a loop, not
+    // what it computes.
+    if (check("[") && peek(1).kind == Token::Kind::Identifier && (peek(2).is("]") || peek(2).is("("))) {
+        advance();
+        advance();
+        if (check("(")) skipBalanced("(", ")");
+        expect("]");
+    }
+    if (accept("for") || (check("while") && !peek(1).is(";"))) {
+        const bool isFor = mTokens[mPos - 1].is("for");
+        if (!isFor) advance();
+        parseStraightLoop(isFor, out);
+        return;
+    }
     Statement statement;
     if (accept("if")) {
         statement.kind = Statement::Kind::If;
@@ -160,9 +172,6 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         expect(")");
         parseStraightStatement(statement.then);
         if (accept("else")) parseStraightStatement(statement.otherwise);
-        for (const std::vector<Statement>* branch : {&statement.then, &statement.otherwise})
-            for (const Statement& s : *branch)
-                if (s.kind == Statement::Kind::Return) throw SyntaxError{};
         out.push_back(std::move(statement));
         return;
     }
@@ -170,15 +179,7 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         statement.kind = Statement::Kind::Return;
         statement.value = parseExpr();
         statement.hasValue = true;
-    } else if (peek().kind == Token::Kind::Identifier &&
-               (isAssignment(peek(1)) ||
-                (peek(1).is(".") && peek(2).kind == Token::Kind::Identifier && isAssignment(peek(3))))) {
-        statement.kind = Statement::Kind::Assign;
-        statement.name = advance().text;
-        if (accept(".")) statement.member = advance().text;
-        statement.op = advance().text;
-        statement.value = parseExpr();
-        statement.hasValue = true;
+    } else if (parseStraightAssignment(statement)) {
     } else {
         accept("const");
         accept("static");
@@ -201,6 +202,108 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
     }
     expect(";");
     out.push_back(std::move(statement));
+}
+
+bool Parser::parseStraightAssignment(FunctionDecl::Statement& statement) {
+    using Statement = FunctionDecl::Statement;
+    auto one = [&](const Token& at) {
+        Expr e;
+        e.kind = Expr::Kind::Number;
+        e.number = 1;
+        e.isInteger = true;
+        e.loc = at.loc;
+        return e;
+    };
+    // ++i, --i
+    if ((check("++") || check("--")) && peek(1).kind == Token::Kind::Identifier) {
+        const Token& op = advance();
+        statement.kind = Statement::Kind::Assign;
+        statement.name = advance().text;
+        statement.op = op.is("++") ? "+=" : "-=";
+        statement.value = one(op);
+        statement.hasValue = true;
+        return true;
+    }
+    if (peek().kind != Token::Kind::Identifier) return false;
+    // i++, i--
+    if (peek(1).is("++") || peek(1).is("--")) {
+        statement.kind = Statement::Kind::Assign;
+        statement.name = advance().text;
+        const Token& op = advance();
+        statement.op = op.is("++") ? "+=" : "-=";
+        statement.value = one(op);
+        statement.hasValue = true;
+        return true;
+    }
+    if (!isAssignment(peek(1)) &&
+        !(peek(1).is(".") && peek(2).kind == Token::Kind::Identifier && isAssignment(peek(3))))
+        return false;
+    statement.kind = Statement::Kind::Assign;
+    statement.name = advance().text;
+    if (accept(".")) statement.member = advance().text;
+    statement.op = advance().text;
+    statement.value = parseExpr();
+    statement.hasValue = true;
+    return true;
+}
+
+void Parser::parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>& out) {
+    using Statement = FunctionDecl::Statement;
+    Statement loop;
+    loop.kind = Statement::Kind::Loop;
+    expect("(");
+    if (isFor) {
+        if (!accept(";")) parseStraightStatement(out);  // the first part, up to its ';'
+        if (check(";")) throw SyntaxError{};            // no condition: no bound to unroll by
+        loop.value = parseExpr();
+        expect(";");
+        while (!check(")")) {
+            Statement step;
+            if (!parseStraightAssignment(step)) throw SyntaxError{};
+            loop.otherwise.push_back(std::move(step));
+            if (!accept(",")) break;
+        }
+    } else {
+        loop.value = parseExpr();
+    }
+    expect(")");
+    parseStraightStatement(loop.then);
+    if (containsReturn(loop.then)) throw SyntaxError{};  // leaving a loop early: not unrolled here
+    out.push_back(std::move(loop));
+}
+
+bool Parser::containsReturn(const std::vector<FunctionDecl::Statement>& statements) {
+    for (const FunctionDecl::Statement& s : statements)
+        if (s.kind == FunctionDecl::Statement::Kind::Return || containsReturn(s.then) ||
+            containsReturn(s.otherwise))
+            return true;
+    return false;
+}
+
+// An early return (`if (x < 0) return 0; ... return sqrt(x);`) reads as if the rest of the body were the
+// branch's `else`: after this, every path through `statements` ends in a return exactly where it ends,
+// which is what the inliner turns into `condition ? then : otherwise`. False where some path does not end
+// in one (a return in the middle of a list, or a path that runs off the end).
+bool Parser::endsInReturns(std::vector<FunctionDecl::Statement>& statements) {
+    using Statement = FunctionDecl::Statement;
+    for (size_t i = 0; i < statements.size(); ++i) {
+        Statement& s = statements[i];
+        if (s.kind == Statement::Kind::Return) return i + 1 == statements.size();
+        if (s.kind != Statement::Kind::If || !(containsReturn(s.then) || containsReturn(s.otherwise)))
+            continue;
+        // The rest of the list runs after whichever branch does not return: move it there.
+        std::vector<Statement> rest(std::make_move_iterator(statements.begin() + static_cast<long>(i) + 1),
+                                    std::make_move_iterator(statements.end()));
+        statements.resize(i + 1);
+        for (std::vector<Statement>* branch : {&s.then, &s.otherwise})
+            if (branch->empty() || branch->back().kind != Statement::Kind::Return) {
+                std::vector<Statement> copy = rest;
+                branch->insert(branch->end(), std::make_move_iterator(copy.begin()),
+                               std::make_move_iterator(copy.end()));
+            }
+        return endsInReturns(s.then) && endsInReturns(s.otherwise);
+    }
+    return false;
 }
 
 }  // namespace fx::detail

@@ -178,6 +178,10 @@ void Parser::parsePassState(Pass& pass) {
     mStates.normalizeNull(state.value);
     expect(";");
     std::optional<RenderStateId> id = findRenderState(state.name);
+    if (!id && isSamplerRegisterState(state.name)) {
+        if (mStates.resolveSamplerRegisterState(state)) pass.states.push_back(std::move(state));
+        return;
+    }
     if (!id) {
         if (equalsIgnoreCase(state.name, "GeometryShader") && state.value.kind == Expr::Kind::Identifier &&
             state.value.text == "NULL")

@@ -102,7 +102,8 @@ private:
     // [N][M]... after a name
     void parseArrayDims(TypeDesc& type);
     // ": SEMANTIC", skipping ": register(...)" and ": packoffset(...)".
-    std::string parseSemantics();
+    // `samplerRegister`: where a `register(sN)` among them names N.
+    std::string parseSemantics(int* samplerRegister = nullptr);
     void skipBalanced(const char* open, const char* close);
 
     // [SECTION] Top level
@@ -140,6 +141,12 @@ private:
     // One statement (a block's statements, a declaration's declarators) appended to `out`; throws
     // SyntaxError on anything else (loops, calls for their effect, returns inside branches).
     void parseStraightStatement(std::vector<FunctionDecl::Statement>& out);
+    // `x = e`, `x.yz += e`, `i++`, `--i` (no ';'); false, consuming nothing, if the tokens are none of them.
+    bool parseStraightAssignment(FunctionDecl::Statement& statement);
+    // `for (init; condition; step) body` and `while (condition) body`, the keyword read.
+    void parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>& out);
+    static bool containsReturn(const std::vector<FunctionDecl::Statement>& statements);
+    static bool endsInReturns(std::vector<FunctionDecl::Statement>& statements);
 
     // [SECTION] Annotations
 

@@ -236,6 +236,110 @@ void Compiler::procedural(const Parameter& p, const Annotation& annotation, Text
     }
 }
 
+// One sampler state (a sampler_state block's, or a D3D9 pass's `MinFilter[N] = ...`) written into `s`.
+void Compiler::applySamplerState(const StateAssignment& a, BaseType samplerType, SamplerDesc& s,
+                                 bool& hasComparison) {
+    auto id = findSamplerState(a.name);
+    if (!id) {
+        error(DiagId::UnknownState, a.loc, {a.name});
+        return;
+    }
+    const StateInfo& info = samplerStateInfo(*id);
+    if (*id == SamplerStateId::Texture) {
+        auto it = mIndex.find(a.value.text);
+        if (it == mIndex.end())
+            error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
+        else if (const TypeDesc& type = mEffect.parameters[it->second].type; !type.isTexture())
+            // Declared, but of the wrong type: say so in the author's terms.
+            error(DiagId::InvalidStateValue, a.value.loc,
+                  {a.name, "'" + a.value.text + "' is a " + type.hlslName() + " parameter, not a texture"});
+        else
+            s.texture = it->second;
+        // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.
+        if (s.texture && mEffect.parameters[*s.texture].type.base == BaseType::Texture &&
+            (samplerType == BaseType::SamplerCube || samplerType == BaseType::Sampler3D)) {
+            for (TextureDesc& t : mOut->textures)
+                if (t.parameter == *s.texture)
+                    t.type =
+                        samplerType == BaseType::SamplerCube ? BaseType::TextureCube : BaseType::Texture3D;
+        }
+        return;
+    }
+    std::vector<float> value;
+    if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
+        auto e = findEnumValue(info.domain, a.value.text);
+        if (!e) {
+            error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
+            return;
+        }
+        value = {static_cast<float>(*e)};
+    } else if (auto v = eval(a.value, nullptr)) {
+        value = v->data;
+    } else {
+        return;
+    }
+    if (value.empty()) return;
+    int n = static_cast<int>(value[0]);
+    switch (*id) {
+        case SamplerStateId::AddressU:
+            s.addressU = n;
+            break;
+        case SamplerStateId::AddressV:
+            s.addressV = n;
+            break;
+        case SamplerStateId::AddressW:
+            s.addressW = n;
+            break;
+        case SamplerStateId::MinFilter:
+            s.minFilter = n;
+            break;
+        case SamplerStateId::MagFilter:
+            s.magFilter = n;
+            break;
+        case SamplerStateId::MipFilter:
+            s.mipFilter = n;
+            break;
+        case SamplerStateId::MaxAnisotropy:
+            s.maxAnisotropy = n;
+            break;
+        case SamplerStateId::MipMapLodBias:
+            s.mipLodBias = value[0];
+            break;
+        case SamplerStateId::MinLOD:
+            s.minLod = std::max(value[0], -1000.0f);
+            break;
+        case SamplerStateId::MaxLOD:
+            s.maxLod = std::min(value[0], 1000.0f);
+            break;
+        case SamplerStateId::ComparisonFunc:
+            s.comparisonFunc = n;
+            break;
+        case SamplerStateId::BorderColor:
+            if (value.size() >= 4) {
+                for (int k = 0; k < 4; ++k) s.borderColor[k] = value[static_cast<size_t>(k)];
+            } else {  // packed D3DCOLOR 0xAARRGGBB
+                auto c = static_cast<uint32_t>(static_cast<int64_t>(value[0]));
+                s.borderColor[0] = static_cast<float>((c >> 16) & 255) / 255.0f;
+                s.borderColor[1] = static_cast<float>((c >> 8) & 255) / 255.0f;
+                s.borderColor[2] = static_cast<float>(c & 255) / 255.0f;
+                s.borderColor[3] = static_cast<float>((c >> 24) & 255) / 255.0f;
+            }
+            break;
+        case SamplerStateId::Filter: {
+            // D3D10_FILTER bits: mip linear 0x1, mag linear 0x4, min linear 0x10, anisotropic 0x40,
+            // comparison 0x80.
+            auto tex = [&](int bit) { return (n & 0x40) ? 3 : ((n & bit) ? 2 : 1); };
+            s.minFilter = tex(0x10);
+            s.magFilter = tex(0x04);
+            s.mipFilter = (n & 0x01) ? 2 : 1;
+            hasComparison = (n & 0x80) != 0;
+            break;
+        }
+        default:
+            break;
+    }
+}
+
 void Compiler::samplers() {
     int unit = 0;
     for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
@@ -257,108 +361,7 @@ void Compiler::samplers() {
             mSamplerUnits[p.name] = unit++;  // D3D10 samplers get units per (texture, sampler) pair
         }
         bool hasComparison = false;
-        for (const StateAssignment& a : p.samplerState) {
-            auto id = findSamplerState(a.name);
-            if (!id) {
-                error(DiagId::UnknownState, a.loc, {a.name});
-                continue;
-            }
-            const StateInfo& info = samplerStateInfo(*id);
-            if (*id == SamplerStateId::Texture) {
-                auto it = mIndex.find(a.value.text);
-                if (it == mIndex.end())
-                    error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
-                else if (const TypeDesc& type = mEffect.parameters[it->second].type; !type.isTexture())
-                    // Declared, but of the wrong type: say so in the author's terms.
-                    error(DiagId::InvalidStateValue, a.value.loc,
-                          {a.name,
-                           "'" + a.value.text + "' is a " + type.hlslName() + " parameter, not a texture"});
-                else
-                    s.texture = it->second;
-                // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.
-                if (s.texture && mEffect.parameters[*s.texture].type.base == BaseType::Texture &&
-                    (p.type.base == BaseType::SamplerCube || p.type.base == BaseType::Sampler3D)) {
-                    for (TextureDesc& t : mOut->textures)
-                        if (t.parameter == *s.texture)
-                            t.type = p.type.base == BaseType::SamplerCube ? BaseType::TextureCube
-                                                                          : BaseType::Texture3D;
-                }
-                continue;
-            }
-            std::vector<float> value;
-            if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
-                auto e = findEnumValue(info.domain, a.value.text);
-                if (!e) {
-                    error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
-                    continue;
-                }
-                value = {static_cast<float>(*e)};
-            } else if (auto v = eval(a.value, nullptr)) {
-                value = v->data;
-            } else {
-                continue;
-            }
-            if (value.empty()) continue;
-            int n = static_cast<int>(value[0]);
-            switch (*id) {
-                case SamplerStateId::AddressU:
-                    s.addressU = n;
-                    break;
-                case SamplerStateId::AddressV:
-                    s.addressV = n;
-                    break;
-                case SamplerStateId::AddressW:
-                    s.addressW = n;
-                    break;
-                case SamplerStateId::MinFilter:
-                    s.minFilter = n;
-                    break;
-                case SamplerStateId::MagFilter:
-                    s.magFilter = n;
-                    break;
-                case SamplerStateId::MipFilter:
-                    s.mipFilter = n;
-                    break;
-                case SamplerStateId::MaxAnisotropy:
-                    s.maxAnisotropy = n;
-                    break;
-                case SamplerStateId::MipMapLodBias:
-                    s.mipLodBias = value[0];
-                    break;
-                case SamplerStateId::MinLOD:
-                    s.minLod = std::max(value[0], -1000.0f);
-                    break;
-                case SamplerStateId::MaxLOD:
-                    s.maxLod = std::min(value[0], 1000.0f);
-                    break;
-                case SamplerStateId::ComparisonFunc:
-                    s.comparisonFunc = n;
-                    break;
-                case SamplerStateId::BorderColor:
-                    if (value.size() >= 4) {
-                        for (int k = 0; k < 4; ++k) s.borderColor[k] = value[static_cast<size_t>(k)];
-                    } else {  // packed D3DCOLOR 0xAARRGGBB
-                        auto c = static_cast<uint32_t>(static_cast<int64_t>(value[0]));
-                        s.borderColor[0] = static_cast<float>((c >> 16) & 255) / 255.0f;
-                        s.borderColor[1] = static_cast<float>((c >> 8) & 255) / 255.0f;
-                        s.borderColor[2] = static_cast<float>(c & 255) / 255.0f;
-                        s.borderColor[3] = static_cast<float>((c >> 24) & 255) / 255.0f;
-                    }
-                    break;
-                case SamplerStateId::Filter: {
-                    // D3D10_FILTER bits: mip linear 0x1, mag linear 0x4, min linear 0x10, anisotropic 0x40,
-                    // comparison 0x80.
-                    auto tex = [&](int bit) { return (n & 0x40) ? 3 : ((n & bit) ? 2 : 1); };
-                    s.minFilter = tex(0x10);
-                    s.magFilter = tex(0x04);
-                    s.mipFilter = (n & 0x01) ? 2 : 1;
-                    hasComparison = (n & 0x80) != 0;
-                    break;
-                }
-                default:
-                    break;
-            }
-        }
+        for (const StateAssignment& a : p.samplerState) applySamplerState(a, p.type.base, s, hasComparison);
         if (hasComparison && s.comparisonFunc == 0) s.comparisonFunc = 4;  // LESSEQUAL
         // A D3D10 SamplerState compares only through SampleCmp on a SamplerComparisonState.
         if (p.type.base == BaseType::SamplerState) s.comparisonFunc = 0;

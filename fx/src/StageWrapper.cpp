@@ -333,9 +333,15 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             // A hull shader's control points often carry a float3 POSITION.
             body +=
                 "    fx_out.fx_position = " + widenToFloat4(f.lvalue, std::clamp(f.type.cols, 1, 4)) + ";\n";
+        } else if (s == "PSIZE0") {
+            // gl_PointSize (glslang reads no PSIZE semantic, but takes SPIR-V's builtin by name); the runtime
+            // enables GL_PROGRAM_POINT_SIZE for a program that writes it (GpuProgram::bind).
+            if (!used.insert(2000).second) continue;
+            members += "    [[vk::builtin(\"PointSize\")]] float fx_psize : PSIZE;\n";
+            body += "    fx_out.fx_psize = " + fieldValue(f) +
+                    (f.type.cols > 1 || f.type.rows > 1 ? ".x" : "") + ";\n";
         } else if (s.rfind("PSIZE", 0) == 0) {
-            continue;  // point size: GL takes it from gl_PointSize only when enabled; D3D9 effects rarely
-                       // rely on it
+            continue;  // PSIZE1..: D3D9 had one point size
         } else if (s.rfind("SV_CLIPDISTANCE", 0) == 0 || s.rfind("SV_CULLDISTANCE", 0) == 0) {
             // gl_ClipDistance / gl_CullDistance; the runtime enables the clip planes the program writes.
             const bool clip = s[3] == 'C' && s[4] == 'L';

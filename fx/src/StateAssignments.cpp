@@ -218,6 +218,62 @@ void StateAssignments::validateShaderValue(StateAssignment& state) {
           {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
 }
 
+bool isSamplerRegisterState(std::string_view name) {
+    return equalsIgnoreCase(name, "Sampler") || findSamplerState(name).has_value();
+}
+
+bool StateAssignments::resolveSamplerRegisterState(StateAssignment& state) {
+    if (state.index < 0) state.index = 0;  // `Texture = <t>;` in a pass is stage 0's
+    Expr& v = state.value;
+    if (equalsIgnoreCase(state.name, "Sampler")) {
+        state.name = "Sampler";
+        const Parameter* sampler = v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
+                                       ? mEffect.findParameter(v.text)
+                                       : nullptr;
+        if (!sampler) {
+            error(v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
+                      ? DiagId::UnknownIdentifier
+                      : DiagId::InvalidStateValue,
+                  v.loc,
+                  v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
+                      ? std::vector<std::string>{v.text}
+                      : std::vector<std::string>{state.name, "expected (samplerName)"});
+            return false;
+        }
+        if (!sampler->type.isSampler() || !sampler->type.arrayDims.empty()) {
+            error(DiagId::InvalidStateValue, v.loc,
+                  {state.name, "'" + v.text + "' is a " + sampler->type.hlslName() + ", not a sampler"});
+            return false;
+        }
+        v.kind = Expr::Kind::Identifier;
+        return true;
+    }
+    const SamplerStateId id = *findSamplerState(state.name);
+    const StateInfo& info = samplerStateInfo(id);
+    state.name = std::string(info.name);
+    if (info.domain != StateDomain::TextureRef) {
+        resolveStateValue(v, info.domain, state.name);
+        return true;
+    }
+    if (v.kind == Expr::Kind::Identifier) v.kind = Expr::Kind::TextureRef;  // (t) and t
+    if (v.kind != Expr::Kind::TextureRef) {
+        error(DiagId::InvalidStateValue, v.loc, {state.name, "expected <texture>"});
+        return false;
+    }
+    const Parameter* texture = mEffect.findParameter(v.text);
+    if (!texture) {
+        error(DiagId::UnknownIdentifier, v.loc, {v.text});
+        return false;
+    }
+    if (!texture->type.isTexture()) {
+        error(
+            DiagId::InvalidStateValue, v.loc,
+            {state.name, "'" + v.text + "' is a " + texture->type.hlslName() + " parameter, not a texture"});
+        return false;
+    }
+    return true;
+}
+
 bool StateAssignments::isEnumDomain(StateDomain domain) {
     switch (domain) {
         case StateDomain::Bool:

@@ -16,6 +16,10 @@
 
 namespace fx::detail {
 
+// A sampler_state name (MinFilter, AddressU, Texture, ...) or `Sampler`, any case: in a pass, a state of a
+// D3D9 sampler register rather than a render state.
+bool isSamplerRegisterState(std::string_view name);
+
 class StateAssignments {
 public:
     // Reports an error where the parser reports its own (its count and limit, its speculative mode).
@@ -36,6 +40,10 @@ public:
     void validateShaderValue(StateAssignment& state);
     // Replaces enum names by their numbers, leaves parameter names, reports anything else.
     void resolveStateValue(Expr& e, StateDomain domain, const std::string& stateName);
+    // A D3D9 pass's state of sampler register N (`MinFilter[N] = LINEAR;`, `Texture[N] = <t>;`,
+    // `Sampler[N] = (s);`): the name spelled as the table does, the index 0 when left out, the value
+    // resolved (enum names to numbers, the texture or sampler checked). False after an error.
+    bool resolveSamplerRegisterState(StateAssignment& state);
     // The kind of state object a RasterizerState, DepthStencilState or BlendState variable holds.
     static StateObjectKind objectKind(BaseType base);
 

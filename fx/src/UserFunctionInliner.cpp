@@ -3,7 +3,12 @@
 // cast, so that `float3 c = 1;` or an int parameter truncates exactly as the function would.
 #include "UserFunctionInliner.h"
 
+#include "ConstantFolding.h"
+
+#include <fx/Preshader.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <set>
@@ -19,6 +24,8 @@ constexpr int kMaxInlineDepth = 16;
 // stand). rgb_to_hsv of FX Composer's colour-space include ends at about 23000 nodes, having copied some
 // 70000 on the way.
 constexpr int kMaxInlinedNodes = 1 << 18;
+// A loop is unrolled for at most this many iterations (fxc's own limit for unrolling was 1024).
+constexpr int kMaxLoopIterations = 1024;
 
 class Inliner {
 public:
@@ -83,6 +90,18 @@ private:
         e.castType = type;
         e.args.push_back(std::move(value));
         return e;
+    }
+
+    // `e`'s value where it reads no parameter: exactly as the host evaluates it, or, for the effect's
+    // `static const` scalars, as the parser folds them.
+    bool constant(const Expr& e, double& out) const {
+        const std::optional<Value> value = evaluate(
+            e, [](std::string_view) { return nullptr; }, nullptr, nullptr);
+        if (value && value->data.size() == 1) {
+            out = value->data[0];
+            return true;
+        }
+        return foldConstant(mEffect, e, out);
     }
 
     // The nodes of `e`, counted up to `limit`.
@@ -270,6 +289,42 @@ private:
                     }
                     break;
                 }
+                case Statement::Kind::Loop: {
+                    // Unrolled, as fxc unrolled a loop it could bound: the condition must fold to a
+                    // constant before every iteration (the counter's value is an expression of literals).
+                    for (int iteration = 0;; ++iteration) {
+                        double going = 0;
+                        if (iteration > kMaxLoopIterations || mBudget <= 0 ||
+                            !constant(substitute(statement.value, locals.values, depth), going))
+                            return false;
+                        if (going == 0) break;
+                        // The body's own declarations are its own, every iteration again.
+                        Locals inner = locals;
+                        inner.assigned.clear();
+                        if (!execute(statement.then, inner, loc, depth) ||
+                            !execute(statement.otherwise, inner, loc, depth))
+                            return false;
+                        for (auto& [name, value] : locals.values) {
+                            value = std::move(inner.values[name]);
+                            // A counter stays a literal, not a chain of every step before.
+                            double number = 0;
+                            const TypeDesc& type = locals.types[name];
+                            if (type.shape == Shape::Scalar && type.arrayDims.empty() &&
+                                constant(value, number)) {
+                                Expr literal;
+                                literal.kind = Expr::Kind::Number;
+                                literal.number = number;
+                                literal.isInteger = number == std::trunc(number);
+                                literal.loc = loc;
+                                value = cast(type, std::move(literal), loc);
+                            }
+                        }
+                        for (const auto& [name, count] : inner.assigned)
+                            if (locals.values.count(name) && !declaredHere.count(name))
+                                ++locals.assigned[name];
+                    }
+                    break;
+                }
                 case Statement::Kind::Return:
                     return false;
             }
@@ -285,13 +340,31 @@ private:
             locals.values[p.name] = cast(p.type, call.args[i], call.loc);
             locals.types[p.name] = p.type;
         }
-        const std::vector<FunctionDecl::Statement> body(function.straightBody.begin(),
-                                                        function.straightBody.end() - 1);
-        if (!execute(body, locals, call.loc, depth)) return std::nullopt;
-        Expr result = cast(function.returnType,
-                           substitute(function.straightBody.back().value, locals.values, depth), call.loc);
-        if (mBudget <= 0) return std::nullopt;
-        return result;
+        std::optional<Expr> value =
+            result(function.straightBody, function.returnType, locals, call.loc, depth);
+        if (!value || mBudget <= 0) return std::nullopt;
+        return value;
+    }
+
+    // What `statements` return, every path of which ends in a return (the parser's endsInReturns): the
+    // last statement's value, or, for an `if` whose branches return, `condition ? then : otherwise`.
+    std::optional<Expr> result(const std::vector<FunctionDecl::Statement>& statements, const TypeDesc& type,
+                               Locals locals, const SourceLoc& loc, int depth) {
+        using Statement = FunctionDecl::Statement;
+        if (statements.empty()) return std::nullopt;
+        const std::vector<Statement> body(statements.begin(), statements.end() - 1);
+        if (!execute(body, locals, loc, depth)) return std::nullopt;
+        const Statement& last = statements.back();
+        if (last.kind == Statement::Kind::Return)
+            return cast(type, substitute(last.value, locals.values, depth), loc);
+        if (last.kind != Statement::Kind::If) return std::nullopt;
+        Expr condition = substitute(last.value, locals.values, depth);
+        std::optional<Expr> then = result(last.then, type, locals, loc, depth);
+        std::optional<Expr> otherwise =
+            then ? result(last.otherwise, type, locals, loc, depth) : std::nullopt;
+        if (!otherwise) return std::nullopt;
+        return node(Expr::Kind::Ternary, loc, "",
+                    {std::move(condition), std::move(*then), std::move(*otherwise)});
     }
 
     const Effect& mEffect;

@@ -1,8 +1,9 @@
 // UserFunctionInliner: D3DX evaluated the parts of a pass that depend only on uniform parameters and
 // literals on the host (its "preshader"), the effect's own functions included:
 // `VertexShader = compile vs_2_0 VS(gain(Brightness, 1.5));`, `AlphaRef = threshold(Level);`,
-// `static float4x4 BiasXf = make_bias_mat(Bias);`. This stage rewrites such calls of functions without
-// loops (FunctionDecl::straightBody: locals, component assignments, if/else) into plain expressions, and
+// `static float4x4 BiasXf = make_bias_mat(Bias);`. This stage rewrites such calls of side-effect-free
+// functions (FunctionDecl::straightBody: locals, component assignments, if/else, loops whose condition
+// folds to a constant at every iteration, unrolled) into plain expressions, and
 // names of statics into their initializers, before the compiler and the host evaluator (Preshader.cpp)
 // see them. Private to fx.
 #pragma once
@@ -14,8 +15,8 @@ namespace fx::detail {
 // Inlines user-function calls in every pass state (compile arguments included), every shader-variable
 // initializer and every numeric parameter's initializer; in pass states and shader variables, a static
 // computed from other parameters reads as its initializer, so that the runtime recomputes it when one of
-// them changes. Calls of functions with loops stay as they are: the evaluator then reports them where they
-// stand.
+// them changes. Calls of functions it cannot rewrite (a loop bounded by a parameter, an early return) stay
+// as they are: the evaluator then reports them where they stand.
 void inlineUserFunctionCalls(Effect& effect);
 
 }  // namespace fx::detail

@@ -228,5 +228,76 @@ TEST(D3d9HostEvaluation, ChainedBranchesOverOneVector) {
     }
 }
 
+// Loops in a function evaluated on the host, unrolled as fxc unrolled them: a `for` bounded by a `static
+// const`, a `while`, nested loops, `++`/`+=` steps and a loop attribute; and early returns.
+constexpr const char* kLoopingFunction = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.5;
+static const int kTerms = 4;
+float early(float x) {
+    if (x < 0.3) return 0.5;
+    else if (x > 0.9) { return 0; }
+    float half_x = x * 0.5;
+    return half_x;
+}
+float3 series(float x) {
+    float3 sum = 0;
+    float weight = 1;
+    [unroll] for (int i = 0; i < kTerms; i++) {
+        float term = x * weight;
+        sum.x += term;
+        weight *= 0.5;
+    }
+    int k = 0;
+    while (k < 3) { sum.y += 0.1; k += 1; }
+    for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < a + 1; b++) sum.z += 0.1;
+    sum.z += early(x);
+    return sum;
+}
+static float3 Derived = series(Level);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
+)";
+
+TEST(D3d9HostEvaluation, FunctionWithLoopsFollowsItsInput) {
+    auto renderer = loadEffect(kLoopingFunction, false, "looping_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    // x * (1 + 1/2 + 1/4 + 1/8), 3 * 0.1, (1 + 2) * 0.1 + x / 2
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 239, 77, 140), kMinObjectPixels);
+
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.2", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 96, 77, 204), kMinObjectPixels);  // early: 0.5
+}
+
+// A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
+// where it stands, as before.
+TEST(D3d9HostEvaluation, LoopBoundedByAParameterIsReportedAtTheCall) {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectSource(
+        "int Count = 3;\n"
+        "float total(float x) { float s = 0; for (int i = 0; i < Count; i++) s += x; return s; }\n"
+        "float4 PS(uniform float v) : COLOR { return v; }\n"
+        "technique T { pass P { PixelShader = compile ps_3_0 PS(total(0.25)); } }\n",
+        "parameter_loop.fx", {}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) && !diagnostics.hasErrors());
+    EXPECT_NE(diagnostics.str().find("parameter_loop.fx:4:56: error: function 'total' "
+                                     "cannot be evaluated on the host"),
+              std::string::npos)
+        << diagnostics.str();
+}
+
 }  // namespace
 }  // namespace shadowfx::test

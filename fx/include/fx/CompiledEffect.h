@@ -61,6 +61,10 @@ struct SamplerBinding {
     std::string pairTexture;  // the effect's texture and sampler names ("" if not a pair)
     std::string pairSampler;
     std::optional<size_t> textureParameter;  // Effect::parameters index of pairTexture
+    // A D3D9 pass's states of the sampler register this sampler is bound to (`MinFilter[0] = LINEAR;`,
+    // `Sampler[0] = (s);`): the states the sampler has in this pass, CompiledEffect::passSamplers' index
+    // (-1: the sampler's own, SamplerDesc). `Texture[0] = <t>;` sets `textureParameter`.
+    int passSampler = -1;
 };
 
 // A D3D10 StructuredBuffer<T> or ByteAddressBuffer a stage reads: a GL shader storage block (std430).
@@ -260,6 +264,9 @@ struct CompiledEffect {
     std::vector<Value> initialValues;       // one per Effect::parameters entry (evaluated initializers)
     std::vector<TextureDesc> textures;
     std::vector<SamplerDesc> samplers;
+    // The states samplers have in the passes that set their registers' (SamplerBinding::passSampler): the
+    // sampler's own with the pass's applied, `parameter` the sampler's.
+    std::vector<SamplerDesc> passSamplers;
     std::vector<CompiledTechnique> techniques;
     std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser or the compiler
     bool hasGlobalScript = false;

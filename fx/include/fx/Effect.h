@@ -100,6 +100,9 @@ struct Parameter {
     bool isUniform = false;  // written `uniform`
     bool isShared = false;
     bool isExtern = false;
+    // `: register(sN)`: the D3D9 sampler register N a pass's `MinFilter[N] = ...` reaches; -1 when the
+    // compiler assigns it (the used samplers in declaration order, as fxc did).
+    int samplerRegister = -1;
     SourceLoc loc;  // the name's location
     // For static globals only: the whole declaration as HLSL text from the preprocessed source.
     std::string hlslText;
@@ -169,12 +172,16 @@ struct FunctionDecl {
     SourceLoc hlslLoc;     // where hlslText starts
     SourceLoc loc;         // the name's location
 
-    // A body of side-effect-free code without loops: local declarations, assignments to locals and their
-    // components, if/else, and a final return. Such a function, called in a pass's compile arguments,
-    // states or a static's initializer, is inlined there and evaluated on the host as D3DX's preshaders
-    // did (fx/src/UserFunctionInliner.cpp). Empty for any other body.
+    // A body of side-effect-free code: local declarations, assignments to locals and their components,
+    // if/else, `for` and `while` loops, and returns where every path ends (an early return's rest reads as
+    // its branch's `else`). Such a function, called in a pass's compile arguments, states or a static's
+    // initializer, is inlined there and evaluated on the host as D3DX's preshaders did
+    // (fx/src/UserFunctionInliner.cpp; a loop is unrolled, so its condition must be known there). Empty
+    // for any other body.
     struct Statement {
-        enum class Kind { Declare, Assign, If, Return };
+        // Loop: `value` is the condition, `then` the body, `otherwise` the step (`for`'s third part); a
+        // `for`'s first part stands before it as statements of their own.
+        enum class Kind { Declare, Assign, If, Loop, Return };
         Kind kind = Kind::Return;
         TypeDesc type;       // Declare
         std::string name;    // Declare, Assign: the local
@@ -182,7 +189,7 @@ struct FunctionDecl {
         std::string op;      // Assign: "=", "+=", "-=", "*=", "/="
         Expr value;  // Declare's initializer, Assign's right-hand side, Return's value, If's condition
         bool hasValue = false;
-        std::vector<Statement> then, otherwise;  // If
+        std::vector<Statement> then, otherwise;  // If, Loop
     };
     std::vector<Statement> straightBody;
 };

@@ -94,7 +94,7 @@ FX_RENDER_STATE(ShadeMode, Shade, 2)  // GOURAUD
 FX_RENDER_STATE(DitherEnable, Bool, 0)
 FX_RENDER_STATE(SpecularEnable, Bool, 0)
 FX_RENDER_STATE(NormalizeNormals, Bool, 0)
-FX_RENDER_STATE(PointSpriteEnable, Bool, 0)
+FX_RENDER_STATE(PointSpriteEnable, Bool, 0)  // not fixed-function: see the point states below
 FX_RENDER_STATE(SRGBWriteEnable, Bool, 0)
 // D3D10's independent blend, set from a BlendState's per-target fields (BlendEnable[i], SrcBlend[i], ...):
 // with IndependentBlendEnable, render target i (1..7) blends by the states suffixed i and target 0 by the
@@ -126,6 +126,17 @@ FX_RENDER_STATE(FogStart, Float, 0)
 FX_RENDER_STATE(FogEnd, Float, 1)
 FX_RENDER_STATE(FogDensity, Float, 1)
 FX_RENDER_STATE(RangeFogEnable, Bool, 0)
+// D3D9's points: PointSize (glPointSize) clamped to [PointSize_Min, PointSize_Max], unless the vertex shader
+// writes PSIZE (gl_PointSize, GL_PROGRAM_POINT_SIZE). PointSpriteEnable above gives the pixel shader's
+// texture coordinates the position in the point (gl_PointCoord). Point scaling is D3D9's fixed-function
+// vertex processing, which a vertex shader replaces: accepted, and without effect.
+FX_RENDER_STATE(PointSize, Float, 1)
+FX_RENDER_STATE(PointSize_Min, Float, 1)
+FX_RENDER_STATE(PointSize_Max, Float, 64)
+FX_RENDER_STATE(PointScaleEnable, Bool, 0)
+FX_RENDER_STATE(PointScale_A, Float, 1)
+FX_RENDER_STATE(PointScale_B, Float, 0)
+FX_RENDER_STATE(PointScale_C, Float, 0)
 
 FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
 FX_STATE_ALIAS(DepthEnable, ZEnable)

@@ -17,6 +17,7 @@ constexpr GLenum kCapabilities[] = {
     GL_MULTISAMPLE,          GL_DEPTH_CLAMP,
     GL_FRAMEBUFFER_SRGB,     GL_SAMPLE_ALPHA_TO_COVERAGE,
     GL_SAMPLE_MASK,          GL_STENCIL_TEST,
+    GL_PROGRAM_POINT_SIZE,  // GpuProgram::bind, for a program that writes gl_PointSize
 };
 
 // Every target a pass binds a texture to (GpuTexture's and Buffer<T>'s).
@@ -96,6 +97,7 @@ GlStateSnapshot GlStateSnapshot::capture(const GlStateMask& mask) {
         gl::GetIntegerv(GL_POLYGON_MODE, s.mPolygonMode.data());
         gl::GetFloatv(GL_POLYGON_OFFSET_FACTOR, &s.mOffsetFactor);
         gl::GetFloatv(GL_POLYGON_OFFSET_UNITS, &s.mOffsetUnits);
+        gl::GetFloatv(GL_POINT_SIZE, &s.mPointSize);
         if (gl::PolygonOffsetClamp) gl::GetFloatv(GL_POLYGON_OFFSET_CLAMP, &s.mOffsetClamp);
         s.mSampleMask = integerAt(GL_SAMPLE_MASK_VALUE, 0);
         gl::GetFloatv(GL_BLEND_COLOR, s.mBlendColor.data());
@@ -186,6 +188,7 @@ void GlStateSnapshot::restore() const {
             gl::PolygonOffset(mOffsetFactor, mOffsetUnits);
         }
         gl::SampleMaski(0, static_cast<GLbitfield>(mSampleMask));
+        gl::PointSize(mPointSize);
         gl::BlendColor(mBlendColor[0], mBlendColor[1], mBlendColor[2], mBlendColor[3]);
         for (GLuint i = 0; i < kMaskBuffers; ++i)
             gl::ColorMaski(i, mColorMasks[i][0], mColorMasks[i][1], mColorMasks[i][2], mColorMasks[i][3]);

@@ -190,6 +190,13 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     // SV_ClipDistance: GL clips only against the planes enabled, so enable those the program writes.
     if (const size_t at = pass.vertex.glsl.find("gl_ClipDistance["); at != std::string::npos)
         program->mClipDistances = std::clamp(std::atoi(pass.vertex.glsl.c_str() + at + 16), 0, 8);
+    // PSIZE: the last stage before the rasterizer sizes its points (D3D9 took PSIZE over the PointSize
+    // state); GL does so only with GL_PROGRAM_POINT_SIZE, and a program that does not write gl_PointSize
+    // then has undefined sizes, so it is enabled for the programs that write it and no others.
+    const std::string& rasterized = withGeometry       ? pass.geometry.glsl
+                                    : withTessellation ? pass.domain.glsl
+                                                       : pass.vertex.glsl;
+    program->mWritesPointSize = rasterized.find("gl_PointSize") != std::string::npos;
     const fx::StageProgram* linked[5] = {
         &pass.vertex, withPixel ? &pass.fragment : nullptr, withGeometry ? &pass.geometry : nullptr,
         withTessellation ? &pass.hull : nullptr, withTessellation ? &pass.domain : nullptr};
@@ -253,6 +260,10 @@ void GpuProgram::bind() {
         else
             gl::Disable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
     }
+    if (mWritesPointSize)
+        gl::Enable(GL_PROGRAM_POINT_SIZE);
+    else
+        gl::Disable(GL_PROGRAM_POINT_SIZE);
     for (StageBlock& block : mBlocks) block.uploaded.clear();
 }
 

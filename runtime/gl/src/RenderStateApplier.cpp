@@ -1,5 +1,6 @@
 #include <runtime/RenderStateApplier.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -183,6 +184,12 @@ void applyRenderStates(const RenderStateBlock& block, int depthBits) {
         gl::PolygonOffsetClamp(slopeScale, units, depthBiasClamp);
     else
         gl::PolygonOffset(slopeScale, units);
+    // D3D9 clamps PointSize to [PointSize_Min, PointSize_Max]; GL refuses a size that is not positive. A
+    // vertex shader that writes PSIZE sizes its points itself (GpuProgram::bind, GL_PROGRAM_POINT_SIZE).
+    const float pointSize = std::clamp(
+        float(value(RenderStateId::PointSize)), float(value(RenderStateId::PointSize_Min)),
+        std::max(float(value(RenderStateId::PointSize_Min)), float(value(RenderStateId::PointSize_Max))));
+    gl::PointSize(std::isfinite(pointSize) ? std::max(pointSize, 1.0f / 64.0f) : 1.0f);
     enable(GL_SCISSOR_TEST, flag(RenderStateId::ScissorTestEnable));
     enable(GL_MULTISAMPLE, flag(RenderStateId::MultiSampleAntialias));
     enable(GL_DEPTH_CLAMP, !flag(RenderStateId::DepthClipEnable));

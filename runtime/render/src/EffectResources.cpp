@@ -352,6 +352,10 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         r.samplers.emplace(desc.parameter, SamplerObject(desc, false));
         r.comparisonSamplers.emplace(desc.parameter, SamplerObject(desc, true));
     }
+    for (const fx::SamplerDesc& desc : r.mCompiled->passSamplers) {
+        r.passSamplers.emplace_back(desc, false);
+        r.passComparisonSamplers.emplace_back(desc, true);
+    }
     if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
     r.uniformRing = std::make_unique<UniformRing>();

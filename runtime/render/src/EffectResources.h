@@ -76,6 +76,9 @@ public:
     std::set<const GpuTexture*> staleMipChains;
     std::map<size_t, SamplerObject> samplers;
     std::map<size_t, SamplerObject> comparisonSamplers;
+    // fx::CompiledEffect::passSamplers as GL samplers, by index (SamplerBinding::passSampler).
+    std::vector<SamplerObject> passSamplers;
+    std::vector<SamplerObject> passComparisonSamplers;
     GpuMesh quad;
     HostScenePainter hostScene;  // ScriptExternal=color
     FramebufferCache framebuffers;

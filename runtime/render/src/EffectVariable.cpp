@@ -7,8 +7,9 @@
 
 #include <runtime/EffectPass.h>
 
+#include <fx/StageReads.h>
+
 #include <algorithm>
-#include <cctype>
 
 namespace runtime {
 
@@ -42,19 +43,6 @@ std::optional<GLenum> textureTarget(fx::BaseType type) {
         default:
             return std::nullopt;
     }
-}
-
-// True if `glsl` names `identifier` past its declaration. The stages' sampler lists come from glslang, which
-// keeps every sampler the effect declares in every stage, read or not; a read is a second mention.
-bool readsIdentifier(const std::string& glsl, const std::string& identifier) {
-    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    int mentions = 0;
-    for (size_t at = glsl.find(identifier); at != std::string::npos; at = glsl.find(identifier, at + 1)) {
-        const size_t end = at + identifier.size();
-        if ((at == 0 || !word(glsl[at - 1])) && (end == glsl.size() || !word(glsl[end])) && ++mentions > 1)
-            return true;
-    }
-    return false;
 }
 
 }  // namespace
@@ -212,7 +200,7 @@ bool EffectVariable::isUsed(const EffectPass& pass) const {
             const bool names = binding.samplerParameter == mParameter ||
                                binding.textureParameter == mParameter ||
                                (!binding.textureParameter && desc && desc->texture == mParameter);
-            if (names && readsIdentifier(stage->glsl, binding.glslName)) return true;
+            if (names && fx::stageReads(*stage, binding.glslName)) return true;
         }
         for (const fx::StorageBufferBinding& buffer : stage->storageBuffers)
             if (buffer.parameter == mParameter) return true;

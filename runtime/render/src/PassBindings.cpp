@@ -40,9 +40,13 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
         } else {
             gl::BindTexture(GL_TEXTURE_2D, 0);
         }
+        const auto passSampler = static_cast<size_t>(binding.passSampler);
+        auto& passSamplers = binding.depthCompare ? resources.passComparisonSamplers : resources.passSamplers;
         auto& samplers = binding.depthCompare ? resources.comparisonSamplers : resources.samplers;
         auto sampler = samplers.find(binding.samplerParameter);
-        if (sampler != samplers.end()) {
+        if (binding.passSampler >= 0 && passSampler < passSamplers.size()) {
+            passSamplers[passSampler].bind(binding.unit);  // the states the pass sets on its register
+        } else if (sampler != samplers.end()) {
             sampler->second.bind(binding.unit);
         } else {
             SamplerObject::unbind(binding.unit);

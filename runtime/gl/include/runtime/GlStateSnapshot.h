@@ -20,8 +20,9 @@ struct GlStateMask {
     bool program = false;
     // Every state runtime/RenderStateApplier.h writes: depth test, mask and function; cull face, front
     // face, polygon mode and offset, scissor test enable, multisample, depth clamp, sRGB writes, alpha to
-    // coverage, sample mask; blend enables, functions and equations of draw buffers 0-7, blend colour,
-    // colour write masks of draw buffers 0-3; stencil test, functions, operations and write masks.
+    // coverage, sample mask, point size and program point size; blend enables, functions and equations of
+    // draw buffers 0-7, blend colour, colour write masks of draw buffers 0-3; stencil test, functions,
+    // operations and write masks.
     bool renderStates = false;
     // The draw and read framebuffer bindings and the viewport.
     bool framebuffer = false;
@@ -71,6 +72,7 @@ private:
     GLint mDepthFunc = GL_LESS, mFrontFace = GL_CCW, mCullFace = GL_BACK;
     std::array<GLint, 2> mPolygonMode{};
     GLfloat mOffsetFactor = 0, mOffsetUnits = 0, mOffsetClamp = 0;
+    GLfloat mPointSize = 1;
     GLint mSampleMask = 0;
     std::array<std::array<GLint, 6>, 8> mBlendFunctions{};  // src rgb, dst rgb, src a, dst a, eq rgb, eq a
     std::array<GLfloat, 4> mBlendColor{};

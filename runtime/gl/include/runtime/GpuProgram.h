@@ -89,8 +89,9 @@ private:
     GpuProgram() = default;
 
     GLuint mProgram = 0;
-    StageBlock mBlocks[5];   // vertex, pixel, geometry, hull, domain
-    int mClipDistances = 0;  // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
+    StageBlock mBlocks[5];          // vertex, pixel, geometry, hull, domain
+    bool mWritesPointSize = false;  // the stage before the rasterizer writes gl_PointSize (PSIZE)
+    int mClipDistances = 0;         // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
 };
 
 }  // namespace runtime
