@@ -54,6 +54,14 @@ float BlendShare : CascadeBlend
     float UIMax = 0.5;
 > = 0.1;
 
+// Fit to what the camera sees (sample distribution shadow maps, Lauritzen et al. 2011): the host reads back
+// the visible surfaces before the fit and narrows B to their depth range and box
+// (docs/techniques/light-space-parameterizations.md, "Fits from what the camera sees").
+bool FitVisible : LightFitVisibleSamples
+<
+    string UIName = "Fit to the visible samples";
+> = false;
+
 // Depth bias in texels of the receiver's cascade (lightspace.fxh's BiasedDepth, per cascade).
 float Bias
 <

@@ -13,6 +13,14 @@ bool Pancake : LightPancaking
     string UIName = "Pancake casters (depth range of receivers only)";
 > = false;
 
+// Fit to what the camera sees (sample distribution shadow maps, Lauritzen et al. 2011): the host reads back
+// the visible surfaces before the fit and narrows B to their depth range and box
+// (docs/techniques/light-space-parameterizations.md, "Fits from what the camera sees").
+bool FitVisible : LightFitVisibleSamples
+<
+    string UIName = "Fit to the visible samples";
+> = false;
+
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.

@@ -37,6 +37,14 @@ string NOpt : LiSPSMNOpt
     string UIName = "LiSPSM n_opt: Wimmer2004 or Scherzer2005";
 > = "Wimmer2004";
 
+// Fit to what the camera sees (sample distribution shadow maps, Lauritzen et al. 2011): the host reads back
+// the visible surfaces before the fit and narrows B to their depth range and box
+// (docs/techniques/light-space-parameterizations.md, "Fits from what the camera sees").
+bool FitVisible : LightFitVisibleSamples
+<
+    string UIName = "Fit to the visible samples";
+> = false;
+
 // V_P from B's middle vector (Scherzer 2005 §4.4, the paper's own choice) instead of eq. 3's view direction.
 bool MiddleVector : LiSPSMMiddleVector
 <

@@ -47,6 +47,18 @@ float splitRangeEnd(const Camera& camera, const Bounds& bounds) {
     return std::max(std::min(laddered, camera.farPlane), nearPlane * 1.01f);
 }
 
+// The split range over the visible samples (Lauritzen et al. 2011, §4: the tight z-range), its ends rounded
+// outward on the far end's ladder so that the splits move only when the visible range outgrows a step.
+std::pair<float, float> visibleSplitRange(const Camera& camera, const VisibleSamples& visible) {
+    const Camera tight = cameraOverSamples(camera, visible);
+    const float unit = std::max(camera.nearPlane, 1e-6f);
+    const float start = unit * std::exp2(std::floor(kFarStepsPerOctave * std::log2(tight.nearPlane / unit)) /
+                                         kFarStepsPerOctave);
+    const float end = roundUpOnLadder(tight.farPlane, unit, kFarStepsPerOctave);
+    return {std::max(start, camera.nearPlane),
+            std::max(std::min(end, camera.farPlane), std::max(start, unit) * 1.01f)};
+}
+
 // The smallest-radius sphere around the slice [start, end] of the camera frustum in the family centred on
 // its axis (its radius does not depend on where the camera is or looks): centre and radius.
 std::pair<glm::vec3, float> sliceSphere(const Camera& camera, float aspect, float start, float end) {
@@ -114,14 +126,19 @@ glm::ivec4 lightViewTile(const LightView& view, int index, int count, int width,
 }
 
 LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect, const Light& light,
-                     const LightTunables& tunables) {
+                     const LightTunables& tunables, const VisibleSamples* visible) {
     // View 0: the focused fit of the whole body (or the uniform fit where focusing cannot work).
-    LightFit fit = fitLight(LightParameterization::Focused, scene, sceneBounds, aspect, light, tunables);
+    LightFit fit =
+        fitLight(LightParameterization::Focused, scene, sceneBounds, aspect, light, tunables, visible);
     const Camera& camera = scene.camera;
     const int count = std::clamp(tunables.cascadeCount, 1, kMaxCascades);
     const float blend = std::clamp(tunables.cascadeBlend, 0.0f, 0.5f);
-    const std::vector<float> splits = cascadeSplitDepths(camera.nearPlane, splitRangeEnd(camera, sceneBounds),
-                                                         count, tunables.cascadeSplitLambda);
+    const auto [rangeStart, rangeEnd] = visible
+                                            ? visibleSplitRange(camera, *visible)
+                                            : std::pair{camera.nearPlane, splitRangeEnd(camera, sceneBounds)};
+    const Bounds receiverBounds = visible ? receiverBoundsOverSamples(sceneBounds, *visible) : sceneBounds;
+    const std::vector<float> splits =
+        cascadeSplitDepths(rangeStart, rangeEnd, count, tunables.cascadeSplitLambda);
     for (int i = 0; i < count; ++i) {
         LightView cascade{fit.view, fit.projection, splits[static_cast<size_t>(i)],
                           splits[static_cast<size_t>(i) + 1]};
@@ -145,7 +162,7 @@ LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect
         slice.nearPlane = cascade.splitNear;
         slice.farPlane = cascade.splitFar;
         const std::vector<glm::vec3> receivers =
-            intersectionBodyPoints(slice.projection(aspect) * cameraView, sceneBounds);
+            intersectionBodyPoints(slice.projection(aspect) * cameraView, receiverBounds);
         if (receivers.empty()) continue;  // nothing seen in this slice: keep view 0's matrices
 
         // Across the light (x, y): the receivers' box, or the slice's bounding sphere, whichever is smaller.

@@ -155,21 +155,26 @@ glm::vec2 bodyViewDepthRange(const Camera& camera, const std::vector<glm::vec3>&
 
 std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
                                  const glm::vec3& lightDirection) {
+    return focusBody(camera, aspect, sceneBounds, sceneBounds, lightDirection);
+}
+
+std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& receiverBounds,
+                                 const Bounds& sceneBounds, const glm::vec3& lightDirection) {
     // The frustum ends where the bounds do: a far plane beyond the farthest corner cuts nothing off B, and
     // a near/far ratio like 0.001/100000 would leave the inverse projection that finds B's corners without
     // float precision.
     Camera clamped = camera;
     float farthest = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p(corner & 1 ? sceneBounds.max.x : sceneBounds.min.x,
-                          corner & 2 ? sceneBounds.max.y : sceneBounds.min.y,
-                          corner & 4 ? sceneBounds.max.z : sceneBounds.min.z);
+        const glm::vec3 p(corner & 1 ? receiverBounds.max.x : receiverBounds.min.x,
+                          corner & 2 ? receiverBounds.max.y : receiverBounds.min.y,
+                          corner & 4 ? receiverBounds.max.z : receiverBounds.min.z);
         farthest = std::max(farthest, glm::length(p - camera.position));
     }
     clamped.farPlane = std::clamp(1.01f * farthest, camera.nearPlane * 1.01f,
                                   std::max(camera.farPlane, camera.nearPlane * 1.01f));
     std::vector<glm::vec3> body =
-        intersectionBodyPoints(clamped.projection(aspect) * clamped.view(), sceneBounds);
+        intersectionBodyPoints(clamped.projection(aspect) * clamped.view(), receiverBounds);
     const size_t receivers = body.size();
     // Casters between a receiver and the light: extrude B toward the light (against its direction of travel).
     for (size_t i = 0; i < receivers; ++i)
@@ -178,9 +183,9 @@ std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bound
 }
 
 LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
-                  const Light& light, const LightTunables& tunables) {
+                  const Light& light, const LightTunables& tunables, const VisibleSamples* visible) {
     if (method == LightParameterization::Cascaded)
-        return fitCascades(scene, sceneBounds, aspect, light, tunables);  // CascadedShadowMaps.cpp
+        return fitCascades(scene, sceneBounds, aspect, light, tunables, visible);  // CascadedShadowMaps.cpp
     LightFit uniform;
     uniform.view = light.view(sceneBounds);
     uniform.projection = light.projection(sceneBounds, nearestDepthFrom(scene, light));
@@ -196,13 +201,16 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     if (method == LightParameterization::PSMCube)
         return fitPerspectiveShadowCubeMap(scene, sceneBounds, aspect, light, tunables);
     const glm::vec3 lightDir = glm::normalize(light.direction);
-    const std::vector<glm::vec3> body = focusBody(scene.camera, aspect, sceneBounds, lightDir);
+    // Fitted to what the camera sees (Lauritzen et al. 2011): B shrinks to the samples' depth range and
+    // box, so the map's texels, LiSPSM's z_n, z_f (Wimmer2004) and the depth range go to visible receivers.
+    const Camera camera = visible ? cameraOverSamples(scene.camera, *visible) : scene.camera;
+    const Bounds receivers = visible ? receiverBoundsOverSamples(sceneBounds, *visible) : sceneBounds;
+    const std::vector<glm::vec3> body = focusBody(camera, aspect, receivers, sceneBounds, lightDir);
     if (body.empty()) return uniform;  // the camera sees nothing of the scene: nothing to focus on
     if (light.type != Light::Type::Directional) return cropToReceivers(uniform, body);
 
     // Light space with y along V_P = (L x V) x L, the view direction made perpendicular to the light
     // (Scherzer 2005 eq. 3), so that the warp below runs from the viewer's side of B to its far side.
-    const Camera& camera = scene.camera;
     const glm::vec3 viewDir = method == LightParameterization::LiSPSM && tunables.lispsmMiddleVector
                                   ? middleVector(camera, body)
                                   : glm::normalize(camera.target - camera.position);

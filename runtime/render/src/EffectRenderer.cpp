@@ -186,9 +186,15 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
     const Light* light = scene.findLight(lightName);
     if (!light) return std::nullopt;
     fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
+    // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
+    std::optional<VisibleSamples> visible;
+    if (SemanticBinder::wantsVisibleSamples(mImpl->parameterInfo(), mImpl->values))
+        visible = mImpl->visibleSamplePass.run(
+            scene, InstanceBvh{}, options.width, options.height,
+            [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     const SemanticBinder binder(mImpl->parameterInfo(), scene, scene.bounds(),
                                 static_cast<float>(options.width) / static_cast<float>(options.height),
-                                mImpl->values, diagnostics);
+                                mImpl->values, diagnostics, visible ? &*visible : nullptr);
     return binder.lightFit(*light);
 }
 
@@ -236,9 +242,16 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::set<int> none;
     mImpl->ensureFrameResources(options.width, options.height, &none);
     mImpl->updateSceneCache(frameScene);
+    // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
+    // of latency).
+    std::optional<VisibleSamples> visible;
+    if (SemanticBinder::wantsVisibleSamples(mImpl->parameterInfo(), mImpl->values))
+        visible = mImpl->visibleSamplePass.run(
+            frameScene, mImpl->sceneCache.bvh, options.width, options.height,
+            [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     const SemanticBinder binder(mImpl->parameterInfo(), frameScene, mImpl->sceneCache.bounds,
                                 static_cast<float>(options.width) / static_cast<float>(options.height),
-                                mImpl->values, diagnostics);
+                                mImpl->values, diagnostics, visible ? &*visible : nullptr);
     const std::vector<PassUse> uses = passUses(*technique, mImpl->values.size(), binder);
 
     std::vector<PassPreshaders>& preshaders = mImpl->preshaders[techniqueIndex];

@@ -19,6 +19,7 @@
 #include "PassPreshaders.h"
 #include <runtime/SamplerObject.h>
 #include "SemanticBinder.h"
+#include "VisibleSamplePass.h"
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
@@ -120,6 +121,8 @@ public:
     } sceneCache;
     // What each render target holds after the frames so far (FramePlan): how light passes are reused.
     std::map<int, TargetHistory> targetHistory;
+    // Fits to what the camera sees (LightFitVisibleSamples): the pre-pass that finds the samples.
+    VisibleSamplePass visibleSamplePass;
 
     // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
     // allocate (null: all); others already allocated are still resized.

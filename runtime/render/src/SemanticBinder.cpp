@@ -111,10 +111,10 @@ constexpr std::pair<const char*, SemanticBinder::Kind> kOtherSemantics[] = {
     {"CubeFaceSelect", SemanticBinder::Kind::CubeFaceSelect},
 };
 // Read by the light fits as tunables (SemanticBinder's constructor), not bound.
-constexpr const char* kTunableSemantics[] = {"LiSPSMNScale",       "LiSPSMNOpt",      "LiSPSMDepthExtent",
-                                             "LiSPSMMiddleVector", "LightPancaking",  "TSMFocus",
-                                             "PSMSlideBack",       "PSMMaxWarpRatio", "CascadeCount",
-                                             "CascadeSplitLambda", "CascadeBlend"};
+constexpr const char* kTunableSemantics[] = {
+    "LiSPSMNScale",   "LiSPSMNOpt",         "LiSPSMDepthExtent", "LiSPSMMiddleVector",
+    "LightPancaking", "TSMFocus",           "PSMSlideBack",      "PSMMaxWarpRatio",
+    "CascadeCount",   "CascadeSplitLambda", "CascadeBlend",      "LightFitVisibleSamples"};
 
 }  // namespace
 
@@ -141,6 +141,15 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
             return true;
         }
     }
+    return false;
+}
+
+bool SemanticBinder::wantsVisibleSamples(const std::vector<fx::ParameterInfo>& parameters,
+                                         const std::vector<fx::Value>& values) {
+    for (size_t i = 0; i < parameters.size() && i < values.size(); ++i)
+        if (upper(parameters[i].semantic) == "LIGHTFITVISIBLESAMPLES" && !values[i].data.empty() &&
+            values[i].data[0] != 0.0f)
+            return true;
     return false;
 }
 
@@ -265,7 +274,7 @@ std::string SemanticBinder::conventionalSemantic(const fx::ParameterInfo& parame
 
 SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
                                const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
-                               fx::DiagnosticSink& diagnostics)
+                               fx::DiagnosticSink& diagnostics, const VisibleSamples* visible)
     : mScene(scene), mSceneBounds(sceneBounds), mAspect(aspect) {
     mHasClosedObjects =
         std::any_of(scene.objects.begin(), scene.objects.end(),
@@ -288,6 +297,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
                 mTunables.cascadeCount = static_cast<int>(std::lround(values[i].data[0]));
             if (upperSemantic == "CASCADESPLITLAMBDA") mTunables.cascadeSplitLambda = values[i].data[0];
             if (upperSemantic == "CASCADEBLEND") mTunables.cascadeBlend = values[i].data[0];
+            if (upperSemantic == "LIGHTFITVISIBLESAMPLES")
+                mTunables.fitToVisibleSamples = values[i].data[0] != 0.0f;
         }
         if (upperSemantic == "LISPSMNOPT" && i < values.size()) {
             if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
@@ -324,7 +335,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         }
     }
     for (FittedLight& fitted : mFittedLights)
-        fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables);
+        fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables,
+                              mTunables.fitToVisibleSamples ? visible : nullptr);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
         if (parameter.isStatic || !parameter.type.isNumeric()) continue;

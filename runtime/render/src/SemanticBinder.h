@@ -12,7 +12,8 @@
 // (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
 // are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
 // LiSPSMNOpt (a string), LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking, TSMFocus, PSMSlideBack,
-// PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda and CascadeBlend. A `Cascaded` light's sub-views
+// PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda, CascadeBlend and LightFitVisibleSamples (a bool: fit
+// to the samples the camera sees, runtime/VisibleSamples.h). A `Cascaded` light's sub-views
 // (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
 // projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
 // of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade
@@ -68,10 +69,16 @@ public:
     // are left alone (they are the user's own).
     // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
     // `aspect` (the frame's width / height) and `values` (the current parameter values, for the
-    // parameterization tunables) serve view-dependent light fits.
+    // parameterization tunables) serve view-dependent light fits. `visible` (may be null): what the camera
+    // sees this frame, for the fits of an effect that asks for it (wantsVisibleSamples).
     SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
                    const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
-                   fx::DiagnosticSink& diagnostics);
+                   fx::DiagnosticSink& diagnostics, const VisibleSamples* visible = nullptr);
+
+    // True if a parameter with semantic LightFitVisibleSamples is set: the frame must find the visible
+    // samples (VisibleSamplePass) before the lights are fitted.
+    static bool wantsVisibleSamples(const std::vector<fx::ParameterInfo>& parameters,
+                                    const std::vector<fx::Value>& values);
 
     // The semantic a parameter written without one is bound by, from its name, or "" for none. FX11 and
     // D3DX applications set parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`,

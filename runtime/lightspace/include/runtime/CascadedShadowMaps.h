@@ -51,7 +51,10 @@ glm::ivec4 lightViewTile(const LightView& view, int index, int count, int width,
 // 1/64 of the extent (whole texels of any tile of 64·k texels). The far end of the depth range,
 // min(camera far, the farthest scene bounds corner), is rounded up on a ladder too, so the splits stay put.
 // Spot and point lights (and degenerate ones) get view 0, Focused's fit, in every cascade.
+// `visible` (may be null): the samples the camera sees (sample distribution shadow maps, Lauritzen et al.
+// 2011): the splits then divide their depth range, its ends rounded outward on the same ladder, and each
+// slice's receivers are the slice ∩ the samples' box.
 LightFit fitCascades(const Scene& scene, const Bounds& sceneBounds, float aspect, const Light& light,
-                     const LightTunables& tunables);
+                     const LightTunables& tunables, const VisibleSamples* visible = nullptr);
 
 }  // namespace runtime

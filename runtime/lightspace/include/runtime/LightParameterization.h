@@ -25,6 +25,7 @@
 #pragma once
 
 #include <runtime/Scene.h>
+#include <runtime/VisibleSamples.h>
 
 #include <glm/glm.hpp>
 
@@ -91,6 +92,10 @@ struct LightTunables {
     // CascadeBlend: the share of each cascade's depth range, at its far end, across which the effect blends
     // it into the next one (0..0.5); the next cascade's fit starts that much earlier.
     float cascadeBlend = 0.1f;
+    // LightFitVisibleSamples: fit Focused, LiSPSM and Cascaded to the samples the camera sees (a read-back
+    // of the visible surfaces, runtime/VisibleSamples.h) instead of the whole intersection body B: their
+    // depth range sets the cascade splits and bounds B, their box narrows it (Lauritzen et al. 2011).
+    bool fitToVisibleSamples = false;
 };
 
 // One sub-view of a light (a cascade, or a face of PSMCube's cube map): its matrices and what it serves.
@@ -137,9 +142,16 @@ glm::vec2 bodyViewDepthRange(const Camera& camera, const std::vector<glm::vec3>&
 // the bounds.
 std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& sceneBounds,
                                  const glm::vec3& lightDirection);
+// The same with B = view frustum ∩ `receiverBounds` (the receivers the camera sees, inside the scene
+// bounds), its casters still extruded to the scene bounds.
+std::vector<glm::vec3> focusBody(const Camera& camera, float aspect, const Bounds& receiverBounds,
+                                 const Bounds& sceneBounds, const glm::vec3& lightDirection);
 
-// The light's matrices under `method`. `aspect` is the camera's (frame width / height).
+// The light's matrices under `method`. `aspect` is the camera's (frame width / height). `visible` (may be
+// null): the samples the camera sees; Focused, LiSPSM and Cascaded then fit B to them
+// (LightTunables::fitToVisibleSamples), the other methods ignore them.
 LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds& sceneBounds, float aspect,
-                  const Light& light, const LightTunables& tunables = {});
+                  const Light& light, const LightTunables& tunables = {},
+                  const VisibleSamples* visible = nullptr);
 
 }  // namespace runtime

@@ -131,6 +131,8 @@ public:
     // The matrices light `lightName` renders with in this effect (the Parameterization annotation of its
     // light matrices, docs/techniques/light-space-parameterizations.md) for `scene` in a frame of `options`'
     // size: what RenderPort=lightN and the annotated parameters get. nullopt if the scene has no such light.
+    // A fit to what the camera sees (LightFitVisibleSamples) runs its own pre-pass of `scene` at `options`'
+    // size (GL work: call it where render() could be called).
     std::optional<LightFit> lightFit(const Scene& scene, std::string_view lightName,
                                      const FrameOptions& options) const;
 
