@@ -4,6 +4,7 @@
 #include <runtime/GlStateSnapshot.h>
 #include <runtime/GpuMesh.h>
 #include <runtime/IntersectionBody.h>
+#include <runtime/RenderStateApplier.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -117,9 +118,12 @@ std::optional<VisibleSamples> VisibleSamplePass::run(
         gl::Disable(GL_DEPTH_CLAMP);
         gl::Disable(GL_POLYGON_OFFSET_FILL);
         gl::PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-        // Both faces: a receiver an effect draws with another CullMode is still a visible sample here, and
-        // the depth test keeps the nearest surface either way.
-        gl::Disable(GL_CULL_FACE);
+        // D3D's default CullMode = CCW, as the effects' scene passes and the ground truth's G-buffer draw:
+        // with both faces, a camera inside a closed occluder would see its inner faces and miss the
+        // receivers beyond them that the scene pass shows.
+        gl::FrontFace(kD3dFrontFace);
+        gl::Enable(GL_CULL_FACE);
+        gl::CullFace(GL_BACK);
         gl::Enable(GL_DEPTH_TEST);
         gl::DepthMask(GL_TRUE);
         gl::DepthFunc(GL_LESS);

@@ -1,7 +1,8 @@
 // VisibleSamplePass: the host's depth pre-pass for fits to what the camera sees (sample distribution shadow
 // maps, Lauritzen, Salvi & Lefohn 2011). Before the lights of an effect that asks for it
 // (SemanticBinder::wantsVisibleSamples) are fitted, it draws the objects in the view frustum from the camera
-// into a float target holding each pixel's world position, reads it back and reduces it
+// into a float target holding each pixel's world position (counter-clockwise triangles culled, D3D's
+// default CullMode, as the scene passes and the ground truth draw), reads it back and reduces it
 // (runtime/VisibleSamples.h): the fits of the same frame then see this frame's samples, with no frame of
 // latency, at the cost of one depth-tested draw of the visible objects and a read-back of the frame
 // (docs/techniques/light-space-parameterizations.md, "Fits from what the camera sees").
