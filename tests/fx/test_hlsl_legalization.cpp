@@ -180,5 +180,30 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_EQ(error.loc.column, 23) << diags.str();
 }
 
+// mul(float3, float4x4): glslang reads the matrix's first three rows as fxc did, and says so as fxc did
+// (X3206), at the line of the call.
+TEST(HlslLegalization, MulOfMismatchedSizesWarnsAsFxc) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4x4 M;
+float4 VS(float4 p : POSITION) : POSITION {
+    float4 r = mul(p.xyz, M);
+    return r;
+}
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
+    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
+    const Diagnostic& warning = diags.items().front();
+    EXPECT_EQ(warning.id, DiagId::ImplicitTruncation);
+    EXPECT_EQ(warning.severity, Severity::Warning);
+    EXPECT_EQ(warning.loc.file, "legal.fx");
+    EXPECT_EQ(warning.loc.line, 3);
+    EXPECT_EQ(warning.loc.column, 5);  // glslang gives no column: the statement's
+    EXPECT_NE(warning.message.find("X3206"), std::string::npos) << warning.message;
+}
+
 }  // namespace
 }  // namespace fx
