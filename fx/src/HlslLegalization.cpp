@@ -179,6 +179,10 @@ public:
             } else if (t.is("(") && f.isIdentifier(i + 1) && f.is(i + 2, "[") &&
                        f.at(i + 3).kind == Token::Kind::Number && f.is(i + 4, "]") && f.is(i + 5, ")")) {
                 rewriteArrayCast(f, i, edits);
+            } else if (f.isIdentifier(i) && f.isIdentifier(i + 1) && f.is(i + 2, "[") &&
+                       f.at(i + 3).kind == Token::Kind::Number && f.is(i + 4, "]") && f.is(i + 5, "=") &&
+                       f.is(i + 6, "{")) {
+                regroupFlatInitializer(f, i, edits);
             } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.is(i + 1, "Sample") &&
                        f.is(i + 2, "(")) {
                 rewriteVariableOffset(f, i - 1, edits);
@@ -258,6 +262,35 @@ private:
         edits.push_back({f.at(open).begin, f.at(open + 5).end, name + "("});
         edits.push_back({f.at(after - 1).end, f.at(after - 1).end, ")"});
         need(name, [&] { return arrayCastHelper(base, n); });
+    }
+
+    // `float4 v[3] = { 0, 0, ... };` with 12 scalars -> `{ float4(0, 0, 0, 0), ... }`: fxc filled an array
+    // of vectors from a flat list, glslang wants one constructor per element.
+    void regroupFlatInitializer(const FunctionTokens& f, size_t type, std::vector<Edit>& edits) const {
+        std::string base;
+        int components = 0;
+        const Token& count = f.at(type + 3);
+        if (!vectorTypeName(f.at(type).text, base, components) || components < 2 || !count.isInteger) return;
+        const size_t open = type + 6, close = f.closing(open);
+        std::vector<std::pair<size_t, size_t>> elements;  // first and last token of each
+        size_t start = open + 1;
+        for (size_t i = open + 1; i <= close && close <= f.last(); ++i) {
+            if (f.is(i, "{")) return;  // already grouped
+            if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
+            if (f.is(i, ",") || i == close) {
+                if (i > start) elements.push_back({start, i - 1});
+                start = i + 1;
+            }
+        }
+        if (elements.size() != static_cast<size_t>(count.number) * static_cast<size_t>(components) ||
+            count.number < 2)
+            return;
+        for (size_t e = 0; e < elements.size(); e += static_cast<size_t>(components)) {
+            edits.push_back(
+                {f.at(elements[e].first).begin, f.at(elements[e].first).begin, f.at(type).text + "("});
+            const Token& last = f.at(elements[e + static_cast<size_t>(components) - 1].second);
+            edits.push_back({last.end, last.end, ")"});
+        }
     }
 
     // `T(a, b) = e;` -> `fx_assign_T(a, b, e);`.

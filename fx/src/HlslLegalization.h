@@ -3,6 +3,7 @@
 // rewritten here, on the lexer's tokens of each function, into HLSL that means the same:
 //   - `unsigned int` and `unsigned` alone                      -> `uint`
 //   - a vector cast to an array, `(float[4])v`, `(int[4])v`    -> a call of a helper returning the array
+//   - `float4 v[2] = { 8 scalars };` (a local)                 -> `{ float4(...), float4(...) }`
 //   - the l-value constructor `float4(a, b) = e;`              -> `fx_assign_float4(a, b, e);` (out params)
 //   - a shader function writing a uniform parameter G          -> every function works on a static copy
 //                                                                 initialized from G (each shader its own)

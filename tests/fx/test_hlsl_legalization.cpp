@@ -49,13 +49,14 @@ float4 VS(VIn i) : POSITION {
     float4 p = 0;
     for (unsigned int k = 0; k < 3; k++) p += w[k] * three[k] * mul(i.Pos, Bones[idx[k]]);
     unsigned last = 3;
-    return p + w[last] * i.Pos;
+    float4 sums[2] = { 0, 0, 0, 0, 1, -1, 1, w[0] };
+    return p + w[last] * i.Pos + sums[1];
 }
 float4 PS() : COLOR { return 1; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )";
 
-TEST(HlslLegalization, VectorsCastToArraysAndUnsigned) {
+TEST(HlslLegalization, VectorsCastToArraysFlatInitializersAndUnsigned) {
     DiagnosticList diags;
     auto effect = parse(kSkinning, diags);
     ASSERT_TRUE(effect) << diags.str();
@@ -66,6 +67,7 @@ TEST(HlslLegalization, VectorsCastToArraysAndUnsigned) {
     EXPECT_TRUE(contains(vs, "for (uint k = 0;")) << vs;
     EXPECT_TRUE(contains(vs, "uint last = 3;")) << vs;
     EXPECT_FALSE(contains(vs, "unsigned")) << vs;
+    EXPECT_TRUE(contains(vs, "float4 sums[2] = { float4(0, 0, 0, 0), float4(1, -1, 1, w[0]) };")) << vs;
     EXPECT_TRUE(compilesClean(effect));
 }
 

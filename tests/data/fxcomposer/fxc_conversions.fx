@@ -1,7 +1,8 @@
 //-----------------------------------------------------------------------------
 // HLSL that fxc compiled and glslang's HLSL front end refuses, in the styles of the DirectX 9 SDK's
 // skinning and parallax samples and of FX Composer's shader library: vectors cast to arrays
-// (`(float[4])v`, `(int[3])v`), `unsigned int` and `unsigned`, the l-value constructor
+// (`(float[4])v`, `(int[3])v`), an array of vectors initialized from a flat list of scalars,
+// `unsigned int` and `unsigned`, the l-value constructor
 // `float4(a, b) = e`, a vertex shader that writes a uniform parameter (D3DX9's compiler gave each shader
 // its own modifiable copy), and `line` as a variable's name. The lit teapot's colour is
 // Tint.rgb * lit * Gain, Gain doubled to 1: red up to full, half as much green, a quarter as much blue.
@@ -44,7 +45,9 @@ VS_OUTPUT VS(VS_INPUT i)
     float3 c = 0;
     for (unsigned k = 0; k < channels; k++)
         c[k] = weights[order[k]];
-    o.Color = float4(c * lit, 1.0f);
+    // An array of vectors from a flat list, as the SDK's PRT shaders start their sums.
+    float4 scale[2] = { 1, 1, 1, 1, 0, 0, 0, 0 };
+    o.Color = float4(c * lit, 1.0f) * scale[0] + scale[1];
     o.Pos = mul(i.Pos, WorldViewProj);
     return o;
 }
