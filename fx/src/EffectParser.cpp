@@ -4,7 +4,8 @@
 // Features:
 //  - global parameters with storage classes, semantics, annotations and initializers
 //  - textures, samplers with sampler_state blocks (validated against the sampler state table)
-//  - structs, functions (HLSL kept as text slices), typedefs and cbuffers (verbatim)
+//  - structs, functions (HLSL kept as text slices, what fxc accepted and glslang refuses rewritten on
+//    their tokens: HlslLegalization.h), typedefs and cbuffers (verbatim)
 //  - techniques (technique/technique10/technique11, fxgroup), passes, render states (validated, enums
 //    resolved); D3D10 state objects expanded into the pass states they set (RenderStateDefs.h)
 //  - cbuffer/tbuffer members as effect parameters
@@ -38,6 +39,9 @@ void Parser::parseEffect() {
         return;
     }
     retypeSamplersOfTextureObjects();
+    // What fxc accepted and glslang refuses, rewritten in the functions' text glslang will read.
+    legalizeFunctions(
+        mTokens, mText, mFunctionRanges, [this](const Token& t) { return isTypeName(t); }, mEffect);
     if (const auto& first = mRefusals.first(); mEffect.techniques.empty() && first) {
         try {
             error(DiagId::AllTechniquesRefused, first->loc, {first->name, first->reason});

@@ -98,6 +98,8 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
         if (m.file == kGeneratedFile) text += " (in the code generated for '" + lowered.entryPoint + "')";
         if (m.error)
             error(DiagId::HlslError, loc, {text});
+        else if (m.file != kGeneratedFile && text.find("mul() matrix size mismatch") != std::string::npos)
+            mDiagnostics.report(DiagId::ImplicitTruncation, loc, {});
         else if (m.file != kGeneratedFile)
             mDiagnostics.report(DiagId::HlslWarning, loc, {text});
     }

@@ -92,6 +92,7 @@ void Parser::parseFunction(size_t first, const TypeDesc& returnType, const Token
         last = mPos - 1;
         rejectLocalAnnotations(bodyBegin, last);
         decl.straightBody = parseStraightBody(bodyBegin, last);
+        mFunctionRanges.push_back({mEffect.functions.size(), first, last});
     }
     decl.hlslText = sliceText(first, last);
     decl.hlslLoc = sliceLoc(first);

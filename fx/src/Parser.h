@@ -11,6 +11,7 @@
 #include <fx/EffectParser.h>
 #include <fx/RenderStates.h>
 
+#include "HlslLegalization.h"
 #include "Lexer.h"
 #include "Preprocessor.h"
 #include "StateAssignments.h"
@@ -201,6 +202,7 @@ private:
     Effect& mEffect;
     CountingSink& mDiag;
     std::set<std::string> mTypeNames;
+    std::vector<FunctionTokenRange> mFunctionRanges;  // every function with a body, for legalizeFunctions
     TechniqueRefusals mRefusals;
     int mMaxVertexCount = 0;  // the [maxvertexcount(n)] before the declaration being parsed
     std::vector<FunctionAttribute> mAttributes;  // the attributes before the declaration being parsed

@@ -63,6 +63,50 @@ TEST(FxcFrontEnd, MonoGameStyleEffect) {
     }
 }
 
+// Vectors cast to arrays, `unsigned`, the l-value constructor, a vertex shader doubling a uniform on its
+// own copy and `line` as a name, as the SDK and FX Composer wrote them: the lit teapot is Tint's colour
+// (red, half as much green, a quarter as much blue) at full strength, which it reaches only with the
+// uniform doubled, the channels in that order only through the casts and the constructor.
+TEST(FxcFrontEnd, ImplicitConversionsGlslangRefuses) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/fxc_conversions.fx");
+    ASSERT_TRUE(loaded.renderer);
+    EXPECT_FALSE(loaded.diagnostics.hasErrors()) << loaded.diagnostics.str();
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    const uint8_t* brightest = frame.pixel(0, 0);
+    for (int y = 0; y < 72; ++y)
+        for (int x = 0; x < 96; ++x)
+            if (frame.pixel(x, y)[0] > brightest[0]) brightest = frame.pixel(x, y);
+    EXPECT_GT(brightest[0], 200);
+    EXPECT_NEAR(brightest[1], brightest[0] / 2.0, 8.0);
+    EXPECT_NEAR(brightest[2], brightest[0] / 4.0, 8.0);
+}
+
+// A Sample offset from a loop (GLSL takes constant offsets only; the driver refused to link the pass) and
+// an `unsigned int` counter: the Shift columns left of the middle average red and green, none right of it.
+TEST(FxcFrontEnd, SampleOffsetsFromVariables) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/d3d10/variable_offsets.fx");
+    ASSERT_TRUE(loaded.renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    constexpr int kWidth = 96, kHeight = 8, kShift = 4;
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    auto isColour = [&](int x, int r, int g, int b) {
+        const uint8_t* p = frame.pixel(x, kHeight / 2);
+        return std::abs(p[0] - r) <= 2 && std::abs(p[1] - g) <= 2 && std::abs(p[2] - b) <= 2;
+    };
+    for (int x = 0; x < kWidth; ++x) {
+        const bool mixed = x >= kWidth / 2 - kShift && x < kWidth / 2;
+        EXPECT_TRUE(mixed            ? isColour(x, 128, 128, 0)
+                    : x < kWidth / 2 ? isColour(x, 255, 0, 0)
+                                     : isColour(x, 0, 255, 0))
+            << "column " << x;
+    }
+}
+
 // ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
 // warnings, and the pass (named `P0`, scripted `Pass=p0`) draws into the frame.
 TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {

@@ -92,6 +92,10 @@ FX_DIAGNOSTIC(TypeMismatch, Error, "{0}")
 FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
 FX_DIAGNOSTIC(VertexInputConstant, Note,
               "vertex input '{0}' matches no mesh stream by its name; it reads the constant {1}")
+// glslang's "mul() matrix size mismatch" said as fxc said it: both truncate the larger operand.
+FX_DIAGNOSTIC(ImplicitTruncation, Warning,
+              "implicit truncation of vector type (fxc's X3206): mul() of a vector and a matrix that differ "
+              "in size reads only the rows or columns both have")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")

@@ -1,0 +1,430 @@
+// HlslLegalization: see HlslLegalization.h.
+//
+// [SECTION] Edits of the preprocessed text
+// [SECTION] Token walking
+// [SECTION] The rewrites
+// [SECTION] Helpers the rewrites call
+// [SECTION] legalizeFunctions()
+#include "HlslLegalization.h"
+
+#include "HlslSpelling.h"
+#include "TypeNames.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace fx::detail {
+
+namespace {
+
+// [SECTION] Edits of the preprocessed text
+
+// Replaces text[begin, end) (an insertion where begin == end); offsets into the preprocessed text.
+struct Edit {
+    size_t begin = 0;
+    size_t end = 0;
+    std::string text;
+};
+
+// The text of text[begin, end) with the edits inside it applied (edits never overlap; insertions at one
+// offset keep the order they were made in).
+std::string applyEdits(const std::string& text, size_t begin, size_t end, std::vector<Edit> edits) {
+    std::stable_sort(edits.begin(), edits.end(),
+                     [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
+    std::string out;
+    size_t at = begin;
+    for (const Edit& e : edits) {
+        if (e.begin < at || e.end > end) continue;  // overlapping: the first one made wins
+        out.append(text, at, e.begin - at);
+        out += e.text;
+        at = e.end;
+    }
+    out.append(text, at, end - at);
+    return out;
+}
+
+// [SECTION] Token walking
+
+class FunctionTokens {
+public:
+    FunctionTokens(const std::vector<Token>& tokens, const FunctionTokenRange& range)
+        : mTokens(tokens), mRange(range) {}
+
+    size_t first() const { return mRange.first; }
+    size_t last() const { return mRange.last; }
+    const Token& at(size_t i) const { return mTokens[std::min(i, mRange.last)]; }
+    bool is(size_t i, const char* spelling) const { return i <= mRange.last && mTokens[i].is(spelling); }
+    bool isIdentifier(size_t i) const {
+        return i <= mRange.last && mTokens[i].kind == Token::Kind::Identifier;
+    }
+
+    // The index of the bracket closing the one at `open` ('(', '[' or '{'), or last() + 1.
+    size_t closing(size_t open) const {
+        int depth = 0;
+        for (size_t i = open; i <= mRange.last; ++i) {
+            const Token& t = mTokens[i];
+            if (t.is("(") || t.is("[") || t.is("{")) ++depth;
+            if (t.is(")") || t.is("]") || t.is("}")) {
+                if (--depth == 0) return i;
+            }
+        }
+        return mRange.last + 1;
+    }
+
+    // After a postfix chain that starts at `i` (`.member`, `[index]`, `(arguments)`): the next token.
+    size_t afterPostfix(size_t i) const {
+        for (;;) {
+            if (is(i, ".") && isIdentifier(i + 1))
+                i += 2;
+            else if (is(i, "[") || is(i, "("))
+                i = closing(i) + 1;
+            else
+                return i;
+        }
+    }
+
+    // After the unary expression that starts at `i`: a name or a parenthesized expression with its postfix
+    // chain, a call, a literal; a prefix operator with its operand.
+    size_t afterUnary(size_t i) const {
+        if (is(i, "-") || is(i, "+") || is(i, "!") || is(i, "~")) return afterUnary(i + 1);
+        if (is(i, "(")) return afterPostfix(closing(i) + 1);
+        if (i > mRange.last) return i;
+        return afterPostfix(i + 1);
+    }
+
+    // Whether a statement may start at `i`.
+    bool startsStatement(size_t i) const {
+        return i > mRange.first &&
+               (is(i - 1, ";") || is(i - 1, "{") || is(i - 1, "}") || is(i - 1, ")") || is(i - 1, "else"));
+    }
+
+private:
+    const std::vector<Token>& mTokens;
+    const FunctionTokenRange& mRange;
+};
+
+bool isAssignmentOperator(const Token& t) {
+    static const char* kOperators[] = {"=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "|=", "^="};
+    return std::any_of(std::begin(kOperators), std::end(kOperators),
+                       [&](const char* op) { return t.is(op); });
+}
+
+// A scalar or vector type name ("float", "half3"): its base's spelling and component count.
+bool vectorTypeName(const std::string& name, std::string& base, int& components) {
+    TypeDesc type;
+    if (!parseScalarTypeName(name, type) || type.shape == Shape::Matrix) return false;
+    components = type.shape == Shape::Vector ? type.cols : 1;
+    base = components == 1 ? name : name.substr(0, name.size() - 1);
+    return true;
+}
+
+// [SECTION] Helpers the rewrites call
+
+std::string arrayCastName(const std::string& base, int n) {
+    return "fx_to_array_" + base + "_" + std::to_string(n);
+}
+
+// `(T[N])v`: an array of the vector's first N components (an array type cannot be returned unnamed).
+std::string arrayCastHelper(const std::string& base, int n) {
+    const std::string array = "fx_array_" + base + "_" + std::to_string(n);
+    std::string components;
+    for (int i = 0; i < n; ++i) components += (i ? ", v." : "v.") + std::string(1, "xyzw"[i]);
+    if (n == 1) components = "v";
+    return "typedef " + base + " " + array + "[" + std::to_string(n) + "];\n" + array + " " +
+           arrayCastName(base, n) + "(" + base + (n > 1 ? std::to_string(n) : "") + " v) { " + array +
+           " a = { " + components + " }; return a; }\n";
+}
+
+// `T(a, b) = e;`: one overload per way of splitting T's components among two or more l-values.
+std::string lvalueConstructorHelper(const std::string& base, int n) {
+    std::string out;
+    const std::string vector = base + std::to_string(n);
+    // Every composition of n into two or more parts: bit i of `cuts` set cuts after component i.
+    for (unsigned cuts = 1; cuts < (1u << (n - 1)); ++cuts) {
+        std::string params, body;
+        int start = 0, part = 0;
+        for (int i = 0; i < n; ++i) {
+            if (i + 1 < n && !(cuts & (1u << i))) continue;
+            const int size = i + 1 - start;
+            const std::string name = "a" + std::to_string(part++);
+            params += "out " + base + (size > 1 ? std::to_string(size) : "") + " " + name + ", ";
+            body += name + " = v." +
+                    std::string("xyzw").substr(static_cast<size_t>(start), static_cast<size_t>(size)) + "; ";
+            start = i + 1;
+        }
+        out += "void fx_assign_" + vector + "(" + params + vector + " v) { " + body + "}\n";
+    }
+    return out;
+}
+
+// [SECTION] The rewrites
+
+// What the rewrites of one effect need and produce.
+class Legalizer {
+public:
+    Legalizer(const std::function<bool(const Token&)>& isTypeName, Effect& effect)
+        : mIsTypeName(isTypeName), mEffect(effect) {}
+
+    void rewriteLocally(const FunctionTokens& f, std::vector<Edit>& edits) {
+        for (size_t i = f.first(); i <= f.last(); ++i) {
+            const Token& t = f.at(i);
+            if (t.is("unsigned")) {
+                // `unsigned int` and `unsigned` alone are both uint; `unsigned` was a reserved word to
+                // glslang.
+                edits.push_back({t.begin, t.end, "uint"});
+                if (f.is(i + 1, "int")) edits.push_back({f.at(i + 1).begin, f.at(i + 1).end, ""});
+            } else if (isKeywordUsedAsName(f, i)) {
+                edits.push_back({t.begin, t.end, "fx_" + t.text});
+            } else if (t.is("(") && f.isIdentifier(i + 1) && f.is(i + 2, "[") &&
+                       f.at(i + 3).kind == Token::Kind::Number && f.is(i + 4, "]") && f.is(i + 5, ")")) {
+                rewriteArrayCast(f, i, edits);
+            } else if (f.isIdentifier(i) && f.isIdentifier(i + 1) && f.is(i + 2, "[") &&
+                       f.at(i + 3).kind == Token::Kind::Number && f.is(i + 4, "]") && f.is(i + 5, "=") &&
+                       f.is(i + 6, "{")) {
+                regroupFlatInitializer(f, i, edits);
+            } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.is(i + 1, "Sample") &&
+                       f.is(i + 2, "(")) {
+                rewriteVariableOffset(f, i - 1, edits);
+            } else if (f.startsStatement(i)) {
+                rewriteLvalueConstructor(f, i, edits);
+            }
+        }
+    }
+
+    // The uniform parameters some function writes (they are not declared again in that function).
+    std::set<std::string> writtenUniforms(const FunctionTokens& f) const {
+        std::set<std::string> declared, written;
+        for (size_t i = f.first() + 1; i <= f.last(); ++i)
+            if (f.isIdentifier(i) && mIsTypeName(f.at(i - 1))) declared.insert(f.at(i).text);
+        for (size_t i = f.first(); i <= f.last(); ++i) {
+            const Token& t = f.at(i);
+            if (t.kind != Token::Kind::Identifier || (i > f.first() && f.is(i - 1, ".")) ||
+                declared.count(t.text) || !isUniform(t.text))
+                continue;
+            const size_t after = f.afterPostfix(i + 1);
+            const bool prefixed = i > f.first() && (f.is(i - 1, "++") || f.is(i - 1, "--"));
+            if (prefixed || f.is(after, "++") || f.is(after, "--") ||
+                (after <= f.last() && isAssignmentOperator(f.at(after))))
+                written.insert(t.text);
+        }
+        return written;
+    }
+
+    // Every mention of a written uniform, in every function, names its static copy.
+    void renameWritten(const FunctionTokens& f, const std::set<std::string>& written,
+                       std::vector<Edit>& edits) const {
+        for (size_t i = f.first(); i <= f.last(); ++i) {
+            const Token& t = f.at(i);
+            if (t.kind == Token::Kind::Identifier && written.count(t.text) &&
+                !(i > f.first() && f.is(i - 1, ".")))
+                edits.push_back({t.begin, t.end, copyName(t.text)});
+        }
+    }
+
+    static std::string copyName(const std::string& uniform) { return "fx_mutable_" + uniform; }
+
+    // The declarations the rewrites call, each once, in the order first needed: those that name nothing
+    // of the effect's, and by parameter those that must follow its declaration.
+    const std::vector<std::string>& helpers() const { return mHelpers; }
+    std::map<std::string, std::vector<std::string>>& afterParameter() { return mAfterParameter; }
+
+private:
+    bool isUniform(const std::string& name) const {
+        const Parameter* p = mEffect.findParameter(name);
+        return p && !p->isStatic && !p->isConst && p->type.base != BaseType::String &&
+               (isNumericType(p->type) || p->type.base == BaseType::Struct);
+    }
+
+    // `line`, `point`, `linear` and the other words glslang reserves as modifiers, where fxc let a
+    // program name a variable so: a modifier is always followed by a type or another modifier, a name never.
+    bool isKeywordUsedAsName(const FunctionTokens& f, size_t i) const {
+        static const std::set<std::string> kModifiers = {
+            "line",   "point",    "triangle",        "lineadj",       "triangleadj",
+            "linear", "centroid", "nointerpolation", "noperspective", "precise"};
+        const Token& t = f.at(i);
+        return t.kind == Token::Kind::Identifier && kModifiers.count(t.text) && !f.isIdentifier(i + 1) &&
+               !(i > f.first() && f.is(i - 1, "."));
+    }
+
+    // `(T[N]) operand` -> `fx_to_array_T_N(operand)`.
+    void rewriteArrayCast(const FunctionTokens& f, size_t open, std::vector<Edit>& edits) {
+        std::string base;
+        int components = 0;
+        const Token& count = f.at(open + 3);
+        if (!vectorTypeName(f.at(open + 1).text, base, components) || components != 1 || !count.isInteger ||
+            count.number < 1 || count.number > 4)
+            return;
+        const int n = static_cast<int>(count.number);
+        const size_t operand = open + 6, after = f.afterUnary(operand);
+        if (operand > f.last() || after > f.last() + 1) return;
+        const std::string name = arrayCastName(base, n);
+        edits.push_back({f.at(open).begin, f.at(open + 5).end, name + "("});
+        edits.push_back({f.at(after - 1).end, f.at(after - 1).end, ")"});
+        need(name, [&] { return arrayCastHelper(base, n); });
+    }
+
+    // `float4 v[3] = { 0, 0, ... };` with 12 scalars -> `{ float4(0, 0, 0, 0), ... }`: fxc filled an array
+    // of vectors from a flat list, glslang wants one constructor per element.
+    void regroupFlatInitializer(const FunctionTokens& f, size_t type, std::vector<Edit>& edits) const {
+        std::string base;
+        int components = 0;
+        const Token& count = f.at(type + 3);
+        if (!vectorTypeName(f.at(type).text, base, components) || components < 2 || !count.isInteger) return;
+        const size_t open = type + 6, close = f.closing(open);
+        std::vector<std::pair<size_t, size_t>> elements;  // first and last token of each
+        size_t start = open + 1;
+        for (size_t i = open + 1; i <= close && close <= f.last(); ++i) {
+            if (f.is(i, "{")) return;  // already grouped
+            if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
+            if (f.is(i, ",") || i == close) {
+                if (i > start) elements.push_back({start, i - 1});
+                start = i + 1;
+            }
+        }
+        if (elements.size() != static_cast<size_t>(count.number) * static_cast<size_t>(components) ||
+            count.number < 2)
+            return;
+        for (size_t e = 0; e < elements.size(); e += static_cast<size_t>(components)) {
+            edits.push_back(
+                {f.at(elements[e].first).begin, f.at(elements[e].first).begin, f.at(type).text + "("});
+            const Token& last = f.at(elements[e + static_cast<size_t>(components) - 1].second);
+            edits.push_back({last.end, last.end, ")"});
+        }
+    }
+
+    // `T(a, b) = e;` -> `fx_assign_T(a, b, e);`.
+    void rewriteLvalueConstructor(const FunctionTokens& f, size_t i, std::vector<Edit>& edits) {
+        std::string base;
+        int components = 0;
+        if (!f.isIdentifier(i) || !f.is(i + 1, "(") || !vectorTypeName(f.at(i).text, base, components) ||
+            components < 2)
+            return;
+        const size_t close = f.closing(i + 1);
+        if (!f.is(close + 1, "=")) return;
+        size_t end = close + 2;
+        while (end <= f.last() && !f.is(end, ";"))
+            end = f.is(end, "(") || f.is(end, "[") ? f.closing(end) + 1 : end + 1;
+        if (end > f.last()) return;
+        const std::string name = "fx_assign_" + f.at(i).text;
+        edits.push_back({f.at(i).begin, f.at(i + 1).end, name + "("});
+        // Token by token, so that a line break between them stays.
+        edits.push_back({f.at(close).begin, f.at(close).end, ""});
+        edits.push_back({f.at(close + 1).begin, f.at(close + 1).end, ","});
+        edits.push_back({f.at(end).begin, f.at(end).begin, ")"});
+        need(name, [&] { return lvalueConstructorHelper(base, components); });
+    }
+
+    // `T.Sample(S, uv, offset)` with an offset GLSL would refuse as not constant ->
+    // `T.Sample(S, fx_offset_uv_T(uv, offset))`: the offset in texels of level 0 added to the coordinate.
+    void rewriteVariableOffset(const FunctionTokens& f, size_t receiver, std::vector<Edit>& edits) {
+        const Parameter* texture = mEffect.findParameter(f.at(receiver).text);
+        static const std::map<BaseType, const char*> kCoordinates = {{BaseType::Texture1D, "float"},
+                                                                     {BaseType::Texture1DArray, "float2"},
+                                                                     {BaseType::Texture2D, "float2"},
+                                                                     {BaseType::Texture2DArray, "float3"},
+                                                                     {BaseType::Texture3D, "float3"}};
+        if (!texture || !texture->type.arrayDims.empty() || !kCoordinates.count(texture->type.base)) return;
+        // The arguments: sampler, coordinate, offset[, clamp].
+        const size_t open = receiver + 3, close = f.closing(open);
+        std::vector<size_t> commas;
+        for (size_t i = open + 1; i < close; ++i) {
+            if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
+            if (f.is(i, ",")) commas.push_back(i);
+        }
+        if (close > f.last() || commas.size() < 2 || commas.size() > 3) return;
+        const size_t offsetEnd = commas.size() == 3 ? commas[2] : close;
+        bool constant = true;
+        for (size_t i = commas[1] + 1; i < offsetEnd; ++i) {
+            const Token& t = f.at(i);
+            const Parameter* named =
+                t.kind == Token::Kind::Identifier ? mEffect.findParameter(t.text) : nullptr;
+            std::string base;
+            int components = 0;
+            if (t.kind == Token::Kind::Identifier && !vectorTypeName(t.text, base, components) &&
+                !(named && named->isStatic && named->isConst))
+                constant = false;
+        }
+        if (constant) return;
+        const std::string name = "fx_offset_uv_" + texture->name;
+        edits.push_back({f.at(commas[0] + 1).begin, f.at(commas[0] + 1).begin, name + "("});
+        edits.push_back({f.at(offsetEnd - 1).end, f.at(offsetEnd - 1).end, ")"});
+        if (!mNeeded.insert(name).second) return;
+        const BaseType base = texture->type.base;
+        const std::string coordinate = kCoordinates.at(base);
+        const bool oneD = base == BaseType::Texture1D || base == BaseType::Texture1DArray;
+        const std::string sizes = base == BaseType::Texture1D        ? "w"
+                                  : base == BaseType::Texture1DArray ? "w, layers"
+                                  : base == BaseType::Texture2D      ? "w, h"
+                                  : base == BaseType::Texture2DArray ? "w, h, layers"
+                                                                     : "w, h, d";
+        const std::string step = base == BaseType::Texture1D        ? "float(o) / float(w)"
+                                 : base == BaseType::Texture1DArray ? "float2(float(o) / float(w), 0)"
+                                 : base == BaseType::Texture2D      ? "float2(o) / float2(w, h)"
+                                 : base == BaseType::Texture2DArray ? "float3(float2(o) / float2(w, h), 0)"
+                                                                    : "float3(o) / float3(w, h, d)";
+        const std::string offset = oneD ? "int" : base == BaseType::Texture3D ? "int3" : "int2";
+        mAfterParameter[texture->name].push_back(
+            coordinate + " " + name + "(" + coordinate + " uv, " + offset + " o) { uint " + sizes + "; " +
+            texture->name + ".GetDimensions(" + sizes + "); return uv + " + step + "; }");
+    }
+
+    template <typename Make>
+    void need(const std::string& name, Make make) {
+        if (mNeeded.insert(name).second) mHelpers.push_back(make());
+    }
+
+    const std::function<bool(const Token&)>& mIsTypeName;
+    Effect& mEffect;
+    std::set<std::string> mNeeded;
+    std::vector<std::string> mHelpers;
+    std::map<std::string, std::vector<std::string>> mAfterParameter;
+};
+
+}  // namespace
+
+// [SECTION] legalizeFunctions()
+
+void legalizeFunctions(const std::vector<Token>& tokens, const std::string& text,
+                       const std::vector<FunctionTokenRange>& ranges,
+                       const std::function<bool(const Token&)>& isTypeName, Effect& effect) {
+    Legalizer legalizer(isTypeName, effect);
+    std::set<std::string> written;
+    for (const FunctionTokenRange& range : ranges) written.merge(legalizer.writtenUniforms({tokens, range}));
+    for (const FunctionTokenRange& range : ranges) {
+        const FunctionTokens f(tokens, range);
+        std::vector<Edit> edits;
+        legalizer.rewriteLocally(f, edits);
+        legalizer.renameWritten(f, written, edits);
+        if (!edits.empty())
+            effect.functions[range.function].hlslText =
+                applyEdits(text, tokens[range.first].begin, tokens[range.last].end, std::move(edits));
+    }
+    // fxc's backward-compatibility mode gave each shader its own modifiable copy of a uniform it writes:
+    // a static initialized from the uniform, declared right after it.
+    for (const std::string& name : written) {
+        const Parameter& p = *effect.findParameter(name);
+        const std::string type = p.type.base == BaseType::Struct ? p.type.structName : hlslTypeName(p.type);
+        legalizer.afterParameter()[name].push_back("static " + type + " " + Legalizer::copyName(name) +
+                                                   arraySuffix(p.type) + " = " + name + ";");
+    }
+    std::vector<DeclRef> order;
+    for (const DeclRef& ref : effect.order) {
+        order.push_back(ref);
+        if (ref.kind != DeclRef::Kind::Parameter) continue;
+        for (std::string& declaration : legalizer.afterParameter()[effect.parameters[ref.index].name]) {
+            effect.verbatim.push_back({std::move(declaration), SourceLoc{}});
+            order.push_back({DeclRef::Kind::Verbatim, effect.verbatim.size() - 1});
+        }
+    }
+    // The helpers use no type of the effect's: first of all.
+    std::vector<DeclRef> helpers;
+    for (const std::string& helper : legalizer.helpers()) {
+        effect.verbatim.push_back({helper, SourceLoc{}});
+        helpers.push_back({DeclRef::Kind::Verbatim, effect.verbatim.size() - 1});
+    }
+    order.insert(order.begin(), helpers.begin(), helpers.end());
+    effect.order = std::move(order);
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,211 @@
+// HlslLegalization: fxc's HLSL that glslang refuses, rewritten on the lexer's tokens before glslang reads
+// it; each rewrite checked in the text glslang gets and through glslang itself (the frames: the effects
+// tests' FxcFrontEnd.ImplicitConversions).
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace fx {
+namespace {
+
+std::shared_ptr<Effect> parse(const std::string& source, DiagnosticList& diags) {
+    return parseEffectSource(source, "legal.fx", ParseOptions{}, diags);
+}
+
+const FunctionDecl& function(const Effect& effect, const std::string& name) {
+    const std::vector<const FunctionDecl*> found = effect.findFunctions(name);
+    EXPECT_EQ(found.size(), 1u) << name;
+    return *found.front();
+}
+
+// Whether `text` holds `part`, blanks aside: the preprocessor respaces tokens (`Tex . Sample`, `- 1`).
+bool contains(const std::string& text, const std::string& part) {
+    auto squeezed = [](std::string s) {
+        s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }), s.end());
+        return s;
+    };
+    return squeezed(text).find(squeezed(part)) != std::string::npos;
+}
+
+// Every pass compiles through glslang and SPIRV-Cross with no error and no warning.
+::testing::AssertionResult compilesClean(const std::shared_ptr<Effect>& effect) {
+    DiagnosticList diags;
+    auto compiled = compileEffect(effect, CompileOptions{}, diags);
+    if (!compiled || !diags.items().empty()) return ::testing::AssertionFailure() << diags.str();
+    return ::testing::AssertionSuccess();
+}
+
+const char* kSkinning = R"(float4 Weights = {0.25, 0.25, 0.5, 0};
+float4x4 Bones[4];
+struct VIn { float4 Pos : POSITION; float4 Indices : BLENDINDICES; float3 Normal : NORMAL; };
+float4 VS(VIn i) : POSITION {
+    float w[4] = (float[4])Weights;
+    int idx[4] = (int[4])i.Indices;
+    float three[3] = (float[ 3 ]) mul(i.Pos, Bones[0]);
+    float4 p = 0;
+    for (unsigned int k = 0; k < 3; k++) p += w[k] * three[k] * mul(i.Pos, Bones[idx[k]]);
+    unsigned last = 3;
+    float4 sums[2] = { 0, 0, 0, 0, 1, -1, 1, w[0] };
+    return p + w[last] * i.Pos + sums[1];
+}
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(HlslLegalization, VectorsCastToArraysFlatInitializersAndUnsigned) {
+    DiagnosticList diags;
+    auto effect = parse(kSkinning, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const std::string& vs = function(*effect, "VS").hlslText;
+    EXPECT_TRUE(contains(vs, "float w[4] = fx_to_array_float_4(Weights);")) << vs;
+    EXPECT_TRUE(contains(vs, "int idx[4] = fx_to_array_int_4(i.Indices);")) << vs;
+    EXPECT_TRUE(contains(vs, "fx_to_array_float_3(mul(i.Pos, Bones[0]));")) << vs;
+    EXPECT_TRUE(contains(vs, "for (uint k = 0;")) << vs;
+    EXPECT_TRUE(contains(vs, "uint last = 3;")) << vs;
+    EXPECT_FALSE(contains(vs, "unsigned")) << vs;
+    EXPECT_TRUE(contains(vs, "float4 sums[2] = { float4(0, 0, 0, 0), float4(1, -1, 1, w[0]) };")) << vs;
+    EXPECT_TRUE(compilesClean(effect));
+}
+
+TEST(HlslLegalization, LvalueConstructorAndKeywordsAsNames) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4 PS(float2 uv : TEXCOORD0, linear float4 c : COLOR0) : COLOR {
+    float2 dxSize, dx;
+    float dyScale; float3 dy;
+    float4( dxSize, dx ) = ddx( float4( uv, uv * 2 ) );
+    float4(dyScale, dy) = ddy(c);
+    float line = dxSize.x;
+    float point = dyScale;
+    return float4(dx, line, point) + dy.xyzz;
+}
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const std::string& ps = function(*effect, "PS").hlslText;
+    EXPECT_TRUE(contains(ps, "fx_assign_float4( dxSize, dx , ddx( float4( uv, uv * 2 ) ));")) << ps;
+    EXPECT_TRUE(contains(ps, "fx_assign_float4(dyScale, dy , ddy(c));")) << ps;
+    EXPECT_TRUE(contains(ps, "linear float4 c")) << ps;  // the modifier stays
+    EXPECT_TRUE(contains(ps, "float fx_line = dxSize.x;")) << ps;
+    EXPECT_TRUE(contains(ps, "float4(dx, fx_line, fx_point)")) << ps;
+    EXPECT_TRUE(compilesClean(effect));
+}
+
+// fxc's backward-compatibility mode, which D3DX9 compiled effects in, let a shader write a uniform: each
+// shader works on its own copy, read by every function it calls.
+TEST(HlslLegalization, AShaderWritingAUniformWorksOnItsOwnCopy) {
+    DiagnosticList diags;
+    auto effect = parse(R"(struct Wave { float freq; float amp; };
+Wave wave[2] = { {1, 2}, {3, 4} };
+float Speed = 1;
+float Scale = 2;
+float Height() { return wave[0].amp * wave[1].freq; }
+float4 VS(float4 p : POSITION) : POSITION {
+    wave[0].freq = Speed;
+    wave[1].amp *= 2;
+    float Scale = 3;  // a local of the same name: the uniform is not written
+    Scale += 1;
+    return p * Height() * Scale;
+}
+float4 PS() : COLOR { return wave[0].freq; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(contains(function(*effect, "VS").hlslText, "fx_mutable_wave[0].freq = Speed;"));
+    EXPECT_TRUE(
+        contains(function(*effect, "Height").hlslText, "fx_mutable_wave[0].amp * fx_mutable_wave[1].freq"));
+    EXPECT_TRUE(contains(function(*effect, "PS").hlslText, "return fx_mutable_wave[0].freq;"));
+    EXPECT_TRUE(contains(function(*effect, "VS").hlslText, "Scale += 1;"));
+    bool copied = false;
+    for (const VerbatimDecl& v : effect->verbatim) {
+        copied = copied || v.hlslText == "static Wave fx_mutable_wave[2] = wave;";
+        EXPECT_FALSE(contains(v.hlslText, "Speed") || contains(v.hlslText, "Scale")) << v.hlslText;
+    }
+    EXPECT_TRUE(copied);
+    EXPECT_TRUE(compilesClean(effect));
+}
+
+// GLSL takes constant texel offsets only (the driver refused to link `textureOffset` with a variable):
+// an offset from a variable is added to the coordinate in texels of the texture's size; a constant one,
+// or one made of static consts, stays an offset.
+TEST(HlslLegalization, SampleOffsetsFromVariablesMoveTheCoordinate) {
+    DiagnosticList diags;
+    auto effect = parse(R"(Texture2D Tex;
+Texture3D Volume;
+SamplerState Point;
+static const int2 kStep = int2(1, 0);
+float4 PS(float2 uv : TEXCOORD0) : SV_Target {
+    float4 c = Tex.Sample(Point, uv, int2(1, -1)) + Tex.Sample(Point, uv, kStep);
+    for (int y = -1; y < 1; y++)
+        for (int x = -1; x < 1; x++)
+            c += Tex.Sample(Point, uv, int2(x, y)) + Volume.Sample(Point, uv.xyx, int3(x, y, 0));
+    return c;
+}
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const std::string& ps = function(*effect, "PS").hlslText;
+    EXPECT_TRUE(contains(ps, "Tex.Sample(Point, uv, int2(1, -1)) + Tex.Sample(Point, uv, kStep);")) << ps;
+    EXPECT_TRUE(contains(ps, "c += Tex.Sample(Point, fx_offset_uv_Tex(uv, int2(x, y)))")) << ps;
+    EXPECT_TRUE(contains(ps, "Volume.Sample(Point, fx_offset_uv_Volume(uv.xyx, int3(x, y, 0)))")) << ps;
+    EXPECT_TRUE(compilesClean(effect));
+}
+
+// A rewrite leaves the columns before it on its line alone, and every line where it was: glslang's
+// message about what follows is at the user's line.
+TEST(HlslLegalization, GlslangMessagesAfterARewriteKeepTheirLine) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4 V;
+float4 VS(float4 p : POSITION) : POSITION {
+    float w[4] = (float[4])V; unsigned int n = 2;
+    return p * w[n] * undeclared;
+}
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
+    ASSERT_TRUE(diags.hasErrors());
+    const Diagnostic& error = diags.items().front();
+    EXPECT_EQ(error.id, DiagId::HlslError) << diags.str();
+    EXPECT_EQ(error.loc.file, "legal.fx");
+    EXPECT_EQ(error.loc.line, 4) << diags.str();
+    EXPECT_EQ(error.loc.column, 23) << diags.str();
+}
+
+// mul(float3, float4x4): glslang reads the matrix's first three rows as fxc did, and says so as fxc did
+// (X3206), at the line of the call.
+TEST(HlslLegalization, MulOfMismatchedSizesWarnsAsFxc) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4x4 M;
+float4 VS(float4 p : POSITION) : POSITION {
+    float4 r = mul(p.xyz, M);
+    return r;
+}
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
+    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
+    const Diagnostic& warning = diags.items().front();
+    EXPECT_EQ(warning.id, DiagId::ImplicitTruncation);
+    EXPECT_EQ(warning.severity, Severity::Warning);
+    EXPECT_EQ(warning.loc.file, "legal.fx");
+    EXPECT_EQ(warning.loc.line, 3);
+    EXPECT_EQ(warning.loc.column, 5);  // glslang gives no column: the statement's
+    EXPECT_NE(warning.message.find("X3206"), std::string::npos) << warning.message;
+}
+
+}  // namespace
+}  // namespace fx
