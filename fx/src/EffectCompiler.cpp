@@ -171,7 +171,9 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         const std::optional<RenderStateId> id = findRenderState(s.name);
         if (id == RenderStateId::GeometryShader) {
             geometry = &s;
-            if (const Expr* compile = shaderExpr(s))
+            if (const Expr* call = streamOutCall(s))
+                streamOutStage(*call, p, pass, slot);
+            else if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile, ShaderStage::Geometry, pass, slot);
         } else if (id == RenderStateId::HullShader || id == RenderStateId::DomainShader) {
             const bool set = !(s.value.kind == Expr::Kind::Identifier && s.value.text == "NULL") &&
@@ -195,10 +197,13 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                   {"a geometry shader after tessellation takes 'triangle' input: the domain shader outputs "
                    "triangles"});
     }
-    // The vertex shader before the pixel shader, whose inputs it may leave unwritten.
+    // The vertex shader before the pixel shader, whose inputs it may leave unwritten; a pass drawing a
+    // capture (DrawAuto) feeds it the capture's elements.
+    drawAutoSource(p, pass);
     for (const StateAssignment& s : p.states)
         if (findRenderState(s.name) == RenderStateId::VertexShader)
             if (const Expr* compile = shaderExpr(s)) compileStage(*compile, ShaderStage::Vertex, pass, slot);
+    mStageStreamOut = {};
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
         if (!id) {
@@ -263,6 +268,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         technique.script = script(t.annotations, technique.hasScript);
         validateScript(technique.script, &t);
         mTechniqueUnsupported.clear();
+        mTechnique = &t;
         for (const Pass& p : t.passes)
             technique.passes.push_back(
                 compilePass(p, PassSlot{mOut->techniques.size(), technique.passes.size()}));
@@ -270,6 +276,8 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
             const size_t index = mOut->techniques.size();
             std::erase_if(mPending,
                           [index](const PendingStage& stage) { return stage.slot.technique == index; });
+            std::erase_if(mStreamOutRequests,
+                          [index](const StreamOutRequest& r) { return r.slot.technique == index; });
             invalid.emplace_back(&t, std::move(mTechniqueUnsupported));
             continue;
         }
@@ -279,6 +287,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
                                      mOut->refusedTechniques))
         mFailed = true;
     finishPendingStages();
+    resolveStreamOutputs();
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes)
             if (blendsDualSource(pass)) declareDualSourceOutput(pass.fragment.glsl);
