@@ -55,9 +55,10 @@ struct LoweredStage {
 
 // What stream output asks of a stage's lowering (docs/d3d10.md, "Stream output").
 struct StageStreamOut {
-    // A geometry shader whose output is captured and not rasterized (a NULL pixel shader): a POSITION
-    // output stays a varying that transform feedback can capture, not only gl_Position, and integer
-    // outputs need no 'nointerpolation'.
+    // A stage whose output is captured and not rasterized (a NULL pixel shader): a geometry shader's
+    // POSITION output stays a varying that transform feedback can capture, not only gl_Position, and its
+    // integer outputs need no 'nointerpolation'; a vertex shader's outputs keep their declared types
+    // instead of float4.
     bool captureOnly = false;
     // A vertex shader of a pass that draws a capture (DrawAuto): the capture's elements' canonical
     // semantics, in order; an input of one of them reads attribute k (its index here), any other a constant.

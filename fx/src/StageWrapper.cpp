@@ -360,6 +360,19 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
+            if (mStreamOut.captureOnly) {
+                // Captured and never linked to a later stage: the output keeps its declared type, so that
+                // transform feedback captures as many components as the declaration names.
+                TypeDesc t = f.type;
+                t.arrayDims.clear();
+                const bool integer = t.base != BaseType::Float && t.base != BaseType::Half;
+                mVaryingOutputs[*location] = t;
+                members += "    [[vk::location(" + std::to_string(*location) + ")]] " +
+                           (integer ? "nointerpolation " : "") + hlslTypeName(t) + " " + name + " : FX_V" +
+                           std::to_string(*location) + ";\n";
+                body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
+                continue;
+            }
             mVaryingOutputs[*location] = float4Type();
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
                        std::to_string(*location) + ";\n";

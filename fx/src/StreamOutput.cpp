@@ -126,7 +126,9 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
         const std::string canonical = entrySemantic(e);
         const bool builtIn = canonical == "SV_POSITION" ||
                              (canonical == "POSITION0" && (request.fromVertex || request.rasterizes));
-        int components = builtIn || request.fromVertex ? 4 : 0;
+        // A vertex shader's outputs are float4 varyings where a pixel shader reads them.
+        const bool float4Varying = request.fromVertex && request.rasterizes;
+        int components = builtIn || float4Varying ? 4 : 0;
         if (!components && outputs) {
             auto found = outputs->find({upperCase(e.semantic), e.semanticIndex});
             if (found != outputs->end()) components = found->second;
@@ -135,12 +137,15 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
             return unsupported(e.loc, "stream-output entry '" + e.text +
                                           "' captures part of an output; GL captures whole outputs (" +
                                           std::to_string(components) + " components here" +
-                                          (builtIn              ? ", the position"
-                                           : request.fromVertex ? ", a float4 varying"
-                                                                : "") +
+                                          (builtIn         ? ", the position"
+                                           : float4Varying ? ", a float4 varying"
+                                                           : "") +
                                           ")");
     }
     if (request.fromVertex) {
+        // Not rasterized: the vertex stage's outputs keep their declared types (reset after the vertex
+        // shader's compile in compilePass).
+        mStageStreamOut.captureOnly = !request.rasterizes;
         // D3D10 streams out the pass's own vertex shader when ConstructGSWithSO is given one.
         for (const StateAssignment& s : p.states)
             if (findRenderState(s.name) == RenderStateId::VertexShader)

@@ -221,11 +221,13 @@ technique10 Vertices { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
     SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw"));
     SetPixelShader(CompileShader(ps_4_0, PS())); } }
 technique10 Partial { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
-    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "UV_COORDS.xy")); SetPixelShader(NULL); } }
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "UV_COORDS.xy")); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+technique10 Whole { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw; UV_COORDS.xy")); SetPixelShader(NULL); } }
 )"),
                             diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
-    ASSERT_EQ(compiled->techniques.size(), 2u) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 3u) << diagnostics.str();
 
     const CompiledPass& slots = compiled->techniques[0].passes[0];
     ASSERT_TRUE(slots.streamOut) << slots.geometry.glsl;
@@ -264,6 +266,15 @@ technique10 Partial { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
     EXPECT_EQ(vertices.streamOut->strides[0], 16u);
     EXPECT_TRUE(vertices.streamOut->rasterizes);
     EXPECT_EQ(vertices.streamOut->primitive, StreamOutput::Primitive::Triangles);
+
+    // Not rasterized, a vertex shader's outputs keep their types: the float2 is captured whole.
+    const CompiledPass& whole = compiled->techniques[2].passes[0];
+    ASSERT_TRUE(whole.streamOut);
+    ASSERT_EQ(whole.streamOut->varyings.size(), 2u);
+    EXPECT_NE(whole.vertex.glsl.find("out vec2 " + whole.streamOut->varyings[1] + ";"), std::string::npos)
+        << whole.vertex.glsl;
+    EXPECT_EQ(whole.streamOut->strides[0], 24u);
+    EXPECT_FALSE(whole.streamOut->rasterizes);
 
     const Diagnostic* partial = find(diagnostics, DiagId::TechniqueRefused);
     ASSERT_NE(partial, nullptr) << diagnostics.str();
