@@ -14,6 +14,7 @@
 #include <fx/Preshader.h>
 
 #include "PassLowering.h"
+#include "StreamOutDeclaration.h"
 #include "StageCompile.h"
 
 #include <map>
@@ -100,6 +101,28 @@ private:
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
     const Expr* shaderExpr(const StateAssignment& s);
     CompiledPass compilePass(const Pass& p, PassSlot slot);
+    // [SECTION] Stream output (StreamOutput.cpp)
+    // A stream-output pass, from the pass's lowering to the varyings resolved in its compiled GLSL.
+    struct StreamOutRequest {
+        PassSlot slot;
+        std::vector<StreamOutEntry> entries;
+        bool fromVertex = false;  // ConstructGSWithSO of a vertex shader: the pass's vertex stage captures
+        bool rasterizes = true;
+        int capacity = 65536;
+        int positionVarying = -1;  // LoweredStage::positionVarying of the capturing geometry shader
+        std::string streamType;    // its output stream's type
+        SourceLoc loc;             // SetGeometryShader's value
+    };
+    // The ConstructGSWithSO a pass's geometry-shader state names, inline or through a shader variable.
+    const Expr* streamOutCall(const StateAssignment& s) const;
+    // Lowers the pass's stream output: its geometry shader compiled for capture (or, for a vertex shader's
+    // output, a note that the vertex stage captures), what GL cannot capture left for the technique.
+    void streamOutStage(const Expr& call, const Pass& p, CompiledPass& pass, PassSlot slot);
+    // `string DrawAuto = "pass";`: the pass index drawn and what its capture feeds the vertex shader.
+    void drawAutoSource(const Pass& p, CompiledPass& pass);
+    // After every stage compiled: each request's varyings named as the GLSL declares the outputs.
+    void resolveStreamOutputs();
+    void unsupported(const SourceLoc& loc, const std::string& message);
 
     const Effect& mEffect;
     const CompileOptions& mOptions;
@@ -113,6 +136,11 @@ private:
     std::optional<std::map<int, TypeDesc>> mPreviousOutputs;
     // The current pass's hull shader, whose partitioning and output topology its domain shader takes.
     const FunctionDecl* mHull = nullptr;
+    const Technique* mTechnique = nullptr;  // the technique being compiled
+    StageStreamOut mStageStreamOut;         // what the next compileStage's lowering needs of stream output
+    int mLastPositionVarying = -1;          // of the last geometry stage compileStage lowered
+    std::string mLastStreamType;
+    std::vector<StreamOutRequest> mStreamOutRequests;
     bool mFailed = false;
     // The diagnostics of the current technique's stages that the lowering could not express
     // (UnsupportedFeature), held back until run() knows whether another technique can run.

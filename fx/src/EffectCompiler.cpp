@@ -173,7 +173,9 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         const std::optional<RenderStateId> id = findRenderState(s.name);
         if (id == RenderStateId::GeometryShader) {
             geometry = &s;
-            if (const Expr* compile = shaderExpr(s))
+            if (const Expr* call = streamOutCall(s))
+                streamOutStage(*call, p, pass, slot);
+            else if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile, ShaderStage::Geometry, pass, slot);
         } else if (id == RenderStateId::HullShader || id == RenderStateId::DomainShader) {
             const bool set = !(s.value.kind == Expr::Kind::Identifier && s.value.text == "NULL") &&
@@ -197,7 +199,9 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                   {"a geometry shader after tessellation takes 'triangle' input: the domain shader outputs "
                    "triangles"});
     }
-    // The vertex shader before the pixel shader, whose inputs it may leave unwritten.
+    // The vertex shader before the pixel shader, whose inputs it may leave unwritten; a pass drawing a
+    // capture (DrawAuto) feeds it the capture's elements.
+    drawAutoSource(p, pass);
     for (const StateAssignment& s : p.states)
         if (findRenderState(s.name) == RenderStateId::VertexShader)
             if (const Expr* compile = shaderExpr(s)) compileStage(*compile, ShaderStage::Vertex, pass, slot);
@@ -215,6 +219,7 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         for (int texcoord = 0; texcoord < 8; ++texcoord) mPreviousOutputs->try_emplace(texcoord, float4);
     }
     bool setsSamplerRegisters = false;
+    mStageStreamOut = {};
     for (const StateAssignment& s : p.states) {
         auto id = findRenderState(s.name);
         if (!id && isSamplerRegisterState(s.name)) {
@@ -300,6 +305,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         technique.script = script(t.annotations, technique.hasScript);
         validateScript(technique.script, &t);
         mTechniqueUnsupported.clear();
+        mTechnique = &t;
         for (const Pass& p : t.passes)
             technique.passes.push_back(
                 compilePass(p, PassSlot{mOut->techniques.size(), technique.passes.size()}));
@@ -309,6 +315,8 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
                           [index](const PendingStage& stage) { return stage.slot.technique == index; });
             std::erase_if(mSamplerRegisterPasses,
                           [index](const auto& p) { return p.first.technique == index; });
+            std::erase_if(mStreamOutRequests,
+                          [index](const StreamOutRequest& r) { return r.slot.technique == index; });
             invalid.emplace_back(&t, std::move(mTechniqueUnsupported));
             continue;
         }
@@ -318,6 +326,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
                                      mOut->refusedTechniques))
         mFailed = true;
     finishPendingStages();
+    resolveStreamOutputs();
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes) {
             if (blendsDualSource(pass)) declareDualSourceOutput(pass.fragment.glsl);

@@ -20,6 +20,21 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
         return fail(DiagId::UnsupportedFeature, stream.loc,
                     {"the element of geometry shader stream '" + stream.name + "' must be a struct"});
     mStreamStruct = decl->name;
+    // A captured and not rasterized stream keeps its POSITION as a varying (transform feedback captures
+    // it by name, and a float3 one would not fit gl_Position), at the first location no other member takes.
+    if (mStreamOut.captureOnly) {
+        std::set<int> taken;
+        for (const StructMember& m : decl->members) {
+            const std::string semantic = canonicalSemantic(m.semantic);
+            if (auto location = varyingLocation(semantic) ? varyingLocation(semantic)
+                                                          : customVaryingLocation(mEffect, semantic))
+                taken.insert(*location);
+        }
+        for (const StructMember& m : decl->members)
+            if (canonicalSemantic(m.semantic) == "POSITION0")
+                for (int location = 0; mPositionVarying < 0 && location < 32; ++location)
+                    if (!taken.count(location)) mPositionVarying = location;
+    }
     std::string members;
     for (const StructMember& m : decl->members) {
         const std::string semantic = canonicalSemantic(m.semantic);
@@ -28,20 +43,27 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
                         {"geometry shader output '" + m.name +
                          "' must be a scalar or a vector (structs, arrays and matrices are not supported)"});
         std::string declared = hlslTypeName(m.type) + " " + m.name;
-        if (semantic == "POSITION0" || semantic == "SV_POSITION") {
+        const bool positionVarying = semantic == "POSITION0" && mPositionVarying >= 0;
+        if (!positionVarying && (semantic == "POSITION0" || semantic == "SV_POSITION")) {
             members += "    " + declared + " : SV_Position;\n";
         } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0) {
             members += "    " + declared + " : " + m.semantic + ";\n";
-        } else if (auto location = varyingLocation(semantic) ? varyingLocation(semantic)
-                                                             : customVaryingLocation(mEffect, semantic)) {
-            if (m.type.base != BaseType::Float && m.type.base != BaseType::Half && m.interpolation.empty())
+        } else if (auto location = positionVarying             ? std::optional<int>(mPositionVarying)
+                                   : varyingLocation(semantic) ? varyingLocation(semantic)
+                                                               : customVaryingLocation(mEffect, semantic)) {
+            const bool integer = m.type.base != BaseType::Float && m.type.base != BaseType::Half;
+            // Captured only, nothing interpolates it; GLSL still wants an integer output flat.
+            const std::string interpolation = integer && m.interpolation.empty() && mStreamOut.captureOnly
+                                                  ? "nointerpolation"
+                                                  : m.interpolation;
+            if (integer && interpolation.empty())
                 return fail(
                     DiagId::UnsupportedFeature, m.loc,
                     {"geometry shader output '" + m.name + "' of an integer type must be 'nointerpolation'"});
             const std::string at = std::to_string(*location);
             members += "    [[vk::location(" + at + ")]] " +
-                       (m.interpolation.empty() ? std::string() : m.interpolation + " ") + declared +
-                       " : FX_V" + at + ";\n";
+                       (interpolation.empty() ? std::string() : interpolation + " ") + declared + " : FX_V" +
+                       at + ";\n";
             mVaryingOutputs[*location] = m.type;
         } else {
             return fail(DiagId::UnsupportedFeature, m.loc,
@@ -125,6 +147,7 @@ bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
     if (stream->direction != FunctionParam::Direction::InOut)
         return fail(DiagId::UnsupportedFeature, stream->loc,
                     {"geometry shader stream '" + stream->name + "' must be 'inout'"});
+    mStreamType = stream->stream;
     if (!streamElement(*stream)) return false;
 
     TypeDesc vertex = input->type;

@@ -168,7 +168,7 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
                                        const std::map<int, TypeDesc>* previousOutputs,
-                                       const FunctionDecl* hull) {
+                                       const FunctionDecl* hull, const StageStreamOut* streamOut) {
     if (!profileMatches(compile.profile, stage)) {
         // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
         for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
@@ -210,6 +210,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
                            stage == ShaderStage::Fragment ? previousOutputs : nullptr,
                            stage == ShaderStage::Domain ? hull : nullptr);
+    if (streamOut) builder.setStreamOut(*streamOut);
     if (!builder.build(argumentGlobals, wrapper)) {
         arguments.resize(firstArgument);
         return std::nullopt;
@@ -217,6 +218,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     out.varyingOutputs = builder.varyingOutputs();
     out.patchVertices = builder.patchVertices();
     out.primitive = builder.primitive();
+    out.streamType = builder.streamType();
+    out.positionVarying = builder.positionVarying();
 
     std::set<std::string> reached = reachableFunctions(effect, fn->name);
     if (!builder.patchConstantFunction().empty())  // named in an attribute's string, so not found as a call

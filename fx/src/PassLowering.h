@@ -47,6 +47,22 @@ struct LoweredStage {
     int patchVertices = 0;  // a hull shader's control points per input patch (its InputPatch<T, n>)
     // A geometry shader's input primitive, as the pass's draws must give it.
     CompiledPass::DrawPrimitive primitive = CompiledPass::DrawPrimitive::Triangles;
+    // A geometry shader's output stream type: "PointStream", "LineStream" or "TriangleStream".
+    std::string streamType;
+    // StageStreamOut::captureOnly: the varying location its POSITION output got (-1: none).
+    int positionVarying = -1;
+};
+
+// What stream output asks of a stage's lowering (docs/d3d10.md, "Stream output").
+struct StageStreamOut {
+    // A stage whose output is captured and not rasterized (a NULL pixel shader): a geometry shader's
+    // POSITION output stays a varying that transform feedback can capture, not only gl_Position, and its
+    // integer outputs need no 'nointerpolation'; a vertex shader's outputs keep their declared types
+    // instead of float4.
+    bool captureOnly = false;
+    // A vertex shader of a pass that draws a capture (DrawAuto): the capture's elements' canonical
+    // semantics, in order; an input of one of them reads attribute k (its index here), any other a constant.
+    std::optional<std::vector<std::string>> capturedInputs;
 };
 
 // An argument of a compile expression bound to a `uniform` entry-point parameter, as lowering finds it:
@@ -61,11 +77,13 @@ struct LoweredArgument {
 // arguments that must be evaluated per draw are appended to `arguments` (named fx_argN, N = their index
 // there). A pixel shader takes `previousOutputs`, the varyingOutputs of the stage before it (geometry or
 // vertex shader) where known; a domain shader takes the pass's `hull` shader (whose partitioning and output
-// topology GL's tessellation evaluation stage declares). Returns nullopt after reporting an error.
+// topology GL's tessellation evaluation stage declares); `streamOut`, what the pass's stream output needs.
+// Returns nullopt after reporting an error.
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
                                        const std::map<int, TypeDesc>* previousOutputs = nullptr,
-                                       const FunctionDecl* hull = nullptr);
+                                       const FunctionDecl* hull = nullptr,
+                                       const StageStreamOut* streamOut = nullptr);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
 // they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.

@@ -54,7 +54,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
     DiagnosticList lowering;
     auto lowered = lowerStage(mEffect, compile, stage, mPassArguments, lowering,
-                              mPreviousOutputs ? &*mPreviousOutputs : nullptr, mHull);
+                              mPreviousOutputs ? &*mPreviousOutputs : nullptr, mHull, &mStageStreamOut);
     // What the pass lowering cannot express (a semantic or stage form shadowfx has no GL counterpart
     // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
     const bool onlyUnsupported =
@@ -76,6 +76,8 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
     if (stage == ShaderStage::Geometry) {
         mPreviousOutputs = lowered->varyingOutputs;
         pass.primitive = lowered->primitive;
+        mLastPositionVarying = lowered->positionVarying;
+        mLastStreamType = lowered->streamType;
     }
     if (stage == ShaderStage::Hull) {
         pass.patchVertices = lowered->patchVertices;

@@ -187,6 +187,15 @@ std::string unmatchedVertexInput(const Field& f) {
 
 }  // namespace
 
+std::optional<int> WrapperBuilder::inputAttribute(const std::string& semantic) const {
+    if (!mStreamOut.capturedInputs) return vertexInputAttribute(semantic);
+    const std::vector<std::string>& captured = *mStreamOut.capturedInputs;
+    const auto [name, index] = splitSemantic(semantic);
+    const auto found = std::find(captured.begin(), captured.end(), name + std::to_string(index));
+    if (found == captured.end()) return std::nullopt;
+    return static_cast<int>(found - captured.begin());
+}
+
 bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
     // One attribute per location, as wide as its widest use. GL takes no bool attributes, and the runtime
     // feeds every stream as floats, so integer and bool inputs read a float attribute converted.
@@ -197,7 +206,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             systemValues.insert(f.semantic);
             continue;
         }
-        const std::optional<int> location = vertexInputAttribute(f.semantic);
+        const std::optional<int> location = inputAttribute(f.semantic);
         if (!location) continue;
         if (!f.type.arrayDims.empty())
             return fail(DiagId::UnsupportedFeature, f.loc,
@@ -225,7 +234,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + id + ", 0, 0, 0)") + ";\n";
             continue;
         }
-        const std::optional<int> location = vertexInputAttribute(f.semantic);
+        const std::optional<int> location = inputAttribute(f.semantic);
         if (!location) {
             if (std::optional<std::string> d3d9 = vertexInputDefault(f.semantic)) {
                 body += assignField(f, *d3d9);
@@ -357,6 +366,19 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
             if (!used.insert(*location).second) continue;
             std::string name = "fx_v" + std::to_string(*location);
+            if (mStreamOut.captureOnly) {
+                // Captured and never linked to a later stage: the output keeps its declared type, so that
+                // transform feedback captures as many components as the declaration names.
+                TypeDesc t = f.type;
+                t.arrayDims.clear();
+                const bool integer = t.base != BaseType::Float && t.base != BaseType::Half;
+                mVaryingOutputs[*location] = t;
+                members += "    [[vk::location(" + std::to_string(*location) + ")]] " +
+                           (integer ? "nointerpolation " : "") + hlslTypeName(t) + " " + name + " : FX_V" +
+                           std::to_string(*location) + ";\n";
+                body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
+                continue;
+            }
             mVaryingOutputs[*location] = float4Type();
             members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
                        std::to_string(*location) + ";\n";

@@ -56,6 +56,7 @@ public:
           mHull(hull) {}
 
     bool build(std::string& globals, std::string& wrapper);
+    void setStreamOut(const StageStreamOut& streamOut) { mStreamOut = streamOut; }
 
     // A geometry shader's output stream element: its name and its redeclaration with varying locations.
     const std::string& streamStruct() const { return mStreamStruct; }
@@ -65,6 +66,8 @@ public:
     int patchVertices() const { return mPatchVertices; }
     CompiledPass::DrawPrimitive primitive() const { return mPrimitive; }
     const std::string& patchConstantFunction() const { return mPatchConstantFunction; }
+    const std::string& streamType() const { return mStreamType; }
+    int positionVarying() const { return mPositionVarying; }
 
 private:
     bool fail(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
@@ -102,6 +105,12 @@ private:
     std::string mStreamStruct;
     std::string mStreamStructText;
     std::map<int, TypeDesc> mVaryingOutputs;
+    StageStreamOut mStreamOut;
+    std::string mStreamType;
+    int mPositionVarying = -1;
+    // The attribute location feeding a vertex input: the capture's element (StageStreamOut::capturedInputs)
+    // or the mesh stream its name points to; nullopt where it reads a constant.
+    std::optional<int> inputAttribute(const std::string& semantic) const;
 };
 
 }  // namespace fx

@@ -195,6 +195,8 @@ void StateAssignments::normalizeCompileShader(Expr& e) {
 void StateAssignments::validateShaderValue(StateAssignment& state) {
     Expr& v = state.value;
     if (v.kind == Expr::Kind::Compile) return;
+    // Stream output (checked by the parser, lowered by the compiler): a geometry shader's value only.
+    if (v.kind == Expr::Kind::Call && v.text == "ConstructGSWithSO" && state.name == "GeometryShader") return;
     if (v.kind == Expr::Kind::Identifier) {
         if (v.text == "NULL") return;
         const Parameter* p = mEffect.findParameter(v.text);

@@ -5,6 +5,7 @@
 #include "SemanticTables.h"
 #include "StringLocation.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -38,8 +39,6 @@ bool isBlank(char c) {
     return std::isspace(static_cast<unsigned char>(c)) != 0;
 }
 
-using OutputSignature = std::map<std::pair<std::string, int>, int>;  // (SEMANTIC, index) -> components
-
 // Adds an output with `semantic` of `type`; false where the output is not a plain scalar or vector (a
 // nested struct, an array, a matrix), whose signature this check does not follow.
 bool addOutput(const Effect& effect, const TypeDesc& type, const std::string& semantic,
@@ -57,10 +56,10 @@ bool addOutput(const Effect& effect, const TypeDesc& type, const std::string& se
     return true;
 }
 
-// The outputs the shader of `ConstructGSWithSO`'s first argument writes: a geometry shader's stream
-// element, or a vertex shader's return value and out parameters. Nothing where the function is not one
-// definition this check can read.
-std::optional<OutputSignature> outputSignature(const Expr& shader, const Effect& effect, std::string& name) {
+}  // namespace
+
+std::optional<OutputSignature> streamOutputSignature(const Expr& shader, const Effect& effect,
+                                                     std::string& name) {
     const Expr* compiled = &shader;
     if (shader.kind == Expr::Kind::Identifier) {
         const Parameter* variable = effect.findParameter(shader.text);
@@ -87,11 +86,9 @@ std::optional<OutputSignature> outputSignature(const Expr& shader, const Effect&
     return out;
 }
 
-}  // namespace
-
-std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
-                                                        const ReportStreamOutError& error) {
-    std::vector<StreamOutElement> elements;
+std::vector<StreamOutEntry> parseStreamOutDeclaration(const Expr& declaration,
+                                                      const ReportStreamOutError& error) {
+    std::vector<StreamOutEntry> elements;
     const std::string& text = declaration.text;
     size_t begin = 0;
     while (begin <= text.size()) {
@@ -103,7 +100,7 @@ std::vector<StreamOutElement> parseStreamOutDeclaration(const Expr& declaration,
         begin = end + 1;
         if (first == last) continue;  // "a; b;" ends in an empty entry, which D3DX took
         const std::string entry = text.substr(first, last - first);
-        StreamOutElement element;
+        StreamOutEntry element;
         element.text = entry;
         element.loc = stringLocation(declaration, first);
         auto fail = [&](const std::string& why) {
@@ -171,10 +168,10 @@ void validateConstructGSWithSO(const Expr& call, const Effect& effect, const Rep
         return;
     }
     std::string function;
-    const std::optional<OutputSignature> outputs = outputSignature(call.args[0], effect, function);
+    const std::optional<OutputSignature> outputs = streamOutputSignature(call.args[0], effect, function);
     for (size_t i = 1; i < call.args.size() && i < 5; ++i) {
         if (call.args[i].kind != Expr::Kind::String) continue;
-        for (const StreamOutElement& e : parseStreamOutDeclaration(call.args[i], error)) {
+        for (const StreamOutEntry& e : parseStreamOutDeclaration(call.args[i], error)) {
             if (!outputs || e.semantic == "$SKIP") continue;
             const std::string semantic =
                 e.semantic + (e.semanticIndex ? std::to_string(e.semanticIndex) : "");
@@ -189,6 +186,21 @@ void validateConstructGSWithSO(const Expr& call, const Effect& effect, const Rep
                                    (found->second == 1 ? "" : "s")});
         }
     }
+}
+
+std::optional<StreamOutCall> readConstructGSWithSO(const Expr& call) {
+    if (call.kind != Expr::Kind::Call || call.text != "ConstructGSWithSO" || call.args.size() < 2)
+        return std::nullopt;
+    StreamOutCall out;
+    out.shader = &call.args[0];
+    const auto ignore = [](DiagId, const SourceLoc&, const std::vector<std::string>&) {};
+    if (call.args[1].kind == Expr::Kind::String)
+        out.entries = parseStreamOutDeclaration(call.args[1], ignore);
+    for (size_t i = 2; i < call.args.size() && i < 5; ++i)
+        out.otherStreams |= call.args[i].kind == Expr::Kind::String;
+    std::stable_sort(out.entries.begin(), out.entries.end(),
+                     [](const StreamOutEntry& a, const StreamOutEntry& b) { return a.slot < b.slot; });
+    return out;
 }
 
 }  // namespace fx::detail

@@ -5,21 +5,10 @@
 
 namespace fx::detail {
 
-std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect& effect) {
+std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect&) {
     if (value.kind == Expr::Kind::Call && value.text == "BindInterfaces")
         return "dynamic shader linkage (BindInterfaces) is not supported: GLSL has no interfaces to bind at "
                "run time";
-    // Stream output, inline or through a shader variable (`GeometryShader gsSO = ConstructGSWithSO(
-    // CompileShader(gs_4_0, GS()), "POSITION.xyz; ...");`): only the techniques that use it are left out,
-    // at the pass that sets it.
-    const Parameter* variable =
-        value.kind == Expr::Kind::Identifier ? effect.findParameter(value.text) : nullptr;
-    if ((value.kind == Expr::Kind::Call && value.text == "ConstructGSWithSO") ||
-        (variable && variable->initializer && variable->initializer->kind == Expr::Kind::Call &&
-         variable->initializer->text == "ConstructGSWithSO"))
-        return std::string("stream output (ConstructGSWithSO") +
-               (variable ? ", held by '" + variable->name + "'" : "") +
-               ") is not supported: shadowfx has no transform feedback";
     return std::nullopt;
 }
 

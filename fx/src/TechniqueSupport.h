@@ -1,8 +1,8 @@
 // TechniqueSupport: which techniques GL can run, and how those it cannot are left out. D3DX offered the
 // next valid technique where one did not validate (FindNextValidTechnique): a technique that uses what GL
 // cannot run is left out with a located warning naming it while another technique can run; an effect none
-// of whose techniques runs is an error. The parser finds some reasons in the syntax (stream output,
-// dynamic linkage, compute shaders), the compiler the rest in the lowering's diagnostics. Private to fx.
+// of whose techniques runs is an error. The parser finds some reasons in the syntax (dynamic
+// linkage, compute shaders), the compiler the rest in the lowering's diagnostics. Private to fx.
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -16,7 +16,7 @@
 namespace fx::detail {
 
 // Why GL cannot run a D3D10 pass's Set*Shader(value), where the value says so by itself: dynamic linkage
-// (BindInterfaces) or stream output (ConstructGSWithSO, inline or held by a shader variable).
+// (BindInterfaces).
 std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect& effect);
 // Why a pass that sets a compute shader is left out.
 inline constexpr const char* kComputeShaderRefusal =

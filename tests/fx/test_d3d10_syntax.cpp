@@ -176,13 +176,9 @@ GeometryShader C = ConstructGSWithSO(CompileShader(vs_4_0, VS()));
 TEST(D3d10Syntax, TechniquesGlCannotRunAreLeftOutWithALocatedWarning) {
     DiagnosticList diagnostics;
     auto compiled = compile(withTechniques(R"(
-GeometryShader Gs = ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw");
-technique10 Streamed { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
-    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw")); } }
 technique11 Computed { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetComputeShader(CompileShader(cs_5_0, PS())); } }
 technique11 Linked { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), Light)); } }
 technique11 Kept { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
-technique10 StreamedThroughAVariable { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(Gs); } }
 )"),
                             diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
@@ -191,22 +187,122 @@ technique10 StreamedThroughAVariable { pass { SetVertexShader(CompileShader(vs_4
     std::vector<std::string> warnings;
     for (const Diagnostic& d : diagnostics.items())
         if (d.id == DiagId::TechniqueRefused) warnings.push_back(str(d));
-    ASSERT_EQ(warnings.size(), 4u) << diagnostics.str();
-    // The shader variable holding ConstructGSWithSO is refused where a pass sets it, not where it is
-    // declared: the file's other techniques still run.
-    EXPECT_NE(warnings[3].find("d3d10.fx:23:111: warning: technique 'StreamedThroughAVariable' is left out: "
-                               "stream output (ConstructGSWithSO, held by 'Gs')"),
-              std::string::npos)
-        << warnings[3];
-    EXPECT_NE(warnings[0].find("d3d10.fx:19:23: warning: technique 'Streamed' is left out: stream output"),
+    ASSERT_EQ(warnings.size(), 2u) << diagnostics.str();
+    EXPECT_NE(warnings[0].find("d3d10.fx:17:77: warning: technique 'Computed' is left out: compute shaders"),
               std::string::npos)
         << warnings[0];
-    EXPECT_NE(warnings[1].find("d3d10.fx:20:77: warning: technique 'Computed' is left out: compute shaders"),
+    EXPECT_NE(warnings[1].find("'Linked' is left out: dynamic shader linkage (BindInterfaces)"),
               std::string::npos)
         << warnings[1];
-    EXPECT_NE(warnings[2].find("'Linked' is left out: dynamic shader linkage (BindInterfaces)"),
-              std::string::npos)
-        << warnings[2];
+}
+
+// [SECTION] Stream output
+
+// ConstructGSWithSO's declaration lowered to transform-feedback varyings: the outputs by their GLSL names,
+// `$SKIP` as gl_SkipComponentsN, output slots separated by gl_NextBuffer, each slot's stride, the elements
+// a drawing pass reads; a vertex shader's output captured from the pass's vertex stage; what GL cannot
+// capture (part of an output) leaves its technique out.
+TEST(D3d10Syntax, StreamOutputDeclarationsBecomeTransformFeedbackVaryings) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+struct Captured { float3 pos : POSITION; float2 uv : UV_COORDS; uint kind : KIND; };
+[maxvertexcount(1)]
+void GS(point VsOut input[1], inout PointStream<Captured> stream)
+{
+    Captured c;
+    c.pos = input[0].Position.xyz;
+    c.uv = input[0].Uv;
+    c.kind = 1;
+    stream.Append(c);
+}
+GeometryShader Gs = ConstructGSWithSO(CompileShader(gs_4_0, GS()), "POSITION.xyz; $SKIP.x; 1:UV_COORDS.xy; 3:KIND.x");
+technique10 Slots < string Script = "Pass=P;"; > { pass P < int StreamOutVertices = 100; > { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(Gs); SetPixelShader(NULL); } }
+technique10 Vertices { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw"));
+    SetPixelShader(CompileShader(ps_4_0, PS())); } }
+technique10 Partial { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "UV_COORDS.xy")); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+technique10 Whole { pass { SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "SV_POSITION.xyzw; UV_COORDS.xy")); SetPixelShader(NULL); } }
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.size(), 3u) << diagnostics.str();
+
+    const CompiledPass& slots = compiled->techniques[0].passes[0];
+    ASSERT_TRUE(slots.streamOut) << slots.geometry.glsl;
+    const StreamOutput& so = *slots.streamOut;
+    ASSERT_EQ(so.varyings.size(), 7u);
+    for (size_t i : {0u, 3u, 6u}) {
+        EXPECT_EQ(so.varyings[i].rfind("gl_", 0), std::string::npos) << so.varyings[i];
+        EXPECT_NE(slots.geometry.glsl.find(" " + so.varyings[i] + ";"), std::string::npos) << so.varyings[i];
+    }
+    EXPECT_EQ(so.varyings[1], "gl_SkipComponents1");
+    EXPECT_EQ(so.varyings[2], "gl_NextBuffer");
+    EXPECT_EQ(so.varyings[4], "gl_NextBuffer");
+    EXPECT_EQ(so.varyings[5], "gl_NextBuffer");
+    EXPECT_EQ(so.strides[0], 16u);
+    EXPECT_EQ(so.strides[1], 8u);
+    EXPECT_EQ(so.strides[2], 0u);
+    EXPECT_EQ(so.strides[3], 4u);
+    ASSERT_EQ(so.elements.size(), 3u);
+    EXPECT_EQ(so.elements[0].semantic, "POSITION0");
+    EXPECT_EQ(so.elements[0].components, 3);
+    EXPECT_EQ(so.elements[1].semantic, "UV_COORDS0");
+    EXPECT_EQ(so.elements[1].slot, 1);
+    EXPECT_EQ(so.elements[2].semantic, "KIND0");
+    EXPECT_EQ(so.elements[2].slot, 3);
+    EXPECT_EQ(so.elements[2].component, StreamOutElement::Component::UInt);
+    EXPECT_EQ(so.primitive, StreamOutput::Primitive::Points);
+    EXPECT_FALSE(so.rasterizes);
+    EXPECT_EQ(so.capacity, 100);
+    // Not rasterized: the POSITION the declaration names stays a varying, gl_Position is not written.
+    EXPECT_EQ(slots.geometry.glsl.find("gl_Position ="), std::string::npos) << slots.geometry.glsl;
+
+    const CompiledPass& vertices = compiled->techniques[1].passes[0];
+    ASSERT_TRUE(vertices.streamOut);
+    EXPECT_TRUE(vertices.geometry.glsl.empty());
+    EXPECT_EQ(vertices.streamOut->varyings, std::vector<std::string>{"gl_Position"});
+    EXPECT_EQ(vertices.streamOut->strides[0], 16u);
+    EXPECT_TRUE(vertices.streamOut->rasterizes);
+    EXPECT_EQ(vertices.streamOut->primitive, StreamOutput::Primitive::Triangles);
+
+    // Not rasterized, a vertex shader's outputs keep their types: the float2 is captured whole.
+    const CompiledPass& whole = compiled->techniques[2].passes[0];
+    ASSERT_TRUE(whole.streamOut);
+    ASSERT_EQ(whole.streamOut->varyings.size(), 2u);
+    EXPECT_NE(whole.vertex.glsl.find("out vec2 " + whole.streamOut->varyings[1] + ";"), std::string::npos)
+        << whole.vertex.glsl;
+    EXPECT_EQ(whole.streamOut->strides[0], 24u);
+    EXPECT_FALSE(whole.streamOut->rasterizes);
+
+    const Diagnostic* partial = find(diagnostics, DiagId::TechniqueRefused);
+    ASSERT_NE(partial, nullptr) << diagnostics.str();
+    EXPECT_NE(
+        str(*partial).find("technique 'Partial' is left out: stream-output entry 'UV_COORDS.xy' captures "
+                           "part of an output; GL captures whole outputs (4 components here, a float4 "
+                           "varying)"),
+        std::string::npos)
+        << str(*partial);
+}
+
+// `string DrawAuto = "pass";` names a stream-output pass of the technique; anything else is a located error.
+TEST(D3d10Syntax, DrawAutoNamesAStreamOutputPass) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+technique10 T { pass Plain < string DrawAuto = "Plain"; > { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)"),
+                            diagnostics);
+    EXPECT_FALSE(compiled);
+    const Diagnostic* error = find(diagnostics, DiagId::InvalidAnnotation);
+    ASSERT_NE(error, nullptr) << diagnostics.str();
+    EXPECT_NE(str(*error).find("d3d10.fx:17:37: error: invalid annotation 'DrawAuto'"), std::string::npos)
+        << str(*error);
+    EXPECT_NE(
+        str(*error).find("expected the name of a pass of technique 'T' whose geometry shader streams out "
+                         "(ConstructGSWithSO); 'Plain' is not one"),
+        std::string::npos)
+        << str(*error);
 }
 
 // A technique whose code uses what the pass lowering cannot express is left out with a located warning

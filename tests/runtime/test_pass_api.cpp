@@ -308,7 +308,8 @@ TEST(PassApi, RenderSceneAfterTheApplicationDrewIntoTheTargetsDrawsThemAgain) {
 // [SECTION] Lookups and annotations
 
 // A D3D10/11 effect with an array, an application texture, a technique in an fxgroup, one the parser leaves
-// out (GL has no stream output) and one the compiler leaves out (nor an SV_Coverage input).
+// out (a compute shader, which a pass does not draw) and one the compiler leaves out (GL has no SV_Coverage
+// input).
 constexpr const char* kPalette = R"(
 float4x4 WorldViewProj : WORLDVIEWPROJECTION < string UIName = "Transform"; >;
 float4 Palette[3] < float2 Range = {0.25, 4}; >;
@@ -324,14 +325,12 @@ VsOut VS(float3 position : POSITION, float2 uv : TEXCOORD0)
     return o;
 }
 float4 PS(VsOut i) : SV_Target { return Albedo.Sample(PointClamp, i.uv) * Palette[1] * Gain; }
-float4 StreamVS(float3 p : POSITION) : SV_Position { return float4(p, 1); }
-technique10 Streamed
+[numthreads(1, 1, 1)] void CS() {}
+technique11 Computed
 {
     pass
     {
-        SetVertexShader(CompileShader(vs_4_0, StreamVS()));
-        SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, StreamVS()), "SV_POSITION.xyzw"));
-        SetPixelShader(NULL);
+        SetComputeShader(CompileShader(cs_5_0, CS()));
     }
 }
 float4 CoveragePS(VsOut i, uint mask : SV_Coverage) : SV_Target { return Palette[0] * mask; }
@@ -472,10 +471,9 @@ TEST(PassApi, ValidatesTechniquesWithTheReasonOneWasLeftOut) {
     const runtime::TechniqueValidation coverage = effect->validateTechnique("Coverage");
     EXPECT_FALSE(coverage.valid);
     EXPECT_EQ(coverage.reason, "pixel input semantic 'SV_COVERAGE' is not supported");
-    const runtime::TechniqueValidation streamed = effect->validateTechnique("Streamed");
-    EXPECT_FALSE(streamed.valid);
-    EXPECT_NE(streamed.reason.find("stream output (ConstructGSWithSO) is not supported"), std::string::npos)
-        << streamed.reason;
+    const runtime::TechniqueValidation computed = effect->validateTechnique("Computed");
+    EXPECT_FALSE(computed.valid);
+    EXPECT_EQ(computed.reason, "compute shaders are dispatched by an application, not drawn by a pass");
     const runtime::TechniqueValidation missing = effect->validateTechnique("Missing");
     EXPECT_FALSE(missing.valid);
     EXPECT_EQ(missing.reason, "the effect has no technique 'Missing'");

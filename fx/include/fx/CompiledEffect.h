@@ -137,6 +137,36 @@ enum class LeaveOutCondition {
     NoLightArea,      // no light has an area: no soft-shadow filter needed
 };
 
+// D3D10's stream output (`ConstructGSWithSO`) as GL transform feedback: what the last stage before the
+// rasterizer (the geometry shader, or the vertex shader a ConstructGSWithSO names) captures into the pass's
+// buffers, resolved by the compiler from the declaration string (docs/d3d10.md, "Stream output").
+struct StreamOutElement {
+    std::string semantic;  // canonical, index included ("POSITION0", "TIMER0")
+    int slot = 0;          // the output buffer (D3D10's slot 0..3)
+    uint32_t offset = 0;   // bytes into the slot's vertex
+    int components = 4;
+    // How the shader writes it: a vertex attribute reading it back converts the same way.
+    enum class Component { Float, Int, UInt };
+    Component component = Component::Float;
+};
+
+struct StreamOutput {
+    // The list glTransformFeedbackVaryings takes (GL_INTERLEAVED_ATTRIBS), in the declaration's order per
+    // slot: the stage's outputs by their GLSL names, `gl_SkipComponentsN` for `$SKIP` and `gl_NextBuffer`
+    // between slots.
+    std::vector<std::string> varyings;
+    std::vector<StreamOutElement> elements;  // what a pass drawing the capture reads, `$SKIP`s left out
+    uint32_t strides[4] = {0, 0, 0, 0};      // bytes per vertex in each slot's buffer (0: slot unused)
+    // What glBeginTransformFeedback is given: the geometry shader's stream type (PointStream, LineStream,
+    // TriangleStream), or, for a vertex shader's output, the primitive the pass draws.
+    enum class Primitive { Points, Lines, Triangles };
+    Primitive primitive = Primitive::Points;
+    // False where the pass's pixel shader is NULL: the runtime captures with GL_RASTERIZER_DISCARD.
+    bool rasterizes = true;
+    // `int StreamOutVertices = N;` on the pass: the vertices each buffer holds; a capture stops there.
+    int capacity = 65536;
+};
+
 struct CompiledPass {
     std::string name;
     SourceLoc loc;
@@ -162,6 +192,13 @@ struct CompiledPass {
     // neighbours across each edge (`triangleadj`).
     enum class DrawPrimitive { Triangles, Points, Lines, TrianglesAdjacency };
     DrawPrimitive primitive = DrawPrimitive::Triangles;
+    // Set where the pass's geometry shader is a ConstructGSWithSO: each draw captures into the pass's
+    // buffers.
+    std::optional<StreamOutput> streamOut;
+    // `string DrawAuto = "pass";` (a stream-output pass of the same technique, this one included): the pass
+    // draws what that pass captured last, as D3D10's DrawAuto, instead of the scene's meshes; its vertex
+    // inputs read the capture's elements by semantic (vertex attribute k is element k). -1: meshes.
+    int drawAuto = -1;
     std::vector<CompileArgument> arguments;
     std::vector<RenderStateSetting> states;  // in source order, shaders excluded
     bool hasScript = false;

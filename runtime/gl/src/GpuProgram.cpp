@@ -137,7 +137,9 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
                        "vec4(1.0); }\n";
     const std::string& fragment = pass.fragment.glsl.empty() ? fixedFunctionPixels : pass.fragment.glsl;
 
-    const bool withPixel = stages == Stages::VertexAndPixel;
+    // A stream-output pass that rasterizes nothing (D3D10's NULL pixel shader) links no fragment stage.
+    const bool withPixel = stages == Stages::VertexAndPixel &&
+                           !(pass.streamOut && !pass.streamOut->rasterizes && pass.fragment.glsl.empty());
     std::string log;
     const GLuint vs = compileShader(GL_VERTEX_SHADER, pass.vertex.glsl, &pass.vertex, pass, log, diagnostics);
     const GLuint fs = withPixel ? compileShader(GL_FRAGMENT_SHADER, fragment,
@@ -165,6 +167,14 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
         if (tes) gl::AttachShader(program->mProgram, tes);
         if (gs) gl::AttachShader(program->mProgram, gs);
         if (fs) gl::AttachShader(program->mProgram, fs);
+        // D3D10's stream output: the declaration's outputs, skips and buffer breaks, as the compiler
+        // resolved them (fx::StreamOutput), captured interleaved per buffer.
+        if (pass.streamOut) {
+            std::vector<const char*> varyings;
+            for (const std::string& name : pass.streamOut->varyings) varyings.push_back(name.c_str());
+            gl::TransformFeedbackVaryings(program->mProgram, static_cast<GLsizei>(varyings.size()),
+                                          varyings.data(), GL_INTERLEAVED_ATTRIBS);
+        }
         gl::LinkProgram(program->mProgram);
         GLint ok = GL_FALSE;
         gl::GetProgramiv(program->mProgram, GL_LINK_STATUS, &ok);

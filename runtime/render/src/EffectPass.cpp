@@ -168,6 +168,31 @@ bool EffectPass::commitChanges(fx::DiagnosticSink* diagnostics) const {
     return true;
 }
 
+std::optional<StreamOutCapture> EffectPass::streamOutput() const {
+    if (!isValid()) return std::nullopt;
+    auto found = mResources->streamOuts.find({mTechnique, mPass});
+    if (found == mResources->streamOuts.end()) return std::nullopt;
+    return found->second->last();
+}
+
+bool EffectPass::beginStreamOutput() const {
+    if (!isValid()) return false;
+    auto found = mResources->streamOuts.find({mTechnique, mPass});
+    if (found == mResources->streamOuts.end()) return false;
+    if (!mResources->effect().techniques[mTechnique].passes[mPass].streamOut->rasterizes)
+        gl::Enable(GL_RASTERIZER_DISCARD);
+    found->second->begin();
+    return true;
+}
+
+void EffectPass::endStreamOutput() const {
+    if (!isValid()) return;
+    auto found = mResources->streamOuts.find({mTechnique, mPass});
+    if (found == mResources->streamOuts.end()) return;
+    found->second->end();
+    gl::Disable(GL_RASTERIZER_DISCARD);
+}
+
 size_t EffectPass::annotationCount() const {
     return isValid() ? mResources->annotations.pass(mTechnique, mPass).size() : 0;
 }

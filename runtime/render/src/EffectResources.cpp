@@ -342,6 +342,9 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
                         fx::DiagId::UnsupportedFeature, fx::Severity::Warning, setting.loc,
                         "DepthBiasClamp is not applied: this OpenGL has no glPolygonOffsetClamp (GL 4.6 or "
                         "ARB_polygon_offset_clamp); the depth bias is unbounded"});
+            if (pass.streamOut)
+                r.streamOuts[{r.programs.size() - 1, passes.size()}] =
+                    std::make_unique<StreamOutBuffers>(*pass.streamOut);
             passes.push_back(std::move(program));
             preshaders.emplace_back(pass);
         }

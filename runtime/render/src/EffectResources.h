@@ -18,6 +18,7 @@
 #include "HostScene.h"
 #include "PassPreshaders.h"
 #include <runtime/SamplerObject.h>
+#include <runtime/StreamOutBuffers.h>
 #include "SemanticBinder.h"
 #include "VisibleSamplePass.h"
 
@@ -69,6 +70,9 @@ public:
         std::unique_ptr<BatchedPass> pass;
     };
     std::map<std::pair<size_t, size_t>, BatchedSlot> batchedPasses;
+    // The capture of every stream-output pass (CompiledPass::streamOut), by technique and pass, made at
+    // load and kept between frames: a pass drawing it (DrawAuto) reads last frame's where it runs first.
+    std::map<std::pair<size_t, size_t>, std::unique_ptr<StreamOutBuffers>> streamOuts;
     std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
     std::map<size_t, GpuTexture> textures;                // by texture parameter index
     std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)

@@ -158,7 +158,9 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     const bool usesDepth =
         states.get(fx::RenderStateId::ZEnable) != 0.0 || states.get(fx::RenderStateId::StencilEnable) != 0.0;
     if (!bindTargets(usesDepth, &pass)) return;
-    GpuProgram* vertexOnly = mOptions.depthOnlyPasses ? depthOnly(pass, passIndex, states) : nullptr;
+    const bool streams = pass.streamOut || pass.drawAuto >= 0;  // its vertices are not the meshes'
+    GpuProgram* vertexOnly =
+        mOptions.depthOnlyPasses && !streams ? depthOnly(pass, passIndex, states) : nullptr;
     if (vertexOnly) program = vertexOnly;
     bindPassTextures(mResources, pass, mTargets);
     bindPassStorageBuffers(mResources, pass);
@@ -169,7 +171,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
     }
     const PassUse& use = mUses[passIndex];
-    BatchedPass* batched = buffer ? nullptr : batchedPass(pass, passIndex, use);
+    BatchedPass* batched = buffer || streams ? nullptr : batchedPass(pass, passIndex, use);
     if (batched) {
         GpuProgram* variant = batched->program(vertexOnly != nullptr);
         if (variant) {
@@ -193,11 +195,21 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         gl::GenQueries(1, &query);
         gl::BeginQuery(GL_SAMPLES_PASSED, query);
     }
-    if (buffer) {
+    StreamOutBuffers* capture =
+        pass.streamOut ? mResources.streamOuts.at({mTechnique, passIndex}).get() : nullptr;
+    if (capture) {
+        if (!pass.streamOut->rasterizes) gl::Enable(GL_RASTERIZER_DISCARD);
+        capture->begin();
+    }
+    if (pass.drawAuto >= 0) {
+        drawCapture(pass, passIndex, *program, use);
+    } else if (buffer) {
         drawWith(pass, passIndex, *program, use, nullptr, mResources.quad);
     } else {
         mVisible.clear();
-        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight);
+        // What a pass streams out must not depend on the view: it draws every object.
+        const bool culling =
+            mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight) && !capture;
         int drawable = 0;
         for (size_t index = 0; index < mScene.objects.size(); ++index) {
             if (!mScene.objects[index].mesh) continue;
@@ -218,6 +230,10 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             mStats.culled += culled;
             if (PassStats* record = currentPass()) record->culled += culled;
         }
+    }
+    if (capture) {
+        capture->end();
+        gl::Disable(GL_RASTERIZER_DISCARD);
     }
     if (PassStats* record = currentPass(); record && vertexOnly)
         record->depthOnlyDraws += mStats.draws - drawsBefore;
@@ -461,6 +477,42 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
         if (drawUnculled) gl::Enable(GL_CULL_FACE);
     }
     countDraw(mesh, 1);
+}
+
+// D3D10's DrawAuto: the vertices the pass named by `DrawAuto` captured last (the seed vertex before its
+// first capture), drawn once with the per-frame values and no object's.
+void FrameExecutor::drawCapture(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
+                                const PassUse& use) {
+    const StreamOutBuffers& source =
+        *mResources.streamOuts.at({mTechnique, static_cast<size_t>(pass.drawAuto)});
+    {
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
+                     mOptions.leaveOut ? SemanticBinder::Scope::PerObject : SemanticBinder::Scope::All,
+                     mOptions.leaveOut ? &use.used : nullptr, &mResources.stamps);
+    }
+    evaluateArguments(passIndex, use, true);
+    {
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+    }
+    // A geometry shader takes the primitive its input declares; without one the vertices are drawn as
+    // they were captured (or as the pass captures them, where it streams out itself).
+    GLenum mode = pass.streamOut ? StreamOutBuffers::mode(pass.streamOut->primitive) : source.primitive();
+    if (!pass.geometry.glsl.empty()) {
+        using Primitive = fx::CompiledPass::DrawPrimitive;
+        mode = pass.primitive == Primitive::Points               ? GL_POINTS
+               : pass.primitive == Primitive::Lines              ? GL_LINES
+               : pass.primitive == Primitive::TrianglesAdjacency ? GL_TRIANGLES_ADJACENCY
+                                                                 : GL_TRIANGLES;
+    }
+    {
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+        source.drawLast(mode);
+    }
+    ++mStats.draws;
+    mTimer.countDraw();
+    if (PassStats* record = currentPass()) ++record->draws;
 }
 
 void FrameExecutor::countDraw(const GpuMesh& mesh, int objects) {

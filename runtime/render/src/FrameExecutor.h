@@ -81,6 +81,7 @@ private:
     void evaluateArguments(size_t passIndex, const PassUse& use, bool perObject);
     void drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use,
                   const SceneObject* object, GpuMesh& mesh);
+    void drawCapture(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use);
     void countDraw(const GpuMesh& mesh, int objects);
     // FrameOptions::batching: the pass's instanced variant for its current per-object parameters, or null
     // where it is drawn object by object.

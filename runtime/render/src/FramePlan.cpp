@@ -48,8 +48,9 @@ void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
         live.insert(kFrameColor);
         for (auto op = ops.rbegin(); op != ops.rend(); ++op) {
             if (op->leftOut != LeftOut::No) continue;
-            const bool needed =
-                std::any_of(op->writes.begin(), op->writes.end(), [&](int w) { return live.count(w) > 0; });
+            const bool needed = std::any_of(op->writes.begin(), op->writes.end(), [&](int w) {
+                return live.count(w) > 0 || isStreamOutResource(w);
+            });
             if (!needed) {
                 op->leftOut = LeftOut::Dead;
                 continue;

@@ -152,6 +152,13 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         const bool depthWrites = depthTest && states.get(fx::RenderStateId::ZWriteEnable) != 0.0;
         if (depthWrites || stencilTest) op.writes.push_back(mDepth);
     }
+    // Stream output: what the pass captures, and whether it rasterizes at all (GL_RASTERIZER_DISCARD
+    // writes no target); a DrawAuto pass reads the capture it draws.
+    if (pass.streamOut) {
+        if (!pass.streamOut->rasterizes) op.writes.clear();
+        op.writes.push_back(streamOutResource(index));
+    }
+    if (pass.drawAuto >= 0) op.reads.push_back(streamOutResource(static_cast<size_t>(pass.drawAuto)));
     for (const fx::SamplerBinding* binding : passSamplers(pass)) {
         const fx::SamplerDesc* desc = mResources.effect().findSampler(binding->samplerParameter);
         if (binding->textureParameter)

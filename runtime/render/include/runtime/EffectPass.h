@@ -24,10 +24,12 @@
 
 #include <runtime/EffectVariable.h>
 #include <runtime/GlStateSnapshot.h>
+#include <runtime/StreamOutBuffers.h>
 
 #include <fx/Diagnostics.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -80,6 +82,17 @@ public:
     // application knows a context is current and what is bound, as D3DX9's CommitChanges. False if this
     // pass is not the one last applied.
     bool commitChanges(fx::DiagnosticSink* diagnostics = nullptr) const;
+
+    // A stream-output pass's (ConstructGSWithSO) last capture, as render() or the application's own
+    // captures left it: the buffers, the transform feedback object to hand glDrawTransformFeedback (D3D10's
+    // DrawAuto) and a vertex array whose attribute k is element k of the declaration (docs/d3d10.md,
+    // "Stream output"). Nothing (nullopt) for a pass without stream output.
+    std::optional<StreamOutCapture> streamOutput() const;
+    // The application's draws between beginStreamOutput() and endStreamOutput(), after apply(), are captured
+    // into the pass's buffers (the set that does not hold the last capture), rasterizing nothing where the
+    // pass's pixel shader is NULL. False for a pass without stream output.
+    bool beginStreamOutput() const;
+    void endStreamOutput() const;
 
     size_t annotationCount() const;
     EffectAnnotation annotation(size_t i) const;

@@ -28,6 +28,15 @@ namespace runtime {
 // A resource an operation writes or reads: a texture parameter index, or the frame's own targets.
 constexpr int kFrameColor = -1;
 constexpr int kFrameDepth = -2;
+// A stream-output pass's capture (its StreamOutBuffers): written by the pass's draws, read by the passes
+// that draw it (DrawAuto). Always live: the next frame and the application read it too.
+constexpr int kFirstStreamOut = -16;
+constexpr int streamOutResource(size_t pass) {
+    return kFirstStreamOut - static_cast<int>(pass);
+}
+constexpr bool isStreamOutResource(int resource) {
+    return resource <= kFirstStreamOut;
+}
 
 // Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
 // the scene does not need it (its pass's `LeaveOutWhen` annotation, or a cascade draw whose depth slice
