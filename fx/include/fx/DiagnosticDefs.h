@@ -41,7 +41,8 @@ FX_DIAGNOSTIC(AllTechniquesRefused, Error,
               "every technique of the effect is left out (the first: '{0}', {1}); nothing can run")
 // fxc's rules for annotations and structs, which glslang's HLSL front end does not enforce.
 FX_DIAGNOSTIC(AnnotationNamesAnnotation, Error,
-              "annotation '{0}' is initialized from annotation '{1}': an annotation's value must be a literal")
+              "annotation '{0}' is initialized from annotation '{1}': an annotation's value must be a "
+              "literal")
 FX_DIAGNOSTIC(ObjectAnnotation, Error,
               "annotation '{0}' has the object type '{1}': annotations hold numbers, vectors, matrices and "
               "strings")
@@ -49,8 +50,8 @@ FX_DIAGNOSTIC(LocalAnnotation, Error,
               "annotations on the local variable '{0}': only parameters, techniques and passes take "
               "annotations")
 FX_DIAGNOSTIC(ObjectInStruct, Error,
-              "struct member '{0}' has the object type '{1}': an effect's structs hold no textures, samplers, "
-              "buffers or states")
+              "struct member '{0}' has the object type '{1}': an effect's structs hold no textures, "
+              "samplers, buffers or states")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
