@@ -96,6 +96,19 @@ void reportDriverLog(const std::string& log, const std::string& what, const fx::
     }
 }
 
+GLuint compileRuntimeShader(GLenum kind, const char* source) {
+    const GLuint shader = gl::CreateShader(kind);
+    gl::ShaderSource(shader, 1, &source, nullptr);
+    gl::CompileShader(shader);
+    GLint ok = GL_FALSE;
+    gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        gl::DeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
 // `stage` is null for the fixed-function pixel stage's stand-in.
 GLuint compileShader(GLenum kind, const std::string& source, const fx::StageProgram* stage,
                      const fx::CompiledPass& pass, std::string& errors, fx::DiagnosticSink& diagnostics) {
@@ -333,6 +346,27 @@ void UniformRing::bindBlock(GLuint binding, const std::vector<uint8_t>& data) {
     gl::BindBufferRange(GL_UNIFORM_BUFFER, binding, mBuffer, static_cast<GLintptr>(mHead),
                         static_cast<GLsizeiptr>(data.size()));
     mHead += size;
+}
+
+GLuint linkRuntimeProgram(const char* vertexSource, const char* fragmentSource) {
+    const GLuint vertex = compileRuntimeShader(GL_VERTEX_SHADER, vertexSource);
+    const GLuint fragment = compileRuntimeShader(GL_FRAGMENT_SHADER, fragmentSource);
+    GLuint program = 0;
+    if (vertex && fragment) {
+        program = gl::CreateProgram();
+        gl::AttachShader(program, vertex);
+        gl::AttachShader(program, fragment);
+        gl::LinkProgram(program);
+        GLint linked = GL_FALSE;
+        gl::GetProgramiv(program, GL_LINK_STATUS, &linked);
+        if (!linked) {
+            gl::DeleteProgram(program);
+            program = 0;
+        }
+    }
+    if (vertex) gl::DeleteShader(vertex);
+    if (fragment) gl::DeleteShader(fragment);
+    return program;
 }
 
 }  // namespace runtime

@@ -3,6 +3,7 @@
 
 #include <runtime/GlApi.h>
 #include <runtime/GpuMesh.h>
+#include <runtime/GpuProgram.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -40,19 +41,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum stage, const char* source) {
-    const GLuint shader = gl::CreateShader(stage);
-    gl::ShaderSource(shader, 1, &source, nullptr);
-    gl::CompileShader(shader);
-    GLint ok = 0;
-    gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        gl::DeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
 }  // namespace
 
 HostScenePainter::~HostScenePainter() {
@@ -61,22 +49,7 @@ HostScenePainter::~HostScenePainter() {
 
 bool HostScenePainter::ready() {
     if (mProgram || mFailed) return mProgram != 0;
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-    if (vertex && fragment) {
-        mProgram = gl::CreateProgram();
-        gl::AttachShader(mProgram, vertex);
-        gl::AttachShader(mProgram, fragment);
-        gl::LinkProgram(mProgram);
-        GLint linked = 0;
-        gl::GetProgramiv(mProgram, GL_LINK_STATUS, &linked);
-        if (!linked) {
-            gl::DeleteProgram(mProgram);
-            mProgram = 0;
-        }
-    }
-    if (vertex) gl::DeleteShader(vertex);
-    if (fragment) gl::DeleteShader(fragment);
+    mProgram = linkRuntimeProgram(kVertexShader, kFragmentShader);
     mFailed = mProgram == 0;
     return mProgram != 0;
 }

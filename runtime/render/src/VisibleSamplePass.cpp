@@ -3,6 +3,7 @@
 
 #include <runtime/GlStateSnapshot.h>
 #include <runtime/GpuMesh.h>
+#include <runtime/GpuProgram.h>
 #include <runtime/IntersectionBody.h>
 #include <runtime/RenderStateApplier.h>
 
@@ -35,19 +36,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum stage, const char* source) {
-    const GLuint shader = gl::CreateShader(stage);
-    gl::ShaderSource(shader, 1, &source, nullptr);
-    gl::CompileShader(shader);
-    GLint ok = 0;
-    gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        gl::DeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
 }  // namespace
 
 VisibleSamplePass::~VisibleSamplePass() {
@@ -59,22 +47,7 @@ VisibleSamplePass::~VisibleSamplePass() {
 
 bool VisibleSamplePass::ready(int width, int height) {
     if (!mProgram && !mFailed) {
-        const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
-        const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-        if (vertex && fragment) {
-            mProgram = gl::CreateProgram();
-            gl::AttachShader(mProgram, vertex);
-            gl::AttachShader(mProgram, fragment);
-            gl::LinkProgram(mProgram);
-            GLint linked = 0;
-            gl::GetProgramiv(mProgram, GL_LINK_STATUS, &linked);
-            if (!linked) {
-                gl::DeleteProgram(mProgram);
-                mProgram = 0;
-            }
-        }
-        if (vertex) gl::DeleteShader(vertex);
-        if (fragment) gl::DeleteShader(fragment);
+        mProgram = linkRuntimeProgram(kVertexShader, kFragmentShader);
         mFailed = mProgram == 0;
     }
     if (!mProgram) return false;

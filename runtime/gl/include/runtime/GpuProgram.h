@@ -15,6 +15,11 @@
 
 namespace runtime {
 
+// A program of the runtime's own GLSL 4.50 (not an effect's: the host's scene material, the camera
+// pre-pass of the visible-sample fits), vertex and fragment stages; 0 if either does not compile or they
+// do not link, which only a driver without GLSL 4.50 gives.
+GLuint linkRuntimeProgram(const char* vertexSource, const char* fragmentSource);
+
 // Writes values into a std140 uniform block image as the reflection describes it.
 class UniformPacker {
 public:
