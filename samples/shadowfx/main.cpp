@@ -187,7 +187,6 @@ int infoCommand(const Arguments& args) {
     StderrSink sink(args.flag("--verbose"));
     std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, "", sink);
     if (!compiled || sink.errors() > 0) return 1;
-    const fx::Effect& effect = *compiled->effect;
     std::cout << "techniques:\n";
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         std::cout << "  " << technique.name << ":";
@@ -200,8 +199,7 @@ int infoCommand(const Arguments& args) {
                            [&](const std::string& name) { return fx::equalsIgnoreCase(name, semantic); });
     };
     std::cout << "parameters:\n";
-    for (size_t i = 0; i < effect.parameters.size(); ++i) {
-        const fx::Parameter& p = effect.parameters[i];
+    for (const fx::ParameterInfo& p : compiled->parameters) {
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
