@@ -424,6 +424,26 @@ std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, 
 using detail::Evaluator;
 using detail::Operator;
 
+std::string PreshaderProgram::malformation(size_t slotCount) const {
+    using Op = Instruction::Op;
+    size_t depth = 0;
+    for (const Instruction& in : mCode) {
+        if (in.op == Op::Constant && in.operand >= mConstants.size()) return "a constant out of range";
+        if (in.op == Op::Fail && in.operand >= mErrors.size()) return "an error out of range";
+        const size_t pops = in.op == Op::Constant || in.op == Op::Load || in.op == Op::Fail     ? 0
+                            : in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
+                            : in.op == Op::Binary || in.op == Op::Index                         ? 2
+                            : in.op == Op::Select                                               ? 3
+                                                                                                : in.count;
+        if (pops > depth) return "an instruction takes more operands than the stack holds";
+        depth = depth - pops + 1;
+    }
+    if (!mCode.empty() && depth != 1) return "the program leaves other than one value";
+    for (size_t input : mInputs)
+        if (input >= slotCount) return "an input slot out of range";
+    return "";
+}
+
 std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
                                            DiagnosticSink* diagnostics) const {
     using Op = Instruction::Op;

@@ -10,6 +10,7 @@
 #include "StressCommand.h"
 #include "EffectLibrary.h"
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/EffectRenderer.h>
@@ -391,7 +392,7 @@ std::map<std::string, Declaration> expectedFailures(const fx::CompiledEffect& ef
         const fx::AnnotationValue* a =
             t.name == technique ? fx::findAnnotation(t.annotations, "StressExpectedFailures") : nullptr;
         if (!a || a->value.type.base != fx::BaseType::String) continue;
-        std::stringstream entries(a->value.text);
+        std::stringstream entries(a->value.string);
         for (std::string entry; std::getline(entries, entry, ';');) {
             const size_t colon = entry.find(':');
             std::string head = trim(entry.substr(0, colon));
@@ -542,6 +543,15 @@ int stressCommand(const Arguments& args) {
         std::sort(effects.begin(), effects.end());
         if (effects.empty()) {
             std::cerr << "shadowfx stress: no effects given and no effects/*.fx here\n";
+            return 2;
+        }
+    }
+    // A compiled file holds one variant; stress compiles its visibility variant from source.
+    for (const std::string& path : effects) {
+        if (fx::isCompiledEffectFile(path)) {
+            std::cerr << path
+                      << ": error: stress compiles the variants it scores from source: give the .fx file "
+                      << "this compiled effect was compiled from\n";
             return 2;
         }
     }

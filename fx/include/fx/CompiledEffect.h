@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace fx {
@@ -305,6 +306,15 @@ struct ParameterInfo {
     Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
 };
 
+// Where a compiled effect came from, recorded in its file (fx/CompiledEffectFile.h) and printed by
+// `shadowfx info`: what to compile again when the file is older than the source.
+struct EffectProvenance {
+    std::string sourcePath;                                    // the .fx file as the compiler was given it
+    std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE, in order
+    std::vector<std::string> includeDirs;                      // -I, in order
+    std::string compilerVersion;                               // "shadowfx 0.1.0"
+};
+
 struct CompiledEffect {
     std::string path;                       // the effect's main file, for diagnostics
     std::vector<ParameterInfo> parameters;  // one per Effect::parameters entry, same indices
@@ -321,6 +331,7 @@ struct CompiledEffect {
     // The most iterations one LoopByCount may run (CompileOptions::maxScriptLoopCount): the compiler
     // checks literal counts, the runtime a parameter's value.
     int maxScriptLoopCount = 1024;
+    EffectProvenance provenance;  // filled by whoever compiles from source with the options it used
 
     // By name; a technique in an fxgroup also by "group.name".
     const CompiledTechnique* findTechnique(const std::string& name) const;
