@@ -75,7 +75,7 @@ static_assert(sizeof(TypeDesc) == 112);
 static_assert(sizeof(Value) == 168);
 static_assert(sizeof(AnnotationValue) == 200);
 static_assert(sizeof(UniformBinding) == 184);
-static_assert(sizeof(SamplerBinding) == 136);
+static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
 static_assert(sizeof(StorageBufferBinding) == 72);
 static_assert(sizeof(VertexInput) == 48);
@@ -93,7 +93,7 @@ static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(ParameterInfo) == 360);
 static_assert(sizeof(EffectProvenance) == 112);
-static_assert(sizeof(CompiledEffect) == 328);
+static_assert(sizeof(CompiledEffect) == 352);
 #endif
 
 // [SECTION] Fields, in file order
@@ -133,6 +133,7 @@ template <class A>
 void fields(A& a, SamplerBinding& x) {
     a(x.glslName, x.unit, x.samplerParameter, x.depthCompare, x.pairTexture, x.pairSampler,
       x.textureParameter);
+    a(x.passSampler);
 }
 template <class A>
 void fields(A& a, StorageBufferBinding::Run& x) {
@@ -221,7 +222,8 @@ void fields(A& a, EffectProvenance& x) {
 }
 template <class A>
 void fields(A& a, CompiledEffect& x) {
-    a(x.provenance, x.path, x.parameters, x.initialValues, x.textures, x.samplers, x.techniques);
+    a(x.provenance, x.path, x.parameters, x.initialValues, x.textures, x.samplers, x.passSamplers);
+    a(x.techniques);
     a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.maxScriptLoopCount);
 }
 

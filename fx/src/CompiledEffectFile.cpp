@@ -51,9 +51,10 @@ public:
             return "initial values and parameters differ in number";
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters) return "a texture names no parameter";
-        for (const SamplerDesc& sampler : mEffect.samplers)
-            if (sampler.parameter >= mParameters || (sampler.texture && *sampler.texture >= mParameters))
-                return "a sampler names no parameter";
+        for (const std::vector<SamplerDesc>* list : {&mEffect.samplers, &mEffect.passSamplers})
+            for (const SamplerDesc& sampler : *list)
+                if (sampler.parameter >= mParameters || (sampler.texture && *sampler.texture >= mParameters))
+                    return "a sampler names no parameter";
         if (std::string error = script(mEffect.globalScript, 0); !error.empty()) return error;
         for (const CompiledTechnique& technique : mEffect.techniques) {
             if (std::string error = script(technique.script, technique.passes.size()); !error.empty())
@@ -96,6 +97,10 @@ private:
                     return "a sampler binding names no parameter";
                 if (sampler.textureParameter && *sampler.textureParameter >= mParameters)
                     return "a sampler binding names no texture parameter";
+                if (sampler.passSampler < -1 ||
+                    (sampler.passSampler >= 0 &&
+                     static_cast<size_t>(sampler.passSampler) >= mEffect.passSamplers.size()))
+                    return "a sampler binding names no pass sampler state";
             }
             for (const StorageBufferBinding& buffer : stage->storageBuffers)
                 if (buffer.parameter >= mParameters) return "a storage buffer names no parameter";

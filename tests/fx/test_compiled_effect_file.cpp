@@ -64,6 +64,33 @@ TEST(CompiledEffectFile, EveryShippedEffectRoundTripsByteForByte) {
     }
 }
 
+// A pass's sampler-register states (`AddressU[0] = CLAMP;`) are the compiled effect's pass samplers,
+// which the bindings index: they survive the file too.
+TEST(CompiledEffectFile, PassSamplerStatesRoundTrip) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+texture Noise < string Procedural = "noise"; float2 Dimensions = {16, 16}; >;
+sampler WrapSampler = sampler_state { Texture = <Noise>; AddressU = WRAP; AddressV = WRAP; };
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(WrapSampler, uv); }
+technique PassClamps { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
+    AddressU[0] = Clamp; } }
+)",
+                                                       "pass_samplers.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->passSamplers.size(), 1u);
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read =
+        deserializeCompiledEffect(bytes, "pass_samplers.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    ASSERT_EQ(read->passSamplers.size(), 1u);
+    EXPECT_EQ(read->passSamplers[0].addressU, compiled->passSamplers[0].addressU);
+    EXPECT_EQ(read->techniques[0].passes[0].fragment.samplers.at(0).passSampler, 0);
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+}
+
 // Annotations are values in the compiled effect: the UI's and the tests' reads need no syntax tree.
 TEST(CompiledEffectFile, AnnotationsAreValues) {
     DiagnosticList diagnostics;
