@@ -38,6 +38,12 @@ template <>
 struct EnumLimit<CompiledPass::DrawPrimitive>
     : EnumLast<CompiledPass::DrawPrimitive, CompiledPass::DrawPrimitive::TrianglesAdjacency> {};
 template <>
+struct EnumLimit<StreamOutElement::Component>
+    : EnumLast<StreamOutElement::Component, StreamOutElement::Component::UInt> {};
+template <>
+struct EnumLimit<StreamOutput::Primitive>
+    : EnumLast<StreamOutput::Primitive, StreamOutput::Primitive::Triangles> {};
+template <>
 struct EnumLimit<TextureFormat> : EnumLast<TextureFormat, TextureFormat::D32F> {};
 template <>
 struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Procedural> {};
@@ -86,7 +92,9 @@ static_assert(sizeof(PreshaderProgram) == 96);
 static_assert(sizeof(CompileArgument) == 240);
 static_assert(sizeof(RenderStateSetting) == 160);
 static_assert(sizeof(ScriptCommand) == 224);
-static_assert(sizeof(CompiledPass) == 1600);
+static_assert(sizeof(StreamOutElement) == 48);
+static_assert(sizeof(StreamOutput) == 80);
+static_assert(sizeof(CompiledPass) == 1696);
 static_assert(sizeof(CompiledTechnique) == 184);
 static_assert(sizeof(TextureDesc) == 160);
 static_assert(sizeof(SamplerDesc) == 128);
@@ -188,10 +196,19 @@ void fields(A& a, ScriptCommand& x) {
     a(x.selectorFalse, x.selectorAlternatives, x.clear, x.draw);
 }
 template <class A>
+void fields(A& a, StreamOutElement& x) {
+    a(x.semantic, x.slot, x.offset, x.components, x.component);
+}
+template <class A>
+void fields(A& a, StreamOutput& x) {
+    a(x.varyings, x.elements, x.strides, x.primitive, x.rasterizes, x.capacity);
+}
+template <class A>
 void fields(A& a, CompiledPass& x) {
     a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels);
     a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.patchVertices, x.primitive);
     a(x.arguments, x.states, x.hasScript, x.script, x.annotations);
+    a(x.streamOut, x.drawAuto);
 }
 template <class A>
 void fields(A& a, CompiledTechnique& x) {

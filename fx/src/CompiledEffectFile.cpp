@@ -59,9 +59,13 @@ public:
         for (const CompiledTechnique& technique : mEffect.techniques) {
             if (std::string error = script(technique.script, technique.passes.size()); !error.empty())
                 return error;
-            for (const CompiledPass& pass : technique.passes)
+            for (const CompiledPass& pass : technique.passes) {
                 if (std::string error = check(pass); !error.empty())
                     return "pass '" + pass.name + "': " + error;
+                if (pass.drawAuto < -1 ||
+                    (pass.drawAuto >= 0 && static_cast<size_t>(pass.drawAuto) >= technique.passes.size()))
+                    return "pass '" + pass.name + "': DrawAuto names a pass out of range";
+            }
         }
         return "";
     }
@@ -104,6 +108,15 @@ private:
             }
             for (const StorageBufferBinding& buffer : stage->storageBuffers)
                 if (buffer.parameter >= mParameters) return "a storage buffer names no parameter";
+        }
+        // Stream output sizes the pass's GL buffers (capacity times stride) and names their slots.
+        if (pass.streamOut) {
+            for (const StreamOutElement& element : pass.streamOut->elements)
+                if (element.slot < 0 || element.slot > 3) return "a stream-output element names no slot";
+            for (uint32_t stride : pass.streamOut->strides)
+                if (stride > (1u << 16)) return "a stream-output stride out of range";
+            if (pass.streamOut->capacity < 0 || pass.streamOut->capacity > (1 << 24))
+                return "a stream-output capacity out of range";
         }
         return "";
     }

@@ -91,6 +91,26 @@ technique PassClamps { pass p { VertexShader = compile vs_3_0 VS(); PixelShader 
     EXPECT_EQ(serializeCompiledEffect(*read), bytes);
 }
 
+// Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
+TEST(CompiledEffectFile, StreamOutputRoundTrips) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled =
+        compileShipped("tests/data/d3d10/stream_output_particles.fx", diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "particles.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    size_t captures = 0, drawAutos = 0;
+    for (const CompiledTechnique& technique : read->techniques)
+        for (const CompiledPass& pass : technique.passes) {
+            captures += pass.streamOut && !pass.streamOut->varyings.empty();
+            drawAutos += pass.drawAuto >= 0;
+        }
+    EXPECT_GT(captures, 0u);
+    EXPECT_GT(drawAutos, 0u);
+}
+
 // Annotations are values in the compiled effect: the UI's and the tests' reads need no syntax tree.
 TEST(CompiledEffectFile, AnnotationsAreValues) {
     DiagnosticList diagnostics;
