@@ -13,7 +13,8 @@ seconds="${1:-60}"
 shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script fuzz_dds_file)
+  targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script fuzz_dds_file
+           fuzz_compiled_effect_file)
   [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
@@ -28,7 +29,8 @@ opt="-O1 -gline-tables-only -DNDEBUG"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWFX_FUZZ=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$opt" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$opt" \
   -DSHADOWFX_BUILD_TESTS=OFF -DSHADOWFX_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" shadowfx-compile-worker
+# The CLI compiles the compiled-effect fuzzer's seeds.
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" shadowfx-compile-worker shadowfx
 
 root="$(pwd)"
 seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
@@ -48,6 +50,10 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
         while read -r s; do printf '%s' "$s" > "$dir/$(printf '%s' "$s" | md5sum | cut -c1-16)"; done ;;
     fuzz_dds_file)  # one small file of each family: masks, float components, blocks, a DX10 header
       cp fuzz/seeds/*.dds "$dir/" ;;
+    fuzz_compiled_effect_file)  # shipped effects whose files stay under -max_len, compiled by this build
+      for effect in plain_lit back_faces id_buffer; do
+        build-fuzz/samples/shadowfx/shadowfx compile "effects/$effect.fx" --out "$dir/$effect.sfxo"
+      done ;;
     fuzz_scene_file)
       find scenes tests/data -name '*.json' 2>/dev/null | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done
       [ -n "$(ls -A "$dir")" ] || echo '{}' > "$dir/empty.json" ;;

@@ -17,7 +17,8 @@ import tempfile
 SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # Our targets, lowest first: an edge may only point to a target earlier in this list.
-LAYERS = ["report", "fx", "scene", "assets", "lightspace", "gl", "render", "measure", "runtime", "shadowfx"]
+LAYERS = ["report", "fxcontract", "fx", "scene", "assets", "lightspace", "gl", "render", "reload", "measure",
+          "runtime", "shadowfx"]
 # What a library must not reach, directly or through another (the issue's "runs effects without
 # Embree or assimp"; light fits without GL; reports without GL).
 FORBIDDEN = {
@@ -26,7 +27,10 @@ FORBIDDEN = {
     "scene": ["fx", "assimp::assimp", "nlohmann_json::nlohmann_json", "embree", "OpenGL::EGL", "glfw"],
     "lightspace": ["gl", "OpenGL::EGL", "glfw", "assimp::assimp", "nlohmann_json::nlohmann_json", "embree"],
     "gl": ["assimp::assimp", "nlohmann_json::nlohmann_json", "embree"],
-    "render": ["assets", "measure", "assimp::assimp", "nlohmann_json::nlohmann_json", "embree"],
+    "render": ["assets", "measure", "assimp::assimp", "nlohmann_json::nlohmann_json", "embree", "fx",
+               "glslang::glslang", "spirv-cross-core", "spirv-cross-glsl"],
+    # The contract: what an application loading compiled effect files links, without the compiler.
+    "fxcontract": ["glslang::glslang", "glslang::SPIRV", "spirv-cross-core", "spirv-cross-glsl"],
 }
 
 

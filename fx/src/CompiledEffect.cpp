@@ -1,5 +1,6 @@
 // CompiledEffect: lookups, stage names and the texture-format table.
 #include <fx/CompiledEffect.h>
+#include <fx/RenderStates.h>
 
 #include "CaseFolding.h"
 
@@ -24,11 +25,23 @@ std::string_view shaderStageName(ShaderStage stage) {
     return "vertex";
 }
 
+const AnnotationValue* findAnnotation(const Annotations& annotations, std::string_view name) {
+    for (const AnnotationValue& annotation : annotations)
+        if (equalsIgnoreCase(annotation.name, name)) return &annotation;
+    return nullptr;
+}
+
 const CompiledTechnique* CompiledEffect::findTechnique(const std::string& name) const {
     for (const CompiledTechnique& t : techniques)
         if (t.name == name) return &t;
     for (const CompiledTechnique& t : techniques)
         if (!t.group.empty() && t.group + "." + t.name == name) return &t;
+    return nullptr;
+}
+
+const ParameterInfo* CompiledEffect::findParameter(const std::string& name) const {
+    for (const ParameterInfo& p : parameters)
+        if (p.name == name) return &p;
     return nullptr;
 }
 

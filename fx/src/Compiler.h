@@ -27,10 +27,9 @@ namespace fx::detail {
 
 class Compiler {
 public:
-    Compiler(std::shared_ptr<const Effect> effect, const CompileOptions& options, DiagnosticSink& diagnostics)
-        : mEffect(*effect), mOptions(options), mDiagnostics(diagnostics) {
+    Compiler(const Effect& effect, const CompileOptions& options, DiagnosticSink& diagnostics)
+        : mEffect(effect), mOptions(options), mDiagnostics(diagnostics) {
         mOut = std::make_unique<CompiledEffect>();
-        mOut->effect = std::move(effect);
         mOut->maxScriptLoopCount = options.maxScriptLoopCount;
     }
 
@@ -64,6 +63,7 @@ private:
 
     void initialValues();
     void parameterInfo();
+    static Annotations annotationValues(const std::vector<Annotation>& annotations);
     void passAnnotations(const Pass& source, CompiledPass& pass);
     void textures();
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);

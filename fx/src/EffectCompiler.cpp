@@ -45,6 +45,23 @@ void Compiler::initialValues() {
     }
 }
 
+// Annotations hold literals (a number, a string, a vector's initializer list): evaluated without
+// parameters and converted to the annotation's declared type. One that does not evaluate is left out
+// silently: the annotations the compiler acts on report their own errors.
+Annotations Compiler::annotationValues(const std::vector<Annotation>& annotations) {
+    Annotations values;
+    for (const Annotation& annotation : annotations) {
+        const bool text = annotation.type.base == BaseType::String;
+        std::optional<Value> value = evaluate(
+            annotation.value, [](std::string_view) -> const Value* { return nullptr; },
+            text ? nullptr : &annotation.type, nullptr);
+        if (!value) continue;
+        if (text) value->type = annotation.type;
+        values.push_back({annotation.name, std::move(*value)});
+    }
+    return values;
+}
+
 // What the runtime reads of each parameter (its binding by semantic, the light it names, the light-space
 // parameterization it selects), so that the runtime never reads the syntax tree.
 void Compiler::parameterInfo() {
@@ -55,6 +72,7 @@ void Compiler::parameterInfo() {
         info.type = p.type;
         info.semantic = p.semantic;
         info.isStatic = p.isStatic;
+        info.isShared = p.isShared;
         info.loc = p.loc;
         for (const char* name : {"frustum", "Object"}) {
             const Annotation* a = p.annotation(name);
@@ -68,6 +86,7 @@ void Compiler::parameterInfo() {
             if (a->value.kind == Expr::Kind::String) info.parameterization = a->value.text;
             info.parameterizationLoc = a->loc;
         }
+        info.annotations = annotationValues(p.annotations);
         mOut->parameters.push_back(std::move(info));
     }
 }
@@ -261,6 +280,7 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     }
     if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
     passAnnotations(p, pass);
+    pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
     validateScript(pass.script, nullptr);
     return pass;
@@ -303,6 +323,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         technique.group = t.group;
         technique.loc = t.loc;
         technique.script = script(t.annotations, technique.hasScript);
+        technique.annotations = annotationValues(t.annotations);
         validateScript(technique.script, &t);
         mTechniqueUnsupported.clear();
         mTechnique = &t;
@@ -350,7 +371,7 @@ std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effe
                                               const CompileOptions& options, DiagnosticSink& diagnostics) {
     if (!effect) return nullptr;
     detail::MacroNoteSink noted(diagnostics, effect->sourceMap);
-    return detail::Compiler(std::move(effect), options, noted).run();
+    return detail::Compiler(*effect, options, noted).run();
 }
 
 }  // namespace fx

@@ -1,5 +1,6 @@
-// Preshader: compiles effect expressions into PreshaderPrograms (fx/PreshaderProgram.h) and runs them with
-// HLSL semantics.
+// Preshader: runs PreshaderPrograms (fx/PreshaderProgram.h) with HLSL semantics: the preshader VM of the
+// contract library, which an application loading compiled effects links without the compiler
+// (PreshaderCompiler.cpp compiles expressions into programs).
 //
 // Values are flat float arrays plus a TypeDesc (see Value.h: matrices row by row). Every operator works
 // component-wise after HLSL's scalar broadcast; mul() follows HLSL's convention that a vector on the left
@@ -11,7 +12,7 @@
 // [SECTION] Intrinsics and constructors: PreshaderIntrinsics.cpp
 // [SECTION] Members and indexing
 // [SECTION] Running a program
-// [SECTION] Compiling an expression
+// [SECTION] Compiling an expression: PreshaderCompiler.cpp
 #include <fx/Preshader.h>
 
 #include "PreshaderEvaluator.h"
@@ -422,9 +423,26 @@ std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, 
 
 using detail::Evaluator;
 using detail::Operator;
-using detail::operatorOf;
-using detail::parseTypeName;
-using detail::wrapToInt32;
+
+std::string PreshaderProgram::malformation(size_t slotCount) const {
+    using Op = Instruction::Op;
+    size_t depth = 0;
+    for (const Instruction& in : mCode) {
+        if (in.op == Op::Constant && in.operand >= mConstants.size()) return "a constant out of range";
+        if (in.op == Op::Fail && in.operand >= mErrors.size()) return "an error out of range";
+        const size_t pops = in.op == Op::Constant || in.op == Op::Load || in.op == Op::Fail     ? 0
+                            : in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
+                            : in.op == Op::Binary || in.op == Op::Index                         ? 2
+                            : in.op == Op::Select                                               ? 3
+                                                                                                : in.count;
+        if (pops > depth) return "an instruction takes more operands than the stack holds";
+        depth = depth - pops + 1;
+    }
+    if (!mCode.empty() && depth != 1) return "the program leaves other than one value";
+    for (size_t input : mInputs)
+        if (input >= slotCount) return "an input slot out of range";
+    return "";
+}
 
 std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
                                            DiagnosticSink* diagnostics) const {
@@ -542,161 +560,6 @@ std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
         return std::nullopt;
     }
     return std::move(stack.back().value);
-}
-
-// [SECTION] Compiling an expression
-
-class PreshaderCompiler {
-public:
-    PreshaderCompiler(const SlotResolver& slotOf, PreshaderProgram& program)
-        : mSlotOf(slotOf), mProgram(program) {}
-
-    void compile(const Expr& e) {
-        using Op = PreshaderProgram::Instruction::Op;
-        switch (e.kind) {
-            case Expr::Kind::Number:
-                constant(e.isInteger ? Value::integer(wrapToInt32(e.number))
-                                     : Value::scalar(static_cast<float>(e.number)));
-                return;
-            case Expr::Kind::Bool:
-                constant(Value::boolean(e.number != 0.0));
-                return;
-            case Expr::Kind::String:
-                constant(Value::text(e.text));
-                return;
-            case Expr::Kind::Identifier: {
-                if (e.text == "true" || e.text == "false") {
-                    constant(Value::boolean(e.text == "true"));
-                    return;
-                }
-                const std::optional<size_t> slot = mSlotOf ? mSlotOf(e.text) : std::nullopt;
-                if (!slot) {
-                    fail(DiagId::UnknownIdentifier, e.loc, e.text);
-                    return;
-                }
-                emit(Op::Load, e.loc).operand = static_cast<uint32_t>(*slot);
-                mProgram.mInputs.push_back(*slot);
-                return;
-            }
-            case Expr::Kind::Unary:
-                compile(e.args[0]);
-                emitOperator(Op::Unary, e);
-                return;
-            case Expr::Kind::Binary:
-                compile(e.args[0]);
-                compile(e.args[1]);
-                emitOperator(Op::Binary, e);
-                return;
-            case Expr::Kind::Ternary:
-                for (const Expr& a : e.args) compile(a);
-                emit(Op::Select, e.loc);
-                return;
-            case Expr::Kind::Call: {
-                for (const Expr& a : e.args) compile(a);
-                const std::optional<TypeDesc> type = parseTypeName(e.text);
-                auto& in = emit(type ? Op::Construct : Op::Intrinsic, e.loc);
-                in.count = static_cast<uint32_t>(e.args.size());
-                if (type) {
-                    in.type = *type;
-                } else {
-                    in.text = e.text;
-                }
-                return;
-            }
-            case Expr::Kind::Member:
-                compile(e.args[0]);
-                emit(Op::Member, e.loc).text = e.text;
-                return;
-            case Expr::Kind::Index:
-                compile(e.args[0]);
-                compile(e.args[1]);
-                emit(Op::Index, e.loc);
-                return;
-            case Expr::Kind::InitList:
-                for (const Expr& a : e.args) compile(a);
-                emit(Op::InitList, e.loc).count = static_cast<uint32_t>(e.args.size());
-                return;
-            case Expr::Kind::Cast:
-                compile(e.args[0]);
-                emit(Op::Convert, e.loc).type = e.castType;
-                return;
-            case Expr::Kind::TextureRef:
-            case Expr::Kind::Compile:
-                fail(DiagId::UnsupportedFeature, e.loc, "'" + e.str() + "' is not a value");
-                return;
-        }
-    }
-
-    void convertTo(const TypeDesc& type, const SourceLoc& loc) {
-        emit(PreshaderProgram::Instruction::Op::Convert, loc).type = type;
-    }
-
-    // A program that reads no slot is run now and replaced by its value (or kept, to fail at run time as the
-    // expression would). Inputs end sorted and unique.
-    void finish() {
-        std::vector<size_t>& inputs = mProgram.mInputs;
-        std::sort(inputs.begin(), inputs.end());
-        inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
-        if (!inputs.empty() || mProgram.isConstant()) return;
-        std::optional<Value> value = mProgram.run({}, nullptr);
-        if (!value) return;
-        mProgram.mCode.clear();
-        mProgram.mConstants.clear();
-        mProgram.mErrors.clear();
-        constant(std::move(*value));
-    }
-
-private:
-    void emitOperator(PreshaderProgram::Instruction::Op op, const Expr& e) {
-        PreshaderProgram::Instruction& in = emit(op, e.loc);
-        in.operation = operatorOf(e.text, op == PreshaderProgram::Instruction::Op::Unary);
-        in.text = e.text;
-    }
-    PreshaderProgram::Instruction& emit(PreshaderProgram::Instruction::Op op, const SourceLoc& loc) {
-        PreshaderProgram::Instruction& in = mProgram.mCode.emplace_back();
-        in.op = op;
-        in.loc = loc;
-        return in;
-    }
-    void constant(Value value) {
-        emit(PreshaderProgram::Instruction::Op::Constant, {}).operand =
-            static_cast<uint32_t>(mProgram.mConstants.size());
-        mProgram.mConstants.push_back(std::move(value));
-    }
-    void fail(DiagId id, const SourceLoc& loc, const std::string& text) {
-        emit(PreshaderProgram::Instruction::Op::Fail, loc).operand =
-            static_cast<uint32_t>(mProgram.mErrors.size());
-        mProgram.mErrors.push_back({id, loc, text});
-    }
-
-    const SlotResolver& mSlotOf;
-    PreshaderProgram& mProgram;
-};
-
-PreshaderProgram compilePreshader(const Expr& expr, const SlotResolver& slotOf, const TypeDesc* targetType) {
-    PreshaderProgram program;
-    PreshaderCompiler compiler(slotOf, program);
-    compiler.compile(expr);
-    if (targetType) compiler.convertTo(*targetType, expr.loc);
-    compiler.finish();
-    return program;
-}
-
-std::optional<Value> evaluate(const Expr& expr, const ParameterLookup& lookup, const TypeDesc* targetType,
-                              DiagnosticSink* diagnostics) {
-    // The names the expression reads become slots of a one-off program.
-    std::vector<Value> slots;
-    std::vector<std::string> names;
-    const SlotResolver slotOf = [&](std::string_view name) -> std::optional<size_t> {
-        for (size_t i = 0; i < names.size(); ++i)
-            if (names[i] == name) return i;
-        const Value* value = lookup ? lookup(name) : nullptr;
-        if (!value) return std::nullopt;
-        names.emplace_back(name);
-        slots.push_back(*value);
-        return slots.size() - 1;
-    };
-    return compilePreshader(expr, slotOf, targetType).run(slots, diagnostics);
 }
 
 }  // namespace fx

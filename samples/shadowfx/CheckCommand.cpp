@@ -17,6 +17,7 @@
 #include "CheckCommand.h"
 #include <report/XmlText.h>
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <fx/Preshader.h>
@@ -877,6 +878,16 @@ int checkCommand(const Arguments& args) {
     if (effects.empty()) {
         std::cerr << "shadowfx check: expected one or more effect files (see --help)\n";
         return 2;
+    }
+    // A compiled file holds one variant, with the definitions it was compiled with; check compiles the
+    // variants it scores (SHADOWFX_VISIBILITY, the expected map size) from source.
+    for (const std::string& path : effects) {
+        if (fx::isCompiledEffectFile(path)) {
+            std::cerr << path
+                      << ": error: check compiles the variants it scores from source: give the .fx file "
+                      << "this compiled effect was compiled from\n";
+            return 2;
+        }
     }
     const fx::ParseOptions parseOptions = effectParseOptions(args);
     // Each distinct warning and error once on stderr; a failing step names its first error in its result.

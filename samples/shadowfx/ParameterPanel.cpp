@@ -1,7 +1,7 @@
 // ParameterPanel: SAS annotations -> ImGui widgets (see ParameterPanel.h).
 #include "ParameterPanel.h"
 
-#include <fx/Preshader.h>
+#include <fx/CompiledEffect.h>
 
 #include <imgui.h>
 
@@ -20,25 +20,21 @@ std::string lowerCase(std::string text) {
     return text;
 }
 
-// An annotation's constant value (`float UIMin = -1.0;`); annotations only hold literals, so no parameter
-// lookup is needed.
-std::optional<float> annotationNumber(const fx::Parameter& parameter, const char* name) {
-    const fx::Annotation* annotation = parameter.annotation(name);
-    if (!annotation) return std::nullopt;
-    std::optional<fx::Value> value = fx::evaluate(
-        annotation->value, [](std::string_view) { return nullptr; }, nullptr, nullptr);
-    if (!value || value->data.empty()) return std::nullopt;
-    return value->data[0];
+// An annotation's number (`float UIMin = -1.0;`), as the compiler evaluated it.
+std::optional<float> annotationNumber(const fx::ParameterInfo& parameter, const char* name) {
+    const fx::AnnotationValue* annotation = fx::findAnnotation(parameter.annotations, name);
+    if (!annotation || annotation->value.data.empty()) return std::nullopt;
+    return annotation->value.data[0];
 }
 
-std::string annotationText(const fx::Parameter& parameter, const char* name) {
-    const fx::Annotation* annotation = parameter.annotation(name);
-    if (!annotation || annotation->value.kind != fx::Expr::Kind::String) return "";
-    return annotation->value.text;
+std::string annotationText(const fx::ParameterInfo& parameter, const char* name) {
+    const fx::AnnotationValue* annotation = fx::findAnnotation(parameter.annotations, name);
+    if (!annotation || annotation->value.type.base != fx::BaseType::String) return "";
+    return annotation->value.string;
 }
 
 // Numeric scalars and vectors that no semantic drives and no `UIWidget = "none"` hides.
-bool isTweakable(const fx::Parameter& parameter) {
+bool isTweakable(const fx::ParameterInfo& parameter) {
     if (parameter.isStatic || !parameter.semantic.empty() || !parameter.type.arrayDims.empty()) return false;
     if (!parameter.type.isNumeric() || parameter.type.shape == fx::Shape::Matrix) return false;
     if (parameter.type.cols > 4) return false;
@@ -48,10 +44,10 @@ bool isTweakable(const fx::Parameter& parameter) {
 }  // namespace
 
 bool ParameterPanel::draw(runtime::EffectRenderer& renderer) {
-    const fx::Effect& effect = *renderer.effect().effect;
+    const std::vector<fx::ParameterInfo>& parameters = renderer.effect().parameters;
     bool anyChanged = false;
-    for (size_t i = 0; i < effect.parameters.size(); ++i) {
-        const fx::Parameter& parameter = effect.parameters[i];
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        const fx::ParameterInfo& parameter = parameters[i];
         if (!isTweakable(parameter)) continue;
         fx::Value value = renderer.parameter(i);
         const int components = parameter.type.shape == fx::Shape::Scalar ? 1 : parameter.type.cols;

@@ -10,6 +10,7 @@
 #include "StressCommand.h"
 #include "EffectLibrary.h"
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/EffectRenderer.h>
@@ -378,7 +379,8 @@ struct Declaration {
 
 // The declarations of `technique`; a malformed one (no criteria, or one that cannot be excused) is an
 // error in `errors`, so that a declaration never excuses more than it says.
-std::map<std::string, Declaration> expectedFailures(const fx::Effect& effect, const std::string& technique,
+std::map<std::string, Declaration> expectedFailures(const fx::CompiledEffect& effect,
+                                                    const std::string& technique,
                                                     std::vector<std::string>& errors) {
     const auto trim = [](std::string text) {
         text.erase(0, text.find_first_not_of(" \t"));
@@ -386,10 +388,11 @@ std::map<std::string, Declaration> expectedFailures(const fx::Effect& effect, co
         return text;
     };
     std::map<std::string, Declaration> cases;
-    for (const fx::Technique& t : effect.techniques) {
-        const fx::Annotation* a = t.name == technique ? t.annotation("StressExpectedFailures") : nullptr;
-        if (!a || a->value.kind != fx::Expr::Kind::String) continue;
-        std::stringstream entries(a->value.text);
+    for (const fx::CompiledTechnique& t : effect.techniques) {
+        const fx::AnnotationValue* a =
+            t.name == technique ? fx::findAnnotation(t.annotations, "StressExpectedFailures") : nullptr;
+        if (!a || a->value.type.base != fx::BaseType::String) continue;
+        std::stringstream entries(a->value.string);
         for (std::string entry; std::getline(entries, entry, ';');) {
             const size_t colon = entry.find(':');
             std::string head = trim(entry.substr(0, colon));
@@ -543,6 +546,15 @@ int stressCommand(const Arguments& args) {
             return 2;
         }
     }
+    // A compiled file holds one variant; stress compiles its visibility variant from source.
+    for (const std::string& path : effects) {
+        if (fx::isCompiledEffectFile(path)) {
+            std::cerr << path
+                      << ": error: stress compiles the variants it scores from source: give the .fx file "
+                      << "this compiled effect was compiled from\n";
+            return 2;
+        }
+    }
 
     std::vector<std::string> caseNames =
         args.flag("--reduced") ? runtime::reducedStressCaseNames() : runtime::stressCaseNames();
@@ -691,7 +703,7 @@ int stressCommand(const Arguments& args) {
             std::map<std::string, double> measured;
             std::vector<std::string> declarationErrors;
             const std::map<std::string, Declaration> known =
-                expectedFailures(*effect->visibility->effect, technique.name, declarationErrors);
+                expectedFailures(*effect->visibility, technique.name, declarationErrors);
             for (const auto& [name, declaration] : known)
                 if (!runtime::makeStressCase(name))
                     declarationErrors.push_back("StressExpectedFailures of '" + technique.name +

@@ -96,7 +96,7 @@ std::vector<std::string> renderTargetNames(const runtime::EffectRenderer& render
     for (const fx::TextureDesc& texture : compiled.textures) {
         if (texture.kind == fx::TextureDesc::Kind::RenderColorTarget ||
             texture.kind == fx::TextureDesc::Kind::RenderDepthStencilTarget) {
-            names.push_back(compiled.effect->parameters[texture.parameter].name);
+            names.push_back(compiled.parameters[texture.parameter].name);
         }
     }
     return names;

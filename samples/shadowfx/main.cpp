@@ -18,8 +18,8 @@
 #include "StressCommand.h"
 #include "ViewCommand.h"
 
-#include <fx/EffectCompiler.h>
-#include <fx/EffectParser.h>
+#include <fx/CompiledEffectFile.h>
+#include <fx/EffectFile.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/GlContext.h>
 #include <runtime/Scene.h>
@@ -61,14 +61,12 @@ private:
     int mErrors = 0;
 };
 
+// An effect source (.fx) or a compiled effect file (.sfxo), told apart by its first bytes.
 std::shared_ptr<fx::CompiledEffect> loadEffect(const Arguments& args, const std::string& technique,
                                                fx::DiagnosticSink& sink) {
-    std::shared_ptr<fx::Effect> effect =
-        fx::parseEffectFile(args.positional(0), shadowfx::cli::effectParseOptions(args), sink);
-    if (!effect) return nullptr;
     fx::CompileOptions options;
     options.technique = technique;
-    return fx::compileEffect(effect, options, sink);
+    return fx::loadEffectFile(args.positional(0), shadowfx::cli::effectParseOptions(args), options, sink);
 }
 
 // [SECTION] render
@@ -163,8 +161,12 @@ int renderCommand(const Arguments& args) {
 // [SECTION] compile
 int compileCommand(const Arguments& args) {
     StderrSink sink(args.flag("--verbose"));
+    const std::string out = args.value("--out");
+    if (!out.empty()) removeStaleOutput(out);
     std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, args.value("--technique"), sink);
     if (!compiled || sink.errors() > 0) return 1;
+    // The compiled effect file (docs/compiled-effect.md) instead of the listing.
+    if (!out.empty()) return fx::writeCompiledEffectFile(*compiled, out, sink) ? 0 : 1;
     const bool showHlsl = args.flag("--hlsl");
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         for (const fx::CompiledPass& pass : technique.passes) {
@@ -187,7 +189,12 @@ int infoCommand(const Arguments& args) {
     StderrSink sink(args.flag("--verbose"));
     std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, "", sink);
     if (!compiled || sink.errors() > 0) return 1;
-    const fx::Effect& effect = *compiled->effect;
+    if (fx::isCompiledEffectFile(args.positional(0))) {
+        const fx::EffectProvenance& from = compiled->provenance;
+        std::cout << "compiled from " << from.sourcePath << " by " << from.compilerVersion << "\n";
+        for (const auto& [name, value] : from.defines) std::cout << "  -D " << name << "=" << value << "\n";
+        for (const std::string& dir : from.includeDirs) std::cout << "  -I " << dir << "\n";
+    }
     std::cout << "techniques:\n";
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         std::cout << "  " << technique.name << ":";
@@ -200,8 +207,7 @@ int infoCommand(const Arguments& args) {
                            [&](const std::string& name) { return fx::equalsIgnoreCase(name, semantic); });
     };
     std::cout << "parameters:\n";
-    for (size_t i = 0; i < effect.parameters.size(); ++i) {
-        const fx::Parameter& p = effect.parameters[i];
+    for (const fx::ParameterInfo& p : compiled->parameters) {
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
@@ -239,12 +245,14 @@ const shadowfx::cli::Command kCommands[] = {
      {"--stats", "--verbose", "--driver-log", "--no-leave-out", "--no-batching"},
      renderCommand},
     {"compile",
-     "print the generated GLSL of every pass, or the diagnostics",
-     "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl]\n"
+     "print the generated GLSL of every pass, or write a compiled effect file",
+     "usage: shadowfx compile EFFECT.fx [--technique NAME] [--hlsl] [--out EFFECT.sfxo]\n"
      "  --technique NAME      only this technique\n"
-     "  --hlsl                also print the HLSL unit generated for each stage\n",
+     "  --hlsl                also print the HLSL unit generated for each stage\n"
+     "  --out EFFECT.sfxo     write the compiled effect file (docs/compiled-effect.md) instead of printing;\n"
+     "                        every command loads it like the source, without compiling\n",
      {},
-     {"--technique", "-I", "-D"},
+     {"--technique", "--out", "-I", "-D"},
      {"--hlsl", "--verbose"},
      compileCommand},
     {"info",

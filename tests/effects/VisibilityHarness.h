@@ -60,10 +60,10 @@ inline SceneTruth computeSceneTruth(runtime::Scene scene, int width, int height,
 // A number a technique declares in its annotations; a test failure if it has none.
 inline float techniqueAnnotationNumber(const fx::CompiledEffect& effect, const std::string& technique,
                                        const std::string& name) {
-    for (const fx::Technique& t : effect.effect->techniques) {
+    for (const fx::CompiledTechnique& t : effect.techniques) {
         if (t.name != technique) continue;
-        for (const fx::Annotation& a : t.annotations)
-            if (a.name == name) return static_cast<float>(a.value.number);
+        for (const fx::AnnotationValue& a : t.annotations)
+            if (a.name == name) return a.value.asFloat();
     }
     ADD_FAILURE() << technique << " has no annotation " << name;
     return 0.0f;

@@ -97,8 +97,8 @@ void PrintTo(const Conformance& c, std::ostream* os) {
     *os << c.effect << " " << c.technique;
 }
 
-std::string annotationText(const fx::Annotation* annotation) {
-    return annotation ? annotation->value.text : std::string();
+std::string annotationText(const fx::AnnotationValue* annotation) {
+    return annotation ? annotation->value.string : std::string();
 }
 
 class DepthLayerConformance : public ::testing::TestWithParam<Conformance> {};
@@ -109,18 +109,17 @@ TEST_P(DepthLayerConformance, MisclassifiedPixelsStayUnderTheTechniquesBound) {
     // The annotations first (they are the same for every map size), then the variant the check renders.
     auto probe = loadWithDefines(path, {});
     ASSERT_TRUE(probe);
-    const fx::Effect& source = *probe->effect().effect;
-    const auto technique = std::find_if(source.techniques.begin(), source.techniques.end(),
-                                        [&](const fx::Technique& t) { return t.name == c.technique; });
-    ASSERT_NE(technique, source.techniques.end());
-    const fx::Annotation* bound = technique->annotation("ExpectMisclassifiedBelow");
-    const fx::Annotation* mapSize = technique->annotation("ExpectMapSize");
-    const std::vector<std::string> scenes = splitList(annotationText(technique->annotation("ExpectScenes")));
+    const fx::CompiledTechnique* technique = probe->effect().findTechnique(c.technique);
+    ASSERT_TRUE(technique);
+    const fx::AnnotationValue* bound = fx::findAnnotation(technique->annotations, "ExpectMisclassifiedBelow");
+    const fx::AnnotationValue* mapSize = fx::findAnnotation(technique->annotations, "ExpectMapSize");
+    const std::vector<std::string> scenes =
+        splitList(annotationText(fx::findAnnotation(technique->annotations, "ExpectScenes")));
     ASSERT_TRUE(bound) << c.technique << " has no ExpectMisclassifiedBelow";
     ASSERT_TRUE(mapSize) << c.technique << " has no ExpectMapSize";
     ASSERT_EQ(scenes, (std::vector<std::string>{"dual-l", "double-torus"}));
-    const double boundPercent = bound->value.number;
-    const int mapSizeTexels = static_cast<int>(mapSize->value.number);
+    const double boundPercent = bound->value.asFloat();
+    const int mapSizeTexels = mapSize->value.asInt();
     probe.reset();
 
     auto renderer = loadWithDefines(

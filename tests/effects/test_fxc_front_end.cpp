@@ -36,7 +36,7 @@ TEST(FxcFrontEnd, GameCoreStyleEffect) {
         << loaded.diagnostics.str();
     EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::UndefinedConditionCall), 1)
         << loaded.diagnostics.str();
-    const fx::Effect& effect = *loaded.renderer->effect().effect;
+    const fx::CompiledEffect& effect = loaded.renderer->effect();
     ASSERT_TRUE(effect.findParameter("WorldViewProj"));
     EXPECT_TRUE(effect.findParameter("WorldViewProj")->isShared);
     EXPECT_EQ(effect.findParameter("WorldViewProj")->type.shape, fx::Shape::Matrix);

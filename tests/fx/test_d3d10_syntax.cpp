@@ -110,8 +110,8 @@ technique10 Pool { pass { SetVertexShader(vsMain); SetGeometryShader(gsNone); Se
     EXPECT_TRUE(pass.geometry.glsl.empty());
     EXPECT_NE(pass.fragment.glsl.find("gMaterial"), std::string::npos) << pass.fragment.glsl;
     EXPECT_NE(pass.fragment.glsl.find("gLayers"), std::string::npos) << pass.fragment.glsl;
-    ASSERT_TRUE(compiled->effect->findParameter("g_pRTV"));
-    EXPECT_EQ(compiled->effect->findParameter("g_pDSV")->type.hlslName(), "DepthStencilView");
+    ASSERT_TRUE(compiled->findParameter("g_pRTV"));
+    EXPECT_EQ(compiled->findParameter("g_pDSV")->type.hlslName(), "DepthStencilView");
 }
 
 TEST(D3d10Syntax, TechniqueSelectedByGroupQualifiedName) {

@@ -178,7 +178,7 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     const UniformBinding* flip = findUniform(shadow.fragment, "bFlip");
     ASSERT_TRUE(flip);
     EXPECT_EQ(flip->source, UniformBinding::Source::Parameter);
-    EXPECT_EQ(fx->effect->parameters[flip->index].name, "bFlip");
+    EXPECT_EQ(fx->parameters[flip->index].name, "bFlip");
     // Vertex inputs by semantic.
     std::vector<std::string> semantics;
     for (const VertexInput& in : shadow.vertex.inputs) semantics.push_back(in.semantic);
@@ -208,7 +208,7 @@ TEST(EffectCompiler, ThesisEffectCompilesEndToEnd) {
     EXPECT_EQ(color->glslName, "ShadowMapSampler");
     EXPECT_EQ(depth->glslName, "DepthSampler");
     EXPECT_NE(color->unit, depth->unit);
-    EXPECT_EQ(fx->effect->parameters[depth->samplerParameter].name, "DepthSampler");
+    EXPECT_EQ(fx->parameters[depth->samplerParameter].name, "DepthSampler");
     EXPECT_NE(scene.fragment.glsl.find("sampler2DShadow DepthSampler"), std::string::npos)
         << scene.fragment.glsl;
     EXPECT_NE(scene.fragment.glsl.find("gl_FragCoord"), std::string::npos);
@@ -225,8 +225,8 @@ TEST(EffectCompiler, InitialValuesTexturesSamplers) {
     auto fx = compile(kThesis, diags);
     ASSERT_TRUE(fx) << diags.str();
     auto value = [&](const std::string& name) {
-        for (size_t i = 0; i < fx->effect->parameters.size(); ++i)
-            if (fx->effect->parameters[i].name == name) return fx->initialValues[i];
+        for (size_t i = 0; i < fx->parameters.size(); ++i)
+            if (fx->parameters[i].name == name) return fx->initialValues[i];
         return Value{};
     };
     EXPECT_EQ(value("ShadowClearColor").data, (std::vector<float>{8184, 8184, 8184, 8184}));

@@ -207,7 +207,7 @@ technique U { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = null; }
     DiagnosticList diagnostics;
     auto compiled = compile(source, diagnostics);
     ASSERT_TRUE(compiled && !diagnostics.hasErrors()) << diagnostics.str();
-    const Effect& effect = *compiled->effect;
+    const CompiledEffect& effect = *compiled;
     ASSERT_TRUE(effect.findParameter("Colors"));
     EXPECT_EQ(effect.findParameter("Colors")->type.arrayDims, std::vector<int>{6});
     const size_t packed = static_cast<size_t>(effect.findParameter("Packed") - effect.parameters.data());

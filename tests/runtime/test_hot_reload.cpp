@@ -4,6 +4,8 @@
 #include "GlTestSupport.h"
 #include "LiveGlObjects.h"
 
+#include <fx/CompiledEffectFile.h>
+#include <fx/EffectFile.h>
 #include <runtime/BuiltinScenes.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/FileWatcher.h>
@@ -113,6 +115,36 @@ TEST_F(HotReload, EditChangesTheImage) {
     ASSERT_EQ(effect.reloadIfChanged(5000ms), runtime::ReloadableEffect::Result::Reloaded)
         << effect.errorText();
     EXPECT_EQ(effect.generation(), 2u);
+    EXPECT_EQ(centre(effect), kMagenta);
+}
+
+// A compiled effect file reloads by reading it again: a new file changes the image, a damaged one is an
+// error at the file and the last good effect stays.
+TEST_F(HotReload, CompiledEffectFileReloadsWhenRewritten) {
+    const auto compiledText = [](const std::string& source, const fs::path& dir) {
+        fx::DiagnosticList diagnostics;
+        std::ofstream(dir / "edit.fx") << source;
+        auto compiled = fx::loadEffectFile((dir / "edit.fx").string(), {}, {}, diagnostics);
+        EXPECT_TRUE(compiled) << diagnostics.str();
+        return compiled ? fx::serializeCompiledEffect(*compiled) : std::string();
+    };
+    const fs::path file = mDir / "main.sfxo";
+    std::ofstream(file, std::ios::binary) << compiledText(kMainEffect, mDir);
+    runtime::ReloadableEffect effect(file.string());
+    ASSERT_TRUE(effect.reload()) << effect.errorText();
+    EXPECT_EQ(centre(effect), kRed);
+
+    saveLikeAnEditor(file,
+                     compiledText(replaced(kMainEffect, "float4(0, 0, 0, 0)", "float4(0, 0, 1, 0)"), mDir));
+    ASSERT_EQ(effect.reloadIfChanged(5000ms), runtime::ReloadableEffect::Result::Reloaded)
+        << effect.errorText();
+    EXPECT_EQ(centre(effect), kMagenta);
+
+    saveLikeAnEditor(file, compiledText(kMainEffect, mDir).substr(0, 100));
+    ASSERT_EQ(effect.reloadIfChanged(5000ms), runtime::ReloadableEffect::Result::Failed);
+    EXPECT_EQ(effect.errorText().rfind(file.string() + ": error: the compiled effect file is truncated", 0),
+              0u)
+        << effect.errorText();
     EXPECT_EQ(centre(effect), kMagenta);
 }
 

@@ -16,11 +16,21 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace fx {
 
-struct Effect;  // fx/Effect.h: the syntax tree, which the runtime does not read
+// An annotation (`<float UIMin = 0.0;>`) as a value: its literal evaluated at compile time and converted
+// to its declared type (Value::type), so that tools and the application's handles read no syntax tree.
+// One whose literal does not evaluate is left out (the compiler reported it).
+struct AnnotationValue {
+    std::string name;  // as written; looked up case-blind
+    Value value;
+};
+using Annotations = std::vector<AnnotationValue>;
+// Case-blind, as D3DX's GetAnnotationByName; nullptr when missing.
+const AnnotationValue* findAnnotation(const Annotations& annotations, std::string_view name);
 
 // Hull and Domain are D3D11's names for GL's tessellation control and evaluation stages.
 enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain };
@@ -32,7 +42,7 @@ struct UniformBinding {
     enum class Source { Parameter, CompileArgument };
     std::string name;  // the member's name in the block
     Source source = Source::Parameter;
-    size_t index = 0;     // Effect::parameters index, or CompiledPass::arguments index
+    size_t index = 0;     // CompiledEffect::parameters index, or CompiledPass::arguments index
     TypeDesc type;        // HLSL type of the member
     uint32_t offset = 0;  // byte offset in the block
     uint32_t size = 0;    // bytes the member occupies in the block
@@ -53,14 +63,14 @@ inline constexpr size_t kNoSampler = static_cast<size_t>(-1);
 struct SamplerBinding {
     std::string glslName;         // the sampler uniform in the GLSL
     int unit = 0;                 // texture unit (layout(binding) in the GLSL, or set by name at link)
-    size_t samplerParameter = 0;  // Effect::parameters index of the effect's sampler
+    size_t samplerParameter = 0;  // CompiledEffect::parameters index of the effect's sampler
     bool depthCompare = false;    // a sampler2DShadow: the bound texture must compare
     // D3D10's separate textures and samplers: GL's combined sampler for one (Texture2D, SamplerState)
     // pair the code samples with. The texture bound is `textureParameter`, not the sampler's own
     // (SamplerDesc::texture); the unit is the pass's (assigned after both stages compiled).
     std::string pairTexture;  // the effect's texture and sampler names ("" if not a pair)
     std::string pairSampler;
-    std::optional<size_t> textureParameter;  // Effect::parameters index of pairTexture
+    std::optional<size_t> textureParameter;  // CompiledEffect::parameters index of pairTexture
     // A D3D9 pass's states of the sampler register this sampler is bound to (`MinFilter[0] = LINEAR;`,
     // `Sampler[0] = (s);`): the states the sampler has in this pass, CompiledEffect::passSamplers' index
     // (-1: the sampler's own, SamplerDesc). `Texture[0] = <t>;` sets `textureParameter`.
@@ -77,7 +87,7 @@ struct StorageBufferBinding {
         uint32_t bytes = 0;
     };
     std::string blockName;   // the GLSL block (the parameter's name)
-    size_t parameter = 0;    // Effect::parameters index
+    size_t parameter = 0;    // CompiledEffect::parameters index
     uint32_t glStride = 0;   // bytes per element in the GL block
     uint32_t d3dStride = 0;  // bytes per element as D3D packs it
     std::vector<Run> runs;   // in D3D order, covering the element
@@ -203,6 +213,7 @@ struct CompiledPass {
     std::vector<RenderStateSetting> states;  // in source order, shaders excluded
     bool hasScript = false;
     std::vector<ScriptCommand> script;  // the pass's Script annotation (no script: Draw=Geometry)
+    Annotations annotations;            // every annotation of the pass, in source order
 };
 
 struct CompiledTechnique {
@@ -212,6 +223,7 @@ struct CompiledTechnique {
     std::vector<CompiledPass> passes;
     bool hasScript = false;
     std::vector<ScriptCommand> script;  // the technique's Script annotation (no script: every pass in order)
+    Annotations annotations;            // every annotation of the technique, in source order
 };
 
 enum class TextureFormat {
@@ -243,7 +255,7 @@ struct TextureDesc {
         Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
                      // generator so far; runtime/render/include/private/runtime/ProceduralTexture.h)
     };
-    size_t parameter = 0;  // Effect::parameters index
+    size_t parameter = 0;  // CompiledEffect::parameters index
     Kind kind = Kind::File;
     // Texture2D, TextureCube, Texture3D, or a D3D10 Texture1DArray, Texture2DArray, TextureCubeArray,
     // Texture2DMS
@@ -262,8 +274,8 @@ struct TextureDesc {
 };
 
 struct SamplerDesc {
-    size_t parameter = 0;                             // Effect::parameters index of the sampler
-    std::optional<size_t> texture;                    // Effect::parameters index of its texture
+    size_t parameter = 0;                             // CompiledEffect::parameters index of the sampler
+    std::optional<size_t> texture;                    // CompiledEffect::parameters index of its texture
     int addressU = 1, addressV = 1, addressW = 1;     // D3D9 TEXTUREADDRESS values (1 = WRAP)
     int minFilter = 1, magFilter = 1, mipFilter = 0;  // D3D9 TEXF values
     float borderColor[4] = {0, 0, 0, 0};
@@ -281,6 +293,7 @@ struct ParameterInfo {
     TypeDesc type;
     std::string semantic;  // as written; "" if none
     bool isStatic = false;
+    bool isShared = false;  // declared `shared`: one value across the effects of a pool
     SourceLoc loc;
     // `string frustum = "light0";` or `string Object = "light0";`: the light whose matrices or properties
     // the parameter sees ("" = none: the render port's).
@@ -290,12 +303,19 @@ struct ParameterInfo {
     bool hasParameterization = false;
     std::string parameterization;  // "" if the annotation is not a string
     SourceLoc parameterizationLoc;
+    Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
+};
+
+// Where a compiled effect came from, recorded in its file (fx/CompiledEffectFile.h) and printed by
+// `shadowfx info`: what to compile again when the file is older than the source.
+struct EffectProvenance {
+    std::string sourcePath;                                    // the .fx file as the compiler was given it
+    std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE, in order
+    std::vector<std::string> includeDirs;                      // -I, in order
+    std::string compilerVersion;                               // "shadowfx 0.1.0"
 };
 
 struct CompiledEffect {
-    // The syntax tree the effect was compiled from, for tools (annotations for UIs and test expectations).
-    // The runtime never reads it: everything it needs is resolved below.
-    std::shared_ptr<const Effect> effect;
     std::string path;                       // the effect's main file, for diagnostics
     std::vector<ParameterInfo> parameters;  // one per Effect::parameters entry, same indices
     std::vector<Value> initialValues;       // one per Effect::parameters entry (evaluated initializers)
@@ -311,9 +331,11 @@ struct CompiledEffect {
     // The most iterations one LoopByCount may run (CompileOptions::maxScriptLoopCount): the compiler
     // checks literal counts, the runtime a parameter's value.
     int maxScriptLoopCount = 1024;
+    EffectProvenance provenance;  // filled by whoever compiles from source with the options it used
 
     // By name; a technique in an fxgroup also by "group.name".
     const CompiledTechnique* findTechnique(const std::string& name) const;
+    const ParameterInfo* findParameter(const std::string& name) const;  // case-sensitive, as HLSL
     const TextureDesc* findTexture(size_t parameter) const;
     const SamplerDesc* findSampler(size_t parameter) const;
 };

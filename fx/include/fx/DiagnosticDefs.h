@@ -133,4 +133,19 @@ FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'{1}")
 FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
 FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
 
+// [SECTION] Compiled effect files (fx/CompiledEffectFile.h, docs/compiled-effect.md)
+FX_DIAGNOSTIC(CompiledEffectTruncated, Error, "the compiled effect file is truncated: {0}")
+FX_DIAGNOSTIC(CompiledEffectCorrupt, Error, "the compiled effect file is corrupt: {0}")
+FX_DIAGNOSTIC(
+    CompiledEffectNewerFormat, Error,
+    "the compiled effect file has format version {0}, newer than this shadowfx reads ({1}): use the "
+    "shadowfx that wrote it, or compile the effect again")
+FX_DIAGNOSTIC(
+    CompiledEffectOlderFormat, Error,
+    "the compiled effect file has format version {0}, which this shadowfx no longer reads (it reads "
+    "{1}): compile the effect again")
+FX_DIAGNOSTIC(NotCompiledEffect, Error,
+              "not a compiled effect file (shadowfx compile EFFECT.fx --out EFFECT.sfxo writes one)")
+FX_DIAGNOSTIC(CompiledEffectWriteFailed, Error, "cannot write compiled effect file '{0}'")
+
 #undef FX_DIAGNOSTIC

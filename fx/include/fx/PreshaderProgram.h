@@ -19,6 +19,10 @@
 
 namespace fx {
 
+namespace detail {
+struct PreshaderProgramFields;  // fx/src/CompiledEffectFields.h: the program in a compiled effect file
+}
+
 class PreshaderProgram {
 public:
     struct Instruction {
@@ -89,9 +93,13 @@ public:
     // The folded constant (isConstant()).
     const Value& constant() const { return mConstants.front(); }
     bool empty() const { return mCode.empty(); }
+    // Whether running the program over `slotCount` slots stays within its constants, errors, slots and
+    // stack (what a program read from a file must show before it runs); "" if so, else what is wrong.
+    std::string malformation(size_t slotCount) const;
 
 private:
     friend class PreshaderCompiler;  // fx/src/Preshader.cpp
+    friend struct detail::PreshaderProgramFields;
 
     std::vector<Instruction> mCode;  // postfix: operands before the instruction that uses them
     std::vector<Value> mConstants;

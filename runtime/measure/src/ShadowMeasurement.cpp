@@ -2,7 +2,7 @@
 #include <runtime/ShadowMeasurement.h>
 
 #include <fx/CompileWorkers.h>
-#include <fx/EffectCompiler.h>
+#include <fx/EffectFile.h>
 
 #include <algorithm>
 #include <atomic>
@@ -56,11 +56,9 @@ std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::
                                                    std::vector<std::pair<std::string, std::string>> extra,
                                                    fx::DiagnosticSink& sink, const std::string& technique) {
     for (auto& define : extra) options.defines.push_back(std::move(define));
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, sink);
-    if (!effect) return nullptr;
     fx::CompileOptions compileOptions;
     compileOptions.technique = technique;
-    return fx::compileEffect(effect, compileOptions, sink);
+    return fx::loadEffectFile(path, options, compileOptions, sink);
 }
 
 std::vector<CompiledVariant> compileVariants(const std::vector<VariantRequest>& requests,

@@ -1,8 +1,6 @@
-// AnnotationTable: every annotation of an effect's parameters, techniques and passes as values, evaluated
-// once when the effect is loaded, for the application's handles (runtime/EffectVariable.h).
-//
-// The compiled effect does not carry annotations yet: they are read from its syntax tree
-// (CompiledEffect::effect), the one place the runtime looks at it, until the compiled effect holds them.
+// AnnotationTable: every annotation of an effect's parameters, techniques and passes as the application's
+// handles (runtime/EffectVariable.h), made once when the effect is loaded from the values the compiled
+// effect carries.
 #pragma once
 
 #include <runtime/EffectVariable.h>

@@ -6,6 +6,7 @@
 // - FrameExecutor     the frame on GL, following the plan
 #include <runtime/EffectRenderer.h>
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/LiteralNumbers.h>
 
 #include "EffectResources.h"
@@ -33,6 +34,12 @@ namespace runtime {
 
 EffectRenderer::EffectRenderer(std::unique_ptr<EffectResources> resources) : mImpl(std::move(resources)) {}
 EffectRenderer::~EffectRenderer() = default;
+
+std::unique_ptr<EffectRenderer> EffectRenderer::createFromFile(const std::string& path,
+                                                               fx::DiagnosticSink& diagnostics) {
+    std::shared_ptr<const fx::CompiledEffect> effect = fx::readCompiledEffectFile(path, diagnostics);
+    return effect ? create(effect, diagnostics) : nullptr;
+}
 
 std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx::CompiledEffect> effect,
                                                        fx::DiagnosticSink& diagnostics) {

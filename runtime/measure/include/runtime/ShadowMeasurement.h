@@ -50,7 +50,8 @@ GroundTruth castOrReadTruth(const Scene& scene, const Light& light, const GBuffe
                             std::string& note);
 
 // Parses and compiles the effect at `path` with `options` plus the `extra` preprocessor definitions; only
-// `technique` when one is named.
+// `technique` when one is named. A compiled effect file (fx/EffectFile.h) is read as it was compiled: the
+// definitions apply to source only.
 std::shared_ptr<fx::CompiledEffect> compileVariant(const std::string& path, fx::ParseOptions options,
                                                    std::vector<std::pair<std::string, std::string>> extra,
                                                    fx::DiagnosticSink& sink,

@@ -76,6 +76,12 @@ public:
     // link or a resource cannot be created; the diagnostics say why.
     static std::unique_ptr<EffectRenderer> create(std::shared_ptr<const fx::CompiledEffect> effect,
                                                   fx::DiagnosticSink& diagnostics);
+    // The same from a compiled effect file (`shadowfx compile EFFECT.fx --out EFFECT.sfxo`), which needs
+    // no compiler: a file that is not one, or is truncated, corrupt or of another format version, is an
+    // error at `path` (fx/CompiledEffectFile.h). Source files load through runtime/ReloadableEffect.h or
+    // fx/EffectFile.h, which link the compiler.
+    static std::unique_ptr<EffectRenderer> createFromFile(const std::string& path,
+                                                          fx::DiagnosticSink& diagnostics);
     ~EffectRenderer();
     // The semantics the runtime gives parameters values by (case-insensitive): the matrices with their
     // Inverse/Transpose/InverseTranspose forms, camera, light, object and scene values, the light fits'

@@ -1,5 +1,7 @@
-// ReloadableEffect: the hot-reload loop of the viewer, without a window. Owns the last good
-// EffectRenderer of an effect file, a CompileCache shared by every reload (a pass whose generated HLSL
+// ReloadableEffect: the hot-reload loop of the viewer, without a window. In the `reload` library, not
+// `render`: it compiles source, so it links the compiler (fx), which the effect runtime itself does not.
+// Owns the last good EffectRenderer of an effect file (source, or a compiled effect file that each
+// reload reads again), a CompileCache shared by every reload (a pass whose generated HLSL
 // did not change is not recompiled) and a FileWatcher on the effect and every file it includes.
 //
 // A reload that fails (parse, compile or link error) changes nothing that renders: the last good

@@ -1,7 +1,9 @@
 // ReloadableEffect: parse -> compile (through the shared cache) -> create, keeping the last good renderer.
 #include <runtime/ReloadableEffect.h>
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
+#include <fx/EffectFile.h>
 
 #include <set>
 #include <sstream>
@@ -41,8 +43,16 @@ bool ReloadableEffect::reload() {
     const size_t missesBefore = mCache.misses();
 
     Clock::time_point start = Clock::now();
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(mPath, mParseOptions, mDiagnostics);
-    mStats.parseMs = millisecondsSince(start);
+    std::shared_ptr<fx::CompiledEffect> compiled;
+    std::shared_ptr<fx::Effect> effect;
+    if (fx::isCompiledEffectFile(mPath)) {
+        // A compiled effect file opens no include: reloading it reads it again.
+        compiled = fx::readCompiledEffectFile(mPath, mDiagnostics);
+        mStats.parseMs = millisecondsSince(start);
+    } else {
+        effect = fx::parseEffectFile(mPath, mParseOptions, mDiagnostics);
+        mStats.parseMs = millisecondsSince(start);
+    }
     if (effect) {
         // Watch what this parse opened, even if compiling fails below: the fix may be in an include.
         mWatchedFiles =
@@ -50,12 +60,12 @@ bool ReloadableEffect::reload() {
         mWatcher.setFiles(mWatchedFiles);
     }
 
-    std::shared_ptr<fx::CompiledEffect> compiled;
     if (effect && !mDiagnostics.hasErrors()) {
         fx::CompileOptions options;
         options.cache = &mCache;  // all techniques: the viewer switches between them without a reload
         start = Clock::now();
         compiled = fx::compileEffect(effect, options, mDiagnostics);
+        if (compiled) compiled->provenance = fx::effectProvenance(mPath, mParseOptions);
         mStats.compileMs = millisecondsSince(start);
     }
     mStats.cacheHits = mCache.hits() - hitsBefore;

@@ -1,0 +1,247 @@
+// CompiledEffectFields: every field of a compiled effect, listed once per struct for both directions of
+// fx/src/BinaryArchive.h: `fields(archive, value)` writes them with a BinaryWriter and reads them, in the
+// same order, with a BinaryReader. Adding a field to a struct of fx/CompiledEffect.h is one entry in its
+// list here (and a new format version, docs/compiled-effect.md); the size checks below fail the build
+// until the list and the struct agree.
+#pragma once
+
+#include "BinaryArchive.h"
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+
+#include <algorithm>
+
+namespace fx::detail {
+
+// [SECTION] Enumerators the reader accepts
+
+inline constexpr uint32_t kDiagnosticCount = 0
+#define FX_DIAGNOSTIC(id, severity, text) +1
+#include <fx/DiagnosticDefs.h>
+    ;
+
+template <class E, E last>
+struct EnumLast {
+    static constexpr E kLast = last;
+};
+template <>
+struct EnumLimit<ShaderStage> : EnumLast<ShaderStage, ShaderStage::Domain> {};
+template <>
+struct EnumLimit<UniformBinding::Source>
+    : EnumLast<UniformBinding::Source, UniformBinding::Source::CompileArgument> {};
+template <>
+struct EnumLimit<VertexStream> : EnumLast<VertexStream, VertexStream::BlendIndices> {};
+template <>
+struct EnumLimit<LeaveOutCondition> : EnumLast<LeaveOutCondition, LeaveOutCondition::NoLightArea> {};
+template <>
+struct EnumLimit<CompiledPass::DrawPrimitive>
+    : EnumLast<CompiledPass::DrawPrimitive, CompiledPass::DrawPrimitive::TrianglesAdjacency> {};
+template <>
+struct EnumLimit<StreamOutElement::Component>
+    : EnumLast<StreamOutElement::Component, StreamOutElement::Component::UInt> {};
+template <>
+struct EnumLimit<StreamOutput::Primitive>
+    : EnumLast<StreamOutput::Primitive, StreamOutput::Primitive::Triangles> {};
+template <>
+struct EnumLimit<TextureFormat> : EnumLast<TextureFormat, TextureFormat::D32F> {};
+template <>
+struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Procedural> {};
+template <>
+struct EnumLimit<BaseType> : EnumLast<BaseType, BaseType::Struct> {};
+template <>
+struct EnumLimit<Shape> : EnumLast<Shape, Shape::Matrix> {};
+template <>
+struct EnumLimit<RenderStateId>
+    : EnumLast<RenderStateId, static_cast<RenderStateId>(static_cast<int>(RenderStateId::Count) - 1)> {};
+template <>
+struct EnumLimit<ScriptCommand::Kind> : EnumLast<ScriptCommand::Kind, ScriptCommand::Kind::ScriptSignature> {
+};
+template <>
+struct EnumLimit<ScriptCommand::ClearWhat>
+    : EnumLast<ScriptCommand::ClearWhat, ScriptCommand::ClearWhat::Stencil> {};
+template <>
+struct EnumLimit<ScriptCommand::DrawWhat>
+    : EnumLast<ScriptCommand::DrawWhat, ScriptCommand::DrawWhat::Buffer> {};
+template <>
+struct EnumLimit<PreshaderProgram::Instruction::Op>
+    : EnumLast<PreshaderProgram::Instruction::Op, PreshaderProgram::Instruction::Op::Convert> {};
+template <>
+struct EnumLimit<PreshaderProgram::Instruction::Operator>
+    : EnumLast<PreshaderProgram::Instruction::Operator, PreshaderProgram::Instruction::Operator::Unknown> {};
+template <>
+struct EnumLimit<DiagId> : EnumLast<DiagId, static_cast<DiagId>(kDiagnosticCount - 1)> {};
+
+// [SECTION] Size checks: a field added to a struct changes its size; list it below, then update the size.
+// (x86-64 with libstdc++, the platform the project builds on.)
+
+#if defined(__x86_64__) && defined(__GLIBCXX__)
+static_assert(sizeof(SourceLoc) == 40);
+static_assert(sizeof(TypeDesc) == 112);
+static_assert(sizeof(Value) == 168);
+static_assert(sizeof(AnnotationValue) == 200);
+static_assert(sizeof(UniformBinding) == 184);
+static_assert(sizeof(SamplerBinding) == 144);
+static_assert(sizeof(StorageBufferBinding::Run) == 12);
+static_assert(sizeof(StorageBufferBinding) == 72);
+static_assert(sizeof(VertexInput) == 48);
+static_assert(sizeof(StageProgram) == 280);
+static_assert(sizeof(PreshaderProgram::Instruction) == 200);
+static_assert(sizeof(PreshaderProgram::Error) == 80);
+static_assert(sizeof(PreshaderProgram) == 96);
+static_assert(sizeof(CompileArgument) == 240);
+static_assert(sizeof(RenderStateSetting) == 160);
+static_assert(sizeof(ScriptCommand) == 224);
+static_assert(sizeof(StreamOutElement) == 48);
+static_assert(sizeof(StreamOutput) == 80);
+static_assert(sizeof(CompiledPass) == 1696);
+static_assert(sizeof(CompiledTechnique) == 184);
+static_assert(sizeof(TextureDesc) == 160);
+static_assert(sizeof(SamplerDesc) == 128);
+static_assert(sizeof(RefusedTechnique) == 136);
+static_assert(sizeof(ParameterInfo) == 360);
+static_assert(sizeof(EffectProvenance) == 112);
+static_assert(sizeof(CompiledEffect) == 352);
+#endif
+
+// [SECTION] Fields, in file order
+
+template <class A>
+void fields(A& a, SourceLoc& x) {
+    a(x.file, x.line, x.column);
+}
+template <class A>
+void fields(A& a, TypeDesc& x) {
+    a(x.base, x.shape, x.rows, x.cols, x.arrayDims, x.structName, x.rowMajor, x.templateArgs);
+    // A type sizes the values the runtime builds from it (zeroValue, constructors in preshaders).
+    a.require(x.rows >= 0 && x.rows <= 4 && x.cols >= 0 && x.cols <= 4,
+              "a type with more than 4 rows or columns");
+    int64_t elements = 1;
+    for (int dim : x.arrayDims) {
+        a.require(dim >= 0 && dim <= (1 << 20), "an array dimension out of range");
+        elements *= dim >= 0 && dim <= (1 << 20) ? std::max(dim, 1) : 1;
+        a.require(elements <= (1 << 20), "an array of more than 2^20 elements");
+        if (elements > (1 << 20)) break;
+    }
+}
+template <class A>
+void fields(A& a, Value& x) {
+    a(x.type, x.data, x.string);
+}
+template <class A>
+void fields(A& a, AnnotationValue& x) {
+    a(x.name, x.value);
+}
+template <class A>
+void fields(A& a, UniformBinding& x) {
+    a(x.name, x.source, x.index, x.type, x.offset, x.size, x.arrayStride, x.matrixStride);
+    a(x.hlslColumnsContiguous, x.active);
+}
+template <class A>
+void fields(A& a, SamplerBinding& x) {
+    a(x.glslName, x.unit, x.samplerParameter, x.depthCompare, x.pairTexture, x.pairSampler,
+      x.textureParameter);
+    a(x.passSampler);
+}
+template <class A>
+void fields(A& a, StorageBufferBinding::Run& x) {
+    a(x.d3dOffset, x.glOffset, x.bytes);
+}
+template <class A>
+void fields(A& a, StorageBufferBinding& x) {
+    a(x.blockName, x.parameter, x.glStride, x.d3dStride, x.runs);
+}
+template <class A>
+void fields(A& a, VertexStreamSlot& x) {
+    a(x.stream, x.index);
+}
+template <class A>
+void fields(A& a, VertexInput& x) {
+    a(x.semantic, x.location, x.components, x.stream);
+}
+template <class A>
+void fields(A& a, StageProgram& x) {
+    a(x.stage, x.entryPoint, x.profile, x.hlsl, x.glsl, x.uniformBlockName, x.uniformBlockBinding);
+    a(x.uniformBlockSize, x.uniforms, x.samplers, x.storageBuffers, x.inputs, x.sourceHash);
+}
+template <class A>
+void fields(A& a, PreshaderProgram::Instruction& x) {
+    a(x.op, x.operation, x.operand, x.count, x.text, x.type, x.loc);
+}
+template <class A>
+void fields(A& a, PreshaderProgram::Error& x) {
+    a(x.id, x.loc, x.text);
+}
+struct PreshaderProgramFields {
+    template <class A>
+    static void fields(A& a, PreshaderProgram& x) {
+        a(x.mCode, x.mConstants, x.mErrors, x.mInputs);
+    }
+};
+template <class A>
+void fields(A& a, PreshaderProgram& x) {
+    PreshaderProgramFields::fields(a, x);
+}
+template <class A>
+void fields(A& a, CompileArgument& x) {
+    a(x.value, x.type, x.memberName);
+}
+template <class A>
+void fields(A& a, RenderStateSetting& x) {
+    a(x.id, x.constant, x.value, x.loc);
+}
+template <class A>
+void fields(A& a, ScriptCommand& x) {
+    a(x.kind, x.index, x.pass, x.value, x.cascade, x.loc, x.selectorCondition, x.selectorTrue);
+    a(x.selectorFalse, x.selectorAlternatives, x.clear, x.draw);
+}
+template <class A>
+void fields(A& a, StreamOutElement& x) {
+    a(x.semantic, x.slot, x.offset, x.components, x.component);
+}
+template <class A>
+void fields(A& a, StreamOutput& x) {
+    a(x.varyings, x.elements, x.strides, x.primitive, x.rasterizes, x.capacity);
+}
+template <class A>
+void fields(A& a, CompiledPass& x) {
+    a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels);
+    a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.patchVertices, x.primitive);
+    a(x.arguments, x.states, x.hasScript, x.script, x.annotations);
+    a(x.streamOut, x.drawAuto);
+}
+template <class A>
+void fields(A& a, CompiledTechnique& x) {
+    a(x.name, x.group, x.loc, x.passes, x.hasScript, x.script, x.annotations);
+}
+template <class A>
+void fields(A& a, TextureDesc& x) {
+    a(x.parameter, x.kind, x.type, x.format, x.arraySize, x.samples, x.width, x.height, x.viewportRatio);
+    a(x.mipLevels, x.resourceName, x.resolvedPath, x.seed, x.loc);
+}
+template <class A>
+void fields(A& a, SamplerDesc& x) {
+    a(x.parameter, x.texture, x.addressU, x.addressV, x.addressW, x.minFilter, x.magFilter, x.mipFilter);
+    a(x.borderColor, x.maxAnisotropy, x.mipLodBias, x.minLod, x.maxLod, x.comparisonFunc, x.loc);
+}
+template <class A>
+void fields(A& a, RefusedTechnique& x) {
+    a(x.name, x.group, x.reason, x.loc);
+}
+template <class A>
+void fields(A& a, ParameterInfo& x) {
+    a(x.name, x.type, x.semantic, x.isStatic, x.isShared, x.loc, x.light, x.hasParameterization);
+    a(x.parameterization, x.parameterizationLoc, x.annotations);
+}
+template <class A>
+void fields(A& a, EffectProvenance& x) {
+    a(x.sourcePath, x.defines, x.includeDirs, x.compilerVersion);
+}
+template <class A>
+void fields(A& a, CompiledEffect& x) {
+    a(x.provenance, x.path, x.parameters, x.initialValues, x.textures, x.samplers, x.passSamplers);
+    a(x.techniques);
+    a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.maxScriptLoopCount);
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,231 @@
+// CompiledEffectFile: the header (magic, version, size, hash), the content through CompiledEffectFields.h,
+// and the checks a read effect passes before anything follows its indices.
+//
+// [SECTION] Header
+// [SECTION] Checks
+// [SECTION] Reading and writing
+
+#include <fx/CompiledEffectFile.h>
+
+#include "CompiledEffectFields.h"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace fx {
+
+namespace {
+
+// [SECTION] Header
+
+constexpr std::string_view kMagic{"SFXO\r\n\x1a\n", 8};
+constexpr size_t kHeaderSize = 8 + 4 + 8 + 8;
+
+// FNV-1a, 64 bits (Fowler, Noll & Vo): catches a flipped or lost byte; not a signature.
+uint64_t contentHash(std::string_view bytes) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    for (char c : bytes) {
+        hash ^= static_cast<uint8_t>(c);
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
+uint64_t readLittleEndian(std::string_view bytes, size_t offset, size_t width) {
+    uint64_t value = 0;
+    for (size_t i = 0; i < width; ++i)
+        value |= static_cast<uint64_t>(static_cast<uint8_t>(bytes[offset + i])) << (8 * i);
+    return value;
+}
+
+// [SECTION] Checks
+
+// What the runtime indexes with the effect's numbers, checked against what they index; "" if all hold.
+class Checks {
+public:
+    explicit Checks(const CompiledEffect& effect) : mEffect(effect), mParameters(effect.parameters.size()) {}
+
+    std::string run() {
+        if (mEffect.initialValues.size() != mParameters)
+            return "initial values and parameters differ in number";
+        for (const TextureDesc& texture : mEffect.textures)
+            if (texture.parameter >= mParameters) return "a texture names no parameter";
+        for (const std::vector<SamplerDesc>* list : {&mEffect.samplers, &mEffect.passSamplers})
+            for (const SamplerDesc& sampler : *list)
+                if (sampler.parameter >= mParameters || (sampler.texture && *sampler.texture >= mParameters))
+                    return "a sampler names no parameter";
+        if (std::string error = script(mEffect.globalScript, 0); !error.empty()) return error;
+        for (const CompiledTechnique& technique : mEffect.techniques) {
+            if (std::string error = script(technique.script, technique.passes.size()); !error.empty())
+                return error;
+            for (const CompiledPass& pass : technique.passes) {
+                if (std::string error = check(pass); !error.empty())
+                    return "pass '" + pass.name + "': " + error;
+                if (pass.drawAuto < -1 ||
+                    (pass.drawAuto >= 0 && static_cast<size_t>(pass.drawAuto) >= technique.passes.size()))
+                    return "pass '" + pass.name + "': DrawAuto names a pass out of range";
+            }
+        }
+        return "";
+    }
+
+private:
+    std::string script(const std::vector<ScriptCommand>& commands, size_t passes) const {
+        for (const ScriptCommand& command : commands)
+            if (command.pass < -1 || (command.pass >= 0 && static_cast<size_t>(command.pass) >= passes))
+                return "a script names a pass out of range";
+        return "";
+    }
+
+    std::string program(const PreshaderProgram& value) const {
+        const std::string error = value.malformation(mParameters);
+        return error.empty() ? "" : "a preshader program is malformed (" + error + ")";
+    }
+
+    std::string check(const CompiledPass& pass) const {
+        for (const CompileArgument& argument : pass.arguments)
+            if (std::string error = program(argument.value); !error.empty()) return error;
+        for (const RenderStateSetting& state : pass.states)
+            if (std::string error = program(state.value); !error.empty()) return error;
+        if (std::string error = script(pass.script, 0); !error.empty()) return error;
+        for (const StageProgram* stage :
+             {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain}) {
+            for (const UniformBinding& uniform : stage->uniforms) {
+                const size_t limit =
+                    uniform.source == UniformBinding::Source::Parameter ? mParameters : pass.arguments.size();
+                if (uniform.index >= limit) return "a uniform block member names no parameter or argument";
+            }
+            for (const SamplerBinding& sampler : stage->samplers) {
+                if (sampler.samplerParameter != kNoSampler && sampler.samplerParameter >= mParameters)
+                    return "a sampler binding names no parameter";
+                if (sampler.textureParameter && *sampler.textureParameter >= mParameters)
+                    return "a sampler binding names no texture parameter";
+                if (sampler.passSampler < -1 ||
+                    (sampler.passSampler >= 0 &&
+                     static_cast<size_t>(sampler.passSampler) >= mEffect.passSamplers.size()))
+                    return "a sampler binding names no pass sampler state";
+            }
+            for (const StorageBufferBinding& buffer : stage->storageBuffers)
+                if (buffer.parameter >= mParameters) return "a storage buffer names no parameter";
+        }
+        // Stream output sizes the pass's GL buffers (capacity times stride) and names their slots.
+        if (pass.streamOut) {
+            for (const StreamOutElement& element : pass.streamOut->elements)
+                if (element.slot < 0 || element.slot > 3) return "a stream-output element names no slot";
+            for (uint32_t stride : pass.streamOut->strides)
+                if (stride > (1u << 16)) return "a stream-output stride out of range";
+            if (pass.streamOut->capacity < 0 || pass.streamOut->capacity > (1 << 24))
+                return "a stream-output capacity out of range";
+        }
+        return "";
+    }
+
+    const CompiledEffect& mEffect;
+    size_t mParameters;
+};
+
+}  // namespace
+
+// [SECTION] Reading and writing
+
+bool hasCompiledEffectMagic(std::string_view bytes) {
+    return bytes.substr(0, kMagic.size()) == kMagic;
+}
+
+bool isCompiledEffectFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char head[kMagic.size()] = {};
+    in.read(head, sizeof head);
+    return in.gcount() == static_cast<std::streamsize>(sizeof head) &&
+           hasCompiledEffectMagic({head, sizeof head});
+}
+
+std::string compiledEffectFileAround(std::string_view content) {
+    detail::BinaryWriter header;
+    header(kCompiledEffectFormatVersion, static_cast<uint64_t>(content.size()), contentHash(content));
+    return std::string(kMagic) + header.bytes() + std::string(content);
+}
+
+std::string serializeCompiledEffect(const CompiledEffect& effect) {
+    detail::BinaryWriter content;
+    content(effect);
+    return compiledEffectFileAround(content.bytes());
+}
+
+std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes, const std::string& path,
+                                                          DiagnosticSink& diagnostics) {
+    const SourceLoc where{path, 0, 0};
+    if (!hasCompiledEffectMagic(bytes)) {
+        diagnostics.report(DiagId::NotCompiledEffect, where, {});
+        return nullptr;
+    }
+    if (bytes.size() < kHeaderSize) {
+        diagnostics.report(DiagId::CompiledEffectTruncated, where,
+                           {"its header ends after " + std::to_string(bytes.size()) + " of " +
+                            std::to_string(kHeaderSize) + " bytes"});
+        return nullptr;
+    }
+    const uint64_t version = readLittleEndian(bytes, 8, 4);
+    if (version != kCompiledEffectFormatVersion) {
+        diagnostics.report(version > kCompiledEffectFormatVersion ? DiagId::CompiledEffectNewerFormat
+                                                                  : DiagId::CompiledEffectOlderFormat,
+                           where, {std::to_string(version), std::to_string(kCompiledEffectFormatVersion)});
+        return nullptr;
+    }
+    const uint64_t size = readLittleEndian(bytes, 12, 8);
+    const std::string_view content = bytes.substr(kHeaderSize);
+    if (content.size() < size) {
+        diagnostics.report(
+            DiagId::CompiledEffectTruncated, where,
+            {std::to_string(content.size()) + " of " + std::to_string(size) + " bytes of content"});
+        return nullptr;
+    }
+    if (content.size() > size) {
+        diagnostics.report(DiagId::CompiledEffectCorrupt, where,
+                           {std::to_string(content.size() - size) + " bytes follow the content"});
+        return nullptr;
+    }
+    if (contentHash(content) != readLittleEndian(bytes, 20, 8)) {
+        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {"its content does not match its hash"});
+        return nullptr;
+    }
+    auto effect = std::make_unique<CompiledEffect>();
+    detail::BinaryReader reader(content);
+    reader(*effect);
+    if (!reader.failed() && !reader.atEnd()) reader.require(false, "content left over");
+    if (reader.failed()) {
+        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {reader.error()});
+        return nullptr;
+    }
+    if (std::string error = Checks(*effect).run(); !error.empty()) {
+        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {error});
+        return nullptr;
+    }
+    return effect;
+}
+
+std::unique_ptr<CompiledEffect> readCompiledEffectFile(const std::string& path, DiagnosticSink& diagnostics) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        diagnostics.report(DiagId::FileNotFound, SourceLoc{path, 0, 0}, {path});
+        return nullptr;
+    }
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return deserializeCompiledEffect(bytes, path, diagnostics);
+}
+
+bool writeCompiledEffectFile(const CompiledEffect& effect, const std::string& path,
+                             DiagnosticSink& diagnostics) {
+    const std::string bytes = serializeCompiledEffect(effect);
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+        diagnostics.report(DiagId::CompiledEffectWriteFailed, SourceLoc{path, 0, 0}, {path});
+        return false;
+    }
+    return true;
+}
+
+}  // namespace fx

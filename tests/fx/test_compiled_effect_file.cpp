@@ -1,0 +1,187 @@
+// Compiled effect files (fx/CompiledEffectFile.h): every shipped effect survives a round trip with
+// nothing lost, and a truncated, corrupt or newer file is a located error, never a crash.
+#include <fx/CompiledEffectFile.h>
+#include <fx/EffectFile.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace fx {
+namespace {
+
+std::vector<std::string> shippedEffects() {
+    std::vector<std::string> paths;
+    for (const auto& entry : std::filesystem::directory_iterator("effects"))
+        if (entry.path().extension() == ".fx") paths.push_back(entry.path().string());
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+std::shared_ptr<CompiledEffect> compileShipped(const std::string& path, DiagnosticList& diagnostics) {
+    return loadEffectFile(path, ParseOptions{}, CompileOptions{}, diagnostics);
+}
+
+// The one error a read of `bytes` reports, as the CLI prints it.
+std::string readError(std::string_view bytes, DiagId expected) {
+    DiagnosticList diagnostics;
+    std::unique_ptr<CompiledEffect> effect = deserializeCompiledEffect(bytes, "shadow.sfxo", diagnostics);
+    EXPECT_FALSE(effect);
+    EXPECT_EQ(diagnostics.items().size(), 1u) << diagnostics.str();
+    if (diagnostics.items().empty()) return "";
+    EXPECT_EQ(diagnostics.items()[0].id, expected) << diagnostics.str();
+    return renderDiagnostic(diagnostics.items()[0], false);
+}
+
+// Serialize, read back, serialize again: the same bytes, for every shipped effect. A field the writer
+// writes and the reader does not read (or reads differently) changes the second file.
+TEST(CompiledEffectFile, EveryShippedEffectRoundTripsByteForByte) {
+    const std::vector<std::string> effects = shippedEffects();
+    ASSERT_GE(effects.size(), 10u);
+    for (const std::string& path : effects) {
+        SCOPED_TRACE(path);
+        DiagnosticList diagnostics;
+        std::shared_ptr<CompiledEffect> compiled = compileShipped(path, diagnostics);
+        ASSERT_TRUE(compiled) << diagnostics.str();
+        const std::string first = serializeCompiledEffect(*compiled);
+        DiagnosticList readDiagnostics;
+        std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(first, path + "o", readDiagnostics);
+        ASSERT_TRUE(read) << readDiagnostics.str();
+        EXPECT_EQ(serializeCompiledEffect(*read), first);
+        // What the runtime and the tools read, compared with the original directly.
+        ASSERT_EQ(read->techniques.size(), compiled->techniques.size());
+        EXPECT_EQ(read->techniques[0].passes.at(0).fragment.glsl,
+                  compiled->techniques[0].passes.at(0).fragment.glsl);
+        ASSERT_EQ(read->parameters.size(), compiled->parameters.size());
+        for (size_t i = 0; i < read->parameters.size(); ++i) {
+            EXPECT_EQ(read->parameters[i].annotations.size(), compiled->parameters[i].annotations.size());
+            EXPECT_EQ(read->initialValues[i].data, compiled->initialValues[i].data);
+        }
+        EXPECT_EQ(read->provenance.sourcePath, path);
+    }
+}
+
+// A pass's sampler-register states (`AddressU[0] = CLAMP;`) are the compiled effect's pass samplers,
+// which the bindings index: they survive the file too.
+TEST(CompiledEffectFile, PassSamplerStatesRoundTrip) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+texture Noise < string Procedural = "noise"; float2 Dimensions = {16, 16}; >;
+sampler WrapSampler = sampler_state { Texture = <Noise>; AddressU = WRAP; AddressV = WRAP; };
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(WrapSampler, uv); }
+technique PassClamps { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
+    AddressU[0] = Clamp; } }
+)",
+                                                       "pass_samplers.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->passSamplers.size(), 1u);
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read =
+        deserializeCompiledEffect(bytes, "pass_samplers.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    ASSERT_EQ(read->passSamplers.size(), 1u);
+    EXPECT_EQ(read->passSamplers[0].addressU, compiled->passSamplers[0].addressU);
+    EXPECT_EQ(read->techniques[0].passes[0].fragment.samplers.at(0).passSampler, 0);
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+}
+
+// Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
+TEST(CompiledEffectFile, StreamOutputRoundTrips) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled =
+        compileShipped("tests/data/d3d10/stream_output_particles.fx", diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "particles.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    size_t captures = 0, drawAutos = 0;
+    for (const CompiledTechnique& technique : read->techniques)
+        for (const CompiledPass& pass : technique.passes) {
+            captures += pass.streamOut && !pass.streamOut->varyings.empty();
+            drawAutos += pass.drawAuto >= 0;
+        }
+    EXPECT_GT(captures, 0u);
+    EXPECT_GT(drawAutos, 0u);
+}
+
+// Annotations are values in the compiled effect: the UI's and the tests' reads need no syntax tree.
+TEST(CompiledEffectFile, AnnotationsAreValues) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compileShipped("effects/back_faces.fx", diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    bool found = false;
+    for (const CompiledTechnique& technique : compiled->techniques) {
+        const AnnotationValue* size = findAnnotation(technique.annotations, "expectmapsize");  // case-blind
+        if (!size) continue;
+        found = true;
+        EXPECT_EQ(size->value.type.base, BaseType::Int);
+        EXPECT_EQ(size->value.asInt(), 256);
+    }
+    EXPECT_TRUE(found);
+    EXPECT_EQ(findAnnotation(compiled->techniques[0].annotations, "NoSuchAnnotation"), nullptr);
+}
+
+class DamagedFile : public ::testing::Test {
+protected:
+    void SetUp() override {
+        DiagnosticList diagnostics;
+        std::shared_ptr<CompiledEffect> compiled = compileShipped("effects/plain_lit.fx", diagnostics);
+        ASSERT_TRUE(compiled) << diagnostics.str();
+        mBytes = serializeCompiledEffect(*compiled);
+    }
+    std::string mBytes;
+};
+
+TEST_F(DamagedFile, EveryTruncationIsAnError) {
+    // Every length up to the whole header, then a spread of lengths through the content.
+    for (size_t size = 1; size < mBytes.size(); size += size < 64 ? 1 : mBytes.size() / 97 + 1) {
+        SCOPED_TRACE(size);
+        const std::string_view cut(mBytes.data(), size);
+        const DiagId expected = size < 8 ? DiagId::NotCompiledEffect : DiagId::CompiledEffectTruncated;
+        const std::string error = readError(cut, expected);
+        EXPECT_EQ(error.rfind("shadow.sfxo: error: ", 0), 0u) << error;
+    }
+}
+
+TEST_F(DamagedFile, AFlippedByteIsCorrupt) {
+    for (size_t at : {size_t{40}, mBytes.size() / 2, mBytes.size() - 1}) {
+        std::string bytes = mBytes;
+        bytes[at] = static_cast<char>(bytes[at] ^ 0x5a);
+        EXPECT_EQ(
+            readError(bytes, DiagId::CompiledEffectCorrupt),
+            "shadow.sfxo: error: the compiled effect file is corrupt: its content does not match its hash");
+    }
+}
+
+TEST_F(DamagedFile, ANewerFormatVersionIsNamed) {
+    std::string bytes = mBytes;
+    bytes[8] = static_cast<char>(kCompiledEffectFormatVersion + 1);
+    const std::string error = readError(bytes, DiagId::CompiledEffectNewerFormat);
+    EXPECT_NE(error.find("format version " + std::to_string(kCompiledEffectFormatVersion + 1)),
+              std::string::npos)
+        << error;
+    bytes[8] = 0;
+    readError(bytes, DiagId::CompiledEffectOlderFormat);
+}
+
+TEST_F(DamagedFile, SourceTextIsNotACompiledEffect) {
+    EXPECT_EQ(readError("float4 PS() : COLOR { return 1; }", DiagId::NotCompiledEffect),
+              "shadow.sfxo: error: not a compiled effect file (shadowfx compile EFFECT.fx --out EFFECT.sfxo "
+              "writes one)");
+    EXPECT_FALSE(hasCompiledEffectMagic("SFXO"));
+    EXPECT_TRUE(hasCompiledEffectMagic(mBytes));
+}
+
+TEST_F(DamagedFile, TrailingBytesAreCorrupt) {
+    readError(mBytes + "x", DiagId::CompiledEffectCorrupt);
+}
+
+}  // namespace
+}  // namespace fx
