@@ -163,8 +163,8 @@ std::string lvalueConstructorHelper(const std::string& base, int n) {
 // What the rewrites of one effect need and produce.
 class Legalizer {
 public:
-    Legalizer(const std::function<bool(const Token&)>& isTypeName, Effect& effect)
-        : mIsTypeName(isTypeName), mEffect(effect) {}
+    Legalizer(const std::string& text, const std::function<bool(const Token&)>& isTypeName, Effect& effect)
+        : mText(text), mIsTypeName(isTypeName), mEffect(effect) {}
 
     void rewriteLocally(const FunctionTokens& f, std::vector<Edit>& edits) {
         for (size_t i = f.first(); i <= f.last(); ++i) {
@@ -183,7 +183,7 @@ public:
                        f.at(i + 3).kind == Token::Kind::Number && f.is(i + 4, "]") && f.is(i + 5, "=") &&
                        f.is(i + 6, "{")) {
                 regroupFlatInitializer(f, i, edits);
-            } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.is(i + 1, "Sample") &&
+            } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.isIdentifier(i + 1) &&
                        f.is(i + 2, "(")) {
                 rewriteVariableOffset(f, i - 1, edits);
             } else if (f.startsStatement(i)) {
@@ -315,27 +315,64 @@ private:
         need(name, [&] { return lvalueConstructorHelper(base, components); });
     }
 
-    // `T.Sample(S, uv, offset)` with an offset GLSL would refuse as not constant ->
-    // `T.Sample(S, fx_offset_uv_T(uv, offset))`: the offset in texels of level 0 added to the coordinate.
+    // `T.Sample(S, uv, offset)` (and the other methods of kOffsetArguments) with an offset GLSL would
+    // refuse as not constant -> `T.Sample(S, fx_offset_uv_T(uv, offset))`: the offset in texels of level 0
+    // added to the coordinate; `T.Load(location, offset)` -> `T.Load(fx_offset_texel_int3_int2(location,
+    // offset))`, the offset added to the integer location (its mip level untouched).
     void rewriteVariableOffset(const FunctionTokens& f, size_t receiver, std::vector<Edit>& edits) {
+        // Per method: the coordinate's argument, the offset's, and how many arguments may follow it
+        // (a clamp, SampleGrad's included).
+        struct OffsetArguments {
+            size_t coordinate, offset, trailing;
+        };
+        static const std::map<std::string, OffsetArguments> kOffsetArguments = {
+            {"Sample", {1, 2, 1}},     {"SampleLevel", {1, 3, 0}}, {"SampleBias", {1, 3, 1}},
+            {"SampleGrad", {1, 4, 1}}, {"SampleCmp", {1, 3, 1}},   {"SampleCmpLevelZero", {1, 3, 0}},
+            {"Load", {0, 1, 0}}};
+        struct TextureShape {
+            const char* coordinate;  // Sample's
+            const char* location;    // Load's: the texel, then the layer, then the mip level
+            const char* offset;
+            const char* sizes;  // GetDimensions' outputs at level 0
+            const char* step;   // the offset `o` in Sample's coordinate units
+            const char* texel;  // the offset `o` as Load's location
+        };
+        static const std::map<BaseType, TextureShape> kShapes = {
+            {BaseType::Texture1D, {"float", "int2", "int", "w", "float(o) / float(w)", "int2(o, 0)"}},
+            {BaseType::Texture1DArray,
+             {"float2", "int3", "int", "w, layers", "float2(float(o) / float(w), 0)", "int3(o, 0, 0)"}},
+            {BaseType::Texture2D,
+             {"float2", "int3", "int2", "w, h", "float2(o) / float2(w, h)", "int3(o, 0)"}},
+            {BaseType::Texture2DArray,
+             {"float3", "int4", "int2", "w, h, layers", "float3(float2(o) / float2(w, h), 0)",
+              "int4(o, 0, 0)"}},
+            {BaseType::Texture3D,
+             {"float3", "int4", "int3", "w, h, d", "float3(o) / float3(w, h, d)", "int4(o, 0)"}}};
         const Parameter* texture = mEffect.findParameter(f.at(receiver).text);
-        static const std::map<BaseType, const char*> kCoordinates = {{BaseType::Texture1D, "float"},
-                                                                     {BaseType::Texture1DArray, "float2"},
-                                                                     {BaseType::Texture2D, "float2"},
-                                                                     {BaseType::Texture2DArray, "float3"},
-                                                                     {BaseType::Texture3D, "float3"}};
-        if (!texture || !texture->type.arrayDims.empty() || !kCoordinates.count(texture->type.base)) return;
-        // The arguments: sampler, coordinate, offset[, clamp].
+        const auto method = kOffsetArguments.find(f.at(receiver + 2).text);
+        if (!texture || !texture->type.arrayDims.empty() || !kShapes.count(texture->type.base) ||
+            method == kOffsetArguments.end())
+            return;
+        const OffsetArguments& arguments = method->second;
+        const TextureShape& shape = kShapes.at(texture->type.base);
+        // Each argument's first and last token.
         const size_t open = receiver + 3, close = f.closing(open);
-        std::vector<size_t> commas;
-        for (size_t i = open + 1; i < close; ++i) {
+        if (close > f.last() || close == open + 1) return;
+        std::vector<std::pair<size_t, size_t>> args;
+        size_t start = open + 1;
+        for (size_t i = open + 1; i <= close; ++i) {
             if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
-            if (f.is(i, ",")) commas.push_back(i);
+            if (f.is(i, ",") || i == close) {
+                if (i == start) return;
+                args.push_back({start, i - 1});
+                start = i + 1;
+            }
         }
-        if (close > f.last() || commas.size() < 2 || commas.size() > 3) return;
-        const size_t offsetEnd = commas.size() == 3 ? commas[2] : close;
+        if (args.size() <= arguments.offset || args.size() > arguments.offset + 1 + arguments.trailing)
+            return;
+        const auto [offsetFirst, offsetLast] = args[arguments.offset];
         bool constant = true;
-        for (size_t i = commas[1] + 1; i < offsetEnd; ++i) {
+        for (size_t i = offsetFirst; i <= offsetLast; ++i) {
             const Token& t = f.at(i);
             const Parameter* named =
                 t.kind == Token::Kind::Identifier ? mEffect.findParameter(t.text) : nullptr;
@@ -346,27 +383,33 @@ private:
                 constant = false;
         }
         if (constant) return;
-        const std::string name = "fx_offset_uv_" + texture->name;
-        edits.push_back({f.at(commas[0] + 1).begin, f.at(commas[0] + 1).begin, name + "("});
-        edits.push_back({f.at(offsetEnd - 1).end, f.at(offsetEnd - 1).end, ")"});
+        const bool load = method->first == "Load";
+        const std::string name = load ? std::string("fx_offset_texel_") + shape.location + "_" + shape.offset
+                                      : "fx_offset_uv_" + texture->name;
+        // The offset moves next to the coordinate on one line; the lines it spanned stay as line breaks.
+        const auto [coordinateFirst, coordinateLast] = args[arguments.coordinate];
+        const size_t removedBegin = f.at(offsetFirst - 1).begin, removedEnd = f.at(offsetLast).end;
+        std::string offset = mText.substr(f.at(offsetFirst).begin, removedEnd - f.at(offsetFirst).begin);
+        std::replace(offset.begin(), offset.end(), '\n', ' ');
+        const std::string lineBreaks(
+            static_cast<size_t>(std::count(mText.begin() + static_cast<std::ptrdiff_t>(removedBegin),
+                                           mText.begin() + static_cast<std::ptrdiff_t>(removedEnd), '\n')),
+            '\n');
+        edits.push_back({f.at(coordinateFirst).begin, f.at(coordinateFirst).begin, name + "("});
+        edits.push_back({f.at(coordinateLast).end, f.at(coordinateLast).end, ", " + offset + ")"});
+        edits.push_back({removedBegin, removedEnd, lineBreaks});
+        if (load) {
+            need(name, [&] {
+                return std::string(shape.location) + " " + name + "(" + shape.location + " location, " +
+                       shape.offset + " o) { return location + " + shape.texel + "; }\n";
+            });
+            return;
+        }
         if (!mNeeded.insert(name).second) return;
-        const BaseType base = texture->type.base;
-        const std::string coordinate = kCoordinates.at(base);
-        const bool oneD = base == BaseType::Texture1D || base == BaseType::Texture1DArray;
-        const std::string sizes = base == BaseType::Texture1D        ? "w"
-                                  : base == BaseType::Texture1DArray ? "w, layers"
-                                  : base == BaseType::Texture2D      ? "w, h"
-                                  : base == BaseType::Texture2DArray ? "w, h, layers"
-                                                                     : "w, h, d";
-        const std::string step = base == BaseType::Texture1D        ? "float(o) / float(w)"
-                                 : base == BaseType::Texture1DArray ? "float2(float(o) / float(w), 0)"
-                                 : base == BaseType::Texture2D      ? "float2(o) / float2(w, h)"
-                                 : base == BaseType::Texture2DArray ? "float3(float2(o) / float2(w, h), 0)"
-                                                                    : "float3(o) / float3(w, h, d)";
-        const std::string offset = oneD ? "int" : base == BaseType::Texture3D ? "int3" : "int2";
-        mAfterParameter[texture->name].push_back(
-            coordinate + " " + name + "(" + coordinate + " uv, " + offset + " o) { uint " + sizes + "; " +
-            texture->name + ".GetDimensions(" + sizes + "); return uv + " + step + "; }");
+        mAfterParameter[texture->name].push_back(std::string(shape.coordinate) + " " + name + "(" +
+                                                 shape.coordinate + " uv, " + shape.offset + " o) { uint " +
+                                                 shape.sizes + "; " + texture->name + ".GetDimensions(" +
+                                                 shape.sizes + "); return uv + " + shape.step + "; }");
     }
 
     template <typename Make>
@@ -374,6 +417,7 @@ private:
         if (mNeeded.insert(name).second) mHelpers.push_back(make());
     }
 
+    const std::string& mText;  // the preprocessed text the tokens' offsets are into
     const std::function<bool(const Token&)>& mIsTypeName;
     Effect& mEffect;
     std::set<std::string> mNeeded;
@@ -388,7 +432,7 @@ private:
 void legalizeFunctions(const std::vector<Token>& tokens, const std::string& text,
                        const std::vector<FunctionTokenRange>& ranges,
                        const std::function<bool(const Token&)>& isTypeName, Effect& effect) {
-    Legalizer legalizer(isTypeName, effect);
+    Legalizer legalizer(text, isTypeName, effect);
     std::set<std::string> written;
     for (const FunctionTokenRange& range : ranges) written.merge(legalizer.writtenUniforms({tokens, range}));
     for (const FunctionTokenRange& range : ranges) {

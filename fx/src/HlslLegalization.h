@@ -8,6 +8,8 @@
 //   - a shader function writing a uniform parameter G          -> every function works on a static copy
 //                                                                 initialized from G (each shader its own)
 //   - `T.Sample(S, uv, offset)`, the offset not constant        -> `T.Sample(S, fx_offset_uv_T(uv, offset))`
+//     (SampleLevel, SampleBias, SampleGrad, SampleCmp, SampleCmpLevelZero alike; `T.Load(location,
+//     offset)` -> `T.Load(fx_offset_texel_int3_int2(location, offset))`)
 //   - HLSL keywords used as names (`line`, `point`, `linear`)  -> `fx_line`, ...
 // The helpers the rewrites call are added to the effect as verbatim declarations. fxc gave no warning
 // for any of these (docs/legalization.md); the rewrites change no column before the first one on a line,

@@ -84,8 +84,10 @@ TEST(FxcFrontEnd, ImplicitConversionsGlslangRefuses) {
     EXPECT_NEAR(brightest[2], brightest[0] / 4.0, 8.0);
 }
 
-// A Sample offset from a loop (GLSL takes constant offsets only; the driver refused to link the pass) and
-// an `unsigned int` counter: the Shift columns left of the middle average red and green, none right of it.
+// Offsets from a loop in Sample, SampleLevel, SampleBias, SampleGrad, SampleCmp, SampleCmpLevelZero and
+// Load (GLSL takes constant offsets only; the driver refused to link the pass) and an `unsigned int`
+// counter: the Shift columns left of the middle average red and green, none right of it; a method whose
+// offset were lost would leave those columns nearer red.
 TEST(FxcFrontEnd, SampleOffsetsFromVariables) {
     LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/d3d10/variable_offsets.fx");
     ASSERT_TRUE(loaded.renderer);
@@ -103,7 +105,8 @@ TEST(FxcFrontEnd, SampleOffsetsFromVariables) {
         EXPECT_TRUE(mixed            ? isColour(x, 128, 128, 0)
                     : x < kWidth / 2 ? isColour(x, 255, 0, 0)
                                      : isColour(x, 0, 255, 0))
-            << "column " << x;
+            << "column " << x << ": " << int(frame.pixel(x, kHeight / 2)[0]) << ", "
+            << int(frame.pixel(x, kHeight / 2)[1]) << ", " << int(frame.pixel(x, kHeight / 2)[2]);
     }
 }
 

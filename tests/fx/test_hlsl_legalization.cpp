@@ -132,7 +132,8 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 }
 
 // GLSL takes constant texel offsets only (the driver refused to link `textureOffset` with a variable):
-// an offset from a variable is added to the coordinate in texels of the texture's size; a constant one,
+// an offset from a variable is added to the coordinate in texels of the texture's size (to Load's texel
+// location), moved next to the coordinate with the line breaks it spanned left in place; a constant one,
 // or one made of static consts, stays an offset.
 TEST(HlslLegalization, SampleOffsetsFromVariablesMoveTheCoordinate) {
     DiagnosticList diags;
@@ -145,6 +146,8 @@ float4 PS(float2 uv : TEXCOORD0) : SV_Target {
     for (int y = -1; y < 1; y++)
         for (int x = -1; x < 1; x++)
             c += Tex.Sample(Point, uv, int2(x, y)) + Volume.Sample(Point, uv.xyx, int3(x, y, 0));
+    c += Tex.SampleLevel(Point, uv, 0,
+                         int2(c.x, 0)) + Tex.Load(int3(uv, 0), int2(c.y, 0));
     return c;
 }
 float4 VS(float4 p : POSITION) : SV_Position { return p; }
@@ -156,6 +159,9 @@ technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
     EXPECT_TRUE(contains(ps, "Tex.Sample(Point, uv, int2(1, -1)) + Tex.Sample(Point, uv, kStep);")) << ps;
     EXPECT_TRUE(contains(ps, "c += Tex.Sample(Point, fx_offset_uv_Tex(uv, int2(x, y)))")) << ps;
     EXPECT_TRUE(contains(ps, "Volume.Sample(Point, fx_offset_uv_Volume(uv.xyx, int3(x, y, 0)))")) << ps;
+    EXPECT_TRUE(contains(ps, "Tex.SampleLevel(Point, fx_offset_uv_Tex(uv, int2(c.x, 0)), 0)")) << ps;
+    EXPECT_TRUE(contains(ps, "Tex.Load(fx_offset_texel_int3_int2(int3(uv, 0), int2(c.y, 0)))")) << ps;
+    EXPECT_EQ(std::count(ps.begin(), ps.end(), '\n'), 8) << ps;  // the function's lines, as written
     EXPECT_TRUE(compilesClean(effect));
 }
 
