@@ -68,5 +68,33 @@ TEST(D3d9Lowering, ArrayInputBoolLiteralArgumentAndStaticFromAFunction) {
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 179, 89, 51), kMinObjectPixels);
 }
 
+// The DirectX SDK's PRT samples' vertex shader: an array-typed input (`float4 Weights[1] : BLENDWEIGHT1`,
+// which the mesh does not have) before a `uniform bool` given a literal. glslang refused the entry point's
+// zeroing of the array as one cast (`(float4[1])0`: "cannot convert 'const int' to '4-component vector of
+// float'"), which read like a fault of the literal; each shader draws its colour only when its argument
+// is true.
+constexpr const char* kArrayInputBeforeBool = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+struct VsOut { float4 Position : POSITION; float4 Colour : COLOR0; };
+VsOut VS(float4 Position : POSITION, int Cluster : BLENDWEIGHT, float4 Weights[1] : BLENDWEIGHT1,
+         uniform bool Lit) {
+    VsOut o;
+    o.Position = mul(Position, WorldViewProj);
+    o.Colour = Lit ? float4(0.2, 0.6, 0.4 + 0 * (Weights[0].x + Cluster), 1) : float4(1, 0, 1, 1);
+    return o;
+}
+float4 PS(float4 Colour : COLOR0, uniform bool Lit) : COLOR { return Lit ? Colour : float4(1, 1, 0, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(true); PixelShader = compile ps_2_0 PS(true); } }
+)";
+
+TEST(D3d9Lowering, BoolLiteralArgumentAfterAnArrayInput) {
+    auto renderer = loadEffect(kArrayInputBeforeBool, false, "array_input_before_bool.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+}
+
 }  // namespace
 }  // namespace shadowfx::test
