@@ -66,32 +66,84 @@ std::optional<int> varyingLocation(const std::string& semantic) {
     return std::nullopt;
 }
 
+namespace {
+
+// The functions a pass or a shader variable compiles: as vertex shaders, and as any other stage.
+struct Entries {
+    std::set<std::string> vertex, other;
+};
+
+void collectEntries(const Expr& e, Entries& entries) {
+    if (e.kind == Expr::Kind::Compile)
+        (upperCase(e.profile).rfind("VS_", 0) == 0 ? entries.vertex : entries.other).insert(e.text);
+    for (const Expr& a : e.args) collectEntries(a, entries);
+}
+
+// The structs that only ever stand as a vertex shader's input (or a helper function's input, where
+// semantics mean nothing): a return type, an output, another stage's input or a member makes a struct's
+// semantics varyings as well.
+std::set<std::string> vertexInputOnlyStructs(const Effect& effect, const Entries& entries) {
+    std::set<std::string> inputs, elsewhere;
+    for (const StructDecl& s : effect.structs)
+        for (const StructMember& m : s.members)
+            if (m.type.base == BaseType::Struct) elsewhere.insert(m.type.structName);
+    for (const FunctionDecl& f : effect.functions) {
+        if (f.returnType.base == BaseType::Struct) elsewhere.insert(f.returnType.structName);
+        for (const FunctionParam& p : f.params) {
+            if (p.type.base != BaseType::Struct) continue;
+            if (p.direction != FunctionParam::Direction::In || entries.other.count(f.name))
+                elsewhere.insert(p.type.structName);
+            else if (entries.vertex.count(f.name))
+                inputs.insert(p.type.structName);
+        }
+    }
+    std::set<std::string> only;
+    std::set_difference(inputs.begin(), inputs.end(), elsewhere.begin(), elsewhere.end(),
+                        std::inserter(only, only.end()));
+    return only;
+}
+
+}  // namespace
+
 // D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR", the SDK's "TEXTURE0".."TEXTURE8").
 // Such names get the locations above the D3D9 table's (24..31), then the table's locations no semantic of
 // the effect uses, in the order of their sorted names over the whole effect, so that every stage of every
-// pass agrees. The names of vertex inputs count too (a struct may be both), which only costs locations.
+// pass agrees. An array or a matrix takes one name per element (`Points[16] : POINTS` is POINTS0..15).
+// A vertex shader's inputs are attributes, not varyings: a name that only ever stands there takes none.
 std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
+    Entries entries;
+    for (const Parameter& p : effect.parameters)
+        if (p.initializer) collectEntries(*p.initializer, entries);
+    for (const Technique& t : effect.techniques)
+        for (const Pass& pass : t.passes)
+            for (const StateAssignment& state : pass.states) collectEntries(state.value, entries);
+    const std::set<std::string> inputStructs = vertexInputOnlyStructs(effect, entries);
     std::set<std::string> names;
     std::set<int> tableUsed;
-    auto add = [&](const std::string& s, const TypeDesc& type) {
+    auto add = [&](const std::string& s, const TypeDesc& type, bool vertexInput) {
         const std::string c = canonicalSemantic(s);
         // A matrix or an array takes consecutive indices (gatherFields): every one of them is used.
         int span = type.shape == Shape::Matrix ? std::max(type.cols, 1) : 1;
         for (int d : type.arrayDims) span *= std::clamp(d, 1, 32);
+        span = std::min(span, 32);
         const auto [name, first] = splitSemantic(c);
-        for (int k = 0; k < std::min(span, 32); ++k)
+        for (int k = 0; k < span; ++k)
             if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
                 tableUsed.insert(*location);
-        if (!c.empty() && c.rfind("SV_", 0) != 0 && !varyingLocation(c) && c != "POSITION0" && c != "VPOS" &&
-            c != "VPOS0" && c != "VFACE" && c.rfind("PSIZE", 0) != 0 && c.rfind("DEPTH", 0) != 0 &&
-            !vertexInputLocation(c))
-            names.insert(splitSemantic(c).first + std::to_string(splitSemantic(c).second));
+        if (vertexInput || c.empty() || c.rfind("SV_", 0) == 0 || varyingLocation(c) || c == "POSITION0" ||
+            c == "VPOS" || c == "VPOS0" || c == "VFACE" || c.rfind("PSIZE", 0) == 0 ||
+            c.rfind("DEPTH", 0) == 0 || vertexInputLocation(c))
+            return;
+        for (int k = 0; k < span; ++k) names.insert(name + std::to_string(first + k));
     };
     for (const StructDecl& s : effect.structs)
-        for (const StructMember& m : s.members) add(m.semantic, m.type);
+        for (const StructMember& m : s.members) add(m.semantic, m.type, inputStructs.count(s.name) > 0);
     for (const FunctionDecl& f : effect.functions) {
-        add(f.returnSemantic, f.returnType);
-        for (const FunctionParam& p : f.params) add(p.semantic, p.type);
+        add(f.returnSemantic, f.returnType, false);
+        for (const FunctionParam& p : f.params)
+            add(p.semantic, p.type,
+                entries.vertex.count(f.name) && !entries.other.count(f.name) &&
+                    p.direction == FunctionParam::Direction::In);
     }
     const std::string key = splitSemantic(canonicalSemantic(semantic)).first +
                             std::to_string(splitSemantic(canonicalSemantic(semantic)).second);

@@ -24,7 +24,8 @@ std::optional<std::string> vertexInputDefault(const std::string& semantic);
 // D3D10 lets a varying carry any semantic name ("WORLDPOS", "LIGHTDIR", the SDK's "TEXTURE0".."TEXTURE8").
 // Such names get the locations above the D3D9 table's (24..31), then the table's locations no semantic of
 // the effect uses, in the order of their sorted names over the whole effect, so that every stage of every
-// pass agrees. The names of vertex inputs count too (a struct may be both), which only costs locations.
+// pass agrees. An array or a matrix takes one name per element; a name that only ever stands as a vertex
+// shader's input (an attribute) takes none.
 std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic);
 
 }  // namespace fx

@@ -110,6 +110,17 @@ TEST(FxcFrontEnd, SampleOffsetsFromVariables) {
     }
 }
 
+// `float4 Points[24] : POINTS` from the vertex to the pixel shader, each element its own varying, beside a
+// free-named vertex input array that takes no varying location: the objects are (0.25, 0.958, 0.5).
+TEST(FxcFrontEnd, VaryingArraysUnderOneFreeName) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/d3d10/varying_arrays.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    ASSERT_TRUE(render(*loaded.renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 64, 244, 128), 64 * 48 / 20);
+}
+
 // ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
 // warnings, and the pass (named `P0`, scripted `Pass=p0`) draws into the frame.
 TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {
