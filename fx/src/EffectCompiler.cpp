@@ -357,8 +357,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     passSamplerStates();
     // A file without techniques compiles, as under fxc and D3DX: an effect pool's shared parameters,
     // declarations for other effects. Only running it needs a technique (the runtime says so).
-    if (!found)
-        error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
+    if (!found) error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});
     if (mFailed) return nullptr;
     return std::move(mOut);
 }
