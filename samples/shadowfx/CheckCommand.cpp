@@ -982,6 +982,12 @@ int checkCommand(const Arguments& args) {
             ++matched;  // reported: --technique cannot be judged on an effect that does not parse
             continue;
         }
+        if (effect->techniques.empty()) {  // it compiles (an effect pool's parameters), but draws nothing
+            sink.report(fx::DiagId::NoTechniques, fx::SourceLoc{path, 1, 1});
+            checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail, sink.firstError(""));
+            ++matched;
+            continue;
+        }
         plan.carriesExpectations = std::filesystem::exists(plan.goldens);
         for (const fx::Technique& technique : effect->techniques)
             for (const fx::Annotation& a : technique.annotations)

@@ -302,6 +302,20 @@ TEST(CheckCommand, ABlankFrameFails) {
     EXPECT_NE(line.find("constant colour"), std::string::npos) << line;
 }
 
+// A file without techniques compiles (an effect pool's shared parameters), but there is nothing to
+// check: it fails at its first line, never a run of zero checks that passes.
+TEST(CheckCommand, AFileWithoutTechniquesFails) {
+    const shadowfx::test::ScratchDirectory scratch("check_no_techniques");
+    const std::string effect = scratch / "pool.fx";
+    std::ofstream(effect) << "shared float4 AmbientColor : AMBIENT = {0.1, 0.1, 0.1, 1};\n";
+    const RunResult result = run("check " + effect + " --backend egl");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("pool.fx:1:1: error: the file has no techniques"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("\n1 effect: 0 drawn, 0 blank, 1 failed\n"), std::string::npos)
+        << result.output;
+}
+
 TEST(CheckCommand, NanInARenderTargetFails) {
     // The shadow map is cleared to NaN; BlendOp=min keeps it, so the target holds NaN after the frame.
     const EffectCopy copy("nan", "> = {ZMaxValue, ZMaxValue, ZMaxValue, ZMaxValue};",
