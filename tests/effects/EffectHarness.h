@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowfx::test {
@@ -57,6 +58,26 @@ inline std::unique_ptr<runtime::EffectRenderer> loadEffect(const std::string& fi
     std::unique_ptr<runtime::EffectRenderer> renderer =
         runtime::EffectRenderer::create(compiled, diagnostics);
     if (!renderer) ADD_FAILURE() << "renderer creation failed:\n" << diagnostics.str();
+    return renderer;
+}
+
+// An effect file's renderer compiled with preprocessor definitions (`SHADOWFX_VISIBILITY`, a map size).
+// Fails the current test with the diagnostics on any error.
+inline std::unique_ptr<runtime::EffectRenderer> loadEffectWithDefines(
+    const std::string& path, const std::vector<std::pair<std::string, std::string>>& defines) {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    fx::ParseOptions options;
+    options.defines = defines;
+    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, diagnostics);
+    std::shared_ptr<fx::CompiledEffect> compiled =
+        effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
+    if (!compiled || diagnostics.hasErrors()) {
+        ADD_FAILURE() << path << " does not compile:\n" << diagnostics.str();
+        return nullptr;
+    }
+    auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
+    if (!renderer) ADD_FAILURE() << diagnostics.str();
     return renderer;
 }
 

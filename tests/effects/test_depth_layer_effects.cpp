@@ -36,25 +36,6 @@ namespace {
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 
-using Defines = std::vector<std::pair<std::string, std::string>>;
-
-std::unique_ptr<runtime::EffectRenderer> loadWithDefines(const std::string& path, const Defines& defines) {
-    sharedContext();
-    fx::DiagnosticList diagnostics;
-    fx::ParseOptions options;
-    options.defines = defines;
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, diagnostics);
-    std::shared_ptr<fx::CompiledEffect> compiled =
-        effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
-    if (!compiled || diagnostics.hasErrors()) {
-        ADD_FAILURE() << path << " does not compile:\n" << diagnostics.str();
-        return nullptr;
-    }
-    auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
-    if (!renderer) ADD_FAILURE() << diagnostics.str();
-    return renderer;
-}
-
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> items;
     std::stringstream stream(text);
@@ -107,7 +88,7 @@ TEST_P(DepthLayerConformance, MisclassifiedPixelsStayUnderTheTechniquesBound) {
     const Conformance& c = GetParam();
     const std::string path = sourcePath("effects/" + c.effect);
     // The annotations first (they are the same for every map size), then the variant the check renders.
-    auto probe = loadWithDefines(path, {});
+    auto probe = loadEffectWithDefines(path, {});
     ASSERT_TRUE(probe);
     const fx::CompiledTechnique* technique = probe->effect().findTechnique(c.technique);
     ASSERT_TRUE(technique);
@@ -122,7 +103,7 @@ TEST_P(DepthLayerConformance, MisclassifiedPixelsStayUnderTheTechniquesBound) {
     const int mapSizeTexels = mapSize->value.asInt();
     probe.reset();
 
-    auto renderer = loadWithDefines(
+    auto renderer = loadEffectWithDefines(
         path, {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSizeTexels)}});
     ASSERT_TRUE(renderer);
     for (const std::string& sceneName : scenes) {
@@ -181,8 +162,9 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(DepthLayerRanking, DualLayersWithCullingBeatMidpointAndConstantBiasOnDualL) {
     const SceneTruth& t = truthFor("dual-l");
     auto misclassified = [&](const std::string& effect, const std::string& technique) {
-        auto renderer = loadWithDefines(sourcePath("effects/" + effect),
-                                        {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "256"}});
+        auto renderer =
+            loadEffectWithDefines(sourcePath("effects/" + effect),
+                                  {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "256"}});
         EXPECT_TRUE(renderer && render(*renderer, t.scene, kWidth, kHeight, technique));
         if (!renderer) return 100.0;
         const std::vector<float> visibility = runtime::visibilityFromFrame(renderer->readFrame());
@@ -217,8 +199,8 @@ TEST(GrazingLight, NormalOffsetAndReceiverPlaneBiasKeepTheGroundFreeOfAcne) {
         shadowed += receivers[i] && truth.visibility[i] < runtime::kShadowedBelow;
     }
     ASSERT_GT(shadowed, receiverCount / 50);
-    auto renderer = loadWithDefines(sourcePath("effects/bias.fx"),
-                                    {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "1024"}});
+    auto renderer = loadEffectWithDefines(
+        sourcePath("effects/bias.fx"), {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "1024"}});
     ASSERT_TRUE(renderer);
     auto misclassified = [&](const std::string& technique) {
         EXPECT_TRUE(render(*renderer, grazing->scene, kWidth, kHeight, technique));
@@ -435,8 +417,8 @@ float dualDepth(float z1, float z2, float zOffset) {
 }
 
 TEST_F(DepthLayers, PeelingFindsTheTwoNearestLayersAndTheDualMapCombinesThem) {
-    auto renderer = loadWithDefines(sourcePath("effects/dual_depth.fx"),
-                                    {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
+    auto renderer = loadEffectWithDefines(sourcePath("effects/dual_depth.fx"),
+                                          {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
     ASSERT_TRUE(renderer);
     // An offset between the box's half thickness in light depth and the ground's distance to the far
     // plane, so that both arguments of min() win somewhere.
@@ -473,8 +455,8 @@ TEST_F(DepthLayers, PeelingFindsTheTwoNearestLayersAndTheDualMapCombinesThem) {
 }
 
 TEST_F(DepthLayers, MidpointMapIsTheMeanOfTheLayers) {
-    auto renderer = loadWithDefines(sourcePath("effects/midpoint.fx"),
-                                    {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
+    auto renderer = loadEffectWithDefines(sourcePath("effects/midpoint.fx"),
+                                          {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene, 64, 48, "peel"));
     expectLayer(readChannel(*renderer, "ShadowMap", 0), cpuMap([](auto& l) { return (l.z1 + l.z2) / 2.0f; }),
@@ -536,8 +518,8 @@ TEST_F(DepthLayers, CullClosedOnlyKeepsOpenObjectsInABackFacePass) {
 // [SECTION] ID buffer
 
 TEST_F(DepthLayers, IdMapHoldsTheNearestObjectsOneBasedId) {
-    auto renderer = loadWithDefines(sourcePath("effects/id_buffer.fx"),
-                                    {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
+    auto renderer = loadEffectWithDefines(sourcePath("effects/id_buffer.fx"),
+                                          {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene, 64, 48));
     const std::vector<float> ids = readChannel(*renderer, "IdMap", 0);

@@ -56,23 +56,6 @@ runtime::Scene postsBeforeAWall() {
     return scene;
 }
 
-std::unique_ptr<runtime::EffectRenderer> loadVisibility(const std::string& path) {
-    sharedContext();
-    fx::DiagnosticList diagnostics;
-    fx::ParseOptions options;
-    options.defines = {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "256"}};
-    std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, options, diagnostics);
-    std::shared_ptr<fx::CompiledEffect> compiled =
-        effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
-    if (!compiled || diagnostics.hasErrors()) {
-        ADD_FAILURE() << path << " does not compile:\n" << diagnostics.str();
-        return nullptr;
-    }
-    auto renderer = runtime::EffectRenderer::create(compiled, diagnostics);
-    if (!renderer) ADD_FAILURE() << diagnostics.str();
-    return renderer;
-}
-
 // Each effect's bound on fitted ÷ unfitted misclassified %, and the share of the truly shadowed receivers
 // its fitted frame must shadow (a blank or constant frame shadows none). Measured at 256², 320x240:
 // focused 3.75 % unfitted, 0.36 % fitted; cascades 0.85 %, 0.44 %; LiSPSM 4.19 %, 2.23 %, whose warp leaves
@@ -101,7 +84,9 @@ TEST_P(VisibleSampleFits, SpendTheMapOnWhatTheCameraSees) {
         shadowed += receivers[i] && truth.visibility[i] < runtime::kShadowedBelow;
     ASSERT_GT(shadowed, 2000u);  // posts' shadows on the ground and the wall
 
-    auto renderer = loadVisibility(sourcePath(std::string("effects/") + GetParam().effect));
+    auto renderer =
+        loadEffectWithDefines(sourcePath(std::string("effects/") + GetParam().effect),
+                              {{"SHADOWFX_VISIBILITY", "1"}, {"SHADOWFX_SHADOW_MAP_SIZE", "256"}});
     ASSERT_TRUE(renderer);
     auto measure = [&](const char* fit) {
         EXPECT_TRUE(renderer->setParameterFromText("FitVisible", fit, diagnostics)) << diagnostics.str();
