@@ -87,7 +87,7 @@ static_assert(sizeof(StorageBufferBinding) == 72);
 static_assert(sizeof(VertexInput) == 48);
 static_assert(sizeof(StageProgram) == 280);
 static_assert(sizeof(PreshaderProgram::Instruction) == 200);
-static_assert(sizeof(PreshaderProgram::Error) == 80);
+static_assert(sizeof(PreshaderProgram::Error) == 72);
 static_assert(sizeof(PreshaderProgram) == 96);
 static_assert(sizeof(CompileArgument) == 240);
 static_assert(sizeof(RenderStateSetting) == 160);
@@ -170,7 +170,7 @@ void fields(A& a, PreshaderProgram::Instruction& x) {
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Error& x) {
-    a(x.id, x.loc, x.text);
+    a(x.id, x.loc, x.args);
 }
 struct PreshaderProgramFields {
     template <class A>

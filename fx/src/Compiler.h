@@ -122,7 +122,7 @@ private:
     void drawAutoSource(const Pass& p, CompiledPass& pass);
     // After every stage compiled: each request's varyings named as the GLSL declares the outputs.
     void resolveStreamOutputs();
-    void unsupported(const SourceLoc& loc, const std::string& message);
+    void unsupported(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
 
     const Effect& mEffect;
     const CompileOptions& mOptions;
@@ -142,8 +142,9 @@ private:
     std::string mLastStreamType;
     std::vector<StreamOutRequest> mStreamOutRequests;
     bool mFailed = false;
-    // The diagnostics of the current technique's stages that the lowering could not express
-    // (UnsupportedFeature), held back until run() knows whether another technique can run.
+    // The diagnostics of the current technique's stages that the lowering could not express (a stage
+    // form or a stream output GL has no counterpart for), held back until run() knows whether another
+    // technique can run.
     std::vector<Diagnostic> mTechniqueUnsupported;
     std::vector<PendingStage> mPending;
     // The passes that set sampler-register states, by where they stand in mOut.

@@ -203,20 +203,16 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         }
     }
     if (hull && !domain) {
-        error(DiagId::UnsupportedFeature, hull->loc,
-              {"a hull shader needs a domain shader in the same pass (SetDomainShader)"});
+        error(DiagId::HullWithoutDomain, hull->loc, {});
     } else if (domain && !hull) {
-        error(DiagId::UnsupportedFeature, domain->loc,
-              {"a domain shader needs a hull shader in the same pass (SetHullShader)"});
+        error(DiagId::DomainWithoutHull, domain->loc, {});
     } else if (hull && domain) {
         const Expr* hullCompile = shaderExpr(*hull);
         if (hullCompile && compileStage(*hullCompile, ShaderStage::Hull, pass, slot))
             if (const Expr* domainCompile = shaderExpr(*domain))
                 compileStage(*domainCompile, ShaderStage::Domain, pass, slot);
         if (geometry && pass.primitive != CompiledPass::DrawPrimitive::Triangles)
-            error(DiagId::UnsupportedFeature, geometry->loc,
-                  {"a geometry shader after tessellation takes 'triangle' input: the domain shader outputs "
-                   "triangles"});
+            error(DiagId::GeometryAfterTessellationInput, geometry->loc, {});
     }
     // The vertex shader before the pixel shader, whose inputs it may leave unwritten; a pass drawing a
     // capture (DrawAuto) feeds it the capture's elements.

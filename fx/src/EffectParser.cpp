@@ -280,11 +280,8 @@ TypeDesc Parser::parseType() {
     if (isTemplatedObject(name.text)) {
         const bool readWrite = name.text.rfind("RW", 0) == 0 || name.text.rfind("Append", 0) == 0 ||
                                name.text.rfind("Consume", 0) == 0;
-        fail(DiagId::UnsupportedFeature, name.loc,
-             {"type '" + name.text + "' is not supported in effects: " +
-              (readWrite ? "read-write resources are bound by the application (FX11 sets unordered "
-                           "access views outside passes); a pass binds none"
-                         : "shadowfx creates no multisample array resources")});
+        fail(readWrite ? DiagId::ReadWriteResourceInEffect : DiagId::MultisampleArrayInEffect, name.loc,
+             {name.text});
     }
     fail(DiagId::UnknownType, name.loc, {name.text});
 }
@@ -348,9 +345,8 @@ void Parser::parseArrayDims(TypeDesc& type) {
         double elements = number;
         for (int dim : type.arrayDims) elements *= dim > 0 ? dim : 1;
         if (!(number >= 1 && elements <= kMaxArrayElements))
-            fail(DiagId::UnsupportedFeature, first.loc,
-                 {"array size " + size.str() + " is outside 1.." +
-                  std::to_string(static_cast<int>(kMaxArrayElements)) + " (all dimensions together)"});
+            fail(DiagId::ArraySizeOutOfRange, first.loc,
+                 {size.str(), std::to_string(static_cast<int>(kMaxArrayElements))});
         if (number != static_cast<double>(static_cast<int>(number)))  // `[2.5]` was truncated silently
             fail(DiagId::UnexpectedToken, first.loc, {"a whole array size", size.str()});
         type.arrayDims.push_back(static_cast<int>(number));

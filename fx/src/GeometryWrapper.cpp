@@ -17,8 +17,7 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
     const StructDecl* decl =
         stream.type.base == BaseType::Struct ? mEffect.findStruct(stream.type.structName) : nullptr;
     if (!decl || !stream.type.arrayDims.empty())
-        return fail(DiagId::UnsupportedFeature, stream.loc,
-                    {"the element of geometry shader stream '" + stream.name + "' must be a struct"});
+        return fail(DiagId::GeometryStreamElementNotStruct, stream.loc, {stream.name});
     mStreamStruct = decl->name;
     // A captured and not rasterized stream keeps its POSITION as a varying (transform feedback captures
     // it by name, and a float3 one would not fit gl_Position), at the first location no other member takes.
@@ -39,9 +38,7 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
     for (const StructMember& m : decl->members) {
         const std::string semantic = canonicalSemantic(m.semantic);
         if (m.type.base == BaseType::Struct || !m.type.arrayDims.empty() || m.type.shape == Shape::Matrix)
-            return fail(DiagId::UnsupportedFeature, m.loc,
-                        {"geometry shader output '" + m.name +
-                         "' must be a scalar or a vector (structs, arrays and matrices are not supported)"});
+            return fail(DiagId::GeometryOutputNotVector, m.loc, {m.name});
         std::string declared = hlslTypeName(m.type) + " " + m.name;
         const bool positionVarying = semantic == "POSITION0" && mPositionVarying >= 0;
         if (!positionVarying && (semantic == "POSITION0" || semantic == "SV_POSITION")) {
@@ -57,17 +54,14 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
                                                   ? "nointerpolation"
                                                   : m.interpolation;
             if (integer && interpolation.empty())
-                return fail(
-                    DiagId::UnsupportedFeature, m.loc,
-                    {"geometry shader output '" + m.name + "' of an integer type must be 'nointerpolation'"});
+                return fail(DiagId::GeometryIntegerOutputInterpolated, m.loc, {m.name});
             const std::string at = std::to_string(*location);
             members += "    [[vk::location(" + at + ")]] " +
                        (interpolation.empty() ? std::string() : interpolation + " ") + declared + " : FX_V" +
                        at + ";\n";
             mVaryingOutputs[*location] = m.type;
         } else {
-            return fail(DiagId::UnsupportedFeature, m.loc,
-                        {"geometry shader output semantic '" + m.semantic + "' is not supported"});
+            return fail(DiagId::GeometryOutputSemanticUnsupported, m.loc, {m.semantic});
         }
     }
     mStreamStructText = "struct " + decl->name + "\n{\n" + members + "};\n";
@@ -78,9 +72,7 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
 // The wrapper is a geometry shader of the same primitive and vertex count that rebuilds `input` from the
 // vertex stage's SV_Position and float4 varyings and passes its own stream through.
 bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
-    if (mFn.maxVertexCount <= 0)
-        return fail(DiagId::UnsupportedFeature, mFn.loc,
-                    {"geometry shader '" + mFn.name + "' has no [maxvertexcount(n)] attribute"});
+    if (mFn.maxVertexCount <= 0) return fail(DiagId::GeometryMaxVertexCountMissing, mFn.loc, {mFn.name});
     const FunctionParam* input = nullptr;
     const FunctionParam* stream = nullptr;
     std::string params, locals, body, callArgs;
@@ -92,34 +84,23 @@ bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
         if (p.isUniform) {
             if (!uniformArgument(p, uniformIndex++, arg, globals)) return false;
         } else if (!p.stream.empty()) {
-            if (stream)
-                return fail(DiagId::UnsupportedFeature, p.loc,
-                            {"geometry shader '" + mFn.name + "' has more than one output stream"});
+            if (stream) return fail(DiagId::GeometryStreamRepeated, p.loc, {mFn.name});
             stream = &p;
             arg = "fx_stream";
         } else if (!p.primitive.empty()) {
-            if (input)
-                return fail(DiagId::UnsupportedFeature, p.loc,
-                            {"geometry shader '" + mFn.name + "' has more than one input primitive"});
+            if (input) return fail(DiagId::GeometryInputPrimitiveRepeated, p.loc, {mFn.name});
             input = &p;
             arg = "fx_p" + std::to_string(i);
         } else if (canonicalSemantic(p.semantic) == "SV_PRIMITIVEID") {
             primitiveId = true;
             arg = "(" + hlslTypeName(p.type) + ")fx_primitiveId";
         } else {
-            return fail(DiagId::UnsupportedFeature, p.loc,
-                        {"geometry shader parameter '" + p.name +
-                         "' is not supported (expected the input primitive, the output stream, "
-                         "SV_PrimitiveID or a uniform)"});
+            return fail(DiagId::GeometryParameterUnsupported, p.loc, {p.name});
         }
         callArgs += (i ? ", " : "") + arg;
     }
     if (!everyArgumentTaken(uniformIndex)) return false;
-    if (!input || !stream)
-        return fail(DiagId::UnsupportedFeature, mFn.loc,
-                    {"geometry shader '" + mFn.name +
-                     "' needs an input primitive ('triangle T input[3]') and an output stream "
-                     "('inout TriangleStream<T> stream')"});
+    if (!input || !stream) return fail(DiagId::GeometryInputOrStreamMissing, mFn.loc, {mFn.name});
     // What the pass's draws give each primitive: a mesh's triangles, its vertices, its edges or its
     // triangles with their neighbours (GpuMesh builds the edge and adjacency lists).
     using Primitive = CompiledPass::DrawPrimitive;
@@ -128,25 +109,17 @@ bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
         {"line", {2, Primitive::Lines}},
         {"triangle", {3, Primitive::Triangles}},
         {"triangleadj", {6, Primitive::TrianglesAdjacency}}};
-    if (input->primitive == "lineadj")
-        return fail(
-            DiagId::UnsupportedFeature, input->loc,
-            {"geometry shader input primitive 'lineadj' is not supported: a mesh's triangles define no "
-             "line strips, so an edge has no single continuation at either end"});
+    if (input->primitive == "lineadj") return fail(DiagId::GeometryLineAdjacencyInput, input->loc, {});
     const auto kind = kInputs.find(input->primitive);
     if (kind == kInputs.end())
-        return fail(DiagId::UnsupportedFeature, input->loc,
-                    {"geometry shader input primitive '" + input->primitive + "' is not supported"});
+        return fail(DiagId::GeometryInputPrimitiveUnsupported, input->loc, {input->primitive});
     const int count = kind->second.first;
     mPrimitive = kind->second.second;
     if (input->type.arrayDims.size() != 1 || input->type.arrayDims[0] != count)
-        return fail(
-            DiagId::UnsupportedFeature, input->loc,
-            {"geometry shader input '" + input->name + "' must be an array of " + std::to_string(count) +
-             " vertices ('" + input->primitive + " T " + input->name + "[" + std::to_string(count) + "]')"});
+        return fail(DiagId::GeometryInputArraySize, input->loc,
+                    {input->name, std::to_string(count), input->primitive});
     if (stream->direction != FunctionParam::Direction::InOut)
-        return fail(DiagId::UnsupportedFeature, stream->loc,
-                    {"geometry shader stream '" + stream->name + "' must be 'inout'"});
+        return fail(DiagId::GeometryStreamNotInout, stream->loc, {stream->name});
     mStreamType = stream->stream;
     if (!streamElement(*stream)) return false;
 
@@ -171,8 +144,7 @@ bool WrapperBuilder::buildGeometry(std::string& globals, std::string& wrapper) {
                 varyings.insert(*location);
                 body += assignField(f, from + "fx_v" + std::to_string(*location));
             } else {
-                return fail(DiagId::UnsupportedFeature, f.loc,
-                            {"geometry shader input semantic '" + f.semantic + "' is not supported"});
+                return fail(DiagId::GeometryInputSemanticUnsupported, f.loc, {f.semantic});
             }
         }
     }

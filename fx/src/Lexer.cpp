@@ -342,9 +342,7 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
         // A token costs ~200 bytes with its location: without a bound, 16 MB of `+1+1...` (within
         // ParseOptions::maxSourceBytes) took over 4 GB. Real effects have a few thousand tokens.
         if (tokens.size() > kMaxTokens) {
-            diagnostics.report(DiagId::UnsupportedFeature, tokens.back().loc,
-                               {"effect too large: more than " + std::to_string(kMaxTokens) +
-                                " tokens after preprocessing"});
+            diagnostics.report(DiagId::TooManyTokens, tokens.back().loc, {std::to_string(kMaxTokens)});
             break;
         }
     }

@@ -43,9 +43,7 @@ void Parser::parseTopLevel() {
         return;
     }
     if (token.text == "interface" || token.text == "class")
-        fail(DiagId::UnsupportedFeature, token.loc,
-             {"dynamic shader linkage ('" + token.text +
-              "') is not supported: GLSL has no interfaces or classes to bind at run time"});
+        fail(DiagId::DynamicShaderLinkage, token.loc, {token.text});
     if (token.text == "struct") {
         parseStruct();
         return;
@@ -261,9 +259,7 @@ void Parser::parseDeclaration(bool inBuffer) {
         if (parameter.type.isSampler() && check("{")) {
             parameter.samplerState = parseSamplerStateBlock();  // D3D10: SamplerState s { ... };
         } else if (parameter.type.isStateObject()) {
-            if (!parameter.type.arrayDims.empty())
-                fail(DiagId::UnsupportedFeature, parameter.loc,
-                     {"arrays of state objects are not supported"});
+            if (!parameter.type.arrayDims.empty()) fail(DiagId::StateObjectArray, parameter.loc, {});
             if (check("{"))
                 parameter.objectState =
                     parseObjectStateBlock(StateAssignments::objectKind(parameter.type.base));

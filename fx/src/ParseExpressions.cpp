@@ -56,9 +56,7 @@ Expr Parser::parseBinary(int minPrecedence) {
         int precedence = binaryPrecedence(peek());
         if (precedence < 0 || precedence < minPrecedence) break;
         if (++chain + mDepth > kMaxDepth)
-            fail(DiagId::UnsupportedFeature, peek().loc,
-                 {"expression too complex (more than " + std::to_string(kMaxDepth) +
-                  " nested or chained operators)"});
+            fail(DiagId::ExpressionTooComplex, peek().loc, {std::to_string(kMaxDepth)});
         const Token& op = advance();
         DepthGuard guard(*this);
         Expr right = parseBinary(precedence + 1);

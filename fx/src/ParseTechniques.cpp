@@ -172,7 +172,7 @@ void Parser::parsePassState(Pass& pass) {
         expect("]");
     }
     expect("=");
-    if (check("asm")) fail(DiagId::UnsupportedFeature, peek().loc, {"asm shaders are not supported"});
+    if (check("asm")) fail(DiagId::AsmShader, peek().loc, {});
     state.value = parseExpr();
     mStates.normalizeCompileShader(state.value);
     mStates.normalizeNull(state.value);

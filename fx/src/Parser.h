@@ -74,8 +74,7 @@ private:
         explicit DepthGuard(Parser& p) : parser(p) {
             if (++parser.mDepth > kMaxDepth) {
                 --parser.mDepth;
-                parser.fail(DiagId::UnsupportedFeature, parser.peek().loc,
-                            {"nesting deeper than " + std::to_string(kMaxDepth) + " levels"});
+                parser.fail(DiagId::NestingTooDeep, parser.peek().loc, {std::to_string(kMaxDepth)});
             }
         }
         ~DepthGuard() { --parser.mDepth; }

@@ -149,15 +149,13 @@ std::optional<TypeDesc> parseTypeName(std::string_view name) {
 
 std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, const SourceLoc& loc) {
     if (target.base == BaseType::String) {
-        if (v.type.base != BaseType::String) return fail(DiagId::TypeMismatch, loc, "expected a string");
+        if (v.type.base != BaseType::String) return fail(DiagId::ExpectedString, loc);
         Value out = v;
         out.type = target;
         return out;
     }
-    if (!isNumericBase(target.base))
-        return fail(DiagId::TypeMismatch, loc, "cannot evaluate a " + target.hlslName());
-    if (v.type.base == BaseType::String)
-        return fail(DiagId::TypeMismatch, loc, "expected a number, found a string");
+    if (!isNumericBase(target.base)) return fail(DiagId::CannotEvaluateType, loc, {target.hlslName()});
+    if (v.type.base == BaseType::String) return fail(DiagId::ExpectedNumber, loc);
     size_t want = componentCount(target);
     std::vector<float> out;
     if (v.data.size() == 1) {
@@ -166,17 +164,15 @@ std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, 
                v.type.arrayDims.empty()) {
         // Matrix truncation keeps the upper-left block, as HLSL does.
         if (target.rows > v.type.rows || target.cols > v.type.cols)
-            return fail(DiagId::TypeMismatch, loc,
-                        "cannot convert " + v.type.hlslName() + " to " + target.hlslName());
+            return fail(DiagId::CannotConvertType, loc, {v.type.hlslName(), target.hlslName()});
         for (int r = 0; r < target.rows; ++r)
             for (int c = 0; c < target.cols; ++c)
                 out.push_back(v.data[static_cast<size_t>(r * v.type.cols + c)]);
     } else if (v.data.size() >= want) {
         out.assign(v.data.begin(), v.data.begin() + static_cast<std::ptrdiff_t>(want));
     } else {
-        return fail(DiagId::TypeMismatch, loc,
-                    "cannot convert " + std::to_string(v.data.size()) + " components to " +
-                        target.hlslName() + " (" + std::to_string(want) + " components)");
+        return fail(DiagId::ComponentCountMismatch, loc,
+                    {std::to_string(v.data.size()), target.hlslName(), std::to_string(want)});
     }
     for (float& x : out) x = normalizeComponent(target.base, x);
     return makeValue(target, std::move(out));
@@ -210,15 +206,14 @@ bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
         a.type.cols = b.type.cols = n;
         return true;
     }
-    fail(DiagId::TypeMismatch, loc,
-         "operands " + a.type.hlslName() + " and " + b.type.hlslName() + " do not match");
+    fail(DiagId::OperandsMismatch, loc, {a.type.hlslName(), b.type.hlslName()});
     return false;
 }
 
 // [SECTION] Operators
 
 std::optional<Value> Evaluator::unary(Operator op, Value a, const SourceLoc& loc) {
-    if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, "operator on a string");
+    if (a.type.base == BaseType::String) return fail(DiagId::UnaryOperatorOnString, loc);
     for (float& x : a.data) {
         switch (op) {
             case Operator::Negate:
@@ -246,7 +241,7 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
     if (a->type.base == BaseType::String || b->type.base == BaseType::String) {
         if (op == Operator::Equal || op == Operator::NotEqual)
             return Value::boolean((a->string == b->string) == (op == Operator::Equal));
-        return fail(DiagId::TypeMismatch, loc, "operator '" + spelling + "' on a string");
+        return fail(DiagId::BinaryOperatorOnString, loc, {spelling});
     }
     if (!broadcast(*a, *b, loc)) return std::nullopt;
     bool logical = op == Operator::LogicalAnd || op == Operator::LogicalOr;
@@ -277,7 +272,7 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
                 break;
             case Operator::Divide:
                 if (integer) {
-                    if (iy == 0) return fail(DiagId::TypeMismatch, loc, "integer division by zero");
+                    if (iy == 0) return fail(DiagId::IntegerDivisionByZero, loc);
                     r = static_cast<float>(ix / iy);
                 } else {
                     r = x / y;
@@ -285,7 +280,7 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
                 break;
             case Operator::Modulo:
                 if (integer) {
-                    if (iy == 0) return fail(DiagId::TypeMismatch, loc, "integer modulo by zero");
+                    if (iy == 0) return fail(DiagId::IntegerModuloByZero, loc);
                     r = static_cast<float>(ix % iy);
                 } else {
                     r = std::fmod(x, y);
@@ -331,8 +326,7 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
                 r = static_cast<float>(ix >> iy);
                 break;
             default:
-                return fail(DiagId::UnsupportedFeature, loc,
-                            "operator '" + spelling + "' cannot be evaluated on the host");
+                return fail(DiagId::OperatorNotHostEvaluable, loc, {spelling});
         }
         out[i] = normalizeComponent(type.base, r);
     }
@@ -342,8 +336,7 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
 // A vector condition selects per component; a scalar one is handled by the program (it picks a branch).
 std::optional<Value> Evaluator::select(const Value& c, Value a, Value b, const SourceLoc& loc) {
     if (!broadcast(a, b, loc)) return std::nullopt;
-    if (c.data.size() != a.data.size())
-        return fail(DiagId::TypeMismatch, loc, "condition size does not match");
+    if (c.data.size() != a.data.size()) return fail(DiagId::ConditionSizeMismatch, loc);
     for (size_t i = 0; i < a.data.size(); ++i)
         if (c.data[i] == 0.0f) a.data[i] = b.data[i];
     return a;
@@ -358,7 +351,7 @@ std::optional<Value> Evaluator::member(const std::string& m, const Value& baseVa
         // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
         size_t i = 0;
         while (i < m.size()) {
-            if (m[i] != '_') return fail(DiagId::TypeMismatch, loc, "invalid matrix member '" + m + "'");
+            if (m[i] != '_') return fail(DiagId::InvalidMatrixMember, loc, {m});
             ++i;
             int offset = 1;
             if (i < m.size() && m[i] == 'm') {
@@ -367,15 +360,15 @@ std::optional<Value> Evaluator::member(const std::string& m, const Value& baseVa
             }
             if (i + 2 > m.size() || !std::isdigit(static_cast<unsigned char>(m[i])) ||
                 !std::isdigit(static_cast<unsigned char>(m[i + 1])))
-                return fail(DiagId::TypeMismatch, loc, "invalid matrix member '" + m + "'");
+                return fail(DiagId::InvalidMatrixMember, loc, {m});
             int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
             i += 2;
             if (r < 0 || c < 0 || r >= base->type.rows || c >= base->type.cols)
-                return fail(DiagId::TypeMismatch, loc, "matrix member '" + m + "' out of range");
+                return fail(DiagId::MatrixMemberOutOfRange, loc, {m});
             out.push_back(base->data[static_cast<size_t>(r * base->type.cols + c)]);
         }
     } else {
-        if (m.empty() || m.size() > 4) return fail(DiagId::TypeMismatch, loc, "invalid swizzle '" + m + "'");
+        if (m.empty() || m.size() > 4) return fail(DiagId::InvalidSwizzle, loc, {m});
         for (char ch : m) {
             const char* xyzw = "xyzw";
             const char* rgba = "rgba";
@@ -384,8 +377,7 @@ std::optional<Value> Evaluator::member(const std::string& m, const Value& baseVa
             if (idx < 0 && (p = std::strchr(rgba, ch))) idx = static_cast<int>(p - rgba);
             int avail = base->type.shape == Shape::Scalar ? 1 : base->type.cols;
             if (idx < 0 || ch == '\0' || idx >= avail)
-                return fail(DiagId::TypeMismatch, loc,
-                            "invalid swizzle '" + m + "' on " + base->type.hlslName());
+                return fail(DiagId::InvalidSwizzleOnType, loc, {m, base->type.hlslName()});
             out.push_back(base->data[static_cast<size_t>(idx)]);
         }
     }
@@ -400,18 +392,17 @@ std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, 
     if (!elem.arrayDims.empty()) {
         elem.arrayDims.erase(elem.arrayDims.begin());
         stride = componentCount(elem);
-        if (i < 0 || i >= base->type.arrayDims[0])
-            return fail(DiagId::TypeMismatch, loc, "index out of range");
+        if (i < 0 || i >= base->type.arrayDims[0]) return fail(DiagId::IndexOutOfRange, loc);
     } else if (elem.shape == Shape::Matrix) {
         // m[i] is row i, as in HLSL.
-        if (i < 0 || i >= elem.rows) return fail(DiagId::TypeMismatch, loc, "matrix row index out of range");
+        if (i < 0 || i >= elem.rows) return fail(DiagId::MatrixRowIndexOutOfRange, loc);
         elem = vectorType(elem.base, elem.cols);
         stride = static_cast<size_t>(elem.cols);
     } else if (elem.shape == Shape::Vector) {
-        if (i < 0 || i >= elem.cols) return fail(DiagId::TypeMismatch, loc, "vector index out of range");
+        if (i < 0 || i >= elem.cols) return fail(DiagId::VectorIndexOutOfRange, loc);
         elem = vectorType(elem.base, 1);
     } else {
-        return fail(DiagId::TypeMismatch, loc, "cannot index a scalar");
+        return fail(DiagId::ScalarIndexed, loc);
     }
     auto begin = base->data.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(i) * stride);
     return makeValue(elem, std::vector<float>(begin, begin + static_cast<std::ptrdiff_t>(stride)));
@@ -483,7 +474,7 @@ std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
                 if (in.operand < slots.size()) {
                     stack.push_back({slots[in.operand], -1});
                 } else {
-                    errors.push_back({DiagId::UnknownIdentifier, in.loc, in.text});
+                    errors.push_back({DiagId::UnknownIdentifier, in.loc, {in.text}});
                     stack.push_back({Value{}, static_cast<int>(errors.size() - 1)});
                 }
                 break;
@@ -555,7 +546,7 @@ std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
     if (stack.back().error >= 0) {
         if (diagnostics) {
             const Error& error = errors[static_cast<size_t>(stack.back().error)];
-            diagnostics->report(error.id, error.loc, {error.text});
+            diagnostics->report(error.id, error.loc, error.args);
         }
         return std::nullopt;
     }

@@ -44,7 +44,7 @@ public:
                 }
                 const std::optional<size_t> slot = mSlotOf ? mSlotOf(e.text) : std::nullopt;
                 if (!slot) {
-                    fail(DiagId::UnknownIdentifier, e.loc, e.text);
+                    fail(DiagId::UnknownIdentifier, e.loc, {e.text});
                     return;
                 }
                 emit(Op::Load, e.loc).operand = static_cast<uint32_t>(*slot);
@@ -95,7 +95,7 @@ public:
                 return;
             case Expr::Kind::TextureRef:
             case Expr::Kind::Compile:
-                fail(DiagId::UnsupportedFeature, e.loc, "'" + e.str() + "' is not a value");
+                fail(DiagId::NotAValue, e.loc, {e.str()});
                 return;
         }
     }
@@ -136,10 +136,10 @@ private:
             static_cast<uint32_t>(mProgram.mConstants.size());
         mProgram.mConstants.push_back(std::move(value));
     }
-    void fail(DiagId id, const SourceLoc& loc, const std::string& text) {
+    void fail(DiagId id, const SourceLoc& loc, std::vector<std::string> args) {
         emit(PreshaderProgram::Instruction::Op::Fail, loc).operand =
             static_cast<uint32_t>(mProgram.mErrors.size());
-        mProgram.mErrors.push_back({id, loc, text});
+        mProgram.mErrors.push_back({id, loc, std::move(args)});
     }
 
     const SlotResolver& mSlotOf;

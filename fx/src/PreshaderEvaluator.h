@@ -52,15 +52,15 @@ public:
     const PreshaderProgram::Error& error() const { return mError; }
 
 private:
-    std::nullopt_t fail(DiagId id, const SourceLoc& loc, const std::string& text) {
-        mError = {id, loc, text};
+    std::nullopt_t fail(DiagId id, const SourceLoc& loc, std::vector<std::string> args = {}) {
+        mError = {id, loc, std::move(args)};
         return std::nullopt;
     }
 
     // Brings two operands to a common shape (scalar broadcast, or truncation to the smaller vector).
     bool broadcast(Value& a, Value& b, const SourceLoc& loc);
 
-    PreshaderProgram::Error mError{DiagId::TypeMismatch, {}, ""};
+    PreshaderProgram::Error mError{DiagId::CannotEvaluateType, {}, {}};
 };
 
 }  // namespace fx::detail

@@ -46,11 +46,11 @@ std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<V
                                           const SourceLoc& loc) {
     auto need = [&](size_t n) -> bool {
         if (args.size() == n) return true;
-        fail(DiagId::TypeMismatch, loc, name + "() takes " + std::to_string(n) + " argument(s)");
+        fail(DiagId::IntrinsicArgumentCount, loc, {name, std::to_string(n)});
         return false;
     };
     for (const Value& a : args)
-        if (a.type.base == BaseType::String) return fail(DiagId::TypeMismatch, loc, name + "() of a string");
+        if (a.type.base == BaseType::String) return fail(DiagId::IntrinsicOfString, loc, {name});
     auto floatResult = [](Value v) {
         if (!(v.type.base == BaseType::Half || v.type.base == BaseType::Double))
             v.type.base = BaseType::Float;
@@ -156,8 +156,7 @@ std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<V
     }
     if (name == "cross") {
         if (!need(2)) return std::nullopt;
-        if (args[0].data.size() != 3 || args[1].data.size() != 3)
-            return fail(DiagId::TypeMismatch, loc, "cross() takes two float3");
+        if (args[0].data.size() != 3 || args[1].data.size() != 3) return fail(DiagId::CrossArguments, loc);
         const auto& a = args[0].data;
         const auto& b = args[1].data;
         return Value::vector(
@@ -180,10 +179,10 @@ std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<V
         const Value& m = args[0];
         int n = m.type.rows;
         if (m.type.shape != Shape::Matrix || m.type.rows != m.type.cols)
-            return fail(DiagId::TypeMismatch, loc, name + "() takes a square matrix");
+            return fail(DiagId::MatrixNotSquare, loc, {name});
         float det = determinantOf(m.data, n);
         if (name == "determinant") return Value::scalar(det);
-        if (det == 0.0f) return fail(DiagId::TypeMismatch, loc, "inverse() of a singular matrix");
+        if (det == 0.0f) return fail(DiagId::SingularMatrixInverse, loc);
         return makeValue(m.type, inverseOf(m.data, n, det));
     }
     if (name == "mul") {
@@ -200,9 +199,7 @@ std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<V
         // A vector is a 1xN row on the left and an Nx1 column on the right.
         int ar = am ? a.type.rows : 1, ac = am ? a.type.cols : a.type.cols;
         int br = bm ? b.type.rows : b.type.cols, bc = bm ? b.type.cols : 1;
-        if (ac != br)
-            return fail(DiagId::TypeMismatch, loc,
-                        "mul(" + a.type.hlslName() + ", " + b.type.hlslName() + "): inner dimensions differ");
+        if (ac != br) return fail(DiagId::MulDimensionMismatch, loc, {a.type.hlslName(), b.type.hlslName()});
         std::vector<float> out(static_cast<size_t>(ar * bc), 0.0f);
         for (int r = 0; r < ar; ++r)
             for (int c = 0; c < bc; ++c)
@@ -212,7 +209,7 @@ std::optional<Value> Evaluator::intrinsic(const std::string& name, std::vector<V
         if (am && bm) return makeValue(makeType(BaseType::Float, Shape::Matrix, ar, bc), std::move(out));
         return makeValue(vectorType(BaseType::Float, static_cast<int>(out.size())), std::move(out));
     }
-    return fail(DiagId::UnsupportedFeature, loc, "function '" + name + "' cannot be evaluated on the host");
+    return fail(DiagId::FunctionNotHostEvaluable, loc, {name});
 }
 
 // A constructor: the arguments' components in order, or one scalar broadcast.
@@ -223,9 +220,8 @@ std::optional<Value> Evaluator::construct(const TypeDesc& type, const std::vecto
     size_t want = componentCount(type);
     if (flat.size() == 1) flat.assign(want, flat[0]);
     if (flat.size() != want)
-        return fail(DiagId::TypeMismatch, loc,
-                    type.hlslName() + " constructor needs " + std::to_string(want) + " components, got " +
-                        std::to_string(flat.size()));
+        return fail(DiagId::ConstructorComponentCount, loc,
+                    {type.hlslName(), std::to_string(want), std::to_string(flat.size())});
     for (float& x : flat) x = normalizeComponent(type.base, x);
     return makeValue(type, std::move(flat));
 }
@@ -233,8 +229,7 @@ std::optional<Value> Evaluator::construct(const TypeDesc& type, const std::vecto
 std::optional<Value> Evaluator::initList(const std::vector<Value>& args, const SourceLoc& loc) {
     std::vector<float> flat;
     for (const Value& v : args) {
-        if (v.type.base == BaseType::String)
-            return fail(DiagId::TypeMismatch, loc, "string in an initializer list");
+        if (v.type.base == BaseType::String) return fail(DiagId::StringInInitializerList, loc);
         flat.insert(flat.end(), v.data.begin(), v.data.end());
     }
     return makeValue(vectorType(BaseType::Float, static_cast<int>(flat.size())), std::move(flat));

@@ -149,16 +149,11 @@ void Compiler::textures() {
                            t.type == BaseType::TextureCubeArray;
         if (array && (t.kind == TextureDesc::Kind::RenderColorTarget ||
                       t.kind == TextureDesc::Kind::RenderDepthStencilTarget))
-            error(DiagId::UnsupportedFeature, p.loc,
-                  {"texture array '" + p.name +
-                   "' cannot be a render target: a pass's RenderColorTarget has no way to choose the "
-                   "element it renders into"});
+            error(DiagId::TextureArrayRenderTarget, p.loc, {p.name});
         if (t.type == BaseType::Texture2DMS && t.samples == 0) {
             if (t.kind == TextureDesc::Kind::RenderColorTarget ||
                 t.kind == TextureDesc::Kind::RenderDepthStencilTarget)
-                error(DiagId::TypeMismatch, p.loc,
-                      {"Texture2DMS '" + p.name +
-                       "': a multisample render target needs its sample count (Texture2DMS<float4, 4>)"});
+                error(DiagId::MultisampleTargetWithoutSampleCount, p.loc, {p.name});
             t.samples = 1;
         }
         mOut->textures.push_back(std::move(t));
@@ -196,9 +191,7 @@ void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
         !count.empty() && count.size() <= 2 && count.find_first_not_of("0123456789") == std::string::npos;
     const int n = digits ? std::atoi(count.c_str()) : 0;
     if (n < 1 || n > 32)
-        error(DiagId::TypeMismatch, p.loc,
-              {"Texture2DMS '" + p.name +
-               "': its sample count must be the second template argument, 1..32 (Texture2DMS<float4, 4>)"});
+        error(DiagId::MultisampleSampleCountInvalid, p.loc, {p.name});
     else
         t.samples = static_cast<int>(n);
 }

@@ -18,6 +18,55 @@ StageProgram& stageProgram(CompiledPass& pass, ShaderStage stage) {
                                             : pass.domain;
 }
 
+// What the stage wrappers report for a stage form shadowfx has no GL counterpart for (a semantic, a
+// parameter, a tessellation or geometry shape): it refuses the technique, where another error fails the
+// effect.
+bool isUnsupportedStageForm(DiagId id) {
+    switch (id) {
+        case DiagId::VertexInputNestedTooDeeply:
+        case DiagId::PixelInputSemanticUnsupported:
+        case DiagId::VertexOutputSemanticUnsupported:
+        case DiagId::PixelOutputSemanticUnsupported:
+        case DiagId::GeometryStreamElementNotStruct:
+        case DiagId::GeometryOutputNotVector:
+        case DiagId::GeometryIntegerOutputInterpolated:
+        case DiagId::GeometryOutputSemanticUnsupported:
+        case DiagId::GeometryMaxVertexCountMissing:
+        case DiagId::GeometryStreamRepeated:
+        case DiagId::GeometryInputPrimitiveRepeated:
+        case DiagId::GeometryParameterUnsupported:
+        case DiagId::GeometryInputOrStreamMissing:
+        case DiagId::GeometryLineAdjacencyInput:
+        case DiagId::GeometryInputPrimitiveUnsupported:
+        case DiagId::GeometryInputArraySize:
+        case DiagId::GeometryStreamNotInout:
+        case DiagId::GeometryInputSemanticUnsupported:
+        case DiagId::ControlPointSemanticUnsupported:
+        case DiagId::PatchConstantsNotStruct:
+        case DiagId::PatchConstantSemanticRepeated:
+        case DiagId::PatchConstantSemanticUnsupported:
+        case DiagId::PatchConstantsWithoutTessFactor:
+        case DiagId::HullAttributeMissing:
+        case DiagId::PatchConstantFunctionUndefined:
+        case DiagId::OutputControlPointsInvalid:
+        case DiagId::HullParameterUnsupported:
+        case DiagId::HullInputPatchMissing:
+        case DiagId::InputPatchSizeUnsupported:
+        case DiagId::HullReturnsNoControlPoint:
+        case DiagId::OutputPatchReadsUnwritten:
+        case DiagId::PatchConstantParameterUnsupported:
+        case DiagId::PatchConstantsNotReturnedAsStruct:
+        case DiagId::DomainAttributeMissing:
+        case DiagId::DomainWithoutHull:
+        case DiagId::DomainMismatch:
+        case DiagId::OutputPatchSizeMismatch:
+        case DiagId::DomainParameterUnsupported:
+            return true;
+        default:
+            return false;
+    }
+}
+
 }  // namespace
 
 void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass) {
@@ -59,7 +108,7 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
     // for) makes the technique invalid, not the effect: run() decides once every technique is lowered.
     const bool onlyUnsupported =
         !lowered && std::all_of(lowering.items().begin(), lowering.items().end(), [](const Diagnostic& d) {
-            return d.severity != Severity::Error || d.id == DiagId::UnsupportedFeature;
+            return d.severity != Severity::Error || isUnsupportedStageForm(d.id);
         });
     if (onlyUnsupported) {
         mTechniqueUnsupported.insert(mTechniqueUnsupported.end(), lowering.items().begin(),

@@ -208,9 +208,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
         }
         const std::optional<int> location = inputAttribute(f.semantic);
         if (!location) continue;
-        if (!f.type.arrayDims.empty())
-            return fail(DiagId::UnsupportedFeature, f.loc,
-                        {"vertex input '" + f.semantic + "' is nested too deeply"});
+        if (!f.type.arrayDims.empty()) return fail(DiagId::VertexInputNestedTooDeeply, f.loc, {f.semantic});
         TypeDesc t = f.type;
         t.base = BaseType::Float;
         auto [it, inserted] = attributes.try_emplace(*location, t);
@@ -309,8 +307,7 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
             body += assignField(f, source);
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc,
-                        {"pixel input semantic '" + f.semantic + "' is not supported"});
+            return fail(DiagId::PixelInputSemanticUnsupported, f.loc, {f.semantic});
         }
     }
     auto add = [&](const std::string& p) { params += (params.empty() ? "" : ",\n    ") + p; };
@@ -393,8 +390,7 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
                                             : ", 1)")) +
                     ";\n";
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc,
-                        {"vertex output semantic '" + s + "' is not supported"});
+            return fail(DiagId::VertexOutputSemanticUnsupported, f.loc, {s});
         }
     }
     return true;
@@ -416,8 +412,7 @@ bool WrapperBuilder::pixelOutputs(const std::vector<Field>& fields, std::string&
             members += "    float fx_depth : SV_Depth;\n";
             body += "    fx_out.fx_depth = (float)(" + f.lvalue + ");\n";
         } else {
-            return fail(DiagId::UnsupportedFeature, f.loc,
-                        {"pixel output semantic '" + f.semantic + "' is not supported"});
+            return fail(DiagId::PixelOutputSemanticUnsupported, f.loc, {f.semantic});
         }
     }
     return true;

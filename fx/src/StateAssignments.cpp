@@ -149,15 +149,11 @@ void StateAssignments::expandTargetBlend(const StateObjectField& field, const So
         if (field.name == "RenderTargetWriteMask" && index >= 4) {
             double mask = 0;
             if (own && !(constantValue(own->value, mask) && mask == 15))
-                error(DiagId::UnsupportedFeature, own->loc,
-                      {"RenderTargetWriteMask[" + std::to_string(index) +
-                       "] masks a render target the runtime never binds (it draws into four)"});
+                error(DiagId::WriteMaskTargetNeverBound, own->loc, {std::to_string(index)});
             continue;
         }
         if (!state) {  // AlphaToCoverageEnable: one for the whole blend state
-            if (own)
-                error(DiagId::UnsupportedFeature, own->loc,
-                      {std::string(field.name) + " takes no render-target index"});
+            if (own) error(DiagId::StateTakesNoTargetIndex, own->loc, {std::string(field.name)});
             continue;
         }
         const StateAssignment* source = own                           ? own

@@ -69,8 +69,8 @@ std::pair<int, StreamOutElement::Component> glslShape(const std::string& type) {
 
 }  // namespace
 
-void Compiler::unsupported(const SourceLoc& loc, const std::string& message) {
-    mTechniqueUnsupported.push_back(Diagnostic{DiagId::UnsupportedFeature, Severity::Error, loc, message});
+void Compiler::unsupported(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args) {
+    mTechniqueUnsupported.push_back(Diagnostic{id, Severity::Error, loc, formatDiagnostic(id, args)});
 }
 
 const Expr* Compiler::streamOutCall(const StateAssignment& s) const {
@@ -111,12 +111,8 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
                   {"StreamOutVertices", "expected a whole number of vertices, 1 to 16777216"});
     }
 
-    if (so->otherStreams)
-        return unsupported(call.loc,
-                           "stream output of a geometry shader's streams 1 to 3 is not supported: "
-                           "shadowfx captures stream 0");
-    if (request.entries.empty())
-        return unsupported(call.loc, "stream output with an empty declaration captures nothing");
+    if (so->otherStreams) return unsupported(DiagId::StreamOutOtherStreams, call.loc, {});
+    if (request.entries.empty()) return unsupported(DiagId::StreamOutEmpty, call.loc, {});
     // GL captures whole outputs: an entry must name all of an output's components, as every SDK
     // declaration does. A vertex shader's outputs are float4 varyings (the pass lowering widens them).
     std::string function;
@@ -134,13 +130,11 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
             if (found != outputs->end()) components = found->second;
         }
         if (components && (e.startComponent != 0 || e.componentCount != components))
-            return unsupported(e.loc, "stream-output entry '" + e.text +
-                                          "' captures part of an output; GL captures whole outputs (" +
-                                          std::to_string(components) + " components here" +
-                                          (builtIn         ? ", the position"
-                                           : float4Varying ? ", a float4 varying"
-                                                           : "") +
-                                          ")");
+            return unsupported(DiagId::StreamOutPartialOutput, e.loc,
+                               {e.text, std::to_string(components),
+                                builtIn         ? ", the position"
+                                : float4Varying ? ", a float4 varying"
+                                                : ""});
     }
     if (request.fromVertex) {
         // Not rasterized: the vertex stage's outputs keep their declared types (reset after the vertex
@@ -150,9 +144,8 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
         for (const StateAssignment& s : p.states)
             if (findRenderState(s.name) == RenderStateId::VertexShader)
                 if (const Expr* vertex = shaderExpr(s); vertex && vertex->text != compile->text)
-                    return unsupported(call.loc, "ConstructGSWithSO names vertex shader '" + compile->text +
-                                                     "' but the pass sets '" + vertex->text +
-                                                     "'; the pass's vertex shader is the one streamed out");
+                    return unsupported(DiagId::StreamOutOtherVertexShader, call.loc,
+                                       {compile->text, vertex->text});
     } else {
         mStageStreamOut.captureOnly = !request.rasterizes;
         mLastPositionVarying = -1;
@@ -235,10 +228,8 @@ void Compiler::resolveStreamOutputs() {
                                                          ? std::pair(0, StreamOutElement::Component::Float)
                                                          : glslShape(found->second.type);
                 if (components == 0 || components != e.componentCount) {
-                    error(
-                        DiagId::UnsupportedFeature, e.loc,
-                        {"stream-output entry '" + e.text + "' names no output of the " +
-                         (request.fromVertex ? "vertex" : "geometry") + " shader that GL can capture whole"});
+                    error(DiagId::StreamOutEntryNotCapturable, e.loc,
+                          {e.text, request.fromVertex ? "vertex" : "geometry"});
                     resolved = false;
                     break;
                 }

@@ -46,10 +46,10 @@ private:
     std::optional<Refused> mFirst;    // the first technique left out
 };
 
-// The compiler's: techniques whose code uses what the lowering cannot express, with what it said
-// (UnsupportedFeature errors). Left out with a warning at the first error while `anotherRuns`, and added to
-// `leftOut` with it; otherwise their diagnostics are reported as they stand and the result is false (the
-// effect fails).
+// The compiler's: techniques whose code uses what the lowering cannot express, with what it said (a
+// stage form or a stream output GL has no counterpart for). Left out with a warning at the first error
+// while `anotherRuns`, and added to `leftOut` with it; otherwise their diagnostics are reported as they
+// stand and the result is false (the effect fails).
 bool reportUnsupportedTechniques(
     const std::vector<std::pair<const Technique*, std::vector<Diagnostic>>>& techniques, bool anotherRuns,
     DiagnosticSink& diagnostics, std::vector<RefusedTechnique>& leftOut);

@@ -56,8 +56,7 @@ bool WrapperBuilder::readControlPoints(const FunctionParam& patch, const std::st
                 varyings.insert(*location);
                 body += assignField(f, source + at + ".fx_v" + std::to_string(*location));
             } else {
-                return fail(DiagId::UnsupportedFeature, f.loc,
-                            {"control point semantic '" + f.semantic + "' is not supported"});
+                return fail(DiagId::ControlPointSemanticUnsupported, f.loc, {f.semantic});
             }
         }
     }
@@ -72,10 +71,7 @@ bool WrapperBuilder::patchConstants(const TypeDesc& type, const SourceLoc& loc, 
     const StructDecl* decl = type.base == BaseType::Struct && type.arrayDims.empty()
                                  ? mEffect.findStruct(type.structName)
                                  : nullptr;
-    if (!decl)
-        return fail(
-            DiagId::UnsupportedFeature, loc,
-            {"the patch constants must be a struct with SV_TessFactor and SV_InsideTessFactor members"});
+    if (!decl) return fail(DiagId::PatchConstantsNotStruct, loc, {});
     bool outer = false;
     std::set<int> used;
     for (const StructMember& m : decl->members) {
@@ -84,8 +80,7 @@ bool WrapperBuilder::patchConstants(const TypeDesc& type, const SourceLoc& loc, 
             const std::string name = semantic == "SV_TESSFACTOR" ? "fx_outer" : "fx_inner";
             outer |= semantic == "SV_TESSFACTOR";
             if (!used.insert(semantic == "SV_TESSFACTOR" ? -1 : -2).second)
-                return fail(DiagId::UnsupportedFeature, m.loc,
-                            {"semantic '" + m.semantic + "' is used twice"});
+                return fail(DiagId::PatchConstantSemanticRepeated, m.loc, {m.semantic});
             TypeDesc element = m.type;
             element.arrayDims.clear();
             members += "    " + hlslTypeName(element) + " " + name + arraySuffix(m.type) + " : " +
@@ -99,9 +94,7 @@ bool WrapperBuilder::patchConstants(const TypeDesc& type, const SourceLoc& loc, 
         for (const Field& f : fields) {
             auto location = varyingLocation(f.semantic) ? varyingLocation(f.semantic)
                                                         : customVaryingLocation(mEffect, f.semantic);
-            if (!location)
-                return fail(DiagId::UnsupportedFeature, f.loc,
-                            {"patch constant semantic '" + f.semantic + "' is not supported"});
+            if (!location) return fail(DiagId::PatchConstantSemanticUnsupported, f.loc, {f.semantic});
             const std::string name = "fx_k" + std::to_string(*location);
             if (used.insert(*location).second)
                 members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name +
@@ -110,9 +103,7 @@ bool WrapperBuilder::patchConstants(const TypeDesc& type, const SourceLoc& loc, 
                 write ? "    fx_out." + name + " = " + float4Of(f) + ";\n" : assignField(f, "fx_c." + name);
         }
     }
-    if (!outer)
-        return fail(DiagId::UnsupportedFeature, decl->loc,
-                    {"the patch constants '" + decl->name + "' have no SV_TessFactor member"});
+    if (!outer) return fail(DiagId::PatchConstantsWithoutTessFactor, decl->loc, {decl->name});
     return true;
 }
 
@@ -124,16 +115,14 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
     for (const char* required :
          {"domain", "partitioning", "outputtopology", "outputcontrolpoints", "patchconstantfunc"})
         if (!mFn.attribute(required))
-            return fail(DiagId::UnsupportedFeature, mFn.loc,
-                        {"hull shader '" + mFn.name + "' has no [" + required + "(...)] attribute"});
+            return fail(DiagId::HullAttributeMissing, mFn.loc, {mFn.name, required});
     const FunctionAttribute& pcfAttribute = *mFn.attribute("patchconstantfunc");
     const FunctionDecl* pcf = nullptr;
     for (const FunctionDecl& f : mEffect.functions)
         if (f.name == pcfAttribute.argument && f.hasBody) pcf = &f;
     if (!pcf)
-        return fail(DiagId::UnsupportedFeature, pcfAttribute.loc,
-                    {"patch-constant function '" + pcfAttribute.argument + "' of hull shader '" + mFn.name +
-                     "' is not defined"});
+        return fail(DiagId::PatchConstantFunctionUndefined, pcfAttribute.loc,
+                    {pcfAttribute.argument, mFn.name});
     mPatchConstantFunction = pcf->name;
     const std::string& pointsText = mFn.attribute("outputcontrolpoints")->argument;
     const int outputPoints = std::all_of(pointsText.begin(), pointsText.end(), ::isdigit) &&
@@ -141,8 +130,7 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
                                  ? std::stoi(pointsText)
                                  : 0;
     if (outputPoints < 1 || outputPoints > 32)
-        return fail(DiagId::UnsupportedFeature, mFn.attribute("outputcontrolpoints")->loc,
-                    {"[outputcontrolpoints] takes a number 1..32"});
+        return fail(DiagId::OutputControlPointsInvalid, mFn.attribute("outputcontrolpoints")->loc, {});
 
     const FunctionParam* input = nullptr;
     std::string locals, body, callArgs;
@@ -162,26 +150,17 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
             arg = "(" + hlslTypeName(p.type) + ")" +
                   (semantic == "SV_PRIMITIVEID" ? "fx_primitiveId" : "fx_id");
         } else {
-            return fail(DiagId::UnsupportedFeature, p.loc,
-                        {"hull shader parameter '" + p.name +
-                         "' is not supported (expected one InputPatch<T, 3>, SV_OutputControlPointID, "
-                         "SV_PrimitiveID or a uniform)"});
+            return fail(DiagId::HullParameterUnsupported, p.loc, {p.name});
         }
         callArgs += (i ? ", " : "") + arg;
     }
     if (!everyArgumentTaken(uniformIndex)) return false;
-    if (!input)
-        return fail(DiagId::UnsupportedFeature, mFn.loc,
-                    {"hull shader '" + mFn.name + "' needs an input patch ('InputPatch<T, 3> patch')"});
+    if (!input) return fail(DiagId::HullInputPatchMissing, mFn.loc, {mFn.name});
     if (input->patchSize != 3)
-        return fail(DiagId::UnsupportedFeature, input->loc,
-                    {"an input patch of " + std::to_string(input->patchSize) +
-                     " control points is not supported: shadowfx draws a mesh's triangles as patches, which "
-                     "'InputPatch<T, 3>' takes"});
+        return fail(DiagId::InputPatchSizeUnsupported, input->loc, {std::to_string(input->patchSize)});
     mPatchVertices = input->patchSize;
     if (mFn.returnType.base == BaseType::Void)
-        return fail(DiagId::UnsupportedFeature, mFn.loc,
-                    {"hull shader '" + mFn.name + "' must return its output control point"});
+        return fail(DiagId::HullReturnsNoControlPoint, mFn.loc, {mFn.name});
     std::vector<Field> outputs;
     locals += "    " + hlslTypeName(mFn.returnType) + " fx_r;\n";
     gatherFields(mEffect, mFn.returnType, mFn.returnSemantic, "", "fx_r", mFn.loc, outputs);
@@ -211,26 +190,19 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
             if (!readControlPoints(p, arg, "fx_op", read, pcfLocals, pcfBody)) return false;
             for (int location : read)
                 if (!written.count(location))
-                    return fail(DiagId::UnsupportedFeature, p.loc,
-                                {"the output patch '" + p.name + "' of '" + pcf->name +
-                                 "' reads a semantic that hull shader '" + mFn.name + "' does not write"});
+                    return fail(DiagId::OutputPatchReadsUnwritten, p.loc, {p.name, pcf->name, mFn.name});
             pcfParams += ", OutputPatch<fx_HsOutput, " + std::to_string(outputPoints) + "> fx_op";
         } else if (semantic == "SV_PRIMITIVEID" && !p.isUniform) {
             arg = "(" + hlslTypeName(p.type) + ")fx_primitiveId";
         } else {
-            return fail(
-                DiagId::UnsupportedFeature, p.loc,
-                {"patch-constant function parameter '" + p.name +
-                 "' is not supported (expected the hull shader's InputPatch<T, 3>, an OutputPatch<T, " +
-                 std::to_string(outputPoints) + "> or SV_PrimitiveID)"});
+            return fail(DiagId::PatchConstantParameterUnsupported, p.loc,
+                        {p.name, std::to_string(outputPoints)});
         }
         pcfArgs += (i ? ", " : "") + arg;
     }
     pcfParams += ", uint fx_primitiveId : SV_PrimitiveID";
     if (pcf->returnType.base == BaseType::Void)
-        return fail(
-            DiagId::UnsupportedFeature, pcf->loc,
-            {"patch-constant function '" + pcf->name + "' must return its patch constants as a struct"});
+        return fail(DiagId::PatchConstantsNotReturnedAsStruct, pcf->loc, {pcf->name});
     std::string constantMembers, constantBody;
     if (!patchConstants(pcf->returnType, pcf->loc, true, "fx_r", constantMembers, constantBody)) return false;
 
@@ -262,17 +234,11 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
 // hull shader's partitioning and output topology, which GL declares in this stage.
 bool WrapperBuilder::buildDomain(std::string& globals, std::string& wrapper) {
     const FunctionAttribute* domain = mFn.attribute("domain");
-    if (!domain)
-        return fail(DiagId::UnsupportedFeature, mFn.loc,
-                    {"domain shader '" + mFn.name + "' has no [domain(...)] attribute"});
-    if (!mHull || !mHull->attribute("domain"))
-        return fail(DiagId::UnsupportedFeature, mCompile.loc,
-                    {"a domain shader needs a hull shader in the same pass (SetHullShader)"});
+    if (!domain) return fail(DiagId::DomainAttributeMissing, mFn.loc, {mFn.name});
+    if (!mHull || !mHull->attribute("domain")) return fail(DiagId::DomainWithoutHull, mCompile.loc, {});
     if (!equalsIgnoreCase(domain->argument, mHull->attribute("domain")->argument))
-        return fail(
-            DiagId::UnsupportedFeature, domain->loc,
-            {"domain shader '" + mFn.name + "' is for the '" + domain->argument + "' domain, hull shader '" +
-             mHull->name + "' for '" + mHull->attribute("domain")->argument + "'"});
+        return fail(DiagId::DomainMismatch, domain->loc,
+                    {mFn.name, domain->argument, mHull->name, mHull->attribute("domain")->argument});
     const FunctionAttribute* points = mHull->attribute("outputcontrolpoints");
     std::string locals, body, callArgs, params, constantMembers, constantBody;
     std::vector<Field> outputs;
@@ -289,10 +255,9 @@ bool WrapperBuilder::buildDomain(std::string& globals, std::string& wrapper) {
         } else if (p.patch == "OutputPatch" && !patch) {
             patch = true;
             if (!points || std::to_string(p.patchSize) != points->argument)
-                return fail(DiagId::UnsupportedFeature, p.loc,
-                            {"the output patch of domain shader '" + mFn.name + "' has " +
-                             std::to_string(p.patchSize) + " control points, hull shader '" + mHull->name +
-                             "' writes " + (points ? points->argument : std::string("?"))});
+                return fail(DiagId::OutputPatchSizeMismatch, p.loc,
+                            {mFn.name, std::to_string(p.patchSize), mHull->name,
+                             points ? points->argument : std::string("?")});
             if (!readControlPoints(p, arg, "fx_patch", varyings, locals, body)) return false;
             addParam("const OutputPatch<fx_DsPoint, " + std::to_string(p.patchSize) + "> fx_patch");
         } else if (semantic == "SV_DOMAINLOCATION") {
@@ -315,11 +280,7 @@ bool WrapperBuilder::buildDomain(std::string& globals, std::string& wrapper) {
             locals += "    " + hlslTypeName(t) + " " + arg + dims + ";\n";
             gatherFields(mEffect, p.type, p.semantic, p.interpolation, arg, p.loc, outputs);
         } else {
-            return fail(
-                DiagId::UnsupportedFeature, p.loc,
-                {"domain shader parameter '" + p.name +
-                 "' is not supported (expected the patch constants, SV_DomainLocation, an OutputPatch, "
-                 "SV_PrimitiveID, an output or a uniform)"});
+            return fail(DiagId::DomainParameterUnsupported, p.loc, {p.name});
         }
         callArgs += (i ? ", " : "") + arg;
     }

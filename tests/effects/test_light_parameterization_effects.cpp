@@ -174,8 +174,9 @@ TEST(LispsmEffect, NOptParameterReachesTheProvider) {
     ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Lloyd2006", diagnostics));
     fx::DiagnosticList rendering;
     renderer->render(*scene, options, rendering);
-    const auto error = std::find_if(rendering.items().begin(), rendering.items().end(),
-                                    [](const fx::Diagnostic& d) { return d.id == fx::DiagId::TypeMismatch; });
+    const auto error =
+        std::find_if(rendering.items().begin(), rendering.items().end(),
+                     [](const fx::Diagnostic& d) { return d.id == fx::DiagId::LispsmChoiceInvalid; });
     ASSERT_NE(error, rendering.items().end()) << rendering.str();
     EXPECT_NE(error->message.find("'Lloyd2006' is not a choice of LiSPSM's n"), std::string::npos)
         << error->message;

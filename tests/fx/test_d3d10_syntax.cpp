@@ -330,7 +330,7 @@ technique11 Plain { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixe
 
     DiagnosticList alone;
     EXPECT_FALSE(compile(withTechniques(coverage), alone));
-    const Diagnostic* error = find(alone, DiagId::UnsupportedFeature);
+    const Diagnostic* error = find(alone, DiagId::PixelInputSemanticUnsupported);
     ASSERT_TRUE(error) << alone.str();
     EXPECT_EQ(error->severity, Severity::Error);
     EXPECT_FALSE(find(alone, DiagId::TechniqueRefused)) << alone.str();
@@ -478,7 +478,7 @@ TEST(D3d10Syntax, DynamicLinkageIsRefusedWhereItIsDeclared) {
     auto effect = parseEffectSource("interface ILight { float3 Light(); };\n" + withTechniques(""),
                                     "d3d10.fx", ParseOptions{}, diagnostics);
     EXPECT_FALSE(effect);
-    const Diagnostic* d = find(diagnostics, DiagId::UnsupportedFeature);
+    const Diagnostic* d = find(diagnostics, DiagId::DynamicShaderLinkage);
     ASSERT_TRUE(d) << diagnostics.str();
     EXPECT_EQ(d->loc.line, 1);
     EXPECT_EQ(d->loc.column, 1);

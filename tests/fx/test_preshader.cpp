@@ -194,7 +194,7 @@ TEST(Preshader, ErrorsAreReported) {
     EXPECT_EQ(diags.items()[0].id, DiagId::UnknownIdentifier);
     diags.clear();
     EXPECT_FALSE(evaluate(call("noise", {num(1)}), nullptr, nullptr, &diags));
-    EXPECT_EQ(diags.items().at(0).id, DiagId::UnsupportedFeature);
+    EXPECT_EQ(diags.items().at(0).id, DiagId::FunctionNotHostEvaluable);
 }
 
 Expr ternary(Expr c, Expr a, Expr b) {

@@ -25,7 +25,7 @@
 namespace fx {
 
 // Raised whenever the content changes shape (a field added, removed or reordered).
-inline constexpr uint32_t kCompiledEffectFormatVersion = 1;
+inline constexpr uint32_t kCompiledEffectFormatVersion = 2;
 
 // Whether `bytes` begin with the compiled effect magic: how loaders tell a .sfxo from an .fx source,
 // whatever the file's name.

@@ -22,6 +22,7 @@ FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
 // Attached to a diagnostic at a macro's use (Diagnostic::notes), at the macro's #define.
 FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here")
+FX_DIAGNOSTIC(TooManyTokens, Error, "effect too large: more than {0} tokens after preprocessing")
 
 // [SECTION] Effect syntax
 FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
@@ -52,6 +53,34 @@ FX_DIAGNOSTIC(LocalAnnotation, Error,
 FX_DIAGNOSTIC(ObjectInStruct, Error,
               "struct member '{0}' has the object type '{1}': an effect's structs hold no textures, "
               "samplers, buffers or states")
+FX_DIAGNOSTIC(DynamicShaderLinkage, Error,
+              "dynamic shader linkage ('{0}') is not supported: GLSL has no interfaces or classes to bind at "
+              "run time")
+FX_DIAGNOSTIC(StateObjectArray, Error, "arrays of state objects are not supported")
+FX_DIAGNOSTIC(ExpressionTooComplex, Error,
+              "expression too complex (more than {0} nested or chained operators)")
+FX_DIAGNOSTIC(NestingTooDeep, Error, "nesting deeper than {0} levels")
+FX_DIAGNOSTIC(
+    ReadWriteResourceInEffect, Error,
+    "type '{0}' is not supported in effects: read-write resources are bound by the application (FX11 "
+    "sets unordered access views outside passes); a pass binds none")
+FX_DIAGNOSTIC(MultisampleArrayInEffect, Error,
+              "type '{0}' is not supported in effects: shadowfx creates no multisample array resources")
+FX_DIAGNOSTIC(ArraySizeOutOfRange, Error, "array size {0} is outside 1..{1} (all dimensions together)")
+FX_DIAGNOSTIC(AsmShader, Error, "asm shaders are not supported")
+FX_DIAGNOSTIC(
+    TextureArrayRenderTarget, Error,
+    "texture array '{0}' cannot be a render target: a pass's RenderColorTarget has no way to choose the "
+    "element it renders into")
+FX_DIAGNOSTIC(
+    MultisampleTargetWithoutSampleCount, Error,
+    "Texture2DMS '{0}': a multisample render target needs its sample count (Texture2DMS<float4, 4>)")
+FX_DIAGNOSTIC(MultisampleSampleCountInvalid, Error,
+              "Texture2DMS '{0}': its sample count must be the second template argument, 1..32 "
+              "(Texture2DMS<float4, 4>)")
+FX_DIAGNOSTIC(WriteMaskTargetNeverBound, Error,
+              "RenderTargetWriteMask[{0}] masks a render target the runtime never binds (it draws into four)")
+FX_DIAGNOSTIC(StateTakesNoTargetIndex, Error, "{0} takes no render-target index")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
@@ -89,14 +118,137 @@ FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
               "no shadowfx-compile-worker found (set SHADOWFX_COMPILE_WORKER); compiling in this process, "
               "where a crash of the HLSL compiler ends the program")
 FX_DIAGNOSTIC(UnknownIdentifier, Error, "unknown identifier '{0}'")
-FX_DIAGNOSTIC(TypeMismatch, Error, "{0}")
-FX_DIAGNOSTIC(UnsupportedFeature, Error, "{0}")
 FX_DIAGNOSTIC(VertexInputConstant, Note,
               "vertex input '{0}' matches no mesh stream by its name; it reads the constant {1}")
 // glslang's "mul() matrix size mismatch" said as fxc said it: both truncate the larger operand.
 FX_DIAGNOSTIC(ImplicitTruncation, Warning,
               "implicit truncation of vector type (fxc's X3206): mul() of a vector and a matrix that differ "
               "in size reads only the rows or columns both have")
+// The pass's shader stages, as the stage wrappers and the pass compiler take them.
+FX_DIAGNOSTIC(HullWithoutDomain, Error,
+              "a hull shader needs a domain shader in the same pass (SetDomainShader)")
+FX_DIAGNOSTIC(DomainWithoutHull, Error,
+              "a domain shader needs a hull shader in the same pass (SetHullShader)")
+FX_DIAGNOSTIC(
+    GeometryAfterTessellationInput, Error,
+    "a geometry shader after tessellation takes 'triangle' input: the domain shader outputs triangles")
+FX_DIAGNOSTIC(VertexInputNestedTooDeeply, Error, "vertex input '{0}' is nested too deeply")
+FX_DIAGNOSTIC(PixelInputSemanticUnsupported, Error, "pixel input semantic '{0}' is not supported")
+FX_DIAGNOSTIC(VertexOutputSemanticUnsupported, Error, "vertex output semantic '{0}' is not supported")
+FX_DIAGNOSTIC(PixelOutputSemanticUnsupported, Error, "pixel output semantic '{0}' is not supported")
+FX_DIAGNOSTIC(GeometryStreamElementNotStruct, Error,
+              "the element of geometry shader stream '{0}' must be a struct")
+FX_DIAGNOSTIC(
+    GeometryOutputNotVector, Error,
+    "geometry shader output '{0}' must be a scalar or a vector (structs, arrays and matrices are not "
+    "supported)")
+FX_DIAGNOSTIC(GeometryIntegerOutputInterpolated, Error,
+              "geometry shader output '{0}' of an integer type must be 'nointerpolation'")
+FX_DIAGNOSTIC(GeometryOutputSemanticUnsupported, Error,
+              "geometry shader output semantic '{0}' is not supported")
+FX_DIAGNOSTIC(GeometryMaxVertexCountMissing, Error,
+              "geometry shader '{0}' has no [maxvertexcount(n)] attribute")
+FX_DIAGNOSTIC(GeometryStreamRepeated, Error, "geometry shader '{0}' has more than one output stream")
+FX_DIAGNOSTIC(GeometryInputPrimitiveRepeated, Error,
+              "geometry shader '{0}' has more than one input primitive")
+FX_DIAGNOSTIC(GeometryParameterUnsupported, Error,
+              "geometry shader parameter '{0}' is not supported (expected the input primitive, the output "
+              "stream, SV_PrimitiveID or a uniform)")
+FX_DIAGNOSTIC(GeometryInputOrStreamMissing, Error,
+              "geometry shader '{0}' needs an input primitive ('triangle T input[3]') and an output stream "
+              "('inout TriangleStream<T> stream')")
+FX_DIAGNOSTIC(GeometryLineAdjacencyInput, Error,
+              "geometry shader input primitive 'lineadj' is not supported: a mesh's triangles define no line "
+              "strips, so an edge has no single continuation at either end")
+FX_DIAGNOSTIC(GeometryInputPrimitiveUnsupported, Error,
+              "geometry shader input primitive '{0}' is not supported")
+FX_DIAGNOSTIC(GeometryInputArraySize, Error,
+              "geometry shader input '{0}' must be an array of {1} vertices ('{2} T {0}[{1}]')")
+FX_DIAGNOSTIC(GeometryStreamNotInout, Error, "geometry shader stream '{0}' must be 'inout'")
+FX_DIAGNOSTIC(GeometryInputSemanticUnsupported, Error,
+              "geometry shader input semantic '{0}' is not supported")
+FX_DIAGNOSTIC(ControlPointSemanticUnsupported, Error, "control point semantic '{0}' is not supported")
+FX_DIAGNOSTIC(PatchConstantsNotStruct, Error,
+              "the patch constants must be a struct with SV_TessFactor and SV_InsideTessFactor members")
+FX_DIAGNOSTIC(PatchConstantSemanticRepeated, Error, "semantic '{0}' is used twice")
+FX_DIAGNOSTIC(PatchConstantSemanticUnsupported, Error, "patch constant semantic '{0}' is not supported")
+FX_DIAGNOSTIC(PatchConstantsWithoutTessFactor, Error,
+              "the patch constants '{0}' have no SV_TessFactor member")
+FX_DIAGNOSTIC(HullAttributeMissing, Error, "hull shader '{0}' has no [{1}(...)] attribute")
+FX_DIAGNOSTIC(PatchConstantFunctionUndefined, Error,
+              "patch-constant function '{0}' of hull shader '{1}' is not defined")
+FX_DIAGNOSTIC(OutputControlPointsInvalid, Error, "[outputcontrolpoints] takes a number 1..32")
+FX_DIAGNOSTIC(HullParameterUnsupported, Error,
+              "hull shader parameter '{0}' is not supported (expected one InputPatch<T, 3>, "
+              "SV_OutputControlPointID, SV_PrimitiveID or a uniform)")
+FX_DIAGNOSTIC(HullInputPatchMissing, Error,
+              "hull shader '{0}' needs an input patch ('InputPatch<T, 3> patch')")
+FX_DIAGNOSTIC(InputPatchSizeUnsupported, Error,
+              "an input patch of {0} control points is not supported: shadowfx draws a mesh's triangles as "
+              "patches, which 'InputPatch<T, 3>' takes")
+FX_DIAGNOSTIC(HullReturnsNoControlPoint, Error, "hull shader '{0}' must return its output control point")
+FX_DIAGNOSTIC(OutputPatchReadsUnwritten, Error,
+              "the output patch '{0}' of '{1}' reads a semantic that hull shader '{2}' does not write")
+FX_DIAGNOSTIC(PatchConstantParameterUnsupported, Error,
+              "patch-constant function parameter '{0}' is not supported (expected the hull shader's "
+              "InputPatch<T, 3>, an OutputPatch<T, {1}> or SV_PrimitiveID)")
+FX_DIAGNOSTIC(PatchConstantsNotReturnedAsStruct, Error,
+              "patch-constant function '{0}' must return its patch constants as a struct")
+FX_DIAGNOSTIC(DomainAttributeMissing, Error, "domain shader '{0}' has no [domain(...)] attribute")
+FX_DIAGNOSTIC(DomainMismatch, Error,
+              "domain shader '{0}' is for the '{1}' domain, hull shader '{2}' for '{3}'")
+FX_DIAGNOSTIC(OutputPatchSizeMismatch, Error,
+              "the output patch of domain shader '{0}' has {1} control points, hull shader '{2}' writes {3}")
+FX_DIAGNOSTIC(
+    DomainParameterUnsupported, Error,
+    "domain shader parameter '{0}' is not supported (expected the patch constants, SV_DomainLocation, "
+    "an OutputPatch, SV_PrimitiveID, an output or a uniform)")
+// Stream output (ConstructGSWithSO) that GL's transform feedback cannot capture.
+FX_DIAGNOSTIC(
+    StreamOutOtherStreams, Error,
+    "stream output of a geometry shader's streams 1 to 3 is not supported: shadowfx captures stream 0")
+FX_DIAGNOSTIC(StreamOutEmpty, Error, "stream output with an empty declaration captures nothing")
+FX_DIAGNOSTIC(
+    StreamOutPartialOutput, Error,
+    "stream-output entry '{0}' captures part of an output; GL captures whole outputs ({1} components "
+    "here{2})")
+FX_DIAGNOSTIC(
+    StreamOutOtherVertexShader, Error,
+    "ConstructGSWithSO names vertex shader '{0}' but the pass sets '{1}'; the pass's vertex shader is "
+    "the one streamed out")
+FX_DIAGNOSTIC(StreamOutEntryNotCapturable, Error,
+              "stream-output entry '{0}' names no output of the {1} shader that GL can capture whole")
+// Evaluating an expression on the host (preshaders: initializers, state values, annotations).
+FX_DIAGNOSTIC(NotAValue, Error, "'{0}' is not a value")
+FX_DIAGNOSTIC(ExpectedString, Error, "expected a string")
+FX_DIAGNOSTIC(CannotEvaluateType, Error, "cannot evaluate a {0}")
+FX_DIAGNOSTIC(ExpectedNumber, Error, "expected a number, found a string")
+FX_DIAGNOSTIC(CannotConvertType, Error, "cannot convert {0} to {1}")
+FX_DIAGNOSTIC(ComponentCountMismatch, Error, "cannot convert {0} components to {1} ({2} components)")
+FX_DIAGNOSTIC(OperandsMismatch, Error, "operands {0} and {1} do not match")
+FX_DIAGNOSTIC(UnaryOperatorOnString, Error, "operator on a string")
+FX_DIAGNOSTIC(BinaryOperatorOnString, Error, "operator '{0}' on a string")
+FX_DIAGNOSTIC(IntegerDivisionByZero, Error, "integer division by zero")
+FX_DIAGNOSTIC(IntegerModuloByZero, Error, "integer modulo by zero")
+FX_DIAGNOSTIC(OperatorNotHostEvaluable, Error, "operator '{0}' cannot be evaluated on the host")
+FX_DIAGNOSTIC(ConditionSizeMismatch, Error, "condition size does not match")
+FX_DIAGNOSTIC(InvalidMatrixMember, Error, "invalid matrix member '{0}'")
+FX_DIAGNOSTIC(MatrixMemberOutOfRange, Error, "matrix member '{0}' out of range")
+FX_DIAGNOSTIC(InvalidSwizzle, Error, "invalid swizzle '{0}'")
+FX_DIAGNOSTIC(InvalidSwizzleOnType, Error, "invalid swizzle '{0}' on {1}")
+FX_DIAGNOSTIC(IndexOutOfRange, Error, "index out of range")
+FX_DIAGNOSTIC(MatrixRowIndexOutOfRange, Error, "matrix row index out of range")
+FX_DIAGNOSTIC(VectorIndexOutOfRange, Error, "vector index out of range")
+FX_DIAGNOSTIC(ScalarIndexed, Error, "cannot index a scalar")
+FX_DIAGNOSTIC(IntrinsicArgumentCount, Error, "{0}() takes {1} argument(s)")
+FX_DIAGNOSTIC(IntrinsicOfString, Error, "{0}() of a string")
+FX_DIAGNOSTIC(CrossArguments, Error, "cross() takes two float3")
+FX_DIAGNOSTIC(MatrixNotSquare, Error, "{0}() takes a square matrix")
+FX_DIAGNOSTIC(SingularMatrixInverse, Error, "inverse() of a singular matrix")
+FX_DIAGNOSTIC(MulDimensionMismatch, Error, "mul({0}, {1}): inner dimensions differ")
+FX_DIAGNOSTIC(FunctionNotHostEvaluable, Error, "function '{0}' cannot be evaluated on the host")
+FX_DIAGNOSTIC(ConstructorComponentCount, Error, "{0} constructor needs {1} components, got {2}")
+FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
@@ -124,6 +276,38 @@ FX_DIAGNOSTIC(ParameterBoundByName, Note,
               "name would")
 FX_DIAGNOSTIC(ParameterNamesMissingLight, Note,
               "parameter '{0}' names light '{1}', which the scene does not have; it keeps its value")
+FX_DIAGNOSTIC(PassWithoutShaders, Warning, "pass '{0}' draws but has no vertex and pixel shader; skipped")
+FX_DIAGNOSTIC(
+    DepthTargetSmaller, Warning,
+    "pass '{0}' tests depth or stencil in a {1} colour target with a smaller {2} depth-stencil target: "
+    "only their overlap is drawn (D3D9 requires the depth-stencil surface to be at least as large; set "
+    "RenderDepthStencilTarget to one of the colour target's size)")
+FX_DIAGNOSTIC(DepthBiasClampUnavailable, Warning,
+              "DepthBiasClamp is not applied: this OpenGL has no glPolygonOffsetClamp (GL 4.6 or "
+              "ARB_polygon_offset_clamp); the depth bias is unbounded")
+FX_DIAGNOSTIC(BufferElementUnsupported, Error,
+              "Buffer<{0}>: GL buffer textures hold 32-bit float, int and uint elements of 1 to 4 components")
+FX_DIAGNOSTIC(ParameterNotSettableFromCommandLine, Error,
+              "parameter '{0}' of type {1} cannot be set from the command line")
+FX_DIAGNOSTIC(ParameterValueInvalid, Error, "'{0}' is not a value of type {1} for parameter '{2}'")
+FX_DIAGNOSTIC(ParameterValueCount, Error, "parameter '{0}' of type {1} needs {2} values, got {3}")
+FX_DIAGNOSTIC(LispsmChoiceInvalid, Error,
+              "'{0}' is not a choice of LiSPSM's n for parameter '{1}' (expected \"Scherzer2005\" or "
+              "\"Wimmer2004\")")
+// Data an application passes for a parameter (EffectResources::setTexture, setBuffer).
+FX_DIAGNOSTIC(SetTextureNotReadTexture, Error,
+              "setTexture: parameter {0} is not a 2D, cube or array texture that passes only read")
+FX_DIAGNOSTIC(SetTextureDataSize, Error,
+              "setTexture: '{0}' ({1}) needs width x height x elements RGBA texels")
+FX_DIAGNOSTIC(SetCubeTextureDataSize, Error,
+              "setTexture: '{0}' ({1}) needs width x height x 6 faces x elements RGBA texels, square faces")
+FX_DIAGNOSTIC(SetBufferNotBuffer, Error,
+              "setBuffer: parameter {0} is not a Buffer, StructuredBuffer or ByteAddressBuffer")
+FX_DIAGNOSTIC(SetBufferByteCount, Error, "setBuffer: '{0}' ({1}) got no bytes or too many")
+FX_DIAGNOSTIC(SetBufferElementSize, Error, "setBuffer: '{0}' ({1}) takes elements of {2} bytes")
+FX_DIAGNOSTIC(SetBufferWholeWords, Error, "setBuffer: '{0}' ({1}) takes whole 32-bit words")
+FX_DIAGNOSTIC(SetBufferPackedElementSize, Error,
+              "setBuffer: '{0}' ({1}) takes elements of {2} bytes (its members packed as D3D packs them)")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")

@@ -78,7 +78,7 @@ public:
     struct Error {
         DiagId id;
         SourceLoc loc;
-        std::string text;
+        std::vector<std::string> args;  // the id's template's {0}, {1}, ...
     };
 
     // The value over `slots` (every parameter's current value, by index), converted to the program's

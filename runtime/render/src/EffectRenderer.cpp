@@ -108,27 +108,24 @@ bool EffectRenderer::setParameterFromText(std::string_view name, std::string_vie
         return true;
     }
     if (!parameter.type.isNumeric()) {
-        diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
-                           {"parameter '" + parameter.name + "' of type " + parameter.type.hlslName() +
-                            " cannot be set from the command line"});
+        diagnostics.report(fx::DiagId::ParameterNotSettableFromCommandLine, parameter.loc,
+                           {parameter.name, parameter.type.hlslName()});
         return false;
     }
     // The literal grammar the scripts' values share (fx/LiteralNumbers.h).
     const std::optional<std::vector<float>> parsed = fx::parseLiteralNumbers(text);
     if (!parsed) {
-        diagnostics.report(fx::DiagId::TypeMismatch, parameter.loc,
-                           {"'" + std::string(text) + "' is not a value of type " +
-                            parameter.type.hlslName() + " for parameter '" + parameter.name + "'"});
+        diagnostics.report(fx::DiagId::ParameterValueInvalid, parameter.loc,
+                           {std::string(text), parameter.type.hlslName(), parameter.name});
         return false;
     }
     std::vector<float> numbers = *parsed;
     const size_t expected = static_cast<size_t>(parameter.type.componentCount());
     if (numbers.size() == 1 && expected > 1) numbers.assign(expected, numbers[0]);  // HLSL scalar broadcast
     if (numbers.size() != expected) {
-        diagnostics.report(
-            fx::DiagId::TypeMismatch, parameter.loc,
-            {"parameter '" + parameter.name + "' of type " + parameter.type.hlslName() + " needs " +
-             std::to_string(expected) + " values, got " + std::to_string(numbers.size())});
+        diagnostics.report(fx::DiagId::ParameterValueCount, parameter.loc,
+                           {parameter.name, parameter.type.hlslName(), std::to_string(expected),
+                            std::to_string(numbers.size())});
         return false;
     }
     fx::Value value = fx::zeroValue(parameter.type);

@@ -338,10 +338,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
             for (const fx::RenderStateSetting& setting : pass.states)
                 if (setting.id == fx::RenderStateId::DepthBiasClamp && !gl::PolygonOffsetClamp &&
                     !(setting.constant && *setting.constant == 0.0))
-                    diagnostics.report(fx::Diagnostic{
-                        fx::DiagId::UnsupportedFeature, fx::Severity::Warning, setting.loc,
-                        "DepthBiasClamp is not applied: this OpenGL has no glPolygonOffsetClamp (GL 4.6 or "
-                        "ARB_polygon_offset_clamp); the depth bias is unbounded"});
+                    diagnostics.report(fx::DiagId::DepthBiasClampUnavailable, setting.loc);
             if (pass.streamOut)
                 r.streamOuts[{r.programs.size() - 1, passes.size()}] =
                     std::make_unique<StreamOutBuffers>(*pass.streamOut);
@@ -483,14 +480,13 @@ bool EffectResources::setTexture(size_t index, const TextureData& data, fx::Diag
     const fx::TextureDesc* desc = index < parameterInfo().size() ? mCompiled->findTexture(index) : nullptr;
     const fx::SourceLoc where =
         index < parameterInfo().size() ? parameterInfo()[index].loc : fx::SourceLoc{mCompiled->path, 0, 0};
-    auto refuse = [&](const std::string& why) {
-        diagnostics.report(fx::Diagnostic{fx::DiagId::TypeMismatch, fx::Severity::Error, where, why});
+    auto refuse = [&](fx::DiagId id, const std::vector<std::string>& args) {
+        diagnostics.report(id, where, args);
         return false;
     };
     if (!desc || isRenderTarget(*desc) || desc->type == fx::BaseType::Texture3D ||
         desc->type == fx::BaseType::Texture2DMS)
-        return refuse("setTexture: parameter " + std::to_string(index) +
-                      " is not a 2D, cube or array texture that passes only read");
+        return refuse(fx::DiagId::SetTextureNotReadTexture, {std::to_string(index)});
     const bool cube = desc->type == fx::BaseType::TextureCube || desc->type == fx::BaseType::TextureCubeArray;
     const int elements = isArrayType(desc->type) ? data.elements : 1;
     const size_t layers = static_cast<size_t>(std::max(elements, 0)) * (cube ? 6 : 1);
@@ -500,9 +496,8 @@ bool EffectResources::setTexture(size_t index, const TextureData& data, fx::Diag
         (desc->type != fx::BaseType::Texture1DArray || data.height == 1) &&
         data.rgba.size() == static_cast<size_t>(data.width) * static_cast<size_t>(data.height) * layers * 4;
     if (!sizeOk)
-        return refuse("setTexture: '" + parameterInfo()[index].name + "' (" +
-                      parameterInfo()[index].type.hlslName() + ") needs width x height x " +
-                      (cube ? "6 faces x " : "") + "elements RGBA texels" + (cube ? ", square faces" : ""));
+        return refuse(cube ? fx::DiagId::SetCubeTextureDataSize : fx::DiagId::SetTextureDataSize,
+                      {parameterInfo()[index].name, parameterInfo()[index].type.hlslName()});
     const int levels = desc->mipLevels == 1 ? 1 : 0;
     const fx::TextureFormat format = fx::TextureFormat::RGBA32F;
     const size_t layerFloats = static_cast<size_t>(data.width) * static_cast<size_t>(data.height) * 4;
@@ -535,11 +530,8 @@ bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
         if (type.base == fx::BaseType::Buffer) {
             const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
             if (!texel) {
-                diagnostics.report(
-                    fx::DiagId::UnsupportedFeature, parameterInfo()[i].loc,
-                    {"Buffer<" + type.templateArgs +
-                     ">: GL buffer textures hold 32-bit float, int and uint elements of 1 to 4 "
-                     "components"});
+                diagnostics.report(fx::DiagId::BufferElementUnsupported, parameterInfo()[i].loc,
+                                   {type.templateArgs});
                 return false;
             }
             buffers[i] = GpuBuffer::create(nullptr, texel->bytes, texel->format);
@@ -554,32 +546,34 @@ bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
 bool EffectResources::setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                                 fx::DiagnosticSink& diagnostics) {
     const bool isBuffer = index < parameterInfo().size() && parameterInfo()[index].type.isBuffer();
-    auto refuse = [&](const std::string& why) {
+    auto refuse = [&](fx::DiagId id, const std::vector<std::string>& args) {
         const fx::SourceLoc where = index < parameterInfo().size() ? parameterInfo()[index].loc
                                                                    : fx::SourceLoc{mCompiled->path, 0, 0};
-        diagnostics.report(fx::Diagnostic{fx::DiagId::TypeMismatch, fx::Severity::Error, where, why});
+        diagnostics.report(id, where, args);
         return false;
     };
-    if (!isBuffer)
-        return refuse("setBuffer: parameter " + std::to_string(index) +
-                      " is not a Buffer, StructuredBuffer or ByteAddressBuffer");
+    if (!isBuffer) return refuse(fx::DiagId::SetBufferNotBuffer, {std::to_string(index)});
     const fx::TypeDesc& type = parameterInfo()[index].type;
-    const std::string what = "setBuffer: '" + parameterInfo()[index].name + "' (" + type.hlslName() + ") ";
+    const std::vector<std::string> what = {parameterInfo()[index].name, type.hlslName()};
+    const auto withSize = [&](size_t elementSize) {
+        std::vector<std::string> args = what;
+        args.push_back(std::to_string(elementSize));
+        return args;
+    };
     if ((bytes == nullptr && elements > 0) || elements > (size_t(1) << 28) || elementBytes > 65536)
-        return refuse(what + "got no bytes or too many");
+        return refuse(fx::DiagId::SetBufferByteCount, what);
     const size_t total = elements * elementBytes;
     if (type.base == fx::BaseType::Buffer) {
         const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
         if (!texel || elementBytes != texel->bytes)
-            return refuse(what + "takes elements of " + std::to_string(texel ? texel->bytes : 0) + " bytes");
+            return refuse(fx::DiagId::SetBufferElementSize, withSize(texel ? texel->bytes : 0));
         buffers[index] = GpuBuffer::create(bytes, total, texel->format);
     } else if (type.base == fx::BaseType::ByteAddressBuffer) {
-        if (total % 4 != 0) return refuse(what + "takes whole 32-bit words");
+        if (total % 4 != 0) return refuse(fx::DiagId::SetBufferWholeWords, what);
         buffers[index] = GpuBuffer::create(bytes, total);
     } else if (const fx::StorageBufferBinding* layout = storageLayout(*mCompiled, index)) {
         if (elementBytes != layout->d3dStride)
-            return refuse(what + "takes elements of " + std::to_string(layout->d3dStride) +
-                          " bytes (its members packed as D3D packs them)");
+            return refuse(fx::DiagId::SetBufferPackedElementSize, withSize(layout->d3dStride));
         // From D3D's packing to the GL block's (std430 aligns vectors and pads elements).
         std::vector<uint8_t> packed(elements * layout->glStride, 0);
         const auto* in = static_cast<const uint8_t*>(bytes);

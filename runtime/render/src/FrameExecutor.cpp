@@ -144,9 +144,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     GpuProgram* program = mResources.programs[mTechnique][passIndex].get();
     if (!program || !program->hasShaders()) {
         if (mWarnedPasses.insert(passIndex).second) {
-            mDiagnostics.report(
-                fx::Diagnostic{fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass.loc,
-                               "pass '" + pass.name + "' draws but has no vertex and pixel shader; skipped"});
+            mDiagnostics.report(fx::DiagId::PassWithoutShaders, pass.loc, {pass.name});
         }
         return;
     }
@@ -367,14 +365,9 @@ bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
         } else if (pass && mWarnedDepthSizes.insert(pass).second) {
             const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
             const glm::ivec2 depthSize = depthTargetSize();
-            mDiagnostics.report(fx::Diagnostic{
-                fx::DiagId::UnsupportedFeature, fx::Severity::Warning, pass->loc,
-                "pass '" + pass->name + "' tests depth or stencil in a " +
-                    size(mTargets.width(), mTargets.height()) + " colour target with a smaller " +
-                    size(depthSize.x, depthSize.y) +
-                    " depth-stencil target: only their overlap is drawn (D3D9 requires the depth-stencil "
-                    "surface to be at least as large; set RenderDepthStencilTarget to one of the colour "
-                    "target's size)"});
+            mDiagnostics.report(
+                fx::DiagId::DepthTargetSmaller, pass->loc,
+                {pass->name, size(mTargets.width(), mTargets.height()), size(depthSize.x, depthSize.y)});
         }
     }
     if (!mResources.framebuffers.bind(targets, error)) {

@@ -304,10 +304,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
             if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
                 mTunables.lispsmN = *choice;
             } else {
-                diagnostics.report(
-                    fx::DiagId::TypeMismatch, parameter.loc,
-                    {"'" + values[i].string + "' is not a choice of LiSPSM's n for parameter '" +
-                     parameter.name + "' (expected \"Scherzer2005\" or \"Wimmer2004\")"});
+                diagnostics.report(fx::DiagId::LispsmChoiceInvalid, parameter.loc,
+                                   {values[i].string, parameter.name});
             }
         }
         const std::string& lightName = parameter.light;
