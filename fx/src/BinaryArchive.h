@@ -3,9 +3,10 @@
 // (CompiledEffectFields.h) and a field added there is written and read alike.
 //
 // Encoding: integers and enums as fixed-width little-endian (bool and uint8_t one byte, other integers
-// and enums four or eight bytes), floats by their IEEE bit pattern, strings and vectors as a uint32_t
-// count followed by the elements, an optional as a byte (0 absent, 1 present) and the value. The reader
-// never reads past its input: a count larger than the bytes left, or a read past the end, fails it
+// and enums four or eight bytes; an enum with an EnumByName specialization as its enumerator's name), floats
+// by their IEEE bit pattern, strings and vectors as a uint32_t count followed by the elements, an optional as
+// a byte (0 absent, 1 present) and the value. The reader never reads past its input: a count larger than the
+// bytes left, or a read past the end, fails it
 // (`failed()`, with the byte offset and what it was reading) and every later read yields zeros.
 #pragma once
 
@@ -21,9 +22,17 @@
 
 namespace fx::detail {
 
-// The largest enumerator a reader accepts for each enum it reads (CompiledEffectFields.h specializes it).
+// The largest enumerator a reader accepts for each enum it reads by number (CompiledEffectFields.h
+// specializes it).
 template <class E>
 struct EnumLimit;
+
+// Enums stored by their enumerators' names, not numbers: the long tables that grow with the language
+// (diagnostic ids, render states), so that an enumerator inserted mid-table does not change what an older
+// file means. A specialization provides `static std::string_view name(E)` and
+// `static std::optional<E> find(std::string_view)`.
+template <class E>
+struct EnumByName : std::false_type {};
 
 class BinaryWriter {
 public:
@@ -33,6 +42,8 @@ public:
     void operator()(const T& value) {
         if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, uint8_t>) {
             mBytes.push_back(static_cast<char>(value));
+        } else if constexpr (EnumByName<T>::value) {
+            (*this)(std::string(EnumByName<T>::name(value)));
         } else if constexpr (std::is_enum_v<T>) {
             integer(static_cast<uint32_t>(value), 4);
         } else if constexpr (std::is_same_v<T, float>) {
@@ -102,6 +113,15 @@ public:
             value = byte == 1;
         } else if constexpr (std::is_same_v<T, uint8_t>) {
             value = static_cast<uint8_t>(integer(1, "a byte"));
+        } else if constexpr (EnumByName<T>::value) {
+            std::string name;
+            (*this)(name);
+            if (const std::optional<T> found = EnumByName<T>::find(name)) {
+                value = *found;
+            } else {
+                fail("an enumerator this shadowfx does not know ('" + name + "')");
+                value = T{};
+            }
         } else if constexpr (std::is_enum_v<T>) {
             const uint64_t raw = integer(4, "an enumerator");
             if (raw > static_cast<uint64_t>(EnumLimit<T>::kLast)) {

@@ -9,18 +9,32 @@
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
+#include <fx/RenderStates.h>
 
 #include <algorithm>
+#include <optional>
+#include <string_view>
 
 namespace fx::detail {
 
 // [SECTION] Enumerators the reader accepts
 
-inline constexpr uint32_t kDiagnosticCount = 0
-#define FX_DIAGNOSTIC(id, severity, text) +1
-#include <fx/DiagnosticDefs.h>
-    ;
+// By name: the tables that grow with the language. A new diagnostic or render state, wherever it goes in
+// its table, leaves older files readable and meaning what they meant.
+template <>
+struct EnumByName<DiagId> : std::true_type {
+    static std::string_view name(DiagId id) { return diagnosticName(id); }
+    static std::optional<DiagId> find(std::string_view name) { return findDiagnostic(name); }
+};
+template <>
+struct EnumByName<RenderStateId> : std::true_type {
+    static std::string_view name(RenderStateId id) { return renderStateInfo(id).name; }
+    static std::optional<RenderStateId> find(std::string_view name) { return findRenderState(name); }
+};
 
+// By number: the short enums of the compiled effect's own structures. Their lengths are pinned to the
+// format version below, so that an enumerator added, removed or moved fails the build here until the
+// version is raised: an older file is then refused, never read with other meanings.
 template <class E, E last>
 struct EnumLast {
     static constexpr E kLast = last;
@@ -52,9 +66,6 @@ struct EnumLimit<BaseType> : EnumLast<BaseType, BaseType::Struct> {};
 template <>
 struct EnumLimit<Shape> : EnumLast<Shape, Shape::Matrix> {};
 template <>
-struct EnumLimit<RenderStateId>
-    : EnumLast<RenderStateId, static_cast<RenderStateId>(static_cast<int>(RenderStateId::Count) - 1)> {};
-template <>
 struct EnumLimit<ScriptCommand::Kind> : EnumLast<ScriptCommand::Kind, ScriptCommand::Kind::ScriptSignature> {
 };
 template <>
@@ -69,8 +80,29 @@ struct EnumLimit<PreshaderProgram::Instruction::Op>
 template <>
 struct EnumLimit<PreshaderProgram::Instruction::Operator>
     : EnumLast<PreshaderProgram::Instruction::Operator, PreshaderProgram::Instruction::Operator::Unknown> {};
-template <>
-struct EnumLimit<DiagId> : EnumLast<DiagId, static_cast<DiagId>(kDiagnosticCount - 1)> {};
+
+template <class E>
+constexpr int enumLength() {
+    return static_cast<int>(EnumLimit<E>::kLast) + 1;
+}
+static_assert(kCompiledEffectFormatVersion == 3,
+              "the enum lengths below were pinned at format version 3: re-pin them with the new version");
+static_assert(enumLength<ShaderStage>() == 5);
+static_assert(enumLength<UniformBinding::Source>() == 2);
+static_assert(enumLength<VertexStream>() == 8);
+static_assert(enumLength<LeaveOutCondition>() == 3);
+static_assert(enumLength<CompiledPass::DrawPrimitive>() == 4);
+static_assert(enumLength<StreamOutElement::Component>() == 3);
+static_assert(enumLength<StreamOutput::Primitive>() == 3);
+static_assert(enumLength<TextureFormat>() == 12);
+static_assert(enumLength<TextureDesc::Kind>() == 5);
+static_assert(enumLength<BaseType>() == 39);
+static_assert(enumLength<Shape>() == 3);
+static_assert(enumLength<ScriptCommand::Kind>() == 18);
+static_assert(enumLength<ScriptCommand::ClearWhat>() == 3);
+static_assert(enumLength<ScriptCommand::DrawWhat>() == 2);
+static_assert(enumLength<PreshaderProgram::Instruction::Op>() == 12);
+static_assert(enumLength<PreshaderProgram::Instruction::Operator>() == 22);
 
 // [SECTION] Size checks: a field added to a struct changes its size; list it below, then update the size.
 // (x86-64 with libstdc++, the platform the project builds on.)

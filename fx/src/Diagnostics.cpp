@@ -36,6 +36,11 @@ Severity defaultSeverity(DiagId id) {
 std::string_view diagnosticTemplate(DiagId id) {
     return kDiagInfo[static_cast<size_t>(id)].text;
 }
+std::optional<DiagId> findDiagnostic(std::string_view name) {
+    for (size_t i = 0; i < std::size(kDiagInfo); ++i)
+        if (kDiagInfo[i].name == name) return static_cast<DiagId>(i);
+    return std::nullopt;
+}
 
 std::string_view severityName(Severity severity) {
     switch (severity) {

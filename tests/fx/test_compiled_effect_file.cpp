@@ -2,6 +2,7 @@
 // nothing lost, and a truncated, corrupt or newer file is a located error, never a crash.
 #include <fx/CompiledEffectFile.h>
 #include <fx/EffectFile.h>
+#include <fx/RenderStates.h>
 
 #include <gtest/gtest.h>
 
@@ -177,6 +178,33 @@ TEST_F(DamagedFile, SourceTextIsNotACompiledEffect) {
               "writes one)");
     EXPECT_FALSE(hasCompiledEffectMagic("SFXO"));
     EXPECT_TRUE(hasCompiledEffectMagic(mBytes));
+}
+
+// Render states are stored by name, so a state added to the table cannot change what an older file sets;
+// a name this shadowfx does not know (a file from a newer one) is named in the error.
+TEST(CompiledEffectFile, AnUnknownRenderStateNameIsNamed) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compileShipped("effects/thesis_fxcomposer.fx", diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string file = serializeCompiledEffect(*compiled);
+    std::string content = file.substr(28);
+
+    const std::string name(renderStateInfo(RenderStateId::BlendOp).name);
+    const std::string stored = std::string(1, static_cast<char>(name.size())) + std::string(3, '\0') + name;
+    const size_t at = content.find(stored);
+    ASSERT_NE(at, std::string::npos) << "BlendOp is not stored by its name";
+    const std::string unknown(name.size(), 'Q');
+    content.replace(at + 4, name.size(), unknown);
+
+    const std::string error = readError(compiledEffectFileAround(content), DiagId::CompiledEffectCorrupt);
+    EXPECT_NE(error.find("an enumerator this shadowfx does not know ('" + unknown + "')"), std::string::npos)
+        << error;
+}
+
+TEST(CompiledEffectFile, DiagnosticIdsAreFoundByName) {
+    for (DiagId id : {DiagId::NotCompiledEffect, DiagId::CompiledEffectCorrupt})
+        EXPECT_EQ(findDiagnostic(diagnosticName(id)), id);
+    EXPECT_FALSE(findDiagnostic("NoSuchDiagnostic"));
 }
 
 TEST_F(DamagedFile, TrailingBytesAreCorrupt) {

@@ -10,8 +10,8 @@
 //
 // A file that is truncated, corrupt, or of another format version is a located error
 // (`file.sfxo: error: ...`), never a crash: reading checks every length against the bytes left, every
-// enumerator against its range, and every index the runtime follows (parameters, passes, preshader
-// operands, uniform block ranges) against what it indexes.
+// enumerator against its range or its name, and every index the runtime follows (parameters, passes,
+// preshader operands, uniform block ranges) against what it indexes.
 #pragma once
 
 #include <fx/CompiledEffect.h>
@@ -24,8 +24,9 @@
 
 namespace fx {
 
-// Raised whenever the content changes shape (a field added, removed or reordered).
-inline constexpr uint32_t kCompiledEffectFormatVersion = 2;
+// Raised whenever the content changes shape (a field added, removed or reordered) or an enum stored by
+// number changes its list (fx/src/CompiledEffectFields.h pins their lengths to this version).
+inline constexpr uint32_t kCompiledEffectFormatVersion = 3;
 
 // Whether `bytes` begin with the compiled effect magic: how loaders tell a .sfxo from an .fx source,
 // whatever the file's name.

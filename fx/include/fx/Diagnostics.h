@@ -4,6 +4,7 @@
 
 #include <fx/SourceLoc.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,8 @@ struct Diagnostic {
 std::string_view diagnosticName(DiagId id);
 Severity defaultSeverity(DiagId id);
 std::string_view diagnosticTemplate(DiagId id);
+// The id of a stable name; none if this shadowfx has no such id.
+std::optional<DiagId> findDiagnostic(std::string_view name);
 std::string_view severityName(Severity severity);  // "error", "warning", "note"
 
 // Fills {0}, {1}, ... in the id's template.
