@@ -8,6 +8,7 @@
 //   shadowfx bench merge OUT DIR...                      join --shard outputs (BenchMergeCommand)
 //   shadowfx check EFFECT.fx [...]                       expectations, goldens, JUnit (CheckCommand)
 //   shadowfx stress [EFFECT.fx ...] [--reduced]          extreme configurations (StressCommand)
+//   shadowfx tune EFFECT.fx --technique T --scenes ...   best tweakables within a time budget (TuneCommand)
 //   shadowfx view EFFECT.fx [...]                        window, hot reload, parameters (ViewCommand)
 //   shadowfx new NAME [--from pcf|vsm|minimal]           a technique skeleton NAME.fx (NewCommand)
 #include "BenchCommand.h"
@@ -16,6 +17,7 @@
 #include "CommandLine.h"
 #include "NewCommand.h"
 #include "StressCommand.h"
+#include "TuneCommand.h"
 #include "ViewCommand.h"
 
 #include <fx/CompiledEffectFile.h>
@@ -317,6 +319,14 @@ const shadowfx::cli::Command kCommands[] = {
      {"--reduced", "--list", "--strict"},
      shadowfx::cli::stressCommand,
      -1},
+    {"tune",
+     "search a technique's tweakables for the least shadow error within a frame-time budget",
+     shadowfx::cli::kTuneUsage,
+     {"--technique", "--scenes", "--out"},
+     {"--budget-ms", "--evaluations", "--grid", "--map-size", "--frames", "--warmup", "--width", "--height",
+      "--backend", "--area-samples", "--truth-cache", "-I", "-D"},
+     {},
+     shadowfx::cli::tuneCommand},
     {"view",
      "open an effect in a window: hot reload, error overlay, parameters, render targets",
      shadowfx::cli::kViewUsage,
