@@ -25,7 +25,8 @@ float3 LightColor : LightColor <string Object = "light0"; string UIWidget = "non
 float3 AmbientLightColor : Ambient <string UIWidget = "color";> = {0.15, 0.15, 0.15};
 float3 SurfaceColor : Diffuse <string UIWidget = "none";> = {0.8, 0.8, 0.8};
 
-float SpecularPower <string UIWidget = "slider"; float UIMin = 1.0; float UIMax = 128.0;> = 32.0;
+// Shading, not shadowing: `shadowfx tune` leaves it as it is (Tune = false).
+float SpecularPower <string UIWidget = "slider"; float UIMin = 1.0; float UIMax = 128.0; bool Tune = false;> = 32.0;
 float SpecularFactor = 0.4;
 float4 ClearColor <string UIWidget = "color";> = {0.32, 0.36, 0.42, 1.0};
 float ClearDepth <string UIWidget = "none";> = 1.0;
