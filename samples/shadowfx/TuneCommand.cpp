@@ -3,7 +3,8 @@
 // parameter, and is measured as one `bench` sweep of that parameter, the others set: the same runs, truth and
 // scoring as `bench` (BenchCommand.cpp), with the ray-cast truth cast once and read from --truth-cache after.
 // The runs of every batch make the output's results.json, report.md and error_vs_time.svg (a bench results
-// document with a `tune` section, report/BenchReport.h); the best setting is printed as a --set line.
+// document with a `tune` section, report/BenchReport.h), the search's settings error_surface.svg
+// (report/TuneSurfacePlot.h); the best setting is printed as a --set line.
 #include "TuneCommand.h"
 #include "BenchCommand.h"
 #include "TunableParameters.h"
@@ -12,6 +13,7 @@
 #include <runtime/ShadowMeasurement.h>
 #include <report/BenchReport.h>
 #include <report/TuneSearch.h>
+#include <report/TuneSurfacePlot.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -35,8 +37,8 @@ const char* const kTuneUsage =
     "  --frames N, --warmup N, --width W, --height H, --backend NAME, --area-samples N\n"
     "                        as bench's (defaults 5, 1, 640x480, auto, 256)\n"
     "  --truth-cache DIR     where the ray-cast truth is kept between batches (default DIR/truth-cache)\n"
-    "  --out DIR             results.json, report.md, error_vs_time.svg, best.txt; each batch's bench\n"
-    "                        output under DIR/batches/\n"
+    "  --out DIR             results.json, report.md, error_vs_time.svg, error_surface.svg, best.txt;\n"
+    "                        each batch's bench output under DIR/batches/\n"
     "The best setting is printed on stdout as `--set NAME=VALUE ...`, which render, bench and check take.\n";
 
 namespace {
@@ -253,6 +255,9 @@ int tuneCommand(const Arguments& args) {
         std::cerr << "shadowfx tune: " << writeError << "\n";
         return 1;
     }
+    if (std::string surfaceError; !report::writeTuneSurfacePlot((outDir / "error_surface.svg").string(),
+                                                                parameters, result, surfaceError))
+        std::cerr << "tune: " << surfaceError << ": no error_surface.svg\n";
     if (!result.best) {
         double fastest = result.evaluations.front().score.frameMs;
         for (const report::TuneEvaluation& e : result.evaluations)

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace shadowfx::test {
@@ -60,6 +61,10 @@ TEST(Tune, TheBestSettingIsNoWorseThanTheEffectsOwnAndReproducible) {
     EXPECT_EQ(search["evaluations"][0]["setting"], (Json{{"Bias", "0.003"}, {"SlopeScale", "2"}}));
     EXPECT_EQ(results["runs"].size(), search["evaluations"].size());
     EXPECT_TRUE(std::filesystem::exists(out / "error_vs_time.svg"));
+    std::ifstream surface(out / "error_surface.svg");
+    const std::string svg((std::istreambuf_iterator<char>(surface)), std::istreambuf_iterator<char>());
+    EXPECT_NE(svg.find("Bias</text>"), std::string::npos);
+    EXPECT_NE(svg.find("SlopeScale</text>"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(out / "report.md"));
 
     ASSERT_TRUE(search["best"].is_number_integer());
