@@ -66,6 +66,7 @@ struct Batches {
     const std::string& effect;
     const std::string& technique;
     const std::vector<report::TuneParameter>& parameters;
+    int mapSize;
     std::filesystem::path outDir;
     std::string truthCache;
     Json first;  // the first batch's results: the document's header
@@ -82,7 +83,7 @@ struct Batches {
         if (args.value("--warmup").empty()) bench.add("--warmup", "1");
         bench.add("--effects", effect);
         bench.add("--techniques", technique);
-        bench.add("--map-sizes", args.value("--map-size", "1024"));
+        bench.add("--map-sizes", std::to_string(mapSize));
         bench.add("--truth-cache", truthCache);
         const std::string name = "batches/" + std::to_string(count++);
         bench.add("--out", (outDir / name).string());
@@ -169,16 +170,17 @@ int tuneCommand(const Arguments& args) {
         }
         options.budgetMs = budget;
     }
-    if (options.evaluations < 1 || options.gridPoints < 2) {
-        std::cerr << "shadowfx tune: --evaluations must be >= 1 and --grid >= 2\n";
+    const int mapSize = args.intValue("--map-size", 1024);
+    if (options.evaluations < 1 || options.gridPoints < 2 || mapSize < 1 || mapSize > 16384) {
+        std::cerr
+            << "shadowfx tune: --evaluations must be >= 1, --grid >= 2 and --map-size between 1 and 16384\n";
         return 2;
     }
 
     // The effect compiled once here for its parameters; each batch's bench compiles it again, as bench does.
     runtime::DiagnosticLog sink([](const std::string& text) { std::cerr << text << "\n"; });
-    const std::shared_ptr<fx::CompiledEffect> compiled =
-        runtime::compileVariant(effect, effectParseOptions(args),
-                                {{"SHADOWFX_SHADOW_MAP_SIZE", args.value("--map-size", "1024")}}, sink);
+    const std::shared_ptr<fx::CompiledEffect> compiled = runtime::compileVariant(
+        effect, effectParseOptions(args), {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize)}}, sink);
     if (!compiled || sink.errors() > 0) return 1;
     const auto found = std::find_if(compiled->techniques.begin(), compiled->techniques.end(),
                                     [&](const fx::CompiledTechnique& t) { return t.name == technique; });
@@ -205,6 +207,7 @@ int tuneCommand(const Arguments& args) {
                     .effect = effect,
                     .technique = technique,
                     .parameters = parameters,
+                    .mapSize = mapSize,
                     .outDir = outDir,
                     .truthCache = args.value("--truth-cache", (outDir / "truth-cache").string()),
                     .first = Json(),
