@@ -36,6 +36,9 @@ const char* const kTuneUsage =
     "  --map-size N          shadow-map size, as bench's --map-sizes (default 1024)\n"
     "  --frames N, --warmup N, --width W, --height H, --backend NAME, --area-samples N\n"
     "                        as bench's (defaults 5, 1, 640x480, auto, 256)\n"
+    "  --area-radius R, --light-angle-to-view G\n"
+    "                        as bench's: every light given area radius R (a soft truth), every\n"
+    "                        directional light turned to G degrees from the view\n"
     "  --truth-cache DIR     where the ray-cast truth is kept between batches (default DIR/truth-cache)\n"
     "  --out DIR             results.json, report.md, error_vs_time.svg, error_surface.svg, best.txt;\n"
     "                        each batch's bench output under DIR/batches/\n"
@@ -77,7 +80,7 @@ struct Batches {
     bool measure(const std::vector<report::TuneSetting>& settings, std::vector<report::TuneScore>& scores) {
         Arguments bench;
         for (const char* option : {"--scenes", "--frames", "--warmup", "--width", "--height", "--backend",
-                                   "--area-samples", "-I", "-D"})
+                                   "--area-samples", "--area-radius", "--light-angle-to-view", "-I", "-D"})
             for (const std::string& value : args.all(option)) bench.add(option, value);
         if (args.value("--frames").empty()) bench.add("--frames", "5");
         if (args.value("--warmup").empty()) bench.add("--warmup", "1");

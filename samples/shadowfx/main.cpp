@@ -324,7 +324,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kTuneUsage,
      {"--technique", "--scenes", "--out"},
      {"--budget-ms", "--evaluations", "--grid", "--map-size", "--frames", "--warmup", "--width", "--height",
-      "--backend", "--area-samples", "--truth-cache", "-I", "-D"},
+      "--backend", "--area-samples", "--area-radius", "--light-angle-to-view", "--truth-cache", "-I", "-D"},
      {},
      shadowfx::cli::tuneCommand},
     {"view",
