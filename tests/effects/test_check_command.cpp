@@ -126,13 +126,10 @@ TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
     EXPECT_EQ(row(result.output, "lit", "boxes", "misclassified"), "")
         << "plain_lit declares ExpectShadows = false";
 
-    // Well-formed enough for a CI's reader: the declaration, balanced elements, counts that add up.
+    // A suite per effect and a case per check row; the XML's form is the report library's (its tests in
+    // tests/report/test_conformance_report.cpp).
     const std::string xml = readText(junit);
-    ASSERT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>", 0), 0u) << xml;
-    EXPECT_EQ(occurrences(xml, "<testsuites "), 1);
-    EXPECT_EQ(occurrences(xml, "</testsuites>"), 1);
     EXPECT_EQ(occurrences(xml, "<testsuite "), 2);
-    EXPECT_EQ(occurrences(xml, "</testsuite>"), 2);
     const long testcases = occurrences(xml, "<testcase ");
     // thesis: 3 techniques (main, its D3D11 twin main11, hardware) x 2 scenes x (render, misclassified,
     // golden); plain_lit: 2 scenes x (render, golden)
@@ -140,8 +137,6 @@ TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
     EXPECT_EQ(attribute(xml, "testsuites", "tests"), testcases);
     EXPECT_EQ(attribute(xml, "testsuites", "failures"), 0);
     EXPECT_EQ(occurrences(xml, "<failure "), 0);
-    // Every opened <testcase> is closed: either self-closing or by </testcase>.
-    EXPECT_EQ(occurrences(xml, "<testcase ") - occurrences(xml, "</testcase>"), occurrences(xml, "\"/>\n"));
     fs::remove(junit);
 }
 
