@@ -1,13 +1,13 @@
 // ConformanceRun: see ConformanceRun.h.
 //
-// [SECTION] Expectations  the Expect* annotations of a technique
-// [SECTION] Goldens       where a technique's golden image for a renderer lives, and --update
 // [SECTION] Frame checks  NaN/Inf in render targets, blank or constant frames
 // [SECTION] Runs          compile once, then per backend: ground truth per scene, render, check
 #include <runtime/ConformanceRun.h>
 
+#include "CheckExpectations.h"
+#include "GoldenImages.h"
+
 #include <fx/EffectCompiler.h>
-#include <fx/Preshader.h>
 #include <report/NumberFormat.h>
 #include <runtime/DiagnosticLog.h>
 #include <runtime/EffectRenderer.h>
@@ -20,11 +20,8 @@
 #include <runtime/TruthCache.h>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <unordered_map>
 
 namespace runtime {
@@ -37,228 +34,6 @@ using report::kBlankFrame;
 using report::kWarnFraction;
 using Outcome = report::CheckOutcome;
 
-// ExpectScenes and per-scene bounds are comma-separated lists: "dual-l, teapot", "dual-l=0.25, teapot=0.12".
-std::vector<std::string> commaSeparated(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
-// [SECTION] Expectations
-
-// A scene as the table and per-scene bounds name it: a scene file's stem, a built-in scene's name.
-std::string sceneLabel(const std::string& scene) {
-    return scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0
-               ? std::filesystem::path(scene).stem().string()
-               : scene;
-}
-
-// A bound for every scene, or one per scene where a technique's error differs by scene (a number, or a
-// string "dual-l=0.25, teapot=0.12").
-struct SceneBound {
-    std::optional<double> everyScene;
-    std::map<std::string, double> perScene;  // by scene label (a scene file's stem)
-
-    bool declared() const { return everyScene || !perScene.empty(); }
-    std::optional<double> forScene(const std::string& scene) const {
-        if (everyScene) return everyScene;
-        const auto found = perScene.find(scene);
-        return found == perScene.end() ? std::nullopt : std::optional<double>(found->second);
-    }
-};
-
-struct Expectations {
-    std::vector<std::string> scenes{"boxes"};
-    SceneBound misclassifiedBelow;    // percent of receiver pixels
-    SceneBound penumbraMaeBelow;      // mean |visibility - truth| over the penumbra, area lights
-    std::optional<float> areaRadius;  // light0's areaRadius for the penumbra check
-    std::optional<int> mapSize;       // SHADOWFX_SHADOW_MAP_SIZE for the check's renders
-    bool shadows = true;              // false: compile, render, non-blank and golden only
-};
-
-// Reads the Expect* annotations of `technique` (names case-insensitive, as annotation lookups are). A value
-// of the wrong kind or an unknown Expect* name is an InvalidAnnotation error at the annotation; false then.
-bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
-    bool ok = true;
-    // A misspelt expectation would silently check nothing.
-    static const std::set<std::string> kKnown{"expectscenes",           "expectmisclassifiedbelow",
-                                              "expectpenumbramaebelow", "expectarearadius",
-                                              "expectmapsize",          "expectshadows"};
-    for (const fx::Annotation& a : technique.annotations) {
-        std::string lower = a.name;
-        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (lower.rfind("expect", 0) == 0 && kKnown.count(lower) == 0) {
-            sink.report(fx::DiagId::InvalidAnnotation, a.loc,
-                        {a.name,
-                         "not an expectation shadowfx check knows (ExpectScenes, ExpectMisclassifiedBelow, "
-                         "ExpectPenumbraMaeBelow, ExpectAreaRadius, ExpectMapSize, ExpectShadows)"});
-            ok = false;
-        }
-    }
-    auto number = [&](const char* name) -> std::optional<double> {
-        const fx::Annotation* a = technique.annotation(name);
-        if (!a) return std::nullopt;
-        const fx::TypeDesc scalar;  // float
-        std::optional<fx::Value> value =
-            a->value.kind == fx::Expr::Kind::String
-                ? std::nullopt
-                : fx::evaluate(
-                      a->value, [](std::string_view) -> const fx::Value* { return nullptr; }, &scalar,
-                      nullptr);
-        if (!value || !std::isfinite(value->asFloat())) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, "expected a number"});
-            ok = false;
-            return std::nullopt;
-        }
-        return value->asFloat();
-    };
-    if (const fx::Annotation* a = technique.annotation("ExpectScenes")) {
-        if (a->value.kind != fx::Expr::Kind::String || commaSeparated(a->value.text).empty()) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc,
-                        {"ExpectScenes", "expected a string of comma-separated scene names or .json files"});
-            ok = false;
-        } else {
-            out.scenes = commaSeparated(a->value.text);
-            for (std::string& scene : out.scenes) {
-                scene.erase(0, scene.find_first_not_of(" \t"));
-                scene.erase(scene.find_last_not_of(" \t") + 1);
-            }
-        }
-    }
-    // A number, or "scene=bound, ..." naming each scene of ExpectScenes once (a misspelt or forgotten scene
-    // would silently check nothing).
-    auto bound = [&](const char* name) {
-        SceneBound result;
-        const fx::Annotation* a = technique.annotation(name);
-        if (!a || a->value.kind != fx::Expr::Kind::String) {
-            result.everyScene = number(name);
-            return result;
-        }
-        auto invalid = [&](const std::string& why) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, why});
-            ok = false;
-            return SceneBound{};
-        };
-        for (std::string entry : commaSeparated(a->value.text)) {
-            const size_t eq = entry.find('=');
-            std::string scene = entry.substr(0, eq);
-            scene.erase(0, scene.find_first_not_of(" \t"));
-            scene.erase(scene.find_last_not_of(" \t") + 1);
-            const std::string text = eq == std::string::npos ? "" : entry.substr(eq + 1);
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            if (scene.empty() || text.empty() || *end != '\0' || !std::isfinite(value))
-                return invalid("expected a number, or per-scene bounds \"SCENE=BOUND, ...\", got '" + entry +
-                               "'");
-            const std::string label = sceneLabel(scene);
-            if (std::none_of(out.scenes.begin(), out.scenes.end(),
-                             [&](const std::string& listed) { return sceneLabel(listed) == label; }))
-                return invalid("scene '" + scene + "' is not one of ExpectScenes");
-            if (!result.perScene.emplace(label, value).second)
-                return invalid("scene '" + scene + "' is given twice");
-        }
-        for (const std::string& listed : out.scenes)
-            if (result.perScene.count(sceneLabel(listed)) == 0)
-                return invalid("no bound for scene '" + listed + "' of ExpectScenes");
-        return result;
-    };
-    out.misclassifiedBelow = bound("ExpectMisclassifiedBelow");
-    out.penumbraMaeBelow = bound("ExpectPenumbraMaeBelow");
-    if (std::optional<double> radius = number("ExpectAreaRadius")) {
-        if (!(*radius > 0.0 && *radius < 1e6)) {
-            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectAreaRadius")->loc,
-                        {"ExpectAreaRadius", "expected a radius above 0"});
-            ok = false;
-        } else {
-            out.areaRadius = static_cast<float>(*radius);
-        }
-    }
-    if (std::optional<double> size = number("ExpectMapSize")) {
-        if (*size < 1 || *size > 16384 || *size != std::floor(*size)) {
-            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectMapSize")->loc,
-                        {"ExpectMapSize", "expected an integer between 1 and 16384"});
-            ok = false;
-        } else {
-            out.mapSize = static_cast<int>(*size);
-        }
-    }
-    if (std::optional<double> shadows = number("ExpectShadows")) out.shadows = *shadows != 0.0;
-    return ok;
-}
-
-// [SECTION] Goldens
-//
-// EFFECT_DIR/golden/EFFECT/renderer.txt names the renderer key the plain goldens were made with (its first
-// line; the second records the full GL_RENDERER string). A technique's goldens are
-// golden/EFFECT/TECHNIQUE/SCENE.png for that renderer and SCENE.KEY.png for any other renderer KEY; a
-// renderer with neither is NOT_SUPPORTED (FAIL with --require-goldens). The key is the first word of
-// GL_RENDERER in lower case ("llvmpipe (LLVM 15.0.6, 256 bits)" -> llvmpipe): OSMesa and EGL on Mesa's
-// llvmpipe share one set.
-
-std::string rendererKey(const std::string& glRenderer) {
-    std::string key;
-    for (char c : glRenderer) {
-        if (std::isalnum(static_cast<unsigned char>(c))) {
-            key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        } else if (!key.empty()) {
-            break;
-        }
-    }
-    return key.empty() ? "unknown" : key;
-}
-
-std::string safeName(std::string text) {
-    for (char& c : text)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
-    return text;
-}
-
-struct GoldenPlace {
-    std::filesystem::path path;   // where the golden is or would be
-    bool forThisRenderer = true;  // false: the renderer has no goldens (NOT_SUPPORTED)
-    std::string note;             // why not
-};
-
-std::string readRendererKey(const std::filesystem::path& effectGoldens) {
-    std::ifstream file(effectGoldens / "renderer.txt");
-    std::string key;
-    std::getline(file, key);
-    key.erase(key.find_last_not_of(" \t\r") + 1);
-    return key;
-}
-
-GoldenPlace findGolden(const std::filesystem::path& effectGoldens, const std::string& technique,
-                       const std::string& scene, const std::string& key) {
-    const std::filesystem::path folder = effectGoldens / safeName(technique);
-    GoldenPlace place;
-    place.path = folder / (safeName(scene) + "." + key + ".png");
-    if (std::filesystem::exists(place.path)) return place;
-    const std::string referenceKey = readRendererKey(effectGoldens);
-    place.path = folder / (safeName(scene) + ".png");
-    if (referenceKey.empty() || referenceKey == key) return place;  // missing renderer.txt: made for us
-    place.forThisRenderer = false;
-    place.note = "no goldens for renderer '" + key + "' (they were made with '" + referenceKey + "')";
-    return place;
-}
-
-// Where --update writes: the plain name for the reference renderer (the first to write, recorded in
-// renderer.txt), SCENE.KEY.png for any other.
-std::filesystem::path goldenToWrite(const std::filesystem::path& effectGoldens, const std::string& technique,
-                                    const std::string& scene, const std::string& key,
-                                    const std::string& glRenderer) {
-    std::string referenceKey = readRendererKey(effectGoldens);
-    if (referenceKey.empty()) {
-        std::filesystem::create_directories(effectGoldens);
-        std::ofstream(effectGoldens / "renderer.txt") << key << "\n# made with: " << glRenderer << "\n";
-        referenceKey = key;
-    }
-    const std::filesystem::path folder = effectGoldens / safeName(technique);
-    std::filesystem::create_directories(folder);
-    return folder / (safeName(scene) + (referenceKey == key ? "" : "." + key) + ".png");
-}
-
 // [SECTION] Frame checks
 
 // The first render target holding NaN or Inf, as "render target NAME holds N NaN/Inf values"; "" if none
@@ -269,8 +44,9 @@ std::string nonFiniteTargets(const EffectRenderer& renderer) {
     return "render target " + found->texture + " holds " + std::to_string(found->count) + " NaN/Inf values";
 }
 
-// "" if the frame shows something; else why it is blank (beginning with report::kBlankFrame): one colour everywhere, or fewer than 0.1% of the
-// pixels differ from the most common colour (the clear colour, in practice).
+// "" if the frame shows something; else why it is blank (beginning with report::kBlankFrame): one colour
+// everywhere, or fewer than 0.1% of the pixels differ from the most common colour (the clear colour, in
+// practice).
 std::string blankness(const FrameImage& frame) {
     std::unordered_map<uint32_t, size_t> counts;
     const size_t pixels = static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height);

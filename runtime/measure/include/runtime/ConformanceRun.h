@@ -3,13 +3,7 @@
 // render targets, a blank or constant frame, its Expect* annotations against the ray-cast ground truth
 // (docs/scoring.md) and its golden images (written instead with `update`). The rows go to
 // report/ConformanceReport.h; the images of a failure are written under `outDir` as it runs.
-//
-// Goldens: EFFECT_DIR/golden/EFFECT/renderer.txt names the renderer key the plain goldens were made with
-// (its first line; the second records the full GL_RENDERER string). A technique's goldens are
-// golden/EFFECT/TECHNIQUE/SCENE.png for that renderer and SCENE.KEY.png for any other renderer KEY; a
-// renderer with neither is NOT_SUPPORTED (FAIL with `requireGoldens`). The key is the first word of
-// GL_RENDERER in lower case ("llvmpipe (LLVM 15.0.6, 256 bits)" -> llvmpipe): OSMesa and EGL on Mesa's
-// llvmpipe share one set.
+// Where goldens live per renderer: docs/measurement.md, "shadowfx check".
 #pragma once
 
 #include <fx/EffectParser.h>
