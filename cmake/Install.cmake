@@ -10,10 +10,10 @@ include(CMakePackageConfigHelpers)
 set(SHADOWFX_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadowfx)
 
 # Installed side by side in a shared lib/, short names like libgl.a would mislead: libshadowfx_gl.a.
-foreach(library fxcontract fx scene assets lightspace gl render reload measure)
+foreach(library report fxcontract fx scene assets lightspace gl render reload measure)
   set_target_properties(${library} PROPERTIES OUTPUT_NAME shadowfx_${library})
 endforeach()
-foreach(component fxcontract fx scene assets lightspace gl render reload measure runtime)
+foreach(component report fxcontract fx scene assets lightspace gl render reload measure runtime)
   install(TARGETS ${component} EXPORT shadowfx-${component}
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
@@ -21,6 +21,7 @@ foreach(component fxcontract fx scene assets lightspace gl render reload measure
           FILE shadowfx-${component}-targets.cmake)
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/fx/include/fx DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/report/include/report DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
 foreach(library scene assets lightspace gl render reload measure)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/${library}/include/runtime
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)

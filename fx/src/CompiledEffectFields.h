@@ -60,7 +60,7 @@ struct EnumLimit<StreamOutput::Primitive>
 template <>
 struct EnumLimit<TextureFormat> : EnumLast<TextureFormat, TextureFormat::D32F> {};
 template <>
-struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Procedural> {};
+struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Function> {};
 template <>
 struct EnumLimit<BaseType> : EnumLast<BaseType, BaseType::Struct> {};
 template <>
@@ -85,8 +85,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 3,
-              "the enum lengths below were pinned at format version 3: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 4,
+              "the enum lengths below were pinned at format version 4: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 5);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
@@ -95,7 +95,7 @@ static_assert(enumLength<CompiledPass::DrawPrimitive>() == 4);
 static_assert(enumLength<StreamOutElement::Component>() == 3);
 static_assert(enumLength<StreamOutput::Primitive>() == 3);
 static_assert(enumLength<TextureFormat>() == 12);
-static_assert(enumLength<TextureDesc::Kind>() == 5);
+static_assert(enumLength<TextureDesc::Kind>() == 6);
 static_assert(enumLength<BaseType>() == 39);
 static_assert(enumLength<Shape>() == 3);
 static_assert(enumLength<ScriptCommand::Kind>() == 18);
@@ -128,7 +128,7 @@ static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
 static_assert(sizeof(CompiledPass) == 1696);
 static_assert(sizeof(CompiledTechnique) == 184);
-static_assert(sizeof(TextureDesc) == 160);
+static_assert(sizeof(TextureDesc) == 1872);
 static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(ParameterInfo) == 360);
@@ -249,7 +249,7 @@ void fields(A& a, CompiledTechnique& x) {
 template <class A>
 void fields(A& a, TextureDesc& x) {
     a(x.parameter, x.kind, x.type, x.format, x.arraySize, x.samples, x.width, x.height, x.viewportRatio);
-    a(x.mipLevels, x.resourceName, x.resolvedPath, x.seed, x.loc);
+    a(x.mipLevels, x.resourceName, x.resolvedPath, x.seed, x.depth, x.fill, x.loc);
 }
 template <class A>
 void fields(A& a, SamplerDesc& x) {

@@ -56,6 +56,16 @@ public:
                 if (sampler.parameter >= mParameters || (sampler.texture && *sampler.texture >= mParameters))
                     return "a sampler names no parameter";
         if (std::string error = script(mEffect.globalScript, 0); !error.empty()) return error;
+        for (const TextureDesc& texture : mEffect.textures)
+            if (texture.fill) {
+                if (std::string error = check(*texture.fill); !error.empty())
+                    return "a texture function's fill pass: " + error;
+                if (texture.fill->arguments.size() != 1)
+                    return "a texture function's fill pass: no fill argument";
+                if (texture.width < 1 || texture.width > 16384 || texture.height < 1 ||
+                    texture.height > 16384 || texture.depth < 1 || texture.depth > 2048)
+                    return "a texture function's texture size out of range";
+            }
         for (const CompiledTechnique& technique : mEffect.techniques) {
             if (std::string error = script(technique.script, technique.passes.size()); !error.empty())
                 return error;

@@ -6,6 +6,7 @@
 //   ScriptValidation.cpp     SAS scripts checked and resolved against the effect
 //   StageCompilation.cpp     lowering, the cache, glslang and SPIRV-Cross (in workers or here), reflection
 //   HlslMessages.cpp         glslang's and SPIRV-Cross's messages said at the user's source
+//   TextureFunction.cpp      FX Composer's texture functions, lowered to a fill pass per texture
 #pragma once
 
 #include <fx/CompileCache.h>
@@ -79,11 +80,17 @@ private:
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
     void validateScript(std::vector<ScriptCommand>& commands, const Technique* technique);
-    // A stage's place in mOut: technique and pass index.
+    // A stage's place in mOut: technique and pass index, or (technique kTextureFill) the texture whose
+    // fill pass it belongs to.
     struct PassSlot {
+        static constexpr size_t kTextureFill = static_cast<size_t>(-1);
         size_t technique = 0;
         size_t pass = 0;
     };
+    CompiledPass& passAt(PassSlot slot) {
+        return slot.technique == PassSlot::kTextureFill ? *mOut->textures[slot.pass].fill
+                                                        : mOut->techniques[slot.technique].passes[slot.pass];
+    }
     // A stage the cache did not have: compiled with all the others once every pass is lowered, so that
     // the stages of an effect compile concurrently across the worker pool.
     struct PendingStage {
@@ -93,6 +100,8 @@ private:
         size_t job = 0;  // index into mJobs (identical units share one job)
     };
     bool compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot);
+    // A lowered stage looked up in the cache, else queued for the compilers.
+    void enqueueStage(LoweredStage&& lowered, CompiledPass& pass, PassSlot slot);
     std::vector<StageOutcome> runJobs();
     void finishPendingStages();
     SourceLoc functionLocation(const LoweredStage& lowered) const;
@@ -123,6 +132,14 @@ private:
     // After every stage compiled: each request's varyings named as the GLSL declares the outputs.
     void resolveStreamOutputs();
     void unsupported(DiagId id, const SourceLoc& loc, const std::vector<std::string>& args);
+    // [SECTION] Texture functions (TextureFunction.cpp)
+    struct TextureFunctionRequest {
+        size_t texture;  // mOut->textures index
+        const FunctionDecl* function;
+        SourceLoc loc;  // the `function` annotation
+    };
+    void textureFunction(const Parameter& p, const Annotation& annotation, TextureDesc& t);
+    void lowerTextureFunctions();
 
     const Effect& mEffect;
     const CompileOptions& mOptions;
@@ -141,6 +158,7 @@ private:
     int mLastPositionVarying = -1;          // of the last geometry stage compileStage lowered
     std::string mLastStreamType;
     std::vector<StreamOutRequest> mStreamOutRequests;
+    std::vector<TextureFunctionRequest> mTextureFunctions;
     bool mFailed = false;
     // The diagnostics of the current technique's stages that the lowering could not express (a stage
     // form or a stream output GL has no counterpart for), held back until run() knows whether another

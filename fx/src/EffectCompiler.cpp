@@ -342,6 +342,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     if (!reportUnsupportedTechniques(invalid, !mOut->techniques.empty(), mDiagnostics,
                                      mOut->refusedTechniques))
         mFailed = true;
+    lowerTextureFunctions();
     finishPendingStages();
     resolveStreamOutputs();
     for (CompiledTechnique& technique : mOut->techniques)

@@ -108,30 +108,6 @@ SplitStatic splitStaticInitializer(const Effect& effect, const Parameter& p) {
     return {declaration + ";", p.name + " = " + value + ";"};
 }
 
-// Functions the entry point reaches (by name, over-approximated by identifiers in the bodies), plus any
-// named by static initializers and verbatim declarations. Unreached functions are not emitted, so that
-// editing one function only changes the units (and cache keys) of the passes that use it.
-std::set<std::string> reachableFunctions(const Effect& effect, const std::string& entry) {
-    std::set<std::string> names;
-    for (const FunctionDecl& f : effect.functions) names.insert(f.name);
-    std::set<std::string> reached{entry};
-    std::vector<std::string> work{entry};
-    auto visitText = [&](const std::string& text) {
-        for (const std::string& id : identifiersIn(text))
-            if (names.count(id) && reached.insert(id).second) work.push_back(id);
-    };
-    for (const Parameter& p : effect.parameters)
-        if (p.isStatic) visitText(p.hlslText);
-    for (const VerbatimDecl& v : effect.verbatim) visitText(v.hlslText);
-    while (!work.empty()) {
-        std::string name = work.back();
-        work.pop_back();
-        for (const FunctionDecl& f : effect.functions)
-            if (f.name == name) visitText(f.hlslText);
-    }
-    return reached;
-}
-
 bool profileMatches(const std::string& profile, ShaderStage stage) {
     // The DXC-era profiles too (5_1, 6_0..6_8): engines' headers select them on newer back ends for the
     // same code, which glslang compiles alike.
@@ -163,67 +139,12 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
 
 }  // namespace
 
-// [SECTION] lowerStage()
-
-std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
-                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
-                                       const std::map<int, TypeDesc>* previousOutputs,
-                                       const FunctionDecl* hull, const StageStreamOut* streamOut) {
-    if (!profileMatches(compile.profile, stage)) {
-        // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
-        for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
-                                  ShaderStage::Hull, ShaderStage::Domain})
-            if (other != stage && profileMatches(compile.profile, other)) {
-                diagnostics.report(
-                    DiagId::InvalidCompileExpression, compile.loc,
-                    {"'" + compile.profile + "' is a " + std::string(shaderStageName(other)) +
-                     "-shader profile, used for the " + std::string(shaderStageName(stage)) + " shader"});
-                return std::nullopt;
-            }
-        diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
-        return std::nullopt;
-    }
-    const FunctionDecl* fn = nullptr;
-    for (const FunctionDecl& f : effect.functions)
-        if (f.name == compile.text && f.hasBody) {
-            fn = &f;
-            break;
-        }
-    if (!fn) {
-        diagnostics.report(DiagId::MissingEntryPoint, compile.loc, {compile.text});
-        return std::nullopt;
-    }
-
-    LoweredStage out;
-    out.stage = stage;
-    out.entryPoint = fn->name;
-    out.profile = compile.profile;
-    out.compileLoc = compile.loc;
-
+EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<std::string>& reached,
+                                          const std::string& wrapper, const std::string& streamStruct,
+                                          const std::string& streamStructText) {
     std::set<std::string> depth;
     for (const Parameter& p : effect.parameters)
         if (isSamplerType(p.type) && isDepthCompareSampler(effect, p)) depth.insert(p.name);
-
-    // Wrapper first (it may fail on arguments) but emitted last.
-    size_t firstArgument = arguments.size();
-    std::string argumentGlobals, wrapper;
-    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
-                           stage == ShaderStage::Fragment ? previousOutputs : nullptr,
-                           stage == ShaderStage::Domain ? hull : nullptr);
-    if (streamOut) builder.setStreamOut(*streamOut);
-    if (!builder.build(argumentGlobals, wrapper)) {
-        arguments.resize(firstArgument);
-        return std::nullopt;
-    }
-    out.varyingOutputs = builder.varyingOutputs();
-    out.patchVertices = builder.patchVertices();
-    out.primitive = builder.primitive();
-    out.streamType = builder.streamType();
-    out.positionVarying = builder.positionVarying();
-
-    std::set<std::string> reached = reachableFunctions(effect, fn->name);
-    if (!builder.patchConstantFunction().empty())  // named in an attribute's string, so not found as a call
-        reached.merge(reachableFunctions(effect, builder.patchConstantFunction()));
     // D3D10 textures and sampler objects are declared only where the unit's code names them: a D3D9
     // effect's `texture2D` is reached through its sampler_state alone.
     std::set<std::string> named;
@@ -237,10 +158,9 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
     nameAll(wrapper);
     std::set<std::string> usedDepth;
-    std::string staticAssignments;  // what the entry point assigns first (splitStaticInitializer)
+    EffectDeclarations out;
     std::string& hlsl = out.hlsl;
-    hlsl += "// shadowfx: " + std::string(shaderStageName(stage)) + " shader " + fn->name + " (" +
-            compile.profile + ")\n";
+    std::string& staticAssignments = out.staticAssignments;
     hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + kLitReplacement;
     for (const DeclRef& ref : effect.order) {
         switch (ref.kind) {
@@ -295,8 +215,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
             }
             case DeclRef::Kind::Struct: {
                 const StructDecl& s = effect.structs[ref.index];
-                const bool stream = !builder.streamStruct().empty() && s.name == builder.streamStruct();
-                emitAt(hlsl, stream ? builder.streamStructText() : s.hlslText, s.hlslLoc);
+                const bool stream = !streamStruct.empty() && s.name == streamStruct;
+                emitAt(hlsl, stream ? streamStructText : s.hlslText, s.hlslLoc);
                 break;
             }
             case DeclRef::Kind::Function: {
@@ -311,6 +231,98 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
             }
         }
     }
+    out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
+    return out;
+}
+
+// Functions the entry point reaches (by name, over-approximated by identifiers in the bodies), plus any
+// named by static initializers and verbatim declarations. Unreached functions are not emitted, so that
+// editing one function only changes the units (and cache keys) of the passes that use it.
+std::set<std::string> reachableFunctions(const Effect& effect, const std::string& entry) {
+    std::set<std::string> names;
+    for (const FunctionDecl& f : effect.functions) names.insert(f.name);
+    std::set<std::string> reached{entry};
+    std::vector<std::string> work{entry};
+    auto visitText = [&](const std::string& text) {
+        for (const std::string& id : identifiersIn(text))
+            if (names.count(id) && reached.insert(id).second) work.push_back(id);
+    };
+    for (const Parameter& p : effect.parameters)
+        if (p.isStatic) visitText(p.hlslText);
+    for (const VerbatimDecl& v : effect.verbatim) visitText(v.hlslText);
+    while (!work.empty()) {
+        std::string name = work.back();
+        work.pop_back();
+        for (const FunctionDecl& f : effect.functions)
+            if (f.name == name) visitText(f.hlslText);
+    }
+    return reached;
+}
+
+// [SECTION] lowerStage()
+
+std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
+                                       std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
+                                       const std::map<int, TypeDesc>* previousOutputs,
+                                       const FunctionDecl* hull, const StageStreamOut* streamOut) {
+    if (!profileMatches(compile.profile, stage)) {
+        // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
+        for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
+                                  ShaderStage::Hull, ShaderStage::Domain})
+            if (other != stage && profileMatches(compile.profile, other)) {
+                diagnostics.report(
+                    DiagId::InvalidCompileExpression, compile.loc,
+                    {"'" + compile.profile + "' is a " + std::string(shaderStageName(other)) +
+                     "-shader profile, used for the " + std::string(shaderStageName(stage)) + " shader"});
+                return std::nullopt;
+            }
+        diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
+        return std::nullopt;
+    }
+    const FunctionDecl* fn = nullptr;
+    for (const FunctionDecl& f : effect.functions)
+        if (f.name == compile.text && f.hasBody) {
+            fn = &f;
+            break;
+        }
+    if (!fn) {
+        diagnostics.report(DiagId::MissingEntryPoint, compile.loc, {compile.text});
+        return std::nullopt;
+    }
+
+    LoweredStage out;
+    out.stage = stage;
+    out.entryPoint = fn->name;
+    out.profile = compile.profile;
+    out.compileLoc = compile.loc;
+
+    // Wrapper first (it may fail on arguments) but emitted last.
+    size_t firstArgument = arguments.size();
+    std::string argumentGlobals, wrapper;
+    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
+                           stage == ShaderStage::Fragment ? previousOutputs : nullptr,
+                           stage == ShaderStage::Domain ? hull : nullptr);
+    if (streamOut) builder.setStreamOut(*streamOut);
+    if (!builder.build(argumentGlobals, wrapper)) {
+        arguments.resize(firstArgument);
+        return std::nullopt;
+    }
+    out.varyingOutputs = builder.varyingOutputs();
+    out.patchVertices = builder.patchVertices();
+    out.primitive = builder.primitive();
+    out.streamType = builder.streamType();
+    out.positionVarying = builder.positionVarying();
+
+    std::set<std::string> reached = reachableFunctions(effect, fn->name);
+    if (!builder.patchConstantFunction().empty())  // named in an attribute's string, so not found as a call
+        reached.merge(reachableFunctions(effect, builder.patchConstantFunction()));
+    std::string& hlsl = out.hlsl;
+    hlsl += "// shadowfx: " + std::string(shaderStageName(stage)) + " shader " + fn->name + " (" +
+            compile.profile + ")\n";
+    EffectDeclarations declarations =
+        emitEffectDeclarations(effect, reached, wrapper, builder.streamStruct(), builder.streamStructText());
+    hlsl += declarations.hlsl;
+    const std::string& staticAssignments = declarations.staticAssignments;
     if (!staticAssignments.empty()) {
         const size_t entry = wrapper.find(std::string(kWrapperEntryPoint) + "(");
         const size_t body = entry == std::string::npos ? entry : wrapper.find(")\n{\n", entry);
@@ -318,7 +330,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
             wrapper.insert(body + 4, staticAssignments + "#line 1 \"" + std::string(kGeneratedFile) + "\"\n");
     }
     hlsl += "#line 1 \"" + std::string(kGeneratedFile) + "\"\n" + argumentGlobals + wrapper;
-    out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
+    out.depthSamplers = std::move(declarations.depthSamplers);
     return out;
 }
 

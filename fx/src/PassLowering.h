@@ -23,6 +23,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,23 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
                                        const std::map<int, TypeDesc>* previousOutputs = nullptr,
                                        const FunctionDecl* hull = nullptr,
                                        const StageStreamOut* streamOut = nullptr);
+
+// The effect's declarations a unit needs, in the effect's order, each behind `#line` (see above): the
+// functions in `reached`, every static, plain global and sampler, and the D3D10 objects that `wrapper` or
+// the reached code names. `streamStruct` (a geometry shader's output element) is declared as
+// `streamStructText` instead of as written.
+struct EffectDeclarations {
+    std::string hlsl;
+    // The statics whose initializers call the effect's functions (glslang's "Recursion detected"): the
+    // unit's entry point assigns them before anything else runs.
+    std::string staticAssignments;
+    std::vector<std::string> depthSamplers;  // the depth-compare samplers the unit declares
+};
+EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<std::string>& reached,
+                                          const std::string& wrapper, const std::string& streamStruct = "",
+                                          const std::string& streamStructText = "");
+// The effect's functions that `entry` calls, directly or not, and those static initializers call.
+std::set<std::string> reachableFunctions(const Effect& effect, const std::string& entry);
 
 // Samplers of the effect whose texture is a depth target (RENDERDEPTHSTENCILTARGET or a depth Format):
 // they sample with comparison, as NVIDIA's D3D9 hardware shadow maps did.

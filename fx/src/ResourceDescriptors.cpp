@@ -26,11 +26,15 @@ void Compiler::textures() {
                      ? p.type.base
                      : BaseType::Texture2D;
         resourceShape(p, t);
-        // An untyped `texture` says what it holds in FX Composer's ResourceType annotation.
-        if (const Annotation* a = p.annotation("ResourceType");
-            a && p.type.base == BaseType::Texture && a->value.kind == Expr::Kind::String) {
-            if (equalsIgnoreCase(a->value.text, "Cube")) t.type = BaseType::TextureCube;
-            if (equalsIgnoreCase(a->value.text, "3D") || equalsIgnoreCase(a->value.text, "Volume"))
+        // An untyped `texture` says what it holds in FX Composer's ResourceType annotation (TextureType
+        // beside a texture function).
+        const Annotation* resourceType = p.annotation("ResourceType");
+        if (!resourceType) resourceType = p.annotation("TextureType");
+        if (resourceType && p.type.base == BaseType::Texture &&
+            resourceType->value.kind == Expr::Kind::String) {
+            const std::string& holds = resourceType->value.text;
+            if (equalsIgnoreCase(holds, "Cube")) t.type = BaseType::TextureCube;
+            if (equalsIgnoreCase(holds, "3D") || equalsIgnoreCase(holds, "Volume"))
                 t.type = BaseType::Texture3D;
         }
         std::string semantic = upperCase(p.semantic);
@@ -77,9 +81,13 @@ void Compiler::textures() {
                 depth ? TextureDesc::Kind::RenderDepthStencilTarget : TextureDesc::Kind::RenderColorTarget;
             t.format = depth ? TextureFormat::D24S8 : TextureFormat::RGBA8;
         }
+        // A volume's Dimensions has a third component, its depth (TextureFunction.cpp reads it).
         for (const char* dimensions : {"Dimensions", "RenderTargetDimensions"})
             if (const Annotation* a = p.annotation(dimensions)) {
-                if (auto v = eval(a->value, &int2); v && checkSize(v->data[0], v->data[1], a->loc)) {
+                const bool volume = t.type == BaseType::Texture3D && a->value.kind == Expr::Kind::InitList &&
+                                    a->value.args.size() == 3;
+                if (auto v = eval(a->value, volume ? nullptr : &int2);
+                    v && v->data.size() >= 2 && checkSize(v->data[0], v->data[1], a->loc)) {
                     t.width = static_cast<int>(v->data[0]);
                     t.height = static_cast<int>(v->data[1]);
                 }
@@ -116,6 +124,7 @@ void Compiler::textures() {
             if (auto v = eval(a->value, &scalar)) t.mipLevels = std::max(0, v->asInt());
         }
         if (const Annotation* a = p.annotation("Procedural")) procedural(p, *a, t);
+        if (const Annotation* a = p.annotation("function")) textureFunction(p, *a, t);
         std::string resource;
         SourceLoc resourceLoc = p.loc;
         if (const Annotation* a = p.annotation("ResourceName"); a && a->value.kind == Expr::Kind::String) {

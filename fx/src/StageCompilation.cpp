@@ -140,20 +140,26 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
             CompileArgument{compilePreshader(argument.expr, slotResolver(), &argument.type), argument.type,
                             argument.memberName});
     }
+    enqueueStage(std::move(*lowered), pass, slot);
+    return true;
+}
+
+void Compiler::enqueueStage(LoweredStage&& lowered, CompiledPass& pass, PassSlot slot) {
+    const ShaderStage stage = lowered.stage;
     StageProgram& program = stageProgram(pass, stage);
-    std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered->profile;
-    uint64_t key = CompileCache::hash(lowered->hlsl, stage, options);
+    std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered.profile;
+    uint64_t key = CompileCache::hash(lowered.hlsl, stage, options);
     // A unit already waiting for a worker is looked up once that job is done (finishPendingStages).
     const bool waiting = mJobByKey.count(key) > 0;
     if (const StageProgram* cached = mOptions.cache && !waiting ? mOptions.cache->find(key) : nullptr) {
         program = *cached;
         resolveReflection(program, pass);
-        return true;
+        return;
     }
     auto [it, added] = mJobByKey.emplace(key, mJobs.size());
     if (added) {
         StageJob job;
-        job.hlsl = lowered->hlsl;
+        job.hlsl = lowered.hlsl;
         job.stage = stage;
         job.entryPoint = kWrapperEntryPoint;
         job.cross.uniformBlockName = stage == ShaderStage::Vertex     ? "fx_VsGlobals"
@@ -164,11 +170,10 @@ bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass
         // One uniform block binding per stage: the stage enum's order.
         job.cross.uniformBlockBinding = static_cast<int>(stage);
         job.cross.samplerUnits = mSamplerUnits;
-        job.cross.depthSamplers = lowered->depthSamplers;
+        job.cross.depthSamplers = lowered.depthSamplers;
         mJobs.push_back(std::move(job));
     }
-    mPending.push_back(PendingStage{slot, std::move(*lowered), key, it->second});
-    return true;
+    mPending.push_back(PendingStage{slot, std::move(lowered), key, it->second});
 }
 
 std::vector<StageOutcome> Compiler::runJobs() {
@@ -189,7 +194,7 @@ void Compiler::finishPendingStages() {
     for (PendingStage& pending : mPending) {
         const StageOutcome& outcome = outcomes[pending.job];
         const LoweredStage& lowered = pending.lowered;
-        CompiledPass& pass = mOut->techniques[pending.slot.technique].passes[pending.slot.pass];
+        CompiledPass& pass = passAt(pending.slot);
         // A unit shared by several passes is reported once, at the first.
         const bool first = !reported[pending.job];
         reported[pending.job] = true;

@@ -1,6 +1,8 @@
 // `shadowfx check` as a CI runs it: the real built tool on real effects, with copies of the shipped effect
-// broken on purpose (bias removed, golden moved, golden missing, nothing drawn) written to a temporary
-// folder at test time. Each run uses one backend (EGL) to stay fast; the CTest `check` tests run both.
+// broken on purpose (bias removed, golden moved, golden missing) written to a temporary folder at test time.
+// Each run uses one backend (EGL) to stay fast; the CTest `check` tests run both. A blank frame and a file
+// without techniques are rows of runtime::runConformance, tested without the tool
+// (tests/runtime/test_conformance_run.cpp).
 #include "CliRunner.h"
 #include "ScratchDirectory.h"
 
@@ -126,13 +128,10 @@ TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
     EXPECT_EQ(row(result.output, "lit", "boxes", "misclassified"), "")
         << "plain_lit declares ExpectShadows = false";
 
-    // Well-formed enough for a CI's reader: the declaration, balanced elements, counts that add up.
+    // A suite per effect and a case per check row; the XML's form is the report library's (its tests in
+    // tests/report/test_conformance_report.cpp).
     const std::string xml = readText(junit);
-    ASSERT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>", 0), 0u) << xml;
-    EXPECT_EQ(occurrences(xml, "<testsuites "), 1);
-    EXPECT_EQ(occurrences(xml, "</testsuites>"), 1);
     EXPECT_EQ(occurrences(xml, "<testsuite "), 2);
-    EXPECT_EQ(occurrences(xml, "</testsuite>"), 2);
     const long testcases = occurrences(xml, "<testcase ");
     // thesis: 3 techniques (main, its D3D11 twin main11, hardware) x 2 scenes x (render, misclassified,
     // golden); plain_lit: 2 scenes x (render, golden)
@@ -140,8 +139,6 @@ TEST(CheckCommand, ShippedEffectsPassAndTheJunitReportCountsEveryCheck) {
     EXPECT_EQ(attribute(xml, "testsuites", "tests"), testcases);
     EXPECT_EQ(attribute(xml, "testsuites", "failures"), 0);
     EXPECT_EQ(occurrences(xml, "<failure "), 0);
-    // Every opened <testcase> is closed: either self-closing or by </testcase>.
-    EXPECT_EQ(occurrences(xml, "<testcase ") - occurrences(xml, "</testcase>"), occurrences(xml, "\"/>\n"));
     fs::remove(junit);
 }
 
@@ -289,30 +286,6 @@ TEST(CheckCommand, ForeignEffectsWithoutExpectationsGetOneTableOfRenderChecks) {
     EXPECT_NE(result.output.find("\nmaterial_phong: blank: Simple: the frame is "), std::string::npos)
         << result.output;
     EXPECT_NE(result.output.find("\n1 effect: 0 drawn, 1 blank, 0 failed\n"), std::string::npos)
-        << result.output;
-}
-
-TEST(CheckCommand, ABlankFrameFails) {
-    // The technique clears and draws nothing.
-    const EffectCopy copy("blank", "\"Pass=p0;\"", "\"\"", "plain_lit");
-    const RunResult result = run("check " + copy.effect() + " --backend egl");
-    EXPECT_EQ(result.exitCode, 1) << result.output;
-    const std::string line = row(result.output, "lit", "boxes", "render");
-    EXPECT_EQ(line.rfind("FAIL", 0), 0u) << result.output;
-    EXPECT_NE(line.find("constant colour"), std::string::npos) << line;
-}
-
-// A file without techniques compiles (an effect pool's shared parameters), but there is nothing to
-// check: it fails at its first line, never a run of zero checks that passes.
-TEST(CheckCommand, AFileWithoutTechniquesFails) {
-    const shadowfx::test::ScratchDirectory scratch("check_no_techniques");
-    const std::string effect = scratch / "pool.fx";
-    std::ofstream(effect) << "shared float4 AmbientColor : AMBIENT = {0.1, 0.1, 0.1, 1};\n";
-    const RunResult result = run("check " + effect + " --backend egl");
-    EXPECT_EQ(result.exitCode, 1) << result.output;
-    EXPECT_NE(result.output.find("pool.fx:1:1: error: the file has no techniques"), std::string::npos)
-        << result.output;
-    EXPECT_NE(result.output.find("\n1 effect: 0 drawn, 0 blank, 1 failed\n"), std::string::npos)
         << result.output;
 }
 

@@ -1,10 +1,12 @@
 // Textures an effect gets without rendering them itself, and render targets beyond the basics, through the
 // whole pipeline (parse, compile, EffectRenderer on llvmpipe): procedural noise (`string Procedural =
-// "noise"`), file textures (PNG, HDR) by ResourceName relative to the effect and the error for a missing
-// one, mipmapped render targets regenerated before they are sampled, and multiple render targets.
+// "noise"`), FX Composer's texture functions (`string function = "f"`), file textures (PNG, HDR) by
+// ResourceName relative to the effect and the error for a missing one, mipmapped render targets regenerated
+// before they are sampled, and multiple render targets.
 #include "ScratchDirectory.h"
 #include "effects/EffectHarness.h"
 
+#include <fx/CompiledEffectFile.h>
 #include <runtime/BuiltinScenes.h>
 #include <runtime/Image.h>
 #include <private/runtime/ProceduralTexture.h>
@@ -105,6 +107,119 @@ TEST(ProceduralNoise, UnknownGeneratorIsAnErrorAtTheAnnotation) {
     EXPECT_NE(diagnostics.str().find("proc.fx:1:33: error: invalid annotation 'Procedural'"),
               std::string::npos)
         << diagnostics.str();
+}
+
+// [SECTION] Texture functions
+
+// D3DXFillTexture's contract: the function sees each texel's centre and the texel size of the level it
+// fills, and may read the effect's parameters.
+const char* kRampDeclarations = R"(
+float4 Tint = {0.25, 0.5, 0.75, 1};
+float4 ramp(float2 P : POSITION, float2 S : PSIZE) : COLOR { return float4(P, S.x * 64 * Tint.x, 1); }
+texture Ramp < string function = "ramp"; float2 Dimensions = {64, 32}; string Format = "A32B32G32R32F"; >;
+sampler RampSampler = sampler_state { texture = <Ramp>; MinFilter = POINT; MagFilter = POINT; MipFilter = POINT; };
+)";
+
+void expectRamp(runtime::EffectRenderer& effect, int level, float texelScale) {
+    SCOPED_TRACE("level " + std::to_string(level));
+    int width = 0, height = 0, channels = 0;
+    auto texels = effect.readTarget("Ramp", &width, &height, &channels, level);
+    ASSERT_TRUE(texels);
+    ASSERT_EQ(width, 64 >> level);
+    ASSERT_EQ(height, 32 >> level);
+    ASSERT_EQ(channels, 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float* t = &(*texels)[(size_t(y) * size_t(width) + size_t(x)) * 4];
+            ASSERT_NEAR(t[0], (x + 0.5f) / width, 1e-6f) << x << "," << y;
+            ASSERT_NEAR(t[1], (y + 0.5f) / height, 1e-6f) << x << "," << y << ": row 0 is the top row";
+            ASSERT_NEAR(t[2], texelScale, 1e-6f) << x << "," << y;
+            ASSERT_EQ(t[3], 1.0f);
+        }
+}
+
+TEST(TextureFunction, FillsEveryLevelWithTexelCentresTexelSizesAndParameters) {
+    const std::string source = fullScreenEffect(
+        kRampDeclarations, "float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(RampSampler, uv); }");
+    auto effect = loadEffect(source, false);
+    ASSERT_TRUE(effect);
+    expectRamp(*effect, 0, 0.25f);
+    expectRamp(*effect, 1, 0.5f);  // half the texels, twice their size
+    ASSERT_TRUE(render(*effect, boxes(), 16, 16));
+    EXPECT_TRUE(notConstant(effect->readFrame()));
+
+    // The fill pass is part of the compiled effect, and a compiled file draws the same texture.
+    fx::DiagnosticList diagnostics;
+    auto parsed = fx::parseEffectSource(source, "ramp.fx", {}, diagnostics);
+    ASSERT_TRUE(parsed);
+    auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = fx::serializeCompiledEffect(*compiled);
+    std::shared_ptr<fx::CompiledEffect> read = fx::deserializeCompiledEffect(bytes, "ramp.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(fx::serializeCompiledEffect(*read), bytes);
+    auto fromFile = runtime::EffectRenderer::create(read, diagnostics);
+    ASSERT_TRUE(fromFile) << diagnostics.str();
+    expectRamp(*fromFile, 0, 0.25f);
+}
+
+// A volume's function sees (u, v, w) at the texel's centre; a cube's, the direction through the texel's
+// centre on its face, as D3D (and GL) pick faces: +Y's s runs along +x and its t along +z.
+TEST(TextureFunction, VolumeAndCubeTexelsSeeTheirPositionAndDirection) {
+    const std::string source = fullScreenEffect(R"(
+float4 cell(float3 P : POSITION) : COLOR { return float4(P, 1); }
+float4 direction(float3 D : POSITION) : COLOR { return float4(D * 0.5 + 0.5, 1); }
+texture Cells < string function = "cell"; string TextureType = "VOLUME";
+                int width = 4, height = 4, depth = 8; string Format = "A32B32G32R32F"; >;
+texture Sky < string function = "direction"; string TextureType = "CUBE"; float2 Dimensions = {16, 16};
+              string Format = "A32B32G32R32F"; >;
+sampler3D CellSampler = sampler_state { texture = <Cells>; MinFilter = POINT; MagFilter = POINT; MipFilter = POINT; };
+samplerCUBE SkySampler = sampler_state { texture = <Sky>; MinFilter = POINT; MagFilter = POINT; MipFilter = POINT; };
+texture Out : RENDERCOLORTARGET < float2 Dimensions = {2, 1}; string Format = "A32B32G32R32F"; >;
+)",
+                                                R"(float4 PS(float2 uv : TEXCOORD0) : COLOR {
+    return uv.x < 0.5 ? tex3Dlod(CellSampler, float4(0.375, 0.625, 0.6875, 0))
+                      : texCUBElod(SkySampler, float4(-0.3, 1.0, 0.45, 0));
+})",
+                                                "RenderColorTarget0=Out; Draw=Buffer;");
+    auto effect = loadEffect(source, false);
+    ASSERT_TRUE(effect);
+    ASSERT_TRUE(render(*effect, boxes(), 16, 16, "", {"Out"}));
+    auto out = effect->readTarget("Out", nullptr, nullptr, nullptr);
+    ASSERT_TRUE(out);
+    ASSERT_EQ(out->size(), 8u);
+    // Volume texel (1, 2, 5) of 4x4x8.
+    EXPECT_NEAR((*out)[0], 0.375f, 1e-6f);
+    EXPECT_NEAR((*out)[1], 0.625f, 1e-6f);
+    EXPECT_NEAR((*out)[2], 0.6875f, 1e-6f);
+    // (-0.3, 1, 0.45) falls on +Y's texel (5, 11) of 16: s = -0.3125, t = 0.4375, the direction (s, 1, t).
+    EXPECT_NEAR((*out)[4], -0.3125f * 0.5f + 0.5f, 1e-6f);
+    EXPECT_NEAR((*out)[5], 1.0f, 1e-6f);
+    EXPECT_NEAR((*out)[6], 0.4375f * 0.5f + 0.5f, 1e-6f);
+}
+
+TEST(TextureFunction, AnUndefinedFunctionOrAnUnknownInputIsAnErrorAtTheEffect) {
+    sharedContext();
+    for (const auto& [source, expected] : std::vector<std::pair<std::string, std::string>>{
+             {"texture T < string function = \"missing\"; >;\n",
+              "fn.fx:1:31: error: texture function \"missing\" is not a function of the effect"},
+             {"float4 f(float2 uv : TEXCOORD0) : COLOR { return 1; }\n"
+              "texture T < string function = \"f\"; >;\n",
+              "fn.fx:1:8: error: texture function 'f': parameter 'uv' (float2 : TEXCOORD0) is not an input a "
+              "texture function takes"},
+             {"float4 f(float2 p : POSITION) : COLOR { return 1; }\n"
+              "texture T : RENDERCOLORTARGET < string function = \"f\"; >;\n",
+              "fn.fx:2:40: error: 'T' cannot be filled by a function"},
+             {"texture Tex; sampler S = sampler_state { texture = <Tex>; };\n"
+              "float4 f(float2 p : POSITION) : COLOR { return tex2D(S, p); }\n"
+              "texture T < string function = \"f\"; >;\n",
+              "fn.fx:3:20: error: texture function 'f' reads 'S'"}}) {
+        fx::DiagnosticList diagnostics;
+        auto effect = fx::parseEffectSource(source, "fn.fx", {}, diagnostics);
+        ASSERT_TRUE(effect) << diagnostics.str();
+        EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics));
+        EXPECT_NE(diagnostics.str().find(expected), std::string::npos) << diagnostics.str();
+    }
 }
 
 // [SECTION] File textures

@@ -254,6 +254,8 @@ struct TextureDesc {
         Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
         Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
                      // generator so far; runtime/render/include/private/runtime/ProceduralTexture.h)
+        Function,    // `string function = "f"`: FX Composer's texture function, `fill` drawn into every
+                     // texel of every level (and slice, or face) at effect creation
     };
     size_t parameter = 0;  // CompiledEffect::parameters index
     Kind kind = Kind::File;
@@ -265,11 +267,17 @@ struct TextureDesc {
     int samples = 1;    // Texture2DMS<T, N>: N (1 when the type leaves it out)
     int width = 0;      // Dimensions / width,height annotations; 0 when sized by viewportRatio
     int height = 0;
+    int depth = 1;  // a texture function's Texture3D: its slices (Dimensions.z or the depth annotation)
     float viewportRatio[2] = {1.0f, 1.0f};  // ViewPortRatio (used when width == 0)
     int mipLevels = 1;
     std::string resourceName;  // ResourceName as written
     std::string resolvedPath;  // relative to the effect file; "" if not found
     uint32_t seed = 0;         // Kind::Procedural: the Seed annotation
+    // Kind::Function: a pass of generated stages around the effect's function (docs/fxcomposer.md,
+    // "Texture functions"). Its vertex stage draws one triangle over the target and reads its one compile
+    // argument, `fx_fill`: xyz the texel size of the level drawn, w the slice's coordinate (a volume) or
+    // the face (a cube, 0..5 in GL's order); its pixel stage calls the function once per texel.
+    std::optional<CompiledPass> fill;
     SourceLoc loc;
 };
 

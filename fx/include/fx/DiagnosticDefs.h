@@ -308,6 +308,20 @@ FX_DIAGNOSTIC(SetBufferElementSize, Error, "setBuffer: '{0}' ({1}) takes element
 FX_DIAGNOSTIC(SetBufferWholeWords, Error, "setBuffer: '{0}' ({1}) takes whole 32-bit words")
 FX_DIAGNOSTIC(SetBufferPackedElementSize, Error,
               "setBuffer: '{0}' ({1}) takes elements of {2} bytes (its members packed as D3D packs them)")
+// FX Composer's texture functions (`string function = "f";` on a texture, docs/fxcomposer.md).
+FX_DIAGNOSTIC(TextureFunctionTarget, Error,
+              "'{0}' cannot be filled by a function: only a 2D, volume or cube colour texture that is not a "
+              "render target can")
+FX_DIAGNOSTIC(TextureFunctionUndefined, Error, "texture function {0} is not a function of the effect")
+FX_DIAGNOSTIC(
+    TextureFunctionParameter, Error,
+    "texture function '{0}': parameter '{1}' ({2}) is not an input a texture function takes (float, "
+    "float2 or float3 with semantic POSITION or PSIZE)")
+FX_DIAGNOSTIC(TextureFunctionReturn, Error,
+              "texture function '{0}' returns {1}; it must return a colour (float to float4)")
+FX_DIAGNOSTIC(TextureFunctionSamples, Error,
+              "texture function '{0}' reads '{1}'; a texture function is drawn when the effect is created, "
+              "from parameter values alone, and reads no texture, sampler or buffer")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")

@@ -1,5 +1,6 @@
 // EffectResources: see EffectResources.h.
 #include "EffectResources.h"
+#include "TextureFunctionFill.h"
 
 #include <runtime/Image.h>
 #include <private/runtime/ProceduralTexture.h>
@@ -356,9 +357,9 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         r.passSamplers.emplace_back(desc, false);
         r.passComparisonSamplers.emplace_back(desc, true);
     }
+    r.uniformRing = std::make_unique<UniformRing>();  // texture functions draw with it
     if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
-    r.uniformRing = std::make_unique<UniformRing>();
     r.annotations = AnnotationTable(*r.mCompiled);
     return resources;
 }
@@ -386,6 +387,12 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
         if (desc.kind == fx::TextureDesc::Kind::Runtime && fx::equalsIgnoreCase(semantic, "noise") &&
             desc.type == fx::BaseType::Texture2D) {
             textures[desc.parameter] = makeNoiseTexture();
+            continue;
+        }
+        if (desc.kind == fx::TextureDesc::Kind::Function) {
+            std::optional<GpuTexture> texture = fillTextureFunction(desc, values, *uniformRing, diagnostics);
+            if (!texture) return false;
+            textures[desc.parameter] = std::move(*texture);
             continue;
         }
         if (desc.kind == fx::TextureDesc::Kind::Procedural) {

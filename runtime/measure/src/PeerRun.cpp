@@ -1,5 +1,5 @@
 // PeerRun: see PeerRun.h.
-#include "PeerRun.h"
+#include <runtime/PeerRun.h>
 
 #include <nlohmann/json.hpp>
 
@@ -8,9 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
-namespace shadowfx::cli {
+namespace runtime {
 
 namespace {
 
@@ -25,11 +23,6 @@ std::string safeName(std::string text) {
     for (char& c : text)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
     return text;
-}
-
-std::filesystem::path ownDirectory() {
-    std::error_code ignored;
-    return std::filesystem::read_symlink("/proc/self/exe", ignored).parent_path();
 }
 
 // A binary PGM (P5, 8 bits) as the peer writes it: values / 255, rows top to bottom.
@@ -50,16 +43,6 @@ bool readPgm(const std::filesystem::path& path, int& width, int& height, std::ve
 
 }  // namespace
 
-std::string findPeerProgram(const std::string& name) {
-    const std::string program = "shadowfx-" + name + "-peer";
-#ifdef SHADOWFX_OSG_PEER_PATH
-    if (name == "osg" && std::filesystem::exists(SHADOWFX_OSG_PEER_PATH)) return SHADOWFX_OSG_PEER_PATH;
-#endif
-    const std::filesystem::path installed = ownDirectory() / program;
-    if (std::filesystem::exists(installed)) return installed.string();
-    return "";
-}
-
 std::vector<std::string> peerTechniques(const std::string& program) {
     std::vector<std::string> names;
     FILE* pipe = popen((shellQuoted(program) + " --technique list 2>/dev/null").c_str(), "r");
@@ -74,7 +57,7 @@ std::vector<std::string> peerTechniques(const std::string& program) {
     return names;
 }
 
-std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::SceneTruth& truth,
+std::optional<PeerResult> runPeer(const PeerRequest& request, const SceneTruth& truth,
                                   const std::filesystem::path& workDir, std::string& error) {
     const std::string base =
         safeName(request.technique + "_" + truth.scene.name + "_" + std::to_string(request.mapSize));
@@ -87,7 +70,7 @@ std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::Sce
             << request.width << " --height " << request.height << " --frames " << request.frames
             << " --warmup " << request.warmup << " --out-visibility " << shellQuoted(frame.string())
             << " --out-json " << shellQuoted(json.string());
-    if (truth.light && truth.light->type == runtime::Light::Type::Directional) {
+    if (truth.light && truth.light->type == Light::Type::Directional) {
         char direction[96];
         std::snprintf(direction, sizeof direction, "%.9g,%.9g,%.9g", truth.light->direction.x,
                       truth.light->direction.y, truth.light->direction.z);
@@ -131,4 +114,4 @@ std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::Sce
     return result;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace runtime

@@ -1,11 +1,11 @@
-#include "ParameterSweep.h"
+#include <runtime/ParameterSweep.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace shadowfx::cli {
+namespace runtime {
 
 namespace {
 
@@ -158,4 +158,4 @@ std::string settingLabel(const Setting& setting, const std::vector<std::string>&
     return label;
 }
 
-}  // namespace shadowfx::cli
+}  // namespace runtime

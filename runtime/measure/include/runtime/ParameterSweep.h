@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace shadowfx::cli {
+namespace runtime {
 
 // At most this many settings (the cross product of every sweep): each is a full set of runs.
 inline constexpr size_t kMaxSweepSettings = 64;
@@ -44,4 +44,4 @@ std::vector<Setting> settingsFor(const fx::CompiledEffect& effect, const std::ve
 // "Exponent=10, Bias=0.002": the assignments of `setting` to parameters in `swept`; "" if none.
 std::string settingLabel(const Setting& setting, const std::vector<std::string>& swept);
 
-}  // namespace shadowfx::cli
+}  // namespace runtime

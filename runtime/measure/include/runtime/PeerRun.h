@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowfx::cli {
+namespace runtime {
 
 struct PeerRequest {
     std::string program;    // the peer's executable
@@ -32,17 +32,13 @@ struct PeerResult {
     bool mapSizeHonoured = false;  // every shadow map the peer made has the requested size (it reports)
 };
 
-// Where the built peer `name` ("osg") is: next to this build's shadowfx, or next to the installed one;
-// empty if it was not built (its library was not found when configuring).
-std::string findPeerProgram(const std::string& name);
-
 // The techniques the peer program offers (it lists them), in its order; empty if it cannot be run.
 std::vector<std::string> peerTechniques(const std::string& program);
 
 // Runs the peer for `request` on the scene of `truth` (its light's direction is passed on, so that a light
 // turned by --light-angle-to-view is the peer's light too). Its JSON and log are left in `workDir`.
 // nullopt, with why in `error`, if the program fails or its frame is not the G-buffer's size.
-std::optional<PeerResult> runPeer(const PeerRequest& request, const runtime::SceneTruth& truth,
+std::optional<PeerResult> runPeer(const PeerRequest& request, const SceneTruth& truth,
                                   const std::filesystem::path& workDir, std::string& error);
 
-}  // namespace shadowfx::cli
+}  // namespace runtime
