@@ -92,14 +92,14 @@ private:
 };
 
 // An angle option in [-limit, limit] (or [0, limit] when `nonNegative`); false, said, if malformed.
-bool readAngle(const Arguments& args, const char* option, float limit, bool nonNegative,
-               std::optional<float>& out) {
+bool readAngle(const Arguments& args, const std::string& command, const char* option, float limit,
+               bool nonNegative, std::optional<float>& out) {
     const std::string text = args.value(option);
     if (text.empty()) return true;
     char* end = nullptr;
     const float value = std::strtof(text.c_str(), &end);
     if (*end != '\0' || !(std::abs(value) <= limit && (!nonNegative || value >= 0.0f))) {
-        std::cerr << "shadowfx bench: " << option << ": '" << text << "' is not an angle in ["
+        std::cerr << "shadowfx " << command << ": " << option << ": '" << text << "' is not an angle in ["
                   << (nonNegative ? "0" : "-" + std::to_string(static_cast<int>(limit))) << ", "
                   << static_cast<int>(limit) << "]\n";
         return false;
@@ -109,6 +109,38 @@ bool readAngle(const Arguments& args, const char* option, float limit, bool nonN
 }
 
 }  // namespace
+
+bool readBenchRunOptions(const Arguments& args, const std::string& command, runtime::BenchOptions& o) {
+    o.frames = args.intValue("--frames", o.frames);
+    o.warmup = args.intValue("--warmup", o.warmup);
+    o.width = args.intValue("--width", o.width);
+    o.height = args.intValue("--height", o.height);
+    if (o.frames < 1 || o.warmup < 0 || o.width <= 0 || o.height <= 0 || o.width > 16384 ||
+        o.height > 16384) {
+        std::cerr << "shadowfx " << command
+                  << ": --frames must be >= 1, --warmup >= 0, the size between 1 and 16384\n";
+        return false;
+    }
+    const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
+    if (!backend || *backend == runtime::Backend::GLFW) {
+        std::cerr << "shadowfx " << command << ": --backend must be auto, osmesa or egl\n";
+        return false;
+    }
+    o.backend = *backend;
+    o.truth.areaSamples = args.intValue("--area-samples", o.truth.areaSamples);
+    if (const std::string text = args.value("--area-radius"); !text.empty()) {
+        char* end = nullptr;
+        const float value = std::strtof(text.c_str(), &end);
+        if (*end != '\0' || !(value >= 0.0f && value < 1e6f)) {
+            std::cerr << "shadowfx " << command << ": --area-radius: '" << text << "' is not a radius >= 0\n";
+            return false;
+        }
+        o.areaRadius = value;
+    }
+    if (!readAngle(args, command, "--light-angle-to-view", 180.0f, true, o.lightAngleToView)) return false;
+    o.parseOptions = effectParseOptions(args);
+    return true;
+}
 
 int benchCommand(const Arguments& args) {
     runtime::BenchOptions o;
@@ -142,10 +174,6 @@ int benchCommand(const Arguments& args) {
         std::cerr << "shadowfx bench: --time expects full or steady, got '" << o.timeAxis << "'\n";
         return 2;
     }
-    o.frames = args.intValue("--frames", 10);
-    o.warmup = args.intValue("--warmup", 2);
-    o.width = args.intValue("--width", 640);
-    o.height = args.intValue("--height", 480);
     // Peers: each name's program, found where this build put it, and the techniques to run.
     o.peerNames = splitList(args.value("--peers"));
     o.peerTechniqueFilter = splitList(args.value("--peer-techniques"));
@@ -189,31 +217,9 @@ int benchCommand(const Arguments& args) {
                "--help)\n";
         return 2;
     }
-    if (o.frames < 1 || o.warmup < 0 || o.width <= 0 || o.height <= 0 || o.width > 16384 ||
-        o.height > 16384) {
-        std::cerr << "shadowfx bench: --frames must be >= 1, --warmup >= 0, the size between 1 and 16384\n";
-        return 2;
-    }
-    const std::optional<runtime::Backend> backend = runtime::parseBackend(args.value("--backend", "auto"));
-    if (!backend || *backend == runtime::Backend::GLFW) {
-        std::cerr << "shadowfx bench: --backend must be auto, osmesa or egl\n";
-        return 2;
-    }
-    o.backend = *backend;
-    o.truth.areaSamples = args.intValue("--area-samples", 256);
-    if (const std::string text = args.value("--area-radius"); !text.empty()) {
-        char* end = nullptr;
-        const float value = std::strtof(text.c_str(), &end);
-        if (*end != '\0' || !(value >= 0.0f && value < 1e6f)) {
-            std::cerr << "shadowfx bench: --area-radius: '" << text << "' is not a radius >= 0\n";
-            return 2;
-        }
-        o.areaRadius = value;
-    }
+    if (!readBenchRunOptions(args, "bench", o)) return 2;
     std::optional<float> cameraOrbit;
-    if (!readAngle(args, "--light-angle-to-view", 180.0f, true, o.lightAngleToView) ||
-        !readAngle(args, "--camera-orbit", 180.0f, false, cameraOrbit))
-        return 2;
+    if (!readAngle(args, "bench", "--camera-orbit", 180.0f, false, cameraOrbit)) return 2;
     o.cameraOrbit = cameraOrbit.value_or(0.0f);  // degrees per frame
     if (const std::string text = args.value("--shard"); !text.empty()) {
         std::string shardError;
@@ -225,7 +231,6 @@ int benchCommand(const Arguments& args) {
     }
     o.truthCacheDir = args.value("--truth-cache");
     o.set = args.all("--set");
-    o.parseOptions = effectParseOptions(args);
     o.batching = !args.flag("--no-batching");
     o.outDir = args.value("--out");
 

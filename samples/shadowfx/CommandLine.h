@@ -20,8 +20,6 @@ public:
     std::string value(const std::string& name, const std::string& fallback = "") const;
     int intValue(const std::string& name, int fallback) const;
     std::vector<std::string> all(const std::string& name) const;  // every value of a repeatable option
-    // For a command that runs another with options it composes (`tune` runs `bench`).
-    void add(const std::string& name, const std::string& value) { mValues[name].push_back(value); }
 
 private:
     friend struct Parser;

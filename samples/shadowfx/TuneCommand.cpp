@@ -1,7 +1,8 @@
 // TuneCommand: `shadowfx tune` — a technique's tweakables searched (report/TuneSearch.h) for the least
 // misclassified % at or under a frame-time budget. Each batch of settings the search proposes differs in one
-// parameter, and is measured as one `bench` sweep of that parameter, the others set: the same runs, truth and
-// scoring as `bench` (BenchCommand.cpp), with the ray-cast truth cast once and read from --truth-cache after.
+// parameter, and is measured as one bench run (runtime/BenchRun.h) sweeping that parameter, the others set:
+// the same runs, truth and scoring as `bench`, with the ray-cast truth cast once and read from --truth-cache
+// after.
 // The runs of every batch make the output's results.json, report.md and error_vs_time.svg (a bench results
 // document with a `tune` section, report/BenchReport.h), the search's settings error_surface.svg
 // (report/TuneSurfacePlot.h); the best setting is printed as a --set line.
@@ -9,6 +10,7 @@
 #include "BenchCommand.h"
 #include "TunableParameters.h"
 
+#include <runtime/BenchRun.h>
 #include <runtime/DiagnosticLog.h>
 #include <runtime/ShadowMeasurement.h>
 #include <report/BenchReport.h>
@@ -20,7 +22,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace shadowfx::cli {
 
@@ -48,48 +49,20 @@ namespace {
 
 using Json = report::Json;
 
-Json readJson(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    return Json::parse(in, nullptr, false);
-}
-
-// bench's stdout (its report's path) kept out of tune's, which is the --set line.
-class QuietStdout {
-public:
-    QuietStdout() : mSaved(std::cout.rdbuf(mSink.rdbuf())) {}
-    ~QuietStdout() { std::cout.rdbuf(mSaved); }
-
-private:
-    std::ostringstream mSink;
-    std::streambuf* mSaved;
-};
-
 struct Batches {
-    const Arguments& args;
-    const std::string& effect;
-    const std::string& technique;
+    const runtime::BenchOptions& bench;  // every batch's options but its --set and output folder
     const std::vector<report::TuneParameter>& parameters;
-    int mapSize;
     std::filesystem::path outDir;
-    std::string truthCache;
     Json first;  // the first batch's results: the document's header
     Json runs = Json::array();
     int count = 0;
 
-    // One bench run of `settings`: a sweep of the one parameter they differ in, the others set.
+    // One bench run of `settings`: a sweep of the one parameter they differ in, the others set. Its output
+    // is written to DIR/batches/N as `bench` writes it.
     bool measure(const std::vector<report::TuneSetting>& settings, std::vector<report::TuneScore>& scores) {
-        Arguments bench;
-        for (const char* option : {"--scenes", "--frames", "--warmup", "--width", "--height", "--backend",
-                                   "--area-samples", "--area-radius", "--light-angle-to-view", "-I", "-D"})
-            for (const std::string& value : args.all(option)) bench.add(option, value);
-        if (args.value("--frames").empty()) bench.add("--frames", "5");
-        if (args.value("--warmup").empty()) bench.add("--warmup", "1");
-        bench.add("--effects", effect);
-        bench.add("--techniques", technique);
-        bench.add("--map-sizes", std::to_string(mapSize));
-        bench.add("--truth-cache", truthCache);
         const std::string name = "batches/" + std::to_string(count++);
-        bench.add("--out", (outDir / name).string());
+        runtime::BenchOptions options = bench;
+        options.outDir = outDir / name;
         std::vector<std::vector<std::string>> texts(settings.size());
         for (size_t i = 0; i < parameters.size(); ++i) {
             std::string values;
@@ -98,16 +71,22 @@ struct Batches {
                 if (s == 0 || settings[s][i] != settings[0][i])
                     values += (s == 0 ? "" : ",") + texts[s].back();
             }
-            bench.add("--set", parameters[i].name + "=" + values);
+            options.set.push_back(parameters[i].name + "=" + values);
         }
-        int status = 0;
-        {
-            const QuietStdout quiet;
-            status = benchCommand(bench);
+        runtime::BenchLog log;
+        log.note = [](const std::string& text) { std::cerr << "tune: " << text << "\n"; };
+        log.diagnostic = [](const std::string& text) { std::cerr << text << "\n"; };
+        const runtime::BenchResult result = runtime::runBench(options, log);
+        if (result.status != runtime::BenchStatus::Measured) {
+            if (!result.error.empty()) std::cerr << "shadowfx tune: " << result.error << "\n";
+            return false;
         }
-        if (status != 0) return false;
-        const Json results = readJson(outDir / name / "results.json");
-        if (results.is_discarded() || !results.contains("runs")) return false;
+        std::string plotNote, writeError;
+        if (!report::writeBenchOutputs(options.outDir, result.document, plotNote, writeError)) {
+            std::cerr << "shadowfx tune: " << writeError << "\n";
+            return false;
+        }
+        const Json& results = result.document;
         if (first.is_null()) first = results;
         for (size_t s = 0; s < settings.size(); ++s) {
             double error = 0.0, slowest = 0.0;
@@ -121,7 +100,7 @@ struct Batches {
                             matches = matches && run["setting"][parameters[i].name] == texts[s][i];
                 if (!matches) continue;
                 if (!run["error"].is_object()) {
-                    std::cerr << "shadowfx tune: " << effect
+                    std::cerr << "shadowfx tune: " << bench.effects.front()
                               << " does not expose its shadow term (SHADOWFX_VISIBILITY): nothing to score "
                                  "(docs/scoring.md)\n";
                     return false;
@@ -179,11 +158,22 @@ int tuneCommand(const Arguments& args) {
             << "shadowfx tune: --evaluations must be >= 1, --grid >= 2 and --map-size between 1 and 16384\n";
         return 2;
     }
+    const std::filesystem::path outDir = args.value("--out");
+    runtime::BenchOptions bench;
+    bench.effects = {effect};
+    bench.techniques = {technique};
+    bench.scenes = splitList(args.value("--scenes"));
+    bench.mapSizes = {mapSize};
+    bench.truthCacheDir = args.value("--truth-cache", (outDir / "truth-cache").string());
+    // tune's defaults, fewer frames than bench's: a search measures many settings.
+    bench.frames = 5;
+    bench.warmup = 1;
+    if (!readBenchRunOptions(args, "tune", bench)) return 2;
 
     // The effect compiled once here for its parameters; each batch's bench compiles it again, as bench does.
     runtime::DiagnosticLog sink([](const std::string& text) { std::cerr << text << "\n"; });
     const std::shared_ptr<fx::CompiledEffect> compiled = runtime::compileVariant(
-        effect, effectParseOptions(args), {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize)}}, sink);
+        effect, bench.parseOptions, {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize)}}, sink);
     if (!compiled || sink.errors() > 0) return 1;
     const auto found = std::find_if(compiled->techniques.begin(), compiled->techniques.end(),
                                     [&](const fx::CompiledTechnique& t) { return t.name == technique; });
@@ -205,14 +195,9 @@ int tuneCommand(const Arguments& args) {
     for (const report::TuneParameter& p : parameters) std::cerr << " " << p.name;
     std::cerr << " in at most " << options.evaluations << " settings\n";
 
-    const std::filesystem::path outDir = args.value("--out");
-    Batches batches{.args = args,
-                    .effect = effect,
-                    .technique = technique,
+    Batches batches{.bench = bench,
                     .parameters = parameters,
-                    .mapSize = mapSize,
                     .outDir = outDir,
-                    .truthCache = args.value("--truth-cache", (outDir / "truth-cache").string()),
                     .first = Json(),
                     .runs = Json::array(),
                     .count = 0};

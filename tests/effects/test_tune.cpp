@@ -1,8 +1,9 @@
 // `shadowfx tune` end to end on a tiny configuration (a small frame and map, one scene, a shipped technique
 // with two tweakables, a few settings): its best setting must score no worse than the effect's own when
 // `bench` measures both independently, and exactly as tune reported; its results.json must validate against
-// docs/results.schema.json. Bad input (an unknown technique, nothing to search, a budget nothing meets, a
-// log scale over a range reaching 0) fails with a message that says so and a non-zero status.
+// docs/results.schema.json. Bad input (an unknown technique, an option bench would refuse, nothing to search,
+// a budget nothing meets, a log scale over a range reaching 0) fails with a message that says so and a
+// non-zero status.
 #include "CliRunner.h"
 #include "JsonSchema.h"
 #include "ScratchDirectory.h"
@@ -95,6 +96,18 @@ TEST(Tune, AnUnknownTechniqueIsAUsageError) {
     EXPECT_EQ(tune.exitCode, 2) << tune.output;
     EXPECT_NE(tune.output.find("has no technique 'no_such' (it has: constant slope_state"), std::string::npos)
         << tune.output;
+}
+
+// The options passed on to each bench run are read as bench reads them, before anything is measured.
+TEST(Tune, AMalformedRunOptionIsAUsageErrorBeforeAnythingIsMeasured) {
+    const ScratchDirectory scratch("tune_options");
+    const RunResult tune = run("tune effects/bias.fx --technique slope_shader" + kTiny +
+                               " --light-angle-to-view 200 --out " + (scratch / "out").string());
+    EXPECT_EQ(tune.exitCode, 2) << tune.output;
+    EXPECT_NE(tune.output.find("shadowfx tune: --light-angle-to-view: '200' is not an angle in [0, 180]"),
+              std::string::npos)
+        << tune.output;
+    EXPECT_FALSE(std::filesystem::exists(scratch / "out" / "batches")) << "nothing measured";
 }
 
 TEST(Tune, ABudgetNoSettingMeetsFails) {
