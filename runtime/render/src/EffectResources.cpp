@@ -3,6 +3,7 @@
 #include "TextureFunctionFill.h"
 
 #include <runtime/Image.h>
+#include <private/runtime/NameLookups.h>
 #include <private/runtime/ProceduralTexture.h>
 #include <runtime/TextureFile.h>
 
@@ -365,6 +366,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
 }
 
 std::optional<size_t> EffectResources::findParameter(std::string_view name) const {
+    countNameLookup();
     auto it = mParameterIndex.find(std::string(name));
     if (it == mParameterIndex.end()) return std::nullopt;
     return it->second;

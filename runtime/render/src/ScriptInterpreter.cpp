@@ -3,6 +3,7 @@
 #include "HostScene.h"
 
 #include <fx/LiteralNumbers.h>
+#include <private/runtime/NameLookups.h>
 #include <fx/RenderStates.h>
 
 namespace runtime {
@@ -15,6 +16,7 @@ using Command = fx::ScriptCommand;
 // as the compiler checked it).
 std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget& target) {
     if (const fx::Value* value = target.parameter(text)) return *value;
+    countNameLookup();
     const std::optional<std::vector<float>> numbers = fx::parseLiteralNumbers(text);
     if (!numbers || numbers->empty()) return std::nullopt;
     return numbers->size() == 1 ? fx::Value::scalar(numbers->front()) : fx::Value::vector(*numbers);
@@ -33,6 +35,7 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
                                                                 const std::string& requested,
                                                                 const ScriptTarget& target,
                                                                 fx::DiagnosticSink& diagnostics) {
+    countNameLookup();
     std::string name = requested;
     fx::SourceLoc loc;
     if (name.empty()) {

@@ -1,6 +1,7 @@
 #include "SemanticBinder.h"
 
 #include <fx/RenderStates.h>
+#include <private/runtime/NameLookups.h>
 #include <runtime/CascadedShadowMaps.h>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -119,6 +120,7 @@ constexpr const char* kTunableSemantics[] = {
 }  // namespace
 
 bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose) {
+    countNameLookup();
     std::string name = upper(semantic);
     inverse = transpose = false;
     if (consumeSuffix(name, "INVERSETRANSPOSE")) {
@@ -146,6 +148,7 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
 
 bool SemanticBinder::wantsVisibleSamples(const std::vector<fx::ParameterInfo>& parameters,
                                          const std::vector<fx::Value>& values) {
+    countNameLookup();
     for (size_t i = 0; i < parameters.size() && i < values.size(); ++i)
         if (upper(parameters[i].semantic) == "LIGHTFITVISIBLESAMPLES" && !values[i].data.empty() &&
             values[i].data[0] != 0.0f)
@@ -212,6 +215,7 @@ std::string conventionalStem(std::string_view name) {
 
 std::string SemanticBinder::conventionalSemantic(const fx::ParameterInfo& parameter) {
     if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return "";
+    countNameLookup();
     std::string stem = conventionalStem(parameter.name);
     const fx::TypeDesc& type = parameter.type;
     if (type.shape == fx::Shape::Matrix) {
@@ -283,6 +287,7 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
     // its tunables, before any light is fitted.
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
+        if (!parameter.semantic.empty()) countNameLookup();  // the tunables' semantics, by text
         const std::string upperSemantic = upper(parameter.semantic);
         if (i < values.size() && !values[i].data.empty()) {
             if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];

@@ -2,6 +2,8 @@
 // world-to-pixel projection.
 #include <runtime/Scene.h>
 
+#include <private/runtime/NameLookups.h>
+
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -209,6 +211,7 @@ bool sameIgnoringCase(std::string_view a, std::string_view b) {
 // DirectionalLight0) to the scene's first light whatever its type: an exact match first, then the name
 // without regard to case, then the light type prefix dropped.
 const Light* Scene::findLight(std::string_view lightName) const {
+    countNameLookup();
     for (const auto& light : lights)
         if (light.name == lightName) return &light;
     for (const auto& light : lights)

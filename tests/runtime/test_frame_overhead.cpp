@@ -1,0 +1,158 @@
+// What the per-frame path resolves and allocates: after the first frame, frames of the thesis effect look
+// up at most a fixed number of names (runtime/NameLookups.h counts every parameter, light, technique and
+// semantic found by its text, and every literal parsed) and make at most a fixed number of heap
+// allocations, counted by this binary's own global operator new between the markers around render().
+// The goal is zero of both; the bounds are what the runtime does now, so that the per-frame path cannot
+// grow a lookup or an allocation unnoticed, and they come down as the runtime resolves more at load.
+//
+// Only operator new is counted, and only on the thread that renders: the runtime is C++ and allocates
+// through it (std::string, std::vector, std::map), while Mesa is C and allocates with malloc for its own
+// state, which is the driver's business and not the runtime's per-frame overhead.
+#include <private/runtime/NameLookups.h>
+#include <runtime/BuiltinScenes.h>
+#include "effects/EffectHarness.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+
+thread_local bool tCounting = false;
+std::atomic<uint64_t> gAllocations{0};
+
+void* allocate(std::size_t size, std::size_t alignment = 0) {
+    if (tCounting) gAllocations.fetch_add(1, std::memory_order_relaxed);
+    if (size == 0) size = 1;
+    void* p = alignment > alignof(std::max_align_t)
+                  ? std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment)
+                  : std::malloc(size);
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+    return allocate(size);
+}
+void* operator new[](std::size_t size) {
+    return allocate(size);
+}
+void* operator new(std::size_t size, std::align_val_t alignment) {
+    return allocate(size, static_cast<std::size_t>(alignment));
+}
+void* operator new[](std::size_t size, std::align_val_t alignment) {
+    return allocate(size, static_cast<std::size_t>(alignment));
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return allocate(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return allocate(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+
+namespace {
+
+using namespace runtime;
+
+struct Overhead {
+    uint64_t allocations = 0;
+    uint64_t lookups = 0;
+};
+
+// Renders one warm-up frame, then `frames` frames (the camera turned `orbitDegrees` about its target before
+// each, as `shadowfx bench --camera-orbit` turns it), counting what those frames allocate and look up.
+Overhead frameOverhead(const std::string& sceneName, int frames, float orbitDegrees) {
+    std::unique_ptr<EffectRenderer> renderer =
+        shadowfx::test::loadEffect(shadowfx::test::sourcePath("effects/thesis_fxcomposer.fx"), true);
+    std::optional<Scene> scene = makeBuiltinScene(sceneName);
+    if (!renderer || !scene) {
+        ADD_FAILURE() << "no renderer or no scene '" << sceneName << "'";
+        return {};
+    }
+    FrameOptions options;
+    options.width = 128;
+    options.height = 96;
+    options.technique = "main";
+    options.timePasses = true;  // as bench measures the overhead
+    fx::DiagnosticList diagnostics;
+    FrameStats stats;
+    EXPECT_TRUE(renderer->render(*scene, options, diagnostics, &stats)) << diagnostics.str();
+    const glm::vec3 offset = scene->camera.position - scene->camera.target;
+    Overhead overhead;
+    for (int frame = 1; frame <= frames; ++frame) {
+        const glm::mat4 turn =
+            glm::rotate(glm::mat4(1.0f), glm::radians(orbitDegrees * static_cast<float>(frame)),
+                        glm::vec3(0.0f, 1.0f, 0.0f));
+        scene->camera.position = scene->camera.target + glm::vec3(turn * glm::vec4(offset, 0.0f));
+        const uint64_t lookupsBefore = nameLookups();
+        const uint64_t allocationsBefore = gAllocations.load();
+        tCounting = true;
+        const bool rendered = renderer->render(*scene, options, diagnostics, &stats);
+        tCounting = false;
+        overhead.allocations += gAllocations.load() - allocationsBefore;
+        overhead.lookups += nameLookups() - lookupsBefore;
+        EXPECT_TRUE(rendered) << diagnostics.str();
+    }
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.str();
+    // The frames drew something: a frame that skipped its work would allocate nothing either.
+    EXPECT_GT(stats.draws, 0);
+    const FrameImage image = renderer->readFrame();
+    EXPECT_TRUE(shadowfx::test::notConstant(image));
+    std::cout << sceneName << ": " << overhead.allocations << " allocations and " << overhead.lookups
+              << " name lookups in " << frames << " frames\n";
+    return overhead;
+}
+
+constexpr int kFrames = 100;
+
+TEST(FrameOverhead, ThesisOnDualL) {
+    const Overhead overhead = frameOverhead("dual-l", kFrames, 0.0f);
+    EXPECT_LE(overhead.lookups, 60u * kFrames);
+    EXPECT_LE(overhead.allocations, 180u * kFrames);
+}
+
+// forest-fifth's 10,001 objects with the camera orbiting as `bench --camera-orbit 0.5` turns it: culled
+// anew every frame, the shadow map reused.
+TEST(FrameOverhead, ThesisOnForestFifthWithOrbitingCamera) {
+    const Overhead overhead = frameOverhead("forest-fifth", kFrames, 0.5f);
+    EXPECT_LE(overhead.lookups, 60u * kFrames);
+    EXPECT_LE(overhead.allocations, 3608u * kFrames);
+}
+
+}  // namespace
