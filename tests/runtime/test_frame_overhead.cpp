@@ -144,7 +144,7 @@ constexpr int kFrames = 100;
 TEST(FrameOverhead, ThesisOnDualL) {
     const Overhead overhead = frameOverhead("dual-l", kFrames, 0.0f);
     EXPECT_LE(overhead.lookups, 60u * kFrames);
-    EXPECT_LE(overhead.allocations, 180u * kFrames);
+    EXPECT_LE(overhead.allocations, 163u * kFrames);
 }
 
 // forest-fifth's 10,001 objects with the camera orbiting as `bench --camera-orbit 0.5` turns it: culled
@@ -152,7 +152,7 @@ TEST(FrameOverhead, ThesisOnDualL) {
 TEST(FrameOverhead, ThesisOnForestFifthWithOrbitingCamera) {
     const Overhead overhead = frameOverhead("forest-fifth", kFrames, 0.5f);
     EXPECT_LE(overhead.lookups, 60u * kFrames);
-    EXPECT_LE(overhead.allocations, 3608u * kFrames);
+    EXPECT_LE(overhead.allocations, 814u * kFrames);
 }
 
 }  // namespace

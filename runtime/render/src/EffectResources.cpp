@@ -613,8 +613,13 @@ void EffectResources::updateSceneCache(const Scene& scene) {
     sceneCache.meshBoxes.clear();
     std::vector<Aabb> boxes(scene.objects.size());
     std::vector<bool> present(scene.objects.size(), false);
+    std::map<const Mesh*, uint32_t> slots;
+    sceneCache.meshSlots.assign(scene.objects.size(), 0);
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
+        if (object.mesh)
+            sceneCache.meshSlots[i] =
+                slots.emplace(object.mesh.get(), static_cast<uint32_t>(slots.size())).first->second;
         if (!object.mesh || object.mesh->positions.empty()) continue;
         auto it = sceneCache.meshBoxes.find(object.mesh.get());
         if (it == sceneCache.meshBoxes.end())
@@ -624,6 +629,7 @@ void EffectResources::updateSceneCache(const Scene& scene) {
         boxes[i] = transformBox(it->second, object.world);
         present[i] = true;
     }
+    sceneCache.meshCount = slots.size();
     sceneCache.bvh = InstanceBvh(std::move(boxes), present);
 }
 

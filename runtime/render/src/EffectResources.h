@@ -122,7 +122,26 @@ public:
         Bounds bounds;
         InstanceBvh bvh;
         std::map<const Mesh*, Aabb> meshBoxes;
+        // Per object: its mesh's index among the scene's distinct meshes (batching groups by it).
+        std::vector<uint32_t> meshSlots;
+        size_t meshCount = 0;
     } sceneCache;
+    // FrameExecutor's working lists, kept between frames so that a frame like the last allocates nothing.
+    struct FrameScratch {
+        std::vector<uint32_t> visible;  // the objects the current draw draws
+        std::vector<bool> perObject;    // per parameter: bound per object in the current pass
+        std::vector<uint32_t> context;  // batching's per-object context (SemanticBinder::objectContext)
+        struct Batch {
+            uint32_t first;  // its first object
+            size_t offset;   // in `instances`
+            size_t count;
+        };
+        std::vector<Batch> batches;        // batching's instanced draws of the current draw
+        std::vector<size_t> batchOfMesh;   // per mesh slot: its batch in the current draw, or npos
+        std::vector<size_t> objectBatch;   // per visible object: its batch
+        std::vector<uint32_t> instances;   // the instance lists, batch after batch
+        std::vector<fx::Value> arguments;  // the current draw's compile arguments
+    } frameScratch;
     // What each render target holds after the frames so far (FramePlan): how light passes are reused.
     std::map<int, TargetHistory> targetHistory;
     // Fits to what the camera sees (LightFitVisibleSamples): the pre-pass that finds the samples.

@@ -25,6 +25,14 @@ FrameExecutor::FrameExecutor(EffectResources& resources, const Scene& scene, con
       mBinder(binder),
       mUses(uses),
       mPlan(plan),
+      mVisible(resources.frameScratch.visible),
+      mPerObject(resources.frameScratch.perObject),
+      mContext(resources.frameScratch.context),
+      mBatchOfMesh(resources.frameScratch.batchOfMesh),
+      mObjectBatch(resources.frameScratch.objectBatch),
+      mInstanceList(resources.frameScratch.instances),
+      mArguments(resources.frameScratch.arguments),
+      mBatches(resources.frameScratch.batches),
       mStencilUnread(!techniqueTestsStencil(resources.effect().techniques[techniqueIndex])) {
     mTargets.colors[0].texture = &resources.frameColor;
     mTargets.depth.texture = &resources.frameDepth;
@@ -600,16 +608,21 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     // The instance lists: one run per mesh (in order of first appearance, each keeping its objects' order),
     // or per run of consecutive objects with one mesh where the order matters.
     const bool anyOrder = orderFree(states);
+    constexpr size_t kNoBatch = ~size_t(0);
+    const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots;
     mBatches.clear();
-    mBatchOf.clear();
+    if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount, kNoBatch);
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {
         const Mesh* mesh = mScene.objects[mVisible[i]].mesh.get();
         size_t batch = mBatches.size();
         if (anyOrder) {
-            auto [it, inserted] = mBatchOf.emplace(mesh, mBatches.size());
-            batch = it->second;
-            if (inserted) mBatches.push_back(Batch{mVisible[i], 0, 0});
+            size_t& ofMesh = mBatchOfMesh[meshSlots[mVisible[i]]];
+            if (ofMesh == kNoBatch) {
+                ofMesh = mBatches.size();
+                mBatches.push_back(Batch{mVisible[i], 0, 0});
+            }
+            batch = ofMesh;
         } else if (!mBatches.empty() && mScene.objects[mBatches.back().first].mesh.get() == mesh) {
             batch = mBatches.size() - 1;
         } else {

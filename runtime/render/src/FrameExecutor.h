@@ -15,7 +15,6 @@
 
 #include <array>
 #include <set>
-#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -107,20 +106,16 @@ private:
     int mPassOps = 0;
     std::array<int, 4> mPassLeftOut{};                     // per LeftOut reason
     std::vector<std::pair<size_t, GLuint>> mTexelQueries;  // (PassStats index, GL_SAMPLES_PASSED query)
-    std::vector<uint32_t> mVisible;
-    // Batching's per-pass scratch (drawBatched).
-    struct Batch {
-        uint32_t first;  // its first object
-        size_t offset;   // in mInstanceList
-        size_t count;
-    };
-    std::vector<bool> mPerObject;  // per parameter: bound per object in the current pass
-    std::vector<uint32_t> mContext;
-    std::vector<Batch> mBatches;
-    std::unordered_map<const Mesh*, size_t> mBatchOf;
-    std::vector<size_t> mObjectBatch;
-    std::vector<uint32_t> mInstanceList;
-    std::vector<fx::Value> mArguments;
+    // Working lists kept between frames (EffectResources::FrameScratch).
+    std::vector<uint32_t>& mVisible;
+    std::vector<bool>& mPerObject;
+    std::vector<uint32_t>& mContext;
+    std::vector<size_t>& mBatchOfMesh;
+    std::vector<size_t>& mObjectBatch;
+    std::vector<uint32_t>& mInstanceList;
+    std::vector<fx::Value>& mArguments;
+    using Batch = EffectResources::FrameScratch::Batch;
+    std::vector<Batch>& mBatches;
     RenderTargets mTargets;
     RenderPortView mPort;
     bool mLightPort = false;
