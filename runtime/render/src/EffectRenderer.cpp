@@ -190,15 +190,16 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
     const Light* light = scene.findLight(lightName);
     if (!light) return std::nullopt;
     fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
+    SemanticBinder binder(mImpl->parameterInfo());
     // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
     std::optional<VisibleSamples> visible;
-    if (SemanticBinder::wantsVisibleSamples(mImpl->parameterInfo(), mImpl->values))
+    if (binder.wantsVisibleSamples(mImpl->values))
         visible = mImpl->visibleSamplePass.run(
             scene, InstanceBvh{}, options.width, options.height,
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
-    const SemanticBinder binder(mImpl->parameterInfo(), scene, scene.bounds(),
-                                static_cast<float>(options.width) / static_cast<float>(options.height),
-                                mImpl->values, diagnostics, visible ? &*visible : nullptr);
+    binder.prepare(scene, scene.bounds(),
+                   static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
+                   diagnostics, visible ? &*visible : nullptr);
     return binder.lightFit(*light);
 }
 
@@ -208,27 +209,20 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     FrameStats& frameStats = stats ? *stats : localStats;
     frameStats = {};
 
-    // Technique selection reads parameters only; a throwaway executor would need GL, so use a minimal view.
-    struct ParameterView : ScriptTarget {
-        const EffectResources& resources;
-        explicit ParameterView(const EffectResources& r) : resources(r) {}
-        void beginPass(const fx::CompiledPass&) override {}
-        void setColorTarget(int, const std::string&) override {}
-        void setDepthTarget(const std::string&) override {}
-        void setRenderPort(const std::string&, int, const fx::SourceLoc&) override {}
-        void setClearColor(const fx::Value&) override {}
-        void setClearDepth(float) override {}
-        void setClearStencil(int) override {}
-        void clear(fx::ScriptCommand::ClearWhat) override {}
-        void draw(const fx::CompiledPass&, fx::ScriptCommand::DrawWhat) override {}
-        void drawScene(const fx::ScriptCommand&) override {}
-        const fx::Value* parameter(const std::string& name) const override { return resources.find(name); }
-        void setParameter(const std::string&, const fx::Value&) override {}
-    };
-    const fx::CompiledTechnique* technique = ScriptInterpreter::selectTechnique(
-        mImpl->effect(), options.technique, ParameterView(*mImpl), diagnostics);
-    if (!technique) return false;
-    const size_t techniqueIndex = static_cast<size_t>(technique - mImpl->effect().techniques.data());
+    // The technique, chosen by name once for each FrameOptions::technique (every frame where a Technique=
+    // selector reads a parameter).
+    EffectResources::TechniqueChoice& choice = mImpl->techniqueChoice;
+    if (!choice.valid || choice.requested != options.technique) {
+        const fx::CompiledTechnique* chosen = ScriptInterpreter::selectTechnique(
+            mImpl->effect(), options.technique, [this](const std::string& name) { return mImpl->find(name); },
+            diagnostics);
+        if (!chosen) return false;
+        choice.technique = static_cast<size_t>(chosen - mImpl->effect().techniques.data());
+        choice.requested = options.technique;
+        choice.valid = !ScriptInterpreter::selectionReadsParameters(mImpl->effect(), options.technique);
+    }
+    const size_t techniqueIndex = choice.technique;
+    const fx::CompiledTechnique* technique = &mImpl->effect().techniques[techniqueIndex];
 
     // KHR_debug messages (debug contexts) and GL errors found while the frame runs go to the caller's sink.
     setDebugSink([&diagnostics](std::string message) {
@@ -248,15 +242,16 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     mImpl->updateSceneCache(frameScene);
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
+    SemanticBinder& binder = *mImpl->binder;
     std::optional<VisibleSamples> visible;
-    if (SemanticBinder::wantsVisibleSamples(mImpl->parameterInfo(), mImpl->values))
+    if (binder.wantsVisibleSamples(mImpl->values))
         visible = mImpl->visibleSamplePass.run(
             frameScene, mImpl->sceneCache.bvh, options.width, options.height,
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
-    const SemanticBinder binder(mImpl->parameterInfo(), frameScene, mImpl->sceneCache.bounds,
-                                static_cast<float>(options.width) / static_cast<float>(options.height),
-                                mImpl->values, diagnostics, visible ? &*visible : nullptr);
-    const std::vector<PassUse> uses = passUses(*technique, mImpl->values.size(), binder);
+    binder.prepare(frameScene, mImpl->sceneCache.bounds,
+                   static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
+                   diagnostics, visible ? &*visible : nullptr);
+    const std::vector<PassUse>& uses = mImpl->passUses[techniqueIndex];
 
     std::vector<PassPreshaders>& preshaders = mImpl->preshaders[techniqueIndex];
     const auto preshaderRuns = [&preshaders] {
@@ -272,14 +267,15 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         std::vector<glm::vec3> body;
         if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
             RenderPortView camera;
-            portMatrices(frameScene, binder, options, "", -1, camera);
+            portMatrices(frameScene, binder, options, "", -1, -1, camera);
             const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
             body = intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max});
         }
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, recorder, dryRunDiagnostics);
+        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
+                               recorder, dryRunDiagnostics);
         std::vector<int> outputs;
         for (const std::string& name : options.outputTargets)
             if (const std::optional<size_t> index = findParameter(name))
@@ -302,8 +298,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran =
-        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, executor, diagnostics);
+    const bool ran = ScriptInterpreter::run(*technique, *mImpl->scriptOperands,
+                                            mImpl->effect().maxScriptLoopCount, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

@@ -17,6 +17,8 @@
 #include <runtime/InstanceBvh.h>
 #include "HostScene.h"
 #include "PassPreshaders.h"
+#include "PassUse.h"
+#include "ScriptInterpreter.h"
 #include <runtime/SamplerObject.h>
 #include <runtime/StreamOutBuffers.h>
 #include "SemanticBinder.h"
@@ -56,6 +58,17 @@ public:
     std::vector<fx::Value> values;  // one per parameter
     std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
     ParameterStamps stamps;         // of `values`
+
+    // [SECTION] Resolved once, when the effect is created (names as indices, kept for the effect's life)
+    std::unique_ptr<SemanticBinder> binder;          // the semantics, classified; prepared for each frame
+    std::unique_ptr<ScriptOperands> scriptOperands;  // what the scripts' commands name
+    std::vector<std::vector<PassUse>> passUses;      // [technique][pass]
+    // The technique the last frame ran for FrameOptions::technique, where the choice reads no parameter.
+    struct TechniqueChoice {
+        bool valid = false;
+        std::string requested;
+        size_t technique = 0;
+    } techniqueChoice;
 
     // [SECTION] GL resources
     std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
@@ -136,11 +149,12 @@ public:
             size_t offset;   // in `instances`
             size_t count;
         };
-        std::vector<Batch> batches;        // batching's instanced draws of the current draw
-        std::vector<size_t> batchOfMesh;   // per mesh slot: its batch in the current draw, or npos
-        std::vector<size_t> objectBatch;   // per visible object: its batch
-        std::vector<uint32_t> instances;   // the instance lists, batch after batch
-        std::vector<fx::Value> arguments;  // the current draw's compile arguments
+        std::vector<Batch> batches;         // batching's instanced draws of the current draw
+        std::vector<size_t> batchOfMesh;    // per mesh slot: its batch in the current draw, or npos
+        std::vector<size_t> objectBatch;    // per visible object: its batch
+        std::vector<uint32_t> instances;    // the instance lists, batch after batch
+        std::vector<fx::Value> arguments;   // the current draw's compile arguments
+        std::vector<fx::Value> planValues;  // the dry run's copy of the parameter values (PlanRecorder)
     } frameScratch;
     // What each render target holds after the frames so far (FramePlan): how light passes are reused.
     std::map<int, TargetHistory> targetHistory;

@@ -36,7 +36,7 @@ FrameExecutor::FrameExecutor(EffectResources& resources, const Scene& scene, con
       mStencilUnread(!techniqueTestsStencil(resources.effect().techniques[techniqueIndex])) {
     mTargets.colors[0].texture = &resources.frameColor;
     mTargets.depth.texture = &resources.frameDepth;
-    setRenderPort("", -1, {});
+    setRenderPort("", -1, -1, {});
 }
 
 void FrameExecutor::finish() {
@@ -68,24 +68,25 @@ void FrameExecutor::beginPass(const fx::CompiledPass& pass) {
     mTimer.beginPass(pass.name);
 }
 
-void FrameExecutor::setColorTarget(int index, const std::string& texture) {
+void FrameExecutor::setColorTarget(int index, const std::string& texture, int parameter) {
     if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
     if (texture.empty()) {
         mTargets.colors[static_cast<size_t>(index)].texture = index == 0 ? &mResources.frameColor : nullptr;
         return;
     }
-    mTargets.colors[static_cast<size_t>(index)].texture = target(texture);
+    mTargets.colors[static_cast<size_t>(index)].texture = target(texture, parameter);
 }
 
-void FrameExecutor::setDepthTarget(const std::string& texture) {
-    mTargets.depth.texture = texture.empty() ? &mResources.frameDepth : target(texture);
+void FrameExecutor::setDepthTarget(const std::string& texture, int parameter) {
+    mTargets.depth.texture = texture.empty() ? &mResources.frameDepth : target(texture, parameter);
 }
 
-void FrameExecutor::setRenderPort(const std::string& lightName, int cascade, const fx::SourceLoc& loc) {
+void FrameExecutor::setRenderPort(const std::string& lightName, int lightSlot, int cascade,
+                                  const fx::SourceLoc& loc) {
     mLightPort = !lightName.empty();
-    mPortLight = mLightPort ? mScene.findLight(lightName) : nullptr;
+    mPortLight = mLightPort ? mBinder.slotLight(lightSlot) : nullptr;
     std::string error;
-    if (!portMatrices(mScene, mBinder, mOptions, lightName, cascade, mPort, &error)) {
+    if (!portMatrices(mScene, mBinder, mOptions, lightName, lightSlot, cascade, mPort, &error)) {
         if (!mFailed)
             mDiagnostics.report(fx::DiagId::ScriptUnknownRenderPort,
                                 loc.valid() ? loc : fx::SourceLoc{mResources.effect().path, 0, 0}, {error});
@@ -214,8 +215,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     } else {
         mVisible.clear();
         // What a pass streams out must not depend on the view: it draws every object.
-        const bool culling =
-            mOptions.leaveOut && mResources.sceneCache.valid && use.projectsWith(mPortLight) && !capture;
+        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid &&
+                             use.projectsWith(mPortLight, mBinder) && !capture;
         int drawable = 0;
         for (size_t index = 0; index < mScene.objects.size(); ++index) {
             if (!mScene.objects[index].mesh) continue;
@@ -266,13 +267,13 @@ void FrameExecutor::drawScene(const fx::ScriptCommand&) {
     }
 }
 
-void FrameExecutor::setParameter(const std::string& name, const fx::Value& value) {
-    const std::optional<size_t> index = mResources.findParameter(name);
-    if (!index) {
+void FrameExecutor::setParameter(const std::string& name, int parameter, const fx::Value& value) {
+    if (parameter < 0) {
         fail(fx::DiagId::UnknownParameter, {name});
         return;
     }
-    storeParameter(mResources.parameterInfo(), *index, value, mResources.values, mResources.stamps);
+    storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mResources.values,
+                   mResources.stamps);
 }
 
 void FrameExecutor::fail(fx::DiagId id, const std::vector<std::string>& args) {
@@ -328,8 +329,9 @@ void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) co
     bvh.query([&](const Aabb& box) { return casterReaches(region, viewProjection, box); }, visible);
 }
 
-const GpuTexture* FrameExecutor::target(const std::string& name) {
-    const std::optional<size_t> index = mResources.findParameter(name);
+const GpuTexture* FrameExecutor::target(const std::string& name, int parameter) {
+    const std::optional<size_t> index =
+        parameter >= 0 ? std::optional<size_t>(static_cast<size_t>(parameter)) : std::nullopt;
     auto texture = index ? mResources.textures.find(*index) : mResources.textures.end();
     if (texture == mResources.textures.end()) {
         // Left unallocated because no operation that runs uses it (FramePlan): not an error.

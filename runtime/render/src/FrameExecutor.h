@@ -35,17 +35,18 @@ public:
     void finish();
 
     void beginPass(const fx::CompiledPass& pass) override;
-    void setColorTarget(int index, const std::string& texture) override;
-    void setDepthTarget(const std::string& texture) override;
-    void setRenderPort(const std::string& lightName, int cascade, const fx::SourceLoc& loc) override;
+    void setColorTarget(int index, const std::string& texture, int parameter) override;
+    void setDepthTarget(const std::string& texture, int parameter) override;
+    void setRenderPort(const std::string& lightName, int lightSlot, int cascade,
+                       const fx::SourceLoc& loc) override;
     void setClearColor(const fx::Value& color) override;
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
     void clear(fx::ScriptCommand::ClearWhat what) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
     void drawScene(const fx::ScriptCommand& command) override;
-    const fx::Value* parameter(const std::string& name) const override { return mResources.find(name); }
-    void setParameter(const std::string& name, const fx::Value& value) override;
+    const fx::Value* parameter(size_t index) const override { return &mResources.values[index]; }
+    void setParameter(const std::string& name, int parameter, const fx::Value& value) override;
 
 private:
     void fail(fx::DiagId id, const std::vector<std::string>& args);
@@ -60,7 +61,8 @@ private:
     // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
     // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
     void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const;
-    const GpuTexture* target(const std::string& name);
+    // The render target a script names (`name`, resolved to `parameter`); null where it is not allocated.
+    const GpuTexture* target(const std::string& name, int parameter);
     // Binds mTargets; without the depth-stencil target when it is smaller than the colour targets and
     // the operation does not use it (`usesDepth`), with a warning for `pass` when it does.
     bool bindTargets(bool usesDepth, const fx::CompiledPass* pass = nullptr);

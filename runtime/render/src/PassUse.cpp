@@ -5,10 +5,10 @@
 
 namespace runtime {
 
-bool PassUse::projectsWith(const Light* portLight) const {
+bool PassUse::projectsWith(const Light* portLight, const SemanticBinder& binder) const {
     if (readsPortMatrix) return true;
-    return portLight &&
-           std::find(lightMatrices.begin(), lightMatrices.end(), portLight) != lightMatrices.end();
+    return portLight && std::any_of(lightMatrices.begin(), lightMatrices.end(),
+                                    [&](int slot) { return binder.slotLight(slot) == portLight; });
 }
 
 std::vector<bool> passValueReads(const fx::CompiledPass& pass, size_t count) {
@@ -44,9 +44,9 @@ std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t cou
         for (size_t p = 0; p < count; ++p) {
             if (!use.used[p]) continue;
             if (!binder.isPerObject(p)) use.perPassParameters.push_back(p);
-            const Light* light = nullptr;
+            int light = -1;
             if (!binder.projectionSource(p, light)) continue;
-            if (light) {
+            if (light >= 0) {
                 use.lightMatrices.push_back(light);
             } else {
                 use.readsPortMatrix = true;

@@ -22,18 +22,19 @@ struct PassUse {
     // the port's frustum only for passes that project with it (a camera-port pass that draws a light's
     // view with frustum="light0" matrices is not culled).
     bool readsPortMatrix = false;
-    std::vector<const Light*> lightMatrices;
+    std::vector<int> lightMatrices;  // light slots (SemanticBinder::lightSlot)
 
     // True if a draw with the render port (`portLight`: its light, null for the camera) projects with the
     // port's matrices, so that culling to the port's frustum keeps everything it can draw.
-    bool projectsWith(const Light* portLight) const;
+    bool projectsWith(const Light* portLight, const SemanticBinder& binder) const;
 };
 
 // Per effect parameter (`count` of them): whether the pass reads its value, in a uniform-block member its
 // code reads or in a state's or compile argument's expression.
 std::vector<bool> passValueReads(const fx::CompiledPass& pass, size_t count);
 
-// One PassUse per pass of `technique`, for the parameter count `parameters`.
+// One PassUse per pass of `technique`, for the parameter count `parameters`: from the compiled effect and
+// the binder's classification alone, so made once when the effect is created.
 std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t parameters,
                               const SemanticBinder& binder);
 

@@ -37,13 +37,14 @@ PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const
       mBody(body),
       mPlan(plan),
       mDiagnostics(diagnostics),
-      mValues(resources.values),
+      mValues(resources.frameScratch.planValues),
       mStamps(resources.stamps),
       mPadTexels(kReceiverPadTexels),
       mStencilTested(techniqueTestsStencil(resources.effect().techniques[technique])) {
+    mValues = resources.values;  // element by element: the copies' storage is reused
     mColors.fill(kNone);
     mColors[0] = kFrameColor;
-    setRenderPort("", -1, {});
+    setRenderPort("", -1, -1, {});
 }
 
 void PlanRecorder::beginPass(const fx::CompiledPass& pass) {
@@ -52,19 +53,19 @@ void PlanRecorder::beginPass(const fx::CompiledPass& pass) {
     mPadTexels = receiverPadTexels(pass);
 }
 
-void PlanRecorder::setColorTarget(int index, const std::string& texture) {
+void PlanRecorder::setColorTarget(int index, const std::string& texture, int parameter) {
     if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
     mColors[static_cast<size_t>(index)] =
-        texture.empty() ? (index == 0 ? kFrameColor : kNone) : resource(texture);
+        texture.empty() ? (index == 0 ? kFrameColor : kNone) : resource(parameter);
 }
 
-void PlanRecorder::setDepthTarget(const std::string& texture) {
-    mDepth = texture.empty() ? kFrameDepth : resource(texture);
+void PlanRecorder::setDepthTarget(const std::string& texture, int parameter) {
+    mDepth = texture.empty() ? kFrameDepth : resource(parameter);
 }
 
-void PlanRecorder::setRenderPort(const std::string& light, int cascade, const fx::SourceLoc&) {
+void PlanRecorder::setRenderPort(const std::string& light, int lightSlot, int cascade, const fx::SourceLoc&) {
     mLightPort = !light.empty();
-    portMatrices(mScene, mBinder, mOptions, light, cascade, mPort);
+    portMatrices(mScene, mBinder, mOptions, light, lightSlot, cascade, mPort);
 }
 
 void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
@@ -221,26 +222,21 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     mPlan.ops.push_back(std::move(op));
 }
 
-const fx::Value* PlanRecorder::parameter(const std::string& name) const {
-    const std::optional<size_t> index = mResources.findParameter(name);
-    return index ? &mValues[*index] : nullptr;
-}
-
-void PlanRecorder::setParameter(const std::string& name, const fx::Value& value) {
-    if (const std::optional<size_t> index = mResources.findParameter(name))
-        storeParameter(mResources.parameterInfo(), *index, value, mValues, mStamps);
+void PlanRecorder::setParameter(const std::string&, int parameter, const fx::Value& value) {
+    if (parameter >= 0)
+        storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mValues, mStamps);
 }
 
 size_t PlanRecorder::passIndex(const fx::CompiledPass& pass) const {
     return static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
 }
 
-int PlanRecorder::resource(const std::string& name) const {
-    const std::optional<size_t> index = mResources.findParameter(name);
-    if (!index) return kUnknown;
-    const fx::TextureDesc* desc = mResources.effect().findTexture(*index);
-    if (!mResources.textures.count(*index) && !(desc && isRenderTarget(*desc))) return kUnknown;
-    return static_cast<int>(*index);
+int PlanRecorder::resource(int parameter) const {
+    if (parameter < 0) return kUnknown;
+    const size_t index = static_cast<size_t>(parameter);
+    const fx::TextureDesc* desc = mResources.effect().findTexture(index);
+    if (!mResources.textures.count(index) && !(desc && isRenderTarget(*desc))) return kUnknown;
+    return parameter;
 }
 
 // A pass annotated `string LeaveOutWhen = "NoClosedObjects";` (no object's mesh is closed: a second

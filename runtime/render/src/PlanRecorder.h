@@ -30,9 +30,9 @@ public:
                  const std::vector<glm::vec3>& body, FramePlan& plan, fx::DiagnosticSink& diagnostics);
 
     void beginPass(const fx::CompiledPass& pass) override;
-    void setColorTarget(int index, const std::string& texture) override;
-    void setDepthTarget(const std::string& texture) override;
-    void setRenderPort(const std::string& light, int cascade, const fx::SourceLoc&) override;
+    void setColorTarget(int index, const std::string& texture, int parameter) override;
+    void setDepthTarget(const std::string& texture, int parameter) override;
+    void setRenderPort(const std::string& light, int lightSlot, int cascade, const fx::SourceLoc&) override;
     void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
@@ -41,12 +41,12 @@ public:
     // The host's scene draw writes the bound targets like a pass of its own; its signature changes with
     // the scene and the camera, so it is never taken for cached.
     void drawScene(const fx::ScriptCommand& command) override;
-    const fx::Value* parameter(const std::string& name) const override;
-    void setParameter(const std::string& name, const fx::Value& value) override;
+    const fx::Value* parameter(size_t index) const override { return &mValues[index]; }
+    void setParameter(const std::string& name, int parameter, const fx::Value& value) override;
 
 private:
     size_t passIndex(const fx::CompiledPass& pass) const;
-    int resource(const std::string& name) const;
+    int resource(int parameter) const;
     bool sceneSaysSkip(const fx::CompiledPass& pass) const;
     static float receiverPadTexels(const fx::CompiledPass& pass);
     glm::mat4 cascadeSlice() const;
@@ -62,8 +62,8 @@ private:
     const std::vector<glm::vec3>& mBody;
     FramePlan& mPlan;
     fx::DiagnosticSink& mDiagnostics;
-    std::vector<fx::Value> mValues;  // the dry run's copy of the parameter values
-    ParameterStamps mStamps;         // of mValues (the resources' clock: stamps stay unique)
+    std::vector<fx::Value>& mValues;  // the dry run's copy of the parameter values (kept between frames)
+    ParameterStamps mStamps;          // of mValues (the resources' clock: stamps stay unique)
     std::array<int, RenderTargets::kMaxColorTargets> mColors{};
     int mDepth = kFrameDepth;
     bool mLightPort = false;

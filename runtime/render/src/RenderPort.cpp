@@ -7,7 +7,8 @@ namespace runtime {
 
 // A light port renders with the matrices the effect's parameterization of that light gives (`binder`).
 bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameOptions& options,
-                  const std::string& light, int cascade, RenderPortView& port, std::string* error) {
+                  const std::string& light, int lightSlot, int cascade, RenderPortView& port,
+                  std::string* error) {
     port.lightIndex = port.cascade = -1;
     if (light.empty()) {
         const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -15,7 +16,7 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
         port.projection = scene.camera.projection(aspect);
         return true;
     }
-    const Light* found = scene.findLight(light);
+    const Light* found = binder.slotLight(lightSlot);
     if (!found) {
         if (error) *error = "light '" + light + "', which scene '" + scene.name + "' does not have";
         return false;

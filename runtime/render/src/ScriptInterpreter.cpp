@@ -12,14 +12,18 @@ namespace {
 
 using Command = fx::ScriptCommand;
 
-// A ClearSet*/LoopByCount value: a parameter's name, or a literal ("0.5", "1,0,0,1"; fx/LiteralNumbers.h,
-// as the compiler checked it).
-std::optional<fx::Value> scriptValue(const std::string& text, const ScriptTarget& target) {
-    if (const fx::Value* value = target.parameter(text)) return *value;
-    countNameLookup();
-    const std::optional<std::vector<float>> numbers = fx::parseLiteralNumbers(text);
-    if (!numbers || numbers->empty()) return std::nullopt;
-    return numbers->size() == 1 ? fx::Value::scalar(numbers->front()) : fx::Value::vector(*numbers);
+// A ClearSet*/LoopByCount value: the parameter it names, or its literal ("0.5", "1,0,0,1";
+// fx/LiteralNumbers.h, as the compiler checked it), both resolved when the effect was created.
+const fx::Value* scriptValue(const ScriptOperand& operand, const ScriptTarget& target) {
+    if (operand.parameter >= 0) return target.parameter(static_cast<size_t>(operand.parameter));
+    return operand.literal ? &*operand.literal : nullptr;
+}
+
+bool takesParameter(Command::Kind kind) {
+    return kind == Command::Kind::RenderColorTarget || kind == Command::Kind::RenderDepthStencilTarget ||
+           kind == Command::Kind::ClearSetColor || kind == Command::Kind::ClearSetDepth ||
+           kind == Command::Kind::ClearSetStencil || kind == Command::Kind::LoopByCount ||
+           kind == Command::Kind::LoopGetIndex;
 }
 
 // The pass a Pass= names, by the index the compiler resolved.
@@ -31,10 +35,53 @@ const fx::CompiledPass* passOf(const fx::CompiledTechnique& technique, const Com
 
 }  // namespace
 
-const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::CompiledEffect& effect,
-                                                                const std::string& requested,
-                                                                const ScriptTarget& target,
-                                                                fx::DiagnosticSink& diagnostics) {
+ScriptOperands::ScriptOperands(const fx::CompiledEffect& effect,
+                               const std::function<std::optional<size_t>(std::string_view)>& findParameter,
+                               const std::function<int(std::string_view)>& lightSlot) {
+    const auto resolve = [&](const std::vector<Command>& commands) {
+        for (const Command& command : commands) {
+            ScriptOperand operand;
+            if (takesParameter(command.kind) && !command.value.empty()) {
+                if (const std::optional<size_t> index = findParameter(command.value)) {
+                    operand.parameter = static_cast<int>(*index);
+                } else if (command.kind != Command::Kind::RenderColorTarget &&
+                           command.kind != Command::Kind::RenderDepthStencilTarget &&
+                           command.kind != Command::Kind::LoopGetIndex) {
+                    const std::optional<std::vector<float>> numbers = fx::parseLiteralNumbers(command.value);
+                    if (numbers && !numbers->empty())
+                        operand.literal = numbers->size() == 1 ? fx::Value::scalar(numbers->front())
+                                                               : fx::Value::vector(*numbers);
+                }
+            }
+            if (command.kind == Command::Kind::RenderPort && !command.value.empty())
+                operand.lightSlot = lightSlot(command.value);
+            mOperands.emplace(&command, std::move(operand));
+        }
+    };
+    resolve(effect.globalScript);
+    for (const fx::CompiledTechnique& technique : effect.techniques) {
+        resolve(technique.script);
+        for (const fx::CompiledPass& pass : technique.passes) resolve(pass.script);
+    }
+}
+
+const ScriptOperand& ScriptOperands::of(const fx::ScriptCommand& command) const {
+    auto found = mOperands.find(&command);
+    return found == mOperands.end() ? mNone : found->second;
+}
+
+bool ScriptInterpreter::selectionReadsParameters(const fx::CompiledEffect& effect,
+                                                 const std::string& requested) {
+    if (!requested.empty()) return false;
+    for (const Command& command : effect.globalScript)
+        if (command.kind == Command::Kind::Technique) return !command.selectorCondition.empty();
+    return false;
+}
+
+const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(
+    const fx::CompiledEffect& effect, const std::string& requested,
+    const std::function<const fx::Value*(const std::string&)>& parameterByName,
+    fx::DiagnosticSink& diagnostics) {
     countNameLookup();
     std::string name = requested;
     fx::SourceLoc loc;
@@ -44,7 +91,7 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
             loc = command.loc;
             if (command.selectorCondition.empty()) {
                 name = command.value;
-            } else if (const fx::Value* condition = target.parameter(command.selectorCondition)) {
+            } else if (const fx::Value* condition = parameterByName(command.selectorCondition)) {
                 name = condition->asBool() ? command.selectorTrue : command.selectorFalse;
             } else {
                 // FX Composer's `Technique=Technique?Simple:Simple10:Textured:Textured10;` lists
@@ -99,13 +146,14 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
     return false;
 }
 
-bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopCount, ScriptTarget& target,
-                            fx::DiagnosticSink& diagnostics) {
+bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, const ScriptOperands& operands,
+                            int maxLoopCount, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     if (!clearsFrame(technique)) {
         // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
         // clears to the host background, as in FX Composer.
-        target.setClearColor(
-            fx::Value::vector({kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a}));
+        static const fx::Value kBackground =
+            fx::Value::vector({kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a});
+        target.setClearColor(kBackground);
         target.setClearDepth(1.0f);
         target.setClearStencil(0);
         for (Command::ClearWhat what :
@@ -113,28 +161,32 @@ bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopC
             target.clear(what);
     }
     if (technique.hasScript)
-        return runCommands(technique.script, technique, nullptr, maxLoopCount, target, diagnostics);
+        return runCommands(technique.script, technique, nullptr, operands, maxLoopCount, target, diagnostics);
     // No script: every pass in order, as D3DX would run them.
-    for (size_t index = 0; index < technique.passes.size(); ++index) {
-        const fx::CompiledPass& pass = technique.passes[index];
-        Command passCommand;
-        passCommand.kind = Command::Kind::Pass;
-        passCommand.value = pass.name;
-        passCommand.pass = static_cast<int>(index);
-        passCommand.loc = pass.loc;
-        if (!runCommands({passCommand}, technique, nullptr, maxLoopCount, target, diagnostics)) return false;
-    }
+    for (const fx::CompiledPass& pass : technique.passes)
+        if (!runPass(pass, technique, operands, maxLoopCount, target, diagnostics)) return false;
+    return true;
+}
+
+bool ScriptInterpreter::runPass(const fx::CompiledPass& pass, const fx::CompiledTechnique& technique,
+                                const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
+                                fx::DiagnosticSink& diagnostics) {
+    target.beginPass(pass);
+    if (pass.hasScript)
+        return runCommands(pass.script, technique, &pass, operands, maxLoopCount, target, diagnostics);
+    target.draw(pass, Command::DrawWhat::Geometry);
     return true;
 }
 
 bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                                     const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                                    int maxLoopCount, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
+                                    const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
+                                    fx::DiagnosticSink& diagnostics) {
     struct Loop {
-        size_t body;    // index of the first command inside the loop
-        int remaining;  // iterations still to run after this one
-        int index;      // current iteration
-        std::string indexParameter;
+        size_t body;                  // index of the first command inside the loop
+        int remaining;                // iterations still to run after this one
+        int index;                    // current iteration
+        const Command* indexCommand;  // its LoopGetIndex, or null
     };
     std::vector<Loop> loops;
 
@@ -148,28 +200,23 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                                        {command.value, technique.name});
                     return false;
                 }
-                target.beginPass(*next);
-                if (next->hasScript) {
-                    if (!runCommands(next->script, technique, next, maxLoopCount, target, diagnostics))
-                        return false;
-                } else {
-                    target.draw(*next, Command::DrawWhat::Geometry);
-                }
+                if (!runPass(*next, technique, operands, maxLoopCount, target, diagnostics)) return false;
                 break;
             }
             case Command::Kind::RenderColorTarget:
-                target.setColorTarget(command.index, command.value);
+                target.setColorTarget(command.index, command.value, operands.of(command).parameter);
                 break;
             case Command::Kind::RenderDepthStencilTarget:
-                target.setDepthTarget(command.value);
+                target.setDepthTarget(command.value, operands.of(command).parameter);
                 break;
             case Command::Kind::RenderPort:
-                target.setRenderPort(command.value, command.cascade, command.loc);
+                target.setRenderPort(command.value, operands.of(command).lightSlot, command.cascade,
+                                     command.loc);
                 break;
             case Command::Kind::ClearSetColor:
             case Command::Kind::ClearSetDepth:
             case Command::Kind::ClearSetStencil: {
-                const std::optional<fx::Value> value = scriptValue(command.value, target);
+                const fx::Value* value = scriptValue(operands.of(command), target);
                 if (!value) {
                     diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
                                        {std::string(fx::scriptCommandName(command.kind)),
@@ -193,7 +240,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 target.draw(*pass, command.draw);
                 break;
             case Command::Kind::LoopByCount: {
-                const std::optional<fx::Value> value = scriptValue(command.value, target);
+                const fx::Value* value = scriptValue(operands.of(command), target);
                 int count = value ? value->asInt() : -1;
                 if (count < 0) {
                     diagnostics.report(
@@ -216,7 +263,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                     }
                     break;
                 }
-                loops.push_back(Loop{i + 1, count - 1, 0, {}});
+                loops.push_back(Loop{i + 1, count - 1, 0, nullptr});
                 break;
             }
             case Command::Kind::LoopGetIndex:
@@ -224,8 +271,9 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                     diagnostics.report(fx::DiagId::ScriptLoopIndexOutsideLoop, command.loc, {});
                     return false;
                 }
-                loops.back().indexParameter = command.value;
-                target.setParameter(command.value, fx::Value::integer(loops.back().index));
+                loops.back().indexCommand = &command;
+                target.setParameter(command.value, operands.of(command).parameter,
+                                    fx::Value::integer(loops.back().index));
                 break;
             case Command::Kind::LoopEnd:
                 if (loops.empty()) {
@@ -236,8 +284,10 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                     Loop& loop = loops.back();
                     --loop.remaining;
                     ++loop.index;
-                    if (!loop.indexParameter.empty())
-                        target.setParameter(loop.indexParameter, fx::Value::integer(loop.index));
+                    if (loop.indexCommand)
+                        target.setParameter(loop.indexCommand->value,
+                                            operands.of(*loop.indexCommand).parameter,
+                                            fx::Value::integer(loop.index));
                     i = loop.body - 1;
                 } else {
                     loops.pop_back();

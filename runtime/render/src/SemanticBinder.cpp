@@ -146,12 +146,10 @@ bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inv
     return false;
 }
 
-bool SemanticBinder::wantsVisibleSamples(const std::vector<fx::ParameterInfo>& parameters,
-                                         const std::vector<fx::Value>& values) {
-    countNameLookup();
-    for (size_t i = 0; i < parameters.size() && i < values.size(); ++i)
-        if (upper(parameters[i].semantic) == "LIGHTFITVISIBLESAMPLES" && !values[i].data.empty() &&
-            values[i].data[0] != 0.0f)
+bool SemanticBinder::wantsVisibleSamples(const std::vector<fx::Value>& values) const {
+    for (const FitInput& input : mFitInputs)
+        if (input.tunable == Tunable::FitToVisibleSamples && input.parameter < values.size() &&
+            !values[input.parameter].data.empty() && values[input.parameter].data[0] != 0.0f)
             return true;
     return false;
 }
@@ -276,70 +274,34 @@ std::string SemanticBinder::conventionalSemantic(const fx::ParameterInfo& parame
     return "";
 }
 
-SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
-                               const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
-                               fx::DiagnosticSink& diagnostics, const VisibleSamples* visible)
-    : mScene(scene), mSceneBounds(sceneBounds), mAspect(aspect) {
-    mHasClosedObjects =
-        std::any_of(scene.objects.begin(), scene.objects.end(),
-                    [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
-    // The parameterization of each light (the `Parameterization` annotation of any parameter naming it) and
-    // its tunables, before any light is fitted.
+namespace {
+
+constexpr std::pair<const char*, int> kTunableNames[] = {
+    {"LISPSMNSCALE", 1},        {"LISPSMNOPT", 2},      {"LISPSMDEPTHEXTENT", 3},
+    {"LISPSMMIDDLEVECTOR", 4},  {"LIGHTPANCAKING", 5},  {"TSMFOCUS", 6},
+    {"PSMSLIDEBACK", 7},        {"PSMMAXWARPRATIO", 8}, {"CASCADECOUNT", 9},
+    {"CASCADESPLITLAMBDA", 10}, {"CASCADEBLEND", 11},   {"LIGHTFITVISIBLESAMPLES", 12},
+};
+
+}  // namespace
+
+SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters) : mParameters(parameters) {
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
-        if (!parameter.semantic.empty()) countNameLookup();  // the tunables' semantics, by text
-        const std::string upperSemantic = upper(parameter.semantic);
-        if (i < values.size() && !values[i].data.empty()) {
-            if (upperSemantic == "LISPSMNSCALE") mTunables.lispsmNScale = values[i].data[0];
-            if (upperSemantic == "LISPSMDEPTHEXTENT") mTunables.lispsmDepthExtent = values[i].data[0];
-            if (upperSemantic == "LISPSMMIDDLEVECTOR")
-                mTunables.lispsmMiddleVector = values[i].data[0] != 0.0f;
-            if (upperSemantic == "LIGHTPANCAKING") mTunables.pancaking = values[i].data[0] != 0.0f;
-            if (upperSemantic == "TSMFOCUS") mTunables.tsmFocus = values[i].data[0];
-            if (upperSemantic == "PSMSLIDEBACK") mTunables.psmSlideBack = values[i].data[0];
-            if (upperSemantic == "PSMMAXWARPRATIO") mTunables.psmMaxWarpRatio = values[i].data[0];
-            if (upperSemantic == "CASCADECOUNT")
-                mTunables.cascadeCount = static_cast<int>(std::lround(values[i].data[0]));
-            if (upperSemantic == "CASCADESPLITLAMBDA") mTunables.cascadeSplitLambda = values[i].data[0];
-            if (upperSemantic == "CASCADEBLEND") mTunables.cascadeBlend = values[i].data[0];
-            if (upperSemantic == "LIGHTFITVISIBLESAMPLES")
-                mTunables.fitToVisibleSamples = values[i].data[0] != 0.0f;
+        FitInput input;
+        input.parameter = i;
+        if (!parameter.semantic.empty()) {
+            countNameLookup();
+            const std::string upperSemantic = upper(parameter.semantic);
+            for (const auto& [text, tunable] : kTunableNames)
+                if (upperSemantic == text) input.tunable = static_cast<Tunable>(tunable);
         }
-        if (upperSemantic == "LISPSMNOPT" && i < values.size()) {
-            if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
-                mTunables.lispsmN = *choice;
-            } else {
-                diagnostics.report(fx::DiagId::LispsmChoiceInvalid, parameter.loc,
-                                   {values[i].string, parameter.name});
-            }
+        if (parameter.hasParameterization && !parameter.light.empty()) {
+            input.parameterizationSlot = lightSlot(parameter.light);
+            input.method = parseLightParameterization(parameter.parameterization);
         }
-        const std::string& lightName = parameter.light;
-        if (!parameter.hasParameterization || lightName.empty()) continue;
-        const std::optional<LightParameterization> method =
-            parseLightParameterization(parameter.parameterization);
-        if (!method) {
-            diagnostics.report(fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
-                               {"Parameterization",
-                                "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", "
-                                "\"PSMCube\" or \"Cascaded\""});
-            continue;
-        }
-        const Light* light = scene.findLight(lightName);
-        if (!light) continue;  // reported below with the parameter's binding
-        auto known = std::find_if(mFittedLights.begin(), mFittedLights.end(),
-                                  [light](const FittedLight& f) { return f.light == light; });
-        if (known == mFittedLights.end()) {
-            mFittedLights.push_back({light, *method, {}});
-        } else if (known->method != *method) {
-            diagnostics.report(
-                fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
-                {"Parameterization", "light '" + lightName + "' is already parameterized as '" +
-                                         lightParameterizationName(known->method) + "'"});
-        }
+        if (input.tunable != Tunable::None || input.parameterizationSlot >= 0) mFitInputs.push_back(input);
     }
-    for (FittedLight& fitted : mFittedLights)
-        fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables,
-                              mTunables.fitToVisibleSamples ? visible : nullptr);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
         if (parameter.isStatic || !parameter.type.isNumeric()) continue;
@@ -361,19 +323,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         const std::string upperSemantic = upper(semantic);
         if (!lightName.empty() ||
             (isLightProperty && (upperSemantic.rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
-            const std::string name = lightName.empty() ? std::string("light0") : lightName;
-            binding.light = scene.findLight(name);
-            if (!binding.light) {
-                diagnostics.report(fx::DiagId::ParameterNamesMissingLight, parameter.loc,
-                                   {parameter.name, name});
-                continue;
-            }
+            binding.lightSlot = lightSlot(lightName.empty() ? std::string_view("light0") : lightName);
             if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
-            const LightFit& fit = fittedLight(*binding.light).fit;
-            binding.lightView = fit.view;
-            binding.lightProjection = fit.projection;
-            binding.lightCascades = fit.cascades;
-            binding.lightFaceSelect = fit.faceSelect;
         } else if (isLightProperty) {
             continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
         }
@@ -381,18 +332,163 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
     }
 }
 
+int SemanticBinder::lightSlot(std::string_view lightName) {
+    for (size_t slot = 0; slot < mSlotNames.size(); ++slot)
+        if (mSlotNames[slot] == lightName) return static_cast<int>(slot);
+    mSlotNames.emplace_back(lightName);
+    mSlotIndices.push_back(-1);
+    mSlotLights.push_back(nullptr);
+    mResolved = false;
+    return static_cast<int>(mSlotNames.size() - 1);
+}
+
+const Light* SemanticBinder::slotLight(int slot) const {
+    return slot >= 0 && static_cast<size_t>(slot) < mSlotLights.size()
+               ? mSlotLights[static_cast<size_t>(slot)]
+               : nullptr;
+}
+
+// Scene::findLight's answer depends on the names of all the scene's lights and nothing else: while they
+// stay the same, so do the slots' lights.
+void SemanticBinder::resolveLights(const Scene& scene) {
+    bool same = mResolved && mResolvedLightNames.size() == scene.lights.size();
+    for (size_t i = 0; same && i < scene.lights.size(); ++i)
+        same = mResolvedLightNames[i] == scene.lights[i].name;
+    if (!same) {
+        mResolvedLightNames.clear();
+        for (const Light& light : scene.lights) mResolvedLightNames.push_back(light.name);
+        for (size_t slot = 0; slot < mSlotNames.size(); ++slot) {
+            const Light* light = scene.findLight(mSlotNames[slot]);
+            mSlotIndices[slot] = light ? static_cast<int>(light - scene.lights.data()) : -1;
+        }
+        mResolved = true;
+    }
+    for (size_t slot = 0; slot < mSlotNames.size(); ++slot)
+        mSlotLights[slot] =
+            mSlotIndices[slot] >= 0 ? &scene.lights[static_cast<size_t>(mSlotIndices[slot])] : nullptr;
+}
+
+void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, float aspect,
+                             const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics,
+                             const VisibleSamples* visible) {
+    mScene = &scene;
+    mSceneBounds = sceneBounds;
+    mAspect = aspect;
+    resolveLights(scene);
+    mHasClosedObjects =
+        std::any_of(scene.objects.begin(), scene.objects.end(),
+                    [](const SceneObject& object) { return object.mesh && object.mesh->closed; });
+    // The parameterization of each light (the `Parameterization` annotation of any parameter naming it) and
+    // its tunables, before any light is fitted.
+    mTunables = {};
+    mFittedLights.clear();
+    for (const FitInput& input : mFitInputs) {
+        const size_t i = input.parameter;
+        const fx::ParameterInfo& parameter = mParameters[i];
+        if (i < values.size() && !values[i].data.empty()) {
+            const float value = values[i].data[0];
+            switch (input.tunable) {
+                case Tunable::LispsmNScale:
+                    mTunables.lispsmNScale = value;
+                    break;
+                case Tunable::LispsmDepthExtent:
+                    mTunables.lispsmDepthExtent = value;
+                    break;
+                case Tunable::LispsmMiddleVector:
+                    mTunables.lispsmMiddleVector = value != 0.0f;
+                    break;
+                case Tunable::Pancaking:
+                    mTunables.pancaking = value != 0.0f;
+                    break;
+                case Tunable::TsmFocus:
+                    mTunables.tsmFocus = value;
+                    break;
+                case Tunable::PsmSlideBack:
+                    mTunables.psmSlideBack = value;
+                    break;
+                case Tunable::PsmMaxWarpRatio:
+                    mTunables.psmMaxWarpRatio = value;
+                    break;
+                case Tunable::CascadeCount:
+                    mTunables.cascadeCount = static_cast<int>(std::lround(value));
+                    break;
+                case Tunable::CascadeSplitLambda:
+                    mTunables.cascadeSplitLambda = value;
+                    break;
+                case Tunable::CascadeBlend:
+                    mTunables.cascadeBlend = value;
+                    break;
+                case Tunable::FitToVisibleSamples:
+                    mTunables.fitToVisibleSamples = value != 0.0f;
+                    break;
+                case Tunable::None:
+                case Tunable::LispsmNOpt:
+                    break;
+            }
+        }
+        if (input.tunable == Tunable::LispsmNOpt && i < values.size()) {
+            if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
+                mTunables.lispsmN = *choice;
+            } else {
+                diagnostics.report(fx::DiagId::LispsmChoiceInvalid, parameter.loc,
+                                   {values[i].string, parameter.name});
+            }
+        }
+        if (input.parameterizationSlot < 0) continue;
+        if (!input.method) {
+            diagnostics.report(fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
+                               {"Parameterization",
+                                "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", "
+                                "\"PSMCube\" or \"Cascaded\""});
+            continue;
+        }
+        const Light* light = slotLight(input.parameterizationSlot);
+        if (!light) continue;  // reported below with the parameter's binding
+        auto known = std::find_if(mFittedLights.begin(), mFittedLights.end(),
+                                  [light](const FittedLight& f) { return f.light == light; });
+        if (known == mFittedLights.end()) {
+            mFittedLights.push_back({light, *input.method, {}});
+        } else if (known->method != *input.method) {
+            diagnostics.report(
+                fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
+                {"Parameterization", "light '" + parameter.light + "' is already parameterized as '" +
+                                         lightParameterizationName(known->method) + "'"});
+        }
+    }
+    for (FittedLight& fitted : mFittedLights)
+        fitted.fit = fitLight(fitted.method, scene, sceneBounds, aspect, *fitted.light, mTunables,
+                              mTunables.fitToVisibleSamples ? visible : nullptr);
+    for (Binding& binding : mBindings) {
+        binding.light = slotLight(binding.lightSlot);
+        binding.active = binding.lightSlot < 0 || binding.light;
+        if (binding.lightSlot < 0) continue;
+        if (!binding.light) {
+            const fx::ParameterInfo& parameter = mParameters[binding.parameter];
+            diagnostics.report(fx::DiagId::ParameterNamesMissingLight, parameter.loc,
+                               {parameter.name, mSlotNames[static_cast<size_t>(binding.lightSlot)]});
+            continue;
+        }
+        const LightFit& fit = fittedLight(*binding.light).fit;
+        binding.lightView = fit.view;
+        binding.lightProjection = fit.projection;
+        binding.lightCascades = fit.cascades;
+        binding.lightFaceSelect = fit.faceSelect;
+    }
+}
+
 const SemanticBinder::FittedLight& SemanticBinder::fittedLight(const Light& light) {
     for (const FittedLight& fitted : mFittedLights)
         if (fitted.light == &light) return fitted;
-    mFittedLights.push_back({&light, LightParameterization::Uniform,
-                             fitLight(LightParameterization::Uniform, mScene, mSceneBounds, mAspect, light)});
+    mFittedLights.push_back(
+        {&light, LightParameterization::Uniform,
+         fitLight(LightParameterization::Uniform, *mScene, mSceneBounds, mAspect, light)});
     return mFittedLights.back();
 }
 
 LightFit SemanticBinder::lightFit(const Light& light) const {
     for (const FittedLight& fitted : mFittedLights)
         if (fitted.light == &light) return fitted.fit;
-    return fitLight(LightParameterization::Uniform, mScene, mSceneBounds, mAspect, light);
+    return fitLight(LightParameterization::Uniform, *mScene, mSceneBounds, mAspect, light);
 }
 
 // A light without cascades (not Cascaded) binds as one cascade: its own matrices, the whole atlas, the
@@ -401,7 +497,7 @@ void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) con
     std::vector<LightView> cascades = binding.lightCascades;
     if (cascades.empty())
         cascades.push_back(
-            {binding.lightView, binding.lightProjection, mScene.camera.nearPlane, mScene.camera.farPlane});
+            {binding.lightView, binding.lightProjection, mScene->camera.nearPlane, mScene->camera.farPlane});
     const int count = static_cast<int>(cascades.size());
     std::vector<float> elements;
     for (int k = 0; k < count; ++k) {
@@ -433,7 +529,7 @@ void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) con
 
 bool SemanticBinder::isBound(size_t parameter) const {
     return std::any_of(mBindings.begin(), mBindings.end(),
-                       [parameter](const Binding& b) { return b.parameter == parameter; });
+                       [parameter](const Binding& b) { return b.active && b.parameter == parameter; });
 }
 
 bool SemanticBinder::dependsOnObject(Kind kind) {
@@ -459,7 +555,8 @@ void SemanticBinder::objectContext(const RenderPortView& port, const std::vector
     out.push_back(static_cast<uint32_t>(port.lightIndex));
     out.push_back(static_cast<uint32_t>(port.cascade));
     for (const Binding& binding : mBindings) {
-        if (!dependsOnObject(binding.kind) || binding.parameter >= used.size() || !used[binding.parameter])
+        if (!binding.active || !dependsOnObject(binding.kind) || binding.parameter >= used.size() ||
+            !used[binding.parameter])
             continue;
         append(binding.lightView);
         append(binding.lightProjection);
@@ -470,13 +567,13 @@ void SemanticBinder::objectContext(const RenderPortView& port, const std::vector
     }
 }
 
-bool SemanticBinder::projectionSource(size_t parameter, const Light*& light) const {
+bool SemanticBinder::projectionSource(size_t parameter, int& lightSlot) const {
     for (const Binding& b : mBindings) {
         if (b.parameter != parameter || b.kind == Kind::World) continue;
         if (b.kind != Kind::View && b.kind != Kind::Projection && b.kind != Kind::WorldView &&
             b.kind != Kind::ViewProjection && b.kind != Kind::WorldViewProjection)
             continue;
-        light = b.light;
+        lightSlot = b.lightSlot;
         return true;
     }
     return false;
@@ -487,7 +584,7 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                           const std::vector<bool>* used, ParameterStamps* stamps) const {
     const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
     for (const Binding& binding : mBindings) {
-        if (pinned[binding.parameter]) continue;
+        if (!binding.active || pinned[binding.parameter]) continue;
         if (used && !(*used)[binding.parameter]) continue;
         if (scope != Scope::All && dependsOnObject(binding.kind) != (scope == Scope::PerObject)) continue;
         fx::Value& value = values[binding.parameter];
@@ -506,7 +603,7 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
         projection = binding.lightProjection;
         // RenderPort=lightN.cascadeK: that light's matrices are cascade K's while the port is active.
         const bool cascadePort = port.cascade >= 0 &&
-                                 port.lightIndex == static_cast<int>(binding.light - mScene.lights.data()) &&
+                                 port.lightIndex == static_cast<int>(binding.light - mScene->lights.data()) &&
                                  port.cascade < static_cast<int>(binding.lightCascades.size());
         if (cascadePort) {
             view = binding.lightCascades[static_cast<size_t>(port.cascade)].view;
@@ -572,7 +669,7 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));
             return;
         case Kind::Ambient:
-            storeVector(value, glm::vec4(mScene.ambient, 1.0f));
+            storeVector(value, glm::vec4(mScene->ambient, 1.0f));
             return;
         case Kind::SceneHasClosedObjects:
             storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));

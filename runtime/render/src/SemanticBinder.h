@@ -36,7 +36,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace runtime {
@@ -65,20 +67,31 @@ struct RenderPortView {
 
 class SemanticBinder {
 public:
-    // Classifies every parameter's semantic once. Parameters with semantics the runtime does not know
-    // are left alone (they are the user's own).
+    // Classifies every parameter's semantic and registers the lights its annotations name, once, when the
+    // effect is created: a frame looks up no semantic and no light by name. Parameters with semantics the
+    // runtime does not know are left alone (they are the user's own).
+    explicit SemanticBinder(const std::vector<fx::ParameterInfo>& parameters);
+
+    // The slot of a light an effect names (`RenderPort=light0`, a `frustum`/`Object` annotation), registered
+    // when the effect is created; prepare() resolves every slot against the frame's scene.
+    int lightSlot(std::string_view lightName);
+    // The frame's light in a slot, or null where the scene has no light of that name.
+    const Light* slotLight(int slot) const;
+
+    // Prepares a frame of `scene`: resolves the light slots (by name only when the scene's lights differ
+    // from the last frame's), reads the parameterization tunables from `values` (the current parameter
+    // values), and fits each named light once for the frame.
     // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
-    // `aspect` (the frame's width / height) and `values` (the current parameter values, for the
-    // parameterization tunables) serve view-dependent light fits. `visible` (may be null): what the camera
-    // sees this frame, for the fits of an effect that asks for it (wantsVisibleSamples).
-    SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const Scene& scene,
-                   const Bounds& sceneBounds, float aspect, const std::vector<fx::Value>& values,
-                   fx::DiagnosticSink& diagnostics, const VisibleSamples* visible = nullptr);
+    // `aspect` (the frame's width / height) serves view-dependent light fits. `visible` (may be null): what
+    // the camera sees this frame, for the fits of an effect that asks for it (wantsVisibleSamples).
+    // Mistakes of the annotations and the scene are reported to `diagnostics` every frame.
+    void prepare(const Scene& scene, const Bounds& sceneBounds, float aspect,
+                 const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics,
+                 const VisibleSamples* visible = nullptr);
 
     // True if a parameter with semantic LightFitVisibleSamples is set: the frame must find the visible
     // samples (VisibleSamplePass) before the lights are fitted.
-    static bool wantsVisibleSamples(const std::vector<fx::ParameterInfo>& parameters,
-                                    const std::vector<fx::Value>& values);
+    bool wantsVisibleSamples(const std::vector<fx::Value>& values) const;
 
     // The semantic a parameter written without one is bound by, from its name, or "" for none. FX11 and
     // D3DX applications set parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`,
@@ -111,9 +124,9 @@ public:
     void objectContext(const RenderPortView& port, const std::vector<bool>& used,
                        std::vector<uint32_t>& out) const;
     // For a View/Projection-derived matrix (View, Projection, WorldView, ViewProjection,
-    // WorldViewProjection and their variants): the light it is annotated with, or null for the render
-    // port's matrices. False for any other parameter. What culling checks a pass projects with.
-    bool projectionSource(size_t parameter, const Light*& light) const;
+    // WorldViewProjection and their variants): the slot of the light it is annotated with, or -1 for the
+    // render port's matrices. False for any other parameter. What culling checks a pass projects with.
+    bool projectionSource(size_t parameter, int& lightSlot) const;
 
     // The matrices of a light as this effect parameterizes it (Uniform unless an annotation says
     // otherwise): what RenderPort=lightN renders with, the same as the annotated parameters see.
@@ -160,18 +173,43 @@ private:
         Kind kind;
         bool inverse = false;
         bool transpose = false;
-        const Light* light =
-            nullptr;                // frustum/Object annotation (matrices), or the light of a light property
+        int lightSlot = -1;  // frustum/Object annotation (matrices), or the light of a light property
+        // Per frame (prepare()): the slot's light, null where the binding is not written this frame.
+        const Light* light = nullptr;
+        bool active = true;
         glm::mat4 lightView{1.0f};  // the light's matrices, fitted once: they do not change within a frame
         glm::mat4 lightProjection{1.0f};
         std::vector<LightView> lightCascades{};  // the light's cascades or cube faces, else empty
         glm::mat4 lightFaceSelect{0.0f};         // a PSMCube fit's LightFit::faceSelect
+    };
+    // A parameter a light fit reads: a tunable, or the `Parameterization` annotation of a light.
+    enum class Tunable {
+        None,
+        LispsmNScale,
+        LispsmNOpt,
+        LispsmDepthExtent,
+        LispsmMiddleVector,
+        Pancaking,
+        TsmFocus,
+        PsmSlideBack,
+        PsmMaxWarpRatio,
+        CascadeCount,
+        CascadeSplitLambda,
+        CascadeBlend,
+        FitToVisibleSamples,
+    };
+    struct FitInput {
+        size_t parameter = 0;
+        Tunable tunable = Tunable::None;
+        int parameterizationSlot = -1;  // a Parameterization annotation's light, or -1
+        std::optional<LightParameterization> method;
     };
     static bool dependsOnObject(Kind kind);
     void write(const Binding& binding, const RenderPortView& port, const SceneObject* object, float time,
                const glm::mat4& world, fx::Value& value) const;
 
     static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
+    void resolveLights(const Scene& scene);
 
     struct FittedLight {
         const Light* light;
@@ -181,13 +219,22 @@ private:
     const FittedLight& fittedLight(const Light& light);
     void storeCascades(const Binding& binding, fx::Value& value) const;
 
-    const Scene& mScene;
+    const std::vector<fx::ParameterInfo>& mParameters;
+    const Scene* mScene = nullptr;
     Bounds mSceneBounds;
-    float mAspect;
+    float mAspect = 1.0f;
     LightTunables mTunables;
+    std::vector<FitInput> mFitInputs;
     std::vector<FittedLight> mFittedLights;  // one per light any parameter names, fitted once per frame
     bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
+    // The light slots: the names the effect uses, and per frame the scene's light of each (by index into
+    // Scene::lights, resolved again only when the names of the scene's lights change).
+    std::vector<std::string> mSlotNames;
+    std::vector<int> mSlotIndices;
+    std::vector<const Light*> mSlotLights;
+    std::vector<std::string> mResolvedLightNames;
+    bool mResolved = false;
     mutable std::vector<float> mPrevious;  // bind(): a value before it is written, to see whether it changed
 };
 
