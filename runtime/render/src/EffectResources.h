@@ -7,6 +7,7 @@
 
 #include "AnnotationTable.h"
 #include "BatchedPass.h"
+#include "CullCache.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
 #include <runtime/GpuBuffer.h>
@@ -139,6 +140,8 @@ public:
         std::vector<uint32_t> meshSlots;
         size_t meshCount = 0;
     } sceneCache;
+    // The culling volumes' visible lists, kept while the scene and the volume stand still.
+    CullCache cullCache;
     // FrameExecutor's working lists, kept between frames so that a frame like the last allocates nothing.
     struct FrameScratch {
         std::vector<uint32_t> visible;  // the objects the current draw draws

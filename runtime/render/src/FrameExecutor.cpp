@@ -319,14 +319,24 @@ void FrameExecutor::closePass() {
 // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
 void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) const {
     const InstanceBvh& bvh = mResources.sceneCache.bvh;
-    const glm::mat4 viewProjection = mPort.projection * mPort.view;
-    if (!mLightPort) {
-        const ConvexVolume frustum = frustumPlanes(viewProjection);
-        bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, visible);
+    CullCache::Volume volume;
+    volume.sceneStamp = mResources.sceneCache.stamp;
+    volume.viewProjection = mPort.projection * mPort.view;
+    volume.lightPort = mLightPort;
+    if (mLightPort) volume.region = op && op->cullToReceivers ? op->region : fullLightRegion();
+    if (const std::vector<uint32_t>* kept = mResources.cullCache.find(volume)) {
+        visible.insert(visible.end(), kept->begin(), kept->end());
         return;
     }
-    const ReceiverRegion region = op && op->cullToReceivers ? op->region : fullLightRegion();
-    bvh.query([&](const Aabb& box) { return casterReaches(region, viewProjection, box); }, visible);
+    std::vector<uint32_t>& list = mResources.cullCache.insert(volume);
+    if (!mLightPort) {
+        const ConvexVolume frustum = frustumPlanes(volume.viewProjection);
+        bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, list);
+    } else {
+        bvh.query([&](const Aabb& box) { return casterReaches(volume.region, volume.viewProjection, box); },
+                  list);
+    }
+    visible.insert(visible.end(), list.begin(), list.end());
 }
 
 const GpuTexture* FrameExecutor::target(const std::string& name, int parameter) {

@@ -1,0 +1,50 @@
+// CullCache: the objects each culling volume of the recent frames kept, so that culling costs what the
+// scene's change costs. A draw culls against the camera's frustum or a light's receiver region
+// (FrameExecutor::cull); while the scene's objects (the scene cache's stamp), the volume's view-projection
+// and its region stand still, the list is the same and is not traversed again, and passes of one frame that
+// cull against the same volume share one traversal.
+#pragma once
+
+#include <runtime/IntersectionBody.h>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace runtime {
+
+class CullCache {
+public:
+    // What a culling volume is: the scene it culls, its view-projection, whether it is a light's (then
+    // `region` is the receiver region its casters must reach).
+    struct Volume {
+        uint64_t sceneStamp = 0;
+        glm::mat4 viewProjection{1.0f};
+        bool lightPort = false;
+        ReceiverRegion region;
+    };
+
+    // The kept list of `volume`, or null where none is kept.
+    const std::vector<uint32_t>* find(const Volume& volume);
+    // A list to fill for `volume` (emptied), taking the place of the least recently used one: its storage
+    // is reused, so a moving camera allocates nothing once the lists have grown.
+    std::vector<uint32_t>& insert(const Volume& volume);
+
+private:
+    // A frame culls against a few volumes (the camera, each light or cascade it renders).
+    static constexpr size_t kEntries = 8;
+    struct Entry {
+        bool valid = false;
+        Volume volume;
+        uint64_t lastUse = 0;
+        std::vector<uint32_t> visible;
+    };
+    static bool same(const Volume& a, const Volume& b);
+
+    std::array<Entry, kEntries> mEntries;
+    uint64_t mClock = 0;
+};
+
+}  // namespace runtime
