@@ -5,6 +5,7 @@
 // [SECTION] Passes and techniques
 
 #include "Compiler.h"
+#include "FixedFunctionPass.h"
 #include "MacroNoteSink.h"
 #include "PointSprites.h"
 #include "StateAssignments.h"
@@ -367,6 +368,9 @@ std::unique_ptr<CompiledEffect> compileEffect(std::shared_ptr<const Effect> effe
                                               const CompileOptions& options, DiagnosticSink& diagnostics) {
     if (!effect) return nullptr;
     detail::MacroNoteSink noted(diagnostics, effect->sourceMap);
+    // D3D9's fixed-function stages become generated shaders of the effect before anything else reads it.
+    effect = detail::withFixedFunctionStages(std::move(effect), noted);
+    if (!effect) return nullptr;
     return detail::Compiler(*effect, options, noted).run();
 }
 

@@ -208,12 +208,20 @@ Expr Parser::parsePrimary() {
         advance();
         return e;
     }
-    if (token.is("<")) {  // <TextureName>
+    if (token.is("<")) {  // <TextureName>, and a fixed-function state's <array[i]>
         advance();
         const Token& name = expectIdentifier("a texture name");
-        expectCloseAngle();
         e.kind = Expr::Kind::TextureRef;
         e.text = name.text;
+        if (accept("[")) {
+            Expr array = e;
+            array.kind = Expr::Kind::Identifier;
+            e.kind = Expr::Kind::Index;
+            e.text.clear();
+            e.args = {std::move(array), parseExpr()};
+            expect("]");
+        }
+        expectCloseAngle();
         return e;
     }
     if (token.kind != Token::Kind::Identifier) unexpected("an expression");

@@ -94,6 +94,14 @@ std::vector<std::string_view> domainPrefixes(StateDomain domain) {
             return {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_", "D3D11_COLOR_WRITE_ENABLE_"};
         case StateDomain::FogMode:
             return {"D3DFOG_"};
+        case StateDomain::LightType:
+            return {"D3DLIGHT_"};
+        case StateDomain::MaterialSource:
+            return {"D3DMCS_"};
+        case StateDomain::TextureOp:
+            return {"D3DTOP_"};
+        case StateDomain::TextureArg:
+            return {"D3DTA_"};
         default:
             return {};
     }
@@ -231,6 +239,18 @@ std::string_view domainName(StateDomain domain) {
             return "DepthWriteMask";
         case StateDomain::FogMode:
             return "FogMode";
+        case StateDomain::Vector:
+            return "Vector";
+        case StateDomain::Matrix:
+            return "Matrix";
+        case StateDomain::LightType:
+            return "LightType";
+        case StateDomain::MaterialSource:
+            return "MaterialSource";
+        case StateDomain::TextureOp:
+            return "TextureOp";
+        case StateDomain::TextureArg:
+            return "TextureArg";
     }
     return "?";
 }

@@ -278,6 +278,8 @@ bool StateAssignments::isEnumDomain(StateDomain domain) {
         case StateDomain::Int:
         case StateDomain::Float:
         case StateDomain::Color:
+        case StateDomain::Vector:
+        case StateDomain::Matrix:
         case StateDomain::Shader:
         case StateDomain::TextureRef:
             return false;
@@ -312,6 +314,12 @@ void StateAssignments::resolveStateValue(Expr& e, StateDomain domain, const std:
             }
             return;
         }
+        case Expr::Kind::TextureRef:
+            // `MinFilter = <g_MinFilter>;`: D3DX's reference to a parameter, whose value the state takes.
+            if (domain != StateDomain::TextureRef)
+                if (const Parameter* p = mEffect.findParameter(e.text); p && !p->type.isTexture())
+                    e.kind = Expr::Kind::Identifier;
+            return;
         case Expr::Kind::Bool:
             // MonoGame's `ColorWriteEnable = true;` writes every channel, not only red (1).
             if (domain == StateDomain::ColorMask) {

@@ -249,6 +249,8 @@ FX_DIAGNOSTIC(MulDimensionMismatch, Error, "mul({0}, {1}): inner dimensions diff
 FX_DIAGNOSTIC(FunctionNotHostEvaluable, Error, "function '{0}' cannot be evaluated on the host")
 FX_DIAGNOSTIC(ConstructorComponentCount, Error, "{0} constructor needs {1} components, got {2}")
 FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
+FX_DIAGNOSTIC(FixedFunctionUnsupported, Error,
+              "the fixed-function pipeline generated for this pass cannot run {0} (docs/fixed-function.md)")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")

@@ -10,7 +10,7 @@
 //                                                  DepthStencil, Blend) and the pass state it sets
 // FX_ENUM_VALUE(Domain, Name, Value)               the named values of an enum domain
 //
-// Domains: Bool, Int (unsigned/int), Float, ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
+// Domains: Bool, Int (unsigned/int), Float, Vector (a float4), Matrix (a float4x4), ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
 // Shader (VertexShader/PixelShader/GeometryShader), TextureRef (Texture = <t>), and the enum domains listed
 // below. Default values are D3D9's documented defaults. Define the macros you need; undefined ones expand to
 // nothing. This file undefines them all at the end.
@@ -137,6 +137,49 @@ FX_RENDER_STATE(PointScaleEnable, Bool, 0)
 FX_RENDER_STATE(PointScale_A, Float, 1)
 FX_RENDER_STATE(PointScale_B, Float, 0)
 FX_RENDER_STATE(PointScale_C, Float, 0)
+// D3D9's fixed-function pipeline: a pass without a vertex or pixel shader runs the stage it lacks from these
+// (fx/src/FixedFunctionPass.cpp generates it; docs/fixed-function.md). Indexed states take the light
+// (0..7) or texture stage (0..1); the defaults listed are D3D9's. Lighting, SpecularEnable,
+// NormalizeNormals and the fog states above belong to the same pipeline.
+FX_RENDER_STATE(WorldTransform, Matrix, 0)  // [0] only: no vertex blending
+FX_RENDER_STATE(ViewTransform, Matrix, 0)
+FX_RENDER_STATE(ProjectionTransform, Matrix, 0)
+FX_RENDER_STATE(LightEnable, Bool, 0)
+FX_RENDER_STATE(LightType, LightType, 1)  // POINT
+FX_RENDER_STATE(LightDiffuse, Vector, 0)
+FX_RENDER_STATE(LightSpecular, Vector, 0)
+FX_RENDER_STATE(LightAmbient, Vector, 0)
+FX_RENDER_STATE(LightPosition, Vector, 0)
+FX_RENDER_STATE(LightDirection, Vector, 0)
+FX_RENDER_STATE(LightRange, Float, 0)
+FX_RENDER_STATE(LightFalloff, Float, 0)
+FX_RENDER_STATE(LightAttenuation0, Float, 0)
+FX_RENDER_STATE(LightAttenuation1, Float, 0)
+FX_RENDER_STATE(LightAttenuation2, Float, 0)
+FX_RENDER_STATE(LightTheta, Float, 0)
+FX_RENDER_STATE(LightPhi, Float, 0)
+FX_RENDER_STATE(MaterialDiffuse, Vector, 0)
+FX_RENDER_STATE(MaterialAmbient, Vector, 0)
+FX_RENDER_STATE(MaterialSpecular, Vector, 0)
+FX_RENDER_STATE(MaterialEmissive, Vector, 0)
+FX_RENDER_STATE(MaterialPower, Float, 0)
+FX_RENDER_STATE(Ambient, Color, 0)
+FX_RENDER_STATE(ColorVertex, Bool, 1)
+FX_RENDER_STATE(LocalViewer, Bool, 1)
+FX_RENDER_STATE(DiffuseMaterialSource, MaterialSource, 1)   // COLOR1
+FX_RENDER_STATE(SpecularMaterialSource, MaterialSource, 2)  // COLOR2
+FX_RENDER_STATE(AmbientMaterialSource, MaterialSource, 0)   // MATERIAL
+FX_RENDER_STATE(EmissiveMaterialSource, MaterialSource, 0)  // MATERIAL
+FX_RENDER_STATE(ColorOp, TextureOp, 4)                      // MODULATE on stage 0, DISABLE after
+FX_RENDER_STATE(ColorArg0, TextureArg, 1)                   // CURRENT
+FX_RENDER_STATE(ColorArg1, TextureArg, 2)                   // TEXTURE
+FX_RENDER_STATE(ColorArg2, TextureArg, 1)                   // CURRENT
+FX_RENDER_STATE(AlphaOp, TextureOp, 2)                      // SELECTARG1 on stage 0, DISABLE after
+FX_RENDER_STATE(AlphaArg0, TextureArg, 1)
+FX_RENDER_STATE(AlphaArg1, TextureArg, 2)
+FX_RENDER_STATE(AlphaArg2, TextureArg, 1)
+FX_RENDER_STATE(TexCoordIndex, Int, 0)  // the stage's own index
+FX_RENDER_STATE(TextureFactor, Color, 0xffffffff)
 
 FX_STATE_ALIAS(ZWriteEnabled, ZWriteEnable)
 FX_STATE_ALIAS(DepthEnable, ZEnable)
@@ -227,6 +270,48 @@ FX_ENUM_VALUE(FogMode, None, 0)
 FX_ENUM_VALUE(FogMode, Exp, 1)
 FX_ENUM_VALUE(FogMode, Exp2, 2)
 FX_ENUM_VALUE(FogMode, Linear, 3)
+FX_ENUM_VALUE(LightType, Point, 1)
+FX_ENUM_VALUE(LightType, Spot, 2)
+FX_ENUM_VALUE(LightType, Directional, 3)
+FX_ENUM_VALUE(MaterialSource, Material, 0)
+FX_ENUM_VALUE(MaterialSource, Color1, 1)
+FX_ENUM_VALUE(MaterialSource, Color2, 2)
+FX_ENUM_VALUE(TextureOp, Disable, 1)
+FX_ENUM_VALUE(TextureOp, SelectArg1, 2)
+FX_ENUM_VALUE(TextureOp, SelectArg2, 3)
+FX_ENUM_VALUE(TextureOp, Modulate, 4)
+FX_ENUM_VALUE(TextureOp, Modulate2x, 5)
+FX_ENUM_VALUE(TextureOp, Modulate4x, 6)
+FX_ENUM_VALUE(TextureOp, Add, 7)
+FX_ENUM_VALUE(TextureOp, AddSigned, 8)
+FX_ENUM_VALUE(TextureOp, AddSigned2x, 9)
+FX_ENUM_VALUE(TextureOp, Subtract, 10)
+FX_ENUM_VALUE(TextureOp, AddSmooth, 11)
+FX_ENUM_VALUE(TextureOp, BlendDiffuseAlpha, 12)
+FX_ENUM_VALUE(TextureOp, BlendTextureAlpha, 13)
+FX_ENUM_VALUE(TextureOp, BlendFactorAlpha, 14)
+FX_ENUM_VALUE(TextureOp, BlendTextureAlphaPM, 15)
+FX_ENUM_VALUE(TextureOp, BlendCurrentAlpha, 16)
+FX_ENUM_VALUE(TextureOp, PreModulate, 17)
+FX_ENUM_VALUE(TextureOp, ModulateAlpha_AddColor, 18)
+FX_ENUM_VALUE(TextureOp, ModulateColor_AddAlpha, 19)
+FX_ENUM_VALUE(TextureOp, ModulateInvAlpha_AddColor, 20)
+FX_ENUM_VALUE(TextureOp, ModulateInvColor_AddAlpha, 21)
+FX_ENUM_VALUE(TextureOp, BumpEnvMap, 22)
+FX_ENUM_VALUE(TextureOp, BumpEnvMapLuminance, 23)
+FX_ENUM_VALUE(TextureOp, DotProduct3, 24)
+FX_ENUM_VALUE(TextureOp, MultiplyAdd, 25)
+FX_ENUM_VALUE(TextureOp, Lerp, 26)
+// D3DTA_*: a source, optionally | Complement (1 - x) and | AlphaReplicate (x.aaaa).
+FX_ENUM_VALUE(TextureArg, Diffuse, 0)
+FX_ENUM_VALUE(TextureArg, Current, 1)
+FX_ENUM_VALUE(TextureArg, Texture, 2)
+FX_ENUM_VALUE(TextureArg, TFactor, 3)
+FX_ENUM_VALUE(TextureArg, Specular, 4)
+FX_ENUM_VALUE(TextureArg, Temp, 5)
+FX_ENUM_VALUE(TextureArg, Constant, 6)
+FX_ENUM_VALUE(TextureArg, Complement, 0x10)
+FX_ENUM_VALUE(TextureArg, AlphaReplicate, 0x20)
 FX_ENUM_VALUE(Shade, Flat, 1)
 FX_ENUM_VALUE(Shade, Gouraud, 2)
 FX_ENUM_VALUE(Shade, Phong, 3)

@@ -30,6 +30,12 @@ enum class StateDomain {
     Cull10,          // D3D10 CullMode: NONE, FRONT, BACK
     DepthWriteMask,  // D3D10 DepthWriteMask: ZERO, ALL
     FogMode,         // FogTableMode, FogVertexMode: NONE, EXP, EXP2, LINEAR
+    Vector,          // a float4 expression (light and material colours, light positions)
+    Matrix,          // a float4x4 expression (WorldTransform[0], ViewTransform, ProjectionTransform)
+    LightType,       // POINT, SPOT, DIRECTIONAL
+    MaterialSource,  // MATERIAL, COLOR1, COLOR2
+    TextureOp,       // D3DTOP_*: DISABLE, SELECTARG1, MODULATE, ...
+    TextureArg,      // D3DTA_*: DIFFUSE, CURRENT, TEXTURE, ... | COMPLEMENT | ALPHAREPLICATE
 };
 
 enum class RenderStateId {

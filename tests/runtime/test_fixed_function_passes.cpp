@@ -1,0 +1,275 @@
+// D3D9 fixed-function passes: a pass without shaders that sets transforms, lights, material, texture
+// stages and fog runs as D3D9 ran it, through generated stages (parse, compile, EffectRenderer on
+// llvmpipe); a vertex shader with the fixed-function pixel stage samples stage 0's texture; what the
+// generated pipeline does not offer is a located error.
+#include "effects/EffectHarness.h"
+
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+#include <runtime/BuiltinScenes.h>
+
+namespace shadowfx::test {
+namespace {
+
+constexpr int kSize = 96;
+
+// Two lights: a red directional one from the side `SIDE` names and a green point light above; the noise
+// texture modulates the lit colour on stage 0.
+const char* kEffect = R"(
+float4x4 World : WORLD;
+float4x4 View : VIEW;
+float4x4 Projection : PROJECTION;
+float4 KeyColor = float4(1, 0, 0, 1);
+float4 LightPositions[2] = { float4(0, 12, 0, 1), float4(0, 0, 0, 1) };
+texture Noise < string Procedural = "noise"; int Seed = 3; float2 Dimensions = {32, 32}; >;
+
+#define TRANSFORMS WorldTransform[0] = <World>; ViewTransform = <View>; ProjectionTransform = <Projection>;
+#define LIGHTS(side)                                                                                  \
+    Lighting = true; NormalizeNormals = true; MaterialDiffuse = float4(1, 1, 1, 1);                   \
+    LightEnable[0] = true; LightType[0] = Directional; LightDirection[0] = float4(side, 0, 0, 0);     \
+    LightDiffuse[0] = (KeyColor);                                                                     \
+    LightEnable[1] = true; LightType[1] = Point; LightPosition[1] = <LightPositions[0]>;              \
+    LightDiffuse[1] = float4(0, 0.5, 0, 1); LightRange[1] = 100; LightAttenuation0[1] = 1;
+
+technique FromRight { pass p { VertexShader = null; PixelShader = null; TRANSFORMS LIGHTS(-1) } }
+technique FromLeft { pass p { TRANSFORMS LIGHTS(1) } }
+technique Textured { pass p { TRANSFORMS LIGHTS(-1)
+    Texture[0] = <Noise>; ColorOp[0] = Modulate; ColorArg1[0] = Texture; ColorArg2[0] = Diffuse; } }
+// The key light alone, and the same diffuse term written as a vertex shader in world space.
+technique KeyOnly { pass p { TRANSFORMS Lighting = true; NormalizeNormals = true;
+    LightEnable[0] = true; LightType[0] = Directional; LightDirection[0] = float4(-1, 0, 0, 0);
+    LightDiffuse[0] = (KeyColor); } }
+struct KeyOut { float4 position : POSITION; float4 diffuse : COLOR0; };
+KeyOut KeyVS(float4 p : POSITION, float3 n : NORMAL) {
+    KeyOut o;
+    o.position = mul(float4(p.xyz, 1), mul(World, mul(View, Projection)));
+    o.diffuse = float4(KeyColor.rgb * saturate(dot(normalize(mul(n, (float3x3)World)), float3(1, 0, 0))), 1);
+    return o;
+}
+technique KeyReference { pass p { VertexShader = compile vs_3_0 KeyVS(); } }
+technique Unlit { pass p { TRANSFORMS Lighting = false; } }
+technique LinearFog { pass p { TRANSFORMS LIGHTS(-1)
+    FogEnable = true; FogVertexMode = Linear; FogColor = 0xff0000ff; FogStart = 0; FogEnd = 0.01; } }
+technique TableFog { pass p { TRANSFORMS LIGHTS(-1)
+    FogEnable = true; FogTableMode = Exp2; FogColor = float4(0, 0, 1, 1); FogDensity = 50; } }
+technique FogFar { pass p { TRANSFORMS Lighting = false;
+    FogEnable = true; FogTableMode = Linear; FogColor = float4(0, 0, 1, 1); FogStart = 7; FogEnd = 11; } }
+
+// A vertex shader and D3D9's fixed-function pixel stage: stage 0 modulates the texture by the diffuse.
+struct VsOut { float4 position : POSITION; float4 diffuse : COLOR0; float2 uv : TEXCOORD0; };
+VsOut VS(float4 p : POSITION, float2 uv : TEXCOORD0) {
+    VsOut o;
+    o.position = mul(p, mul(World, mul(View, Projection)));
+    o.diffuse = float4(1, 1, 0, 1);
+    o.uv = uv;
+    return o;
+}
+technique ShaderAndStages { pass p { VertexShader = compile vs_3_0 VS(); Texture[0] = <Noise>; } }
+technique ShaderOnly { pass p { VertexShader = compile vs_3_0 VS(); } }
+)";
+
+const runtime::Scene& teapot() {
+    static const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    return scene;
+}
+
+runtime::FrameImage frame(runtime::EffectRenderer& renderer, const std::string& technique) {
+    EXPECT_TRUE(render(renderer, teapot(), kSize, kSize, technique)) << technique;
+    return renderer.readFrame();
+}
+
+// What the frame's corner shows: the clear colour, where nothing was drawn.
+bool isBackground(const runtime::FrameImage& image, int x, int y) {
+    return std::equal(image.pixel(x, y), image.pixel(x, y) + 3, image.pixel(0, 0));
+}
+
+// The mean of one channel over the drawn pixels of the left or the right half.
+double meanChannel(const runtime::FrameImage& image, int channel, bool right) {
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = right ? kSize / 2 : 0; x < (right ? kSize : kSize / 2); ++x) {
+            if (isBackground(image, x, y)) continue;
+            sum += image.pixel(x, y)[channel];
+            ++count;
+        }
+    return count ? sum / count : 0.0;
+}
+
+// The drawn pixels of (r, g, b), within one step, and the drawn pixels in all.
+std::pair<int, int> drawnOfColour(const runtime::FrameImage& image, int r, int g, int b) {
+    int drawn = 0;
+    int matching = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            if (isBackground(image, x, y)) continue;
+            ++drawn;
+            const uint8_t* p = image.pixel(x, y);
+            matching += std::abs(p[0] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[2] - b) <= 1;
+        }
+    return {matching, drawn};
+}
+
+// Pixels of `a` and `b` whose channels differ by more than `tolerance`.
+int differingPixels(const runtime::FrameImage& a, const runtime::FrameImage& b, int tolerance) {
+    int count = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]) > tolerance) {
+                    ++count;
+                    break;
+                }
+    return count;
+}
+
+TEST(FixedFunctionPasses, LightsAsAVertexShaderWouldLightThem) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    // A red directional light from +x: the sides facing it are red, the others black, as the hand-written
+    // world-space N.L draws them.
+    const runtime::FrameImage key = frame(*renderer, "KeyOnly");
+    ASSERT_TRUE(notConstant(key));
+    const auto [lit, drawn] = drawnOfColour(key, 0, 0, 0);
+    EXPECT_GT(lit, drawn / 10) << "the ground and the far side face away";
+    int bright = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) bright += key.pixel(x, y)[0] > 200 && key.pixel(x, y)[1] < 2;
+    EXPECT_GT(bright, 20) << "the side facing the light";
+    EXPECT_LE(differingPixels(key, frame(*renderer, "KeyReference"), 2), kSize * kSize / 100);
+
+    // Two lights: the point light above adds green to both; moving the key light moves the red.
+    const runtime::FrameImage right = frame(*renderer, "FromRight");
+    const runtime::FrameImage left = frame(*renderer, "FromLeft");
+    ASSERT_TRUE(notConstant(right));
+    EXPECT_GT(meanChannel(right, 1, true), 20);
+    EXPECT_NEAR(meanChannel(right, 1, true), meanChannel(left, 1, true), 2);
+    EXPECT_LT(meanChannel(right, 2, true), 2);
+    int redder = 0, lessRed = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            redder += right.pixel(x, y)[0] > left.pixel(x, y)[0] + 50;
+            lessRed += right.pixel(x, y)[0] + 50 < left.pixel(x, y)[0];
+        }
+    EXPECT_GT(redder, 20);
+    EXPECT_GT(lessRed, 20);
+
+    // The key light's colour follows its parameter, as a preshader did.
+    ASSERT_TRUE(renderer->variable("KeyColor").setVector(glm::vec4(0, 0, 1, 1)));
+    const runtime::FrameImage blue = frame(*renderer, "FromRight");
+    int blueLit = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            if (!isBackground(blue, x, y)) EXPECT_LE(blue.pixel(x, y)[0], 1);
+            blueLit += blue.pixel(x, y)[2] == right.pixel(x, y)[0] && right.pixel(x, y)[0] > 100;
+        }
+    EXPECT_GT(blueLit, 20);
+}
+
+TEST(FixedFunctionPasses, StageZeroModulatesTheTexture) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage lit = frame(*renderer, "FromRight");
+    const runtime::FrameImage textured = frame(*renderer, "Textured");
+    ASSERT_TRUE(notConstant(textured));
+    // Noise in [0, 1] times the lit colour: never brighter, darker on the whole.
+    int brighter = 0, darker = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            if (isBackground(lit, x, y)) continue;
+            for (int c = 0; c < 3; ++c) brighter += textured.pixel(x, y)[c] > lit.pixel(x, y)[c] + 2;
+            darker += textured.pixel(x, y)[1] + 20 < lit.pixel(x, y)[1];
+        }
+    EXPECT_EQ(brighter, 0);
+    EXPECT_GT(darker, kSize * kSize / 20);
+
+    // Without lighting the vertex colour passes, white where the mesh has none.
+    const auto [white, drawn] = drawnOfColour(frame(*renderer, "Unlit"), 255, 255, 255);
+    EXPECT_GT(drawn, kSize * kSize / 10);
+    EXPECT_EQ(white, drawn);
+}
+
+TEST(FixedFunctionPasses, FogTakesTheFarPixels) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    // Everything beyond 0.01 units is fog: every drawn pixel is the fog colour, by vertex and by table fog.
+    for (const char* technique : {"LinearFog", "TableFog"}) {
+        const auto [blue, drawn] = drawnOfColour(frame(*renderer, technique), 0, 0, 255);
+        EXPECT_GT(drawn, kSize * kSize / 10) << technique;
+        EXPECT_EQ(blue, drawn) << technique;
+    }
+    // Linear table fog from 7 to 11 units: the far pixels are bluer than the near ones, and the unfogged
+    // white is gone from the far end.
+    const runtime::FrameImage far = frame(*renderer, "FogFar");
+    ASSERT_TRUE(notConstant(far));
+    double nearRed = 0, farRed = 0;
+    int nearCount = 0, farCount = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            if (isBackground(far, x, y)) continue;
+            (y < kSize / 2 ? farRed : nearRed) += far.pixel(x, y)[0];  // the ground recedes upwards
+            ++(y < kSize / 2 ? farCount : nearCount);
+        }
+    ASSERT_GT(nearCount, 0);
+    ASSERT_GT(farCount, 0);
+    EXPECT_GT(nearRed / nearCount, farRed / farCount + 20);
+}
+
+TEST(FixedFunctionPasses, VertexShaderWithTheFixedFunctionPixelStage) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    // Without texture-stage states the runtime's stand-in passes the diffuse: one colour.
+    const auto [yellow, drawn] = drawnOfColour(frame(*renderer, "ShaderOnly"), 255, 255, 0);
+    EXPECT_GT(drawn, kSize * kSize / 10);
+    EXPECT_EQ(yellow, drawn);
+    // Texture[0] set: stage 0 modulates the noise by the yellow.
+    const runtime::FrameImage textured = frame(*renderer, "ShaderAndStages");
+    ASSERT_TRUE(notConstant(textured));
+    EXPECT_LT(drawnOfColour(textured, 255, 255, 0).first, drawn / 2);
+    EXPECT_LT(meanChannel(textured, 2, true), 2);
+}
+
+// Compiles `passBody` as the one pass of an effect; returns the diagnostics.
+fx::DiagnosticList compileDiagnostics(const std::string& passBody) {
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectSource(
+        "float4x4 World;\ntexture T;\nint Op = 4;\ntechnique t { pass p {\n" + passBody + "\n} }\n",
+        "fixed_function_errors.fx", {}, diagnostics);
+    if (effect) fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    return diagnostics;
+}
+
+TEST(FixedFunctionPasses, WhatIsNotGeneratedIsALocatedError) {
+    const struct {
+        const char* pass;
+        fx::DiagId id;
+        int column;
+        const char* message;
+    } cases[] = {
+        {"  WorldTransform[0] = <World>; ColorOp[0] = BumpEnvMap;", fx::DiagId::FixedFunctionUnsupported, 32,
+         "the fixed-function pipeline generated for this pass cannot run the operation 22 of texture stage "
+         "0"},
+        {"  WorldTransform[0] = <World>; ColorOp[0] = <Op>;", fx::DiagId::InvalidStateValue, 45,
+         "invalid value for state 'ColorOp': must be a constant"},
+        {"  Texture[0] = <T>; ColorOp[1] = Add; ColorOp[2] = Modulate;", fx::DiagId::FixedFunctionUnsupported,
+         39, "the fixed-function pipeline generated for this pass cannot run texture stage 2"},
+        {"  WorldTransform[1] = <World>;", fx::DiagId::FixedFunctionUnsupported, 3,
+         "the fixed-function pipeline generated for this pass cannot run WorldTransform[1]"},
+        {"  LightEnable[8] = true;", fx::DiagId::FixedFunctionUnsupported, 3,
+         "the fixed-function pipeline generated for this pass cannot run light 8"},
+    };
+    for (const auto& c : cases) {
+        const fx::DiagnosticList diagnostics = compileDiagnostics(c.pass);
+        const std::string text = diagnostics.str();
+        ASSERT_EQ(diagnostics.errorCount(), 1u) << c.pass << "\n" << text;
+        const fx::Diagnostic& d = diagnostics.items().front();
+        EXPECT_EQ(d.id, c.id) << text;
+        EXPECT_EQ(d.loc.file, "fixed_function_errors.fx") << text;
+        EXPECT_EQ(d.loc.line, 5) << text;
+        EXPECT_EQ(d.loc.column, c.column) << text;
+        EXPECT_EQ(d.message.rfind(c.message, 0), 0u) << text;
+    }
+}
+
+}  // namespace
+}  // namespace shadowfx::test
