@@ -130,9 +130,13 @@ public:
             const std::optional<RenderStateId> id = findRenderState(s.name);
             if (id)
                 mLast[{*id, std::max(s.index, 0)}] = &s;
-            else if (!id && equalsIgnoreCase(s.name, "Texture"))
+            else if (equalsIgnoreCase(s.name, "Texture"))
                 mTextures[std::max(s.index, 0)] = &s;
         }
+    }
+
+    // What the generated vertex stage does not offer: vertex blending, lights beyond the eighth.
+    void checkVertexIndices() {
         for (const auto& [key, s] : mLast) {
             const auto [id, index] = key;
             if (id == RenderStateId::WorldTransform && index > 0)
@@ -235,6 +239,7 @@ std::string fogFactor(int mode, const std::string& distance, const std::string& 
 std::string vertexStage(FixedFunctionStates& states, const std::string& name, Uniforms& u,
                         bool eyeDistanceOut) {
     using Id = RenderStateId;
+    states.checkVertexIndices();
     const std::string identity = "float4x4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)";
     std::string body;
     body += "    float4x4 fx_world = " + states.value(u, Id::WorldTransform, 0, "float4x4", identity) + ";\n";
@@ -631,17 +636,22 @@ std::shared_ptr<const Effect> withFixedFunctionStages(std::shared_ptr<const Effe
             const bool hasVertexShader = vs && !isNull(vs->value);
             const bool hasPixelShader = ps && !isNull(ps->value);
             FixedFunctionStates states(pass, diagnostics);
-            bool setsAny = false, setsPixelStates = false;
+            bool setsVertexStates = false, setsPixelStates = false;
             for (const StateAssignment& s : pass.states) {
                 if (!selectsFixedFunction(s)) continue;
-                setsAny = true;
                 const std::optional<RenderStateId> id = findRenderState(s.name);
                 if (!id || (*id >= RenderStateId::ColorOp && *id <= RenderStateId::TextureFactor))
                     setsPixelStates = true;
+                // Lighting, SpecularEnable and the fog states, which effects set beside their shaders
+                // (`Lighting = false;`), do not ask for a vertex stage of their own.
+                else if (isFixedFunctionState(*id))
+                    setsVertexStates = true;
             }
             // `FogEnable = false;` beside a vertex shader asks for nothing of the pixel stage.
             if (states.mayBeOn(RenderStateId::FogEnable, 0, false)) setsPixelStates = true;
-            const bool vertex = !hasVertexShader && setsAny;
+            // A pixel shader alone, even with `Texture[0] = <t>;` beside it, keeps the vertex stage it had:
+            // D3D9 transformed its vertices by the application's transforms, which the pass does not name.
+            const bool vertex = !hasVertexShader && setsVertexStates;
             const bool pixel = !hasPixelShader && (vertex || setsPixelStates);
             const std::string suffix = std::to_string(t) + "_" + std::to_string(p);
             if (vertex) {
