@@ -10,10 +10,10 @@
 //                                                  DepthStencil, Blend) and the pass state it sets
 // FX_ENUM_VALUE(Domain, Name, Value)               the named values of an enum domain
 //
-// Domains: Bool, Int (unsigned/int), Float, Vector (a float4), Matrix (a float4x4), ColorMask (ColorWriteEnable flags, or RED|GREEN|...),
-// Shader (VertexShader/PixelShader/GeometryShader), TextureRef (Texture = <t>), and the enum domains listed
-// below. Default values are D3D9's documented defaults. Define the macros you need; undefined ones expand to
-// nothing. This file undefines them all at the end.
+// Domains: Bool, Int (unsigned/int), Float, Vector (a float4), Matrix (a float4x4), ColorMask
+// (ColorWriteEnable flags, or RED|GREEN|...), Shader (VertexShader/PixelShader/GeometryShader), TextureRef
+// (Texture = <t>), and the enum domains listed below. Default values are D3D9's documented defaults. Define
+// the macros you need; undefined ones expand to nothing. This file undefines them all at the end.
 
 #ifndef FX_RENDER_STATE
 #define FX_RENDER_STATE(name, domain, def)
