@@ -17,6 +17,7 @@
 #include <runtime/InstanceBvh.h>
 #include "HostScene.h"
 #include "PassPreshaders.h"
+#include "PoolMembership.h"
 #include <runtime/SamplerObject.h>
 #include <runtime/StreamOutBuffers.h>
 #include "SemanticBinder.h"
@@ -56,6 +57,7 @@ public:
     std::vector<fx::Value> values;  // one per parameter
     std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
     ParameterStamps stamps;         // of `values`
+    PoolMembership pool;            // the `shared` parameters' values, with the other effects of a pool
 
     // [SECTION] GL resources
     std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
