@@ -14,7 +14,7 @@ shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script fuzz_dds_file
-           fuzz_compiled_effect_file)
+           fuzz_compiled_effect_file fuzz_host_file)
   [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
@@ -54,6 +54,8 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
       for effect in plain_lit back_faces id_buffer; do
         build-fuzz/samples/shadowfx/shadowfx compile "effects/$effect.fx" --out "$dir/$effect.sfxo"
       done ;;
+    fuzz_host_file)  # the host files of the tests and the docs
+      find tests/data/host docs/host-files -name '*.json' | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done ;;
     fuzz_scene_file)
       find scenes tests/data -name '*.json' 2>/dev/null | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done
       [ -n "$(ls -A "$dir")" ] || echo '{}' > "$dir/empty.json" ;;

@@ -4,6 +4,7 @@
 // With --shard K/N only the runs report/BenchShard.h deals to shard K are measured; `bench merge`
 // (BenchMergeCommand.cpp) joins the shards.
 #include "BenchCommand.h"
+#include "HostOption.h"
 #include "PeerProgram.h"
 
 #include <report/BenchReport.h>
@@ -67,7 +68,10 @@ const char* const kBenchUsage =
     "  --truth-cache DIR     read each scene's ray-cast ground truth from DIR when it was cast before with\n"
     "                        the same scene, light, camera, frame size and options; cast and store it\n"
     "                        there otherwise (an entry that is stale or corrupt is cast again, never used)\n"
-    "  --out DIR             results.json, report.md, error_vs_time.svg and errors/*.png go here\n";
+    "  --out DIR             results.json, report.md, error_vs_time.svg and errors/*.png go "
+    "here\n" SHADOWFX_HOST_OPTION_HELP
+    "                        (its \"visibility\" scores it; the run is named after the last step's "
+    "technique)\n";
 
 namespace {
 
@@ -233,6 +237,13 @@ int benchCommand(const Arguments& args) {
     o.set = args.all("--set");
     o.batching = !args.flag("--no-batching");
     o.outDir = args.value("--out");
+    fx::DiagnosticList hostDiagnostics;
+    bool hostRead = true;
+    o.host = readHostOption(args, hostDiagnostics, hostRead);
+    if (!hostRead) {
+        std::cerr << hostDiagnostics.str();
+        return 1;
+    }
 
     Progress progress;
     runtime::BenchLog log;

@@ -6,6 +6,7 @@
 // blank-frame results per technique (`shadowfx check lib/*.fx --junit out.xml`), and one line per effect:
 // drawn, blank or failed, with a summary line.
 #include "CheckCommand.h"
+#include "HostOption.h"
 
 #include <fx/CompiledEffectFile.h>
 #include <fx/EffectParser.h>
@@ -40,7 +41,8 @@ const char* const kCheckUsage =
     "  --area-radius R       the penumbra checks give every scene's light this areaRadius, overriding\n"
     "                        ExpectAreaRadius (0: no area light, the penumbra rows NOT_SUPPORTED)\n"
     "  --list-techniques     print each effect's technique names, one per line, and exit\n"
-    "  --no-batching         draw every object alone, not one instanced draw per mesh (the same images)\n"
+    "  --no-batching         draw every object alone, not one instanced draw per mesh (the same "
+    "images)\n" SHADOWFX_HOST_OPTION_HELP
     "Technique annotations read: string ExpectScenes, float ExpectMisclassifiedBelow (percent of receiver\n"
     "pixels, hard-shadow truth), float ExpectPenumbraMaeBelow (mean |error| over the penumbra of an area\n"
     "light), float ExpectAreaRadius (the light's areaRadius for the penumbra check), int ExpectMapSize,\n"
@@ -95,6 +97,13 @@ int checkCommand(const Arguments& args) {
     o.batching = !args.flag("--no-batching");
     o.scenes = splitList(args.value("--scenes"));
     o.outDir = args.value("--out", "out/check");
+    fx::DiagnosticList hostDiagnostics;
+    bool hostRead = true;
+    o.host = readHostOption(args, hostDiagnostics, hostRead);
+    if (!hostRead) {
+        std::cerr << hostDiagnostics.str();
+        return 1;
+    }
     o.areaSamples = args.intValue("--area-samples", 256);
     o.truthCacheDir = args.value("--truth-cache");
     if (const std::string text = args.value("--area-radius"); !text.empty()) {

@@ -5,6 +5,7 @@
 // [SECTION] Panels
 // [SECTION] Main loop
 #include "ViewCommand.h"
+#include "HostOption.h"
 
 #include "ParameterPanel.h"
 
@@ -43,7 +44,7 @@ const char* const kViewUsage =
     "  --screenshot FILE.png write the last frame (the effect's image, without the panel) on exit\n"
     "Saving the effect or a file it includes reloads it; a broken save keeps the last good effect.\n"
     "Mouse: left drag orbits, wheel zooms, right drag moves the light. Keys: arrows move the light,\n"
-    "R reloads, F12 or P writes a screenshot (shadowfx_view_N.png), Esc quits.\n";
+    "R reloads, F12 or P writes a screenshot (shadowfx_view_N.png), Esc quits.\n" SHADOWFX_HOST_OPTION_HELP;
 
 namespace {
 
@@ -202,11 +203,26 @@ int viewCommand(const Arguments& args) {
 
     const fx::ParseOptions parseOptions = effectParseOptions(args);
     runtime::ReloadableEffect effect(path, parseOptions);
+    fx::DiagnosticList hostDiagnostics;
+    bool hostRead = true;
+    const std::shared_ptr<const fx::HostFile> host = readHostOption(args, hostDiagnostics, hostRead);
+    if (!hostRead) {
+        std::cerr << hostDiagnostics.str();
+        return 1;
+    }
+    // Every renderer a reload makes draws the host file's frame too.
+    const auto hostEffect = [&] {
+        fx::DiagnosticList diagnostics;
+        if (effect.renderer() && !useHostFile(*effect.renderer(), host, diagnostics))
+            std::cerr << diagnostics.str();
+    };
     // On failure the window stays open: the next save may fix it. Scripts and tests wait for "loaded".
-    if (!effect.reload())
+    if (!effect.reload()) {
         std::cerr << effect.errorText();
-    else
+    } else {
+        hostEffect();
         std::cerr << "shadowfx view: loaded " << path << "\n";
+    }
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -250,6 +266,7 @@ int viewCommand(const Arguments& args) {
                 s.parseMs + s.compileMs + s.createMs, s.parseMs, s.compileMs, s.createMs, s.cacheMisses,
                 s.cacheHits);
             lastReload = line;
+            hostEffect();
             std::cerr << "shadowfx view: " << lastReload << "\n";
             renderFailed = false;
         }

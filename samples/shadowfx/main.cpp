@@ -15,6 +15,7 @@
 #include "BenchMergeCommand.h"
 #include "CheckCommand.h"
 #include "CommandLine.h"
+#include "HostOption.h"
 #include "NewCommand.h"
 #include "StressCommand.h"
 #include "TuneCommand.h"
@@ -94,6 +95,9 @@ int renderCommand(const Arguments& args) {
 
     std::shared_ptr<fx::CompiledEffect> compiled = loadEffect(args, args.value("--technique"), sink);
     if (!compiled || sink.errors() > 0) return 1;
+    bool hostRead = true;
+    const std::shared_ptr<const fx::HostFile> host = shadowfx::cli::readHostOption(args, sink, hostRead);
+    if (!hostRead) return 1;
 
     runtime::ContextOptions contextOptions;
     contextOptions.backend = *backend;
@@ -113,7 +117,7 @@ int renderCommand(const Arguments& args) {
     }
 
     std::unique_ptr<runtime::EffectRenderer> renderer = runtime::EffectRenderer::create(compiled, sink);
-    if (!renderer) return 1;
+    if (!renderer || !shadowfx::cli::useHostFile(*renderer, host, sink)) return 1;
     for (const std::string& assignment : args.all("--set")) {
         const size_t eq = assignment.find('=');
         if (eq == std::string::npos) {
@@ -241,9 +245,10 @@ const shadowfx::cli::Command kCommands[] = {
      "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
      "  --verbose             print the GL renderer and notes\n"
      "  --driver-log          print what the GL driver said compiling each pass's generated GLSL (its\n"
-     "                        lines are the GLSL's, which `shadowfx compile` prints), at the pass\n",
+     "                        lines are the GLSL's, which `shadowfx compile` prints), at the "
+     "pass\n" SHADOWFX_HOST_OPTION_HELP,
      {"--out"},
-     {"--width", "--height", "--technique", "--scene", "--set", "--backend", "-I", "-D"},
+     {"--width", "--height", "--technique", "--scene", "--set", "--backend", "--host", "-I", "-D"},
      {"--stats", "--verbose", "--driver-log", "--no-leave-out", "--no-batching"},
      renderCommand},
     {"compile",
@@ -289,7 +294,8 @@ const shadowfx::cli::Command kCommands[] = {
       "--peers",
       "--peer-techniques",
       "--shard",
-      "--truth-cache"},
+      "--truth-cache",
+      "--host"},
      {"--no-leave-out", "--no-batching"},
      shadowfx::cli::benchCommand,
      -1},
@@ -306,7 +312,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kCheckUsage,
      {},
      {"--technique", "--scenes", "--backend", "--junit", "--out", "--width", "--height", "--area-samples",
-      "--area-radius", "--truth-cache", "-I", "-D"},
+      "--area-radius", "--truth-cache", "--host", "-I", "-D"},
      {"--update", "--require-goldens", "--list-techniques", "--no-batching"},
      shadowfx::cli::checkCommand,
      -1},
@@ -331,7 +337,7 @@ const shadowfx::cli::Command kCommands[] = {
      "open an effect in a window: hot reload, error overlay, parameters, render targets",
      shadowfx::cli::kViewUsage,
      {},
-     {"--scene", "--technique", "--width", "--height", "--frames", "--screenshot", "-I", "-D"},
+     {"--scene", "--technique", "--width", "--height", "--frames", "--screenshot", "--host", "-I", "-D"},
      {},
      shadowfx::cli::viewCommand},
     {"new",

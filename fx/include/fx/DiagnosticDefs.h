@@ -348,4 +348,8 @@ FX_DIAGNOSTIC(NotCompiledEffect, Error,
               "not a compiled effect file (shadowfx compile EFFECT.fx --out EFFECT.sfxo writes one)")
 FX_DIAGNOSTIC(CompiledEffectWriteFailed, Error, "cannot write compiled effect file '{0}'")
 
+// [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
+FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,
+              "shared parameter '{0}' is a {1} here but a {2} in the effects already in its pool")
+
 #undef FX_DIAGNOSTIC

@@ -224,7 +224,10 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
     const std::vector<std::string>& effects = o.effects;
     const std::vector<std::string>& sceneNames = o.scenes;
     const std::vector<int>& mapSizes = o.mapSizes;
-    const std::vector<std::string>& techniqueFilter = o.techniques;
+    // A host file draws one frame whatever the technique: one run, named after what draws the frame.
+    const std::vector<std::string> techniqueFilter =
+        o.host && o.techniques.empty() ? std::vector<std::string>{o.host->frame.back().technique}
+                                       : o.techniques;
     const std::vector<bool>& leaveOutModes = o.leaveOutModes;
     const int frames = o.frames, warmup = o.warmup, width = o.width, height = o.height;
     const float cameraOrbit = o.cameraOrbit;
@@ -342,7 +345,8 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
             variant.timed = compiled[request++].effect;
             variant.visibility = compiled[request++].effect;
             if (!variant.timed || !variant.visibility || sink.errors() > 0) return failed("");
-            variant.exposesVisibility = !sameFragmentShaders(*variant.timed, *variant.visibility);
+            variant.exposesVisibility =
+                !sameFragmentShaders(*variant.timed, *variant.visibility) || (o.host && o.host->visibility);
             for (const fx::TextureDesc& texture : variant.timed->textures)
                 variant.honoursMapSize =
                     variant.honoursMapSize || (texture.width == mapSize && texture.height == mapSize);
@@ -385,7 +389,9 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
             EffectVariant& variant = found->second;
             std::unique_ptr<EffectRenderer> timed = EffectRenderer::create(variant.timed, sink);
             std::unique_ptr<EffectRenderer> visibility = EffectRenderer::create(variant.visibility, sink);
-            if (!timed || !visibility) return failed("");
+            if (!timed || !visibility ||
+                (o.host && (!timed->setHostFile(o.host, sink) || !visibility->setHostFile(o.host, sink))))
+                return failed("");
             // Each setting of the sweeps is its own set of runs; its label names it in every output.
             std::vector<std::string> swept;
             for (const Setting& setting : settingsFor(*variant.timed, sweeps, swept)) {

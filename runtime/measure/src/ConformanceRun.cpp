@@ -120,6 +120,7 @@ struct Settings {
     GroundTruthOptions truthOptions;
     std::optional<TruthCache> truthCache;  // --truth-cache
     FuzzyCompareOptions compare;
+    std::shared_ptr<const fx::HostFile> host;  // --host
 };
 
 class Checker {
@@ -170,6 +171,9 @@ public:
                 std::unique_ptr<EffectRenderer> visibility;
                 if (shaded && technique.expect.shadows && technique.variants.exposesVisibility)
                     visibility = EffectRenderer::create(technique.variants.visibility, mSink);
+                if (mSettings.host && shaded && !shaded->setHostFile(mSettings.host, mSink)) shaded.reset();
+                if (mSettings.host && visibility && !visibility->setHostFile(mSettings.host, mSink))
+                    shaded.reset();
                 if (!shaded || mSink.failed()) {
                     add(backendLabel, effect.name, technique.name, "-", "link", Outcome::Fail,
                         mSink.firstError("the effect's programs do not link"));
@@ -474,6 +478,7 @@ ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceL
     settings.batching = o.batching;
     settings.sceneOverride = o.scenes;
     settings.outDir = o.outDir;
+    settings.host = o.host;
     settings.truthOptions.areaSamples = o.areaSamples;
     if (!o.truthCacheDir.empty()) settings.truthCache.emplace(o.truthCacheDir);
     settings.areaRadius = o.areaRadius;

@@ -115,6 +115,7 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     fx::DiagnosticList unreported;
     fx::DiagnosticSink& sink = diagnostics ? *diagnostics : unreported;
     EffectResources& r = *mResources;
+    r.pool.pull(r);
     EffectResources::ApplicationFrame& frame = r.application;
     const fx::CompiledPass& pass = compiledPass(r, mTechnique, mPass);
     if (!frame.targetKnown) captureApplicationTarget(r);
@@ -159,6 +160,7 @@ bool EffectPass::commitChanges(fx::DiagnosticSink* diagnostics) const {
     if (!isValid()) return false;
     EffectResources& r = *mResources;
     if (r.application.applied != std::make_pair(mTechnique, mPass)) return false;
+    r.pool.pull(r);
     GpuProgram* program = r.programs[mTechnique][mPass].get();
     if (!program || !program->hasShaders()) return true;
     fx::DiagnosticList unreported;

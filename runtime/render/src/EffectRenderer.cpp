@@ -11,6 +11,7 @@
 
 #include "EffectResources.h"
 #include "FrameExecutor.h"
+#include "HostFrame.h"
 #include "PassUse.h"
 #include "PlanRecorder.h"
 #include "RenderPort.h"
@@ -36,15 +37,17 @@ EffectRenderer::EffectRenderer(std::unique_ptr<EffectResources> resources) : mIm
 EffectRenderer::~EffectRenderer() = default;
 
 std::unique_ptr<EffectRenderer> EffectRenderer::createFromFile(const std::string& path,
-                                                               fx::DiagnosticSink& diagnostics) {
+                                                               fx::DiagnosticSink& diagnostics,
+                                                               std::shared_ptr<EffectPool> pool) {
     std::shared_ptr<const fx::CompiledEffect> effect = fx::readCompiledEffectFile(path, diagnostics);
-    return effect ? create(effect, diagnostics) : nullptr;
+    return effect ? create(effect, diagnostics, std::move(pool)) : nullptr;
 }
 
 std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx::CompiledEffect> effect,
-                                                       fx::DiagnosticSink& diagnostics) {
+                                                       fx::DiagnosticSink& diagnostics,
+                                                       std::shared_ptr<EffectPool> pool) {
     std::unique_ptr<EffectResources> resources = EffectResources::create(std::move(effect), diagnostics);
-    if (!resources) return nullptr;
+    if (!resources || !resources->pool.join(std::move(pool), *resources, diagnostics)) return nullptr;
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
         const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
         if (!semantic.empty())
@@ -79,6 +82,7 @@ const fx::Value& EffectRenderer::parameter(size_t index) const {
 void EffectRenderer::setParameter(size_t index, const fx::Value& value) {
     storeParameter(mImpl->parameterInfo(), index, value, mImpl->values, mImpl->stamps);
     mImpl->pinned.at(index) = true;
+    mImpl->pool.published(*mImpl, index);
 }
 
 bool EffectRenderer::isPinned(size_t index) const {
@@ -183,6 +187,18 @@ EffectVariable EffectRenderer::variableBySemantic(std::string_view semantic) {
     return {};
 }
 
+// [SECTION] Host files
+
+bool EffectRenderer::setHostFile(std::shared_ptr<const fx::HostFile> host, fx::DiagnosticSink& diagnostics) {
+    if (!host) {
+        mHostFrame.reset();
+        return true;
+    }
+    if (!fx::checkHostFile(*host, mImpl->effect(), diagnostics)) return false;
+    mHostFrame = std::make_unique<HostFrame>(std::move(host));
+    return true;
+}
+
 // [SECTION] Frame
 
 std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string_view lightName,
@@ -208,6 +224,15 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     FrameStats localStats;
     FrameStats& frameStats = stats ? *stats : localStats;
     frameStats = {};
+    mImpl->pool.pull(*mImpl);
+    if (mHostFrame) {
+        const bool ran = mHostFrame->render(*this, *mImpl, scene, options, diagnostics);
+        const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
+        if (!clean)
+            diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0},
+                               {"GL error during the frame"});
+        return ran && clean;
+    }
 
     // The technique, chosen by name once for each FrameOptions::technique (every frame where a Technique=
     // selector reads a parameter).

@@ -20,6 +20,7 @@
 #include "PassPreshaders.h"
 #include "PassUse.h"
 #include "ScriptInterpreter.h"
+#include "PoolMembership.h"
 #include <runtime/SamplerObject.h>
 #include <runtime/StreamOutBuffers.h>
 #include "SemanticBinder.h"
@@ -59,6 +60,7 @@ public:
     std::vector<fx::Value> values;  // one per parameter
     std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
     ParameterStamps stamps;         // of `values`
+    PoolMembership pool;            // the `shared` parameters' values, with the other effects of a pool
 
     // [SECTION] Resolved once, when the effect is created (names as indices, kept for the effect's life)
     std::unique_ptr<SemanticBinder> binder;          // the semantics, classified; prepared for each frame

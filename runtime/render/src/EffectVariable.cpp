@@ -92,6 +92,7 @@ bool EffectVariable::store(std::span<const float> components, size_t firstCompon
     storeParameter(mResources->parameterInfo(), mParameter, std::move(value), mResources->values,
                    mResources->stamps);
     mResources->pinned[mParameter] = true;
+    mResources->pool.published(*mResources, mParameter);
     return true;
 }
 
@@ -147,6 +148,7 @@ bool EffectVariable::setValue(const fx::Value& value) {
         storeParameter(mResources->parameterInfo(), mParameter, value, mResources->values,
                        mResources->stamps);
         mResources->pinned[mParameter] = true;
+        mResources->pool.published(*mResources, mParameter);
         return true;
     }
     const size_t count = static_cast<size_t>(t.componentCount());

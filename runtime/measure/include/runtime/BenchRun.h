@@ -11,6 +11,7 @@
 // (the define only changes what the final pass returns).
 #pragma once
 
+#include <fx/HostFile.h>
 #include <fx/EffectParser.h>
 #include <report/BenchReport.h>
 #include <report/BenchShard.h>
@@ -59,6 +60,9 @@ struct BenchOptions {
     std::string truthCacheDir;                     // TruthCache.h; empty: cast every truth
     bool batching = true;
     std::filesystem::path outDir;  // errors/*.png and the peers' work files go here
+    // --host: every effect drawn as the host file's application drew it; its "visibility" scores an effect
+    // without SHADOWFX_VISIBILITY, and its last step's technique names the run (docs/host-files.md).
+    std::shared_ptr<const fx::HostFile> host;
 };
 
 // What a run says while it runs. Each may be empty.

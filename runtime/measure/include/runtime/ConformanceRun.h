@@ -6,6 +6,7 @@
 // Where goldens live per renderer: docs/measurement.md, "shadowfx check".
 #pragma once
 
+#include <fx/HostFile.h>
 #include <fx/EffectParser.h>
 #include <report/ConformanceReport.h>
 #include <runtime/GlContext.h>
@@ -33,6 +34,8 @@ struct ConformanceOptions {
     bool batching = true;
     std::filesystem::path outDir = "out/check";  // EFFECT/TECHNIQUE/SCENE.{result,reference,errormask}.png
     fx::ParseOptions parseOptions;               // -I and -D
+    // --host: every technique drawn as the host file's application drew it (docs/host-files.md).
+    std::shared_ptr<const fx::HostFile> host;
 };
 
 struct ConformanceLog {

@@ -7,7 +7,9 @@
 
 #include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
+#include <fx/HostFile.h>
 #include <runtime/EffectPass.h>
+#include <runtime/EffectPool.h>
 #include <runtime/EffectVariable.h>
 #include <runtime/FrameImage.h>
 #include <runtime/FrameStats.h>
@@ -69,19 +71,24 @@ struct TextureData {
 };
 
 class EffectResources;  // opaque: what the renderer owns (runtime/render/src/EffectResources.h)
+class HostFrame;        // opaque: the frame of a host file (runtime/render/src/HostFrame.h)
 
 class EffectRenderer {
 public:
     // Links every pass's program, creates textures and samplers. Returns nullptr if a program does not
     // link or a resource cannot be created; the diagnostics say why.
+    // With a `pool` (runtime/EffectPool.h), the effect's `shared` parameters share their values with the
+    // other effects created in it; nullptr, with a diagnostic, where the pool holds one with another type.
     static std::unique_ptr<EffectRenderer> create(std::shared_ptr<const fx::CompiledEffect> effect,
-                                                  fx::DiagnosticSink& diagnostics);
+                                                  fx::DiagnosticSink& diagnostics,
+                                                  std::shared_ptr<EffectPool> pool = nullptr);
     // The same from a compiled effect file (`shadowfx compile EFFECT.fx --out EFFECT.sfxo`), which needs
     // no compiler: a file that is not one, or is truncated, corrupt or of another format version, is an
     // error at `path` (fx/CompiledEffectFile.h). Source files load through runtime/ReloadableEffect.h or
     // fx/EffectFile.h, which link the compiler.
     static std::unique_ptr<EffectRenderer> createFromFile(const std::string& path,
-                                                          fx::DiagnosticSink& diagnostics);
+                                                          fx::DiagnosticSink& diagnostics,
+                                                          std::shared_ptr<EffectPool> pool = nullptr);
     ~EffectRenderer();
     // The semantics the runtime gives parameters values by (case-insensitive): the matrices with their
     // Inverse/Transpose/InverseTranspose forms, camera, light, object and scene values, the light fits'
@@ -129,6 +136,14 @@ public:
     // The first parameter declared with `semantic`, case-blind as D3DX's GetParameterBySemantic.
     EffectVariable variableBySemantic(std::string_view semantic);
 
+    // [SECTION] Host files (fx/HostFile.h, runtime/HostFileReader.h, docs/host-files.md)
+    // For an effect written for an application, without SAS scripts: render() then draws the frame the
+    // host file describes (its targets, its parameters' values, its steps) through the pass API, as that
+    // application drew it, instead of running the SAS host; FrameOptions::technique is not used. False,
+    // with diagnostics at the file's lines, where it names what the effect does not have (nothing is set
+    // then). nullptr goes back to the SAS host.
+    bool setHostFile(std::shared_ptr<const fx::HostFile> host, fx::DiagnosticSink& diagnostics);
+
     // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
     // GL error occurred.
     bool render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
@@ -157,6 +172,7 @@ public:
 private:
     explicit EffectRenderer(std::unique_ptr<EffectResources> resources);
     std::unique_ptr<EffectResources> mImpl;
+    std::unique_ptr<HostFrame> mHostFrame;
 };
 
 // Writes `image` as a PNG; false (with a message in `error`) on failure.

@@ -1,0 +1,113 @@
+// HostFile: what an application did around an effect written for it, with no SAS script: the render
+// targets it created, the values it gave the parameters and the frame it drew (which techniques and passes,
+// in which order, into which targets, with which clears, from whose point of view). docs/host-files.md
+// describes the JSON format, which runtime/HostFileReader.h reads; runtime::EffectRenderer::setHostFile
+// makes render(Scene) draw that frame through the pass API (runtime/EffectPass.h), as the application
+// would. Part of the contract: data and a check against a compiled effect, no JSON and no GL.
+#pragma once
+
+#include <fx/CompiledEffect.h>
+#include <fx/Diagnostics.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fx {
+
+// A render target the application created: a colour texture with a depth buffer of its own.
+struct HostTarget {
+    std::string name;
+    fx::TextureFormat format = fx::TextureFormat::RGBA8;
+    int width = 0;  // 0 x 0: the frame's size
+    int height = 0;
+    std::string texture;  // the texture parameter it is given to ("" = none)
+    fx::SourceLoc loc;
+};
+
+// One factor of a matrix product: a matrix of the object, the camera, a light or the step's render port.
+struct HostMatrix {
+    enum class Space { Port, Camera, Light };
+    enum class Kind { World, View, Projection, WorldView, ViewProjection, WorldViewProjection };
+    Space space = Space::Port;
+    std::string light;  // Space::Light
+    Kind kind = Kind::World;
+    bool inverse = false;
+    bool transpose = false;
+};
+
+// What a parameter is; its value is computed for each step (and each object where it depends on one).
+struct HostValue {
+    enum class Kind {
+        Constant,       // numbers, set once
+        Matrix,         // a product of HostMatrix factors, in D3D's row-vector order
+        LightPosition,  // a light's position (world space, or the camera's view space)
+        LightDirection,
+        LightColor,
+        LightCosHalfAngle,  // cos(spot angle / 2)
+        ObjectColor,        // the object's colour, alpha 1
+        ViewportSize,       // the step's target size in pixels
+    };
+    Kind kind = Kind::Constant;
+    std::vector<float> numbers;       // Constant
+    std::vector<HostMatrix> factors;  // Matrix
+    std::string light;                // Light*
+    bool cameraViewSpace = false;     // LightPosition, LightDirection
+    bool perObject() const;           // depends on the object drawn
+};
+
+struct HostParameter {
+    std::string name;
+    HostValue value;
+    fx::SourceLoc loc;
+};
+
+// A light's projection as the application made it (D3DXMatrixPerspectiveFovLH with aspect 1), in place
+// of the fit to the scene's bounds that RenderPort=lightN gets; the view stays the light's.
+struct HostLightProjection {
+    std::string light;
+    float fovY = 90.0f;  // degrees
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+    fx::SourceLoc loc;
+};
+
+// One step of the frame: a technique's passes (or one of them) drawn into a target.
+struct HostStep {
+    std::string technique;
+    std::string pass;    // "" = every pass in order
+    std::string target;  // a HostTarget's name, or "frame"
+    std::string port;    // "camera" or a light's name: whose View and Projection
+    std::optional<std::array<float, 4>> clearColor;
+    std::optional<float> clearDepth;
+    enum class Draw { Geometry, Quad, Nothing };
+    Draw draw = Draw::Geometry;
+    fx::SourceLoc loc;
+};
+
+// How the frame's colour becomes the shadow factor that bench and check score, for an effect that has no
+// SHADOWFX_VISIBILITY hook of its own (docs/host-files.md, "Scoring").
+struct HostVisibility {
+    std::vector<HostParameter> set;       // constants for the scored frames
+    std::vector<std::string> unshadowed;  // targets that, cleared and left undrawn, light everything
+    fx::SourceLoc loc;
+};
+
+struct HostFile {
+    std::string path;
+    std::vector<HostTarget> targets;
+    std::vector<HostParameter> parameters;
+    std::vector<HostLightProjection> lights;
+    std::vector<HostStep> frame;
+    std::optional<HostVisibility> visibility;
+
+    const HostTarget* findTarget(const std::string& name) const;
+};
+
+// Checks the file against an effect: every technique, pass, parameter and texture it names exists and
+// every value fits its parameter's type. False, with the problems at the host file's lines, otherwise.
+bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::DiagnosticSink& diagnostics);
+
+}  // namespace fx

@@ -1,0 +1,35 @@
+// EffectPool: see runtime/EffectPool.h.
+#include <runtime/EffectPool.h>
+
+namespace runtime {
+
+EffectPool::Slot* EffectPool::join(const std::string& name, const fx::TypeDesc& type,
+                                   const fx::Value& initial, fx::TypeDesc& existing) {
+    auto [it, inserted] = mSlots.try_emplace(name);
+    Slot& slot = it->second;
+    if (inserted) {
+        slot.type = type;
+        slot.value = initial;
+        slot.generation = 1;
+        return &slot;
+    }
+    if (slot.type.hlslName() != type.hlslName()) {
+        existing = slot.type;
+        return nullptr;
+    }
+    return &slot;
+}
+
+void EffectPool::publish(const std::string& name, const fx::Value& value) {
+    auto it = mSlots.find(name);
+    if (it == mSlots.end()) return;
+    it->second.value = value;
+    ++it->second.generation;
+}
+
+const EffectPool::Slot* EffectPool::find(const std::string& name) const {
+    auto it = mSlots.find(name);
+    return it == mSlots.end() ? nullptr : &it->second;
+}
+
+}  // namespace runtime

@@ -1,0 +1,309 @@
+// HostFrame: see HostFrame.h. Feature list:
+//   [SECTION] Values   — what a host file's parameter is, for a step's render port and an object
+//   [SECTION] Targets  — the render targets the application created, given to their texture parameters
+//   [SECTION] Steps    — techniques and passes applied through the pass API, the draws between them
+//   [SECTION] Frame    — one frame, or the shadow factor for scoring
+#include "HostFrame.h"
+
+#include "EffectResources.h"
+
+#include <runtime/Framebuffer.h>
+#include <runtime/GlDebug.h>
+#include <runtime/Image.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace runtime {
+
+using fx::HostLightProjection;
+using fx::HostMatrix;
+using fx::HostParameter;
+using fx::HostStep;
+using fx::HostTarget;
+using fx::HostValue;
+
+namespace {
+
+// [SECTION] Values
+
+// A render port's matrices: the camera's, or a light's as RenderPort=lightN gets them.
+struct PortMatrices {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+};
+
+struct StepContext {
+    const Scene& scene;
+    PortMatrices camera;
+    PortMatrices port;
+    std::map<std::string, PortMatrices>& lights;
+    glm::ivec2 viewport{0};
+};
+
+// glm holds D3DX's row-vector matrices in the same memory (docs/api.md), so D3D's World * View is glm's
+// view * world.
+glm::mat4 factorMatrix(const HostMatrix& factor, const StepContext& step, const SceneObject* object) {
+    const PortMatrices& space = factor.space == HostMatrix::Space::Camera  ? step.camera
+                                : factor.space == HostMatrix::Space::Light ? step.lights.at(factor.light)
+                                                                           : step.port;
+    const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
+    glm::mat4 m{1.0f};
+    switch (factor.kind) {
+        case HostMatrix::Kind::World:
+            m = world;
+            break;
+        case HostMatrix::Kind::View:
+            m = space.view;
+            break;
+        case HostMatrix::Kind::Projection:
+            m = space.projection;
+            break;
+        case HostMatrix::Kind::WorldView:
+            m = space.view * world;
+            break;
+        case HostMatrix::Kind::ViewProjection:
+            m = space.projection * space.view;
+            break;
+        case HostMatrix::Kind::WorldViewProjection:
+            m = space.projection * space.view * world;
+            break;
+    }
+    if (factor.inverse) m = glm::inverse(m);
+    if (factor.transpose) m = glm::transpose(m);
+    return m;
+}
+
+// The value's components: a matrix as its 16 elements row after row (HLSL's order), vectors as they are.
+std::vector<float> components(const HostValue& value, const StepContext& step, const SceneObject* object) {
+    const auto light = [&]() -> const Light& { return *step.scene.findLight(value.light); };
+    switch (value.kind) {
+        case HostValue::Kind::Constant:
+            return value.numbers;
+        case HostValue::Kind::Matrix: {
+            // D3D's A * B * C, applied to a row vector left to right, is glm's C * B * A.
+            glm::mat4 product{1.0f};
+            for (const HostMatrix& factor : value.factors)
+                product = factorMatrix(factor, step, object) * product;
+            std::vector<float> out(16);
+            for (int r = 0; r < 4; ++r)
+                for (int c = 0; c < 4; ++c) out[r * 4 + c] = product[r][c];
+            return out;
+        }
+        case HostValue::Kind::LightPosition: {
+            const glm::vec4 p = (value.cameraViewSpace ? step.camera.view : glm::mat4(1.0f)) *
+                                glm::vec4(light().position, 1.0f);
+            return {p.x, p.y, p.z, 1.0f};
+        }
+        case HostValue::Kind::LightDirection: {
+            glm::vec3 d = light().direction;
+            if (value.cameraViewSpace) d = glm::normalize(glm::mat3(step.camera.view) * d);
+            return {d.x, d.y, d.z, 0.0f};
+        }
+        case HostValue::Kind::LightColor: {
+            const glm::vec3 c = light().color;
+            return {c.x, c.y, c.z, 1.0f};
+        }
+        case HostValue::Kind::LightCosHalfAngle:
+            return {std::cos(light().spotAngle * 0.5f)};
+        case HostValue::Kind::ObjectColor: {
+            const glm::vec3 c = object ? object->color : glm::vec3(1.0f);
+            return {c.x, c.y, c.z, 1.0f};
+        }
+        case HostValue::Kind::ViewportSize:
+            return {static_cast<float>(step.viewport.x), static_cast<float>(step.viewport.y)};
+    }
+    return {};
+}
+
+// Sets `numbers` as the variable's value: a matrix's upper-left rows x columns (as D3DX's SetMatrix fills
+// a float3x3), a vector's first components (a position's w dropped for a float3), a scalar broadcast.
+bool setComponents(EffectVariable variable, const HostValue& value, const std::vector<float>& numbers) {
+    const fx::TypeDesc type = variable.type();
+    fx::Value v = fx::zeroValue(type);
+    if (value.kind == HostValue::Kind::Matrix) {
+        for (int r = 0; r < type.rows; ++r)
+            for (int c = 0; c < type.cols; ++c)
+                v.data[static_cast<size_t>(r * type.cols + c)] = numbers[r * 4 + c];
+    } else if (numbers.size() == 1) {
+        std::fill(v.data.begin(), v.data.end(), numbers[0]);
+    } else {
+        for (size_t i = 0; i < v.data.size() && i < numbers.size(); ++i) v.data[i] = numbers[i];
+    }
+    return variable.setValue(v);
+}
+
+}  // namespace
+
+// [SECTION] Targets
+
+void HostFrame::ensureTargets(EffectRenderer& renderer, int width, int height) {
+    for (const HostTarget& target : mHost->targets) {
+        const glm::ivec2 size =
+            target.width > 0 ? glm::ivec2(target.width, target.height) : glm::ivec2(width, height);
+        Target& t = mTargets[target.name];
+        if (t.color.id() == 0 || t.color.width() != size.x || t.color.height() != size.y) {
+            t.color = GpuTexture::create2D(target.format, size.x, size.y);
+            t.depth = GpuTexture::create2D(fx::TextureFormat::D24S8, size.x, size.y);
+            t.color.setLabel("host target " + target.name);
+        }
+        // As the application's SetTexture: the effect samples the target wherever it samples the parameter.
+        if (!target.texture.empty()) renderer.variable(target.texture).setTexture(t.color.id());
+    }
+}
+
+// [SECTION] Steps
+
+bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
+                          const FrameOptions& options, const std::set<std::string>& unshadowed,
+                          fx::DiagnosticSink& diagnostics) {
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    std::map<std::string, PortMatrices> lights;
+    const auto lightMatrices = [&](const std::string& name, const fx::SourceLoc& loc) -> bool {
+        if (lights.count(name)) return true;
+        const std::optional<LightFit> fit = renderer.lightFit(scene, name, options);
+        if (!fit) {
+            diagnostics.report(fx::DiagId::SceneInvalidValue, loc,
+                               {"light", "the scene has no light named '" + name + "'"});
+            return false;
+        }
+        PortMatrices matrices{fit->view, fit->projection};
+        for (const HostLightProjection& projection : mHost->lights)
+            if (projection.light == name)
+                matrices.projection = glm::perspectiveLH_ZO(glm::radians(projection.fovY), 1.0f,
+                                                            projection.nearPlane, projection.farPlane);
+        lights[name] = matrices;
+        return true;
+    };
+    // Every light a value names, before the first step needs it.
+    const auto lightsOf = [&](const HostParameter& parameter) {
+        bool ok = true;
+        if (!parameter.value.light.empty()) ok = lightMatrices(parameter.value.light, parameter.loc);
+        for (const HostMatrix& factor : parameter.value.factors)
+            if (factor.space == HostMatrix::Space::Light)
+                ok = lightMatrices(factor.light, parameter.loc) && ok;
+        return ok;
+    };
+    for (const HostParameter& parameter : mHost->parameters)
+        if (!lightsOf(parameter)) return false;
+
+    const PortMatrices camera{scene.camera.view(), scene.camera.projection(aspect)};
+    for (const HostStep& step : mHost->frame) {
+        if (step.port != "camera" && !lightMatrices(step.port, step.loc)) return false;
+        StepContext context{scene, camera, step.port == "camera" ? camera : lights.at(step.port), lights};
+
+        // The step's target, as the application binds it before Begin().
+        RenderTargets targets;
+        if (step.target == "frame") {
+            targets.colors[0].texture = &r.frameColor;
+            targets.depth.texture = &r.frameDepth;
+        } else {
+            Target& target = mTargets.at(step.target);
+            targets.colors[0].texture = &target.color;
+            targets.depth.texture = &target.depth;
+        }
+        std::string error;
+        if (!r.framebuffers.bind(targets, error)) {
+            diagnostics.report(fx::DiagId::SceneInvalidValue, step.loc, {"target", error});
+            return false;
+        }
+        context.viewport = {targets.width(), targets.height()};
+        gl::Viewport(0, 0, targets.width(), targets.height());
+        ClearRequest clear;
+        if (step.clearColor) clear.color = *step.clearColor;
+        clear.depth = step.clearDepth;
+        if (clear.color || clear.depth) FramebufferCache::clear(clear);
+        if (step.draw == HostStep::Draw::Nothing || unshadowed.count(step.target)) continue;
+
+        EffectTechnique technique = renderer.technique(step.technique);
+        if (!technique.begin()) return false;
+        bool ok = true;
+        for (size_t p = 0; p < technique.passCount() && ok; ++p) {
+            EffectPass pass = technique.pass(p);
+            if (!step.pass.empty() && pass.name() != step.pass) continue;
+            // Values of the step before apply() uploads them; values of each object before its draw.
+            for (const HostParameter& parameter : mHost->parameters)
+                if (parameter.value.kind != HostValue::Kind::Constant && !parameter.value.perObject() &&
+                    !mOverridden.count(parameter.name))
+                    setComponents(renderer.variable(parameter.name), parameter.value,
+                                  components(parameter.value, context, nullptr));
+            if (!pass.apply(&diagnostics)) {
+                ok = false;
+                break;
+            }
+            const fx::CompiledPass& compiled = r.effect().techniques[pass.techniqueIndex()].passes[p];
+            if (compiled.vertex.glsl.empty()) continue;  // a pass that only sets states
+            if (step.draw == HostStep::Draw::Quad) {
+                r.quad.draw(compiled.vertex.inputs, 1, compiled.patchVertices, compiled.primitive);
+                continue;
+            }
+            for (const SceneObject& object : scene.objects) {
+                for (const HostParameter& parameter : mHost->parameters)
+                    if (parameter.value.perObject() && !mOverridden.count(parameter.name))
+                        setComponents(renderer.variable(parameter.name), parameter.value,
+                                      components(parameter.value, context, &object));
+                pass.commitChanges(&diagnostics);
+                r.gpuMesh(object.mesh)
+                    .draw(compiled.vertex.inputs, 1, compiled.patchVertices, compiled.primitive);
+            }
+        }
+        technique.end();
+        if (!ok) return false;
+    }
+    return true;
+}
+
+// [SECTION] Frame
+
+bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
+                       const FrameOptions& options, fx::DiagnosticSink& diagnostics) {
+    std::set<int> none;
+    r.ensureFrameResources(options.width, options.height, &none);
+    ensureTargets(renderer, options.width, options.height);
+    for (const HostParameter& parameter : mHost->parameters)
+        if (parameter.value.kind == HostValue::Kind::Constant)
+            setComponents(renderer.variable(parameter.name), parameter.value, parameter.value.numbers);
+
+    const auto& defines = r.effect().provenance.defines;
+    const bool scored = mHost->visibility &&
+                        std::any_of(defines.begin(), defines.end(),
+                                    [](const auto& define) { return define.first == "SHADOWFX_VISIBILITY"; });
+    mOverridden.clear();
+    bool ok = true;
+    if (!scored) {
+        ok = drawSteps(renderer, r, scene, options, {}, diagnostics);
+    } else {
+        // The shadow factor of an effect with no hook of its own: the frame with the visibility constants
+        // (no ambient, a white material) divided by the same frame with the shadow maps left cleared,
+        // which lights everything. What remains is the fraction of the light the shadow test let through.
+        for (const HostParameter& parameter : mHost->visibility->set) {
+            setComponents(renderer.variable(parameter.name), parameter.value, parameter.value.numbers);
+            mOverridden.insert(parameter.name);
+        }
+        const std::set<std::string> unshadowed(mHost->visibility->unshadowed.begin(),
+                                               mHost->visibility->unshadowed.end());
+        ok = drawSteps(renderer, r, scene, options, {}, diagnostics);
+        const Image shadowed = readColorTarget(r.frameColor).toRGBA8();
+        ok = ok && drawSteps(renderer, r, scene, options, unshadowed, diagnostics);
+        const Image lit = readColorTarget(r.frameColor).toRGBA8();
+        std::vector<uint8_t> ratio(shadowed.bytes.size());
+        for (size_t i = 0; i + 3 < ratio.size(); i += 4) {
+            // Where the light does not reach at all (outside a spot's cone, facing away) nothing is lit.
+            const float v =
+                lit.bytes[i] > 0
+                    ? std::min(1.0f, static_cast<float>(shadowed.bytes[i]) / static_cast<float>(lit.bytes[i]))
+                    : 0.0f;
+            const auto byte = static_cast<uint8_t>(v * 255.0f + 0.5f);
+            ratio[i] = ratio[i + 1] = ratio[i + 2] = byte;
+            ratio[i + 3] = 255;
+        }
+        r.frameColor.uploadRGBA8(ratio.data());
+    }
+    if (options.timePasses) gl::Finish();
+    FramebufferCache::bindDefault();
+    return ok;
+}
+
+}  // namespace runtime

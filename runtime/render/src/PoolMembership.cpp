@@ -1,0 +1,48 @@
+// PoolMembership: see PoolMembership.h.
+#include "PoolMembership.h"
+
+#include "EffectResources.h"
+
+namespace runtime {
+
+bool PoolMembership::join(std::shared_ptr<EffectPool> pool, const EffectResources& resources,
+                          fx::DiagnosticSink& diagnostics) {
+    mPool = std::move(pool);
+    if (!mPool) return true;
+    bool ok = true;
+    const std::vector<fx::ParameterInfo>& parameters = resources.parameterInfo();
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        if (!parameters[i].isShared) continue;
+        fx::TypeDesc existing;
+        if (!mPool->join(parameters[i].name, parameters[i].type, resources.values[i], existing)) {
+            diagnostics.report(fx::DiagId::PoolSharedTypeMismatch, parameters[i].loc,
+                               {parameters[i].name, parameters[i].type.hlslName(), existing.hlslName()});
+            ok = false;
+            continue;
+        }
+        mShared.push_back({i, 0});
+    }
+    return ok;
+}
+
+void PoolMembership::published(const EffectResources& resources, size_t index) {
+    for (Shared& shared : mShared) {
+        if (shared.parameter != index) continue;
+        const std::string& name = resources.parameterInfo()[index].name;
+        mPool->publish(name, resources.values[index]);
+        shared.seen = mPool->find(name)->generation;
+    }
+}
+
+void PoolMembership::pull(EffectResources& resources) {
+    for (Shared& shared : mShared) {
+        const EffectPool::Slot* slot = mPool->find(resources.parameterInfo()[shared.parameter].name);
+        if (!slot || slot->generation == shared.seen) continue;
+        storeParameter(resources.parameterInfo(), shared.parameter, slot->value, resources.values,
+                       resources.stamps);
+        resources.pinned[shared.parameter] = true;
+        shared.seen = slot->generation;
+    }
+}
+
+}  // namespace runtime
