@@ -107,6 +107,11 @@ void writeProgram(Writer& w, const StageProgram& p) {
             w.u32(run.bytes);
         }
     }
+    w.u32(static_cast<uint32_t>(p.images.size()));
+    for (const ImageBinding& image : p.images) {
+        w.str(image.glslName);
+        w.str(image.format);
+    }
     w.u32(static_cast<uint32_t>(p.inputs.size()));
     for (const VertexInput& i : p.inputs) {
         w.str(i.semantic);
@@ -153,6 +158,11 @@ void readProgram(Reader& r, StageProgram& p) {
             run.bytes = r.u32();
         }
     }
+    p.images.resize(r.count(8));
+    for (ImageBinding& image : p.images) {
+        image.glslName = r.str();
+        image.format = r.str();
+    }
     p.inputs.resize(r.count(20));
     for (VertexInput& i : p.inputs) {
         i.semantic = r.str();
@@ -188,7 +198,8 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     StageJob job;
     job.hlsl = r.str();
     uint32_t stage = r.u32();
-    job.stage = static_cast<ShaderStage>(std::min<uint32_t>(stage, 4));
+    job.stage =
+        static_cast<ShaderStage>(std::min<uint32_t>(stage, static_cast<uint32_t>(ShaderStage::Compute)));
     job.entryPoint = r.str();
     job.cross.uniformBlockName = r.str();
     job.cross.uniformBlockBinding = r.i32();
@@ -198,7 +209,7 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
     }
     job.cross.depthSamplers.resize(r.count(4));
     for (std::string& s : job.cross.depthSamplers) s = r.str();
-    if (!r.done() || stage > 4) return std::nullopt;
+    if (!r.done() || stage > static_cast<uint32_t>(ShaderStage::Compute)) return std::nullopt;
     return job;
 }
 

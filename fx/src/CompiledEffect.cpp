@@ -21,6 +21,8 @@ std::string_view shaderStageName(ShaderStage stage) {
             return "hull";
         case ShaderStage::Domain:
             return "domain";
+        case ShaderStage::Compute:
+            return "compute";
     }
     return "vertex";
 }

@@ -40,7 +40,7 @@ struct EnumLast {
     static constexpr E kLast = last;
 };
 template <>
-struct EnumLimit<ShaderStage> : EnumLast<ShaderStage, ShaderStage::Domain> {};
+struct EnumLimit<ShaderStage> : EnumLast<ShaderStage, ShaderStage::Compute> {};
 template <>
 struct EnumLimit<UniformBinding::Source>
     : EnumLast<UniformBinding::Source, UniformBinding::Source::CompileArgument> {};
@@ -66,8 +66,7 @@ struct EnumLimit<BaseType> : EnumLast<BaseType, BaseType::Struct> {};
 template <>
 struct EnumLimit<Shape> : EnumLast<Shape, Shape::Matrix> {};
 template <>
-struct EnumLimit<ScriptCommand::Kind> : EnumLast<ScriptCommand::Kind, ScriptCommand::Kind::ScriptSignature> {
-};
+struct EnumLimit<ScriptCommand::Kind> : EnumLast<ScriptCommand::Kind, ScriptCommand::Kind::Dispatch> {};
 template <>
 struct EnumLimit<ScriptCommand::ClearWhat>
     : EnumLast<ScriptCommand::ClearWhat, ScriptCommand::ClearWhat::Stencil> {};
@@ -85,9 +84,9 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 4,
-              "the enum lengths below were pinned at format version 4: re-pin them with the new version");
-static_assert(enumLength<ShaderStage>() == 5);
+static_assert(kCompiledEffectFormatVersion == 5,
+              "the enum lengths below were pinned at format version 5: re-pin them with the new version");
+static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
 static_assert(enumLength<LeaveOutCondition>() == 3);
@@ -96,9 +95,9 @@ static_assert(enumLength<StreamOutElement::Component>() == 3);
 static_assert(enumLength<StreamOutput::Primitive>() == 3);
 static_assert(enumLength<TextureFormat>() == 12);
 static_assert(enumLength<TextureDesc::Kind>() == 6);
-static_assert(enumLength<BaseType>() == 39);
+static_assert(enumLength<BaseType>() == 48);
 static_assert(enumLength<Shape>() == 3);
-static_assert(enumLength<ScriptCommand::Kind>() == 18);
+static_assert(enumLength<ScriptCommand::Kind>() == 19);
 static_assert(enumLength<ScriptCommand::ClearWhat>() == 3);
 static_assert(enumLength<ScriptCommand::DrawWhat>() == 2);
 static_assert(enumLength<PreshaderProgram::Instruction::Op>() == 12);
@@ -117,7 +116,8 @@ static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
 static_assert(sizeof(StorageBufferBinding) == 72);
 static_assert(sizeof(VertexInput) == 48);
-static_assert(sizeof(StageProgram) == 280);
+static_assert(sizeof(ImageBinding) == 72);
+static_assert(sizeof(StageProgram) == 304);
 static_assert(sizeof(PreshaderProgram::Instruction) == 200);
 static_assert(sizeof(PreshaderProgram::Error) == 72);
 static_assert(sizeof(PreshaderProgram) == 96);
@@ -126,7 +126,7 @@ static_assert(sizeof(RenderStateSetting) == 160);
 static_assert(sizeof(ScriptCommand) == 224);
 static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
-static_assert(sizeof(CompiledPass) == 1696);
+static_assert(sizeof(CompiledPass) == 2120);
 static_assert(sizeof(CompiledTechnique) == 184);
 static_assert(sizeof(TextureDesc) == 1872);
 static_assert(sizeof(SamplerDesc) == 128);
@@ -184,6 +184,10 @@ void fields(A& a, StorageBufferBinding& x) {
     a(x.blockName, x.parameter, x.glStride, x.d3dStride, x.runs);
 }
 template <class A>
+void fields(A& a, ImageBinding& x) {
+    a(x.glslName, x.parameter, x.format);
+}
+template <class A>
 void fields(A& a, VertexStreamSlot& x) {
     a(x.stream, x.index);
 }
@@ -194,7 +198,7 @@ void fields(A& a, VertexInput& x) {
 template <class A>
 void fields(A& a, StageProgram& x) {
     a(x.stage, x.entryPoint, x.profile, x.hlsl, x.glsl, x.uniformBlockName, x.uniformBlockBinding);
-    a(x.uniformBlockSize, x.uniforms, x.samplers, x.storageBuffers, x.inputs, x.sourceHash);
+    a(x.uniformBlockSize, x.uniforms, x.samplers, x.storageBuffers, x.images, x.inputs, x.sourceHash);
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Instruction& x) {
@@ -238,7 +242,7 @@ void fields(A& a, StreamOutput& x) {
 template <class A>
 void fields(A& a, CompiledPass& x) {
     a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels);
-    a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.patchVertices, x.primitive);
+    a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.compute, x.patchVertices, x.primitive);
     a(x.arguments, x.states, x.hasScript, x.script, x.annotations);
     a(x.streamOut, x.drawAuto);
 }

@@ -100,7 +100,7 @@ private:
             if (std::string error = program(state.value); !error.empty()) return error;
         if (std::string error = script(pass.script, 0); !error.empty()) return error;
         for (const StageProgram* stage :
-             {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain}) {
+             {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain, &pass.compute}) {
             for (const UniformBinding& uniform : stage->uniforms) {
                 const size_t limit =
                     uniform.source == UniformBinding::Source::Parameter ? mParameters : pass.arguments.size();

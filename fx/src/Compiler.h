@@ -5,6 +5,7 @@
 //   PassSamplerStates.cpp    a D3D9 pass's sampler-register states on the samplers they reach
 //   ScriptValidation.cpp     SAS scripts checked and resolved against the effect
 //   StageCompilation.cpp     lowering, the cache, glslang and SPIRV-Cross (in workers or here), reflection
+//   ComputePass.cpp          passes that set a compute shader
 //   HlslMessages.cpp         glslang's and SPIRV-Cross's messages said at the user's source
 //   TextureFunction.cpp      FX Composer's texture functions, lowered to a fill pass per texture
 #pragma once
@@ -110,6 +111,10 @@ private:
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
     const Expr* shaderExpr(const StateAssignment& s);
     CompiledPass compilePass(const Pass& p, PassSlot slot);
+    // [SECTION] Compute passes (ComputePass.cpp)
+    // True for a pass that sets a compute shader: its compute stage compiled (or, where the pass also sets
+    // a graphics stage, the technique left out); such a pass has no other stage and no render states.
+    bool computePass(const Pass& p, CompiledPass& pass, PassSlot slot);
     // [SECTION] Stream output (StreamOutput.cpp)
     // A stream-output pass, from the pass's lowering to the varyings resolved in its compiled GLSL.
     struct StreamOutRequest {

@@ -184,6 +184,13 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     mHull = nullptr;
     pass.name = p.name;
     pass.loc = p.loc;
+    if (computePass(p, pass, slot)) {
+        passAnnotations(p, pass);
+        pass.annotations = annotationValues(p.annotations);
+        pass.script = script(p.annotations, pass.hasScript);
+        validateScript(pass.script, nullptr);
+        return pass;
+    }
     // The geometry shader first, wherever the pass sets it: the pixel shader's inputs take its outputs'
     // types. The hull shader before the domain shader, which takes its tessellator settings.
     const StateAssignment* hull = nullptr;
@@ -247,7 +254,8 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
             continue;
         }
         if (*id == RenderStateId::GeometryShader || *id == RenderStateId::HullShader ||
-            *id == RenderStateId::DomainShader || *id == RenderStateId::VertexShader)
+            *id == RenderStateId::DomainShader || *id == RenderStateId::VertexShader ||
+            *id == RenderStateId::ComputeShader)
             continue;
         if (*id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))

@@ -294,7 +294,10 @@ std::optional<BaseType> Parser::supportedResource(const std::string& name) {
         {"Texture2DMS", BaseType::Texture2DMS},
         {"Buffer", BaseType::Buffer},
         {"StructuredBuffer", BaseType::StructuredBuffer},
-        {"ByteAddressBuffer", BaseType::ByteAddressBuffer}};
+        {"ByteAddressBuffer", BaseType::ByteAddressBuffer},
+        {"RWStructuredBuffer", BaseType::RWStructuredBuffer},
+        {"RWByteAddressBuffer", BaseType::RWByteAddressBuffer},
+        {"RWTexture2D", BaseType::RWTexture2D}};
     for (const auto& [spelling, base] : kResources)
         if (name == spelling) return base;
     return std::nullopt;

@@ -99,7 +99,8 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
                            : stage == ShaderStage::Fragment ? EShLangFragment
                            : stage == ShaderStage::Geometry ? EShLangGeometry
                            : stage == ShaderStage::Hull     ? EShLangTessControl
-                                                            : EShLangTessEvaluation;
+                           : stage == ShaderStage::Domain   ? EShLangTessEvaluation
+                                                            : EShLangCompute;
     glslang::TShader shader(language);
     const char* text = source.c_str();
     shader.setStrings(&text, 1);

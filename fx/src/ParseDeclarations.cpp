@@ -22,7 +22,8 @@ const Expr* namedAnnotation(const Expr& value, const std::vector<Annotation>& ea
 }
 
 bool isObjectType(const TypeDesc& type) {
-    return type.isTexture() || type.isBuffer() || type.isSampler() || type.isStateObject() || type.isShader();
+    return type.isTexture() || type.isBuffer() || type.isImage() || type.isSampler() ||
+           type.isStateObject() || type.isShader();
 }
 
 }  // namespace
@@ -203,7 +204,9 @@ void Parser::parseDeclaration(bool inBuffer) {
     Storage storage;
     for (;;) {
         const Token& token = peek();
-        if (token.is("static"))
+        // A compute shader's `groupshared` array is no parameter either: declared as written in the unit,
+        // like a static (glslang makes it GLSL's `shared`).
+        if (token.is("static") || token.is("groupshared"))
             storage.isStatic = true;
         else if (token.is("const"))
             storage.isConst = true;
@@ -217,8 +220,7 @@ void Parser::parseDeclaration(bool inBuffer) {
             storage.rowMajor = true;
         else if (token.is("column_major"))
             storage.rowMajor = false;
-        else if (token.is("inline") || token.is("volatile") || token.is("precise") ||
-                 token.is("groupshared")) {
+        else if (token.is("inline") || token.is("volatile") || token.is("precise")) {
         } else
             break;
         advance();

@@ -130,24 +130,12 @@ void Parser::parseSetCall(Pass& pass, const Token& name) {
     }
     mStates.normalizeCompileShader(value);
     mStates.normalizeNull(value);
-    const bool none = (value.kind == Expr::Kind::Identifier && value.text == "NULL") ||
-                      (value.kind == Expr::Kind::Number && value.number == 0);
-    if (what == "VertexShader" || what == "PixelShader" || what == "GeometryShader" || what == "HullShader" ||
-        what == "DomainShader") {
-        StateAssignment state;
-        state.name = what;
-        state.loc = name.loc;
-        state.value = std::move(value);
-        mStates.validateShaderValue(state);
-        pass.states.push_back(std::move(state));
-        return;
-    }
-    if (none) return;
-    if (value.kind == Expr::Kind::Identifier && !mEffect.findParameter(value.text)) {
-        error(DiagId::UnknownIdentifier, value.loc, {value.text});
-        return;
-    }
-    mRefusals.refuse(name.loc, kComputeShaderRefusal);
+    StateAssignment state;
+    state.name = what;
+    state.loc = name.loc;
+    state.value = std::move(value);
+    mStates.validateShaderValue(state);
+    pass.states.push_back(std::move(state));
 }
 
 void Parser::parsePassState(Pass& pass) {

@@ -123,13 +123,16 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
                          : stage == ShaderStage::Fragment ? "ps_"
                          : stage == ShaderStage::Geometry ? "gs_"
                          : stage == ShaderStage::Hull     ? "hs_"
-                                                          : "ds_";
+                         : stage == ShaderStage::Domain   ? "ds_"
+                                                          : "cs_";
     std::string p = profile;
     for (char& c : p) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (p.rfind(prefix, 0) != 0) return false;
     std::string version = p.substr(3);
     if (stage == ShaderStage::Hull || stage == ShaderStage::Domain) return modern(version);
-    if (stage == ShaderStage::Geometry) return version == "4_0" || version == "4_1" || modern(version);
+    // cs_4_x is D3D10.1 hardware's compute subset; GL's compute shaders run it as they run cs_5_0.
+    if (stage == ShaderStage::Geometry || stage == ShaderStage::Compute)
+        return version == "4_0" || version == "4_1" || modern(version);
     if (stage == ShaderStage::Vertex && (version == "1_2" || version == "1_3" || version == "1_4"))
         return false;
     if (stage == ShaderStage::Fragment && version == "1_1") return true;
@@ -166,6 +169,10 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
         switch (ref.kind) {
             case DeclRef::Kind::Parameter: {
                 const Parameter& p = effect.parameters[ref.index];
+                // GLSL's `shared` exists in compute shaders only: those whose wrapper declares numthreads.
+                if (p.isStatic && wrapper.find("[numthreads(") == std::string::npos &&
+                    identifiersIn(p.hlslText).count("groupshared"))
+                    break;
                 if (p.isStatic) {
                     const SplitStatic split = splitStaticInitializer(effect, p);
                     if (split.declaration.empty()) {
@@ -182,6 +189,7 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
                     // the block too, zero as an application that never set it leaves it.
                     hlsl += p.type.structName + " " + p.name + arraySuffix(p.type) + ";\n";
                 } else if (((p.type.isTexture() && p.type.base != BaseType::Texture) || p.type.isBuffer() ||
+                             p.type.isImage() ||
                             p.type.base == BaseType::SamplerState ||
                             p.type.base == BaseType::SamplerComparisonState) &&
                            named.count(p.name)) {
@@ -268,7 +276,7 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     if (!profileMatches(compile.profile, stage)) {
         // `VertexShader = compile ps_3_0 VS()` read "unsupported shader profile 'ps_3_0'": say what is wrong.
         for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
-                                  ShaderStage::Hull, ShaderStage::Domain})
+                                  ShaderStage::Hull, ShaderStage::Domain, ShaderStage::Compute})
             if (other != stage && profileMatches(compile.profile, other)) {
                 diagnostics.report(
                     DiagId::InvalidCompileExpression, compile.loc,

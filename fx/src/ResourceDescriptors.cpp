@@ -379,7 +379,7 @@ void Compiler::assignPairUnits() {
         for (CompiledPass& pass : technique.passes) {
             std::map<std::string, int> units;
             for (StageProgram* stage :
-                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
                 for (SamplerBinding& s : stage->samplers)
                     if (!s.pairTexture.empty())
                         s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))

@@ -38,6 +38,7 @@ const CommandName kCommands[] = {
     {"ScriptClass", ScriptCommand::Kind::ScriptClass},
     {"ScriptOutput", ScriptCommand::Kind::ScriptOutput},
     {"ScriptSignature", ScriptCommand::Kind::ScriptSignature},
+    {"Dispatch", ScriptCommand::Kind::Dispatch},
 };
 
 std::string trim(std::string_view text) {
@@ -168,6 +169,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                     case ScriptCommand::Kind::ClearSetStencil:
                     case ScriptCommand::Kind::LoopByCount:
                     case ScriptCommand::Kind::LoopGetIndex:
+                    case ScriptCommand::Kind::Dispatch:
                         if (value.empty()) ok = false, invalid("expected a value");
                         break;
                     case ScriptCommand::Kind::Technique: {

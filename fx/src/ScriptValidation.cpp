@@ -112,6 +112,32 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 }
                 break;
             }
+            case ScriptCommand::Kind::Dispatch: {
+                // Up to three group counts, each a parameter's name or a whole number; the runtime reads
+                // parameters' values per frame.
+                size_t counts = 0;
+                bool valid = true;
+                for (size_t from = 0; valid && from <= c.value.size();) {
+                    size_t comma = c.value.find(',', from);
+                    if (comma == std::string::npos) comma = c.value.size();
+                    std::string term = c.value.substr(from, comma - from);
+                    term.erase(0, term.find_first_not_of(" \t"));
+                    term.erase(term.find_last_not_of(" \t") + 1);
+                    from = comma + 1;
+                    ++counts;
+                    if (mIndex.count(term)) continue;
+                    const std::optional<std::vector<float>> number = parseLiteralNumbers(term);
+                    valid = number && number->size() == 1 && number->front() >= 0 &&
+                            std::floor(number->front()) == number->front();
+                }
+                if (!valid || counts > 3)
+                    error(DiagId::InvalidScriptCommand, c.loc,
+                          {"Dispatch",
+                           "expected 1 to 3 thread-group counts, each a whole number or a parameter, "
+                           "not '" +
+                               c.value + "'"});
+                break;
+            }
             case ScriptCommand::Kind::LoopEnd:
                 if (--loops < 0) {
                     error(DiagId::ScriptLoopEndWithoutLoop, c.loc, {});

@@ -61,6 +61,40 @@ void storageRuns(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::S
     }
 }
 
+// GLSL's layout qualifier of a storage image's format, as the runtime reads it (GpuTexture's image formats).
+std::string imageFormatQualifier(spv::ImageFormat format) {
+    switch (format) {
+        case spv::ImageFormatRgba32f:
+            return "rgba32f";
+        case spv::ImageFormatRgba16f:
+            return "rgba16f";
+        case spv::ImageFormatRg32f:
+            return "rg32f";
+        case spv::ImageFormatRg16f:
+            return "rg16f";
+        case spv::ImageFormatR32f:
+            return "r32f";
+        case spv::ImageFormatR16f:
+            return "r16f";
+        case spv::ImageFormatRgba8:
+            return "rgba8";
+        case spv::ImageFormatRgba32ui:
+            return "rgba32ui";
+        case spv::ImageFormatRg32ui:
+            return "rg32ui";
+        case spv::ImageFormatR32ui:
+            return "r32ui";
+        case spv::ImageFormatRgba32i:
+            return "rgba32i";
+        case spv::ImageFormatRg32i:
+            return "rg32i";
+        case spv::ImageFormatR32i:
+            return "r32i";
+        default:
+            return "";
+    }
+}
+
 }  // namespace
 
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
@@ -155,6 +189,16 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             const spirv_cross::SPIRType& array = compiler.get_type(block.member_types[0]);
             storageRuns(compiler, compiler.get_type(array.parent_type), 0, b.d3dStride, b.runs);
             program.storageBuffers.push_back(std::move(b));
+        }
+
+        // RWTexture2D<T>: a storage image; glslang gives it T's format (float4: rgba32f, float: r32f,
+        // uint: r32ui, ...), which the runtime creates the texture in.
+        program.images.clear();
+        for (const spirv_cross::Resource& r : resources.storage_images) {
+            ImageBinding image;
+            image.glslName = compiler.get_name(r.id);
+            image.format = imageFormatQualifier(compiler.get_type(r.type_id).image.format);
+            program.images.push_back(std::move(image));
         }
 
         program.uniforms.clear();

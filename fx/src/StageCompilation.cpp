@@ -15,7 +15,8 @@ StageProgram& stageProgram(CompiledPass& pass, ShaderStage stage) {
            : stage == ShaderStage::Fragment ? pass.fragment
            : stage == ShaderStage::Geometry ? pass.geometry
            : stage == ShaderStage::Hull     ? pass.hull
-                                            : pass.domain;
+           : stage == ShaderStage::Domain   ? pass.domain
+                                            : pass.compute;
 }
 
 // What the stage wrappers report for a stage form shadowfx has no GL counterpart for (a semantic, a
@@ -61,6 +62,8 @@ bool isUnsupportedStageForm(DiagId id) {
         case DiagId::DomainMismatch:
         case DiagId::OutputPatchSizeMismatch:
         case DiagId::DomainParameterUnsupported:
+        case DiagId::ComputeNumThreadsMissing:
+        case DiagId::ComputeParameterUnsupported:
             return true;
         default:
             return false;
@@ -98,6 +101,8 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
     }
     for (StorageBufferBinding& b : program.storageBuffers)
         if (auto it = mIndex.find(b.blockName); it != mIndex.end()) b.parameter = it->second;
+    for (ImageBinding& image : program.images)
+        if (auto it = mIndex.find(image.glslName); it != mIndex.end()) image.parameter = it->second;
 }
 
 bool Compiler::compileStage(const Expr& compile, ShaderStage stage, CompiledPass& pass, PassSlot slot) {
@@ -166,7 +171,8 @@ void Compiler::enqueueStage(LoweredStage&& lowered, CompiledPass& pass, PassSlot
                                      : stage == ShaderStage::Fragment ? "fx_PsGlobals"
                                      : stage == ShaderStage::Geometry ? "fx_GsGlobals"
                                      : stage == ShaderStage::Hull     ? "fx_HsGlobals"
-                                                                      : "fx_DsGlobals";
+                                     : stage == ShaderStage::Domain   ? "fx_DsGlobals"
+                                                                      : "fx_CsGlobals";
         // One uniform block binding per stage: the stage enum's order.
         job.cross.uniformBlockBinding = static_cast<int>(stage);
         job.cross.samplerUnits = mSamplerUnits;

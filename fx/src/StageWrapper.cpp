@@ -422,6 +422,7 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
     if (mStage == ShaderStage::Geometry) return buildGeometry(globals, wrapper);
     if (mStage == ShaderStage::Hull) return buildHull(globals, wrapper);
     if (mStage == ShaderStage::Domain) return buildDomain(globals, wrapper);
+    if (mStage == ShaderStage::Compute) return buildCompute(globals, wrapper);
     std::vector<Field> inputs, outputs;
     std::string locals, call, callArgs;
     size_t uniformIndex = 0;

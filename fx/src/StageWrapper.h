@@ -2,7 +2,8 @@
 // inputs at fixed locations, the user's structs rebuilt, the user's function called with the compile
 // expression's uniform arguments, its results written to SV_Position, varyings and SV_Target n.
 // WrapperBuilder::build() picks the stage's builder: vertex and pixel shaders in StageWrapper.cpp, geometry
-// shaders in GeometryWrapper.cpp, hull and domain shaders in TessellationWrappers.cpp. Private to fx.
+// shaders in GeometryWrapper.cpp, hull and domain shaders in TessellationWrappers.cpp, compute shaders in
+// ComputeWrapper.cpp. Private to fx.
 #pragma once
 
 #include "PassLowering.h"
@@ -86,6 +87,7 @@ private:
     bool streamElement(const FunctionParam& stream);
     bool buildHull(std::string& globals, std::string& wrapper);
     bool buildDomain(std::string& globals, std::string& wrapper);
+    bool buildCompute(std::string& globals, std::string& wrapper);
     bool readControlPoints(const FunctionParam& patch, const std::string& local, const std::string& source,
                            std::set<int>& varyings, std::string& locals, std::string& body);
     bool patchConstants(const TypeDesc& type, const SourceLoc& loc, bool write, const std::string& value,

@@ -198,7 +198,7 @@ void StateAssignments::validateShaderValue(StateAssignment& state) {
         const Parameter* p = mEffect.findParameter(v.text);
         if (p && (p->type.base == BaseType::VertexShader || p->type.base == BaseType::PixelShader ||
                   p->type.base == BaseType::GeometryShader || p->type.base == BaseType::HullShader ||
-                  p->type.base == BaseType::DomainShader))
+                  p->type.base == BaseType::DomainShader || p->type.base == BaseType::ComputeShader))
             return;
         if (!p) {
             error(DiagId::UnknownIdentifier, v.loc, {v.text});

@@ -18,9 +18,6 @@ namespace fx::detail {
 // Why GL cannot run a D3D10 pass's Set*Shader(value), where the value says so by itself: dynamic linkage
 // (BindInterfaces).
 std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect& effect);
-// Why a pass that sets a compute shader is left out.
-inline constexpr const char* kComputeShaderRefusal =
-    "compute shaders are dispatched by an application, not drawn by a pass";
 
 // The parser's refusals: the first reason of the technique being parsed, the first technique left out.
 class TechniqueRefusals {

@@ -25,7 +25,10 @@ bool TypeDesc::isTexture() const {
     return base >= BaseType::Texture && base <= BaseType::Texture2DMS;
 }
 bool TypeDesc::isBuffer() const {
-    return base >= BaseType::Buffer && base <= BaseType::ByteAddressBuffer;
+    return base >= BaseType::Buffer && base <= BaseType::ConsumeStructuredBuffer;
+}
+bool TypeDesc::isImage() const {
+    return base >= BaseType::RWTexture1D && base <= BaseType::RWBuffer;
 }
 bool TypeDesc::isSampler() const {
     return base >= BaseType::Sampler && base <= BaseType::SamplerComparisonState;
@@ -96,6 +99,24 @@ std::string TypeDesc::hlslName() const {
             return withTemplate("StructuredBuffer");
         case BaseType::ByteAddressBuffer:
             return "ByteAddressBuffer";
+        case BaseType::RWStructuredBuffer:
+            return withTemplate("RWStructuredBuffer");
+        case BaseType::RWByteAddressBuffer:
+            return "RWByteAddressBuffer";
+        case BaseType::AppendStructuredBuffer:
+            return withTemplate("AppendStructuredBuffer");
+        case BaseType::ConsumeStructuredBuffer:
+            return withTemplate("ConsumeStructuredBuffer");
+        case BaseType::RWTexture1D:
+            return withTemplate("RWTexture1D");
+        case BaseType::RWTexture2D:
+            return withTemplate("RWTexture2D");
+        case BaseType::RWTexture3D:
+            return withTemplate("RWTexture3D");
+        case BaseType::RWTexture2DArray:
+            return withTemplate("RWTexture2DArray");
+        case BaseType::RWBuffer:
+            return withTemplate("RWBuffer");
         case BaseType::Sampler:
             return "sampler";
         case BaseType::Sampler1D:

@@ -32,9 +32,10 @@ using Annotations = std::vector<AnnotationValue>;
 // Case-blind, as D3DX's GetAnnotationByName; nullptr when missing.
 const AnnotationValue* findAnnotation(const Annotations& annotations, std::string_view name);
 
-// Hull and Domain are D3D11's names for GL's tessellation control and evaluation stages.
-enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain };
-// The stage as the effect's author names it: "vertex", "pixel", "geometry", "hull", "domain".
+// Hull and Domain are D3D11's names for GL's tessellation control and evaluation stages. Compute runs
+// alone in its pass (SetComputeShader), dispatched instead of drawn.
+enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain, Compute };
+// The stage as the effect's author names it: "vertex", "pixel", "geometry", "hull", "domain", "compute".
 std::string_view shaderStageName(ShaderStage stage);
 
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
@@ -93,6 +94,16 @@ struct StorageBufferBinding {
     std::vector<Run> runs;   // in D3D order, covering the element
 };
 
+// A D3D11 RWTexture2D<T> a stage reads or writes: a GL image (image load/store). The runtime binds the
+// parameter's texture at the image unit of the pass's order of image parameters (GpuProgram), with the
+// format the GLSL declares, which glslang takes from T (docs/d3d10.md, "Compute shaders and read-write
+// resources").
+struct ImageBinding {
+    std::string glslName;  // the image uniform (the parameter's name)
+    size_t parameter = 0;  // CompiledEffect::parameters index
+    std::string format;    // GLSL's format qualifier: "rgba32f", "r32f", "rgba8", "r32ui", ...
+};
+
 // A vertex shader input at its attribute location: the runtime feeds it the mesh stream the compiler chose
 // (fx/VertexStreams.h, whatever name the effect gave the input), or a defined default where the mesh has
 // no such stream.
@@ -117,6 +128,7 @@ struct StageProgram {
     // name and no sampler.
     std::vector<SamplerBinding> samplers;
     std::vector<StorageBufferBinding> storageBuffers;  // the runtime binds them per program (GpuProgram)
+    std::vector<ImageBinding> images;                  // likewise
     std::vector<VertexInput> inputs;                   // vertex stage
     uint64_t sourceHash = 0;                           // hash of hlsl + options: the compile cache's key
 };
@@ -194,6 +206,9 @@ struct CompiledPass {
     StageProgram geometry;  // D3D10's geometry shader (SetGeometryShader); empty glsl when the pass has none
     StageProgram hull;      // D3D11's hull shader (SetHullShader): GL's tessellation control stage
     StageProgram domain;    // D3D11's domain shader (SetDomainShader): GL's tessellation evaluation stage
+    // D3D11's compute shader (SetComputeShader): a compute pass has no other stage; the application (the
+    // pass API's dispatch()) or the pass's script (`Dispatch=x,y,z`) runs it instead of drawing.
+    StageProgram compute;
     // With a hull shader: the control points of one patch (its InputPatch<T, n>), drawn as GL_PATCHES of
     // that many vertices; 0 draws triangle lists.
     int patchVertices = 0;

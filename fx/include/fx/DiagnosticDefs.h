@@ -60,10 +60,9 @@ FX_DIAGNOSTIC(StateObjectArray, Error, "arrays of state objects are not supporte
 FX_DIAGNOSTIC(ExpressionTooComplex, Error,
               "expression too complex (more than {0} nested or chained operators)")
 FX_DIAGNOSTIC(NestingTooDeep, Error, "nesting deeper than {0} levels")
-FX_DIAGNOSTIC(
-    ReadWriteResourceInEffect, Error,
-    "type '{0}' is not supported in effects: read-write resources are bound by the application (FX11 "
-    "sets unordered access views outside passes); a pass binds none")
+FX_DIAGNOSTIC(ReadWriteResourceInEffect, Error,
+              "type '{0}' is not supported in effects: of the read-write resources shadowfx runs "
+              "RWStructuredBuffer, RWByteAddressBuffer and RWTexture2D")
 FX_DIAGNOSTIC(MultisampleArrayInEffect, Error,
               "type '{0}' is not supported in effects: shadowfx creates no multisample array resources")
 FX_DIAGNOSTIC(ArraySizeOutOfRange, Error, "array size {0} is outside 1..{1} (all dimensions together)")
@@ -251,6 +250,14 @@ FX_DIAGNOSTIC(ConstructorComponentCount, Error, "{0} constructor needs {1} compo
 FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
 FX_DIAGNOSTIC(FixedFunctionUnsupported, Error,
               "the fixed-function pipeline generated for this pass cannot run {0} (docs/fixed-function.md)")
+// Compute passes (SetComputeShader; docs/d3d10.md, "Compute shaders and read-write resources").
+FX_DIAGNOSTIC(ComputePassWithOtherStages, Error,
+              "a pass that sets a compute shader sets no other shader in shadowfx (it is dispatched, not "
+              "drawn); '{0}' is set here")
+FX_DIAGNOSTIC(ComputeNumThreadsMissing, Error, "compute shader '{0}' has no [numthreads(x, y, z)] attribute")
+FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,
+              "compute shader parameter '{0}' is not supported (expected SV_DispatchThreadID, SV_GroupID, "
+              "SV_GroupThreadID, SV_GroupIndex or a uniform)")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
@@ -324,6 +331,18 @@ FX_DIAGNOSTIC(TextureFunctionReturn, Error,
 FX_DIAGNOSTIC(TextureFunctionSamples, Error,
               "texture function '{0}' reads '{1}'; a texture function is drawn when the effect is created, "
               "from parameter values alone, and reads no texture, sampler or buffer")
+// Running compute passes (EffectPass::dispatch, the SAS script's Dispatch=).
+FX_DIAGNOSTIC(DispatchNotCompute, Error, "dispatch: pass '{0}' has no compute shader")
+FX_DIAGNOSTIC(DispatchGroupCount, Error,
+              "dispatch: pass '{0}' asks for {1} thread groups; this OpenGL dispatches at most {2} per "
+              "dimension")
+FX_DIAGNOSTIC(ElementCountInvalid, Error,
+              "ElementCount of '{0}' is {1}; a storage buffer holds 1 to 268435456 elements")
+FX_DIAGNOSTIC(ViewOfUnknownResource, Error,
+              "'{0}' is a view of '{1}', which is no buffer or RWTexture2D parameter of the effect")
+FX_DIAGNOSTIC(ImageFormatUnsupported, Error,
+              "'{0}' ({1}) is an image of format '{2}'; shadowfx makes float and unorm images (float1, 2, 4 "
+              "elements, unorm4)")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")

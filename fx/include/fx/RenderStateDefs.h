@@ -37,6 +37,7 @@ FX_RENDER_STATE(PixelShader, Shader, 0)
 FX_RENDER_STATE(GeometryShader, Shader, 0)  // D3D10: SetGeometryShader
 FX_RENDER_STATE(HullShader, Shader, 0)      // D3D11: SetHullShader (GL tessellation control)
 FX_RENDER_STATE(DomainShader, Shader, 0)    // D3D11: SetDomainShader (GL tessellation evaluation)
+FX_RENDER_STATE(ComputeShader, Shader, 0)   // D3D11: SetComputeShader (a pass of its own, dispatched)
 FX_RENDER_STATE(ZEnable, Bool, 1)
 FX_RENDER_STATE(ZWriteEnable, Bool, 1)
 FX_RENDER_STATE(ZFunc, Cmp, 4)      // LESSEQUAL

@@ -33,6 +33,9 @@ struct ScriptCommand {
         ScriptClass,
         ScriptOutput,
         ScriptSignature,
+        // Dispatch=x,y,z: a compute pass's thread groups, each a number or a parameter (one parameter may
+        // hold all: Dispatch=Groups with `uint3 Groups`); missing counts are 1.
+        Dispatch,
     };
     enum class ClearWhat { Color, Depth, Stencil };
     enum class DrawWhat { Geometry, Buffer };

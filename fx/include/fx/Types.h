@@ -31,7 +31,18 @@ enum class BaseType {
     Buffer,             // Buffer<T>: typed elements (a GL buffer texture)
     StructuredBuffer,   // StructuredBuffer<T>: a GL shader storage block of T
     ByteAddressBuffer,  // raw 32-bit words: a GL shader storage block of uint
-    Sampler,            // untyped `sampler`
+    // D3D11's read-write forms, written by compute shaders (docs/d3d10.md, "Compute"): storage blocks...
+    RWStructuredBuffer,
+    RWByteAddressBuffer,
+    AppendStructuredBuffer,   // a storage block of T and a counter the shader increments
+    ConsumeStructuredBuffer,  // the same, the counter decremented
+    // ...and GL images (image load/store), their format from the element type.
+    RWTexture1D,
+    RWTexture2D,
+    RWTexture3D,
+    RWTexture2DArray,
+    RWBuffer,
+    Sampler,  // untyped `sampler`
     Sampler1D,
     Sampler2D,
     Sampler3D,
@@ -69,7 +80,8 @@ struct TypeDesc {
 
     bool isNumeric() const;      // bool/int/uint/half/float/double
     bool isTexture() const;      // Texture..Texture2DMS: what TextureDesc describes
-    bool isBuffer() const;       // Buffer, StructuredBuffer, ByteAddressBuffer
+    bool isBuffer() const;       // Buffer, StructuredBuffer, ByteAddressBuffer and the read-write buffers
+    bool isImage() const;        // RWTexture1D..RWBuffer: a GL image
     bool isSampler() const;      // Sampler..SamplerComparisonState
     bool isStateObject() const;  // RasterizerState, DepthStencilState, BlendState
     bool isShader() const;       // VertexShader..ComputeShader
