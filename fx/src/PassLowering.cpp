@@ -189,8 +189,7 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
                     // the block too, zero as an application that never set it leaves it.
                     hlsl += p.type.structName + " " + p.name + arraySuffix(p.type) + ";\n";
                 } else if (((p.type.isTexture() && p.type.base != BaseType::Texture) || p.type.isBuffer() ||
-                             p.type.isImage() ||
-                            p.type.base == BaseType::SamplerState ||
+                            p.type.isImage() || p.type.base == BaseType::SamplerState ||
                             p.type.base == BaseType::SamplerComparisonState) &&
                            named.count(p.name)) {
                     hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";

@@ -135,6 +135,7 @@ GLuint compileShader(GLenum kind, const std::string& source, const fx::StageProg
 
 std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
                                                Stages stages) {
+    if (!pass.compute.glsl.empty()) return createCompute(pass, diagnostics);
     std::unique_ptr<GpuProgram> program(new GpuProgram());
     if (pass.vertex.glsl.empty()) return program;  // a pass of script commands only
 
@@ -231,18 +232,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
                     const GLint location = gl::GetUniformLocation(program->mProgram, s.glslName.c_str());
                     if (location >= 0) gl::ProgramUniform1i(program->mProgram, location, s.unit);
                 }
-    // StructuredBuffer and ByteAddressBuffer blocks: binding points by the pass's order of parameters.
-    const std::vector<size_t> storage = storageBufferParameters(pass);
-    for (const fx::StageProgram* stage : linked)
-        if (stage)
-            for (const fx::StorageBufferBinding& b : stage->storageBuffers) {
-                const GLuint index = gl::GetProgramResourceIndex(program->mProgram, GL_SHADER_STORAGE_BLOCK,
-                                                                 b.blockName.c_str());
-                const auto at = std::find(storage.begin(), storage.end(), b.parameter);
-                if (index != GL_INVALID_INDEX && at != storage.end())
-                    gl::ShaderStorageBlockBinding(program->mProgram, index,
-                                                  static_cast<GLuint>(at - storage.begin()));
-            }
+    program->bindResourceSlots(pass, linked, 5);
     for (int i = 0; i < 5; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
@@ -252,10 +242,79 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     return program;
 }
 
+std::unique_ptr<GpuProgram> GpuProgram::createCompute(const fx::CompiledPass& pass,
+                                                      fx::DiagnosticSink& diagnostics) {
+    // Compute shaders are core OpenGL 4.3; the runtime's contexts are 4.5 (runtime/GlApi.h loads its core
+    // functions or none), so no context that gets here lacks them.
+    std::unique_ptr<GpuProgram> program(new GpuProgram());
+    std::string log;
+    const GLuint cs =
+        compileShader(GL_COMPUTE_SHADER, pass.compute.glsl, &pass.compute, pass, log, diagnostics);
+    if (cs) {
+        program->mProgram = gl::CreateProgram();
+        gl::AttachShader(program->mProgram, cs);
+        gl::LinkProgram(program->mProgram);
+        gl::DeleteShader(cs);
+        GLint ok = GL_FALSE;
+        gl::GetProgramiv(program->mProgram, GL_LINK_STATUS, &ok);
+        if (!ok) {
+            log += programInfoLog(program->mProgram);
+            gl::DeleteProgram(program->mProgram);
+            program->mProgram = 0;
+        }
+    }
+    if (!program->mProgram) {
+        diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
+        return nullptr;
+    }
+    program->mCompute = true;
+    const fx::StageProgram* linked[1] = {&pass.compute};
+    program->bindResourceSlots(pass, linked, 1);
+    StageBlock& block = program->mBlocks[5];
+    block.stage = &pass.compute;
+    if (pass.compute.uniformBlockSize > 0 && pass.compute.uniformBlockBinding >= 0)
+        block.data.assign(pass.compute.uniformBlockSize, 0);
+    return program;
+}
+
+void GpuProgram::bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked,
+                                   size_t count) {
+    // StructuredBuffer and ByteAddressBuffer blocks: binding points by the pass's order of parameters.
+    const std::vector<size_t> storage = storageBufferParameters(pass);
+    const std::vector<size_t> images = imageParameters(pass);
+    for (size_t s = 0; s < count; ++s) {
+        if (!linked[s]) continue;
+        for (const fx::StorageBufferBinding& b : linked[s]->storageBuffers) {
+            const GLuint index =
+                gl::GetProgramResourceIndex(mProgram, GL_SHADER_STORAGE_BLOCK, b.blockName.c_str());
+            const auto at = std::find(storage.begin(), storage.end(), b.parameter);
+            if (index != GL_INVALID_INDEX && at != storage.end())
+                gl::ShaderStorageBlockBinding(mProgram, index, static_cast<GLuint>(at - storage.begin()));
+        }
+        // An image uniform holds its unit as a sampler uniform does (glUniform1i).
+        for (const fx::ImageBinding& image : linked[s]->images) {
+            const GLint location = gl::GetUniformLocation(mProgram, image.glslName.c_str());
+            const auto at = std::find(images.begin(), images.end(), image.parameter);
+            if (location >= 0 && at != images.end())
+                gl::ProgramUniform1i(mProgram, location, static_cast<GLint>(at - images.begin()));
+        }
+    }
+}
+
+std::vector<size_t> GpuProgram::imageParameters(const fx::CompiledPass& pass) {
+    std::vector<size_t> parameters;
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
+        for (const fx::ImageBinding& image : stage->images) parameters.push_back(image.parameter);
+    std::sort(parameters.begin(), parameters.end());
+    parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
+    return parameters;
+}
+
 std::vector<size_t> GpuProgram::storageBufferParameters(const fx::CompiledPass& pass) {
     std::vector<size_t> parameters;
     for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
         for (const fx::StorageBufferBinding& b : stage->storageBuffers) parameters.push_back(b.parameter);
     std::sort(parameters.begin(), parameters.end());
     parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());

@@ -3,6 +3,7 @@
 // applyRenderStates): one way to make GL ready for a pass, whichever client draws.
 #include <runtime/EffectPass.h>
 
+#include "ComputeDispatch.h"
 #include "EffectResources.h"
 #include "PassBindings.h"
 
@@ -118,6 +119,11 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     r.pool.pull(r);
     EffectResources::ApplicationFrame& frame = r.application;
     const fx::CompiledPass& pass = compiledPass(r, mTechnique, mPass);
+    if (!pass.compute.glsl.empty()) {
+        if (!bindComputePass(r, mTechnique, mPass, frame.arguments, sink)) return false;
+        frame.applied = std::make_pair(mTechnique, mPass);
+        return true;
+    }
     if (!frame.targetKnown) captureApplicationTarget(r);
 
     const ScriptTargets named = scriptTargets(r, pass);
@@ -148,6 +154,7 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     if (program && program->hasShaders()) {
         bindPassTextures(r, pass, named.targets);
         bindPassStorageBuffers(r, pass);
+        bindPassImages(r, pass);
         program->bind();
         r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, frame.arguments, sink);
         program->upload(r.values, frame.arguments, *r.uniformRing);

@@ -229,7 +229,7 @@ const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, 
     for (const fx::CompiledTechnique& technique : effect.techniques)
         for (const fx::CompiledPass& pass : technique.passes)
             for (const fx::StageProgram* stage :
-                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
                 for (const fx::StorageBufferBinding& b : stage->storageBuffers)
                     if (b.parameter == parameter) return &b;
     return nullptr;
@@ -366,7 +366,9 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         r.passComparisonSamplers.emplace_back(desc, true);
     }
     r.uniformRing = std::make_unique<UniformRing>();  // texture functions draw with it
-    if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics)) return nullptr;
+    if (!r.createFileTextures(diagnostics) || !r.createDefaultBuffers(diagnostics) ||
+        !r.createImages(diagnostics))
+        return nullptr;
     r.quad = GpuMesh::makeFullScreenQuad();
     r.annotations = AnnotationTable(*r.mCompiled);
     return resources;
@@ -538,6 +540,23 @@ bool EffectResources::setTexture(size_t index, const TextureData& data, fx::Diag
     return true;
 }
 
+// `int ElementCount = N;` on a storage buffer (docs/d3d10.md, "Compute shaders and read-write resources"):
+// the elements it holds from load on, as the buffer an FX11 application creates for it; 1 without one.
+static std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
+                                                  fx::DiagnosticSink& diagnostics) {
+    const fx::AnnotationValue* count = fx::findAnnotation(parameter.annotations, "ElementCount");
+    if (!count) return 1;
+    const double value = count->value.data.empty() ? 0.0 : count->value.data[0];
+    if (count->value.data.size() != 1 || !(value >= 1 && value <= double(size_t(1) << 28)) ||
+        value != static_cast<double>(static_cast<size_t>(value))) {
+        diagnostics.report(
+            fx::DiagId::ElementCountInvalid, parameter.loc,
+            {parameter.name, count->value.data.empty() ? "not a number" : std::to_string(value)});
+        return std::nullopt;
+    }
+    return static_cast<size_t>(value);
+}
+
 // Zeros until the application sets them: what D3D10 reads from a resource slot with nothing bound.
 bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
     for (size_t i = 0; i < parameterInfo().size(); ++i) {
@@ -554,13 +573,17 @@ bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
             continue;
         }
         const fx::StorageBufferBinding* layout = storageLayout(*mCompiled, i);
-        buffers[i] = GpuBuffer::create(nullptr, layout ? std::max<size_t>(layout->glStride, 4) : 16);
+        const std::optional<size_t> elements = declaredElementCount(parameterInfo()[i], diagnostics);
+        if (!elements) return false;
+        buffers[i] =
+            GpuBuffer::create(nullptr, *elements * (layout ? std::max<size_t>(layout->glStride, 4) : 16));
     }
     return true;
 }
 
 bool EffectResources::setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                                 fx::DiagnosticSink& diagnostics) {
+    index = viewedResource(index);  // a view's contents are its resource's
     const bool isBuffer = index < parameterInfo().size() && parameterInfo()[index].type.isBuffer();
     auto refuse = [&](fx::DiagId id, const std::vector<std::string>& args) {
         const fx::SourceLoc where = index < parameterInfo().size() ? parameterInfo()[index].loc

@@ -92,6 +92,22 @@ public:
     std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
     std::map<size_t, GpuTexture> textures;                // by texture parameter index
     std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)
+    // RWTexture2D parameters' textures, by parameter index (StorageImages.cpp): made at load, kept between
+    // frames.
+    std::map<size_t, GpuTexture> images;
+    // Compute dispatches so far: what a pass reading storage buffers or images reads changes with them,
+    // which the frame plan's signatures take in (PlanRecorder::draw) so that leave-out never keeps such a
+    // pass's last result.
+    uint64_t computeDispatches = 0;
+    // `string ViewOf = "Resource";` on a StructuredBuffer, ByteAddressBuffer or Texture2D: the parameter
+    // reads the read-write resource named (FX11's shader-resource view of the buffer or texture a compute
+    // pass writes through its unordered access view), by index. Made at load (StorageImages.cpp).
+    std::map<size_t, size_t> resourceViews;
+    // The resource `parameter` reads: the one it is a view of, else its own.
+    size_t viewedResource(size_t parameter) const {
+        auto view = resourceViews.find(parameter);
+        return view == resourceViews.end() ? parameter : view->second;
+    }
     // Mipmapped render targets written since their mip chain was last generated: regenerated before a
     // pass samples them (D3D9's AUTOGENMIPMAP).
     std::set<const GpuTexture*> staleMipChains;
@@ -174,6 +190,10 @@ public:
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     // EffectRenderer::setTexture.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
+    // The textures of the RWTexture2D parameters a pass uses, at their Width and Height annotations in the
+    // format their code declares (StorageImages.cpp). False, with a diagnostic, for a format or size
+    // shadowfx cannot make.
+    bool createImages(fx::DiagnosticSink& diagnostics);
     // EffectRenderer::setBuffer.
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                    fx::DiagnosticSink& diagnostics);

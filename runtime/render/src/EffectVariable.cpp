@@ -195,8 +195,8 @@ bool EffectVariable::isUsed(const EffectPass& pass) const {
     const fx::CompiledPass& compiled =
         mResources->effect().techniques[pass.techniqueIndex()].passes[pass.index()];
     if (passValueReads(compiled, mResources->values.size())[mParameter]) return true;
-    for (const fx::StageProgram* stage :
-         {&compiled.vertex, &compiled.hull, &compiled.domain, &compiled.geometry, &compiled.fragment}) {
+    for (const fx::StageProgram* stage : {&compiled.vertex, &compiled.hull, &compiled.domain,
+                                          &compiled.geometry, &compiled.fragment, &compiled.compute}) {
         for (const fx::SamplerBinding& binding : stage->samplers) {
             const fx::SamplerDesc* desc = mResources->effect().findSampler(binding.samplerParameter);
             const bool names = binding.samplerParameter == mParameter ||

@@ -1,6 +1,8 @@
 // FrameExecutor: see FrameExecutor.h.
 #include "FrameExecutor.h"
 
+#include "ComputeDispatch.h"
+
 #include <runtime/GlDebug.h>
 #include <runtime/IntersectionBody.h>
 #include "PassBindings.h"
@@ -151,7 +153,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     const size_t passIndex =
         static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
     GpuProgram* program = mResources.programs[mTechnique][passIndex].get();
-    if (!program || !program->hasShaders()) {
+    if (!program || !program->hasShaders() || program->isCompute()) {  // a compute pass dispatches
         if (mWarnedPasses.insert(passIndex).second) {
             mDiagnostics.report(fx::DiagId::PassWithoutShaders, pass.loc, {pass.name});
         }
@@ -171,6 +173,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     if (vertexOnly) program = vertexOnly;
     bindPassTextures(mResources, pass, mTargets);
     bindPassStorageBuffers(mResources, pass);
+    bindPassImages(mResources, pass);
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
     if (mPort.cascade >= 0) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
@@ -251,6 +254,25 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         else
             gl::DeleteQueries(1, &query);
     }
+}
+
+void FrameExecutor::dispatch(const fx::CompiledPass& pass, const std::array<uint32_t, 3>& groups,
+                             const fx::SourceLoc& loc) {
+    const size_t passIndex =
+        static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
+    {
+        // The frame's and the render port's semantics (Time, the camera's matrices), as a draw binds them.
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
+                     SemanticBinder::Scope::PerPort, &mUses[passIndex].used, &mResources.stamps);
+    }
+    if (!bindComputePass(mResources, mTechnique, passIndex, mArguments, mDiagnostics)) {
+        mDiagnostics.report(fx::DiagId::DispatchNotCompute, loc, {pass.name});
+        mFailed = true;
+        return;
+    }
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    if (!dispatchBoundCompute(mResources, pass, groups, mDiagnostics)) mFailed = true;
 }
 
 void FrameExecutor::drawScene(const fx::ScriptCommand&) {

@@ -44,6 +44,9 @@ public:
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
     void clear(fx::ScriptCommand::ClearWhat what) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
+    // Dispatch=x,y,z (ComputeDispatch.h): outside the plan, which has no operation for it.
+    void dispatch(const fx::CompiledPass& pass, const std::array<uint32_t, 3>& groups,
+                  const fx::SourceLoc& loc) override;
     void drawScene(const fx::ScriptCommand& command) override;
     const fx::Value* parameter(size_t index) const override { return &mResources.values[index]; }
     void setParameter(const std::string& name, int parameter, const fx::Value& value) override;

@@ -23,14 +23,20 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
                                             : resources.applicationTextures.end();
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
+            // A view of an RWTexture2D (`string ViewOf`) samples the image's texture.
+            auto image = resources.images.find(resources.viewedResource(*textureParameter));
             auto it = resources.textures.find(*textureParameter);
-            if (it != resources.textures.end()) texture = &it->second;
+            if (image != resources.images.end())
+                texture = &image->second;
+            else if (it != resources.textures.end())
+                texture = &it->second;
         }
         const bool rendering = std::any_of(drawing.colors.begin(), drawing.colors.end(),
                                            [texture](const auto& color) { return color.texture == texture; });
         // Not while the pass renders into it (the chain would be built before the draw that changes it).
         if (texture && !rendering && resources.staleMipChains.erase(texture) > 0) texture->generateMipmaps();
-        auto buffer = textureParameter ? resources.buffers.find(*textureParameter) : resources.buffers.end();
+        auto buffer = textureParameter ? resources.buffers.find(resources.viewedResource(*textureParameter))
+                                       : resources.buffers.end();
         if (application != resources.applicationTextures.end()) {
             gl::BindTexture(application->second.target, application->second.name);
         } else if (texture) {
@@ -54,8 +60,8 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
     }
 }
 
-std::array<const fx::StageProgram*, 5> stagesOf(const fx::CompiledPass& pass) {
-    return {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment};
+std::array<const fx::StageProgram*, 6> stagesOf(const fx::CompiledPass& pass) {
+    return {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute};
 }
 
 }  // namespace
@@ -68,9 +74,19 @@ void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
     for (size_t binding = 0; binding < parameters.size(); ++binding) {
-        auto buffer = resources.buffers.find(parameters[binding]);
+        auto buffer = resources.buffers.find(resources.viewedResource(parameters[binding]));
         if (buffer != resources.buffers.end())
             gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
+    }
+}
+
+void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
+    const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
+    for (size_t unit = 0; unit < parameters.size(); ++unit) {
+        auto image = resources.images.find(parameters[unit]);
+        if (image != resources.images.end())
+            gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                                 image->second.glFormat().internalFormat);
     }
 }
 
@@ -81,7 +97,7 @@ int depthBiasBits(const GpuTexture* texture) {
 GlStateMask passStateMask(const fx::CompiledPass& pass) {
     GlStateMask mask;
     mask.renderStates = true;  // every state, set or not (RenderStateApplier.h)
-    if (pass.vertex.glsl.empty()) return mask;
+    if (pass.vertex.glsl.empty() && pass.compute.glsl.empty()) return mask;
     mask.program = true;
     for (const fx::StageProgram* stage : stagesOf(pass)) {
         GlStateMask stageMask;

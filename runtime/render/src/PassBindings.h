@@ -18,6 +18,8 @@ namespace runtime {
 void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass, const RenderTargets& drawing);
 // Binds the buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks.
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass);
+// Binds the textures behind the pass's images (RWTexture2D) on their image units, read-write.
+void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass);
 // DepthBias's depth bits for a depth target of `texture` (RenderStateApplier.h): 2^-bits for UNORM depth;
 // for D32F the resolvable difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24
 // bits; 24 without one.

@@ -18,7 +18,7 @@ std::vector<bool> passValueReads(const fx::CompiledPass& pass, size_t count) {
             if (p < count) used[p] = true;
     };
     for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
         for (const fx::UniformBinding& member : stage->uniforms)
             if (member.active && member.source == fx::UniformBinding::Source::Parameter &&
                 member.index < count)

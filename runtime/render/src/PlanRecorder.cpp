@@ -17,7 +17,7 @@ constexpr float kReceiverPadTexels = 8.0f;
 std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
     std::vector<const fx::SamplerBinding*> samplers;
     for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
         for (const fx::SamplerBinding& binding : stage->samplers) samplers.push_back(&binding);
     return samplers;
 }
@@ -124,7 +124,8 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
 void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
     const size_t index = passIndex(pass);
     const GpuProgram* program = mResources.programs[mTechnique][index].get();
-    if (!program || !program->hasShaders()) return;  // FrameExecutor warns and skips it too
+    // FrameExecutor warns and skips it too.
+    if (!program || !program->hasShaders() || program->isCompute()) return;
     PlannedOp op;
     op.kind = what == fx::ScriptCommand::DrawWhat::Buffer ? PlannedOp::Kind::DrawBuffer
                                                           : PlannedOp::Kind::DrawGeometry;
@@ -188,6 +189,10 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     for (size_t p : use.perPassParameters)
         h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
     if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp);
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
+        if (!stage->storageBuffers.empty() || !stage->images.empty())
+            h = hashCombine(h, mResources.computeDispatches);
     op.signature = h;
     op.sceneSaysSkip = mSceneSaysSkip;
     if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {

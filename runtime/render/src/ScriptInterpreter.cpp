@@ -2,6 +2,8 @@
 
 #include "HostScene.h"
 
+#include <algorithm>
+
 #include <fx/LiteralNumbers.h>
 #include <private/runtime/NameLookups.h>
 #include <fx/RenderStates.h>
@@ -55,6 +57,21 @@ ScriptOperands::ScriptOperands(const fx::CompiledEffect& effect,
             }
             if (command.kind == Command::Kind::RenderPort && !command.value.empty())
                 operand.lightSlot = lightSlot(command.value);
+            // Dispatch=x,y,z: a term names a parameter or is a count (-1 where it is neither; the
+            // compiler reported it).
+            for (size_t from = 0; command.kind == Command::Kind::Dispatch && from <= command.value.size();) {
+                size_t comma = command.value.find(',', from);
+                if (comma == std::string::npos) comma = command.value.size();
+                std::string term = command.value.substr(from, comma - from);
+                term.erase(0, term.find_first_not_of(" \t"));
+                term.erase(term.find_last_not_of(" \t") + 1);
+                from = comma + 1;
+                const std::optional<size_t> index = findParameter(term);
+                const std::optional<std::vector<float>> number = fx::parseLiteralNumbers(term);
+                operand.dispatchParameters.push_back(index ? static_cast<int>(*index) : -1);
+                operand.dispatchCounts.push_back(!index && number && number->size() == 1 ? number->front()
+                                                                                         : -1);
+            }
             mOperands.emplace(&command, std::move(operand));
         }
     };
@@ -239,6 +256,40 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 }
                 target.draw(*pass, command.draw);
                 break;
+            case Command::Kind::Dispatch: {
+                if (!pass) {
+                    diagnostics.report(
+                        fx::DiagId::InvalidScriptCommand, command.loc,
+                        {"Dispatch", "a technique script dispatches through Pass=, not Dispatch="});
+                    return false;
+                }
+                // Each term a number or a parameter; a vector parameter gives several counts.
+                const ScriptOperand& operand = operands.of(command);
+                std::array<float, 3> counts{1, 1, 1};
+                size_t given = 0;
+                bool valid = !operand.dispatchCounts.empty();
+                for (size_t term = 0; valid && term < operand.dispatchCounts.size(); ++term) {
+                    const int parameter = operand.dispatchParameters[term];
+                    const fx::Value* value =
+                        parameter >= 0 ? target.parameter(static_cast<size_t>(parameter)) : nullptr;
+                    const size_t n = value ? value->data.size() : 1;
+                    valid = given + n <= 3;
+                    for (size_t k = 0; valid && k < n; ++k) {
+                        counts[given] = value ? value->data[k] : operand.dispatchCounts[term];
+                        valid = counts[given++] >= 0;
+                    }
+                }
+                std::array<uint32_t, 3> groups{1, 1, 1};
+                if (!valid) {
+                    diagnostics.report(
+                        fx::DiagId::InvalidScriptCommand, command.loc,
+                        {"Dispatch", "'" + command.value + "' is not 1 to 3 non-negative counts"});
+                    return false;
+                }
+                for (size_t axis = 0; axis < 3; ++axis) groups[axis] = static_cast<uint32_t>(counts[axis]);
+                target.dispatch(*pass, groups, command.loc);
+                break;
+            }
             case Command::Kind::LoopByCount: {
                 const fx::Value* value = scriptValue(operands.of(command), target);
                 int count = value ? value->asInt() : -1;

@@ -7,6 +7,8 @@
 #include <fx/Diagnostics.h>
 #include <fx/Value.h>
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +26,9 @@ struct ScriptOperand {
     int parameter = -1;
     std::optional<fx::Value> literal;  // ClearSet*/LoopByCount: a literal value ("0.5", "1,0,0,1")
     int lightSlot = -1;                // RenderPort=lightN: its SemanticBinder::lightSlot
+    // Dispatch=x,y,z: each term's parameter (-1: none) and literal count, in order.
+    std::vector<int> dispatchParameters;
+    std::vector<float> dispatchCounts;
 };
 
 // Every command's operand, by command, for the scripts of one effect.
@@ -59,6 +64,9 @@ public:
     virtual void setClearStencil(int stencil) = 0;
     virtual void clear(fx::ScriptCommand::ClearWhat what) = 0;
     virtual void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) = 0;
+    // Dispatch=x,y,z in a compute pass's script (ComputeDispatch.h); `loc` is the command's.
+    virtual void dispatch(const fx::CompiledPass& pass, const std::array<uint32_t, 3>& groups,
+                          const fx::SourceLoc& loc) = 0;
     // ScriptExternal=color: the host draws the scene into the current targets (HostScene.h).
     virtual void drawScene(const fx::ScriptCommand& command) = 0;
     // Parameter access for Loop*/ClearSet* values, by index.

@@ -76,6 +76,11 @@ public:
     // the order of their binding points: parameter k is bound at GL_SHADER_STORAGE_BUFFER binding k in
     // every program linked from the pass.
     static std::vector<size_t> storageBufferParameters(const fx::CompiledPass& pass);
+    // The effect parameters behind the pass's images (RWTexture2D), likewise: parameter k is bound at image
+    // unit k.
+    static std::vector<size_t> imageParameters(const fx::CompiledPass& pass);
+    // True for a compute pass's program: dispatched (glDispatchCompute), never drawn.
+    bool isCompute() const { return mCompute; }
 
     // Makes the program current; the next upload() binds every stage's block whatever it holds.
     void bind();
@@ -92,9 +97,16 @@ private:
         std::vector<uint8_t> uploaded;  // what the bound range holds; empty = nothing bound yet
     };
     GpuProgram() = default;
+    // A compute pass's program: its compute stage alone.
+    static std::unique_ptr<GpuProgram> createCompute(const fx::CompiledPass& pass,
+                                                     fx::DiagnosticSink& diagnostics);
+    // Binds the pass's storage blocks and images to the binding points and units their parameters' orders
+    // give (storageBufferParameters, imageParameters).
+    void bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked, size_t count);
 
     GLuint mProgram = 0;
-    StageBlock mBlocks[5];          // vertex, pixel, geometry, hull, domain
+    StageBlock mBlocks[6];  // vertex, pixel, geometry, hull, domain, compute
+    bool mCompute = false;
     bool mWritesPointSize = false;  // the stage before the rasterizer writes gl_PointSize (PSIZE)
     int mClipDistances = 0;         // gl_ClipDistance entries the vertex stage writes (SV_ClipDistance)
 };

@@ -29,6 +29,7 @@
 #include <fx/Diagnostics.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -82,6 +83,16 @@ public:
     // application knows a context is current and what is bound, as D3DX9's CommitChanges. False if this
     // pass is not the one last applied.
     bool commitChanges(fx::DiagnosticSink* diagnostics = nullptr) const;
+
+    // A compute pass (SetComputeShader; docs/d3d10.md, "Compute shaders and read-write resources"): apply()
+    // binds its storage buffers, images, textures, program and values, and touches no target or render
+    // state; dispatch() then runs x * y * z thread groups (FX11's Dispatch after Apply; it applies the pass
+    // first where another was applied last) and orders the writes before whatever reads them next, draws,
+    // dispatches and the application's reads of the buffers alike (glMemoryBarrier). What a dispatch
+    // writes stays in the effect's buffers and images between frames. False, with a diagnostic, for a pass
+    // without a compute shader or more groups than the context dispatches.
+    bool dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1,
+                  fx::DiagnosticSink* diagnostics = nullptr) const;
 
     // A stream-output pass's (ConstructGSWithSO) last capture, as render() or the application's own
     // captures left it: the buffers, the transform feedback object to hand glDrawTransformFeedback (D3D10's
