@@ -308,7 +308,7 @@ TEST(PassApi, RenderSceneAfterTheApplicationDrewIntoTheTargetsDrawsThemAgain) {
 // [SECTION] Lookups and annotations
 
 // A D3D10/11 effect with an array, an application texture, a technique in an fxgroup, one the parser leaves
-// out (a compute shader, which a pass does not draw) and one the compiler leaves out (GL has no SV_Coverage
+// out (dynamic shader linkage, which GLSL has not) and one the compiler leaves out (GL has no SV_Coverage
 // input).
 constexpr const char* kPalette = R"(
 float4x4 WorldViewProj : WORLDVIEWPROJECTION < string UIName = "Transform"; >;
@@ -325,12 +325,12 @@ VsOut VS(float3 position : POSITION, float2 uv : TEXCOORD0)
     return o;
 }
 float4 PS(VsOut i) : SV_Target { return Albedo.Sample(PointClamp, i.uv) * Palette[1] * Gain; }
-[numthreads(1, 1, 1)] void CS() {}
-technique11 Computed
+technique11 Linked
 {
     pass
     {
-        SetComputeShader(CompileShader(cs_5_0, CS()));
+        SetVertexShader(CompileShader(vs_5_0, VS()));
+        SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), Light));
     }
 }
 float4 CoveragePS(VsOut i, uint mask : SV_Coverage) : SV_Target { return Palette[0] * mask; }
@@ -471,9 +471,12 @@ TEST(PassApi, ValidatesTechniquesWithTheReasonOneWasLeftOut) {
     const runtime::TechniqueValidation coverage = effect->validateTechnique("Coverage");
     EXPECT_FALSE(coverage.valid);
     EXPECT_EQ(coverage.reason, "pixel input semantic 'SV_COVERAGE' is not supported");
-    const runtime::TechniqueValidation computed = effect->validateTechnique("Computed");
-    EXPECT_FALSE(computed.valid);
-    EXPECT_EQ(computed.reason, "compute shaders are dispatched by an application, not drawn by a pass");
+    const runtime::TechniqueValidation linked = effect->validateTechnique("Linked");
+    EXPECT_FALSE(linked.valid);
+    EXPECT_EQ(
+        linked.reason,
+        "dynamic shader linkage (BindInterfaces) is not supported: GLSL has no interfaces to bind at run "
+        "time");
     const runtime::TechniqueValidation missing = effect->validateTechnique("Missing");
     EXPECT_FALSE(missing.valid);
     EXPECT_EQ(missing.reason, "the effect has no technique 'Missing'");

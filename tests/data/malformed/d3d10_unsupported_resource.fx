@@ -1,3 +1,2 @@
-// A read-write structured buffer: FX11 binds unordered access views from the application, never a pass.
-struct Particle { float3 Position; float Age; };
-RWStructuredBuffer<Particle> Particles;
+// A read-write 3D texture: nothing in an effect sizes its texture, so shadowfx runs none.
+RWTexture3D<float4> Volume;
