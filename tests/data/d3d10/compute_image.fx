@@ -36,7 +36,7 @@ technique11 Image < string Script = "Pass=Fill; Pass=Show;"; >
 {
     pass Fill < string Script = "Dispatch=4,2;"; >
     {
-        SetComputeShader(CompileShader(cs_5_0, Fill()));
+        ComputeShader = compile cs_5_0 Fill();  // the D3D9 form of the same state
     }
     pass Show < string Script = "RenderColorTarget0=; Draw=Buffer;"; >
     {

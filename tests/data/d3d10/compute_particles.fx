@@ -32,6 +32,9 @@ void Advance(uint3 id : SV_DispatchThreadID)
     ParticleState[id.x] = p;
 }
 
+// A shader variable, as FX11 effects often hold their compute shaders.
+ComputeShader AdvanceCS = CompileShader(cs_5_0, Advance());
+
 struct QuadVertex { float4 Position : POSITION; float2 UV : TEXCOORD0; };
 struct QuadOut { float4 Position : SV_Position; float2 Clip : TEXCOORD0; };
 
@@ -62,7 +65,7 @@ technique11 Particles < string Script = "Pass=Advance; Pass=Draw;"; >
 {
     pass Advance < string Script = "Dispatch=GroupCount,1,1;"; >
     {
-        SetComputeShader(CompileShader(cs_5_0, Advance()));
+        SetComputeShader(AdvanceCS);
     }
     pass Draw < string Script = "RenderColorTarget0=; Draw=Buffer;"; >
     {
