@@ -128,7 +128,7 @@ static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
 static_assert(sizeof(CompiledPass) == 2120);
 static_assert(sizeof(CompiledTechnique) == 184);
-static_assert(sizeof(TextureDesc) == 1872);
+static_assert(sizeof(TextureDesc) == 2296);
 static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(ParameterInfo) == 360);
