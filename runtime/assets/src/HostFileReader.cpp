@@ -408,7 +408,7 @@ std::shared_ptr<const HostFile> parseHostJson(const std::string& text, const std
         std::string message = e.what();
         if (auto dash = message.find(" - "); dash != std::string::npos) message = message.substr(dash + 3);
         diagnostics.report(fx::DiagId::SceneSyntaxError,
-                           JsonLocations::locationOf(path, text, e.byte > 0 ? e.byte - 1 : 0), {message});
+                           JsonLocations::syntaxErrorLocation(path, text, e.byte), {message});
         return nullptr;
     } catch (const std::exception& e) {
         diagnostics.report(fx::DiagId::SceneSyntaxError, fx::SourceLoc{path, 0, 0}, {e.what()});

@@ -1,6 +1,8 @@
 // JsonLocations: see JsonLocations.h.
 #include "JsonLocations.h"
 
+#include <cctype>
+
 #include <algorithm>
 #include <string_view>
 
@@ -29,6 +31,25 @@ fx::SourceLoc JsonLocations::locationOf(const std::string& path, const std::stri
         }
     }
     return loc;
+}
+
+fx::SourceLoc JsonLocations::syntaxErrorLocation(const std::string& path, const std::string& text,
+                                                 size_t byte) {
+    const size_t last = byte > 0 ? byte - 1 : 0;
+    size_t start = last;
+    if (last < text.size() && text[last] == '"') {
+        for (size_t i = last; i-- > 0;)
+            if (text[i] == '"' && (i == 0 || text[i - 1] != '\\')) {
+                start = i;
+                break;
+            }
+    } else if (last < text.size()) {
+        auto inLiteral = [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
+        };
+        while (start > 0 && inLiteral(text[last]) && inLiteral(text[start - 1])) --start;
+    }
+    return locationOf(path, text, start);
 }
 
 void JsonLocations::skipSpace() {

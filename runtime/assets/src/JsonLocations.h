@@ -21,6 +21,10 @@ public:
     fx::SourceLoc at(const std::string& pointer) const;
     // Line and column of a byte offset (1-based).
     static fx::SourceLoc locationOf(const std::string& path, const std::string& text, size_t offset);
+    // Where a reader looks for a syntax error nlohmann reports at `byte` (json::parse_error::byte, one past
+    // the offending character): the start of the offending token ("name" in {"a": 1 "name": 2}, not its
+    // closing quote).
+    static fx::SourceLoc syntaxErrorLocation(const std::string& path, const std::string& text, size_t byte);
 
 private:
     // Values nested deeper than any file this reads are skipped whole, so that a hostile file cannot

@@ -7,6 +7,8 @@
 #include <runtime/BuiltinScenes.h>
 #include <runtime/SceneFile.h>
 
+#include "JsonLocations.h"
+
 #include <runtime/MeshImporter.h>
 
 #include <nlohmann/json.hpp>
@@ -479,38 +481,6 @@ std::optional<Scene> SceneFileReader::read(const json& root) {
     return scene;
 }
 
-// 1-based line and column of byte `offset` in `text` (nlohmann reports byte positions).
-fx::SourceLoc locationOf(const std::string& path, const std::string& text, size_t offset) {
-    fx::SourceLoc loc{path, 1, 1};
-    offset = std::min(offset, text.size());
-    for (size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++loc.line;
-            loc.column = 1;
-        } else {
-            ++loc.column;
-        }
-    }
-    return loc;
-}
-
-// nlohmann's offset is the last character of the offending token: back up to where the token starts, which
-// is where a reader looks ("name" in {"a": 1 "name": 2}, not its closing quote).
-size_t tokenStart(const std::string& text, size_t last) {
-    if (last >= text.size()) return last;
-    if (text[last] == '"') {
-        for (size_t i = last; i-- > 0;)
-            if (text[i] == '"' && (i == 0 || text[i - 1] != '\\')) return i;
-        return last;
-    }
-    auto inLiteral = [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
-    };
-    size_t start = last;
-    while (start > 0 && inLiteral(text[last]) && inLiteral(text[start - 1])) --start;
-    return start;
-}
-
 }  // namespace
 
 // [SECTION] Entry points
@@ -520,12 +490,12 @@ std::optional<Scene> parseSceneJson(const std::string& text, const std::string& 
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
-        // nlohmann's byte is one past the offending character; its message repeats the position as
-        // "syntax error while parsing ... - " which the line:column already says: keep the part after it.
+        // nlohmann's message repeats the position as "syntax error while parsing ... - ", which the
+        // line:column already says: keep the part after it.
         std::string message = e.what();
         if (auto dash = message.find(" - "); dash != std::string::npos) message = message.substr(dash + 3);
         diagnostics.report(fx::DiagId::SceneSyntaxError,
-                           locationOf(path, text, tokenStart(text, e.byte > 0 ? e.byte - 1 : 0)), {message});
+                           JsonLocations::syntaxErrorLocation(path, text, e.byte), {message});
         return std::nullopt;
     } catch (const std::exception& e) {
         diagnostics.report(fx::DiagId::SceneSyntaxError, fx::SourceLoc{path, 0, 0}, {e.what()});
