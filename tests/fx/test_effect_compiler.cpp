@@ -322,12 +322,25 @@ technique t { pass p {
 }
 
 TEST(EffectCompiler, UnsupportedProfile) {
+    // D3DX's texture-shader profile names no stage a pass runs.
+    DiagnosticList diags;
+    std::string src =
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile tx_1_0 PS(); } }\n";
+    EXPECT_FALSE(compile(src, diags));
+    ASSERT_FALSE(diags.items().empty());
+    EXPECT_EQ(diags.items().back().id, DiagId::UnsupportedProfile) << diags.str();
+}
+
+TEST(EffectCompiler, AnotherStagesProfileIsNamed) {
     DiagnosticList diags;
     std::string src =
         "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile cs_5_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
-    EXPECT_EQ(diags.items().back().id, DiagId::UnsupportedProfile) << diags.str();
+    EXPECT_EQ(diags.items().back().id, DiagId::InvalidCompileExpression) << diags.str();
+    EXPECT_NE(diags.str().find("'cs_5_0' is a compute-shader profile, used for the pixel shader"),
+              std::string::npos)
+        << diags.str();
 }
 
 TEST(EffectCompiler, HlslErrorAtUserLineAndColumn) {

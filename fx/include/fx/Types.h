@@ -31,7 +31,7 @@ enum class BaseType {
     Buffer,             // Buffer<T>: typed elements (a GL buffer texture)
     StructuredBuffer,   // StructuredBuffer<T>: a GL shader storage block of T
     ByteAddressBuffer,  // raw 32-bit words: a GL shader storage block of uint
-    // D3D11's read-write forms, written by compute shaders (docs/d3d10.md, "Compute"): storage blocks...
+    // D3D11's read-write forms (docs/d3d10.md, "Compute shaders and read-write resources"): storage blocks...
     RWStructuredBuffer,
     RWByteAddressBuffer,
     AppendStructuredBuffer,   // a storage block of T and a counter the shader increments
