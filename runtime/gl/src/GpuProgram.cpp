@@ -301,24 +301,30 @@ void GpuProgram::bindResourceSlots(const fx::CompiledPass& pass, const fx::Stage
     }
 }
 
-std::vector<size_t> GpuProgram::imageParameters(const fx::CompiledPass& pass) {
+namespace {
+
+// The parameters behind one kind of binding across a pass's stages, ascending and once each: the order
+// that numbers their binding points.
+template <class Binding>
+std::vector<size_t> boundParameters(const fx::CompiledPass& pass,
+                                    std::vector<Binding> fx::StageProgram::*list) {
     std::vector<size_t> parameters;
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
-        for (const fx::ImageBinding& image : stage->images) parameters.push_back(image.parameter);
+        for (const Binding& binding : stage->*list) parameters.push_back(binding.parameter);
     std::sort(parameters.begin(), parameters.end());
     parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
     return parameters;
 }
 
+}  // namespace
+
+std::vector<size_t> GpuProgram::imageParameters(const fx::CompiledPass& pass) {
+    return boundParameters(pass, &fx::StageProgram::images);
+}
+
 std::vector<size_t> GpuProgram::storageBufferParameters(const fx::CompiledPass& pass) {
-    std::vector<size_t> parameters;
-    for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
-        for (const fx::StorageBufferBinding& b : stage->storageBuffers) parameters.push_back(b.parameter);
-    std::sort(parameters.begin(), parameters.end());
-    parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
-    return parameters;
+    return boundParameters(pass, &fx::StageProgram::storageBuffers);
 }
 
 bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {
