@@ -404,11 +404,7 @@ std::shared_ptr<const HostFile> parseHostJson(const std::string& text, const std
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
-        // nlohmann's message repeats the position the location already gives: keep what follows it.
-        std::string message = e.what();
-        if (auto dash = message.find(" - "); dash != std::string::npos) message = message.substr(dash + 3);
-        diagnostics.report(fx::DiagId::SceneSyntaxError,
-                           JsonLocations::syntaxErrorLocation(path, text, e.byte), {message});
+        JsonLocations::reportSyntaxError(path, text, e.byte, e.what(), diagnostics);
         return nullptr;
     } catch (const std::exception& e) {
         diagnostics.report(fx::DiagId::SceneSyntaxError, fx::SourceLoc{path, 0, 0}, {e.what()});

@@ -52,6 +52,13 @@ fx::SourceLoc JsonLocations::syntaxErrorLocation(const std::string& path, const 
     return locationOf(path, text, start);
 }
 
+void JsonLocations::reportSyntaxError(const std::string& path, const std::string& text, size_t byte,
+                                      const std::string& what, fx::DiagnosticSink& diagnostics) {
+    std::string message = what;
+    if (auto dash = message.find(" - "); dash != std::string::npos) message = message.substr(dash + 3);
+    diagnostics.report(fx::DiagId::SceneSyntaxError, syntaxErrorLocation(path, text, byte), {message});
+}
+
 void JsonLocations::skipSpace() {
     while (mAt < mText.size() &&
            (mText[mAt] == ' ' || mText[mAt] == '\t' || mText[mAt] == '\r' || mText[mAt] == '\n')) {

@@ -3,6 +3,7 @@
 // itself. nlohmann's values carry no positions; this scans the text once more, which is valid JSON by then.
 #pragma once
 
+#include <fx/Diagnostics.h>
 #include <fx/SourceLoc.h>
 
 #include <cstddef>
@@ -25,6 +26,10 @@ public:
     // the offending character): the start of the offending token ("name" in {"a": 1 "name": 2}, not its
     // closing quote).
     static fx::SourceLoc syntaxErrorLocation(const std::string& path, const std::string& text, size_t byte);
+    // SceneSyntaxError at syntaxErrorLocation() with nlohmann's message (json::parse_error::what()) less the
+    // position it repeats ("syntax error while parsing ... - ").
+    static void reportSyntaxError(const std::string& path, const std::string& text, size_t byte,
+                                  const std::string& what, fx::DiagnosticSink& diagnostics);
 
 private:
     // Values nested deeper than any file this reads are skipped whole, so that a hostile file cannot

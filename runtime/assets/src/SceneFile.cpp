@@ -490,12 +490,7 @@ std::optional<Scene> parseSceneJson(const std::string& text, const std::string& 
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
-        // nlohmann's message repeats the position as "syntax error while parsing ... - ", which the
-        // line:column already says: keep the part after it.
-        std::string message = e.what();
-        if (auto dash = message.find(" - "); dash != std::string::npos) message = message.substr(dash + 3);
-        diagnostics.report(fx::DiagId::SceneSyntaxError,
-                           JsonLocations::syntaxErrorLocation(path, text, e.byte), {message});
+        JsonLocations::reportSyntaxError(path, text, e.byte, e.what(), diagnostics);
         return std::nullopt;
     } catch (const std::exception& e) {
         diagnostics.report(fx::DiagId::SceneSyntaxError, fx::SourceLoc{path, 0, 0}, {e.what()});
