@@ -45,7 +45,7 @@ std::set<size_t> parametersRead(const fx::CompiledTechnique& technique) {
     std::set<size_t> read;
     for (const fx::CompiledPass& pass : technique.passes) {
         for (const fx::StageProgram* stage :
-             {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain})
+             {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain, &pass.compute})
             for (const fx::UniformBinding& uniform : stage->uniforms)
                 if (uniform.active && uniform.source == fx::UniformBinding::Source::Parameter)
                     read.insert(uniform.index);

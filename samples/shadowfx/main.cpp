@@ -177,7 +177,7 @@ int compileCommand(const Arguments& args) {
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         for (const fx::CompiledPass& pass : technique.passes) {
             for (const fx::StageProgram* stage :
-                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment}) {
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute}) {
                 if (stage->entryPoint.empty()) continue;
                 std::cout << "// technique " << technique.name << ", pass " << pass.name << ", "
                           << fx::shaderStageName(stage->stage) << " shader " << stage->entryPoint << " ("

@@ -88,6 +88,11 @@ TEST(Cli, CompilePrintsGlslForEveryPass) {
     EXPECT_NE(result.output.find("pass RenderShadowMap, vertex shader RenderShadowMapVS"), std::string::npos);
     EXPECT_NE(result.output.find("pass RenderScene, pixel shader RenderScenePS"), std::string::npos);
     EXPECT_NE(result.output.find("#version 450"), std::string::npos);
+    // A compute pass's one stage too.
+    const RunResult compute = run("compile tests/data/d3d10/compute_particles.fx");
+    ASSERT_EQ(compute.exitCode, 0) << compute.output;
+    EXPECT_NE(compute.output.find("pass Advance, compute shader"), std::string::npos) << compute.output;
+    EXPECT_NE(compute.output.find("local_size_x"), std::string::npos) << compute.output;
 }
 
 // glslang crashes on the pixel shader: every command that compiles reports it where the function is and
