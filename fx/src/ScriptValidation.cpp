@@ -4,6 +4,7 @@
 #include "Compiler.h"
 #include "CaseFolding.h"
 
+#include <fx/DispatchTerms.h>
 #include <fx/LiteralNumbers.h>
 
 #include <cmath>
@@ -115,22 +116,15 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             case ScriptCommand::Kind::Dispatch: {
                 // Up to three group counts, each a parameter's name or a whole number; the runtime reads
                 // parameters' values per frame.
-                size_t counts = 0;
+                const std::vector<std::string> terms = dispatchTerms(c.value);
                 bool valid = true;
-                for (size_t from = 0; valid && from <= c.value.size();) {
-                    size_t comma = c.value.find(',', from);
-                    if (comma == std::string::npos) comma = c.value.size();
-                    std::string term = c.value.substr(from, comma - from);
-                    term.erase(0, term.find_first_not_of(" \t"));
-                    term.erase(term.find_last_not_of(" \t") + 1);
-                    from = comma + 1;
-                    ++counts;
+                for (const std::string& term : terms) {
                     if (mIndex.count(term)) continue;
                     const std::optional<std::vector<float>> number = parseLiteralNumbers(term);
-                    valid = number && number->size() == 1 && number->front() >= 0 &&
+                    valid = valid && number && number->size() == 1 && number->front() >= 0 &&
                             std::floor(number->front()) == number->front();
                 }
-                if (!valid || counts > 3)
+                if (!valid || terms.size() > 3)
                     error(DiagId::InvalidScriptCommand, c.loc,
                           {"Dispatch",
                            "expected 1 to 3 thread-group counts, each a whole number or a parameter, "

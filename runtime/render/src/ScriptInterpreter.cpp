@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include <fx/DispatchTerms.h>
 #include <fx/LiteralNumbers.h>
 #include <private/runtime/NameLookups.h>
 #include <fx/RenderStates.h>
@@ -59,13 +60,10 @@ ScriptOperands::ScriptOperands(const fx::CompiledEffect& effect,
                 operand.lightSlot = lightSlot(command.value);
             // Dispatch=x,y,z: a term names a parameter or is a count (-1 where it is neither; the
             // compiler reported it).
-            for (size_t from = 0; command.kind == Command::Kind::Dispatch && from <= command.value.size();) {
-                size_t comma = command.value.find(',', from);
-                if (comma == std::string::npos) comma = command.value.size();
-                std::string term = command.value.substr(from, comma - from);
-                term.erase(0, term.find_first_not_of(" \t"));
-                term.erase(term.find_last_not_of(" \t") + 1);
-                from = comma + 1;
+            const std::vector<std::string> terms = command.kind == Command::Kind::Dispatch
+                                                       ? fx::dispatchTerms(command.value)
+                                                       : std::vector<std::string>{};
+            for (const std::string& term : terms) {
                 const std::optional<size_t> index = findParameter(term);
                 const std::optional<std::vector<float>> number = fx::parseLiteralNumbers(term);
                 operand.dispatchParameters.push_back(index ? static_cast<int>(*index) : -1);
