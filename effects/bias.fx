@@ -21,6 +21,11 @@
 //                 screen derivatives of its map position and depth, gives its depth at the centre of the
 //                 texel it reads, which is where the map's rasterizer sampled the occluder; the test
 //                 compares that depth, less PlaneBias, with the stored one.
+//   adaptive      adaptive depth bias (Dou et al. 2014): the same depth at the texel centre, from the
+//                 receiver's tangent plane (its normal) met by the ray through the centre, not from screen
+//                 derivatives; the receiver's own depth where the plane lies behind it there (the bias is
+//                 never negative); less an epsilon of AdaptiveEpsilon (light depth, which spans the scene's
+//                 bounds along the light: a constant scaled by the scene) times min(1 / cos² θ, 100).
 //
 // Measurement hooks: SHADOWFX_SHADOW_MAP_SIZE and SHADOWFX_VISIBILITY (include/shadow_scene.fxh).
 // Conformance annotations (read by `shadowfx check` and tests/effects/test_depth_layer_effects.cpp, in every
@@ -81,6 +86,17 @@ float PlaneBias
     float UIMax = 0.01;
     float UIStep = 0.0001;
 > = 0.002;
+
+// What remains of the adaptive bias beyond the tangent plane (Dou et al. 2014, eq. 3): the rounding of the
+// plane's intersection and of the stored depth, and the curved receiver's departure from its tangent plane.
+float AdaptiveEpsilon
+<
+    string UIWidget = "slider";
+    string UIName = "Adaptive bias epsilon (light depth)";
+    float UIMin = 0.0;
+    float UIMax = 0.001;
+    float UIStep = 0.00001;
+> = 0.0001;
 
 // [SECTION] Shadow maps
 texture ShadowMap : RENDERCOLORTARGET
@@ -184,6 +200,21 @@ float4 ReceiverPlanePS(ReceiverVertexOutput IN) : COLOR
     float2 centre = floor(texel) + 0.5;
     float planeDepth = depth + dot(ReceiverPlaneDepthPerTexel(texel, depth), centre - texel);
     return ReceiverColor(IN, ShadowTest(ShadowMapSampler, centre / SHADOW_MAP_SIZE, planeDepth - PlaneBias));
+}
+
+// Adaptive depth bias (Dou et al. 2014, §3): the receiver's tangent plane met by the ray through the centre
+// of the texel it reads (TangentPlaneDepth), at most the receiver's own depth, less the epsilon that grows
+// with the slope as 1 / cos² θ, capped at 100 (eq. 3; θ between normal and light).
+float4 AdaptivePS(ReceiverVertexOutput IN) : COLOR
+{
+    float2 centre = (floor(ShadowMapUV(IN.LP) * SHADOW_MAP_SIZE) + 0.5) / SHADOW_MAP_SIZE;
+    float3 N = normalize(IN.WNormal);
+    float planeDepth = TangentPlaneDepth(LightViewProjectionMatrix, IN.LP, N, float2(2.0, -2.0) * centre +
+                                                                               float2(-1.0, 1.0));
+    float cosTheta = dot(N, normalize(IN.LightVec));
+    float epsilon = AdaptiveEpsilon * min(1.0 / max(cosTheta * cosTheta, 1e-6), 100.0);
+    float depth = min(planeDepth, ReceiverDepth(IN)) - epsilon;
+    return ReceiverColor(IN, ShadowTest(ShadowMapSampler, centre, depth));
 }
 
 // [SECTION] Passes
@@ -364,4 +395,21 @@ technique receiver_plane
     CLEAR_MAP_PASS
     MIN_BLEND_MAP_PASS(DepthPS)
     SCENE_PASS(ReceiverPlanePS)
+}
+
+technique adaptive
+<
+    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
+    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string Script = "Pass=ClearShadowMap;"
+                    "Pass=RenderShadowMap;"
+                    "Pass=RenderScene;";
+    string ExpectScenes = "dual-l,double-torus";
+    float ExpectMisclassifiedBelow = 0.43;  // measured 0.076 % dual-l, 0.227 % double-torus
+    int ExpectMapSize = 256;   // heavily undersampled, as in Weiskopf & Ertl 2003, Fig. 5-6
+>
+{
+    CLEAR_MAP_PASS
+    MIN_BLEND_MAP_PASS(DepthPS)
+    SCENE_PASS(AdaptivePS)
 }

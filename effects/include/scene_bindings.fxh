@@ -21,6 +21,9 @@ float4x4 LightViewMatrix : View
 <string frustum = "light0"; string Parameterization = LIGHT_PARAMETERIZATION; string UIWidget = "None";>;
 float4x4 LightProjectionMatrix : Projection
 <string frustum = "light0"; string Parameterization = LIGHT_PARAMETERIZATION; string UIWidget = "None";>;
+// Their product (world to light clip space), for the adaptive bias's tangent-plane depths (shadowmap.fxh).
+float4x4 LightViewProjectionMatrix : ViewProjection
+<string frustum = "light0"; string Parameterization = LIGHT_PARAMETERIZATION; string UIWidget = "None";>;
 float3 LightColor : LightColor <string Object = "light0"; string UIWidget = "none";> = {1.0, 1.0, 1.0};
 float3 AmbientLightColor : Ambient <string UIWidget = "color";> = {0.15, 0.15, 0.15};
 float3 SurfaceColor : Diffuse <string UIWidget = "none";> = {0.8, 0.8, 0.8};

@@ -35,6 +35,74 @@ float2 ReceiverPlaneDepthPerTexel(float2 texel, float depth)
     return DepthPerTexel(ddx(texel), ddy(texel), float2(ddx(depth), ddy(depth)));
 }
 
+// Adaptive depth bias (Dou et al. 2014, §3): the light depth z/w at which the ray through the map position
+// `centre` (light NDC x, y: a texel's centre, where the map's rasterizer sampled the occluder) meets the
+// receiver's tangent plane, the plane through the receiver (light clip position `clip`) with world normal
+// `normal`. `toLightClip` maps world space to light clip space (row vectors). The ray is where the planes
+// clip.x = centre.x clip.w and clip.y = centre.y clip.w of world space meet; the hit is the receiver moved
+// by the world offset that Cramer's rule gives for the three planes, so orthographic and perspective lights
+// alike are exact, and no world position is needed. A tangent plane that contains the ray (the light exactly
+// edge-on) has no hit: the receiver's own depth.
+float TangentPlaneDepth(float4x4 toLightClip, float4 clip, float3 normal, float2 centre)
+{
+    float3 w = float3(toLightClip._14, toLightClip._24, toLightClip._34);
+    float3 planeX = float3(toLightClip._11, toLightClip._21, toLightClip._31) - centre.x * w;
+    float3 planeY = float3(toLightClip._12, toLightClip._22, toLightClip._32) - centre.y * w;
+    float offX = clip.x - centre.x * clip.w;
+    float offY = clip.y - centre.y * clip.w;
+    float3 ray = cross(planeX, planeY);
+    float determinant = dot(normal, ray);
+    if (abs(determinant) <= 1e-7 * length(normal) * length(ray))
+        return clip.z / clip.w;
+    float3 offset = -(offX * cross(planeY, normal) + offY * cross(normal, planeX)) / determinant;
+    float4 hit = clip + mul(float4(offset, 0.0), toLightClip);
+    return hit.z / hit.w;
+}
+
+// Bilinear PCF under the adaptive bias: the 2x2 taps around the receiver (light clip position `clip`) in a
+// map, or an atlas tile, `tileSize` texels wide whose light clip space `toLightClip` maps to. Each tap is
+// compared at the receiver's tangent plane at its own texel centre (TangentPlaneDepth), or at the
+// receiver's own depth where that is nearer the light (the plane never moves a receiver away from it), less
+// `epsilon`. The taps stay inside the tile.
+struct TangentPlaneTaps
+{
+    float2 first;   // tile texel coordinates of tap 00's centre; taps 10, 01, 11 lie one texel right, down
+    float2 weight;  // the bilinear weights of taps 10 and 11 (x), 01 and 11 (y)
+    float4 depths;  // the compared depths of taps 00, 10, 01, 11
+};
+
+TangentPlaneTaps TangentPlaneBilinearTaps(float4x4 toLightClip, float4 clip, float3 normal, float2 tileSize,
+                                          float epsilon)
+{
+    TangentPlaneTaps taps;
+    float2 position = ShadowMapUV(clip) * tileSize - 0.5;
+    float2 first = clamp(floor(position), 0.0, tileSize - 2.0);
+    taps.first = first + 0.5;
+    taps.weight = saturate(position - first);
+    // Tile texels -> light NDC (v down, y up).
+    float2 ndc = float2(2.0, -2.0) * taps.first / tileSize + float2(-1.0, 1.0);
+    float2 step = float2(2.0, -2.0) / tileSize;
+    taps.depths = float4(TangentPlaneDepth(toLightClip, clip, normal, ndc),
+                         TangentPlaneDepth(toLightClip, clip, normal, ndc + float2(step.x, 0.0)),
+                         TangentPlaneDepth(toLightClip, clip, normal, ndc + float2(0.0, step.y)),
+                         TangentPlaneDepth(toLightClip, clip, normal, ndc + step));
+    taps.depths = min(taps.depths, clip.z / clip.w) - epsilon;
+    return taps;
+}
+
+// The taps' bilinear PCF in the texture whose region `rect` (offset xy, size zw, in texture coordinates)
+// holds the tile.
+float ShadowTestTaps(sampler2D shadowMap, float4 rect, float2 tileSize, TangentPlaneTaps taps)
+{
+    float2 scale = rect.zw / tileSize;
+    float2 uv = rect.xy + taps.first * scale;
+    float s00 = ShadowTest(shadowMap, uv, taps.depths.x);
+    float s10 = ShadowTest(shadowMap, uv + float2(scale.x, 0.0), taps.depths.y);
+    float s01 = ShadowTest(shadowMap, uv + float2(0.0, scale.y), taps.depths.z);
+    float s11 = ShadowTest(shadowMap, uv + scale, taps.depths.w);
+    return lerp(lerp(s00, s10, taps.weight.x), lerp(s01, s11, taps.weight.x), taps.weight.y);
+}
+
 // Bilinear percentage-closer filtering (Lehőcz 2007, "Percentage closer filtering"): the four nearest texels
 // are compared with `depth` and the results are weighted by the fractional texel position of `uv`.
 float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 mapSize)
@@ -50,7 +118,7 @@ float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 map
     return lerp(lerp(s00, s10, weight.x), lerp(s01, s11, weight.x), weight.y);
 }
 
-// The same two tests in Direct3D 10's form: the map a Texture2D read through a (point) SamplerState.
+// The same tests in Direct3D 10's form: the map a Texture2D read through a (point) SamplerState.
 float ShadowTest(Texture2D shadowMap, SamplerState pointSampler, float2 uv, float depth)
 {
     return shadowMap.Sample(pointSampler, uv).x >= depth ? 1.0 : 0.0;
@@ -67,6 +135,18 @@ float ShadowTestBilinear(Texture2D shadowMap, SamplerState pointSampler, float2 
     float s01 = ShadowTest(shadowMap, pointSampler, base + float2(0, step.y), depth);
     float s11 = ShadowTest(shadowMap, pointSampler, base + step, depth);
     return lerp(lerp(s00, s10, weight.x), lerp(s01, s11, weight.x), weight.y);
+}
+
+float ShadowTestTaps(Texture2D shadowMap, SamplerState pointSampler, float4 rect, float2 tileSize,
+                     TangentPlaneTaps taps)
+{
+    float2 scale = rect.zw / tileSize;
+    float2 uv = rect.xy + taps.first * scale;
+    float s00 = ShadowTest(shadowMap, pointSampler, uv, taps.depths.x);
+    float s10 = ShadowTest(shadowMap, pointSampler, uv + float2(scale.x, 0.0), taps.depths.y);
+    float s01 = ShadowTest(shadowMap, pointSampler, uv + float2(0.0, scale.y), taps.depths.z);
+    float s11 = ShadowTest(shadowMap, pointSampler, uv + scale, taps.depths.w);
+    return lerp(lerp(s00, s10, taps.weight.x), lerp(s01, s11, taps.weight.x), taps.weight.y);
 }
 
 #endif
