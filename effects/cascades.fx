@@ -62,7 +62,7 @@ bool FitVisible : LightFitVisibleSamples
     string UIName = "Fit to the visible samples";
 > = false;
 
-// Depth bias in texels of the receiver's cascade (lightspace.fxh's BiasedDepth, per cascade).
+// Depth bias in texels of the receiver's cascade, beyond its tangent plane (CascadeTaps).
 float Bias
 <
     string UIWidget = "slider";
@@ -71,14 +71,6 @@ float Bias
     float UIMax = 4.0;
     float UIStep = 0.05;
 > = 2.0;
-
-float SlopeBias
-<
-    string UIWidget = "slider";
-    string UIName = "Receiver-plane bias (texels)";
-    float UIMin = 0.0;
-    float UIMax = 4.0;
-> = 1.5;
 
 bool ShowCascades <string UIName = "Tint by cascade";> = false;
 
@@ -138,53 +130,36 @@ RasterizerState NoCulling { CullMode = NONE; };
 DepthStencilState DepthLessEqual { DepthEnable = TRUE; DepthWriteMask = ALL; DepthFunc = LESS_EQUAL; };
 
 // [SECTION] Shaders
-// Where cascade k's bilinear PCF looks for a receiver at world position `world`, whose screen derivatives
-// are dWorldX, dWorldY (taken once, outside any selection, so they are defined for every cascade): the
-// atlas position (xy) and the compared depth (z).
-// The bias is lightspace.fxh's BiasedDepth with cascade k's texels: Bias texels of world size plus
-// SlopeBias times the receiver plane's depth change across one texel. Cascades are orthographic (w = 1);
-// the projective form also serves spot lights, whose every cascade is the light's perspective map.
-float3 CascadeLookup(int k, float3 world, float3 dWorldX, float3 dWorldY)
+// Cascade k's bilinear PCF taps inside its tile for a receiver at world position `world` with world normal
+// `normal`, under the adaptive depth bias (Dou et al. 2014; shadowmap.fxh's TangentPlaneBilinearTaps): each
+// tap compares the receiver's tangent plane at its texel centre, less Bias texels of the cascade's world
+// size. The plane follows any slope, where the screen derivatives' receiver plane had to be capped against
+// silhouettes and left a 0.5 degree sun's acne on the ground (stress `grazing`: 1.3 %). Cascades are
+// orthographic (w = 1); the projective form also serves spot lights, whose every cascade is the light's
+// perspective map.
+TangentPlaneTaps CascadeTaps(int k, float3 world, float3 normal)
 {
     float4x4 M = CascadeMatrices[k];
-    float4 rect = CascadeRects[k];
-    float2 tileSize = AtlasSize * rect.zw;
+    float2 tileSize = AtlasSize * CascadeRects[k].zw;
     float4 clip = mul(float4(world, 1.0), M);
-    float3 ndc = clip.xyz / clip.w;
-    float4 clipX = mul(float4(dWorldX, 0.0), M);
-    float4 clipY = mul(float4(dWorldY, 0.0), M);
-    // d ndc = (d clip - ndc d w) / w
-    float3 ndcX = (clipX.xyz - ndc * clipX.w) / clip.w;
-    float3 ndcY = (clipY.xyz - ndc * clipY.w) / clip.w;
-    float2 uvX = float2(0.5, -0.5) * ndcX.xy * tileSize;
-    float2 uvY = float2(0.5, -0.5) * ndcY.xy * tileSize;
-    float2 perTexel = DepthPerTexel(uvX, uvY, float2(ndcX.z, ndcY.z));
-    // Capped at 0.1 of the cascade's depth range, not lightspace.fxh's 0.01 of B's: a cascade's range is a
-    // fraction of B's, and 0.01 of it left a 0.5 degree sun's acne on the ground (stress `grazing`: 33 %;
-    // 0.1: 1.3 %, at the price of a little light leaking on teapot: 0.045 -> 0.067 %).
-    float slopeBias = min(abs(perTexel.x) + abs(perTexel.y), 0.1);
     // One texel spans 2 w / (tileSize |P_11|) world units across the light; NDC depth changes |P_33| / w
     // per world unit along it (|row 1| and |column 3| of M's 3x3 are |P_11| and |P_33|: V is a rotation).
     float texelWorld = 2.0 * clip.w / (tileSize.x * length(float3(M._11, M._21, M._31)));
     float constantBias = Bias * texelWorld * length(float3(M._13, M._23, M._33)) / clip.w;
-    float depth = ndc.z - constantBias - SlopeBias * slopeBias;
-    // Bilinear PCF inside the tile: its four texels never reach into a neighbouring tile.
-    float2 local = ShadowMapUV(clip);
-    float2 uv = clamp(rect.xy + local * rect.zw, rect.xy + 1.0 / AtlasSize, rect.xy + rect.zw - 1.0 / AtlasSize);
-    return float3(uv, depth);
+    return TangentPlaneBilinearTaps(M, clip, normal, tileSize, constantBias);
 }
 
-float CascadeShadow(int k, float3 world, float3 dWorldX, float3 dWorldY)
+float CascadeShadow(int k, float3 world, float3 normal)
 {
-    float3 lookup = CascadeLookup(k, world, dWorldX, dWorldY);
-    return ShadowTestBilinear(ShadowAtlasSampler, lookup.xy, lookup.z, AtlasSize);
+    return ShadowTestTaps(ShadowAtlasSampler, CascadeRects[k], AtlasSize * CascadeRects[k].zw,
+                          CascadeTaps(k, world, normal));
 }
 
 // CascadeShadow in the D3D11 form: Texture2D.Sample through a SamplerState.
-float CascadeShadow11(int k, float3 world, float3 dWorldX, float3 dWorldY)
+float CascadeShadow11(int k, float3 world, float3 normal)
 {
-    float3 lookup = CascadeLookup(k, world, dWorldX, dWorldY);
-    return ShadowTestBilinear(ShadowAtlas, AtlasPoint, lookup.xy, lookup.z, AtlasSize);
+    return ShadowTestTaps(ShadowAtlas, AtlasPoint, CascadeRects[k], AtlasSize * CascadeRects[k].zw,
+                          CascadeTaps(k, world, normal));
 }
 
 // A receiver's cascade k: the first whose split lies beyond it (components past the last cascade repeat
@@ -232,24 +207,22 @@ float4 CascadeColor(SceneVertexOutput IN, int k, float shadow)
 float4 CascadePS(SceneVertexOutput IN, uniform bool blend) : COLOR
 {
     float3 world = IN.LP.xyz;
-    float3 dWorldX = ddx(world);
-    float3 dWorldY = ddy(world);
+    float3 normal = normalize(IN.WNormal);
     CascadeChoice choice = ChooseCascade(world, blend);
-    float shadow = CascadeShadow(choice.k, world, dWorldX, dWorldY);
+    float shadow = CascadeShadow(choice.k, world, normal);
     if (choice.nextWeight > 0.0)
-        shadow = lerp(shadow, CascadeShadow(choice.k + 1, world, dWorldX, dWorldY), choice.nextWeight);
+        shadow = lerp(shadow, CascadeShadow(choice.k + 1, world, normal), choice.nextWeight);
     return CascadeColor(IN, choice.k, shadow);
 }
 
 float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
 {
     float3 world = IN.LP.xyz;
-    float3 dWorldX = ddx(world);
-    float3 dWorldY = ddy(world);
+    float3 normal = normalize(IN.WNormal);
     CascadeChoice choice = ChooseCascade(world, blend);
-    float shadow = CascadeShadow11(choice.k, world, dWorldX, dWorldY);
+    float shadow = CascadeShadow11(choice.k, world, normal);
     if (choice.nextWeight > 0.0)
-        shadow = lerp(shadow, CascadeShadow11(choice.k + 1, world, dWorldX, dWorldY), choice.nextWeight);
+        shadow = lerp(shadow, CascadeShadow11(choice.k + 1, world, normal), choice.nextWeight);
     return CascadeColor(IN, choice.k, shadow);
 }
 
@@ -329,13 +302,9 @@ float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
 // Each receiver reads its own cascade; the next one takes over at the split.
 technique hard
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
-                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
-                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.049 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {
@@ -345,13 +314,9 @@ technique hard
 // The same, cross-faded over the last CascadeBlend share of each cascade's depth range.
 technique blended
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
-                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
-                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.067 % on teapot (hard truth)
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.049 % on teapot (hard truth)
     int ExpectMapSize = 1024;
 >
 {
@@ -361,9 +326,6 @@ technique blended
 // `blended` in the D3D11 form: the same image, the same expectations and known limitations.
 technique11 blended11
 <
-    string StressExpectedFailures = "grazing [ordinary]: a 0.5 degree sun, the capped receiver-plane bias "
-                                    "leaves acne on the ground (1.3 %, just over 3x the ordinary 0.084 % + 1 "
-                                    "point, focused.fx 17 %, the uniform map 42 %)";
     string Script = CASCADE_SCRIPT;
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;

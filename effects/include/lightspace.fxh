@@ -97,18 +97,22 @@ float ReceiverPlaneBias(SceneVertexOutput IN, float depth)
 }
 
 // The receiver's depth for the test, moved toward the light by
-// - Bias texels of world size: for a directional light every provider's clip w is independent of the
+// - Bias texels of world size (ConstantBias): for a directional light every provider's clip w is independent of the
 //   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so NDC depth changes by
 //   _33 / w per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units
 //   across it (TSM's x row also has a y term, the slant of the trapezoid's sides, which leaves the rate
 //   across x at _11 / w);
 // - the receiver-plane bias (ReceiverPlaneBias).
+float ConstantBias(SceneVertexOutput IN)
+{
+    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
+    return Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
+}
+
 float BiasedDepth(SceneVertexOutput IN)
 {
     float depth = IN.LP.z / IN.LP.w;
-    float texelWorld = 2.0 * IN.LP.w / (ShadowMapSize.x * abs(LightProjectionMatrix._11));
-    float constantBias = Bias * texelWorld * LightProjectionMatrix._33 / IN.LP.w;
-    return depth - constantBias - ReceiverPlaneBias(IN, depth);
+    return depth - ConstantBias(IN) - ReceiverPlaneBias(IN, depth);
 }
 
 float4 BilinearPS(SceneVertexOutput IN) : COLOR
@@ -116,6 +120,18 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
     float2 uv = ShadowMapUV(IN.LP);
     float depth = BiasedDepth(IN);
     return ShadeOrVisibility(IN, ShadowTestBilinear(ShadowMapSampler, uv, depth, ShadowMapSize));
+}
+
+// Bilinear PCF under the adaptive depth bias (Dou et al. 2014): each tap compares the receiver's tangent
+// plane, from its normal, at the tap's texel centre (TangentPlaneBilinearTaps), less Bias texels of world
+// size, in place of BiasedDepth's receiver-plane bias. The plane follows any slope, where the screen
+// derivatives' plane must be capped (LIGHTSPACE_RECEIVER_PLANE_CAP) against silhouettes: a 0.5 degree
+// sun's ground changes depth by over 100 texels' width per texel.
+float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
+{
+    TangentPlaneTaps taps = TangentPlaneBilinearTaps(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal),
+                                                     ShadowMapSize, ConstantBias(IN));
+    return ShadeOrVisibility(IN, ShadowTestTaps(ShadowMapSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps));
 }
 
 // [SECTION] Passes
