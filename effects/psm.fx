@@ -55,7 +55,8 @@ float4 PsmTangentPlanePS(SceneVertexOutput IN) : COLOR
     float constantBias = Bias * PsmTexelWorld(IN.LP) * LightProjectionMatrix._33 / IN.LP.w;
     TangentPlaneTaps taps = TangentPlaneBilinearTaps(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal),
                                                      ShadowMapSize, constantBias);
-    return ShadeOrVisibility(IN, ShadowTestTaps(ShadowMapSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps));
+    float shadow = ShadowTestTaps(ShadowMapSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps);
+    return ShadeOrVisibility(IN, shadow);
 }
 
 technique bilinear

@@ -129,7 +129,8 @@ float FaceShadow(int k, float3 world, float3 normal)
     // capped (at 25 texels' world size along the light), which left acne under a 0.5 degree sun (stress
     // `grazing`: 3.4 %; now 0.063 %) and false light where the near ground's texels stretch along a low
     // light in front of the viewer (`behind-ordinary`: 1.6 %; now 0.21 %).
-    TangentPlaneTaps taps = TangentPlaneBilinearTaps(M, clip, normal, tileSize, Bias * texelWorld * depthPerWorld);
+    TangentPlaneTaps taps =
+        TangentPlaneBilinearTaps(M, clip, normal, tileSize, Bias * texelWorld * depthPerWorld);
     return ShadowTestTaps(ShadowAtlasSampler, float4(tileOrigin, tileSize) / AtlasSize.xyxy, tileSize, taps);
 }
 

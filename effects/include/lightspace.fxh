@@ -97,11 +97,11 @@ float ReceiverPlaneBias(SceneVertexOutput IN, float depth)
 }
 
 // The receiver's depth for the test, moved toward the light by
-// - Bias texels of world size (ConstantBias): for a directional light every provider's clip w is independent of the
-//   light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so NDC depth changes by
-//   _33 / w per world unit along the light, and one texel spans 2 w / (ShadowMapSize _11) world units
-//   across it (TSM's x row also has a y term, the slant of the trapezoid's sides, which leaves the rate
-//   across x at _11 / w);
+// - Bias texels of world size (ConstantBias): for a directional light every provider's clip w is
+//   independent of the light-view depth z (1 for an orthographic fit, 1 + warp y for LiSPSM and TSM), so
+//   NDC depth changes by _33 / w per world unit along the light, and one texel spans
+//   2 w / (ShadowMapSize _11) world units across it (TSM's x row also has a y term, the slant of the
+//   trapezoid's sides, which leaves the rate across x at _11 / w);
 // - the receiver-plane bias (ReceiverPlaneBias).
 float ConstantBias(SceneVertexOutput IN)
 {
@@ -131,7 +131,8 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
 {
     TangentPlaneTaps taps = TangentPlaneBilinearTaps(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal),
                                                      ShadowMapSize, ConstantBias(IN));
-    return ShadeOrVisibility(IN, ShadowTestTaps(ShadowMapSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps));
+    float shadow = ShadowTestTaps(ShadowMapSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps);
+    return ShadeOrVisibility(IN, shadow);
 }
 
 // [SECTION] Passes
