@@ -310,6 +310,8 @@ void FrameExecutor::setParameter(const std::string& name, int parameter, const f
     }
     storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mResources.values,
                    mResources.stamps);
+    // A script's value of a `shared` parameter is the pool's, as an application's setter's is.
+    mResources.pool.published(mResources, static_cast<size_t>(parameter));
 }
 
 void FrameExecutor::fail(fx::DiagId id, const std::vector<std::string>& args) {
