@@ -71,7 +71,7 @@ private:
     // than the colour targets and the operation does not use it (`usesDepth`), with a warning for `pass`
     // when it does. False once the frame failed.
     bool drawTargets(bool usesDepth, const fx::CompiledPass* pass, RenderTargets& targets);
-    // Binds drawTargets() for a clear.
+    // Binds drawTargets() for a clear, or for the host scene a script draws (ScriptExternal=color).
     bool bindTargets(bool usesDepth);
     glm::ivec2 depthTargetSize() const;  // at its mip level; 0x0 without one
     bool depthTargetIsSmaller() const;
