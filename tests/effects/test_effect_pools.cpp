@@ -38,6 +38,22 @@ float4 PS() : SV_Target { return Tint; }
 technique main { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )";
 
+// Draws every object in red at Level 0 and in green at Level 2. The `looping` technique's script runs its
+// pass once per index of Count, LoopGetIndex setting Level to each: 2 after the frame.
+const char* const kLevelSource = R"(
+shared int Level = 0;
+int Count = 3;
+float4x4 WorldViewProjection : WorldViewProjection;
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { float level = Level; return float4(1 - level * 0.5, level * 0.5, 0, 1); }
+technique looping < string Script = "LoopByCount=Count; LoopGetIndex=Level; Pass=p; LoopEnd=;"; >
+{
+    pass p < string Script = "Draw=Geometry;"; >
+    { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+technique main { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
 std::unique_ptr<runtime::EffectRenderer> create(const char* source, const std::string& name,
                                                 std::shared_ptr<runtime::EffectPool> pool,
                                                 fx::DiagnosticList& diagnostics) {
@@ -49,10 +65,10 @@ std::unique_ptr<runtime::EffectRenderer> create(const char* source, const std::s
     return runtime::EffectRenderer::create(compiled, diagnostics, std::move(pool));
 }
 
-// Pixels of `renderer`'s frame of the boxes scene in (r, g, b).
-int pixelsOf(runtime::EffectRenderer& renderer, int r, int g, int b) {
+// Pixels of `renderer`'s frame of the boxes scene, drawn with `technique`, in (r, g, b).
+int pixelsOf(runtime::EffectRenderer& renderer, int r, int g, int b, const std::string& technique = "") {
     static const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
-    EXPECT_TRUE(shadowfx::test::render(renderer, scene, kWidth, kHeight));
+    EXPECT_TRUE(shadowfx::test::render(renderer, scene, kWidth, kHeight, technique));
     return countPixelsOfColour(renderer.readFrame(), kWidth, kHeight, r, g, b);
 }
 
@@ -87,6 +103,27 @@ TEST(EffectPools, SettingASharedParameterThroughOneEffectChangesWhatAnotherDraws
     white.data = {1.0f, 1.0f, 1.0f, 1.0f};
     second->setParameter(*second->findParameter("Tint"), white);
     EXPECT_EQ(pixelsOf(*first, 0, 0, 255), covered);
+}
+
+// A SAS script sets a shared parameter for the pool as a setter does: the loop index the first effect's
+// frame leaves in Level is the value the second effect draws with.
+TEST(EffectPools, AScriptsValueOfASharedParameterChangesWhatAnotherDraws) {
+    auto pool = std::make_shared<runtime::EffectPool>();
+    fx::DiagnosticList diagnostics;
+    std::unique_ptr<runtime::EffectRenderer> looping = create(kLevelSource, "looping.fx", pool, diagnostics);
+    std::unique_ptr<runtime::EffectRenderer> drawing = create(kLevelSource, "drawing.fx", pool, diagnostics);
+    ASSERT_TRUE(looping && drawing) << diagnostics.str();
+
+    const int covered = pixelsOf(*drawing, 255, 0, 0, "main");
+    ASSERT_GT(covered, kWidth * kHeight / 20);
+    EXPECT_EQ(pixelsOf(*drawing, 0, 255, 0, "main"), 0);
+
+    // The looping frame's last pass draws at Level 2.
+    EXPECT_GT(pixelsOf(*looping, 0, 255, 0, "looping"), 0);
+    ASSERT_NE(pool->find("Level"), nullptr);
+    EXPECT_EQ(pool->find("Level")->value.asInt(), 2);
+    EXPECT_EQ(pixelsOf(*drawing, 0, 255, 0, "main"), covered);
+    EXPECT_EQ(pixelsOf(*drawing, 255, 0, 0, "main"), 0);
 }
 
 TEST(EffectPools, AnEffectJoiningLaterTakesThePoolsValue) {

@@ -7,6 +7,7 @@
 #include <fx/CompiledEffectFile.h>
 #include <fx/EffectFile.h>
 #include <runtime/BuiltinScenes.h>
+#include <runtime/EffectPool.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/FileWatcher.h>
 #include <runtime/ReloadableEffect.h>
@@ -256,6 +257,44 @@ TEST_F(HotReload, TweakedParametersSurviveAReload) {
     const std::optional<size_t> retyped = effect.renderer()->findParameter("Gain");
     ASSERT_TRUE(retyped);
     EXPECT_FALSE(effect.renderer()->isPinned(*retyped));
+}
+
+// Two effects of one pool share Gain. A reload keeps the effect in the pool, with the pool's value of Gain
+// (set through the other effect since the last load) rather than its old renderer's; a broken edit, here a
+// Gain of another type than the pool's, keeps the last good renderer, still in the pool.
+TEST_F(HotReload, AReloadInAPoolStaysAMemberWithThePoolsValues) {
+    auto pool = std::make_shared<runtime::EffectPool>();
+    const std::string shared = replaced(kMainEffect, "float Gain", "shared float Gain");
+    std::ofstream(mDir / "main.fx") << shared;
+    std::ofstream(mDir / "other.fx") << shared;
+    runtime::ReloadableEffect effect((mDir / "main.fx").string(), {}, pool);
+    runtime::ReloadableEffect other((mDir / "other.fx").string(), {}, pool);
+    ASSERT_TRUE(effect.reload()) << effect.errorText();
+    ASSERT_TRUE(other.reload()) << other.errorText();
+    ASSERT_TRUE(other.renderer()->variable("Gain").setFloat(0.5f));
+    EXPECT_NEAR(centre(effect)[0], 128, 2);
+
+    ASSERT_TRUE(other.renderer()->variable("Gain").setFloat(0.25f));
+    saveLikeAnEditor(mDir / "main.fx", replaced(shared, "float4(0, 0, 0, 0)", "float4(0, 0, 1, 0)"));
+    ASSERT_EQ(effect.reloadIfChanged(5000ms), runtime::ReloadableEffect::Result::Reloaded)
+        << effect.errorText();
+    std::array<int, 3> pixel = centre(effect);
+    EXPECT_NEAR(pixel[0], 64, 2);
+    EXPECT_EQ(pixel[2], 255);  // the edit's blue: the new renderer draws
+    ASSERT_TRUE(other.renderer()->variable("Gain").setFloat(1.0f));
+    EXPECT_EQ(centre(effect), kMagenta);
+
+    runtime::EffectRenderer* good = effect.renderer();
+    saveLikeAnEditor(mDir / "main.fx", replaced(shared, "shared float Gain", "shared float3 Gain"));
+    ASSERT_EQ(effect.reloadIfChanged(5000ms), runtime::ReloadableEffect::Result::Failed);
+    EXPECT_EQ(effect.renderer(), good);
+    EXPECT_NE(effect.errorText().find("main.fx:2:"), std::string::npos) << effect.errorText();
+    EXPECT_NE(effect.errorText().find("'Gain' is a float3 here but a float"), std::string::npos)
+        << effect.errorText();
+    ASSERT_TRUE(other.renderer()->variable("Gain").setFloat(0.5f));
+    pixel = centre(effect);
+    EXPECT_NEAR(pixel[0], 128, 2);
+    EXPECT_EQ(pixel[2], 255);
 }
 
 TEST_F(HotReload, TwoHundredReloadCyclesLeaveTheLiveGlObjectCountUnchanged) {

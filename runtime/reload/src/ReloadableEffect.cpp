@@ -26,8 +26,9 @@ bool sameType(const fx::TypeDesc& a, const fx::TypeDesc& b) {
 
 }  // namespace
 
-ReloadableEffect::ReloadableEffect(std::string path, fx::ParseOptions parseOptions)
-    : mPath(std::move(path)), mParseOptions(std::move(parseOptions)) {
+ReloadableEffect::ReloadableEffect(std::string path, fx::ParseOptions parseOptions,
+                                   std::shared_ptr<EffectPool> pool)
+    : mPath(std::move(path)), mParseOptions(std::move(parseOptions)), mPool(std::move(pool)) {
     // Until a parse says which files the effect opens, watch the main file: a first load that fails
     // must still be retried when the user fixes it.
     mWatchedFiles = {mPath};
@@ -74,7 +75,7 @@ bool ReloadableEffect::reload() {
     std::unique_ptr<EffectRenderer> created;
     if (compiled && !mDiagnostics.hasErrors()) {
         start = Clock::now();
-        created = EffectRenderer::create(compiled, mDiagnostics);
+        created = EffectRenderer::create(compiled, mDiagnostics, mPool);
         mStats.createMs = millisecondsSince(start);
     }
     if (!created || mDiagnostics.hasErrors()) {
@@ -115,6 +116,8 @@ void ReloadableEffect::carryOverPinnedParameters(const EffectRenderer& from, Eff
         if (!from.isPinned(i)) continue;
         const std::optional<size_t> j = to.findParameter(oldParameters[i].name);
         if (!j || !sameType(oldParameters[i].type, newParameters[*j].type)) continue;
+        // The pool holds a shared value, newer than the old renderer's where another effect set it since.
+        if (mPool && newParameters[*j].isShared) continue;
         to.setParameter(*j, from.parameter(i));
     }
 }

@@ -13,14 +13,9 @@ bool bindComputePass(EffectResources& resources, size_t technique, size_t pass,
                      std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
     GpuProgram* program = resources.programs[technique][pass].get();
     if (!program || !program->isCompute()) return false;
-    const fx::CompiledPass& compiled = resources.effect().techniques[technique].passes[pass];
-    bindPassTextures(resources, compiled, RenderTargets{});
-    bindPassStorageBuffers(resources, compiled);
-    bindPassImages(resources, compiled);
-    program->bind();
-    resources.preshaders[technique][pass].arguments(resources.values, resources.stamps, nullptr, arguments,
-                                                    diagnostics);
-    program->upload(resources.values, arguments, *resources.uniformRing);
+    std::string unused;  // a compute pass binds no framebuffer, the one thing that can fail
+    bindPass(resources, technique, pass, PassBinding{}, diagnostics, unused);
+    commitPassValues(resources, technique, pass, arguments, diagnostics);
     return true;
 }
 

@@ -1,13 +1,11 @@
-// EffectPass, EffectTechnique: see runtime/EffectPass.h. apply() binds a pass with the functions the SAS
-// host's FrameExecutor binds its passes with (PassBindings.h, PassPreshaders, GpuProgram, FramebufferCache,
-// applyRenderStates): one way to make GL ready for a pass, whichever client draws.
+// EffectPass, EffectTechnique: see runtime/EffectPass.h. apply() resolves what the pass's script names
+// against the application's frame and binds the pass through PassBindings.h, as the SAS host's draws do:
+// one way to make GL ready for a pass, whichever client draws.
 #include <runtime/EffectPass.h>
 
 #include "ComputeDispatch.h"
 #include "EffectResources.h"
 #include "PassBindings.h"
-
-#include <runtime/RenderStateApplier.h>
 
 #include <fx/SasScript.h>
 
@@ -131,34 +129,27 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
         sink.report(fx::DiagId::ScriptUnknownTarget, named.missingLoc, {named.missing});
         return false;
     }
+    PassBinding binding;
     if (named.effectTargets) {
-        std::string error;
-        if (!r.framebuffers.bind(named.targets, error)) {
-            sink.report(fx::DiagId::GlError, pass.loc,
-                        {"cannot bind the targets of pass '" + pass.name + "': " + error});
-            return false;
-        }
-        for (const RenderTargetAttachment& color : named.targets.colors)
-            if (color.texture && color.texture->mipLevels() > 1) r.staleMipChains.insert(color.texture);
-        // render(Scene) may no longer reuse what it left in the targets (leave-out's cached passes).
-        r.targetHistory.clear();
-        frame.boundDepthBits = depthBiasBits(named.targets.depth.texture);
+        binding.framebuffer = &named.targets;
+        binding.depthBits = depthBiasBits(named.targets.depth.texture);
     } else if (named.named) {
         gl::BindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(frame.framebuffer));
         gl::Viewport(frame.viewport[0], frame.viewport[1], frame.viewport[2], frame.viewport[3]);
-        frame.boundDepthBits = frame.depthBits;
+        binding.depthBits = frame.depthBits;
+    } else {
+        binding.depthBits = frame.boundDepthBits;
     }
-
-    applyRenderStates(r.preshaders[mTechnique][mPass].states(r.values, r.stamps, sink), frame.boundDepthBits);
-    GpuProgram* program = r.programs[mTechnique][mPass].get();
-    if (program && program->hasShaders()) {
-        bindPassTextures(r, pass, named.targets);
-        bindPassStorageBuffers(r, pass);
-        bindPassImages(r, pass);
-        program->bind();
-        r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, frame.arguments, sink);
-        program->upload(r.values, frame.arguments, *r.uniformRing);
+    std::string error;
+    if (!bindPass(r, mTechnique, mPass, binding, sink, error)) {
+        sink.report(fx::DiagId::GlError, pass.loc,
+                    {"cannot bind the targets of pass '" + pass.name + "': " + error});
+        return false;
     }
+    // render(Scene) may no longer reuse what it left in the targets (leave-out's cached passes).
+    if (named.effectTargets) r.targetHistory.clear();
+    frame.boundDepthBits = binding.depthBits;
+    commitPassValues(r, mTechnique, mPass, frame.arguments, sink);
     frame.applied = std::make_pair(mTechnique, mPass);
     return true;
 }
@@ -168,12 +159,8 @@ bool EffectPass::commitChanges(fx::DiagnosticSink* diagnostics) const {
     EffectResources& r = *mResources;
     if (r.application.applied != std::make_pair(mTechnique, mPass)) return false;
     r.pool.pull(r);
-    GpuProgram* program = r.programs[mTechnique][mPass].get();
-    if (!program || !program->hasShaders()) return true;
     fx::DiagnosticList unreported;
-    r.preshaders[mTechnique][mPass].arguments(r.values, r.stamps, nullptr, r.application.arguments,
-                                              diagnostics ? *diagnostics : unreported);
-    program->upload(r.values, r.application.arguments, *r.uniformRing);
+    commitPassValues(r, mTechnique, mPass, r.application.arguments, diagnostics ? *diagnostics : unreported);
     return true;
 }
 

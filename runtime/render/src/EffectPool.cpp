@@ -23,6 +23,9 @@ EffectPool::Slot* EffectPool::join(const std::string& name, const fx::TypeDesc& 
 void EffectPool::publish(const std::string& name, const fx::Value& value) {
     auto it = mSlots.find(name);
     if (it == mSlots.end()) return;
+    // The value again (an application's setter each frame, a script's loop of one) changes nothing, so
+    // that the other effects' values keep their change stamps and the passes leave-out cached on them.
+    if (it->second.value.data == value.data && it->second.value.string == value.string) return;
     it->second.value = value;
     ++it->second.generation;
 }

@@ -163,21 +163,27 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     const PlannedOp* op =
         nextOp(buffer ? PlannedOp::Kind::DrawBuffer : PlannedOp::Kind::DrawGeometry, passIndex);
     if (leftOut(op)) return;
-    const RenderStateBlock& states = applyStates(pass, passIndex, op);
+    const RenderStateBlock& states = passStates(pass, passIndex, op);
     const bool usesDepth =
         states.get(fx::RenderStateId::ZEnable) != 0.0 || states.get(fx::RenderStateId::StencilEnable) != 0.0;
-    if (!bindTargets(usesDepth, &pass)) return;
+    RenderTargets framebuffer;
+    if (!drawTargets(usesDepth, &pass, framebuffer)) return;
     const bool streams = pass.streamOut || pass.drawAuto >= 0;  // its vertices are not the meshes'
     GpuProgram* vertexOnly =
         mOptions.depthOnlyPasses && !streams ? depthOnly(pass, passIndex, states) : nullptr;
-    if (vertexOnly) program = vertexOnly;
-    bindPassTextures(mResources, pass, mTargets);
-    bindPassStorageBuffers(mResources, pass);
-    bindPassImages(mResources, pass);
+    if (vertexOnly) {
+        program = vertexOnly;
+        framebuffer = RenderTargets{};  // the depth-stencil target alone: draw buffers GL_NONE
+        framebuffer.depth = mTargets.depth;
+    }
+    PassBinding binding;
+    binding.framebuffer = &framebuffer;
+    binding.depthBits = depthBiasBits(mTargets.depth.texture);
+    binding.states = &states;
     mPort.viewportSize = glm::vec2(mTargets.width(), mTargets.height());
     if (mPort.cascade >= 0) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
-        gl::Viewport(tile.x, tile.y, tile.z, tile.w);
+        binding.viewport = tile;
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
     }
     const PassUse& use = mUses[passIndex];
@@ -190,7 +196,15 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             batched = nullptr;
         }
     }
-    program->bind();
+    binding.program = program;
+    {
+        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+        std::string error;
+        if (!bindPass(mResources, mTechnique, passIndex, binding, mDiagnostics, error)) {
+            fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
+            return;
+        }
+    }
     if (mOptions.leaveOut) {
         // Per-frame and per-port values once per pass; drawWith() then binds only per-object ones.
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
@@ -296,6 +310,8 @@ void FrameExecutor::setParameter(const std::string& name, int parameter, const f
     }
     storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mResources.values,
                    mResources.stamps);
+    // A script's value of a `shared` parameter is the pool's, as an application's setter's is.
+    mResources.pool.published(mResources, static_cast<size_t>(parameter));
 }
 
 void FrameExecutor::fail(fx::DiagId id, const std::vector<std::string>& args) {
@@ -391,11 +407,9 @@ bool FrameExecutor::depthTargetIsSmaller() const {
 // where all attachments overlap. A clear or draw that uses neither depth nor stencil is bound without a
 // smaller surface, so it covers its colour targets as D3D9's drivers did (a float shadow map drawn with
 // ZEnable = false and the frame's depth buffer); a draw that tests them covers the overlap, with a warning.
-bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
+bool FrameExecutor::drawTargets(bool usesDepth, const fx::CompiledPass* pass, RenderTargets& targets) {
     if (mFailed) return false;
-    std::string error;
-    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-    RenderTargets targets = mTargets;
+    targets = mTargets;
     // A multisample colour target with a depth target of another sample count cannot be one framebuffer;
     // a pass that tests no depth is drawn without it, as above.
     const bool otherSamples = mTargets.depth.texture && mTargets.colors[0].texture &&
@@ -412,25 +426,29 @@ bool FrameExecutor::bindTargets(bool usesDepth, const fx::CompiledPass* pass) {
                 {pass->name, size(mTargets.width(), mTargets.height()), size(depthSize.x, depthSize.y)});
         }
     }
-    if (!mResources.framebuffers.bind(targets, error)) {
+    return true;
+}
+
+bool FrameExecutor::bindTargets(bool usesDepth) {
+    RenderTargets targets;
+    if (!drawTargets(usesDepth, nullptr, targets)) return false;
+    std::string error;
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    if (!bindPassTargets(mResources, targets, error)) {
         fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
         return false;
-    }
-    for (const RenderTargetAttachment& color : mTargets.colors) {
-        if (color.texture && color.texture->mipLevels() > 1) mResources.staleMipChains.insert(color.texture);
     }
     return true;
 }
 
-const RenderStateBlock& FrameExecutor::applyStates(const fx::CompiledPass& pass, size_t passIndex,
-                                                   const PlannedOp* op) {
+const RenderStateBlock& FrameExecutor::passStates(const fx::CompiledPass& pass, size_t passIndex,
+                                                  const PlannedOp* op) {
     const RenderStateBlock* block = op ? &op->states : nullptr;
     if (!block) {
         PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
         block = &mResources.preshaders[mTechnique][passIndex].states(mResources.values, mResources.stamps,
                                                                      mDiagnostics);
     }
-    applyRenderStates(*block, depthBiasBits(mTargets.depth.texture));
     // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight)
     // meshes only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual
     // depth layers with back-face culling (Weiskopf & Ertl 2003, §4: "back face culling for solid
@@ -466,15 +484,7 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
                     .emplace(key, GpuProgram::create(pass, ignored, GpuProgram::Stages::DepthOnly))
                     .first;
     }
-    if (!found->second) return nullptr;  // stored null: it did not link, draw the full pass
-    RenderTargets depthOnlyTargets;
-    depthOnlyTargets.depth = mTargets.depth;
-    std::string error;
-    if (!mResources.framebuffers.bind(depthOnlyTargets, error)) {
-        mResources.framebuffers.bind(mTargets, error);  // as bindTargets() bound them a moment ago
-        return nullptr;
-    }
-    return found->second.get();
+    return found->second.get();  // null where it did not link: the full pass is drawn
 }
 
 // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per
@@ -483,8 +493,7 @@ void FrameExecutor::evaluateArguments(size_t passIndex, const PassUse& use, bool
     PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
     const std::vector<bool>* which =
         mOptions.leaveOut ? (perObject ? &use.argumentPerObject : &use.argumentPerPass) : nullptr;
-    mResources.preshaders[mTechnique][passIndex].arguments(mResources.values, mResources.stamps, which,
-                                                           mArguments, mDiagnostics);
+    evaluatePassArguments(mResources, mTechnique, passIndex, which, mArguments, mDiagnostics);
 }
 
 void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
@@ -502,7 +511,7 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
     evaluateArguments(passIndex, use, true);
     {
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+        uploadPassValues(mResources, program, mArguments);
     }
     {
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
@@ -529,7 +538,7 @@ void FrameExecutor::drawCapture(const fx::CompiledPass& pass, size_t passIndex, 
     evaluateArguments(passIndex, use, true);
     {
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+        uploadPassValues(mResources, program, mArguments);
     }
     // A geometry shader takes the primitive its input declares; without one the vertices are drawn as
     // they were captured (or as the pass captures them, where it streams out itself).
@@ -679,7 +688,7 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     }
     {
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        program.upload(mResources.values, mArguments, *mResources.uniformRing);
+        uploadPassValues(mResources, program, mArguments);
     }
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     batched.setInstances(mInstanceList);

@@ -1,5 +1,6 @@
 // FrameExecutor: runs one frame's scripts on GL, following the frame's plan (FramePlan, recorded by
-// PlanRecorder): binds targets, the plan's render states, samplers and semantics, runs the compile
+// PlanRecorder): resolves each draw's targets, states and program variant, binds the pass through
+// PassBindings.h as the application's EffectPass::apply() does, binds semantics, runs the compile
 // arguments' preshaders, culls and draws; counts what it did into FrameStats.
 #pragma once
 
@@ -66,18 +67,20 @@ private:
     void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const;
     // The render target a script names (`name`, resolved to `parameter`); null where it is not allocated.
     const GpuTexture* target(const std::string& name, int parameter);
-    // Binds mTargets; without the depth-stencil target when it is smaller than the colour targets and
-    // the operation does not use it (`usesDepth`), with a warning for `pass` when it does.
-    bool bindTargets(bool usesDepth, const fx::CompiledPass* pass = nullptr);
+    // The framebuffer for a clear or draw into mTargets: without the depth-stencil target when it is smaller
+    // than the colour targets and the operation does not use it (`usesDepth`), with a warning for `pass`
+    // when it does. False once the frame failed.
+    bool drawTargets(bool usesDepth, const fx::CompiledPass* pass, RenderTargets& targets);
+    // Binds drawTargets() for a clear, or for the host scene a script draws (ScriptExternal=color).
+    bool bindTargets(bool usesDepth);
     glm::ivec2 depthTargetSize() const;  // at its mip level; 0x0 without one
     bool depthTargetIsSmaller() const;
-    // Applies the states the plan evaluated for this draw (`op`), or, once the frame left the plan,
-    // evaluates them.
-    // Applies the pass's render states and returns them.
-    const RenderStateBlock& applyStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op);
-    // For a draw whose states write no colour to any bound target: binds the depth-stencil target alone and
-    // returns the pass's vertex-only program, or null where the draw needs its colour targets or pixel
-    // shader after all (see draw()).
+    // The pass's render states for this draw: those the plan evaluated (`op`), or, once the frame left the
+    // plan, evaluated now.
+    const RenderStateBlock& passStates(const fx::CompiledPass& pass, size_t passIndex, const PlannedOp* op);
+    // For a draw whose states write no colour to any bound target: the pass's vertex-only program, drawn
+    // into the depth-stencil target alone, or null where the draw needs its colour targets or pixel shader
+    // after all (see draw()).
     GpuProgram* depthOnly(const fx::CompiledPass& pass, size_t passIndex, const RenderStateBlock& states);
     // Runs the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per pass
     // (perObject false) and the per-object ones per draw (perObject true); without, all per draw. Each
@@ -130,7 +133,7 @@ private:
     int mClearStencil = 0;
     const bool mStencilUnread;  // no pass tests stencil: depth clears take it along (techniqueTestsStencil)
     bool mFailed = false;
-    bool mCullClosedOnly = false;  // the pass's CullClosedOnly applies (applyStates)
+    bool mCullClosedOnly = false;  // the pass's CullClosedOnly applies (passStates)
     std::set<size_t> mWarnedPasses;
     std::set<const fx::CompiledPass*> mWarnedDepthSizes;  // passes warned of a smaller depth target
 };

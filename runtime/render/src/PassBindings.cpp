@@ -64,13 +64,15 @@ std::array<const fx::StageProgram*, 6> stagesOf(const fx::CompiledPass& pass) {
     return {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute};
 }
 
-}  // namespace
-
+// Every stage's sampled textures (an application's GL texture where it set one, else the effect's texture
+// or Buffer<T>, else none) and sampler objects. A mipmapped render target written since its chain was
+// built gets its chain first, unless `drawing` renders into it.
 void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
                       const RenderTargets& drawing) {
     for (const fx::StageProgram* stage : stagesOf(pass)) bindStageTextures(resources, *stage, drawing);
 }
 
+// The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks.
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
     for (size_t binding = 0; binding < parameters.size(); ++binding) {
@@ -80,6 +82,7 @@ void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& 
     }
 }
 
+// The textures behind the pass's images (RWTexture2D) on their image units, read-write.
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
     for (size_t unit = 0; unit < parameters.size(); ++unit) {
@@ -88,6 +91,58 @@ void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
             gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                                  image->second.glFormat().internalFormat);
     }
+}
+
+}  // namespace
+
+bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, std::string& error) {
+    if (!resources.framebuffers.bind(targets, error)) return false;
+    for (const RenderTargetAttachment& color : targets.colors)
+        if (color.texture && color.texture->mipLevels() > 1) resources.staleMipChains.insert(color.texture);
+    return true;
+}
+
+bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
+              fx::DiagnosticSink& diagnostics, std::string& error) {
+    const fx::CompiledPass& compiled = resources.effect().techniques[technique].passes[pass];
+    GpuProgram* program = binding.program ? binding.program : resources.programs[technique][pass].get();
+    const RenderTargets none;
+    const RenderTargets& drawing = binding.framebuffer ? *binding.framebuffer : none;
+    if (compiled.compute.glsl.empty()) {
+        if (binding.framebuffer && !bindPassTargets(resources, drawing, error)) return false;
+        if (binding.viewport)
+            gl::Viewport(binding.viewport->x, binding.viewport->y, binding.viewport->z, binding.viewport->w);
+        applyRenderStates(binding.states ? *binding.states
+                                         : resources.preshaders[technique][pass].states(
+                                               resources.values, resources.stamps, diagnostics),
+                          binding.depthBits);
+    }
+    if (!program || !program->hasShaders()) return true;
+    bindPassTextures(resources, compiled, drawing);
+    bindPassStorageBuffers(resources, compiled);
+    bindPassImages(resources, compiled);
+    program->bind();
+    return true;
+}
+
+void evaluatePassArguments(EffectResources& resources, size_t technique, size_t pass,
+                           const std::vector<bool>* which, std::vector<fx::Value>& arguments,
+                           fx::DiagnosticSink& diagnostics) {
+    resources.preshaders[technique][pass].arguments(resources.values, resources.stamps, which, arguments,
+                                                    diagnostics);
+}
+
+void uploadPassValues(EffectResources& resources, GpuProgram& program,
+                      const std::vector<fx::Value>& arguments) {
+    program.upload(resources.values, arguments, *resources.uniformRing);
+}
+
+void commitPassValues(EffectResources& resources, size_t technique, size_t pass,
+                      std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
+    GpuProgram* program = resources.programs[technique][pass].get();
+    if (!program || !program->hasShaders()) return;
+    evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
+    uploadPassValues(resources, *program, arguments);
 }
 
 int depthBiasBits(const GpuTexture* texture) {

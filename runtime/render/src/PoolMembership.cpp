@@ -14,13 +14,15 @@ bool PoolMembership::join(std::shared_ptr<EffectPool> pool, const EffectResource
     for (size_t i = 0; i < parameters.size(); ++i) {
         if (!parameters[i].isShared) continue;
         fx::TypeDesc existing;
-        if (!mPool->join(parameters[i].name, parameters[i].type, resources.values[i], existing)) {
+        EffectPool::Slot* slot =
+            mPool->join(parameters[i].name, parameters[i].type, resources.values[i], existing);
+        if (!slot) {
             diagnostics.report(fx::DiagId::PoolSharedTypeMismatch, parameters[i].loc,
                                {parameters[i].name, parameters[i].type.hlslName(), existing.hlslName()});
             ok = false;
             continue;
         }
-        mShared.push_back({i, 0});
+        mShared.push_back({i, slot, 0});
     }
     return ok;
 }
@@ -28,20 +30,18 @@ bool PoolMembership::join(std::shared_ptr<EffectPool> pool, const EffectResource
 void PoolMembership::published(const EffectResources& resources, size_t index) {
     for (Shared& shared : mShared) {
         if (shared.parameter != index) continue;
-        const std::string& name = resources.parameterInfo()[index].name;
-        mPool->publish(name, resources.values[index]);
-        shared.seen = mPool->find(name)->generation;
+        mPool->publish(resources.parameterInfo()[index].name, resources.values[index]);
+        shared.seen = shared.slot->generation;
     }
 }
 
 void PoolMembership::pull(EffectResources& resources) {
     for (Shared& shared : mShared) {
-        const EffectPool::Slot* slot = mPool->find(resources.parameterInfo()[shared.parameter].name);
-        if (!slot || slot->generation == shared.seen) continue;
-        storeParameter(resources.parameterInfo(), shared.parameter, slot->value, resources.values,
+        if (shared.slot->generation == shared.seen) continue;
+        storeParameter(resources.parameterInfo(), shared.parameter, shared.slot->value, resources.values,
                        resources.stamps);
         resources.pinned[shared.parameter] = true;
-        shared.seen = slot->generation;
+        shared.seen = shared.slot->generation;
     }
 }
 

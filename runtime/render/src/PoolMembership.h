@@ -28,7 +28,8 @@ public:
 private:
     struct Shared {
         size_t parameter = 0;
-        uint64_t seen = 0;  // the pool generation the effect's value is
+        EffectPool::Slot* slot = nullptr;  // in mPool, found by name once, when the effect joined
+        uint64_t seen = 0;                 // the pool generation the effect's value is
     };
     std::shared_ptr<EffectPool> mPool;
     std::vector<Shared> mShared;

@@ -9,12 +9,18 @@
 // stderr. A reload that succeeds replaces the renderer and carries over every parameter the user set
 // (EffectRenderer::isPinned) that still exists with the same type.
 //
+// Made with an EffectPool (runtime/EffectPool.h), every renderer it loads is created in that pool: a reload
+// stays a member, and its `shared` parameters take the pool's current values, which the other effects may
+// have set since the last load, rather than the old renderer's. An edit that declares a shared parameter
+// with another type than the pool's fails like any broken edit.
+//
 // Needs a current GL context for reload(), reloadIfChanged() and the renderer's whole life.
 #pragma once
 
 #include <fx/CompileCache.h>
 #include <fx/Diagnostics.h>
 #include <fx/EffectParser.h>
+#include <runtime/EffectPool.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/FileWatcher.h>
 
@@ -38,7 +44,8 @@ public:
         size_t cacheMisses = 0;  // stages compiled
     };
 
-    explicit ReloadableEffect(std::string path, fx::ParseOptions parseOptions = {});
+    explicit ReloadableEffect(std::string path, fx::ParseOptions parseOptions = {},
+                              std::shared_ptr<EffectPool> pool = nullptr);
     ~ReloadableEffect();
     ReloadableEffect(const ReloadableEffect&) = delete;
     ReloadableEffect& operator=(const ReloadableEffect&) = delete;
@@ -74,6 +81,7 @@ private:
 
     std::string mPath;
     fx::ParseOptions mParseOptions;
+    std::shared_ptr<EffectPool> mPool;
     fx::CompileCache mCache;
     FileWatcher mWatcher;
     std::vector<std::string> mWatchedFiles;
