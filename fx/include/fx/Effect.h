@@ -206,6 +206,9 @@ struct Pass {
     std::vector<Annotation> annotations;
     std::vector<StateAssignment> states;  // render states and VertexShader / PixelShader
     SourceLoc loc;
+    // A D3D9 pass with a pixel shader alone: the compiler gives it a pass-through vertex stage and, where
+    // it has no Script of its own, the script `Draw=Buffer;` (a full-screen quad; docs/fixed-function.md).
+    bool drawsScreenQuad = false;
 
     const Annotation* annotation(const std::string& annotationName) const;
 };
