@@ -287,6 +287,13 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     passAnnotations(p, pass);
     pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
+    if (p.drawsScreenQuad && !pass.hasScript) {
+        ScriptCommand draw{ScriptCommand::Kind::Draw};
+        draw.draw = ScriptCommand::DrawWhat::Buffer;
+        draw.loc = p.loc;
+        pass.script.push_back(std::move(draw));
+        pass.hasScript = true;
+    }
     validateScript(pass.script, nullptr);
     return pass;
 }

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -234,19 +235,36 @@ std::string fogFactor(int mode, const std::string& distance, const std::string& 
 
 // [SECTION] Vertex stage: transforms, per-vertex lighting, vertex fog
 
+// The host's transforms, which a pass that does not set its own uses: D3D9 kept the device's transforms
+// as the application last set them, the object's world and the camera's view and projection. Declared
+// for the generated stages, each bound to its semantic, where a stage reads it.
+struct HostTransform {
+    RenderStateId state;
+    const char* parameter;
+    const char* semantic;
+};
+constexpr HostTransform kHostTransforms[] = {
+    {RenderStateId::WorldTransform, "fx_HostWorld", "WORLD"},
+    {RenderStateId::ViewTransform, "fx_HostView", "VIEW"},
+    {RenderStateId::ProjectionTransform, "fx_HostProjection", "PROJECTION"},
+};
+
 // D3D9's per-vertex lighting in camera space (left-handed: the camera looks down +z). `eyeDistanceOut`:
-// the pixel stage computes table fog from the interpolated camera-space depth (TEXCOORD7).
+// the pixel stage computes table fog from the interpolated camera-space depth (TEXCOORD7). The host
+// transforms it reads are added to `hostTransforms`.
 std::string vertexStage(FixedFunctionStates& states, const std::string& name, Uniforms& u,
-                        bool eyeDistanceOut) {
+                        bool eyeDistanceOut, std::set<std::string>& hostTransforms) {
     using Id = RenderStateId;
     states.checkVertexIndices();
-    const std::string identity = "float4x4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)";
     std::string body;
-    body += "    float4x4 fx_world = " + states.value(u, Id::WorldTransform, 0, "float4x4", identity) + ";\n";
-    body += "    float4x4 fx_view = " + states.value(u, Id::ViewTransform, 0, "float4x4", identity) + ";\n";
-    body +=
-        "    float4x4 fx_projection = " + states.value(u, Id::ProjectionTransform, 0, "float4x4", identity) +
-        ";\n";
+    for (const HostTransform& host : kHostTransforms) {
+        if (!states.find(host.state)) hostTransforms.insert(host.parameter);
+        const std::string local = host.state == Id::WorldTransform  ? "fx_world"
+                                  : host.state == Id::ViewTransform ? "fx_view"
+                                                                    : "fx_projection";
+        body += "    float4x4 " + local + " = " + states.value(u, host.state, 0, "float4x4", host.parameter) +
+                ";\n";
+    }
     body +=
         "    float4x4 fx_worldView = mul(fx_world, fx_view);\n"
         "    float4 fx_viewPosition = mul(float4(fx_position.xyz, 1.0), fx_worldView);\n"
@@ -579,6 +597,24 @@ std::string pixelStage(FixedFunctionStates& states, const std::string& name, Uni
     return "float4 " + name + "(" + inputs + u.parameters + ") : COLOR0\n{\n" + body + "}\n";
 }
 
+// A pass with a pixel shader alone draws a full-screen quad, its vertices passed through untransformed:
+// D3D9 ran such a pass on the pre-transformed (XYZRHW) quads the DirectX SDK's post-processing fed it.
+// The runtime's quad (Draw=Buffer) is in clip space already; its texture coordinates go to the first two
+// sets, as the SDK's quads carried the same screen coordinates in both, and the diffuse colour is D3D9's
+// default for a vertex without one, white.
+std::string screenQuadStage(const std::string& name) {
+    return "void " + name +
+           "(float4 fx_position : POSITION, float4 fx_texcoord : TEXCOORD0,\n"
+           "    out float4 oPosition : POSITION, out float4 oDiffuse : COLOR0, out float4 oTexcoord0 : "
+           "TEXCOORD0,\n"
+           "    out float4 oTexcoord1 : TEXCOORD1)\n{\n"
+           "    oPosition = float4(fx_position.xyz, 1.0);\n"
+           "    oDiffuse = float4(1, 1, 1, 1);\n"
+           "    oTexcoord0 = fx_texcoord;\n"
+           "    oTexcoord1 = fx_texcoord;\n"
+           "}\n";
+}
+
 bool needsTableFog(FixedFunctionStates& states) {
     return states.mayBeOn(RenderStateId::FogEnable, 0, false) &&
            states.choice(RenderStateId::FogTableMode, 0, kFogNone) != kFogNone;
@@ -595,10 +631,11 @@ Expr compileExpression(const std::string& profile, const std::string& function, 
     return e;
 }
 
-// The pass's shader state for a stage (its last assignment), or null.
-StateAssignment* shaderState(Pass& pass, RenderStateId stage) {
-    StateAssignment* found = nullptr;
-    for (StateAssignment& s : pass.states)
+// The pass's shader state for a stage (its last assignment), or null; const as the pass is.
+template <typename PassType>
+auto* shaderState(PassType& pass, RenderStateId stage) {
+    decltype(&pass.states.front()) found = nullptr;
+    for (auto& s : pass.states)
         if (findRenderState(s.name) == stage) found = &s;
     return found;
 }
@@ -611,15 +648,20 @@ std::shared_ptr<const Effect> withFixedFunctionStages(std::shared_ptr<const Effe
                                                       DiagnosticSink& diagnostics) {
     bool any = false;
     for (const Technique& t : effect->techniques)
-        for (const Pass& p : t.passes)
+        for (const Pass& p : t.passes) {
             for (const StateAssignment& s : p.states)
                 if (selectsFixedFunction(s)) any = true;
+            const StateAssignment* vs = shaderState(p, RenderStateId::VertexShader);
+            const StateAssignment* ps = shaderState(p, RenderStateId::PixelShader);
+            if (!t.d3d10 && (!vs || isNull(vs->value)) && ps && !isNull(ps->value)) any = true;
+        }
     if (!any) return effect;
 
     auto out = std::make_shared<Effect>(*effect);
     std::string generated;  // the generated functions, parsed below as effect source
     bool failed = false;
-    int samplersUsed = 0;  // stages 0..n-1 sample through fx_FixedFunctionSampler<stage>
+    int samplersUsed = 0;                  // stages 0..n-1 sample through fx_FixedFunctionSampler<stage>
+    std::set<std::string> hostTransforms;  // the host's transforms a generated stage reads
     struct Replacement {
         Pass* pass;
         RenderStateId stage;
@@ -649,17 +691,25 @@ std::shared_ptr<const Effect> withFixedFunctionStages(std::shared_ptr<const Effe
             }
             // `FogEnable = false;` beside a vertex shader asks for nothing of the pixel stage.
             if (states.mayBeOn(RenderStateId::FogEnable, 0, false)) setsPixelStates = true;
-            // A pixel shader alone, even with `Texture[0] = <t>;` beside it, keeps the vertex stage it had:
-            // D3D9 transformed its vertices by the application's transforms, which the pass does not name.
             const bool vertex = !hasVertexShader && setsVertexStates;
             const bool pixel = !hasPixelShader && (vertex || setsPixelStates);
+            // A pixel shader alone, even with `Texture[0] = <t>;` beside it: a full-screen pass.
+            const bool screenQuad = !hasVertexShader && !setsVertexStates && hasPixelShader;
             const std::string suffix = std::to_string(t) + "_" + std::to_string(p);
             if (vertex) {
                 Uniforms u;
                 const std::string name = "fx_FixedFunctionVS_" + suffix;
-                generated += vertexStage(states, name, u, pixel && needsTableFog(states)) + "\n";
+                generated +=
+                    vertexStage(states, name, u, pixel && needsTableFog(states), hostTransforms) + "\n";
                 replacements.push_back({&pass, RenderStateId::VertexShader,
                                         compileExpression("vs_3_0", name, std::move(u.arguments), pass.loc)});
+            }
+            if (screenQuad) {
+                const std::string name = "fx_ScreenQuadVS_" + suffix;
+                generated += screenQuadStage(name) + "\n";
+                replacements.push_back(
+                    {&pass, RenderStateId::VertexShader, compileExpression("vs_3_0", name, {}, pass.loc)});
+                pass.drawsScreenQuad = true;
             }
             if (pixel) {
                 Uniforms u;
@@ -681,6 +731,9 @@ std::shared_ptr<const Effect> withFixedFunctionStages(std::shared_ptr<const Effe
     for (int stage = 0; stage < samplersUsed; ++stage)
         samplers += "sampler2D fx_FixedFunctionSampler" + std::to_string(stage) + " : register(s" +
                     std::to_string(stage) + ");\n";
+    for (const HostTransform& host : kHostTransforms)
+        if (hostTransforms.count(host.parameter))
+            samplers += std::string("float4x4 ") + host.parameter + " : " + host.semantic + ";\n";
     std::shared_ptr<Effect> parsed = parseEffectSource(samplers + generated, kGeneratedFile, {}, diagnostics);
     if (!parsed) return nullptr;
     for (const DeclRef& ref : parsed->order) {

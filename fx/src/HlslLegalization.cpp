@@ -125,15 +125,19 @@ std::string arrayCastName(const std::string& base, int n) {
     return "fx_to_array_" + base + "_" + std::to_string(n);
 }
 
-// `(T[N])v`: an array of the vector's first N components (an array type cannot be returned unnamed).
+// `(T[N])v`: an array of the vector's first N components (an array type cannot be returned unnamed). One
+// overload per vector size from N to 4, so that the cast's operand is no implicit truncation.
 std::string arrayCastHelper(const std::string& base, int n) {
     const std::string array = "fx_array_" + base + "_" + std::to_string(n);
-    std::string components;
-    for (int i = 0; i < n; ++i) components += (i ? ", v." : "v.") + std::string(1, "xyzw"[i]);
-    if (n == 1) components = "v";
-    return "typedef " + base + " " + array + "[" + std::to_string(n) + "];\n" + array + " " +
-           arrayCastName(base, n) + "(" + base + (n > 1 ? std::to_string(n) : "") + " v) { " + array +
-           " a = { " + components + " }; return a; }\n";
+    std::string helper = "typedef " + base + " " + array + "[" + std::to_string(n) + "];\n";
+    for (int size = n; size <= 4; ++size) {
+        std::string components;
+        for (int i = 0; i < n; ++i) components += (i ? ", v." : "v.") + std::string(1, "xyzw"[i]);
+        if (size == 1) components = "v";
+        helper += array + " " + arrayCastName(base, n) + "(" + base + (size > 1 ? std::to_string(size) : "") +
+                  " v) { " + array + " a = { " + components + " }; return a; }\n";
+    }
+    return helper;
 }
 
 // `T(a, b) = e;`: one overload per way of splitting T's components among two or more l-values.

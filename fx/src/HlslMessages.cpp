@@ -2,8 +2,15 @@
 // .fx line through #line, generated code at the pass's compile expression (see Compiler.h).
 
 #include "Compiler.h"
+#include "HlslToSpirv.h"
+#include "TypeNames.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstring>
+#include <set>
+#include <string_view>
+#include <utility>
 
 namespace fx::detail {
 
@@ -43,6 +50,30 @@ size_t codeEnd(const std::string& line) {
     const size_t last =
         line.find_last_not_of(" \t\r", comment == std::string::npos ? std::string::npos : comment - 1);
     return comment == 0 || last == std::string::npos ? std::string::npos : last + 1;
+}
+
+// Whether the value a message stands at follows a cast the code spells (`(float3)v`, `(half)(a + b)`):
+// glslang places the conversion of a cast at its operand, as it places an implicit one, but a cast is
+// explicit and fxc said nothing of it.
+bool followsSpelledCast(const std::vector<UnitLine>& lines, const HlslMessage& m) {
+    const auto line = std::find_if(lines.begin(), lines.end(),
+                                   [&](const UnitLine& l) { return l.file == m.file && l.number == m.line; });
+    if (line == lines.end() || m.column <= 1) return false;
+    std::string before = line->text.substr(0, std::min(line->text.size(), static_cast<size_t>(m.column - 1)));
+    const auto trim = [&before](const char* characters) {
+        while (!before.empty() && std::strchr(characters, before.back())) before.pop_back();
+    };
+    trim(" \t(");
+    if (before.empty() || before.back() != ')') return false;
+    before.pop_back();
+    trim(" \t");
+    const size_t name =
+        before.find_last_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_");
+    TypeDesc type;
+    const std::string typeName = before.substr(name == std::string::npos ? 0 : name + 1);
+    before.resize(name == std::string::npos ? 0 : name + 1);
+    trim(" \t");
+    return !before.empty() && before.back() == '(' && parseScalarTypeName(typeName, type);
 }
 
 }  // namespace
@@ -89,8 +120,17 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
         return text.rfind("'declaration' : Expected", 0) == 0 ||
                text.rfind("'function call arguments' : Expected", 0) == 0 || text.rfind("'' : ", 0) == 0;
     };
+    // mul()'s truncation of its vector is said once, as mul()'s.
+    std::set<std::pair<std::string, int>> mulMismatches;
+    for (const HlslMessage& m : messages)
+        if (m.text.find("mul() matrix size mismatch") != std::string::npos)
+            mulMismatches.insert({m.file, m.line});
+    const std::vector<UnitLine> lines = unitLines(lowered.hlsl);
     for (const HlslMessage& m : messages) {
         if (m.error && hadError && isFollowOn(m.text)) continue;
+        if (m.text.rfind(kImplicitTruncationPrefix, 0) == 0 &&
+            (mulMismatches.count({m.file, m.line}) || followsSpelledCast(lines, m)))
+            continue;
         hadError = hadError || m.error;
         SourceLoc loc = userLocation(m, lowered);
         std::string text = m.text;
@@ -100,6 +140,9 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
             error(DiagId::HlslError, loc, {text});
         else if (m.file != kGeneratedFile && text.find("mul() matrix size mismatch") != std::string::npos)
             mDiagnostics.report(DiagId::ImplicitTruncation, loc, {});
+        else if (m.file != kGeneratedFile && text.rfind(kImplicitTruncationPrefix, 0) == 0)
+            mDiagnostics.report(DiagId::ImplicitVectorTruncation, loc,
+                                {text.substr(std::string_view(kImplicitTruncationPrefix).size())});
         else if (m.file != kGeneratedFile)
             mDiagnostics.report(DiagId::HlslWarning, loc, {text});
     }

@@ -1,6 +1,8 @@
 // HlslToSpirv: glslang's HLSL front end, configured as TOOLCHAIN.md prescribes (see HlslToSpirv.h).
 #include "HlslToSpirv.h"
 
+#include <glslang/Include/intermediate.h>
+#include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
@@ -89,6 +91,38 @@ bool hasOpaqueTemporaries(const std::vector<uint32_t>& spirv) {
     return false;
 }
 
+// The vector truncations glslang's HLSL front end makes without a word where fxc warned (X3206): a
+// `float4` assigned, returned or passed as a `float3` or a `float`. glslang writes each as a constructor
+// of the smaller type standing where its operand stands; a constructor the code spells (`float3(v)`, a
+// cast) stands at its type's name instead.
+class TruncationFinder : public glslang::TIntermTraverser {
+public:
+    std::vector<HlslMessage> found;
+
+    bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
+        if (!node->isConstructor() || node->getSequence().size() != 1) return true;
+        const glslang::TIntermTyped* operand = node->getSequence()[0]->getAsTyped();
+        const glslang::TType& to = node->getType();
+        if (!operand || to.isArray() || to.isStruct() || to.isMatrix()) return true;
+        const glslang::TType& from = operand->getType();
+        if (from.isArray() || from.isStruct() || from.isMatrix() ||
+            from.getVectorSize() <= to.getVectorSize())
+            return true;
+        const glslang::TSourceLoc& at = node->getLoc();
+        const glslang::TSourceLoc& operandAt = operand->getLoc();
+        if (at.line != operandAt.line || at.column != operandAt.column || at.string != operandAt.string)
+            return true;
+        const auto name = [](const glslang::TType& type) {
+            const std::string base = type.getBasicTypeString().c_str();
+            return type.getVectorSize() > 1 ? base + std::to_string(type.getVectorSize()) : base;
+        };
+        found.push_back(
+            {false, at.getFilenameStr(), at.line, at.column,
+             std::string(kImplicitTruncationPrefix) + "'" + name(from) + "' to '" + name(to) + "'"});
+        return true;
+    }
+};
+
 }  // namespace
 
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
@@ -114,11 +148,15 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
     shader.setAutoMapLocations(true);
 
     bool parsed = shader.parse(GetDefaultResources(), 100, false, kMessages);
+    std::vector<HlslMessage> truncationMessages;
     result.log = shader.getInfoLog();
     if (parsed) {
         glslang::TProgram program;
         program.addShader(&shader);
         if (program.link(kMessages) && program.mapIO()) {
+            TruncationFinder truncations;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
+            truncationMessages = std::move(truncations.found);
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;
@@ -139,6 +177,7 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
         }
     }
     result.messages = parseGlslangLog(result.log);
+    result.messages.insert(result.messages.end(), truncationMessages.begin(), truncationMessages.end());
     if (!result.success && std::none_of(result.messages.begin(), result.messages.end(),
                                         [](const HlslMessage& m) { return m.error; }))
         result.messages.push_back({true, "", 0, 0, "glslang failed: " + result.log});

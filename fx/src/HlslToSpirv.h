@@ -26,6 +26,10 @@ struct HlslCompileResult {
     std::string log;  // glslang's raw info log, for debugging
 };
 
+// The text of the warning compileHlslToSpirv adds for each implicit vector truncation glslang made:
+// "implicit truncation of vector type: 'float4' to 'float3'" (fxc's X3206).
+constexpr const char* kImplicitTruncationPrefix = "implicit truncation of vector type: ";
+
 // Compiles `source` for `stage` with entry point `entryPoint` (SPIR-V 1.0, Vulkan client rules).
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
                                      const std::string& entryPoint);

@@ -125,6 +125,7 @@ std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, siz
     const size_t resume = mPos;
     std::vector<Statement> body;
     mSpeculative = true;
+    mStraightLoops = 0;
     try {
         mPos = begin;
         while (mPos < end) parseStraightStatement(body);
@@ -180,6 +181,9 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         statement.kind = Statement::Kind::Return;
         statement.value = parseExpr();
         statement.hasValue = true;
+    } else if (check("break") || check("continue")) {
+        if (mStraightLoops == 0) throw SyntaxError{};  // a `switch`'s break: not straight code
+        statement.kind = advance().is("break") ? Statement::Kind::Break : Statement::Kind::Continue;
     } else if (parseStraightAssignment(statement)) {
     } else {
         accept("const");
@@ -268,7 +272,9 @@ void Parser::parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>&
         loop.value = parseExpr();
     }
     expect(")");
+    ++mStraightLoops;
     parseStraightStatement(loop.then);
+    --mStraightLoops;
     if (containsReturn(loop.then)) throw SyntaxError{};  // leaving a loop early: not unrolled here
     out.push_back(std::move(loop));
 }

@@ -209,6 +209,7 @@ private:
     int mDepth = 0;
     bool mNoGreater = false;
     bool mSpeculative = false;  // parseStraightBody(): errors throw without a report
+    int mStraightLoops = 0;     // parseStraightStatement(): the loops around it (`break` needs one)
     StateAssignments mStates{mEffect, [this](DiagId id, const SourceLoc& loc,
                                              const std::vector<std::string>& args) { error(id, loc, args); }};
 };

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <utility>
 
 namespace fx::detail {
 
@@ -131,11 +132,27 @@ private:
     }
 
     // The function's locals (parameters included) as expressions over the call's arguments, with their
-    // declared types, and how often a branch assigned each name of the enclosing scope.
+    // declared types, and how often a branch assigned each name of the enclosing scope. Inside a loop,
+    // `values` are those of the path that has neither left the loop nor skipped to its next iteration:
+    // `path` is when that path runs (none: always), `dead` that no path reaches here (after a `break` or
+    // `continue` the branch took for certain).
     struct Locals {
         std::map<std::string, Expr> values;
         std::map<std::string, TypeDesc> types;
         std::map<std::string, int> assigned;
+        std::optional<Expr> path;
+        bool dead = false;
+    };
+
+    // Where the paths that left the innermost loop being unrolled went: `break` ends the loop with the
+    // values it had, `continue` resumes at the step with them. Each is a select on the path that took it,
+    // so that the paths still running keep their own values, a loop counter a literal among them.
+    struct Exit {
+        std::optional<Expr> taken;  // when some path took it (none: no path did)
+        std::map<std::string, Expr> values;
+    };
+    struct LoopExits {
+        Exit broken, continued;
     };
 
     // Marks the per-component selects assignComponents builds: (mask, new components, old value).
@@ -148,6 +165,67 @@ private:
         e.text = std::move(text);
         e.args = std::move(args);
         return e;
+    }
+
+    static bool same(const Expr& a, const Expr& b) {
+        if (a.kind != b.kind || a.text != b.text || a.number != b.number || a.isInteger != b.isInteger ||
+            a.args.size() != b.args.size() ||
+            (a.kind == Expr::Kind::Cast && (a.castType.hlslName() != b.castType.hlslName() ||
+                                            a.castType.arrayDims != b.castType.arrayDims)))
+            return false;
+        for (size_t i = 0; i < a.args.size(); ++i)
+            if (!same(a.args[i], b.args[i])) return false;
+        return true;
+    }
+
+    // `copy`, a copy just made, its nodes taken from the budget.
+    Expr counted(Expr copy) {
+        mBudget -= nodes(copy, std::max(mBudget, 0));
+        return copy;
+    }
+
+    // `condition ? a : b`; `a` where both are the same expression (a counter no path changed).
+    Expr select(const std::optional<Expr>& condition, Expr a, Expr b, const SourceLoc& loc) {
+        if (!condition || same(a, b)) return a;
+        return counted(node(Expr::Kind::Ternary, loc, "", {*condition, std::move(a), std::move(b)}));
+    }
+
+    static Expr truth(bool value, const SourceLoc& loc) {
+        Expr e;
+        e.kind = Expr::Kind::Bool;
+        e.number = value ? 1.0 : 0.0;
+        e.loc = loc;
+        return e;
+    }
+
+    // `a && b`, `a || b` over paths, where none is "always".
+    std::optional<Expr> both(const std::optional<Expr>& a, Expr b, const SourceLoc& loc) {
+        if (!a) return b;
+        return counted(node(Expr::Kind::Binary, loc, "&&", {*a, std::move(b)}));
+    }
+    std::optional<Expr> either(const std::optional<Expr>& a, const std::optional<Expr>& b,
+                               const SourceLoc& loc) {
+        if (!a || !b) return std::nullopt;
+        return counted(node(Expr::Kind::Binary, loc, "||", {*a, *b}));
+    }
+
+    // A path of `locals` leaves by `exit` (a `break` or `continue`): where the path runs, the exit's
+    // values become its values. The path ends here.
+    void leave(Exit& exit, Locals& locals, const SourceLoc& loc) {
+        ++mExitsTaken;
+        if (!exit.taken) {
+            exit.values = locals.values;
+            for (const auto& [name, value] : exit.values) mBudget -= nodes(value, std::max(mBudget, 0));
+            exit.taken = locals.path ? *locals.path : truth(true, loc);
+        } else {
+            for (auto& [name, value] : exit.values) {
+                auto current = locals.values.find(name);
+                if (current != locals.values.end())
+                    value = select(locals.path, current->second, std::move(value), loc);
+            }
+            exit.taken = locals.path ? either(exit.taken, locals.path, loc) : truth(true, loc);
+        }
+        locals.dead = true;
     }
 
     // `local.member = value` (`dir.x = ...`, `c.rgb += ...`): the local becomes a per-component select
@@ -228,6 +306,7 @@ private:
         std::set<std::string> declaredHere;
         for (const Statement& statement : statements) {
             if (mBudget <= 0) return false;
+            if (locals.dead) break;  // what follows a `break` or `continue` runs on no path
             switch (statement.kind) {
                 case Statement::Kind::Declare: {
                     // A name declared again in a branch would hide the outer one: not worth following.
@@ -274,9 +353,30 @@ private:
                     Locals then = locals, otherwise = locals;
                     then.assigned.clear();
                     otherwise.assigned.clear();
+                    if (mLoop) {  // only a `break` or `continue` reads which path runs
+                        then.path = both(locals.path, condition, loc);
+                        otherwise.path =
+                            both(locals.path, node(Expr::Kind::Unary, loc, "!", {condition}), loc);
+                    }
+                    const int exitsBefore = mExitsTaken;
                     if (!execute(statement.then, then, loc, depth) ||
                         !execute(statement.otherwise, otherwise, loc, depth))
                         return false;
+                    if (then.dead || otherwise.dead) {
+                        // Only the other branch goes on: its values are the running path's, unselected.
+                        Locals& alive = then.dead ? otherwise : then;
+                        locals.dead = alive.dead;
+                        locals.path = alive.path;
+                        for (auto& [name, value] : locals.values) value = alive.values[name];
+                        for (const auto& [name, count] : alive.assigned)
+                            if (locals.values.count(name) && !declaredHere.count(name))
+                                ++locals.assigned[name];
+                        break;
+                    }
+                    // A branch that left the loop on some of its paths narrowed its own path.
+                    if (mExitsTaken != exitsBefore)
+                        locals.path = select(condition, then.path ? *then.path : truth(true, loc),
+                                             otherwise.path ? *otherwise.path : truth(true, loc), loc);
                     std::set<std::string> changed;
                     for (const Locals* branch : {&then, &otherwise})
                         for (const auto& [name, count] : branch->assigned) changed.insert(name);
@@ -289,42 +389,15 @@ private:
                     }
                     break;
                 }
-                case Statement::Kind::Loop: {
-                    // Unrolled, as fxc unrolled a loop it could bound: the condition must fold to a
-                    // constant before every iteration (the counter's value is an expression of literals).
-                    for (int iteration = 0;; ++iteration) {
-                        double going = 0;
-                        if (iteration > kMaxLoopIterations || mBudget <= 0 ||
-                            !constant(substitute(statement.value, locals.values, depth), going))
-                            return false;
-                        if (going == 0) break;
-                        // The body's own declarations are its own, every iteration again.
-                        Locals inner = locals;
-                        inner.assigned.clear();
-                        if (!execute(statement.then, inner, loc, depth) ||
-                            !execute(statement.otherwise, inner, loc, depth))
-                            return false;
-                        for (auto& [name, value] : locals.values) {
-                            value = std::move(inner.values[name]);
-                            // A counter stays a literal, not a chain of every step before.
-                            double number = 0;
-                            const TypeDesc& type = locals.types[name];
-                            if (type.shape == Shape::Scalar && type.arrayDims.empty() &&
-                                constant(value, number)) {
-                                Expr literal;
-                                literal.kind = Expr::Kind::Number;
-                                literal.number = number;
-                                literal.isInteger = number == std::trunc(number);
-                                literal.loc = loc;
-                                value = cast(type, std::move(literal), loc);
-                            }
-                        }
-                        for (const auto& [name, count] : inner.assigned)
-                            if (locals.values.count(name) && !declaredHere.count(name))
-                                ++locals.assigned[name];
-                    }
+                case Statement::Kind::Loop:
+                    if (!unroll(statement, locals, declaredHere, loc, depth)) return false;
                     break;
-                }
+                case Statement::Kind::Break:
+                case Statement::Kind::Continue:
+                    if (!mLoop) return false;
+                    leave(statement.kind == Statement::Kind::Break ? mLoop->broken : mLoop->continued, locals,
+                          loc);
+                    break;
                 case Statement::Kind::Return:
                     return false;
             }
@@ -332,8 +405,97 @@ private:
         return true;
     }
 
+    // Unrolled, as fxc unrolled a loop it could bound: the condition must fold to a constant before every
+    // iteration on the path still running (the counter's value is an expression of literals). A path that
+    // took a `break` runs no further iteration; after the loop, each name is the value of the break taken,
+    // or of the running path where none was.
+    bool unroll(const FunctionDecl::Statement& loop, Locals& locals,
+                const std::set<std::string>& declaredHere, const SourceLoc& loc, int depth) {
+        LoopExits exits;
+        LoopExits* const outer = std::exchange(mLoop, &exits);
+        const std::optional<Expr> pathBefore = locals.path;
+        bool unrolled = true;
+        for (int iteration = 0;; ++iteration) {
+            double going = 0;
+            if (iteration > kMaxLoopIterations || mBudget <= 0 ||
+                !constant(substitute(loop.value, locals.values, depth), going)) {
+                unrolled = false;
+                break;
+            }
+            if (going == 0) break;
+            // The body's own declarations are its own, every iteration again.
+            Locals inner = locals;
+            inner.assigned.clear();
+            exits.continued = {};
+            mLoop = &exits;
+            if (!execute(loop.then, inner, loc, depth)) {
+                unrolled = false;
+                break;
+            }
+            // The paths that continued rejoin the running one before the step.
+            if (exits.continued.taken) {
+                for (auto& [name, value] : exits.continued.values)
+                    if (locals.values.count(name))
+                        inner.values[name] = inner.dead ? std::move(value)
+                                                        : select(inner.path, inner.values[name], value, loc);
+                inner.path =
+                    inner.dead ? exits.continued.taken : either(inner.path, exits.continued.taken, loc);
+                inner.dead = false;
+            }
+            if (inner.dead) {  // every path took a `break`
+                locals.dead = true;
+                break;
+            }
+            mLoop = nullptr;  // the step is no body: a `break` there is not parsed
+            if (!execute(loop.otherwise, inner, loc, depth)) {
+                unrolled = false;
+                break;
+            }
+            for (auto& [name, value] : locals.values) {
+                value = std::move(inner.values[name]);
+                // A counter stays a literal, not a chain of every step before.
+                double number = 0;
+                const TypeDesc& type = locals.types[name];
+                if (type.shape == Shape::Scalar && type.arrayDims.empty() && constant(value, number)) {
+                    Expr literal;
+                    literal.kind = Expr::Kind::Number;
+                    literal.number = number;
+                    literal.isInteger = number == std::trunc(number);
+                    literal.loc = loc;
+                    value = cast(type, std::move(literal), loc);
+                }
+            }
+            locals.path = inner.path;
+            for (const auto& [name, count] : inner.assigned)
+                if (locals.values.count(name) && !declaredHere.count(name)) ++locals.assigned[name];
+        }
+        mLoop = outer;
+        if (!unrolled) return false;
+        if (exits.broken.taken) {
+            for (auto& [name, value] : locals.values) {
+                auto atBreak = exits.broken.values.find(name);
+                if (atBreak == exits.broken.values.end()) continue;
+                value =
+                    locals.dead ? atBreak->second : select(exits.broken.taken, atBreak->second, value, loc);
+                if (!declaredHere.count(name)) ++locals.assigned[name];
+            }
+        }
+        // Every path leaves the loop: after it, the path is the one that entered it.
+        locals.dead = false;
+        locals.path = pathBefore;
+        return true;
+    }
+
     std::optional<Expr> expand(const FunctionDecl& function, const Expr& call, int depth) {
         if (mBudget <= 0 || function.straightBody.empty()) return std::nullopt;
+        // A function called inside a loop's body is not in that loop.
+        LoopExits* const callersLoop = std::exchange(mLoop, nullptr);
+        std::optional<Expr> value = expandBody(function, call, depth);
+        mLoop = callersLoop;
+        return value;
+    }
+
+    std::optional<Expr> expandBody(const FunctionDecl& function, const Expr& call, int depth) {
         Locals locals;
         for (size_t i = 0; i < function.params.size(); ++i) {
             const FunctionParam& p = function.params[i];
@@ -369,6 +531,8 @@ private:
 
     const Effect& mEffect;
     int mBudget = kMaxInlinedNodes;
+    LoopExits* mLoop = nullptr;  // the loop whose body is being unrolled
+    int mExitsTaken = 0;         // `break`s and `continue`s unrolled so far
 };
 
 }  // namespace

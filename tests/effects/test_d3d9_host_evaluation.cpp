@@ -280,6 +280,63 @@ TEST(D3d9HostEvaluation, FunctionWithLoopsFollowsItsInput) {
     EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 96, 77, 204), kMinObjectPixels);  // early: 0.5
 }
 
+// `break` and `continue` in loops of a function evaluated on the host, on conditions over the input: the
+// steps before a ramp passes the level, a sum that skips some indices, the counter read after the loop
+// that left early, and a loop that always leaves in its first iteration.
+constexpr const char* kLeavingLoops = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.5;
+float steps(float x) {
+    float s = 0;
+    for (int i = 0; i < 8; i++) {
+        if (i * 0.125 >= x) break;
+        s += 0.1;
+    }
+    return s;
+}
+float skipping(float x) {
+    float s = 0;
+    for (int j = 0; j < 4; j++) {
+        if (j == 1) continue;
+        if (j * 0.25 > x) { continue; }
+        s += 0.2;
+    }
+    return s;
+}
+float counter(float x) {
+    int k;
+    for (k = 0; k < 8; k++)
+        if (k * 0.25 >= x) break;
+    float s = k * 0.1;
+    while (true) { s += 0.05; break; s = 1; }
+    return s;
+}
+static float3 Derived = float3(steps(Level), skipping(Level), counter(Level));
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
+)";
+
+TEST(D3d9HostEvaluation, LoopsLeftByBreakAndContinueFollowTheirInput) {
+    auto renderer = loadEffect(kLeavingLoops, false, "leaving_loops.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    // 4 steps below 0.5; j = 0 and 2 summed; k = 2, plus 0.05
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 102, 102, 64), kMinObjectPixels);
+
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.2", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+    frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    // 2 steps below 0.2; j = 0 alone; k = 1, plus 0.05
+    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 51, 51, 38), kMinObjectPixels);
+}
+
 // A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
 // where it stands, as before.
 TEST(D3d9HostEvaluation, LoopBoundedByAParameterIsReportedAtTheCall) {

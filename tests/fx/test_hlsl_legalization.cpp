@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
+#include <vector>
 
 namespace fx {
 namespace {
@@ -211,6 +213,41 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_EQ(warning.loc.line, 3);
     EXPECT_EQ(warning.loc.column, 5);  // glslang gives no column: the statement's
     EXPECT_NE(warning.message.find("X3206"), std::string::npos) << warning.message;
+}
+
+// A vector where a smaller one or a scalar is expected (initialized, passed, returned): glslang keeps the
+// first components without a word, fxc warned X3206 at the value; a constructor or cast the code spells is
+// no implicit conversion.
+TEST(HlslLegalization, VectorTruncationWarnsAsFxc) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4 Colour = {1, 0.5, 0.25, 1};
+float3 shade(float3 c) { return c * 0.5; }
+float4 PS() : COLOR {
+    float3 rgb = Colour;
+    float alpha = Colour;
+    float3 spelled = float3(Colour.xyz) + (float3)Colour;
+    return float4(shade(Colour) + rgb + spelled, alpha);
+}
+float3 narrow(float4 v) { return v; }
+float4 VS(float4 p : POSITION) : POSITION { return float4(narrow(p), 1); }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
+    std::vector<std::pair<int, int>> at;
+    for (const Diagnostic& d : diags.items()) {
+        EXPECT_EQ(d.id, DiagId::ImplicitVectorTruncation) << diags.str();
+        EXPECT_EQ(d.severity, Severity::Warning);
+        EXPECT_EQ(d.loc.file, "legal.fx");
+        EXPECT_NE(d.message.find("X3206"), std::string::npos) << d.message;
+        at.emplace_back(d.loc.line, d.loc.column);
+    }
+    std::sort(at.begin(), at.end());
+    const std::vector<std::pair<int, int>> expected = {{4, 18}, {5, 19}, {7, 25}, {9, 34}};
+    EXPECT_EQ(at, expected) << diags.str();
+    EXPECT_NE(diags.str().find("'float4' to 'float3'"), std::string::npos) << diags.str();
+    EXPECT_NE(diags.str().find("'float4' to 'float'"), std::string::npos) << diags.str();
 }
 
 }  // namespace

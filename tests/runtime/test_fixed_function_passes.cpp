@@ -66,6 +66,16 @@ VsOut VS(float4 p : POSITION, float2 uv : TEXCOORD0) {
 }
 technique ShaderAndStages { pass p { VertexShader = compile vs_3_0 VS(); Texture[0] = <Noise>; } }
 technique ShaderOnly { pass p { VertexShader = compile vs_3_0 VS(); } }
+
+// Lights without transforms: the host's world, view and projection, as D3D9 kept the application's.
+technique HostTransforms { pass p { LIGHTS(-1) } }
+
+// A pixel shader alone: a full-screen pass over the quad, its coordinates in both sets, diffuse white.
+float4 ScreenPS(float2 uv : TEXCOORD0, float2 uv1 : TEXCOORD1, float4 diffuse : COLOR0) : COLOR0 {
+    return float4(uv.x, uv1.y, diffuse.b * 0.5, 1);
+}
+technique ScreenPass { pass p { VertexShader = null; PixelShader = compile ps_2_0 ScreenPS(); ZEnable = false; } }
+technique ScreenPassUnset { pass p { PixelShader = compile ps_2_0 ScreenPS(); } }
 )";
 
 const runtime::Scene& teapot() {
@@ -227,6 +237,33 @@ TEST(FixedFunctionPasses, VertexShaderWithTheFixedFunctionPixelStage) {
     ASSERT_TRUE(notConstant(textured));
     EXPECT_LT(drawnOfColour(textured, 255, 255, 0).first, drawn / 2);
     EXPECT_LT(meanChannel(textured, 2, true), 2);
+}
+
+TEST(FixedFunctionPasses, TransformsNotSetAreTheHosts) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage host = frame(*renderer, "HostTransforms");
+    ASSERT_TRUE(notConstant(host));
+    EXPECT_EQ(differingPixels(host, frame(*renderer, "FromRight"), 1), 0);
+}
+
+TEST(FixedFunctionPasses, PixelShaderAloneDrawsAFullScreenQuad) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    for (const char* technique : {"ScreenPass", "ScreenPassUnset"}) {
+        SCOPED_TRACE(technique);
+        const runtime::FrameImage image = frame(*renderer, technique);
+        ASSERT_TRUE(notConstant(image));
+        // Every pixel: red the x coordinate, green the y coordinate from the top, blue half the white.
+        int off = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const uint8_t* p = image.pixel(x, y);
+                off += std::abs(p[0] - (x + 0.5) * 255.0 / kSize) > 2 ||
+                       std::abs(p[1] - (y + 0.5) * 255.0 / kSize) > 2 || std::abs(p[2] - 128) > 1;
+            }
+        EXPECT_EQ(off, 0);
+    }
 }
 
 // Compiles `passBody` as the one pass of an effect; returns the diagnostics.

@@ -258,6 +258,10 @@ FX_DIAGNOSTIC(ComputeNumThreadsMissing, Error, "compute shader '{0}' has no [num
 FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,
               "compute shader parameter '{0}' is not supported (expected SV_DispatchThreadID, SV_GroupID, "
               "SV_GroupThreadID, SV_GroupIndex or a uniform)")
+// A vector assigned, returned or passed where a smaller one or a scalar is expected: fxc truncated it with
+// warning X3206, glslang truncates it silently (HlslToSpirv's kImplicitTruncationPrefix).
+FX_DIAGNOSTIC(ImplicitVectorTruncation, Warning,
+              "implicit truncation of vector type (fxc's X3206): {0}, the first components kept")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")

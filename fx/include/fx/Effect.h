@@ -173,15 +173,15 @@ struct FunctionDecl {
     SourceLoc loc;         // the name's location
 
     // A body of side-effect-free code: local declarations, assignments to locals and their components,
-    // if/else, `for` and `while` loops, and returns where every path ends (an early return's rest reads as
-    // its branch's `else`). Such a function, called in a pass's compile arguments, states or a static's
-    // initializer, is inlined there and evaluated on the host as D3DX's preshaders did
-    // (fx/src/UserFunctionInliner.cpp; a loop is unrolled, so its condition must be known there). Empty
-    // for any other body.
+    // if/else, `for` and `while` loops with `break` and `continue`, and returns where every path ends (an
+    // early return's rest reads as its branch's `else`). Such a function, called in a pass's compile
+    // arguments, states or a static's initializer, is inlined there and evaluated on the host as D3DX's
+    // preshaders did (fx/src/UserFunctionInliner.cpp; a loop is unrolled, so its condition must be known
+    // there). Empty for any other body.
     struct Statement {
         // Loop: `value` is the condition, `then` the body, `otherwise` the step (`for`'s third part); a
         // `for`'s first part stands before it as statements of their own.
-        enum class Kind { Declare, Assign, If, Loop, Return };
+        enum class Kind { Declare, Assign, If, Loop, Return, Break, Continue };
         Kind kind = Kind::Return;
         TypeDesc type;       // Declare
         std::string name;    // Declare, Assign: the local
@@ -206,6 +206,9 @@ struct Pass {
     std::vector<Annotation> annotations;
     std::vector<StateAssignment> states;  // render states and VertexShader / PixelShader
     SourceLoc loc;
+    // A D3D9 pass with a pixel shader alone: the compiler gives it a pass-through vertex stage and, where
+    // it has no Script of its own, the script `Draw=Buffer;` (a full-screen quad; docs/fixed-function.md).
+    bool drawsScreenQuad = false;
 
     const Annotation* annotation(const std::string& annotationName) const;
 };
