@@ -29,8 +29,11 @@ opt="-O1 -gline-tables-only -DNDEBUG"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWFX_FUZZ=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$opt" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$opt" \
   -DSHADOWFX_BUILD_TESTS=OFF -DSHADOWFX_BUILD_BENCHMARKS=OFF >/dev/null
-# The CLI compiles the compiled-effect fuzzer's seeds.
-cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" shadowfx-compile-worker shadowfx
+# Only what the chosen targets need (fuzz_compile_workers depends on the worker in CMake): the CLI, which
+# compiles the compiled-effect fuzzer's seeds, is the whole project.
+build=("${targets[@]}")
+[[ " ${targets[*]} " == *" fuzz_compiled_effect_file "* ]] && build+=(shadowfx)
+cmake --build build-fuzz -j "$(nproc)" --target "${build[@]}"
 
 root="$(pwd)"
 seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs

@@ -99,7 +99,7 @@ void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
         if (value && !value->data.empty()) {
             pass.cullClosedOnly = value->asBool();
         } else if (value) {
-            error(DiagId::InvalidAnnotation, a->loc, {"CullClosedOnly", "expected true or false"});
+            error(DiagId::CullClosedOnlyInvalid, a->loc, {});
         }
     }
     if (const Annotation* a = source.annotation("LeaveOutWhen")) {
@@ -109,8 +109,7 @@ void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
         } else if (text == "NoLightArea") {
             pass.leaveOutWhen = LeaveOutCondition::NoLightArea;
         } else {
-            error(DiagId::InvalidAnnotation, a->loc,
-                  {"LeaveOutWhen", "expected \"NoClosedObjects\" or \"NoLightArea\""});
+            error(DiagId::LeaveOutWhenInvalid, a->loc, {});
         }
     }
     if (const Annotation* a = source.annotation("FilterReachTexels")) {
@@ -118,7 +117,7 @@ void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
         if (value && value->data.size() == 1 && std::isfinite(value->asFloat())) {
             pass.filterReachTexels = std::max(1.0f, value->asFloat());  // a texel for rounding at least
         } else if (value) {
-            error(DiagId::InvalidAnnotation, a->loc, {"FilterReachTexels", "expected a number of texels"});
+            error(DiagId::FilterReachTexelsInvalid, a->loc, {});
         }
     }
 }
@@ -306,8 +305,7 @@ void Compiler::pointSprites(CompiledPass& pass) {
         if (setting.id == RenderStateId::PointSpriteEnable) sprites = &setting;
     if (!sprites) return;
     if (!sprites->constant) {
-        error(DiagId::InvalidStateValue, sprites->loc,
-              {"PointSpriteEnable", "must be a constant (it decides what the pixel shader reads)"});
+        error(DiagId::PointSpriteEnableNotConstant, sprites->loc, {});
         return;
     }
     if (*sprites->constant != 0.0 && !pass.fragment.glsl.empty())

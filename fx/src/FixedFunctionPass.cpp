@@ -182,9 +182,7 @@ public:
         if (!s) return fallback;
         if (s->value.kind == Expr::Kind::Number || s->value.kind == Expr::Kind::Bool)
             return static_cast<int>(s->value.number);
-        mDiagnostics.report(
-            DiagId::InvalidStateValue, s->value.loc,
-            {s->name, "must be a constant (it chooses the code of the fixed-function pipeline)"});
+        mDiagnostics.report(DiagId::FixedFunctionStateNotConstant, s->value.loc, {s->name});
         mFailed = true;
         return fallback;
     }

@@ -46,8 +46,8 @@ size_t valueComponents(const HostValue& value) {
 
 bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::DiagnosticSink& diagnostics) {
     bool ok = true;
-    const auto fail = [&](const fx::SourceLoc& loc, const std::string& key, const std::string& what) {
-        diagnostics.report(fx::DiagId::SceneInvalidValue, loc, {key, what});
+    const auto fail = [&](const fx::SourceLoc& loc, fx::DiagId id, const std::vector<std::string>& args) {
+        diagnostics.report(id, loc, args);
         ok = false;
     };
     const auto findParameter = [&](const std::string& name) -> const fx::ParameterInfo* {
@@ -59,13 +59,12 @@ bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::D
         const fx::ParameterInfo* info = findParameter(parameter.name);
         const std::string key = section + "/" + parameter.name;
         if (!info) {
-            fail(parameter.loc, key, "the effect has no parameter '" + parameter.name + "'");
+            fail(parameter.loc, fx::DiagId::HostParameterUnknown, {key, parameter.name});
             return;
         }
         if (!info->type.isNumeric()) {
-            fail(parameter.loc, key,
-                 "'" + parameter.name + "' is a " + info->type.hlslName() +
-                     ", not a number, vector or matrix");
+            fail(parameter.loc, fx::DiagId::HostParameterNotNumeric,
+                 {key, parameter.name, info->type.hlslName()});
             return;
         }
         const size_t expected = static_cast<size_t>(info->type.componentCount());
@@ -78,16 +77,16 @@ bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::D
                               ? given == expected || given == 1
                               : given == expected || (given >= 3 && expected >= 3 && expected <= 4);
         if (!fits)
-            fail(parameter.loc, key,
-                 "'" + parameter.name + "' is a " + info->type.hlslName() + " (" + std::to_string(expected) +
-                     " components), which this value (" + std::to_string(given) + ") does not fit");
+            fail(parameter.loc, fx::DiagId::HostValueSizeMismatch,
+                 {key, parameter.name, info->type.hlslName(), std::to_string(expected),
+                  std::to_string(given)});
     };
     for (const HostTarget& target : host.targets) {
         if (target.texture.empty()) continue;
         const fx::ParameterInfo* info = findParameter(target.texture);
         if (!info || info->type.isNumeric())
-            fail(target.loc, "targets/" + target.name,
-                 "the effect has no texture parameter '" + target.texture + "'");
+            fail(target.loc, fx::DiagId::HostTargetTextureUnknown,
+                 {"targets/" + target.name, target.texture});
     }
     for (const HostParameter& parameter : host.parameters) checkValue(parameter, "parameters");
     if (host.visibility)
@@ -97,14 +96,13 @@ bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::D
         const std::string key = "frame/" + std::to_string(i);
         const fx::CompiledTechnique* technique = effect.findTechnique(step.technique);
         if (!technique) {
-            fail(step.loc, key, "the effect has no technique '" + step.technique + "'");
+            fail(step.loc, fx::DiagId::HostStepTechniqueUnknown, {key, step.technique});
             continue;
         }
         if (!step.pass.empty()) {
             bool found = false;
             for (const fx::CompiledPass& pass : technique->passes) found = found || pass.name == step.pass;
-            if (!found)
-                fail(step.loc, key, "technique '" + step.technique + "' has no pass '" + step.pass + "'");
+            if (!found) fail(step.loc, fx::DiagId::HostStepPassUnknown, {key, step.technique, step.pass});
         }
     }
     return ok;

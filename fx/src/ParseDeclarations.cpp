@@ -334,11 +334,10 @@ std::vector<Annotation> Parser::parseAnnotations() {
             // `string UIName = 3;` and `float UIMin = "low";` were kept and read as 0 or "" later.
             const bool isString = annotation.value.kind == Expr::Kind::String;
             if (annotation.type.base == BaseType::String && !isString)
-                error(DiagId::InvalidAnnotation, annotation.value.loc,
-                      {annotation.name, "expected a string, found '" + annotation.value.str() + "'"});
+                error(DiagId::AnnotationStringExpected, annotation.value.loc,
+                      {annotation.name, annotation.value.str()});
             else if (annotation.type.isNumeric() && isString)
-                error(DiagId::InvalidAnnotation, annotation.value.loc,
-                      {annotation.name, "expected a number, found a string"});
+                error(DiagId::AnnotationNumberExpected, annotation.value.loc, {annotation.name});
             annotations.push_back(std::move(annotation));
             if (!accept(",")) break;
         }

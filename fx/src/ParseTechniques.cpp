@@ -116,7 +116,7 @@ void Parser::parseSetCall(Pass& pass, const Token& name) {
         return;
     }
     if (args.size() != 1) {
-        error(DiagId::InvalidStateValue, name.loc, {name.text, "expected one shader"});
+        error(DiagId::ShaderStateArgumentCount, name.loc, {name.text});
         return;
     }
     Expr value = std::move(args[0]);
@@ -254,7 +254,7 @@ std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
             Expr& v = state.value;
             if (v.kind == Expr::Kind::Identifier) v.kind = Expr::Kind::TextureRef;  // (t) and t
             if (v.kind != Expr::Kind::TextureRef) {
-                error(DiagId::InvalidStateValue, v.loc, {state.name, "expected <texture>"});
+                error(DiagId::TextureStateValueExpected, v.loc, {state.name});
                 continue;
             }
             const Parameter* texture = mEffect.findParameter(v.text);

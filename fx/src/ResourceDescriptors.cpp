@@ -178,9 +178,9 @@ void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
         std::optional<Value> v = array ? eval(a->value, &scalar) : std::nullopt;
         const float n = v ? v->asFloat() : 0.0f;
         if (!array)
-            error(DiagId::InvalidAnnotation, a->loc, {"ArraySize", "only a texture array has elements"});
+            error(DiagId::ArraySizeWithoutArray, a->loc, {});
         else if (!(n >= 1 && n <= 2048 && n == std::floor(n)))
-            error(DiagId::InvalidAnnotation, a->value.loc, {"ArraySize", "must be an integer in 1..2048"});
+            error(DiagId::ArraySizeInvalid, a->value.loc, {});
         else
             t.arraySize = static_cast<int>(n);
     }
@@ -209,18 +209,15 @@ void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
 // A8R8G8B8): a texture the runtime generates once when it creates the effect.
 void Compiler::procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t) {
     if (t.kind != TextureDesc::Kind::Runtime || t.type != BaseType::Texture2D) {
-        error(DiagId::InvalidAnnotation, annotation.loc,
-              {"Procedural", "only a 2D texture that is not a render target can be procedural"});
+        error(DiagId::ProceduralTextureKind, annotation.loc, {});
         return;
     }
     if (annotation.value.kind != Expr::Kind::String || !equalsIgnoreCase(annotation.value.text, "noise")) {
-        error(DiagId::InvalidAnnotation, annotation.value.loc,
-              {"Procedural", "'" + annotation.value.str() + "' is not a generator (known: \"noise\")"});
+        error(DiagId::ProceduralGeneratorUnknown, annotation.value.loc, {annotation.value.str()});
         return;
     }
     if (isDepthFormat(t.format)) {
-        error(DiagId::InvalidAnnotation, annotation.loc,
-              {"Procedural", "a noise texture needs a colour format"});
+        error(DiagId::ProceduralDepthFormat, annotation.loc, {});
         return;
     }
     t.kind = TextureDesc::Kind::Procedural;
@@ -230,8 +227,7 @@ void Compiler::procedural(const Parameter& p, const Annotation& annotation, Text
         if (auto v = eval(seed->value, &scalar)) {
             const float value = v->asFloat();
             if (!(value >= 0 && value <= 4294967295.0f && value == std::floor(value)))
-                error(DiagId::InvalidAnnotation, seed->value.loc,
-                      {"Seed", "must be an integer between 0 and 4294967295"});
+                error(DiagId::ProceduralSeedInvalid, seed->value.loc, {});
             else
                 t.seed = static_cast<uint32_t>(value);
         }
@@ -253,8 +249,7 @@ void Compiler::applySamplerState(const StateAssignment& a, BaseType samplerType,
             error(DiagId::UnknownIdentifier, a.value.loc, {a.value.text});
         else if (const TypeDesc& type = mEffect.parameters[it->second].type; !type.isTexture())
             // Declared, but of the wrong type: say so in the author's terms.
-            error(DiagId::InvalidStateValue, a.value.loc,
-                  {a.name, "'" + a.value.text + "' is a " + type.hlslName() + " parameter, not a texture"});
+            error(DiagId::TextureStateNotTexture, a.value.loc, {a.name, a.value.text, type.hlslName()});
         else
             s.texture = it->second;
         // An untyped `texture` sampled through a samplerCUBE or sampler3D holds that kind.

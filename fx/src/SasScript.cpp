@@ -94,13 +94,14 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                 command.index = name[17] - '0';
                 known = true;
             }
-            auto invalid = [&](const std::string& why) {
-                diagnostics.report(DiagId::InvalidScriptCommand, loc, {name, why});
+            auto invalid = [&](DiagId id, std::vector<std::string> args = {}) {
+                args.insert(args.begin(), name);
+                diagnostics.report(id, loc, args);
             };
             if (!known) {
                 diagnostics.report(DiagId::UnknownScriptCommand, loc, {name});
             } else if (equals == std::string_view::npos && command.kind != ScriptCommand::Kind::LoopEnd) {
-                invalid("expected '=' and a value");
+                invalid(DiagId::ScriptValueMissing);
             } else {
                 bool ok = true;
                 switch (command.kind) {
@@ -143,7 +144,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                                 what.push_back(ScriptCommand::ClearWhat::Stencil);
                             if (!color && !all && !depthStencil && !equalsIgnoreCase(word, "Depth") &&
                                 !equalsIgnoreCase(word, "ZBuffer") && !equalsIgnoreCase(word, "Stencil"))
-                                ok = false, invalid("expected Color, Depth, Stencil, DepthStencil or All");
+                                ok = false, invalid(DiagId::ScriptClearInvalid);
                         }
                         if (!ok) break;
                         command.clear = what.front();
@@ -161,7 +162,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         else if (equalsIgnoreCase(value, "Buffer"))
                             command.draw = ScriptCommand::DrawWhat::Buffer;
                         else
-                            ok = false, invalid("expected Geometry or Buffer");
+                            ok = false, invalid(DiagId::ScriptDrawInvalid);
                         break;
                     case ScriptCommand::Kind::Pass:
                     case ScriptCommand::Kind::ClearSetColor:
@@ -170,11 +171,11 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                     case ScriptCommand::Kind::LoopByCount:
                     case ScriptCommand::Kind::LoopGetIndex:
                     case ScriptCommand::Kind::Dispatch:
-                        if (value.empty()) ok = false, invalid("expected a value");
+                        if (value.empty()) ok = false, invalid(DiagId::ScriptValueEmpty);
                         break;
                     case ScriptCommand::Kind::Technique: {
                         if (value.empty()) {
-                            ok = false, invalid("expected a technique name");
+                            ok = false, invalid(DiagId::ScriptTechniqueNameExpected);
                             break;
                         }
                         // Condition?A:B, and FX Composer's list of alternatives
@@ -193,7 +194,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                                 command.selectorAlternatives.begin(), command.selectorAlternatives.end(),
                                 [](const std::string& name) { return name.empty(); });
                             if (command.selectorCondition.empty() || emptyName) {
-                                ok = false, invalid("expected Condition?TechniqueA:TechniqueB");
+                                ok = false, invalid(DiagId::ScriptTechniqueConditionInvalid);
                                 break;
                             }
                             command.selectorTrue = command.selectorAlternatives.front();
@@ -222,10 +223,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                             std::all_of(view.begin() + static_cast<std::ptrdiff_t>(prefix), view.end(),
                                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
                         if (light.empty() || !digits) {
-                            ok = false, invalid(
-                                            "expected lightN, lightN.cascadeK or lightN.faceK, K a "
-                                            "sub-view index, not '" +
-                                            value + "'");
+                            ok = false, invalid(DiagId::ScriptRenderPortInvalid, {value});
                             break;
                         }
                         command.value = light;

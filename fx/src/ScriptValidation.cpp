@@ -104,12 +104,10 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 if (numbers && numbers->size() == 1 && !mIndex.count(c.value)) {
                     const double count = numbers->front();
                     if (!(count >= 0) || std::floor(count) != count)
-                        error(DiagId::InvalidScriptCommand, c.loc,
-                              {"LoopByCount", "'" + c.value + "' is not a non-negative whole count"});
+                        error(DiagId::ScriptLoopCountNotWhole, c.loc, {c.value});
                     else if (count > mOptions.maxScriptLoopCount)
-                        error(DiagId::InvalidScriptCommand, c.loc,
-                              {"LoopByCount", c.value + " iterations exceed the limit of " +
-                                                  std::to_string(mOptions.maxScriptLoopCount)});
+                        error(DiagId::ScriptLoopCountTooLarge, c.loc,
+                              {c.value, std::to_string(mOptions.maxScriptLoopCount)});
                 }
                 break;
             }
@@ -124,12 +122,7 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                     valid = valid && number && number->size() == 1 && number->front() >= 0 &&
                             std::floor(number->front()) == number->front();
                 }
-                if (!valid || terms.size() > 3)
-                    error(DiagId::InvalidScriptCommand, c.loc,
-                          {"Dispatch",
-                           "expected 1 to 3 thread-group counts, each a whole number or a parameter, "
-                           "not '" +
-                               c.value + "'"});
+                if (!valid || terms.size() > 3) error(DiagId::ScriptDispatchCountsInvalid, c.loc, {c.value});
                 break;
             }
             case ScriptCommand::Kind::LoopEnd:

@@ -22,9 +22,8 @@ bool StateAssignments::setStateObject(Pass& pass, const Token& name, StateObject
                             : kind == StateObjectKind::DepthStencil ? 2
                                                                     : 3;
     if (args.size() != expected) {
-        error(DiagId::InvalidStateValue, name.loc,
-              {name.text, "expected " + std::to_string(expected) + " argument(s), found " +
-                              std::to_string(args.size())});
+        error(DiagId::StateObjectArgumentCount, name.loc,
+              {name.text, std::to_string(expected), std::to_string(args.size())});
         return false;
     }
     const Expr& object = args[0];
@@ -39,14 +38,14 @@ bool StateAssignments::setStateObject(Pass& pass, const Token& name, StateObject
             return false;
         }
         if (!p->type.isStateObject() || objectKind(p->type.base) != kind) {
-            error(DiagId::InvalidStateValue, object.loc,
-                  {name.text, "'" + object.text + "' is not a " + std::string(stateObjectTypeName(kind))});
+            error(DiagId::StateObjectOfOtherKind, object.loc,
+                  {name.text, object.text, std::string(stateObjectTypeName(kind))});
             return false;
         }
         block = &p->objectState;
     } else {
-        error(DiagId::InvalidStateValue, object.loc,
-              {name.text, "expected the name of a " + std::string(stateObjectTypeName(kind))});
+        error(DiagId::StateObjectNameExpected, object.loc,
+              {name.text, std::string(stateObjectTypeName(kind))});
         return false;
     }
     expandStateObject(kind, *block, name.loc, pass.states);
@@ -115,8 +114,8 @@ void StateAssignments::expandStateObject(StateObjectKind kind, const std::vector
             const StateAssignment* ccw = find("FrontCounterClockwise", 0);
             double cull = field->defaultValue, frontCcw = 0;
             if ((a && !constantValue(a->value, cull)) || (ccw && !constantValue(ccw->value, frontCcw))) {
-                error(DiagId::InvalidStateValue, (a && !constantValue(a->value, cull) ? a : ccw)->value.loc,
-                      {a ? a->name : ccw->name, "must be a constant (it decides which winding is culled)"});
+                error(DiagId::CullWindingNotConstant,
+                      (a && !constantValue(a->value, cull) ? a : ccw)->value.loc, {a ? a->name : ccw->name});
                 continue;
             }
             double d3d9 = cull == 1 ? 1 : (frontCcw != 0) == (cull == 3) ? 2 : 3;
@@ -212,8 +211,7 @@ void StateAssignments::validateShaderValue(StateAssignment& state) {
             !p->type.arrayDims.empty())
             return;  // an element of a shader array (EffectCompiler resolves the index)
     }
-    error(DiagId::InvalidStateValue, v.loc,
-          {state.name, "expected 'compile profile Function(...)', a shader variable or NULL"});
+    error(DiagId::ShaderStateValueExpected, v.loc, {state.name});
 }
 
 bool isSamplerRegisterState(std::string_view name) {
@@ -229,18 +227,16 @@ bool StateAssignments::resolveSamplerRegisterState(StateAssignment& state) {
                                        ? mEffect.findParameter(v.text)
                                        : nullptr;
         if (!sampler) {
-            error(v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
-                      ? DiagId::UnknownIdentifier
-                      : DiagId::InvalidStateValue,
-                  v.loc,
-                  v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
-                      ? std::vector<std::string>{v.text}
-                      : std::vector<std::string>{state.name, "expected (samplerName)"});
+            error(
+                v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef
+                    ? DiagId::UnknownIdentifier
+                    : DiagId::SamplerStateValueExpected,
+                v.loc,
+                {v.kind == Expr::Kind::Identifier || v.kind == Expr::Kind::TextureRef ? v.text : state.name});
             return false;
         }
         if (!sampler->type.isSampler() || !sampler->type.arrayDims.empty()) {
-            error(DiagId::InvalidStateValue, v.loc,
-                  {state.name, "'" + v.text + "' is a " + sampler->type.hlslName() + ", not a sampler"});
+            error(DiagId::SamplerStateNotSampler, v.loc, {state.name, v.text, sampler->type.hlslName()});
             return false;
         }
         v.kind = Expr::Kind::Identifier;
@@ -255,7 +251,7 @@ bool StateAssignments::resolveSamplerRegisterState(StateAssignment& state) {
     }
     if (v.kind == Expr::Kind::Identifier) v.kind = Expr::Kind::TextureRef;  // (t) and t
     if (v.kind != Expr::Kind::TextureRef) {
-        error(DiagId::InvalidStateValue, v.loc, {state.name, "expected <texture>"});
+        error(DiagId::TextureStateValueExpected, v.loc, {state.name});
         return false;
     }
     const Parameter* texture = mEffect.findParameter(v.text);
@@ -264,9 +260,7 @@ bool StateAssignments::resolveSamplerRegisterState(StateAssignment& state) {
         return false;
     }
     if (!texture->type.isTexture()) {
-        error(
-            DiagId::InvalidStateValue, v.loc,
-            {state.name, "'" + v.text + "' is a " + texture->type.hlslName() + " parameter, not a texture"});
+        error(DiagId::TextureStateNotTexture, v.loc, {state.name, v.text, texture->type.hlslName()});
         return false;
     }
     return true;
@@ -328,8 +322,7 @@ void StateAssignments::resolveStateValue(Expr& e, StateDomain domain, const std:
             }
             return;
         case Expr::Kind::String:  // `ZEnable = "yes";` was kept and read as 0
-            if (domain != StateDomain::TextureRef)
-                error(DiagId::InvalidStateValue, e.loc, {stateName, "expected a value, found a string"});
+            if (domain != StateDomain::TextureRef) error(DiagId::StateValueIsString, e.loc, {stateName});
             return;
         case Expr::Kind::Unary:
         case Expr::Kind::Binary:

@@ -107,8 +107,7 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
         if (vertices >= 1.0f && vertices <= float(1 << 24) && vertices == float(int(vertices)))
             request.capacity = int(vertices);
         else
-            error(DiagId::InvalidAnnotation, a->loc,
-                  {"StreamOutVertices", "expected a whole number of vertices, 1 to 16777216"});
+            error(DiagId::StreamOutVerticesInvalid, a->loc, {});
     }
 
     if (so->otherStreams) return unsupported(DiagId::StreamOutOtherStreams, call.loc, {});
@@ -162,10 +161,8 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
 void Compiler::drawAutoSource(const Pass& p, CompiledPass& pass) {
     const Annotation* a = p.annotation("DrawAuto");
     if (!a || !mTechnique) return;
-    const std::string expected = "expected the name of a pass of technique '" + mTechnique->name +
-                                 "' whose geometry shader streams out (ConstructGSWithSO)";
     if (a->value.kind != Expr::Kind::String)
-        return error(DiagId::InvalidAnnotation, a->loc, {"DrawAuto", expected});
+        return error(DiagId::DrawAutoNotString, a->loc, {mTechnique->name});
     for (size_t i = 0; i < mTechnique->passes.size(); ++i) {
         const Pass& source = mTechnique->passes[i];
         if (!equalsIgnoreCase(source.name, a->value.text)) continue;
@@ -182,7 +179,7 @@ void Compiler::drawAutoSource(const Pass& p, CompiledPass& pass) {
             return;
         }
     }
-    error(DiagId::InvalidAnnotation, a->loc, {"DrawAuto", expected + "; '" + a->value.text + "' is not one"});
+    error(DiagId::DrawAutoNotStreamingPass, a->loc, {mTechnique->name, a->value.text});
 }
 
 void Compiler::resolveStreamOutputs() {

@@ -88,9 +88,8 @@ std::vector<report::TuneParameter> tunableParameters(const fx::CompiledEffect& e
         const std::optional<double> max = annotationNumber(parameter, "UIMax");
         if (!min || !max) continue;  // no range to search
         if (*min > *max) {
-            sink.report(fx::DiagId::InvalidAnnotation, parameter.loc,
-                        {"UIMin", "UIMin " + numberText(*min) + " of '" + parameter.name +
-                                      "' is above its UIMax " + numberText(*max) + ": nothing to search"});
+            sink.report(fx::DiagId::TuneRangeEmpty, parameter.loc,
+                        {numberText(*min), parameter.name, numberText(*max)});
             continue;
         }
         p.kind = type.base == fx::BaseType::Int || type.base == fx::BaseType::UInt
@@ -103,13 +102,11 @@ std::vector<report::TuneParameter> tunableParameters(const fx::CompiledEffect& e
         if (scale == "log") {
             p.logScale = *min > 0.0;
             if (!p.logScale)
-                sink.report(fx::DiagId::InvalidAnnotation, parameter.loc,
-                            {"UIScale", "a log scale needs UIMin > 0, and '" + parameter.name +
-                                            "' has UIMin " + numberText(*min)});
+                sink.report(fx::DiagId::TuneLogScaleMinimum, parameter.loc,
+                            {parameter.name, numberText(*min)});
         } else if (!scale.empty() && scale != "linear") {
-            sink.report(fx::DiagId::InvalidAnnotation, parameter.loc,
-                        {"UIScale", "'" + annotationText(parameter, "UIScale") + "' of '" + parameter.name +
-                                        "' is neither \"linear\" nor \"log\""});
+            sink.report(fx::DiagId::TuneScaleUnknown, parameter.loc,
+                        {annotationText(parameter, "UIScale"), parameter.name});
         }
         tunable.push_back(p);
     }

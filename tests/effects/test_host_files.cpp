@@ -137,12 +137,13 @@ TEST(HostFiles, WrongValuesAreLocatedAtTheValue) {
 })";
     fx::DiagnosticList diagnostics;
     EXPECT_FALSE(runtime::parseHostJson(text, "h.json", diagnostics));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 2, 33, "not a colour format"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 2, 50, "whole numbers"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 3, 25, "'WorldViewSideways' is not"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 3, 63, "matrices only"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 5, 34, "no target named 'Nowhere'"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 5, 53, "\"geometry\""));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostTargetFormatInvalid, 2, 33, "not a colour format"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostTargetSizeInvalid, 2, 50, "whole numbers"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostValueUnknown, 3, 25, "'WorldViewSideways' is not"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostProductNotMatrix, 3, 63, "matrices only"));
+    EXPECT_TRUE(
+        reportsAt(diagnostics, fx::DiagId::HostStepUnknownTarget, 5, 34, "no target named 'Nowhere'"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostStepDrawInvalid, 5, 53, "\"geometry\""));
 }
 
 TEST(HostFiles, NamesTheEffectLacksAreLocatedAtTheFile) {
@@ -162,9 +163,10 @@ TEST(HostFiles, NamesTheEffectLacksAreLocatedAtTheFile) {
         runtime::EffectRenderer::create(compiled, diagnostics);
     ASSERT_TRUE(renderer) << diagnostics.str();
     EXPECT_FALSE(renderer->setHostFile(host, diagnostics));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 2, 52, "no parameter 'g_missing'"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 2, 72, "does not fit"));
-    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::SceneInvalidValue, 3, 43, "no technique 'RenderNothing'"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostParameterUnknown, 2, 52, "no parameter 'g_missing'"));
+    EXPECT_TRUE(reportsAt(diagnostics, fx::DiagId::HostValueSizeMismatch, 2, 72, "does not fit"));
+    EXPECT_TRUE(
+        reportsAt(diagnostics, fx::DiagId::HostStepTechniqueUnknown, 3, 43, "no technique 'RenderNothing'"));
 }
 
 }  // namespace

@@ -183,9 +183,10 @@ TEST(LispsmEffect, NOptParameterReachesTheProvider) {
     EXPECT_NE(error->loc.line, 0);
 }
 
-const fx::Diagnostic* findInvalidAnnotation(const fx::DiagnosticList& diagnostics) {
+const fx::Diagnostic* findParameterizationError(const fx::DiagnosticList& diagnostics) {
     for (const fx::Diagnostic& d : diagnostics.items())
-        if (d.id == fx::DiagId::InvalidAnnotation) return &d;
+        if (d.id == fx::DiagId::ParameterizationUnknown || d.id == fx::DiagId::ParameterizationConflict)
+            return &d;
     return nullptr;
 }
 
@@ -219,8 +220,9 @@ fx::DiagnosticList renderReporting(const std::string& source) {
 
 TEST(ParameterizationAnnotation, UnknownNameIsAnErrorAtTheAnnotation) {
     const fx::DiagnosticList diagnostics = renderReporting(effectWith("Trapezoidal", "Trapezoidal"));
-    const fx::Diagnostic* error = findInvalidAnnotation(diagnostics);
+    const fx::Diagnostic* error = findParameterizationError(diagnostics);
     ASSERT_NE(error, nullptr) << diagnostics.str();
+    EXPECT_EQ(error->id, fx::DiagId::ParameterizationUnknown);
     EXPECT_EQ(error->loc.line, 1);
     EXPECT_NE(error->message.find("LiSPSM"), std::string::npos) << error->message;
     EXPECT_NE(error->message.find("TSM"), std::string::npos) << error->message;
@@ -228,15 +230,16 @@ TEST(ParameterizationAnnotation, UnknownNameIsAnErrorAtTheAnnotation) {
 
 TEST(ParameterizationAnnotation, TwoNamesForOneLightAreAnError) {
     const fx::DiagnosticList diagnostics = renderReporting(effectWith("Focused", "LiSPSM"));
-    const fx::Diagnostic* error = findInvalidAnnotation(diagnostics);
+    const fx::Diagnostic* error = findParameterizationError(diagnostics);
     ASSERT_NE(error, nullptr) << diagnostics.str();
+    EXPECT_EQ(error->id, fx::DiagId::ParameterizationConflict);
     EXPECT_EQ(error->loc.line, 2);
     EXPECT_NE(error->message.find("Focused"), std::string::npos) << error->message;
 }
 
 TEST(ParameterizationAnnotation, OneNameIsAccepted) {
     const fx::DiagnosticList diagnostics = renderReporting(effectWith("LiSPSM", "lispsm"));
-    EXPECT_EQ(findInvalidAnnotation(diagnostics), nullptr) << diagnostics.str();
+    EXPECT_EQ(findParameterizationError(diagnostics), nullptr) << diagnostics.str();
 }
 
 }  // namespace

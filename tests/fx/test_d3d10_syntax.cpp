@@ -297,7 +297,7 @@ technique10 T { pass Plain < string DrawAuto = "Plain"; > { SetVertexShader(Comp
 )"),
                             diagnostics);
     EXPECT_FALSE(compiled);
-    const Diagnostic* error = find(diagnostics, DiagId::InvalidAnnotation);
+    const Diagnostic* error = find(diagnostics, DiagId::DrawAutoNotStreamingPass);
     ASSERT_NE(error, nullptr) << diagnostics.str();
     EXPECT_NE(str(*error).find("d3d10.fx:17:37: error: invalid annotation 'DrawAuto'"), std::string::npos)
         << str(*error);

@@ -386,7 +386,7 @@ TEST(EffectCompiler, ASamplerTextureOfTheWrongTypeSaysSo) {
         "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
-    EXPECT_EQ(diags.items()[0].id, DiagId::InvalidStateValue) << diags.str();
+    EXPECT_EQ(diags.items()[0].id, DiagId::TextureStateNotTexture) << diags.str();
     EXPECT_EQ(diags.items()[0].loc.line, 2) << diags.str();
     EXPECT_EQ(diags.items()[0].loc.column, 39) << diags.str();  // at <Exponent>
     EXPECT_NE(diags.str().find("'Exponent' is a float parameter, not a texture"), std::string::npos)
@@ -507,7 +507,7 @@ technique t
     EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
     ASSERT_TRUE(diags.hasErrors());
     const Diagnostic& error = diags.items().back();
-    EXPECT_EQ(error.id, DiagId::InvalidAnnotation);
+    EXPECT_EQ(error.id, DiagId::LeaveOutWhenInvalid);
     EXPECT_EQ(error.loc.file, "leave_out.fx");
     EXPECT_EQ(error.loc.line, 6);
     EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);

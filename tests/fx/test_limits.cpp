@@ -80,12 +80,12 @@ TEST(Limits, LiteralLoopCountIsCheckedAtCompileTime) {
     EXPECT_EQ(compile(withLoop(1024), options).maxScriptLoopCount, 1024);
     Result tooMany = compile(withLoop(1025), options);
     EXPECT_FALSE(tooMany.compiled);
-    EXPECT_TRUE(reports(tooMany, DiagId::InvalidScriptCommand, 3, 32));
+    EXPECT_TRUE(reports(tooMany, DiagId::ScriptLoopCountTooLarge, 3, 32));
 
     options.maxScriptLoopCount = 8;
     EXPECT_TRUE(compile(withLoop(8), options).compiled);
     EXPECT_EQ(compile(withLoop(8), options).maxScriptLoopCount, 8);  // parameter counts: the same limit
-    EXPECT_TRUE(reports(compile(withLoop(9), options), DiagId::InvalidScriptCommand, 3, 32));
+    EXPECT_TRUE(reports(compile(withLoop(9), options), DiagId::ScriptLoopCountTooLarge, 3, 32));
 }
 
 TEST(Limits, IncludeDepthAndSourceSizeAreOptions) {

@@ -84,7 +84,12 @@ TEST(SasScript, InvalidValues) {
         parseSasScript("Clear=Everything;Draw=Scene;Pass=;Technique=a?;Pass", SourceLoc{"s.fx", 5, 1}, diags);
     EXPECT_TRUE(commands.empty());
     ASSERT_EQ(diags.errorCount(), 5u) << diags.str();
-    for (const Diagnostic& d : diags.items()) EXPECT_EQ(d.id, DiagId::InvalidScriptCommand);
+    // One id per message: an unknown buffer, an unknown draw, an empty value, a condition without its
+    // techniques, a command without '='.
+    const DiagId expected[] = {DiagId::ScriptClearInvalid, DiagId::ScriptDrawInvalid,
+                               DiagId::ScriptValueEmpty, DiagId::ScriptTechniqueConditionInvalid,
+                               DiagId::ScriptValueMissing};
+    for (size_t i = 0; i < diags.items().size(); ++i) EXPECT_EQ(diags.items()[i].id, expected[i]) << i;
     EXPECT_EQ(diags.items()[1].loc.column, 18);
 }
 

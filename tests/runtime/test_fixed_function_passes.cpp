@@ -286,7 +286,7 @@ TEST(FixedFunctionPasses, WhatIsNotGeneratedIsALocatedError) {
         {"  WorldTransform[0] = <World>; ColorOp[0] = BumpEnvMap;", fx::DiagId::FixedFunctionUnsupported, 32,
          "the fixed-function pipeline generated for this pass cannot run the operation 22 of texture stage "
          "0"},
-        {"  WorldTransform[0] = <World>; ColorOp[0] = <Op>;", fx::DiagId::InvalidStateValue, 45,
+        {"  WorldTransform[0] = <World>; ColorOp[0] = <Op>;", fx::DiagId::FixedFunctionStateNotConstant, 45,
          "invalid value for state 'ColorOp': must be a constant"},
         {"  Texture[0] = <T>; ColorOp[1] = Add; ColorOp[2] = Modulate;", fx::DiagId::FixedFunctionUnsupported,
          39, "the fixed-function pipeline generated for this pass cannot run texture stage 2"},

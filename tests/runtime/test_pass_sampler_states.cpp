@@ -157,7 +157,7 @@ TEST(PassSamplerStates, UnknownSamplerOrTextureIsALocatedError) {
         const char* message;
     } expected[] = {
         {fx::DiagId::UnknownIdentifier, 16, "unknown identifier 'Missing'"},
-        {fx::DiagId::InvalidStateValue, 41,
+        {fx::DiagId::SamplerStateNotSampler, 41,
          "invalid value for state 'Sampler': 'T' is a texture, not a sampler"},
         {fx::DiagId::UnknownStateValue, 60, "'Bilinear' is not a value of state 'MinFilter'"},
     };

@@ -127,7 +127,7 @@ TEST(PointStates, SpritesFromAParameterAreALocatedError) {
     EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics));
     ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics.str();
     const fx::Diagnostic& d = diagnostics.items()[0];
-    EXPECT_EQ(d.id, fx::DiagId::InvalidStateValue);
+    EXPECT_EQ(d.id, fx::DiagId::PointSpriteEnableNotConstant);
     EXPECT_EQ(d.loc.line, 3);
     EXPECT_EQ(d.loc.column, 24);
     EXPECT_EQ(d.message,

@@ -34,8 +34,6 @@ FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
 FX_DIAGNOSTIC(Redefinition, Error, "redefinition of '{0}'")
 FX_DIAGNOSTIC(UnknownState, Error, "unknown state '{0}'")
 FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (expected one of: {2})")
-FX_DIAGNOSTIC(InvalidStateValue, Error, "invalid value for state '{0}': {1}")
-FX_DIAGNOSTIC(InvalidAnnotation, Error, "invalid annotation '{0}': {1}")
 FX_DIAGNOSTIC(InvalidInitializer, Error, "invalid initializer for '{0}': {1}")
 FX_DIAGNOSTIC(TechniqueRefused, Warning, "technique '{0}' is left out: {1}")
 FX_DIAGNOSTIC(AllTechniquesRefused, Error,
@@ -80,10 +78,91 @@ FX_DIAGNOSTIC(MultisampleSampleCountInvalid, Error,
 FX_DIAGNOSTIC(WriteMaskTargetNeverBound, Error,
               "RenderTargetWriteMask[{0}] masks a render target the runtime never binds (it draws into four)")
 FX_DIAGNOSTIC(StateTakesNoTargetIndex, Error, "{0} takes no render-target index")
+// Invalid state values, one id per message ({0}: the state).
+FX_DIAGNOSTIC(StateObjectArgumentCount, Error,
+              "invalid value for state '{0}': expected {1} argument(s), found {2}")
+FX_DIAGNOSTIC(StateObjectOfOtherKind, Error, "invalid value for state '{0}': '{1}' is not a {2}")
+FX_DIAGNOSTIC(StateObjectNameExpected, Error, "invalid value for state '{0}': expected the name of a {1}")
+FX_DIAGNOSTIC(CullWindingNotConstant, Error,
+              "invalid value for state '{0}': must be a constant (it decides which winding is culled)")
+FX_DIAGNOSTIC(ShaderStateValueExpected, Error,
+              "invalid value for state '{0}': expected 'compile profile Function(...)', a shader variable or "
+              "NULL")
+FX_DIAGNOSTIC(ShaderStateArgumentCount, Error, "invalid value for state '{0}': expected one shader")
+FX_DIAGNOSTIC(SamplerStateValueExpected, Error, "invalid value for state '{0}': expected (samplerName)")
+FX_DIAGNOSTIC(SamplerStateNotSampler, Error, "invalid value for state '{0}': '{1}' is a {2}, not a sampler")
+FX_DIAGNOSTIC(TextureStateValueExpected, Error, "invalid value for state '{0}': expected <texture>")
+FX_DIAGNOSTIC(TextureStateNotTexture, Error,
+              "invalid value for state '{0}': '{1}' is a {2} parameter, not a texture")
+FX_DIAGNOSTIC(StateValueIsString, Error, "invalid value for state '{0}': expected a value, found a string")
+FX_DIAGNOSTIC(PointSpriteEnableNotConstant, Error,
+              "invalid value for state 'PointSpriteEnable': must be a constant (it decides what the pixel "
+              "shader reads)")
+FX_DIAGNOSTIC(FixedFunctionStateNotConstant, Error,
+              "invalid value for state '{0}': must be a constant (it chooses the code of the fixed-function "
+              "pipeline)")
+// Invalid annotations, one id per message.
+FX_DIAGNOSTIC(AnnotationStringExpected, Error, "invalid annotation '{0}': expected a string, found '{1}'")
+FX_DIAGNOSTIC(AnnotationNumberExpected, Error, "invalid annotation '{0}': expected a number, found a string")
+FX_DIAGNOSTIC(CullClosedOnlyInvalid, Error, "invalid annotation 'CullClosedOnly': expected true or false")
+FX_DIAGNOSTIC(LeaveOutWhenInvalid, Error,
+              "invalid annotation 'LeaveOutWhen': expected \"NoClosedObjects\" or \"NoLightArea\"")
+FX_DIAGNOSTIC(FilterReachTexelsInvalid, Error,
+              "invalid annotation 'FilterReachTexels': expected a number of texels")
+FX_DIAGNOSTIC(ArraySizeWithoutArray, Error,
+              "invalid annotation 'ArraySize': only a texture array has elements")
+FX_DIAGNOSTIC(ArraySizeInvalid, Error, "invalid annotation 'ArraySize': must be an integer in 1..2048")
+FX_DIAGNOSTIC(ProceduralTextureKind, Error,
+              "invalid annotation 'Procedural': only a 2D texture that is not a render target can be "
+              "procedural")
+FX_DIAGNOSTIC(ProceduralGeneratorUnknown, Error,
+              "invalid annotation 'Procedural': '{0}' is not a generator (known: \"noise\")")
+FX_DIAGNOSTIC(ProceduralDepthFormat, Error,
+              "invalid annotation 'Procedural': a noise texture needs a colour format")
+FX_DIAGNOSTIC(ProceduralSeedInvalid, Error,
+              "invalid annotation 'Seed': must be an integer between 0 and 4294967295")
+FX_DIAGNOSTIC(StreamOutVerticesInvalid, Error,
+              "invalid annotation 'StreamOutVertices': expected a whole number of vertices, 1 to 16777216")
+FX_DIAGNOSTIC(DrawAutoNotString, Error,
+              "invalid annotation 'DrawAuto': expected the name of a pass of technique '{0}' whose geometry "
+              "shader streams out (ConstructGSWithSO)")
+FX_DIAGNOSTIC(DrawAutoNotStreamingPass, Error,
+              "invalid annotation 'DrawAuto': expected the name of a pass of technique '{0}' whose geometry "
+              "shader streams out (ConstructGSWithSO); '{1}' is not one")
+FX_DIAGNOSTIC(ParameterizationUnknown, Error,
+              "invalid annotation 'Parameterization': expected \"Uniform\", \"Focused\", \"LiSPSM\", "
+              "\"TSM\", \"PSM\", \"PSMCube\" or \"Cascaded\"")
+FX_DIAGNOSTIC(ParameterizationConflict, Error,
+              "invalid annotation 'Parameterization': light '{0}' is already parameterized as '{1}'")
+FX_DIAGNOSTIC(ExpectationUnknown, Error,
+              "invalid annotation '{0}': not an expectation shadowfx check knows (ExpectScenes, "
+              "ExpectMisclassifiedBelow, ExpectPenumbraMaeBelow, ExpectAreaRadius, ExpectMapSize, "
+              "ExpectShadows)")
+FX_DIAGNOSTIC(ExpectationNumberExpected, Error, "invalid annotation '{0}': expected a number")
+FX_DIAGNOSTIC(ExpectScenesInvalid, Error,
+              "invalid annotation 'ExpectScenes': expected a string of comma-separated scene names or .json "
+              "files")
+FX_DIAGNOSTIC(ExpectationSceneBoundSyntax, Error,
+              "invalid annotation '{0}': expected a number, or per-scene bounds \"SCENE=BOUND, ...\", got "
+              "'{1}'")
+FX_DIAGNOSTIC(ExpectationSceneNotExpected, Error,
+              "invalid annotation '{0}': scene '{1}' is not one of ExpectScenes")
+FX_DIAGNOSTIC(ExpectationSceneRepeated, Error, "invalid annotation '{0}': scene '{1}' is given twice")
+FX_DIAGNOSTIC(ExpectationSceneMissing, Error,
+              "invalid annotation '{0}': no bound for scene '{1}' of ExpectScenes")
+FX_DIAGNOSTIC(ExpectAreaRadiusInvalid, Error,
+              "invalid annotation 'ExpectAreaRadius': expected a radius above 0")
+FX_DIAGNOSTIC(ExpectMapSizeInvalid, Error,
+              "invalid annotation 'ExpectMapSize': expected an integer between 1 and 16384")
+FX_DIAGNOSTIC(TuneRangeEmpty, Error,
+              "invalid annotation 'UIMin': UIMin {0} of '{1}' is above its UIMax {2}: nothing to search")
+FX_DIAGNOSTIC(TuneLogScaleMinimum, Error,
+              "invalid annotation 'UIScale': a log scale needs UIMin > 0, and '{0}' has UIMin {1}")
+FX_DIAGNOSTIC(TuneScaleUnknown, Error,
+              "invalid annotation 'UIScale': '{0}' of '{1}' is neither \"linear\" nor \"log\"")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
-FX_DIAGNOSTIC(InvalidScriptCommand, Error, "invalid script command '{0}': {1}")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
 FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
@@ -96,6 +175,36 @@ FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "LoopByCount without LoopEnd")
 FX_DIAGNOSTIC(ScriptLoopEndWithoutLoop, Error, "LoopEnd without LoopByCount")
 FX_DIAGNOSTIC(ScriptLoopIndexOutsideLoop, Error, "LoopGetIndex outside a loop")
 FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
+// Invalid script commands, one id per message.
+FX_DIAGNOSTIC(ScriptValueMissing, Error, "invalid script command '{0}': expected '=' and a value")
+FX_DIAGNOSTIC(ScriptClearInvalid, Error,
+              "invalid script command '{0}': expected Color, Depth, Stencil, DepthStencil or All")
+FX_DIAGNOSTIC(ScriptDrawInvalid, Error, "invalid script command '{0}': expected Geometry or Buffer")
+FX_DIAGNOSTIC(ScriptValueEmpty, Error, "invalid script command '{0}': expected a value")
+FX_DIAGNOSTIC(ScriptTechniqueNameExpected, Error, "invalid script command '{0}': expected a technique name")
+FX_DIAGNOSTIC(ScriptTechniqueConditionInvalid, Error,
+              "invalid script command '{0}': expected Condition?TechniqueA:TechniqueB")
+FX_DIAGNOSTIC(ScriptRenderPortInvalid, Error,
+              "invalid script command '{0}': expected lightN, lightN.cascadeK or lightN.faceK, K a sub-view "
+              "index, not '{1}'")
+FX_DIAGNOSTIC(ScriptLoopCountNotWhole, Error,
+              "invalid script command 'LoopByCount': '{0}' is not a non-negative whole count")
+FX_DIAGNOSTIC(ScriptLoopCountTooLarge, Error,
+              "invalid script command 'LoopByCount': {0} iterations exceed the limit of {1}")
+FX_DIAGNOSTIC(
+    ScriptDispatchCountsInvalid, Error,
+    "invalid script command 'Dispatch': expected 1 to 3 thread-group counts, each a whole number or "
+    "a parameter, not '{0}'")
+FX_DIAGNOSTIC(ScriptClearValueInvalid, Error,
+              "invalid script command '{0}': '{1}' is neither a parameter nor a number")
+FX_DIAGNOSTIC(ScriptDrawInTechniqueScript, Error,
+              "invalid script command 'Draw': a technique script draws through Pass=, not Draw=")
+FX_DIAGNOSTIC(ScriptDispatchInTechniqueScript, Error,
+              "invalid script command 'Dispatch': a technique script dispatches through Pass=, not Dispatch=")
+FX_DIAGNOSTIC(ScriptDispatchValueInvalid, Error,
+              "invalid script command 'Dispatch': '{0}' is not 1 to 3 non-negative counts")
+FX_DIAGNOSTIC(ScriptLoopCountNegative, Error,
+              "invalid script command 'LoopByCount': '{0}' is not a non-negative count")
 
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
@@ -350,11 +459,90 @@ FX_DIAGNOSTIC(ImageFormatUnsupported, Error,
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
-FX_DIAGNOSTIC(SceneInvalidValue, Error, "{0}: {1}")
 FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")
 FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'{1}")
 FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
 FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
+// Invalid values in a scene file, one id per message ({0}: the key).
+FX_DIAGNOSTIC(SceneObjectExpected, Error, "{0}: expected an object, found {1}")
+FX_DIAGNOSTIC(SceneNumberExpected, Error, "{0}: expected a number, found {1}")
+FX_DIAGNOSTIC(SceneNumberOutOfRange, Error, "{0}: value {1} out of range [{2}, {3}]")
+FX_DIAGNOSTIC(SceneIntegerExpected, Error, "{0}: expected an integer in [{1}, {2}]")
+FX_DIAGNOSTIC(SceneBoolExpected, Error, "{0}: expected true or false, found {1}")
+FX_DIAGNOSTIC(SceneStringExpected, Error, "{0}: expected a string, found {1}")
+FX_DIAGNOSTIC(SceneVectorExpected, Error, "{0}: expected an array of 3 numbers, found {1}")
+FX_DIAGNOSTIC(SceneVectorOrNumberExpected, Error,
+              "{0}: expected an array of 3 numbers or a number, found {1}")
+FX_DIAGNOSTIC(SceneMeshFileExpected, Error, "{0}: expected a mesh file name")
+FX_DIAGNOSTIC(
+    SceneMeshSourceMissing, Error,
+    "{0}: a mesh needs \"file\" or \"primitive\" (plane, box, sphere, torus, teapot, cylinder, cone)")
+FX_DIAGNOSTIC(ScenePlaneSizeInvalid, Error, "{0}: expected a number or an array of 2 numbers [x, z]")
+FX_DIAGNOSTIC(SceneUnknownPrimitive, Error,
+              "{0}: unknown primitive '{1}' (plane, box, sphere, torus, teapot, cylinder, cone)")
+FX_DIAGNOSTIC(SceneUnknownMesh, Error, "{0}: no mesh named '{1}' in \"meshes\"")
+FX_DIAGNOSTIC(SceneMeshExpected, Error, "{0}: expected a mesh name or a mesh definition, found {1}")
+FX_DIAGNOSTIC(SceneObjectWithoutMesh, Error, "{0}: an object needs a \"mesh\"")
+FX_DIAGNOSTIC(SceneInstancesExpected, Error, "{0}: expected an array of transforms, found {1}")
+FX_DIAGNOSTIC(SceneCameraFarNotBeyondNear, Error, "camera.far: must be greater than camera.near")
+FX_DIAGNOSTIC(SceneCameraTargetAtPosition, Error, "camera.target: must differ from camera.position")
+FX_DIAGNOSTIC(SceneUnknownLightType, Error, "{0}: unknown light type '{1}' (directional, spot, point)")
+FX_DIAGNOSTIC(SceneLightDirectionZero, Error, "{0}: must not be zero")
+FX_DIAGNOSTIC(SceneArrayExpected, Error, "{0}: expected an array, found {1}")
+FX_DIAGNOSTIC(SceneWithoutObjects, Error, "objects: the scene has no objects")
+FX_DIAGNOSTIC(SceneBoundsIncomplete, Error, "bounds: needs \"min\" and \"max\"")
+FX_DIAGNOSTIC(SceneBoundsInverted, Error, "bounds: min must not exceed max")
+FX_DIAGNOSTIC(SceneViewportHintInvalid, Error, "hints.viewport: expected [width, height], positive integers")
+// nlohmann-json's own text, where a value had a type the reader did not check first.
+FX_DIAGNOSTIC(SceneReadFailed, Error, "(scene): {0}")
+// Invalid values in a host file ({0}: the JSON pointer), one id per message.
+FX_DIAGNOSTIC(HostFrameMissing, Error,
+              "{0}: frame: a host file needs a \"frame\": the steps the application draws")
+FX_DIAGNOSTIC(HostFrameNotSteps, Error, "{0}: frame: expected a non-empty array of steps")
+FX_DIAGNOSTIC(HostObjectExpected, Error, "{0}: expected an object, found {1}")
+FX_DIAGNOSTIC(HostStringExpected, Error, "{0}: expected a string, found {1}")
+FX_DIAGNOSTIC(HostTargetNamedFrame, Error, "{0}: 'frame' is the application's frame, not a target it creates")
+FX_DIAGNOSTIC(
+    HostTargetFormatInvalid, Error,
+    "{0}: '{1}' is not a colour format (R32F, A8R8G8B8, A16B16G16R16F, G32R32F, ...; every target has "
+    "a depth buffer of its own)")
+FX_DIAGNOSTIC(HostTargetSizeInvalid, Error, "{0}: expected [width, height], whole numbers from 1 to 16384")
+FX_DIAGNOSTIC(HostLightValueNotPositive, Error, "{0}: {1}: expected a number > 0")
+FX_DIAGNOSTIC(HostLightFovTooWide, Error, "{0}: fovY: expected degrees below 180")
+FX_DIAGNOSTIC(HostLightFarNotBeyondNear, Error, "{0}: far: expected more than near")
+FX_DIAGNOSTIC(
+    HostValueUnknown, Error,
+    "{0}: '{1}' is not a matrix (World, View, Projection, WorldView, ViewProjection, "
+    "WorldViewProjection, with Inverse and Transpose forms, after 'camera.' or a light's name), a "
+    "light's Position, ViewPosition, Direction, ViewDirection, Color or CosHalfAngle, ObjectColor or "
+    "ViewportSize")
+FX_DIAGNOSTIC(HostProductNotMatrix, Error, "{0}: a product takes matrices only")
+FX_DIAGNOSTIC(HostParameterValueExpected, Error,
+              "{0}: expected what the parameter is (a string, an array of matrices or of numbers, a number, "
+              "true or false), found {1}")
+FX_DIAGNOSTIC(HostStepWithoutTechnique, Error, "{0}: a step needs a \"technique\"")
+FX_DIAGNOSTIC(HostStepUnknownTarget, Error,
+              "{0}: no target named '{1}' (\"targets\" creates them; \"frame\" is the application's frame)")
+FX_DIAGNOSTIC(HostClearColorInvalid, Error, "{0}: expected [r, g, b, a]")
+FX_DIAGNOSTIC(HostClearDepthInvalid, Error, "{0}: expected a number from 0 to 1")
+FX_DIAGNOSTIC(HostStepDrawInvalid, Error, "{0}: expected \"geometry\", \"quad\" or \"nothing\", found '{1}'")
+FX_DIAGNOSTIC(HostVisibilityValueInvalid, Error, "{0}: expected a number, true, false or an array of numbers")
+FX_DIAGNOSTIC(
+    HostUnshadowedMissing, Error,
+    "{0}: expected \"unshadowed\": the targets (shadow maps) that light everything when left cleared")
+FX_DIAGNOSTIC(HostUnshadowedUnknownTarget, Error, "{0}: no target named '{1}'")
+// A host file checked against the effect it drives (fx::checkHostFile).
+FX_DIAGNOSTIC(HostParameterUnknown, Error, "{0}: the effect has no parameter '{1}'")
+FX_DIAGNOSTIC(HostParameterNotNumeric, Error, "{0}: '{1}' is a {2}, not a number, vector or matrix")
+FX_DIAGNOSTIC(HostValueSizeMismatch, Error,
+              "{0}: '{1}' is a {2} ({3} components), which this value ({4}) does not fit")
+FX_DIAGNOSTIC(HostTargetTextureUnknown, Error, "{0}: the effect has no texture parameter '{1}'")
+FX_DIAGNOSTIC(HostStepTechniqueUnknown, Error, "{0}: the effect has no technique '{1}'")
+FX_DIAGNOSTIC(HostStepPassUnknown, Error, "{0}: technique '{1}' has no pass '{2}'")
+// Drawing a host file's frame (runtime::HostFrame).
+FX_DIAGNOSTIC(HostLightNotInScene, Error, "light: the scene has no light named '{0}'")
+// The framebuffer's own reason a step's target cannot be bound.
+FX_DIAGNOSTIC(HostTargetUnbindable, Error, "target: {0}")
 
 // [SECTION] Compiled effect files (fx/CompiledEffectFile.h, docs/compiled-effect.md)
 FX_DIAGNOSTIC(CompiledEffectTruncated, Error, "the compiled effect file is truncated: {0}")

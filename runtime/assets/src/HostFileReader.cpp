@@ -74,7 +74,7 @@ std::optional<HostMatrix> matrixNamed(std::string_view name) {
 
 // One string of the value grammar (docs/host-files.md, "Parameters"): a matrix, optionally "camera." or
 // "LIGHT." before it; a light's quantity after "LIGHT."; ObjectColor; ViewportSize.
-std::optional<HostValue> valueNamed(const std::string& text, std::string& why) {
+std::optional<HostValue> valueNamed(const std::string& text) {
     HostValue value;
     if (text == "ObjectColor") {
         value.kind = HostValue::Kind::ObjectColor;
@@ -113,10 +113,6 @@ std::optional<HostValue> valueNamed(const std::string& text, std::string& why) {
                 return value;
             }
     }
-    why = "'" + text +
-          "' is not a matrix (World, View, Projection, WorldView, ViewProjection, WorldViewProjection, with "
-          "Inverse and Transpose forms, after 'camera.' or a light's name), a light's Position, "
-          "ViewPosition, Direction, ViewDirection, Color or CosHalfAngle, ObjectColor or ViewportSize";
     return std::nullopt;
 }
 
@@ -144,9 +140,9 @@ public:
                     mHost->parameters.push_back(std::move(*parameter));
         const auto frame = root.find("frame");
         if (frame == root.end()) {
-            error(top, "frame: a host file needs a \"frame\": the steps the application draws");
+            error(top, fx::DiagId::HostFrameMissing);
         } else if (!frame->is_array() || frame->empty()) {
-            error(top / "frame", "frame: expected a non-empty array of steps");
+            error(top / "frame", fx::DiagId::HostFrameNotSteps);
         } else {
             for (size_t i = 0; i < frame->size(); ++i) readStep((*frame)[i], top / "frame" / i);
         }
@@ -160,8 +156,9 @@ private:
         std::string text = where.to_string();
         return text.empty() ? "(top)" : text.substr(1);
     }
-    void error(const json::json_pointer& where, const std::string& what) {
-        mDiagnostics.report(fx::DiagId::SceneInvalidValue, loc(where), {key(where), what});
+    void error(const json::json_pointer& where, fx::DiagId id, std::vector<std::string> args = {}) {
+        args.insert(args.begin(), key(where));
+        mDiagnostics.report(id, loc(where), args);
         mFailed = true;
     }
 
@@ -178,13 +175,13 @@ private:
 
     bool isObject(const json& value, const json::json_pointer& where) {
         if (value.is_object()) return true;
-        error(where, std::string("expected an object, found ") + value.type_name());
+        error(where, fx::DiagId::HostObjectExpected, {value.type_name()});
         return false;
     }
 
     std::optional<std::string> string(const json& value, const json::json_pointer& where) {
         if (value.is_string()) return value.get<std::string>();
-        error(where, std::string("expected a string, found ") + value.type_name());
+        error(where, fx::DiagId::HostStringExpected, {value.type_name()});
         return std::nullopt;
     }
 
@@ -207,14 +204,12 @@ private:
         HostTarget target;
         target.name = name;
         target.loc = loc(where);
-        if (name == "frame") error(where, "'frame' is the application's frame, not a target it creates");
+        if (name == "frame") error(where, fx::DiagId::HostTargetNamedFrame);
         if (auto it = value.find("format"); it != value.end()) {
             if (std::optional<std::string> format = string(*it, where / "format")) {
                 const std::optional<fx::TextureFormat> parsed = fx::parseTextureFormat(*format);
                 if (!parsed || fx::isDepthFormat(*parsed))
-                    error(where / "format", "'" + *format +
-                                                "' is not a colour format (R32F, A8R8G8B8, A16B16G16R16F, "
-                                                "G32R32F, ...; every target has a depth buffer of its own)");
+                    error(where / "format", fx::DiagId::HostTargetFormatInvalid, {*format});
                 else
                     target.format = *parsed;
             }
@@ -225,7 +220,7 @@ private:
                 !size[1].is_number_integer() || size[0].get<long long>() < 1 ||
                 size[1].get<long long>() < 1 || size[0].get<long long>() > 16384 ||
                 size[1].get<long long>() > 16384)
-                error(where / "size", "expected [width, height], whole numbers from 1 to 16384");
+                error(where / "size", fx::DiagId::HostTargetSizeInvalid);
             else {
                 target.width = size[0].get<int>();
                 target.height = size[1].get<int>();
@@ -246,17 +241,17 @@ private:
         const auto positive = [&](const char* key, float& out) {
             const auto it = value.find(key);
             if (it == value.end() || !it->is_number() || !(it->get<double>() > 0.0)) {
-                error(it == value.end() ? where : where / key, std::string(key) + ": expected a number > 0");
+                error(it == value.end() ? where : where / key, fx::DiagId::HostLightValueNotPositive, {key});
                 return false;
             }
             out = toFloat(*it);
             return true;
         };
         if (positive("fovY", light.fovY) && light.fovY >= 180.0f)
-            error(where / "fovY", "fovY: expected degrees below 180");
+            error(where / "fovY", fx::DiagId::HostLightFovTooWide);
         if (positive("near", light.nearPlane) && positive("far", light.farPlane) &&
             light.farPlane <= light.nearPlane)
-            error(where / "far", "far: expected more than near");
+            error(where / "far", fx::DiagId::HostLightFarNotBeyondNear);
         mHost->lights.push_back(std::move(light));
     }
 
@@ -265,11 +260,10 @@ private:
         HostParameter parameter;
         parameter.name = name;
         parameter.loc = loc(where);
-        std::string why;
         if (value.is_string()) {
-            std::optional<HostValue> named = valueNamed(value.get<std::string>(), why);
+            std::optional<HostValue> named = valueNamed(value.get<std::string>());
             if (!named) {
-                error(where, why);
+                error(where, fx::DiagId::HostValueUnknown, {value.get<std::string>()});
                 return std::nullopt;
             }
             parameter.value = std::move(*named);
@@ -285,18 +279,20 @@ private:
             parameter.value.kind = HostValue::Kind::Matrix;
             for (size_t i = 0; i < value.size(); ++i) {
                 std::optional<HostValue> factor =
-                    value[i].is_string() ? valueNamed(value[i].get<std::string>(), why) : std::nullopt;
+                    value[i].is_string() ? valueNamed(value[i].get<std::string>()) : std::nullopt;
+                if (value[i].is_string() && !factor) {
+                    error(where / i, fx::DiagId::HostValueUnknown, {value[i].get<std::string>()});
+                    return std::nullopt;
+                }
                 if (!factor || factor->kind != HostValue::Kind::Matrix) {
-                    error(where / i, why.empty() ? "a product takes matrices only" : why);
+                    error(where / i, fx::DiagId::HostProductNotMatrix);
                     return std::nullopt;
                 }
                 parameter.value.factors.push_back(factor->factors.front());
             }
             return parameter;
         }
-        error(where, std::string("expected what the parameter is (a string, an array of matrices or of "
-                                 "numbers, a number, true or false), found ") +
-                         value.type_name());
+        error(where, fx::DiagId::HostParameterValueExpected, {value.type_name()});
         return std::nullopt;
     }
 
@@ -306,7 +302,7 @@ private:
         HostStep step;
         step.loc = loc(where);
         if (auto it = value.find("technique"); it == value.end()) {
-            error(where, "a step needs a \"technique\"");
+            error(where, fx::DiagId::HostStepWithoutTechnique);
         } else if (std::optional<std::string> technique = string(*it, where / "technique")) {
             step.technique = *technique;
         }
@@ -317,8 +313,7 @@ private:
             if (std::optional<std::string> target = string(*it, where / "target")) {
                 step.target = *target;
                 if (*target != "frame" && !mHost->findTarget(*target))
-                    error(where / "target", "no target named '" + *target + "' (\"targets\" creates them; " +
-                                                "\"frame\" is the application's frame)");
+                    error(where / "target", fx::DiagId::HostStepUnknownTarget, {*target});
             }
         step.port = "camera";
         if (auto it = value.find("port"); it != value.end())
@@ -328,13 +323,13 @@ private:
             if (auto color = it->find("color"); color != it->end()) {
                 const std::optional<std::vector<float>> c = numbers(*color);
                 if (!c || c->size() != 4)
-                    error(where / "clear" / "color", "expected [r, g, b, a]");
+                    error(where / "clear" / "color", fx::DiagId::HostClearColorInvalid);
                 else
                     step.clearColor = std::array<float, 4>{(*c)[0], (*c)[1], (*c)[2], (*c)[3]};
             }
             if (auto depth = it->find("depth"); depth != it->end()) {
                 if (!depth->is_number() || toFloat(*depth) < 0.0f || toFloat(*depth) > 1.0f)
-                    error(where / "clear" / "depth", "expected a number from 0 to 1");
+                    error(where / "clear" / "depth", fx::DiagId::HostClearDepthInvalid);
                 else
                     step.clearDepth = toFloat(*depth);
             }
@@ -348,8 +343,7 @@ private:
                 else if (*draw == "nothing")
                     step.draw = HostStep::Draw::Nothing;
                 else
-                    error(where / "draw",
-                          "expected \"geometry\", \"quad\" or \"nothing\", found '" + *draw + "'");
+                    error(where / "draw", fx::DiagId::HostStepDrawInvalid, {*draw});
             }
         mHost->frame.push_back(std::move(step));
     }
@@ -363,7 +357,7 @@ private:
             for (const auto& [name, constant] : it->items()) {
                 std::optional<std::vector<float>> parsed = numbers(constant);
                 if (!parsed) {
-                    error(where / "set" / name, "expected a number, true, false or an array of numbers");
+                    error(where / "set" / name, fx::DiagId::HostVisibilityValueInvalid);
                     continue;
                 }
                 HostParameter parameter;
@@ -374,14 +368,13 @@ private:
             }
         const auto unshadowed = value.find("unshadowed");
         if (unshadowed == value.end() || !unshadowed->is_array() || unshadowed->empty()) {
-            error(
-                unshadowed == value.end() ? where : where / "unshadowed",
-                "expected \"unshadowed\": the targets (shadow maps) that light everything when left cleared");
+            error(unshadowed == value.end() ? where : where / "unshadowed",
+                  fx::DiagId::HostUnshadowedMissing);
         } else {
             for (size_t i = 0; i < unshadowed->size(); ++i)
                 if (std::optional<std::string> name = string((*unshadowed)[i], where / "unshadowed" / i)) {
                     if (!mHost->findTarget(*name))
-                        error(where / "unshadowed" / i, "no target named '" + *name + "'");
+                        error(where / "unshadowed" / i, fx::DiagId::HostUnshadowedUnknownTarget, {*name});
                     visibility.unshadowed.push_back(*name);
                 }
         }

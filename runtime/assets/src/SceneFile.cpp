@@ -42,8 +42,8 @@ public:
 
 private:
     // [SECTION] JSON values
-    void error(const std::string& key, const std::string& what) {
-        mDiagnostics.report(fx::DiagId::SceneInvalidValue, fx::SourceLoc{mPath, 0, 0}, {key, what});
+    void error(fx::DiagId id, const std::vector<std::string>& args) {
+        mDiagnostics.report(id, fx::SourceLoc{mPath, 0, 0}, args);
         mFailed = true;
     }
 
@@ -60,13 +60,13 @@ private:
 
     bool isObject(const json& value, const std::string& key) {
         if (value.is_object()) return true;
-        error(key, std::string("expected an object, found ") + value.type_name());
+        error(fx::DiagId::SceneObjectExpected, {key, value.type_name()});
         return false;
     }
 
     std::optional<float> number(const json& value, const std::string& key) {
         if (value.is_number()) return value.get<float>();
-        error(key, std::string("expected a number, found ") + value.type_name());
+        error(fx::DiagId::SceneNumberExpected, {key, value.type_name()});
         return std::nullopt;
     }
 
@@ -79,8 +79,8 @@ private:
         const std::string path = key + "." + name;
         if (auto v = number(*it, path)) {
             if (*v < minimum || *v > maximum) {
-                error(path, "value " + std::to_string(*v) + " out of range [" + std::to_string(minimum) +
-                                ", " + std::to_string(maximum) + "]");
+                error(fx::DiagId::SceneNumberOutOfRange,
+                      {path, std::to_string(*v), std::to_string(minimum), std::to_string(maximum)});
             } else {
                 out = *v;
             }
@@ -93,8 +93,7 @@ private:
         if (it == parent.end()) return;
         const std::string path = key + "." + name;
         if (!it->is_number_integer() || it->get<long long>() < minimum || it->get<long long>() > maximum) {
-            error(path, "expected an integer in [" + std::to_string(minimum) + ", " +
-                            std::to_string(maximum) + "]");
+            error(fx::DiagId::SceneIntegerExpected, {path, std::to_string(minimum), std::to_string(maximum)});
             return;
         }
         out = it->get<int>();
@@ -104,7 +103,7 @@ private:
         auto it = parent.find(name);
         if (it == parent.end()) return;
         if (!it->is_boolean()) {
-            error(key + "." + name, std::string("expected true or false, found ") + it->type_name());
+            error(fx::DiagId::SceneBoolExpected, {key + "." + name, it->type_name()});
             return;
         }
         out = it->get<bool>();
@@ -114,7 +113,7 @@ private:
         auto it = parent.find(name);
         if (it == parent.end()) return;
         if (!it->is_string()) {
-            error(key + "." + name, std::string("expected a string, found ") + it->type_name());
+            error(fx::DiagId::SceneStringExpected, {key + "." + name, it->type_name()});
             return;
         }
         out = it->get<std::string>();
@@ -132,10 +131,9 @@ private:
         }
         if (!it->is_array() || it->size() != 3 || !(*it)[0].is_number() || !(*it)[1].is_number() ||
             !(*it)[2].is_number()) {
-            error(path, std::string("expected an array of 3 numbers") + (allowScalar ? " or a number" : "") +
-                            ", found " +
-                            (it->is_array() ? "an array of " + std::to_string(it->size()) + " values"
-                                            : it->type_name()));
+            error(allowScalar ? fx::DiagId::SceneVectorOrNumberExpected : fx::DiagId::SceneVectorExpected,
+                  {path, it->is_array() ? "an array of " + std::to_string(it->size()) + " values"
+                                        : std::string(it->type_name())});
             return;
         }
         out = glm::vec3((*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>());
@@ -182,7 +180,7 @@ std::shared_ptr<const Mesh> SceneFileReader::readMesh(const json& def, const std
         std::string file;
         readString(def, "file", key, file);
         if (file.empty()) {
-            error(key + ".file", "expected a mesh file name");
+            error(fx::DiagId::SceneMeshFileExpected, {key + ".file"});
             return nullptr;
         }
         MeshImportOptions options;
@@ -207,8 +205,7 @@ std::shared_ptr<const Mesh> SceneFileReader::readMesh(const json& def, const std
     }
     auto primitiveIt = def.find("primitive");
     if (primitiveIt == def.end() || !primitiveIt->is_string()) {
-        error(key,
-              "a mesh needs \"file\" or \"primitive\" (plane, box, sphere, torus, teapot, cylinder, cone)");
+        error(fx::DiagId::SceneMeshSourceMissing, {key});
         return nullptr;
     }
     const std::string primitive = primitiveIt->get<std::string>();
@@ -222,7 +219,7 @@ std::shared_ptr<const Mesh> SceneFileReader::readMesh(const json& def, const std
         } else if (it != def.end() && it->is_number()) {
             size = glm::vec3(it->get<float>());
         } else if (it != def.end()) {
-            error(key + ".size", "expected a number or an array of 2 numbers [x, z]");
+            error(fx::DiagId::ScenePlaneSizeInvalid, {key + ".size"});
         }
         int divisions = 10;
         readInt(def, "divisions", key, divisions, 1, 1024);
@@ -266,8 +263,7 @@ std::shared_ptr<const Mesh> SceneFileReader::readMesh(const json& def, const std
         readInt(def, "slices", key, slices, 3, 1024);
         mesh = primitive == "cone" ? makeCone(radius, height, slices) : makeCylinder(radius, height, slices);
     } else {
-        error(key + ".primitive",
-              "unknown primitive '" + primitive + "' (plane, box, sphere, torus, teapot, cylinder, cone)");
+        error(fx::DiagId::SceneUnknownPrimitive, {key + ".primitive", primitive});
         return nullptr;
     }
     if (closed) mesh.closed = *closed;
@@ -283,14 +279,14 @@ std::shared_ptr<const Mesh> SceneFileReader::meshFor(const json& ref, const std:
     if (ref.is_string()) {
         auto it = mNamedMeshes.find(ref.get<std::string>());
         if (it == mNamedMeshes.end()) {
-            error(key, "no mesh named '" + ref.get<std::string>() + "' in \"meshes\"");
+            error(fx::DiagId::SceneUnknownMesh, {key, ref.get<std::string>()});
             return nullptr;
         }
         mesh = it->second;
     } else if (ref.is_object()) {
         mesh = readMesh(ref, key, "");
     } else {
-        error(key, std::string("expected a mesh name or a mesh definition, found ") + ref.type_name());
+        error(fx::DiagId::SceneMeshExpected, {key, ref.type_name()});
     }
     if (!mesh || !closed || mesh->closed == *closed) return mesh;
     auto& variant = mClosedVariants[{mesh.get(), *closed}];
@@ -321,7 +317,7 @@ void SceneFileReader::readObject(const json& def, const std::string& key, Scene&
     }
     auto meshIt = def.find("mesh");
     if (meshIt == def.end()) {
-        error(key, "an object needs a \"mesh\"");
+        error(fx::DiagId::SceneObjectWithoutMesh, {key});
         return;
     }
     object.mesh = meshFor(*meshIt, key + ".mesh", closed);
@@ -338,8 +334,7 @@ void SceneFileReader::readObject(const json& def, const std::string& key, Scene&
     // Instances: each its own SceneObject (own id, for ID-buffer methods) sharing the one Mesh; an
     // instance's transform is applied first, then the object's, which places the whole group.
     if (!instancesIt->is_array()) {
-        error(key + ".instances",
-              std::string("expected an array of transforms, found ") + instancesIt->type_name());
+        error(fx::DiagId::SceneInstancesExpected, {key + ".instances", instancesIt->type_name()});
         return;
     }
     scene.objects.reserve(scene.objects.size() + instancesIt->size());
@@ -369,9 +364,9 @@ void SceneFileReader::readCamera(const json& def, Camera& camera) {
     camera.fovY = glm::radians(fov);
     readNumber(def, "near", "camera", camera.nearPlane, 1e-6f);
     readNumber(def, "far", "camera", camera.farPlane, 1e-6f);
-    if (camera.farPlane <= camera.nearPlane) error("camera.far", "must be greater than camera.near");
+    if (camera.farPlane <= camera.nearPlane) error(fx::DiagId::SceneCameraFarNotBeyondNear, {});
     if (glm::length(camera.target - camera.position) <= 0.0f)
-        error("camera.target", "must differ from camera.position");
+        error(fx::DiagId::SceneCameraTargetAtPosition, {});
 }
 
 void SceneFileReader::readLight(const json& def, const std::string& key, Scene& scene) {
@@ -389,7 +384,7 @@ void SceneFileReader::readLight(const json& def, const std::string& key, Scene& 
     } else if (type == "point") {
         light.type = Light::Type::Point;
     } else {
-        error(key + ".type", "unknown light type '" + type + "' (directional, spot, point)");
+        error(fx::DiagId::SceneUnknownLightType, {key + ".type", type});
     }
     const bool hasPosition = def.contains("position");
     readVec3(def, "position", key, light.position);
@@ -400,7 +395,7 @@ void SceneFileReader::readLight(const json& def, const std::string& key, Scene& 
         light.direction = target - light.position;
     }
     if (glm::length(light.direction) <= 0.0f) {
-        error(key + ".direction", "must not be zero");
+        error(fx::DiagId::SceneLightDirectionZero, {key + ".direction"});
         light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
     }
     light.direction = glm::normalize(light.direction);
@@ -429,21 +424,21 @@ std::optional<Scene> SceneFileReader::read(const json& root) {
     }
     if (auto it = root.find("objects"); it != root.end()) {
         if (!it->is_array()) {
-            error("objects", std::string("expected an array, found ") + it->type_name());
+            error(fx::DiagId::SceneArrayExpected, {"objects", it->type_name()});
         } else {
             for (size_t i = 0; i < it->size(); ++i)
                 readObject((*it)[i], "objects[" + std::to_string(i) + "]", scene);
         }
     }
-    if (!mFailed && scene.objects.empty()) error("objects", "the scene has no objects");
+    if (!mFailed && scene.objects.empty()) error(fx::DiagId::SceneWithoutObjects, {});
     if (auto it = root.find("camera"); it != root.end()) readCamera(*it, scene.camera);
     if (auto it = root.find("bounds"); it != root.end() && isObject(*it, "bounds")) {
         checkKeys(*it, "bounds", {"min", "max"});
         Bounds bounds;
-        if (!it->contains("min") || !it->contains("max")) error("bounds", "needs \"min\" and \"max\"");
+        if (!it->contains("min") || !it->contains("max")) error(fx::DiagId::SceneBoundsIncomplete, {});
         readVec3(*it, "min", "bounds", bounds.min);
         readVec3(*it, "max", "bounds", bounds.max);
-        if (glm::any(glm::greaterThan(bounds.min, bounds.max))) error("bounds", "min must not exceed max");
+        if (glm::any(glm::greaterThan(bounds.min, bounds.max))) error(fx::DiagId::SceneBoundsInverted, {});
         scene.explicitBounds = bounds;
     }
     if (auto it = root.find("hints"); it != root.end() && isObject(*it, "hints")) {
@@ -454,13 +449,13 @@ std::optional<Scene> SceneFileReader::read(const json& root) {
                 (*v)[1].is_number_integer() && (*v)[0].get<int>() > 0 && (*v)[1].get<int>() > 0) {
                 scene.suggestedViewport = glm::ivec2((*v)[0].get<int>(), (*v)[1].get<int>());
             } else {
-                error("hints.viewport", "expected [width, height], positive integers");
+                error(fx::DiagId::SceneViewportHintInvalid, {});
             }
         }
     }
     if (auto it = root.find("lights"); it != root.end()) {
         if (!it->is_array()) {
-            error("lights", std::string("expected an array, found ") + it->type_name());
+            error(fx::DiagId::SceneArrayExpected, {"lights", it->type_name()});
         } else {
             for (size_t i = 0; i < it->size(); ++i)
                 readLight((*it)[i], "lights[" + std::to_string(i) + "]", scene);
@@ -500,7 +495,7 @@ std::optional<Scene> parseSceneJson(const std::string& text, const std::string& 
         return SceneFileReader(path, diagnostics).read(root);
     } catch (const std::exception& e) {
         // The reader checks every type before reading it; this is the net under anything it missed.
-        diagnostics.report(fx::DiagId::SceneInvalidValue, fx::SourceLoc{path, 0, 0}, {"(scene)", e.what()});
+        diagnostics.report(fx::DiagId::SceneReadFailed, fx::SourceLoc{path, 0, 0}, {e.what()});
         return std::nullopt;
     }
 }

@@ -40,10 +40,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
         std::string lower = a.name;
         for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (lower.rfind("expect", 0) == 0 && kKnown.count(lower) == 0) {
-            sink.report(fx::DiagId::InvalidAnnotation, a.loc,
-                        {a.name,
-                         "not an expectation shadowfx check knows (ExpectScenes, ExpectMisclassifiedBelow, "
-                         "ExpectPenumbraMaeBelow, ExpectAreaRadius, ExpectMapSize, ExpectShadows)"});
+            sink.report(fx::DiagId::ExpectationUnknown, a.loc, {a.name});
             ok = false;
         }
     }
@@ -58,7 +55,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
                       a->value, [](std::string_view) -> const fx::Value* { return nullptr; }, &scalar,
                       nullptr);
         if (!value || !std::isfinite(value->asFloat())) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, "expected a number"});
+            sink.report(fx::DiagId::ExpectationNumberExpected, a->loc, {name});
             ok = false;
             return std::nullopt;
         }
@@ -66,8 +63,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     };
     if (const fx::Annotation* a = technique.annotation("ExpectScenes")) {
         if (a->value.kind != fx::Expr::Kind::String || commaSeparated(a->value.text).empty()) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc,
-                        {"ExpectScenes", "expected a string of comma-separated scene names or .json files"});
+            sink.report(fx::DiagId::ExpectScenesInvalid, a->loc, {});
             ok = false;
         } else {
             out.scenes = commaSeparated(a->value.text);
@@ -86,8 +82,8 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
             result.everyScene = number(name);
             return result;
         }
-        auto invalid = [&](const std::string& why) {
-            sink.report(fx::DiagId::InvalidAnnotation, a->loc, {name, why});
+        auto invalid = [&](fx::DiagId id, const std::string& what) {
+            sink.report(id, a->loc, {name, what});
             ok = false;
             return SceneBound{};
         };
@@ -100,26 +96,25 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
             char* end = nullptr;
             const double value = std::strtod(text.c_str(), &end);
             if (scene.empty() || text.empty() || *end != '\0' || !std::isfinite(value))
-                return invalid("expected a number, or per-scene bounds \"SCENE=BOUND, ...\", got '" + entry +
-                               "'");
+                return invalid(fx::DiagId::ExpectationSceneBoundSyntax, entry);
             const std::string label = sceneLabel(scene);
             if (std::none_of(out.scenes.begin(), out.scenes.end(),
                              [&](const std::string& listed) { return sceneLabel(listed) == label; }))
-                return invalid("scene '" + scene + "' is not one of ExpectScenes");
+                return invalid(fx::DiagId::ExpectationSceneNotExpected, scene);
             if (!result.perScene.emplace(label, value).second)
-                return invalid("scene '" + scene + "' is given twice");
+                return invalid(fx::DiagId::ExpectationSceneRepeated, scene);
         }
         for (const std::string& listed : out.scenes)
             if (result.perScene.count(sceneLabel(listed)) == 0)
-                return invalid("no bound for scene '" + listed + "' of ExpectScenes");
+                return invalid(fx::DiagId::ExpectationSceneMissing, listed);
         return result;
     };
     out.misclassifiedBelow = bound("ExpectMisclassifiedBelow");
     out.penumbraMaeBelow = bound("ExpectPenumbraMaeBelow");
     if (std::optional<double> radius = number("ExpectAreaRadius")) {
         if (!(*radius > 0.0 && *radius < 1e6)) {
-            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectAreaRadius")->loc,
-                        {"ExpectAreaRadius", "expected a radius above 0"});
+            sink.report(fx::DiagId::ExpectAreaRadiusInvalid, technique.annotation("ExpectAreaRadius")->loc,
+                        {});
             ok = false;
         } else {
             out.areaRadius = static_cast<float>(*radius);
@@ -127,8 +122,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     }
     if (std::optional<double> size = number("ExpectMapSize")) {
         if (*size < 1 || *size > 16384 || *size != std::floor(*size)) {
-            sink.report(fx::DiagId::InvalidAnnotation, technique.annotation("ExpectMapSize")->loc,
-                        {"ExpectMapSize", "expected an integer between 1 and 16384"});
+            sink.report(fx::DiagId::ExpectMapSizeInvalid, technique.annotation("ExpectMapSize")->loc, {});
             ok = false;
         } else {
             out.mapSize = static_cast<int>(*size);

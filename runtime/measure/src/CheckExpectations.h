@@ -39,7 +39,8 @@ struct Expectations {
 };
 
 // Reads the Expect* annotations of `technique` (names case-insensitive, as annotation lookups are). A value
-// of the wrong kind or an unknown Expect* name is an InvalidAnnotation error at the annotation; false then.
+// of the wrong kind or an unknown Expect* name is an error at the annotation (ExpectationUnknown and the
+// other Expect* ids); false then.
 bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink);
 
 }  // namespace runtime

@@ -165,8 +165,7 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
         if (lights.count(name)) return true;
         const std::optional<LightFit> fit = renderer.lightFit(scene, name, options);
         if (!fit) {
-            diagnostics.report(fx::DiagId::SceneInvalidValue, loc,
-                               {"light", "the scene has no light named '" + name + "'"});
+            diagnostics.report(fx::DiagId::HostLightNotInScene, loc, {name});
             return false;
         }
         PortMatrices matrices{fit->view, fit->projection};
@@ -206,7 +205,7 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
         }
         std::string error;
         if (!r.framebuffers.bind(targets, error)) {
-            diagnostics.report(fx::DiagId::SceneInvalidValue, step.loc, {"target", error});
+            diagnostics.report(fx::DiagId::HostTargetUnbindable, step.loc, {error});
             return false;
         }
         context.viewport = {targets.width(), targets.height()};

@@ -233,9 +233,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
             case Command::Kind::ClearSetStencil: {
                 const fx::Value* value = scriptValue(operands.of(command), target);
                 if (!value) {
-                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
-                                       {std::string(fx::scriptCommandName(command.kind)),
-                                        "'" + command.value + "' is neither a parameter nor a number"});
+                    diagnostics.report(fx::DiagId::ScriptClearValueInvalid, command.loc,
+                                       {std::string(fx::scriptCommandName(command.kind)), command.value});
                     return false;
                 }
                 if (command.kind == Command::Kind::ClearSetColor) target.setClearColor(*value);
@@ -248,17 +247,14 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 break;
             case Command::Kind::Draw:
                 if (!pass) {
-                    diagnostics.report(fx::DiagId::InvalidScriptCommand, command.loc,
-                                       {"Draw", "a technique script draws through Pass=, not Draw="});
+                    diagnostics.report(fx::DiagId::ScriptDrawInTechniqueScript, command.loc, {});
                     return false;
                 }
                 target.draw(*pass, command.draw);
                 break;
             case Command::Kind::Dispatch: {
                 if (!pass) {
-                    diagnostics.report(
-                        fx::DiagId::InvalidScriptCommand, command.loc,
-                        {"Dispatch", "a technique script dispatches through Pass=, not Dispatch="});
+                    diagnostics.report(fx::DiagId::ScriptDispatchInTechniqueScript, command.loc, {});
                     return false;
                 }
                 // Each term a number or a parameter; a vector parameter gives several counts.
@@ -279,9 +275,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 }
                 std::array<uint32_t, 3> groups{1, 1, 1};
                 if (!valid) {
-                    diagnostics.report(
-                        fx::DiagId::InvalidScriptCommand, command.loc,
-                        {"Dispatch", "'" + command.value + "' is not 1 to 3 non-negative counts"});
+                    diagnostics.report(fx::DiagId::ScriptDispatchValueInvalid, command.loc, {command.value});
                     return false;
                 }
                 for (size_t axis = 0; axis < 3; ++axis) groups[axis] = static_cast<uint32_t>(counts[axis]);
@@ -292,16 +286,12 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 const fx::Value* value = scriptValue(operands.of(command), target);
                 int count = value ? value->asInt() : -1;
                 if (count < 0) {
-                    diagnostics.report(
-                        fx::DiagId::InvalidScriptCommand, command.loc,
-                        {"LoopByCount", "'" + command.value + "' is not a non-negative count"});
+                    diagnostics.report(fx::DiagId::ScriptLoopCountNegative, command.loc, {command.value});
                     return false;
                 }
                 if (count > maxLoopCount) {
-                    diagnostics.report(
-                        fx::DiagId::InvalidScriptCommand, command.loc,
-                        {"LoopByCount", std::to_string(count) + " iterations exceed the limit of " +
-                                            std::to_string(maxLoopCount)});
+                    diagnostics.report(fx::DiagId::ScriptLoopCountTooLarge, command.loc,
+                                       {std::to_string(count), std::to_string(maxLoopCount)});
                     return false;
                 }
                 if (count == 0) {  // skip to the matching LoopEnd

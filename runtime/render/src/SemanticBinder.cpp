@@ -436,10 +436,7 @@ void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, floa
         }
         if (input.parameterizationSlot < 0) continue;
         if (!input.method) {
-            diagnostics.report(fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
-                               {"Parameterization",
-                                "expected \"Uniform\", \"Focused\", \"LiSPSM\", \"TSM\", \"PSM\", "
-                                "\"PSMCube\" or \"Cascaded\""});
+            diagnostics.report(fx::DiagId::ParameterizationUnknown, parameter.parameterizationLoc, {});
             continue;
         }
         const Light* light = slotLight(input.parameterizationSlot);
@@ -449,10 +446,8 @@ void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, floa
         if (known == mFittedLights.end()) {
             mFittedLights.push_back({light, *input.method, {}});
         } else if (known->method != *input.method) {
-            diagnostics.report(
-                fx::DiagId::InvalidAnnotation, parameter.parameterizationLoc,
-                {"Parameterization", "light '" + parameter.light + "' is already parameterized as '" +
-                                         lightParameterizationName(known->method) + "'"});
+            diagnostics.report(fx::DiagId::ParameterizationConflict, parameter.parameterizationLoc,
+                               {parameter.light, lightParameterizationName(known->method)});
         }
     }
     for (FittedLight& fitted : mFittedLights)
