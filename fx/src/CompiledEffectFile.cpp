@@ -9,6 +9,8 @@
 
 #include "CompiledEffectFields.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -49,6 +51,18 @@ public:
     std::string run() {
         if (mEffect.initialValues.size() != mParameters)
             return "initial values and parameters differ in number";
+        // A struct holds structs listed before it only (componentCount counts no further), and a value is
+        // sized by its count.
+        for (size_t i = 0; i < mEffect.structs.size(); ++i)
+            for (const StructMemberInfo& member : mEffect.structs[i].members)
+                if (member.type.base == BaseType::Struct &&
+                    std::none_of(mEffect.structs.begin(),
+                                 mEffect.structs.begin() + static_cast<std::ptrdiff_t>(i),
+                                 [&](const StructInfo& s) { return s.name == member.type.structName; }))
+                    return "struct '" + mEffect.structs[i].name + "' holds a struct not listed before it";
+        for (const ParameterInfo& parameter : mEffect.parameters)
+            if (mEffect.componentCount(parameter.type) > (size_t(1) << 24))
+                return "parameter '" + parameter.name + "' holds more than 2^24 numbers";
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters) return "a texture names no parameter";
         for (const std::vector<SamplerDesc>* list : {&mEffect.samplers, &mEffect.passSamplers})
