@@ -1,13 +1,15 @@
 // The CLI and compiled effect files: `compile --out` writes one, the commands load it in place of the
-// source (by its content, whatever its name), `info` names where it came from, and a damaged file is one
-// located error with exit status 1.
+// source (by its content, whatever its name), `info` names where it came from, a damaged file is one
+// located error with exit status 1, and `check` and `stress` run what a compiled file allows them to.
 #include "CliRunner.h"
 #include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 
@@ -67,10 +69,77 @@ TEST_F(CompiledEffectCli, ATruncatedFileIsOneLocatedErrorAndNoImage) {
     EXPECT_FALSE(std::filesystem::exists(png));
 }
 
-TEST_F(CompiledEffectCli, CheckAsksForTheSource) {
-    const RunResult checked = run("check " + mFile);
-    EXPECT_EQ(checked.exitCode, 2) << checked.output;
-    EXPECT_NE(checked.output.find("give the .fx file"), std::string::npos) << checked.output;
+// The lines of `output` that hold every one of `words`, joined: check's table rows, stress's report lines.
+std::string linesWith(const std::string& output, std::initializer_list<std::string> words) {
+    std::string found;
+    size_t start = 0;
+    while (start < output.size()) {
+        size_t end = output.find('\n', start);
+        if (end == std::string::npos) end = output.size();
+        const std::string line = output.substr(start, end - start);
+        bool all = true;
+        for (const std::string& word : words) all = all && line.find(word) != std::string::npos;
+        if (all) found += line + "\n";
+        start = end + 1;
+    }
+    return found;
+}
+
+// The thesis effect's main technique compiled to `file` with `defines` ("-D NAME=VALUE ...").
+void compileThesis(const std::string& file, const std::string& defines) {
+    const RunResult compiled =
+        run("compile effects/thesis_fxcomposer.fx --technique main -D SHADOWFX_SHADOW_MAP_SIZE=1024 " +
+            defines + " --out " + file);
+    ASSERT_EQ(compiled.exitCode, 0) << compiled.output;
+}
+
+// check renders a compiled file as it stands; the scores need the SHADOWFX_VISIBILITY variant, which only
+// the source compiles, so they are NOT_SUPPORTED and say why.
+TEST(CompiledEffectCheck, RendersTheFileAndLeavesTheScoresToTheSource) {
+    const shadowfx::test::ScratchDirectory scratch("compiled_check");
+    const std::string file = (scratch / "thesis.sfxo").string();
+    compileThesis(file, "");
+    const RunResult checked =
+        run("check " + file + " --scenes dual-l --backend egl --width 160 --height 120 " + "--out " +
+            (scratch / "out").string());
+    EXPECT_EQ(checked.exitCode, 0) << checked.output;
+    const std::string render = linesWith(checked.output, {"main", "dual-l", "render"});
+    EXPECT_NE(render.find("PASS"), std::string::npos) << checked.output;
+    const std::string expectations = linesWith(checked.output, {"main", "dual-l", "expectations"});
+    EXPECT_NE(expectations.find("NOT_SUPPORTED"), std::string::npos) << checked.output;
+    EXPECT_NE(expectations.find("compiled effect file"), std::string::npos) << checked.output;
+    EXPECT_EQ(checked.output.find("\nFAIL "), std::string::npos) << checked.output;
+
+    const RunResult listed = run("check " + file + " --list-techniques");
+    EXPECT_EQ(listed.exitCode, 0) << listed.output;
+    EXPECT_EQ(listed.output, "main\n");
+}
+
+// stress scores a file compiled as the SHADOWFX_VISIBILITY variant (its frame is the shadow factor), and
+// judges a file compiled without it on what needs no score.
+TEST(CompiledEffectStress, ScoresTheVisibilityVariantAndJudgesAnotherUnscored) {
+    const shadowfx::test::ScratchDirectory scratch("compiled_stress");
+    const std::string visibility = (scratch / "visibility.sfxo").string();
+    const std::string shaded = (scratch / "shaded.sfxo").string();
+    compileThesis(visibility, "-D SHADOWFX_VISIBILITY=1");
+    compileThesis(shaded, "");
+    const RunResult stressed =
+        run("stress " + visibility + " " + shaded + " --cases ordinary --out " + (scratch / "out").string());
+    EXPECT_EQ(stressed.exitCode, 0) << stressed.output;
+    const std::string json = readFile((scratch / "out" / "stress.json").string());
+    ASSERT_FALSE(json.empty()) << stressed.output;
+    // One result per file; only the visibility variant's carries an error.
+    const size_t first = json.find("\"visibility.sfxo\"");
+    const size_t second = json.find("\"shaded.sfxo\"");
+    ASSERT_NE(first, std::string::npos) << json;
+    ASSERT_NE(second, std::string::npos) << json;
+    const size_t split = std::max(first, second);
+    const std::string visibilityResult =
+        first < second ? json.substr(first, split - first) : json.substr(first);
+    const std::string shadedResult =
+        second < first ? json.substr(second, split - second) : json.substr(second);
+    EXPECT_NE(visibilityResult.find("\"misclassified_percent\": 0."), std::string::npos) << json;
+    EXPECT_EQ(shadedResult.find("\"misclassified_percent\": 0."), std::string::npos) << json;
 }
 
 }  // namespace
