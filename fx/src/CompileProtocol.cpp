@@ -86,6 +86,15 @@ void writeProgram(Writer& w, const StageProgram& p) {
         w.u32(u.arrayStride);
         w.u32(u.matrixStride);
         w.u32((u.hlslColumnsContiguous ? 1u : 0u) | (u.active ? 2u : 0u));
+        // Reflection only: the types and components of the fields follow from the parameter's type.
+        w.u32(static_cast<uint32_t>(u.fields.size()));
+        for (const UniformField& field : u.fields) {
+            w.str(field.path);
+            w.u32(field.offset);
+            w.u32(field.arrayStride);
+            w.u32(field.matrixStride);
+            w.u32(field.hlslColumnsContiguous ? 1u : 0u);
+        }
     }
     w.u32(static_cast<uint32_t>(p.samplers.size()));
     for (const SamplerBinding& s : p.samplers) {
@@ -127,7 +136,7 @@ void readProgram(Reader& r, StageProgram& p) {
     p.uniformBlockName = r.str();
     p.uniformBlockBinding = r.i32();
     p.uniformBlockSize = r.u32();
-    p.uniforms.resize(r.count(24));
+    p.uniforms.resize(r.count(28));
     for (UniformBinding& u : p.uniforms) {
         u.name = r.str();
         u.offset = r.u32();
@@ -137,6 +146,14 @@ void readProgram(Reader& r, StageProgram& p) {
         uint32_t flags = r.u32();
         u.hlslColumnsContiguous = flags & 1u;
         u.active = flags & 2u;
+        u.fields.resize(r.count(20));
+        for (UniformField& field : u.fields) {
+            field.path = r.str();
+            field.offset = r.u32();
+            field.arrayStride = r.u32();
+            field.matrixStride = r.u32();
+            field.hlslColumnsContiguous = r.u32() != 0;
+        }
     }
     p.samplers.resize(r.count(20));
     for (SamplerBinding& s : p.samplers) {

@@ -59,6 +59,42 @@ const SamplerDesc* CompiledEffect::findSampler(size_t parameter) const {
     return nullptr;
 }
 
+const StructInfo* CompiledEffect::findStruct(const std::string& name) const {
+    for (const StructInfo& s : structs)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+namespace {
+
+// A struct counts with the structs before it only, so that a file whose structs hold each other in a
+// circle (a corrupt one) counts in finite time. Saturates rather than overflows.
+size_t countComponents(const std::vector<StructInfo>& structs, const TypeDesc& type, size_t before) {
+    constexpr size_t kSaturated = size_t(1) << 40;
+    size_t perElement = static_cast<size_t>(std::max(type.rows, 0) * std::max(type.cols, 0));
+    if (type.base == BaseType::Struct) {
+        perElement = 0;
+        for (size_t i = 0; i < before; ++i)
+            if (structs[i].name == type.structName) {
+                for (const StructMemberInfo& member : structs[i].members)
+                    perElement = std::min(kSaturated, perElement + countComponents(structs, member.type, i));
+                break;
+            }
+    }
+    size_t count = perElement;
+    for (int dim : type.arrayDims) {
+        const size_t n = static_cast<size_t>(std::max(dim, 1));
+        count = count > kSaturated / n ? kSaturated : count * n;
+    }
+    return count;
+}
+
+}  // namespace
+
+size_t CompiledEffect::componentCount(const TypeDesc& type) const {
+    return countComponents(structs, type, structs.size());
+}
+
 bool isDepthFormat(TextureFormat format) {
     return format == TextureFormat::D16 || format == TextureFormat::D24S8 || format == TextureFormat::D24X8 ||
            format == TextureFormat::D32F;

@@ -84,8 +84,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 5,
-              "the enum lengths below were pinned at format version 5: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 6,
+              "the enum lengths below were pinned at format version 6: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
@@ -111,7 +111,8 @@ static_assert(sizeof(SourceLoc) == 40);
 static_assert(sizeof(TypeDesc) == 112);
 static_assert(sizeof(Value) == 168);
 static_assert(sizeof(AnnotationValue) == 200);
-static_assert(sizeof(UniformBinding) == 184);
+static_assert(sizeof(UniformField) == 168);
+static_assert(sizeof(UniformBinding) == 208);
 static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
 static_assert(sizeof(StorageBufferBinding) == 72);
@@ -131,9 +132,11 @@ static_assert(sizeof(CompiledTechnique) == 184);
 static_assert(sizeof(TextureDesc) == 2296);
 static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
+static_assert(sizeof(StructMemberInfo) == 176);
+static_assert(sizeof(StructInfo) == 56);
 static_assert(sizeof(ParameterInfo) == 360);
 static_assert(sizeof(EffectProvenance) == 112);
-static_assert(sizeof(CompiledEffect) == 352);
+static_assert(sizeof(CompiledEffect) == 376);
 #endif
 
 // [SECTION] Fields, in file order
@@ -165,9 +168,13 @@ void fields(A& a, AnnotationValue& x) {
     a(x.name, x.value);
 }
 template <class A>
+void fields(A& a, UniformField& x) {
+    a(x.path, x.type, x.firstComponent, x.offset, x.arrayStride, x.matrixStride, x.hlslColumnsContiguous);
+}
+template <class A>
 void fields(A& a, UniformBinding& x) {
     a(x.name, x.source, x.index, x.type, x.offset, x.size, x.arrayStride, x.matrixStride);
-    a(x.hlslColumnsContiguous, x.active);
+    a(x.hlslColumnsContiguous, x.active, x.fields);
 }
 template <class A>
 void fields(A& a, SamplerBinding& x) {
@@ -265,6 +272,14 @@ void fields(A& a, RefusedTechnique& x) {
     a(x.name, x.group, x.reason, x.loc);
 }
 template <class A>
+void fields(A& a, StructMemberInfo& x) {
+    a(x.name, x.type, x.semantic);
+}
+template <class A>
+void fields(A& a, StructInfo& x) {
+    a(x.name, x.members);
+}
+template <class A>
 void fields(A& a, ParameterInfo& x) {
     a(x.name, x.type, x.semantic, x.isStatic, x.isShared, x.loc, x.light, x.hasParameterization);
     a(x.parameterization, x.parameterizationLoc, x.annotations);
@@ -275,7 +290,7 @@ void fields(A& a, EffectProvenance& x) {
 }
 template <class A>
 void fields(A& a, CompiledEffect& x) {
-    a(x.provenance, x.path, x.parameters, x.initialValues, x.textures, x.samplers, x.passSamplers);
+    a(x.provenance, x.path, x.parameters, x.initialValues, x.structs, x.textures, x.samplers, x.passSamplers);
     a(x.techniques);
     a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.maxScriptLoopCount);
 }

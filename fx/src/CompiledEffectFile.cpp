@@ -9,6 +9,8 @@
 
 #include "CompiledEffectFields.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -49,6 +51,18 @@ public:
     std::string run() {
         if (mEffect.initialValues.size() != mParameters)
             return "initial values and parameters differ in number";
+        // A struct holds structs listed before it only (componentCount counts no further), and a value is
+        // sized by its count.
+        for (size_t i = 0; i < mEffect.structs.size(); ++i)
+            for (const StructMemberInfo& member : mEffect.structs[i].members)
+                if (member.type.base == BaseType::Struct &&
+                    std::none_of(mEffect.structs.begin(),
+                                 mEffect.structs.begin() + static_cast<std::ptrdiff_t>(i),
+                                 [&](const StructInfo& s) { return s.name == member.type.structName; }))
+                    return "struct '" + mEffect.structs[i].name + "' holds a struct not listed before it";
+        for (const ParameterInfo& parameter : mEffect.parameters)
+            if (mEffect.componentCount(parameter.type) > (size_t(1) << 24))
+                return "parameter '" + parameter.name + "' holds more than 2^24 numbers";
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters) return "a texture names no parameter";
         for (const std::vector<SamplerDesc>* list : {&mEffect.samplers, &mEffect.passSamplers})
@@ -215,6 +229,38 @@ std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes
     return effect;
 }
 
+namespace {
+
+bool isTextureFile(const TextureDesc& texture) {
+    return texture.kind == TextureDesc::Kind::File && !texture.resolvedPath.empty();
+}
+
+// A texture file named by a relative path is found from where the file is loaded: first beside the file
+// (an application ships the file with its textures laid out as beside the source), then beside the source
+// effect the file was compiled from. One found nowhere is drawn with a neutral texture after a warning, as
+// the compiler does for a file missing at compile time.
+void findTextureFiles(CompiledEffect& effect, const std::string& path, DiagnosticSink& diagnostics) {
+    const std::filesystem::path folders[] = {std::filesystem::path(path).parent_path(),
+                                             std::filesystem::path(effect.path).parent_path()};
+    for (TextureDesc& texture : effect.textures) {
+        if (!isTextureFile(texture) || std::filesystem::path(texture.resolvedPath).is_absolute()) continue;
+        const std::string relative = texture.resolvedPath;
+        texture.resolvedPath.clear();
+        for (const std::filesystem::path& folder : folders) {
+            std::error_code error;
+            const std::filesystem::path candidate = folder / relative;
+            if (std::filesystem::exists(candidate, error)) {
+                texture.resolvedPath = candidate.string();
+                break;
+            }
+        }
+        if (texture.resolvedPath.empty())
+            diagnostics.report(DiagId::TextureFileNotFound, texture.loc, {texture.resourceName});
+    }
+}
+
+}  // namespace
+
 std::unique_ptr<CompiledEffect> readCompiledEffectFile(const std::string& path, DiagnosticSink& diagnostics) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -222,12 +268,31 @@ std::unique_ptr<CompiledEffect> readCompiledEffectFile(const std::string& path, 
         return nullptr;
     }
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return deserializeCompiledEffect(bytes, path, diagnostics);
+    std::unique_ptr<CompiledEffect> effect = deserializeCompiledEffect(bytes, path, diagnostics);
+    if (effect) findTextureFiles(*effect, path, diagnostics);
+    return effect;
 }
 
 bool writeCompiledEffectFile(const CompiledEffect& effect, const std::string& path,
                              DiagnosticSink& diagnostics) {
-    const std::string bytes = serializeCompiledEffect(effect);
+    // The file records texture files relative to the source effect's folder, not to the folder the
+    // compiler ran in (readCompiledEffectFile finds them). A texture named by an absolute path keeps it.
+    std::string bytes;
+    if (std::any_of(effect.textures.begin(), effect.textures.end(), isTextureFile)) {
+        CompiledEffect relative = effect;
+        const std::filesystem::path source = std::filesystem::path(effect.path).parent_path();
+        for (TextureDesc& texture : relative.textures) {
+            std::string name = texture.resourceName;
+            std::replace(name.begin(), name.end(), '\\', '/');
+            if (!isTextureFile(texture) || std::filesystem::path(name).is_absolute()) continue;
+            const std::filesystem::path fromSource =
+                std::filesystem::path(texture.resolvedPath).lexically_relative(source);
+            if (!fromSource.empty()) texture.resolvedPath = fromSource.generic_string();
+        }
+        bytes = serializeCompiledEffect(relative);
+    } else {
+        bytes = serializeCompiledEffect(effect);
+    }
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();

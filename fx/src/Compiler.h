@@ -63,6 +63,7 @@ private:
                    : &mOut->initialValues[it->second];
     }
 
+    void structTable();
     void initialValues();
     void parameterInfo();
     static Annotations annotationValues(const std::vector<Annotation>& annotations);
@@ -109,6 +110,7 @@ private:
     void reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered);
     SourceLoc userLocation(const HlslMessage& m, const LoweredStage& lowered) const;
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
+    void resolveStructFields(UniformBinding& u) const;
     const Expr* shaderExpr(const StateAssignment& s);
     CompiledPass compilePass(const Pass& p, PassSlot slot);
     // [SECTION] Compute passes (ComputePass.cpp)

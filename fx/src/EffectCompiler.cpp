@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace fx::detail {
 
@@ -30,11 +31,32 @@ bool literalOnly(const Expr& e) {
 
 // [SECTION] Initial values
 
+// The structs that parameters are of, with the structs their members are of, in declaration order: HLSL
+// declares a struct before a struct that holds it.
+void Compiler::structTable() {
+    std::set<std::string> used;
+    for (const Parameter& p : mEffect.parameters)
+        if (p.type.base == BaseType::Struct) used.insert(p.type.structName);
+    for (auto s = mEffect.structs.rbegin(); s != mEffect.structs.rend(); ++s)
+        if (used.count(s->name))
+            for (const StructMember& m : s->members)
+                if (m.type.base == BaseType::Struct) used.insert(m.type.structName);
+    for (const StructDecl& s : mEffect.structs) {
+        if (!used.count(s.name)) continue;
+        StructInfo info;
+        info.name = s.name;
+        for (const StructMember& m : s.members) info.members.push_back({m.name, m.type, m.semantic});
+        mOut->structs.push_back(std::move(info));
+    }
+}
+
 void Compiler::initialValues() {
     // In order, so that later initializers see earlier values (`float4 c = {Z, Z, Z, Z}` after `float Z`).
     for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
         const Parameter& p = mEffect.parameters[i];
         Value v = zeroValue(p.type);
+        // A struct starts at zero, its initializer unevaluated: the preshaders read no struct.
+        if (p.type.base == BaseType::Struct) v.data.assign(mOut->componentCount(p.type), 0.0f);
         if (p.initializer && p.initializer->kind != Expr::Kind::Compile &&
             (p.type.isNumeric() || p.type.base == BaseType::String)) {
             if (auto r = eval(*p.initializer, &p.type)) v = std::move(*r);
@@ -313,6 +335,7 @@ void Compiler::pointSprites(CompiledPass& pass) {
 }
 
 std::unique_ptr<CompiledEffect> Compiler::run() {
+    structTable();
     initialValues();
     parameterInfo();
     textures();

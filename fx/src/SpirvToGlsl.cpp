@@ -61,6 +61,48 @@ void storageRuns(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::S
     }
 }
 
+// The type of an array's elements (of every dimension); `type` itself if it is no array.
+const spirv_cross::SPIRType& arrayElement(const spirv_cross::CompilerGLSL& compiler,
+                                          const spirv_cross::SPIRType& type) {
+    const spirv_cross::SPIRType* element = &type;
+    while (!element->array.empty()) element = &compiler.get_type(element->parent_type);
+    return *element;
+}
+
+// The numeric members of one element of struct `type` as a uniform block lays them out, at `base` bytes
+// from the block member, named by `path` and their member names (UniformField).
+void structFields(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::SPIRType& type, uint32_t base,
+                  const std::string& path, std::vector<UniformField>& fields) {
+    for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+        const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
+        const uint32_t offset = base + compiler.type_struct_member_offset(type, i);
+        const std::string name = path + "." + compiler.get_member_name(type.self, i);
+        if (member.basetype == spirv_cross::SPIRType::Struct) {
+            // Each element of an array of structs has fields of its own: "[k]" counts the elements of
+            // every dimension in turn, as the host's value holds them.
+            uint32_t count = 1, stride = 0;
+            if (!member.array.empty()) {
+                for (uint32_t dim : member.array) count *= std::max(dim, 1u);
+                stride = compiler.type_struct_member_array_stride(type, i);
+            }
+            for (uint32_t k = 0; k < count; ++k)
+                structFields(compiler, arrayElement(compiler, member), offset + k * stride,
+                             member.array.empty() ? name : name + "[" + std::to_string(k) + "]", fields);
+            continue;
+        }
+        UniformField field;
+        field.path = name;
+        field.offset = offset;
+        if (!member.array.empty()) field.arrayStride = compiler.type_struct_member_array_stride(type, i);
+        if (member.columns > 1) {
+            field.matrixStride = compiler.type_struct_member_matrix_stride(type, i);
+            field.hlslColumnsContiguous =
+                compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
+        }
+        fields.push_back(std::move(field));
+    }
+}
+
 // GLSL's layout qualifier of a storage image's format, as the runtime reads it (GpuTexture's image formats).
 std::string imageFormatQualifier(spv::ImageFormat format) {
     switch (format) {
@@ -233,6 +275,13 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                 u.active =
                     std::any_of(active.begin(), active.end(),
                                 [i](const spirv_cross::BufferRange& range) { return range.index == i; });
+                if (member.basetype == spirv_cross::SPIRType::Struct) {
+                    uint32_t count = 1;
+                    for (uint32_t dim : member.array) count *= std::max(dim, 1u);
+                    for (uint32_t k = 0; k < count; ++k)
+                        structFields(compiler, arrayElement(compiler, member), k * u.arrayStride,
+                                     member.array.empty() ? "" : "[" + std::to_string(k) + "]", u.fields);
+                }
                 program.uniforms.push_back(u);
             }
             break;  // one $Global block per unit

@@ -72,6 +72,49 @@ bool isUnsupportedStageForm(DiagId id) {
 
 }  // namespace
 
+namespace {
+
+// Where each numeric member of a value of `type` starts in the value (Value::data), by its path: ".color",
+// "[1].lights[0].position" (elements of every dimension counted in turn, as the reflection names them).
+void structLeaves(const CompiledEffect& effect, const TypeDesc& type, const std::string& path, size_t first,
+                  std::map<std::string, std::pair<TypeDesc, size_t>>& leaves) {
+    const StructInfo* info = effect.findStruct(type.structName);
+    if (type.base != BaseType::Struct || !info) {
+        leaves[path] = {type, first};
+        return;
+    }
+    TypeDesc element = type;
+    element.arrayDims.clear();
+    const size_t elementComponents = effect.componentCount(element);
+    size_t count = 1;
+    for (int dim : type.arrayDims) count *= static_cast<size_t>(std::max(dim, 1));
+    for (size_t k = 0; k < count; ++k) {
+        const std::string at = type.arrayDims.empty() ? path : path + "[" + std::to_string(k) + "]";
+        size_t member = first + k * elementComponents;
+        for (const StructMemberInfo& m : info->members) {
+            structLeaves(effect, m.type, at + "." + m.name, member, leaves);
+            member += effect.componentCount(m.type);
+        }
+    }
+}
+
+}  // namespace
+
+// The reflection names each field of a struct parameter by its path; the parameter's type says which
+// numbers of its value it holds. A field the type does not have stays out (its bytes stay zero).
+void Compiler::resolveStructFields(UniformBinding& u) const {
+    std::map<std::string, std::pair<TypeDesc, size_t>> leaves;
+    if (u.source == UniformBinding::Source::Parameter && u.type.base == BaseType::Struct)
+        structLeaves(*mOut, u.type, "", 0, leaves);
+    std::erase_if(u.fields, [&](UniformField& field) {
+        auto leaf = leaves.find(field.path);
+        if (leaf == leaves.end() || !leaf->second.first.isNumeric()) return true;
+        field.type = leaf->second.first;
+        field.firstComponent = static_cast<uint32_t>(leaf->second.second);
+        return false;
+    });
+}
+
 void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass) {
     // Indices are resolved on every compile, cache hit or not: an unchanged unit may belong to an effect
     // whose parameter list changed elsewhere (a texture added before it).
@@ -89,6 +132,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
                 u.type = mEffect.parameters[it->second].type;
             }
         }
+        if (!u.fields.empty()) resolveStructFields(u);
     }
     for (SamplerBinding& s : program.samplers) {
         auto it = mIndex.find(s.pairTexture.empty() ? s.glslName : s.pairSampler);

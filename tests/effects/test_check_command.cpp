@@ -430,4 +430,23 @@ TEST(CheckCommand, ListsTechniquesAndRejectsBadUsage) {
     EXPECT_NE(help.output.find("usage: shadowfx check"), std::string::npos);
 }
 
+// --host: an effect written for an application, without SAS scripts, is checked on the frame its host
+// file describes (the shadow map drawn from the light, then the lit scene); a host file that cannot be
+// read fails the run before anything renders.
+TEST(CheckCommand, AHostFileDrawsTheApplicationsFrame) {
+    const shadowfx::test::ScratchDirectory scratch("check_host");
+    const RunResult result = run(
+        "check tests/data/host/app_shadow.fx --host tests/data/host/app_shadow.json --technique RenderScene "
+        "--scenes boxes --backend egl --out " +
+        (scratch / "out").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(row(result.output, "RenderScene", "boxes", "render").find("PASS"), std::string::npos)
+        << result.output;
+    const RunResult missing =
+        run("check tests/data/host/app_shadow.fx --host no_such_host.json --backend egl --out " +
+            (scratch / "out").string());
+    EXPECT_EQ(missing.exitCode, 1) << missing.output;
+    EXPECT_NE(missing.output.find("no_such_host.json"), std::string::npos) << missing.output;
+}
+
 }  // namespace

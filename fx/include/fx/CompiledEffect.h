@@ -38,6 +38,19 @@ enum class ShaderStage { Vertex, Fragment, Geometry, Hull, Domain, Compute };
 // The stage as the effect's author names it: "vertex", "pixel", "geometry", "hull", "domain", "compute".
 std::string_view shaderStageName(ShaderStage stage);
 
+// A numeric member of a struct parameter as its uniform block stores it: the part of the parameter's value
+// (Value::data from `firstComponent`, `type.componentCount()` numbers) that goes to `offset` bytes past the
+// block member, laid out as UniformBinding lays out a parameter.
+struct UniformField {
+    std::string path;  // the member after the parameter's name: ".color", "[1].lights[0].position"
+    TypeDesc type;     // numeric
+    uint32_t firstComponent = 0;
+    uint32_t offset = 0;  // from the block member's offset
+    uint32_t arrayStride = 0;
+    uint32_t matrixStride = 0;
+    bool hlslColumnsContiguous = true;
+};
+
 // One member of a stage's uniform block (std140; offsets and strides from SPIRV-Cross reflection).
 struct UniformBinding {
     enum class Source { Parameter, CompileArgument };
@@ -56,6 +69,9 @@ struct UniformBinding {
     // False if the stage's code never reads the member (glslang keeps every global in the block): the
     // runtime neither packs nor binds it (SPIRV-Cross's active buffer ranges).
     bool active = true;
+    // A struct parameter (or an array of them): where the block holds each number of its value, one field
+    // per numeric member of each element, nested structs and their arrays taken apart. Empty elsewhere.
+    std::vector<UniformField> fields;
 };
 
 // SamplerBinding::samplerParameter of a texture read without a sampler (Texture2D.Load).
@@ -329,6 +345,19 @@ struct ParameterInfo {
     Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
 };
 
+// A struct that parameters have as their type, directly or through members of other structs. Its value
+// is its members' numbers in declaration order (CompiledEffect::componentCount), as D3DX's SetRawValue
+// takes a struct's floats.
+struct StructMemberInfo {
+    std::string name;
+    TypeDesc type;         // numeric, or a struct listed before this one in CompiledEffect::structs
+    std::string semantic;  // as written; "" if none
+};
+struct StructInfo {
+    std::string name;
+    std::vector<StructMemberInfo> members;
+};
+
 // Where a compiled effect came from, recorded in its file (fx/CompiledEffectFile.h) and printed by
 // `shadowfx info`: what to compile again when the file is older than the source.
 struct EffectProvenance {
@@ -342,6 +371,7 @@ struct CompiledEffect {
     std::string path;                       // the effect's main file, for diagnostics
     std::vector<ParameterInfo> parameters;  // one per Effect::parameters entry, same indices
     std::vector<Value> initialValues;       // one per Effect::parameters entry (evaluated initializers)
+    std::vector<StructInfo> structs;        // the structs parameters are of, each after those it holds
     std::vector<TextureDesc> textures;
     std::vector<SamplerDesc> samplers;
     // The states samplers have in the passes that set their registers' (SamplerBinding::passSampler): the
@@ -361,6 +391,10 @@ struct CompiledEffect {
     const ParameterInfo* findParameter(const std::string& name) const;  // case-sensitive, as HLSL
     const TextureDesc* findTexture(size_t parameter) const;
     const SamplerDesc* findSampler(size_t parameter) const;
+    const StructInfo* findStruct(const std::string& name) const;
+    // The numbers a value of `type` holds: TypeDesc::componentCount, with a struct's members counted (0 for
+    // a struct this effect does not list).
+    size_t componentCount(const TypeDesc& type) const;
 };
 
 }  // namespace fx

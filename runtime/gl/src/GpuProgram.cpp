@@ -26,12 +26,11 @@ void writeScalar(std::vector<uint8_t>& block, size_t offset, fx::BaseType base, 
     }
 }
 
-}  // namespace
-
-void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value,
-                         std::vector<uint8_t>& block) {
-    const fx::TypeDesc& type = member.type;
-    if (type.base == fx::BaseType::Struct) return;  // struct parameters hold no values: they stay zero
+// Packs `type`'s numbers, value.data from `first` on, at `offset` in the block: arrays by `arrayStride`,
+// matrices by `matrixStride` in the orientation the block stores them.
+void packNumbers(const fx::TypeDesc& type, size_t offset, uint32_t arrayStride, uint32_t matrixStride,
+                 bool hlslColumnsContiguous, const fx::Value& value, size_t first,
+                 std::vector<uint8_t>& block) {
     const int rows = type.shape == fx::Shape::Matrix ? type.rows : 1;
     const int cols = type.shape == fx::Shape::Scalar ? 1 : type.cols;
     const size_t perElement = static_cast<size_t>(rows * cols);
@@ -39,23 +38,38 @@ void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& valu
     for (int dim : type.arrayDims) elements *= dim;
 
     for (int e = 0; e < elements; ++e) {
-        const size_t elementOffset = member.offset + static_cast<size_t>(e) * member.arrayStride;
+        const size_t elementOffset = offset + static_cast<size_t>(e) * arrayStride;
         for (int r = 0; r < rows; ++r) {
             for (int c = 0; c < cols; ++c) {
-                const size_t source = static_cast<size_t>(e) * perElement + static_cast<size_t>(r * cols + c);
+                const size_t source =
+                    first + static_cast<size_t>(e) * perElement + static_cast<size_t>(r * cols + c);
                 const float component = source < value.data.size() ? value.data[source] : 0.0f;
-                size_t offset = elementOffset;
+                size_t at = elementOffset;
                 if (type.shape == fx::Shape::Matrix) {
-                    offset += member.hlslColumnsContiguous
-                                  ? static_cast<size_t>(c) * member.matrixStride + static_cast<size_t>(r) * 4
-                                  : static_cast<size_t>(r) * member.matrixStride + static_cast<size_t>(c) * 4;
+                    at += hlslColumnsContiguous
+                              ? static_cast<size_t>(c) * matrixStride + static_cast<size_t>(r) * 4
+                              : static_cast<size_t>(r) * matrixStride + static_cast<size_t>(c) * 4;
                 } else {
-                    offset += static_cast<size_t>(c) * 4;
+                    at += static_cast<size_t>(c) * 4;
                 }
-                writeScalar(block, offset, type.base, component);
+                writeScalar(block, at, type.base, component);
             }
         }
     }
+}
+
+}  // namespace
+
+void UniformPacker::pack(const fx::UniformBinding& member, const fx::Value& value,
+                         std::vector<uint8_t>& block) {
+    if (member.type.base == fx::BaseType::Struct) {
+        for (const fx::UniformField& field : member.fields)
+            packNumbers(field.type, member.offset + field.offset, field.arrayStride, field.matrixStride,
+                        field.hlslColumnsContiguous, value, field.firstComponent, block);
+        return;
+    }
+    packNumbers(member.type, member.offset, member.arrayStride, member.matrixStride,
+                member.hlslColumnsContiguous, value, 0, block);
 }
 
 // [SECTION] GpuProgram

@@ -2,10 +2,12 @@
 #include "CheckExpectations.h"
 
 #include <fx/Preshader.h>
+#include <fx/RenderStates.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -30,13 +32,30 @@ std::string sceneLabel(const std::string& scene) {
                : scene;
 }
 
-bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
+namespace {
+
+// An annotation as the expectations read it, from the syntax or from a compiled effect: its text where it
+// is a string, its number where it is one.
+struct ExpectationAnnotation {
+    std::string name;
+    fx::SourceLoc loc;
+    std::optional<std::string> text;
+    std::optional<double> number;
+};
+
+bool readAnnotations(const std::vector<ExpectationAnnotation>& annotations, Expectations& out,
+                     fx::DiagnosticSink& sink) {
     bool ok = true;
+    const auto annotation = [&](std::string_view name) -> const ExpectationAnnotation* {
+        for (const ExpectationAnnotation& a : annotations)
+            if (fx::equalsIgnoreCase(a.name, name)) return &a;
+        return nullptr;
+    };
     // A misspelt expectation would silently check nothing.
     static const std::set<std::string> kKnown{"expectscenes",           "expectmisclassifiedbelow",
                                               "expectpenumbramaebelow", "expectarearadius",
                                               "expectmapsize",          "expectshadows"};
-    for (const fx::Annotation& a : technique.annotations) {
+    for (const ExpectationAnnotation& a : annotations) {
         std::string lower = a.name;
         for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (lower.rfind("expect", 0) == 0 && kKnown.count(lower) == 0) {
@@ -45,28 +64,21 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
         }
     }
     auto number = [&](const char* name) -> std::optional<double> {
-        const fx::Annotation* a = technique.annotation(name);
+        const ExpectationAnnotation* a = annotation(name);
         if (!a) return std::nullopt;
-        const fx::TypeDesc scalar;  // float
-        std::optional<fx::Value> value =
-            a->value.kind == fx::Expr::Kind::String
-                ? std::nullopt
-                : fx::evaluate(
-                      a->value, [](std::string_view) -> const fx::Value* { return nullptr; }, &scalar,
-                      nullptr);
-        if (!value || !std::isfinite(value->asFloat())) {
+        if (!a->number || !std::isfinite(*a->number)) {
             sink.report(fx::DiagId::ExpectationNumberExpected, a->loc, {name});
             ok = false;
             return std::nullopt;
         }
-        return value->asFloat();
+        return *a->number;
     };
-    if (const fx::Annotation* a = technique.annotation("ExpectScenes")) {
-        if (a->value.kind != fx::Expr::Kind::String || commaSeparated(a->value.text).empty()) {
+    if (const ExpectationAnnotation* a = annotation("ExpectScenes")) {
+        if (!a->text || commaSeparated(*a->text).empty()) {
             sink.report(fx::DiagId::ExpectScenesInvalid, a->loc, {});
             ok = false;
         } else {
-            out.scenes = commaSeparated(a->value.text);
+            out.scenes = commaSeparated(*a->text);
             for (std::string& scene : out.scenes) {
                 scene.erase(0, scene.find_first_not_of(" \t"));
                 scene.erase(scene.find_last_not_of(" \t") + 1);
@@ -77,8 +89,8 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     // would silently check nothing).
     auto bound = [&](const char* name) {
         SceneBound result;
-        const fx::Annotation* a = technique.annotation(name);
-        if (!a || a->value.kind != fx::Expr::Kind::String) {
+        const ExpectationAnnotation* a = annotation(name);
+        if (!a || !a->text) {
             result.everyScene = number(name);
             return result;
         }
@@ -87,7 +99,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
             ok = false;
             return SceneBound{};
         };
-        for (std::string entry : commaSeparated(a->value.text)) {
+        for (std::string entry : commaSeparated(*a->text)) {
             const size_t eq = entry.find('=');
             std::string scene = entry.substr(0, eq);
             scene.erase(0, scene.find_first_not_of(" \t"));
@@ -113,8 +125,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     out.penumbraMaeBelow = bound("ExpectPenumbraMaeBelow");
     if (std::optional<double> radius = number("ExpectAreaRadius")) {
         if (!(*radius > 0.0 && *radius < 1e6)) {
-            sink.report(fx::DiagId::ExpectAreaRadiusInvalid, technique.annotation("ExpectAreaRadius")->loc,
-                        {});
+            sink.report(fx::DiagId::ExpectAreaRadiusInvalid, annotation("ExpectAreaRadius")->loc, {});
             ok = false;
         } else {
             out.areaRadius = static_cast<float>(*radius);
@@ -122,7 +133,7 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     }
     if (std::optional<double> size = number("ExpectMapSize")) {
         if (*size < 1 || *size > 16384 || *size != std::floor(*size)) {
-            sink.report(fx::DiagId::ExpectMapSizeInvalid, technique.annotation("ExpectMapSize")->loc, {});
+            sink.report(fx::DiagId::ExpectMapSizeInvalid, annotation("ExpectMapSize")->loc, {});
             ok = false;
         } else {
             out.mapSize = static_cast<int>(*size);
@@ -130,6 +141,40 @@ bool readExpectations(const fx::Technique& technique, Expectations& out, fx::Dia
     }
     if (std::optional<double> shadows = number("ExpectShadows")) out.shadows = *shadows != 0.0;
     return ok;
+}
+
+}  // namespace
+
+bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink) {
+    std::vector<ExpectationAnnotation> annotations;
+    for (const fx::Annotation& a : technique.annotations) {
+        ExpectationAnnotation& read = annotations.emplace_back();
+        read.name = a.name;
+        read.loc = a.loc;
+        if (a.value.kind == fx::Expr::Kind::String) {
+            read.text = a.value.text;
+            continue;
+        }
+        const fx::TypeDesc scalar;  // float
+        const std::optional<fx::Value> value = fx::evaluate(
+            a.value, [](std::string_view) -> const fx::Value* { return nullptr; }, &scalar, nullptr);
+        if (value) read.number = value->asFloat();
+    }
+    return readAnnotations(annotations, out, sink);
+}
+
+bool readExpectations(const fx::CompiledTechnique& technique, Expectations& out, fx::DiagnosticSink& sink) {
+    std::vector<ExpectationAnnotation> annotations;
+    for (const fx::AnnotationValue& a : technique.annotations) {
+        ExpectationAnnotation& read = annotations.emplace_back();
+        read.name = a.name;
+        read.loc = technique.loc;
+        if (a.value.type.base == fx::BaseType::String)
+            read.text = a.value.string;
+        else if (a.value.data.size() == 1)
+            read.number = a.value.asFloat();
+    }
+    return readAnnotations(annotations, out, sink);
 }
 
 }  // namespace runtime

@@ -1,7 +1,8 @@
 // CheckExpectations: what a technique promises `shadowfx check` in its Expect* annotations (docs/scoring.md),
-// read from the effect's syntax: the scenes to check and per-scene bounds.
+// read from the effect's syntax or its compiled file: the scenes to check and per-scene bounds.
 #pragma once
 
+#include <fx/CompiledEffect.h>
 #include <fx/Diagnostics.h>
 #include <fx/Effect.h>
 
@@ -42,5 +43,8 @@ struct Expectations {
 // of the wrong kind or an unknown Expect* name is an error at the annotation (ExpectationUnknown and the
 // other Expect* ids); false then.
 bool readExpectations(const fx::Technique& technique, Expectations& out, fx::DiagnosticSink& sink);
+// The same of a technique of a compiled effect (a compiled effect file), whose annotations are values: the
+// errors are located at the technique.
+bool readExpectations(const fx::CompiledTechnique& technique, Expectations& out, fx::DiagnosticSink& sink);
 
 }  // namespace runtime

@@ -7,6 +7,7 @@
 #include "CheckExpectations.h"
 #include "GoldenImages.h"
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
 #include <report/NumberFormat.h>
 #include <runtime/DiagnosticLog.h>
@@ -71,6 +72,8 @@ struct Variants {
     std::shared_ptr<fx::CompiledEffect> shaded;
     std::shared_ptr<fx::CompiledEffect> visibility;  // with SHADOWFX_VISIBILITY
     bool exposesVisibility = false;
+    // Read from a compiled effect file: the one variant it holds, so no SHADOWFX_VISIBILITY variant.
+    bool fromCompiledFile = false;
 };
 
 struct TechniquePlan {
@@ -277,6 +280,10 @@ private:
             if (!expects) {
                 row("misclassified", Outcome::QualityWarning,
                     "the technique declares no ExpectMisclassifiedBelow (or ExpectShadows = false)");
+            } else if (technique.variants.fromCompiledFile) {
+                row("expectations", Outcome::NotSupported,
+                    "a compiled effect file holds the variant it was compiled with, not the "
+                    "SHADOWFX_VISIBILITY variant the scores need: check the .fx file to score its shadows");
             } else if (!visibility) {
                 row("expectations", Outcome::Fail,
                     "expectations declared, but the effect's pixel shaders ignore SHADOWFX_VISIBILITY "
@@ -460,6 +467,45 @@ private:
     std::set<std::string> mImagesWritten;  // failure images written by this run
 };
 
+// A compiled effect file's techniques, with the effect it holds as their shaded variant: it renders and
+// meets goldens as it stands, but the scores need the SHADOWFX_VISIBILITY variant, which only its source
+// compiles. The techniques (or the file that failed to read) to count as matched.
+size_t planCompiledFile(const std::string& path, const std::vector<std::string>& techniqueFilter,
+                        Checker& checker, DiagnosticLog& sink, EffectPlan& plan) {
+    std::shared_ptr<fx::CompiledEffect> compiled = fx::readCompiledEffectFile(path, sink);
+    if (!compiled || sink.failed()) {
+        checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail,
+                    sink.firstError("cannot read " + path));
+        return 1;
+    }
+    if (compiled->techniques.empty()) {
+        sink.report(fx::DiagId::NoTechniques, fx::SourceLoc{path, 1, 1});
+        checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail, sink.firstError(""));
+        return 1;
+    }
+    plan.carriesExpectations = std::filesystem::exists(plan.goldens);
+    for (const fx::CompiledTechnique& technique : compiled->techniques)
+        for (const fx::AnnotationValue& a : technique.annotations)
+            plan.carriesExpectations =
+                plan.carriesExpectations ||
+                (a.name.size() > 6 && fx::equalsIgnoreCase(a.name.substr(0, 6), "Expect"));
+    for (const fx::CompiledTechnique& technique : compiled->techniques) {
+        if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
+                                                  technique.name) == techniqueFilter.end())
+            continue;
+        TechniquePlan& t = plan.techniques.emplace_back();
+        t.name = technique.name;
+        sink.mark();
+        if (!readExpectations(technique, t.expect, sink)) {
+            checker.add("-", plan.name, t.name, "-", "expectations", Outcome::Fail, sink.firstError(""));
+            continue;
+        }
+        t.variants.shaded = compiled;
+        t.variants.fromCompiledFile = true;
+    }
+    return plan.techniques.size();
+}
+
 }  // namespace
 
 ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceLog& log) {
@@ -469,7 +515,12 @@ ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceL
     // Each distinct warning and error once; a failing step names its first error in its result.
     DiagnosticLog sink(log.diagnostic);
     const fx::ParseOptions& parseOptions = o.parseOptions;
-    const std::vector<std::string>& techniqueFilter = o.techniques;
+    // A host file draws one frame whatever the technique, from the techniques it names: the whole effect
+    // compiles, and one check named after what draws the frame checks it, as bench runs it.
+    const std::vector<std::string> techniqueFilter =
+        o.host && o.techniques.empty() && !o.host->frame.empty()
+            ? std::vector<std::string>{o.host->frame.back().technique}
+            : o.techniques;
     Settings settings;
     settings.width = o.width;
     settings.height = o.height;
@@ -500,6 +551,11 @@ ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceL
         plan.name = std::filesystem::path(path).stem().string();
         plan.goldens = std::filesystem::path(path).parent_path() / "golden" / plan.name;
         sink.mark();
+        if (fx::isCompiledEffectFile(path)) {
+            matched += planCompiledFile(path, techniqueFilter, checker, sink, plan);
+            if (!plan.techniques.empty()) plans.push_back(std::move(plan));
+            continue;
+        }
         std::shared_ptr<fx::Effect> effect = fx::parseEffectFile(path, parseOptions, sink);
         if (!effect || sink.failed()) {
             checker.add("-", plan.name, "-", "-", "compile", Outcome::Fail,
@@ -534,10 +590,11 @@ ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceL
             if (t.expect.mapSize)
                 defines.emplace_back("SHADOWFX_SHADOW_MAP_SIZE", std::to_string(*t.expect.mapSize));
             pending.push_back({plans.size(), plan.techniques.size() - 1, requests.size()});
-            requests.push_back({path, defines, t.name});
+            const std::string kept = o.host ? "" : t.name;  // the technique compiled alone
+            requests.push_back({path, defines, kept});
             if (t.expect.shadows) {
                 defines.emplace_back("SHADOWFX_VISIBILITY", "1");
-                requests.push_back({path, defines, t.name});
+                requests.push_back({path, defines, kept});
             }
         }
         matched += plan.techniques.size();

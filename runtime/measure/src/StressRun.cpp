@@ -4,6 +4,7 @@
 // [SECTION] Runs   effect x technique x case: render, finite values, error, shimmer
 #include <runtime/StressRun.h>
 
+#include <fx/CompiledEffectFile.h>
 #include <fx/EffectCompiler.h>
 #include <report/NumberFormat.h>
 #include <runtime/DiagnosticLog.h>
@@ -336,6 +337,18 @@ std::optional<EffectUnderTest> compileForStress(const std::string& path, const f
     const std::pair<std::string, std::string> size{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(mapSize)};
     EffectUnderTest effect;
     effect.path = path;
+    // A compiled file is the one variant it was compiled with: its frame is the shadow factor where that
+    // variant is the SHADOWFX_VISIBILITY one (its provenance says), else its error goes unscored, as that
+    // of an effect that ignores the define.
+    if (fx::isCompiledEffectFile(path)) {
+        effect.visibility = compileVariant(path, base, {}, sink);
+        if (!effect.visibility) return std::nullopt;
+        const auto& defines = effect.visibility->provenance.defines;
+        effect.exposesVisibility = std::any_of(defines.begin(), defines.end(), [](const auto& define) {
+            return define.first == "SHADOWFX_VISIBILITY" && define.second != "0";
+        });
+        return effect;
+    }
     effect.visibility = compileVariant(path, base, {size, {"SHADOWFX_VISIBILITY", "1"}}, sink);
     std::shared_ptr<fx::CompiledEffect> shaded = compileVariant(path, base, {size}, sink);
     if (!effect.visibility || !shaded) return std::nullopt;

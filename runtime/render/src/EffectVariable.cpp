@@ -7,6 +7,7 @@
 
 #include <runtime/EffectPass.h>
 
+#include <fx/RenderStates.h>
 #include <fx/StageReads.h>
 
 #include <algorithm>
@@ -47,48 +48,97 @@ std::optional<GLenum> textureTarget(fx::BaseType type) {
 
 }  // namespace
 
+EffectVariable::EffectVariable(EffectResources* resources, size_t parameter)
+    : mResources(resources), mParameter(parameter) {
+    const fx::ParameterInfo& info = resources->parameterInfo()[parameter];
+    mType = info.type;
+    mSemantic = &info.semantic;
+}
+
+EffectVariable::EffectVariable(const EffectVariable& whole, std::string path, fx::TypeDesc type, size_t first,
+                               const std::string* semantic)
+    : mResources(whole.mResources),
+      mParameter(whole.mParameter),
+      mPath(std::move(path)),
+      mType(std::move(type)),
+      mFirst(first),
+      mSemantic(semantic) {}
+
 std::string EffectVariable::name() const {
-    if (!isValid()) return "";
-    const std::string& name = mResources->parameterInfo()[mParameter].name;
-    return mElement < 0 ? name : name + "[" + std::to_string(mElement) + "]";
+    return isValid() ? mResources->parameterInfo()[mParameter].name + mPath : "";
 }
 
 const std::string& EffectVariable::semantic() const {
     static const std::string none;
-    return isValid() ? mResources->parameterInfo()[mParameter].semantic : none;
+    return isValid() ? *mSemantic : none;
 }
 
 fx::TypeDesc EffectVariable::type() const {
-    if (!isValid()) return {};
-    const fx::TypeDesc& type = mResources->parameterInfo()[mParameter].type;
-    return mElement < 0 ? type : elementType(type);
+    return isValid() ? mType : fx::TypeDesc{};
 }
 
 size_t EffectVariable::elementCount() const {
-    const fx::TypeDesc t = type();
-    return isValid() && !t.arrayDims.empty() ? static_cast<size_t>(std::max(t.arrayDims[0], 0)) : 0;
+    return isValid() && !mType.arrayDims.empty() ? static_cast<size_t>(std::max(mType.arrayDims[0], 0)) : 0;
 }
 
 EffectVariable EffectVariable::element(size_t i) const {
-    // Elements of elements (float4 a[3][2]) are not addressed one by one: setFloatArray writes them.
-    if (mElement >= 0 || i >= elementCount()) return {};
-    return EffectVariable(mResources, mParameter, static_cast<int>(i));
+    if (i >= elementCount()) return {};
+    fx::TypeDesc element = elementType(mType);
+    const size_t first = mFirst + i * mResources->effect().componentCount(element);
+    return EffectVariable(*this, mPath + "[" + std::to_string(i) + "]", std::move(element), first, mSemantic);
+}
+
+// [SECTION] Struct members
+
+namespace {
+
+const fx::StructInfo* structOf(const fx::CompiledEffect& effect, const fx::TypeDesc& type) {
+    return type.base == fx::BaseType::Struct && type.arrayDims.empty() ? effect.findStruct(type.structName)
+                                                                       : nullptr;
+}
+
+}  // namespace
+
+size_t EffectVariable::memberCount() const {
+    const fx::StructInfo* info = isValid() ? structOf(mResources->effect(), mType) : nullptr;
+    return info ? info->members.size() : 0;
+}
+
+EffectVariable EffectVariable::member(size_t i) const {
+    if (i >= memberCount()) return {};
+    const fx::CompiledEffect& effect = mResources->effect();
+    const fx::StructInfo& info = *structOf(effect, mType);
+    size_t first = mFirst;
+    for (size_t m = 0; m < i; ++m) first += effect.componentCount(info.members[m].type);
+    const fx::StructMemberInfo& member = info.members[i];
+    return EffectVariable(*this, mPath + "." + member.name, member.type, first, &member.semantic);
+}
+
+EffectVariable EffectVariable::member(std::string_view name) const {
+    for (size_t i = 0; i < memberCount(); ++i)
+        if (structOf(mResources->effect(), mType)->members[i].name == name) return member(i);
+    return {};
+}
+
+EffectVariable EffectVariable::memberBySemantic(std::string_view semantic) const {
+    if (semantic.empty()) return {};
+    for (size_t i = 0; i < memberCount(); ++i)
+        if (fx::equalsIgnoreCase(structOf(mResources->effect(), mType)->members[i].semantic, semantic))
+            return member(i);
+    return {};
 }
 
 // [SECTION] Values
 
 bool EffectVariable::store(std::span<const float> components, size_t firstComponent) {
-    if (!isValid()) return false;
-    const fx::ParameterInfo& info = mResources->parameterInfo()[mParameter];
-    if (!info.type.isNumeric()) return false;
-    const size_t total = static_cast<size_t>(info.type.componentCount());
-    const fx::TypeDesc own = type();
-    const size_t ownCount = static_cast<size_t>(own.componentCount());
-    const size_t start = (mElement < 0 ? 0 : static_cast<size_t>(mElement) * ownCount) + firstComponent;
-    if (components.empty() || start + components.size() > total) return false;
+    if (!isValid() || !(mType.isNumeric() || mType.base == fx::BaseType::Struct)) return false;
+    const fx::CompiledEffect& effect = mResources->effect();
+    const size_t own = effect.componentCount(mType);
+    if (components.empty() || firstComponent + components.size() > own) return false;
     fx::Value value = mResources->values[mParameter];
-    value.data.resize(total, 0.0f);
-    std::copy(components.begin(), components.end(), value.data.begin() + static_cast<std::ptrdiff_t>(start));
+    value.data.resize(effect.componentCount(mResources->parameterInfo()[mParameter].type), 0.0f);
+    std::copy(components.begin(), components.end(),
+              value.data.begin() + static_cast<std::ptrdiff_t>(mFirst + firstComponent));
     storeParameter(mResources->parameterInfo(), mParameter, std::move(value), mResources->values,
                    mResources->stamps);
     mResources->pinned[mParameter] = true;
@@ -97,8 +147,7 @@ bool EffectVariable::store(std::span<const float> components, size_t firstCompon
 }
 
 bool EffectVariable::setFloat(float value) {
-    const fx::TypeDesc t = type();
-    if (t.shape != fx::Shape::Scalar || !t.arrayDims.empty()) return false;
+    if (mType.shape != fx::Shape::Scalar || !mType.arrayDims.empty() || !mType.isNumeric()) return false;
     return store(std::span<const float>(&value, 1), 0);
 }
 
@@ -111,39 +160,38 @@ bool EffectVariable::setBool(bool value) {
 }
 
 bool EffectVariable::setVector(const glm::vec2& value) {
-    const fx::TypeDesc t = type();
-    return t.shape == fx::Shape::Vector && t.cols == 2 && t.arrayDims.empty() && store({&value.x, 2}, 0);
+    return mType.shape == fx::Shape::Vector && mType.cols == 2 && mType.arrayDims.empty() &&
+           store({&value.x, 2}, 0);
 }
 
 bool EffectVariable::setVector(const glm::vec3& value) {
-    const fx::TypeDesc t = type();
-    return t.shape == fx::Shape::Vector && t.cols == 3 && t.arrayDims.empty() && store({&value.x, 3}, 0);
+    return mType.shape == fx::Shape::Vector && mType.cols == 3 && mType.arrayDims.empty() &&
+           store({&value.x, 3}, 0);
 }
 
 bool EffectVariable::setVector(const glm::vec4& value) {
-    const fx::TypeDesc t = type();
-    return t.shape == fx::Shape::Vector && t.cols == 4 && t.arrayDims.empty() && store({&value.x, 4}, 0);
+    return mType.shape == fx::Shape::Vector && mType.cols == 4 && mType.arrayDims.empty() &&
+           store({&value.x, 4}, 0);
 }
 
 bool EffectVariable::setMatrixData(int rows, int cols, const float* data) {
-    const fx::TypeDesc t = type();
-    if (t.shape != fx::Shape::Matrix || t.rows != rows || t.cols != cols || !t.arrayDims.empty())
+    if (mType.shape != fx::Shape::Matrix || mType.rows != rows || mType.cols != cols ||
+        !mType.arrayDims.empty())
         return false;
     return store({data, static_cast<size_t>(rows * cols)}, 0);
 }
 
 bool EffectVariable::setFloatArray(std::span<const float> components, size_t first) {
-    const fx::TypeDesc t = type();
-    const size_t elements = t.arrayDims.empty() ? 1 : static_cast<size_t>(t.arrayDims[0]);
+    if (!isValid()) return false;
+    const size_t elements = mType.arrayDims.empty() ? 1 : static_cast<size_t>(mType.arrayDims[0]);
     if (first >= elements) return false;
-    const size_t perElement = static_cast<size_t>(elementType(t).componentCount());
-    return store(components, first * (t.arrayDims.empty() ? 0 : perElement));
+    const size_t perElement = mResources->effect().componentCount(elementType(mType));
+    return store(components, first * (mType.arrayDims.empty() ? 0 : perElement));
 }
 
 bool EffectVariable::setValue(const fx::Value& value) {
     if (!isValid()) return false;
-    const fx::TypeDesc t = type();
-    if (t.base == fx::BaseType::String && mElement < 0) {
+    if (mType.base == fx::BaseType::String && isWhole()) {
         if (value.type.base != fx::BaseType::String) return false;
         storeParameter(mResources->parameterInfo(), mParameter, value, mResources->values,
                        mResources->stamps);
@@ -151,7 +199,7 @@ bool EffectVariable::setValue(const fx::Value& value) {
         mResources->pool.published(*mResources, mParameter);
         return true;
     }
-    const size_t count = static_cast<size_t>(t.componentCount());
+    const size_t count = mResources->effect().componentCount(mType);
     if (value.data.size() == 1 && count > 1) {  // HLSL's scalar broadcast
         const std::vector<float> broadcast(count, value.data[0]);
         return store(broadcast, 0);
@@ -162,19 +210,19 @@ bool EffectVariable::setValue(const fx::Value& value) {
 fx::Value EffectVariable::value() const {
     if (!isValid()) return fx::Value::scalar(0.0f);
     const fx::Value& whole = mResources->values[mParameter];
-    if (mElement < 0) return whole;
-    fx::Value element = fx::zeroValue(type());
-    const size_t count = element.data.size();
-    const size_t start = static_cast<size_t>(mElement) * count;
-    for (size_t i = 0; i < count && start + i < whole.data.size(); ++i)
-        element.data[i] = whole.data[start + i];
-    return element;
+    if (isWhole()) return whole;
+    fx::Value part;
+    part.type = mType;
+    part.data.assign(mResources->effect().componentCount(mType), 0.0f);
+    for (size_t i = 0; i < part.data.size() && mFirst + i < whole.data.size(); ++i)
+        part.data[i] = whole.data[mFirst + i];
+    return part;
 }
 
 // [SECTION] Textures
 
 bool EffectVariable::setTexture(GLuint name) {
-    if (!isValid() || mElement >= 0) return false;
+    if (!isValid() || !isWhole()) return false;
     const std::optional<GLenum> target = textureTarget(mResources->parameterInfo()[mParameter].type.base);
     if (!target) return false;
     if (name == 0) {
@@ -211,16 +259,16 @@ bool EffectVariable::isUsed(const EffectPass& pass) const {
 }
 
 size_t EffectVariable::annotationCount() const {
-    return isValid() && mElement < 0 ? mResources->annotations.parameter(mParameter).size() : 0;
+    return isValid() && isWhole() ? mResources->annotations.parameter(mParameter).size() : 0;
 }
 
 EffectAnnotation EffectVariable::annotation(size_t i) const {
-    if (!isValid() || mElement >= 0) return {};
+    if (!isValid() || !isWhole()) return {};
     return AnnotationTable::at(mResources->annotations.parameter(mParameter), i);
 }
 
 EffectAnnotation EffectVariable::annotation(std::string_view name) const {
-    if (!isValid() || mElement >= 0) return {};
+    if (!isValid() || !isWhole()) return {};
     return AnnotationTable::find(mResources->annotations.parameter(mParameter), name);
 }
 

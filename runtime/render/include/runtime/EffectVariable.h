@@ -58,23 +58,36 @@ private:
 class EffectVariable {
 public:
     EffectVariable() = default;  // invalid
-    EffectVariable(EffectResources* resources, size_t parameter, int element = -1)
-        : mResources(resources), mParameter(parameter), mElement(element) {}
+    // The whole of parameter `parameter`.
+    EffectVariable(EffectResources* resources, size_t parameter);
 
     bool isValid() const { return mResources != nullptr; }
-    // The parameter's index (EffectRenderer::variable(size_t)); an element's is its array's.
+    // The parameter's index (EffectRenderer::variable(size_t)); an element's or a member's is its
+    // parameter's.
     size_t index() const { return mParameter; }
-    // "" when invalid; an element's name is its array's with "[i]".
+    // "" when invalid; an element's or a member's is its parameter's with the way to it: "Lights[1].color".
     std::string name() const;
+    // A member's is its own (`float3 color : DIFFUSE;`), an element's its array's.
     const std::string& semantic() const;
-    // An element's type is its array's without the outer dimension.
+    // An element's type is its array's without the outer dimension; a member's is as its struct declares it.
     fx::TypeDesc type() const;
 
     // [SECTION] Arrays
     // Elements of the outer dimension (0 for a variable that is not an array).
     size_t elementCount() const;
-    // Element i of an array: a variable of its own; invalid past the end or for a non-array.
+    // Element i of an array: a variable of its own (an array again where the array has more dimensions);
+    // invalid past the end or for a non-array.
     EffectVariable element(size_t i) const;
+
+    // [SECTION] Struct members, as FX11's GetMemberByIndex, GetMemberByName and GetMemberBySemantic. Only
+    // a struct has members: an array of structs gives them through its elements (`Lights.element(1)
+    // .member("color")`). A member is a variable of its own, whose setters set its numbers of the
+    // parameter's value and so its bytes of every uniform block that holds the parameter.
+    size_t memberCount() const;
+    EffectVariable member(size_t i) const;
+    EffectVariable member(std::string_view name) const;  // case-sensitive, as HLSL
+    // The first member declared with that semantic, without regard to case (as variableBySemantic).
+    EffectVariable memberBySemantic(std::string_view semantic) const;
 
     // [SECTION] Values. Each setter is false (and sets nothing) where the variable is invalid or its type
     // does not take the value: a float, int or bool for a scalar, a vector with the variable's component
@@ -93,9 +106,10 @@ public:
     // Every component of the variable, or of the elements from `first` on: an array of floats, vectors or
     // matrices, element after element, as setValue takes them.
     bool setFloatArray(std::span<const float> components, size_t first = 0);
-    // Any value of the variable's type and size (fx/Value.h; a scalar is broadcast as HLSL broadcasts).
+    // Any value of the variable's type and size (fx/Value.h; a scalar is broadcast as HLSL broadcasts). A
+    // struct's value is its members' numbers in declaration order, as D3DX's SetRawValue takes them.
     bool setValue(const fx::Value& value);
-    // The current value (an element's part of its array); a zero float when invalid.
+    // The current value (an element's or member's part of its parameter's); a zero float when invalid.
     fx::Value value() const;
 
     // [SECTION] Textures
@@ -108,19 +122,29 @@ public:
     // [SECTION] Use and annotations
     // True if `pass` reads the variable: a member of one of its stages' uniform blocks that the code
     // reads, a texture or sampler it samples, an input of its states' or compile arguments' expressions.
+    // An element or a member is used where its parameter is.
     bool isUsed(const EffectPass& pass) const;
+    // A parameter's annotations; an element or a member has none.
     size_t annotationCount() const;
     EffectAnnotation annotation(size_t i) const;
     // Case-blind, as the effect language's own lookups.
     EffectAnnotation annotation(std::string_view name) const;
 
 private:
+    EffectVariable(const EffectVariable& whole, std::string path, fx::TypeDesc type, size_t first,
+                   const std::string* semantic);
+    bool isWhole() const { return mPath.empty(); }
     bool setMatrixData(int rows, int cols, const float* data);
     bool store(std::span<const float> components, size_t firstComponent);
 
     EffectResources* mResources = nullptr;
     size_t mParameter = 0;
-    int mElement = -1;  // -1: the whole variable
+    // The part of the parameter this variable is: the way to it after the parameter's name ("" for the
+    // whole parameter), its type, where its numbers start in the parameter's value, and its semantic.
+    std::string mPath;
+    fx::TypeDesc mType;
+    size_t mFirst = 0;
+    const std::string* mSemantic = nullptr;
 };
 
 }  // namespace runtime
