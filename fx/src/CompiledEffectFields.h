@@ -84,8 +84,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 5,
-              "the enum lengths below were pinned at format version 5: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 6,
+              "the enum lengths below were pinned at format version 6: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
@@ -114,7 +114,7 @@ static_assert(sizeof(AnnotationValue) == 200);
 static_assert(sizeof(UniformBinding) == 184);
 static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
-static_assert(sizeof(StorageBufferBinding) == 72);
+static_assert(sizeof(StorageBufferBinding) == 104);
 static_assert(sizeof(VertexInput) == 48);
 static_assert(sizeof(ImageBinding) == 72);
 static_assert(sizeof(StageProgram) == 304);
@@ -181,7 +181,7 @@ void fields(A& a, StorageBufferBinding::Run& x) {
 }
 template <class A>
 void fields(A& a, StorageBufferBinding& x) {
-    a(x.blockName, x.parameter, x.glStride, x.d3dStride, x.runs);
+    a(x.blockName, x.parameter, x.glStride, x.d3dStride, x.runs, x.counterBlockName);
 }
 template <class A>
 void fields(A& a, ImageBinding& x) {

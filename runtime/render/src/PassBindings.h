@@ -16,9 +16,11 @@ namespace runtime {
 // texture or Buffer<T>, else none) and sampler objects. A mipmapped render target written since its chain
 // was built gets its chain first, unless `drawing` renders into it.
 void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass, const RenderTargets& drawing);
-// Binds the buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks.
+// Binds the buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks, and after them the
+// counters of its append, consume and counted buffers (GpuProgram::counterParameters).
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass);
-// Binds the textures behind the pass's images (RWTexture2D) on their image units, read-write.
+// Binds the textures behind the pass's images (RWTexture1D/2D/3D/2DArray, all layers) and the buffer
+// textures behind its RWBuffers on their image units, read-write.
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass);
 // DepthBias's depth bits for a depth target of `texture` (RenderStateApplier.h): 2^-bits for UNORM depth;
 // for D32F the resolvable difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24
