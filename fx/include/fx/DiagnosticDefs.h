@@ -56,7 +56,7 @@ FX_DIAGNOSTIC(ObjectInStruct, Error,
 FX_DIAGNOSTIC(DynamicShaderLinkage, Error,
               "dynamic shader linkage ('{0}') is not supported: GLSL has no interfaces or classes to bind at "
               "run time")
-FX_DIAGNOSTIC(StateObjectArray, Error, "arrays of state objects are not supported")
+FX_DIAGNOSTIC(StateObjectArray, Error, "an array of state objects has one dimension")
 FX_DIAGNOSTIC(ExpressionTooComplex, Error,
               "expression too complex (more than {0} nested or chained operators)")
 FX_DIAGNOSTIC(NestingTooDeep, Error, "nesting deeper than {0} levels")
@@ -77,6 +77,11 @@ FX_DIAGNOSTIC(MultisampleSampleCountInvalid, Error,
 FX_DIAGNOSTIC(WriteMaskTargetNeverBound, Error,
               "RenderTargetWriteMask[{0}] masks a render target the runtime never binds (it draws into four)")
 FX_DIAGNOSTIC(StateTakesNoTargetIndex, Error, "{0} takes no render-target index")
+FX_DIAGNOSTIC(StateObjectArrayTooManyBlocks, Error, "'{0}[{1}]' is given more blocks than it has elements")
+FX_DIAGNOSTIC(StateObjectIndexOutOfBounds, Error, "index {0} is outside '{1}', which has {2} elements")
+FX_DIAGNOSTIC(StateObjectDynamicIndexFields, Error,
+              "'{0}' is indexed by a parameter, so its elements must set the same render targets' fields "
+              "(element {1} differs from element 0)")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
