@@ -262,7 +262,7 @@ TypeDesc Parser::parseType() {
     }
     if (parseScalarTypeName(name.text, type) || parseObjectTypeName(name.text, type)) {
         advance();
-        if (type.isTexture() && check("<")) skipAngles();  // Texture2D<float4>
+        if (type.isTexture() && check("<")) type.templateArgs = angleText();  // Texture2D<float2>
         return type;
     }
     if (mTypeNames.count(name.text)) {
