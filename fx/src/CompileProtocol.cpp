@@ -115,6 +115,7 @@ void writeProgram(Writer& w, const StageProgram& p) {
             w.u32(run.glOffset);
             w.u32(run.bytes);
         }
+        w.str(b.counterBlockName);
     }
     w.u32(static_cast<uint32_t>(p.images.size()));
     for (const ImageBinding& image : p.images) {
@@ -174,6 +175,7 @@ void readProgram(Reader& r, StageProgram& p) {
             run.glOffset = r.u32();
             run.bytes = r.u32();
         }
+        b.counterBlockName = r.str();
     }
     p.images.resize(r.count(8));
     for (ImageBinding& image : p.images) {

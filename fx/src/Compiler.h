@@ -114,8 +114,9 @@ private:
     const Expr* shaderExpr(const StateAssignment& s);
     CompiledPass compilePass(const Pass& p, PassSlot slot);
     // [SECTION] Compute passes (ComputePass.cpp)
-    // True for a pass that sets a compute shader: its compute stage compiled (or, where the pass also sets
-    // a graphics stage, the technique left out); such a pass has no other stage and no render states.
+    // Compiles the compute stage of a pass that sets a compute shader. True where the pass is a compute
+    // pass alone (no other stage, no render states); false where it sets none or also sets graphics
+    // stages, which compilePass then compiles as for any pass.
     bool computePass(const Pass& p, CompiledPass& pass, PassSlot slot);
     // [SECTION] Stream output (StreamOutput.cpp)
     // A stream-output pass, from the pass's lowering to the varyings resolved in its compiled GLSL.

@@ -262,7 +262,7 @@ TypeDesc Parser::parseType() {
     }
     if (parseScalarTypeName(name.text, type) || parseObjectTypeName(name.text, type)) {
         advance();
-        if (type.isTexture() && check("<")) skipAngles();  // Texture2D<float4>
+        if (type.isTexture() && check("<")) type.templateArgs = angleText();  // Texture2D<float2>
         return type;
     }
     if (mTypeNames.count(name.text)) {
@@ -277,12 +277,7 @@ TypeDesc Parser::parseType() {
         if (check("<")) type.templateArgs = angleText();
         return type;
     }
-    if (isTemplatedObject(name.text)) {
-        const bool readWrite = name.text.rfind("RW", 0) == 0 || name.text.rfind("Append", 0) == 0 ||
-                               name.text.rfind("Consume", 0) == 0;
-        fail(readWrite ? DiagId::ReadWriteResourceInEffect : DiagId::MultisampleArrayInEffect, name.loc,
-             {name.text});
-    }
+    if (isTemplatedObject(name.text)) fail(DiagId::MultisampleArrayInEffect, name.loc, {name.text});
     fail(DiagId::UnknownType, name.loc, {name.text});
 }
 
@@ -297,7 +292,13 @@ std::optional<BaseType> Parser::supportedResource(const std::string& name) {
         {"ByteAddressBuffer", BaseType::ByteAddressBuffer},
         {"RWStructuredBuffer", BaseType::RWStructuredBuffer},
         {"RWByteAddressBuffer", BaseType::RWByteAddressBuffer},
-        {"RWTexture2D", BaseType::RWTexture2D}};
+        {"AppendStructuredBuffer", BaseType::AppendStructuredBuffer},
+        {"ConsumeStructuredBuffer", BaseType::ConsumeStructuredBuffer},
+        {"RWTexture1D", BaseType::RWTexture1D},
+        {"RWTexture2D", BaseType::RWTexture2D},
+        {"RWTexture3D", BaseType::RWTexture3D},
+        {"RWTexture2DArray", BaseType::RWTexture2DArray},
+        {"RWBuffer", BaseType::RWBuffer}};
     for (const auto& [spelling, base] : kResources)
         if (name == spelling) return base;
     return std::nullopt;

@@ -261,10 +261,16 @@ void Parser::parseDeclaration(bool inBuffer) {
         if (parameter.type.isSampler() && check("{")) {
             parameter.samplerState = parseSamplerStateBlock();  // D3D10: SamplerState s { ... };
         } else if (parameter.type.isStateObject()) {
-            if (!parameter.type.arrayDims.empty()) fail(DiagId::StateObjectArray, parameter.loc, {});
-            if (check("{"))
-                parameter.objectState =
-                    parseObjectStateBlock(StateAssignments::objectKind(parameter.type.base));
+            const StateObjectKind kind = StateAssignments::objectKind(parameter.type.base);
+            if (parameter.type.arrayDims.size() > 1) fail(DiagId::StateObjectArray, parameter.loc, {});
+            if (!parameter.type.arrayDims.empty()) {
+                // FX11's `RasterizerState rs[2] { { ... }, { ... } };`, also written with `=`.
+                accept("=");
+                if (check("{")) parameter.objectStateElements = parseObjectStateArray(kind, parameter);
+                parameter.objectStateElements.resize(static_cast<size_t>(parameter.type.arrayDims[0]));
+            } else if (check("{")) {
+                parameter.objectState = parseObjectStateBlock(kind);
+            }
         } else if (accept("=")) {
             if (check("sampler_state")) {
                 advance();

@@ -223,6 +223,25 @@ std::vector<StateAssignment> Parser::parseObjectStateBlock(StateObjectKind kind)
     return states;
 }
 
+std::vector<std::vector<StateAssignment>> Parser::parseObjectStateArray(StateObjectKind kind,
+                                                                        const Parameter& parameter) {
+    const Token& open = advance();  // '{'
+    std::vector<std::vector<StateAssignment>> elements;
+    while (!check("}")) {
+        if (atEnd() || isTechniqueKeyword(peek()))
+            unclosed(std::string(stateObjectTypeName(kind)).c_str(), open);
+        if (!check("{")) unexpected("'{'");
+        const SourceLoc at = peek().loc;
+        elements.push_back(parseObjectStateBlock(kind));
+        if (elements.size() == static_cast<size_t>(parameter.type.arrayDims[0]) + 1)
+            error(DiagId::StateObjectArrayTooManyBlocks, at,
+                  {parameter.name, std::to_string(parameter.type.arrayDims[0])});
+        if (!accept(",")) break;
+    }
+    expect("}");
+    return elements;
+}
+
 std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
     if (!check("{")) unexpected("'{'");
     const Token& open = advance();

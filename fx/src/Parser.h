@@ -171,6 +171,9 @@ private:
 
     // `{ Field = value; Field[i] = value; ... }` of a D3D10 state object, validated against its fields.
     std::vector<StateAssignment> parseObjectStateBlock(StateObjectKind kind);
+    // `{ { ... }, { ... } }`: a block per element of the state-object array `parameter`.
+    std::vector<std::vector<StateAssignment>> parseObjectStateArray(StateObjectKind kind,
+                                                                    const Parameter& parameter);
 
     std::vector<StateAssignment> parseSamplerStateBlock();
 

@@ -6,7 +6,9 @@
 #include <spirv_cross/spirv_glsl.hpp>
 
 #include <algorithm>
+#include <map>
 #include <regex>
+#include <string_view>
 
 namespace fx {
 
@@ -219,17 +221,34 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             program.samplers.push_back(s);
         }
         program.storageBuffers.clear();
+        // An AppendStructuredBuffer's or ConsumeStructuredBuffer's counter (and a RWStructuredBuffer's
+        // IncrementCounter) is a block of its own, which glslang names "<buffer>@count": one uint.
+        std::map<std::string, std::string> counterBlocks;  // by buffer name
+        constexpr std::string_view kCounterSuffix = "@count";
+        for (const spirv_cross::Resource& r : resources.storage_buffers) {
+            const std::string name = compiler.get_name(r.id);
+            if (name.size() <= kCounterSuffix.size() ||
+                name.compare(name.size() - kCounterSuffix.size(), kCounterSuffix.size(), kCounterSuffix) != 0)
+                continue;
+            const std::string buffer = name.substr(0, name.size() - kCounterSuffix.size());
+            // "@" is no GLSL identifier character; fx_ names are the generator's own.
+            counterBlocks[buffer] = "fx_counter_" + buffer;
+            compiler.set_name(r.base_type_id, counterBlocks[buffer]);
+        }
         for (const spirv_cross::Resource& r : resources.storage_buffers) {
             // glslang's block for a StructuredBuffer<T> or ByteAddressBuffer holds one runtime array of T.
             const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
-            if (block.member_types.size() != 1) continue;
             const std::string name = compiler.get_name(r.id);
+            if (block.member_types.size() != 1 || compiler.get_type(block.member_types[0]).array.empty())
+                continue;
             compiler.set_name(r.base_type_id, name);  // what GL's program interface calls the block
             StorageBufferBinding b;
             b.blockName = name;
             b.glStride = compiler.type_struct_member_array_stride(block, 0);
             const spirv_cross::SPIRType& array = compiler.get_type(block.member_types[0]);
             storageRuns(compiler, compiler.get_type(array.parent_type), 0, b.d3dStride, b.runs);
+            if (auto counter = counterBlocks.find(name); counter != counterBlocks.end())
+                b.counterBlockName = counter->second;
             program.storageBuffers.push_back(std::move(b));
         }
 

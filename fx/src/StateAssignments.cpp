@@ -43,12 +43,38 @@ bool StateAssignments::setStateObject(Pass& pass, const Token& name, StateObject
             return false;
         }
         block = &p->objectState;
+    } else if (object.kind == Expr::Kind::Index && object.args.size() == 2 &&
+               object.args[0].kind == Expr::Kind::Identifier) {
+        // An element of a state-object array: `rs[1]`, or `rs[Choice]` indexed by a parameter.
+        const Expr& array = object.args[0];
+        const Parameter* p = mEffect.findParameter(array.text);
+        if (!p) {
+            error(DiagId::UnknownIdentifier, array.loc, {array.text});
+            return false;
+        }
+        if (!p->type.isStateObject() || objectKind(p->type.base) != kind || p->objectStateElements.empty()) {
+            error(DiagId::InvalidStateValue, array.loc,
+                  {name.text, "'" + array.text + "' is not an array of " +
+                                  std::string(stateObjectTypeName(kind)) + "s"});
+            return false;
+        }
+        const size_t size = p->objectStateElements.size();
+        double index = 0;
+        if (!constantValue(object.args[1], index)) {
+            if (!expandIndexedStateObject(kind, *p, object.args[1], name.loc, pass.states)) return false;
+        } else if (!(index >= 0 && index < static_cast<double>(size)) || index != std::trunc(index)) {
+            error(DiagId::StateObjectIndexOutOfBounds, object.args[1].loc,
+                  {object.args[1].str(), p->name, std::to_string(size)});
+            return false;
+        } else {
+            block = &p->objectStateElements[static_cast<size_t>(index)];
+        }
     } else {
         error(DiagId::StateObjectNameExpected, object.loc,
               {name.text, std::string(stateObjectTypeName(kind))});
         return false;
     }
-    expandStateObject(kind, *block, name.loc, pass.states);
+    if (block) expandStateObject(kind, *block, name.loc, pass.states);
     auto add = [&](RenderStateId id, Expr value) {
         StateAssignment state;
         state.name = std::string(renderStateInfo(id).name);
@@ -76,6 +102,49 @@ bool StateAssignments::setStateObject(Pass& pass, const Token& name, StateObject
         }
         add(RenderStateId::BlendFactor, std::move(factor));
         add(RenderStateId::SampleMask, std::move(args[2]));
+    }
+    return true;
+}
+
+bool StateAssignments::expandIndexedStateObject(StateObjectKind kind, const Parameter& array,
+                                                const Expr& index, const SourceLoc& loc,
+                                                std::vector<StateAssignment>& out) {
+    std::vector<std::vector<StateAssignment>> elements(array.objectStateElements.size());
+    for (size_t e = 0; e < elements.size(); ++e)
+        expandStateObject(kind, array.objectStateElements[e], loc, elements[e]);
+    // Every element expands to the same states but where a blend state masks its targets differently.
+    for (size_t e = 1; e < elements.size(); ++e) {
+        bool same = elements[e].size() == elements[0].size();
+        for (size_t k = 0; same && k < elements[0].size(); ++k)
+            same = elements[e][k].name == elements[0][k].name;
+        if (!same) {
+            error(DiagId::StateObjectDynamicIndexFields, index.loc, {array.name, std::to_string(e)});
+            return false;
+        }
+    }
+    for (size_t k = 0; k < elements[0].size(); ++k) {
+        StateAssignment state = elements[0][k];
+        double first = 0, other = 0;
+        bool agree = constantValue(state.value, first);
+        for (size_t e = 1; agree && e < elements.size(); ++e)
+            agree = constantValue(elements[e][k].value, other) && other == first;
+        if (!agree) {
+            Expr select = elements.back()[k].value;
+            for (size_t e = elements.size() - 1; e-- > 0;) {
+                Expr test;
+                test.kind = Expr::Kind::Binary;
+                test.text = "==";
+                test.loc = index.loc;
+                test.args = {index, numberExpr(static_cast<double>(e), index.loc)};
+                Expr choice;
+                choice.kind = Expr::Kind::Ternary;
+                choice.loc = index.loc;
+                choice.args = {std::move(test), elements[e][k].value, std::move(select)};
+                select = std::move(choice);
+            }
+            state.value = std::move(select);
+        }
+        out.push_back(std::move(state));
     }
     return true;
 }

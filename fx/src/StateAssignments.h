@@ -49,6 +49,11 @@ public:
 
 private:
     static Expr numberExpr(double value, const SourceLoc& loc);
+    // `rs[i]` with `i` a parameter: each state selects its element's value by `i` when the pass is applied
+    // (i == 0 ? v0 : i == 1 ? v1 : ... : vN-1; an index outside the array takes the last element); a state
+    // every element gives the same constant stays that constant. False after an error.
+    bool expandIndexedStateObject(StateObjectKind kind, const Parameter& array, const Expr& index,
+                                  const SourceLoc& loc, std::vector<StateAssignment>& out);
     // A BlendState field for render targets 1..7 (D3D10's independent blend, GL's glBlendFuncSeparatei and
     // friends): `BlendEnable[i]` is each target's own (FALSE unless set, as D3D10 has it); the factors and
     // operations are target 0's unless indexed (D3D10.0 has one set for all targets, D3D10.1 and FX11 one

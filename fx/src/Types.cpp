@@ -78,13 +78,13 @@ std::string TypeDesc::hlslName() const {
         case BaseType::Texture:
             return "texture";
         case BaseType::Texture1D:
-            return "Texture1D";
+            return withTemplate("Texture1D");
         case BaseType::Texture2D:
-            return "Texture2D";
+            return withTemplate("Texture2D");
         case BaseType::Texture3D:
-            return "Texture3D";
+            return withTemplate("Texture3D");
         case BaseType::TextureCube:
-            return "TextureCube";
+            return withTemplate("TextureCube");
         case BaseType::Texture1DArray:
             return withTemplate("Texture1DArray");
         case BaseType::Texture2DArray:

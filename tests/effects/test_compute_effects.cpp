@@ -2,7 +2,9 @@
 // read-write resources"): a RWStructuredBuffer particle state advanced by a compute pass and drawn through a
 // StructuredBuffer view of it, frame after frame, by the SAS host's Dispatch= and by the pass API's
 // dispatch(); a RWTexture2D written by a compute pass and sampled by a pixel shader; a groupshared
-// reduction into a RWByteAddressBuffer.
+// reduction into a RWByteAddressBuffer; an AppendStructuredBuffer and a ConsumeStructuredBuffer view of it
+// whose counter persists between frames; RWTexture1D, RWTexture3D, RWTexture2DArray and RWBuffer read
+// through their views.
 #include "EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -133,6 +135,130 @@ TEST(ComputeEffects, AGroupsharedReductionReachesAPixelShaderThroughAByteAddress
         EXPECT_NEAR(p[1], 128, 1) << x << "," << y;
         EXPECT_EQ(p[2], blue) << x << "," << y;
     }
+}
+
+// The centre of cell `cell` of tests/data/d3d10/compute_append_consume.fx's 8 x 8 grid.
+const uint8_t* cellPixel(const runtime::FrameImage& frame, int cell) {
+    return frame.pixel((cell % 8) * kWidth / 8 + kWidth / 16, (cell / 8) * kHeight / 8 + kHeight / 16);
+}
+
+// The cells of the first 63 whose element holds a spark (red on).
+int sparkCells(const runtime::FrameImage& frame) {
+    int lit = 0;
+    for (int cell = 0; cell < 63; ++cell) lit += cellPixel(frame, cell)[0] == 255;
+    return lit;
+}
+
+// Eight sparks appended and one consumed a frame, through a counter that persists: 7n + 1 cells lit
+// after frame n, the lit ones first (a counter reset each frame lights 8 cells, one never decremented 8n);
+// the consumed spark's Tag (1..8) shows in the last cell.
+TEST(ComputeEffects, AppendAndConsumeBuffersKeepTheirCounterBetweenFrames) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_append_consume.fx"), true);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene teapot = scene("teapot");  // not drawn: the sparks are the buffer's
+    for (int frame = 1; frame <= 3; ++frame) {
+        ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
+        const runtime::FrameImage image = renderer->readFrame();
+        EXPECT_EQ(sparkCells(image), 7 * frame + 1) << "frame " << frame;
+        EXPECT_EQ(cellPixel(image, 7 * frame)[0], 255) << "frame " << frame;
+        EXPECT_TRUE(isBlack(cellPixel(image, 7 * frame + 1))) << "frame " << frame;
+        const int tag = cellPixel(image, 63)[2] * 8 / 255;
+        EXPECT_GE(tag, 1) << "frame " << frame;
+        EXPECT_LE(tag, 8) << "frame " << frame;
+    }
+}
+
+// An application's elements set the counter to their number (D3D11's initial count for the view it binds
+// them through): three elements of Tag 0.5, then a frame appends eight after them and consumes one.
+TEST(ComputeEffects, SettingAnAppendBufferSetsItsCounter) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_append_consume.fx"), true);
+    ASSERT_TRUE(renderer);
+    float sparks[3][3] = {{0, 0, 0.5f}, {0, 0, 0.5f}, {0, 0, 0.5f}};  // D3D's packing: 12 bytes
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(
+        renderer->setBuffer(*renderer->findParameter("Live"), sparks, 3, sizeof sparks[0], diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage image = renderer->readFrame();
+    EXPECT_EQ(sparkCells(image), 3 + 8);
+    for (int cell = 0; cell < 3; ++cell) EXPECT_NEAR(cellPixel(image, cell)[1], 16, 1) << cell;
+    EXPECT_GE(cellPixel(image, 3)[1], 31);  // an appended spark: Tag 1..8
+}
+
+// One compute pass writes an RWTexture1D, an RWTexture3D, an RWTexture2DArray and an RWBuffer; a pixel
+// shader reads each through its view, a band of the frame per resource, eight columns a band.
+TEST(ComputeEffects, ReadWriteTexturesOfEveryKindAndRWBuffersReachTheirViews) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_image_kinds.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_TRUE(notConstant(frame));
+    const auto expect = [&](int band, int column, float r, float g, float b) {
+        const uint8_t* p = frame.pixel(column * kWidth / 8 + kWidth / 16, band * kHeight / 4 + kHeight / 8);
+        EXPECT_NEAR(p[0], r * 255, 1) << "band " << band << " column " << column;
+        EXPECT_NEAR(p[1], g * 255, 1) << "band " << band << " column " << column;
+        EXPECT_NEAR(p[2], b * 255, 1) << "band " << band << " column " << column;
+    };
+    for (int c = 0; c < 8; ++c) {
+        expect(0, c, c / 7.0f, 0, 0);
+        expect(1, c, (c % 4) / 3.0f, (c / 4) / 3.0f, 1);
+        const float layer = (c / 4 + 2) / 4.0f;
+        expect(2, c, layer, layer, layer);
+        expect(3, c, 0, 0, c / 7.0f);
+    }
+}
+
+// A pass that sets both kinds of shader: its script's Dispatch= runs the compute stage and its Draw= the
+// graphics stages, frame after frame; the application may dispatch it too (FX11's Apply, Dispatch) and
+// still draw with it afterwards. The frame is the colour accumulated: (0.1 n, 0.2 n, 0.5) after n steps.
+TEST(ComputeEffects, APassWithComputeAndGraphicsShadersDispatchesOneAndDrawsTheOther) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_and_draw.fx"), true);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene teapot = scene("teapot");
+    const auto expect = [&](int steps) {
+        const runtime::FrameImage frame = renderer->readFrame();
+        for (const auto& [x, y] : {std::pair{0, 0}, std::pair{kWidth / 2, kHeight / 2}}) {
+            const uint8_t* p = frame.pixel(x, y);
+            EXPECT_NEAR(p[0], 0.1 * steps * 255, 1) << steps << " steps";
+            EXPECT_NEAR(p[1], 0.2 * steps * 255, 1) << steps << " steps";
+            EXPECT_NEAR(p[2], 128, 1) << steps << " steps";
+        }
+    };
+    ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
+    expect(1);
+    ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
+    expect(2);
+    runtime::EffectPass both = renderer->technique("StepAndShow").pass("Both");
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(both.apply(&diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(both.dispatch(1, 1, 1, &diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
+    expect(4);
+}
+
+// A volume no GL texture can have (no slices) is refused at the parameter when the renderer is created,
+// naming all three sides.
+TEST(ComputeEffects, AReadWriteVolumeWithoutSlicesIsALocatedError) {
+    sharedContext();
+    const std::string source =
+        R"(RWTexture3D<float4> Volume < int Width = 4; int Height = 4; int Depth = 0; >;
+[numthreads(1, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Volume[id] = 1; }
+technique11 Filled < string Script = "Pass=Fill;"; >
+{
+    pass Fill < string Script = "Dispatch=1;"; > { SetComputeShader(CompileShader(cs_5_0, Fill())); }
+}
+)";
+    fx::DiagnosticList diagnostics;
+    auto effect = fx::parseEffectSource(source, "volume.fx", fx::ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_FALSE(runtime::EffectRenderer::create(compiled, diagnostics));
+    ASSERT_EQ(countDiagnostics(diagnostics, fx::DiagId::InvalidDimensions), 1) << diagnostics.str();
+    const fx::Diagnostic& refused = diagnostics.items().back();
+    EXPECT_EQ(refused.loc.line, 1);
+    EXPECT_NE(refused.message.find("Volume is 4 x 4 x 0"), std::string::npos) << refused.message;
 }
 
 }  // namespace

@@ -108,12 +108,15 @@ struct StorageBufferBinding {
     uint32_t glStride = 0;   // bytes per element in the GL block
     uint32_t d3dStride = 0;  // bytes per element as D3D packs it
     std::vector<Run> runs;   // in D3D order, covering the element
+    // The block of the buffer's hidden counter (AppendStructuredBuffer, ConsumeStructuredBuffer, a
+    // RWStructuredBuffer's IncrementCounter): one uint the runtime keeps with the buffer; "" without one.
+    std::string counterBlockName;
 };
 
-// A D3D11 RWTexture2D<T> a stage reads or writes: a GL image (image load/store). The runtime binds the
-// parameter's texture at the image unit of the pass's order of image parameters (GpuProgram), with the
-// format the GLSL declares, which glslang takes from T (docs/d3d10.md, "Compute shaders and read-write
-// resources").
+// A D3D11 RWTexture1D/2D/3D/2DArray<T> or RWBuffer<T> a stage reads or writes: a GL image (image load/store).
+// The runtime binds the parameter's texture at the image unit of the pass's order of image parameters
+// (GpuProgram), with the format the GLSL declares, which glslang takes from T (docs/d3d10.md, "Compute
+// shaders and read-write resources").
 struct ImageBinding {
     std::string glslName;  // the image uniform (the parameter's name)
     size_t parameter = 0;  // CompiledEffect::parameters index

@@ -54,13 +54,10 @@ FX_DIAGNOSTIC(ObjectInStruct, Error,
 FX_DIAGNOSTIC(DynamicShaderLinkage, Error,
               "dynamic shader linkage ('{0}') is not supported: GLSL has no interfaces or classes to bind at "
               "run time")
-FX_DIAGNOSTIC(StateObjectArray, Error, "arrays of state objects are not supported")
+FX_DIAGNOSTIC(StateObjectArray, Error, "an array of state objects has one dimension")
 FX_DIAGNOSTIC(ExpressionTooComplex, Error,
               "expression too complex (more than {0} nested or chained operators)")
 FX_DIAGNOSTIC(NestingTooDeep, Error, "nesting deeper than {0} levels")
-FX_DIAGNOSTIC(ReadWriteResourceInEffect, Error,
-              "type '{0}' is not supported in effects: of the read-write resources shadowfx runs "
-              "RWStructuredBuffer, RWByteAddressBuffer and RWTexture2D")
 FX_DIAGNOSTIC(MultisampleArrayInEffect, Error,
               "type '{0}' is not supported in effects: shadowfx creates no multisample array resources")
 FX_DIAGNOSTIC(ArraySizeOutOfRange, Error, "array size {0} is outside 1..{1} (all dimensions together)")
@@ -160,6 +157,11 @@ FX_DIAGNOSTIC(TuneLogScaleMinimum, Error,
               "invalid annotation 'UIScale': a log scale needs UIMin > 0, and '{0}' has UIMin {1}")
 FX_DIAGNOSTIC(TuneScaleUnknown, Error,
               "invalid annotation 'UIScale': '{0}' of '{1}' is neither \"linear\" nor \"log\"")
+FX_DIAGNOSTIC(StateObjectArrayTooManyBlocks, Error, "'{0}[{1}]' is given more blocks than it has elements")
+FX_DIAGNOSTIC(StateObjectIndexOutOfBounds, Error, "index {0} is outside '{1}', which has {2} elements")
+FX_DIAGNOSTIC(StateObjectDynamicIndexFields, Error,
+              "'{0}' is indexed by a parameter, so its elements must set the same render targets' fields "
+              "(element {1} differs from element 0)")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
@@ -360,9 +362,6 @@ FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
 FX_DIAGNOSTIC(FixedFunctionUnsupported, Error,
               "the fixed-function pipeline generated for this pass cannot run {0} (docs/fixed-function.md)")
 // Compute passes (SetComputeShader; docs/d3d10.md, "Compute shaders and read-write resources").
-FX_DIAGNOSTIC(ComputePassWithOtherStages, Error,
-              "a pass that sets a compute shader sets no other shader in shadowfx (it is dispatched, not "
-              "drawn); '{0}' is set here")
 FX_DIAGNOSTIC(ComputeNumThreadsMissing, Error, "compute shader '{0}' has no [numthreads(x, y, z)] attribute")
 FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,
               "compute shader parameter '{0}' is not supported (expected SV_DispatchThreadID, SV_GroupID, "
@@ -452,7 +451,7 @@ FX_DIAGNOSTIC(DispatchGroupCount, Error,
 FX_DIAGNOSTIC(ElementCountInvalid, Error,
               "ElementCount of '{0}' is {1}; a storage buffer holds 1 to 268435456 elements")
 FX_DIAGNOSTIC(ViewOfUnknownResource, Error,
-              "'{0}' is a view of '{1}', which is no buffer or RWTexture2D parameter of the effect")
+              "'{0}' is a view of '{1}', which is no buffer or read-write texture parameter of the effect")
 FX_DIAGNOSTIC(ImageFormatUnsupported, Error,
               "'{0}' ({1}) is an image of format '{2}'; shadowfx makes float and unorm images (float1, 2, 4 "
               "elements, unorm4)")

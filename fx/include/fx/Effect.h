@@ -95,6 +95,9 @@ struct Parameter {
     // A D3D10 state object's block (`RasterizerState rs { CullMode = NONE; };`), its fields validated
     // against RenderStateDefs.h's FX_OBJECT_FIELD table; empty for other parameters.
     std::vector<StateAssignment> objectState;
+    // A state-object array's blocks, one per element (`RasterizerState rs[2] { { ... }, { ... } };`,
+    // elements not given empty: D3D10's defaults); empty for other parameters.
+    std::vector<std::vector<StateAssignment>> objectStateElements;
     bool isStatic = false;  // `static`: a shader-private global, not a parameter
     bool isConst = false;
     bool isUniform = false;  // written `uniform`

@@ -73,9 +73,9 @@ struct TypeDesc {
     std::vector<int> arrayDims;  // float4 a[3][2] -> {3, 2}; empty when not an array
     std::string structName;      // base == Struct
     bool rowMajor = false;       // declared `row_major` (HLSL default is column_major)
-    // The template arguments of a D3D10 array, multisample or buffer resource as written, without the
-    // angle brackets ("float4, 4"); empty elsewhere (Texture2D<float4>'s are dropped: glslang's default
-    // float4 is what D3D9-era code expects).
+    // The template arguments of a D3D10 texture or buffer resource as written, without the angle brackets
+    // ("float4, 4"; "float2" of a Texture2D<float2>, whose Sample returns a float2 as fxc's did); empty
+    // elsewhere.
     std::string templateArgs;
 
     bool isNumeric() const;      // bool/int/uint/half/float/double

@@ -9,6 +9,7 @@ namespace runtime {
 GpuBuffer GpuBuffer::create(const void* data, size_t size, GLenum texelFormat) {
     GpuBuffer buffer;
     buffer.mSize = size;
+    buffer.mTexelFormat = texelFormat;
     // GL has no empty buffer storage; an empty D3D buffer still binds (and reads as zeros).
     const std::vector<uint8_t> zeros(data ? 0 : std::max<size_t>(size, 16), 0);
     gl::GenBuffers(1, &buffer.mBuffer);
@@ -40,6 +41,7 @@ GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
         if (mBuffer) gl::DeleteBuffers(1, &mBuffer);
         mBuffer = std::exchange(other.mBuffer, 0);
         mTexture = std::exchange(other.mTexture, 0);
+        mTexelFormat = std::exchange(other.mTexelFormat, 0);
         mSize = std::exchange(other.mSize, 0);
     }
     return *this;

@@ -47,6 +47,10 @@ GpuTexture GpuTexture::create2D(fx::TextureFormat format, int width, int height,
     return GpuTexture(GL_TEXTURE_2D, format, width, height, levels);
 }
 
+GpuTexture GpuTexture::create1D(fx::TextureFormat format, int width) {
+    return GpuTexture(GL_TEXTURE_1D, format, std::max(width, 1), 1, 1);
+}
+
 GpuTexture GpuTexture::createCube(fx::TextureFormat format, int size, int mipLevels) {
     size = std::max(size, 1);
     int levels =
@@ -118,6 +122,8 @@ GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int h
     // level and the default mipmapped min filter samples as black).
     if (mTarget == GL_TEXTURE_3D || mTarget == GL_TEXTURE_2D_ARRAY || mTarget == GL_TEXTURE_CUBE_MAP_ARRAY)
         gl::TexStorage3D(mTarget, mLevels, glFormat().internalFormat, mWidth, mHeight, mDepth);
+    else if (mTarget == GL_TEXTURE_1D)
+        gl::TexStorage1D(mTarget, mLevels, glFormat().internalFormat, mWidth);
     else if (mTarget == GL_TEXTURE_1D_ARRAY)
         gl::TexStorage2D(mTarget, mLevels, glFormat().internalFormat, mWidth, mDepth);
     else

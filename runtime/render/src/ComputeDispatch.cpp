@@ -11,11 +11,14 @@ namespace runtime {
 
 bool bindComputePass(EffectResources& resources, size_t technique, size_t pass,
                      std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
-    GpuProgram* program = resources.programs[technique][pass].get();
-    if (!program || !program->isCompute()) return false;
-    std::string unused;  // a compute pass binds no framebuffer, the one thing that can fail
-    bindPass(resources, technique, pass, PassBinding{}, diagnostics, unused);
-    commitPassValues(resources, technique, pass, arguments, diagnostics);
+    GpuProgram* program = resources.computeProgram(technique, pass);
+    if (!program) return false;
+    PassBinding binding;
+    binding.program = program;
+    std::string unused;  // a compute program binds no framebuffer, the one thing that can fail
+    bindPass(resources, technique, pass, binding, diagnostics, unused);
+    evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
+    uploadPassValues(resources, *program, arguments);
     return true;
 }
 
@@ -52,14 +55,22 @@ bool EffectPass::dispatch(uint32_t x, uint32_t y, uint32_t z, fx::DiagnosticSink
     fx::DiagnosticList unreported;
     fx::DiagnosticSink& sink = diagnostics ? *diagnostics : unreported;
     const fx::CompiledPass& pass = mResources->effect().techniques[mTechnique].passes[mPass];
-    GpuProgram* program = mResources->programs[mTechnique][mPass].get();
-    if (!program || !program->isCompute()) {
+    if (!mResources->computeProgram(mTechnique, mPass)) {
         sink.report(fx::DiagId::DispatchNotCompute, pass.loc, {pass.name});
         return false;
     }
     // As FX11's Dispatch after the pass's Apply: the values are those apply() or commitChanges() uploaded.
     if (mResources->application.applied != std::make_pair(mTechnique, mPass) && !apply(&sink)) return false;
-    return dispatchBoundCompute(*mResources, pass, {x, y, z}, sink);
+    GpuProgram* applied = mResources->programs[mTechnique][mPass].get();
+    if (applied->isCompute()) return dispatchBoundCompute(*mResources, pass, {x, y, z}, sink);
+    // A pass that also draws: apply() made its graphics program current for the application's draws,
+    // which it is again after the dispatch.
+    std::vector<fx::Value> arguments;
+    if (!bindComputePass(*mResources, mTechnique, mPass, arguments, sink)) return false;
+    const bool dispatched = dispatchBoundCompute(*mResources, pass, {x, y, z}, sink);
+    applied->bind();
+    applied->upload(mResources->values, mResources->application.arguments, *mResources->uniformRing);
+    return dispatched;
 }
 
 }  // namespace runtime

@@ -117,7 +117,7 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     r.pool.pull(r);
     EffectResources::ApplicationFrame& frame = r.application;
     const fx::CompiledPass& pass = compiledPass(r, mTechnique, mPass);
-    if (!pass.compute.glsl.empty()) {
+    if (r.programs[mTechnique][mPass] && r.programs[mTechnique][mPass]->isCompute()) {
         if (!bindComputePass(r, mTechnique, mPass, frame.arguments, sink)) return false;
         frame.applied = std::make_pair(mTechnique, mPass);
         return true;

@@ -343,6 +343,11 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
         for (const fx::CompiledPass& pass : technique.passes) {
             std::unique_ptr<GpuProgram> program = GpuProgram::create(pass, diagnostics);
             ok = ok && program != nullptr;
+            if (program && !program->isCompute() && !pass.compute.glsl.empty()) {
+                std::unique_ptr<GpuProgram> compute = GpuProgram::createCompute(pass, diagnostics);
+                ok = ok && compute != nullptr;
+                r.drawingPassComputePrograms[{r.programs.size() - 1, passes.size()}] = std::move(compute);
+            }
             // D3D10's DepthBiasClamp needs glPolygonOffsetClamp; without it the bias is applied unbounded.
             for (const fx::RenderStateSetting& setting : pass.states)
                 if (setting.id == fx::RenderStateId::DepthBiasClamp && !gl::PolygonOffsetClamp &&
@@ -542,8 +547,8 @@ bool EffectResources::setTexture(size_t index, const TextureData& data, fx::Diag
 
 // `int ElementCount = N;` on a storage buffer (docs/d3d10.md, "Compute shaders and read-write resources"):
 // the elements it holds from load on, as the buffer an FX11 application creates for it; 1 without one.
-static std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
-                                                  fx::DiagnosticSink& diagnostics) {
+std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
+                                           fx::DiagnosticSink& diagnostics) {
     const fx::AnnotationValue* count = fx::findAnnotation(parameter.annotations, "ElementCount");
     if (!count) return 1;
     const double value = count->value.data.empty() ? 0.0 : count->value.data[0];
@@ -577,6 +582,12 @@ bool EffectResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
         if (!elements) return false;
         buffers[i] =
             GpuBuffer::create(nullptr, *elements * (layout ? std::max<size_t>(layout->glStride, 4) : 16));
+        if (type.base == fx::BaseType::RWStructuredBuffer ||
+            type.base == fx::BaseType::AppendStructuredBuffer ||
+            type.base == fx::BaseType::ConsumeStructuredBuffer) {
+            const uint32_t zero = 0;
+            counters[i] = GpuBuffer::create(&zero, sizeof zero);
+        }
     }
     return true;
 }
@@ -613,14 +624,26 @@ bool EffectResources::setBuffer(size_t index, const void* bytes, size_t elements
     } else if (const fx::StorageBufferBinding* layout = storageLayout(*mCompiled, index)) {
         if (elementBytes != layout->d3dStride)
             return refuse(fx::DiagId::SetBufferPackedElementSize, withSize(layout->d3dStride));
-        // From D3D's packing to the GL block's (std430 aligns vectors and pads elements).
-        std::vector<uint8_t> packed(elements * layout->glStride, 0);
+        // From D3D's packing to the GL block's (std430 aligns vectors and pads elements). A buffer with a
+        // counter keeps room for its ElementCount (validated at load), where the shaders append.
+        auto counter = counters.find(index);
+        const size_t room =
+            counter == counters.end()
+                ? elements
+                : std::max(elements, declaredElementCount(parameterInfo()[index], diagnostics).value_or(0));
+        std::vector<uint8_t> packed(room * layout->glStride, 0);
         const auto* in = static_cast<const uint8_t*>(bytes);
         for (size_t e = 0; e < elements; ++e)
             for (const fx::StorageBufferBinding::Run& run : layout->runs)
                 std::memcpy(packed.data() + e * layout->glStride + run.glOffset,
                             in + e * layout->d3dStride + run.d3dOffset, run.bytes);
         buffers[index] = GpuBuffer::create(packed.data(), packed.size());
+        // D3D11's initial count of the view an application binds the elements it filled through: a consume
+        // buffer holds them to consume, an append buffer appends after them.
+        if (counter != counters.end()) {
+            const auto count = static_cast<uint32_t>(elements);
+            counter->second = GpuBuffer::create(&count, sizeof count);
+        }
     } else {
         buffers[index] = GpuBuffer::create(bytes, total);  // no pass reads it
     }

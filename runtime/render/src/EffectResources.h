@@ -43,6 +43,11 @@
 
 namespace runtime {
 
+// A storage buffer's `int ElementCount = N;` (1 without it); nullopt, with a diagnostic at the parameter,
+// for a count outside 1..2^28.
+std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
+                                           fx::DiagnosticSink& diagnostics);
+
 class EffectResources {
 public:
     // Links every pass's program, compiles nothing (the effect is compiled), creates textures and samplers.
@@ -75,6 +80,17 @@ public:
 
     // [SECTION] GL resources
     std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
+    // The compute programs of passes that also draw (programs holds their graphics stages), by technique
+    // and pass; a compute pass alone has its compute program in `programs`.
+    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> drawingPassComputePrograms;
+    // What a dispatch of the pass runs: its compute program, or null for a pass without one.
+    GpuProgram* computeProgram(size_t technique, size_t pass) const {
+        if (auto found = drawingPassComputePrograms.find({technique, pass});
+            found != drawingPassComputePrograms.end())
+            return found->second.get();
+        GpuProgram* program = programs[technique][pass].get();
+        return program && program->isCompute() ? program : nullptr;
+    }
     // The vertex stage alone, for passes that draw with no colour write (FrameExecutor::draw); linked on
     // first use, null where the pass's pixel shader has side effects (GpuProgram::pixelShaderHasSideEffects).
     std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> depthOnlyPrograms;  // by technique, pass
@@ -92,8 +108,14 @@ public:
     std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
     std::map<size_t, GpuTexture> textures;                // by texture parameter index
     std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)
-    // RWTexture2D parameters' textures, by parameter index (StorageImages.cpp): made at load, kept between
-    // frames.
+    // The hidden counter (one uint) of each structured read-write buffer (RWStructuredBuffer,
+    // AppendStructuredBuffer, ConsumeStructuredBuffer), by parameter index: zero at load and kept between
+    // frames and dispatches, as FX11 binds unordered access views keeping their counters; setBuffer sets it
+    // to the number of elements given.
+    std::map<size_t, GpuBuffer> counters;
+    // The textures of the RWTexture1D, RWTexture2D, RWTexture3D and RWTexture2DArray parameters, by
+    // parameter index (StorageImages.cpp): made at load, kept between frames. An RWBuffer's storage is in
+    // `buffers`, with the buffer texture its image binds.
     std::map<size_t, GpuTexture> images;
     // Compute dispatches so far: what a pass reading storage buffers or images reads changes with them,
     // which the frame plan's signatures take in (PlanRecorder::draw) so that leave-out never keeps such a
@@ -190,9 +212,10 @@ public:
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     // EffectRenderer::setTexture.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
-    // The textures of the RWTexture2D parameters a pass uses, at their Width and Height annotations in the
-    // format their code declares (StorageImages.cpp). False, with a diagnostic, for a format or size
-    // shadowfx cannot make.
+    // The textures of the read-write texture parameters a pass uses, at their Width, Height, Depth and
+    // ArraySize annotations, and the buffers of its RWBuffer parameters at their ElementCount, in the format
+    // their code declares (StorageImages.cpp). False, with a diagnostic, for a format or size shadowfx
+    // cannot make.
     bool createImages(fx::DiagnosticSink& diagnostics);
     // EffectRenderer::setBuffer.
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,

@@ -23,7 +23,7 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
                                             : resources.applicationTextures.end();
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
-            // A view of an RWTexture2D (`string ViewOf`) samples the image's texture.
+            // A view of a read-write texture (`string ViewOf`) samples the image's texture.
             auto image = resources.images.find(resources.viewedResource(*textureParameter));
             auto it = resources.textures.find(*textureParameter);
             if (image != resources.images.end())
@@ -72,7 +72,8 @@ void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
     for (const fx::StageProgram* stage : stagesOf(pass)) bindStageTextures(resources, *stage, drawing);
 }
 
-// The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks.
+// The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks, and after them the counters of
+// its append, consume and counted buffers (GpuProgram::counterParameters).
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
     for (size_t binding = 0; binding < parameters.size(); ++binding) {
@@ -80,16 +81,32 @@ void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& 
         if (buffer != resources.buffers.end())
             gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
     }
+    const std::vector<size_t> counters = GpuProgram::counterParameters(pass);
+    for (size_t k = 0; k < counters.size(); ++k) {
+        auto counter = resources.counters.find(resources.viewedResource(counters[k]));
+        if (counter != resources.counters.end())
+            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(parameters.size() + k),
+                               counter->second.id());
+    }
 }
 
-// The textures behind the pass's images (RWTexture2D) on their image units, read-write.
+// The textures behind the pass's images (RWTexture1D/2D/3D/2DArray, all layers) and the buffer textures
+// behind its RWBuffers on their image units, read-write.
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
     for (size_t unit = 0; unit < parameters.size(); ++unit) {
         auto image = resources.images.find(parameters[unit]);
-        if (image != resources.images.end())
-            gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+        auto buffer = resources.buffers.find(parameters[unit]);
+        if (image != resources.images.end()) {
+            // A 3D texture's slices and an array's elements are all the image's (image3D, image2DArray).
+            const GLenum target = image->second.target();
+            const GLboolean layered = target == GL_TEXTURE_3D || target == GL_TEXTURE_2D_ARRAY;
+            gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, layered, 0, GL_READ_WRITE,
                                  image->second.glFormat().internalFormat);
+        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {  // RWBuffer<T>
+            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->second.texture(), 0, GL_FALSE, 0,
+                                 GL_READ_WRITE, buffer->second.texelFormat());
+        }
     }
 }
 
@@ -108,7 +125,9 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
     GpuProgram* program = binding.program ? binding.program : resources.programs[technique][pass].get();
     const RenderTargets none;
     const RenderTargets& drawing = binding.framebuffer ? *binding.framebuffer : none;
-    if (compiled.compute.glsl.empty()) {
+    // A compute program (a compute pass's, or the dispatch of a pass that also draws) binds no target and
+    // no state; the graphics program of a pass that also dispatches binds both.
+    if (!program || !program->isCompute()) {
         if (binding.framebuffer && !bindPassTargets(resources, drawing, error)) return false;
         if (binding.viewport)
             gl::Viewport(binding.viewport->x, binding.viewport->y, binding.viewport->z, binding.viewport->w);
@@ -163,7 +182,9 @@ GlStateMask passStateMask(const fx::CompiledPass& pass) {
         mask.add(stageMask);
     }
     GlStateMask storage;
-    for (size_t binding = 0; binding < GpuProgram::storageBufferParameters(pass).size(); ++binding)
+    const size_t bindings =
+        GpuProgram::storageBufferParameters(pass).size() + GpuProgram::counterParameters(pass).size();
+    for (size_t binding = 0; binding < bindings; ++binding)
         storage.storageBuffers.push_back(static_cast<int>(binding));
     mask.add(storage);
     return mask;

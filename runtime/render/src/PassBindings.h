@@ -40,7 +40,8 @@ struct PassBinding {
 // Binds pass `pass` of `technique` as `binding` says: the framebuffer (its mipmapped colour targets marked
 // for a new chain), every render state, the textures and sampler objects, storage buffers and images its
 // stages read, and its program. A pass without shaders binds targets and states and leaves the bound
-// program; a compute pass binds no target and no state. False, with the reason in `error`, where the
+// program; a compute program (a compute pass's, or the dispatch of a pass that also draws, given in
+// `binding.program`) binds no target and no state. False, with the reason in `error`, where the
 // framebuffer cannot be bound (nothing after it is bound then).
 bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
               fx::DiagnosticSink& diagnostics, std::string& error);

@@ -24,12 +24,14 @@ public:
     GpuBuffer& operator=(const GpuBuffer&) = delete;
 
     GLuint id() const { return mBuffer; }
-    GLuint texture() const { return mTexture; }  // the buffer texture; 0 for a storage buffer
+    GLuint texture() const { return mTexture; }          // the buffer texture; 0 for a storage buffer
+    GLenum texelFormat() const { return mTexelFormat; }  // the buffer texture's; 0 for a storage buffer
     size_t size() const { return mSize; }
 
 private:
     GLuint mBuffer = 0;
     GLuint mTexture = 0;
+    GLenum mTexelFormat = 0;
     size_t mSize = 0;
 };
 

@@ -61,6 +61,10 @@ public:
     // there as DriverShaderLog notes.
     static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
                                               Stages stages = Stages::VertexAndPixel);
+    // The program of a pass's compute stage alone: what create() makes for a pass without graphics
+    // stages, and the second program of a pass that sets both (FX11 dispatched one and drew the other).
+    static std::unique_ptr<GpuProgram> createCompute(const fx::CompiledPass& pass,
+                                                     fx::DiagnosticSink& diagnostics);
 
     // True if the pixel shader can change what a pass without colour writes leaves behind: it discards
     // (clip(), texkill, an alpha test written as clip), writes depth or the sample mask, or stores to
@@ -76,8 +80,12 @@ public:
     // the order of their binding points: parameter k is bound at GL_SHADER_STORAGE_BUFFER binding k in
     // every program linked from the pass.
     static std::vector<size_t> storageBufferParameters(const fx::CompiledPass& pass);
-    // The effect parameters behind the pass's images (RWTexture2D), likewise: parameter k is bound at image
-    // unit k.
+    // The storage-buffer parameters whose counters the pass's code uses (AppendStructuredBuffer,
+    // ConsumeStructuredBuffer, IncrementCounter), ascending: parameter k's counter block is bound at
+    // binding storageBufferParameters(pass).size() + k.
+    static std::vector<size_t> counterParameters(const fx::CompiledPass& pass);
+    // The effect parameters behind the pass's images (RWTexture1D/2D/3D/2DArray, RWBuffer), likewise:
+    // parameter k is bound at image unit k.
     static std::vector<size_t> imageParameters(const fx::CompiledPass& pass);
     // True for a compute pass's program: dispatched (glDispatchCompute), never drawn.
     bool isCompute() const { return mCompute; }
@@ -97,9 +105,6 @@ private:
         std::vector<uint8_t> uploaded;  // what the bound range holds; empty = nothing bound yet
     };
     GpuProgram() = default;
-    // A compute pass's program: its compute stage alone.
-    static std::unique_ptr<GpuProgram> createCompute(const fx::CompiledPass& pass,
-                                                     fx::DiagnosticSink& diagnostics);
     // Binds the pass's storage blocks and images to the binding points and units their parameters' orders
     // give (storageBufferParameters, imageParameters).
     void bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked, size_t count);

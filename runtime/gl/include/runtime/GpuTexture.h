@@ -29,6 +29,8 @@ class GpuTexture {
 public:
     // mipLevels <= 0 means a full chain (D3D's Levels = 0).
     static GpuTexture create2D(fx::TextureFormat format, int width, int height, int mipLevels = 1);
+    // One level of `width` texels (an RWTexture1D's image).
+    static GpuTexture create1D(fx::TextureFormat format, int width);
     static GpuTexture createCube(fx::TextureFormat format, int size, int mipLevels = 1);
     // A volume texture (DDS volume files): `depth` slices; mipLevels <= 0 is the chain of the largest side.
     static GpuTexture create3D(fx::TextureFormat format, int width, int height, int depth, int mipLevels = 1);

@@ -89,8 +89,10 @@ public:
     // state; dispatch() then runs x * y * z thread groups (FX11's Dispatch after Apply; it applies the pass
     // first where another was applied last) and orders the writes before whatever reads them next, draws,
     // dispatches and the application's reads of the buffers alike (glMemoryBarrier). What a dispatch
-    // writes stays in the effect's buffers and images between frames. False, with a diagnostic, for a pass
-    // without a compute shader or more groups than the context dispatches.
+    // writes stays in the effect's buffers and images between frames. A pass that also sets graphics
+    // shaders applies as a drawing pass; its dispatch() runs the compute stage and leaves the graphics
+    // program current for the application's draws. False, with a diagnostic, for a pass without a compute
+    // shader or more groups than the context dispatches.
     bool dispatch(uint32_t x, uint32_t y = 1, uint32_t z = 1,
                   fx::DiagnosticSink* diagnostics = nullptr) const;
 
