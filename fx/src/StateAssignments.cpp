@@ -53,9 +53,8 @@ bool StateAssignments::setStateObject(Pass& pass, const Token& name, StateObject
             return false;
         }
         if (!p->type.isStateObject() || objectKind(p->type.base) != kind || p->objectStateElements.empty()) {
-            error(DiagId::InvalidStateValue, array.loc,
-                  {name.text, "'" + array.text + "' is not an array of " +
-                                  std::string(stateObjectTypeName(kind)) + "s"});
+            error(DiagId::StateObjectNotArray, array.loc,
+                  {name.text, array.text, std::string(stateObjectTypeName(kind))});
             return false;
         }
         const size_t size = p->objectStateElements.size();

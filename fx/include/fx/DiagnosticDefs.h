@@ -162,6 +162,7 @@ FX_DIAGNOSTIC(StateObjectIndexOutOfBounds, Error, "index {0} is outside '{1}', w
 FX_DIAGNOSTIC(StateObjectDynamicIndexFields, Error,
               "'{0}' is indexed by a parameter, so its elements must set the same render targets' fields "
               "(element {1} differs from element 0)")
+FX_DIAGNOSTIC(StateObjectNotArray, Error, "invalid value for state '{0}': '{1}' is not an array of {2}s")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
