@@ -79,6 +79,9 @@ struct EnumLimit<PreshaderProgram::Instruction::Op>
 template <>
 struct EnumLimit<PreshaderProgram::Instruction::Operator>
     : EnumLast<PreshaderProgram::Instruction::Operator, PreshaderProgram::Instruction::Operator::Unknown> {};
+template <>
+struct EnumLimit<PreshaderProgram::Instruction::Function>
+    : EnumLast<PreshaderProgram::Instruction::Function, PreshaderProgram::Instruction::Function::Unknown> {};
 
 template <class E>
 constexpr int enumLength() {
@@ -102,6 +105,7 @@ static_assert(enumLength<ScriptCommand::ClearWhat>() == 3);
 static_assert(enumLength<ScriptCommand::DrawWhat>() == 2);
 static_assert(enumLength<PreshaderProgram::Instruction::Op>() == 12);
 static_assert(enumLength<PreshaderProgram::Instruction::Operator>() == 22);
+static_assert(enumLength<PreshaderProgram::Instruction::Function>() == 42);
 
 // [SECTION] Size checks: a field added to a struct changes its size; list it below, then update the size.
 // (x86-64 with libstdc++, the platform the project builds on.)
@@ -209,7 +213,7 @@ void fields(A& a, StageProgram& x) {
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Instruction& x) {
-    a(x.op, x.operation, x.operand, x.count, x.text, x.type, x.loc);
+    a(x.op, x.operation, x.function, x.operand, x.count, x.text, x.type, x.loc);
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Error& x) {

@@ -21,7 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <map>
+#include <span>
 
 namespace fx {
 
@@ -46,6 +46,55 @@ Operator operatorOf(std::string_view spelling, bool unary) {
     for (const auto& [text, op] : kBinary)
         if (spelling == text) return op;
     return Operator::Unknown;
+}
+
+Function functionOf(std::string_view name) {
+    static const std::pair<std::string_view, Function> kFunctions[] = {
+        {"abs", Function::Abs},
+        {"sqrt", Function::Sqrt},
+        {"rsqrt", Function::Rsqrt},
+        {"exp", Function::Exp},
+        {"exp2", Function::Exp2},
+        {"log", Function::Log},
+        {"log2", Function::Log2},
+        {"log10", Function::Log10},
+        {"sin", Function::Sin},
+        {"cos", Function::Cos},
+        {"tan", Function::Tan},
+        {"asin", Function::Asin},
+        {"acos", Function::Acos},
+        {"atan", Function::Atan},
+        {"radians", Function::Radians},
+        {"degrees", Function::Degrees},
+        {"floor", Function::Floor},
+        {"ceil", Function::Ceil},
+        {"round", Function::Round},
+        {"trunc", Function::Trunc},
+        {"frac", Function::Frac},
+        {"saturate", Function::Saturate},
+        {"sign", Function::Sign},
+        {"min", Function::Min},
+        {"max", Function::Max},
+        {"pow", Function::Pow},
+        {"atan2", Function::Atan2},
+        {"fmod", Function::Fmod},
+        {"step", Function::Step},
+        {"clamp", Function::Clamp},
+        {"lerp", Function::Lerp},
+        {"smoothstep", Function::Smoothstep},
+        {"dot", Function::Dot},
+        {"length", Function::Length},
+        {"normalize", Function::Normalize},
+        {"distance", Function::Distance},
+        {"cross", Function::Cross},
+        {"transpose", Function::Transpose},
+        {"determinant", Function::Determinant},
+        {"inverse", Function::Inverse},
+        {"mul", Function::Mul},
+    };
+    for (const auto& [text, function] : kFunctions)
+        if (name == text) return function;
+    return Function::Unknown;
 }
 
 // [SECTION] Type helpers
@@ -97,11 +146,25 @@ TypeDesc vectorType(BaseType base, int n) {
     return makeType(base, n == 1 ? Shape::Scalar : Shape::Vector, 1, n);
 }
 
-Value makeValue(const TypeDesc& type, std::vector<float> data) {
-    Value v;
-    v.type = type;
-    v.data = std::move(data);
-    return v;
+void setType(TypeDesc& t, BaseType base, Shape shape, int rows, int cols) {
+    t.base = base;
+    t.shape = shape;
+    t.rows = rows;
+    t.cols = cols;
+    t.arrayDims.clear();
+    t.structName.clear();
+    t.rowMajor = false;
+    t.templateArgs.clear();
+}
+
+void setVectorType(TypeDesc& t, BaseType base, int n) {
+    setType(t, base, n == 1 ? Shape::Scalar : Shape::Vector, 1, n);
+}
+
+void setScalar(Value& v, BaseType base, float x) {
+    setType(v.type, base, Shape::Scalar, 1, 1);
+    v.data.assign(1, x);
+    v.string.clear();
 }
 
 // HLSL's value for an integer that does not fit 32 bits (the D3DCOLOR idiom `int c = 0xff202080;`, a
@@ -147,55 +210,57 @@ std::optional<TypeDesc> parseTypeName(std::string_view name) {
 
 // [SECTION] Conversion
 
-std::optional<Value> Evaluator::convert(const Value& v, const TypeDesc& target, const SourceLoc& loc) {
+bool Evaluator::convert(Value& v, const TypeDesc& target, const SourceLoc& loc) {
     if (target.base == BaseType::String) {
         if (v.type.base != BaseType::String) return fail(DiagId::ExpectedString, loc);
-        Value out = v;
-        out.type = target;
-        return out;
+        v.type = target;
+        return true;
     }
     if (!isNumericBase(target.base)) return fail(DiagId::CannotEvaluateType, loc, {target.hlslName()});
     if (v.type.base == BaseType::String) return fail(DiagId::ExpectedNumber, loc);
-    size_t want = componentCount(target);
-    std::vector<float> out;
+    const size_t want = componentCount(target);
     if (v.data.size() == 1) {
-        out.assign(want, v.data[0]);
+        const float x = v.data[0];
+        v.data.assign(want, x);
     } else if (target.shape == Shape::Matrix && v.type.shape == Shape::Matrix && target.arrayDims.empty() &&
                v.type.arrayDims.empty()) {
-        // Matrix truncation keeps the upper-left block, as HLSL does.
+        // Matrix truncation keeps the upper-left block, as HLSL does. In place: each component moves to
+        // an index no greater than its own, after every component before it.
         if (target.rows > v.type.rows || target.cols > v.type.cols)
             return fail(DiagId::CannotConvertType, loc, {v.type.hlslName(), target.hlslName()});
+        size_t out = 0;
         for (int r = 0; r < target.rows; ++r)
             for (int c = 0; c < target.cols; ++c)
-                out.push_back(v.data[static_cast<size_t>(r * v.type.cols + c)]);
+                v.data[out++] = v.data[static_cast<size_t>(r * v.type.cols + c)];
+        v.data.resize(out);
     } else if (v.data.size() >= want) {
-        out.assign(v.data.begin(), v.data.begin() + static_cast<std::ptrdiff_t>(want));
+        v.data.resize(want);
     } else {
         return fail(DiagId::ComponentCountMismatch, loc,
                     {std::to_string(v.data.size()), target.hlslName(), std::to_string(want)});
     }
-    for (float& x : out) x = normalizeComponent(target.base, x);
-    return makeValue(target, std::move(out));
+    for (float& x : v.data) x = normalizeComponent(target.base, x);
+    v.type = target;
+    v.string.clear();
+    return true;
 }
 
 bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
     if (a.data.size() == b.data.size()) return true;
     if (a.data.size() == 1) {
-        a.data.assign(b.data.size(), a.data[0]);
-        a.type = [&] {
-            TypeDesc t = b.type;
-            t.base = a.type.base;
-            return t;
-        }();
+        const float x = a.data[0];
+        a.data.assign(b.data.size(), x);
+        const BaseType base = a.type.base;
+        a.type = b.type;
+        a.type.base = base;
         return true;
     }
     if (b.data.size() == 1) {
-        b.data.assign(a.data.size(), b.data[0]);
-        b.type = [&] {
-            TypeDesc t = a.type;
-            t.base = b.type.base;
-            return t;
-        }();
+        const float x = b.data[0];
+        b.data.assign(a.data.size(), x);
+        const BaseType base = b.type.base;
+        b.type = a.type;
+        b.type.base = base;
         return true;
     }
     // HLSL truncates the longer vector (with a warning).
@@ -206,13 +271,12 @@ bool Evaluator::broadcast(Value& a, Value& b, const SourceLoc& loc) {
         a.type.cols = b.type.cols = n;
         return true;
     }
-    fail(DiagId::OperandsMismatch, loc, {a.type.hlslName(), b.type.hlslName()});
-    return false;
+    return fail(DiagId::OperandsMismatch, loc, {a.type.hlslName(), b.type.hlslName()});
 }
 
 // [SECTION] Operators
 
-std::optional<Value> Evaluator::unary(Operator op, Value a, const SourceLoc& loc) {
+bool Evaluator::unary(Operator op, Value& a, const SourceLoc& loc) {
     if (a.type.base == BaseType::String) return fail(DiagId::UnaryOperatorOnString, loc);
     for (float& x : a.data) {
         switch (op) {
@@ -231,33 +295,30 @@ std::optional<Value> Evaluator::unary(Operator op, Value a, const SourceLoc& loc
     }
     if (op == Operator::Not) a.type.base = BaseType::Bool;
     if (op == Operator::Negate && a.type.base == BaseType::Bool) a.type.base = BaseType::Int;
-    return a;
+    return true;
 }
 
-std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling, Value av, Value bv,
-                                       const SourceLoc& loc) {
-    Value* a = &av;
-    Value* b = &bv;
-    if (a->type.base == BaseType::String || b->type.base == BaseType::String) {
-        if (op == Operator::Equal || op == Operator::NotEqual)
-            return Value::boolean((a->string == b->string) == (op == Operator::Equal));
+bool Evaluator::binary(Operator op, const std::string& spelling, Value& a, Value& b, const SourceLoc& loc) {
+    if (a.type.base == BaseType::String || b.type.base == BaseType::String) {
+        if (op == Operator::Equal || op == Operator::NotEqual) {
+            setScalar(a, BaseType::Bool, (a.string == b.string) == (op == Operator::Equal) ? 1.0f : 0.0f);
+            return true;
+        }
         return fail(DiagId::BinaryOperatorOnString, loc, {spelling});
     }
-    if (!broadcast(*a, *b, loc)) return std::nullopt;
+    if (!broadcast(a, b, loc)) return false;
     bool logical = op == Operator::LogicalAnd || op == Operator::LogicalOr;
     bool compare = op == Operator::Less || op == Operator::Greater || op == Operator::LessEqual ||
                    op == Operator::GreaterEqual || op == Operator::Equal || op == Operator::NotEqual;
     bool bitwise = op == Operator::BitAnd || op == Operator::BitOr || op == Operator::BitXor ||
                    op == Operator::ShiftLeft || op == Operator::ShiftRight;
-    TypeDesc type = a->type;
-    type.base = baseRank(a->type.base) >= baseRank(b->type.base) ? a->type.base : b->type.base;
-    if (logical || compare) type.base = BaseType::Bool;
-    if (bitwise && type.base == BaseType::Bool) type.base = BaseType::Int;
-    if (!logical && !compare && !bitwise && type.base == BaseType::Bool) type.base = BaseType::Int;
-    bool integer = type.base == BaseType::Int || type.base == BaseType::UInt;
-    std::vector<float> out(a->data.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-        float x = a->data[i], y = b->data[i];
+    BaseType base = baseRank(a.type.base) >= baseRank(b.type.base) ? a.type.base : b.type.base;
+    if (logical || compare) base = BaseType::Bool;
+    if (bitwise && base == BaseType::Bool) base = BaseType::Int;
+    if (!logical && !compare && !bitwise && base == BaseType::Bool) base = BaseType::Int;
+    bool integer = base == BaseType::Int || base == BaseType::UInt;
+    for (size_t i = 0; i < a.data.size(); ++i) {
+        float x = a.data[i], y = b.data[i];
         const int64_t ix = wrapToInt32(x), iy = wrapToInt32(y);
         float r = 0.0f;
         switch (op) {
@@ -328,26 +389,27 @@ std::optional<Value> Evaluator::binary(Operator op, const std::string& spelling,
             default:
                 return fail(DiagId::OperatorNotHostEvaluable, loc, {spelling});
         }
-        out[i] = normalizeComponent(type.base, r);
+        a.data[i] = normalizeComponent(base, r);
     }
-    return makeValue(type, std::move(out));
+    a.type.base = base;
+    a.string.clear();
+    return true;
 }
 
 // A vector condition selects per component; a scalar one is handled by the program (it picks a branch).
-std::optional<Value> Evaluator::select(const Value& c, Value a, Value b, const SourceLoc& loc) {
-    if (!broadcast(a, b, loc)) return std::nullopt;
+bool Evaluator::select(const Value& c, Value& a, Value& b, const SourceLoc& loc) {
+    if (!broadcast(a, b, loc)) return false;
     if (c.data.size() != a.data.size()) return fail(DiagId::ConditionSizeMismatch, loc);
     for (size_t i = 0; i < a.data.size(); ++i)
         if (c.data[i] == 0.0f) a.data[i] = b.data[i];
-    return a;
+    return true;
 }
 
 // [SECTION] Members and indexing
 
-std::optional<Value> Evaluator::member(const std::string& m, const Value& baseValue, const SourceLoc& loc) {
-    const Value* base = &baseValue;
-    std::vector<float> out;
-    if (base->type.shape == Shape::Matrix) {
+bool Evaluator::member(const std::string& m, Value& base, const SourceLoc& loc) {
+    mScratch.clear();
+    if (base.type.shape == Shape::Matrix) {
         // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
         size_t i = 0;
         while (i < m.size()) {
@@ -363,9 +425,9 @@ std::optional<Value> Evaluator::member(const std::string& m, const Value& baseVa
                 return fail(DiagId::InvalidMatrixMember, loc, {m});
             int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
             i += 2;
-            if (r < 0 || c < 0 || r >= base->type.rows || c >= base->type.cols)
+            if (r < 0 || c < 0 || r >= base.type.rows || c >= base.type.cols)
                 return fail(DiagId::MatrixMemberOutOfRange, loc, {m});
-            out.push_back(base->data[static_cast<size_t>(r * base->type.cols + c)]);
+            mScratch.push_back(base.data[static_cast<size_t>(r * base.type.cols + c)]);
         }
     } else {
         if (m.empty() || m.size() > 4) return fail(DiagId::InvalidSwizzle, loc, {m});
@@ -375,37 +437,42 @@ std::optional<Value> Evaluator::member(const std::string& m, const Value& baseVa
             const char* p = std::strchr(xyzw, ch);
             int idx = p ? static_cast<int>(p - xyzw) : -1;
             if (idx < 0 && (p = std::strchr(rgba, ch))) idx = static_cast<int>(p - rgba);
-            int avail = base->type.shape == Shape::Scalar ? 1 : base->type.cols;
+            int avail = base.type.shape == Shape::Scalar ? 1 : base.type.cols;
             if (idx < 0 || ch == '\0' || idx >= avail)
-                return fail(DiagId::InvalidSwizzleOnType, loc, {m, base->type.hlslName()});
-            out.push_back(base->data[static_cast<size_t>(idx)]);
+                return fail(DiagId::InvalidSwizzleOnType, loc, {m, base.type.hlslName()});
+            mScratch.push_back(base.data[static_cast<size_t>(idx)]);
         }
     }
-    return makeValue(vectorType(base->type.base, static_cast<int>(out.size())), std::move(out));
+    base.data.assign(mScratch.begin(), mScratch.end());
+    setVectorType(base.type, base.type.base, static_cast<int>(mScratch.size()));
+    base.string.clear();
+    return true;
 }
 
-std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, const SourceLoc& loc) {
-    const Value* base = &baseValue;
+bool Evaluator::index(Value& base, const Value& idx, const SourceLoc& loc) {
     int i = idx.asInt();
-    TypeDesc elem = base->type;
+    TypeDesc& elem = base.type;
     size_t stride = 1;
     if (!elem.arrayDims.empty()) {
+        if (i < 0 || i >= elem.arrayDims[0]) return fail(DiagId::IndexOutOfRange, loc);
         elem.arrayDims.erase(elem.arrayDims.begin());
         stride = componentCount(elem);
-        if (i < 0 || i >= base->type.arrayDims[0]) return fail(DiagId::IndexOutOfRange, loc);
     } else if (elem.shape == Shape::Matrix) {
         // m[i] is row i, as in HLSL.
         if (i < 0 || i >= elem.rows) return fail(DiagId::MatrixRowIndexOutOfRange, loc);
-        elem = vectorType(elem.base, elem.cols);
+        setVectorType(elem, elem.base, elem.cols);
         stride = static_cast<size_t>(elem.cols);
     } else if (elem.shape == Shape::Vector) {
         if (i < 0 || i >= elem.cols) return fail(DiagId::VectorIndexOutOfRange, loc);
-        elem = vectorType(elem.base, 1);
+        setVectorType(elem, elem.base, 1);
     } else {
         return fail(DiagId::ScalarIndexed, loc);
     }
-    auto begin = base->data.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(i) * stride);
-    return makeValue(elem, std::vector<float>(begin, begin + static_cast<std::ptrdiff_t>(stride)));
+    const size_t first = static_cast<size_t>(i) * stride;
+    if (first > 0) std::memmove(base.data.data(), base.data.data() + first, stride * sizeof(float));
+    base.data.resize(stride);
+    base.string.clear();
+    return true;
 }
 
 }  // namespace detail
@@ -413,7 +480,6 @@ std::optional<Value> Evaluator::index(const Value& baseValue, const Value& idx, 
 // [SECTION] Running a program
 
 using detail::Evaluator;
-using detail::Operator;
 
 std::string PreshaderProgram::malformation(size_t slotCount) const {
     using Op = Instruction::Op;
@@ -435,69 +501,63 @@ std::string PreshaderProgram::malformation(size_t slotCount) const {
     return "";
 }
 
-std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
-                                           DiagnosticSink* diagnostics) const {
+const Value* PreshaderProgram::run(const std::vector<Value>& slots, Registers& registers,
+                                   DiagnosticSink* diagnostics) const {
     using Op = Instruction::Op;
-    // Every stack entry is a value or the error that stands in its place (`error` >= 0): an operation on an
-    // error gives that error, so a failure counts only if it reaches the result (a scalar condition's
-    // branch not taken does not), as when the tree was walked lazily.
-    struct Entry {
-        Value value;
-        int error = -1;
-    };
-    std::vector<Entry> stack;
-    std::vector<Error> errors;
-    Evaluator evaluator;
-    const auto failed = [&](std::optional<Value> value) {
-        if (value) return Entry{std::move(*value), -1};
-        errors.push_back(evaluator.error());
-        return Entry{Value{}, static_cast<int>(errors.size() - 1)};
-    };
-    // Pops `n` operands; the first error among them, or -1.
-    std::vector<Value> args;
-    const auto pop = [&](size_t n) {
-        int error = -1;
-        args.clear();
-        for (size_t i = stack.size() - n; i < stack.size(); ++i) {
-            if (error < 0) error = stack[i].error;
-            args.push_back(std::move(stack[i].value));
+    // Every depth of the stack holds a value or the error that stands in its place (entryErrors >= 0): an
+    // operation on an error gives that error, so a failure counts only if it reaches the result (a scalar
+    // condition's branch not taken does not), as when the tree was walked lazily. An operation's result
+    // takes the place of its first operand; values are copied into place, never swapped, so that each
+    // depth keeps the storage this program's values need there.
+    std::vector<Value>& values = registers.mValues;
+    std::vector<int>& entryErrors = registers.mEntryErrors;
+    std::vector<Error>& errors = registers.mErrors;
+    errors.clear();
+    Evaluator evaluator(registers.mScratch);
+    size_t depth = 0;
+    const auto push = [&]() -> Value& {
+        if (depth == values.size()) {
+            values.emplace_back();
+            entryErrors.push_back(-1);
         }
-        stack.resize(stack.size() - n);
-        return error;
+        entryErrors[depth] = -1;
+        return values[depth++];
+    };
+    const auto pushError = [&](const Error& error) {
+        push();
+        errors.push_back(error);
+        entryErrors[depth - 1] = static_cast<int>(errors.size() - 1);
     };
     for (const Instruction& in : mCode) {
         switch (in.op) {
             case Op::Constant:
-                stack.push_back({mConstants[in.operand], -1});
+                push() = mConstants[in.operand];
                 break;
             case Op::Load:
                 if (in.operand < slots.size()) {
-                    stack.push_back({slots[in.operand], -1});
+                    push() = slots[in.operand];
                 } else {
-                    errors.push_back({DiagId::UnknownIdentifier, in.loc, {in.text}});
-                    stack.push_back({Value{}, static_cast<int>(errors.size() - 1)});
+                    pushError({DiagId::UnknownIdentifier, in.loc, {in.text}});
                 }
                 break;
             case Op::Fail:
-                errors.push_back(mErrors[in.operand]);
-                stack.push_back({Value{}, static_cast<int>(errors.size() - 1)});
+                pushError(mErrors[in.operand]);
                 break;
             case Op::Select: {
-                Entry other = std::move(stack.back());
-                stack.pop_back();
-                Entry then = std::move(stack.back());
-                stack.pop_back();
-                Entry condition = std::move(stack.back());
-                stack.pop_back();
-                if (condition.error >= 0) {
-                    stack.push_back(std::move(condition));
-                } else if (condition.value.data.size() == 1) {
-                    stack.push_back(condition.value.data[0] != 0.0f ? std::move(then) : std::move(other));
-                } else if (then.error >= 0 || other.error >= 0) {
-                    stack.push_back(then.error >= 0 ? std::move(then) : std::move(other));
+                depth -= 2;
+                const size_t condition = depth - 1, then = depth, other = depth + 1;
+                if (entryErrors[condition] >= 0) break;
+                if (values[condition].data.size() == 1) {
+                    const size_t taken = values[condition].data[0] != 0.0f ? then : other;
+                    values[condition] = values[taken];
+                    entryErrors[condition] = entryErrors[taken];
+                } else if (entryErrors[then] >= 0 || entryErrors[other] >= 0) {
+                    entryErrors[condition] = entryErrors[then] >= 0 ? entryErrors[then] : entryErrors[other];
+                } else if (evaluator.select(values[condition], values[then], values[other], in.loc)) {
+                    values[condition] = values[then];
                 } else {
-                    stack.push_back(failed(evaluator.select(condition.value, std::move(then.value),
-                                                            std::move(other.value), in.loc)));
+                    errors.push_back(evaluator.error());
+                    entryErrors[condition] = static_cast<int>(errors.size() - 1);
                 }
                 break;
             }
@@ -505,52 +565,69 @@ std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
                 const size_t n = in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
                                  : in.op == Op::Binary || in.op == Op::Index                       ? 2
                                                                                                    : in.count;
-                const int error = pop(n);
+                // The operands' first error, if any, takes their place.
+                const size_t first = depth - n;
+                int error = -1;
+                for (size_t i = first; i < depth && error < 0; ++i) error = entryErrors[i];
+                depth = first;
+                Value& out = push();
                 if (error >= 0) {
-                    stack.push_back({Value{}, error});
+                    entryErrors[first] = error;
                     break;
                 }
+                const std::span<Value> operands(values.data() + first, n);
+                bool ok = true;
                 switch (in.op) {
                     case Op::Unary:
-                        stack.push_back(failed(evaluator.unary(in.operation, std::move(args[0]), in.loc)));
+                        ok = evaluator.unary(in.operation, out, in.loc);
                         break;
                     case Op::Binary:
-                        stack.push_back(failed(evaluator.binary(in.operation, in.text, std::move(args[0]),
-                                                                std::move(args[1]), in.loc)));
+                        ok = evaluator.binary(in.operation, in.text, out, values[first + 1], in.loc);
                         break;
                     case Op::Construct:
-                        stack.push_back(failed(evaluator.construct(in.type, args, in.loc)));
+                        ok = evaluator.construct(in.type, operands, out, in.loc);
                         break;
                     case Op::Intrinsic:
-                        stack.push_back(failed(evaluator.intrinsic(in.text, args, in.loc)));
+                        ok = evaluator.intrinsic(in.function, in.text, operands, in.loc);
                         break;
                     case Op::InitList:
-                        stack.push_back(failed(evaluator.initList(args, in.loc)));
+                        ok = evaluator.initList(operands, out, in.loc);
                         break;
                     case Op::Member:
-                        stack.push_back(failed(evaluator.member(in.text, args[0], in.loc)));
+                        ok = evaluator.member(in.text, out, in.loc);
                         break;
                     case Op::Index:
-                        stack.push_back(failed(evaluator.index(args[0], args[1], in.loc)));
+                        ok = evaluator.index(out, values[first + 1], in.loc);
                         break;
                     case Op::Convert:
-                        stack.push_back(failed(evaluator.convert(args[0], in.type, in.loc)));
+                        ok = evaluator.convert(out, in.type, in.loc);
                         break;
                     default:
                         break;
                 }
+                if (!ok) {
+                    errors.push_back(evaluator.error());
+                    entryErrors[first] = static_cast<int>(errors.size() - 1);
+                }
             }
         }
     }
-    if (stack.size() != 1) return std::nullopt;  // an empty program
-    if (stack.back().error >= 0) {
+    if (depth != 1) return nullptr;  // an empty program
+    if (entryErrors[0] >= 0) {
         if (diagnostics) {
-            const Error& error = errors[static_cast<size_t>(stack.back().error)];
+            const Error& error = errors[static_cast<size_t>(entryErrors[0])];
             diagnostics->report(error.id, error.loc, error.args);
         }
-        return std::nullopt;
+        return nullptr;
     }
-    return std::move(stack.back().value);
+    return &values[0];
+}
+
+std::optional<Value> PreshaderProgram::run(const std::vector<Value>& slots,
+                                           DiagnosticSink* diagnostics) const {
+    Registers registers;
+    const Value* value = run(slots, registers, diagnostics);
+    return value ? std::optional<Value>(*value) : std::nullopt;
 }
 
 }  // namespace fx

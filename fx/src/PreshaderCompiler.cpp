@@ -13,6 +13,7 @@
 
 namespace fx {
 
+using detail::functionOf;
 using detail::operatorOf;
 using detail::parseTypeName;
 using detail::wrapToInt32;
@@ -72,6 +73,7 @@ public:
                 if (type) {
                     in.type = *type;
                 } else {
+                    in.function = functionOf(e.text);
                     in.text = e.text;
                 }
                 return;

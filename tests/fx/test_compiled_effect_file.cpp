@@ -92,6 +92,36 @@ technique PassClamps { pass p { VertexShader = compile vs_3_0 VS(); PixelShader 
     EXPECT_EQ(serializeCompiledEffect(*read), bytes);
 }
 
+// A preshader's intrinsics are opcodes resolved by the compiler: the program read from the file runs them
+// without their names being looked up again, and gives the compiled program's value.
+TEST(CompiledEffectFile, PreshaderIntrinsicsRoundTrip) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+float Bias = 0.125;
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
+    DepthBias = max(Bias, 0.25) * sqrt(4.0) + abs(-Bias); } }
+)",
+                                                       "bias.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "bias.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    const RenderStateSetting& state = read->techniques.at(0).passes.at(0).states.at(0);
+    ASSERT_FALSE(state.constant);
+    std::vector<Value> values = read->initialValues;
+    const ParameterInfo* bias = read->findParameter("Bias");
+    ASSERT_TRUE(bias);
+    values.at(static_cast<size_t>(bias - read->parameters.data())) = Value::scalar(0.5f);
+    const std::optional<Value> value = state.value.run(values, &diagnostics);
+    ASSERT_TRUE(value) << diagnostics.str();
+    EXPECT_EQ(value->asFloat(), 0.5f * 2.0f + 0.5f);
+}
+
 // Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
 TEST(CompiledEffectFile, StreamOutputRoundTrips) {
     DiagnosticList diagnostics;
@@ -170,6 +200,18 @@ TEST_F(DamagedFile, ANewerFormatVersionIsNamed) {
         << error;
     bytes[8] = 0;
     readError(bytes, DiagId::CompiledEffectOlderFormat);
+}
+
+// A file of the format before this one (its preshader intrinsics named, not resolved) is refused with the
+// way out, never read with other meanings.
+TEST_F(DamagedFile, TheFormatBeforeThisOneIsOlder) {
+    std::string bytes = mBytes;
+    bytes[8] = static_cast<char>(kCompiledEffectFormatVersion - 1);
+    EXPECT_EQ(readError(bytes, DiagId::CompiledEffectOlderFormat),
+              "shadow.sfxo: error: the compiled effect file has format version " +
+                  std::to_string(kCompiledEffectFormatVersion - 1) +
+                  ", which this shadowfx no longer reads (it reads " +
+                  std::to_string(kCompiledEffectFormatVersion) + "): compile the effect again");
 }
 
 TEST_F(DamagedFile, SourceTextIsNotACompiledEffect) {

@@ -251,5 +251,82 @@ TEST(PreshaderProgram, AnErrorInTheBranchNotTakenIsNone) {
     EXPECT_NE(diags.items()[0].message.find("Missing"), std::string::npos);
 }
 
+// Registers kept between runs (as the runtime keeps one per pass for all its programs) hold the last
+// program's values: a run on them must give exactly what a run on fresh registers gives, whatever ran
+// before, on every shape (a wider value before a narrower, a string before a number, an array's type before
+// a vector's).
+TEST(PreshaderProgram, RegistersKeptBetweenRunsGiveWhatFreshOnesGive) {
+    const std::vector<std::string> names = {"M", "v", "a", "b", "s", "t", "arr", "flag"};
+    const SlotResolver slots = [&](std::string_view name) -> std::optional<size_t> {
+        for (size_t i = 0; i < names.size(); ++i)
+            if (names[i] == name) return i;
+        return std::nullopt;
+    };
+    Expr index;
+    index.kind = Expr::Kind::Index;
+    index.args = {id("arr"), num(1, true)};
+    Expr matrixRow = index;
+    matrixRow.args = {id("M"), num(2, true)};
+    Expr list;
+    list.kind = Expr::Kind::InitList;
+    list.args = {id("a"), num(7)};
+    const std::vector<Expr> expressions = {
+        call("mul", {id("v"), id("M")}),
+        call("inverse", {id("M")}),
+        member(call("transpose", {id("M")}), "_11_23_m30"),
+        call("float4", {member(id("a"), "zyx"), num(2)}),
+        ternary(call("float3", {num(1), num(0), id("flag")}), id("a"), id("b")),
+        ternary(id("flag"), call("cross", {id("a"), id("b")}), call("normalize", {id("b")})),
+        bin("==", id("s"), id("t")),
+        index,
+        matrixRow,
+        list,
+        call("smoothstep", {num(0, true), id("v"), member(id("v"), "wzyx")}),
+        bin("%", call("int3", {id("a")}), num(2, true)),
+        call("determinant", {id("M")}),
+        call("lerp", {id("a"), id("b"), num(0.25)}),
+    };
+    std::vector<PreshaderProgram> programs;
+    for (const Expr& e : expressions) programs.push_back(compilePreshader(e, slots, nullptr));
+
+    TypeDesc arrayType;
+    arrayType.shape = Shape::Vector;
+    arrayType.cols = 2;
+    arrayType.arrayDims = {3};
+    Value array = zeroValue(arrayType);
+    for (size_t i = 0; i < array.data.size(); ++i) array.data[i] = 0.5f * static_cast<float>(i) - 1.0f;
+    std::vector<float> m(16);
+    for (size_t i = 0; i < 16; ++i) m[i] = static_cast<float>(i % 5) + (i % 5 == 0 ? 2.0f : 0.25f);
+    const std::vector<Value> first = {Value::matrix(4, 4, m),
+                                      Value::vector({1, -2, 3, 0.5f}),
+                                      Value::vector({1, 2, 3}),
+                                      Value::vector({-4, 0.5f, 2}),
+                                      Value::text("shadow"),
+                                      Value::text("shadow"),
+                                      array,
+                                      Value::boolean(true)};
+    std::vector<Value> second = first;
+    second[1] = Value::vector({0.25f, 4, -1, 2});
+    second[2] = Value::vector({-3, 5, 0.125f});
+    second[5] = Value::text("light");
+    second[7] = Value::boolean(false);
+
+    PreshaderProgram::Registers registers;
+    const std::vector<const std::vector<Value>*> runs = {&first, &second, &first};
+    for (const std::vector<Value>* values : runs) {
+        for (size_t i = 0; i < programs.size(); ++i) {
+            SCOPED_TRACE("expression " + std::to_string(i));
+            const std::optional<Value> fresh = programs[i].run(*values, nullptr);
+            const Value* kept = programs[i].run(*values, registers, nullptr);
+            ASSERT_TRUE(fresh);
+            ASSERT_TRUE(kept);
+            EXPECT_EQ(kept->data, fresh->data);
+            EXPECT_EQ(kept->string, fresh->string);
+            EXPECT_EQ(kept->type.hlslName(), fresh->type.hlslName());
+            EXPECT_EQ(kept->type.arrayDims, fresh->type.arrayDims);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace fx

@@ -1,10 +1,10 @@
 // What the per-frame path resolves and allocates: after the first frame, frames of the thesis effect look
 // up no name (runtime/NameLookups.h counts every parameter, light, technique and semantic found by its
-// text, and every literal parsed: the runtime resolves them when the effect is created) and make at most a
-// fixed number of heap allocations, counted by this binary's own global operator new between the markers
-// around render(). The goal for allocations is none too; the bound is what the runtime makes now, so that
-// the per-frame path cannot grow an allocation unnoticed, and it comes down as the runtime keeps more of
-// its per-frame data between frames.
+// text, and every literal parsed: the runtime resolves them when the effect is created) and make no heap
+// allocation, counted by this binary's own global operator new between the markers around render(): the
+// runtime keeps its per-frame data between frames (the frame plan, the working lists, the preshader VM's
+// registers, FrameStats' lists). With an orbiting camera a few lists may still grow as the view shows more
+// objects than any frame before (geometrically, so a handful of times at most).
 //
 // Only operator new is counted, and only on the thread that renders: the runtime is C++ and allocates
 // through it (std::string, std::vector, std::map), while Mesa is C and allocates with malloc for its own
@@ -145,7 +145,7 @@ constexpr int kFrames = 100;
 TEST(FrameOverhead, ThesisOnDualL) {
     const Overhead overhead = frameOverhead("dual-l", kFrames, 0.0f);
     EXPECT_EQ(overhead.lookups, 0u);
-    EXPECT_LE(overhead.allocations, 74u * kFrames);
+    EXPECT_EQ(overhead.allocations, 0u);
 }
 
 // forest-fifth's 10,001 objects with the camera orbiting as `bench --camera-orbit 0.5` turns it: culled
@@ -153,7 +153,7 @@ TEST(FrameOverhead, ThesisOnDualL) {
 TEST(FrameOverhead, ThesisOnForestFifthWithOrbitingCamera) {
     const Overhead overhead = frameOverhead("forest-fifth", kFrames, 0.5f);
     EXPECT_EQ(overhead.lookups, 0u);
-    EXPECT_LE(overhead.allocations, 727u * kFrames);
+    EXPECT_LE(overhead.allocations, 10u);  // in all 100 frames: lists growing to the widest view so far
 }
 
 }  // namespace

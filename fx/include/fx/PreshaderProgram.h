@@ -1,8 +1,8 @@
 // PreshaderProgram: an effect expression compiled for the host, the way D3DX compiles the expressions of
 // render states and shader arguments into preshaders. Parameters are slots (their indices in the effect),
-// operators are opcodes and constructor types parsed at compile time; running a program walks a flat
-// instruction list over the slots' current values, with no parameter names and no syntax tree (intrinsics
-// and swizzles are found by their text once per instruction, never per component).
+// operators and intrinsics are opcodes and constructor types parsed at compile time; running a program
+// walks a flat instruction list over the slots' current values, with no parameter names and no syntax
+// tree, on registers the caller keeps (Registers), so that a program run again allocates nothing.
 //
 // Compiled from an Expr by fx/Preshader.h (compilePreshader); run by the runtime before a draw when one of
 // its input slots changed (inputs()).
@@ -34,7 +34,7 @@ public:
             Binary,     // pop 2; `operation` is the operator
             Select,     // pop 3: condition, then, else (HLSL evaluates both; a scalar condition picks one)
             Construct,  // pop `count`: a `type` from their components (float4(...))
-            Intrinsic,  // pop `count`: the intrinsic `text` (mul, normalize, ...)
+            Intrinsic,  // pop `count`: the intrinsic `function` (mul, normalize, ...), spelled `text`
             InitList,   // pop `count`: { ... }
             Member,     // pop 1: swizzle or matrix member `text`
             Index,      // pop 2: base[index]
@@ -67,11 +67,58 @@ public:
             Complement,  // unary ~
             Unknown,
         };
+        // Intrinsic: the HLSL intrinsic, resolved from its name when the program is compiled. Unknown: one
+        // the host cannot evaluate (an error at run time, naming `text`).
+        enum class Function : uint8_t {
+            Abs,
+            Sqrt,
+            Rsqrt,
+            Exp,
+            Exp2,
+            Log,
+            Log2,
+            Log10,
+            Sin,
+            Cos,
+            Tan,
+            Asin,
+            Acos,
+            Atan,
+            Radians,
+            Degrees,
+            Floor,
+            Ceil,
+            Round,
+            Trunc,
+            Frac,
+            Saturate,
+            Sign,
+            Min,
+            Max,
+            Pow,
+            Atan2,
+            Fmod,
+            Step,
+            Clamp,
+            Lerp,
+            Smoothstep,
+            Dot,
+            Length,
+            Normalize,
+            Distance,
+            Cross,
+            Transpose,
+            Determinant,
+            Inverse,
+            Mul,
+            Unknown,
+        };
         Op op = Op::Constant;
         Operator operation = Operator::Unknown;  // Unary, Binary
+        Function function = Function::Unknown;   // Intrinsic
         uint32_t operand = 0;                    // Constant, Load, Fail
         uint32_t count = 0;                      // Construct, Intrinsic, InitList
-        std::string text;  // operator (for messages), intrinsic or member; never a parameter's name
+        std::string text;  // operator or intrinsic (for messages), member; never a parameter's name
         TypeDesc type;     // Construct, Convert
         SourceLoc loc;     // for the error it may report
     };
@@ -81,9 +128,26 @@ public:
         std::vector<std::string> args;  // the id's template's {0}, {1}, ...
     };
 
+    // The stack a program runs on, one value per depth, kept by the caller between runs. Its values keep
+    // their storage, so once they have held a program's values, running that program again allocates
+    // nothing (save the message of an error). One Registers serves any number of programs, one run at a
+    // time.
+    class Registers {
+    private:
+        friend class PreshaderProgram;
+        std::vector<Value> mValues;
+        std::vector<int> mEntryErrors;  // per depth: the index in mErrors of the error in its place, or -1
+        std::vector<Error> mErrors;     // this run's
+        std::vector<float> mScratch;    // an operation's result while its operands are still read
+    };
+
     // The value over `slots` (every parameter's current value, by index), converted to the program's
-    // target type if it has one. nullopt, with the error reported to `diagnostics` (if given), when it
-    // fails; an error in the branch a scalar condition does not take is not one.
+    // target type if it has one, held by `registers` until their next run. nullptr, with the error
+    // reported to `diagnostics` (if given), when it fails; an error in the branch a scalar condition does
+    // not take is not one.
+    const Value* run(const std::vector<Value>& slots, Registers& registers,
+                     DiagnosticSink* diagnostics) const;
+    // The same on registers of its own: for a program run once.
     std::optional<Value> run(const std::vector<Value>& slots, DiagnosticSink* diagnostics) const;
 
     // The slots the program reads, ascending and unique: it must be run again only when one changed.

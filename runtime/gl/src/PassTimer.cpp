@@ -10,7 +10,9 @@ uint64_t nanosecondsSince(std::chrono::steady_clock::time_point start) {
 }
 }  // namespace
 
-PassTimer::PassTimer(bool enabled, FrameStats& stats) : mEnabled(enabled), mStats(stats) {
+PassTimer::PassTimer(bool enabled, FrameStats& stats, std::vector<GLuint>& queries)
+    : mEnabled(enabled), mStats(stats), mQueries(queries) {
+    mQueries.clear();
     if (mEnabled) mFrameStart = std::chrono::steady_clock::now();
 }
 

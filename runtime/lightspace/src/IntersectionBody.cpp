@@ -61,6 +61,13 @@ Overlap overlapVolume(const ConvexVolume& volume, const Aabb& box) {
 }
 
 std::vector<glm::vec3> intersectionBodyPoints(const glm::mat4& viewProjection, const Bounds& bounds) {
+    std::vector<glm::vec3> points;
+    intersectionBodyPoints(viewProjection, bounds, points);
+    return points;
+}
+
+void intersectionBodyPoints(const glm::mat4& viewProjection, const Bounds& bounds,
+                            std::vector<glm::vec3>& points) {
     const glm::mat4 inverse = glm::inverse(viewProjection);
     std::array<glm::vec3, 8> frustum;
     for (int i = 0; i < 8; ++i) {
@@ -81,7 +88,7 @@ std::vector<glm::vec3> intersectionBodyPoints(const glm::mat4& viewProjection, c
                            [&](const glm::vec4& plane) { return planeDistance(plane, p) >= -slack; });
     };
 
-    std::vector<glm::vec3> points;
+    points.clear();
     for (const glm::vec3& p : frustum)
         if (inBox(p)) points.push_back(p);
     for (const glm::vec3& p : box)
@@ -111,7 +118,6 @@ std::vector<glm::vec3> intersectionBodyPoints(const glm::mat4& viewProjection, c
             if (inFrustum(p)) points.push_back(p);
         }
     }
-    return points;
 }
 
 bool ReceiverRegion::contains(const ReceiverRegion& other) const {

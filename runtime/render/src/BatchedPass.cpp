@@ -117,6 +117,10 @@ void BatchedPass::bindRecords() {
 
 void BatchedPass::setInstances(const std::vector<uint32_t>& instances) {
     if (instances == mInstances) return;
+    // Grown geometrically, not to each list's length: lists that vary with the view stop allocating once
+    // the longest has been seen.
+    if (instances.size() > mInstances.capacity())
+        mInstances.reserve(std::max(instances.size(), 2 * mInstances.capacity()));
     mInstances = instances;
     gl::BindBuffer(GL_SHADER_STORAGE_BUFFER, mInstanceBuffer);
     // A fresh allocation each time: the draws still queued read the old list.

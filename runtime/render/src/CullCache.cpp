@@ -40,4 +40,8 @@ std::vector<uint32_t>& CullCache::insert(const Volume& volume) {
     return oldest->visible;
 }
 
+void CullCache::reserve(size_t objects) {
+    for (Entry& entry : mEntries) entry.visible.reserve(objects);
+}
+
 }  // namespace runtime

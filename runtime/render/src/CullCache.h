@@ -31,6 +31,9 @@ public:
     // A list to fill for `volume` (emptied), taking the place of the least recently used one: its storage
     // is reused, so a moving camera allocates nothing once the lists have grown.
     std::vector<uint32_t>& insert(const Volume& volume);
+    // Gives every list room for `objects` (the scene's object count): a list then never grows, and a
+    // volume first culled frames after the first allocates nothing either.
+    void reserve(size_t objects);
 
 private:
     // A frame culls against a few volumes (the camera, each light or cascade it renders).

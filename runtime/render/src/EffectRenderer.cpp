@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <set>
 
 namespace runtime {
 
@@ -223,7 +222,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
                             FrameStats* stats) {
     FrameStats localStats;
     FrameStats& frameStats = stats ? *stats : localStats;
-    frameStats = {};
+    frameStats.reset();
     mImpl->pool.pull(*mImpl);
     if (mHostFrame) {
         const bool ran = mHostFrame->render(*this, *mImpl, scene, options, diagnostics);
@@ -262,8 +261,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         origin == glm::vec3(0.0f) ? std::nullopt : std::optional<Scene>(scene.translated(-origin));
     const Scene& frameScene = rebased ? *rebased : scene;
     // Render targets are allocated once an operation that runs needs them (below); the frame's own now.
-    std::set<int> none;
-    mImpl->ensureFrameResources(options.width, options.height, &none);
+    std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
+    neededTargets.assign(mImpl->values.size(), false);
+    mImpl->ensureFrameResources(options.width, options.height, &neededTargets);
     mImpl->updateSceneCache(frameScene);
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
@@ -287,35 +287,43 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     const uint64_t runsBefore = preshaderRuns();
 
     // Plan the frame with a dry run of its script, then leave out what it shows nobody needs.
-    FramePlan plan;
+    FramePlan& plan = mImpl->framePlan;
     {
-        std::vector<glm::vec3> body;
+        std::vector<glm::vec3>& body = mImpl->frameScratch.cameraBody;
+        body.clear();
         if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
             RenderPortView camera;
             portMatrices(frameScene, binder, options, "", -1, -1, camera);
             const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
-            body = intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max});
+            intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max}, body);
         }
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
+        plan.beginRecording();
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
         ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
                                recorder, dryRunDiagnostics);
-        std::vector<int> outputs;
+        plan.finishRecording();
+        std::vector<int>& outputs = mImpl->frameScratch.outputTargets;
+        outputs.clear();
         for (const std::string& name : options.outputTargets)
             if (const std::optional<size_t> index = findParameter(name))
                 outputs.push_back(static_cast<int>(*index));
         plan.markDead(outputs, options.leaveOut);
         // A render target no remaining operation writes or reads is not allocated.
-        std::set<int> needed;
+        const auto need = [&neededTargets](int resource) {
+            if (resource >= 0 && static_cast<size_t>(resource) < neededTargets.size())
+                neededTargets[static_cast<size_t>(resource)] = true;
+        };
         for (const PlannedOp& op : plan.ops) {
             if (op.leftOut != LeftOut::No && options.leaveOut) continue;
-            needed.insert(op.writes.begin(), op.writes.end());
-            needed.insert(op.reads.begin(), op.reads.end());
+            for (int resource : op.writes) need(resource);
+            for (int resource : op.reads) need(resource);
         }
-        mImpl->ensureFrameResources(options.width, options.height, options.leaveOut ? &needed : nullptr);
+        mImpl->ensureFrameResources(options.width, options.height,
+                                    options.leaveOut ? &neededTargets : nullptr);
         // Without reuse the plan sees no history: nothing matches, as after a moved light.
-        const std::map<int, TargetHistory> noHistory;
+        static const std::map<int, TargetHistory> noHistory;
         plan.decide(
             options.reuseTargets ? mImpl->targetHistory : noHistory,
             [this](int resource) { return mImpl->targetIdentity(resource); }, options.leaveOut);

@@ -470,7 +470,7 @@ bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
     return true;
 }
 
-void EffectResources::ensureFrameResources(int width, int height, const std::set<int>* needed) {
+void EffectResources::ensureFrameResources(int width, int height, const std::vector<bool>* needed) {
     if (frameColor.width() != width || frameColor.height() != height) {
         if (frameColor) framebuffers.evict(frameColor);
         if (frameDepth) framebuffers.evict(frameDepth);
@@ -480,13 +480,14 @@ void EffectResources::ensureFrameResources(int width, int height, const std::set
     ensureRenderTargets(width, height, needed);
 }
 
-void EffectResources::ensureRenderTargets(int width, int height, const std::set<int>* needed) {
+void EffectResources::ensureRenderTargets(int width, int height, const std::vector<bool>* needed) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
         if (!isRenderTarget(desc)) continue;
         const glm::ivec2 size = renderTargetSize(desc, width, height);
         const int w = size.x, h = size.y;
         auto it = textures.find(desc.parameter);
-        if (it == textures.end() && needed && !needed->count(static_cast<int>(desc.parameter))) continue;
+        if (it == textures.end() && needed && !(desc.parameter < needed->size() && (*needed)[desc.parameter]))
+            continue;
         if (it != textures.end() && it->second.width() == w && it->second.height() == h) continue;
         if (it != textures.end()) framebuffers.evict(it->second);
         GpuTexture texture = desc.type == fx::BaseType::TextureCube

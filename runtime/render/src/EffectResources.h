@@ -192,13 +192,23 @@ public:
             size_t offset;   // in `instances`
             size_t count;
         };
-        std::vector<Batch> batches;         // batching's instanced draws of the current draw
-        std::vector<size_t> batchOfMesh;    // per mesh slot: its batch in the current draw, or npos
-        std::vector<size_t> objectBatch;    // per visible object: its batch
-        std::vector<uint32_t> instances;    // the instance lists, batch after batch
-        std::vector<fx::Value> arguments;   // the current draw's compile arguments
-        std::vector<fx::Value> planValues;  // the dry run's copy of the parameter values (PlanRecorder)
+        std::vector<Batch> batches;          // batching's instanced draws of the current draw
+        std::vector<size_t> batchOfMesh;     // per mesh slot: its batch in the current draw, or npos
+        std::vector<size_t> objectBatch;     // per visible object: its batch
+        std::vector<uint32_t> instances;     // the instance lists, batch after batch
+        std::vector<fx::Value> arguments;    // the current draw's compile arguments
+        std::vector<fx::Value> planValues;   // the dry run's copy of the parameter values (PlanRecorder)
+        ParameterStamps planStamps;          // their stamps
+        std::vector<float> planClearColor;   // the dry run's clear colour
+        std::vector<bool> neededTargets;     // per parameter: a render target the frame's plan uses
+        std::vector<glm::vec3> cameraBody;   // the camera's intersection body, for the plan's regions
+        std::vector<int> outputTargets;      // FrameOptions::outputTargets, resolved
+        std::vector<glm::vec3> sliceBody;    // PlanRecorder: a cascade slice's intersection body
+        std::vector<uint32_t> sliceObjects;  // PlanRecorder: the objects in a cascade slice
+        std::vector<GLuint> timerQueries;    // PassTimer's queries of the frame
     } frameScratch;
+    // The frame's plan, kept between frames for its storage (EffectRenderer::render rebuilds it).
+    FramePlan framePlan;
     // What each render target holds after the frames so far (FramePlan): how light passes are reused.
     std::map<int, TargetHistory> targetHistory;
     // Fits to what the camera sees (LightFitVisibleSamples): the pre-pass that finds the samples.
@@ -206,9 +216,9 @@ public:
 
     // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
     // allocate (null: all); others already allocated are still resized.
-    void ensureFrameResources(int width, int height, const std::set<int>* needed = nullptr);
+    void ensureFrameResources(int width, int height, const std::vector<bool>* needed = nullptr);
     // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
-    void ensureRenderTargets(int width, int height, const std::set<int>* needed = nullptr);
+    void ensureRenderTargets(int width, int height, const std::vector<bool>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
     // EffectRenderer::setTexture.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);

@@ -231,6 +231,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         drawWith(pass, passIndex, *program, use, nullptr, mResources.quad);
     } else {
         mVisible.clear();
+        mVisible.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
         // What a pass streams out must not depend on the view: it draws every object.
         const bool culling = mOptions.leaveOut && mResources.sceneCache.valid &&
                              use.projectsWith(mPortLight, mBinder) && !capture;
@@ -366,6 +367,7 @@ void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) co
         visible.insert(visible.end(), kept->begin(), kept->end());
         return;
     }
+    mResources.cullCache.reserve(mScene.objects.size());
     std::vector<uint32_t>& list = mResources.cullCache.insert(volume);
     if (!mLightPort) {
         const ConvexVolume frustum = frustumPlanes(volume.viewProjection);
@@ -655,6 +657,7 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots;
     mBatches.clear();
     if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount, kNoBatch);
+    mObjectBatch.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {
         const Mesh* mesh = mScene.objects[mVisible[i]].mesh.get();
@@ -681,6 +684,8 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
         size = (size + batch.count + alignment - 1) / alignment * alignment;
         batch.count = 0;  // counted again while filling
     }
+    // Grown geometrically: lists that vary with the view stop allocating once the longest has been seen.
+    if (size > mInstanceList.capacity()) mInstanceList.reserve(std::max(size, 2 * mInstanceList.capacity()));
     mInstanceList.assign(size, 0);
     for (size_t i = 0; i < mVisible.size(); ++i) {
         Batch& batch = mBatches[mObjectBatch[i]];

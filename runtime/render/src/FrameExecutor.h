@@ -103,7 +103,7 @@ private:
     const FrameOptions& mOptions;
     fx::DiagnosticSink& mDiagnostics;
     FrameStats& mStats;
-    PassTimer mTimer{mOptions.timePasses, mStats};
+    PassTimer mTimer{mOptions.timePasses, mStats, mResources.frameScratch.timerQueries};
     size_t mTechnique;
     const SemanticBinder& mBinder;
     const std::vector<PassUse>& mUses;

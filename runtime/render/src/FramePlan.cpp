@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <set>
 
 namespace runtime {
 
@@ -38,27 +37,51 @@ bool techniqueTestsStencil(const fx::CompiledTechnique& technique) {
     return false;
 }
 
+PlannedOp& FramePlan::add() {
+    if (mRecorded == ops.size()) {
+        ops.emplace_back();
+    } else {
+        // The last frame's operation at this place, reset with its lists' storage.
+        PlannedOp& op = ops[mRecorded];
+        std::vector<int> writes = std::move(op.writes), reads = std::move(op.reads);
+        op = PlannedOp{};
+        writes.clear();
+        reads.clear();
+        op.writes = std::move(writes);
+        op.reads = std::move(reads);
+    }
+    return ops[mRecorded++];
+}
+
+FramePlan::Track& FramePlan::track(int resource) {
+    for (Track& track : mTracks)
+        if (track.resource == resource) return track;
+    Track& track = mTracks.emplace_back();
+    track.resource = resource;
+    return track;
+}
+
 void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
     // Dead work: backward liveness from the frame's colour. Colour and depth clears overwrite their targets
     // entirely; draws read theirs (PlannedOp::reads).
     if (leaveOut) {
         for (PlannedOp& op : ops)
             if (op.sceneSaysSkip) op.leftOut = LeftOut::Scene;
-        std::set<int> live(outputs.begin(), outputs.end());
-        live.insert(kFrameColor);
+        for (Track& track : mTracks) track.live = false;
+        for (int output : outputs) track(output).live = true;
+        track(kFrameColor).live = true;
         for (auto op = ops.rbegin(); op != ops.rend(); ++op) {
             if (op->leftOut != LeftOut::No) continue;
-            const bool needed = std::any_of(op->writes.begin(), op->writes.end(), [&](int w) {
-                return live.count(w) > 0 || isStreamOutResource(w);
-            });
+            const bool needed = std::any_of(op->writes.begin(), op->writes.end(),
+                                            [&](int w) { return track(w).live || isStreamOutResource(w); });
             if (!needed) {
                 op->leftOut = LeftOut::Dead;
                 continue;
             }
             if ((op->kind == PlannedOp::Kind::ClearColor || op->kind == PlannedOp::Kind::ClearDepth) &&
                 op->wholeTarget)
-                for (int w : op->writes) live.erase(w);
-            live.insert(op->reads.begin(), op->reads.end());
+                for (int w : op->writes) track(w).live = false;
+            for (int r : op->reads) track(r).live = true;
         }
     }
 }
@@ -66,35 +89,48 @@ void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
 void FramePlan::decide(const std::map<int, TargetHistory>& history,
                        const std::function<uint64_t(int)>& identity, bool leaveOut) {
     // Contents: chain hashes per target, forward over what will run.
-    std::map<int, uint64_t> contents;
-    for (const auto& [resource, record] : history) contents[resource] = record.contents;
-    std::map<int, std::vector<size_t>> chains;  // per target, the operations writing it, in order
+    for (Track& track : mTracks) {
+        track.known = false;
+        track.chain.clear();
+        track.eligible = false;
+    }
+    for (const auto& [resource, record] : history) {
+        Track& past = track(resource);
+        past.known = true;
+        past.contents = record.contents;
+    }
+    mWritten.clear();
     for (size_t i = 0; i < ops.size(); ++i) {
         PlannedOp& op = ops[i];
         if (op.leftOut != LeftOut::No) continue;
         uint64_t signature = op.signature;
         for (int r : op.reads) {
-            auto it = contents.find(r);
-            signature = hashCombine(signature, it == contents.end() ? 0 : it->second);
+            const Track& read = track(r);
+            signature = hashCombine(signature, read.known ? read.contents : 0);
         }
         const bool overwrites =
             (op.kind == PlannedOp::Kind::ClearColor || op.kind == PlannedOp::Kind::ClearDepth) &&
             op.wholeTarget;
         for (int w : op.writes) {
-            const uint64_t before = overwrites ? 0 : (contents.count(w) ? contents[w] : 0x5eedull);
-            contents[w] = hashCombine(hashCombine(before, identity(w)), signature);
-            chains[w].push_back(i);
+            Track& written = track(w);
+            const uint64_t before = overwrites ? 0 : (written.known ? written.contents : 0x5eedull);
+            written.contents = hashCombine(hashCombine(before, identity(w)), signature);
+            written.known = true;
+            if (written.chain.empty()) mWritten.push_back(w);
+            written.chain.push_back(i);
         }
     }
+    std::sort(mWritten.begin(), mWritten.end());
 
     // Unchanged targets: written only from light ports, nobody else reads them in the middle of their
     // chain, the same chain as what they hold, and regions that still cover this frame's receivers.
-    std::set<int> eligible;
     if (leaveOut) {
-        for (const auto& [target, chain] : chains) {
+        for (int target : mWritten) {
             if (target < 0) continue;
+            Track& written = track(target);
+            const std::vector<size_t>& chain = written.chain;
             auto past = history.find(target);
-            if (past == history.end() || past->second.contents != contents[target]) continue;
+            if (past == history.end() || past->second.contents != written.contents) continue;
             bool ok = std::all_of(chain.begin(), chain.end(), [&](size_t i) { return ops[i].lightPort; });
             for (size_t i = chain.front(); ok && i <= chain.back(); ++i) {
                 const bool inChain = std::find(chain.begin(), chain.end(), i) != chain.end();
@@ -110,36 +146,38 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
                 ok = draw < past->second.regions.size() && past->second.regions[draw].contains(ops[i].region);
                 ++draw;
             }
-            if (ok) eligible.insert(target);
+            written.eligible = ok;
         }
         // An operation is left out only if everything it writes is; one that must run spoils its targets.
         for (bool changed = true; changed;) {
             changed = false;
             for (const PlannedOp& op : ops) {
                 if (op.leftOut != LeftOut::No || op.writes.empty()) continue;
-                const bool all = std::all_of(op.writes.begin(), op.writes.end(),
-                                             [&](int w) { return eligible.count(w) > 0; });
+                const bool all =
+                    std::all_of(op.writes.begin(), op.writes.end(), [&](int w) { return track(w).eligible; });
                 if (all) continue;
-                for (int w : op.writes) changed = eligible.erase(w) > 0 || changed;
+                for (int w : op.writes) {
+                    Track& written = track(w);
+                    changed = written.eligible || changed;
+                    written.eligible = false;
+                }
             }
         }
     }
 
-    mFinalContents.clear();
-    mRegions.clear();
     mRedrawn.clear();
-    for (const auto& [target, chain] : chains) {
-        if (eligible.count(target)) {
-            for (size_t i : chain) ops[i].leftOut = LeftOut::Cached;
+    for (int target : mWritten) {
+        const Track& written = track(target);
+        if (written.eligible) {
+            for (size_t i : written.chain) ops[i].leftOut = LeftOut::Cached;
             continue;
         }
         mRedrawn.push_back(target);
-        mFinalContents[target] = contents[target];
         // Redrawn although only the receivers moved out of the old region: cover the whole light frustum,
         // so that the map serves every later viewpoint.
         auto past = history.find(target);
-        const bool onlyRegionsDiffer = past != history.end() && past->second.contents == contents[target];
-        for (size_t i : chain) {
+        const bool onlyRegionsDiffer = past != history.end() && past->second.contents == written.contents;
+        for (size_t i : written.chain) {
             PlannedOp& op = ops[i];
             if (!op.isDraw()) continue;
             if (!leaveOut || !op.lightPort || op.kind == PlannedOp::Kind::DrawBuffer)
@@ -148,20 +186,22 @@ void FramePlan::decide(const std::map<int, TargetHistory>& history,
         }
     }
     // Regions are recorded after every target's decision: an operation writing two targets uses one.
-    for (const auto& [target, chain] : chains) {
-        if (eligible.count(target)) continue;
-        for (size_t i : chain)
+    for (int target : mRedrawn) {
+        Track& written = track(target);
+        written.regions.clear();
+        for (size_t i : written.chain)
             if (ops[i].isDraw())
-                mRegions[target].push_back(ops[i].cullToReceivers ? ops[i].region : fullLightRegion());
+                written.regions.push_back(ops[i].cullToReceivers ? ops[i].region : fullLightRegion());
     }
 }
 
 void FramePlan::commit(std::map<int, TargetHistory>& history) const {
     for (int target : mRedrawn) {
+        const auto written = std::find_if(mTracks.begin(), mTracks.end(),
+                                          [&](const Track& track) { return track.resource == target; });
         TargetHistory& record = history[target];
-        record.contents = mFinalContents.at(target);
-        auto regions = mRegions.find(target);
-        record.regions = regions == mRegions.end() ? std::vector<ReceiverRegion>{} : regions->second;
+        record.contents = written->contents;
+        record.regions = written->regions;
     }
 }
 

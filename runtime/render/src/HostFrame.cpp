@@ -258,7 +258,7 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
 
 bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
                        const FrameOptions& options, fx::DiagnosticSink& diagnostics) {
-    std::set<int> none;
+    const std::vector<bool> none;  // no render target allocated here: ensureTargets does
     r.ensureFrameResources(options.width, options.height, &none);
     ensureTargets(renderer, options.width, options.height);
     for (const HostParameter& parameter : mHost->parameters)

@@ -9,22 +9,23 @@ PassPreshaders::PassPreshaders(const fx::CompiledPass& pass)
       mArgumentResults(pass.arguments.size()),
       mStates(RenderStateBlock::defaults()) {}
 
-const std::optional<fx::Value>& PassPreshaders::run(const fx::PreshaderProgram& program, Result& result,
-                                                    const std::vector<fx::Value>& values,
-                                                    const ParameterStamps& stamps,
-                                                    fx::DiagnosticSink& diagnostics) {
+const fx::Value* PassPreshaders::run(const fx::PreshaderProgram& program, Result& result,
+                                     const std::vector<fx::Value>& values, const ParameterStamps& stamps,
+                                     fx::DiagnosticSink& diagnostics) {
     const std::vector<size_t>& inputs = program.inputs();
     bool current = result.valid && result.inputStamps.size() == inputs.size();
     for (size_t i = 0; current && i < inputs.size(); ++i)
         current = inputs[i] < stamps.stamps.size() && result.inputStamps[i] == stamps.stamps[inputs[i]];
-    if (current) return result.value;
+    if (current) return result.failed ? nullptr : &result.value;
     result.inputStamps.resize(inputs.size());
     for (size_t i = 0; i < inputs.size(); ++i)
         result.inputStamps[i] = inputs[i] < stamps.stamps.size() ? stamps.stamps[inputs[i]] : 0;
-    result.value = program.run(values, &diagnostics);
+    const fx::Value* value = program.run(values, mRegisters, &diagnostics);
+    result.failed = !value;
+    if (value) result.value = *value;
     result.valid = true;
     ++mRuns;
-    return result.value;
+    return value ? &result.value : nullptr;
 }
 
 const RenderStateBlock& PassPreshaders::states(const std::vector<fx::Value>& values,
@@ -36,8 +37,7 @@ const RenderStateBlock& PassPreshaders::states(const std::vector<fx::Value>& val
             mStates.set(setting.id, *setting.constant);
             continue;
         }
-        const std::optional<fx::Value>& value =
-            run(setting.value, mStateResults[i], values, stamps, diagnostics);
+        const fx::Value* value = run(setting.value, mStateResults[i], values, stamps, diagnostics);
         mStates.set(setting.id, value ? value->asFloat() : RenderStateBlock::defaults().get(setting.id));
     }
     return mStates;
@@ -50,9 +50,12 @@ void PassPreshaders::arguments(const std::vector<fx::Value>& values, const Param
     for (size_t i = 0; i < mPass->arguments.size(); ++i) {
         if (which && !(*which)[i]) continue;
         const fx::CompileArgument& argument = mPass->arguments[i];
-        const std::optional<fx::Value>& value =
-            run(argument.value, mArgumentResults[i], values, stamps, diagnostics);
-        arguments[i] = value ? *value : fx::zeroValue(argument.type);
+        const fx::Value* value = run(argument.value, mArgumentResults[i], values, stamps, diagnostics);
+        // Assigned, not built and moved: the argument keeps its storage.
+        if (value)
+            arguments[i] = *value;
+        else
+            arguments[i] = fx::zeroValue(argument.type);
     }
 }
 

@@ -12,7 +12,6 @@
 #include <fx/Value.h>
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace runtime {
@@ -39,16 +38,19 @@ private:
     struct Result {
         bool valid = false;
         std::vector<uint64_t> inputStamps;  // the stamps of the program's inputs when it last ran
-        std::optional<fx::Value> value;
+        bool failed = false;
+        fx::Value value;  // copied from the registers: assigned again, it keeps its storage
     };
-    // The program's value, run again only if one of its inputs' stamps differs from its last run's.
-    const std::optional<fx::Value>& run(const fx::PreshaderProgram& program, Result& result,
-                                        const std::vector<fx::Value>& values, const ParameterStamps& stamps,
-                                        fx::DiagnosticSink& diagnostics);
+    // The program's value (nullptr: it failed), run again only if one of its inputs' stamps differs from
+    // its last run's.
+    const fx::Value* run(const fx::PreshaderProgram& program, Result& result,
+                         const std::vector<fx::Value>& values, const ParameterStamps& stamps,
+                         fx::DiagnosticSink& diagnostics);
 
     const fx::CompiledPass* mPass;
-    std::vector<Result> mStateResults;     // per CompiledPass::states entry
-    std::vector<Result> mArgumentResults;  // per CompiledPass::arguments entry
+    fx::PreshaderProgram::Registers mRegisters;  // shared by the pass's programs, which run one at a time
+    std::vector<Result> mStateResults;           // per CompiledPass::states entry
+    std::vector<Result> mArgumentResults;        // per CompiledPass::arguments entry
     RenderStateBlock mStates;
     uint64_t mRuns = 0;
 };

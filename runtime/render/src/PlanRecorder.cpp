@@ -14,14 +14,6 @@ namespace {
 // reads one texel around the lookup, the thesis effect's jitter up to JITTER_AMOUNT / 2 = 2 texels.
 constexpr float kReceiverPadTexels = 8.0f;
 
-std::vector<const fx::SamplerBinding*> passSamplers(const fx::CompiledPass& pass) {
-    std::vector<const fx::SamplerBinding*> samplers;
-    for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
-        for (const fx::SamplerBinding& binding : stage->samplers) samplers.push_back(&binding);
-    return samplers;
-}
-
 }  // namespace
 
 PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const FrameOptions& options,
@@ -38,10 +30,13 @@ PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const
       mPlan(plan),
       mDiagnostics(diagnostics),
       mValues(resources.frameScratch.planValues),
-      mStamps(resources.stamps),
+      mStamps(resources.frameScratch.planStamps),
       mPadTexels(kReceiverPadTexels),
-      mStencilTested(techniqueTestsStencil(resources.effect().techniques[technique])) {
+      mStencilTested(techniqueTestsStencil(resources.effect().techniques[technique])),
+      mClearColor(resources.frameScratch.planClearColor) {
     mValues = resources.values;  // element by element: the copies' storage is reused
+    mStamps = resources.stamps;
+    mClearColor.clear();
     mColors.fill(kNone);
     mColors[0] = kFrameColor;
     setRenderPort("", -1, -1, {});
@@ -69,14 +64,14 @@ void PlanRecorder::setRenderPort(const std::string& light, int lightSlot, int ca
 }
 
 void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
-    PlannedOp op;
+    PlannedOp& op = mPlan.add();
     op.pass = mPass;
     op.lightPort = mLightPort;
     uint64_t value = 0;
     switch (what) {
         case fx::ScriptCommand::ClearWhat::Color:
             op.kind = PlannedOp::Kind::ClearColor;
-            op.writes = colorTargets();
+            colorTargets(op.writes);
             value = hashBytes(0, mClearColor.data(), mClearColor.size() * sizeof(float));
             break;
         case fx::ScriptCommand::ClearWhat::Depth:
@@ -102,14 +97,13 @@ void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
         op.signature = hashCombine(op.signature, static_cast<uint64_t>(mPort.cascade) + 1);
     }
     op.sceneSaysSkip = mSceneSaysSkip;
-    mPlan.ops.push_back(std::move(op));
 }
 
 void PlanRecorder::drawScene(const fx::ScriptCommand&) {
-    PlannedOp op;
+    PlannedOp& op = mPlan.add();
     op.kind = PlannedOp::Kind::DrawGeometry;
     op.pass = mPass;
-    op.writes = colorTargets();
+    colorTargets(op.writes);
     op.reads = op.writes;
     if (mDepth != kNone) {
         op.writes.push_back(mDepth);
@@ -118,7 +112,6 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
     uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp);  // "HostScne"
     h = hashBytes(h, &mPort.view, sizeof(mPort.view));
     op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
-    mPlan.ops.push_back(std::move(op));
 }
 
 void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
@@ -126,7 +119,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     const GpuProgram* program = mResources.programs[mTechnique][index].get();
     // FrameExecutor warns and skips it too.
     if (!program || !program->hasShaders() || program->isCompute()) return;
-    PlannedOp op;
+    PlannedOp& op = mPlan.add();
     op.kind = what == fx::ScriptCommand::DrawWhat::Buffer ? PlannedOp::Kind::DrawBuffer
                                                           : PlannedOp::Kind::DrawGeometry;
     op.pass = index;
@@ -161,13 +154,15 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         op.writes.push_back(streamOutResource(index));
     }
     if (pass.drawAuto >= 0) op.reads.push_back(streamOutResource(static_cast<size_t>(pass.drawAuto)));
-    for (const fx::SamplerBinding* binding : passSamplers(pass)) {
-        const fx::SamplerDesc* desc = mResources.effect().findSampler(binding->samplerParameter);
-        if (binding->textureParameter)
-            op.reads.push_back(static_cast<int>(*binding->textureParameter));
-        else if (desc && desc->texture)
-            op.reads.push_back(static_cast<int>(*desc->texture));
-    }
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
+        for (const fx::SamplerBinding& binding : stage->samplers) {
+            const fx::SamplerDesc* desc = mResources.effect().findSampler(binding.samplerParameter);
+            if (binding.textureParameter)
+                op.reads.push_back(static_cast<int>(*binding.textureParameter));
+            else if (desc && desc->texture)
+                op.reads.push_back(static_cast<int>(*desc->texture));
+        }
 
     const PassUse& use = mUses[index];
     mPort.viewportSize = targetSize();
@@ -210,10 +205,12 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
             // slice, and a slice beyond the farthest receiver has nothing to serve.
             const InstanceBvh& bvh = mResources.sceneCache.bvh;
             const glm::mat4 slice = cascadeSlice();
-            std::vector<glm::vec3> body;
-            std::vector<uint32_t> receivers;
+            std::vector<glm::vec3>& body = mResources.frameScratch.sliceBody;
+            std::vector<uint32_t>& receivers = mResources.frameScratch.sliceObjects;
+            body.clear();
+            receivers.clear();
             if (!bvh.empty()) {
-                body = intersectionBodyPoints(slice, Bounds{bvh.rootBox().min, bvh.rootBox().max});
+                intersectionBodyPoints(slice, Bounds{bvh.rootBox().min, bvh.rootBox().max}, body);
                 const ConvexVolume frustum = frustumPlanes(slice);
                 bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, receivers);
                 op.sceneSaysSkip = op.sceneSaysSkip || receivers.empty();
@@ -224,7 +221,6 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         }
         op.region.castersBehindLightPlaneCastNothing = mPort.shinesIntoPositiveW;
     }
-    mPlan.ops.push_back(std::move(op));
 }
 
 void PlanRecorder::setParameter(const std::string&, int parameter, const fx::Value& value) {
@@ -281,11 +277,10 @@ glm::mat4 PlanRecorder::cascadeSlice() const {
     return slice.projection(aspect) * slice.view();
 }
 
-std::vector<int> PlanRecorder::colorTargets() const {
-    std::vector<int> targets;
+void PlanRecorder::colorTargets(std::vector<int>& targets) const {
+    targets.clear();
     for (int target : mColors)
         if (target != kNone) targets.push_back(target);
-    return targets;
 }
 
 glm::vec2 PlanRecorder::targetSize() const {

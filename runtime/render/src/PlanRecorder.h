@@ -33,7 +33,9 @@ public:
     void setColorTarget(int index, const std::string& texture, int parameter) override;
     void setDepthTarget(const std::string& texture, int parameter) override;
     void setRenderPort(const std::string& light, int lightSlot, int cascade, const fx::SourceLoc&) override;
-    void setClearColor(const fx::Value& color) override { mClearColor = color.data; }
+    void setClearColor(const fx::Value& color) override {
+        mClearColor.assign(color.data.begin(), color.data.end());
+    }
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
     void clear(fx::ScriptCommand::ClearWhat what) override;
@@ -53,7 +55,8 @@ private:
     bool sceneSaysSkip(const fx::CompiledPass& pass) const;
     static float receiverPadTexels(const fx::CompiledPass& pass);
     glm::mat4 cascadeSlice() const;
-    std::vector<int> colorTargets() const;
+    // The bound colour targets, into `targets` (its storage kept).
+    void colorTargets(std::vector<int>& targets) const;
     glm::vec2 targetSize() const;
 
     EffectResources& mResources;
@@ -66,16 +69,16 @@ private:
     FramePlan& mPlan;
     fx::DiagnosticSink& mDiagnostics;
     std::vector<fx::Value>& mValues;  // the dry run's copy of the parameter values (kept between frames)
-    ParameterStamps mStamps;          // of mValues (the resources' clock: stamps stay unique)
+    ParameterStamps& mStamps;         // of mValues (the resources' clock: stamps stay unique; kept too)
     std::array<int, RenderTargets::kMaxColorTargets> mColors{};
     int mDepth = kFrameDepth;
     bool mLightPort = false;
     RenderPortView mPort;
     size_t mPass = 0;
     bool mSceneSaysSkip = false;
-    float mPadTexels = 0.0f;    // receiverPadTexels of the current pass
-    const bool mStencilTested;  // a pass tests stencil: a depth clear keeps it (techniqueTestsStencil)
-    std::vector<float> mClearColor;
+    float mPadTexels = 0.0f;          // receiverPadTexels of the current pass
+    const bool mStencilTested;        // a pass tests stencil: a depth clear keeps it (techniqueTestsStencil)
+    std::vector<float>& mClearColor;  // kept between frames
     float mClearDepth = 1.0f;
     int mClearStencil = 0;
 };

@@ -61,6 +61,18 @@ struct FrameStats {
     std::vector<PassStats> passes;
     std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
     FrameCpuTime cpu;                     // only with FrameOptions::timePasses
+
+    // Back to a frame that did nothing, the lists emptied but keeping their storage: a renderer filling
+    // the same FrameStats every frame allocates nothing for them (`= {}` would free it).
+    void reset() {
+        std::vector<PassStats> keptPasses = std::move(passes);
+        std::vector<PassTiming> keptTimings = std::move(passTimings);
+        *this = {};
+        keptPasses.clear();
+        keptTimings.clear();
+        passes = std::move(keptPasses);
+        passTimings = std::move(keptTimings);
+    }
 };
 
 }  // namespace runtime

@@ -19,7 +19,9 @@ namespace runtime {
 
 class PassTimer {
 public:
-    PassTimer(bool enabled, FrameStats& stats);
+    // `queries`: where the frame's query names go, emptied first (kept by the caller between frames, so
+    // that timing a frame allocates nothing).
+    PassTimer(bool enabled, FrameStats& stats, std::vector<GLuint>& queries);
     ~PassTimer();
     PassTimer(const PassTimer&) = delete;
     PassTimer& operator=(const PassTimer&) = delete;
@@ -58,7 +60,7 @@ private:
     FrameStats& mStats;
     std::chrono::steady_clock::time_point mFrameStart;
     std::chrono::steady_clock::time_point mPassStart;
-    std::vector<GLuint> mQueries;  // one per entry of mStats.passTimings
+    std::vector<GLuint>& mQueries;  // one per entry of mStats.passTimings
     bool mPassOpen = false;
     bool mFinished = false;
 };

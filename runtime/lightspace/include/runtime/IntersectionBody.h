@@ -22,7 +22,7 @@ namespace runtime {
 
 // A convex volume as inward-facing planes (n · p + d >= 0 inside).
 struct ConvexVolume {
-    std::vector<glm::vec4> planes;
+    std::array<glm::vec4, 6> planes;  // a frustum's: held in place, so that culling allocates nothing
 };
 
 // The six planes of a D3D clip volume (-w <= x, y <= w, 0 <= z <= w) of `viewProjection` (glm form).
@@ -34,6 +34,9 @@ Overlap overlapVolume(const ConvexVolume& volume, const Aabb& box);
 // The vertices of B = frustum(viewProjection) ∩ bounds: corners of each inside the other and the points
 // where the edges of one cross the faces of the other. Empty when they do not meet.
 std::vector<glm::vec3> intersectionBodyPoints(const glm::mat4& viewProjection, const Bounds& bounds);
+// The same into `points` (emptied first, its storage kept: a caller planning every frame reuses it).
+void intersectionBodyPoints(const glm::mat4& viewProjection, const Bounds& bounds,
+                            std::vector<glm::vec3>& points);
 
 // Where in a light's NDC (its view-projection's clip volume) the receivers of B read the shadow map.
 struct ReceiverRegion {

@@ -71,7 +71,16 @@ struct TargetHistory {
 
 class FramePlan {
 public:
+    // The frame's operations, in script order (add() and finishRecording() build them).
     std::vector<PlannedOp> ops;
+
+    // Starts recording a frame's operations. The plan is kept between frames: the operations, their lists
+    // and the working tables below keep their storage, so planning a frame like the last allocates nothing.
+    void beginRecording() { mRecorded = 0; }
+    // A new operation after those recorded, at its defaults (its lists empty).
+    PlannedOp& add();
+    // Drops what the last frame recorded beyond this one's operations.
+    void finishRecording() { ops.resize(mRecorded); }
 
     // Marks dead and cached operations. `history` is the renderer's record of its targets (updated by
     // commit()); `identity(resource)` hashes a target's allocation (size, format, GL name) so that a
@@ -86,9 +95,24 @@ public:
     void commit(std::map<int, TargetHistory>& history) const;
 
 private:
-    std::map<int, uint64_t> mFinalContents;               // per written target, after this frame
-    std::map<int, std::vector<ReceiverRegion>> mRegions;  // per written target, its draws' regions
-    std::vector<int> mRedrawn;                            // targets whose operations ran
+    // What the plan knows of one resource, kept between frames (the frames of one technique use the same
+    // few resources).
+    struct Track {
+        int resource = 0;
+        bool live = false;                    // markDead: read by an operation after the current one
+        bool known = false;                   // decide: `contents` holds something
+        uint64_t contents = 0;                // decide: its chain hash so far; after decide, its final one
+        std::vector<size_t> chain;            // decide: the operations writing it, in order
+        bool eligible = false;                // decide: its operations may be left out (Cached)
+        std::vector<ReceiverRegion> regions;  // after decide: its draws' regions, if redrawn
+    };
+    // The resource's track, added the first time (a reference valid until the next call).
+    Track& track(int resource);
+
+    size_t mRecorded = 0;
+    std::vector<Track> mTracks;
+    std::vector<int> mWritten;  // decide: the targets written this frame, ascending
+    std::vector<int> mRedrawn;  // targets whose operations ran
 };
 
 // Whether a pass of the technique enables the stencil test (a state a preshader computes counts as yes).
