@@ -309,7 +309,8 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
     if (p.drawsScreenQuad && !pass.hasScript) {
-        ScriptCommand draw{ScriptCommand::Kind::Draw};
+        ScriptCommand draw{};
+        draw.kind = ScriptCommand::Kind::Draw;
         draw.draw = ScriptCommand::DrawWhat::Buffer;
         draw.loc = p.loc;
         pass.script.push_back(std::move(draw));
