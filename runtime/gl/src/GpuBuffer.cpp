@@ -1,6 +1,7 @@
 #include <runtime/GpuBuffer.h>
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -10,12 +11,19 @@ GpuBuffer GpuBuffer::create(const void* data, size_t size, GLenum texelFormat) {
     GpuBuffer buffer;
     buffer.mSize = size;
     buffer.mTexelFormat = texelFormat;
-    // GL has no empty buffer storage; an empty D3D buffer still binds (and reads as zeros).
-    const std::vector<uint8_t> zeros(data ? 0 : std::max<size_t>(size, 16), 0);
+    // GL has no empty buffer storage; an empty D3D buffer still binds (and reads as zeros). Storage is at
+    // least 16 bytes, so fewer given bytes (an append buffer's 4-byte counter) are copied and padded with
+    // zeros rather than read past their end.
+    const size_t storage = std::max<size_t>(size, 16);
+    std::vector<uint8_t> padded;
+    if (!data || size < storage) {
+        padded.assign(storage, 0);
+        if (data) std::memcpy(padded.data(), data, size);
+    }
     gl::GenBuffers(1, &buffer.mBuffer);
     gl::BindBuffer(GL_COPY_WRITE_BUFFER, buffer.mBuffer);
-    gl::BufferStorage(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(std::max<size_t>(size, 16)),
-                      data ? data : zeros.data(), 0);
+    gl::BufferStorage(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(storage),
+                      padded.empty() ? data : padded.data(), 0);
     gl::BindBuffer(GL_COPY_WRITE_BUFFER, 0);
     if (texelFormat != 0) {
         gl::GenTextures(1, &buffer.mTexture);
