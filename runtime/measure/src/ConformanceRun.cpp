@@ -37,6 +37,12 @@ using Outcome = report::CheckOutcome;
 
 // [SECTION] Frame checks
 
+// Whether an annotation of this name is one of check's expectations (ExpectScenes, ExpectMapSize, ...), read
+// the same way from a source effect and from a compiled file.
+bool namesExpectation(std::string_view name) {
+    return name.size() > 6 && fx::equalsIgnoreCase(name.substr(0, 6), "Expect");
+}
+
 // The first render target holding NaN or Inf, as "render target NAME holds N NaN/Inf values"; "" if none
 // does.
 std::string nonFiniteTargets(const EffectRenderer& renderer) {
@@ -486,9 +492,7 @@ size_t planCompiledFile(const std::string& path, const std::vector<std::string>&
     plan.carriesExpectations = std::filesystem::exists(plan.goldens);
     for (const fx::CompiledTechnique& technique : compiled->techniques)
         for (const fx::AnnotationValue& a : technique.annotations)
-            plan.carriesExpectations =
-                plan.carriesExpectations ||
-                (a.name.size() > 6 && fx::equalsIgnoreCase(a.name.substr(0, 6), "Expect"));
+            plan.carriesExpectations = plan.carriesExpectations || namesExpectation(a.name);
     for (const fx::CompiledTechnique& technique : compiled->techniques) {
         if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                   technique.name) == techniqueFilter.end())
@@ -572,9 +576,7 @@ ConformanceResult runConformance(const ConformanceOptions& o, const ConformanceL
         plan.carriesExpectations = std::filesystem::exists(plan.goldens);
         for (const fx::Technique& technique : effect->techniques)
             for (const fx::Annotation& a : technique.annotations)
-                plan.carriesExpectations =
-                    plan.carriesExpectations ||
-                    (a.name.size() > 6 && fx::equalsIgnoreCase(a.name.substr(0, 6), "Expect"));
+                plan.carriesExpectations = plan.carriesExpectations || namesExpectation(a.name);
         for (const fx::Technique& technique : effect->techniques) {
             if (!techniqueFilter.empty() && std::find(techniqueFilter.begin(), techniqueFilter.end(),
                                                       technique.name) == techniqueFilter.end())
