@@ -1,5 +1,5 @@
 # install(): the static libraries, their public headers and the CMake package that finds them
-# (cmake/shadowfxConfig.cmake.in), plus the shadowfx tool and the compile worker.
+# (cmake/shadowfxConfig.cmake.in), plus the shadowfx tool, the compile worker and the runtime modules.
 #
 # Headers install under include/shadowfx/ (include/shadowfx/fx/..., include/shadowfx/runtime/...), which is
 # the installed targets' include directory: an application spells them as this source tree does
@@ -27,6 +27,8 @@ foreach(library scene assets lightspace gl render reload measure)
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadowfx)
 endforeach()
 install(TARGETS shadowfx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The runtime modules (runtime/RuntimeModules.h), where an installed program looks for them.
+install(TARGETS shadowfx_meshimport shadowfx_raycast LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/shadowfx)
 # The compile worker (fx/CompileWorkers.h), where the installed fx library looks for it.
 install(TARGETS shadowfx-compile-worker RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR})
 

@@ -5,6 +5,7 @@ Installs BUILD_DIR into WORK_DIR/prefix, then in the empty folder WORK_DIR/esm r
 tells a researcher to run: `shadowfx new esm`, `render` (the frame must show shadows: pixels darker than
 the same frame with the shadow test disabled), `check` before goldens exist (passes, goldens NOT_SUPPORTED),
 `check --update` (writes them beside the effect), `check` (passes against them), a small `bench` and a
+`render` of a scene with a mesh file (the runtime modules they open must come from the prefix), and a
 reduced `stress` whose JSON holds the comparison with the uniform map. The tool must find its effect
 library in the prefix, not in the source tree.
 
@@ -116,8 +117,18 @@ def main():
                                                for row in golden_rows(after)):
         sys.exit(f"check against the goldens:\n{after}")
 
-    run([shadowfx, "bench", "--effects", "esm.fx", "--scenes", "boxes", "--map-sizes", "256", *SIZE,
-         "--frames", "1", "--warmup", "0", "--out", "bench"], folder, env)
+    # The runtime modules come from the prefix (lib/shadowfx beside bin/), not from the build tree: the
+    # dynamic loader's record of what it loaded (LD_DEBUG=files) names their paths.
+    modules = prefix / "lib" / "shadowfx"
+    loaded_env = dict(env, LD_DEBUG="files")
+    loaded = run([shadowfx, "bench", "--effects", "esm.fx", "--scenes", "boxes", "--map-sizes", "256", *SIZE,
+                  "--frames", "1", "--warmup", "0", "--out", "bench"], folder, loaded_env)
+    loaded += run([shadowfx, "render", "esm.fx", "--scene", "bunny", *SIZE, "--out", "bunny.png"], folder,
+                  loaded_env)
+    for module in ("libshadowfx_raycast.so", "libshadowfx_meshimport.so"):
+        if f"file={modules / module}" not in loaded:
+            opened = [line for line in loaded.splitlines() if "libshadowfx_" in line]
+            sys.exit(f"{module} was not loaded from {modules}:\n" + "\n".join(opened))
     runs = json.loads((folder / "bench" / "results.json").read_text())["runs"]
     if not runs or runs[0]["error"]["misclassified_percent"] is None:
         sys.exit(f"bench wrote no scored run: {runs}")

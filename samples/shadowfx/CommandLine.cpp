@@ -1,6 +1,8 @@
 #include "CommandLine.h"
 #include "EffectLibrary.h"
 
+#include <runtime/RuntimeModules.h>
+
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
@@ -161,7 +163,14 @@ int dispatch(int argc, char** argv, std::span<const Command> commands) {
         }
         Arguments args;
         if (!Parser::parse(command, argc, argv, first, args)) return 2;
-        return command.run(args);
+        // A module the command needed (runtime/RuntimeModules.h) that could not be opened: its words, not an
+        // abort.
+        try {
+            return command.run(args);
+        } catch (const runtime::ModuleLoadError& e) {
+            std::cerr << "shadowfx " << name << ": " << e.what() << "\n";
+            return 1;
+        }
     }
     std::cerr << "shadowfx: unknown command '" << name << "'\n";
     printOverview(commands);

@@ -1,8 +1,10 @@
-// GroundTruth: Embree 3 shadow rays (rtcOccluded1 for hard shadows, rtcOccluded16 packets of 16 light
-// samples for area lights), rows of the image split across threads.
+// GroundTruth: shadow rays through the ray-cast module (RayCastModule.h: Embree's rtcOccluded1 for hard
+// shadows, rtcOccluded16 packets of 16 light samples for area lights), rows of the image split across
+// threads. The module is opened when the first caster is made, so only programs that cast truth load Embree.
 #include <runtime/GroundTruth.h>
+#include <runtime/RuntimeModules.h>
 
-#include <embree3/rtcore.h>
+#include <private/runtime/RayCastModule.h>
 
 #include <algorithm>
 #include <atomic>
@@ -13,72 +15,53 @@
 
 namespace runtime {
 
+namespace {
+
+// Opened with the first caster, and kept: a failed open is tried again by the next one.
+const RayCastModule& rayCastModule() {
+    static const RayCastModule* module = reinterpret_cast<RayCastModuleEntry>(
+        openModuleEntry("raycast", "ground-truth ray casting (Embree)", kRayCastModuleEntry))();
+    return *module;
+}
+
+}  // namespace
+
 struct ShadowRayCaster::Impl {
-    RTCDevice device = nullptr;
-    RTCScene scene = nullptr;
+    const RayCastModule& module = rayCastModule();
+    RayCastBvh* bvh = nullptr;
     float sceneRadius = 1.0f;
     glm::vec3 sceneCenter{0.0f};
 
     ~Impl() {
-        if (scene) rtcReleaseScene(scene);
-        if (device) rtcReleaseDevice(device);
+        if (bvh) module.release(bvh);
     }
 };
 
 ShadowRayCaster::ShadowRayCaster(const Scene& scene) : mImpl(std::make_unique<Impl>()) {
-    mImpl->device = rtcNewDevice(nullptr);
-    if (!mImpl->device) throw std::runtime_error("Embree: rtcNewDevice failed");
-    mImpl->scene = rtcNewScene(mImpl->device);
-    // Shadow rays want exactness, not build speed: the high-quality BVH and robust (watertight) traversal,
-    // so a ray through a shared edge of two triangles cannot slip between them.
-    rtcSetSceneBuildQuality(mImpl->scene, RTC_BUILD_QUALITY_HIGH);
-    rtcSetSceneFlags(mImpl->scene, RTC_SCENE_FLAG_ROBUST);
     const Bounds bounds = scene.bounds();
     mImpl->sceneRadius = std::max(bounds.radius(), 1e-3f);
     mImpl->sceneCenter = bounds.center();
 
+    std::vector<std::vector<glm::vec3>> worldPositions;
+    std::vector<CasterTriangles> objects;
     for (const SceneObject& object : scene.objects) {
         if (!object.castsShadow || !object.mesh || object.mesh->triangleCount() == 0) continue;
         const Mesh& mesh = *object.mesh;
-        RTCGeometry geometry = rtcNewGeometry(mImpl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                     RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                                     mesh.positions.size()));
-        for (size_t i = 0; i < mesh.positions.size(); ++i) {
-            const glm::vec3 w = glm::vec3(object.world * glm::vec4(mesh.positions[i], 1.0f));
-            vertices[3 * i + 0] = w.x;
-            vertices[3 * i + 1] = w.y;
-            vertices[3 * i + 2] = w.z;
-        }
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                       RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                                       mesh.triangleCount()));
-        std::copy(mesh.indices.begin(),
-                  mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * mesh.triangleCount()), indices);
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(mImpl->scene, geometry);
-        rtcReleaseGeometry(geometry);
+        std::vector<glm::vec3>& world = worldPositions.emplace_back();
+        world.reserve(mesh.positions.size());
+        for (const glm::vec3& p : mesh.positions)
+            world.push_back(glm::vec3(object.world * glm::vec4(p, 1.0f)));
+        objects.push_back({world.data(), world.size(), mesh.indices.data(), mesh.triangleCount()});
     }
-    rtcCommitScene(mImpl->scene);
+    std::string error;
+    mImpl->bvh = mImpl->module.build(objects.data(), objects.size(), error);
+    if (!mImpl->bvh) throw std::runtime_error(error);
 }
 
 ShadowRayCaster::~ShadowRayCaster() = default;
 
 bool ShadowRayCaster::occluded(const glm::vec3& from, const glm::vec3& dir, float tMax) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay ray{};
-    ray.org_x = from.x;
-    ray.org_y = from.y;
-    ray.org_z = from.z;
-    ray.dir_x = dir.x;
-    ray.dir_y = dir.y;
-    ray.dir_z = dir.z;
-    ray.tnear = 0.0f;
-    ray.tfar = tMax;
-    ray.mask = 0xFFFFFFFFu;
-    rtcOccluded1(mImpl->scene, &context, &ray);
-    return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+    return mImpl->module.occluded(mImpl->bvh, ShadowRay{from, dir, tMax});
 }
 
 namespace {
@@ -140,8 +123,6 @@ GroundTruth ShadowRayCaster::compute(const GBuffer& gbuffer, const Light& light,
     std::atomic<int> nextRow{0};
     std::atomic<uint64_t> rays{0};
     auto worker = [&] {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
         uint64_t localRays = 0;
         for (int y = nextRow++; y < gbuffer.height; y = nextRow++) {
             for (int x = 0; x < gbuffer.width; ++x) {
@@ -169,13 +150,12 @@ GroundTruth ShadowRayCaster::compute(const GBuffer& gbuffer, const Light& light,
                 orthonormalBasis(axis, tangent, bitangent);
                 PixelRandom random(i);
                 int visible = 0;
-                alignas(64) RTCRay16 packet;
-                alignas(64) int valid[16];
+                ShadowRay packet[16];
+                bool hit[16];
                 int lane = 0;
                 auto flush = [&](int lanes) {
-                    for (int k = 0; k < 16; ++k) valid[k] = k < lanes ? -1 : 0;
-                    rtcOccluded16(valid, mImpl->scene, &context, &packet);
-                    for (int k = 0; k < lanes; ++k) visible += packet.tfar[k] >= 0.0f;
+                    mImpl->module.occluded16(mImpl->bvh, packet, lanes, hit);
+                    for (int k = 0; k < lanes; ++k) visible += !hit[k];
                     localRays += static_cast<uint64_t>(lanes);
                 };
                 for (int sy = 0; sy < strata; ++sy) {
@@ -184,19 +164,7 @@ GroundTruth ShadowRayCaster::compute(const GBuffer& gbuffer, const Light& light,
                             concentricDisk((sx + random.next()) / strata, (sy + random.next()) / strata);
                         const glm::vec3 target =
                             centre + light.areaRadius * (d.x * tangent + d.y * bitangent);
-                        const glm::vec3 dir = target - origin;
-                        packet.org_x[lane] = origin.x;
-                        packet.org_y[lane] = origin.y;
-                        packet.org_z[lane] = origin.z;
-                        packet.dir_x[lane] = dir.x;
-                        packet.dir_y[lane] = dir.y;
-                        packet.dir_z[lane] = dir.z;
-                        packet.tnear[lane] = 0.0f;
-                        packet.tfar[lane] = 1.0f - 1e-5f;
-                        packet.time[lane] = 0.0f;
-                        packet.mask[lane] = 0xFFFFFFFFu;
-                        packet.id[lane] = static_cast<unsigned>(lane);
-                        packet.flags[lane] = 0;
+                        packet[lane] = ShadowRay{origin, target - origin, 1.0f - 1e-5f};
                         if (++lane == 16) {
                             flush(16);
                             lane = 0;

@@ -1,5 +1,6 @@
 // ShadowMeasurement: see ShadowMeasurement.h.
 #include <runtime/ShadowMeasurement.h>
+#include <runtime/RuntimeModules.h>
 
 #include <fx/CompileWorkers.h>
 #include <fx/EffectFile.h>
@@ -46,7 +47,12 @@ bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const 
         return false;
     }
     t.gbuffer = std::move(*gbuffer);
-    t.truth = castOrReadTruth(t.scene, *t.light, t.gbuffer, options, cache, t.cached, t.cacheNote);
+    try {
+        t.truth = castOrReadTruth(t.scene, *t.light, t.gbuffer, options, cache, t.cached, t.cacheNote);
+    } catch (const ModuleLoadError& e) {
+        error = e.what();
+        return false;
+    }
     t.receivers = receiverMask(t.gbuffer, *t.light);
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;

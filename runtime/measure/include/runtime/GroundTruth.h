@@ -44,7 +44,9 @@ struct GroundTruth {
 };
 
 // The shadow-casting triangles of a scene in world space, in an Embree BVH: one triangle geometry per
-// object with SceneObject::castsShadow. Build once per scene, query from many threads.
+// object with SceneObject::castsShadow. Build once per scene, query from many threads. Embree lives in the
+// module libshadowfx_raycast.so, opened by the first caster (runtime/RuntimeModules.h): constructing one
+// throws ModuleLoadError when the module cannot be opened.
 class ShadowRayCaster {
 public:
     explicit ShadowRayCaster(const Scene& scene);

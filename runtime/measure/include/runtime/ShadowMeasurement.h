@@ -39,12 +39,14 @@ struct SceneTruth {
 
 // Fills `t` for `scene` at width x height (needs a current GL context). With a `cache`, the truth is read
 // from it when it holds an intact entry for exactly these inputs, else cast and stored there
-// (TruthCache.h). False with `error` set if the scene has no light or its G-buffer cannot be rendered.
+// (TruthCache.h). False with `error` set if the scene has no light, its G-buffer cannot be rendered or the
+// ray-cast module cannot be opened (runtime/RuntimeModules.h).
 bool measureSceneTruth(SceneTruth& t, Scene scene, int width, int height, const GroundTruthOptions& options,
                        fx::DiagnosticSink& sink, std::string& error, const TruthCache* cache = nullptr);
 
 // The truth of `light` over `gbuffer` in `scene`: from `cache` when it has it (`cached` set), else cast and
-// stored there; without a cache, cast. `note` as SceneTruth::cacheNote.
+// stored there; without a cache, cast. `note` as SceneTruth::cacheNote. Throws ModuleLoadError as
+// ShadowRayCaster does.
 GroundTruth castOrReadTruth(const Scene& scene, const Light& light, const GBuffer& gbuffer,
                             const GroundTruthOptions& options, const TruthCache* cache, bool& cached,
                             std::string& note);
