@@ -1,7 +1,10 @@
 // RayCastModule: what libshadowfx_raycast.so (runtime/measure/module/) offers GroundTruth.cpp, which opens it
 // when the first ShadowRayCaster is made (runtime/RuntimeModules.h). Built by this build tree beside the
-// library that opens it, so the two share one compiler and one standard library: the table passes C++ types.
+// library that opens it, so the two share one compiler and one standard library: the table passes C++ types
+// (only those whose members it uses are defined in headers: GBuffer, Light, GroundTruth and its options).
 #pragma once
+
+#include <runtime/GroundTruth.h>
 
 #include <glm/glm.hpp>
 
@@ -11,8 +14,9 @@
 
 namespace runtime {
 
-// One object's shadow-casting triangles, positions already in world space.
+// One object's shadow-casting triangles, in object space, and where the object stands.
 struct CasterTriangles {
+    glm::mat4 world{1.0f};
     const glm::vec3* positions = nullptr;
     size_t positionCount = 0;
     const uint32_t* indices = nullptr;  // three per triangle
@@ -29,13 +33,16 @@ struct ShadowRay {
 struct RayCastBvh;  // the module's own: an Embree device and scene
 
 struct RayCastModule {
-    // A robust, high-quality BVH over every object's triangles; nullptr with `error` set when Embree fails.
+    // A robust, high-quality BVH over every object's triangles in world space; nullptr with `error` set when
+    // Embree fails.
     RayCastBvh* (*build)(const CasterTriangles* objects, size_t objectCount, std::string& error);
     void (*release)(RayCastBvh* bvh);
-    // True if the ray hits a triangle (one Embree ray). Safe from many threads at once.
+    // True if the ray hits a triangle. Safe from many threads at once.
     bool (*occluded)(const RayCastBvh* bvh, const ShadowRay& ray);
-    // Up to 16 rays as one Embree packet; occluded[k] for rays[k]. Safe from many threads at once.
-    void (*occluded16)(const RayCastBvh* bvh, const ShadowRay* rays, int count, bool* occluded);
+    // ShadowRayCaster::compute (GroundTruth.h), the scene's bounds given: the rays never leave the module.
+    GroundTruth (*compute)(const RayCastBvh* bvh, const GBuffer& gbuffer, const Light& light,
+                           const GroundTruthOptions& options, float sceneRadius,
+                           const glm::vec3& sceneCenter);
 };
 
 // The module's entry point, extern "C": raise the version with any change to RayCastModule, so that a
