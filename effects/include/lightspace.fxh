@@ -205,9 +205,9 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         PixelShader = compile ps_3_0 LIGHTSPACE_SCENE_PS();                                                 \
     }
 
-// A depth-only map: the map pass writes the depth target alone (ColorWriteEnable = 0, no colour clear) and the
-// scene pass compares against it in hardware (HardwarePS). On llvmpipe a depth-only 4096² pass costs about a
-// fifth of the R32F map's, whose clear and colour writes dominate (docs/results/2026-12-05-peers-city-street.md).
+// A depth-only map: the map pass writes the depth target alone (ColorWriteEnable = 0, no R32F colour target
+// cleared or written) and the scene pass compares against it in hardware (HardwarePS): the same errors as
+// BilinearPS, a cheaper frame on llvmpipe (docs/results/2026-12-05-peers-city-street.md).
 #define LIGHTSPACE_HARDWARE_PASSES                                                                          \
     pass RenderShadowDepth                                                                                  \
     <                                                                                                       \
