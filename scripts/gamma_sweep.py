@@ -35,6 +35,7 @@ METHODS = {
     "lispsm-n4": ("effects/lispsm.fx", "bilinear", ("NScale=4",)),
     "lispsm-wimmer": ("effects/lispsm.fx", "bilinear", ("NOpt=Wimmer2004",)),
     "lispsm-scherzer": ("effects/lispsm.fx", "bilinear", ("NOpt=Scherzer2005",)),
+    "lispsm-lloyd": ("effects/lispsm.fx", "bilinear", ("NOpt=Lloyd2006",)),
     "tsm": ("effects/tsm.fx", "bilinear", ()),
     "psm": ("effects/psm.fx", "bilinear", ()),
     "psm-cube": ("effects/psm_cube.fx", "bilinear", ()),

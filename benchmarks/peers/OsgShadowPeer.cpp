@@ -1,11 +1,11 @@
-// shadowfx-osg-peer: a shadowfx scene rendered by OpenSceneGraph's osgShadow, for `shadowfx bench --peers
-// osg`.
+// shadowfx-osg-peer: a shadowfx scene, or a case of `shadowfx stress`, rendered by OpenSceneGraph's
+// osgShadow, for `shadowfx bench --peers osg` and `shadowfx stress --peers osg`.
 //
 // [SECTION] Options     command line
 // [SECTION] Context     an EGL pbuffer with a compatibility-profile context, handed to osgViewer
 // [SECTION] Scene       the scene file's geometry, camera and light as an OSG graph under a ShadowedScene
 // [SECTION] Techniques  osgShadow's techniques by name
-// [SECTION] Frames      warm-up, timed frames, the visibility frame and the JSON record
+// [SECTION] Frames      warm-up, timed frames, the visibility frames (one per camera) and the JSON record
 //
 // The frame it writes is visibility only (lit 1, shadowed 0) without a shader of its own: lighting is off,
 // every vertex is white where N·L > 0 (black elsewhere) and the ambient terms are zero, so osgShadow's own
@@ -20,6 +20,7 @@
 // counter-clockwise front faces.
 #include <runtime/Scene.h>
 #include <runtime/SceneFile.h>
+#include <runtime/StressCases.h>
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -61,9 +62,12 @@ const char* const kUsage =
     "usage: shadowfx-osg-peer --scene NAME|FILE.json --technique T --out-visibility V.pgm --out-json R.json\n"
     "                         [--map-size N] [--width W] [--height H] [--frames N] [--warmup N]\n"
     "                         [--light-direction X,Y,Z]\n"
+    "       shadowfx-osg-peer --stress-case CASE --technique T --out-visibility V.pgm --out-json R.json ...\n"
     "  --technique  ShadowMap, SoftShadowMap, LiSPSM-VB, LiSPSM-CB, LiSPSM-DB, PSSM, VDSM-ortho-1,\n"
     "               VDSM-ortho-2, VDSM-persp-1, VDSM-persp-2 (or 'list' to print them)\n"
-    "  --light-direction  override the light's direction (what `bench --light-angle-to-view` turned)\n";
+    "  --light-direction  override the light's direction (what `bench --light-angle-to-view` turned)\n"
+    "  --stress-case  a case of `shadowfx stress` instead of a scene; V.pgm then holds one frame per\n"
+    "               camera of the case's path, stacked top to bottom\n";
 
 // Traversal masks: every object is drawn by the main camera; these bits say what it does for shadows.
 constexpr unsigned kReceivesMask = 0x1;
@@ -74,6 +78,7 @@ constexpr unsigned kDrawnMask = 0x4;
 
 struct Options {
     std::string scene;
+    std::string stressCase;
     std::string technique;
     std::string visibilityPath;
     std::string jsonPath;
@@ -105,6 +110,8 @@ bool parseOptions(int argc, char** argv, Options& options, std::string& error) {
         bool ok = true;
         if (name == "--scene") {
             options.scene = value;
+        } else if (name == "--stress-case") {
+            options.stressCase = value;
         } else if (name == "--technique") {
             options.technique = value;
         } else if (name == "--out-visibility") {
@@ -135,9 +142,11 @@ bool parseOptions(int argc, char** argv, Options& options, std::string& error) {
             return false;
         }
     }
-    if (options.scene.empty() || options.technique.empty() || options.visibilityPath.empty() ||
-        options.jsonPath.empty()) {
-        error = "--scene, --technique, --out-visibility and --out-json are required";
+    if (options.scene.empty() == options.stressCase.empty() || options.technique.empty() ||
+        options.visibilityPath.empty() || options.jsonPath.empty()) {
+        error =
+            "--scene or --stress-case (one of them), --technique, --out-visibility and --out-json are "
+            "required";
         return false;
     }
     return true;
@@ -399,11 +408,26 @@ int main(int argc, char** argv) {
     std::remove(options.jsonPath.c_str());
 
     fx::DiagnosticList diagnostics;
-    std::optional<runtime::Scene> scene = runtime::loadScene(options.scene, diagnostics);
+    std::optional<runtime::Scene> scene;
+    // The cameras whose frames are written: the scene's, or each camera of a stress case's path (its
+    // temporal cases are scored frame by frame, for shimmer).
+    std::vector<runtime::Camera> cameras;
+    if (!options.stressCase.empty()) {
+        std::optional<runtime::StressCase> stressCase = runtime::makeStressCase(options.stressCase);
+        if (!stressCase) {
+            std::cerr << "shadowfx-osg-peer: no stress case '" << options.stressCase << "'\n";
+            return 2;
+        }
+        scene = std::move(stressCase->scene);
+        cameras = std::move(stressCase->cameraPath);
+    } else {
+        scene = runtime::loadScene(options.scene, diagnostics);
+    }
     if (!scene || diagnostics.errorCount() > 0) {
         std::cerr << diagnostics.str() << "shadowfx-osg-peer: cannot load scene '" << options.scene << "'\n";
         return 1;
     }
+    if (cameras.empty()) cameras.push_back(scene->camera);
     runtime::Light light = shadowLight(*scene) ? *shadowLight(*scene) : runtime::Light{};
     if (!shadowLight(*scene)) {
         std::cerr << "shadowfx-osg-peer: scene '" << scene->name << "' has no light\n";
@@ -491,45 +515,61 @@ int main(int argc, char** argv) {
     camera->setClearColor(osg::Vec4(0, 0, 0, 1));
     camera->setDrawBuffer(GL_BACK);  // a pbuffer has a back buffer only
     camera->setReadBuffer(GL_BACK);
-    const runtime::Camera& eye = scene->camera;
-    camera->setViewMatrixAsLookAt(mirrored(eye.position), mirrored(eye.target), mirrored(eye.up));
-    // The scene's near and far planes, as shadowfx's camera has them: OSG would otherwise compute its own
-    // from the bounds, draw what lies beyond the far plane and fit its view-dependent maps to that depth.
-    camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    camera->setProjectionMatrixAsPerspective(glm::degrees(eye.fovY),
-                                             static_cast<double>(options.width) / options.height,
-                                             eye.nearPlane, eye.farPlane);
+    const auto setCamera = [&](const runtime::Camera& eye) {
+        // The up shadowfx's view matrix has (its second row): where the scene's up is parallel to the view
+        // (a camera looking straight down), Camera::view() takes another axis, and so must OSG's look-at.
+        const glm::mat4 view = eye.view();
+        const glm::vec3 up(view[0][1], view[1][1], view[2][1]);
+        camera->setViewMatrixAsLookAt(mirrored(eye.position), mirrored(eye.target), mirrored(up));
+        // The scene's near and far planes, as shadowfx's camera has them: OSG would otherwise compute its
+        // own from the bounds, draw what lies beyond the far plane and fit its view-dependent maps to that
+        // depth.
+        camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+        camera->setProjectionMatrixAsPerspective(glm::degrees(eye.fovY),
+                                                 static_cast<double>(options.width) / options.height,
+                                                 eye.nearPlane, eye.farPlane);
+    };
+    setCamera(cameras.front());
     viewer.realize();
 
+    // Binary PGM: what `bench` and `stress` read back without an image library; one frame per camera.
+    std::ofstream visibility(options.visibilityPath, std::ios::binary);
+    visibility << "P5\n"
+               << options.width << " " << options.height * static_cast<int>(cameras.size()) << "\n255\n";
     using Clock = std::chrono::steady_clock;
     std::vector<double> frameMs;
-    for (int frame = 0; frame < options.warmup + options.frames; ++frame) {
-        const auto start = Clock::now();
-        viewer.frame();
-        glFinish();  // as bench's frames: until the GPU has finished
-        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        if (frame >= options.warmup) frameMs.push_back(ms);
-    }
-    // The last frame is the visibility frame: read its red channel, rows bottom-up in GL, written top-down.
     std::vector<uint8_t> rgba(static_cast<size_t>(options.width) * options.height * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    if (glGetError() != GL_NO_ERROR) {
-        std::cerr << "shadowfx-osg-peer: reading the frame back failed\n";
-        return 1;
-    }
-    {
-        // Binary PGM: what `bench` reads back without an image library.
-        std::ofstream out(options.visibilityPath, std::ios::binary);
-        out << "P5\n" << options.width << " " << options.height << "\n255\n";
-        for (int y = options.height - 1; y >= 0; --y)
-            for (int x = 0; x < options.width; ++x)
-                out.put(static_cast<char>(rgba[(static_cast<size_t>(y) * options.width + x) * 4]));
-        if (!out) {
-            std::cerr << "shadowfx-osg-peer: cannot write " << options.visibilityPath << "\n";
+    for (size_t view = 0; view < cameras.size(); ++view) {
+        setCamera(cameras[view]);
+        // The first camera's warm-up and timed frames; each later camera of a path is one timed frame.
+        const int count = view == 0 ? options.warmup + options.frames : 1;
+        for (int frame = 0; frame < count; ++frame) {
+            const auto start = Clock::now();
+            viewer.frame();
+            glFinish();  // as bench's frames: until the GPU has finished
+            const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            if (view > 0 || frame >= options.warmup) frameMs.push_back(ms);
+        }
+        // The camera's last frame is its visibility frame: its red channel, rows bottom-up in GL, written
+        // top-down.
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadBuffer(GL_BACK);
+        glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        if (glGetError() != GL_NO_ERROR) {
+            visibility.close();
+            std::remove(options.visibilityPath.c_str());
+            std::cerr << "shadowfx-osg-peer: reading the frame back failed\n";
             return 1;
         }
+        for (int y = options.height - 1; y >= 0; --y)
+            for (int x = 0; x < options.width; ++x)
+                visibility.put(static_cast<char>(rgba[(static_cast<size_t>(y) * options.width + x) * 4]));
+    }
+    visibility.close();
+    if (!visibility) {
+        std::remove(options.visibilityPath.c_str());
+        std::cerr << "shadowfx-osg-peer: cannot write " << options.visibilityPath << "\n";
+        return 1;
     }
     // Honoured: it made shadow maps, each of the requested size (PSSM's splits and VDSM's maps are each
     // one texture of that size).

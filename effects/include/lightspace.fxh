@@ -83,6 +83,17 @@ texture ShadowDepth : RENDERDEPTHSTENCILTARGET
     string Format = "D24S8";
     string UIWidget = "None";
 >;
+// The depth target itself, for LIGHTSPACE_HARDWARE_PASSES: tex2Dproj on it returns the depth comparison,
+// bilinearly filtered over the 2x2 texels around the lookup (as NVIDIA's D3D9 hardware shadow maps did).
+sampler ShadowDepthSampler = sampler_state
+{
+    Texture = <ShadowDepth>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MinFilter = LINEAR;
+    MagFilter = LINEAR;
+    MipFilter = NONE;
+};
 
 // [SECTION] Shaders
 // SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
@@ -122,6 +133,13 @@ float4 BilinearPS(SceneVertexOutput IN) : COLOR
     return ShadeOrVisibility(IN, ShadowTestBilinear(ShadowMapSampler, uv, depth, ShadowMapSize));
 }
 
+// The same test as BilinearPS by the hardware: the receiver's biased depth compared with the depth target
+// (ShadowDepthSampler), the 2x2 comparisons bilinearly weighted in one lookup.
+float4 HardwarePS(SceneVertexOutput IN) : COLOR
+{
+    float4 coord = float4(ShadowMapUV(IN.LP) * IN.LP.w, BiasedDepth(IN) * IN.LP.w, IN.LP.w);
+    return ShadeOrVisibility(IN, tex2Dproj(ShadowDepthSampler, coord).x);
+}
 // Bilinear PCF under the adaptive depth bias (Dou et al. 2014): each tap compares the receiver's tangent
 // plane, from its normal, at the tap's texel centre (TangentPlaneBilinearTaps), less Bias texels of world
 // size, in place of BiasedDepth's receiver-plane bias. The plane follows any slope, where the screen
@@ -185,6 +203,48 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         ZWriteEnable = true;                                                                                \
         VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
         PixelShader = compile ps_3_0 LIGHTSPACE_SCENE_PS();                                                 \
+    }
+
+// A depth-only map: the map pass writes the depth target alone (ColorWriteEnable = 0, no R32F colour target
+// cleared or written) and the scene pass compares against it in hardware (HardwarePS): the same errors as
+// BilinearPS, a cheaper frame on llvmpipe (docs/results/2026-12-05-peers-city-street.md).
+#define LIGHTSPACE_HARDWARE_PASSES                                                                          \
+    pass RenderShadowDepth                                                                                  \
+    <                                                                                                       \
+        float FilterReachTexels = 2;                                                                        \
+        string Script = "RenderColorTarget0=ShadowMap;"                                                     \
+                        "RenderDepthStencilTarget=ShadowDepth;"                                             \
+                        "RenderPort=light0;"                                                                \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = None;                                                                                    \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        ColorWriteEnable = 0;                                                                               \
+        DepthClipEnable = false;                                                                            \
+        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
+        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
+    }                                                                                                       \
+    pass RenderScene                                                                                        \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=;"                                                              \
+                        "RenderDepthStencilTarget=;"                                                        \
+                        "RenderPort=;"                                                                      \
+                        "ClearSetColor=ClearColor;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
+        PixelShader = compile ps_3_0 HardwarePS();                                                          \
     }
 
 #endif

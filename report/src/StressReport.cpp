@@ -124,6 +124,7 @@ Json stressJson(const StressResult& result) {
     for (const StressOutcome& o : result.outcomes)
         results.push_back(Json{{"effect", o.effect},
                                {"technique", o.technique},
+                               {"peer", o.peer.empty() ? Json(nullptr) : Json(o.peer)},
                                {"case", o.caseName},
                                {"pass", o.pass},
                                {"result", o.result()},

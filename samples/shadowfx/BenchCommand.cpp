@@ -181,40 +181,9 @@ int benchCommand(const Arguments& args) {
     // Peers: each name's program, found where this build put it, and the techniques to run.
     o.peerNames = splitList(args.value("--peers"));
     o.peerTechniqueFilter = splitList(args.value("--peer-techniques"));
-    const std::vector<std::string>& peerFilter = o.peerTechniqueFilter;
-    for (const std::string& name : o.peerNames) {
-        runtime::BenchPeer peer{name, findPeerProgram(name), {}};
-        if (name != "osg") {
-            std::cerr << "shadowfx bench: --peers: unknown peer '" << name << "' (known: osg)\n";
-            return 2;
-        }
-        if (peer.program.empty()) {
-            std::cerr << "shadowfx bench: --peers " << name << ": shadowfx-" << name
-                      << "-peer was not built (OpenSceneGraph was not found when configuring; "
-                         "scripts/install-deps.sh installs libopenscenegraph-dev)\n";
-            return 2;
-        }
-        const std::vector<std::string> offered = runtime::peerTechniques(peer.program);
-        if (offered.empty()) {
-            std::cerr << "shadowfx bench: --peers " << name << ": " << peer.program << " does not run\n";
-            return 1;
-        }
-        for (const std::string& technique : offered)
-            if (peerFilter.empty() ||
-                std::find(peerFilter.begin(), peerFilter.end(), technique) != peerFilter.end())
-                peer.techniques.push_back(technique);
-        o.peers.push_back(std::move(peer));
-    }
-    for (const std::string& technique : peerFilter) {
-        bool offered = false;
-        for (const runtime::BenchPeer& peer : o.peers)
-            offered = offered || std::find(peer.techniques.begin(), peer.techniques.end(), technique) !=
-                                     peer.techniques.end();
-        if (!offered) {
-            std::cerr << "shadowfx bench: --peer-techniques: no peer offers '" << technique << "'\n";
-            return 2;
-        }
-    }
+    int peerStatus = 0;
+    o.peers = selectPeers("bench", o.peerNames, o.peerTechniqueFilter, peerStatus);
+    if (peerStatus != 0) return peerStatus;
     if ((o.effects.empty() && o.peers.empty()) || o.scenes.empty() || o.mapSizes.empty()) {
         std::cerr
             << "shadowfx bench: needs --effects or --peers, and non-empty --scenes and --map-sizes (see "

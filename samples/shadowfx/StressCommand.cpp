@@ -3,6 +3,7 @@
 // (report/StressReport.h).
 #include "StressCommand.h"
 #include "EffectLibrary.h"
+#include "PeerProgram.h"
 
 #include <report/StressReport.h>
 #include <runtime/EffectRenderer.h>
@@ -35,6 +36,10 @@ const char* const kStressUsage =
     "  --backend NAME        auto, osmesa or egl (default auto)\n"
     "  --truth-cache DIR     read each case's ray-cast ground truth from DIR when it was cast before for\n"
     "                        the same inputs, else cast and store it there (docs/sharding.md)\n"
+    "  --peers LIST          also run other libraries' shadow techniques through the same cases, held to\n"
+    "                        the same criteria (osg: OpenSceneGraph's osgShadow; docs/peers.md); their\n"
+    "                        failures show where they break and do not fail the run\n"
+    "  --peer-techniques LIST  only these of the peers' techniques (default: all)\n"
     "  --out DIR             stress.json, report.md and errors/*.png (failed runs) go here\n"
     "                        (default out/stress)\n"
     "exit status: 0 if every run passes or fails only where declared, 1 if one fails (or, with\n"
@@ -116,6 +121,11 @@ int stressCommand(const Arguments& args) {
         return 1;
     }
 
+    int peerStatus = 0;
+    std::vector<runtime::Peer> peers = selectPeers("stress", splitList(args.value("--peers")),
+                                                   splitList(args.value("--peer-techniques")), peerStatus);
+    if (peerStatus != 0) return peerStatus;
+
     runtime::StressOptions options;
     options.effects = effects;
     options.cases = caseNames;
@@ -129,6 +139,8 @@ int stressCommand(const Arguments& args) {
     options.backend = *backend;
     options.parseOptions = effectParseOptions(args);
     options.truthCacheDir = args.value("--truth-cache");
+    options.peers = std::move(peers);
+    options.peerWorkDir = outDir / "peers";
     runtime::StressLog log;
     log.note = [](const std::string& text) { std::cerr << "stress: " << text << "\n"; };
     log.problem = [](const std::string& text) { std::cerr << text << "\n"; };

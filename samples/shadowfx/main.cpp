@@ -321,7 +321,7 @@ const shadowfx::cli::Command kCommands[] = {
      shadowfx::cli::kStressUsage,
      {},
      {"--effects", "--cases", "--techniques", "--width", "--height", "--map-size", "--uniform", "--backend",
-      "--out", "--truth-cache", "-I", "-D"},
+      "--out", "--truth-cache", "--peers", "--peer-techniques", "-I", "-D"},
      {"--reduced", "--list", "--strict"},
      shadowfx::cli::stressCommand,
      -1},

@@ -171,14 +171,14 @@ TEST(LispsmEffect, NOptParameterReachesTheProvider) {
     EXPECT_NE(scherzer->projection, wimmer->projection);
     EXPECT_GT(scherzer->warp, wimmer->warp);
 
-    ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Lloyd2006", diagnostics));
+    ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Lloyd2007", diagnostics));
     fx::DiagnosticList rendering;
     renderer->render(*scene, options, rendering);
     const auto error =
         std::find_if(rendering.items().begin(), rendering.items().end(),
                      [](const fx::Diagnostic& d) { return d.id == fx::DiagId::LispsmChoiceInvalid; });
     ASSERT_NE(error, rendering.items().end()) << rendering.str();
-    EXPECT_NE(error->message.find("'Lloyd2006' is not a choice of LiSPSM's n"), std::string::npos)
+    EXPECT_NE(error->message.find("'Lloyd2007' is not a choice of LiSPSM's n"), std::string::npos)
         << error->message;
     EXPECT_NE(error->loc.line, 0);
 }

@@ -1,6 +1,6 @@
 // `shadowfx stress` as users script against it: the case list, usage errors, declared limitations reported
 // as xfail without failing the run, an undeclared one failing it with an error image, a declaration that
-// excuses only the criteria it names, an xpass failing --strict, and the JSON.
+// excuses only the criteria it names, an xpass failing --strict, the JSON, and a peer through the same cases.
 #include "CliRunner.h"
 #include "ScratchDirectory.h"
 
@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -40,6 +41,57 @@ TEST(StressCommand, ListsItsCasesAndRejectsUnknownOnes) {
     const RunResult unknown = run("stress effects/plain_lit.fx --cases no-such-case");
     EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
     EXPECT_NE(unknown.output.find("no case 'no-such-case'"), std::string::npos) << unknown.output;
+    const RunResult unknownPeer = run("stress effects/plain_lit.fx --cases ordinary --peers no-such-peer");
+    EXPECT_EQ(unknownPeer.exitCode, 2) << unknownPeer.output;
+    EXPECT_NE(unknownPeer.output.find("unknown peer 'no-such-peer'"), std::string::npos)
+        << unknownPeer.output;
+}
+
+// --peers osg: OpenSceneGraph's osgShadow through the same cases, scored against the same truth and judged
+// by the same criteria, without failing the run. On the ordinary case a peer whose frame lines up with the
+// G-buffer has a small error, which a blank, black or shifted frame does not (a fair share of the boxes'
+// receivers lie in shadow); the orbit's 60 frames come back one per camera, for shimmer.
+TEST(StressCommand, PeerOsgRunsThroughTheSameCases) {
+#if defined(SHADOWFX_OSG_PEER_SANITIZED)
+    GTEST_SKIP() << "sanitized build: shadowfx-osg-peer is not built (OpenSceneGraph is not instrumented)";
+#elif !defined(SHADOWFX_OSG_PEER_BUILT)
+    FAIL() << "shadowfx-osg-peer is not built: CMake did not find OpenSceneGraph 3.6 "
+              "(libopenscenegraph-dev, which scripts/install-deps.sh installs)";
+#else
+    const shadowfx::test::ScratchDirectory scratch("stress_peer");
+    const std::filesystem::path out = scratch.path();
+    const RunResult result =
+        run("stress effects/thesis_fxcomposer.fx --techniques main --cases ordinary,camera-move,empty "
+            "--width 96 --height 72 --map-size 2048 --peers osg --peer-techniques ShadowMap,VDSM-ortho-1 "
+            "--out " +
+            out.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json json = readJson(out / "stress.json");
+    const nlohmann::json* own = find(json["results"], "main", "ordinary");
+    ASSERT_NE(own, nullptr);
+    EXPECT_TRUE((*own)["peer"].is_null());
+    for (const std::string technique : {"ShadowMap", "VDSM-ortho-1"}) {
+        const nlohmann::json* ordinary = find(json["results"], technique, "ordinary");
+        ASSERT_NE(ordinary, nullptr) << technique;
+        EXPECT_EQ((*ordinary)["peer"], "osg/" + technique);
+        EXPECT_EQ((*ordinary)["effect"], "osg");
+        EXPECT_EQ((*ordinary)["receiver_pixels"], (*own)["receiver_pixels"]) << "the same truth";
+        ASSERT_TRUE((*ordinary)["misclassified_percent"].is_number()) << ordinary->dump(2);
+        EXPECT_LT((*ordinary)["false_light_percent"].get<double>(), 2.0) << ordinary->dump(2);
+        EXPECT_LT((*ordinary)["false_shadow_percent"].get<double>(), 2.0) << ordinary->dump(2);
+        const nlohmann::json* orbit = find(json["results"], technique, "camera-move");
+        ASSERT_NE(orbit, nullptr) << technique;
+        ASSERT_TRUE((*orbit)["shimmer_mean_percent"].is_number()) << orbit->dump(2);
+        EXPECT_LT((*orbit)["misclassified_percent"].get<double>(), 2.0) << orbit->dump(2);
+        const nlohmann::json* empty = find(json["results"], technique, "empty");
+        ASSERT_NE(empty, nullptr) << technique;
+        const std::string word = (*empty)["result"];
+        EXPECT_TRUE(word == "pass" || word == "breaks") << word;
+    }
+    std::ifstream report(out / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("### osg / ShadowMap"), std::string::npos) << text;
+#endif
 }
 
 TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {

@@ -67,6 +67,27 @@ TEST(StressReport, TheResultWordFollowsTheDeclaration) {
     EXPECT_EQ(failed.result(), "FAIL") << "a criterion outside the declaration fails the run again";
 }
 
+// A peer's technique (`stress --peers`) declares nothing: it passes or breaks, and JSON names the peer.
+TEST(StressReport, APeersRunPassesOrBreaks) {
+    StressOutcome peer = outcome("grazing");
+    peer.effect = "osg";
+    peer.technique = "ShadowMap";
+    peer.peer = "osg/ShadowMap";
+    EXPECT_EQ(peer.result(), "pass");
+    peer.fail(StressCriterion::Uniform, "error 40% > 1.5x the uniform map's 3% + 0.5 point");
+    EXPECT_EQ(peer.result(), "breaks");
+    report::StressResult result = madeUpResult();
+    result.outcomes.push_back(peer);
+    const nlohmann::ordered_json json = report::stressJson(result);
+    EXPECT_TRUE(json["results"][0]["peer"].is_null());
+    EXPECT_EQ(json["results"][2]["peer"], "osg/ShadowMap");
+    EXPECT_EQ(json["results"][2]["result"], "breaks");
+    std::ostringstream table;
+    report::writeStressTable(table, result, true);
+    EXPECT_NE(table.str().find("### osg / ShadowMap"), std::string::npos) << table.str();
+    EXPECT_NE(table.str().find("| grazing | breaks |"), std::string::npos) << table.str();
+}
+
 TEST(StressReport, OnlyTheJudgedCriteriaCanBeExcused) {
     EXPECT_EQ(report::excusableCriterion("light-volume"), StressCriterion::LightVolume);
     EXPECT_EQ(report::excusableCriterion("ordinary"), StressCriterion::Ordinary);

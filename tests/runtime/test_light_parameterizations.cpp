@@ -214,7 +214,87 @@ TEST(LightParameterizations, LispsmWimmer2004UsesTheDepthRangeOfB) {
     }
     EXPECT_EQ(parseLispsmN("wimmer2004"), LispsmN::Wimmer2004);
     EXPECT_EQ(parseLispsmN("Scherzer2005"), LispsmN::Scherzer2005);
+    EXPECT_EQ(parseLispsmN("lloyd2006"), LispsmN::Lloyd2006);
     EXPECT_FALSE(parseLispsmN("Lloyd"));
+}
+
+// Lloyd et al. 2006's parameterization, recomputed in double for a light across the view (γ = 90°, where
+// d = z_f - z_n) from z_n and z_f directly, not through n_opt as lloydWarp does: n' = n / d with α = z_f /
+// z_n is (1 + √α - η (α - 1)) / ((α - 1)(η + 1)) for η < 0 and 1 / ((√α - 1)(η √α + 1)) for η >= 0. Its
+// anchors are the algorithms it moves between: Wimmer et al. 2004's n_opt = z_n + √(z_n z_f) at η = 0, PSM's
+// projection centre at the eye (n = z_n) at η = 1, no warp (the uniform map) at η = -1.
+TEST(LightParameterizations, LloydWarpMovesFromUniformThroughLispsmToPsm) {
+    for (double zn : {0.1, 2.0, 10.0})
+        for (double zf : {20.0, 80.0, 500.0}) {
+            const double d = zf - zn, alpha = zf / zn, root = std::sqrt(alpha);
+            const double nopt = zn + std::sqrt(zn * zf);
+            const float optimalWarp = lispsmWarp(float(zn), float(d), 1.0f);
+            for (double eta : {-0.9, -0.5, -0.2, 0.0, 0.3, 0.6, 1.0}) {
+                const double nPrime = eta < 0.0
+                                          ? (1.0 + root - eta * (alpha - 1.0)) / ((alpha - 1.0) * (eta + 1.0))
+                                          : 1.0 / ((root - 1.0) * (eta * root + 1.0));
+                const double n = d * nPrime;
+                EXPECT_NEAR(lloydWarp(optimalWarp, float(d), float(eta)), 1.0 / n, 1e-4 / n)
+                    << "z_n " << zn << ", z_f " << zf << ", η " << eta;
+            }
+            EXPECT_EQ(lloydWarp(optimalWarp, float(d), 0.0f), optimalWarp);
+            EXPECT_NEAR(1.0 / lloydWarp(optimalWarp, float(d), 0.0f), nopt, 1e-4 * nopt);
+            EXPECT_NEAR(1.0 / lloydWarp(optimalWarp, float(d), 1.0f), zn, 1e-3 * zn);
+            EXPECT_EQ(lloydWarp(optimalWarp, float(d), -1.0f), 0.0f);
+            float previous = 0.0f;  // the warp strengthens with η
+            for (int step = -99; step <= 100; ++step) {
+                const float warp = lloydWarp(optimalWarp, float(d), step / 100.0f);
+                EXPECT_GT(warp, previous) << step;
+                previous = warp;
+            }
+        }
+    EXPECT_EQ(lloydWarp(0.0f, 10.0f, 0.5f), 0.0f);  // the light along the view: no warp to scale
+}
+
+// Lloyd et al. 2006's η over γ for a 60° field of view (θ = 30°): the uniform map up to γ_a = 10°, η_b = -0.2
+// at γ_b = θ, LiSPSM's η_c = 0 from γ_c = 30° + 0.3 · 60° = 48° on; continuous and rising between.
+TEST(LightParameterizations, LloydEtaRisesFromUniformToLispsmWithTheAngle) {
+    const float theta = glm::radians(30.0f);
+    EXPECT_EQ(lloydEta(0.0f, theta), -1.0f);
+    EXPECT_EQ(lloydEta(glm::radians(9.9f), theta), -1.0f);
+    EXPECT_NEAR(lloydEta(glm::radians(10.0f), theta), -1.0f, 1e-6f);
+    EXPECT_NEAR(lloydEta(theta, theta), -0.2f, 1e-6f);
+    EXPECT_NEAR(lloydEta(glm::radians(48.0f) - 1e-6f, theta), 0.0f, 1e-5f);
+    EXPECT_EQ(lloydEta(glm::radians(48.0f), theta), 0.0f);
+    EXPECT_EQ(lloydEta(glm::radians(90.0f), theta), 0.0f);
+    float previous = -1.0f;
+    for (int tenth = 0; tenth <= 900; ++tenth) {
+        const float eta = lloydEta(glm::radians(tenth / 10.0f), theta);
+        EXPECT_GE(eta, previous) << tenth / 10.0f << "°";
+        EXPECT_LE(eta - previous, 0.02f) << "a jump at " << tenth / 10.0f << "°";
+        previous = eta;
+    }
+}
+
+// LispsmN::Lloyd2006 in the fit: with the light across the view (γ >= γ_c) its η is 0 and the fit is
+// Wimmer2004's to the bit; with the light near the view (γ < θ / 3) it is the uniform end, no warp: Focused's
+// fit.
+TEST(LightParameterizations, LispsmLloyd2006IsWimmerAcrossTheViewAndFocusedAlongIt) {
+    LightTunables lloyd;
+    lloyd.lispsmN = LispsmN::Lloyd2006;
+    const glm::vec3 view = fromAngles(-10.0f, 0.0f);
+    const Scene across = terrain(view, fromAngles(-60.0f, 30.0f));
+    const LightFit wimmer =
+        fitLight(LightParameterization::LiSPSM, across, across.bounds(), kAspect, across.lights[0]);
+    const LightFit lloydAcross =
+        fitLight(LightParameterization::LiSPSM, across, across.bounds(), kAspect, across.lights[0], lloyd);
+    ASSERT_GT(wimmer.warp, 0.0f);
+    EXPECT_EQ(lloydAcross.warp, wimmer.warp);
+    EXPECT_EQ(lloydAcross.projection, wimmer.projection);
+
+    // 5° off the view direction, from behind the viewer: below γ_a = 10° for the 60° field of view.
+    const glm::vec3 nearlyAlong = fromAngles(-15.0f, 0.0f);
+    const Scene along = terrain(view, nearlyAlong);
+    const LightFit lloydAlong =
+        fitLight(LightParameterization::LiSPSM, along, along.bounds(), kAspect, along.lights[0], lloyd);
+    EXPECT_EQ(lloydAlong.warp, 0.0f);
+    EXPECT_GT(fitLight(LightParameterization::LiSPSM, along, along.bounds(), kAspect, along.lights[0]).warp,
+              0.0f);
 }
 
 // With LiSPSMMiddleVector, V_P is Scherzer 2005 §4.4's middle vector: the sum of the eye-to-vertex vectors of

@@ -47,8 +47,9 @@ std::optional<StressCriterion> excusableCriterion(std::string_view name);
 
 // One effect x technique x case.
 struct StressOutcome {
-    std::string effect;
+    std::string effect;  // the effect file's name, or the peer's ("osg")
     std::string technique;
+    std::string peer;  // "osg/<technique>" for another library's technique (`stress --peers`), else empty
     std::string caseName;
     bool pass = true;
     bool expectedFailure = false;  // the technique declares this case a known limitation
@@ -75,8 +76,10 @@ struct StressOutcome {
             return std::find(excused.begin(), excused.end(), c) != excused.end();
         });
     }
-    // "pass", "xpass" (declared, yet passed), "xfail" (failed only where declared) or "FAIL".
+    // "pass", "xpass" (declared, yet passed), "xfail" (failed only where declared) or "FAIL"; a peer's
+    // technique "pass" or "breaks" (it declares nothing, and its failures do not fail the run).
     std::string result() const {
+        if (!peer.empty()) return pass ? "pass" : "breaks";
         if (pass) return expectedFailure ? "xpass" : "pass";
         return isExcused() ? "xfail" : "FAIL";
     }

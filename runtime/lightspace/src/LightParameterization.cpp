@@ -125,13 +125,21 @@ const char* lightParameterizationName(LightParameterization method) {
 }
 
 std::optional<LispsmN> parseLispsmN(std::string_view name) {
-    for (LispsmN choice : {LispsmN::Scherzer2005, LispsmN::Wimmer2004})
+    for (LispsmN choice : {LispsmN::Scherzer2005, LispsmN::Wimmer2004, LispsmN::Lloyd2006})
         if (equalsIgnoringCase(name, lispsmNName(choice))) return choice;
     return std::nullopt;
 }
 
 const char* lispsmNName(LispsmN choice) {
-    return choice == LispsmN::Wimmer2004 ? "Wimmer2004" : "Scherzer2005";
+    switch (choice) {
+        case LispsmN::Scherzer2005:
+            return "Scherzer2005";
+        case LispsmN::Wimmer2004:
+            return "Wimmer2004";
+        case LispsmN::Lloyd2006:
+            return "Lloyd2006";
+    }
+    return "Wimmer2004";
 }
 
 // Scherzer 2005 §4.4 eq. 1 with Δz = d · sin γ as in the LiSPSM
@@ -139,6 +147,29 @@ const char* lispsmNName(LispsmN choice) {
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma) {
     const float zn = std::max(nearPlane, 1e-6f);
     return std::max(sinGamma, 0.0f) / (zn + std::sqrt(zn * (zn + std::max(depthExtent, 0.0f))));
+}
+
+float lloydEta(float gamma, float halfFov) {
+    constexpr float kRightAngle = glm::radians(90.0f);
+    constexpr float kEtaB = -0.2f, kEtaC = 0.0f;
+    const float gammaA = halfFov / 3.0f, gammaB = halfFov, gammaC = halfFov + 0.3f * (kRightAngle - halfFov);
+    if (gamma < gammaA) return -1.0f;
+    if (gamma < gammaB)
+        return -1.0f + (kEtaB + 1.0f) * (1.0f - std::cos(kRightAngle * (gamma - gammaA) / (gammaB - gammaA)));
+    if (gamma < gammaC)
+        return kEtaB + (kEtaC - kEtaB) * std::sin(kRightAngle * (gamma - gammaB) / (gammaC - gammaB));
+    return kEtaC;
+}
+
+float lloydWarp(float optimalWarp, float depthExtent, float eta) {
+    if (!(optimalWarp > 0.0f) || !(depthExtent > 0.0f) || !(eta > -1.0f)) return 0.0f;
+    // In the reciprocal form, so that no n' is infinite: with s = sqrt(α) = 1 + d / n_opt,
+    // 1 / n = (α - 1)(η + 1) / (d (1 + s - η (α - 1))) for η < 0 and (s - 1)(η s + 1) / d =
+    // (η s + 1) / n_opt for η >= 0 (so η = 0 is LiSPSM's n_opt to the bit).
+    const double d = depthExtent, s = 1.0 + d * optimalWarp, alphaMinusOne = (s - 1.0) * (s + 1.0);
+    const double warp = eta < 0.0f ? alphaMinusOne * (eta + 1.0) / (d * (1.0 + s - eta * alphaMinusOne))
+                                   : optimalWarp * (eta * s + 1.0);
+    return static_cast<float>(warp);
 }
 
 glm::vec2 bodyViewDepthRange(const Camera& camera, const std::vector<glm::vec3>& body) {
@@ -228,15 +259,24 @@ LightFit fitLight(LightParameterization method, const Scene& scene, const Bounds
     }
     if (method == LightParameterization::LiSPSM) {
         float zNear = camera.nearPlane, deltaZ = 0.0f;
-        if (tunables.lispsmN == LispsmN::Wimmer2004) {
+        if (tunables.lispsmN == LispsmN::Scherzer2005) {
+            deltaZ =
+                tunables.lispsmDepthExtent > 0.0f ? tunables.lispsmDepthExtent : (yMax - yMin) * sinGamma;
+        } else {
             const glm::vec2 depths = bodyViewDepthRange(camera, body);
             zNear = depths.x;
             deltaZ = depths.y - depths.x;
-        } else {
-            deltaZ =
-                tunables.lispsmDepthExtent > 0.0f ? tunables.lispsmDepthExtent : (yMax - yMin) * sinGamma;
         }
-        fit.warp = lispsmWarp(zNear, deltaZ, sinGamma) / std::max(tunables.lispsmNScale, 1e-3f);
+        float warp = lispsmWarp(zNear, deltaZ, sinGamma);
+        if (tunables.lispsmN == LispsmN::Lloyd2006) {
+            // θ: the smaller half-angle of the view frustum (the vertical one unless the frame is taller
+            // than wide).
+            const float halfFov =
+                std::min(0.5f * camera.fovY, std::atan(std::tan(0.5f * camera.fovY) * aspect));
+            warp =
+                lloydWarp(warp, yMax - yMin, lloydEta(std::asin(std::clamp(sinGamma, 0.0f, 1.0f)), halfFov));
+        }
+        fit.warp = warp / std::max(tunables.lispsmNScale, 1e-3f);
     }
     // The warp P: a perspective projection along +y whose projection centre lies n = 1 / warp before the
     // near side of B, at the eye's x. In homogeneous form w = 1 + warp (y - yMin), so warp = 0 is the

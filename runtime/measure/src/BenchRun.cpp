@@ -368,8 +368,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
         }
     }
     if (runCount == 0 && !effects.empty()) return usageError("no technique matches --techniques");
-    for (const BenchPeer& peer : o.peers)
-        runCount += peer.techniques.size() * mapSizes.size() * truths.size();
+    for (const Peer& peer : o.peers) runCount += peer.techniques.size() * mapSizes.size() * truths.size();
 
     Json runs = Json::array();
     const size_t runsHere = shard ? shard->runsOf(runCount) : runCount;
@@ -523,7 +522,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
     }
     // [SECTION] Peers: the same scenes, map sizes, frame counts and truth; the peer's frame is scored as an
     // effect's visibility frame is.
-    for (const BenchPeer& peer : o.peers) {
+    for (const Peer& peer : o.peers) {
         const std::filesystem::path workDir = outDir / "peers" / peer.name;
         std::filesystem::create_directories(workDir, fsError);
         for (int mapSize : mapSizes) {

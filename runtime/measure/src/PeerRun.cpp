@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -57,42 +58,39 @@ std::vector<std::string> peerTechniques(const std::string& program) {
     return names;
 }
 
-std::optional<PeerResult> runPeer(const PeerRequest& request, const SceneTruth& truth,
-                                  const std::filesystem::path& workDir, std::string& error) {
+namespace {
+
+// Runs the peer with `sceneArguments` (its --scene or --stress-case), `label` naming the scene in file
+// names and errors; its frame must be `height` rows of the request's width.
+std::optional<PeerResult> runPeerProgram(const PeerRequest& request, const std::string& sceneArguments,
+                                         const std::string& label, int height,
+                                         const std::filesystem::path& workDir, std::string& error) {
     const std::string base =
-        safeName(request.technique + "_" + truth.scene.name + "_" + std::to_string(request.mapSize));
+        safeName(request.technique + "_" + label + "_" + std::to_string(request.mapSize));
     const std::filesystem::path frame = workDir / (base + ".pgm");
     const std::filesystem::path json = workDir / (base + ".json");
     const std::filesystem::path log = workDir / (base + ".log");
     std::ostringstream command;
-    command << shellQuoted(request.program) << " --scene " << shellQuoted(request.scene) << " --technique "
+    command << shellQuoted(request.program) << sceneArguments << " --technique "
             << shellQuoted(request.technique) << " --map-size " << request.mapSize << " --width "
             << request.width << " --height " << request.height << " --frames " << request.frames
             << " --warmup " << request.warmup << " --out-visibility " << shellQuoted(frame.string())
-            << " --out-json " << shellQuoted(json.string());
-    if (truth.light && truth.light->type == Light::Type::Directional) {
-        char direction[96];
-        std::snprintf(direction, sizeof direction, "%.9g,%.9g,%.9g", truth.light->direction.x,
-                      truth.light->direction.y, truth.light->direction.z);
-        command << " --light-direction " << direction;
-    }
-    command << " >" << shellQuoted(log.string()) << " 2>&1";
+            << " --out-json " << shellQuoted(json.string()) << " >" << shellQuoted(log.string()) << " 2>&1";
     if (std::system(command.str().c_str()) != 0) {
         std::ifstream in(log);
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        error = request.program + " failed on " + truth.scene.name + " (" + request.technique + "): " + text;
+        error = request.program + " failed on " + label + " (" + request.technique + "): " + text;
         return std::nullopt;
     }
     PeerResult result;
-    int width = 0, height = 0;
-    if (!readPgm(frame, width, height, result.visibility)) {
+    int frameWidth = 0, frameHeight = 0;
+    if (!readPgm(frame, frameWidth, frameHeight, result.visibility)) {
         error = "cannot read the peer's frame " + frame.string();
         return std::nullopt;
     }
-    if (width != truth.gbuffer.width || height != truth.gbuffer.height) {
-        error = "the peer's frame is " + std::to_string(width) + "x" + std::to_string(height) +
-                ", the G-buffer's " + std::to_string(truth.gbuffer.width) + "x" +
-                std::to_string(truth.gbuffer.height);
+    if (frameWidth != request.width || frameHeight != height) {
+        error = "the peer's frame is " + std::to_string(frameWidth) + "x" + std::to_string(frameHeight) +
+                ", the G-buffer's " + std::to_string(request.width) + "x" + std::to_string(height);
         return std::nullopt;
     }
     std::filesystem::remove(frame);
@@ -112,6 +110,41 @@ std::optional<PeerResult> runPeer(const PeerRequest& request, const SceneTruth& 
         return std::nullopt;
     }
     return result;
+}
+
+}  // namespace
+
+std::optional<PeerResult> runPeer(const PeerRequest& request, const SceneTruth& truth,
+                                  const std::filesystem::path& workDir, std::string& error) {
+    std::string arguments = " --scene " + shellQuoted(request.scene);
+    if (truth.light && truth.light->type == Light::Type::Directional) {
+        char direction[96];
+        std::snprintf(direction, sizeof direction, "%.9g,%.9g,%.9g", truth.light->direction.x,
+                      truth.light->direction.y, truth.light->direction.z);
+        arguments += std::string(" --light-direction ") + direction;
+    }
+    if (request.width != truth.gbuffer.width || request.height != truth.gbuffer.height) {
+        error = "the peer was asked for " + std::to_string(request.width) + "x" +
+                std::to_string(request.height) + ", the G-buffer is " + std::to_string(truth.gbuffer.width) +
+                "x" + std::to_string(truth.gbuffer.height);
+        return std::nullopt;
+    }
+    return runPeerProgram(request, arguments, truth.scene.name, request.height, workDir, error);
+}
+
+std::optional<std::vector<std::vector<float>>> runPeerOnStressCase(const PeerRequest& request, size_t cameras,
+                                                                   const std::filesystem::path& workDir,
+                                                                   std::string& error) {
+    const std::optional<PeerResult> result =
+        runPeerProgram(request, " --stress-case " + shellQuoted(request.scene), request.scene,
+                       request.height * static_cast<int>(cameras), workDir, error);
+    if (!result) return std::nullopt;
+    const size_t pixels = static_cast<size_t>(request.width) * static_cast<size_t>(request.height);
+    std::vector<std::vector<float>> frames;
+    for (size_t view = 0; view < cameras; ++view)
+        frames.emplace_back(result->visibility.begin() + static_cast<std::ptrdiff_t>(view * pixels),
+                            result->visibility.begin() + static_cast<std::ptrdiff_t>((view + 1) * pixels));
+    return frames;
 }
 
 }  // namespace runtime

@@ -1,7 +1,8 @@
 // StressRun: see StressRun.h.
 //
 // [SECTION] Truth  per case (and per frame of a temporal case): G-buffer, ray-cast truth, light volume
-// [SECTION] Runs   effect x technique x case: render, finite values, error, shimmer
+// [SECTION] Runs   effect x technique x case: render, finite values, error, shimmer; then each peer's
+//                  techniques through the same cases
 #include <runtime/StressRun.h>
 
 #include <fx/CompiledEffectFile.h>
@@ -13,6 +14,7 @@
 #include <runtime/GroundTruth.h>
 #include <runtime/LightParameterization.h>
 #include <runtime/NonFiniteScan.h>
+#include <runtime/PeerRun.h>
 #include <runtime/ShadowMeasurement.h>
 #include <runtime/ShadowMetrics.h>
 #include <runtime/StressCases.h>
@@ -152,6 +154,59 @@ std::optional<CaseTruth> computeTruth(StressCase stressCase, int width, int heig
 
 // [SECTION] Runs
 
+// Scores a run's visibility frames, one per frame of the case, against the case's truth: the error
+// (mean over the frames with receivers) and, for a temporal case, the shimmer between consecutive frames.
+void scoreFrames(Outcome& outcome, const CaseTruth& truth, const std::vector<std::vector<float>>& frames) {
+    std::vector<std::vector<uint8_t>> shadowed;  // per frame: the run's classification
+    double errorSum = 0.0, falseShadowSum = 0.0, falseLightSum = 0.0;
+    size_t scoredFrames = 0;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        const FrameTruth& frame = truth.frames[f];
+        const std::vector<float>& visibility = frames[f];
+        outcome.receivers = frame.receiverCount;
+        if (frame.receiverCount > 0) {
+            const ShadowErrors errors = compareVisibility(frame.visibility, visibility, frame.receivers);
+            errorSum += errors.misclassifiedPercent;
+            falseShadowSum += errors.falseShadowPercent;
+            falseLightSum += errors.falseLightPercent;
+            ++scoredFrames;
+        }
+        std::vector<uint8_t>& classes = shadowed.emplace_back(visibility.size());
+        for (size_t i = 0; i < visibility.size(); ++i) classes[i] = visibility[i] < kShadowedBelow ? 1 : 0;
+    }
+    if (scoredFrames > 0) {
+        outcome.misclassified = errorSum / static_cast<double>(scoredFrames);
+        outcome.falseShadow = falseShadowSum / static_cast<double>(scoredFrames);
+        outcome.falseLight = falseLightSum / static_cast<double>(scoredFrames);
+    }
+
+    if (shadowed.size() > 1) {
+        double sum = 0.0, worst = 0.0;
+        for (size_t f = 1; f < shadowed.size(); ++f) {
+            const FrameTruth &a = truth.frames[f - 1], &b = truth.frames[f];
+            size_t steady = 0, flips = 0;
+            for (size_t i = 0; i < shadowed[f].size(); ++i) {
+                if (!a.receivers[i] || !b.receivers[i]) continue;
+                const bool truthA = a.visibility[i] < kShadowedBelow;
+                const bool truthB = b.visibility[i] < kShadowedBelow;
+                if (truthA != truthB) continue;
+                ++steady;
+                flips += shadowed[f - 1][i] != shadowed[f][i] ? 1 : 0;
+            }
+            const double share =
+                steady ? 100.0 * static_cast<double>(flips) / static_cast<double>(steady) : 0.0;
+            sum += share;
+            worst = std::max(worst, share);
+        }
+        outcome.shimmerMean = sum / static_cast<double>(shadowed.size() - 1);
+        outcome.shimmerMax = worst;
+        if (*outcome.shimmerMean > kShimmerLimit)
+            outcome.fail(Criterion::Shimmer, "shimmer " + report::formatPercent(*outcome.shimmerMean) +
+                                                 " of steady pixels flip per frame (limit " +
+                                                 report::formatPercent(kShimmerLimit) + ")");
+    }
+}
+
 // `errorImage`: the last scored frame's error image.
 Outcome runCase(EffectRenderer& renderer, bool exposesVisibility, const std::string& technique,
                 const CaseTruth& truth, int width, int height, int mapSize, DiagnosticLog& sink,
@@ -165,9 +220,7 @@ Outcome runCase(EffectRenderer& renderer, bool exposesVisibility, const std::str
     options.width = width;
     options.height = height;
     options.technique = technique;
-    std::vector<std::vector<uint8_t>> shadowed;  // per frame: the effect's classification
-    double errorSum = 0.0, falseShadowSum = 0.0, falseLightSum = 0.0;
-    size_t scoredFrames = 0;
+    std::vector<std::vector<float>> visibilities;  // per frame, where the effect exposes its visibility
     for (const FrameTruth& frame : truth.frames) {
         if (!renderer.render(frame.scene, options, sink) || sink.failed()) {
             outcome.fail(Criterion::Render, "render failed: " + sink.takeErrors());
@@ -211,50 +264,54 @@ Outcome runCase(EffectRenderer& renderer, bool exposesVisibility, const std::str
             return outcome;
         }
         if (!exposesVisibility) continue;
-        const std::vector<float> visibility = visibilityFromFrame(renderer.readFrame());
-        outcome.receivers = frame.receiverCount;
-        if (frame.receiverCount > 0) {
-            const ShadowErrors errors = compareVisibility(frame.visibility, visibility, frame.receivers);
-            errorSum += errors.misclassifiedPercent;
-            falseShadowSum += errors.falseShadowPercent;
-            falseLightSum += errors.falseLightPercent;
-            ++scoredFrames;
-            errorImage =
-                runtime::errorImage(renderer.readFrame(), frame.visibility, visibility, frame.receivers);
-        }
-        std::vector<uint8_t>& classes = shadowed.emplace_back(visibility.size());
-        for (size_t i = 0; i < visibility.size(); ++i) classes[i] = visibility[i] < kShadowedBelow ? 1 : 0;
+        visibilities.push_back(visibilityFromFrame(renderer.readFrame()));
+        if (frame.receiverCount > 0)
+            errorImage = runtime::errorImage(renderer.readFrame(), frame.visibility, visibilities.back(),
+                                             frame.receivers);
     }
-    if (scoredFrames > 0) {
-        outcome.misclassified = errorSum / static_cast<double>(scoredFrames);
-        outcome.falseShadow = falseShadowSum / static_cast<double>(scoredFrames);
-        outcome.falseLight = falseLightSum / static_cast<double>(scoredFrames);
-    }
+    scoreFrames(outcome, truth, visibilities);
+    return outcome;
+}
 
-    if (shadowed.size() > 1) {
-        double sum = 0.0, worst = 0.0;
-        for (size_t f = 1; f < shadowed.size(); ++f) {
-            const FrameTruth &a = truth.frames[f - 1], &b = truth.frames[f];
-            size_t steady = 0, flips = 0;
-            for (size_t i = 0; i < shadowed[f].size(); ++i) {
-                if (!a.receivers[i] || !b.receivers[i]) continue;
-                const bool truthA = a.visibility[i] < kShadowedBelow;
-                const bool truthB = b.visibility[i] < kShadowedBelow;
-                if (truthA != truthB) continue;
-                ++steady;
-                flips += shadowed[f - 1][i] != shadowed[f][i] ? 1 : 0;
-            }
-            const double share =
-                steady ? 100.0 * static_cast<double>(flips) / static_cast<double>(steady) : 0.0;
-            sum += share;
-            worst = std::max(worst, share);
+// A peer's technique on a case (PeerRun.h): the peer renders the case by name, one frame per camera, and
+// its frames are scored as an effect's are. The runtime's own matrices and an effect's light fit do not
+// concern it: where the peer fails to render, that is its render failure. `errorImage` over the peer's
+// last scored frame (its visibility in grey).
+Outcome runPeerCase(const Peer& peer, const std::string& technique, const CaseTruth& truth, int width,
+                    int height, int mapSize, const std::filesystem::path& workDir, FrameImage& errorImage) {
+    Outcome outcome;
+    outcome.effect = peer.name;
+    outcome.peer = peer.name + "/" + technique;
+    outcome.caseName = truth.stressCase.name;
+    outcome.technique = technique;
+    // One warm-up frame: osgShadow's draw-bounds LiSPSM fits its map to the previous frame's depth.
+    const PeerRequest request{peer.program, truth.stressCase.name, technique, mapSize, width, height, 1, 1};
+    std::string error;
+    const std::optional<std::vector<std::vector<float>>> frames =
+        runPeerOnStressCase(request, truth.frames.size(), workDir, error);
+    if (!frames) {
+        // The log's last line says why; the whole log stays in the work folder.
+        while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+        const size_t lastLine = error.rfind('\n');
+        outcome.fail(
+            Criterion::Render,
+            "the peer failed: " + (lastLine == std::string::npos ? error : error.substr(lastLine + 1)));
+        return outcome;
+    }
+    scoreFrames(outcome, truth, *frames);
+    for (size_t f = 0; f < frames->size(); ++f) {
+        const FrameTruth& frame = truth.frames[f];
+        if (frame.receiverCount == 0) continue;
+        FrameImage grey;
+        grey.width = width;
+        grey.height = height;
+        grey.rgba.resize((*frames)[f].size() * 4);
+        for (size_t i = 0; i < (*frames)[f].size(); ++i) {
+            const auto value = static_cast<uint8_t>((*frames)[f][i] * 255.0f + 0.5f);
+            grey.rgba[i * 4] = grey.rgba[i * 4 + 1] = grey.rgba[i * 4 + 2] = value;
+            grey.rgba[i * 4 + 3] = 255;
         }
-        outcome.shimmerMean = sum / static_cast<double>(shadowed.size() - 1);
-        outcome.shimmerMax = worst;
-        if (*outcome.shimmerMean > kShimmerLimit)
-            outcome.fail(Criterion::Shimmer, "shimmer " + report::formatPercent(*outcome.shimmerMean) +
-                                                 " of steady pixels flip per frame (limit " +
-                                                 report::formatPercent(kShimmerLimit) + ")");
+        errorImage = runtime::errorImage(grey, frame.visibility, (*frames)[f], frame.receivers);
     }
     return outcome;
 }
@@ -489,6 +546,34 @@ StressRun runStress(const StressOptions& o, const StressLog& log) {
                 const std::string result = outcome.result();
                 anyFailed = anyFailed || result == "FAIL" || (o.strict && requested && result == "xpass");
                 if (requested) outcomes.push_back(outcome);
+            }
+        }
+    }
+
+    // The peers' techniques through the same cases and truth, held to the same criteria (their own ordinary
+    // case's error, the uniform map's): the report shows where they break. Their failures are theirs, not
+    // the run's.
+    for (const Peer& peer : o.peers) {
+        const std::filesystem::path workDir = o.peerWorkDir / peer.name;
+        std::error_code fsError;
+        std::filesystem::create_directories(workDir, fsError);
+        if (fsError) return failed("cannot create " + workDir.string() + ": " + fsError.message());
+        for (const std::string& technique : peer.techniques) {
+            std::map<std::string, double> measured;
+            for (const std::string& name : ordered) {
+                note(peer.name + " " + technique + " " + name);
+                const CaseTruth& truth = truths.at(name);
+                FrameImage image;
+                Outcome outcome = runPeerCase(peer, technique, truth, width, height, mapSize, workDir, image);
+                if (outcome.misclassified) measured[name] = *outcome.misclassified;
+                if (auto it = measured.find(truth.stressCase.ordinary); it != measured.end())
+                    outcome.ordinary = it->second;
+                if (auto it = uniformError.find(name); it != uniformError.end()) outcome.uniform = it->second;
+                judge(outcome);
+                if (!outcome.pass && image.width > 0)
+                    run.errorImages.push_back(StressErrorImage{peer.name, technique, name, std::move(image)});
+                if (std::find(o.cases.begin(), o.cases.end(), name) != o.cases.end())
+                    outcomes.push_back(outcome);
             }
         }
     }

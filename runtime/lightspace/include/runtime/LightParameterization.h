@@ -49,9 +49,12 @@ const char* lightParameterizationName(LightParameterization method);
 //                 as the reference code) or LiSPSMDepthExtent (Scherzer 2005 §4.4, eq. 1)
 //   Wimmer2004    z_n, z_f the nearest and farthest view-space depth of B (Wimmer, Scherzer & Purgathofer
 //                 2004, n_opt = z_n + sqrt(z_n z_f) for a light perpendicular to the view, over sin γ)
-enum class LispsmN { Scherzer2005, Wimmer2004 };
+//   Lloyd2006     Lloyd, Tuft, Yoon & Manocha 2006's parameter η, which moves n from the uniform map
+//                 (η = -1) through Wimmer2004's n_opt (η = 0) toward PSM's n = z_n (η = 1), and their
+//                 choice of η by the angle γ between light and view (lloydEta, lloydWarp)
+enum class LispsmN { Scherzer2005, Wimmer2004, Lloyd2006 };
 
-// "Scherzer2005", "Wimmer2004" (case-insensitive); nullopt for anything else.
+// "Scherzer2005", "Wimmer2004", "Lloyd2006" (case-insensitive); nullopt for anything else.
 std::optional<LispsmN> parseLispsmN(std::string_view name);
 const char* lispsmNName(LispsmN choice);
 
@@ -65,8 +68,9 @@ struct LightTunables {
     // visibility algorithm, Scherzer 2005 §4.4); 0 = the reference code's d · sin γ, d the extent of B along
     // V_P.
     float lispsmDepthExtent = 0.0f;
-    // LiSPSMNOpt (a string): whose z_n and z_f n_opt takes (LispsmN). Wimmer2004 measured best on the γ
-    // sweep, a city field and a street against the sun (docs/results/2026-12-03-lispsm-n.md).
+    // LiSPSMNOpt (a string): whose z_n and z_f n_opt takes, or Lloyd et al. 2006's η (LispsmN). Wimmer2004
+    // measured best on the γ sweep, a city field and a street against the sun
+    // (docs/results/2026-12-03-lispsm-n.md).
     LispsmN lispsmN = LispsmN::Wimmer2004;
     // LiSPSMMiddleVector: V_P from B's "middle vector" (Scherzer §4.4: the sum of the vectors from the eye
     // to B's vertices, which leans toward where B has volume) instead of the view direction of eq. 3.
@@ -132,6 +136,25 @@ struct LightFit {
 // which goes to 0 (no warp: the focused fit) as sin γ -> 0 instead of dividing by zero. Wimmer et al. 2004's
 // n_opt is the same expression with Δz = z_f - z_n.
 float lispsmWarp(float nearPlane, float depthExtent, float sinGamma);
+
+// Lloyd et al. 2006's choice of η for the angle γ between the light and the view direction (both in
+// radians, γ in [0, π/2]) and the camera's half field of view θ (the smaller of its two half-angles):
+// γ_a = θ/3, γ_b = θ, γ_c = θ + 0.3 (90° - θ), η_b = -0.2, η_c = 0;
+//   η = -1                                                     γ < γ_a  (the uniform map: light along view)
+//   η = -1 + (η_b + 1) (1 - cos(90° (γ - γ_a) / (γ_b - γ_a)))  γ_a <= γ < γ_b
+//   η = η_b + (η_c - η_b) sin(90° (γ - γ_b) / (γ_c - γ_b))     γ_b <= γ < γ_c
+//   η = η_c                                                    γ_c <= γ
+// The second branch as printed reads (1 + cos ...), which jumps from -1 to 0.6 at γ_a; 1 - cos is the
+// continuous curve from -1 at γ_a to η_b at γ_b that the branches around it meet.
+float lloydEta(float gamma, float halfFov);
+
+// The warp strength 1 / n of Lloyd et al. 2006's parameterization at η, for a body B whose extent along
+// V_P in light space is `depthExtent` (d), anchored at `optimalWarp`, 1 / n_opt of LiSPSM (η = 0). With n' =
+// n / d and sqrt(α) = 1 + d / n_opt (for a light across the view, α = z_f / z_n):
+//   η < 0:  n' = (1 + sqrt(α) - η (α - 1)) / ((α - 1)(η + 1))   (n -> ∞, the uniform map, as η -> -1)
+//   η >= 0: n' = 1 / ((sqrt(α) - 1)(η sqrt(α) + 1))             (n = d / (α - 1) = z_n, PSM's, at η = 1)
+// 0 (no warp) where optimalWarp or d is 0 or η <= -1.
+float lloydWarp(float optimalWarp, float depthExtent, float eta);
 
 // The nearest and farthest view-space depth (along the camera's view direction) of B, the first half of
 // focusBody's points, the nearest no closer than the camera's near plane: Wimmer et al. 2004's z_n, z_f.

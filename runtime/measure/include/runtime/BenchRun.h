@@ -17,6 +17,7 @@
 #include <report/BenchShard.h>
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
+#include <runtime/PeerRun.h>
 
 #include <filesystem>
 #include <functional>
@@ -25,13 +26,6 @@
 #include <vector>
 
 namespace runtime {
-
-// Another library's shadow techniques run beside the effects (PeerRun.h), its program already found.
-struct BenchPeer {
-    std::string name;                     // "osg"
-    std::string program;                  // its executable
-    std::vector<std::string> techniques;  // the ones to run, in the peer's order
-};
 
 // What to measure, as the options of `shadowfx bench` say it (docs/cli.md); every field is recorded in the
 // results document's `config`.
@@ -53,7 +47,7 @@ struct BenchOptions {
     float cameraOrbit = 0.0f;               // degrees the camera turns before each timed frame
     std::vector<std::string> set;           // PARAM=VALUES, as given (ParameterSweep.h)
     fx::ParseOptions parseOptions;          // -I and -D
-    std::vector<BenchPeer> peers;
+    std::vector<Peer> peers;
     std::vector<std::string> peerNames;            // as --peers gave them, for `config`
     std::vector<std::string> peerTechniqueFilter;  // as --peer-techniques gave them, for `config`
     std::optional<report::BenchShard> shard;       // measure only its runs

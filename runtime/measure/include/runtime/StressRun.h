@@ -1,6 +1,7 @@
 // StressRun: the measurement of `shadowfx stress`: effects through extreme configurations (StressCases.h),
-// each technique x case rendered and held to its criteria (report/StressReport.h): finite values, the light
-// volume, its error against the case's ordinary configuration and against the uniform shadow map, shimmer.
+// each technique x case rendered and held to its criteria (and, with peers, each of their techniques)
+// (report/StressReport.h): finite values, the light volume, its error against the case's ordinary
+// configuration and against the uniform shadow map, shimmer.
 //
 // Effects are compiled with SHADOWFX_VISIBILITY (docs/scoring.md, "Measurement hooks"), so the frame is the
 // shadow factor and can be scored against the truth; an effect that does not expose it gets the finite-value
@@ -11,6 +12,9 @@
 #include <report/StressReport.h>
 #include <runtime/FrameImage.h>
 #include <runtime/GlContext.h>
+#include <runtime/PeerRun.h>
+
+#include <filesystem>
 
 #include <functional>
 #include <string>
@@ -29,6 +33,10 @@ struct StressOptions {
     Backend backend = Backend::Auto;
     fx::ParseOptions parseOptions;  // -I and -D
     std::string truthCacheDir;      // TruthCache.h; empty: cast every truth
+    // Other libraries' techniques run through the same cases (PeerRun.h), and where their frames and logs
+    // go (a folder per peer).
+    std::vector<Peer> peers;
+    std::filesystem::path peerWorkDir;
 };
 
 // A failed run's error image (ShadowMetrics.h errorImage, the last frame's).
