@@ -1,8 +1,9 @@
 // BenchRun: the measurement of `shadowfx bench` (and of any tool that sweeps bench runs): every effect x
 // scene x shadow-map size x technique (x --set setting x leave-out mode) rendered headlessly, its shadow
 // term compared with the ray-cast ground truth, its frames timed; then the peers' techniques on the same
-// scenes and truth. The result is the results document (docs/results.schema.json) that report/BenchReport.h
-// turns into results.json, report.md and error_vs_time.svg; the error images are written while measuring.
+// scenes and truth. The result is report::BenchResults, which report/BenchResults.h turns into the results
+// document (docs/results.schema.json) and report/BenchReport.h into results.json, report.md and
+// error_vs_time.svg; the error images are written while measuring.
 //
 // Each effect is compiled twice per map size: as written (the timed frames) and with SHADOWFX_VISIBILITY
 // (one frame whose colour is the shadow factor, scored against the ground truth). Timing the visibility
@@ -13,7 +14,7 @@
 
 #include <fx/HostFile.h>
 #include <fx/EffectParser.h>
-#include <report/BenchReport.h>
+#include <report/BenchResults.h>
 #include <report/BenchShard.h>
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
@@ -80,8 +81,8 @@ enum class BenchStatus {
 
 struct BenchResult {
     BenchStatus status = BenchStatus::Failed;
-    std::string error;      // why, unless Measured; empty when the diagnostics said it
-    report::Json document;  // the results document (docs/results.schema.json), when Measured
+    std::string error;             // why, unless Measured; empty when the diagnostics said it
+    report::BenchResults results;  // what was measured, when Measured
 };
 
 BenchResult runBench(const BenchOptions& options, const BenchLog& log);
