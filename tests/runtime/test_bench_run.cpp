@@ -1,10 +1,13 @@
 // runtime::runBench (runtime/BenchRun.h) called as an application or another tool calls it, without the
 // CLI: its results hold a run per technique and leave-out mode in run_index order, each shadow term scored
 // against the truth, error images written; a shard measures only its runs; options that cannot
-// be measured are usage errors that say why.
+// be measured are usage errors that say why. An application measures in its own context, which stays current
+// with its objects.
 #include "ScratchDirectory.h"
 
 #include <runtime/BenchRun.h>
+#include <runtime/GlApi.h>
+#include <runtime/GlContext.h>
 
 #include <gtest/gtest.h>
 
@@ -57,6 +60,34 @@ TEST(BenchRun, MeasuresEachTechniqueAndLeaveOutModeInRunIndexOrder) {
         EXPECT_TRUE(std::filesystem::exists(scratch.path() / *runs[i].errorImage));
     }
     EXPECT_FALSE(result.results.shard);
+}
+
+// As the pass API draws in the application's context, bench measures in it when given one: the results name
+// its renderer and backend, and afterwards it is still current with the application's objects in it (a
+// context of bench's own would have been destroyed, leaving no texture of the application's current).
+TEST(BenchRun, MeasuresInTheApplicationsContext) {
+    std::string error;
+    const std::unique_ptr<runtime::GlContext> context = runtime::createContext({}, error);
+    ASSERT_TRUE(context) << error;
+    GLuint texture = 0;
+    gl::GenTextures(1, &texture);
+    gl::BindTexture(GL_TEXTURE_2D, texture);  // a name becomes a texture when first bound
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    ASSERT_TRUE(gl::IsTexture(texture));
+
+    const ScratchDirectory scratch("bench_run_context");
+    runtime::BenchOptions options = tinyBench(scratch.path());
+    options.techniques = {"bilinear"};
+    options.context = context.get();
+    const runtime::BenchResult result = runtime::runBench(options, {});
+    ASSERT_EQ(result.status, runtime::BenchStatus::Measured) << result.error;
+    ASSERT_EQ(result.results.runs.size(), 1u);
+    ASSERT_TRUE(result.results.runs[0].error);
+    EXPECT_LT(result.results.runs[0].error->misclassifiedPercent, 5.0);
+    EXPECT_EQ(result.results.backend, runtime::backendName(context->backend()));
+    EXPECT_EQ(result.results.glRenderer, context->renderer());
+    EXPECT_TRUE(gl::IsTexture(texture));
+    gl::DeleteTextures(1, &texture);
 }
 
 TEST(BenchRun, AShardMeasuresOnlyItsRuns) {

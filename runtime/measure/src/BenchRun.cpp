@@ -227,11 +227,18 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
 
     // Each distinct diagnostic once: the same warning comes back every frame of every run.
     DiagnosticLog sink(log.diagnostic);
-    ContextOptions contextOptions;
-    contextOptions.backend = o.backend;
-    std::string contextError;
-    std::unique_ptr<GlContext> context = createContext(contextOptions, contextError);
-    if (!context) return failed(contextError);
+    std::unique_ptr<GlContext> ownContext;
+    GlContext* context = o.context;
+    if (context) {
+        context->makeCurrent();
+    } else {
+        ContextOptions contextOptions;
+        contextOptions.backend = o.backend;
+        std::string contextError;
+        ownContext = createContext(contextOptions, contextError);
+        if (!ownContext) return failed(contextError);
+        context = ownContext.get();
+    }
     const std::string glRenderer = context->renderer();
     note(glRenderer);
 

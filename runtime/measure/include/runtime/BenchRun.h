@@ -47,7 +47,11 @@ struct BenchOptions {
     int warmup = 2;                         // untimed frames before them
     int width = 640;
     int height = 480;
-    Backend backend = Backend::Auto;
+    Backend backend = Backend::Auto;  // of the context bench creates, unless `context` is given
+    // An application's context (createContext) to measure in, as the pass API draws in the application's
+    // context: made current and left current, holding the application's own objects untouched; bench then
+    // creates none. Null: bench creates a context of `backend` for the run and destroys it after.
+    GlContext* context = nullptr;
     GroundTruthOptions truth;
     std::optional<float> areaRadius;        // every light's areaRadius, when given
     std::optional<float> lightAngleToView;  // degrees: every directional light turned from the view
