@@ -183,13 +183,18 @@ public:
         if (!ok) fail(what);
     }
     bool failed() const { return !mError.empty(); }
+    // What could not be read, and the byte of the content where the read stood.
     const std::string& error() const { return mError; }
+    size_t errorOffset() const { return mErrorOffset; }
     bool atEnd() const { return mOffset == mBytes.size(); }
     size_t offset() const { return mOffset; }
 
 private:
     void fail(const std::string& what) {
-        if (mError.empty()) mError = what + " at byte " + std::to_string(mOffset) + " of the content";
+        if (mError.empty()) {
+            mError = what;
+            mErrorOffset = mOffset;
+        }
         mOffset = mBytes.size();
     }
     uint64_t integer(size_t width, const char* what) {
@@ -217,6 +222,7 @@ private:
     std::string_view mBytes;
     size_t mOffset = 0;
     std::string mError;
+    size_t mErrorOffset = 0;
 };
 
 }  // namespace fx::detail

@@ -185,9 +185,8 @@ std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes
         return nullptr;
     }
     if (bytes.size() < kHeaderSize) {
-        diagnostics.report(DiagId::CompiledEffectTruncated, where,
-                           {"its header ends after " + std::to_string(bytes.size()) + " of " +
-                            std::to_string(kHeaderSize) + " bytes"});
+        diagnostics.report(DiagId::CompiledEffectHeaderTruncated, where,
+                           {std::to_string(bytes.size()), std::to_string(kHeaderSize)});
         return nullptr;
     }
     const uint64_t version = readLittleEndian(bytes, 8, 4);
@@ -200,18 +199,17 @@ std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes
     const uint64_t size = readLittleEndian(bytes, 12, 8);
     const std::string_view content = bytes.substr(kHeaderSize);
     if (content.size() < size) {
-        diagnostics.report(
-            DiagId::CompiledEffectTruncated, where,
-            {std::to_string(content.size()) + " of " + std::to_string(size) + " bytes of content"});
+        diagnostics.report(DiagId::CompiledEffectContentTruncated, where,
+                           {std::to_string(content.size()), std::to_string(size)});
         return nullptr;
     }
     if (content.size() > size) {
-        diagnostics.report(DiagId::CompiledEffectCorrupt, where,
-                           {std::to_string(content.size() - size) + " bytes follow the content"});
+        diagnostics.report(DiagId::CompiledEffectTrailingBytes, where,
+                           {std::to_string(content.size() - size)});
         return nullptr;
     }
     if (contentHash(content) != readLittleEndian(bytes, 20, 8)) {
-        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {"its content does not match its hash"});
+        diagnostics.report(DiagId::CompiledEffectHashMismatch, where);
         return nullptr;
     }
     auto effect = std::make_unique<CompiledEffect>();
@@ -219,11 +217,12 @@ std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes
     reader(*effect);
     if (!reader.failed() && !reader.atEnd()) reader.require(false, "content left over");
     if (reader.failed()) {
-        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {reader.error()});
+        diagnostics.report(DiagId::CompiledEffectUndecodable, where,
+                           {reader.error(), std::to_string(reader.errorOffset())});
         return nullptr;
     }
     if (std::string error = Checks(*effect).run(); !error.empty()) {
-        diagnostics.report(DiagId::CompiledEffectCorrupt, where, {error});
+        diagnostics.report(DiagId::CompiledEffectInconsistent, where, {error});
         return nullptr;
     }
     return effect;

@@ -188,13 +188,12 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
             if (i >= 0 && static_cast<size_t>(i) < p->initializer->args.size() &&
                 p->initializer->args[static_cast<size_t>(i)].kind == Expr::Kind::Compile)
                 return &p->initializer->args[static_cast<size_t>(i)];
-            error(DiagId::InvalidCompileExpression, s.value.args[1].loc,
-                  {"index " + std::to_string(i) + " is outside shader array '" + p->name + "'"});
+            error(DiagId::CompileShaderArrayIndexOutOfRange, s.value.args[1].loc,
+                  {std::to_string(i), p->name});
             return nullptr;
         }
     }
-    error(DiagId::InvalidCompileExpression, s.value.loc,
-          {"'" + s.value.str() + "' is not a compile expression"});
+    error(DiagId::NotCompileExpression, s.value.loc, {s.value.str()});
     return nullptr;
 }
 

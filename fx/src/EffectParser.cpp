@@ -44,7 +44,7 @@ void Parser::parseEffect() {
         mTokens, mText, mFunctionRanges, [this](const Token& t) { return isTypeName(t); }, mEffect);
     if (const auto& first = mRefusals.first(); mEffect.techniques.empty() && first) {
         try {
-            error(DiagId::AllTechniquesRefused, first->loc, {first->name, first->reason});
+            error(first->refusal.allLeftOut, first->loc, {first->name});
         } catch (const TooManyErrors&) {
         }
     }

@@ -141,9 +141,9 @@ public:
         for (const auto& [key, s] : mLast) {
             const auto [id, index] = key;
             if (id == RenderStateId::WorldTransform && index > 0)
-                unsupported(*s, "WorldTransform[" + std::to_string(index) + "] (vertex blending)");
+                unsupported(*s, DiagId::FixedFunctionVertexBlending, {std::to_string(index)});
             else if (id >= RenderStateId::LightEnable && id <= RenderStateId::LightPhi && index >= kLights)
-                unsupported(*s, "light " + std::to_string(index) + " (D3D9 lit with lights 0-7)");
+                unsupported(*s, DiagId::FixedFunctionLightBeyondEighth, {std::to_string(index)});
         }
     }
 
@@ -195,15 +195,16 @@ public:
                s->value.number != 0;
     }
 
-    void unsupported(const StateAssignment& s, const std::string& what) {
-        mDiagnostics.report(DiagId::FixedFunctionUnsupported, s.loc, {what});
+    void unsupported(const StateAssignment& s, DiagId what, const std::vector<std::string>& args) {
+        mDiagnostics.report(what, s.loc, args);
         mFailed = true;
     }
-    void unsupportedAt(RenderStateId id, int index, const std::string& what) {
+    void unsupportedAt(RenderStateId id, int index, DiagId what, const std::vector<std::string>& args) {
         if (const StateAssignment* s = find(id, index))
-            unsupported(*s, what);
+            unsupported(*s, what, args);
         else
-            unsupported(StateAssignment{std::string(renderStateInfo(id).name), index, {}, mPass.loc}, what);
+            unsupported(StateAssignment{std::string(renderStateInfo(id).name), index, {}, mPass.loc}, what,
+                        args);
     }
 
     const Pass& pass() const { return mPass; }
@@ -315,7 +316,8 @@ std::string vertexStage(FixedFunctionStates& states, const std::string& name, Un
             const std::string enabled = states.flag(u, Id::LightEnable, i, false);
             const int type = states.choice(Id::LightType, i, kPoint);
             if (type != kPoint && type != kSpot && type != kDirectional) {
-                states.unsupportedAt(Id::LightType, i, "light type " + std::to_string(type));
+                states.unsupportedAt(Id::LightType, i, DiagId::FixedFunctionLightType,
+                                     {std::to_string(type)});
                 continue;
             }
             const std::string light = "fx_light" + std::to_string(i);
@@ -517,15 +519,15 @@ std::string pixelStage(FixedFunctionStates& states, const std::string& name, Uni
         if (colorOp == kDisable) break;  // D3D9 stops at the first disabled stage
         const std::string where = "texture stage " + std::to_string(stage);
         if (stage >= kTextureStages) {
-            states.unsupportedAt(Id::ColorOp, stage, where + " (stages 0 and 1 are generated)");
+            states.unsupportedAt(Id::ColorOp, stage, DiagId::FixedFunctionTextureStageBeyondSecond,
+                                 {std::to_string(stage)});
             break;
         }
         const int alphaOp = states.choice(Id::AlphaOp, stage, stage == 0 ? kSelectArg1 : kDisable);
         const int texcoord = states.choice(Id::TexCoordIndex, stage, stage);
         if (texcoord != 0 && texcoord != 1) {
-            states.unsupportedAt(
-                Id::TexCoordIndex, stage,
-                "TexCoordIndex " + std::to_string(texcoord) + " (texture coordinate sets 0 and 1)");
+            states.unsupportedAt(Id::TexCoordIndex, stage, DiagId::FixedFunctionTexCoordIndex,
+                                 {std::to_string(texcoord)});
             continue;
         }
         // A stage without a texture reads white, as the runtime's stand-in pixel stage does.
@@ -539,7 +541,8 @@ std::string pixelStage(FixedFunctionStates& states, const std::string& name, Uni
                 const int code = states.choice(id, stage, fallback);
                 std::optional<std::string> text = stageArgument(code);
                 if (!text) {
-                    states.unsupportedAt(id, stage, "the argument " + std::to_string(code) + " of " + where);
+                    states.unsupportedAt(id, stage, DiagId::FixedFunctionStageArgument,
+                                         {std::to_string(code), std::to_string(stage)});
                     return std::nullopt;
                 }
                 out.push_back("(" + *text + ")");
@@ -552,16 +555,16 @@ std::string pixelStage(FixedFunctionStates& states, const std::string& name, Uni
         const std::optional<std::string> colorValue =
             stageOperation(colorOp, (*color)[0], (*color)[1], (*color)[2], false);
         if (!colorValue) {
-            states.unsupportedAt(Id::ColorOp, stage,
-                                 "the operation " + std::to_string(colorOp) + " of " + where);
+            states.unsupportedAt(Id::ColorOp, stage, DiagId::FixedFunctionStageOperation,
+                                 {std::to_string(colorOp), std::to_string(stage)});
             continue;
         }
         std::optional<std::string> alphaValue = "fx_current";
         if (alphaOp != kDisable)
             alphaValue = stageOperation(alphaOp, (*alpha)[0], (*alpha)[1], (*alpha)[2], true);
         if (!alphaValue) {
-            states.unsupportedAt(Id::AlphaOp, stage,
-                                 "the operation " + std::to_string(alphaOp) + " of " + where);
+            states.unsupportedAt(Id::AlphaOp, stage, DiagId::FixedFunctionStageOperation,
+                                 {std::to_string(alphaOp), std::to_string(stage)});
             continue;
         }
         body += "    {  // " + where + "\n";

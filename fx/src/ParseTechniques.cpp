@@ -124,8 +124,8 @@ void Parser::parseSetCall(Pass& pass, const Token& name) {
         mStates.normalizeCompileShader(value);
         checkStreamOutput(value);
     }
-    if (std::optional<std::string> reason = unsupportedShaderValue(value, mEffect)) {
-        mRefusals.refuse(value.loc, *reason);
+    if (std::optional<ShaderValueRefusal> refusal = unsupportedShaderValue(value, mEffect)) {
+        mRefusals.refuse(value.loc, *refusal);
         return;
     }
     mStates.normalizeCompileShader(value);

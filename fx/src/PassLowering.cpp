@@ -277,10 +277,9 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
         for (ShaderStage other : {ShaderStage::Vertex, ShaderStage::Fragment, ShaderStage::Geometry,
                                   ShaderStage::Hull, ShaderStage::Domain, ShaderStage::Compute})
             if (other != stage && profileMatches(compile.profile, other)) {
-                diagnostics.report(
-                    DiagId::InvalidCompileExpression, compile.loc,
-                    {"'" + compile.profile + "' is a " + std::string(shaderStageName(other)) +
-                     "-shader profile, used for the " + std::string(shaderStageName(stage)) + " shader"});
+                diagnostics.report(DiagId::ProfileOfOtherStage, compile.loc,
+                                   {compile.profile, std::string(shaderStageName(other)),
+                                    std::string(shaderStageName(stage))});
                 return std::nullopt;
             }
         diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});

@@ -60,9 +60,7 @@ void Compiler::textures() {
                     std::snprintf(text, sizeof text, "%g", static_cast<double>(side));
                     return std::string(text);
                 };
-                error(
-                    DiagId::InvalidDimensions, loc,
-                    {shown(w) + "x" + shown(h) + " (each side must be 1.." + std::to_string(maxSize) + ")"});
+                error(DiagId::RenderTargetSizeOutOfRange, loc, {shown(w), shown(h), std::to_string(maxSize)});
                 return false;
             }
             return true;
@@ -108,7 +106,7 @@ void Compiler::textures() {
                 t.viewportRatio[1] = v->data.size() > 1 ? v->data[1] : t.viewportRatio[0];
                 if (t.viewportRatio[0] <= 0 || t.viewportRatio[1] <= 0 || t.viewportRatio[0] > 16 ||
                     t.viewportRatio[1] > 16)
-                    error(DiagId::InvalidDimensions, a->loc, {"ViewPortRatio must be in (0, 16]"});
+                    error(DiagId::ViewportRatioOutOfRange, a->loc, {});
             }
         }
         if (const Annotation* a = p.annotation("Format")) {

@@ -108,10 +108,7 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                     case ScriptCommand::Kind::Clear: {
                         // `Clear=;` names no buffer: FX Composer warned and cleared nothing.
                         if (value.empty()) {
-                            diagnostics.report(DiagId::ScriptCommandIgnored, loc,
-                                               {name,
-                                                "it names no buffer (Color, Depth, Stencil, "
-                                                "DepthStencil or All); nothing is cleared"});
+                            diagnostics.report(DiagId::ScriptClearNamesNoBuffer, loc, {name});
                             ok = false;
                             break;
                         }

@@ -34,9 +34,8 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
     std::vector<bool> ignored(commands.size(), false);
     for (size_t index = 0; index < commands.size(); ++index) {
         const ScriptCommand& c = commands[index];
-        auto ignore = [&](const std::string& why) {
-            mDiagnostics.report(DiagId::ScriptCommandIgnored, c.loc,
-                                {std::string(scriptCommandName(c.kind)), why});
+        auto ignore = [&](DiagId why) {
+            mDiagnostics.report(why, c.loc, {std::string(scriptCommandName(c.kind)), c.value});
             ignored[index] = true;
         };
         switch (c.kind) {
@@ -55,9 +54,7 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 // A parameter's name or a literal ("0.5", "1,0,0,1"), as the runtime reads it.
                 const std::optional<std::vector<float>> numbers = parseLiteralNumbers(c.value);
                 const bool literal = numbers && !numbers->empty();
-                if (!mIndex.count(c.value) && !literal)
-                    ignore("'" + c.value +
-                           "' is neither a parameter nor a number; the clear value stays as it was");
+                if (!mIndex.count(c.value) && !literal) ignore(DiagId::ScriptClearValueIgnored);
                 break;
             }
             case ScriptCommand::Kind::RenderColorTarget:
@@ -74,8 +71,8 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                     isTarget =
                         isTarget || (it != mIndex.end() && t.parameter == it->second && t.kind == want);
                 if (!isTarget)
-                    ignore("'" + c.value + "' is not a " + (wantDepth ? "depth-stencil" : "render") +
-                           "-target texture; the pass draws into the target bound before");
+                    ignore(wantDepth ? DiagId::ScriptDepthTargetNotTarget
+                                     : DiagId::ScriptColorTargetNotTarget);
                 break;
             }
             case ScriptCommand::Kind::Technique: {

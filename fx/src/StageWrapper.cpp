@@ -101,9 +101,8 @@ std::string widenToFloat4(const std::string& name, int components) {
 
 bool WrapperBuilder::everyArgumentTaken(size_t uniformCount) {
     if (uniformCount >= mCompile.args.size()) return true;
-    return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                {"'" + mFn.name + "' has " + std::to_string(uniformCount) + " uniform parameter(s), " +
-                 std::to_string(mCompile.args.size()) + " argument(s) given"});
+    return fail(DiagId::CompileTooManyArguments, mCompile.loc,
+                {mFn.name, std::to_string(uniformCount), std::to_string(mCompile.args.size())});
 }
 
 bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, std::string& value,
@@ -114,8 +113,7 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
     else if (p.defaultValue)
         expr = &*p.defaultValue;
     else
-        return fail(DiagId::InvalidCompileExpression, mCompile.loc,
-                    {"no argument for uniform parameter '" + p.name + "' of '" + mFn.name + "'"});
+        return fail(DiagId::CompileArgumentMissing, mCompile.loc, {p.name, mFn.name});
     if (p.type.isSampler() || p.type.isTexture()) {
         const Parameter* s =
             expr->kind == Expr::Kind::Identifier ? mEffect.findParameter(expr->text) : nullptr;
@@ -125,17 +123,14 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
                       ? s->type.base == p.type.base
                       : isSamplerType(s->type));
         if (!fits)
-            return fail(
-                DiagId::InvalidCompileExpression, expr->loc,
-                {"argument for " + std::string(p.type.isTexture() ? "texture" : "sampler") + " parameter '" +
-                 p.name + "' must name an effect " + (p.type.isTexture() ? "texture" : "sampler")});
+            return fail(p.type.isTexture() ? DiagId::CompileTextureArgumentNotTexture
+                                           : DiagId::CompileSamplerArgumentNotSampler,
+                        expr->loc, {p.name});
         value = s->name;
         return true;
     }
     if (!isNumericType(p.type))
-        return fail(
-            DiagId::InvalidCompileExpression, expr->loc,
-            {"uniform parameter '" + p.name + "' of type " + hlslTypeName(p.type) + " is not supported"});
+        return fail(DiagId::CompileUniformTypeUnsupported, expr->loc, {p.name, hlslTypeName(p.type)});
     if (isLiteralOnly(*expr)) {
         // Folded, so that `if (PCF)` on a literal argument compiles away as in fxc.
         auto v = evaluate(*expr, nullptr, &p.type, &mDiagnostics);

@@ -243,7 +243,7 @@ void StateAssignments::normalizeCompileShader(Expr& e) {
     if (e.kind != Expr::Kind::Call || e.text != "CompileShader") return;
     if (e.args.size() != 2 || e.args[0].kind != Expr::Kind::Identifier ||
         e.args[1].kind != Expr::Kind::Call) {
-        error(DiagId::InvalidCompileExpression, e.loc, {"expected CompileShader(profile, Function(...))"});
+        error(DiagId::CompileShaderCallInvalid, e.loc, {});
         return;
     }
     Expr compiled;

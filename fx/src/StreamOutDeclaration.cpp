@@ -103,14 +103,12 @@ std::vector<StreamOutEntry> parseStreamOutDeclaration(const Expr& declaration,
         StreamOutEntry element;
         element.text = entry;
         element.loc = stringLocation(declaration, first);
-        auto fail = [&](const std::string& why) {
-            error(DiagId::InvalidStreamOutDeclaration, element.loc, {entry, why});
-        };
+        auto fail = [&](DiagId id, const std::string& what = {}) { error(id, element.loc, {entry, what}); };
         std::string_view rest(entry);
         if (size_t colon = rest.find(':'); colon != std::string_view::npos) {
             std::string_view slot = rest.substr(0, colon);
             if (slot.size() != 1 || slot[0] < '0' || slot[0] >= '0' + kStreamOutSlots) {
-                fail("the output slot is not one of 0..3");
+                fail(DiagId::StreamOutSlotInvalid);
                 continue;
             }
             element.slot = slot[0] - '0';
@@ -119,7 +117,7 @@ std::vector<StreamOutEntry> parseStreamOutDeclaration(const Expr& declaration,
         }
         std::string_view name = rest.substr(0, rest.find('.'));
         if (name.empty()) {
-            fail("it names no semantic");
+            fail(DiagId::StreamOutSemanticMissing);
             continue;
         }
         if (name != "$SKIP") {
@@ -130,7 +128,7 @@ std::vector<StreamOutEntry> parseStreamOutDeclaration(const Expr& declaration,
             for (size_t i = 0; identifier && i < digits; ++i)
                 identifier = std::isalnum(static_cast<unsigned char>(name[i])) || name[i] == '_';
             if (!identifier || name.size() - digits > 4) {
-                fail("'" + std::string(name) + "' is not a semantic name with an optional index");
+                fail(DiagId::StreamOutSemanticNameInvalid, std::string(name));
                 continue;
             }
             if (digits < name.size()) element.semanticIndex = std::stoi(std::string(name.substr(digits)));
@@ -140,7 +138,7 @@ std::vector<StreamOutEntry> parseStreamOutDeclaration(const Expr& declaration,
         if (size_t dot = rest.find('.'); dot != std::string_view::npos) {
             std::string_view mask = rest.substr(dot + 1);
             if (!readMask(mask, element.startComponent, element.componentCount)) {
-                fail("'" + std::string(mask) + "' is not a component mask (contiguous components of xyzw)");
+                fail(DiagId::StreamOutMaskInvalid, std::string(mask));
                 continue;
             }
         }
@@ -161,10 +159,7 @@ void validateConstructGSWithSO(const Expr& call, const Effect& effect, const Rep
     const bool shader = !call.args.empty() && (call.args[0].kind == Expr::Kind::Compile ||
                                                call.args[0].kind == Expr::Kind::Identifier);
     if (!shader || !(fx10 || fx11)) {
-        error(
-            DiagId::InvalidCompileExpression, call.loc,
-            {"expected ConstructGSWithSO(shader, \"declaration\") or ConstructGSWithSO(shader, \"stream0\", "
-             "\"stream1\", \"stream2\", \"stream3\", rasterizedStream)"});
+        error(DiagId::ConstructGSWithSOCallInvalid, call.loc, {});
         return;
     }
     std::string function;
@@ -177,13 +172,11 @@ void validateConstructGSWithSO(const Expr& call, const Effect& effect, const Rep
                 e.semantic + (e.semanticIndex ? std::to_string(e.semanticIndex) : "");
             auto found = outputs->find({upperCase(e.semantic), e.semanticIndex});
             if (found == outputs->end())
-                error(DiagId::InvalidStreamOutDeclaration, e.loc,
-                      {e.text, "'" + function + "' writes no output '" + semantic + "'"});
+                error(DiagId::StreamOutOutputMissing, e.loc, {e.text, function, semantic});
             else if (e.startComponent + e.componentCount > found->second)
-                error(DiagId::InvalidStreamOutDeclaration, e.loc,
-                      {e.text, "output '" + semantic + "' of '" + function + "' has " +
-                                   std::to_string(found->second) + " component" +
-                                   (found->second == 1 ? "" : "s")});
+                error(DiagId::StreamOutMaskBeyondOutput, e.loc,
+                      {e.text, semantic, function,
+                       std::to_string(found->second) + (found->second == 1 ? " component" : " components")});
         }
     }
 }

@@ -5,10 +5,12 @@
 
 namespace fx::detail {
 
-std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect&) {
+std::optional<ShaderValueRefusal> unsupportedShaderValue(const Expr& value, const Effect&) {
     if (value.kind == Expr::Kind::Call && value.text == "BindInterfaces")
-        return "dynamic shader linkage (BindInterfaces) is not supported: GLSL has no interfaces to bind at "
-               "run time";
+        return ShaderValueRefusal{DiagId::TechniqueRefusedDynamicLinkage,
+                                  DiagId::AllTechniquesRefusedDynamicLinkage,
+                                  "dynamic shader linkage (BindInterfaces) is not supported: GLSL has no "
+                                  "interfaces to bind at run time"};
     return std::nullopt;
 }
 
@@ -16,9 +18,9 @@ bool TechniqueRefusals::leaveOut(const Technique& technique, DiagnosticSink& dia
                                  std::vector<RefusedTechnique>& leftOut) {
     if (!mCurrent) return false;
     const std::string name = technique.name.empty() ? "(unnamed)" : technique.name;
-    diagnostics.report(DiagId::TechniqueRefused, mCurrent->loc, {name, mCurrent->reason});
-    if (!mFirst) mFirst = Refused{name, mCurrent->reason, mCurrent->loc};
-    leftOut.push_back({name, technique.group, mCurrent->reason, mCurrent->loc});
+    diagnostics.report(mCurrent->refusal.warning, mCurrent->loc, {name});
+    if (!mFirst) mFirst = Refused{name, mCurrent->refusal, mCurrent->loc};
+    leftOut.push_back({name, technique.group, mCurrent->refusal.reason, mCurrent->loc});
     mCurrent.reset();
     return true;
 }

@@ -16,21 +16,27 @@
 namespace fx::detail {
 
 // Why GL cannot run a D3D10 pass's Set*Shader(value), where the value says so by itself: dynamic linkage
-// (BindInterfaces).
-std::optional<std::string> unsupportedShaderValue(const Expr& value, const Effect& effect);
+// (BindInterfaces). `warning` says it of the technique left out while another runs, `allLeftOut` of the
+// first technique when every one is left out; `reason` is the warning's text after the technique's name.
+struct ShaderValueRefusal {
+    DiagId warning;
+    DiagId allLeftOut;
+    std::string reason;
+};
+std::optional<ShaderValueRefusal> unsupportedShaderValue(const Expr& value, const Effect& effect);
 
 // The parser's refusals: the first reason of the technique being parsed, the first technique left out.
 class TechniqueRefusals {
 public:
     struct Refused {
         std::string name;
-        std::string reason;
+        ShaderValueRefusal refusal;
         SourceLoc loc;
     };
     void beginTechnique() { mCurrent.reset(); }
     // Something in the technique being parsed that GL cannot run: the first reason is reported.
-    void refuse(const SourceLoc& loc, const std::string& reason) {
-        if (!mCurrent) mCurrent = Refused{"", reason, loc};
+    void refuse(const SourceLoc& loc, const ShaderValueRefusal& refusal) {
+        if (!mCurrent) mCurrent = Refused{"", refusal, loc};
     }
     // At the technique's end: true when it is left out, reported (never silently: the technique is named,
     // with what GL cannot run and where it stands) and added to `leftOut`.

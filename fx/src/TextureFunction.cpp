@@ -92,7 +92,7 @@ void Compiler::textureFunction(const Parameter& p, const Annotation& annotation,
             t.depth = t.width;
         }
         if (!(t.depth >= 1 && t.depth <= 2048)) {
-            error(DiagId::InvalidDimensions, p.loc, {"a volume's depth must be 1..2048"});
+            error(DiagId::VolumeDepthOutOfRange, p.loc, {});
             return;
         }
     }

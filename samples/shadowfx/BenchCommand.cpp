@@ -8,6 +8,7 @@
 #include "PeerProgram.h"
 
 #include <report/BenchReport.h>
+#include <report/BenchResults.h>
 #include <report/BenchShard.h>
 #include <runtime/BenchRun.h>
 #include <runtime/PeerRun.h>
@@ -231,7 +232,8 @@ int benchCommand(const Arguments& args) {
         return result.status == runtime::BenchStatus::UsageError ? 2 : 1;
     }
     std::string plotNote, writeError;
-    if (!report::writeBenchOutputs(o.outDir, result.document, plotNote, writeError)) {
+    if (!report::writeBenchOutputs(o.outDir, report::benchResultsJson(result.results), plotNote,
+                                   writeError)) {
         std::cerr << "shadowfx bench: " << writeError << "\n";
         return 1;
     }

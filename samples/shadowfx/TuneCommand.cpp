@@ -14,6 +14,7 @@
 #include <runtime/DiagnosticLog.h>
 #include <runtime/ShadowMeasurement.h>
 #include <report/BenchReport.h>
+#include <report/BenchResults.h>
 #include <report/TuneSearch.h>
 #include <report/TuneSurfacePlot.h>
 
@@ -81,12 +82,12 @@ struct Batches {
             if (!result.error.empty()) std::cerr << "shadowfx tune: " << result.error << "\n";
             return false;
         }
+        const Json results = report::benchResultsJson(result.results);
         std::string plotNote, writeError;
-        if (!report::writeBenchOutputs(options.outDir, result.document, plotNote, writeError)) {
+        if (!report::writeBenchOutputs(options.outDir, results, plotNote, writeError)) {
             std::cerr << "shadowfx tune: " << writeError << "\n";
             return false;
         }
-        const Json& results = result.document;
         if (first.is_null()) first = results;
         for (size_t s = 0; s < settings.size(); ++s) {
             double error = 0.0, slowest = 0.0;

@@ -74,7 +74,7 @@ TEST(CompiledEffectFiles, ADamagedFileIsALocatedError) {
     fx::DiagnosticList errors;
     EXPECT_FALSE(runtime::EffectRenderer::createFromFile(file, errors));
     ASSERT_EQ(errors.items().size(), 1u) << errors.str();
-    EXPECT_EQ(errors.items()[0].id, fx::DiagId::CompiledEffectTruncated);
+    EXPECT_EQ(errors.items()[0].id, fx::DiagId::CompiledEffectContentTruncated);
     EXPECT_EQ(errors.items()[0].loc.file, file);
 }
 

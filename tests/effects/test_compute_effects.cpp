@@ -255,7 +255,7 @@ technique11 Filled < string Script = "Pass=Fill;"; >
         fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
     EXPECT_FALSE(runtime::EffectRenderer::create(compiled, diagnostics));
-    ASSERT_EQ(countDiagnostics(diagnostics, fx::DiagId::InvalidDimensions), 1) << diagnostics.str();
+    ASSERT_EQ(countDiagnostics(diagnostics, fx::DiagId::ImageSizeOutOfRange), 1) << diagnostics.str();
     const fx::Diagnostic& refused = diagnostics.items().back();
     EXPECT_EQ(refused.loc.line, 1);
     EXPECT_NE(refused.message.find("Volume is 4 x 4 x 0"), std::string::npos) << refused.message;

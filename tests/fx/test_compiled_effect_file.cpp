@@ -175,7 +175,9 @@ TEST_F(DamagedFile, EveryTruncationIsAnError) {
     for (size_t size = 1; size < mBytes.size(); size += size < 64 ? 1 : mBytes.size() / 97 + 1) {
         SCOPED_TRACE(size);
         const std::string_view cut(mBytes.data(), size);
-        const DiagId expected = size < 8 ? DiagId::NotCompiledEffect : DiagId::CompiledEffectTruncated;
+        const DiagId expected = size < 8    ? DiagId::NotCompiledEffect
+                                : size < 28 ? DiagId::CompiledEffectHeaderTruncated
+                                            : DiagId::CompiledEffectContentTruncated;
         const std::string error = readError(cut, expected);
         EXPECT_EQ(error.rfind("shadow.sfxo: error: ", 0), 0u) << error;
     }
@@ -186,7 +188,7 @@ TEST_F(DamagedFile, AFlippedByteIsCorrupt) {
         std::string bytes = mBytes;
         bytes[at] = static_cast<char>(bytes[at] ^ 0x5a);
         EXPECT_EQ(
-            readError(bytes, DiagId::CompiledEffectCorrupt),
+            readError(bytes, DiagId::CompiledEffectHashMismatch),
             "shadow.sfxo: error: the compiled effect file is corrupt: its content does not match its hash");
     }
 }
@@ -238,19 +240,22 @@ TEST(CompiledEffectFile, AnUnknownRenderStateNameIsNamed) {
     const std::string unknown(name.size(), 'Q');
     content.replace(at + 4, name.size(), unknown);
 
-    const std::string error = readError(compiledEffectFileAround(content), DiagId::CompiledEffectCorrupt);
-    EXPECT_NE(error.find("an enumerator this shadowfx does not know ('" + unknown + "')"), std::string::npos)
+    const std::string error = readError(compiledEffectFileAround(content), DiagId::CompiledEffectUndecodable);
+    EXPECT_NE(error.find("corrupt: an enumerator this shadowfx does not know ('" + unknown + "') at byte " +
+                         std::to_string(at + 4 + name.size()) + " of the content"),
+              std::string::npos)
         << error;
 }
 
 TEST(CompiledEffectFile, DiagnosticIdsAreFoundByName) {
-    for (DiagId id : {DiagId::NotCompiledEffect, DiagId::CompiledEffectCorrupt})
+    for (DiagId id : {DiagId::NotCompiledEffect, DiagId::CompiledEffectUndecodable})
         EXPECT_EQ(findDiagnostic(diagnosticName(id)), id);
     EXPECT_FALSE(findDiagnostic("NoSuchDiagnostic"));
 }
 
 TEST_F(DamagedFile, TrailingBytesAreCorrupt) {
-    readError(mBytes + "x", DiagId::CompiledEffectCorrupt);
+    EXPECT_EQ(readError(mBytes + "x", DiagId::CompiledEffectTrailingBytes),
+              "shadow.sfxo: error: the compiled effect file is corrupt: 1 bytes follow the content");
 }
 
 }  // namespace

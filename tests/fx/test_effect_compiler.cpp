@@ -337,7 +337,7 @@ TEST(EffectCompiler, AnotherStagesProfileIsNamed) {
         "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile cs_5_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
-    EXPECT_EQ(diags.items().back().id, DiagId::InvalidCompileExpression) << diags.str();
+    EXPECT_EQ(diags.items().back().id, DiagId::ProfileOfOtherStage) << diags.str();
     EXPECT_NE(diags.str().find("'cs_5_0' is a compute-shader profile, used for the pixel shader"),
               std::string::npos)
         << diags.str();
@@ -393,14 +393,14 @@ TEST(EffectCompiler, ASamplerTextureOfTheWrongTypeSaysSo) {
         << diags.str();
 }
 
-TEST(EffectCompiler, InvalidDimensions) {
+TEST(EffectCompiler, RenderTargetSizeOutOfRange) {
     DiagnosticList diags;
     std::string src =
         "texture T : RENDERCOLORTARGET < int2 Dimensions = {0, 99999}; >;\n"
         "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
     EXPECT_FALSE(compile(src, diags));
     ASSERT_FALSE(diags.items().empty());
-    EXPECT_EQ(diags.items()[0].id, DiagId::InvalidDimensions) << diags.str();
+    EXPECT_EQ(diags.items()[0].id, DiagId::RenderTargetSizeOutOfRange) << diags.str();
 }
 
 TEST(EffectCompiler, ScriptUnknownPassAndTarget) {
@@ -420,7 +420,7 @@ technique t < string Script = "Pass=p; Pass=nope;"; >
             pass = true;
             EXPECT_EQ(d.loc.line, 3);
         }
-        if (d.id == DiagId::ScriptCommandIgnored) {  // FX Composer warned and drew on
+        if (d.id == DiagId::ScriptColorTargetNotTarget) {  // FX Composer warned and drew on
             target = true;
             EXPECT_EQ(d.severity, Severity::Warning);
             EXPECT_EQ(d.loc.line, 5);

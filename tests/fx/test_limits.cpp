@@ -60,7 +60,7 @@ TEST(Limits, RenderTargetSizeDefaultsTo16384) {
     EXPECT_TRUE(compile(withTarget(16384), options).compiled);
     Result tooLarge = compile(withTarget(16385), options);
     EXPECT_FALSE(tooLarge.compiled);
-    EXPECT_TRUE(reports(tooLarge, DiagId::InvalidDimensions, 1, 42));
+    EXPECT_TRUE(reports(tooLarge, DiagId::RenderTargetSizeOutOfRange, 1, 42));
 }
 
 TEST(Limits, RenderTargetSizeIsConfigurable) {
@@ -69,7 +69,7 @@ TEST(Limits, RenderTargetSizeIsConfigurable) {
     EXPECT_TRUE(compile(withTarget(1024), options).compiled);
     Result tooLarge = compile(withTarget(2048), options);
     EXPECT_FALSE(tooLarge.compiled);
-    EXPECT_TRUE(reports(tooLarge, DiagId::InvalidDimensions, 1, 42));
+    EXPECT_TRUE(reports(tooLarge, DiagId::RenderTargetSizeOutOfRange, 1, 42));
     EXPECT_NE(tooLarge.diagnostics.str().find("1..1024"), std::string::npos) << tooLarge.diagnostics.str();
 }
 

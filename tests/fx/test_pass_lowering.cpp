@@ -84,18 +84,18 @@ TEST_F(Lowered, ArgumentCountAndProfileErrors) {
     std::vector<LoweredArgument> args;
     DiagnosticList diags;
     EXPECT_FALSE(lowerStage(*effect, c, ShaderStage::Fragment, args, diags));
-    EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);
+    EXPECT_EQ(diags.items().at(0).id, DiagId::CompileTooManyArguments);
     diags.clear();
     c = compileOf(1);
     c.args.clear();
     EXPECT_FALSE(lowerStage(*effect, c, ShaderStage::Fragment, args, diags));
-    EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);
+    EXPECT_EQ(diags.items().at(0).id, DiagId::CompileArgumentMissing);
     diags.clear();
     EXPECT_FALSE(
         lowerStage(*effect, compileOf(0), ShaderStage::Fragment, args, diags));  // vs_3_0 as a pixel shader
     // A profile of the other stage is named as such ("'vs_3_0' is a vertex-shader profile, used for the pixel
     // shader"); UnsupportedProfile is for profiles no stage has.
-    EXPECT_EQ(diags.items().at(0).id, DiagId::InvalidCompileExpression);
+    EXPECT_EQ(diags.items().at(0).id, DiagId::ProfileOfOtherStage);
 }
 
 TEST(SemanticTables, LocationsAreFixed) {

@@ -145,7 +145,7 @@ TEST(SasScript, ClearFormsFxComposerTook) {
     EXPECT_EQ(commands[1].clear, ScriptCommand::ClearWhat::Depth);
     EXPECT_EQ(commands[2].clear, ScriptCommand::ClearWhat::Stencil);
     ASSERT_EQ(diags.items().size(), 1u);
-    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptCommandIgnored);
+    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptClearNamesNoBuffer);
     EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
     EXPECT_EQ(diags.items()[0].loc.column, 27);
 }

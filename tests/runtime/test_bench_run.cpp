@@ -1,10 +1,13 @@
 // runtime::runBench (runtime/BenchRun.h) called as an application or another tool calls it, without the
-// CLI: its results document holds a run per technique and leave-out mode in run_index order, each shadow
-// term scored against the truth, error images written; a shard measures only its runs; options that cannot
-// be measured are usage errors that say why.
+// CLI: its results hold a run per technique and leave-out mode in run_index order, each shadow term scored
+// against the truth, error images written; a shard measures only its runs; options that cannot
+// be measured are usage errors that say why. An application measures in its own context, which stays current
+// with its objects.
 #include "ScratchDirectory.h"
 
 #include <runtime/BenchRun.h>
+#include <runtime/GlApi.h>
+#include <runtime/GlContext.h>
 
 #include <gtest/gtest.h>
 
@@ -42,20 +45,49 @@ TEST(BenchRun, MeasuresEachTechniqueAndLeaveOutModeInRunIndexOrder) {
     const runtime::BenchResult result = runtime::runBench(options, log);
     ASSERT_EQ(result.status, runtime::BenchStatus::Measured) << result.error;
     EXPECT_EQ(progressCalls, 4u);
-    const report::Json& runs = result.document["runs"];
+    const std::vector<report::BenchRunRecord>& runs = result.results.runs;
     ASSERT_EQ(runs.size(), 4u);
+    ASSERT_EQ(result.results.groundTruth.size(), 1u);
     for (size_t i = 0; i < runs.size(); ++i) {
-        EXPECT_EQ(runs[i]["run_index"], i);
-        EXPECT_EQ(runs[i]["technique"], i < 2 ? "bilinear" : "hardware");
-        EXPECT_EQ(runs[i]["leave_out"], i % 2 == 0);
-        ASSERT_TRUE(runs[i]["error"].is_object()) << runs[i].dump();
+        EXPECT_EQ(runs[i].runIndex, i);
+        EXPECT_EQ(runs[i].technique, i < 2 ? "bilinear" : "hardware");
+        EXPECT_EQ(runs[i].leaveOut, i % 2 == 0);
+        ASSERT_TRUE(runs[i].error);
         // A shadow map of the boxes scene gets most receivers right, and not all by being blank.
-        EXPECT_LT(runs[i]["error"]["misclassified_percent"].get<double>(), 5.0);
-        EXPECT_GT(result.document["ground_truth"][0]["shadowed_receiver_pixels"].get<int>(), 0);
-        EXPECT_TRUE(std::filesystem::exists(scratch.path() / runs[i]["error_image"].get<std::string>()));
+        EXPECT_LT(runs[i].error->misclassifiedPercent, 5.0);
+        EXPECT_GT(result.results.groundTruth[0].shadowedReceiverPixels, 0);
+        ASSERT_TRUE(runs[i].errorImage);
+        EXPECT_TRUE(std::filesystem::exists(scratch.path() / *runs[i].errorImage));
     }
-    EXPECT_EQ(result.document["schema_version"], report::kBenchSchemaVersion);
-    EXPECT_TRUE(result.document["shard"].is_null());
+    EXPECT_FALSE(result.results.shard);
+}
+
+// As the pass API draws in the application's context, bench measures in it when given one: the results name
+// its renderer and backend, and afterwards it is still current with the application's objects in it (a
+// context of bench's own would have been destroyed, leaving no texture of the application's current).
+TEST(BenchRun, MeasuresInTheApplicationsContext) {
+    std::string error;
+    const std::unique_ptr<runtime::GlContext> context = runtime::createContext({}, error);
+    ASSERT_TRUE(context) << error;
+    GLuint texture = 0;
+    gl::GenTextures(1, &texture);
+    gl::BindTexture(GL_TEXTURE_2D, texture);  // a name becomes a texture when first bound
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    ASSERT_TRUE(gl::IsTexture(texture));
+
+    const ScratchDirectory scratch("bench_run_context");
+    runtime::BenchOptions options = tinyBench(scratch.path());
+    options.techniques = {"bilinear"};
+    options.context = context.get();
+    const runtime::BenchResult result = runtime::runBench(options, {});
+    ASSERT_EQ(result.status, runtime::BenchStatus::Measured) << result.error;
+    ASSERT_EQ(result.results.runs.size(), 1u);
+    ASSERT_TRUE(result.results.runs[0].error);
+    EXPECT_LT(result.results.runs[0].error->misclassifiedPercent, 5.0);
+    EXPECT_EQ(result.results.backend, runtime::backendName(context->backend()));
+    EXPECT_EQ(result.results.glRenderer, context->renderer());
+    EXPECT_TRUE(gl::IsTexture(texture));
+    gl::DeleteTextures(1, &texture);
 }
 
 TEST(BenchRun, AShardMeasuresOnlyItsRuns) {
@@ -66,9 +98,10 @@ TEST(BenchRun, AShardMeasuresOnlyItsRuns) {
     ASSERT_TRUE(options.shard) << error;
     const runtime::BenchResult result = runtime::runBench(options, {});
     ASSERT_EQ(result.status, runtime::BenchStatus::Measured) << result.error;
-    ASSERT_EQ(result.document["runs"].size(), 1u);
-    EXPECT_EQ(result.document["runs"][0]["run_index"], 1);
-    EXPECT_EQ(result.document["shard"]["runs_total"], 2);
+    ASSERT_EQ(result.results.runs.size(), 1u);
+    EXPECT_EQ(result.results.runs[0].runIndex, 1u);
+    ASSERT_TRUE(result.results.shard);
+    EXPECT_EQ(result.results.runsTotal, 2u);
 }
 
 TEST(BenchRun, OptionsThatCannotBeMeasuredAreUsageErrors) {

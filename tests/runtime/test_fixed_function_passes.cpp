@@ -283,16 +283,18 @@ TEST(FixedFunctionPasses, WhatIsNotGeneratedIsALocatedError) {
         int column;
         const char* message;
     } cases[] = {
-        {"  WorldTransform[0] = <World>; ColorOp[0] = BumpEnvMap;", fx::DiagId::FixedFunctionUnsupported, 32,
+        {"  WorldTransform[0] = <World>; ColorOp[0] = BumpEnvMap;", fx::DiagId::FixedFunctionStageOperation,
+         32,
          "the fixed-function pipeline generated for this pass cannot run the operation 22 of texture stage "
          "0"},
         {"  WorldTransform[0] = <World>; ColorOp[0] = <Op>;", fx::DiagId::FixedFunctionStateNotConstant, 45,
          "invalid value for state 'ColorOp': must be a constant"},
-        {"  Texture[0] = <T>; ColorOp[1] = Add; ColorOp[2] = Modulate;", fx::DiagId::FixedFunctionUnsupported,
-         39, "the fixed-function pipeline generated for this pass cannot run texture stage 2"},
-        {"  WorldTransform[1] = <World>;", fx::DiagId::FixedFunctionUnsupported, 3,
+        {"  Texture[0] = <T>; ColorOp[1] = Add; ColorOp[2] = Modulate;",
+         fx::DiagId::FixedFunctionTextureStageBeyondSecond, 39,
+         "the fixed-function pipeline generated for this pass cannot run texture stage 2"},
+        {"  WorldTransform[1] = <World>;", fx::DiagId::FixedFunctionVertexBlending, 3,
          "the fixed-function pipeline generated for this pass cannot run WorldTransform[1]"},
-        {"  LightEnable[8] = true;", fx::DiagId::FixedFunctionUnsupported, 3,
+        {"  LightEnable[8] = true;", fx::DiagId::FixedFunctionLightBeyondEighth, 3,
          "the fixed-function pipeline generated for this pass cannot run light 8"},
     };
     for (const auto& c : cases) {

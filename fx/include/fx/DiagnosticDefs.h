@@ -34,10 +34,9 @@ FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
 FX_DIAGNOSTIC(Redefinition, Error, "redefinition of '{0}'")
 FX_DIAGNOSTIC(UnknownState, Error, "unknown state '{0}'")
 FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (expected one of: {2})")
-FX_DIAGNOSTIC(InvalidInitializer, Error, "invalid initializer for '{0}': {1}")
+// A technique the compiler leaves out while another runs; {1}: the message of the first error compiling
+// it, which carries its own id where every technique is left out and the errors are reported instead.
 FX_DIAGNOSTIC(TechniqueRefused, Warning, "technique '{0}' is left out: {1}")
-FX_DIAGNOSTIC(AllTechniquesRefused, Error,
-              "every technique of the effect is left out (the first: '{0}', {1}); nothing can run")
 // fxc's rules for annotations and structs, which glslang's HLSL front end does not enforce.
 FX_DIAGNOSTIC(AnnotationNamesAnnotation, Error,
               "annotation '{0}' is initialized from annotation '{1}': an annotation's value must be a "
@@ -164,12 +163,21 @@ FX_DIAGNOSTIC(StateObjectDynamicIndexFields, Error,
               "(element {1} differs from element 0)")
 FX_DIAGNOSTIC(StateObjectNotArray, Error, "invalid value for state '{0}': '{1}' is not an array of {2}s")
 
+// The parser's reason to leave a technique out while another runs (TechniqueRefused: the compiler's).
+FX_DIAGNOSTIC(
+    TechniqueRefusedDynamicLinkage, Warning,
+    "technique '{0}' is left out: dynamic shader linkage (BindInterfaces) is not supported: GLSL has "
+    "no interfaces to bind at run time")
+FX_DIAGNOSTIC(
+    AllTechniquesRefusedDynamicLinkage, Error,
+    "every technique of the effect is left out (the first: '{0}', dynamic shader linkage "
+    "(BindInterfaces) is not supported: GLSL has no interfaces to bind at run time); nothing can run")
+
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
 FX_DIAGNOSTIC(ScriptUnknownPass, Error, "script names pass '{0}', which technique '{1}' does not have")
 FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
               "script names render target '{0}', which is not a render-target texture")
-FX_DIAGNOSTIC(ScriptCommandIgnored, Warning, "script command '{0}' is ignored: {1}")
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
               "script names technique '{0}', which the effect does not have; skipped")
 FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
@@ -177,7 +185,6 @@ FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "LoopByCount without LoopEnd")
 FX_DIAGNOSTIC(ScriptLoopEndWithoutLoop, Error, "LoopEnd without LoopByCount")
 FX_DIAGNOSTIC(ScriptLoopIndexOutsideLoop, Error, "LoopGetIndex outside a loop")
-FX_DIAGNOSTIC(ScriptUnknownRenderPort, Error, "RenderPort names {0}")
 // Invalid script commands, one id per message.
 FX_DIAGNOSTIC(ScriptValueMissing, Error, "invalid script command '{0}': expected '=' and a value")
 FX_DIAGNOSTIC(ScriptClearInvalid, Error,
@@ -209,10 +216,32 @@ FX_DIAGNOSTIC(ScriptDispatchValueInvalid, Error,
 FX_DIAGNOSTIC(ScriptLoopCountNegative, Error,
               "invalid script command 'LoopByCount': '{0}' is not a non-negative count")
 
+// Commands FX Composer warned about and skipped, one id per reason ({0}: the command).
+FX_DIAGNOSTIC(ScriptClearNamesNoBuffer, Warning,
+              "script command '{0}' is ignored: it names no buffer (Color, Depth, Stencil, DepthStencil or "
+              "All); nothing is cleared")
+FX_DIAGNOSTIC(ScriptClearValueIgnored, Warning,
+              "script command '{0}' is ignored: '{1}' is neither a parameter nor a number; the clear value "
+              "stays as it was")
+FX_DIAGNOSTIC(
+    ScriptColorTargetNotTarget, Warning,
+    "script command '{0}' is ignored: '{1}' is not a render-target texture; the pass draws into the "
+    "target bound before")
+FX_DIAGNOSTIC(ScriptDepthTargetNotTarget, Warning,
+              "script command '{0}' is ignored: '{1}' is not a depth-stencil-target texture; the pass draws "
+              "into the target bound before")
+// A RenderPort the scene cannot give (runtime: the frame's scene decides).
+FX_DIAGNOSTIC(RenderPortLightNotInScene, Error,
+              "RenderPort names light '{0}', which scene '{1}' does not have")
+FX_DIAGNOSTIC(
+    RenderPortLightWithoutCascades, Error,
+    "RenderPort names cascade {0} of light '{1}', which has no cascades (its Parameterization is not "
+    "\"Cascaded\" or \"PSMCube\")")
+FX_DIAGNOSTIC(RenderPortCascadeOutOfRange, Error,
+              "RenderPort names cascade {0} of light '{1}', which has {2} (CascadeCount)")
+
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
-FX_DIAGNOSTIC(InvalidCompileExpression, Error, "invalid compile expression: {0}")
-FX_DIAGNOSTIC(InvalidStreamOutDeclaration, Error, "invalid stream-output declaration entry '{0}': {1}")
 FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
 // glslang's own HLSL error and warning text.
 FX_DIAGNOSTIC(HlslError, Error, "{0}")
@@ -360,8 +389,6 @@ FX_DIAGNOSTIC(MulDimensionMismatch, Error, "mul({0}, {1}): inner dimensions diff
 FX_DIAGNOSTIC(FunctionNotHostEvaluable, Error, "function '{0}' cannot be evaluated on the host")
 FX_DIAGNOSTIC(ConstructorComponentCount, Error, "{0} constructor needs {1} components, got {2}")
 FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
-FX_DIAGNOSTIC(FixedFunctionUnsupported, Error,
-              "the fixed-function pipeline generated for this pass cannot run {0} (docs/fixed-function.md)")
 // Compute passes (SetComputeShader; docs/d3d10.md, "Compute shaders and read-write resources").
 FX_DIAGNOSTIC(ComputeNumThreadsMissing, Error, "compute shader '{0}' has no [numthreads(x, y, z)] attribute")
 FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,
@@ -372,13 +399,75 @@ FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,
 FX_DIAGNOSTIC(ImplicitVectorTruncation, Warning,
               "implicit truncation of vector type (fxc's X3206): {0}, the first components kept")
 
+// What the fixed-function pipeline generated for a pass cannot run (docs/fixed-function.md).
+FX_DIAGNOSTIC(FixedFunctionVertexBlending, Error,
+              "the fixed-function pipeline generated for this pass cannot run WorldTransform[{0}] (vertex "
+              "blending) (docs/fixed-function.md)")
+FX_DIAGNOSTIC(
+    FixedFunctionLightBeyondEighth, Error,
+    "the fixed-function pipeline generated for this pass cannot run light {0} (D3D9 lit with lights "
+    "0-7) (docs/fixed-function.md)")
+FX_DIAGNOSTIC(FixedFunctionLightType, Error,
+              "the fixed-function pipeline generated for this pass cannot run light type {0} "
+              "(docs/fixed-function.md)")
+FX_DIAGNOSTIC(
+    FixedFunctionTextureStageBeyondSecond, Error,
+    "the fixed-function pipeline generated for this pass cannot run texture stage {0} (stages 0 and "
+    "1 are generated) (docs/fixed-function.md)")
+FX_DIAGNOSTIC(FixedFunctionTexCoordIndex, Error,
+              "the fixed-function pipeline generated for this pass cannot run TexCoordIndex {0} (texture "
+              "coordinate sets 0 and 1) (docs/fixed-function.md)")
+FX_DIAGNOSTIC(FixedFunctionStageArgument, Error,
+              "the fixed-function pipeline generated for this pass cannot run the argument {0} of texture "
+              "stage {1} (docs/fixed-function.md)")
+FX_DIAGNOSTIC(FixedFunctionStageOperation, Error,
+              "the fixed-function pipeline generated for this pass cannot run the operation {0} of texture "
+              "stage {1} (docs/fixed-function.md)")
+// Invalid compile expressions, one id per message.
+FX_DIAGNOSTIC(CompileTooManyArguments, Error,
+              "invalid compile expression: '{0}' has {1} uniform parameter(s), {2} argument(s) given")
+FX_DIAGNOSTIC(CompileArgumentMissing, Error,
+              "invalid compile expression: no argument for uniform parameter '{0}' of '{1}'")
+FX_DIAGNOSTIC(CompileTextureArgumentNotTexture, Error,
+              "invalid compile expression: argument for texture parameter '{0}' must name an effect texture")
+FX_DIAGNOSTIC(CompileSamplerArgumentNotSampler, Error,
+              "invalid compile expression: argument for sampler parameter '{0}' must name an effect sampler")
+FX_DIAGNOSTIC(CompileUniformTypeUnsupported, Error,
+              "invalid compile expression: uniform parameter '{0}' of type {1} is not supported")
+FX_DIAGNOSTIC(CompileShaderArrayIndexOutOfRange, Error,
+              "invalid compile expression: index {0} is outside shader array '{1}'")
+FX_DIAGNOSTIC(NotCompileExpression, Error, "invalid compile expression: '{0}' is not a compile expression")
+FX_DIAGNOSTIC(CompileShaderCallInvalid, Error,
+              "invalid compile expression: expected CompileShader(profile, Function(...))")
+FX_DIAGNOSTIC(ConstructGSWithSOCallInvalid, Error,
+              "invalid compile expression: expected ConstructGSWithSO(shader, \"declaration\") or "
+              "ConstructGSWithSO(shader, \"stream0\", \"stream1\", \"stream2\", \"stream3\", "
+              "rasterizedStream)")
+FX_DIAGNOSTIC(ProfileOfOtherStage, Error,
+              "invalid compile expression: '{0}' is a {1}-shader profile, used for the {2} shader")
+// Invalid stream-output declaration entries, one id per message ({0}: the entry).
+FX_DIAGNOSTIC(StreamOutSlotInvalid, Error,
+              "invalid stream-output declaration entry '{0}': the output slot is not one of 0..3")
+FX_DIAGNOSTIC(StreamOutSemanticMissing, Error,
+              "invalid stream-output declaration entry '{0}': it names no semantic")
+FX_DIAGNOSTIC(StreamOutSemanticNameInvalid, Error,
+              "invalid stream-output declaration entry '{0}': '{1}' is not a semantic name with an optional "
+              "index")
+FX_DIAGNOSTIC(StreamOutMaskInvalid, Error,
+              "invalid stream-output declaration entry '{0}': '{1}' is not a component mask (contiguous "
+              "components of xyzw)")
+FX_DIAGNOSTIC(StreamOutOutputMissing, Error,
+              "invalid stream-output declaration entry '{0}': '{1}' writes no output '{2}'")
+// {3}: the output's component count and the word, "1 component" or "3 components".
+FX_DIAGNOSTIC(StreamOutMaskBeyondOutput, Error,
+              "invalid stream-output declaration entry '{0}': output '{1}' of '{2}' has {3}")
+
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
 FX_DIAGNOSTIC(TextureCaseMismatch, Warning,
               "texture file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
 FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}")
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
-FX_DIAGNOSTIC(InvalidDimensions, Error, "invalid render-target size: {0}")
 FX_DIAGNOSTIC(SampleCountReduced, Warning,
               "'{0}' has {1} samples per texel; this OpenGL holds at most {2}, which it gets instead")
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
@@ -457,10 +546,19 @@ FX_DIAGNOSTIC(ImageFormatUnsupported, Error,
               "'{0}' ({1}) is an image of format '{2}'; shadowfx makes float and unorm images (float1, 2, 4 "
               "elements, unorm4)")
 
+// Sizes out of range, one id per message.
+FX_DIAGNOSTIC(RenderTargetSizeOutOfRange, Error,
+              "invalid render-target size: {0}x{1} (each side must be 1..{2})")
+FX_DIAGNOSTIC(ViewportRatioOutOfRange, Error, "invalid render-target size: ViewPortRatio must be in (0, 16]")
+FX_DIAGNOSTIC(VolumeDepthOutOfRange, Error, "invalid render-target size: a volume's depth must be 1..2048")
+// {1}: the image's width, width x height or width x height x depth.
+FX_DIAGNOSTIC(ImageSizeOutOfRange, Error, "invalid render-target size: {0} is {1}")
+
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
 FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")
 FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'{1}")
+// {1}: assimp's reason.
 FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
 FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
 // Invalid values in a scene file, one id per message ({0}: the key).
@@ -543,10 +641,10 @@ FX_DIAGNOSTIC(HostStepPassUnknown, Error, "{0}: technique '{1}' has no pass '{2}
 FX_DIAGNOSTIC(HostLightNotInScene, Error, "light: the scene has no light named '{0}'")
 // The framebuffer's own reason a step's target cannot be bound.
 FX_DIAGNOSTIC(HostTargetUnbindable, Error, "target: {0}")
+// A mesh file assimp read that holds nothing to draw (MeshImporter.cpp).
+FX_DIAGNOSTIC(MeshWithoutTriangles, Error, "cannot import mesh '{0}': the file has no triangles")
 
 // [SECTION] Compiled effect files (fx/CompiledEffectFile.h, docs/compiled-effect.md)
-FX_DIAGNOSTIC(CompiledEffectTruncated, Error, "the compiled effect file is truncated: {0}")
-FX_DIAGNOSTIC(CompiledEffectCorrupt, Error, "the compiled effect file is corrupt: {0}")
 FX_DIAGNOSTIC(
     CompiledEffectNewerFormat, Error,
     "the compiled effect file has format version {0}, newer than this shadowfx reads ({1}): use the "
@@ -558,6 +656,20 @@ FX_DIAGNOSTIC(
 FX_DIAGNOSTIC(NotCompiledEffect, Error,
               "not a compiled effect file (shadowfx compile EFFECT.fx --out EFFECT.sfxo writes one)")
 FX_DIAGNOSTIC(CompiledEffectWriteFailed, Error, "cannot write compiled effect file '{0}'")
+
+FX_DIAGNOSTIC(CompiledEffectHeaderTruncated, Error,
+              "the compiled effect file is truncated: its header ends after {0} of {1} bytes")
+FX_DIAGNOSTIC(CompiledEffectContentTruncated, Error,
+              "the compiled effect file is truncated: {0} of {1} bytes of content")
+FX_DIAGNOSTIC(CompiledEffectTrailingBytes, Error,
+              "the compiled effect file is corrupt: {0} bytes follow the content")
+FX_DIAGNOSTIC(CompiledEffectHashMismatch, Error,
+              "the compiled effect file is corrupt: its content does not match its hash")
+// {0}: what the reader could not decode (fx/src/BinaryArchive.h), {1} where.
+FX_DIAGNOSTIC(CompiledEffectUndecodable, Error,
+              "the compiled effect file is corrupt: {0} at byte {1} of the content")
+// {0}: which of the checks the runtime relies on failed (a reference pointing nowhere, a size out of range).
+FX_DIAGNOSTIC(CompiledEffectInconsistent, Error, "the compiled effect file is corrupt: {0}")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

@@ -276,7 +276,7 @@ struct Effect {
     std::vector<FunctionDecl> functions;
     std::vector<VerbatimDecl> verbatim;
     std::vector<Technique> techniques;
-    std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser, each with a TechniqueRefused
+    std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser, each with its warning
     std::vector<DeclRef> order;  // parameters, structs, functions and verbatim declarations in source order
     std::vector<std::string> includedFiles;  // every file the preprocessor opened, main file first
     SourceMap sourceMap;

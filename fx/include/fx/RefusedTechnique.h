@@ -14,7 +14,7 @@ namespace fx {
 struct RefusedTechnique {
     std::string name;    // "(unnamed)" for a technique without one
     std::string group;   // its D3D11 fxgroup, "" if none
-    std::string reason;  // what the TechniqueRefused warning says after the name
+    std::string reason;  // what the warning that left it out says after the name
     SourceLoc loc;       // where the construct that refused it stands
 };
 

@@ -79,7 +79,7 @@ std::optional<Mesh> importMesh(const std::string& path, const MeshImportOptions&
         return std::nullopt;
     }
     if (mesh.indices.empty()) {
-        diagnostics.report(fx::DiagId::MeshImportError, where, {path, "the file has no triangles"});
+        diagnostics.report(fx::DiagId::MeshWithoutTriangles, where, {path});
         return std::nullopt;
     }
 

@@ -1,6 +1,6 @@
 // BenchRun: see BenchRun.h.
 //
-// [SECTION] Result records  one run's error and timing as results.json writes them
+// [SECTION] Result records  one run's error and timing as the result records hold them
 // [SECTION] Statistics      median and spread of the timed frames
 // [SECTION] Runs            ground truth per scene, then effect x map size x scene x technique, then peers
 //
@@ -32,34 +32,31 @@ namespace runtime {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Json = report::Json;
+using report::BenchSpread;
 
 // [SECTION] Result records
 
-// One run's shadow error as results.json writes it, for shadowfx's runs and the peers' alike.
-Json errorJson(const ShadowErrors& errors) {
-    return Json{
-        {"receiver_pixels", errors.receiverPixels},
-        {"false_shadow_pixels", errors.falseShadowPixels},
-        {"false_light_pixels", errors.falseLightPixels},
-        {"false_shadow_percent", errors.falseShadowPercent},
-        {"false_light_percent", errors.falseLightPercent},
-        {"misclassified_percent", errors.misclassifiedPercent},
-        {"mae", errors.meanAbsoluteError},
-        {"p95_abs_error", errors.p95AbsoluteError},
-        {"penumbra_pixels", errors.penumbraPixels},
-        {"penumbra_mae", errors.penumbraPixels > 0 ? Json(errors.penumbraMeanAbsoluteError) : Json(nullptr)}};
+// One run's shadow error, for shadowfx's runs and the peers' alike.
+report::BenchShadowError errorRecord(const ShadowErrors& errors) {
+    report::BenchShadowError e;
+    e.receiverPixels = errors.receiverPixels;
+    e.falseShadowPixels = errors.falseShadowPixels;
+    e.falseLightPixels = errors.falseLightPixels;
+    e.falseShadowPercent = errors.falseShadowPercent;
+    e.falseLightPercent = errors.falseLightPercent;
+    e.misclassifiedPercent = errors.misclassifiedPercent;
+    e.mae = errors.meanAbsoluteError;
+    e.p95AbsError = errors.p95AbsoluteError;
+    e.penumbraPixels = errors.penumbraPixels;
+    if (errors.penumbraPixels > 0) e.penumbraMae = errors.penumbraMeanAbsoluteError;
+    return e;
 }
 
 // [SECTION] Statistics
 
-struct Spread {
-    double median = 0, min = 0, max = 0, p25 = 0, p75 = 0;
-};
-
 // Linear-interpolated quantiles (type 7, as numpy's default).
-Spread spreadOf(std::vector<double> values) {
-    Spread s;
+BenchSpread spreadOf(std::vector<double> values) {
+    BenchSpread s;
     if (values.empty()) return s;
     std::sort(values.begin(), values.end());
     auto quantile = [&](double q) {
@@ -74,10 +71,6 @@ Spread spreadOf(std::vector<double> values) {
     s.p25 = quantile(0.25);
     s.p75 = quantile(0.75);
     return s;
-}
-
-Json toJson(const Spread& s) {
-    return Json{{"median", s.median}, {"min", s.min}, {"max", s.max}, {"p25", s.p25}, {"p75", s.p75}};
 }
 
 double ms(uint64_t ns) {
@@ -160,37 +153,29 @@ bool timeFrames(EffectRenderer& renderer, const Scene& scene, const FrameOptions
     return renderer.render(moving, countOptions, sink, &out.counted) && sink.errors() == 0;
 }
 
-// frame_time_ms, gpu_time_ms, work, passes and runtime_cpu_ms of one set of timed frames.
-Json timingJson(const TimedFrames& t) {
+// The times, work and passes of one set of timed frames.
+report::BenchTiming timingRecord(const TimedFrames& t) {
     const FrameStats& counted = t.counted;
-    Json passes = Json::array();
+    report::BenchTiming timing;
     for (size_t p = 0; p < t.passNames.size(); ++p) {
-        Json pass{{"name", t.passNames[p]},
-                  {"gpu_ms", spreadOf(t.passGpu[p]).median},
-                  {"cpu_ms", spreadOf(t.passCpu[p]).median},
-                  {"draws", t.passDraws[p]}};
+        report::BenchPassTiming& pass = timing.passes.emplace_back();
+        pass.name = t.passNames[p];
+        pass.gpuMs = spreadOf(t.passGpu[p]).median;
+        pass.cpuMs = spreadOf(t.passCpu[p]).median;
+        pass.draws = t.passDraws[p];
         if (p < counted.passes.size()) {
             const PassStats& work = counted.passes[p];
-            pass["left_out"] = work.leftOut;
-            pass["culled"] = work.culled;
-            pass["triangles"] = work.triangles;
-            pass["texels_written"] = work.texelsWritten;
+            pass.work = report::BenchPassWork{work.leftOut, work.culled, work.triangles, work.texelsWritten};
         }
-        passes.push_back(std::move(pass));
     }
-    return Json{{"frame_time_ms", toJson(spreadOf(t.frameMs))},
-                {"gpu_time_ms", toJson(spreadOf(t.gpuMs))},
-                {"work", Json{{"passes_run", counted.passesRun},
-                              {"passes_left_out", counted.passesLeftOut},
-                              {"draws", counted.draws},
-                              {"culled", counted.culled},
-                              {"triangles", counted.triangles}}},
-                {"passes", passes},
-                {"runtime_cpu_ms", Json{{"script", spreadOf(t.script).median},
-                                        {"binding", spreadOf(t.binding).median},
-                                        {"preshader", spreadOf(t.preshader).median},
-                                        {"gl", spreadOf(t.gl).median},
-                                        {"overhead", spreadOf(t.overhead).median}}}};
+    timing.frameTimeMs = spreadOf(t.frameMs);
+    timing.gpuTimeMs = spreadOf(t.gpuMs);
+    timing.work = report::BenchFrameWork{counted.passesRun, counted.passesLeftOut, counted.draws,
+                                         counted.culled, counted.triangles};
+    timing.runtimeCpuMs = report::BenchRuntimeCpu{spreadOf(t.script).median, spreadOf(t.binding).median,
+                                                  spreadOf(t.preshader).median, spreadOf(t.gl).median,
+                                                  spreadOf(t.overhead).median};
+    return timing;
 }
 
 // Receivers the ground truth classifies as shadowed: what a blank (all-lit) frame would get wrong.
@@ -242,11 +227,18 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
 
     // Each distinct diagnostic once: the same warning comes back every frame of every run.
     DiagnosticLog sink(log.diagnostic);
-    ContextOptions contextOptions;
-    contextOptions.backend = o.backend;
-    std::string contextError;
-    std::unique_ptr<GlContext> context = createContext(contextOptions, contextError);
-    if (!context) return failed(contextError);
+    std::unique_ptr<GlContext> ownContext;
+    GlContext* context = o.context;
+    if (context) {
+        context->makeCurrent();
+    } else {
+        ContextOptions contextOptions;
+        contextOptions.backend = o.backend;
+        std::string contextError;
+        ownContext = createContext(contextOptions, contextError);
+        if (!ownContext) return failed(contextError);
+        context = ownContext.get();
+    }
     const std::string glRenderer = context->renderer();
     note(glRenderer);
 
@@ -266,9 +258,9 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
         scenes.push_back(std::move(*scene));
     }
     // Ground truth, once per scene: it depends on neither the effect nor the map size.
+    report::BenchResults results;
     std::vector<SceneTruth> truths;
     truths.reserve(sceneNames.size());  // SceneTruth::light points into its own scene
-    Json truthJson = Json::array();
     for (size_t i = 0; i < sceneNames.size(); ++i) {
         const std::string& name = sceneNames[i];
         Scene& scene = scenes[i];
@@ -286,16 +278,10 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
             return failed(truthError);
         if (!t.cacheNote.empty()) note("--truth-cache: " + t.cacheNote);
         if (t.cached) note("ground truth for " + name + " read from --truth-cache");
-        truthJson.push_back(
-            Json{{"scene", t.scene.name},
-                 {"soft", t.truth.soft},
-                 {"samples_per_pixel", t.truth.samplesPerPixel},
-                 {"rays", t.truth.raysCast},
-                 {"normal_offset", o.truth.normalOffset * std::max(t.scene.bounds().radius(), 1e-3f)},
-                 {"receiver_pixels", std::count(t.receivers.begin(), t.receivers.end(), uint8_t{1})},
-                 {"shadowed_receiver_pixels", shadowedReceivers(t)},
-                 {"seconds", t.seconds},
-                 {"cached", t.cached}});
+        results.groundTruth.push_back({t.scene.name, t.truth.soft, t.truth.samplesPerPixel, t.truth.raysCast,
+                                       o.truth.normalOffset * std::max(t.scene.bounds().radius(), 1e-3f),
+                                       std::count(t.receivers.begin(), t.receivers.end(), uint8_t{1}),
+                                       shadowedReceivers(t), t.seconds, t.cached});
     }
 
     const fx::ParseOptions& baseOptions = o.parseOptions;
@@ -370,7 +356,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
     if (runCount == 0 && !effects.empty()) return usageError("no technique matches --techniques");
     for (const Peer& peer : o.peers) runCount += peer.techniques.size() * mapSizes.size() * truths.size();
 
-    Json runs = Json::array();
+    std::vector<report::BenchRunRecord>& runs = results.runs;
     const size_t runsHere = shard ? shard->runsOf(runCount) : runCount;
     size_t runsDone = 0;
     const auto progress = [&](const std::string& run) {
@@ -454,42 +440,35 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
                             }
                             const FrameImage shaded = timed->readFrame();
 
-                            Json record{{"run_index", runIndex},
-                                        {"effect", effect},
-                                        {"effect_name", effectName},
-                                        {"peer", nullptr},
-                                        {"technique", technique.name},
-                                        {"scene", t.scene.name},
-                                        {"map_size", mapSize},
-                                        {"map_size_honoured", variant.honoursMapSize},
-                                        {"width", width},
-                                        {"height", height},
-                                        {"gl_renderer", glRenderer},
-                                        {"frames", frames},
-                                        {"warmup_frames", warmup},
-                                        {"leave_out", leaveOut},
-                                        {"camera_orbit_degrees_per_frame", cameraOrbit},
-                                        {"first_frame_ms", full.firstFrameMs}};
+                            report::BenchRunRecord record;
+                            record.runIndex = runIndex;
+                            record.effect = effect;
+                            record.effectName = effectName;
+                            record.technique = technique.name;
+                            record.scene = t.scene.name;
+                            record.mapSize = mapSize;
+                            record.mapSizeHonoured = variant.honoursMapSize;
+                            record.width = width;
+                            record.height = height;
+                            record.glRenderer = glRenderer;
+                            record.frames = frames;
+                            record.warmupFrames = warmup;
+                            record.leaveOut = leaveOut;
+                            record.cameraOrbitDegreesPerFrame = cameraOrbit;
+                            record.firstFrameMs = full.firstFrameMs;
                             if (!label.empty()) {
-                                Json values = Json::object();
+                                record.setting.emplace();
                                 for (const auto& [name, value] : setting)
                                     if (std::find(swept.begin(), swept.end(), name) != swept.end())
-                                        values[name] = value;
-                                record["setting"] = values;
+                                        record.setting->emplace_back(name, value);
                             }
-                            // The steady state keeps the fields' names of schema 1; the full cost sits
-                            // beside.
-                            const Json steadyJson = timingJson(steady);
-                            for (const auto& [key, value] : steadyJson.items()) record[key] = value;
-                            record["full_cost"] = timingJson(full);
-                            record["aliasing"] = Json{{"max_texel_footprint_px", aliasing.maxFootprint},
-                                                      {"mean_texel_footprint_px", aliasing.meanFootprint},
-                                                      {"p95_texel_footprint_px", aliasing.p95Footprint},
-                                                      {"pixels", aliasing.pixels}};
-                            record["ground_truth"] =
-                                Json{{"soft", t.truth.soft}, {"samples_per_pixel", t.truth.samplesPerPixel}};
-                            record["error"] = nullptr;
-                            record["error_image"] = nullptr;
+                            record.steady = timingRecord(steady);
+                            record.fullCost = timingRecord(full);
+                            record.aliasing =
+                                report::BenchAliasing{aliasing.maxFootprint, aliasing.meanFootprint,
+                                                      aliasing.p95Footprint, aliasing.pixels};
+                            record.truthSoft = t.truth.soft;
+                            record.truthSamplesPerPixel = t.truth.samplesPerPixel;
                             if (variant.exposesVisibility) {
                                 FrameOptions visibilityOptions = options;
                                 visibilityOptions.timePasses = false;
@@ -498,7 +477,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
                                 if (!score || sink.errors() > 0) return failed("");
                                 const std::vector<float>& effectVisibility = score->visibility;
                                 const ShadowErrors& errors = score->errors;
-                                record["error"] = errorJson(errors);
+                                record.error = errorRecord(errors);
                                 const std::string image =
                                     "errors/" +
                                     safeName(effectName + "_" + technique.name + "_" + t.scene.name + "_" +
@@ -508,7 +487,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
                                 if (writePng(
                                         errorImage(shaded, t.truth.visibility, effectVisibility, t.receivers),
                                         (outDir / image).string(), writeError)) {
-                                    record["error_image"] = image;
+                                    record.errorImage = image;
                                 } else {
                                     note(writeError);
                                 }
@@ -540,40 +519,28 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
                     if (!result) return failed("--peers " + peer.name + ": " + peerError);
                     const ShadowErrors errors =
                         compareVisibility(t.truth.visibility, result->visibility, t.receivers);
-                    const Spread frameTimes = spreadOf(result->frameMs);
-                    Json record{{"run_index", runIndex},
-                                {"effect", peer.name},
-                                {"effect_name", peer.name},
-                                {"peer", peer.name + "/" + technique},
-                                {"technique", technique},
-                                {"scene", t.scene.name},
-                                {"map_size", mapSize},
-                                {"map_size_honoured", result->mapSizeHonoured},
-                                {"width", width},
-                                {"height", height},
-                                {"gl_renderer", result->glRenderer},
-                                {"peer_library_version", result->libraryVersion},
-                                {"frames", frames},
-                                {"warmup_frames", warmup},
-                                {"leave_out", false},
-                                {"camera_orbit_degrees_per_frame", 0.0},
-                                {"first_frame_ms", result->frameMs.front()},
-                                {"frame_time_ms", toJson(frameTimes)},
-                                {"gpu_time_ms", nullptr},
-                                {"work", nullptr},
-                                {"passes", Json::array()},
-                                {"runtime_cpu_ms", nullptr},
-                                // osgShadow redraws every map each frame: its frames are full cost.
-                                {"full_cost", Json{{"frame_time_ms", toJson(frameTimes)},
-                                                   {"gpu_time_ms", nullptr},
-                                                   {"work", nullptr},
-                                                   {"passes", Json::array()},
-                                                   {"runtime_cpu_ms", nullptr}}},
-                                {"aliasing", nullptr},
-                                {"ground_truth", Json{{"soft", t.truth.soft},
-                                                      {"samples_per_pixel", t.truth.samplesPerPixel}}},
-                                {"error", errorJson(errors)},
-                                {"error_image", nullptr}};
+                    report::BenchRunRecord record;
+                    record.runIndex = runIndex;
+                    record.effect = peer.name;
+                    record.effectName = peer.name;
+                    record.peer = peer.name + "/" + technique;
+                    record.technique = technique;
+                    record.scene = t.scene.name;
+                    record.mapSize = mapSize;
+                    record.mapSizeHonoured = result->mapSizeHonoured;
+                    record.width = width;
+                    record.height = height;
+                    record.glRenderer = result->glRenderer;
+                    record.peerLibraryVersion = result->libraryVersion;
+                    record.frames = frames;
+                    record.warmupFrames = warmup;
+                    record.firstFrameMs = result->frameMs.front();
+                    // Only frame times: osgShadow redraws every map each frame, so its frames are full cost.
+                    record.steady.frameTimeMs = spreadOf(result->frameMs);
+                    record.fullCost = record.steady;
+                    record.truthSoft = t.truth.soft;
+                    record.truthSamplesPerPixel = t.truth.samplesPerPixel;
+                    record.error = errorRecord(errors);
                     // The error image over the peer's own frame (its visibility in grey).
                     FrameImage frame;
                     frame.width = width;
@@ -591,7 +558,7 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
                     std::string writeError;
                     if (writePng(errorImage(frame, t.truth.visibility, result->visibility, t.receivers),
                                  (outDir / image).string(), writeError)) {
-                        record["error_image"] = image;
+                        record.errorImage = image;
                     } else {
                         note(writeError);
                     }
@@ -605,34 +572,29 @@ BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
             return usageError("--set " + sweep.parameter + ": no effect has a parameter '" + sweep.parameter +
                               "'");
 
-    Json results{
-        {"schema_version", report::kBenchSchemaVersion},
-        {"generator", "shadowfx bench"},
-        {"gl_renderer", glRenderer},
-        {"backend", std::string(backendName(context->backend()))},
-        {"config",
-         Json{{"effects", effects},
-              {"scenes", sceneNames},
-              {"map_sizes", mapSizes},
-              {"techniques", techniqueFilter},
-              {"set", o.set},
-              {"frames", frames},
-              {"warmup", warmup},
-              {"width", width},
-              {"height", height},
-              {"area_samples", o.truth.areaSamples},
-              {"area_radius", o.areaRadius ? Json(*o.areaRadius) : Json(nullptr)},
-              {"light_angle_to_view", o.lightAngleToView ? Json(*o.lightAngleToView) : Json(nullptr)},
-              {"peers", o.peerNames},
-              {"peer_techniques", o.peerTechniqueFilter},
-              {"camera_orbit_degrees_per_frame", cameraOrbit},
-              {"leave_out", leaveOutModes},
-              {"time_axis", o.timeAxis},
-              {"batching", o.batching}}},
-        {"shard", shard ? Json{{"index", shard->index}, {"count", shard->count}, {"runs_total", runCount}}
-                        : Json(nullptr)},
-        {"ground_truth", truthJson},
-        {"runs", runs}};
+    results.glRenderer = glRenderer;
+    results.backend = std::string(backendName(context->backend()));
+    report::BenchConfig& config = results.config;
+    config.effects = effects;
+    config.scenes = sceneNames;
+    config.mapSizes = mapSizes;
+    config.techniques = techniqueFilter;
+    config.set = o.set;
+    config.frames = frames;
+    config.warmup = warmup;
+    config.width = width;
+    config.height = height;
+    config.areaSamples = o.truth.areaSamples;
+    config.areaRadius = o.areaRadius;
+    config.lightAngleToView = o.lightAngleToView;
+    config.peers = o.peerNames;
+    config.peerTechniques = o.peerTechniqueFilter;
+    config.cameraOrbitDegreesPerFrame = cameraOrbit;
+    config.leaveOut = leaveOutModes;
+    config.timeAxis = o.timeAxis;
+    config.batching = o.batching;
+    results.shard = shard;
+    results.runsTotal = runCount;
     return BenchResult{BenchStatus::Measured, "", std::move(results)};
 }
 

@@ -87,11 +87,11 @@ void FrameExecutor::setRenderPort(const std::string& lightName, int lightSlot, i
                                   const fx::SourceLoc& loc) {
     mLightPort = !lightName.empty();
     mPortLight = mLightPort ? mBinder.slotLight(lightSlot) : nullptr;
-    std::string error;
+    RenderPortError error;
     if (!portMatrices(mScene, mBinder, mOptions, lightName, lightSlot, cascade, mPort, &error)) {
         if (!mFailed)
-            mDiagnostics.report(fx::DiagId::ScriptUnknownRenderPort,
-                                loc.valid() ? loc : fx::SourceLoc{mResources.effect().path, 0, 0}, {error});
+            mDiagnostics.report(error.id, loc.valid() ? loc : fx::SourceLoc{mResources.effect().path, 0, 0},
+                                error.args);
         mFailed = true;
     }
 }

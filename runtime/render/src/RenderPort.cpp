@@ -8,7 +8,7 @@ namespace runtime {
 // A light port renders with the matrices the effect's parameterization of that light gives (`binder`).
 bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameOptions& options,
                   const std::string& light, int lightSlot, int cascade, RenderPortView& port,
-                  std::string* error) {
+                  RenderPortError* error) {
     port.lightIndex = port.cascade = -1;
     if (light.empty()) {
         const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -18,17 +18,18 @@ bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameO
     }
     const Light* found = binder.slotLight(lightSlot);
     if (!found) {
-        if (error) *error = "light '" + light + "', which scene '" + scene.name + "' does not have";
+        if (error) *error = {fx::DiagId::RenderPortLightNotInScene, {light, scene.name}};
         return false;
     }
     const LightFit fit = binder.lightFit(*found);
     if (cascade >= static_cast<int>(fit.cascades.size())) {
         if (error)
-            *error = "cascade " + std::to_string(cascade) + " of light '" + light + "', which has " +
-                     (fit.cascades.empty()
-                          ? std::string("no cascades (its Parameterization is not \"Cascaded\" or "
-                                        "\"PSMCube\")")
-                          : std::to_string(fit.cascades.size()) + " (CascadeCount)");
+            *error =
+                fit.cascades.empty()
+                    ? RenderPortError{fx::DiagId::RenderPortLightWithoutCascades,
+                                      {std::to_string(cascade), light}}
+                    : RenderPortError{fx::DiagId::RenderPortCascadeOutOfRange,
+                                      {std::to_string(cascade), light, std::to_string(fit.cascades.size())}};
         return false;
     }
     port.view = cascade >= 0 ? fit.cascades[static_cast<size_t>(cascade)].view : fit.view;

@@ -5,21 +5,29 @@
 
 #include "SemanticBinder.h"
 
+#include <fx/Diagnostics.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/Scene.h>
 
 #include <glm/glm.hpp>
 
 #include <string>
+#include <vector>
 
 namespace runtime {
+
+// Why a port cannot be rendered: a diagnostic of the RenderPort* ids and its arguments.
+struct RenderPortError {
+    fx::DiagId id;
+    std::vector<std::string> args;
+};
 
 // The view and projection of the port ("" = the camera, else the light in `lightSlot`, the binder's slot of
 // that name; `cascade` >= 0: that sub-view of the light) for a frame of `options`' size. False, with why in
 // `error`, if the scene has no such light or the light no such cascade.
 bool portMatrices(const Scene& scene, const SemanticBinder& binder, const FrameOptions& options,
                   const std::string& light, int lightSlot, int cascade, RenderPortView& port,
-                  std::string* error = nullptr);
+                  RenderPortError* error = nullptr);
 
 // The tile of a `width` x `height` target that a cascade port (port.cascade >= 0) renders into: x, y, w, h
 // in texels (lightViewTile).

@@ -109,11 +109,11 @@ bool EffectResources::createImages(fx::DiagnosticSink& diagnostics) {
                                                                    : 1;
         const int most = type == fx::BaseType::RWTexture3D ? 2048 : 16384;
         if (width < 1 || height < 1 || depth < 1 || width > most || height > most || depth > 2048) {
-            std::string size = parameter.name + " is " + std::to_string(width);
+            std::string size = std::to_string(width);
             if (type != fx::BaseType::RWTexture1D) size += " x " + std::to_string(height);
             if (type == fx::BaseType::RWTexture3D || type == fx::BaseType::RWTexture2DArray)
                 size += " x " + std::to_string(depth);
-            diagnostics.report(fx::DiagId::InvalidDimensions, parameter.loc, {size});
+            diagnostics.report(fx::DiagId::ImageSizeOutOfRange, parameter.loc, {parameter.name, size});
             return false;
         }
         GpuTexture texture = imageTexture(type, *format, width, height, depth);

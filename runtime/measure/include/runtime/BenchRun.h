@@ -1,8 +1,9 @@
 // BenchRun: the measurement of `shadowfx bench` (and of any tool that sweeps bench runs): every effect x
 // scene x shadow-map size x technique (x --set setting x leave-out mode) rendered headlessly, its shadow
 // term compared with the ray-cast ground truth, its frames timed; then the peers' techniques on the same
-// scenes and truth. The result is the results document (docs/results.schema.json) that report/BenchReport.h
-// turns into results.json, report.md and error_vs_time.svg; the error images are written while measuring.
+// scenes and truth. The result is report::BenchResults, which report/BenchResults.h turns into the results
+// document (docs/results.schema.json) and report/BenchReport.h into results.json, report.md and
+// error_vs_time.svg; the error images are written while measuring.
 //
 // Each effect is compiled twice per map size: as written (the timed frames) and with SHADOWFX_VISIBILITY
 // (one frame whose colour is the shadow factor, scored against the ground truth). Timing the visibility
@@ -13,7 +14,7 @@
 
 #include <fx/HostFile.h>
 #include <fx/EffectParser.h>
-#include <report/BenchReport.h>
+#include <report/BenchResults.h>
 #include <report/BenchShard.h>
 #include <runtime/GlContext.h>
 #include <runtime/GroundTruth.h>
@@ -40,7 +41,11 @@ struct BenchOptions {
     int warmup = 2;                         // untimed frames before them
     int width = 640;
     int height = 480;
-    Backend backend = Backend::Auto;
+    Backend backend = Backend::Auto;  // of the context bench creates, unless `context` is given
+    // An application's context (createContext) to measure in, as the pass API draws in the application's
+    // context: made current and left current, holding the application's own objects untouched; bench then
+    // creates none. Null: bench creates a context of `backend` for the run and destroys it after.
+    GlContext* context = nullptr;
     GroundTruthOptions truth;
     std::optional<float> areaRadius;        // every light's areaRadius, when given
     std::optional<float> lightAngleToView;  // degrees: every directional light turned from the view
@@ -74,8 +79,8 @@ enum class BenchStatus {
 
 struct BenchResult {
     BenchStatus status = BenchStatus::Failed;
-    std::string error;      // why, unless Measured; empty when the diagnostics said it
-    report::Json document;  // the results document (docs/results.schema.json), when Measured
+    std::string error;             // why, unless Measured; empty when the diagnostics said it
+    report::BenchResults results;  // what was measured, when Measured
 };
 
 BenchResult runBench(const BenchOptions& options, const BenchLog& log);

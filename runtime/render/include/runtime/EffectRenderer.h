@@ -128,7 +128,7 @@ public:
     // By name; a technique in a D3D11 fxgroup also by "group.name".
     EffectTechnique technique(std::string_view name);
     // D3DX9's ValidateTechnique, by name: valid if the effect has it ready to apply; otherwise why not
-    // (what left it out, as its TechniqueRefused warning said; or that no technique has that name).
+    // (what left it out, as its warning said; or that no technique has that name).
     TechniqueValidation validateTechnique(std::string_view name) const;
     size_t variableCount() const;
     EffectVariable variable(size_t index);

@@ -1,5 +1,5 @@
 // JsonSchema: the check of a results document (results.json of bench and tune) against
-// docs/results.schema.json, for the command-line tests.
+// docs/results.schema.json, for the command-line tests and the report writer's.
 #pragma once
 
 #include <nlohmann/json.hpp>
