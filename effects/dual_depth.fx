@@ -80,8 +80,7 @@ technique peel
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
-                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
-                                    "uniform map, perspective aliasing";
+                                    "is z1 + Offset: a constant bias";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.8;  // measured 0.53 % dual-l, 0.34 % double-torus
@@ -95,8 +94,7 @@ technique peel_cull
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
-                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
-                                    "uniform map, perspective aliasing";
+                                    "is z1 + Offset: a constant bias";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.52;  // measured 0.07 % dual-l, 0.32 % double-torus
@@ -110,8 +108,7 @@ technique single_pass
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the open ground has no second layer, so its z_dual "
-                                    "is z1 + Offset: a constant bias; light-behind-viewer [ordinary]: "
-                                    "uniform map, perspective aliasing";
+                                    "is z1 + Offset: a constant bias";
     string Script = "Pass=ClearFrontBack;"
                     "Pass=RenderFrontBack;"
                     "Pass=RenderScene;";

@@ -250,8 +250,7 @@ technique blur
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground (blurred, not "
-                                    "removed); light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
+                                    "removed)";
     string Script = "Pass=RenderShadowMap; Pass=RenderShadowTerm;"
                     "LoopByCount=Iterations; Pass=BlurX; Pass=BlurY; LoopEnd=;"
                     "Pass=RenderScene;";

@@ -261,8 +261,7 @@ float4 PoissonPS(SceneVertexOutput IN) : COLOR
 technique bilinear
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -279,8 +278,7 @@ technique bilinear
 technique hardware
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -297,8 +295,7 @@ technique hardware
 technique11 hardware11
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // the same image as `hardware`
@@ -349,8 +346,7 @@ technique jittered4x4
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
-                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
+                                    "degree slope";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.024 % on dual-l, 0.055 % on teapot (hard truth)
@@ -368,8 +364,7 @@ technique jittered_noise
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
-                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
+                                    "degree slope";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.051 % on teapot (hard truth)
@@ -387,8 +382,7 @@ technique poisson
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the kernel-scaled SlopeBias does not cover a 0.5 "
-                                    "degree slope; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
+                                    "degree slope";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.016 % on dual-l, 0.041 % on teapot (hard truth)

@@ -209,8 +209,7 @@ technique pcss
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground under a kernel up "
-                                    "to 32 texels; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
+                                    "to 32 texels";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     // measured 0.013 % on dual-l, 0.053 % on teapot (hard truth); 0.084 / 0.116 % against the area-light
