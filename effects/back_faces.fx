@@ -59,8 +59,7 @@ technique main
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: the open ground stays in the back-face map "
-                                    "(CullClosedOnly), under a constant bias; light-behind-viewer "
-                                    "[ordinary]: uniform map, perspective aliasing";
+                                    "(CullClosedOnly), under a constant bias";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderBackFaces;"
                     "Pass=RenderScene;";

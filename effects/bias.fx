@@ -280,8 +280,7 @@ float4 AdaptivePS(ReceiverVertexOutput IN) : COLOR
 technique constant
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -297,8 +296,6 @@ technique constant
 
 technique slope_state
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -331,8 +328,6 @@ technique slope_state
 
 technique slope_shader
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -348,8 +343,6 @@ technique slope_shader
 
 technique linear_z
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -365,8 +358,6 @@ technique linear_z
 
 technique normal_offset
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -382,8 +373,6 @@ technique normal_offset
 
 technique receiver_plane
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";
@@ -399,8 +388,6 @@ technique receiver_plane
 
 technique adaptive
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

@@ -222,8 +222,9 @@ float4 BlurredPS(SceneVertexOutput IN) : COLOR
 technique blurred
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: uniform map, perspective "
-                                    "aliasing, widened by the blurred receiver marks";
+    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: the blurred receiver marks "
+                                    "widen the edges of texels magnified up to 20 pixels, beyond the map's "
+                                    "sampling-limited error and the uniform map's";
     string Script = "Pass=RenderShadowMap; Pass=BlurMarksX; Pass=BlurY;"
                     "LoopByCount=BlurLoops; Pass=BlurX; Pass=BlurY; LoopEnd=;"
                     "Pass=RenderScene;";

@@ -158,8 +158,7 @@ float4 Fixed24PS(ReceiverVertexOutput IN) : COLOR
 technique d16
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -174,8 +173,7 @@ technique d16
 technique d24
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=RenderShadowDepth;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";
@@ -190,8 +188,7 @@ technique d24
 technique r32f
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

@@ -69,10 +69,9 @@ float4 EsmPS(SceneVertexOutput IN) : COLOR
 technique esm
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing; "
-                                    "grazing [ordinary]: the filtered exponential weighs the farthest "
-                                    "depth of a footprint, and a texel spans a wide depth range under a 0.5 "
-                                    "degree sun: false light";
+    string StressExpectedFailures = "grazing [ordinary]: the filtered exponential weighs the farthest depth "
+                                    "of a footprint, and a texel spans a wide depth range under a 0.5 degree "
+                                    "sun: false light";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.026 % on dual-l, 0.088 % on teapot (hard truth)

@@ -116,11 +116,10 @@ float4 Evsm4PS(SceneVertexOutput IN) : COLOR
 technique evsm2
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing; "
-                                    "grazing [ordinary]: the positive warp weighs the farthest depth of "
-                                    "a footprint, and a texel spans a wide depth range under a 0.5 degree "
-                                    "sun: false light; low-sun [uniform]: one warp's bound leaks light "
-                                    "where occluders overlap (evsm4's second warp removes it)";
+    string StressExpectedFailures = "grazing [ordinary]: the positive warp weighs the farthest depth of a "
+                                    "footprint, and a texel spans a wide depth range under a 0.5 degree sun: "
+                                    "false light; low-sun [uniform]: one warp's bound leaks light where "
+                                    "occluders overlap (evsm4's second warp removes it)";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.12;  // measured 0.060 % on dual-l, 0.076 % on teapot (hard truth)
@@ -136,10 +135,9 @@ technique evsm2
 technique evsm4
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing; "
-                                    "grazing [ordinary]: the positive warp weighs the farthest depth of "
-                                    "a footprint, and a texel spans a wide depth range under a 0.5 degree "
-                                    "sun: false light";
+    string StressExpectedFailures = "grazing [ordinary]: the positive warp weighs the farthest depth of a "
+                                    "footprint, and a texel spans a wide depth range under a 0.5 degree sun: "
+                                    "false light";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.044 % on dual-l, 0.057 % on teapot (hard truth)

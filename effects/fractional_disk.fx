@@ -463,9 +463,7 @@ technique preprocessed
                                     "(CullClosedOnly), the slope bias (ReceiverSlope, capped at 10) does not "
                                     "cover a 0.5 degree sun; behind-ordinary [uniform]: the minimum disk "
                                     "radius (MinRadiusTexels) softens edges by texels spanning up to 1,000 "
-                                    "pixels here; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing; fov-1 [ordinary]: the minimum disk radius softens edges by "
-                                    "texels spanning 33 pixels under a 1 degree lens";
+                                    "pixels here";
     // Edges are detected into the temporary map, a step-1 pass brings them back, then each loop
     // propagates there and back: the final map is DiskMap again.
     string Script = "Pass=RenderBackFaces; Pass=DetectEdges; Pass=PropagateOnce;"
@@ -497,9 +495,7 @@ technique direct
                                     "(CullClosedOnly), the slope bias (ReceiverSlope, capped at 10) does not "
                                     "cover a 0.5 degree sun; behind-ordinary [uniform]: the minimum disk "
                                     "radius (MinRadiusTexels) softens edges by texels spanning up to 1,000 "
-                                    "pixels here; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing; fov-1 [ordinary]: the minimum disk radius softens edges by "
-                                    "texels spanning 33 pixels under a 1 degree lens";
+                                    "pixels here";
     string Script = "Pass=RenderBackFaces; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.169 % against the area-light

@@ -63,8 +63,7 @@ technique main
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
     string StressExpectedFailures = "grazing [ordinary]: ids alias along the casters' silhouettes where "
-                                    "texels stretch over the ground; light-behind-viewer [ordinary]: uniform "
-                                    "map, perspective aliasing";
+                                    "texels stretch over the ground";
     string Script = "Pass=RenderIdMap;"
                     "Pass=RenderScene;";
     string ExpectScenes = "dual-l,double-torus";

@@ -35,8 +35,6 @@ float Script : STANDARDSGLOBAL
 
 technique peel
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.8;  // measured 0.53 % dual-l, 0.34 % double-torus
@@ -48,8 +46,6 @@ technique peel
 
 technique peel_cull
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = LAYER_TECHNIQUE_SCRIPT;
     string ExpectScenes = "dual-l,double-torus";
     float ExpectMisclassifiedBelow = 0.52;  // measured 0.07 % dual-l, 0.32 % double-torus

@@ -91,8 +91,6 @@ float4 Msm128PS(SceneVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique msm64
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.059 % on teapot (hard truth)
@@ -107,8 +105,6 @@ technique msm64
 
 technique msm128
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.018 % on dual-l, 0.061 % on teapot (hard truth)

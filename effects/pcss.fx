@@ -84,22 +84,6 @@ float Bias
     float UIStep = 0.0002;
 > = 0.002;
 
-float SlopeBias
-<
-    string UIWidget = "slider";
-    string UIName = "Slope bias per kernel texel";
-    float UIMin = 0.0;
-    float UIMax = 4.0;
-> = 1.0;
-
-float SlopeBiasTexels
-<
-    string UIWidget = "slider";
-    string UIName = "Largest footprint of the slope bias (texels)";
-    float UIMin = 0.0;
-    float UIMax = 64.0;
-> = 32.0;
-
 float2 ShadowMapSize <string UIWidget = "none";> = {SHADOW_MAP_SIZE, SHADOW_MAP_SIZE};
 
 // [SECTION] Textures and samplers
@@ -148,26 +132,25 @@ sampler RotationNoiseSampler = sampler_state
 };
 
 // [SECTION] Shaders
-// The receiver's clip depth for a test whose samples spread `radius` texels: constant and slope bias. The
-// slope term stops growing at SlopeBiasTexels. The default (the largest kernel) keeps the steep faces of
-// dual-l free of acne under 32-texel kernels; 2 halves the teapot's error (its contact shadows are lifted
-// less) and quadruples dual-l's (area radius 2: MAE 0.0009 / 0.0092 against 0.0018 / 0.0017). A receiver-
-// plane depth bias would serve both.
-float BiasedDepth(SceneVertexOutput IN, float radius)
+// The receiver for the blocker search's and the filter's tests: its tangent plane, from its normal
+// (shadowmap.fxh's ReceiverPlane), so each sample compares the plane's depth at its own texel however far the
+// 32-texel kernels reach across a sloped receiver, less the constant Bias.
+ReceiverPlane Receiver(SceneVertexOutput IN)
 {
-    return IN.LP.z / IN.LP.w - Bias - SlopeBias * min(radius, SlopeBiasTexels) * ReceiverSlope(IN) / ShadowMapSize.x;
+    return TangentReceiverPlane(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal), ShadowMapSize, Bias);
 }
 
-// Blocker search: the mean clip depth of the map samples in front of the receiver within `radius` texels,
-// and (y) how many there were.
-float2 FindBlockers(float2 uv, float depth, float radius, float2x2 rotation)
+// Blocker search: the mean clip depth of the map samples within `radius` texels in front of the receiver's
+// plane at their texels, and (y) how many there were.
+float2 FindBlockers(float2 uv, ReceiverPlane plane, float radius, float2x2 rotation)
 {
     int n = clamp(BlockerSamples, 1, 32);
     float sum = 0;
     float count = 0;
     for (int i = 0; i < n; ++i) {
-        float stored = tex2D(ShadowMapSampler, uv + mul(kPoissonDisk[i], rotation) * radius / ShadowMapSize).x;
-        if (stored < depth) {
+        float2 tap = uv + mul(kPoissonDisk[i], rotation) * radius / ShadowMapSize;
+        float stored = tex2D(ShadowMapSampler, tap).x;
+        if (stored < PlaneDepthAt(plane, floor(tap * ShadowMapSize) + 0.5)) {
             sum += stored;
             count += 1;
         }
@@ -188,14 +171,15 @@ float PcssVisibility(SceneVertexOutput IN)
     float searchTexels = LightRadius * (receiverDepth - LightNearDepth()) / ReceiverToLight(receiverDepth) *
                          texelsPerUnit;
     searchTexels = clamp(searchTexels, MinPenumbraTexels, MaxSearchTexels);
-    float2 blockers = FindBlockers(uv, BiasedDepth(IN, searchTexels), searchTexels, rotation);
+    ReceiverPlane plane = Receiver(IN);
+    float2 blockers = FindBlockers(uv, plane, searchTexels, rotation);
     if (blockers.y == 0)
         return 1.0;
 
     float penumbraTexels =
         PenumbraRadiusWorld(receiverDepth, LightViewDepth(blockers.x), LightRadius) * texelsPerUnit;
     penumbraTexels = clamp(penumbraTexels, MinPenumbraTexels, MaxPenumbraTexels);
-    return ShadowTestPoisson(ShadowMapSampler, uv, BiasedDepth(IN, penumbraTexels), ShadowMapSize,
+    return ShadowTestPoisson(ShadowMapSampler, uv, plane, ShadowMapSize,
                              penumbraTexels, FilterSamples, angle);
 }
 
@@ -207,16 +191,12 @@ float4 PcssPS(SceneVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique pcss
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground under a kernel up "
-                                    "to 32 texels; light-behind-viewer [ordinary]: uniform map, perspective "
-                                    "aliasing";
     string Script = "Pass=RenderShadowMap; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
-    // measured 0.013 % on dual-l, 0.053 % on teapot (hard truth); 0.084 / 0.116 % against the area-light
+    // measured 0.013 % on dual-l, 0.049 % on teapot (hard truth); 0.084 / 0.116 % against the area-light
     // truth's classification (--area-radius 2, tests/effects/test_soft_shadow_effects.cpp)
     float ExpectMisclassifiedBelow = 0.18;
-    // penumbra MAE 0.059 on dual-l, 0.134 on teapot (320x240, bench --area-radius 2)
+    // penumbra MAE 0.059 on dual-l, 0.116 on teapot (320x240, bench --area-radius 2)
     string ExpectPenumbraMaeBelow = "dual-l=0.09, teapot=0.21";
     float ExpectAreaRadius = 2;  // the light size the penumbra bound holds for
     int ExpectMapSize = 1024;

@@ -218,8 +218,6 @@ float4 VsmMipPS(SceneVertexOutput IN) : COLOR
 
 technique vsm
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.013 % on dual-l, 0.051 % on teapot (hard truth)
@@ -236,9 +234,11 @@ technique vsm
 technique vsm_blur
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: uniform map, perspective "
-                                    "aliasing; fov-1 [ordinary, uniform]: the blur widens shadows by its "
-                                    "kernel, and a texel spans 33 pixels under a 1 degree lens";
+    string StressExpectedFailures = "light-behind-viewer [ordinary, uniform]: the blur widens the edges of "
+                                    "texels magnified up to 20 pixels, beyond the map's sampling-limited "
+                                    "error and the uniform map's; fov-1 [ordinary, uniform]: the blur widens "
+                                    "shadows by its kernel, and a texel spans 33 pixels under a 1 degree "
+                                    "lens";
     string Script = "Pass=RenderMoments; Pass=BlurX; Pass=BlurY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.05 % on dual-l, 0.098 % on teapot (hard truth)
@@ -285,8 +285,6 @@ technique vsm_blur
 
 technique vsm_mip
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
     string Script = "Pass=RenderMoments; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.15;  // measured 0.097 % on dual-l, 0.08 % on teapot (hard truth)

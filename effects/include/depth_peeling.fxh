@@ -104,6 +104,12 @@ float4 LayeredShadowPS(ReceiverVertexOutput IN) : COLOR
     return ReceiverColor(IN, ShadowTest(ShadowMapSampler, ShadowMapUV(IN.LP), ReceiverDepth(IN)));
 }
 
+// The RenderScene pass's pixel shader: LayeredShadowPS unless the effect defines LAYERED_SCENE_PS before
+// including this file, to test the combined map its own way (a function defined before its techniques).
+#ifndef LAYERED_SCENE_PS
+#define LAYERED_SCENE_PS LayeredShadowPS
+#endif
+
 // [SECTION] Passes: PEELING_PASSES(cull, closedOnly, zOffset) gives the passes ClearLayers,
 // RenderFirstLayer, RenderSecondLayer, CombineLayers and RenderScene. `cull` is the layer passes' CullMode
 // (None, or CCW for Weiskopf & Ertl 2003's back-face culling), `closedOnly` their CullClosedOnly annotation (open
@@ -176,7 +182,7 @@ float4 LayeredShadowPS(ReceiverVertexOutput IN) : COLOR
         ZWriteEnable = true; \
         ZFunc = LessEqual; \
         VertexShader = compile vs_3_0 ReceiverVS(); \
-        PixelShader = compile ps_3_0 LayeredShadowPS(); \
+        PixelShader = compile ps_3_0 LAYERED_SCENE_PS(); \
     }
 
 #endif

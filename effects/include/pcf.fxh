@@ -3,7 +3,8 @@
 //
 // `shadowMap` holds light clip-space depth in its red channel and must be point-sampled (MinFilter and
 // MagFilter POINT): filtering the depths before the test would average occluder depths, not results.
-// Kernel sizes are in shadow-map texels. Include shadowmap.fxh first.
+// Kernel sizes are in shadow-map texels; each tap tests the receiver's plane at its own texel (ReceiverPlane).
+// Include shadowmap.fxh first.
 #ifndef SHADOWFX_PCF_FXH
 #define SHADOWFX_PCF_FXH
 
@@ -25,11 +26,11 @@ float2 GridSample4x4(int i, float2 jitter)
 }
 
 // 16 point tests on the jittered 4x4 grid spanning `radius` texels around `uv` (Weiskopf & Ertl 2003).
-float ShadowTestJittered4x4(sampler2D shadowMap, float2 uv, float depth, float2 mapSize, float radius)
+float ShadowTestJittered4x4(sampler2D shadowMap, float2 uv, ReceiverPlane plane, float2 mapSize, float radius)
 {
     float lit = 0;
     for (int i = 0; i < 16; ++i)
-        lit += ShadowTest(shadowMap, uv + GridSample4x4(i, kJitter4x4[i]) * radius / mapSize, depth);
+        lit += ShadowTestPlane(shadowMap, uv + GridSample4x4(i, kJitter4x4[i]) * radius / mapSize, mapSize, plane);
     return lit / 16.0;
 }
 
@@ -38,13 +39,13 @@ float ShadowTestJittered4x4(sampler2D shadowMap, float2 uv, float depth, float2 
 // by x, y, so two consecutive frames get the same random number at the same place"; animated noise draws
 // attention to the shadow's edges ). `noiseUV` is that
 // light-space address; each sample reads its own texel by a fixed step through the texture.
-float ShadowTestNoiseJittered(sampler2D shadowMap, sampler2D noise, float2 uv, float2 noiseUV, float depth,
-                              float2 mapSize, float radius)
+float ShadowTestNoiseJittered(sampler2D shadowMap, sampler2D noise, float2 uv, float2 noiseUV,
+                              ReceiverPlane plane, float2 mapSize, float radius)
 {
     float lit = 0;
     for (int i = 0; i < 16; ++i) {
         float2 jitter = tex2D(noise, noiseUV + float2(i * 0.1234, i * 0.3457)).xy;
-        lit += ShadowTest(shadowMap, uv + GridSample4x4(i, jitter) * radius / mapSize, depth);
+        lit += ShadowTestPlane(shadowMap, uv + GridSample4x4(i, jitter) * radius / mapSize, mapSize, plane);
     }
     return lit / 16.0;
 }
@@ -64,14 +65,14 @@ static const float2 kPoissonDisk[32] = {
 
 // `count` (1..32) point tests on the Poisson disk of `radius` texels, rotated by `angle` (radians; from a
 // light-space noise texture, so the pattern stays put between frames).
-float ShadowTestPoisson(sampler2D shadowMap, float2 uv, float depth, float2 mapSize, float radius, int count,
-                        float angle)
+float ShadowTestPoisson(sampler2D shadowMap, float2 uv, ReceiverPlane plane, float2 mapSize, float radius,
+                        int count, float angle)
 {
     float2x2 rotation = float2x2(cos(angle), sin(angle), -sin(angle), cos(angle));
     int n = clamp(count, 1, 32);
     float lit = 0;
     for (int i = 0; i < n; ++i)
-        lit += ShadowTest(shadowMap, uv + mul(kPoissonDisk[i], rotation) * radius / mapSize, depth);
+        lit += ShadowTestPlane(shadowMap, uv + mul(kPoissonDisk[i], rotation) * radius / mapSize, mapSize, plane);
     return lit / n;
 }
 

@@ -59,6 +59,72 @@ float TangentPlaneDepth(float4x4 toLightClip, float4 clip, float3 normal, float2
     return hit.z / hit.w;
 }
 
+// The depth a point test at the receiver (light clip position `clip`, world normal `normal`) compares: its
+// tangent plane at the centre of the texel the lookup reads (TangentPlaneDepth), at most its own depth, less
+// `bias`. Returns that texel's centre in texture coordinates (xy) and the depth (z).
+float3 TangentPlaneTexelTest(float4x4 toLightClip, float4 clip, float3 normal, float2 mapSize, float bias)
+{
+    float2 centre = (floor(ShadowMapUV(clip) * mapSize) + 0.5) / mapSize;
+    float planeDepth = TangentPlaneDepth(toLightClip, clip, normal, float2(2.0, -2.0) * centre + float2(-1.0, 1.0));
+    return float3(centre, min(planeDepth, clip.z / clip.w) - bias);
+}
+
+// The receiver's tangent plane (TangentPlaneDepth) as a light depth per map texel: its change along u and v,
+// from the plane's depth one texel away along each. A plane's z/w is affine in the map position, for
+// orthographic and perspective lights alike, so the two differences are exact for any distance; 0 where the
+// light meets the plane edge-on (TangentPlaneDepth's fallback).
+float2 TangentPlaneDepthPerTexel(float4x4 toLightClip, float4 clip, float3 normal, float2 mapSize)
+{
+    float2 ndc = clip.xy / clip.w;
+    return float2(TangentPlaneDepth(toLightClip, clip, normal, ndc + float2(2.0 / mapSize.x, 0.0)),
+                  TangentPlaneDepth(toLightClip, clip, normal, ndc - float2(0.0, 2.0 / mapSize.y))) -
+           clip.z / clip.w;
+}
+
+// A receiver as the filters of pcf.fxh test it: each tap compares the receiver's tangent plane at the centre
+// of the texel it reads (where the map's rasterizer sampled the occluder), or the receiver's own depth where
+// that is nearer the light, less `bias`. A kernel many texels wide crosses a sloped receiver's depth range
+// tap by tap, where one depth for all taps needs a bias as large as the kernel's slope.
+struct ReceiverPlane
+{
+    float2 texel;     // the receiver's map position in texels
+    float depth;      // its light depth z/w
+    float2 perTexel;  // TangentPlaneDepthPerTexel
+    float bias;
+};
+
+ReceiverPlane TangentReceiverPlane(float4x4 toLightClip, float4 clip, float3 normal, float2 mapSize, float bias)
+{
+    ReceiverPlane plane;
+    plane.texel = ShadowMapUV(clip) * mapSize;
+    plane.depth = clip.z / clip.w;
+    plane.perTexel = TangentPlaneDepthPerTexel(toLightClip, clip, normal, mapSize);
+    plane.bias = bias;
+    return plane;
+}
+
+// The depth `plane` compares at the texel whose centre is `centre` (in texels).
+float PlaneDepthAt(ReceiverPlane plane, float2 centre)
+{
+    return min(plane.depth + dot(plane.perTexel, centre - plane.texel), plane.depth) - plane.bias;
+}
+
+// One point test at `uv` against the plane at the centre of the texel it reads.
+float ShadowTestPlane(sampler2D shadowMap, float2 uv, float2 mapSize, ReceiverPlane plane)
+{
+    return ShadowTest(shadowMap, uv, PlaneDepthAt(plane, floor(uv * mapSize) + 0.5));
+}
+
+// The least of the plane's depths at the 2x2 texels a bilinear lookup at `uv` reads: one depth for a
+// comparison sampler's four taps, nearer the light than each tap's own plane depth by at most one texel's
+// slope.
+float PlaneDepthBilinear(float2 uv, float2 mapSize, ReceiverPlane plane)
+{
+    float2 first = floor(uv * mapSize - 0.5) + 0.5;
+    return min(min(PlaneDepthAt(plane, first), PlaneDepthAt(plane, first + float2(1.0, 0.0))),
+               min(PlaneDepthAt(plane, first + float2(0.0, 1.0)), PlaneDepthAt(plane, first + 1.0)));
+}
+
 // Bilinear PCF under the adaptive bias: the 2x2 taps around the receiver (light clip position `clip`) in a
 // map, or an atlas tile, `tileSize` texels wide whose light clip space `toLightClip` maps to. Each tap is
 // compared at the receiver's tangent plane at its own texel centre (TangentPlaneDepth), or at the

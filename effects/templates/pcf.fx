@@ -110,8 +110,7 @@ technique main
     float ExpectMisclassifiedBelow = 0.5;  // % of receiver pixels against the hard-shadow truth
     int ExpectMapSize = 1024;
     // Cases of `shadowfx stress` that are a known limitation of the method, with the reason.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground; "
-                                    "light-behind-viewer [ordinary]: uniform map, perspective aliasing";
+    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
 >
 {
     pass RenderShadowMap

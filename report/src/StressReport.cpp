@@ -58,6 +58,11 @@ const StressCaseSummary* findCase(const StressResult& result, const std::string&
 
 }  // namespace
 
+double samplingLimitedRise(const StressOutcome& outcome) {
+    if (!outcome.samplingLimited || !outcome.ordinarySamplingLimited) return 0.0;
+    return std::max(0.0, *outcome.samplingLimited - *outcome.ordinarySamplingLimited);
+}
+
 void writeStressTable(std::ostream& out, const StressResult& result, bool markdown) {
     std::string current;
     for (const StressOutcome& o : result.outcomes) {
@@ -141,6 +146,8 @@ Json stressJson(const StressResult& result) {
                                {"shimmer_max_percent", optionalJson(o.shimmerMax)},
                                {"max_footprint", optionalJson(o.maxFootprint)},
                                {"p95_footprint", optionalJson(o.p95Footprint)},
+                               {"sampling_limited_percent", optionalJson(o.samplingLimited)},
+                               {"ordinary_sampling_limited_percent", optionalJson(o.ordinarySamplingLimited)},
                                {"receiver_pixels", o.receivers}});
     return Json{{"renderer", result.renderer},
                 {"width", result.width},

@@ -158,6 +158,25 @@ TEST(StressReport, TheJsonHoldsEveryCaseAndRun) {
     EXPECT_EQ(grazing["p95_footprint"], 7.25);
     EXPECT_TRUE(grazing["shimmer_mean_percent"].is_null());
     EXPECT_TRUE(json["results"][0]["p95_footprint"].is_null());
+    EXPECT_TRUE(grazing["sampling_limited_percent"].is_null());
+}
+
+// The ordinary criterion's allowance for what a case asks of the fit's resolution: the rise of its
+// sampling-limited error from the ordinary configuration, never negative, none where either is unknown.
+TEST(StressReport, TheSamplingLimitedRiseIsTheCasesExcessOverItsOrdinary) {
+    StressOutcome o = outcome("light-behind-viewer");
+    EXPECT_EQ(report::samplingLimitedRise(o), 0.0);
+    o.samplingLimited = 6.5;
+    EXPECT_EQ(report::samplingLimitedRise(o), 0.0);
+    o.ordinarySamplingLimited = 1.25;
+    EXPECT_EQ(report::samplingLimitedRise(o), 5.25);
+    o.samplingLimited = 0.5;
+    EXPECT_EQ(report::samplingLimitedRise(o), 0.0);
+    report::StressResult result = madeUpResult();
+    result.outcomes.push_back(o);
+    const nlohmann::ordered_json json = report::stressJson(result);
+    EXPECT_EQ(json["results"].back()["sampling_limited_percent"], 0.5);
+    EXPECT_EQ(json["results"].back()["ordinary_sampling_limited_percent"], 1.25);
 }
 
 }  // namespace

@@ -169,3 +169,31 @@ TEST(ShadowMetrics, CubeFaceFootprintUsesEachReceiversFace) {
 }
 
 }  // namespace
+
+// The sampling-limited error of a fit: on the plane grid under a light straight down, truth shadowed where
+// x < 0.05 (a boundary between pixel columns). Uniform truth or texels smaller than a pixel leave nothing
+// for one sample per texel to get wrong; coarse texels straddle the boundary, and coarser ones more so.
+TEST(ShadowMetrics, SamplingLimitedErrorComesFromTexelsStraddlingTheTruthsBoundary) {
+    const runtime::GBuffer gbuffer = planeGrid();
+    const runtime::Bounds bounds{glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f)};
+    runtime::Light light;
+    runtime::LightFit fit;
+    fit.view = light.view(bounds);
+    fit.projection = light.projection(bounds);
+    const std::vector<uint8_t> receivers(gbuffer.pixelCount(), 1);
+    std::vector<float> truth(gbuffer.pixelCount(), 1.0f);
+    const glm::mat4 camera(1.0f);
+    EXPECT_EQ(runtime::samplingLimitedError(gbuffer, receivers, truth, camera, fit, 16), 0.0);
+
+    for (size_t i = 0; i < truth.size(); ++i) truth[i] = gbuffer.position[i].x < 0.05f ? 0.0f : 1.0f;
+    // 4096 texels over 2 * 14.2 world units: 0.007 units, under a pixel's 0.1.
+    EXPECT_EQ(runtime::samplingLimitedError(gbuffer, receivers, truth, camera, fit, 4096), 0.0);
+    // 16 texels: 1.8 units, 18 pixel columns; the boundary's texel column holds 18 rows of 64 / 18 texels.
+    const double coarse = runtime::samplingLimitedError(gbuffer, receivers, truth, camera, fit, 16);
+    EXPECT_GT(coarse, 0.0);
+    EXPECT_LE(coarse, 100.0 * 18.0 / 64.0);  // at most the straddling column's pixels
+    EXPECT_GT(runtime::samplingLimitedError(gbuffer, receivers, truth, camera, fit, 8), coarse);
+    // Pixels that are not receivers do not count.
+    const std::vector<uint8_t> none(gbuffer.pixelCount(), 0);
+    EXPECT_EQ(runtime::samplingLimitedError(gbuffer, none, truth, camera, fit, 16), 0.0);
+}

@@ -20,6 +20,11 @@ namespace report {
 // percentage may be at most kOrdinaryFactor times the ordinary one plus kOrdinarySlack points.
 constexpr double kOrdinaryFactor = 3.0;
 constexpr double kOrdinarySlack = 1.0;
+// ... plus what the case asks of the effect's own light fit beyond the ordinary configuration: the rise of
+// the fit's sampling-limited error (samplingLimitedRise). A case whose shadow boundaries the view sees where
+// the fit's texels are large (a view-independent map whose casters throw their shadows at the camera) costs
+// any map of that fit and size that much; a fit that follows the view keeps the rise small, so it is held to
+// its ordinary error as before. Bias and filter failures do not raise it: it depends on the fit alone.
 // No method may do worse than the uniform shadow map on the same case, beyond filtering noise.
 constexpr double kUniformFactor = 1.5;
 constexpr double kUniformSlack = 0.5;
@@ -63,6 +68,9 @@ struct StressOutcome {
     std::optional<double> uniform;                  // the uniform shadow map's, same case
     std::optional<double> shimmerMean, shimmerMax;  // percent, temporal cases
     std::optional<double> maxFootprint, p95Footprint;  // texels of the effect's own fit (first frame)
+    // The sampling-limited error of the effect's own fit (runtime/ShadowMetrics.h, first frame), percent, on
+    // this case and on its ordinary one.
+    std::optional<double> samplingLimited, ordinarySamplingLimited;
     size_t receivers = 0;
 
     void fail(StressCriterion criterion, std::string reason) {
@@ -84,6 +92,11 @@ struct StressOutcome {
         return isExcused() ? "xfail" : "FAIL";
     }
 };
+
+// What the case adds to the ordinary criterion's bound: how far the sampling-limited error of the effect's
+// own fit rises from the ordinary configuration to the case, in points; 0 where either is unknown or it
+// falls.
+double samplingLimitedRise(const StressOutcome& outcome);
 
 // One case as the run measured its configuration, whatever the effect.
 struct StressCaseSummary {

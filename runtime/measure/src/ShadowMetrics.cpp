@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
 
 namespace runtime {
 
@@ -97,31 +100,27 @@ bool texelOf(const glm::mat4& lightViewProjection, const glm::vec3& position, fl
     return true;
 }
 
-// The footprint measure over given texel coordinates per pixel; neighbours of another object or another
-// map (`map`, e.g. a cascade) give no derivative.
-AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
-                           const std::vector<glm::vec2>& texel, const std::vector<int>& map);
+// Each pixel's texel coordinates in the map of its own (`map`: a cascade, a cube face; 0 for a single map).
+struct TexelField {
+    std::vector<glm::vec2> texel;
+    std::vector<int> map;
+};
 
-}  // namespace
-
-AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
-                                    const glm::mat4& lightView, const glm::mat4& lightProjection,
-                                    int mapSize) {
-    const glm::mat4 lightViewProjection = lightProjection * lightView;
-    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
-    for (size_t i = 0; i < texel.size(); ++i)
-        if (gbuffer.covered(i)) texelOf(lightViewProjection, gbuffer.position[i], float(mapSize), texel[i]);
-    return footprints(gbuffer, receivers, texel, std::vector<int>(texel.size(), 0));
+TexelField perspectiveTexels(const GBuffer& gbuffer, const glm::mat4& lightViewProjection, int mapSize) {
+    TexelField field{std::vector<glm::vec2>(gbuffer.pixelCount(), glm::vec2(0.0f)),
+                     std::vector<int>(gbuffer.pixelCount(), 0)};
+    for (size_t i = 0; i < field.texel.size(); ++i)
+        if (gbuffer.covered(i))
+            texelOf(lightViewProjection, gbuffer.position[i], float(mapSize), field.texel[i]);
+    return field;
 }
 
-AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
-                                 const glm::mat4& cameraView, const std::vector<LightView>& cascades,
-                                 int atlasSize) {
-    if (cascades.empty()) return {};
+TexelField cascadedTexels(const GBuffer& gbuffer, const glm::mat4& cameraView,
+                          const std::vector<LightView>& cascades, int atlasSize) {
+    TexelField field{std::vector<glm::vec2>(gbuffer.pixelCount(), glm::vec2(0.0f)),
+                     std::vector<int>(gbuffer.pixelCount(), 0)};
     const int count = static_cast<int>(cascades.size());
-    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
-    std::vector<int> map(texel.size(), 0);
-    for (size_t i = 0; i < texel.size(); ++i) {
+    for (size_t i = 0; i < field.texel.size(); ++i) {
         if (!gbuffer.covered(i)) continue;
         // The receiver's cascade, as cascades.fx picks it: the first whose split lies beyond its view depth.
         const float depth = (cameraView * glm::vec4(gbuffer.position[i], 1.0f)).z;
@@ -129,36 +128,68 @@ AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8
         while (k + 1 < count && depth > cascades[static_cast<size_t>(k)].splitFar) ++k;
         const LightView& cascade = cascades[static_cast<size_t>(k)];
         const float tile = static_cast<float>(cascadeViewport(k, count, atlasSize, atlasSize).z);
-        texelOf(cascade.projection * cascade.view, gbuffer.position[i], tile, texel[i]);
-        map[i] = k;
+        texelOf(cascade.projection * cascade.view, gbuffer.position[i], tile, field.texel[i]);
+        field.map[i] = k;
     }
-    return footprints(gbuffer, receivers, texel, map);
+    return field;
 }
 
-AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
-                                 const LightFit& fit, int atlasSize) {
+TexelField cubeFaceTexels(const GBuffer& gbuffer, const LightFit& fit, int atlasSize) {
+    TexelField field{std::vector<glm::vec2>(gbuffer.pixelCount(), glm::vec2(0.0f)),
+                     std::vector<int>(gbuffer.pixelCount(), 0)};
     const int count = static_cast<int>(fit.cascades.size());
-    if (count == 0) return {};
-    std::vector<glm::vec2> texel(gbuffer.pixelCount(), glm::vec2(0.0f));
-    std::vector<int> map(texel.size(), 0);
-    for (size_t i = 0; i < texel.size(); ++i) {
+    for (size_t i = 0; i < field.texel.size(); ++i) {
         if (!gbuffer.covered(i)) continue;
         const int face = std::min(cubeFaceOf(fit, gbuffer.position[i]), count - 1);
         const LightView& view = fit.cascades[static_cast<size_t>(face)];
         const glm::ivec4 tile = lightViewTile(view, face, count, atlasSize, atlasSize);
         const glm::vec4 clip = view.projection * view.view * glm::vec4(gbuffer.position[i], 1.0f);
         if (clip.w > 0.0f)
-            texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *
-                       glm::vec2(tile.z, tile.w);
-        map[i] = face;
+            field.texel[i] = glm::vec2(0.5f * clip.x / clip.w + 0.5f, -0.5f * clip.y / clip.w + 0.5f) *
+                             glm::vec2(tile.z, tile.w);
+        field.map[i] = face;
     }
-    return footprints(gbuffer, receivers, texel, map);
+    return field;
+}
+
+TexelField fitTexels(const GBuffer& gbuffer, const glm::mat4& cameraView, const LightFit& fit, int mapSize) {
+    if (fit.cubeFaces) return cubeFaceTexels(gbuffer, fit, mapSize);
+    if (!fit.cascades.empty()) return cascadedTexels(gbuffer, cameraView, fit.cascades, mapSize);
+    return perspectiveTexels(gbuffer, fit.projection * fit.view, mapSize);
+}
+
+// The footprint measure over given texel coordinates per pixel; neighbours of another object or another
+// map (a cascade, a face) give no derivative.
+AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                           const TexelField& field);
+
+}  // namespace
+
+AliasingMeasure perspectiveAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                    const glm::mat4& lightView, const glm::mat4& lightProjection,
+                                    int mapSize) {
+    return footprints(gbuffer, receivers, perspectiveTexels(gbuffer, lightProjection * lightView, mapSize));
+}
+
+AliasingMeasure cascadedAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const glm::mat4& cameraView, const std::vector<LightView>& cascades,
+                                 int atlasSize) {
+    if (cascades.empty()) return {};
+    return footprints(gbuffer, receivers, cascadedTexels(gbuffer, cameraView, cascades, atlasSize));
+}
+
+AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                                 const LightFit& fit, int atlasSize) {
+    if (fit.cascades.empty()) return {};
+    return footprints(gbuffer, receivers, cubeFaceTexels(gbuffer, fit, atlasSize));
 }
 
 namespace {
 
 AliasingMeasure footprints(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
-                           const std::vector<glm::vec2>& texel, const std::vector<int>& map) {
+                           const TexelField& field) {
+    const std::vector<glm::vec2>& texel = field.texel;
+    const std::vector<int>& map = field.map;
     AliasingMeasure measure;
     // Derivative along one screen axis: central difference where both neighbours lie on the same object,
     // else one-sided; none at an object's silhouette on both sides.
@@ -218,6 +249,36 @@ AliasingMeasure fitAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& 
     if (fit.cubeFaces) return cubeFaceAliasing(gbuffer, receivers, fit, mapSize);
     if (!fit.cascades.empty()) return cascadedAliasing(gbuffer, receivers, cameraView, fit.cascades, mapSize);
     return perspectiveAliasing(gbuffer, receivers, fit.view, fit.projection, mapSize);
+}
+
+double samplingLimitedError(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                            const std::vector<float>& truth, const glm::mat4& cameraView, const LightFit& fit,
+                            int mapSize) {
+    if (fit.cubeFaces && fit.cascades.empty()) return 0.0;
+    const TexelField field = fitTexels(gbuffer, cameraView, fit, mapSize);
+    struct Counts {
+        size_t pixels = 0, shadowed = 0;
+    };
+    std::map<std::tuple<int, int64_t, int64_t>, Counts> texels;
+    size_t receiverCount = 0;
+    for (size_t i = 0; i < receivers.size() && i < truth.size(); ++i) {
+        if (!receivers[i]) continue;
+        ++receiverCount;
+        const glm::vec2 t = glm::floor(field.texel[i]);
+        Counts& counts = texels[{field.map[i], static_cast<int64_t>(t.x), static_cast<int64_t>(t.y)}];
+        ++counts.pixels;
+        counts.shadowed += truth[i] < kShadowedBelow ? 1 : 0;
+    }
+    if (receiverCount == 0) return 0.0;
+    // A texel holds one occluder depth, taken at a point of it: where that point is uniformly placed, the
+    // texel's pixels on the other side of the truth's shadow boundary, 2 s (n - s) / n of its n pixels in
+    // expectation (s of them shadowed), are wrong.
+    double expected = 0.0;
+    for (const auto& [key, counts] : texels) {
+        const double n = static_cast<double>(counts.pixels), s = static_cast<double>(counts.shadowed);
+        expected += 2.0 * s * (n - s) / n;
+    }
+    return 100.0 * expected / static_cast<double>(receiverCount);
 }
 
 }  // namespace runtime

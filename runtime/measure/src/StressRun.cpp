@@ -250,6 +250,10 @@ Outcome runCase(EffectRenderer& renderer, bool exposesVisibility, const std::str
                         outcome.maxFootprint = aliasing.maxFootprint;
                         outcome.p95Footprint = aliasing.p95Footprint;
                     }
+                    if (frame.receiverCount > 0)
+                        outcome.samplingLimited =
+                            samplingLimitedError(*truth.gbuffer, frame.receivers, frame.visibility,
+                                                 frame.scene.camera.view(), *fit, mapSize);
                 }
             }
         }
@@ -369,11 +373,15 @@ std::map<std::string, Declaration> expectedFailures(const fx::CompiledEffect& ef
 void judge(Outcome& outcome) {
     if (!outcome.misclassified || outcome.receivers < kMinScoredReceivers) return;
     const double error = *outcome.misclassified;
-    if (outcome.ordinary && error > kOrdinaryFactor * *outcome.ordinary + kOrdinarySlack)
-        outcome.fail(Criterion::Ordinary, "error " + report::formatPercent(error) + " > " +
-                                              std::to_string(static_cast<int>(kOrdinaryFactor)) +
-                                              "x the ordinary case's " +
-                                              report::formatPercent(*outcome.ordinary) + " + 1 point");
+    const double resolution = report::samplingLimitedRise(outcome);
+    if (outcome.ordinary && error > kOrdinaryFactor * *outcome.ordinary + kOrdinarySlack + resolution)
+        outcome.fail(
+            Criterion::Ordinary,
+            "error " + report::formatPercent(error) + " > " +
+                std::to_string(static_cast<int>(kOrdinaryFactor)) + "x the ordinary case's " +
+                report::formatPercent(*outcome.ordinary) + " + 1 point" +
+                (resolution > 0.0 ? " + the fit's sampling-limited rise " + report::formatPercent(resolution)
+                                  : std::string()));
     if (!outcome.uniform)
         outcome.fail(Criterion::Uniform,
                      "the uniform map's error on this case is unknown: the comparison cannot be evaluated");
@@ -510,7 +518,7 @@ StressRun runStress(const StressOptions& o, const StressLog& log) {
             if (!o.techniques.empty() &&
                 std::find(o.techniques.begin(), o.techniques.end(), technique.name) == o.techniques.end())
                 continue;
-            std::map<std::string, double> measured;
+            std::map<std::string, double> measured, samplingLimited;
             std::vector<std::string> declarationErrors;
             const std::map<std::string, Declaration> known =
                 expectedFailures(*effect->visibility, technique.name, declarationErrors);
@@ -528,8 +536,11 @@ StressRun runStress(const StressOptions& o, const StressLog& log) {
                                           height, mapSize, sink, image);
                 outcome.effect = effectName;
                 if (outcome.misclassified) measured[name] = *outcome.misclassified;
+                if (outcome.samplingLimited) samplingLimited[name] = *outcome.samplingLimited;
                 if (auto it = measured.find(truth.stressCase.ordinary); it != measured.end())
                     outcome.ordinary = it->second;
+                if (auto it = samplingLimited.find(truth.stressCase.ordinary); it != samplingLimited.end())
+                    outcome.ordinarySamplingLimited = it->second;
                 if (auto it = uniformError.find(name); it != uniformError.end()) outcome.uniform = it->second;
                 judge(outcome);
                 if (!outcome.pass && image.width > 0)

@@ -89,4 +89,14 @@ AliasingMeasure cubeFaceAliasing(const GBuffer& gbuffer, const std::vector<uint8
 AliasingMeasure fitAliasing(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
                             const glm::mat4& cameraView, const LightFit& fit, int mapSize);
 
+// The sampling-limited error of `fit` at `mapSize`: the misclassified % of receiver pixels that a shadow map
+// of exactly that fit and size has in expectation when each texel holds the truth's classification at a
+// uniformly placed point of it, from pixels whose texel straddles the truth's shadow boundary (the pixels
+// of each texel on the other side, 2 s (n - s) / n of its n pixels, s of them shadowed in `truth`). Depends
+// on where the fit puts its resolution and on where the view sees shadow boundaries, on no bias or filter:
+// what a case asks of the fit's resolution alone. A texel smaller than a pixel adds nothing.
+double samplingLimitedError(const GBuffer& gbuffer, const std::vector<uint8_t>& receivers,
+                            const std::vector<float>& truth, const glm::mat4& cameraView, const LightFit& fit,
+                            int mapSize);
+
 }  // namespace runtime
