@@ -503,8 +503,8 @@ FX_DIAGNOSTIC(ParameterNotSettableFromCommandLine, Error,
 FX_DIAGNOSTIC(ParameterValueInvalid, Error, "'{0}' is not a value of type {1} for parameter '{2}'")
 FX_DIAGNOSTIC(ParameterValueCount, Error, "parameter '{0}' of type {1} needs {2} values, got {3}")
 FX_DIAGNOSTIC(LispsmChoiceInvalid, Error,
-              "'{0}' is not a choice of LiSPSM's n for parameter '{1}' (expected \"Scherzer2005\" or "
-              "\"Wimmer2004\")")
+              "'{0}' is not a choice of LiSPSM's n for parameter '{1}' (expected \"Scherzer2005\", "
+              "\"Wimmer2004\" or \"Lloyd2006\")")
 // Data an application passes for a parameter (EffectResources::setTexture, setBuffer).
 FX_DIAGNOSTIC(SetTextureNotReadTexture, Error,
               "setTexture: parameter {0} is not a 2D, cube or array texture that passes only read")
