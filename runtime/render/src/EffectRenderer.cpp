@@ -302,7 +302,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
         ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
-                               recorder, dryRunDiagnostics);
+                               mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
         std::vector<int>& outputs = mImpl->frameScratch.outputTargets;
         outputs.clear();
@@ -331,8 +331,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran = ScriptInterpreter::run(*technique, *mImpl->scriptOperands,
-                                            mImpl->effect().maxScriptLoopCount, executor, diagnostics);
+    const bool ran =
+        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
+                               mImpl->frameScratch.scriptLoops, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

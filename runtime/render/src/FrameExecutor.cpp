@@ -304,13 +304,13 @@ void FrameExecutor::drawScene(const fx::ScriptCommand&) {
     }
 }
 
-void FrameExecutor::setParameter(const std::string& name, int parameter, const fx::Value& value) {
+void FrameExecutor::setLoopIndex(const std::string& name, int parameter, int index) {
     if (parameter < 0) {
         fail(fx::DiagId::UnknownParameter, {name});
         return;
     }
-    storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mResources.values,
-                   mResources.stamps);
+    storeScalarParameter(mResources.parameterInfo(), static_cast<size_t>(parameter),
+                         static_cast<float>(index), mResources.values, mResources.stamps);
     // A script's value of a `shared` parameter is the pool's, as an application's setter's is.
     mResources.pool.published(mResources, static_cast<size_t>(parameter));
 }
