@@ -264,7 +264,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
     mImpl->ensureFrameResources(options.width, options.height, &neededTargets);
-    mImpl->updateSceneCache(frameScene);
+    if (rebased) mImpl->updateSceneCache(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
     SemanticBinder& binder = *mImpl->binder;
@@ -304,11 +304,15 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
                                mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
+        // FrameOptions::outputTargets, found by name again only when the names change.
         std::vector<int>& outputs = mImpl->frameScratch.outputTargets;
-        outputs.clear();
-        for (const std::string& name : options.outputTargets)
-            if (const std::optional<size_t> index = findParameter(name))
-                outputs.push_back(static_cast<int>(*index));
+        if (mImpl->frameScratch.outputTargetNames != options.outputTargets) {
+            mImpl->frameScratch.outputTargetNames = options.outputTargets;
+            outputs.clear();
+            for (const std::string& name : options.outputTargets)
+                if (const std::optional<size_t> index = findParameter(name))
+                    outputs.push_back(static_cast<int>(*index));
+        }
         plan.markDead(outputs, options.leaveOut);
         // A render target no remaining operation writes or reads is not allocated.
         const auto need = [&neededTargets](int resource) {

@@ -207,6 +207,8 @@ public:
         std::vector<uint32_t> sliceObjects;  // PlanRecorder: the objects in a cascade slice
         std::vector<GLuint> timerQueries;    // PassTimer's queries of the frame
 
+        // The names `outputTargets` was resolved from.
+        std::vector<std::string> outputTargetNames;
         // The loops open while the dry run or the run walks the script.
         ScriptLoopStack scriptLoops;
     } frameScratch;
