@@ -1,10 +1,11 @@
-// What the per-frame path resolves and allocates: after the first frame, frames of the thesis effect look
-// up no name (runtime/NameLookups.h counts every parameter, light, technique and semantic found by its
-// text, and every literal parsed: the runtime resolves them when the effect is created) and make no heap
-// allocation, counted by this binary's own global operator new between the markers around render(): the
-// runtime keeps its per-frame data between frames (the frame plan, the working lists, the preshader VM's
-// registers, FrameStats' lists). With an orbiting camera a few lists may still grow as the view shows more
-// objects than any frame before (geometrically, so a handful of times at most).
+// What the per-frame path resolves and allocates: after the first frame, frames of the thesis effect (and
+// of a technique whose script loops) look up no name (runtime/NameLookups.h counts every parameter, light,
+// technique and semantic found by its text, and every literal parsed: the runtime resolves them when the
+// effect is created) and make no heap allocation, counted by this binary's own global operator new between
+// the markers around render(): the runtime keeps its per-frame data between frames (the frame plan, the
+// working lists, the preshader VM's registers, FrameStats' lists). With an orbiting camera a few lists may
+// still grow as the view shows more objects than any frame before (geometrically, so a handful of times at
+// most).
 //
 // Only operator new is counted, and only on the thread that renders: the runtime is C++ and allocates
 // through it (std::string, std::vector, std::map), while Mesa is C and allocates with malloc for its own
@@ -96,11 +97,11 @@ struct Overhead {
     uint64_t lookups = 0;
 };
 
-// Renders one warm-up frame, then `frames` frames (the camera turned `orbitDegrees` about its target before
-// each, as `shadowfx bench --camera-orbit` turns it), counting what those frames allocate and look up.
-Overhead frameOverhead(const std::string& sceneName, int frames, float orbitDegrees) {
-    std::unique_ptr<EffectRenderer> renderer =
-        shadowfx::test::loadEffect(shadowfx::test::sourcePath("effects/thesis_fxcomposer.fx"), true);
+// Renders one warm-up frame of `technique`, then `frames` frames (the camera turned `orbitDegrees` about its
+// target before each, as `shadowfx bench --camera-orbit` turns it), counting what those frames allocate
+// and look up.
+Overhead frameOverhead(std::unique_ptr<EffectRenderer> renderer, const std::string& technique,
+                       const std::string& sceneName, int frames, float orbitDegrees) {
     std::optional<Scene> scene = makeBuiltinScene(sceneName);
     if (!renderer || !scene) {
         ADD_FAILURE() << "no renderer or no scene '" << sceneName << "'";
@@ -109,7 +110,7 @@ Overhead frameOverhead(const std::string& sceneName, int frames, float orbitDegr
     FrameOptions options;
     options.width = 128;
     options.height = 96;
-    options.technique = "main";
+    options.technique = technique;
     options.timePasses = true;  // as bench measures the overhead
     fx::DiagnosticList diagnostics;
     FrameStats stats;
@@ -140,10 +141,16 @@ Overhead frameOverhead(const std::string& sceneName, int frames, float orbitDegr
     return overhead;
 }
 
+Overhead thesisOverhead(const std::string& sceneName, int frames, float orbitDegrees) {
+    return frameOverhead(
+        shadowfx::test::loadEffect(shadowfx::test::sourcePath("effects/thesis_fxcomposer.fx"), true), "main",
+        sceneName, frames, orbitDegrees);
+}
+
 constexpr int kFrames = 100;
 
 TEST(FrameOverhead, ThesisOnDualL) {
-    const Overhead overhead = frameOverhead("dual-l", kFrames, 0.0f);
+    const Overhead overhead = thesisOverhead("dual-l", kFrames, 0.0f);
     EXPECT_EQ(overhead.lookups, 0u);
     EXPECT_EQ(overhead.allocations, 0u);
 }
@@ -151,9 +158,33 @@ TEST(FrameOverhead, ThesisOnDualL) {
 // forest-fifth's 10,001 objects with the camera orbiting as `bench --camera-orbit 0.5` turns it: culled
 // anew every frame, the shadow map reused.
 TEST(FrameOverhead, ThesisOnForestFifthWithOrbitingCamera) {
-    const Overhead overhead = frameOverhead("forest-fifth", kFrames, 0.5f);
+    const Overhead overhead = thesisOverhead("forest-fifth", kFrames, 0.5f);
     EXPECT_EQ(overhead.lookups, 0u);
     EXPECT_LE(overhead.allocations, 10u);  // in all 100 frames: lists growing to the widest view so far
+}
+
+// A technique script that loops, its pass reading the loop's index and its clear colour a literal: the
+// interpreter's loop stack and the index it stores keep their storage between frames (the dry run and the
+// run each walk the loop).
+constexpr const char* kLoopingEffect = R"(
+int Count = 3;
+int Level = 0;
+float4x4 WorldViewProjection : WorldViewProjection;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR { return float4(1 - Level * 0.3, Level * 0.3, 0.2, 1); }
+technique looping < string Script = "ClearSetColor=0.1,0.2,0.3,1; Clear=Color; ClearSetDepth=1; Clear=Depth;"
+                                    "LoopByCount=Count; LoopGetIndex=Level; Pass=p; LoopEnd=;"; >
+{
+    pass p < string Script = "Draw=Geometry;"; >
+    { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); ZFunc = LessEqual; }
+}
+)";
+
+TEST(FrameOverhead, LoopingScriptOnDualL) {
+    const Overhead overhead = frameOverhead(shadowfx::test::loadEffect(kLoopingEffect, false, "looping.fx"),
+                                            "looping", "dual-l", kFrames, 0.0f);
+    EXPECT_EQ(overhead.lookups, 0u);
+    EXPECT_EQ(overhead.allocations, 0u);
 }
 
 }  // namespace

@@ -57,14 +57,15 @@ void BatchedPass::beginRecords(const std::vector<uint32_t>& context, size_t obje
     }
     if (mKeys.size() != objectCount) {
         mKeys.assign(objectCount, RecordKey{});
+        mKeyContexts.assign(objectCount, 0);
         mRecords.assign(objectCount * mVariant.recordSize, 0);
         mDirtyBegin = mDirtyEnd = 0;
     }
 }
 
 bool BatchedPass::recordCurrent(size_t index, const SceneObject& object) {
+    if (mKeyContexts[index] != mContextGeneration) return false;
     RecordKey& key = mKeys[index];
-    if (!key.valid || key.context != mContextGeneration) return false;
     if (key.sceneStamp == mSceneStamp) return true;  // no object changed since it was last compared
     if (key.world != object.world || key.color != object.color || key.id != object.id) return false;
     key.sceneStamp = mSceneStamp;
@@ -74,7 +75,8 @@ bool BatchedPass::recordCurrent(size_t index, const SceneObject& object) {
 void BatchedPass::packRecord(size_t index, const SceneObject& object,
                              const std::vector<fx::Value>& parameters,
                              const std::vector<fx::Value>& arguments) {
-    mKeys[index] = RecordKey{true, mContextGeneration, mSceneStamp, object.world, object.color, object.id};
+    mKeyContexts[index] = mContextGeneration;
+    mKeys[index] = RecordKey{mSceneStamp, object.world, object.color, object.id};
     const size_t size = mVariant.recordSize;
     if (size == 0) return;
     mScratch.assign(size, 0);

@@ -66,9 +66,8 @@ public:
 private:
     BatchedPass() = default;
 
+    // What an object's record was packed from, besides the context (mKeyContexts).
     struct RecordKey {
-        bool valid = false;
-        uint64_t context = 0;
         uint64_t sceneStamp = 0;  // of the scene in which the object was last seen equal
         glm::mat4 world{1.0f};
         glm::vec3 color{0.0f};
@@ -85,6 +84,10 @@ private:
     uint64_t mContextGeneration = 1;
     uint64_t mSceneStamp = 0;
     std::vector<RecordKey> mKeys;  // per scene object
+    // Per scene object: the context generation its record was packed in, 0 for none. Apart from mKeys
+    // because every visible object's is read when the context changed (a moving camera: every frame),
+    // and 8 bytes an object stay in the CPU's caches where a whole key, fetched from memory, stalls.
+    std::vector<uint64_t> mKeyContexts;
     std::vector<uint8_t> mRecords;
     std::vector<uint8_t> mScratch;
     size_t mDirtyBegin = 0, mDirtyEnd = 0;  // records packed since the last upload, in objects

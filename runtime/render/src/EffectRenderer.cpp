@@ -264,7 +264,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
     mImpl->ensureFrameResources(options.width, options.height, &neededTargets);
-    mImpl->updateSceneCache(frameScene);
+    if (rebased) mImpl->updateSceneCache(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
     SemanticBinder& binder = *mImpl->binder;
@@ -302,13 +302,17 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
         ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
-                               recorder, dryRunDiagnostics);
+                               mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
+        // FrameOptions::outputTargets, found by name again only when the names change.
         std::vector<int>& outputs = mImpl->frameScratch.outputTargets;
-        outputs.clear();
-        for (const std::string& name : options.outputTargets)
-            if (const std::optional<size_t> index = findParameter(name))
-                outputs.push_back(static_cast<int>(*index));
+        if (mImpl->frameScratch.outputTargetNames != options.outputTargets) {
+            mImpl->frameScratch.outputTargetNames = options.outputTargets;
+            outputs.clear();
+            for (const std::string& name : options.outputTargets)
+                if (const std::optional<size_t> index = findParameter(name))
+                    outputs.push_back(static_cast<int>(*index));
+        }
         plan.markDead(outputs, options.leaveOut);
         // A render target no remaining operation writes or reads is not allocated.
         const auto need = [&neededTargets](int resource) {
@@ -331,8 +335,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran = ScriptInterpreter::run(*technique, *mImpl->scriptOperands,
-                                            mImpl->effect().maxScriptLoopCount, executor, diagnostics);
+    const bool ran =
+        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
+                               mImpl->frameScratch.scriptLoops, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

@@ -313,6 +313,17 @@ void storeParameter(const std::vector<fx::ParameterInfo>& parameters, size_t ind
     stamps.touch(index);
 }
 
+void storeScalarParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, float scalar,
+                          std::vector<fx::Value>& values, ParameterStamps& stamps) {
+    fx::Value& value = values.at(index);
+    value.type = parameters.at(index).type;
+    const size_t components =
+        value.type.isNumeric() ? static_cast<size_t>(std::max(1, value.type.componentCount())) : 1;
+    value.data.assign(components, scalar);
+    value.string.clear();
+    stamps.touch(index);
+}
+
 std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const fx::CompiledEffect> compiled,
                                                          fx::DiagnosticSink& diagnostics) {
     auto resources = std::unique_ptr<EffectResources>(new EffectResources());

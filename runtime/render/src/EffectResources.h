@@ -206,6 +206,11 @@ public:
         std::vector<glm::vec3> sliceBody;    // PlanRecorder: a cascade slice's intersection body
         std::vector<uint32_t> sliceObjects;  // PlanRecorder: the objects in a cascade slice
         std::vector<GLuint> timerQueries;    // PassTimer's queries of the frame
+
+        // The names `outputTargets` was resolved from.
+        std::vector<std::string> outputTargetNames;
+        // The loops open while the dry run or the run walks the script.
+        ScriptLoopStack scriptLoops;
     } frameScratch;
     // The frame's plan, kept between frames for its storage (EffectRenderer::render rebuilds it).
     FramePlan framePlan;
@@ -248,6 +253,10 @@ private:
 // touches its stamp. The one way values change, whether the application, a script or a dry run sets them.
 void storeParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, fx::Value value,
                     std::vector<fx::Value>& values, ParameterStamps& stamps);
+// The same for a scalar (a script's loop index), broadcast into the value's own storage: a frame that
+// stores it again allocates nothing.
+void storeScalarParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, float scalar,
+                          std::vector<fx::Value>& values, ParameterStamps& stamps);
 
 // A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
 glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height);

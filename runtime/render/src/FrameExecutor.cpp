@@ -304,13 +304,13 @@ void FrameExecutor::drawScene(const fx::ScriptCommand&) {
     }
 }
 
-void FrameExecutor::setParameter(const std::string& name, int parameter, const fx::Value& value) {
+void FrameExecutor::setLoopIndex(const std::string& name, int parameter, int index) {
     if (parameter < 0) {
         fail(fx::DiagId::UnknownParameter, {name});
         return;
     }
-    storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mResources.values,
-                   mResources.stamps);
+    storeScalarParameter(mResources.parameterInfo(), static_cast<size_t>(parameter),
+                         static_cast<float>(index), mResources.values, mResources.stamps);
     // A script's value of a `shared` parameter is the pool's, as an application's setter's is.
     mResources.pool.published(mResources, static_cast<size_t>(parameter));
 }
@@ -492,6 +492,7 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
 // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per
 // pass (perObject false) and the per-object ones per draw (perObject true); without, all per draw.
 void FrameExecutor::evaluateArguments(size_t passIndex, const PassUse& use, bool perObject) {
+    if (mOptions.leaveOut && perObject && !use.anyArgumentPerObject) return;  // nothing to run per draw
     PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
     const std::vector<bool>* which =
         mOptions.leaveOut ? (perObject ? &use.argumentPerObject : &use.argumentPerPass) : nullptr;
@@ -501,7 +502,7 @@ void FrameExecutor::evaluateArguments(size_t passIndex, const PassUse& use, bool
 void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
                              const PassUse& use, const SceneObject* object, GpuMesh& mesh) {
     {
-        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);  // the preshaders' time nested
         if (mOptions.leaveOut) {
             mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
                          SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
@@ -509,10 +510,7 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
             mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
                          SemanticBinder::Scope::All, nullptr, &mResources.stamps);
         }
-    }
-    evaluateArguments(passIndex, use, true);
-    {
-        PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
+        evaluateArguments(passIndex, use, true);
         uploadPassValues(mResources, program, mArguments);
     }
     {
@@ -633,22 +631,23 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     }
     batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp);
     const auto bindObject = [&](const SceneObject& object) {
-        {
-            PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-            mBinder.bind(mPort, &object, mOptions.time, mResources.values, mResources.pinned,
-                         SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
-        }
+        mBinder.bind(mPort, &object, mOptions.time, mResources.values, mResources.pinned,
+                     SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
         evaluateArguments(passIndex, use, true);
     };
-    for (uint32_t index : mVisible) {
-        const SceneObject& object = mScene.objects[index];
-        if (batched.recordCurrent(index, object)) continue;
-        bindObject(object);
+    {
+        // The records timed as one binding scope, the preshaders' share nested (PassTimer::Scope).
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        batched.packRecord(index, object, mResources.values, mArguments);
+        for (uint32_t index : mVisible) {
+            const SceneObject& object = mScene.objects[index];
+            if (batched.recordCurrent(index, object)) continue;
+            bindObject(object);
+            batched.packRecord(index, object, mResources.values, mArguments);
+        }
+        // The values as drawing object by object leaves them (the last object's), for whatever reads them
+        // next.
+        if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()]);
     }
-    // The values as drawing object by object leaves them (the last object's), for whatever reads them next.
-    if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()]);
 
     // The instance lists: one run per mesh (in order of first appearance, each keeping its objects' order),
     // or per run of consecutive objects with one mesh where the order matters.

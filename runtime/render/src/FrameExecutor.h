@@ -50,7 +50,7 @@ public:
                   const fx::SourceLoc& loc) override;
     void drawScene(const fx::ScriptCommand& command) override;
     const fx::Value* parameter(size_t index) const override { return &mResources.values[index]; }
-    void setParameter(const std::string& name, int parameter, const fx::Value& value) override;
+    void setLoopIndex(const std::string& name, int parameter, int index) override;
 
 private:
     void fail(fx::DiagId id, const std::vector<std::string>& args);

@@ -40,6 +40,7 @@ std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t cou
                                                [&binder](size_t p) { return binder.isPerObject(p); });
             use.argumentPerObject.push_back(perObject);
             use.argumentPerPass.push_back(!perObject);
+            use.anyArgumentPerObject = use.anyArgumentPerObject || perObject;
         }
         for (size_t p = 0; p < count; ++p) {
             if (!use.used[p]) continue;

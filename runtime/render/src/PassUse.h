@@ -17,6 +17,7 @@ struct PassUse {
     std::vector<bool> used;                 // per effect parameter
     std::vector<bool> argumentPerObject;    // per CompiledPass::arguments entry
     std::vector<bool> argumentPerPass;      // its complement
+    bool anyArgumentPerObject = false;      // some argumentPerObject entry is true
     std::vector<size_t> perPassParameters;  // used and not bound per object
     // The view/projection matrices it reads: the port's, and those of annotated lights. Culling trusts
     // the port's frustum only for passes that project with it (a camera-port pass that draws a light's

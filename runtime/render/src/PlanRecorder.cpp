@@ -223,9 +223,10 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     }
 }
 
-void PlanRecorder::setParameter(const std::string&, int parameter, const fx::Value& value) {
+void PlanRecorder::setLoopIndex(const std::string&, int parameter, int index) {
     if (parameter >= 0)
-        storeParameter(mResources.parameterInfo(), static_cast<size_t>(parameter), value, mValues, mStamps);
+        storeScalarParameter(mResources.parameterInfo(), static_cast<size_t>(parameter),
+                             static_cast<float>(index), mValues, mStamps);
 }
 
 size_t PlanRecorder::passIndex(const fx::CompiledPass& pass) const {

@@ -47,7 +47,7 @@ public:
     // the scene and the camera, so it is never taken for cached.
     void drawScene(const fx::ScriptCommand& command) override;
     const fx::Value* parameter(size_t index) const override { return &mValues[index]; }
-    void setParameter(const std::string& name, int parameter, const fx::Value& value) override;
+    void setLoopIndex(const std::string& name, int parameter, int index) override;
 
 private:
     size_t passIndex(const fx::CompiledPass& pass) const;

@@ -162,7 +162,9 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
 }
 
 bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, const ScriptOperands& operands,
-                            int maxLoopCount, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
+                            int maxLoopCount, ScriptLoopStack& loops, ScriptTarget& target,
+                            fx::DiagnosticSink& diagnostics) {
+    loops.clear();
     if (!clearsFrame(technique)) {
         // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
         // clears to the host background, as in FX Composer.
@@ -176,34 +178,29 @@ bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, const Script
             target.clear(what);
     }
     if (technique.hasScript)
-        return runCommands(technique.script, technique, nullptr, operands, maxLoopCount, target, diagnostics);
+        return runCommands(technique.script, technique, nullptr, operands, maxLoopCount, loops, target,
+                           diagnostics);
     // No script: every pass in order, as D3DX would run them.
     for (const fx::CompiledPass& pass : technique.passes)
-        if (!runPass(pass, technique, operands, maxLoopCount, target, diagnostics)) return false;
+        if (!runPass(pass, technique, operands, maxLoopCount, loops, target, diagnostics)) return false;
     return true;
 }
 
 bool ScriptInterpreter::runPass(const fx::CompiledPass& pass, const fx::CompiledTechnique& technique,
-                                const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
-                                fx::DiagnosticSink& diagnostics) {
+                                const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
+                                ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     target.beginPass(pass);
     if (pass.hasScript)
-        return runCommands(pass.script, technique, &pass, operands, maxLoopCount, target, diagnostics);
+        return runCommands(pass.script, technique, &pass, operands, maxLoopCount, loops, target, diagnostics);
     target.draw(pass, Command::DrawWhat::Geometry);
     return true;
 }
 
 bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                                     const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                                    const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
-                                    fx::DiagnosticSink& diagnostics) {
-    struct Loop {
-        size_t body;                  // index of the first command inside the loop
-        int remaining;                // iterations still to run after this one
-        int index;                    // current iteration
-        const Command* indexCommand;  // its LoopGetIndex, or null
-    };
-    std::vector<Loop> loops;
+                                    const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
+                                    ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
+    const size_t outer = loops.size();  // loops of the script this one runs inside, not this one's
 
     for (size_t i = 0; i < commands.size(); ++i) {
         const Command& command = commands[i];
@@ -215,7 +212,8 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                                        {command.value, technique.name});
                     return false;
                 }
-                if (!runPass(*next, technique, operands, maxLoopCount, target, diagnostics)) return false;
+                if (!runPass(*next, technique, operands, maxLoopCount, loops, target, diagnostics))
+                    return false;
                 break;
             }
             case Command::Kind::RenderColorTarget:
@@ -302,31 +300,29 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                     }
                     break;
                 }
-                loops.push_back(Loop{i + 1, count - 1, 0, nullptr});
+                loops.push_back(ScriptLoop{i + 1, count - 1, 0, nullptr});
                 break;
             }
             case Command::Kind::LoopGetIndex:
-                if (loops.empty()) {
+                if (loops.size() == outer) {
                     diagnostics.report(fx::DiagId::ScriptLoopIndexOutsideLoop, command.loc, {});
                     return false;
                 }
                 loops.back().indexCommand = &command;
-                target.setParameter(command.value, operands.of(command).parameter,
-                                    fx::Value::integer(loops.back().index));
+                target.setLoopIndex(command.value, operands.of(command).parameter, loops.back().index);
                 break;
             case Command::Kind::LoopEnd:
-                if (loops.empty()) {
+                if (loops.size() == outer) {
                     diagnostics.report(fx::DiagId::ScriptLoopEndWithoutLoop, command.loc, {});
                     return false;
                 }
                 if (loops.back().remaining > 0) {
-                    Loop& loop = loops.back();
+                    ScriptLoop& loop = loops.back();
                     --loop.remaining;
                     ++loop.index;
                     if (loop.indexCommand)
-                        target.setParameter(loop.indexCommand->value,
-                                            operands.of(*loop.indexCommand).parameter,
-                                            fx::Value::integer(loop.index));
+                        target.setLoopIndex(loop.indexCommand->value,
+                                            operands.of(*loop.indexCommand).parameter, loop.index);
                     i = loop.body - 1;
                 } else {
                     loops.pop_back();
@@ -343,7 +339,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 break;  // header commands: nothing to execute
         }
     }
-    if (!loops.empty()) {
+    if (loops.size() != outer) {
         diagnostics.report(fx::DiagId::ScriptUnbalancedLoop,
                            commands.empty() ? fx::SourceLoc{} : commands.back().loc, {});
         return false;

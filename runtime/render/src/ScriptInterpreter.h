@@ -71,9 +71,21 @@ public:
     virtual void drawScene(const fx::ScriptCommand& command) = 0;
     // Parameter access for Loop*/ClearSet* values, by index.
     virtual const fx::Value* parameter(size_t index) const = 0;
-    // LoopGetIndex: `name` as written, `parameter` its index or -1 where the effect has none.
-    virtual void setParameter(const std::string& name, int parameter, const fx::Value& value) = 0;
+    // LoopGetIndex: the current iteration `index` stored in the parameter the command names (`name` as
+    // written, `parameter` its index or -1 where the effect has none).
+    virtual void setLoopIndex(const std::string& name, int parameter, int index) = 0;
 };
+
+// A LoopByCount the script is inside.
+struct ScriptLoop {
+    size_t body;                            // index of the first command inside the loop
+    int remaining;                          // iterations still to run after this one
+    int index;                              // current iteration
+    const fx::ScriptCommand* indexCommand;  // its LoopGetIndex, or null
+};
+// The loops open while a script runs, kept by the caller between runs: once it has held the deepest
+// nesting a script reaches, running that script again allocates nothing.
+using ScriptLoopStack = std::vector<ScriptLoop>;
 
 class ScriptInterpreter {
 public:
@@ -93,8 +105,9 @@ public:
     // clears the frame (HostScene.h). A LoopByCount over `maxLoopCount` iterations (the effect's
     // CompiledEffect::maxScriptLoopCount) is reported and the script stops, never a hang. Returns false if
     // the script could not run to its end.
+    // `loops` is the caller's kept stack (emptied first).
     static bool run(const fx::CompiledTechnique& technique, const ScriptOperands& operands, int maxLoopCount,
-                    ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+                    ScriptLoopStack& loops, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
 
     // Whether the technique's scripts clear the frame's own colour target (a Clear=Color while
     // RenderColorTarget0 is the frame), as FX Composer's scene effects do; material effects do not.
@@ -102,12 +115,13 @@ public:
 
 private:
     static bool runPass(const fx::CompiledPass& pass, const fx::CompiledTechnique& technique,
-                        const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
-                        fx::DiagnosticSink& diagnostics);
+                        const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
+                        ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+    // A pass script's loops go on the stack above its technique script's open ones.
     static bool runCommands(const std::vector<fx::ScriptCommand>& commands,
                             const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                            const ScriptOperands& operands, int maxLoopCount, ScriptTarget& target,
-                            fx::DiagnosticSink& diagnostics);
+                            const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
+                            ScriptTarget& target, fx::DiagnosticSink& diagnostics);
 };
 
 }  // namespace runtime

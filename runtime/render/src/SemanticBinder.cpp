@@ -330,6 +330,8 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters)
         }
         mBindings.push_back(binding);
     }
+    for (size_t b = 0; b < mBindings.size(); ++b)
+        (dependsOnObject(mBindings[b].kind) ? mObjectBindings : mPortBindings).push_back(b);
 }
 
 int SemanticBinder::lightSlot(std::string_view lightName) {
@@ -578,15 +580,20 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                           std::vector<fx::Value>& values, const std::vector<bool>& pinned, Scope scope,
                           const std::vector<bool>* used, ParameterStamps* stamps) const {
     const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
-    for (const Binding& binding : mBindings) {
-        if (!binding.active || pinned[binding.parameter]) continue;
-        if (used && !(*used)[binding.parameter]) continue;
-        if (scope != Scope::All && dependsOnObject(binding.kind) != (scope == Scope::PerObject)) continue;
+    const auto bindOne = [&](const Binding& binding) {
+        if (!binding.active || pinned[binding.parameter]) return;
+        if (used && !(*used)[binding.parameter]) return;
         fx::Value& value = values[binding.parameter];
         if (stamps) mPrevious.assign(value.data.begin(), value.data.end());
         write(binding, port, object, time, world, value);
         if (stamps && value.data != mPrevious) stamps->touch(binding.parameter);
+    };
+    if (scope == Scope::All) {
+        for (const Binding& binding : mBindings) bindOne(binding);
+        return;
     }
+    // A draw binds the few per-object bindings without walking past the others.
+    for (size_t b : scope == Scope::PerObject ? mObjectBindings : mPortBindings) bindOne(mBindings[b]);
 }
 
 void SemanticBinder::write(const Binding& binding, const RenderPortView& port, const SceneObject* object,

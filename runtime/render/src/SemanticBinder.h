@@ -228,6 +228,8 @@ private:
     std::vector<FittedLight> mFittedLights;  // one per light any parameter names, fitted once per frame
     bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
+    std::vector<size_t> mObjectBindings;  // indices in mBindings of those that depend on the object
+    std::vector<size_t> mPortBindings;    // and of the others
     // The light slots: the names the effect uses, and per frame the scene's light of each (by index into
     // Scene::lights, resolved again only when the names of the scene's lights change).
     std::vector<std::string> mSlotNames;
