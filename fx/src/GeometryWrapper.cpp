@@ -12,7 +12,9 @@ namespace fx {
 
 // The stream's element struct, redeclared with the varying location of each member's semantic (glslang
 // assigns the locations of a geometry shader's outputs from the struct it appends): members must be
-// scalars or vectors with a POSITION/SV_Position, varying or SV_ClipDistance semantic.
+// scalars or vectors with a POSITION/SV_Position or varying semantic, or a system value a geometry shader
+// writes (SV_ClipDistance, SV_CullDistance, SV_RenderTargetArrayIndex, SV_ViewportArrayIndex,
+// SV_PrimitiveID).
 bool WrapperBuilder::streamElement(const FunctionParam& stream) {
     const StructDecl* decl =
         stream.type.base == BaseType::Struct ? mEffect.findStruct(stream.type.structName) : nullptr;
@@ -43,7 +45,11 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
         const bool positionVarying = semantic == "POSITION0" && mPositionVarying >= 0;
         if (!positionVarying && (semantic == "POSITION0" || semantic == "SV_POSITION")) {
             members += "    " + declared + " : SV_Position;\n";
-        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0) {
+        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0 ||
+                   semantic == "SV_RENDERTARGETARRAYINDEX" || semantic == "SV_VIEWPORTARRAYINDEX" ||
+                   semantic == "SV_PRIMITIVEID") {
+            // GL's gl_ClipDistance, gl_CullDistance, gl_Layer, gl_ViewportIndex and gl_PrimitiveID: glslang
+            // maps the system value to its built-in.
             members += "    " + declared + " : " + m.semantic + ";\n";
         } else if (auto location = positionVarying             ? std::optional<int>(mPositionVarying)
                                    : varyingLocation(semantic) ? varyingLocation(semantic)
