@@ -1,6 +1,7 @@
 //--------------------------------------------------------------------------------------
 // A cube map rendered in one pass, as the DirectX SDK's samples render one: the geometry shader sends
-// each triangle to all six faces of a cube render target through SV_RenderTargetArrayIndex. The
+// each triangle to all six faces of a cube render target through SV_RenderTargetArrayIndex, beside an
+// array output (the SDK's environment-mapping shader hands six normals on so). The
 // application (here a host file, cube_map_gs.json) creates the cube, binds it whole and gives it to
 // g_txEnvMap; a second technique shows the six faces side by side.
 //--------------------------------------------------------------------------------------
@@ -46,7 +47,7 @@ struct GS_CUBEMAP_IN
 struct PS_CUBEMAP_IN
 {
     float4 Pos : SV_POSITION;
-    float4 Color : COLOR0;
+    float4 Face[2] : FACEDATA;    // the face's colour, then its index in x
     uint RTIndex : SV_RenderTargetArrayIndex;
 };
 
@@ -65,7 +66,8 @@ void GS_CubeMap( triangle GS_CUBEMAP_IN input[3], inout TriangleStream<PS_CUBEMA
     {
         PS_CUBEMAP_IN output;
         output.RTIndex = f;
-        output.Color = g_vFaceColor[f];
+        output.Face[0] = g_vFaceColor[f];
+        output.Face[1] = float4( f, 0, 0, 1 );
         for( int v = 0; v < 3; v++ )
         {
             output.Pos = input[v].Pos;
@@ -75,11 +77,13 @@ void GS_CubeMap( triangle GS_CUBEMAP_IN input[3], inout TriangleStream<PS_CUBEMA
     }
 }
 
-// The face's colour where the pixel shader reads the face the rasterizer drew into (gl_Layer), black
-// where the two disagree.
+// The face's colour where the face the pixel shader reads (gl_Layer) is the one the geometry shader
+// wrote, by colour and by index; black where they disagree.
 float4 PS_CubeMap( PS_CUBEMAP_IN input ) : SV_Target
 {
-    return all( abs( input.Color - g_vFaceColor[input.RTIndex] ) < 0.01 ) ? input.Color : float4( 0, 0, 0, 1 );
+    const bool same = all( abs( input.Face[0] - g_vFaceColor[input.RTIndex] ) < 0.01 ) &&
+                      abs( input.Face[1].x - input.RTIndex ) < 0.01;
+    return same ? input.Face[0] : float4( 0, 0, 0, 1 );
 }
 
 struct VS_OUTPUT_VISUALIZE
