@@ -87,8 +87,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 6,
-              "the enum lengths below were pinned at format version 6: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 7,
+              "the enum lengths below were pinned at format version 7: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
@@ -98,7 +98,7 @@ static_assert(enumLength<StreamOutElement::Component>() == 3);
 static_assert(enumLength<StreamOutput::Primitive>() == 3);
 static_assert(enumLength<TextureFormat>() == 12);
 static_assert(enumLength<TextureDesc::Kind>() == 6);
-static_assert(enumLength<BaseType>() == 48);
+static_assert(enumLength<BaseType>() == 49);
 static_assert(enumLength<Shape>() == 3);
 static_assert(enumLength<ScriptCommand::Kind>() == 19);
 static_assert(enumLength<ScriptCommand::ClearWhat>() == 3);

@@ -277,7 +277,6 @@ TypeDesc Parser::parseType() {
         if (check("<")) type.templateArgs = angleText();
         return type;
     }
-    if (isTemplatedObject(name.text)) fail(DiagId::MultisampleArrayInEffect, name.loc, {name.text});
     fail(DiagId::UnknownType, name.loc, {name.text});
 }
 
@@ -287,6 +286,7 @@ std::optional<BaseType> Parser::supportedResource(const std::string& name) {
         {"Texture2DArray", BaseType::Texture2DArray},
         {"TextureCubeArray", BaseType::TextureCubeArray},
         {"Texture2DMS", BaseType::Texture2DMS},
+        {"Texture2DMSArray", BaseType::Texture2DMSArray},
         {"Buffer", BaseType::Buffer},
         {"StructuredBuffer", BaseType::StructuredBuffer},
         {"ByteAddressBuffer", BaseType::ByteAddressBuffer},

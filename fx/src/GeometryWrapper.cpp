@@ -12,7 +12,9 @@ namespace fx {
 
 // The stream's element struct, redeclared with the varying location of each member's semantic (glslang
 // assigns the locations of a geometry shader's outputs from the struct it appends): members must be
-// scalars or vectors with a POSITION/SV_Position, varying or SV_ClipDistance semantic.
+// scalars or vectors with a POSITION/SV_Position or varying semantic, or a system value a geometry shader
+// writes (SV_ClipDistance, SV_CullDistance, SV_RenderTargetArrayIndex, SV_ViewportArrayIndex,
+// SV_PrimitiveID).
 bool WrapperBuilder::streamElement(const FunctionParam& stream) {
     const StructDecl* decl =
         stream.type.base == BaseType::Struct ? mEffect.findStruct(stream.type.structName) : nullptr;
@@ -37,13 +39,47 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
     std::string members;
     for (const StructMember& m : decl->members) {
         const std::string semantic = canonicalSemantic(m.semantic);
-        if (m.type.base == BaseType::Struct || !m.type.arrayDims.empty() || m.type.shape == Shape::Matrix)
+        if (m.type.base == BaseType::Struct || m.type.arrayDims.size() > 1 || m.type.shape == Shape::Matrix)
             return fail(DiagId::GeometryOutputNotVector, m.loc, {m.name});
-        std::string declared = hlslTypeName(m.type) + " " + m.name;
+        TypeDesc element = m.type;
+        element.arrayDims.clear();
+        std::string declared = hlslTypeName(element) + " " + m.name;
+        if (!m.type.arrayDims.empty()) {
+            // `float3 Normals[6] : SIXNORMS` is SIXNORMS0..5, as fxc numbered them. The array keeps its
+            // shape (the user's code indexes it) at its first element's location; glslang splits it into
+            // one output per element at that location, which the GLSL step moves to the following ones
+            // (SpirvToGlsl.cpp). So the elements' semantics must take consecutive locations (an effect whose
+            // other names sort between them, SIXNORMS10 beside SIXNORMS1, has them apart).
+            const int count = std::max(m.type.arrayDims[0], 1);
+            const auto [name, first] = splitSemantic(semantic);
+            const auto locationOf = [&](int k) {
+                const std::string each = name + std::to_string(first + k);
+                return varyingLocation(each) ? varyingLocation(each) : customVaryingLocation(mEffect, each);
+            };
+            const std::optional<int> start = locationOf(0);
+            if (!start || semantic.rfind("SV_", 0) == 0 || semantic == "POSITION0")
+                return fail(DiagId::GeometryOutputSemanticUnsupported, m.loc, {m.semantic});
+            for (int k = 1; k < count; ++k)
+                if (locationOf(k) != *start + k)
+                    return fail(DiagId::GeometryOutputSemanticUnsupported, m.loc, {m.semantic});
+            const bool integer = element.base != BaseType::Float && element.base != BaseType::Half;
+            if (integer && m.interpolation.empty())
+                return fail(DiagId::GeometryIntegerOutputInterpolated, m.loc, {m.name});
+            const std::string at = std::to_string(*start);
+            members += "    [[vk::location(" + at + ")]] " +
+                       (m.interpolation.empty() ? std::string() : m.interpolation + " ") + declared + "[" +
+                       std::to_string(count) + "] : FX_V" + at + ";\n";
+            for (int k = 0; k < count; ++k) mVaryingOutputs[*start + k] = element;
+            continue;
+        }
         const bool positionVarying = semantic == "POSITION0" && mPositionVarying >= 0;
         if (!positionVarying && (semantic == "POSITION0" || semantic == "SV_POSITION")) {
             members += "    " + declared + " : SV_Position;\n";
-        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0) {
+        } else if (semantic.rfind("SV_CLIPDISTANCE", 0) == 0 || semantic.rfind("SV_CULLDISTANCE", 0) == 0 ||
+                   semantic == "SV_RENDERTARGETARRAYINDEX" || semantic == "SV_VIEWPORTARRAYINDEX" ||
+                   semantic == "SV_PRIMITIVEID") {
+            // GL's gl_ClipDistance, gl_CullDistance, gl_Layer, gl_ViewportIndex and gl_PrimitiveID: glslang
+            // maps the system value to its built-in.
             members += "    " + declared + " : " + m.semantic + ";\n";
         } else if (auto location = positionVarying             ? std::optional<int>(mPositionVarying)
                                    : varyingLocation(semantic) ? varyingLocation(semantic)

@@ -20,7 +20,36 @@ const HostTarget* HostFile::findTarget(const std::string& name) const {
     return nullptr;
 }
 
+std::string_view hostTargetKindName(HostTarget::Kind kind) {
+    switch (kind) {
+        case HostTarget::Kind::Plane:
+            return "2d";
+        case HostTarget::Kind::Cube:
+            return "cube";
+        case HostTarget::Kind::Array:
+            return "array";
+        case HostTarget::Kind::Volume:
+            return "volume";
+    }
+    return "2d";
+}
+
 namespace {
+
+// The texture types a target of this kind can be given to, as D3D10 binds a view of it.
+bool targetFits(HostTarget::Kind kind, fx::BaseType type) {
+    switch (kind) {
+        case HostTarget::Kind::Plane:
+            return type == fx::BaseType::Texture || type == fx::BaseType::Texture2D;
+        case HostTarget::Kind::Cube:
+            return type == fx::BaseType::TextureCube;
+        case HostTarget::Kind::Array:
+            return type == fx::BaseType::Texture2DArray;
+        case HostTarget::Kind::Volume:
+            return type == fx::BaseType::Texture3D;
+    }
+    return false;
+}
 
 size_t valueComponents(const HostValue& value) {
     switch (value.kind) {
@@ -87,6 +116,10 @@ bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::D
         if (!info || info->type.isNumeric())
             fail(target.loc, fx::DiagId::HostTargetTextureUnknown,
                  {"targets/" + target.name, target.texture});
+        else if (info->type.isTexture() && !targetFits(target.kind, info->type.base))
+            fail(target.loc, fx::DiagId::HostTargetTextureKindMismatch,
+                 {"targets/" + target.name, std::string(hostTargetKindName(target.kind)), target.texture,
+                  info->type.hlslName()});
     }
     for (const HostParameter& parameter : host.parameters) checkValue(parameter, "parameters");
     if (host.visibility)

@@ -12,6 +12,14 @@
 
 namespace fx::detail {
 
+namespace {
+
+const char* multisampleKeyword(BaseType type) {
+    return type == BaseType::Texture2DMSArray ? "Texture2DMSArray" : "Texture2DMS";
+}
+
+}  // namespace
+
 void Compiler::textures() {
     std::filesystem::path base = std::filesystem::path(mEffect.path).parent_path();
     for (size_t i = 0; i < mEffect.parameters.size(); ++i) {
@@ -22,7 +30,7 @@ void Compiler::textures() {
         t.loc = p.loc;
         t.type = p.type.base == BaseType::TextureCube ? BaseType::TextureCube
                  : p.type.base == BaseType::Texture3D ? BaseType::Texture3D
-                 : p.type.base >= BaseType::Texture1DArray && p.type.base <= BaseType::Texture2DMS
+                 : p.type.base >= BaseType::Texture1DArray && p.type.base <= BaseType::Texture2DMSArray
                      ? p.type.base
                      : BaseType::Texture2D;
         resourceShape(p, t);
@@ -88,6 +96,12 @@ void Compiler::textures() {
                     v && v->data.size() >= 2 && checkSize(v->data[0], v->data[1], a->loc)) {
                     t.width = static_cast<int>(v->data[0]);
                     t.height = static_cast<int>(v->data[1]);
+                    if (volume && v->data.size() == 3) {
+                        if (v->data[2] >= 1 && v->data[2] <= 2048)
+                            t.depth = static_cast<int>(v->data[2]);
+                        else
+                            error(DiagId::InvalidDimensions, a->loc, {"a volume's depth must be 1..2048"});
+                    }
                 }
             }
         const Annotation* w = p.annotation("width");
@@ -152,25 +166,22 @@ void Compiler::textures() {
             }
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
-        const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
-                           t.type == BaseType::TextureCubeArray;
-        if (array && (t.kind == TextureDesc::Kind::RenderColorTarget ||
-                      t.kind == TextureDesc::Kind::RenderDepthStencilTarget))
-            error(DiagId::TextureArrayRenderTarget, p.loc, {p.name});
-        if (t.type == BaseType::Texture2DMS && t.samples == 0) {
+        if ((t.type == BaseType::Texture2DMS || t.type == BaseType::Texture2DMSArray) && t.samples == 0) {
             if (t.kind == TextureDesc::Kind::RenderColorTarget ||
                 t.kind == TextureDesc::Kind::RenderDepthStencilTarget)
-                error(DiagId::MultisampleTargetWithoutSampleCount, p.loc, {p.name});
+                error(DiagId::MultisampleTargetWithoutSampleCount, p.loc,
+                      {p.name, multisampleKeyword(t.type)});
             t.samples = 1;
         }
         mOut->textures.push_back(std::move(t));
     }
 }
 
-// A D3D10 array's element count (`int ArraySize = N;`, default 1) and a Texture2DMS<T, N>'s sample count.
+// A D3D10 array's element count (`int ArraySize = N;`, default 1) and a Texture2DMS<T, N>'s or
+// Texture2DMSArray<T, N>'s sample count.
 void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
     const bool array = t.type == BaseType::Texture1DArray || t.type == BaseType::Texture2DArray ||
-                       t.type == BaseType::TextureCubeArray;
+                       t.type == BaseType::TextureCubeArray || t.type == BaseType::Texture2DMSArray;
     if (const Annotation* a = p.annotation("ArraySize")) {
         TypeDesc scalar;
         std::optional<Value> v = array ? eval(a->value, &scalar) : std::nullopt;
@@ -182,7 +193,7 @@ void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
         else
             t.arraySize = static_cast<int>(n);
     }
-    if (t.type != BaseType::Texture2DMS) return;
+    if (t.type != BaseType::Texture2DMS && t.type != BaseType::Texture2DMSArray) return;
     // `Texture2DMS<float4, 4>`: the count follows the element type; D3D10 allows 1..32, GL's limit is the
     // driver's (GL_MAX_COLOR_TEXTURE_SAMPLES, at least 1), checked when the runtime creates it.
     const std::string& args = p.type.templateArgs;
@@ -198,7 +209,7 @@ void Compiler::resourceShape(const Parameter& p, TextureDesc& t) {
         !count.empty() && count.size() <= 2 && count.find_first_not_of("0123456789") == std::string::npos;
     const int n = digits ? std::atoi(count.c_str()) : 0;
     if (n < 1 || n > 32)
-        error(DiagId::MultisampleSampleCountInvalid, p.loc, {p.name});
+        error(DiagId::MultisampleSampleCountInvalid, p.loc, {p.name, multisampleKeyword(t.type)});
     else
         t.samples = static_cast<int>(n);
 }

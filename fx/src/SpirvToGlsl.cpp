@@ -306,6 +306,26 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             break;  // one $Global block per unit
         }
 
+        // A geometry shader's array output (`float4 Face[2] : FACEDATA`, GeometryWrapper.cpp) comes from
+        // glslang as one output per element ("fx_stream.Face[1]"), every one at the array's location:
+        // element k goes to the location after it by k, where the next stage reads it.
+        if (stage == ShaderStage::Geometry) {
+            std::map<uint32_t, int> atLocation;
+            for (const spirv_cross::Resource& r : resources.stage_outputs)
+                if (compiler.has_decoration(r.id, spv::DecorationLocation))
+                    ++atLocation[compiler.get_decoration(r.id, spv::DecorationLocation)];
+            static const std::regex kElement(R"((?:\[(\d+)\]|_(\d+)_)$)");
+            for (const spirv_cross::Resource& r : resources.stage_outputs) {
+                std::smatch element;
+                if (!compiler.has_decoration(r.id, spv::DecorationLocation)) continue;
+                const uint32_t location = compiler.get_decoration(r.id, spv::DecorationLocation);
+                if (atLocation[location] > 1 && std::regex_search(r.name, element, kElement))
+                    compiler.set_decoration(r.id, spv::DecorationLocation,
+                                            location + static_cast<uint32_t>(std::stoul(
+                                                           element[element[1].matched ? 1 : 2].str())));
+            }
+        }
+
         program.inputs.clear();
         if (stage == ShaderStage::Vertex) {
             for (const spirv_cross::Resource& r : resources.stage_inputs) {

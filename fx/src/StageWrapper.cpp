@@ -255,6 +255,13 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
 }
 
 bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& params, std::string& body) {
+    // The integer system values a pixel shader reads, by canonical semantic: the wrapper's parameter and
+    // its HLSL spelling (GL's gl_PrimitiveID, gl_SampleID, gl_Layer and gl_ViewportIndex).
+    static const std::map<std::string, std::pair<std::string, std::string>> kPixelSystemValues = {
+        {"SV_PRIMITIVEID", {"fx_primitiveId", "SV_PrimitiveID"}},
+        {"SV_SAMPLEINDEX", {"fx_sampleIndex", "SV_SampleIndex"}},
+        {"SV_RENDERTARGETARRAYINDEX", {"fx_layer", "SV_RenderTargetArrayIndex"}},
+        {"SV_VIEWPORTARRAYINDEX", {"fx_viewportIndex", "SV_ViewportArrayIndex"}}};
     std::set<std::string> systemValues;
     std::vector<std::string> systemParams;
     std::set<int> varyings;
@@ -279,11 +286,9 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             frontFace = true;
             body += "    " + f.lvalue + " = " +
                     (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
-        } else if (s == "SV_PRIMITIVEID" || s == "SV_SAMPLEINDEX") {
-            const std::string name = s == "SV_PRIMITIVEID" ? "fx_primitiveId" : "fx_sampleIndex";
-            if (systemValues.insert(name).second)
-                systemParams.push_back("uint " + name +
-                                       (s == "SV_PRIMITIVEID" ? " : SV_PrimitiveID" : " : SV_SampleIndex"));
+        } else if (const auto value = kPixelSystemValues.find(s); value != kPixelSystemValues.end()) {
+            const auto& [name, spelling] = value->second;
+            if (systemValues.insert(name).second) systemParams.push_back("uint " + name + " : " + spelling);
             body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + name + ", 0, 0, 0)") + ";\n";
         } else if (auto location =
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {

@@ -22,7 +22,7 @@ bool TypeDesc::isNumeric() const {
 }
 
 bool TypeDesc::isTexture() const {
-    return base >= BaseType::Texture && base <= BaseType::Texture2DMS;
+    return base >= BaseType::Texture && base <= BaseType::Texture2DMSArray;
 }
 bool TypeDesc::isBuffer() const {
     return base >= BaseType::Buffer && base <= BaseType::ConsumeStructuredBuffer;
@@ -93,6 +93,8 @@ std::string TypeDesc::hlslName() const {
             return withTemplate("TextureCubeArray");
         case BaseType::Texture2DMS:
             return withTemplate("Texture2DMS");
+        case BaseType::Texture2DMSArray:
+            return withTemplate("Texture2DMSArray");
         case BaseType::Buffer:
             return withTemplate("Buffer");
         case BaseType::StructuredBuffer:

@@ -294,11 +294,11 @@ struct TextureDesc {
     size_t parameter = 0;  // CompiledEffect::parameters index
     Kind kind = Kind::File;
     // Texture2D, TextureCube, Texture3D, or a D3D10 Texture1DArray, Texture2DArray, TextureCubeArray,
-    // Texture2DMS
+    // Texture2DMS, Texture2DMSArray
     BaseType type = BaseType::Texture2D;
     TextureFormat format = TextureFormat::RGBA8;
     int arraySize = 1;  // an array's elements (`int ArraySize = N;`, cubes for a TextureCubeArray)
-    int samples = 1;    // Texture2DMS<T, N>: N (1 when the type leaves it out)
+    int samples = 1;    // Texture2DMS<T, N>, Texture2DMSArray<T, N>: N (1 when the type leaves it out)
     int width = 0;      // Dimensions / width,height annotations; 0 when sized by viewportRatio
     int height = 0;
     int depth = 1;  // a texture function's Texture3D: its slices (Dimensions.z or the depth annotation)

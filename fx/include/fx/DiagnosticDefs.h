@@ -57,19 +57,12 @@ FX_DIAGNOSTIC(StateObjectArray, Error, "an array of state objects has one dimens
 FX_DIAGNOSTIC(ExpressionTooComplex, Error,
               "expression too complex (more than {0} nested or chained operators)")
 FX_DIAGNOSTIC(NestingTooDeep, Error, "nesting deeper than {0} levels")
-FX_DIAGNOSTIC(MultisampleArrayInEffect, Error,
-              "type '{0}' is not supported in effects: shadowfx creates no multisample array resources")
 FX_DIAGNOSTIC(ArraySizeOutOfRange, Error, "array size {0} is outside 1..{1} (all dimensions together)")
 FX_DIAGNOSTIC(AsmShader, Error, "asm shaders are not supported")
-FX_DIAGNOSTIC(
-    TextureArrayRenderTarget, Error,
-    "texture array '{0}' cannot be a render target: a pass's RenderColorTarget has no way to choose the "
-    "element it renders into")
-FX_DIAGNOSTIC(
-    MultisampleTargetWithoutSampleCount, Error,
-    "Texture2DMS '{0}': a multisample render target needs its sample count (Texture2DMS<float4, 4>)")
+FX_DIAGNOSTIC(MultisampleTargetWithoutSampleCount, Error,
+              "{1} '{0}': a multisample render target needs its sample count (Texture2DMS<float4, 4>)")
 FX_DIAGNOSTIC(MultisampleSampleCountInvalid, Error,
-              "Texture2DMS '{0}': its sample count must be the second template argument, 1..32 "
+              "{1} '{0}': its sample count must be the second template argument, 1..32 "
               "(Texture2DMS<float4, 4>)")
 FX_DIAGNOSTIC(WriteMaskTargetNeverBound, Error,
               "RenderTargetWriteMask[{0}] masks a render target the runtime never binds (it draws into four)")
@@ -629,6 +622,12 @@ FX_DIAGNOSTIC(
     HostUnshadowedMissing, Error,
     "{0}: expected \"unshadowed\": the targets (shadow maps) that light everything when left cleared")
 FX_DIAGNOSTIC(HostUnshadowedUnknownTarget, Error, "{0}: no target named '{1}'")
+FX_DIAGNOSTIC(HostTargetKindInvalid, Error,
+              "{0}: expected \"2d\", \"cube\", \"array\" or \"volume\", found '{1}'")
+FX_DIAGNOSTIC(HostTargetLayersInvalid, Error,
+              "{0}: expected a whole number from 1 to 2048 (an array's elements or a volume's slices)")
+FX_DIAGNOSTIC(HostTargetLayersWithoutLayers, Error,
+              "{0}: a {1} target has no \"layers\" (only an array or a volume does; a cube has six faces)")
 // A host file checked against the effect it drives (fx::checkHostFile).
 FX_DIAGNOSTIC(HostParameterUnknown, Error, "{0}: the effect has no parameter '{1}'")
 FX_DIAGNOSTIC(HostParameterNotNumeric, Error, "{0}: '{1}' is a {2}, not a number, vector or matrix")
@@ -637,6 +636,9 @@ FX_DIAGNOSTIC(HostValueSizeMismatch, Error,
 FX_DIAGNOSTIC(HostTargetTextureUnknown, Error, "{0}: the effect has no texture parameter '{1}'")
 FX_DIAGNOSTIC(HostStepTechniqueUnknown, Error, "{0}: the effect has no technique '{1}'")
 FX_DIAGNOSTIC(HostStepPassUnknown, Error, "{0}: technique '{1}' has no pass '{2}'")
+FX_DIAGNOSTIC(HostTargetTextureKindMismatch, Error,
+              "{0}: a {1} target cannot be given to '{2}', a {3} (a 2d target goes to a Texture2D or "
+              "texture, a cube to a TextureCube, an array to a Texture2DArray, a volume to a Texture3D)")
 // Drawing a host file's frame (runtime::HostFrame).
 FX_DIAGNOSTIC(HostLightNotInScene, Error, "light: the scene has no light named '{0}'")
 // The framebuffer's own reason a step's target cannot be bound.

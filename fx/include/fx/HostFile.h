@@ -17,11 +17,17 @@
 
 namespace fx {
 
-// A render target the application created: a colour texture with a depth buffer of its own.
+// A render target the application created: a colour texture with a depth buffer of its own. A cube, an
+// array or a volume is bound whole, as D3D10's view of the whole resource: a geometry shader's
+// SV_RenderTargetArrayIndex chooses the face, element or slice each primitive is drawn into, and its depth
+// buffer has as many layers.
 struct HostTarget {
+    enum class Kind { Plane, Cube, Array, Volume };
     std::string name;
     fx::TextureFormat format = fx::TextureFormat::RGBA8;
-    int width = 0;  // 0 x 0: the frame's size
+    Kind kind = Kind::Plane;
+    int layers = 1;  // an array's elements, a volume's slices
+    int width = 0;   // 0 x 0: the frame's size (a cube's faces: the frame's height square)
     int height = 0;
     std::string texture;  // the texture parameter it is given to ("" = none)
     fx::SourceLoc loc;
@@ -105,6 +111,9 @@ struct HostFile {
 
     const HostTarget* findTarget(const std::string& name) const;
 };
+
+// "2d", "cube", "array", "volume": how a host file spells a target's kind.
+std::string_view hostTargetKindName(HostTarget::Kind kind);
 
 // Checks the file against an effect: every technique, pass, parameter and texture it names exists and
 // every value fits its parameter's type. False, with the problems at the host file's lines, otherwise.

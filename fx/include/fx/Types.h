@@ -28,6 +28,7 @@ enum class BaseType {
     Texture2DArray,
     TextureCubeArray,
     Texture2DMS,        // Texture2DMS<T, N>: N samples per texel
+    Texture2DMSArray,   // Texture2DMSArray<T, N>: elements of N samples per texel
     Buffer,             // Buffer<T>: typed elements (a GL buffer texture)
     StructuredBuffer,   // StructuredBuffer<T>: a GL shader storage block of T
     ByteAddressBuffer,  // raw 32-bit words: a GL shader storage block of uint
@@ -79,7 +80,7 @@ struct TypeDesc {
     std::string templateArgs;
 
     bool isNumeric() const;      // bool/int/uint/half/float/double
-    bool isTexture() const;      // Texture..Texture2DMS: what TextureDesc describes
+    bool isTexture() const;      // Texture..Texture2DMSArray: what TextureDesc describes
     bool isBuffer() const;       // Buffer, StructuredBuffer, ByteAddressBuffer and the read-write buffers
     bool isImage() const;        // RWTexture1D..RWBuffer: a GL image
     bool isSampler() const;      // Sampler..SamplerComparisonState

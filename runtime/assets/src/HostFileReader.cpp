@@ -200,7 +200,7 @@ private:
 
     void readTarget(const std::string& name, const json& value, const json::json_pointer& where) {
         if (!isObject(value, where)) return;
-        checkKeys(value, where, {"format", "size", "texture"});
+        checkKeys(value, where, {"format", "size", "texture", "kind", "layers"});
         HostTarget target;
         target.name = name;
         target.loc = loc(where);
@@ -229,6 +229,28 @@ private:
         if (auto it = value.find("texture"); it != value.end())
             if (std::optional<std::string> texture = string(*it, where / "texture"))
                 target.texture = *texture;
+        if (auto it = value.find("kind"); it != value.end())
+            if (std::optional<std::string> kind = string(*it, where / "kind")) {
+                using Kind = fx::HostTarget::Kind;
+                bool known = false;
+                for (Kind k : {Kind::Plane, Kind::Cube, Kind::Array, Kind::Volume})
+                    if (*kind == fx::hostTargetKindName(k)) {
+                        target.kind = k;
+                        known = true;
+                    }
+                if (!known) error(where / "kind", fx::DiagId::HostTargetKindInvalid, {*kind});
+            }
+        if (auto it = value.find("layers"); it != value.end()) {
+            const json& layers = *it;
+            if (target.kind != fx::HostTarget::Kind::Array && target.kind != fx::HostTarget::Kind::Volume)
+                error(where / "layers", fx::DiagId::HostTargetLayersWithoutLayers,
+                      {std::string(fx::hostTargetKindName(target.kind))});
+            else if (!layers.is_number_integer() || layers.get<long long>() < 1 ||
+                     layers.get<long long>() > 2048)
+                error(where / "layers", fx::DiagId::HostTargetLayersInvalid);
+            else
+                target.layers = layers.get<int>();
+        }
         mHost->targets.push_back(std::move(target));
     }
 

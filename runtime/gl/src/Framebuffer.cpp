@@ -12,7 +12,9 @@ int levelSize(int size, int level) {
 
 void attach(GLenum attachment, const RenderTargetAttachment& target) {
     const GpuTexture& texture = *target.texture;
-    if (texture.isCube()) {
+    if (target.whole) {
+        gl::FramebufferTexture(GL_FRAMEBUFFER, attachment, texture.id(), target.level);
+    } else if (texture.isCube()) {
         gl::FramebufferTexture2D(GL_FRAMEBUFFER, attachment,
                                  GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + target.face), texture.id(),
                                  target.level);
@@ -47,6 +49,15 @@ std::string statusName(GLenum status) {
 
 }  // namespace
 
+void dropDepthOfOtherLayering(RenderTargets& targets) {
+    if (!targets.depth.texture) return;
+    for (const RenderTargetAttachment& color : targets.colors)
+        if (color.texture && color.whole != targets.depth.whole) {
+            targets.depth = {};
+            return;
+        }
+}
+
 int RenderTargets::width() const {
     for (const auto& color : colors) {
         if (color.texture != nullptr) return levelSize(color.texture->width(), color.level);
@@ -73,6 +84,7 @@ FramebufferCache::Key FramebufferCache::keyOf(const RenderTargets& targets) {
         key.serials[size_t(i)] = attachment.texture->serial();
         key.levels[size_t(i)] = attachment.level;
         key.faces[size_t(i)] = attachment.texture->isCube() ? attachment.face : 0;
+        key.whole[size_t(i)] = attachment.whole;
     }
     return key;
 }

@@ -108,6 +108,25 @@ GpuTexture GpuTexture::create2DMultisample(fx::TextureFormat format, int width, 
     return texture;
 }
 
+GpuTexture GpuTexture::create2DMultisampleArray(fx::TextureFormat format, int width, int height, int elements,
+                                                int samples) {
+    GpuTexture texture;
+    texture.mTarget = GL_TEXTURE_2D_MULTISAMPLE_ARRAY;
+    texture.mFormat = format;
+    texture.mWidth = std::max(width, 1);
+    texture.mHeight = std::max(height, 1);
+    texture.mDepth = std::max(elements, 1);
+    texture.mLevels = 1;
+    texture.mSamples = std::max(samples, 1);
+    texture.mSerial = gNextSerial++;
+    gl::GenTextures(1, &texture.mId);
+    gl::BindTexture(texture.mTarget, texture.mId);
+    gl::TexStorage3DMultisample(texture.mTarget, texture.mSamples, texture.glFormat().internalFormat,
+                                texture.mWidth, texture.mHeight, texture.mDepth, GL_TRUE);
+    gl::BindTexture(texture.mTarget, 0);
+    return texture;
+}
+
 GpuTexture::GpuTexture(GLenum target, fx::TextureFormat format, int width, int height, int levels, int depth)
     : mTarget(target),
       mFormat(format),

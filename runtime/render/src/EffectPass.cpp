@@ -74,11 +74,12 @@ ScriptTargets scriptTargets(const EffectResources& resources, const fx::Compiled
             texture = &found->second;
         }
         if (color) {
-            out.targets.colors[static_cast<size_t>(command.index)].texture = texture;
+            out.targets.colors[static_cast<size_t>(command.index)] = RenderTargetAttachment::wholeOf(texture);
         } else {
-            out.targets.depth.texture = texture;
+            out.targets.depth = RenderTargetAttachment::wholeOf(texture);
         }
     }
+    dropDepthOfOtherLayering(out.targets);
     return out;
 }
 

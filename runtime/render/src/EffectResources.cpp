@@ -59,8 +59,11 @@ int supportedSamples(const fx::TextureDesc& desc) {
 // elements of it, so that GetDimensions reports what the effect declared.
 GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples = 1) {
     const uint8_t white[4] = {255, 255, 255, 255};
-    if (type == fx::BaseType::Texture2DMS) {
-        GpuTexture texture = GpuTexture::create2DMultisample(fx::TextureFormat::RGBA8, 1, 1, samples);
+    if (type == fx::BaseType::Texture2DMS || type == fx::BaseType::Texture2DMSArray) {
+        GpuTexture texture =
+            type == fx::BaseType::Texture2DMS
+                ? GpuTexture::create2DMultisample(fx::TextureFormat::RGBA8, 1, 1, samples)
+                : GpuTexture::create2DMultisampleArray(fx::TextureFormat::RGBA8, 1, 1, elements, samples);
         gl::ClearTexImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
         return texture;
     }
@@ -84,6 +87,28 @@ GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples =
     GpuTexture texture = GpuTexture::create2D(fx::TextureFormat::RGBA8, 1, 1);
     texture.uploadRGBA8(white);
     return texture;
+}
+
+// A render target of the effect's type, `w` x `h` (a cube's faces `w` square). The layered ones (cubes,
+// arrays, volumes) are bound whole (RenderTargetAttachment::wholeOf).
+GpuTexture makeRenderTarget(const fx::TextureDesc& desc, int w, int h) {
+    switch (desc.type) {
+        case fx::BaseType::TextureCube:
+            return GpuTexture::createCube(desc.format, w, desc.mipLevels);
+        case fx::BaseType::Texture3D:
+            return GpuTexture::create3D(desc.format, w, h, desc.depth, desc.mipLevels);
+        case fx::BaseType::Texture1DArray:
+        case fx::BaseType::Texture2DArray:
+        case fx::BaseType::TextureCubeArray:
+            return makeArrayTexture(desc.type, desc.format, w, h, desc.arraySize, desc.mipLevels);
+        case fx::BaseType::Texture2DMS:
+            return GpuTexture::create2DMultisample(desc.format, w, h, supportedSamples(desc));
+        case fx::BaseType::Texture2DMSArray:
+            return GpuTexture::create2DMultisampleArray(desc.format, w, h, desc.arraySize,
+                                                        supportedSamples(desc));
+        default:
+            return GpuTexture::create2D(desc.format, w, h, desc.mipLevels);
+    }
 }
 
 std::string textureFileKindName(const TextureFile& file) {
@@ -404,7 +429,8 @@ const fx::Value* EffectResources::find(std::string_view name) const {
 
 bool EffectResources::createFileTextures(fx::DiagnosticSink& diagnostics) {
     for (const fx::TextureDesc& desc : mCompiled->textures) {
-        if (desc.type == fx::BaseType::Texture2DMS && supportedSamples(desc) < desc.samples)
+        if ((desc.type == fx::BaseType::Texture2DMS || desc.type == fx::BaseType::Texture2DMSArray) &&
+            supportedSamples(desc) < desc.samples)
             diagnostics.report(fx::DiagId::SampleCountReduced, desc.loc,
                                {parameterInfo()[desc.parameter].name, std::to_string(desc.samples),
                                 std::to_string(supportedSamples(desc))});
@@ -501,11 +527,7 @@ void EffectResources::ensureRenderTargets(int width, int height, const std::vect
             continue;
         if (it != textures.end() && it->second.width() == w && it->second.height() == h) continue;
         if (it != textures.end()) framebuffers.evict(it->second);
-        GpuTexture texture = desc.type == fx::BaseType::TextureCube
-                                 ? GpuTexture::createCube(desc.format, w, desc.mipLevels)
-                             : desc.type == fx::BaseType::Texture2DMS
-                                 ? GpuTexture::create2DMultisample(desc.format, w, h, supportedSamples(desc))
-                                 : GpuTexture::create2D(desc.format, w, h, desc.mipLevels);
+        GpuTexture texture = makeRenderTarget(desc, w, h);
         texture.setLabel(parameterInfo()[desc.parameter].name);
         textures[desc.parameter] = std::move(texture);
     }
@@ -520,7 +542,7 @@ bool EffectResources::setTexture(size_t index, const TextureData& data, fx::Diag
         return false;
     };
     if (!desc || isRenderTarget(*desc) || desc->type == fx::BaseType::Texture3D ||
-        desc->type == fx::BaseType::Texture2DMS)
+        desc->type == fx::BaseType::Texture2DMS || desc->type == fx::BaseType::Texture2DMSArray)
         return refuse(fx::DiagId::SetTextureNotReadTexture, {std::to_string(index)});
     const bool cube = desc->type == fx::BaseType::TextureCube || desc->type == fx::BaseType::TextureCubeArray;
     const int elements = isArrayType(desc->type) ? data.elements : 1;

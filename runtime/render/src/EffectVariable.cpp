@@ -41,6 +41,8 @@ std::optional<GLenum> textureTarget(fx::BaseType type) {
             return GL_TEXTURE_CUBE_MAP_ARRAY;
         case fx::BaseType::Texture2DMS:
             return GL_TEXTURE_2D_MULTISAMPLE;
+        case fx::BaseType::Texture2DMSArray:
+            return GL_TEXTURE_2D_MULTISAMPLE_ARRAY;
         default:
             return std::nullopt;
     }

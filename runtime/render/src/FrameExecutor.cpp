@@ -73,14 +73,16 @@ void FrameExecutor::beginPass(const fx::CompiledPass& pass) {
 void FrameExecutor::setColorTarget(int index, const std::string& texture, int parameter) {
     if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
     if (texture.empty()) {
-        mTargets.colors[static_cast<size_t>(index)].texture = index == 0 ? &mResources.frameColor : nullptr;
+        mTargets.colors[static_cast<size_t>(index)] =
+            RenderTargetAttachment::wholeOf(index == 0 ? &mResources.frameColor : nullptr);
         return;
     }
-    mTargets.colors[static_cast<size_t>(index)].texture = target(texture, parameter);
+    mTargets.colors[static_cast<size_t>(index)] = RenderTargetAttachment::wholeOf(target(texture, parameter));
 }
 
 void FrameExecutor::setDepthTarget(const std::string& texture, int parameter) {
-    mTargets.depth.texture = texture.empty() ? &mResources.frameDepth : target(texture, parameter);
+    mTargets.depth = RenderTargetAttachment::wholeOf(texture.empty() ? &mResources.frameDepth
+                                                                     : target(texture, parameter));
 }
 
 void FrameExecutor::setRenderPort(const std::string& lightName, int lightSlot, int cascade,
@@ -417,6 +419,7 @@ bool FrameExecutor::drawTargets(bool usesDepth, const fx::CompiledPass* pass, Re
     const bool otherSamples = mTargets.depth.texture && mTargets.colors[0].texture &&
                               mTargets.depth.texture->samples() != mTargets.colors[0].texture->samples();
     if (otherSamples && !usesDepth) targets.depth = {};
+    dropDepthOfOtherLayering(targets);
     if (depthTargetIsSmaller()) {
         if (!usesDepth) {
             targets.depth = {};

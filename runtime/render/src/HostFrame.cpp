@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace runtime {
 
@@ -139,14 +140,39 @@ bool setComponents(EffectVariable variable, const HostValue& value, const std::v
 
 // [SECTION] Targets
 
+namespace {
+
+// The colour texture of a target, and its depth buffer: as many layers (a 2D array's) for a target bound
+// whole, so that both attach layered to one framebuffer.
+std::pair<GpuTexture, GpuTexture> makeTarget(const HostTarget& target, glm::ivec2 size) {
+    constexpr fx::TextureFormat kDepth = fx::TextureFormat::D24S8;
+    switch (target.kind) {
+        case HostTarget::Kind::Cube:
+            return {GpuTexture::createCube(target.format, size.x),
+                    GpuTexture::create2DArray(kDepth, size.x, size.x, 6)};
+        case HostTarget::Kind::Array:
+            return {GpuTexture::create2DArray(target.format, size.x, size.y, target.layers),
+                    GpuTexture::create2DArray(kDepth, size.x, size.y, target.layers)};
+        case HostTarget::Kind::Volume:
+            return {GpuTexture::create3D(target.format, size.x, size.y, target.layers),
+                    GpuTexture::create2DArray(kDepth, size.x, size.y, target.layers)};
+        case HostTarget::Kind::Plane:
+            break;
+    }
+    return {GpuTexture::create2D(target.format, size.x, size.y),
+            GpuTexture::create2D(kDepth, size.x, size.y)};
+}
+
+}  // namespace
+
 void HostFrame::ensureTargets(EffectRenderer& renderer, int width, int height) {
     for (const HostTarget& target : mHost->targets) {
-        const glm::ivec2 size =
+        glm::ivec2 size =
             target.width > 0 ? glm::ivec2(target.width, target.height) : glm::ivec2(width, height);
+        if (target.kind == HostTarget::Kind::Cube) size.y = size.x = target.width > 0 ? target.width : height;
         Target& t = mTargets[target.name];
         if (t.color.id() == 0 || t.color.width() != size.x || t.color.height() != size.y) {
-            t.color = GpuTexture::create2D(target.format, size.x, size.y);
-            t.depth = GpuTexture::create2D(fx::TextureFormat::D24S8, size.x, size.y);
+            std::tie(t.color, t.depth) = makeTarget(target, size);
             t.color.setLabel("host target " + target.name);
         }
         // As the application's SetTexture: the effect samples the target wherever it samples the parameter.
@@ -200,8 +226,8 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
             targets.depth.texture = &r.frameDepth;
         } else {
             Target& target = mTargets.at(step.target);
-            targets.colors[0].texture = &target.color;
-            targets.depth.texture = &target.depth;
+            targets.colors[0] = RenderTargetAttachment::wholeOf(&target.color);
+            targets.depth = RenderTargetAttachment::wholeOf(&target.depth);
         }
         std::string error;
         if (!r.framebuffers.bind(targets, error)) {

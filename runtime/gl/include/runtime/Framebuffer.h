@@ -20,6 +20,16 @@ struct RenderTargetAttachment {
     const GpuTexture* texture = nullptr;
     int level = 0;  // mip level
     int face = 0;   // cube face 0..5 (+X -X +Y -Y +Z -Z); ignored for 2D textures
+    // Every layer at once (a cube's faces, an array's elements, a volume's slices; glFramebufferTexture),
+    // as D3D10 binds a view of the whole resource: a geometry shader's SV_RenderTargetArrayIndex
+    // (gl_Layer) picks the layer each primitive is drawn into, layer 0 where it writes none; a clear clears
+    // every layer. `face` is then ignored.
+    bool whole = false;
+
+    // The whole texture, layered where it has layers: how an effect's or an application's target is bound.
+    static RenderTargetAttachment wholeOf(const GpuTexture* texture) {
+        return {texture, 0, 0, texture != nullptr && texture->isLayered()};
+    }
 };
 
 struct RenderTargets {
@@ -31,6 +41,12 @@ struct RenderTargets {
     int width() const;
     int height() const;
 };
+
+// A layered colour target (a cube, an array or a volume bound whole) and a depth target that is not
+// layered (the frame's), or the reverse, cannot be one framebuffer (GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS):
+// such a pair is drawn without the depth target. A layered depth target of its own (a cube or an array
+// with a depth format) stays.
+void dropDepthOfOtherLayering(RenderTargets& targets);
 
 // D3D9's Clear(flags, color, z, stencil): what to clear and to which values.
 struct ClearRequest {
@@ -70,6 +86,7 @@ private:
         std::array<uint64_t, 5> serials{};
         std::array<int, 5> levels{};
         std::array<int, 5> faces{};
+        std::array<bool, 5> whole{};
         auto operator<=>(const Key&) const = default;
     };
     struct Entry {

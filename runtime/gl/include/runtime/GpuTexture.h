@@ -44,6 +44,9 @@ public:
     // GL_MAX_DEPTH_TEXTURE_SAMPLES, which the caller checks), one level, contents undefined until drawn or
     // cleared.
     static GpuTexture create2DMultisample(fx::TextureFormat format, int width, int height, int samples);
+    // D3D10's Texture2DMSArray: `elements` layers of `samples` per texel, as create2DMultisample.
+    static GpuTexture create2DMultisampleArray(fx::TextureFormat format, int width, int height, int elements,
+                                               int samples);
 
     GpuTexture() = default;
     ~GpuTexture();
@@ -65,8 +68,8 @@ public:
     void setLabel(const std::string& label);
 
     GLuint id() const { return mId; }
-    // GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_3D, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY or
-    // GL_TEXTURE_CUBE_MAP_ARRAY
+    // GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_3D, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY,
+    // GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_2D_MULTISAMPLE or GL_TEXTURE_2D_MULTISAMPLE_ARRAY
     GLenum target() const { return mTarget; }
     fx::TextureFormat format() const { return mFormat; }
     const GlTextureFormat& glFormat() const { return glTextureFormat(mFormat); }
@@ -77,10 +80,13 @@ public:
     int mipLevels() const { return mLevels; }
     bool isArray() const {
         return mTarget == GL_TEXTURE_1D_ARRAY || mTarget == GL_TEXTURE_2D_ARRAY ||
-               mTarget == GL_TEXTURE_CUBE_MAP_ARRAY;
+               mTarget == GL_TEXTURE_CUBE_MAP_ARRAY || mTarget == GL_TEXTURE_2D_MULTISAMPLE_ARRAY;
     }
     int layers() const { return isArray() ? mDepth : 1; }  // an array's layers (6 per cube)
-    int samples() const { return mSamples; }               // 1 unless multisampled
+    // A cube, an array or a volume: what a layered framebuffer attachment binds whole, its faces, elements or
+    // slices addressed by gl_Layer.
+    bool isLayered() const { return isCube() || isArray() || mTarget == GL_TEXTURE_3D; }
+    int samples() const { return mSamples; }  // 1 unless multisampled
     // Unique for the life of the process, unlike GL names, which GL reuses after deletion: what the
     // framebuffer cache keys on.
     uint64_t serial() const { return mSerial; }

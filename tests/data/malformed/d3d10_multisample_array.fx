@@ -1,2 +1,0 @@
-// Multisample arrays: no resource shadowfx creates.
-Texture2DMSArray<float4, 4> Samples;
