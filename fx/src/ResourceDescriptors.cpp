@@ -100,7 +100,7 @@ void Compiler::textures() {
                         if (v->data[2] >= 1 && v->data[2] <= 2048)
                             t.depth = static_cast<int>(v->data[2]);
                         else
-                            error(DiagId::InvalidDimensions, a->loc, {"a volume's depth must be 1..2048"});
+                            error(DiagId::VolumeDepthOutOfRange, a->loc, {});
                     }
                 }
             }
