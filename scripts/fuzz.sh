@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets in fuzz/ with clang into build-fuzz/ and runs each for SECONDS (default 60)
-# on one core, one after the other. Corpora grow in build-fuzz/corpus/TARGET/ (seeded from effects/,
+# Builds the libFuzzer targets in fuzz/ in the sanitized build, build-asan/ (clang; configured by
+# scripts/configure-sanitized.sh, shared with scripts/test-sanitized.sh, which builds them already), and runs
+# each for SECONDS (default 60) on one core, one after the other. Corpora grow in build-asan/corpus/TARGET/ (seeded from effects/,
 # tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
-# any finding in build-fuzz/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
+# any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
 # input. It runs every target before it exits.
 # Every crash found is fixed and added to tests/data/malformed/ with its golden diagnostics.
@@ -19,25 +20,16 @@ if [ ${#targets[@]} -eq 0 ]; then
 fi
 
 scripts/install-deps.sh >/dev/null
-# libFuzzer ships with clang's runtime libraries (Debian: clang + libclang-rt-14-dev).
-if ! command -v clang++ >/dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "ok installed"; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
-  $SUDO apt-get install -y --no-install-recommends clang libclang-rt-14-dev >/dev/null
-fi
-# -O1 and line tables only: the flags fuzzing infrastructure (OSS-Fuzz) builds libFuzzer targets with.
-opt="-O1 -gline-tables-only -DNDEBUG"
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWFX_FUZZ=ON \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$opt" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$opt" \
-  -DSHADOWFX_BUILD_TESTS=OFF -DSHADOWFX_BUILD_BENCHMARKS=OFF >/dev/null
+scripts/configure-sanitized.sh
 # Only what the chosen targets need (fuzz_compile_workers depends on the worker in CMake): the CLI, which
-# compiles the compiled-effect fuzzer's seeds, is the whole project.
+# compiles the compiled-effect fuzzer's seeds, is the whole project (after test-sanitized.sh, built already).
 build=("${targets[@]}")
 [[ " ${targets[*]} " == *" fuzz_compiled_effect_file "* ]] && build+=(shadowfx)
-cmake --build build-fuzz -j "$(nproc)" --target "${build[@]}"
+cmake --build build-asan -j "$(nproc)" --target "${build[@]}"
 
 root="$(pwd)"
 seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
-  local dir="build-fuzz/corpus/$1"
+  local dir="build-asan/corpus/$1"
   mkdir -p "$dir"
   [ -n "$(ls -A "$dir")" ] && return 0
   case "$1" in
@@ -55,7 +47,7 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
       cp fuzz/seeds/*.dds "$dir/" ;;
     fuzz_compiled_effect_file)  # shipped effects whose files stay under -max_len, compiled by this build
       for effect in plain_lit back_faces id_buffer; do
-        build-fuzz/samples/shadowfx/shadowfx compile "effects/$effect.fx" --out "$dir/$effect.sfxo"
+        build-asan/samples/shadowfx/shadowfx compile "effects/$effect.fx" --out "$dir/$effect.sfxo"
       done ;;
     fuzz_host_file)  # the host files of the tests and the docs
       find tests/data/host docs/host-files -name '*.json' | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done ;;
@@ -69,31 +61,31 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LP_NUM_THREADS=1
 status=0
 for target in "${targets[@]}"; do
   seed "$target"
-  mkdir -p "build-fuzz/artifacts/$target"
+  mkdir -p "build-asan/artifacts/$target"
   # Run in an empty folder: the scene loader resolves mesh paths there, not in the repository.
   work="$(mktemp -d)"
   echo "== $target: ${seconds}s"
   # The fuzzer's own exit status (a crash, leak, timeout or OOM exits non-zero), its artifacts, and the
   # number of inputs it ran: a target that starts and runs nothing tests nothing.
-  log="$root/build-fuzz/$target.log"
+  log="$root/build-asan/$target.log"
   fuzzer_status=0
-  (cd "$work" && "$root/build-fuzz/fuzz/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
-     -rss_limit_mb=3072 -print_final_stats=1 -artifact_prefix="$root/build-fuzz/artifacts/$target/" \
-     "$root/build-fuzz/corpus/$target" >"$log" 2>&1) || fuzzer_status=$?
+  (cd "$work" && "$root/build-asan/fuzz/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
+     -rss_limit_mb=3072 -print_final_stats=1 -artifact_prefix="$root/build-asan/artifacts/$target/" \
+     "$root/build-asan/corpus/$target" >"$log" 2>&1) || fuzzer_status=$?
   grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+==ERROR|SUMMARY)' "$log" || echo "$target: no statistics in $log"
   if [ "$fuzzer_status" -ne 0 ]; then
-    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-fuzz/$target.log)"; status=1
+    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; status=1
   fi
-  findings=$(find "build-fuzz/artifacts/$target" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
+  findings=$(find "build-asan/artifacts/$target" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
     -o -name 'timeout-*' -o -name 'oom-*' -o -name 'slow-unit-*' \) | sort)
   if [ -n "$findings" ]; then
-    echo "$target: findings in build-fuzz/artifacts/$target/:"; echo "$findings"; status=1
+    echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; status=1
   fi
   executed=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -1)
   if [ "${executed:-0}" -eq 0 ]; then
-    echo "$target: ran no input (log: build-fuzz/$target.log)"; status=1
+    echo "$target: ran no input (log: build-asan/$target.log)"; status=1
   fi
-  echo "corpus: $(ls "build-fuzz/corpus/$target" | wc -l) inputs"
+  echo "corpus: $(ls "build-asan/corpus/$target" | wc -l) inputs"
   rm -rf "$work"
 done
 exit $status

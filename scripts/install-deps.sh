@@ -7,6 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   # lld links the test executables in less than half of GNU ld's time (CMake falls back to ld without it).
   lld
+  # The sanitized build (scripts/configure-sanitized.sh) is clang's, for libFuzzer (libclang-rt-14-dev).
+  clang libclang-rt-14-dev
   glslang-dev glslang-tools spirv-tools
   libspirv-cross-c-shared-dev spirv-cross
   libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglfw3-dev

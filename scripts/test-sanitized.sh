@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ and runs the whole
-# test suite under them. A sanitizer report fails the test that triggered it.
+# Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ (clang; the build
+# scripts/fuzz.sh shares, see scripts/configure-sanitized.sh) and runs the whole test suite under them. A sanitizer report fails the test that triggered it.
 #
 # Leak checking (LeakSanitizer) covers the GL-free tests (CTest labels "fx": parser, compiler, corpus, and
 # "report": the report writers and shard merging): the
@@ -17,12 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-# -O1 with line tables only (-g1), as sanitizer builds are usually made: reports keep file:line, and the
-# build takes about half the compiler time of -O2 -g (the tests' time is mostly llvmpipe's, not ours).
-opt="-O1 -g1 -DNDEBUG"
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWFX_SANITIZE=ON \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$opt" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$opt" \
-  -DSHADOWFX_BUILD_BENCHMARKS=OFF "$@" >/dev/null
+scripts/configure-sanitized.sh "$@"
 cmake --build build-asan -j "$(nproc)"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 asan="strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
