@@ -12,8 +12,9 @@
 # them, which we must not suppress). Set SHADOWFX_LEAKS_EVERYWHERE=1 to check them anyway. Leaks of GL
 # objects and memory across effect load/unload are covered by tests/runtime/test_load_unload_leaks.cpp.
 # Named Mesa/LLVM leaks are suppressed in scripts/lsan-suppressions.txt, one reason each.
-# The one test skipped here, and named in CTest's list of skipped tests: the OSG peer's
-# (Bench.PeerOsgRowsAreScoredAgainstTheSameTruth), since this build does not build the peer.
+# The two tests skipped here, and named in CTest's list of skipped tests: the OSG peer's
+# (Bench.PeerOsgRowsAreScoredAgainstTheSameTruth, StressCommand.PeerOsgRunsThroughTheSameCases), since this
+# build does not build the peer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
