@@ -1,7 +1,8 @@
 // D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
-// (TEXCOORD1..n), a literal bool compile argument, and a static initialized by a call of the effect's own
-// function. Minimal effects written for these tests, checked by pixels.
+// (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
+// function, and a shadow-map depth sampler passed as a compile argument. Minimal effects written for these
+// tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
@@ -94,6 +95,54 @@ TEST(D3d9Lowering, BoolLiteralArgumentAfterAnArrayInput) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+}
+
+// FX Composer's shadow-map effects pass the depth target's sampler to the pixel shader as a compile
+// argument (`compile ps_3_0 PS(ShadDepthSampler)`); D3DX bound it when it compiled the shader, so its
+// lookups are depth comparisons as the global's own are. The reference depth 0 passes the comparison
+// everywhere and 1 fails wherever an object wrote depth: red 1 and green 0 on the objects, where reading
+// the stored depth as a colour would give the same value in both. The float after the sampler keeps its
+// own argument.
+constexpr const char* kDepthSamplerArgument = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+texture ShadowColour : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "X8B8G8R8"; >;
+texture ShadowDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 48}; string Format = "D24S8_SHADOWMAP"; >;
+sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU = Clamp; AddressV = Clamp;
+    MinFilter = Point; MagFilter = Point; MipFilter = None; };
+float ClearDepth = 1.0;
+struct VsOut { float4 Position : POSITION; float4 Projected : TEXCOORD0; };
+VsOut VS(float3 Position : POSITION) {
+    VsOut o;
+    o.Position = mul(float4(Position, 1), WorldViewProj);
+    o.Projected = float4(o.Position.xy / o.Position.w * float2(0.5, -0.5) + 0.5, 0, 1);
+    return o;
+}
+float4 DepthPS() : COLOR { return 1; }
+float4 PS(VsOut i, uniform sampler2D Depth, uniform float Blue) : COLOR {
+    float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
+    return float4(tex2Dproj(Depth, near).x, tex2Dproj(Depth, far).x, Blue, 1);
+}
+technique T < string Script =
+    "RenderColorTarget0=ShadowColour; RenderDepthStencilTarget=ShadowDepth; ClearSetDepth=ClearDepth;"
+    "Clear=Depth; Pass=Depth; RenderColorTarget0=; RenderDepthStencilTarget=; Pass=Lookup;"; > {
+    pass Depth < string Script = "Draw=geometry;"; > {
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 DepthPS();
+        ZEnable = true; ZWriteEnable = true; CullMode = None;
+    }
+    pass Lookup < string Script = "Draw=geometry;"; > {
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(ShadowDepthSampler, 0.4);
+        ZEnable = true; CullMode = None;
+    }
+}
+)";
+
+TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
+    auto renderer = loadEffect(kDepthSamplerArgument, false, "depth_sampler_argument.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
 }
 
 }  // namespace
