@@ -1,7 +1,8 @@
 // D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
 // (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
-// function, and a shadow-map depth sampler passed as a compile argument. Minimal effects written for these
+// function, a shadow-map depth sampler passed as a compile argument, and a `for` variable read after its
+// loop. Minimal effects written for these
 // tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
@@ -143,6 +144,29 @@ TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+}
+
+// fxc declared a `for` loop's variable in the enclosing block (an XNA engine's antialiasing filter returns
+// the step its search loop stopped at); the loop leaves at 3 of 8, so red is 0.3.
+constexpr const char* kLoopVariableAfterTheLoop = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Limit = 3;
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float steps(float limit) {
+    [unroll(8)] for (int i = 0; i < 8; i++) { if (i >= limit) break; }
+    return i;
+}
+float4 PS() : COLOR { return float4(steps(Limit) / 10.0, 0.6, 0.4, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, LoopVariableReadAfterTheLoop) {
+    auto renderer = loadEffect(kLoopVariableAfterTheLoop, false, "loop_variable.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 76, 153, 102), kMinObjectPixels);
 }
 
 }  // namespace
