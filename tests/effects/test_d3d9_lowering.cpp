@@ -1,8 +1,8 @@
 // D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
 // (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
-// function, a shadow-map depth sampler passed as a compile argument, and a `for` variable read after its
-// loop. Minimal effects written for these
+// function, a shadow-map depth sampler passed as a compile argument, a `for` variable read after its
+// loop, and a cube-map lookup in a direction that is not finite. Minimal effects written for these
 // tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
@@ -167,6 +167,33 @@ TEST(D3d9Lowering, LoopVariableReadAfterTheLoop) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 76, 153, 102), kMinObjectPixels);
+}
+
+// An XNA engine's material normalizes the camera's direction in the vertex shader, a zero vector where the
+// application has not set the camera: every pixel looks its cube map up in a NaN direction, on which
+// llvmpipe crashed. The cube map is the neutral grey stand-in, halved.
+constexpr const char* kCubeLookupNotFinite = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+texture EnvTexture;
+samplerCUBE EnvSampler = sampler_state { Texture = <EnvTexture>; };
+struct VsOut { float4 Position : POSITION; float3 Dir : TEXCOORD0; };
+VsOut VS(float3 p : POSITION, float3 n : NORMAL) {
+    VsOut o;
+    o.Position = mul(float4(p, 1), WorldViewProj);
+    o.Dir = normalize(n * 0);
+    return o;
+}
+float4 PS(float3 Dir : TEXCOORD0) : COLOR { return float4(texCUBE(EnvSampler, Dir).rgb * 0.5, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, CubeLookupInADirectionThatIsNotFinite) {
+    auto renderer = loadEffect(kCubeLookupNotFinite, false, "cube_not_finite.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 128, 128, 128), kMinObjectPixels);
 }
 
 }  // namespace
