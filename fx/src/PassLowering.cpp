@@ -190,12 +190,12 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
                                           const std::string& wrapper, const std::string& streamStruct,
                                           const std::string& streamStructText,
                                           const FunctionDecl* boundEntry) {
-    auto textOf = [&](const FunctionDecl& f) -> const std::string& {
+    auto isBoundEntry = [&](const FunctionDecl& f) {
         return boundEntry && f.name == boundEntry->name && f.hlslLoc.line == boundEntry->hlslLoc.line &&
-                       f.hlslLoc.column == boundEntry->hlslLoc.column &&
-                       f.hlslLoc.file == boundEntry->hlslLoc.file
-                   ? boundEntry->hlslText
-                   : f.hlslText;
+               f.hlslLoc.column == boundEntry->hlslLoc.column && f.hlslLoc.file == boundEntry->hlslLoc.file;
+    };
+    auto textOf = [&](const FunctionDecl& f) -> const std::string& {
+        return isBoundEntry(f) ? boundEntry->hlslText : f.hlslText;
     };
     std::set<std::string> depth;
     for (const Parameter& p : effect.parameters)
@@ -280,7 +280,8 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
             }
             case DeclRef::Kind::Function: {
                 const FunctionDecl& f = effect.functions[ref.index];
-                if (reached.count(f.name)) emitAt(hlsl, rewriteIntrinsics(textOf(f), depth), f.hlslLoc);
+                if (reached.count(f.name) && !isBoundEntry(f))
+                    emitAt(hlsl, rewriteIntrinsics(f.hlslText, depth), f.hlslLoc);
                 break;
             }
             case DeclRef::Kind::Verbatim: {
@@ -290,6 +291,9 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
             }
         }
     }
+    // Last: its body names the objects bound, which the effect may declare after the function (FX
+    // Composer's quad include defines the pixel shaders the effects then pass their samplers to).
+    if (boundEntry) emitAt(hlsl, rewriteIntrinsics(boundEntry->hlslText, depth), boundEntry->hlslLoc);
     out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
     return out;
 }

@@ -103,13 +103,10 @@ TEST(D3d9Lowering, BoolLiteralArgumentAfterAnArrayInput) {
 // lookups are depth comparisons as the global's own are. The reference depth 0 passes the comparison
 // everywhere and 1 fails wherever an object wrote depth: red 1 and green 0 on the objects, where reading
 // the stored depth as a colour would give the same value in both. The float after the sampler keeps its
-// own argument.
+// own argument. The sampler is declared after the shader, as FX Composer's quad include defines shaders
+// that the effects including it pass their own samplers to.
 constexpr const char* kDepthSamplerArgument = R"(
 float4x4 WorldViewProj : WorldViewProjection;
-texture ShadowColour : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "X8B8G8R8"; >;
-texture ShadowDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 48}; string Format = "D24S8_SHADOWMAP"; >;
-sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU = Clamp; AddressV = Clamp;
-    MinFilter = Point; MagFilter = Point; MipFilter = None; };
 float ClearDepth = 1.0;
 struct VsOut { float4 Position : POSITION; float4 Projected : TEXCOORD0; };
 VsOut VS(float3 Position : POSITION) {
@@ -123,6 +120,10 @@ float4 PS(VsOut i, uniform sampler2D Depth, uniform float Blue) : COLOR {
     float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
     return float4(tex2Dproj(Depth, near).x, tex2Dproj(Depth, far).x, Blue, 1);
 }
+texture ShadowColour : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "X8B8G8R8"; >;
+texture ShadowDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 48}; string Format = "D24S8_SHADOWMAP"; >;
+sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU = Clamp; AddressV = Clamp;
+    MinFilter = Point; MagFilter = Point; MipFilter = None; };
 technique T < string Script =
     "RenderColorTarget0=ShadowColour; RenderDepthStencilTarget=ShadowDepth; ClearSetDepth=ClearDepth;"
     "Clear=Depth; Pass=Depth; RenderColorTarget0=; RenderDepthStencilTarget=; Pass=Lookup;"; > {
