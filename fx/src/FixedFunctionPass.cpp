@@ -692,7 +692,10 @@ std::shared_ptr<const Effect> withFixedFunctionStages(std::shared_ptr<const Effe
             }
             // `FogEnable = false;` beside a vertex shader asks for nothing of the pixel stage.
             if (states.mayBeOn(RenderStateId::FogEnable, 0, false)) setsPixelStates = true;
-            const bool vertex = !hasVertexShader && setsVertexStates;
+            // A pass without shaders that sets only texture-stage states still went through D3D9's vertex
+            // pipeline, with the device's transforms.
+            const bool vertex =
+                !hasVertexShader && (setsVertexStates || (!hasPixelShader && setsPixelStates));
             const bool pixel = !hasPixelShader && (vertex || setsPixelStates);
             // A pixel shader alone, even with `Texture[0] = <t>;` beside it: a full-screen pass.
             const bool screenQuad = !hasVertexShader && !setsVertexStates && hasPixelShader;

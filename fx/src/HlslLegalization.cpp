@@ -190,6 +190,8 @@ public:
             } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.isIdentifier(i + 1) &&
                        f.is(i + 2, "(")) {
                 rewriteVariableOffset(f, i - 1, edits);
+            } else if (t.is("for") && f.is(i + 1, "(") && mIsTypeName(f.at(i + 2)) && f.isIdentifier(i + 3)) {
+                hoistLoopVariable(f, i, edits);
             } else if (f.startsStatement(i)) {
                 rewriteLvalueConstructor(f, i, edits);
             }
@@ -298,6 +300,57 @@ private:
     }
 
     // `T(a, b) = e;` -> `fx_assign_T(a, b, e);`.
+    // `for (int i = 0; ...) body ... i` -> `int i; for ( i = 0; ...) body ... i`: fxc declared a `for`'s
+    // variable in the enclosing block, so code after the loop may read it; glslang scopes it to the loop.
+    // Only where the block reads the name after the loop (before declaring it again), and the loop
+    // declares one variable.
+    void hoistLoopVariable(const FunctionTokens& f, size_t loop, std::vector<Edit>& edits) {
+        const size_t close = f.closing(loop + 1);
+        const std::string& name = f.at(loop + 3).text;
+        int depth = 0;
+        for (size_t i = loop + 4; i < close; ++i) {
+            if (f.is(i, "(") || f.is(i, "[") || f.is(i, "{")) ++depth;
+            if (f.is(i, ")") || f.is(i, "]") || f.is(i, "}")) --depth;
+            if (depth == 0 && f.is(i, ";")) break;
+            if (depth == 0 && f.is(i, ",")) return;
+        }
+        // The body: a block, or one simple statement.
+        size_t bodyEnd = close + 1;
+        if (f.is(bodyEnd, "{")) {
+            bodyEnd = f.closing(bodyEnd);
+        } else {
+            if (f.is(bodyEnd, "for") || f.is(bodyEnd, "if") || f.is(bodyEnd, "while") || f.is(bodyEnd, "do"))
+                return;
+            for (depth = 0; bodyEnd <= f.last() && !(depth == 0 && f.is(bodyEnd, ";")); ++bodyEnd) {
+                if (f.is(bodyEnd, "(") || f.is(bodyEnd, "[") || f.is(bodyEnd, "{")) ++depth;
+                if (f.is(bodyEnd, ")") || f.is(bodyEnd, "]") || f.is(bodyEnd, "}")) --depth;
+            }
+        }
+        bool readAfter = false;
+        depth = 0;
+        for (size_t i = bodyEnd + 1; i <= f.last() && !readAfter; ++i) {
+            if (f.is(i, "{")) ++depth;
+            if (f.is(i, "}") && --depth < 0) break;
+            if (!f.isIdentifier(i) || f.at(i).text != name || f.is(i - 1, ".")) continue;
+            if (mIsTypeName(f.at(i - 1))) break;  // declared again: a name of its own from here
+            readAfter = true;
+        }
+        if (!readAfter) return;
+        // Before the loop's attributes (`[unroll(8)] for`), which belong to the loop.
+        size_t start = loop;
+        while (start > f.first() && f.is(start - 1, "]")) {
+            size_t open = start - 1;
+            for (int nesting = 0; open > f.first(); --open) {
+                if (f.is(open, "]")) ++nesting;
+                if (f.is(open, "[") && --nesting == 0) break;
+            }
+            start = open;
+        }
+        const Token& type = f.at(loop + 2);
+        edits.push_back({f.at(start).begin, f.at(start).begin, type.text + " " + name + "; "});
+        edits.push_back({type.begin, type.end, ""});
+    }
+
     void rewriteLvalueConstructor(const FunctionTokens& f, size_t i, std::vector<Edit>& edits) {
         std::string base;
         int components = 0;

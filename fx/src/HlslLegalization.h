@@ -11,6 +11,7 @@
 //     (SampleLevel, SampleBias, SampleGrad, SampleCmp, SampleCmpLevelZero alike; `T.Load(location,
 //     offset)` -> `T.Load(fx_offset_texel_int3_int2(location, offset))`)
 //   - HLSL keywords used as names (`line`, `point`, `linear`)  -> `fx_line`, ...
+//   - a `for` variable read after its loop                     -> declared before the loop
 // The helpers the rewrites call are added to the effect as verbatim declarations. fxc gave no warning
 // for any of these (docs/legalization.md); the rewrites change no column before the first one on a line,
 // so glslang's later messages keep pointing at the user's text. Private to fx.

@@ -1,7 +1,9 @@
 // HlslRewriting: see HlslRewriting.h.
 #include "HlslRewriting.h"
 
+#include <algorithm>
 #include <cctype>
+#include <vector>
 
 namespace fx {
 
@@ -36,7 +38,8 @@ std::set<std::string> identifiersIn(const std::string& text) {
 
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
 // `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler reaching a function through a parameter is not
+// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
+// the entry point first (bindParameters); one a function passes on to another through a parameter is not
 // rewritten: the parameter's name is not S (and if it is, it names the global anyway).
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers) {
     std::string out;
@@ -95,6 +98,125 @@ std::string depthSamplerHelpers(const std::string& s) {
            "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c +
            ", uv.xy, uv.z).xxxx; }\n" + "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t +
            ".SampleCmpLevelZero(" + c + ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
+}
+
+namespace {
+
+// The end of the comment or string literal starting at `i`, or `i` where none starts there.
+size_t skipCommentOrString(const std::string& text, size_t i) {
+    if (text.compare(i, 2, "//") == 0) {
+        size_t end = text.find('\n', i);
+        return end == std::string::npos ? text.size() : end;
+    }
+    if (text.compare(i, 2, "/*") == 0) {
+        size_t end = text.find("*/", i + 2);
+        return end == std::string::npos ? text.size() : end + 2;
+    }
+    if (text[i] == '"') {
+        size_t j = i + 1;
+        while (j < text.size() && text[j] != '"') j += text[j] == '\\' ? 2 : 1;
+        return std::min(j + 1, text.size());
+    }
+    return i;
+}
+
+}  // namespace
+
+std::optional<std::string> bindParameters(const std::string& text, const std::string& name,
+                                          size_t parameterCount,
+                                          const std::map<std::string, std::string>& bound) {
+    // The signature: the first `name (` outside comments; its parameters split at the commas outside
+    // parentheses and template brackets (`InputPatch<VSOut, 3>`).
+    size_t open = std::string::npos;
+    for (size_t i = 0; i < text.size() && open == std::string::npos;) {
+        if (size_t end = skipCommentOrString(text, i); end != i) {
+            i = end;
+        } else if (isIdentChar(text[i]) && (i == 0 || !isIdentChar(text[i - 1]))) {
+            size_t start = i;
+            while (i < text.size() && isIdentChar(text[i])) ++i;
+            size_t j = i;
+            while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+            if (text.compare(start, i - start, name) == 0 && i - start == name.size() && j < text.size() &&
+                text[j] == '(')
+                open = j;
+        } else {
+            ++i;
+        }
+    }
+    if (open == std::string::npos) return std::nullopt;
+    std::vector<std::string> chunks{""};
+    size_t close = std::string::npos;
+    int depth = 0;
+    for (size_t i = open + 1; i < text.size() && close == std::string::npos;) {
+        if (size_t end = skipCommentOrString(text, i); end != i) {
+            chunks.back().append(text, i, end - i);
+            i = end;
+            continue;
+        }
+        const char c = text[i++];
+        if (c == '(' || c == '<') ++depth;
+        if ((c == ')' || c == '>') && depth > 0) {
+            --depth;
+        } else if (c == ')') {
+            close = i - 1;
+            break;
+        } else if (c == ',' && depth == 0) {
+            chunks.emplace_back();
+            continue;
+        }
+        chunks.back() += c;
+    }
+    if (close == std::string::npos) return std::nullopt;
+    if (chunks.size() == 1 && chunks[0].find_first_not_of(" \t\r\n") == std::string::npos) chunks.clear();
+    if (chunks.size() != parameterCount) return std::nullopt;
+    // A chunk's parameter name: its last identifier before a semantic, default value or array size.
+    auto parameterName = [](const std::string& chunk) {
+        std::string last;
+        for (size_t i = 0; i < chunk.size();) {
+            if (size_t end = skipCommentOrString(chunk, i); end != i) {
+                i = end;
+            } else if (chunk[i] == ':' || chunk[i] == '=' || chunk[i] == '[') {
+                break;
+            } else if (isIdentChar(chunk[i])) {
+                size_t start = i;
+                while (i < chunk.size() && isIdentChar(chunk[i])) ++i;
+                last = chunk.substr(start, i - start);
+            } else {
+                ++i;
+            }
+        }
+        return last;
+    };
+    std::string signature, lineBreaks;
+    bool first = true;
+    for (const std::string& chunk : chunks) {
+        if (bound.count(parameterName(chunk))) {
+            lineBreaks.append(static_cast<size_t>(std::count(chunk.begin(), chunk.end(), '\n')), '\n');
+            continue;
+        }
+        signature += (first ? "" : ",") + lineBreaks + chunk;
+        lineBreaks.clear();
+        first = false;
+    }
+    std::string out = text.substr(0, open + 1) + signature + lineBreaks;
+    // The body: each use of a bound name (not a member `.name`) names the effect object.
+    for (size_t i = close; i < text.size();) {
+        if (size_t end = skipCommentOrString(text, i); end != i) {
+            out.append(text, i, end - i);
+            i = end;
+        } else if (isIdentChar(text[i]) && (i == 0 || !isIdentChar(text[i - 1]))) {
+            size_t start = i;
+            while (i < text.size() && isIdentChar(text[i])) ++i;
+            const std::string word = text.substr(start, i - start);
+            size_t before = start;
+            while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+            const auto found = bound.find(word);
+            out += found != bound.end() && (before == 0 || text[before - 1] != '.') ? found->second : word;
+        } else {
+            out += text[i++];
+        }
+    }
+    return out;
 }
 
 }  // namespace fx

@@ -3,6 +3,8 @@
 // uses collected. Private to fx.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -21,11 +23,19 @@ bool isIdentChar(char c);
 std::set<std::string> identifiersIn(const std::string& text);
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
 // `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler reaching a function through a parameter is not
+// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
+// the entry point first (bindParameters); one a function passes on to another through a parameter is not
 // rewritten: the parameter's name is not S (and if it is, it names the global anyway).
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers);
 // The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
 // the texel (filtered when the sampler filters linearly), in every component.
 std::string depthSamplerHelpers(const std::string& s);
+// A function's definition `text` (named `name`) with the parameters that `bound` maps taken out of its
+// signature, and each use of them in the body naming the effect object they map to instead: D3DX bound a
+// sampler or texture compile argument when it compiled the shader. Line breaks are kept, so the text's
+// `#line` still holds. nullopt where the signature does not have `parameterCount` parameters as written.
+std::optional<std::string> bindParameters(const std::string& text, const std::string& name,
+                                          size_t parameterCount,
+                                          const std::map<std::string, std::string>& bound);
 
 }  // namespace fx

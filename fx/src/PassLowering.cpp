@@ -140,11 +140,63 @@ bool profileMatches(const std::string& profile, ShaderStage stage) {
                        [&](const char* v) { return version == v; });
 }
 
+// The uniform parameters of `fn` whose compile argument (or default) names an effect sampler or texture
+// of the parameter's kind, bound into `boundFn` (bindParameters) with their arguments left out of
+// `boundCompile`. False where there are none, or the signature is not as the parse read it; an argument
+// that does not fit is left to the wrapper, which reports it.
+bool bindObjectArguments(const Effect& effect, const FunctionDecl& fn, const Expr& compile,
+                         FunctionDecl& boundFn, Expr& boundCompile) {
+    std::map<std::string, std::string> bound;
+    std::vector<size_t> boundArguments;
+    std::vector<FunctionParam> kept;
+    size_t uniformIndex = 0;
+    for (const FunctionParam& p : fn.params) {
+        const size_t argIndex = p.isUniform ? uniformIndex++ : compile.args.size();
+        const Expr* expr = !p.isUniform                     ? nullptr
+                           : argIndex < compile.args.size() ? &compile.args[argIndex]
+                           : p.defaultValue                 ? &*p.defaultValue
+                                                            : nullptr;
+        const Parameter* object =
+            expr && expr->kind == Expr::Kind::Identifier && (p.type.isSampler() || p.type.isTexture())
+                ? effect.findParameter(expr->text)
+                : nullptr;
+        const bool fits = object && (p.type.isTexture() ? object->type.isTexture()
+                                     : p.type.base == BaseType::SamplerState ||
+                                             p.type.base == BaseType::SamplerComparisonState
+                                         ? object->type.base == p.type.base
+                                         : isSamplerType(object->type));
+        if (!fits || !p.type.arrayDims.empty() || !object->type.arrayDims.empty()) {
+            kept.push_back(p);
+            continue;
+        }
+        bound[p.name] = object->name;
+        if (argIndex < compile.args.size()) boundArguments.push_back(argIndex);
+    }
+    if (bound.empty()) return false;
+    const std::optional<std::string> text = bindParameters(fn.hlslText, fn.name, fn.params.size(), bound);
+    if (!text) return false;
+    boundFn = fn;
+    boundFn.params = std::move(kept);
+    boundFn.hlslText = *text;
+    boundCompile = compile;
+    for (auto i = boundArguments.rbegin(); i != boundArguments.rend(); ++i)
+        boundCompile.args.erase(boundCompile.args.begin() + static_cast<std::ptrdiff_t>(*i));
+    return true;
+}
+
 }  // namespace
 
 EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<std::string>& reached,
                                           const std::string& wrapper, const std::string& streamStruct,
-                                          const std::string& streamStructText) {
+                                          const std::string& streamStructText,
+                                          const FunctionDecl* boundEntry) {
+    auto isBoundEntry = [&](const FunctionDecl& f) {
+        return boundEntry && f.name == boundEntry->name && f.hlslLoc.line == boundEntry->hlslLoc.line &&
+               f.hlslLoc.column == boundEntry->hlslLoc.column && f.hlslLoc.file == boundEntry->hlslLoc.file;
+    };
+    auto textOf = [&](const FunctionDecl& f) -> const std::string& {
+        return isBoundEntry(f) ? boundEntry->hlslText : f.hlslText;
+    };
     std::set<std::string> depth;
     for (const Parameter& p : effect.parameters)
         if (isSamplerType(p.type) && isDepthCompareSampler(effect, p)) depth.insert(p.name);
@@ -155,7 +207,7 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
         for (const std::string& id : identifiersIn(text)) named.insert(id);
     };
     for (const FunctionDecl& f : effect.functions)
-        if (reached.count(f.name)) nameAll(f.hlslText);
+        if (reached.count(f.name)) nameAll(textOf(f));
     for (const Parameter& p : effect.parameters)
         if (p.isStatic) nameAll(p.hlslText);
     for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
@@ -228,7 +280,8 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
             }
             case DeclRef::Kind::Function: {
                 const FunctionDecl& f = effect.functions[ref.index];
-                if (reached.count(f.name)) emitAt(hlsl, rewriteIntrinsics(f.hlslText, depth), f.hlslLoc);
+                if (reached.count(f.name) && !isBoundEntry(f))
+                    emitAt(hlsl, rewriteIntrinsics(f.hlslText, depth), f.hlslLoc);
                 break;
             }
             case DeclRef::Kind::Verbatim: {
@@ -238,6 +291,9 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
             }
         }
     }
+    // Last: its body names the objects bound, which the effect may declare after the function (FX
+    // Composer's quad include defines the pixel shaders the effects then pass their samplers to).
+    if (boundEntry) emitAt(hlsl, rewriteIntrinsics(boundEntry->hlslText, depth), boundEntry->hlslLoc);
     out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
     return out;
 }
@@ -302,10 +358,18 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     out.profile = compile.profile;
     out.compileLoc = compile.loc;
 
+    // D3DX bound a sampler or texture compile argument when it compiled the shader: the entry point's body
+    // names the effect's object itself, so that what follows sees a depth sampler's lookups as its own.
+    FunctionDecl boundFn;
+    Expr boundCompile;
+    const bool bound = bindObjectArguments(effect, *fn, compile, boundFn, boundCompile);
+    const FunctionDecl& entry = bound ? boundFn : *fn;
+    const Expr& entryCompile = bound ? boundCompile : compile;
+
     // Wrapper first (it may fail on arguments) but emitted last.
     size_t firstArgument = arguments.size();
     std::string argumentGlobals, wrapper;
-    WrapperBuilder builder(effect, *fn, compile, stage, arguments, diagnostics,
+    WrapperBuilder builder(effect, entry, entryCompile, stage, arguments, diagnostics,
                            stage == ShaderStage::Fragment ? previousOutputs : nullptr,
                            stage == ShaderStage::Domain ? hull : nullptr);
     if (streamOut) builder.setStreamOut(*streamOut);
@@ -326,7 +390,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
     hlsl += "// shadowfx: " + std::string(shaderStageName(stage)) + " shader " + fn->name + " (" +
             compile.profile + ")\n";
     EffectDeclarations declarations =
-        emitEffectDeclarations(effect, reached, wrapper, builder.streamStruct(), builder.streamStructText());
+        emitEffectDeclarations(effect, reached, wrapper, builder.streamStruct(), builder.streamStructText(),
+                               bound ? &boundFn : nullptr);
     hlsl += declarations.hlsl;
     const std::string& staticAssignments = declarations.staticAssignments;
     if (!staticAssignments.empty()) {

@@ -97,9 +97,13 @@ struct EffectDeclarations {
     std::string staticAssignments;
     std::vector<std::string> depthSamplers;  // the depth-compare samplers the unit declares
 };
+// `boundEntry`, where given, is emitted instead of the effect's function of the same definition
+// (`boundEntry->hlslLoc`), after every declaration: an entry point with its sampler and texture compile
+// arguments bound.
 EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<std::string>& reached,
                                           const std::string& wrapper, const std::string& streamStruct = "",
-                                          const std::string& streamStructText = "");
+                                          const std::string& streamStructText = "",
+                                          const FunctionDecl* boundEntry = nullptr);
 // The effect's functions that `entry` calls, directly or not, and those static initializers call.
 std::set<std::string> reachableFunctions(const Effect& effect, const std::string& entry);
 

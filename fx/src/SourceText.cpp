@@ -65,6 +65,9 @@ std::string decodeSourceText(const std::string& bytes) {
     out.reserve(text.size());
     for (size_t i = 0; i < text.size(); ++i)
         if (!(text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) out += text[i];
+    // A last line without its line end: fxc read a directive there (`#include <x.fxh>` at the end of the
+    // file), glslang's preprocessor asks for the newline.
+    if (!out.empty() && out.back() != '\n') out += '\n';
     return out;
 }
 

@@ -13,7 +13,7 @@
 namespace fx {
 
 std::string spirvToGlslOptionsKey() {
-    return "spirv-cross glsl450 core novk pairs";
+    return "spirv-cross glsl450 core novk pairs finite-cube";
 }
 
 namespace {
@@ -137,6 +137,43 @@ std::string imageFormatQualifier(spv::ImageFormat format) {
         default:
             return "";
     }
+}
+
+// Mesa's llvmpipe crashes on a cube-map lookup whose direction is not finite (a normalized zero vector,
+// interpolated): every lookup of a cube sampler of `samplers` takes its direction through a helper that
+// makes such a direction +z. A finite direction passes unchanged, so no image changes; D3D9 hardware read
+// some texel there.
+void guardCubeDirections(std::string& glsl, const std::vector<std::string>& samplers) {
+    if (samplers.empty()) return;
+    static const std::regex kLookup(R"(\b(texture|textureLod|textureGrad|textureGather)\(\s*(\w+)\s*,)");
+    std::string out;
+    size_t copied = 0;
+    for (auto m = std::sregex_iterator(glsl.begin(), glsl.end(), kLookup); m != std::sregex_iterator(); ++m) {
+        if (std::find(samplers.begin(), samplers.end(), (*m)[2].str()) == samplers.end()) continue;
+        const size_t start = static_cast<size_t>(m->position(0) + m->length(0));
+        if (start < copied) continue;
+        size_t end = start;
+        for (int depth = 0; end < glsl.size(); ++end) {
+            const char c = glsl[end];
+            if (c == '(' || c == '[') ++depth;
+            if ((c == ')' || c == ']') && depth-- == 0) break;
+            if (c == ',' && depth == 0) break;
+        }
+        const size_t argument = glsl.find_first_not_of(" \t\n", start);
+        out.append(glsl, copied, argument - copied);
+        out += "fx_finite_direction(" + glsl.substr(argument, end - argument) + ")";
+        copied = end;
+    }
+    if (copied == 0) return;
+    out.append(glsl, copied, std::string::npos);
+    // After the #version and #extension lines.
+    size_t at = 0;
+    while (at < out.size() && out[at] == '#') at = out.find('\n', at) + 1;
+    out.insert(at,
+               "vec3 fx_finite_direction(vec3 d) { return any(isnan(d)) || any(isinf(d)) ? vec3(0.0, 0.0, "
+               "1.0) : d; }\n"
+               "vec4 fx_finite_direction(vec4 d) { return vec4(fx_finite_direction(d.xyz), d.w); }\n");
+    glsl = std::move(out);
 }
 
 }  // namespace
@@ -342,6 +379,11 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
         }
 
         program.glsl = compiler.compile();
+        std::vector<std::string> cubeSamplers;
+        for (const spirv_cross::Resource& r : compiler.get_shader_resources().sampled_images)
+            if (compiler.get_type(r.type_id).image.dim == spv::DimCube)
+                cubeSamplers.push_back(compiler.get_name(r.id));
+        guardCubeDirections(program.glsl, cubeSamplers);
         // Belt and braces for the comment above: SPIRV-Cross versions differ in when they emit this.
         program.glsl = std::regex_replace(
             program.glsl, std::regex(R"(layout\(origin_upper_left\) in vec4 gl_FragCoord;\n)"), "");

@@ -1,7 +1,9 @@
 // D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
-// (TEXCOORD1..n), a literal bool compile argument, and a static initialized by a call of the effect's own
-// function. Minimal effects written for these tests, checked by pixels.
+// (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
+// function, a shadow-map depth sampler passed as a compile argument, a `for` variable read after its
+// loop, and a cube-map lookup in a direction that is not finite. Minimal effects written for these
+// tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
@@ -94,6 +96,105 @@ TEST(D3d9Lowering, BoolLiteralArgumentAfterAnArrayInput) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+}
+
+// FX Composer's shadow-map effects pass the depth target's sampler to the pixel shader as a compile
+// argument (`compile ps_3_0 PS(ShadDepthSampler)`); D3DX bound it when it compiled the shader, so its
+// lookups are depth comparisons as the global's own are. The reference depth 0 passes the comparison
+// everywhere and 1 fails wherever an object wrote depth: red 1 and green 0 on the objects, where reading
+// the stored depth as a colour would give the same value in both. The float after the sampler keeps its
+// own argument. The sampler is declared after the shader, as FX Composer's quad include defines shaders
+// that the effects including it pass their own samplers to.
+constexpr const char* kDepthSamplerArgument = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float ClearDepth = 1.0;
+struct VsOut { float4 Position : POSITION; float4 Projected : TEXCOORD0; };
+VsOut VS(float3 Position : POSITION) {
+    VsOut o;
+    o.Position = mul(float4(Position, 1), WorldViewProj);
+    o.Projected = float4(o.Position.xy / o.Position.w * float2(0.5, -0.5) + 0.5, 0, 1);
+    return o;
+}
+float4 DepthPS() : COLOR { return 1; }
+float4 PS(VsOut i, uniform sampler2D Depth, uniform float Blue) : COLOR {
+    float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
+    return float4(tex2Dproj(Depth, near).x, tex2Dproj(Depth, far).x, Blue, 1);
+}
+texture ShadowColour : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "X8B8G8R8"; >;
+texture ShadowDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 48}; string Format = "D24S8_SHADOWMAP"; >;
+sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU = Clamp; AddressV = Clamp;
+    MinFilter = Point; MagFilter = Point; MipFilter = None; };
+technique T < string Script =
+    "RenderColorTarget0=ShadowColour; RenderDepthStencilTarget=ShadowDepth; ClearSetDepth=ClearDepth;"
+    "Clear=Depth; Pass=Depth; RenderColorTarget0=; RenderDepthStencilTarget=; Pass=Lookup;"; > {
+    pass Depth < string Script = "Draw=geometry;"; > {
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 DepthPS();
+        ZEnable = true; ZWriteEnable = true; CullMode = None;
+    }
+    pass Lookup < string Script = "Draw=geometry;"; > {
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(ShadowDepthSampler, 0.4);
+        ZEnable = true; CullMode = None;
+    }
+}
+)";
+
+TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
+    auto renderer = loadEffect(kDepthSamplerArgument, false, "depth_sampler_argument.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+}
+
+// fxc declared a `for` loop's variable in the enclosing block (an XNA engine's antialiasing filter returns
+// the step its search loop stopped at); the loop leaves at 3 of 8, so red is 0.3.
+constexpr const char* kLoopVariableAfterTheLoop = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Limit = 3;
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float steps(float limit) {
+    [unroll(8)] for (int i = 0; i < 8; i++) { if (i >= limit) break; }
+    return i;
+}
+float4 PS() : COLOR { return float4(steps(Limit) / 10.0, 0.6, 0.4, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, LoopVariableReadAfterTheLoop) {
+    auto renderer = loadEffect(kLoopVariableAfterTheLoop, false, "loop_variable.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 76, 153, 102), kMinObjectPixels);
+}
+
+// An XNA engine's material normalizes the camera's direction in the vertex shader, a zero vector where the
+// application has not set the camera: every pixel looks its cube map up in a NaN direction, on which
+// llvmpipe crashed. The cube map is the neutral grey stand-in, halved.
+constexpr const char* kCubeLookupNotFinite = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+texture EnvTexture;
+samplerCUBE EnvSampler = sampler_state { Texture = <EnvTexture>; };
+struct VsOut { float4 Position : POSITION; float3 Dir : TEXCOORD0; };
+VsOut VS(float3 p : POSITION, float3 n : NORMAL) {
+    VsOut o;
+    o.Position = mul(float4(p, 1), WorldViewProj);
+    o.Dir = normalize(n * 0);
+    return o;
+}
+float4 PS(float3 Dir : TEXCOORD0) : COLOR { return float4(texCUBE(EnvSampler, Dir).rgb * 0.5, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, CubeLookupInADirectionThatIsNotFinite) {
+    auto renderer = loadEffect(kCubeLookupNotFinite, false, "cube_not_finite.fx");
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 128, 128, 128), kMinObjectPixels);
 }
 
 }  // namespace

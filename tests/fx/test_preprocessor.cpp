@@ -56,6 +56,17 @@ TEST(Preprocessor, NestedIncludeIsRelativeToIncludingFile) {
     EXPECT_EQ(effect->findParameter("main1")->loc.line, 2);
 }
 
+// fxc read a directive on a last line without its line end; glslang's preprocessor wanted the newline.
+TEST(Preprocessor, IncludeOnTheLastLineWithoutALineEnd) {
+    std::map<std::string, std::string> files = {{"fx/last.fxh", "float fromInclude;\n#define LAST 2"}};
+    DiagnosticList diags;
+    auto effect =
+        parseEffectSource("float mine;\r\n#include <last.fxh>", "fx/main.fx", memoryOptions(files), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(effect->findParameter("fromInclude"));
+    EXPECT_TRUE(effect->findParameter("mine"));
+}
+
 TEST(Preprocessor, IncludeDirectories) {
     std::map<std::string, std::string> files = {{"/sys/inc/shared.fxh", "float shared1;\n"}};
     ParseOptions options = memoryOptions(files);

@@ -69,6 +69,11 @@ technique ShaderOnly { pass p { VertexShader = compile vs_3_0 VS(); } }
 
 // Lights without transforms: the host's world, view and projection, as D3D9 kept the application's.
 technique HostTransforms { pass p { LIGHTS(-1) } }
+// Texture stages alone, no shader and no vertex state: D3D9 still ran the vertex pipeline, with the host's
+// transforms.
+#define NOISE_STAGE Lighting = false; Texture[0] = <Noise>; ColorOp[0] = SelectArg1; ColorArg1[0] = Texture;
+technique StagesOnly { pass p { NOISE_STAGE } }
+technique StagesAndTransforms { pass p { TRANSFORMS NOISE_STAGE } }
 
 // A pixel shader alone: a full-screen pass over the quad, its coordinates in both sets, diffuse white.
 float4 ScreenPS(float2 uv : TEXCOORD0, float2 uv1 : TEXCOORD1, float4 diffuse : COLOR0) : COLOR0 {
@@ -245,6 +250,14 @@ TEST(FixedFunctionPasses, TransformsNotSetAreTheHosts) {
     const runtime::FrameImage host = frame(*renderer, "HostTransforms");
     ASSERT_TRUE(notConstant(host));
     EXPECT_EQ(differingPixels(host, frame(*renderer, "FromRight"), 1), 0);
+}
+
+TEST(FixedFunctionPasses, TextureStagesAloneDrawThroughTheHostsTransforms) {
+    auto renderer = loadEffect(kEffect, false, "fixed_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage stages = frame(*renderer, "StagesOnly");
+    ASSERT_TRUE(notConstant(stages));
+    EXPECT_EQ(differingPixels(stages, frame(*renderer, "StagesAndTransforms"), 1), 0);
 }
 
 TEST(FixedFunctionPasses, PixelShaderAloneDrawsAFullScreenQuad) {
