@@ -51,9 +51,10 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
             // (SpirvToGlsl.cpp). So the elements' semantics must take consecutive locations (an effect whose
             // other names sort between them, SIXNORMS10 beside SIXNORMS1, has them apart).
             const int count = std::max(m.type.arrayDims[0], 1);
-            const auto [name, first] = splitSemantic(semantic);
+            // A pair, not a structured binding: clang 14 (the sanitized build's) cannot capture those.
+            const std::pair<std::string, int> split = splitSemantic(semantic);
             const auto locationOf = [&](int k) {
-                const std::string each = name + std::to_string(first + k);
+                const std::string each = split.first + std::to_string(split.second + k);
                 return varyingLocation(each) ? varyingLocation(each) : customVaryingLocation(mEffect, each);
             };
             const std::optional<int> start = locationOf(0);
