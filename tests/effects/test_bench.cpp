@@ -3,6 +3,7 @@
 // figures must be sane (the thesis effect's shadows are mostly right). Also the per-pass timings of
 // FrameOptions::timePasses that the bench and the viewer read.
 #include "CliRunner.h"
+#include "OsgPeerAvailability.h"
 #include "JsonSchema.h"
 #include "ScratchDirectory.h"
 #include <runtime/BuiltinScenes.h>
@@ -281,12 +282,7 @@ TEST(Bench, ScenesTakeSceneFilesMixedWithBuiltinNames) {
 // with the G-buffer pixel for pixel: a frame off by a pixel, mirrored, blank or black fails the bound (the
 // scene keeps a large part of its receivers in shadow).
 TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
-#if defined(SHADOWFX_OSG_PEER_SANITIZED)
-    GTEST_SKIP() << "sanitized build: shadowfx-osg-peer is not built (OpenSceneGraph is not instrumented)";
-#elif !defined(SHADOWFX_OSG_PEER_BUILT)
-    FAIL() << "shadowfx-osg-peer is not built: CMake did not find OpenSceneGraph 3.6 "
-              "(libopenscenegraph-dev, which scripts/install-deps.sh installs)";
-#else
+    SHADOWFX_REQUIRE_OSG_PEER();
     const shadowfx::test::ScratchDirectory scratch("bench_peer");
     const std::filesystem::path out = scratch / "out";
     std::filesystem::create_directories(out);
@@ -341,7 +337,6 @@ TEST(Bench, PeerOsgRowsAreScoredAgainstTheSameTruth) {
     EXPECT_EQ(runTool("bench --peers osg --peer-techniques NoSuchTechnique --out " + out.string(), output),
               2);
     EXPECT_NE(output.find("NoSuchTechnique"), std::string::npos) << output;
-#endif
 }
 
 // --light-angle-to-view turns the light, and the footprint is scored with each effect's own light fit: the

@@ -3,6 +3,7 @@
 // excuses only the criteria it names, an xpass failing --strict, the ordinary criterion's allowance for a
 // case's demand on the fit's resolution, the JSON, and a peer through the same cases.
 #include "CliRunner.h"
+#include "OsgPeerAvailability.h"
 #include "ScratchDirectory.h"
 
 #include <gtest/gtest.h>
@@ -53,12 +54,7 @@ TEST(StressCommand, ListsItsCasesAndRejectsUnknownOnes) {
 // G-buffer has a small error, which a blank, black or shifted frame does not (a fair share of the boxes'
 // receivers lie in shadow); the orbit's 60 frames come back one per camera, for shimmer.
 TEST(StressCommand, PeerOsgRunsThroughTheSameCases) {
-#if defined(SHADOWFX_OSG_PEER_SANITIZED)
-    GTEST_SKIP() << "sanitized build: shadowfx-osg-peer is not built (OpenSceneGraph is not instrumented)";
-#elif !defined(SHADOWFX_OSG_PEER_BUILT)
-    FAIL() << "shadowfx-osg-peer is not built: CMake did not find OpenSceneGraph 3.6 "
-              "(libopenscenegraph-dev, which scripts/install-deps.sh installs)";
-#else
+    SHADOWFX_REQUIRE_OSG_PEER();
     const shadowfx::test::ScratchDirectory scratch("stress_peer");
     const std::filesystem::path out = scratch.path();
     const RunResult result =
@@ -92,7 +88,6 @@ TEST(StressCommand, PeerOsgRunsThroughTheSameCases) {
     std::ifstream report(out / "report.md");
     const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("### osg / ShadowMap"), std::string::npos) << text;
-#endif
 }
 
 TEST(StressCommand, DeclaredLimitationsAreReportedWithoutFailingTheRun) {
