@@ -7,8 +7,11 @@
 // by their IEEE bit pattern, strings and vectors as a uint32_t count followed by the elements, an optional as
 // a byte (0 absent, 1 present) and the value. The reader never reads past its input: a count larger than the
 // bytes left, or a read past the end, fails it
-// (`failed()`, with the byte offset and what it was reading) and every later read yields zeros.
+// (`failed()`, with the diagnostic that says what it was reading, and the byte offset) and every later read
+// yields zeros.
 #pragma once
+
+#include <fx/Diagnostics.h>
 
 #include <array>
 #include <cstdint>
@@ -89,7 +92,7 @@ public:
         (*this)(second, rest...);
     }
 
-    void require(bool, const std::string&) {}  // the writer writes what the compiler made
+    void require(bool, DiagId) {}  // the writer writes what the compiler made
     const std::string& bytes() const { return mBytes; }
 
 private:
@@ -109,7 +112,7 @@ public:
     void operator()(T& value) {
         if constexpr (std::is_same_v<T, bool>) {
             const uint64_t byte = integer(1, "a flag");
-            if (byte > 1) fail("a flag that is neither 0 nor 1");
+            if (byte > 1) fail(DiagId::CompiledEffectFlagInvalid);
             value = byte == 1;
         } else if constexpr (std::is_same_v<T, uint8_t>) {
             value = static_cast<uint8_t>(integer(1, "a byte"));
@@ -119,13 +122,13 @@ public:
             if (const std::optional<T> found = EnumByName<T>::find(name)) {
                 value = *found;
             } else {
-                fail("an enumerator this shadowfx does not know ('" + name + "')");
+                fail(DiagId::CompiledEffectEnumeratorUnknown, {name});
                 value = T{};
             }
         } else if constexpr (std::is_enum_v<T>) {
             const uint64_t raw = integer(4, "an enumerator");
             if (raw > static_cast<uint64_t>(EnumLimit<T>::kLast)) {
-                fail("an enumerator out of range (" + std::to_string(raw) + ")");
+                fail(DiagId::CompiledEffectEnumeratorOutOfRange, {std::to_string(raw)});
                 value = T{};
             } else {
                 value = static_cast<T>(raw);
@@ -178,21 +181,27 @@ public:
         (*this)(second, rest...);
     }
 
-    // A field the shared list checks as it reads: fails the read with `what` unless `ok`.
-    void require(bool ok, const std::string& what) {
-        if (!ok) fail(what);
+    // A field the shared list checks as it reads: fails the read with `id` unless `ok`.
+    void require(bool ok, DiagId id) {
+        if (!ok) fail(id);
     }
-    bool failed() const { return !mError.empty(); }
-    // What could not be read, and the byte of the content where the read stood.
-    const std::string& error() const { return mError; }
-    size_t errorOffset() const { return mErrorOffset; }
+    bool failed() const { return mError.has_value(); }
+    // What could not be read: the diagnostic, its arguments ending in the byte of the content where the read
+    // stood.
+    DiagId error() const { return *mError; }
+    std::vector<std::string> errorArgs() const {
+        std::vector<std::string> args = mErrorArgs;
+        args.push_back(std::to_string(mErrorOffset));
+        return args;
+    }
     bool atEnd() const { return mOffset == mBytes.size(); }
     size_t offset() const { return mOffset; }
 
 private:
-    void fail(const std::string& what) {
-        if (mError.empty()) {
-            mError = what;
+    void fail(DiagId id, std::vector<std::string> args = {}) {
+        if (!mError) {
+            mError = id;
+            mErrorArgs = std::move(args);
             mErrorOffset = mOffset;
         }
         mOffset = mBytes.size();
@@ -200,7 +209,7 @@ private:
     uint64_t integer(size_t width, const char* what) {
         if (failed()) return 0;
         if (mBytes.size() - mOffset < width) {
-            fail(std::string("the content ends inside ") + what);
+            fail(DiagId::CompiledEffectContentEndsInValue, {what});
             return 0;
         }
         uint64_t value = 0;
@@ -212,8 +221,7 @@ private:
     size_t count(const char* what) {
         const uint64_t size = integer(4, what);
         if (size > mBytes.size() - mOffset) {
-            fail(std::string("the length of ") + what + " (" + std::to_string(size) +
-                 ") exceeds the bytes left");
+            fail(DiagId::CompiledEffectLengthBeyondContent, {what, std::to_string(size)});
             return 0;
         }
         return static_cast<size_t>(size);
@@ -221,7 +229,8 @@ private:
 
     std::string_view mBytes;
     size_t mOffset = 0;
-    std::string mError;
+    std::optional<DiagId> mError;
+    std::vector<std::string> mErrorArgs;
     size_t mErrorOffset = 0;
 };
 

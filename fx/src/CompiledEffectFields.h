@@ -153,13 +153,12 @@ template <class A>
 void fields(A& a, TypeDesc& x) {
     a(x.base, x.shape, x.rows, x.cols, x.arrayDims, x.structName, x.rowMajor, x.templateArgs);
     // A type sizes the values the runtime builds from it (zeroValue, constructors in preshaders).
-    a.require(x.rows >= 0 && x.rows <= 4 && x.cols >= 0 && x.cols <= 4,
-              "a type with more than 4 rows or columns");
+    a.require(x.rows >= 0 && x.rows <= 4 && x.cols >= 0 && x.cols <= 4, DiagId::CompiledEffectTypeTooLarge);
     int64_t elements = 1;
     for (int dim : x.arrayDims) {
-        a.require(dim >= 0 && dim <= (1 << 20), "an array dimension out of range");
+        a.require(dim >= 0 && dim <= (1 << 20), DiagId::CompiledEffectArrayDimensionOutOfRange);
         elements *= dim >= 0 && dim <= (1 << 20) ? std::max(dim, 1) : 1;
-        a.require(elements <= (1 << 20), "an array of more than 2^20 elements");
+        a.require(elements <= (1 << 20), DiagId::CompiledEffectArrayTooLarge);
         if (elements > (1 << 20)) break;
     }
 }

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 namespace fx {
@@ -43,14 +44,20 @@ uint64_t readLittleEndian(std::string_view bytes, size_t offset, size_t width) {
 
 // [SECTION] Checks
 
-// What the runtime indexes with the effect's numbers, checked against what they index; "" if all hold.
+// What the runtime indexes with the effect's numbers, checked against what they index: the first check that
+// fails, as its diagnostic and arguments, or none if all hold.
+struct Corruption {
+    DiagId id;
+    std::vector<std::string> args = {};
+};
+
 class Checks {
 public:
     explicit Checks(const CompiledEffect& effect) : mEffect(effect), mParameters(effect.parameters.size()) {}
 
-    std::string run() {
+    std::optional<Corruption> run() {
         if (mEffect.initialValues.size() != mParameters)
-            return "initial values and parameters differ in number";
+            return Corruption{DiagId::CompiledEffectInitialValueCount};
         // A struct holds structs listed before it only (componentCount counts no further), and a value is
         // sized by its count.
         for (size_t i = 0; i < mEffect.structs.size(); ++i)
@@ -59,90 +66,88 @@ public:
                     std::none_of(mEffect.structs.begin(),
                                  mEffect.structs.begin() + static_cast<std::ptrdiff_t>(i),
                                  [&](const StructInfo& s) { return s.name == member.type.structName; }))
-                    return "struct '" + mEffect.structs[i].name + "' holds a struct not listed before it";
+                    return Corruption{DiagId::CompiledEffectStructOrder, {mEffect.structs[i].name}};
         for (const ParameterInfo& parameter : mEffect.parameters)
             if (mEffect.componentCount(parameter.type) > (size_t(1) << 24))
-                return "parameter '" + parameter.name + "' holds more than 2^24 numbers";
+                return Corruption{DiagId::CompiledEffectParameterTooLarge, {parameter.name}};
         for (const TextureDesc& texture : mEffect.textures)
-            if (texture.parameter >= mParameters) return "a texture names no parameter";
+            if (texture.parameter >= mParameters)
+                return Corruption{DiagId::CompiledEffectTextureWithoutParameter};
         for (const std::vector<SamplerDesc>* list : {&mEffect.samplers, &mEffect.passSamplers})
             for (const SamplerDesc& sampler : *list)
                 if (sampler.parameter >= mParameters || (sampler.texture && *sampler.texture >= mParameters))
-                    return "a sampler names no parameter";
-        if (std::string error = script(mEffect.globalScript, 0); !error.empty()) return error;
+                    return Corruption{DiagId::CompiledEffectSamplerWithoutParameter};
+        if (std::optional<Corruption> error = script(mEffect.globalScript, 0)) return error;
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.fill) {
-                if (std::string error = check(*texture.fill); !error.empty())
-                    return "a texture function's fill pass: " + error;
+                if (std::optional<Corruption> error = check(*texture.fill)) return error;
                 if (texture.fill->arguments.size() != 1)
-                    return "a texture function's fill pass: no fill argument";
+                    return Corruption{DiagId::CompiledEffectFillArgumentMissing};
                 if (texture.width < 1 || texture.width > 16384 || texture.height < 1 ||
                     texture.height > 16384 || texture.depth < 1 || texture.depth > 2048)
-                    return "a texture function's texture size out of range";
+                    return Corruption{DiagId::CompiledEffectFillSizeOutOfRange};
             }
         for (const CompiledTechnique& technique : mEffect.techniques) {
-            if (std::string error = script(technique.script, technique.passes.size()); !error.empty())
+            if (std::optional<Corruption> error = script(technique.script, technique.passes.size()))
                 return error;
             for (const CompiledPass& pass : technique.passes) {
-                if (std::string error = check(pass); !error.empty())
-                    return "pass '" + pass.name + "': " + error;
+                if (std::optional<Corruption> error = check(pass)) return error;
                 if (pass.drawAuto < -1 ||
                     (pass.drawAuto >= 0 && static_cast<size_t>(pass.drawAuto) >= technique.passes.size()))
-                    return "pass '" + pass.name + "': DrawAuto names a pass out of range";
+                    return Corruption{DiagId::CompiledEffectDrawAutoOutOfRange, {pass.name}};
             }
         }
-        return "";
+        return std::nullopt;
     }
 
 private:
-    std::string script(const std::vector<ScriptCommand>& commands, size_t passes) const {
+    std::optional<Corruption> script(const std::vector<ScriptCommand>& commands, size_t passes) const {
         for (const ScriptCommand& command : commands)
             if (command.pass < -1 || (command.pass >= 0 && static_cast<size_t>(command.pass) >= passes))
-                return "a script names a pass out of range";
-        return "";
+                return Corruption{DiagId::CompiledEffectScriptPassOutOfRange};
+        return std::nullopt;
     }
 
-    std::string program(const PreshaderProgram& value) const {
-        const std::string error = value.malformation(mParameters);
-        return error.empty() ? "" : "a preshader program is malformed (" + error + ")";
-    }
-
-    std::string check(const CompiledPass& pass) const {
+    // The checks of a pass; the diagnostics name it.
+    std::optional<Corruption> check(const CompiledPass& pass) const {
+        const auto inPass = [&pass](DiagId id) { return Corruption{id, {pass.name}}; };
         for (const CompileArgument& argument : pass.arguments)
-            if (std::string error = program(argument.value); !error.empty()) return error;
+            if (std::optional<DiagId> error = argument.value.malformation(mParameters)) return inPass(*error);
         for (const RenderStateSetting& state : pass.states)
-            if (std::string error = program(state.value); !error.empty()) return error;
-        if (std::string error = script(pass.script, 0); !error.empty()) return error;
+            if (std::optional<DiagId> error = state.value.malformation(mParameters)) return inPass(*error);
+        if (std::optional<Corruption> error = script(pass.script, 0)) return error;
         for (const StageProgram* stage :
              {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain, &pass.compute}) {
             for (const UniformBinding& uniform : stage->uniforms) {
                 const size_t limit =
                     uniform.source == UniformBinding::Source::Parameter ? mParameters : pass.arguments.size();
-                if (uniform.index >= limit) return "a uniform block member names no parameter or argument";
+                if (uniform.index >= limit) return inPass(DiagId::CompiledEffectUniformWithoutSource);
             }
             for (const SamplerBinding& sampler : stage->samplers) {
                 if (sampler.samplerParameter != kNoSampler && sampler.samplerParameter >= mParameters)
-                    return "a sampler binding names no parameter";
+                    return inPass(DiagId::CompiledEffectSamplerBindingWithoutParameter);
                 if (sampler.textureParameter && *sampler.textureParameter >= mParameters)
-                    return "a sampler binding names no texture parameter";
+                    return inPass(DiagId::CompiledEffectSamplerBindingWithoutTexture);
                 if (sampler.passSampler < -1 ||
                     (sampler.passSampler >= 0 &&
                      static_cast<size_t>(sampler.passSampler) >= mEffect.passSamplers.size()))
-                    return "a sampler binding names no pass sampler state";
+                    return inPass(DiagId::CompiledEffectSamplerBindingWithoutPassSampler);
             }
             for (const StorageBufferBinding& buffer : stage->storageBuffers)
-                if (buffer.parameter >= mParameters) return "a storage buffer names no parameter";
+                if (buffer.parameter >= mParameters)
+                    return inPass(DiagId::CompiledEffectStorageBufferWithoutParameter);
         }
         // Stream output sizes the pass's GL buffers (capacity times stride) and names their slots.
         if (pass.streamOut) {
             for (const StreamOutElement& element : pass.streamOut->elements)
-                if (element.slot < 0 || element.slot > 3) return "a stream-output element names no slot";
+                if (element.slot < 0 || element.slot > 3)
+                    return inPass(DiagId::CompiledEffectStreamOutSlotInvalid);
             for (uint32_t stride : pass.streamOut->strides)
-                if (stride > (1u << 16)) return "a stream-output stride out of range";
+                if (stride > (1u << 16)) return inPass(DiagId::CompiledEffectStreamOutStrideOutOfRange);
             if (pass.streamOut->capacity < 0 || pass.streamOut->capacity > (1 << 24))
-                return "a stream-output capacity out of range";
+                return inPass(DiagId::CompiledEffectStreamOutCapacityOutOfRange);
         }
-        return "";
+        return std::nullopt;
     }
 
     const CompiledEffect& mEffect;
@@ -215,14 +220,13 @@ std::unique_ptr<CompiledEffect> deserializeCompiledEffect(std::string_view bytes
     auto effect = std::make_unique<CompiledEffect>();
     detail::BinaryReader reader(content);
     reader(*effect);
-    if (!reader.failed() && !reader.atEnd()) reader.require(false, "content left over");
+    if (!reader.failed() && !reader.atEnd()) reader.require(false, DiagId::CompiledEffectContentLeftOver);
     if (reader.failed()) {
-        diagnostics.report(DiagId::CompiledEffectUndecodable, where,
-                           {reader.error(), std::to_string(reader.errorOffset())});
+        diagnostics.report(reader.error(), where, reader.errorArgs());
         return nullptr;
     }
-    if (std::string error = Checks(*effect).run(); !error.empty()) {
-        diagnostics.report(DiagId::CompiledEffectInconsistent, where, {error});
+    if (std::optional<Corruption> error = Checks(*effect).run()) {
+        diagnostics.report(error->id, where, error->args);
         return nullptr;
     }
     return effect;

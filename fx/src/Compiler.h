@@ -108,6 +108,8 @@ private:
     void finishPendingStages();
     SourceLoc functionLocation(const LoweredStage& lowered) const;
     void reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered);
+    // SPIRV-Cross's message about a stage it could not write, said in the effect's terms.
+    void reportCrossError(const std::string& message, const LoweredStage& lowered);
     SourceLoc userLocation(const HlslMessage& m, const LoweredStage& lowered) const;
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
     void resolveStructFields(UniformBinding& u) const;
@@ -178,8 +180,5 @@ private:
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;
 };
-
-// SPIRV-Cross's message about a stage it could not write, said in the effect's terms.
-std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered);
 
 }  // namespace fx::detail

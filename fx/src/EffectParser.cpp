@@ -327,7 +327,7 @@ int Parser::parseDimension() {
     Expr value = parseExpr(true);
     double number = 0;
     if (!foldConstant(mEffect, value, number) || number < 1 || number > 4)
-        fail(DiagId::UnexpectedToken, token.loc, {"a dimension 1..4", value.str()});
+        fail(DiagId::VectorDimensionInvalid, token.loc, {value.str()});
     return static_cast<int>(number);
 }
 
@@ -341,8 +341,7 @@ void Parser::parseArrayDims(TypeDesc& type) {
         const Token& first = peek();
         Expr size = parseExpr();
         double number = 0;
-        if (!foldConstant(mEffect, size, number))
-            fail(DiagId::UnexpectedToken, first.loc, {"a constant array size", size.str()});
+        if (!foldConstant(mEffect, size, number)) fail(DiagId::ArraySizeNotConstant, first.loc, {size.str()});
         // Bounded, all dimensions together, so that a declaration cannot make the compiler allocate
         // gigabytes of initial value (`float4x4 a[1 << 24]` was 1 GB; `[65536][65536]` more).
         constexpr double kMaxArrayElements = 1 << 16;
@@ -352,7 +351,7 @@ void Parser::parseArrayDims(TypeDesc& type) {
             fail(DiagId::ArraySizeOutOfRange, first.loc,
                  {size.str(), std::to_string(static_cast<int>(kMaxArrayElements))});
         if (number != static_cast<double>(static_cast<int>(number)))  // `[2.5]` was truncated silently
-            fail(DiagId::UnexpectedToken, first.loc, {"a whole array size", size.str()});
+            fail(DiagId::ArraySizeNotWhole, first.loc, {size.str()});
         type.arrayDims.push_back(static_cast<int>(number));
         expect("]");
     }

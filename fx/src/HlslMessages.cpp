@@ -135,8 +135,9 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
         SourceLoc loc = userLocation(m, lowered);
         std::string text = m.text;
         while (!text.empty() && text.back() == ' ') text.pop_back();
-        if (m.file == kGeneratedFile) text += " (in the code generated for '" + lowered.entryPoint + "')";
-        if (m.error)
+        if (m.error && m.file == kGeneratedFile)
+            error(DiagId::HlslErrorInGeneratedCode, loc, {text, lowered.entryPoint});
+        else if (m.error)
             error(DiagId::HlslError, loc, {text});
         else if (m.file != kGeneratedFile && text.find("mul() matrix size mismatch") != std::string::npos)
             mDiagnostics.report(DiagId::ImplicitTruncation, loc, {});
@@ -150,14 +151,12 @@ void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, cons
 
 // SPIRV-Cross speaks of SPIR-V, which the user never wrote: say which shader of the effect it failed on
 // and, where the cause is known, what in the effect led there.
-std::string crossErrorInEffectTerms(const std::string& message, const LoweredStage& lowered) {
-    std::string cause;
-    if (message.find("Cannot find mapping for combined sampler") != std::string::npos)
-        cause =
-            "a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, samplerCUBE, "
-            "or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; ";
-    return cause + "the " + std::string(shaderStageName(lowered.stage)) + " shader '" + lowered.entryPoint +
-           "' (" + lowered.profile + ") cannot be written as GLSL (SPIRV-Cross: " + message + ")";
+void Compiler::reportCrossError(const std::string& message, const LoweredStage& lowered) {
+    const DiagId id = message.find("Cannot find mapping for combined sampler") != std::string::npos
+                          ? DiagId::CrossCompileCombinedSampler
+                          : DiagId::CrossCompileError;
+    error(id, lowered.compileLoc,
+          {std::string(shaderStageName(lowered.stage)), lowered.entryPoint, lowered.profile, message});
 }
 
 SourceLoc Compiler::functionLocation(const LoweredStage& lowered) const {

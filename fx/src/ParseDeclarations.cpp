@@ -50,8 +50,7 @@ void Parser::parseTopLevel() {
         return;
     }
     if (token.text == "pass")  // was "unknown type 'pass'"
-        fail(DiagId::UnexpectedToken, token.loc,
-             {"a declaration ('pass' belongs inside a technique)", "pass"});
+        fail(DiagId::PassOutsideTechnique, token.loc, {});
     if (token.text == "typedef") {
         parseTypedef();
         return;
@@ -193,7 +192,7 @@ void Parser::parseDeclaration(bool inBuffer) {
             double number = 0;
             if (!foldConstant(mEffect, count, number) || number < 1 || number > 1024 ||
                 number != static_cast<double>(static_cast<int>(number)))
-                fail(DiagId::UnexpectedToken, attribute.loc, {"a vertex count 1..1024", count.str()});
+                fail(DiagId::MaxVertexCountInvalid, attribute.loc, {count.str()});
             mMaxVertexCount = static_cast<int>(number);
             expect(")");
             expect("]");

@@ -51,7 +51,7 @@ void Parser::parseFunction(size_t first, const TypeDesc& returnType, const Token
             double number = 0;
             if (!foldConstant(mEffect, size, number) || number < 1 || number > 32 ||
                 number != static_cast<double>(static_cast<int>(number)))
-                fail(DiagId::UnexpectedToken, size.loc, {"a control point count 1..32", size.str()});
+                fail(DiagId::PatchSizeInvalid, size.loc, {size.str()});
             param.patchSize = static_cast<int>(number);
             expectCloseAngle();
         } else if (peek().is("PointStream") || peek().is("LineStream") || peek().is("TriangleStream")) {

@@ -155,7 +155,7 @@ void Parser::parsePassState(Pass& pass) {
         // D3D9's largest indexed state is Sampler[0..15]; the bound also keeps the cast defined.
         if (!foldConstant(mEffect, index, number) || !(number >= 0 && number <= 15) ||
             number != static_cast<double>(static_cast<int>(number)))
-            fail(DiagId::UnexpectedToken, indexToken.loc, {"a constant index 0..15", index.str()});
+            fail(DiagId::StateIndexInvalid, indexToken.loc, {index.str()});
         state.index = static_cast<int>(number);
         expect("]");
     }
@@ -201,7 +201,7 @@ std::vector<StateAssignment> Parser::parseObjectStateBlock(StateObjectKind kind)
             double number = 0;
             if (!foldConstant(mEffect, index, number) || !(number >= 0 && number <= 7) ||
                 number != std::trunc(number))
-                fail(DiagId::UnexpectedToken, indexToken.loc, {"a render-target index 0..7", index.str()});
+                fail(DiagId::RenderTargetIndexInvalid, indexToken.loc, {index.str()});
             state.index = static_cast<int>(number);
             expect("]");
         }
@@ -214,7 +214,7 @@ std::vector<StateAssignment> Parser::parseObjectStateBlock(StateObjectKind kind)
             continue;
         }
         if (state.index > 0 && field->object != StateObjectKind::Blend)
-            error(DiagId::UnexpectedToken, state.loc, {"a state without an index", state.name});
+            error(DiagId::StateTakesNoIndex, state.loc, {state.name});
         state.name = std::string(field->name);
         mStates.resolveStateValue(state.value, field->domain, state.name);
         states.push_back(std::move(state));

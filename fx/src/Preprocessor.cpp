@@ -189,8 +189,13 @@ public:
     }
     void releaseInclude(IncludeResult* result) override { delete result; }
 
-    // Why the include of `headerName` failed (for the "Could not process include" error), if it did.
-    std::map<std::string, std::string> failures;
+    // Why the include of `headerName` failed (for the "Could not process include" error), if it did: the
+    // diagnostic and its arguments after the name as written.
+    struct Failure {
+        DiagId id;
+        std::vector<std::string> args;
+    };
+    std::map<std::string, Failure> failures;
     // Includes found only by ignoring case: the including file, the name as written, the file opened.
     struct CaseMismatch {
         std::string includer, header, found;
@@ -213,14 +218,15 @@ private:
         if (!system) return nullptr;
 
         if (header.empty()) {  // `#include ""` would otherwise resolve to the including file's folder
-            failures[headerName] = "empty file name";
+            failures[headerName] = {DiagId::IncludeFileNameEmpty, {}};
             return nullptr;
         }
 
         if (static_cast<int>(depth) > mOptions.maxIncludeDepth) {
-            failures[headerName] =
-                "include depth exceeds " + std::to_string(mOptions.maxIncludeDepth) +
-                (isOnChain(header, includer) ? " (recursive include of '" + header + "')" : "");
+            const std::string depthLimit = std::to_string(mOptions.maxIncludeDepth);
+            failures[headerName] = isOnChain(header, includer)
+                                       ? Failure{DiagId::IncludeRecursive, {depthLimit, header}}
+                                       : Failure{DiagId::IncludeDepthExceeded, {depthLimit}};
             return nullptr;
         }
         // D3DX and FX Composer look beside the including file, then beside the root effect, then in the
@@ -250,8 +256,8 @@ private:
             if (i >= exactCandidates) caseMismatches.push_back({includer, headerName, candidate});
             mTotalBytes += text->size();
             if (mTotalBytes > mOptions.maxSourceBytes) {
-                failures[headerName] =
-                    "sources exceed " + std::to_string(mOptions.maxSourceBytes) + " bytes in total";
+                failures[headerName] = {DiagId::IncludeSourcesTooLarge,
+                                        {std::to_string(mOptions.maxSourceBytes)}};
                 return nullptr;
             }
             mParents[candidate] = includer;
@@ -269,7 +275,7 @@ private:
             return new IncludeResult(candidate, forGlslang->second.data(), forGlslang->second.size(),
                                      nullptr);
         }
-        failures[headerName] = "";
+        failures[headerName] = {DiagId::IncludeNotFound, {}};
         return nullptr;
     }
 
@@ -381,10 +387,13 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
             size_t quote = userLine.find_first_of("\"<", first == std::string::npos ? 0 : first);
             if (quote != std::string::npos) loc.column = static_cast<int>(quote) + 1;
             auto failure = includer.failures.find(header);
-            if (failure != includer.failures.end() && !failure->second.empty())
-                diagnostics.report(DiagId::IncludeFailed, loc, {header, failure->second});
-            else
+            if (failure != includer.failures.end()) {
+                std::vector<std::string> args = failure->second.args;
+                args.insert(args.begin(), header);
+                diagnostics.report(failure->second.id, loc, args);
+            } else {
                 diagnostics.report(DiagId::IncludeNotFound, loc, {header});
+            }
         } else {
             diagnostics.report(DiagId::PreprocessorError, loc, {message});
         }

@@ -481,24 +481,26 @@ bool Evaluator::index(Value& base, const Value& idx, const SourceLoc& loc) {
 
 using detail::Evaluator;
 
-std::string PreshaderProgram::malformation(size_t slotCount) const {
+std::optional<DiagId> PreshaderProgram::malformation(size_t slotCount) const {
     using Op = Instruction::Op;
     size_t depth = 0;
     for (const Instruction& in : mCode) {
-        if (in.op == Op::Constant && in.operand >= mConstants.size()) return "a constant out of range";
-        if (in.op == Op::Fail && in.operand >= mErrors.size()) return "an error out of range";
+        if (in.op == Op::Constant && in.operand >= mConstants.size())
+            return DiagId::CompiledEffectPreshaderConstantOutOfRange;
+        if (in.op == Op::Fail && in.operand >= mErrors.size())
+            return DiagId::CompiledEffectPreshaderErrorOutOfRange;
         const size_t pops = in.op == Op::Constant || in.op == Op::Load || in.op == Op::Fail     ? 0
                             : in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
                             : in.op == Op::Binary || in.op == Op::Index                         ? 2
                             : in.op == Op::Select                                               ? 3
                                                                                                 : in.count;
-        if (pops > depth) return "an instruction takes more operands than the stack holds";
+        if (pops > depth) return DiagId::CompiledEffectPreshaderStackUnderflow;
         depth = depth - pops + 1;
     }
-    if (!mCode.empty() && depth != 1) return "the program leaves other than one value";
+    if (!mCode.empty() && depth != 1) return DiagId::CompiledEffectPreshaderResultCount;
     for (size_t input : mInputs)
-        if (input >= slotCount) return "an input slot out of range";
-    return "";
+        if (input >= slotCount) return DiagId::CompiledEffectPreshaderInputOutOfRange;
+    return std::nullopt;
 }
 
 const Value* PreshaderProgram::run(const std::vector<Value>& slots, Registers& registers,

@@ -260,9 +260,7 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             case Status::CrossFailed:
-                if (first)
-                    error(DiagId::CrossCompileError, lowered.compileLoc,
-                          {crossErrorInEffectTerms(outcome.crossError, lowered)});
+                if (first) reportCrossError(outcome.crossError, lowered);
                 mFailed = true;
                 continue;
             case Status::Crashed:

@@ -129,11 +129,10 @@ void Compiler::streamOutStage(const Expr& call, const Pass& p, CompiledPass& pas
             if (found != outputs->end()) components = found->second;
         }
         if (components && (e.startComponent != 0 || e.componentCount != components))
-            return unsupported(DiagId::StreamOutPartialOutput, e.loc,
-                               {e.text, std::to_string(components),
-                                builtIn         ? ", the position"
-                                : float4Varying ? ", a float4 varying"
-                                                : ""});
+            return unsupported(builtIn         ? DiagId::StreamOutPartialPosition
+                               : float4Varying ? DiagId::StreamOutPartialFloat4Varying
+                                               : DiagId::StreamOutPartialOutput,
+                               e.loc, {e.text, std::to_string(components)});
     }
     if (request.fromVertex) {
         // Not rasterized: the vertex stage's outputs keep their declared types (reset after the vertex

@@ -38,7 +38,14 @@ bool reportUnsupportedTechniques(
         }
         const auto first = std::find_if(reasons.begin(), reasons.end(),
                                         [](const Diagnostic& d) { return d.severity == Severity::Error; });
-        diagnostics.report(DiagId::TechniqueRefused, first->loc, {name, first->message});
+        // The warning stands at the technique; the error that keeps it out follows as its note, with its id.
+        Diagnostic refused{DiagId::TechniqueRefused, defaultSeverity(DiagId::TechniqueRefused),
+                           technique->loc.valid() ? technique->loc : first->loc,
+                           formatDiagnostic(DiagId::TechniqueRefused, {name})};
+        Diagnostic cause = *first;
+        cause.severity = Severity::Note;
+        refused.notes.push_back(std::move(cause));
+        diagnostics.report(refused);
         leftOut.push_back({name, technique->group, first->message, first->loc});
     }
     return !reportedErrors;

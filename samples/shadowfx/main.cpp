@@ -49,10 +49,10 @@ public:
     using fx::DiagnosticSink::report;
     explicit StderrSink(bool verbose, bool driverLog = false) : mVerbose(verbose), mDriverLog(driverLog) {}
     void report(const fx::Diagnostic& diagnostic) override {
-        if (diagnostic.id == fx::DiagId::DriverShaderLog
-                ? !mDriverLog
-                : diagnostic.severity == fx::Severity::Note && !mVerbose)
-            return;
+        const bool driverLog = diagnostic.id == fx::DiagId::DriverShaderLog ||
+                               diagnostic.id == fx::DiagId::DriverFixedFunctionLog ||
+                               diagnostic.id == fx::DiagId::DriverLinkLog;
+        if (driverLog ? !mDriverLog : diagnostic.severity == fx::Severity::Note && !mVerbose) return;
         if (diagnostic.severity == fx::Severity::Error) ++mErrors;
         std::cerr << fx::renderDiagnostic(diagnostic) << "\n";
     }

@@ -240,7 +240,8 @@ TEST(CompiledEffectFile, AnUnknownRenderStateNameIsNamed) {
     const std::string unknown(name.size(), 'Q');
     content.replace(at + 4, name.size(), unknown);
 
-    const std::string error = readError(compiledEffectFileAround(content), DiagId::CompiledEffectUndecodable);
+    const std::string error =
+        readError(compiledEffectFileAround(content), DiagId::CompiledEffectEnumeratorUnknown);
     EXPECT_NE(error.find("corrupt: an enumerator this shadowfx does not know ('" + unknown + "') at byte " +
                          std::to_string(at + 4 + name.size()) + " of the content"),
               std::string::npos)
@@ -248,7 +249,7 @@ TEST(CompiledEffectFile, AnUnknownRenderStateNameIsNamed) {
 }
 
 TEST(CompiledEffectFile, DiagnosticIdsAreFoundByName) {
-    for (DiagId id : {DiagId::NotCompiledEffect, DiagId::CompiledEffectUndecodable})
+    for (DiagId id : {DiagId::NotCompiledEffect, DiagId::CompiledEffectEnumeratorUnknown})
         EXPECT_EQ(findDiagnostic(diagnosticName(id)), id);
     EXPECT_FALSE(findDiagnostic("NoSuchDiagnostic"));
 }

@@ -525,7 +525,7 @@ technique11 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
                          diags));
     ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
     const Diagnostic& d = diags.items().back();
-    EXPECT_EQ(d.id, DiagId::CrossCompileError);
+    EXPECT_EQ(d.id, DiagId::CrossCompileCombinedSampler);
     EXPECT_EQ(d.loc.line, 4);
     EXPECT_NE(d.message.find("Sample or Gather method is given a D3D9 sampler"), std::string::npos)
         << d.message;

@@ -105,7 +105,7 @@ TEST(Preprocessor, RecursiveIncludeIsAnError) {
     auto effect = parseEffectSource("#include \"self.fxh\"\n", "main.fx", memoryOptions(files), diags);
     EXPECT_FALSE(effect);
     ASSERT_TRUE(diags.hasErrors());
-    EXPECT_EQ(diags.items()[0].id, DiagId::IncludeFailed);
+    EXPECT_EQ(diags.items()[0].id, DiagId::IncludeRecursive);
     EXPECT_NE(diags.items()[0].message.find("recursive"), std::string::npos) << diags.str();
     EXPECT_EQ(diags.items()[0].loc.file, "self.fxh");
     EXPECT_EQ(diags.items()[0].loc.line, 2);

@@ -184,7 +184,9 @@ TEST(Batching, TheDriverHasNoWarningOnTheBatchedVariant) {
         << variant->pass.vertex.glsl;
     fx::DiagnosticList diagnostics;
     ASSERT_TRUE(GpuProgram::create(variant->pass, diagnostics)) << diagnostics.str();
-    EXPECT_EQ(shadowfx::test::countDiagnostics(diagnostics, fx::DiagId::DriverShaderLog), 0)
+    EXPECT_EQ(shadowfx::test::countDiagnostics(diagnostics, fx::DiagId::DriverShaderLog) +
+                  shadowfx::test::countDiagnostics(diagnostics, fx::DiagId::DriverLinkLog),
+              0)
         << diagnostics.str();
 }
 

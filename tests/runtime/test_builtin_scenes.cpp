@@ -195,7 +195,7 @@ TEST(BuiltinScenes, MissingAssetNamesItsPackage) {
     fx::DiagnosticList diagnostics;
     EXPECT_FALSE(importMesh("/usr/share/glmark2/models/no-such-model.obj", {}, diagnostics));
     ASSERT_EQ(diagnostics.items().size(), 1u);
-    EXPECT_EQ(diagnostics.items()[0].id, fx::DiagId::MeshFileNotFound);
+    EXPECT_EQ(diagnostics.items()[0].id, fx::DiagId::MeshFileNotInstalled);
     EXPECT_NE(diagnostics.items()[0].message.find("no-such-model.obj"), std::string::npos);
     EXPECT_NE(diagnostics.items()[0].message.find("glmark2-data"), std::string::npos);
 }

@@ -301,7 +301,7 @@ TEST_F(SceneFileTest, MissingFilesAreNamed) {
     EXPECT_FALSE(loadSceneFile(
         write("asset.json", R"({"objects": [{"mesh": {"file": "/usr/share/assimp/models/OBJ/gone.obj"}}]})"),
         missingAsset));
-    EXPECT_TRUE(hasDiagnostic(missingAsset, fx::DiagId::MeshFileNotFound, "assimp-testmodels"));
+    EXPECT_TRUE(hasDiagnostic(missingAsset, fx::DiagId::MeshFileNotInstalled, "assimp-testmodels"));
 
     // A file assimp cannot read: an import error, no crash.
     fx::DiagnosticList unreadable;

@@ -16,15 +16,22 @@ FX_DIAGNOSTIC(IncludeTrailingText, Warning, "text after the include file name is
 FX_DIAGNOSTIC(UndefinedConditionCall, Warning,
               "'{0}' is not a function-like macro here: its call in this condition reads as 0")
 FX_DIAGNOSTIC(SourceTooLarge, Error, "source exceeds {0} bytes")
-FX_DIAGNOSTIC(IncludeFailed, Error, "cannot include '{0}': {1}")
 FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
 // Attached to a diagnostic at a macro's use (Diagnostic::notes), at the macro's #define.
 FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here")
 FX_DIAGNOSTIC(TooManyTokens, Error, "effect too large: more than {0} tokens after preprocessing")
+// An include the include handler refused, one id per reason ({0}: the name as written).
+FX_DIAGNOSTIC(IncludeFileNameEmpty, Error, "cannot include '{0}': empty file name")
+FX_DIAGNOSTIC(IncludeDepthExceeded, Error, "cannot include '{0}': include depth exceeds {1}")
+FX_DIAGNOSTIC(IncludeRecursive, Error,
+              "cannot include '{0}': include depth exceeds {1} (recursive include of '{2}')")
+FX_DIAGNOSTIC(IncludeSourcesTooLarge, Error, "cannot include '{0}': sources exceed {1} bytes in total")
 
 // [SECTION] Effect syntax
+// {0}: what the grammar expects there, a token, a list of tokens ("',' or '}'") or a syntactic category
+// ("an expression", "a type"): one message, the expected symbol named as a parser names it.
 FX_DIAGNOSTIC(UnexpectedToken, Error, "expected {0}, found '{1}'")
 // At the end of the line whose statement lacks its ';' (the parser goes on as if it were there).
 FX_DIAGNOSTIC(MissingSemicolon, Error, "expected ';' after '{0}'")
@@ -34,9 +41,10 @@ FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
 FX_DIAGNOSTIC(Redefinition, Error, "redefinition of '{0}'")
 FX_DIAGNOSTIC(UnknownState, Error, "unknown state '{0}'")
 FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (expected one of: {2})")
-// A technique the compiler leaves out while another runs; {1}: the message of the first error compiling
-// it, which carries its own id where every technique is left out and the errors are reported instead.
-FX_DIAGNOSTIC(TechniqueRefused, Warning, "technique '{0}' is left out: {1}")
+// A technique the compiler leaves out while another runs. Its first error follows as a note of this warning,
+// with that error's own id (where every technique is left out the errors are reported as errors instead).
+FX_DIAGNOSTIC(TechniqueRefused, Warning,
+              "technique '{0}' is left out: it does not compile (its first error follows)")
 // fxc's rules for annotations and structs, which glslang's HLSL front end does not enforce.
 FX_DIAGNOSTIC(AnnotationNamesAnnotation, Error,
               "annotation '{0}' is initialized from annotation '{1}': an annotation's value must be a "
@@ -165,6 +173,17 @@ FX_DIAGNOSTIC(
     AllTechniquesRefusedDynamicLinkage, Error,
     "every technique of the effect is left out (the first: '{0}', dynamic shader linkage "
     "(BindInterfaces) is not supported: GLSL has no interfaces to bind at run time); nothing can run")
+FX_DIAGNOSTIC(PassOutsideTechnique, Error,
+              "expected a declaration ('pass' belongs inside a technique), found 'pass'")
+// Constant sizes and indices out of range, one id per message ({0}: the expression as written).
+FX_DIAGNOSTIC(MaxVertexCountInvalid, Error, "expected a vertex count 1..1024, found '{0}'")
+FX_DIAGNOSTIC(PatchSizeInvalid, Error, "expected a control point count 1..32, found '{0}'")
+FX_DIAGNOSTIC(VectorDimensionInvalid, Error, "expected a dimension 1..4, found '{0}'")
+FX_DIAGNOSTIC(ArraySizeNotConstant, Error, "expected a constant array size, found '{0}'")
+FX_DIAGNOSTIC(ArraySizeNotWhole, Error, "expected a whole array size, found '{0}'")
+FX_DIAGNOSTIC(StateIndexInvalid, Error, "expected a constant index 0..15, found '{0}'")
+FX_DIAGNOSTIC(RenderTargetIndexInvalid, Error, "expected a render-target index 0..7, found '{0}'")
+FX_DIAGNOSTIC(StateTakesNoIndex, Error, "expected a state without an index, found '{0}'")
 
 // [SECTION] SAS scripts
 FX_DIAGNOSTIC(UnknownScriptCommand, Error, "unknown script command '{0}'")
@@ -236,10 +255,12 @@ FX_DIAGNOSTIC(RenderPortCascadeOutOfRange, Error,
 // [SECTION] Compiling passes
 FX_DIAGNOSTIC(MissingEntryPoint, Error, "entry point '{0}' not found")
 FX_DIAGNOSTIC(UnsupportedProfile, Error, "unsupported shader profile '{0}'")
-// glslang's own HLSL error and warning text.
+// glslang's own HLSL error and warning text, at the user's line.
 FX_DIAGNOSTIC(HlslError, Error, "{0}")
 FX_DIAGNOSTIC(HlslWarning, Warning, "{0}")
-FX_DIAGNOSTIC(CrossCompileError, Error, "SPIR-V to GLSL: {0}")
+// {0}: the stage, {1}: the entry point, {2}: the profile, {3}: SPIRV-Cross's message.
+FX_DIAGNOSTIC(CrossCompileError, Error,
+              "SPIR-V to GLSL: the {0} shader '{1}' ({2}) cannot be written as GLSL (SPIRV-Cross: {3})")
 FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this shader ({0})")
 FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
               "the HLSL compiler did not finish this shader within {0} ms and was stopped")
@@ -344,7 +365,7 @@ FX_DIAGNOSTIC(StreamOutEmpty, Error, "stream output with an empty declaration ca
 FX_DIAGNOSTIC(
     StreamOutPartialOutput, Error,
     "stream-output entry '{0}' captures part of an output; GL captures whole outputs ({1} components "
-    "here{2})")
+    "here)")
 FX_DIAGNOSTIC(
     StreamOutOtherVertexShader, Error,
     "ConstructGSWithSO names vertex shader '{0}' but the pass sets '{1}'; the pass's vertex shader is "
@@ -454,6 +475,21 @@ FX_DIAGNOSTIC(StreamOutOutputMissing, Error,
 // {3}: the output's component count and the word, "1 component" or "3 components".
 FX_DIAGNOSTIC(StreamOutMaskBeyondOutput, Error,
               "invalid stream-output declaration entry '{0}': output '{1}' of '{2}' has {3}")
+// glslang's error in the code shadowfx generated around an entry point ({1}), not in the user's.
+FX_DIAGNOSTIC(HlslErrorInGeneratedCode, Error, "{0} (in the code generated for '{1}')")
+// SPIRV-Cross's "Cannot find mapping for combined sampler", said in the effect's terms (as
+// CrossCompileError).
+FX_DIAGNOSTIC(
+    CrossCompileCombinedSampler, Error,
+    "SPIR-V to GLSL: a texture object's Sample or Gather method is given a D3D9 sampler (sampler2D, "
+    "samplerCUBE, or a sampler the code also reads with tex2D and its kin), where it takes a SamplerState; "
+    "the {0} shader '{1}' ({2}) cannot be written as GLSL (SPIRV-Cross: {3})")
+FX_DIAGNOSTIC(StreamOutPartialPosition, Error,
+              "stream-output entry '{0}' captures part of an output; GL captures whole outputs (4 components "
+              "here, the position)")
+FX_DIAGNOSTIC(StreamOutPartialFloat4Varying, Error,
+              "stream-output entry '{0}' captures part of an output; GL captures whole outputs (4 components "
+              "here, a float4 varying)")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
@@ -466,12 +502,15 @@ FX_DIAGNOSTIC(SampleCountReduced, Warning,
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
 FX_DIAGNOSTIC(NoTechniques, Error, "the file has no techniques")
 FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
-FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: {0}")
-FX_DIAGNOSTIC(GlError, Error, "OpenGL: {0}")
+// {1}: the GL driver's link log.
+FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: pass '{0}': {1}")
+// The GL driver's KHR_debug message.
 FX_DIAGNOSTIC(GlDebugMessage, Note, "OpenGL: {0}")
 // What the GL driver said, compiling or linking a program that worked, about the GLSL shadowfx generated:
 // its line numbers are the generated GLSL's (`shadowfx compile` prints it), not the effect's.
-FX_DIAGNOSTIC(DriverShaderLog, Note, "the GL driver on the generated GLSL of {0}: {1}")
+// {0}: the stage, {1}: the entry point, {2}: the pass, {3}: a line of the driver's log.
+FX_DIAGNOSTIC(DriverShaderLog, Note,
+              "the GL driver on the generated GLSL of {0} shader '{1}' of pass '{2}': {3}")
 FX_DIAGNOSTIC(UnboundSemantic, Warning,
               "parameter '{0}' has semantic '{1}', which shadowfx does not bind: it keeps its default value "
               "(shadowfx info lists the semantics shadowfx binds)")
@@ -547,10 +586,22 @@ FX_DIAGNOSTIC(VolumeDepthOutOfRange, Error, "invalid render-target size: a volum
 // {1}: the image's width, width x height or width x height x depth.
 FX_DIAGNOSTIC(ImageSizeOutOfRange, Error, "invalid render-target size: {0} is {1}")
 
+// A frame that could not run on GL.
+// {1}: the framebuffer's reason (a target of the wrong format, an incomplete framebuffer).
+FX_DIAGNOSTIC(PassTargetsUnbindable, Error, "OpenGL: cannot bind the targets of pass '{0}': {1}")
+FX_DIAGNOSTIC(ScriptTargetsUnbindable, Error, "OpenGL: cannot render to the script's targets: {0}")
+FX_DIAGNOSTIC(GlErrorDuringFrame, Error, "OpenGL: GL error during the frame")
+// As DriverShaderLog, for the pixel stage shadowfx generated for a fixed-function pass ({0}), {1}: the log
+// line.
+FX_DIAGNOSTIC(DriverFixedFunctionLog, Note,
+              "the GL driver on the generated GLSL of the fixed-function pixel stage of pass '{0}': {1}")
+// As DriverShaderLog, for what the driver said linking the program of pass {0}.
+FX_DIAGNOSTIC(DriverLinkLog, Note, "the GL driver on the generated GLSL of pass '{0}', linking: {1}")
+
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
 FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")
-FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'{1}")
+FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'")
 // {1}: assimp's reason.
 FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
 FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
@@ -645,6 +696,11 @@ FX_DIAGNOSTIC(HostLightNotInScene, Error, "light: the scene has no light named '
 FX_DIAGNOSTIC(HostTargetUnbindable, Error, "target: {0}")
 // A mesh file assimp read that holds nothing to draw (MeshImporter.cpp).
 FX_DIAGNOSTIC(MeshWithoutTriangles, Error, "cannot import mesh '{0}': the file has no triangles")
+// A mesh of a Debian package ({1}) that is not installed.
+FX_DIAGNOSTIC(
+    MeshFileNotInstalled, Error,
+    "cannot open mesh file '{0}' (installed by the Debian package '{1}': apt-get install {1}, or run "
+    "scripts/install-deps.sh)")
 
 // [SECTION] Compiled effect files (fx/CompiledEffectFile.h, docs/compiled-effect.md)
 FX_DIAGNOSTIC(
@@ -667,11 +723,89 @@ FX_DIAGNOSTIC(CompiledEffectTrailingBytes, Error,
               "the compiled effect file is corrupt: {0} bytes follow the content")
 FX_DIAGNOSTIC(CompiledEffectHashMismatch, Error,
               "the compiled effect file is corrupt: its content does not match its hash")
-// {0}: what the reader could not decode (fx/src/BinaryArchive.h), {1} where.
-FX_DIAGNOSTIC(CompiledEffectUndecodable, Error,
-              "the compiled effect file is corrupt: {0} at byte {1} of the content")
-// {0}: which of the checks the runtime relies on failed (a reference pointing nowhere, a size out of range).
-FX_DIAGNOSTIC(CompiledEffectInconsistent, Error, "the compiled effect file is corrupt: {0}")
+// What the reader could not decode (fx/src/BinaryArchive.h), one id per reason; the last argument: the byte
+// of the content where the read stood.
+FX_DIAGNOSTIC(
+    CompiledEffectFlagInvalid, Error,
+    "the compiled effect file is corrupt: a flag that is neither 0 nor 1 at byte {0} of the content")
+FX_DIAGNOSTIC(
+    CompiledEffectEnumeratorUnknown, Error,
+    "the compiled effect file is corrupt: an enumerator this shadowfx does not know ('{0}') at byte "
+    "{1} of the content")
+FX_DIAGNOSTIC(CompiledEffectEnumeratorOutOfRange, Error,
+              "the compiled effect file is corrupt: an enumerator out of range ({0}) at byte {1} of the "
+              "content")
+// {0}: the kind of value being read ("a flag", "an integer", "a list").
+FX_DIAGNOSTIC(CompiledEffectContentEndsInValue, Error,
+              "the compiled effect file is corrupt: the content ends inside {0} at byte {1} of the content")
+FX_DIAGNOSTIC(CompiledEffectLengthBeyondContent, Error,
+              "the compiled effect file is corrupt: the length of {0} ({1}) exceeds the bytes left at byte "
+              "{2} of the content")
+FX_DIAGNOSTIC(CompiledEffectTypeTooLarge, Error,
+              "the compiled effect file is corrupt: a type with more than 4 rows or columns at byte {0} of "
+              "the content")
+FX_DIAGNOSTIC(CompiledEffectArrayDimensionOutOfRange, Error,
+              "the compiled effect file is corrupt: an array dimension out of range at byte {0} of the "
+              "content")
+FX_DIAGNOSTIC(CompiledEffectArrayTooLarge, Error,
+              "the compiled effect file is corrupt: an array of more than 2^20 elements at byte {0} of the "
+              "content")
+FX_DIAGNOSTIC(CompiledEffectContentLeftOver, Error,
+              "the compiled effect file is corrupt: content left over at byte {0} of the content")
+// Checks the runtime relies on (a reference pointing nowhere, a size out of range), one id per check.
+FX_DIAGNOSTIC(CompiledEffectInitialValueCount, Error,
+              "the compiled effect file is corrupt: initial values and parameters differ in number")
+FX_DIAGNOSTIC(CompiledEffectStructOrder, Error,
+              "the compiled effect file is corrupt: struct '{0}' holds a struct not listed before it")
+FX_DIAGNOSTIC(CompiledEffectParameterTooLarge, Error,
+              "the compiled effect file is corrupt: parameter '{0}' holds more than 2^24 numbers")
+FX_DIAGNOSTIC(CompiledEffectTextureWithoutParameter, Error,
+              "the compiled effect file is corrupt: a texture names no parameter")
+FX_DIAGNOSTIC(CompiledEffectSamplerWithoutParameter, Error,
+              "the compiled effect file is corrupt: a sampler names no parameter")
+FX_DIAGNOSTIC(CompiledEffectScriptPassOutOfRange, Error,
+              "the compiled effect file is corrupt: a script names a pass out of range")
+FX_DIAGNOSTIC(CompiledEffectFillArgumentMissing, Error,
+              "the compiled effect file is corrupt: a texture function's fill pass: no fill argument")
+FX_DIAGNOSTIC(CompiledEffectFillSizeOutOfRange, Error,
+              "the compiled effect file is corrupt: a texture function's texture size out of range")
+// {0}: the pass ("fill F" for the pass that fills a texture with function F).
+FX_DIAGNOSTIC(CompiledEffectPreshaderConstantOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (a constant "
+              "out of range)")
+FX_DIAGNOSTIC(CompiledEffectPreshaderErrorOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (an error "
+              "out of range)")
+FX_DIAGNOSTIC(CompiledEffectPreshaderStackUnderflow, Error,
+              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (an "
+              "instruction takes more operands than the stack holds)")
+FX_DIAGNOSTIC(
+    CompiledEffectPreshaderResultCount, Error,
+    "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (the program "
+    "leaves other than one value)")
+FX_DIAGNOSTIC(CompiledEffectPreshaderInputOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (an input "
+              "slot out of range)")
+FX_DIAGNOSTIC(CompiledEffectUniformWithoutSource, Error,
+              "the compiled effect file is corrupt: pass '{0}': a uniform block member names no parameter or "
+              "argument")
+FX_DIAGNOSTIC(CompiledEffectSamplerBindingWithoutParameter, Error,
+              "the compiled effect file is corrupt: pass '{0}': a sampler binding names no parameter")
+FX_DIAGNOSTIC(CompiledEffectSamplerBindingWithoutTexture, Error,
+              "the compiled effect file is corrupt: pass '{0}': a sampler binding names no texture parameter")
+FX_DIAGNOSTIC(CompiledEffectSamplerBindingWithoutPassSampler, Error,
+              "the compiled effect file is corrupt: pass '{0}': a sampler binding names no pass sampler "
+              "state")
+FX_DIAGNOSTIC(CompiledEffectStorageBufferWithoutParameter, Error,
+              "the compiled effect file is corrupt: pass '{0}': a storage buffer names no parameter")
+FX_DIAGNOSTIC(CompiledEffectStreamOutSlotInvalid, Error,
+              "the compiled effect file is corrupt: pass '{0}': a stream-output element names no slot")
+FX_DIAGNOSTIC(CompiledEffectStreamOutStrideOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a stream-output stride out of range")
+FX_DIAGNOSTIC(CompiledEffectStreamOutCapacityOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a stream-output capacity out of range")
+FX_DIAGNOSTIC(CompiledEffectDrawAutoOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': DrawAuto names a pass out of range")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

@@ -158,8 +158,9 @@ public:
     const Value& constant() const { return mConstants.front(); }
     bool empty() const { return mCode.empty(); }
     // Whether running the program over `slotCount` slots stays within its constants, errors, slots and
-    // stack (what a program read from a file must show before it runs); "" if so, else what is wrong.
-    std::string malformation(size_t slotCount) const;
+    // stack (what a program read from a file must show before it runs); none if so, else the diagnostic
+    // that says what is wrong (its argument: the pass that holds the program).
+    std::optional<DiagId> malformation(size_t slotCount) const;
 
 private:
     friend class PreshaderCompiler;  // fx/src/Preshader.cpp

@@ -55,12 +55,10 @@ std::optional<Mesh> importMesh(const std::string& path, const MeshImportOptions&
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
         const std::string_view package = debianPackageForAsset(path);
-        std::string hint;
-        if (!package.empty()) {
-            hint = " (installed by the Debian package '" + std::string(package) + "': apt-get install " +
-                   std::string(package) + ", or run scripts/install-deps.sh)";
-        }
-        diagnostics.report(fx::DiagId::MeshFileNotFound, where, {path, hint});
+        if (package.empty())
+            diagnostics.report(fx::DiagId::MeshFileNotFound, where, {path});
+        else
+            diagnostics.report(fx::DiagId::MeshFileNotInstalled, where, {path, std::string(package)});
         return std::nullopt;
     }
 

@@ -95,17 +95,21 @@ std::string programInfoLog(GLuint program) {
 }
 
 // What the driver says about a shader that compiled or a program that linked (Mesa's "0:37(42): warning:
-// `x' used uninitialized"): one note per line at the pass, naming the shader, since its line numbers are
-// the generated GLSL's. The CLI prints them on request only (--driver-log).
-void reportDriverLog(const std::string& log, const std::string& what, const fx::CompiledPass& pass,
-                     fx::DiagnosticSink& diagnostics) {
+// `x' used uninitialized"): one note per line at the pass, naming the shader (`id` and `args`, the line
+// last), since its line numbers are the generated GLSL's. The CLI prints them on request only (--driver-log).
+void reportDriverLog(const std::string& log, fx::DiagId id, std::vector<std::string> args,
+                     const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics) {
+    args.emplace_back();
     size_t start = 0;
     while (start < log.size()) {
         size_t end = log.find('\n', start);
         if (end == std::string::npos) end = log.size();
         std::string line = log.substr(start, end - start);
         while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-        if (!line.empty()) diagnostics.report(fx::DiagId::DriverShaderLog, pass.loc, {what, line});
+        if (!line.empty()) {
+            args.back() = line;
+            diagnostics.report(id, pass.loc, args);
+        }
         start = end + 1;
     }
 }
@@ -138,10 +142,12 @@ GLuint compileShader(GLenum kind, const std::string& source, const fx::StageProg
         gl::DeleteShader(shader);
         return 0;
     }
-    const std::string what = stage ? std::string(fx::shaderStageName(stage->stage)) + " shader '" +
-                                         stage->entryPoint + "' of pass '" + pass.name + "'"
-                                   : "the fixed-function pixel stage of pass '" + pass.name + "'";
-    reportDriverLog(log, what, pass, diagnostics);
+    if (stage)
+        reportDriverLog(log, fx::DiagId::DriverShaderLog,
+                        {std::string(fx::shaderStageName(stage->stage)), stage->entryPoint, pass.name}, pass,
+                        diagnostics);
+    else
+        reportDriverLog(log, fx::DiagId::DriverFixedFunctionLog, {pass.name}, pass, diagnostics);
     return shader;
 }
 
@@ -211,7 +217,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
             gl::DeleteProgram(program->mProgram);
             program->mProgram = 0;
         } else {
-            reportDriverLog(programInfoLog(program->mProgram), "pass '" + pass.name + "', linking", pass,
+            reportDriverLog(programInfoLog(program->mProgram), fx::DiagId::DriverLinkLog, {pass.name}, pass,
                             diagnostics);
         }
     }
@@ -221,7 +227,7 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     if (tcs) gl::DeleteShader(tcs);
     if (tes) gl::DeleteShader(tes);
     if (!program->mProgram) {
-        diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
+        diagnostics.report(fx::DiagId::LinkError, pass.loc, {pass.name, log});
         return nullptr;
     }
 
@@ -278,7 +284,7 @@ std::unique_ptr<GpuProgram> GpuProgram::createCompute(const fx::CompiledPass& pa
         }
     }
     if (!program->mProgram) {
-        diagnostics.report(fx::DiagId::LinkError, pass.loc, {"pass '" + pass.name + "': " + log});
+        diagnostics.report(fx::DiagId::LinkError, pass.loc, {pass.name, log});
         return nullptr;
     }
     program->mCompute = true;

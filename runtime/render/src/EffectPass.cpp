@@ -143,8 +143,7 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     }
     std::string error;
     if (!bindPass(r, mTechnique, mPass, binding, sink, error)) {
-        sink.report(fx::DiagId::GlError, pass.loc,
-                    {"cannot bind the targets of pass '" + pass.name + "': " + error});
+        sink.report(fx::DiagId::PassTargetsUnbindable, pass.loc, {pass.name, error});
         return false;
     }
     // render(Scene) may no longer reuse what it left in the targets (leave-out's cached passes).

@@ -228,8 +228,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         const bool ran = mHostFrame->render(*this, *mImpl, scene, options, diagnostics);
         const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
         if (!clean)
-            diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0},
-                               {"GL error during the frame"});
+            diagnostics.report(fx::DiagId::GlErrorDuringFrame, fx::SourceLoc{mImpl->effect().path, 0, 0});
         return ran && clean;
     }
 
@@ -343,9 +342,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     FramebufferCache::bindDefault();
     const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
     setDebugSink({});
-    if (!clean)
-        diagnostics.report(fx::DiagId::GlError, fx::SourceLoc{mImpl->effect().path, 0, 0},
-                           {"GL error during the frame"});
+    if (!clean) diagnostics.report(fx::DiagId::GlErrorDuringFrame, fx::SourceLoc{mImpl->effect().path, 0, 0});
     const bool ok = ran && !executor.failed() && clean;
     // What the targets hold is known only if the frame ran as planned; otherwise forget it all.
     if (ok && executor.followedPlan()) {

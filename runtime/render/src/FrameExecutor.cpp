@@ -203,7 +203,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
         std::string error;
         if (!bindPass(mResources, mTechnique, passIndex, binding, mDiagnostics, error)) {
-            fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
+            fail(fx::DiagId::ScriptTargetsUnbindable, {error});
             return;
         }
     }
@@ -440,7 +440,7 @@ bool FrameExecutor::bindTargets(bool usesDepth) {
     std::string error;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     if (!bindPassTargets(mResources, targets, error)) {
-        fail(fx::DiagId::GlError, {"cannot render to the script's targets: " + error});
+        fail(fx::DiagId::ScriptTargetsUnbindable, {error});
         return false;
     }
     return true;

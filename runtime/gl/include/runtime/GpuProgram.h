@@ -58,7 +58,7 @@ public:
 
     // Compiles and links the pass's GLSL. Returns nullptr and reports LinkError (with the driver's log)
     // at the pass's location on failure; on success, what the driver still said (warnings) is reported
-    // there as DriverShaderLog notes.
+    // there as DriverShaderLog, DriverFixedFunctionLog and DriverLinkLog notes.
     static std::unique_ptr<GpuProgram> create(const fx::CompiledPass& pass, fx::DiagnosticSink& diagnostics,
                                               Stages stages = Stages::VertexAndPixel);
     // The program of a pass's compute stage alone: what create() makes for a pass without graphics
