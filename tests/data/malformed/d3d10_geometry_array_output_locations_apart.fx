@@ -6,5 +6,5 @@ V VS(float4 p : POSITION) { V v; v.pos = p; return v; }
 [maxvertexcount(3)] void GS(triangle V input[3], inout TriangleStream<G> stream) {
     for (int i = 0; i < 3; ++i) { G g = (G)0; g.pos = input[i].pos; stream.Append(g); }
 }
-float4 PS(G g) : SV_Target { return g.points[11]; }
+float4 PS(float4 pos : SV_Position) : SV_Target { return 1; }
 technique10 T { pass p0 { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, GS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
