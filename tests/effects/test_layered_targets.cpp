@@ -209,7 +209,7 @@ TEST(LayeredTargets, HostViewportsAreCheckedAtTheirLine) {
 // primitive 1: the pixel shader colours them red and green by SV_PrimitiveID.
 TEST(LayeredTargets, ThePixelShaderTellsPrimitivesApartBySvPrimitiveId) {
     const runtime::FrameImage frame = hostFrame(
-        R"({"frame": [{"technique": "PrimitiveColours", "draw": "quad", "clear": {"color": [0, 0, 0, 1]}}]})");
+        R"({"frame": [{"technique": "PrimitiveColours", "draw": "quad", "clear": {"color": [0, 0, 0, 1], "depth": 1}}]})");
     EXPECT_TRUE(rectIs(frame, kWidth - 8, 0, kWidth, 2, {255, 0, 0}));
     EXPECT_TRUE(rectIs(frame, 0, kHeight - 2, 8, kHeight, {0, 255, 0}));
 }
@@ -218,7 +218,7 @@ TEST(LayeredTargets, ThePixelShaderTellsPrimitivesApartBySvPrimitiveId) {
 // wrote: the colours of the test above, swapped.
 TEST(LayeredTargets, ThePixelShaderReadsTheSvPrimitiveIdTheGeometryShaderWrote) {
     const runtime::FrameImage frame = hostFrame(
-        R"({"frame": [{"technique": "GeometryPrimitiveIds", "draw": "quad", "clear": {"color": [0, 0, 0, 1]}}]})");
+        R"({"frame": [{"technique": "GeometryPrimitiveIds", "draw": "quad", "clear": {"color": [0, 0, 0, 1], "depth": 1}}]})");
     EXPECT_TRUE(rectIs(frame, kWidth - 8, 0, kWidth, 2, {0, 255, 0}));
     EXPECT_TRUE(rectIs(frame, 0, kHeight - 2, 8, kHeight, {255, 0, 0}));
 }

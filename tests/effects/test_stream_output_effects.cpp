@@ -111,17 +111,19 @@ TEST(StreamOutputEffects, AStreamOutputPassCapturesTheVerticesItsGeometryShaderA
     EXPECT_EQ(ages, (std::vector<float>{0, 1, 2}));
 }
 
-// A stream-output pass with a NULL pixel shader rasterizes nothing: its full-screen quad at depth 0.1,
-// written with depth test ALWAYS, would hide the white quad a later pass draws at depth 0.5 with LESS. The
-// same pass without stream output is a depth-only pass, as D3D10 draws one, and hides it: the control that
-// the quad would have been drawn.
+// A stream-output pass with a NULL pixel shader rasterizes nothing: its meshes at depth 0.1, written with
+// depth test ALWAYS, would hide the same meshes a later pass draws white at depth 0.5 with LESS. The same
+// pass drawn black without stream output hides them: the control that the meshes would have been drawn.
 TEST(StreamOutputEffects, ANullPixelShaderInAStreamOutputPassRasterizesNothing) {
     const std::string source = R"(
-struct QuadVertex { float4 Position : POSITION; };
+float4x4 Wvp : WorldViewProjection;
+struct MeshVertex { float3 Position : POSITION; };
 struct Near { float4 Position : SV_Position; };
-Near NearVS(QuadVertex v) { Near o; o.Position = float4(v.Position.xy, 0.1, 1); return o; }
-float4 FarVS(QuadVertex v) : SV_Position { return float4(v.Position.xy, 0.5, 1); }
+float4 AtDepth(MeshVertex v, float depth) { float4 p = mul(float4(v.Position, 1), Wvp); p.z = depth * p.w; return p; }
+Near NearVS(MeshVertex v) { Near o; o.Position = AtDepth(v, 0.1); return o; }
+float4 FarVS(MeshVertex v) : SV_Position { return AtDepth(v, 0.5); }
 float4 White() : SV_Target { return 1; }
+float4 Dark() : SV_Target { return float4(0, 0, 0, 1); }
 VertexShader NearShader = CompileShader(vs_4_0, NearVS());
 GeometryShader NearCapture = ConstructGSWithSO(NearShader, "SV_Position.xyzw");
 DepthStencilState WriteAlways { DepthEnable = TRUE; DepthWriteMask = ALL; DepthFunc = ALWAYS; };
@@ -130,19 +132,19 @@ RasterizerState NoCull { CullMode = NONE; };
 float4 Black = {0, 0, 0, 1};
 technique10 Captured < string Script = "Pass=Near; Pass=Far;"; >
 {
-    pass Near < string Script = "ClearSetColor=Black; ClearSetDepth=1.0; Clear=Color; Clear=Depth; Draw=Buffer;"; >
+    pass Near < string Script = "ClearSetColor=Black; ClearSetDepth=1.0; Clear=Color; Clear=Depth; Draw=Geometry;"; >
     { SetVertexShader(NearShader); SetGeometryShader(NearCapture); SetPixelShader(NULL);
       SetDepthStencilState(WriteAlways, 0); SetRasterizerState(NoCull); }
-    pass Far < string Script = "Draw=Buffer;"; >
+    pass Far < string Script = "Draw=Geometry;"; >
     { SetVertexShader(CompileShader(vs_4_0, FarVS())); SetGeometryShader(NULL);
       SetPixelShader(CompileShader(ps_4_0, White())); SetDepthStencilState(TestLess, 0); SetRasterizerState(NoCull); }
 }
-technique10 DepthOnly < string Script = "Pass=Near; Pass=Far;"; >
+technique10 Rasterized < string Script = "Pass=Near; Pass=Far;"; >
 {
-    pass Near < string Script = "ClearSetColor=Black; ClearSetDepth=1.0; Clear=Color; Clear=Depth; Draw=Buffer;"; >
-    { SetVertexShader(NearShader); SetGeometryShader(NULL); SetPixelShader(NULL);
+    pass Near < string Script = "ClearSetColor=Black; ClearSetDepth=1.0; Clear=Color; Clear=Depth; Draw=Geometry;"; >
+    { SetVertexShader(NearShader); SetGeometryShader(NULL); SetPixelShader(CompileShader(ps_4_0, Dark()));
       SetDepthStencilState(WriteAlways, 0); SetRasterizerState(NoCull); }
-    pass Far < string Script = "Draw=Buffer;"; >
+    pass Far < string Script = "Draw=Geometry;"; >
     { SetVertexShader(CompileShader(vs_4_0, FarVS())); SetGeometryShader(NULL);
       SetPixelShader(CompileShader(ps_4_0, White())); SetDepthStencilState(TestLess, 0); SetRasterizerState(NoCull); }
 }
@@ -150,8 +152,11 @@ technique10 DepthOnly < string Script = "Pass=Near; Pass=Far;"; >
     auto renderer = loadEffect(source, false);
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "Captured"));
-    EXPECT_EQ(countPixelsOfColour(renderer->readFrame(), kWidth, kHeight, 255, 255, 255), kWidth * kHeight);
-    ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "DepthOnly"));
+    const runtime::FrameImage captured = renderer->readFrame();
+    const int white = countPixelsOfColour(captured, kWidth, kHeight, 255, 255, 255);
+    EXPECT_GT(white, kWidth * kHeight / 10);  // the boxes
+    EXPECT_EQ(white + countPixelsOfColour(captured, kWidth, kHeight, 0, 0, 0), kWidth * kHeight);
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "Rasterized"));
     EXPECT_EQ(countPixelsOfColour(renderer->readFrame(), kWidth, kHeight, 0, 0, 0), kWidth * kHeight);
 }
 
