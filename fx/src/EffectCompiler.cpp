@@ -5,6 +5,7 @@
 // [SECTION] Passes and techniques
 
 #include "Compiler.h"
+#include "ConstantFolding.h"
 #include "FixedFunctionPass.h"
 #include "MacroNoteSink.h"
 #include "PointSprites.h"
@@ -148,6 +149,22 @@ void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
 
 namespace {
 
+// The first index in a state's value that is a constant outside its parameter array's bounds
+// (`AlphaRef = Refs[3];` of `int Refs[2]`): fxc refuses it when it compiles the effect, where evaluating the
+// value would fail only when the pass is first applied.
+const Expr* constantIndexOutOfBounds(const Effect& effect, const Expr& e) {
+    if (e.kind == Expr::Kind::Index && e.args.size() == 2 && e.args[0].kind == Expr::Kind::Identifier) {
+        const Parameter* array = effect.findParameter(e.args[0].text);
+        double index = 0;
+        if (array && !array->type.arrayDims.empty() && foldConstant(effect, e.args[1], index) &&
+            !(index >= 0 && index < array->type.arrayDims[0]))
+            return &e;
+    }
+    for (const Expr& arg : e.args)
+        if (const Expr* found = constantIndexOutOfBounds(effect, arg)) return found;
+    return nullptr;
+}
+
 // A pass whose blend factors name the pixel shader's second output (SRC1_COLOR .. INV_SRC1_ALPHA).
 bool blendsDualSource(const CompiledPass& pass) {
     return std::any_of(pass.states.begin(), pass.states.end(), [](const RenderStateSetting& s) {
@@ -280,6 +297,12 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         if (*id == RenderStateId::PixelShader) {
             if (const Expr* compile = shaderExpr(s))
                 compileStage(*compile, ShaderStage::Fragment, pass, slot);
+            continue;
+        }
+        if (const Expr* index = constantIndexOutOfBounds(mEffect, s.value)) {
+            const Parameter* array = mEffect.findParameter(index->args[0].text);
+            error(DiagId::StateObjectIndexOutOfBounds, index->args[1].loc,
+                  {index->args[1].str(), array->name, std::to_string(array->type.arrayDims[0])});
             continue;
         }
         const StateInfo& info = renderStateInfo(*id);

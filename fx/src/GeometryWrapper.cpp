@@ -48,8 +48,9 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
             // `float3 Normals[6] : SIXNORMS` is SIXNORMS0..5, as fxc numbered them. The array keeps its
             // shape (the user's code indexes it) at its first element's location; glslang splits it into
             // one output per element at that location, which the GLSL step moves to the following ones
-            // (SpirvToGlsl.cpp). So the elements' semantics must take consecutive locations (an effect whose
-            // other names sort between them, SIXNORMS10 beside SIXNORMS1, has them apart).
+            // (SpirvToGlsl.cpp). So the elements' semantics must take consecutive locations: an array of
+            // more than ten free-named elements has them apart (SIXNORMS10 sorts before SIXNORMS2), as has
+            // one whose names run past the eight locations 24..31 into the D3D9 table's free ones.
             const int count = std::max(m.type.arrayDims[0], 1);
             // A pair, not a structured binding: clang 14 (the sanitized build's) cannot capture those.
             const std::pair<std::string, int> split = splitSemantic(semantic);
@@ -62,7 +63,9 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
                 return fail(DiagId::GeometryOutputSemanticUnsupported, m.loc, {m.semantic});
             for (int k = 1; k < count; ++k)
                 if (locationOf(k) != *start + k)
-                    return fail(DiagId::GeometryOutputSemanticUnsupported, m.loc, {m.semantic});
+                    return fail(DiagId::GeometryOutputArrayLocationsApart, m.loc,
+                                {m.name, split.first + std::to_string(split.second + k),
+                                 split.first + std::to_string(split.second + k - 1)});
             const bool integer = element.base != BaseType::Float && element.base != BaseType::Half;
             if (integer && m.interpolation.empty())
                 return fail(DiagId::GeometryIntegerOutputInterpolated, m.loc, {m.name});

@@ -137,6 +137,15 @@ bool checkHostFile(const HostFile& host, const fx::CompiledEffect& effect, fx::D
             for (const fx::CompiledPass& pass : technique->passes) found = found || pass.name == step.pass;
             if (!found) fail(step.loc, fx::DiagId::HostStepPassUnknown, {key, step.technique, step.pass});
         }
+        for (const HostStep::DispatchTerm& term : step.dispatch) {
+            if (term.parameter.empty()) continue;
+            const fx::ParameterInfo* info = findParameter(term.parameter);
+            if (!info)
+                fail(step.loc, fx::DiagId::HostParameterUnknown, {key + "/dispatch", term.parameter});
+            else if (!info->type.isNumeric())
+                fail(step.loc, fx::DiagId::HostParameterNotNumeric,
+                     {key + "/dispatch", term.parameter, info->type.hlslName()});
+        }
     }
     return ok;
 }

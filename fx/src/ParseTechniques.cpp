@@ -148,6 +148,27 @@ void Parser::parsePassState(Pass& pass) {
         parseSetCall(pass, name);
         return;
     }
+    // FX11's OMSetRenderTargets(rtv0, ..., dsv) binds views an application creates and sets
+    // (RenderTargetView and DepthStencilView variables, which nothing in an effect reads): the call sets
+    // nothing here, and its arguments must be such views or NULL, at most eight targets and a depth view.
+    if (name.text == "OMSetRenderTargets" && check("(")) {
+        advance();
+        for (int count = 0; !check(")"); ++count) {
+            if (count > 0) expect(",");
+            const Expr view = parseExpr();
+            const Parameter* p =
+                view.kind == Expr::Kind::Identifier ? mEffect.findParameter(view.text) : nullptr;
+            const bool isView = p && (p->type.base == BaseType::RenderTargetView ||
+                                      p->type.base == BaseType::DepthStencilView);
+            const bool isNull = view.kind == Expr::Kind::Identifier && equalsIgnoreCase(view.text, "NULL");
+            if ((!isView && !isNull) || count == 9)
+                error(DiagId::UnexpectedToken, view.loc,
+                      {"a RenderTargetView or DepthStencilView variable or NULL (at most nine)", view.str()});
+        }
+        advance();
+        expect(";");
+        return;
+    }
     if (accept("[")) {
         const Token& indexToken = peek();
         Expr index = parseExpr();

@@ -4,11 +4,13 @@
 // dispatch(); a RWTexture2D written by a compute pass and sampled by a pixel shader; a groupshared
 // reduction into a RWByteAddressBuffer; an AppendStructuredBuffer and a ConsumeStructuredBuffer view of it
 // whose counter persists between frames; RWTexture1D, RWTexture3D, RWTexture2DArray and RWBuffer read
-// through their views.
+// through their views; a host file's step dispatching a compute pass.
 #include "EffectHarness.h"
 
+#include <fx/EffectFile.h>
 #include <runtime/BuiltinScenes.h>
 #include <runtime/EffectPass.h>
+#include <runtime/HostFileReader.h>
 
 #include <gtest/gtest.h>
 
@@ -97,6 +99,52 @@ TEST(ComputeEffects, TheApplicationDispatchesAComputePassThroughThePassApi) {
         const auto [x1, y1] = particlePixel(index, 1);
         EXPECT_TRUE(isBlack(frame.pixel(x1, y1))) << "particle " << index;
     }
+}
+
+// The same particles driven by a host file, as an FX11 application drives them: a step applies the compute
+// pass and dispatches it, its group count from the parameter GroupCount, and a step draws; two frames put
+// the particles two steps up. Without the dispatch they would never be born (age 0 draws nothing).
+TEST(ComputeEffects, AHostFileStepDispatchesAComputePass) {
+    const std::string text = R"({
+  "frame": [{"technique": "Particles", "pass": "Advance", "dispatch": ["GroupCount", 1, 1]},
+            {"technique": "Particles", "pass": "Draw", "draw": "nothing", "clear": {"color": [0, 0, 0, 1]}},
+            {"technique": "Particles", "pass": "Draw", "draw": "quad"}]
+})";
+    fx::DiagnosticList diagnostics;
+    std::shared_ptr<const fx::HostFile> host = runtime::parseHostJson(text, "h.json", diagnostics);
+    ASSERT_TRUE(host) << diagnostics.str();
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_particles.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(renderer->setHostFile(host, diagnostics)) << diagnostics.str();
+    for (int frame = 1; frame <= 2; ++frame) ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    for (int index : {0, 7, 15}) {
+        const auto [x, y] = particlePixel(index, 2);
+        EXPECT_EQ(frame.pixel(x, y)[0], 255) << "particle " << index;
+        EXPECT_NEAR(frame.pixel(x, y)[1], 51, 1) << "particle " << index;
+    }
+}
+
+TEST(ComputeEffects, AHostFileDispatchIsCheckedAtItsLineAndAgainstTheEffect) {
+    const std::string text = R"({
+  "frame": [{"technique": "Particles", "pass": "Advance",
+             "dispatch": [1, 2, 3, 4]},
+            {"technique": "Particles", "pass": "Advance", "dispatch": ["NoSuchCount"]}]
+})";
+    fx::DiagnosticList diagnostics;
+    EXPECT_FALSE(runtime::parseHostJson(text, "h.json", diagnostics));
+    ASSERT_EQ(countDiagnostics(diagnostics, fx::DiagId::HostStepDispatchInvalid), 1) << diagnostics.str();
+    EXPECT_EQ(diagnostics.items()[0].loc.line, 3);
+    fx::DiagnosticList checked;
+    std::shared_ptr<const fx::HostFile> host = runtime::parseHostJson(
+        R"({"frame": [{"technique": "Particles", "dispatch": ["NoSuchCount"]}]})", "h.json", checked);
+    ASSERT_TRUE(host) << checked.str();
+    sharedContext();
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::loadEffectFile(sourcePath("tests/data/d3d10/compute_particles.fx"), {}, {}, checked);
+    ASSERT_TRUE(compiled) << checked.str();
+    EXPECT_FALSE(fx::checkHostFile(*host, *compiled, checked));
+    EXPECT_EQ(countDiagnostics(checked, fx::DiagId::HostParameterUnknown), 1) << checked.str();
 }
 
 // What a compute pass writes into a RWTexture2D, a pixel shader samples through a Texture2D view: the

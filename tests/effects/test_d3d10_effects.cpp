@@ -5,12 +5,11 @@
 // a quad, geometry shaders taking points, edges and triangles with adjacency, hull and domain shaders
 // whose tessellation factors, domain locations and patch constants show on pixels, a technique11 twin
 // rendering the same frame as its D3D9 technique, vertex inputs by input-layout names, more than eight
-// free-named varyings, a particle system through stream output and DrawAuto, per-target and
-// dual-source blending, and a multisample target above the driver's sample count.
+// free-named varyings, per-target and dual-source blending, and a multisample target above the driver's
+// sample count. Stream output: test_stream_output_effects.cpp.
 #include "VisibilityHarness.h"
 
 #include <runtime/BuiltinScenes.h>
-#include <runtime/GlApi.h>
 #include <runtime/Mesh.h>
 #include <runtime/ShadowMetrics.h>
 
@@ -904,94 +903,6 @@ technique10 T { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometry
     }
     EXPECT_GT(full, 1000u);  // ten varyings of 0.1 each summed to 1
     EXPECT_EQ(other, 0u);
-}
-
-// [SECTION] Stream output
-
-// Where tests/data/d3d10/stream_output_particles.fx draws the particle of age `age` (clip space, no camera).
-std::pair<int, int> particlePixel(int age, int width, int height) {
-    const float x = -0.8f + 0.15f * static_cast<float>(age), y = 0.8f - 0.15f * static_cast<float>(age);
-    return {static_cast<int>((x + 1) / 2 * static_cast<float>(width)),
-            static_cast<int>((1 - y) / 2 * static_cast<float>(height))};
-}
-
-// A particle system advancing through stream output: the SO pass draws what it captured the frame before
-// (the launcher seed on the first) and captures anew; the draw pass draws the capture (DrawAuto). Frame 1
-// shows the newborn particle alone, frame 10 ten of them along their path, coloured by age; every other
-// pixel keeps the clear colour (a blank or constant frame fails).
-TEST(D3d10Effects, AStreamOutputParticleSystemAdvancesFromFrameToFrame) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/stream_output_particles.fx"), true);
-    ASSERT_TRUE(renderer);
-    const runtime::Scene teapot = scene("teapot");  // not drawn: the particles are the vertices
-    const auto isBlack = [](const uint8_t* p) { return p[0] == 0 && p[1] == 0 && p[2] == 0; };
-    ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
-    const runtime::FrameImage first = renderer->readFrame();
-    const auto [x0, y0] = particlePixel(0, kWidth, kHeight);
-    EXPECT_EQ(first.pixel(x0, y0)[0], 255);
-    EXPECT_EQ(first.pixel(x0, y0)[1], 0);
-    int lit = 0;
-    for (size_t i = 0; i + 3 < first.rgba.size(); i += 4) lit += !isBlack(&first.rgba[i]);
-    EXPECT_GT(lit, 40);  // one quad of about 11x8 pixels
-    EXPECT_LT(lit, 150);
-    for (int frame = 2; frame <= 10; ++frame) ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
-    const runtime::FrameImage tenth = renderer->readFrame();
-    EXPECT_TRUE(notConstant(tenth));
-    for (int age = 0; age < 10; ++age) {
-        const auto [x, y] = particlePixel(age, kWidth, kHeight);
-        const uint8_t* p = tenth.pixel(x, y);
-        EXPECT_EQ(p[0], 255) << "age " << age;
-        EXPECT_NEAR(p[1], age * 255 / 10, 2) << "age " << age;
-        if (age > 0) {
-            EXPECT_TRUE(isBlack(first.pixel(x, y))) << "age " << age << " in frame 1";
-        }
-    }
-    const auto [x10, y10] = particlePixel(10, kWidth, kHeight);
-    EXPECT_TRUE(isBlack(tenth.pixel(x10, y10)));  // nobody is that old yet
-    EXPECT_TRUE(isBlack(tenth.pixel(kWidth - 2, 1)));
-}
-
-// The capture read back through the pass API after three frames: the launcher (TYPE 0) counted three
-// frames, and the three particles it emitted are one frame apart on their path.
-TEST(D3d10Effects, AStreamOutputPassCapturesTheVerticesItsGeometryShaderAppends) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/stream_output_particles.fx"), true);
-    ASSERT_TRUE(renderer);
-    runtime::EffectTechnique technique = renderer->technique("Particles");
-    const std::optional<runtime::StreamOutCapture> seed = technique.pass("advance").streamOutput();
-    ASSERT_TRUE(seed);
-    EXPECT_TRUE(seed->seed);
-    EXPECT_EQ(seed->vertices, 1u);
-    EXPECT_FALSE(technique.pass("draw").streamOutput());
-    const runtime::Scene teapot = scene("teapot");
-    for (int frame = 1; frame <= 3; ++frame) ASSERT_TRUE(render(*renderer, teapot, kWidth, kHeight));
-    const std::optional<runtime::StreamOutCapture> capture = technique.pass("advance").streamOutput();
-    ASSERT_TRUE(capture);
-    EXPECT_FALSE(capture->seed);
-    ASSERT_EQ(capture->vertices, 4u);
-    ASSERT_EQ(capture->strides[0], 32u);  // float3, float3, float, uint
-    EXPECT_EQ(capture->buffers[1], 0u);
-    struct Vertex {
-        float pos[3], vel[3], timer;
-        uint32_t type;
-    };
-    std::vector<Vertex> vertices(4);
-    gl::GetNamedBufferSubData(capture->buffers[0], 0, sizeof(Vertex) * 4, vertices.data());
-    std::vector<float> ages;
-    int launchers = 0;
-    for (const Vertex& v : vertices) {
-        if (v.type == 0) {
-            ++launchers;
-            EXPECT_EQ(v.timer, 3.0f);
-            continue;
-        }
-        EXPECT_EQ(v.type, 1u);
-        ages.push_back(v.timer);
-        EXPECT_NEAR(v.pos[0], -0.8f + 0.15f * v.timer, 1e-5f);
-        EXPECT_NEAR(v.pos[1], 0.8f - 0.15f * v.timer, 1e-5f);
-        EXPECT_NEAR(v.vel[0], 0.15f, 1e-6f);
-    }
-    EXPECT_EQ(launchers, 1);
-    std::sort(ages.begin(), ages.end());
-    EXPECT_EQ(ages, (std::vector<float>{0, 1, 2}));
 }
 
 TEST(D3d10Effects, EachRenderTargetBlendsByItsOwnBlendStateFields) {

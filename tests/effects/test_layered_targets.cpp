@@ -145,5 +145,83 @@ TEST(LayeredTargets, TheGeometryShaderChoosesTheTexture3DSliceDrawnInto) {
     EXPECT_TRUE(bandIs(frame, 3, 4, {0, 0, 0}));
 }
 
+// [SECTION] Several viewports and primitive ids
+
+// The effect through a host file's frame: the file's text, or viewport_index.json.
+runtime::FrameImage hostFrame(const std::string& hostText) {
+    sharedContext();
+    fx::DiagnosticList diagnostics;
+    std::shared_ptr<const fx::CompiledEffect> compiled =
+        fx::loadEffectFile(sourcePath("tests/data/d3d10/viewport_index.fx"), {}, {}, diagnostics);
+    std::shared_ptr<const fx::HostFile> host =
+        hostText.empty()
+            ? runtime::loadHostFile(sourcePath("tests/data/d3d10/viewport_index.json"), diagnostics)
+            : runtime::parseHostJson(hostText, "h.json", diagnostics);
+    EXPECT_TRUE(compiled && host) << diagnostics.str();
+    if (!compiled || !host) return {};
+    std::unique_ptr<runtime::EffectRenderer> renderer =
+        runtime::EffectRenderer::create(compiled, diagnostics);
+    EXPECT_TRUE(renderer && renderer->setHostFile(host, diagnostics)) << diagnostics.str();
+    if (!renderer) return {};
+    EXPECT_TRUE(render(*renderer, boxes(), kWidth, kHeight));
+    return renderer->readFrame();
+}
+
+// Every pixel of the rectangle [x0, x1) x [y0, y1) is `colour`.
+::testing::AssertionResult rectIs(const runtime::FrameImage& frame, int x0, int y0, int x1, int y1,
+                                  std::array<int, 3> colour) {
+    if (frame.width != kWidth || frame.height != kHeight) return ::testing::AssertionFailure() << "no frame";
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(p[c] - colour[static_cast<size_t>(c)]) > 1)
+                    return ::testing::AssertionFailure() << "(" << x << ", " << y << ") is (" << int(p[0])
+                                                         << ", " << int(p[1]) << ", " << int(p[2]) << ")";
+        }
+    return ::testing::AssertionSuccess();
+}
+
+// Two viewports, the left half and the upper right quarter: the geometry shader draws the full-screen quad
+// red into viewport 0 and green into viewport 1 (SV_ViewportArrayIndex), so the left half is red, the upper
+// right green and the lower right keeps the clear colour. Without the viewports both copies would cover
+// the frame; without the index both would go to viewport 0.
+TEST(LayeredTargets, TheGeometryShaderChoosesTheViewportEachPrimitiveIsDrawnInto) {
+    const runtime::FrameImage frame = hostFrame("");
+    EXPECT_TRUE(rectIs(frame, 0, 0, kWidth / 2, kHeight, {255, 0, 0}));
+    EXPECT_TRUE(rectIs(frame, kWidth / 2, 0, kWidth, kHeight / 2, {0, 255, 0}));
+    EXPECT_TRUE(rectIs(frame, kWidth / 2, kHeight / 2, kWidth, kHeight, {0, 0, 0}));
+}
+
+TEST(LayeredTargets, HostViewportsAreCheckedAtTheirLine) {
+    const std::string text = R"({
+  "frame": [{"technique": "BothViewports",
+             "viewports": [[0, 0, 48, 0]]},
+            {"technique": "BothViewports", "viewports": [[0, 0, 48]]}]
+})";
+    fx::DiagnosticList diagnostics;
+    EXPECT_FALSE(runtime::parseHostJson(text, "h.json", diagnostics));
+    EXPECT_TRUE(reportedOnLine(diagnostics, fx::DiagId::HostStepViewportsInvalid, 3));
+    EXPECT_TRUE(reportedOnLine(diagnostics, fx::DiagId::HostStepViewportsInvalid, 4));
+}
+
+// The full-screen quad's first triangle (upper left, upper right, lower right) is primitive 0, its second
+// primitive 1: the pixel shader colours them red and green by SV_PrimitiveID.
+TEST(LayeredTargets, ThePixelShaderTellsPrimitivesApartBySvPrimitiveId) {
+    const runtime::FrameImage frame = hostFrame(
+        R"({"frame": [{"technique": "PrimitiveColours", "draw": "quad", "clear": {"color": [0, 0, 0, 1], "depth": 1}}]})");
+    EXPECT_TRUE(rectIs(frame, kWidth - 8, 0, kWidth, 2, {255, 0, 0}));
+    EXPECT_TRUE(rectIs(frame, 0, kHeight - 2, 8, kHeight, {0, 255, 0}));
+}
+
+// The geometry shader writes SV_PrimitiveID (each triangle the other's id) and the pixel shader reads what it
+// wrote: the colours of the test above, swapped.
+TEST(LayeredTargets, ThePixelShaderReadsTheSvPrimitiveIdTheGeometryShaderWrote) {
+    const runtime::FrameImage frame = hostFrame(
+        R"({"frame": [{"technique": "GeometryPrimitiveIds", "draw": "quad", "clear": {"color": [0, 0, 0, 1], "depth": 1}}]})");
+    EXPECT_TRUE(rectIs(frame, kWidth - 8, 0, kWidth, 2, {0, 255, 0}));
+    EXPECT_TRUE(rectIs(frame, 0, kHeight - 2, 8, kHeight, {255, 0, 0}));
+}
+
 }  // namespace
 }  // namespace shadowfx::test

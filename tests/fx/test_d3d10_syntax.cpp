@@ -101,7 +101,8 @@ DepthStencilView g_pDSV;
 GeometryShader gsNone = NULL;
 VertexShader vsMain = CompileShader(vs_4_0, VS());
 float4 MaterialPS(VsOut i) : SV_Target { return gMaterial.Diffuse + gLayers[1].Specular + Tint; }
-technique10 Pool { pass { SetVertexShader(vsMain); SetGeometryShader(gsNone); SetPixelShader(CompileShader(ps_4_0, MaterialPS())); } }
+technique10 Pool { pass { SetVertexShader(vsMain); SetGeometryShader(gsNone); SetPixelShader(CompileShader(ps_4_0, MaterialPS()));
+    OMSetRenderTargets(g_pRTV, NULL, g_pDSV); } }
 )"),
                             diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
@@ -112,6 +113,25 @@ technique10 Pool { pass { SetVertexShader(vsMain); SetGeometryShader(gsNone); Se
     EXPECT_NE(pass.fragment.glsl.find("gLayers"), std::string::npos) << pass.fragment.glsl;
     ASSERT_TRUE(compiled->findParameter("g_pRTV"));
     EXPECT_EQ(compiled->findParameter("g_pDSV")->type.hlslName(), "DepthStencilView");
+}
+
+// OMSetRenderTargets takes the application's views and NULL; anything else is a located error.
+TEST(D3d10Syntax, OMSetRenderTargetsTakesViewVariablesOrNull) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+RenderTargetView g_pRTV;
+technique10 Views { pass { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS()));
+    OMSetRenderTargets(g_pRTV, Tint); } }
+)"),
+                            diagnostics);
+    EXPECT_FALSE(compiled);
+    const Diagnostic* d = find(diagnostics, DiagId::UnexpectedToken);
+    ASSERT_NE(d, nullptr) << diagnostics.str();
+    EXPECT_NE(
+        str(*d).find("expected a RenderTargetView or DepthStencilView variable or NULL (at most nine), found "
+                     "'Tint'"),
+        std::string::npos)
+        << str(*d);
 }
 
 TEST(D3d10Syntax, TechniqueSelectedByGroupQualifiedName) {

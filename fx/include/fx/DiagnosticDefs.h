@@ -357,6 +357,11 @@ FX_DIAGNOSTIC(
     DomainParameterUnsupported, Error,
     "domain shader parameter '{0}' is not supported (expected the patch constants, SV_DomainLocation, "
     "an OutputPatch, SV_PrimitiveID, an output or a uniform)")
+FX_DIAGNOSTIC(GeometryOutputArrayLocationsApart, Error,
+              "geometry shader output array '{0}' needs its elements' varyings at consecutive locations, "
+              "and its semantic's names do not get them ('{1}' is not at the location after '{2}': "
+              "free-named varyings take locations in their names' sorted order, the first eight 24..31); "
+              "declare the elements as members of their own or give the array a semantic of fewer elements")
 // Stream output (ConstructGSWithSO) that GL's transform feedback cannot capture.
 FX_DIAGNOSTIC(
     StreamOutOtherStreams, Error,
@@ -679,6 +684,11 @@ FX_DIAGNOSTIC(HostTargetLayersInvalid, Error,
               "{0}: expected a whole number from 1 to 2048 (an array's elements or a volume's slices)")
 FX_DIAGNOSTIC(HostTargetLayersWithoutLayers, Error,
               "{0}: a {1} target has no \"layers\" (only an array or a volume does; a cube has six faces)")
+FX_DIAGNOSTIC(
+    HostStepViewportsInvalid, Error,
+    "{0}: expected 1 to 16 viewports, each [x, y, width, height] in pixels, width and height above 0")
+FX_DIAGNOSTIC(HostStepDispatchInvalid, Error,
+              "{0}: expected 1 to 3 group counts, each a whole number or a parameter's name")
 // A host file checked against the effect it drives (fx::checkHostFile).
 FX_DIAGNOSTIC(HostParameterUnknown, Error, "{0}: the effect has no parameter '{1}'")
 FX_DIAGNOSTIC(HostParameterNotNumeric, Error, "{0}: '{1}' is a {2}, not a number, vector or matrix")

@@ -10,6 +10,7 @@
 #include <fx/Diagnostics.h>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -80,6 +81,15 @@ struct HostLightProjection {
     fx::SourceLoc loc;
 };
 
+// One viewport, as D3D10's D3D10_VIEWPORT with its default depth range (0 to 1): a rectangle in pixels from
+// the target's upper-left corner.
+struct Viewport {
+    float x = 0.0f;
+    float y = 0.0f;
+    float width = 0.0f;
+    float height = 0.0f;
+};
+
 // One step of the frame: a technique's passes (or one of them) drawn into a target.
 struct HostStep {
     std::string technique;
@@ -90,6 +100,17 @@ struct HostStep {
     std::optional<float> clearDepth;
     enum class Draw { Geometry, Quad, Nothing };
     Draw draw = Draw::Geometry;
+    // The application's RSSetViewports: viewport i is the one a geometry shader's SV_ViewportArrayIndex i
+    // selects. Empty: one viewport, the whole target.
+    std::vector<Viewport> viewports;
+    // FX11's Dispatch after Apply, for the step's passes that set a compute shader: each term a group count
+    // or a parameter whose components are counts (as a script's Dispatch=x,y,z); missing counts are 1.
+    // Empty: the step dispatches nothing.
+    struct DispatchTerm {
+        std::string parameter;  // "" = `count`
+        uint32_t count = 1;
+    };
+    std::vector<DispatchTerm> dispatch;
     fx::SourceLoc loc;
 };
 

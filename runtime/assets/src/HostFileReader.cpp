@@ -320,7 +320,8 @@ private:
 
     void readStep(const json& value, const json::json_pointer& where) {
         if (!isObject(value, where)) return;
-        checkKeys(value, where, {"technique", "pass", "target", "port", "clear", "draw"});
+        checkKeys(value, where,
+                  {"technique", "pass", "target", "port", "clear", "draw", "viewports", "dispatch"});
         HostStep step;
         step.loc = loc(where);
         if (auto it = value.find("technique"); it == value.end()) {
@@ -367,7 +368,48 @@ private:
                 else
                     error(where / "draw", fx::DiagId::HostStepDrawInvalid, {*draw});
             }
+        if (auto it = value.find("viewports"); it != value.end()) {
+            if (std::optional<std::vector<fx::Viewport>> viewports = readViewports(*it))
+                step.viewports = *viewports;
+            else
+                error(where / "viewports", fx::DiagId::HostStepViewportsInvalid);
+        }
+        if (auto it = value.find("dispatch"); it != value.end()) {
+            if (std::optional<std::vector<HostStep::DispatchTerm>> dispatch = readDispatch(*it))
+                step.dispatch = *dispatch;
+            else
+                error(where / "dispatch", fx::DiagId::HostStepDispatchInvalid);
+        }
         mHost->frame.push_back(std::move(step));
+    }
+
+    // [x, y, z], each a whole number or a parameter's name: a script's Dispatch=x,y,z.
+    static std::optional<std::vector<HostStep::DispatchTerm>> readDispatch(const json& value) {
+        if (!value.is_array() || value.empty() || value.size() > 3) return std::nullopt;
+        std::vector<HostStep::DispatchTerm> terms;
+        for (const json& term : value) {
+            if (term.is_string() && !term.get<std::string>().empty())
+                terms.push_back({term.get<std::string>(), 1});
+            else if (term.is_number_integer() && term.get<long long>() >= 0 &&
+                     term.get<long long>() <= 0xffffffffLL)
+                terms.push_back({"", static_cast<uint32_t>(term.get<long long>())});
+            else
+                return std::nullopt;
+        }
+        return terms;
+    }
+
+    // [[x, y, width, height], ...]: D3D10's RSSetViewports, at most its 16 (GL's guaranteed GL_MAX_VIEWPORTS
+    // too).
+    static std::optional<std::vector<fx::Viewport>> readViewports(const json& value) {
+        if (!value.is_array() || value.empty() || value.size() > 16) return std::nullopt;
+        std::vector<fx::Viewport> viewports;
+        for (const json& element : value) {
+            const std::optional<std::vector<float>> n = numbers(element);
+            if (!n || n->size() != 4 || !((*n)[2] > 0.0f && (*n)[3] > 0.0f)) return std::nullopt;
+            viewports.push_back(fx::Viewport{(*n)[0], (*n)[1], (*n)[2], (*n)[3]});
+        }
+        return viewports;
     }
 
     void readVisibility(const json& value, const json::json_pointer& where) {

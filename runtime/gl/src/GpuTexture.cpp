@@ -90,39 +90,28 @@ GpuTexture GpuTexture::createCubeArray(fx::TextureFormat format, int size, int c
                       mipLevels <= 0 ? chain : std::min(mipLevels, chain), 6 * std::max(cubes, 1));
 }
 
-GpuTexture GpuTexture::create2DMultisample(fx::TextureFormat format, int width, int height, int samples) {
+GpuTexture GpuTexture::createMultisample(fx::TextureFormat format, int width, int height, int samples,
+                                         int arrayElements) {
+    const bool array = arrayElements > 0;
     GpuTexture texture;
-    texture.mTarget = GL_TEXTURE_2D_MULTISAMPLE;
+    texture.mTarget = array ? GL_TEXTURE_2D_MULTISAMPLE_ARRAY : GL_TEXTURE_2D_MULTISAMPLE;
     texture.mFormat = format;
     texture.mWidth = std::max(width, 1);
     texture.mHeight = std::max(height, 1);
+    texture.mDepth = std::max(arrayElements, 1);
     texture.mLevels = 1;
     texture.mSamples = std::max(samples, 1);
     texture.mSerial = gNextSerial++;
     gl::GenTextures(1, &texture.mId);
     gl::BindTexture(texture.mTarget, texture.mId);
     // Fixed sample locations: every texel's sample i sits at the same place, as D3D's standard patterns.
-    gl::TexStorage2DMultisample(texture.mTarget, texture.mSamples, texture.glFormat().internalFormat,
-                                texture.mWidth, texture.mHeight, GL_TRUE);
-    gl::BindTexture(texture.mTarget, 0);
-    return texture;
-}
-
-GpuTexture GpuTexture::create2DMultisampleArray(fx::TextureFormat format, int width, int height, int elements,
-                                                int samples) {
-    GpuTexture texture;
-    texture.mTarget = GL_TEXTURE_2D_MULTISAMPLE_ARRAY;
-    texture.mFormat = format;
-    texture.mWidth = std::max(width, 1);
-    texture.mHeight = std::max(height, 1);
-    texture.mDepth = std::max(elements, 1);
-    texture.mLevels = 1;
-    texture.mSamples = std::max(samples, 1);
-    texture.mSerial = gNextSerial++;
-    gl::GenTextures(1, &texture.mId);
-    gl::BindTexture(texture.mTarget, texture.mId);
-    gl::TexStorage3DMultisample(texture.mTarget, texture.mSamples, texture.glFormat().internalFormat,
-                                texture.mWidth, texture.mHeight, texture.mDepth, GL_TRUE);
+    const GLenum internalFormat = texture.glFormat().internalFormat;
+    if (array)
+        gl::TexStorage3DMultisample(texture.mTarget, texture.mSamples, internalFormat, texture.mWidth,
+                                    texture.mHeight, texture.mDepth, GL_TRUE);
+    else
+        gl::TexStorage2DMultisample(texture.mTarget, texture.mSamples, internalFormat, texture.mWidth,
+                                    texture.mHeight, GL_TRUE);
     gl::BindTexture(texture.mTarget, 0);
     return texture;
 }

@@ -268,4 +268,14 @@ EffectAnnotation EffectTechnique::annotation(std::string_view name) const {
                      : EffectAnnotation{};
 }
 
+// [SECTION] Viewports
+
+void setViewports(const std::vector<fx::Viewport>& viewports) {
+    GLint most = 1;
+    gl::GetIntegerv(GL_MAX_VIEWPORTS, &most);
+    for (size_t i = 0; i < viewports.size() && i < static_cast<size_t>(most); ++i)
+        gl::ViewportIndexedf(static_cast<GLuint>(i), viewports[i].x, viewports[i].y, viewports[i].width,
+                             viewports[i].height);
+}
+
 }  // namespace runtime

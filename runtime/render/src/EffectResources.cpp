@@ -61,9 +61,8 @@ GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples =
     const uint8_t white[4] = {255, 255, 255, 255};
     if (type == fx::BaseType::Texture2DMS || type == fx::BaseType::Texture2DMSArray) {
         GpuTexture texture =
-            type == fx::BaseType::Texture2DMS
-                ? GpuTexture::create2DMultisample(fx::TextureFormat::RGBA8, 1, 1, samples)
-                : GpuTexture::create2DMultisampleArray(fx::TextureFormat::RGBA8, 1, 1, elements, samples);
+            GpuTexture::createMultisample(fx::TextureFormat::RGBA8, 1, 1, samples,
+                                          type == fx::BaseType::Texture2DMSArray ? std::max(elements, 1) : 0);
         gl::ClearTexImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
         return texture;
     }
@@ -102,10 +101,10 @@ GpuTexture makeRenderTarget(const fx::TextureDesc& desc, int w, int h) {
         case fx::BaseType::TextureCubeArray:
             return makeArrayTexture(desc.type, desc.format, w, h, desc.arraySize, desc.mipLevels);
         case fx::BaseType::Texture2DMS:
-            return GpuTexture::create2DMultisample(desc.format, w, h, supportedSamples(desc));
+            return GpuTexture::createMultisample(desc.format, w, h, supportedSamples(desc));
         case fx::BaseType::Texture2DMSArray:
-            return GpuTexture::create2DMultisampleArray(desc.format, w, h, desc.arraySize,
-                                                        supportedSamples(desc));
+            return GpuTexture::createMultisample(desc.format, w, h, supportedSamples(desc),
+                                                 std::max(desc.arraySize, 1));
         default:
             return GpuTexture::create2D(desc.format, w, h, desc.mipLevels);
     }

@@ -14,7 +14,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 namespace runtime {
@@ -136,6 +138,26 @@ bool setComponents(EffectVariable variable, const HostValue& value, const std::v
     return variable.setValue(v);
 }
 
+// The step's group counts, each term a count or a parameter's components (a script's Dispatch=x,y,z);
+// nothing where they are more than three or a parameter holds a negative count.
+std::optional<std::array<uint32_t, 3>> dispatchGroups(EffectRenderer& renderer, const HostStep& step) {
+    std::array<uint32_t, 3> groups{1, 1, 1};
+    size_t given = 0;
+    for (const HostStep::DispatchTerm& term : step.dispatch) {
+        if (term.parameter.empty()) {
+            if (given == 3) return std::nullopt;
+            groups[given++] = term.count;
+            continue;
+        }
+        const fx::Value value = renderer.variable(term.parameter).value();
+        for (float count : value.data) {
+            if (given == 3 || !(count >= 0.0f)) return std::nullopt;
+            groups[given++] = static_cast<uint32_t>(count);
+        }
+    }
+    return groups;
+}
+
 }  // namespace
 
 // [SECTION] Targets
@@ -236,6 +258,7 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
         }
         context.viewport = {targets.width(), targets.height()};
         gl::Viewport(0, 0, targets.width(), targets.height());
+        setViewports(step.viewports);
         ClearRequest clear;
         if (step.clearColor) clear.color = *step.clearColor;
         clear.depth = step.clearDepth;
@@ -259,7 +282,21 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
                 break;
             }
             const fx::CompiledPass& compiled = r.effect().techniques[pass.techniqueIndex()].passes[p];
-            if (compiled.vertex.glsl.empty()) continue;  // a pass that only sets states
+            if (!step.dispatch.empty() && !compiled.compute.glsl.empty()) {
+                const std::optional<std::array<uint32_t, 3>> groups = dispatchGroups(renderer, step);
+                if (!groups) {
+                    const auto index = static_cast<size_t>(&step - mHost->frame.data());
+                    diagnostics.report(fx::DiagId::HostStepDispatchInvalid, step.loc,
+                                       {"frame/" + std::to_string(index) + "/dispatch"});
+                    ok = false;
+                    break;
+                }
+                if (!pass.dispatch((*groups)[0], (*groups)[1], (*groups)[2], &diagnostics)) {
+                    ok = false;
+                    break;
+                }
+            }
+            if (compiled.vertex.glsl.empty()) continue;  // a pass that only sets states, or computes
             if (step.draw == HostStep::Draw::Quad) {
                 r.quad.draw(compiled.vertex.inputs, 1, compiled.patchVertices, compiled.primitive);
                 continue;

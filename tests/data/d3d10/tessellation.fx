@@ -201,15 +201,20 @@ technique11 Corners
 }
 
 // D3D10's default rasterizer state culls back faces: a tessellator that wound its triangles the other way
-// would show the meshes' back faces here.
+// would show the meshes' back faces here. The stages come from shader variables, FX11's other form, and
+// the pass sets the blend state NULL (all defaults).
+HullShader g_hsMesh = CompileShader(hs_5_0, HSMesh());
+DomainShader g_dsMesh = CompileShader(ds_5_0, DSMesh());
+
 technique11 Mesh
 {
     pass
     {
         SetVertexShader(CompileShader(vs_5_0, VS()));
-        SetHullShader(CompileShader(hs_5_0, HSMesh()));
-        SetDomainShader(CompileShader(ds_5_0, DSMesh()));
+        SetHullShader(g_hsMesh);
+        SetDomainShader(g_dsMesh);
         SetPixelShader(CompileShader(ps_5_0, PS()));
+        SetBlendState(NULL, float4(0, 0, 0, 0), 0xFFFFFFFF);
     }
 }
 

@@ -40,13 +40,11 @@ public:
     static GpuTexture create2DArray(fx::TextureFormat format, int width, int height, int elements,
                                     int mipLevels = 1);
     static GpuTexture createCubeArray(fx::TextureFormat format, int size, int cubes, int mipLevels = 1);
-    // D3D10's Texture2DMS: `samples` per texel (at most the driver's GL_MAX_COLOR_TEXTURE_SAMPLES or
-    // GL_MAX_DEPTH_TEXTURE_SAMPLES, which the caller checks), one level, contents undefined until drawn or
-    // cleared.
-    static GpuTexture create2DMultisample(fx::TextureFormat format, int width, int height, int samples);
-    // D3D10's Texture2DMSArray: `elements` layers of `samples` per texel, as create2DMultisample.
-    static GpuTexture create2DMultisampleArray(fx::TextureFormat format, int width, int height, int elements,
-                                               int samples);
+    // D3D10's Texture2DMS (`arrayElements` 0) or Texture2DMSArray (that many layers): `samples` per texel (at
+    // most the driver's GL_MAX_COLOR_TEXTURE_SAMPLES or GL_MAX_DEPTH_TEXTURE_SAMPLES, which the caller
+    // checks), one level, contents undefined until drawn or cleared.
+    static GpuTexture createMultisample(fx::TextureFormat format, int width, int height, int samples,
+                                        int arrayElements = 0);
 
     GpuTexture() = default;
     ~GpuTexture();

@@ -27,6 +27,7 @@
 #include <runtime/StreamOutBuffers.h>
 
 #include <fx/Diagnostics.h>
+#include <fx/HostFile.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -149,6 +150,13 @@ private:
     EffectResources* mResources = nullptr;
     size_t mTechnique = 0;
 };
+
+// D3D10's RSSetViewports: viewport i becomes viewports[i] (glViewportIndexedf), the one a geometry shader's
+// SV_ViewportArrayIndex i draws into; the others keep theirs. Depth ranges stay 0 to 1. A pass whose Script
+// names render targets binds them with one viewport at their size, as glViewport sets every viewport, so
+// an application sets its viewports after apply(). More viewports than the context has
+// (GL_MAX_VIEWPORTS, 16 on GL 4.5) are ignored.
+void setViewports(const std::vector<fx::Viewport>& viewports);
 
 // D3DX9's ValidateTechnique: whether a technique of the effect can run here, and the reason it cannot: for
 // a technique the parser or compiler left out (fx/RefusedTechnique.h), what it uses that GL cannot run.
