@@ -205,7 +205,7 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
     const Light* light = scene.findLight(lightName);
     if (!light) return std::nullopt;
     fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
-    SemanticBinder binder(mImpl->parameterInfo());
+    SemanticBinder binder(mImpl->parameterInfo(), mImpl->effect().lights);
     // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
     std::optional<VisibleSamples> visible;
     if (binder.wantsVisibleSamples(mImpl->values))
@@ -238,8 +238,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     EffectResources::TechniqueChoice& choice = mImpl->techniqueChoice;
     if (!choice.valid || choice.requested != options.technique) {
         const fx::CompiledTechnique* chosen = ScriptInterpreter::selectTechnique(
-            mImpl->effect(), options.technique, [this](const std::string& name) { return mImpl->find(name); },
-            diagnostics);
+            mImpl->effect(), options.technique, mImpl->values, diagnostics);
         if (!chosen) return false;
         choice.technique = static_cast<size_t>(chosen - mImpl->effect().techniques.data());
         choice.requested = options.technique;
@@ -301,7 +300,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         plan.beginRecording();
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
                                mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
         // FrameOptions::outputTargets, found by name again only when the names change.
@@ -335,9 +334,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran =
-        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
-                               mImpl->frameScratch.scriptLoops, executor, diagnostics);
+    const bool ran = ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
+                                            mImpl->frameScratch.scriptLoops, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

@@ -285,7 +285,10 @@ constexpr std::pair<const char*, int> kTunableNames[] = {
 
 }  // namespace
 
-SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters) : mParameters(parameters) {
+SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
+                               const std::vector<std::string>& lights)
+    : mParameters(parameters) {
+    for (const std::string& light : lights) lightSlot(light);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
         FitInput input;

@@ -70,7 +70,9 @@ public:
     // Classifies every parameter's semantic and registers the lights its annotations name, once, when the
     // effect is created: a frame looks up no semantic and no light by name. Parameters with semantics the
     // runtime does not know are left alone (they are the user's own).
-    explicit SemanticBinder(const std::vector<fx::ParameterInfo>& parameters);
+    // `lights` (fx::CompiledEffect::lights) take the first slots, in order: slot k is lights[k], the index
+    // the compiler gave RenderPort=lightN (fx::ScriptCommand::light).
+    SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const std::vector<std::string>& lights);
 
     // The slot of a light an effect names (`RenderPort=light0`, a `frustum`/`Object` annotation), registered
     // when the effect is created; prepare() resolves every slot against the frame's scene.
