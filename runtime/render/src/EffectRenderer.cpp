@@ -214,7 +214,7 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     binder.prepare(scene, scene.bounds(),
                    static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   diagnostics, visible ? &*visible : nullptr);
+                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
     return binder.lightFit(*light);
 }
 
@@ -274,7 +274,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     binder.prepare(frameScene, mImpl->sceneCache.bounds,
                    static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   diagnostics, visible ? &*visible : nullptr);
+                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
     const std::vector<PassUse>& uses = mImpl->passUses[techniqueIndex];
 
     std::vector<PassPreshaders>& preshaders = mImpl->preshaders[techniqueIndex];
