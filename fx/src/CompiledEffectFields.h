@@ -87,8 +87,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 7,
-              "the enum lengths below were pinned at format version 7: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 8,
+              "the enum lengths below were pinned at format version 8: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
@@ -123,12 +123,14 @@ static_assert(sizeof(StorageBufferBinding) == 104);
 static_assert(sizeof(VertexInput) == 48);
 static_assert(sizeof(ImageBinding) == 72);
 static_assert(sizeof(StageProgram) == 304);
-static_assert(sizeof(PreshaderProgram::Instruction) == 200);
+static_assert(sizeof(PreshaderProgram::Instruction::MemberComponents) == 14);
+static_assert(sizeof(PreshaderProgram::Instruction) == 216);
 static_assert(sizeof(PreshaderProgram::Error) == 72);
 static_assert(sizeof(PreshaderProgram) == 96);
 static_assert(sizeof(CompileArgument) == 240);
 static_assert(sizeof(RenderStateSetting) == 160);
-static_assert(sizeof(ScriptCommand) == 224);
+static_assert(sizeof(ScriptCommand::DispatchTerm) == 8);
+static_assert(sizeof(ScriptCommand) == 456);
 static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
 static_assert(sizeof(CompiledPass) == 2120);
@@ -140,7 +142,7 @@ static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
 static_assert(sizeof(ParameterInfo) == 360);
 static_assert(sizeof(EffectProvenance) == 112);
-static_assert(sizeof(CompiledEffect) == 376);
+static_assert(sizeof(CompiledEffect) == 400);
 #endif
 
 // [SECTION] Fields, in file order
@@ -211,8 +213,12 @@ void fields(A& a, StageProgram& x) {
     a(x.uniformBlockSize, x.uniforms, x.samplers, x.storageBuffers, x.images, x.inputs, x.sourceHash);
 }
 template <class A>
+void fields(A& a, PreshaderProgram::Instruction::MemberComponents& x) {
+    a(x.swizzleCount, x.swizzle, x.matrixCount, x.rows, x.columns);
+}
+template <class A>
 void fields(A& a, PreshaderProgram::Instruction& x) {
-    a(x.op, x.operation, x.function, x.operand, x.count, x.text, x.type, x.loc);
+    a(x.op, x.operation, x.function, x.operand, x.count, x.text, x.type, x.member, x.loc);
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Error& x) {
@@ -237,9 +243,14 @@ void fields(A& a, RenderStateSetting& x) {
     a(x.id, x.constant, x.value, x.loc);
 }
 template <class A>
+void fields(A& a, ScriptCommand::DispatchTerm& x) {
+    a(x.parameter, x.count);
+}
+template <class A>
 void fields(A& a, ScriptCommand& x) {
     a(x.kind, x.index, x.pass, x.value, x.cascade, x.loc, x.selectorCondition, x.selectorTrue);
     a(x.selectorFalse, x.selectorAlternatives, x.clear, x.draw);
+    a(x.parameter, x.literal, x.light, x.dispatch, x.technique, x.techniqueIfFalse, x.selectorParameter);
 }
 template <class A>
 void fields(A& a, StreamOutElement& x) {
@@ -295,7 +306,7 @@ template <class A>
 void fields(A& a, CompiledEffect& x) {
     a(x.provenance, x.path, x.parameters, x.initialValues, x.structs, x.textures, x.samplers, x.passSamplers);
     a(x.techniques);
-    a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.maxScriptLoopCount);
+    a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.lights, x.maxScriptLoopCount);
 }
 
 }  // namespace fx::detail

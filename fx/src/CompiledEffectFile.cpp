@@ -102,9 +102,23 @@ public:
 
 private:
     std::optional<Corruption> script(const std::vector<ScriptCommand>& commands, size_t passes) const {
-        for (const ScriptCommand& command : commands)
-            if (command.pass < -1 || (command.pass >= 0 && static_cast<size_t>(command.pass) >= passes))
-                return Corruption{DiagId::CompiledEffectScriptPassOutOfRange};
+        // -1 (none) or an index below `count`.
+        const auto within = [](int index, size_t count) {
+            return index >= -1 && (index < 0 || static_cast<size_t>(index) < count);
+        };
+        for (const ScriptCommand& command : commands) {
+            if (!within(command.pass, passes)) return Corruption{DiagId::CompiledEffectScriptPassOutOfRange};
+            bool parameters =
+                within(command.parameter, mParameters) && within(command.selectorParameter, mParameters);
+            for (const ScriptCommand::DispatchTerm& term : command.dispatch)
+                parameters = parameters && within(term.parameter, mParameters);
+            if (!parameters) return Corruption{DiagId::CompiledEffectScriptParameterOutOfRange};
+            if (!within(command.light, mEffect.lights.size()))
+                return Corruption{DiagId::CompiledEffectScriptLightOutOfRange};
+            if (!within(command.technique, mEffect.techniques.size()) ||
+                !within(command.techniqueIfFalse, mEffect.techniques.size()))
+                return Corruption{DiagId::CompiledEffectScriptTechniqueOutOfRange};
+        }
         return std::nullopt;
     }
 

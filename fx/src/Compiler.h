@@ -81,7 +81,13 @@ private:
     void assignPairUnits();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
+    // Checks a script and resolves its operands (ScriptCommand::parameter, literal, light, dispatch, pass).
     void validateScript(std::vector<ScriptCommand>& commands, const Technique* technique);
+    // The index of a light in CompiledEffect::lights, added if new.
+    int lightIndex(const std::string& name);
+    // The global script's Technique= commands resolved to CompiledEffect::techniques indices, once the
+    // techniques that run are compiled.
+    void resolveTechniqueSelection();
     // A stage's place in mOut: technique and pass index, or (technique kTextureFill) the texture whose
     // fill pass it belongs to.
     struct PassSlot {

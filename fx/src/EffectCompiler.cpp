@@ -399,6 +399,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         }
         mOut->techniques.push_back(std::move(technique));
     }
+    resolveTechniqueSelection();
     if (!reportUnsupportedTechniques(invalid, !mOut->techniques.empty(), mDiagnostics,
                                      mOut->refusedTechniques))
         mFailed = true;

@@ -407,46 +407,70 @@ bool Evaluator::select(const Value& c, Value& a, Value& b, const SourceLoc& loc)
 
 // [SECTION] Members and indexing
 
-bool Evaluator::member(const std::string& m, Value& base, const SourceLoc& loc) {
+bool Evaluator::member(const PreshaderProgram::Instruction::MemberComponents& components,
+                       const std::string& text, Value& base, const SourceLoc& loc) {
+    using Instruction = PreshaderProgram::Instruction;
     mScratch.clear();
     if (base.type.shape == Shape::Matrix) {
-        // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
-        size_t i = 0;
-        while (i < m.size()) {
-            if (m[i] != '_') return fail(DiagId::InvalidMatrixMember, loc, {m});
-            ++i;
-            int offset = 1;
-            if (i < m.size() && m[i] == 'm') {
-                offset = 0;
-                ++i;
-            }
-            if (i + 2 > m.size() || !std::isdigit(static_cast<unsigned char>(m[i])) ||
-                !std::isdigit(static_cast<unsigned char>(m[i + 1])))
-                return fail(DiagId::InvalidMatrixMember, loc, {m});
-            int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
-            i += 2;
-            if (r < 0 || c < 0 || r >= base.type.rows || c >= base.type.cols)
-                return fail(DiagId::MatrixMemberOutOfRange, loc, {m});
+        if (components.matrixCount == 0) return fail(DiagId::InvalidMatrixMember, loc, {text});
+        for (size_t k = 0; k < components.matrixCount; ++k) {
+            const int r = components.rows[k], c = components.columns[k];
+            if (r == Instruction::kNoComponent || c == Instruction::kNoComponent || r >= base.type.rows ||
+                c >= base.type.cols)
+                return fail(DiagId::MatrixMemberOutOfRange, loc, {text});
             mScratch.push_back(base.data[static_cast<size_t>(r * base.type.cols + c)]);
         }
     } else {
-        if (m.empty() || m.size() > 4) return fail(DiagId::InvalidSwizzle, loc, {m});
-        for (char ch : m) {
-            const char* xyzw = "xyzw";
-            const char* rgba = "rgba";
-            const char* p = std::strchr(xyzw, ch);
-            int idx = p ? static_cast<int>(p - xyzw) : -1;
-            if (idx < 0 && (p = std::strchr(rgba, ch))) idx = static_cast<int>(p - rgba);
-            int avail = base.type.shape == Shape::Scalar ? 1 : base.type.cols;
-            if (idx < 0 || ch == '\0' || idx >= avail)
-                return fail(DiagId::InvalidSwizzleOnType, loc, {m, base.type.hlslName()});
-            mScratch.push_back(base.data[static_cast<size_t>(idx)]);
+        if (components.swizzleCount == 0) return fail(DiagId::InvalidSwizzle, loc, {text});
+        const int available = base.type.shape == Shape::Scalar ? 1 : base.type.cols;
+        for (size_t k = 0; k < components.swizzleCount; ++k) {
+            const int component = components.swizzle[k];
+            if (component >= available)  // kNoComponent included
+                return fail(DiagId::InvalidSwizzleOnType, loc, {text, base.type.hlslName()});
+            mScratch.push_back(base.data[static_cast<size_t>(component)]);
         }
     }
     base.data.assign(mScratch.begin(), mScratch.end());
     setVectorType(base.type, base.type.base, static_cast<int>(mScratch.size()));
     base.string.clear();
     return true;
+}
+
+PreshaderProgram::Instruction::MemberComponents memberComponents(std::string_view m) {
+    using Instruction = PreshaderProgram::Instruction;
+    Instruction::MemberComponents components;
+    if (!m.empty() && m.size() <= 4) {
+        components.swizzleCount = static_cast<uint8_t>(m.size());
+        for (size_t k = 0; k < m.size(); ++k) {
+            const size_t xyzw = std::string_view("xyzw").find(m[k]);
+            const size_t rgba = std::string_view("rgba").find(m[k]);
+            components.swizzle[k] = xyzw != std::string_view::npos   ? static_cast<uint8_t>(xyzw)
+                                    : rgba != std::string_view::npos ? static_cast<uint8_t>(rgba)
+                                                                     : Instruction::kNoComponent;
+        }
+    }
+    // ._m00 (zero-based) / ._11 (one-based), possibly chained: ._11_22_33
+    uint8_t count = 0;
+    size_t i = 0;
+    while (i < m.size()) {
+        if (m[i] != '_' || count == 4) return components;
+        ++i;
+        int offset = 1;
+        if (i < m.size() && m[i] == 'm') {
+            offset = 0;
+            ++i;
+        }
+        if (i + 2 > m.size() || !std::isdigit(static_cast<unsigned char>(m[i])) ||
+            !std::isdigit(static_cast<unsigned char>(m[i + 1])))
+            return components;
+        const int r = m[i] - '0' - offset, c = m[i + 1] - '0' - offset;
+        i += 2;
+        components.rows[count] = r < 0 ? Instruction::kNoComponent : static_cast<uint8_t>(r);
+        components.columns[count] = c < 0 ? Instruction::kNoComponent : static_cast<uint8_t>(c);
+        ++count;
+    }
+    components.matrixCount = count;
+    return components;
 }
 
 bool Evaluator::index(Value& base, const Value& idx, const SourceLoc& loc) {
@@ -489,6 +513,8 @@ std::optional<DiagId> PreshaderProgram::malformation(size_t slotCount) const {
             return DiagId::CompiledEffectPreshaderConstantOutOfRange;
         if (in.op == Op::Fail && in.operand >= mErrors.size())
             return DiagId::CompiledEffectPreshaderErrorOutOfRange;
+        if (in.op == Op::Member && (in.member.swizzleCount > 4 || in.member.matrixCount > 4))
+            return DiagId::CompiledEffectPreshaderMemberTooWide;
         const size_t pops = in.op == Op::Constant || in.op == Op::Load || in.op == Op::Fail     ? 0
                             : in.op == Op::Unary || in.op == Op::Member || in.op == Op::Convert ? 1
                             : in.op == Op::Binary || in.op == Op::Index                         ? 2
@@ -596,7 +622,7 @@ const Value* PreshaderProgram::run(const std::vector<Value>& slots, Registers& r
                         ok = evaluator.initList(operands, out, in.loc);
                         break;
                     case Op::Member:
-                        ok = evaluator.member(in.text, out, in.loc);
+                        ok = evaluator.member(in.member, in.text, out, in.loc);
                         break;
                     case Op::Index:
                         ok = evaluator.index(out, values[first + 1], in.loc);

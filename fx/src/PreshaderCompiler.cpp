@@ -78,10 +78,13 @@ public:
                 }
                 return;
             }
-            case Expr::Kind::Member:
+            case Expr::Kind::Member: {
                 compile(e.args[0]);
-                emit(Op::Member, e.loc).text = e.text;
+                auto& member = emit(Op::Member, e.loc);
+                member.text = e.text;
+                member.member = detail::memberComponents(e.text);
                 return;
+            }
             case Expr::Kind::Index:
                 compile(e.args[0]);
                 compile(e.args[1]);

@@ -37,6 +37,9 @@ void setScalar(Value& v, BaseType base, float x);
 int32_t wrapToInt32(double x);
 // Stores a component in the representation of its base type: bools 0/1, ints truncated.
 float normalizeComponent(BaseType base, float x);
+// A member's text (`xy`, `_m00_11`) read as a swizzle and as a matrix member (Instruction::member).
+PreshaderProgram::Instruction::MemberComponents memberComponents(std::string_view text);
+
 // Parses a type constructor name: "float4" -> (Float, 1, 4, Vector), "float4x3", "int", "bool2".
 std::optional<TypeDesc> parseTypeName(std::string_view name);
 
@@ -60,7 +63,9 @@ public:
     bool intrinsic(Function function, const std::string& name, std::span<Value> operands,
                    const SourceLoc& loc);
     bool initList(std::span<Value> operands, Value& out, const SourceLoc& loc);
-    bool member(const std::string& m, Value& base, const SourceLoc& loc);
+    // `components`: `text` as memberComponents read it; `text` for messages.
+    bool member(const PreshaderProgram::Instruction::MemberComponents& components, const std::string& text,
+                Value& base, const SourceLoc& loc);
     bool index(Value& base, const Value& idx, const SourceLoc& loc);
 
     const PreshaderProgram::Error& error() const { return mError; }

@@ -7,6 +7,7 @@
 #include <fx/DispatchTerms.h>
 #include <fx/LiteralNumbers.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fx::detail {
@@ -32,8 +33,14 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
     // Commands FX Composer warned about and skipped: left out of the compiled script, so that the runtime
     // runs what FX Composer ran.
     std::vector<bool> ignored(commands.size(), false);
+    // What a value names: the parameter's index, or -1.
+    const auto parameterNamed = [this](const std::string& name) {
+        const auto it = mIndex.find(name);
+        return it == mIndex.end() ? -1 : static_cast<int>(it->second);
+    };
     for (size_t index = 0; index < commands.size(); ++index) {
-        const ScriptCommand& c = commands[index];
+        ScriptCommand& resolved = commands[index];
+        const ScriptCommand& c = resolved;
         auto ignore = [&](DiagId why) {
             mDiagnostics.report(why, c.loc, {std::string(scriptCommandName(c.kind)), c.value});
             ignored[index] = true;
@@ -54,12 +61,17 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 // A parameter's name or a literal ("0.5", "1,0,0,1"), as the runtime reads it.
                 const std::optional<std::vector<float>> numbers = parseLiteralNumbers(c.value);
                 const bool literal = numbers && !numbers->empty();
-                if (!mIndex.count(c.value) && !literal) ignore(DiagId::ScriptClearValueIgnored);
+                resolved.parameter = parameterNamed(c.value);
+                if (resolved.parameter < 0 && literal)
+                    resolved.literal =
+                        numbers->size() == 1 ? Value::scalar(numbers->front()) : Value::vector(*numbers);
+                if (resolved.parameter < 0 && !literal) ignore(DiagId::ScriptClearValueIgnored);
                 break;
             }
             case ScriptCommand::Kind::RenderColorTarget:
             case ScriptCommand::Kind::RenderDepthStencilTarget: {
                 if (c.value.empty()) break;
+                resolved.parameter = parameterNamed(c.value);
                 // What textures() made of the declaration: a RENDERCOLORTARGET semantic, or FX Composer's
                 // size annotations alone.
                 auto it = mIndex.find(c.value);
@@ -92,12 +104,22 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                                         {mEffect.techniques.front().name});
                 break;
             }
+            case ScriptCommand::Kind::RenderPort:
+                if (!c.value.empty()) resolved.light = lightIndex(c.value);
+                break;
+            case ScriptCommand::Kind::LoopGetIndex:
+                resolved.parameter = parameterNamed(c.value);
+                break;
             case ScriptCommand::Kind::LoopByCount: {
                 ++loops;
                 // A literal count is checked here, once, rather than failing every frame in the runtime
                 // (runtime/render/src/ScriptInterpreter.cpp checks parameter values against the same
                 // limit, CompiledEffect::maxScriptLoopCount).
                 const std::optional<std::vector<float>> numbers = parseLiteralNumbers(c.value);
+                resolved.parameter = parameterNamed(c.value);
+                if (resolved.parameter < 0 && numbers && !numbers->empty())
+                    resolved.literal =
+                        numbers->size() == 1 ? Value::scalar(numbers->front()) : Value::vector(*numbers);
                 if (numbers && numbers->size() == 1 && !mIndex.count(c.value)) {
                     const double count = numbers->front();
                     if (!(count >= 0) || std::floor(count) != count)
@@ -114,8 +136,11 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                 const std::vector<std::string> terms = dispatchTerms(c.value);
                 bool valid = true;
                 for (const std::string& term : terms) {
-                    if (mIndex.count(term)) continue;
                     const std::optional<std::vector<float>> number = parseLiteralNumbers(term);
+                    ScriptCommand::DispatchTerm& operand = resolved.dispatch.emplace_back();
+                    operand.parameter = parameterNamed(term);
+                    if (operand.parameter >= 0) continue;
+                    if (number && number->size() == 1) operand.count = number->front();
                     valid = valid && number && number->size() == 1 && number->front() >= 0 &&
                             std::floor(number->front()) == number->front();
                 }
@@ -142,7 +167,43 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
     commands.resize(kept);
 }
 
+int Compiler::lightIndex(const std::string& name) {
+    std::vector<std::string>& lights = mOut->lights;
+    const auto known = std::find(lights.begin(), lights.end(), name);
+    if (known != lights.end()) return static_cast<int>(known - lights.begin());
+    lights.push_back(name);
+    return static_cast<int>(lights.size() - 1);
+}
+
+void Compiler::resolveTechniqueSelection() {
+    const auto techniqueNamed = [this](const std::string& name) {
+        const CompiledTechnique* technique = mOut->findTechnique(name);
+        return technique ? static_cast<int>(technique - mOut->techniques.data()) : -1;
+    };
+    for (ScriptCommand& c : mOut->globalScript) {
+        if (c.kind != ScriptCommand::Kind::Technique) continue;
+        if (c.selectorCondition.empty()) {
+            c.technique = techniqueNamed(c.value);
+            continue;
+        }
+        const auto condition = mIndex.find(c.selectorCondition);
+        if (condition != mIndex.end()) {
+            c.selectorParameter = static_cast<int>(condition->second);
+            c.technique = techniqueNamed(c.selectorTrue);
+            c.techniqueIfFalse = techniqueNamed(c.selectorFalse);
+            continue;
+        }
+        // FX Composer's `Technique=Technique?Simple:Simple10:Textured:Textured10;` lists alternatives
+        // (D3D9 / D3D10 twins) rather than testing a parameter: the first one the effect has runs.
+        for (const std::string& alternative : c.selectorAlternatives)
+            if (c.technique < 0) c.technique = techniqueNamed(alternative);
+    }
+}
+
 void Compiler::scripts() {
+    // The parameters' lights first, so that their indices do not depend on which scripts compile.
+    for (const ParameterInfo& parameter : mOut->parameters)
+        if (!parameter.light.empty()) lightIndex(parameter.light);
     for (const Parameter& p : mEffect.parameters) {
         if (upperCase(p.semantic) != "STANDARDSGLOBAL") continue;
         mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);

@@ -181,6 +181,20 @@ TEST(LispsmEffect, NOptParameterReachesTheProvider) {
     EXPECT_NE(error->message.find("'Lloyd2007' is not a choice of LiSPSM's n"), std::string::npos)
         << error->message;
     EXPECT_NE(error->loc.line, 0);
+
+    // The frame reads the string once per change of the parameter: an invalid choice stays reported every
+    // frame it stands, and a valid one set again is read at the next frame.
+    const auto reportsChoice = [](const fx::DiagnosticList& list) {
+        return std::any_of(list.items().begin(), list.items().end(),
+                           [](const fx::Diagnostic& d) { return d.id == fx::DiagId::LispsmChoiceInvalid; });
+    };
+    fx::DiagnosticList again;
+    renderer->render(*scene, options, again);
+    EXPECT_TRUE(reportsChoice(again)) << again.str();
+    ASSERT_TRUE(renderer->setParameterFromText("NOpt", "Scherzer2005", diagnostics)) << diagnostics.str();
+    fx::DiagnosticList valid;
+    renderer->render(*scene, options, valid);
+    EXPECT_FALSE(reportsChoice(valid)) << valid.str();
 }
 
 const fx::Diagnostic* findParameterizationError(const fx::DiagnosticList& diagnostics) {

@@ -122,6 +122,66 @@ technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = co
     EXPECT_EQ(value->asFloat(), 0.5f * 2.0f + 0.5f);
 }
 
+// A swizzle and a matrix member are stored as their components, read from the letters when compiled: the
+// program read from the file picks the same numbers.
+TEST(CompiledEffectFile, MembersRoundTripAsComponents) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+float4 Offset = {1, 2, 3, 4};
+float4x4 Shift = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
+    DepthBias = Offset.wy.x + Shift._m12 * Shift._23_11.y + Offset.b; } }
+)",
+                                                       "members.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "members.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    const RenderStateSetting& state = read->techniques.at(0).passes.at(0).states.at(0);
+    ASSERT_FALSE(state.constant);
+    const std::optional<Value> value = state.value.run(read->initialValues, &diagnostics);
+    ASSERT_TRUE(value) << diagnostics.str();
+    // w = 4; row 1 column 2 (zero-based) = 7; ._11 one-based = 1; b = 3.
+    EXPECT_EQ(value->asFloat(), 4.0f + 7.0f * 1.0f + 3.0f);
+}
+
+// A script operand the runtime would follow (a parameter, light or technique index) that points nowhere is
+// a corrupt file, refused before the runtime sees it.
+TEST(CompiledEffectFile, AScriptOperandOutOfRangeIsCorrupt) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+float4 Background = {0, 0, 0, 1};
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t < string Script = "ClearSetColor=Background; Clear=Color; RenderPort=sun; Pass=p;"; >
+{ pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                                       "operands.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.at(0).script.size(), 4u);
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.techniques[0].script[0].parameter = static_cast<int>(damaged.parameters.size());
+        EXPECT_NE(readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectScriptParameterOutOfRange)
+                      .find("a script names a parameter out of range"),
+                  std::string::npos);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.techniques[0].script[2].light = 1;
+        EXPECT_NE(readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectScriptLightOutOfRange)
+                      .find("a script names a light out of range"),
+                  std::string::npos);
+    }
+}
+
 // Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
 TEST(CompiledEffectFile, StreamOutputRoundTrips) {
     DiagnosticList diagnostics;

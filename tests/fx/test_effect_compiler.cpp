@@ -492,6 +492,81 @@ technique t < string Script = "Pass=second; Pass=P0; Pass=Twice;"; >
     EXPECT_EQ(script[2].pass, 2);
 }
 
+// Every operand a script names is resolved by the compiler: parameters and lights to indices, literals to
+// values, the global selector to technique indices; the runtime reads these and looks up no name.
+TEST(EffectCompiler, ScriptOperandsAreResolvedToIndicesAndValues) {
+    const std::string source = R"(float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+float4x4 LightView : View < string frustum = "sun"; >;
+bool UseFast = true;
+int Count = 2;
+int Index;
+float4 Background = {0, 0, 0, 1};
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; >;
+float Script : STANDARDSGLOBAL < string Script = "Technique=UseFast?fast:slow;"; > = 0.8;
+technique slow { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+technique fast < string Script = "RenderColorTarget0=Map; RenderPort=lamp; ClearSetColor=Background; ClearSetDepth=0.5; ClearSetColor=1,0,0,1; LoopByCount=Count; LoopGetIndex=Index; Pass=p; LoopEnd=; RenderPort=sun; RenderPort=;"; >
+{
+    pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+)";
+    DiagnosticList diags;
+    auto effect = parseEffectSource(source, "operands.fx", ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    auto compiled = compileEffect(effect, CompileOptions{}, diags);
+    ASSERT_TRUE(compiled) << diags.str();
+    const auto parameter = [&](const std::string& name) {
+        return static_cast<int>(compiled->findParameter(name) - compiled->parameters.data());
+    };
+    // The parameters' lights first, then the scripts'.
+    EXPECT_EQ(compiled->lights, (std::vector<std::string>{"sun", "lamp"}));
+
+    ASSERT_EQ(compiled->globalScript.size(), 1u);
+    const ScriptCommand& select = compiled->globalScript[0];
+    EXPECT_EQ(select.selectorParameter, parameter("UseFast"));
+    EXPECT_EQ(select.technique, 1);
+    EXPECT_EQ(select.techniqueIfFalse, 0);
+
+    const std::vector<ScriptCommand>& script = compiled->techniques[1].script;
+    ASSERT_EQ(script.size(), 11u);
+    EXPECT_EQ(script[0].parameter, parameter("Map"));
+    EXPECT_EQ(script[1].light, 1);
+    EXPECT_EQ(script[2].parameter, parameter("Background"));
+    EXPECT_FALSE(script[2].literal);
+    EXPECT_EQ(script[3].parameter, -1);
+    ASSERT_TRUE(script[3].literal);
+    EXPECT_EQ(script[3].literal->data, (std::vector<float>{0.5f}));
+    ASSERT_TRUE(script[4].literal);
+    EXPECT_EQ(script[4].literal->data, (std::vector<float>{1, 0, 0, 1}));
+    EXPECT_EQ(script[5].parameter, parameter("Count"));
+    EXPECT_EQ(script[6].parameter, parameter("Index"));
+    EXPECT_EQ(script[7].pass, 0);
+    EXPECT_EQ(script[9].light, 0);
+    EXPECT_EQ(script[10].light, -1);
+}
+
+// Technique=A with a name the effect lacks, and FX Composer's alternatives, resolve to what runs.
+TEST(EffectCompiler, TechniqueSelectorsResolveToTheTechniqueThatRuns) {
+    const auto selected = [](const std::string& selector) {
+        const std::string source = R"(float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+float Script : STANDARDSGLOBAL < string Script = ")" +
+                                   selector + R"("; > = 0.8;
+technique Simple { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+technique Textured { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+        DiagnosticList diags;
+        auto effect = parseEffectSource(source, "selector.fx", ParseOptions{}, diags);
+        auto compiled = effect ? compileEffect(effect, CompileOptions{}, diags) : nullptr;
+        EXPECT_TRUE(compiled) << diags.str();
+        return compiled ? compiled->globalScript.at(0).technique : -2;
+    };
+    EXPECT_EQ(selected("Technique=Textured;"), 1);
+    EXPECT_EQ(selected("Technique=Missing;"), -1);  // the first technique runs
+    EXPECT_EQ(selected("Technique=Technique?Simple10:Textured:Simple;"), 1);
+    EXPECT_EQ(selected("Technique=Technique?Simple10:Textured10;"), -1);
+}
+
 TEST(EffectCompiler, AnUnknownLeaveOutConditionIsALocatedError) {
     DiagnosticList diags;
     auto effect = parseEffectSource(R"(

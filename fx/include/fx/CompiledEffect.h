@@ -384,6 +384,10 @@ struct CompiledEffect {
     std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser or the compiler
     bool hasGlobalScript = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
+    // Every light the effect names, once each, as written: the parameters' `frustum`/`Object`
+    // annotations in parameter order, then the scripts' RenderPort=lightN (ScriptCommand::light indexes
+    // it). The runtime finds each in the scene by name, since only the scene knows its lights.
+    std::vector<std::string> lights;
     // The most iterations one LoopByCount may run (CompileOptions::maxScriptLoopCount): the compiler
     // checks literal counts, the runtime a parameter's value.
     int maxScriptLoopCount = 1024;

@@ -816,6 +816,15 @@ FX_DIAGNOSTIC(CompiledEffectStreamOutCapacityOutOfRange, Error,
               "the compiled effect file is corrupt: pass '{0}': a stream-output capacity out of range")
 FX_DIAGNOSTIC(CompiledEffectDrawAutoOutOfRange, Error,
               "the compiled effect file is corrupt: pass '{0}': DrawAuto names a pass out of range")
+FX_DIAGNOSTIC(CompiledEffectScriptParameterOutOfRange, Error,
+              "the compiled effect file is corrupt: a script names a parameter out of range")
+FX_DIAGNOSTIC(CompiledEffectScriptLightOutOfRange, Error,
+              "the compiled effect file is corrupt: a script names a light out of range")
+FX_DIAGNOSTIC(CompiledEffectScriptTechniqueOutOfRange, Error,
+              "the compiled effect file is corrupt: a script names a technique out of range")
+FX_DIAGNOSTIC(CompiledEffectPreshaderMemberTooWide, Error,
+              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (a member of "
+              "more than 4 components)")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

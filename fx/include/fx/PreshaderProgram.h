@@ -36,7 +36,7 @@ public:
             Construct,  // pop `count`: a `type` from their components (float4(...))
             Intrinsic,  // pop `count`: the intrinsic `function` (mul, normalize, ...), spelled `text`
             InitList,   // pop `count`: { ... }
-            Member,     // pop 1: swizzle or matrix member `text`
+            Member,     // pop 1: swizzle or matrix member `text` (`member`)
             Index,      // pop 2: base[index]
             Convert,    // pop 1: to `type` (casts, the program's target type)
         };
@@ -113,14 +113,29 @@ public:
             Mul,
             Unknown,
         };
+        // Member: `text` read when the program is compiled, both ways the base's type (known when the
+        // program runs) may take it, so that running it reads no letters. As a swizzle of a scalar or
+        // vector (`.xy`, `.rgba`): each letter's component (kNoComponent: a letter naming none);
+        // swizzleCount 0 where the text is no swizzle's length (1 to 4). As a matrix member (`._m00_m11`,
+        // `._11`): each zero-based row and column (kNoComponent: a one-based 0); matrixCount 0 where the
+        // text is not one of at most 4.
+        static constexpr uint8_t kNoComponent = 0xff;
+        struct MemberComponents {
+            uint8_t swizzleCount = 0;
+            uint8_t swizzle[4] = {0, 0, 0, 0};
+            uint8_t matrixCount = 0;
+            uint8_t rows[4] = {0, 0, 0, 0};
+            uint8_t columns[4] = {0, 0, 0, 0};
+        };
         Op op = Op::Constant;
         Operator operation = Operator::Unknown;  // Unary, Binary
         Function function = Function::Unknown;   // Intrinsic
         uint32_t operand = 0;                    // Constant, Load, Fail
         uint32_t count = 0;                      // Construct, Intrinsic, InitList
-        std::string text;  // operator or intrinsic (for messages), member; never a parameter's name
-        TypeDesc type;     // Construct, Convert
-        SourceLoc loc;     // for the error it may report
+        std::string text;         // operator or intrinsic (for messages), member; never a parameter's name
+        TypeDesc type;            // Construct, Convert
+        MemberComponents member;  // Member
+        SourceLoc loc;            // for the error it may report
     };
     struct Error {
         DiagId id;

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <fx/Diagnostics.h>
+#include <fx/Value.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +61,30 @@ struct ScriptCommand {
     std::vector<std::string> selectorAlternatives;  // every name after '?', in order
     ClearWhat clear = ClearWhat::Color;             // Clear
     DrawWhat draw = DrawWhat::Geometry;             // Draw
+
+    // The operands, resolved by the compiler against the compiled effect (fx/CompiledEffect.h), so that
+    // the runtime looks up no name and parses no literal, at load or per frame. -1 where there is none.
+    // RenderColorTarget, RenderDepthStencilTarget, ClearSet*, LoopByCount, LoopGetIndex: the
+    // CompiledEffect::parameters index of the parameter `value` names.
+    int parameter = -1;
+    // ClearSet*, LoopByCount naming no parameter: the literal ("0.5" a scalar, "1,0,0,1" a vector).
+    std::optional<Value> literal;
+    // RenderPort=lightN: the CompiledEffect::lights index of the light (-1: the camera).
+    int light = -1;
+    // Dispatch=x,y,z: each term in order, a parameter (its index) or a count (-1 where it is neither;
+    // the compiler reported it).
+    struct DispatchTerm {
+        int parameter = -1;
+        float count = -1.0f;
+    };
+    std::vector<DispatchTerm> dispatch;
+    // Technique= (STANDARDSGLOBAL): CompiledEffect::techniques indices. `technique` runs when the
+    // selector's condition is true or the command has none (the name, or the first alternative the
+    // effect has), `techniqueIfFalse` when the condition parameter `selectorParameter` is false. -1: a
+    // name the effect lacks (its first technique runs).
+    int technique = -1;
+    int techniqueIfFalse = -1;
+    int selectorParameter = -1;
 };
 
 // Parses the value of a Script annotation. `script` is the annotation's string expression, whose string
@@ -73,7 +99,8 @@ std::vector<ScriptCommand> parseSasScript(const std::string& text, const SourceL
 std::string_view scriptCommandName(ScriptCommand::Kind kind);
 
 // Whether the name a script writes (`Pass=p0`) names the declaration `declared` (`pass P0`): case-blind, as
-// FX Composer and D3DX matched them. The compiler's checks and the runtime's interpreter both ask this.
+// FX Composer and D3DX matched them. The compiler asks it once per Pass= and records the index
+// (ScriptCommand::pass); the application's pass handle by name (EffectTechnique::pass) asks it too.
 bool scriptNameMatches(std::string_view written, std::string_view declared);
 
 }  // namespace fx

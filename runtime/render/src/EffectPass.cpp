@@ -64,8 +64,9 @@ ScriptTargets scriptTargets(const EffectResources& resources, const fx::Compiled
         const GpuTexture* texture = nullptr;
         if (!command.value.empty()) {
             out.effectTargets = true;
-            const std::optional<size_t> index = resources.findParameter(command.value);
-            auto found = index ? resources.textures.find(*index) : resources.textures.end();
+            auto found = command.parameter >= 0
+                             ? resources.textures.find(static_cast<size_t>(command.parameter))
+                             : resources.textures.end();
             if (found == resources.textures.end()) {
                 out.missing = command.value;
                 out.missingLoc = command.loc;

@@ -20,14 +20,12 @@ EffectPool::Slot* EffectPool::join(const std::string& name, const fx::TypeDesc& 
     return &slot;
 }
 
-void EffectPool::publish(const std::string& name, const fx::Value& value) {
-    auto it = mSlots.find(name);
-    if (it == mSlots.end()) return;
+void EffectPool::publish(Slot& slot, const fx::Value& value) {
     // The value again (an application's setter each frame, a script's loop of one) changes nothing, so
     // that the other effects' values keep their change stamps and the passes leave-out cached on them.
-    if (it->second.value.data == value.data && it->second.value.string == value.string) return;
-    it->second.value = value;
-    ++it->second.generation;
+    if (slot.value.data == value.data && slot.value.string == value.string) return;
+    slot.value = value;
+    ++slot.generation;
 }
 
 const EffectPool::Slot* EffectPool::find(const std::string& name) const {

@@ -205,7 +205,7 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
     const Light* light = scene.findLight(lightName);
     if (!light) return std::nullopt;
     fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
-    SemanticBinder binder(mImpl->parameterInfo());
+    SemanticBinder binder(mImpl->parameterInfo(), mImpl->effect().lights);
     // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
     std::optional<VisibleSamples> visible;
     if (binder.wantsVisibleSamples(mImpl->values))
@@ -214,7 +214,7 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     binder.prepare(scene, scene.bounds(),
                    static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   diagnostics, visible ? &*visible : nullptr);
+                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
     return binder.lightFit(*light);
 }
 
@@ -237,8 +237,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     EffectResources::TechniqueChoice& choice = mImpl->techniqueChoice;
     if (!choice.valid || choice.requested != options.technique) {
         const fx::CompiledTechnique* chosen = ScriptInterpreter::selectTechnique(
-            mImpl->effect(), options.technique, [this](const std::string& name) { return mImpl->find(name); },
-            diagnostics);
+            mImpl->effect(), options.technique, mImpl->values, diagnostics);
         if (!chosen) return false;
         choice.technique = static_cast<size_t>(chosen - mImpl->effect().techniques.data());
         choice.requested = options.technique;
@@ -274,7 +273,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     binder.prepare(frameScene, mImpl->sceneCache.bounds,
                    static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   diagnostics, visible ? &*visible : nullptr);
+                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
     const std::vector<PassUse>& uses = mImpl->passUses[techniqueIndex];
 
     std::vector<PassPreshaders>& preshaders = mImpl->preshaders[techniqueIndex];
@@ -300,7 +299,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         plan.beginRecording();
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
                                mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
         // FrameOptions::outputTargets, found by name again only when the names change.
@@ -334,9 +333,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran =
-        ScriptInterpreter::run(*technique, *mImpl->scriptOperands, mImpl->effect().maxScriptLoopCount,
-                               mImpl->frameScratch.scriptLoops, executor, diagnostics);
+    const bool ran = ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
+                                            mImpl->frameScratch.scriptLoops, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;
     FramebufferCache::bindDefault();

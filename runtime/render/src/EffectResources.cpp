@@ -364,10 +364,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
             r.values[i] = fx::zeroValue(parameters[i].type);
     }
 
-    r.binder = std::make_unique<SemanticBinder>(parameters);
-    r.scriptOperands = std::make_unique<ScriptOperands>(
-        *r.mCompiled, [&r](std::string_view name) { return r.findParameter(name); },
-        [&r](std::string_view light) { return r.binder->lightSlot(light); });
+    r.binder = std::make_unique<SemanticBinder>(parameters, r.mCompiled->lights);
     for (const fx::CompiledTechnique& technique : r.mCompiled->techniques)
         r.passUses.push_back(runtime::passUses(technique, parameters.size(), *r.binder));
 

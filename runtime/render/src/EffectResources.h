@@ -68,9 +68,8 @@ public:
     PoolMembership pool;            // the `shared` parameters' values, with the other effects of a pool
 
     // [SECTION] Resolved once, when the effect is created (names as indices, kept for the effect's life)
-    std::unique_ptr<SemanticBinder> binder;          // the semantics, classified; prepared for each frame
-    std::unique_ptr<ScriptOperands> scriptOperands;  // what the scripts' commands name
-    std::vector<std::vector<PassUse>> passUses;      // [technique][pass]
+    std::unique_ptr<SemanticBinder> binder;      // the semantics, classified; prepared for each frame
+    std::vector<std::vector<PassUse>> passUses;  // [technique][pass]
     // The technique the last frame ran for FrameOptions::technique, where the choice reads no parameter.
     struct TechniqueChoice {
         bool valid = false;

@@ -51,7 +51,11 @@ bool HostScenePainter::ready() {
     if (mProgram || mFailed) return mProgram != 0;
     mProgram = linkRuntimeProgram(kVertexShader, kFragmentShader);
     mFailed = mProgram == 0;
-    return mProgram != 0;
+    if (mFailed) return false;
+    const char* const names[] = {"uWorld",      "uViewProjection", "uColor",
+                                 "uLightColor", "uLightDirection", "uLightPosition"};
+    for (size_t i = 0; i < mLocations.size(); ++i) mLocations[i] = gl::GetUniformLocation(mProgram, names[i]);
+    return true;
 }
 
 void HostScenePainter::draw(const Scene& scene, const SceneObject& object, const glm::mat4& view,
@@ -59,11 +63,9 @@ void HostScenePainter::draw(const Scene& scene, const SceneObject& object, const
     if (!ready()) return;
     gl::UseProgram(mProgram);
     const glm::mat4 viewProjection = projection * view;
-    gl::UniformMatrix4fv(gl::GetUniformLocation(mProgram, "uWorld"), 1, GL_FALSE,
-                         glm::value_ptr(object.world));
-    gl::UniformMatrix4fv(gl::GetUniformLocation(mProgram, "uViewProjection"), 1, GL_FALSE,
-                         glm::value_ptr(viewProjection));
-    gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uColor"), 1, glm::value_ptr(object.color));
+    gl::UniformMatrix4fv(mLocations[0], 1, GL_FALSE, glm::value_ptr(object.world));
+    gl::UniformMatrix4fv(mLocations[1], 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl::Uniform3fv(mLocations[2], 1, glm::value_ptr(object.color));
     glm::vec3 color(1.0f), direction(0.0f), position = scene.camera.position;
     if (!scene.lights.empty()) {
         const Light& light = scene.lights.front();
@@ -71,9 +73,9 @@ void HostScenePainter::draw(const Scene& scene, const SceneObject& object, const
         position = light.position;
         if (light.type != Light::Type::Point) direction = light.direction;
     }
-    gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightColor"), 1, glm::value_ptr(color));
-    gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightDirection"), 1, glm::value_ptr(direction));
-    gl::Uniform3fv(gl::GetUniformLocation(mProgram, "uLightPosition"), 1, glm::value_ptr(position));
+    gl::Uniform3fv(mLocations[3], 1, glm::value_ptr(color));
+    gl::Uniform3fv(mLocations[4], 1, glm::value_ptr(direction));
+    gl::Uniform3fv(mLocations[5], 1, glm::value_ptr(position));
     static const std::vector<fx::VertexInput> kInputs = {{"POSITION0", 0, 3, {fx::VertexStream::Position, 0}},
                                                          {"NORMAL0", 1, 3, {fx::VertexStream::Normal, 0}}};
     mesh.draw(kInputs);

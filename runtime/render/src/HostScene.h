@@ -12,6 +12,8 @@
 #include <glm/glm.hpp>
 #include <runtime/Scene.h>
 
+#include <array>
+
 namespace runtime {
 
 class GpuMesh;
@@ -39,6 +41,8 @@ public:
 
 private:
     unsigned int mProgram = 0;  // GLuint
+    // uWorld, uViewProjection, uColor, uLightColor, uLightDirection, uLightPosition: found once, at link.
+    std::array<int, 6> mLocations{};
     bool mFailed = false;
 };
 

@@ -30,7 +30,7 @@ bool PoolMembership::join(std::shared_ptr<EffectPool> pool, const EffectResource
 void PoolMembership::published(const EffectResources& resources, size_t index) {
     for (Shared& shared : mShared) {
         if (shared.parameter != index) continue;
-        mPool->publish(resources.parameterInfo()[index].name, resources.values[index]);
+        EffectPool::publish(*shared.slot, resources.values[index]);
         shared.seen = shared.slot->generation;
     }
 }

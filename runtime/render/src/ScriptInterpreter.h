@@ -9,52 +9,22 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
-#include <optional>
 #include <string>
-#include <string_view>
-#include <unordered_map>
 #include <vector>
 
 namespace runtime {
-
-// What a command's text names, resolved once when the effect is created (ScriptOperands): the frame
-// looks up no name and parses no literal.
-struct ScriptOperand {
-    // RenderColorTarget/RenderDepthStencilTarget (a texture), ClearSet*, LoopByCount, LoopGetIndex: the
-    // parameter the command names, or -1 (the frame's own target for an empty name, else none).
-    int parameter = -1;
-    std::optional<fx::Value> literal;  // ClearSet*/LoopByCount: a literal value ("0.5", "1,0,0,1")
-    int lightSlot = -1;                // RenderPort=lightN: its SemanticBinder::lightSlot
-    // Dispatch=x,y,z: each term's parameter (-1: none) and literal count, in order.
-    std::vector<int> dispatchParameters;
-    std::vector<float> dispatchCounts;
-};
-
-// Every command's operand, by command, for the scripts of one effect.
-class ScriptOperands {
-public:
-    // `findParameter` resolves a parameter's name, `lightSlot` registers a light's (SemanticBinder).
-    ScriptOperands(const fx::CompiledEffect& effect,
-                   const std::function<std::optional<size_t>(std::string_view)>& findParameter,
-                   const std::function<int(std::string_view)>& lightSlot);
-    const ScriptOperand& of(const fx::ScriptCommand& command) const;
-
-private:
-    std::unordered_map<const fx::ScriptCommand*, ScriptOperand> mOperands;
-    ScriptOperand mNone;
-};
 
 // What a script asks for. The interpreter calls these in script order.
 class ScriptTarget {
 public:
     virtual ~ScriptTarget() = default;
     virtual void beginPass(const fx::CompiledPass& pass) = 0;
-    // `texture`: the name the script wrote ("" = the frame's colour or depth target), `parameter` the
-    // parameter it names (ScriptOperand::parameter, -1 if none).
+    // `texture`: the name the script wrote ("" = the frame's colour or depth target), for messages;
+    // `parameter` the parameter it names (fx::ScriptCommand::parameter, -1 if none).
     virtual void setColorTarget(int index, const std::string& texture, int parameter) = 0;
     virtual void setDepthTarget(const std::string& texture, int parameter) = 0;
-    // "" = the camera; `lightSlot` the light's SemanticBinder::lightSlot; `cascade` >= 0: that sub-view of
+    // "" = the camera; `lightSlot` the light's SemanticBinder::lightSlot (its fx::CompiledEffect::lights
+    // index, fx::ScriptCommand::light); `cascade` >= 0: that sub-view of
     // the light (RenderPort=light0.cascade2); `loc` is the command's, for errors only the frame can find (a
     // light or cascade the scene does not have).
     virtual void setRenderPort(const std::string& light, int lightSlot, int cascade,
@@ -90,12 +60,12 @@ using ScriptLoopStack = std::vector<ScriptLoop>;
 class ScriptInterpreter {
 public:
     // The technique a frame runs: `requested` if given, else the STANDARDSGLOBAL script's Technique=
-    // (with Cond?A:B selectors, the condition's value from `parameterByName`), else the first. nullptr (with
-    // UnknownTechnique) if it does not exist.
-    static const fx::CompiledTechnique* selectTechnique(
-        const fx::CompiledEffect& effect, const std::string& requested,
-        const std::function<const fx::Value*(const std::string&)>& parameterByName,
-        fx::DiagnosticSink& diagnostics);
+    // (with Cond?A:B selectors, the condition's value from `values`, by the indices the compiler
+    // resolved), else the first. nullptr (with UnknownTechnique) if `requested` does not exist.
+    static const fx::CompiledTechnique* selectTechnique(const fx::CompiledEffect& effect,
+                                                        const std::string& requested,
+                                                        const std::vector<fx::Value>& values,
+                                                        fx::DiagnosticSink& diagnostics);
     // True if selectTechnique's answer for `requested` can depend on a parameter's value (a Technique=
     // Cond?A:B selector): otherwise it can be kept for the effect's lifetime.
     static bool selectionReadsParameters(const fx::CompiledEffect& effect, const std::string& requested);
@@ -106,8 +76,8 @@ public:
     // CompiledEffect::maxScriptLoopCount) is reported and the script stops, never a hang. Returns false if
     // the script could not run to its end.
     // `loops` is the caller's kept stack (emptied first).
-    static bool run(const fx::CompiledTechnique& technique, const ScriptOperands& operands, int maxLoopCount,
-                    ScriptLoopStack& loops, ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+    static bool run(const fx::CompiledTechnique& technique, int maxLoopCount, ScriptLoopStack& loops,
+                    ScriptTarget& target, fx::DiagnosticSink& diagnostics);
 
     // Whether the technique's scripts clear the frame's own colour target (a Clear=Color while
     // RenderColorTarget0 is the frame), as FX Composer's scene effects do; material effects do not.
@@ -115,13 +85,13 @@ public:
 
 private:
     static bool runPass(const fx::CompiledPass& pass, const fx::CompiledTechnique& technique,
-                        const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
-                        ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+                        int maxLoopCount, ScriptLoopStack& loops, ScriptTarget& target,
+                        fx::DiagnosticSink& diagnostics);
     // A pass script's loops go on the stack above its technique script's open ones.
     static bool runCommands(const std::vector<fx::ScriptCommand>& commands,
                             const fx::CompiledTechnique& technique, const fx::CompiledPass* pass,
-                            const ScriptOperands& operands, int maxLoopCount, ScriptLoopStack& loops,
-                            ScriptTarget& target, fx::DiagnosticSink& diagnostics);
+                            int maxLoopCount, ScriptLoopStack& loops, ScriptTarget& target,
+                            fx::DiagnosticSink& diagnostics);
 };
 
 }  // namespace runtime

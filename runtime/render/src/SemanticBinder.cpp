@@ -285,7 +285,10 @@ constexpr std::pair<const char*, int> kTunableNames[] = {
 
 }  // namespace
 
-SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters) : mParameters(parameters) {
+SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
+                               const std::vector<std::string>& lights)
+    : mParameters(parameters) {
+    for (const std::string& light : lights) lightSlot(light);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
         FitInput input;
@@ -371,8 +374,8 @@ void SemanticBinder::resolveLights(const Scene& scene) {
 }
 
 void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, float aspect,
-                             const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics,
-                             const VisibleSamples* visible) {
+                             const std::vector<fx::Value>& values, const ParameterStamps& stamps,
+                             fx::DiagnosticSink& diagnostics, const VisibleSamples* visible) {
     mScene = &scene;
     mSceneBounds = sceneBounds;
     mAspect = aspect;
@@ -384,7 +387,7 @@ void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, floa
     // its tunables, before any light is fitted.
     mTunables = {};
     mFittedLights.clear();
-    for (const FitInput& input : mFitInputs) {
+    for (FitInput& input : mFitInputs) {
         const size_t i = input.parameter;
         const fx::ParameterInfo& parameter = mParameters[i];
         if (i < values.size() && !values[i].data.empty()) {
@@ -429,8 +432,13 @@ void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, floa
             }
         }
         if (input.tunable == Tunable::LispsmNOpt && i < values.size()) {
-            if (const std::optional<LispsmN> choice = parseLispsmN(values[i].string)) {
-                mTunables.lispsmN = *choice;
+            const uint64_t stamp = i < stamps.stamps.size() ? stamps.stamps[i] : FitInput::kNeverRead;
+            if (stamp == FitInput::kNeverRead || stamp != input.readAt) {
+                input.lispsmN = parseLispsmN(values[i].string);
+                input.readAt = stamp;
+            }
+            if (input.lispsmN) {
+                mTunables.lispsmN = *input.lispsmN;
             } else {
                 diagnostics.report(fx::DiagId::LispsmChoiceInvalid, parameter.loc,
                                    {values[i].string, parameter.name});

@@ -70,7 +70,9 @@ public:
     // Classifies every parameter's semantic and registers the lights its annotations name, once, when the
     // effect is created: a frame looks up no semantic and no light by name. Parameters with semantics the
     // runtime does not know are left alone (they are the user's own).
-    explicit SemanticBinder(const std::vector<fx::ParameterInfo>& parameters);
+    // `lights` (fx::CompiledEffect::lights) take the first slots, in order: slot k is lights[k], the index
+    // the compiler gave RenderPort=lightN (fx::ScriptCommand::light).
+    SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const std::vector<std::string>& lights);
 
     // The slot of a light an effect names (`RenderPort=light0`, a `frustum`/`Object` annotation), registered
     // when the effect is created; prepare() resolves every slot against the frame's scene.
@@ -84,10 +86,11 @@ public:
     // `sceneBounds` is scene.bounds(), which costs a pass over every vertex: the caller computes it once.
     // `aspect` (the frame's width / height) serves view-dependent light fits. `visible` (may be null): what
     // the camera sees this frame, for the fits of an effect that asks for it (wantsVisibleSamples).
-    // Mistakes of the annotations and the scene are reported to `diagnostics` every frame.
+    // Mistakes of the annotations and the scene are reported to `diagnostics` every frame. `stamps` (of
+    // `values`): a string tunable is read again only when its parameter changed.
     void prepare(const Scene& scene, const Bounds& sceneBounds, float aspect,
-                 const std::vector<fx::Value>& values, fx::DiagnosticSink& diagnostics,
-                 const VisibleSamples* visible = nullptr);
+                 const std::vector<fx::Value>& values, const ParameterStamps& stamps,
+                 fx::DiagnosticSink& diagnostics, const VisibleSamples* visible = nullptr);
 
     // True if a parameter with semantic LightFitVisibleSamples is set: the frame must find the visible
     // samples (VisibleSamplePass) before the lights are fitted.
@@ -203,6 +206,10 @@ private:
         Tunable tunable = Tunable::None;
         int parameterizationSlot = -1;  // a Parameterization annotation's light, or -1
         std::optional<LightParameterization> method;
+        // LiSPSMNOpt: the choice its string names (nullopt: none), read at the parameter's stamp `readAt`.
+        static constexpr uint64_t kNeverRead = ~uint64_t(0);
+        uint64_t readAt = kNeverRead;
+        std::optional<LispsmN> lispsmN;
     };
     static bool dependsOnObject(Kind kind);
     void write(const Binding& binding, const RenderPortView& port, const SceneObject* object, float time,

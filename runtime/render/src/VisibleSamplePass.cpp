@@ -49,6 +49,10 @@ bool VisibleSamplePass::ready(int width, int height) {
     if (!mProgram && !mFailed) {
         mProgram = linkRuntimeProgram(kVertexShader, kFragmentShader);
         mFailed = mProgram == 0;
+        if (mProgram) {
+            mViewProjectionLocation = gl::GetUniformLocation(mProgram, "uViewProjection");
+            mWorldLocation = gl::GetUniformLocation(mProgram, "uWorld");
+        }
     }
     if (!mProgram) return false;
     if (mFramebuffer && width == mWidth && height == mHeight) return true;
@@ -108,9 +112,7 @@ std::optional<VisibleSamples> VisibleSamplePass::run(
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const glm::mat4 viewProjection = scene.camera.projection(aspect) * scene.camera.view();
         gl::UseProgram(mProgram);
-        gl::UniformMatrix4fv(gl::GetUniformLocation(mProgram, "uViewProjection"), 1, GL_FALSE,
-                             glm::value_ptr(viewProjection));
-        const GLint worldLocation = gl::GetUniformLocation(mProgram, "uWorld");
+        gl::UniformMatrix4fv(mViewProjectionLocation, 1, GL_FALSE, glm::value_ptr(viewProjection));
         std::vector<uint32_t> inFrustum;
         if (bvh.empty()) {
             for (size_t i = 0; i < scene.objects.size(); ++i) inFrustum.push_back(static_cast<uint32_t>(i));
@@ -122,7 +124,7 @@ std::optional<VisibleSamples> VisibleSamplePass::run(
         for (uint32_t index : inFrustum) {
             const SceneObject& object = scene.objects[index];
             if (!object.mesh) continue;
-            gl::UniformMatrix4fv(worldLocation, 1, GL_FALSE, glm::value_ptr(object.world));
+            gl::UniformMatrix4fv(mWorldLocation, 1, GL_FALSE, glm::value_ptr(object.world));
             meshOf(object).draw(kInputs);
         }
         std::vector<float> positions(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);

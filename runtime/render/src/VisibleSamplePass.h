@@ -38,6 +38,7 @@ private:
     bool ready(int width, int height);
 
     GLuint mProgram = 0;
+    GLint mViewProjectionLocation = -1, mWorldLocation = -1;  // found once, when the program links
     bool mFailed = false;
     GLuint mFramebuffer = 0;
     GLuint mPositions = 0;  // RGBA32F: world position, coverage in w

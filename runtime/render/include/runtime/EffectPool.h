@@ -37,8 +37,9 @@ public:
     // (its type is then in `existing`).
     Slot* join(const std::string& name, const fx::TypeDesc& type, const fx::Value& initial,
                fx::TypeDesc& existing);
-    // A new value of the shared parameter `name` (a member's setter calls it).
-    void publish(const std::string& name, const fx::Value& value);
+    // A new value of a shared parameter, in the slot join() gave (a member's setter calls it, through the
+    // slot it holds: by no name).
+    static void publish(Slot& slot, const fx::Value& value);
     // The slot of `name`, or nullptr if no effect of the pool declares it.
     const Slot* find(const std::string& name) const;
 
