@@ -3,7 +3,11 @@
 on the same scene with at most half its misclassified % at no more than its full-cost frame time (each side
 at its own map size and settings), and the nearest miss where there is none.
 
-usage: scripts/peer_dominance.py RESULTS.json [RESULTS.json ...]   (markdown on stdout)
+usage: scripts/peer_dominance.py [--svg PREFIX] RESULTS.json [RESULTS.json ...]   (markdown on stdout)
+
+--svg PREFIX also draws, per scene, PREFIX-SCENE.svg: every run's misclassified % against its full-cost frame
+time (the same medians as the table), both axes logarithmic, the two sides in two colours, so that a plot of
+repetitions shows what the table judges rather than one repetition's times.
 
 The same run (scene, effect or peer, technique, map size, settings) in several files is one run measured
 several times: its frame time is the median of the files' medians, its error the first file's (errors do
@@ -11,8 +15,10 @@ not depend on the machine's load). Give only outputs of one sitting on one machi
 repetitions of the two sides' benches in that sitting evens out a drifting load.
 """
 import json
+import math
 import statistics
 import sys
+from xml.sax.saxutils import escape
 
 
 def settings_of(document, run):
@@ -48,8 +54,56 @@ def read_runs(paths):
     return list(merged.values())
 
 
-def main(paths):
+def draw_svg(runs, scene, path):
+    points = [r for r in runs if r["scene"] == scene and r["misclassified"] > 0 and r["time"] > 0]
+    width, height, left, right, top, bottom = 1000, 640, 80, 300, 40, 60
+
+    def span(values):
+        lo, hi = math.log10(min(values)), math.log10(max(values))
+        pad = max(0.05 * (hi - lo), 0.05)
+        return lo - pad, hi + pad
+
+    tx, ty = span([r["time"] for r in points]), span([r["misclassified"] for r in points])
+    x = lambda t: left + (math.log10(t) - tx[0]) / (tx[1] - tx[0]) * (width - left - right)
+    y = lambda e: height - bottom - (math.log10(e) - ty[0]) / (ty[1] - ty[0]) * (height - top - bottom)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" '
+           f'font-size="11"><rect width="100%" height="100%" fill="#fff"/>',
+           f'<text x="{left}" y="20" font-size="14">{escape(scene)}: misclassified % against full-cost frame ms '
+           f'(median of the repetitions; log-log)</text>']
+    for decade in range(math.floor(tx[0]), math.ceil(tx[1]) + 1):
+        for m in (1, 2, 5):
+            v = m * 10.0 ** decade
+            if tx[0] <= math.log10(v) <= tx[1]:
+                out.append(f'<line x1="{x(v):.1f}" y1="{top}" x2="{x(v):.1f}" y2="{height - bottom}" stroke="#ddd"/>'
+                           f'<text x="{x(v):.1f}" y="{height - bottom + 15}" text-anchor="middle">{v:g}</text>')
+    for decade in range(math.floor(ty[0]), math.ceil(ty[1]) + 1):
+        for m in (1, 2, 5):
+            v = m * 10.0 ** decade
+            if ty[0] <= math.log10(v) <= ty[1]:
+                out.append(f'<line x1="{left}" y1="{y(v):.1f}" x2="{width - right}" y2="{y(v):.1f}" stroke="#ddd"/>'
+                           f'<text x="{left - 5}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
+    out.append(f'<text x="{(left + width - right) / 2}" y="{height - 20}" text-anchor="middle">full-cost frame ms</text>')
+    for r in sorted(points, key=lambda r: r["time"]):
+        colour = "#d62728" if r["peer"] else "#1f77b4"
+        name = label(r).replace("`", "").replace("²", "^2")
+        out.append(f'<circle cx="{x(r["time"]):.1f}" cy="{y(r["misclassified"]):.1f}" r="4" fill="{colour}">'
+                   f'<title>{escape(name)}: {r["misclassified"]:.3f} % in {r["time"]:.1f} ms</title></circle>')
+    # A legend of every run beside the plot, in the order of error, since labels on the points would overlap.
+    for i, r in enumerate(sorted(points, key=lambda r: r["misclassified"])):
+        colour = "#d62728" if r["peer"] else "#1f77b4"
+        name = label(r).replace("`", "").replace("²", "^2")
+        out.append(f'<text x="{width - right + 10}" y="{top + 12 * (i + 1)}" fill="{colour}">'
+                   f'{escape(name)} {r["misclassified"]:.3f} % {r["time"]:.0f} ms</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main(paths, svg_prefix=None):
     runs = read_runs(paths)
+    if svg_prefix:
+        for scene in sorted({r["scene"] for r in runs}):
+            draw_svg(runs, scene, f"{svg_prefix}-{scene}.svg")
     print("| scene | peer run | misclassified % | full ms (reps) | shadowfx run with ≤ half the error in ≤ the time |")
     print("|---|---|---:|---:|---|")
     unbeaten = 0
@@ -73,6 +127,10 @@ def main(paths):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
+    arguments = sys.argv[1:]
+    prefix = None
+    if arguments[:1] == ["--svg"] and len(arguments) > 1:
+        prefix, arguments = arguments[1], arguments[2:]
+    if not arguments:
         sys.exit(__doc__)
-    main(sys.argv[1:])
+    main(arguments, prefix)
