@@ -123,11 +123,11 @@ size_t skipCommentOrString(const std::string& text, size_t i) {
 }  // namespace
 
 std::optional<std::string> bindParameters(const std::string& text, const std::string& name,
-                                          size_t parameterCount,
+                                          const std::string& newName, size_t parameterCount,
                                           const std::map<std::string, std::string>& bound) {
     // The signature: the first `name (` outside comments; its parameters split at the commas outside
     // parentheses and template brackets (`InputPatch<VSOut, 3>`).
-    size_t open = std::string::npos;
+    size_t open = std::string::npos, nameAt = 0;
     for (size_t i = 0; i < text.size() && open == std::string::npos;) {
         if (size_t end = skipCommentOrString(text, i); end != i) {
             i = end;
@@ -137,8 +137,10 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
             size_t j = i;
             while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
             if (text.compare(start, i - start, name) == 0 && i - start == name.size() && j < text.size() &&
-                text[j] == '(')
+                text[j] == '(') {
                 open = j;
+                nameAt = start;
+            }
         } else {
             ++i;
         }
@@ -198,7 +200,9 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
         lineBreaks.clear();
         first = false;
     }
-    std::string out = text.substr(0, open + 1) + signature + lineBreaks;
+    std::string out = text.substr(0, nameAt) + newName +
+                      text.substr(nameAt + name.size(), open + 1 - nameAt - name.size()) + signature +
+                      lineBreaks;
     // The body: each use of a bound name (not a member `.name`) names the effect object.
     for (size_t i = close; i < text.size();) {
         if (size_t end = skipCommentOrString(text, i); end != i) {
@@ -215,6 +219,85 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
         } else {
             out += text[i++];
         }
+    }
+    return out;
+}
+
+std::string bindCallArguments(const std::string& text, const std::set<std::string>& objects,
+                              const CallBinder& binder) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+        if (size_t end = skipCommentOrString(text, i); end != i) {
+            out.append(text, i, end - i);
+            i = end;
+            continue;
+        }
+        if (!isIdentChar(text[i]) || (i > 0 && isIdentChar(text[i - 1]))) {
+            out += text[i++];
+            continue;
+        }
+        const size_t start = i;
+        while (i < text.size() && isIdentChar(text[i])) ++i;
+        const std::string word = text.substr(start, i - start);
+        size_t before = start, open = i;
+        while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+        while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
+        out += word;
+        if (open >= text.size() || text[open] != '(' || (before > 0 && text[before - 1] == '.')) continue;
+        // The arguments, split at the commas outside brackets.
+        std::vector<std::string> arguments{""};
+        size_t close = std::string::npos;
+        int nesting = 0;
+        for (size_t j = open + 1; j < text.size();) {
+            if (size_t end = skipCommentOrString(text, j); end != j) {
+                arguments.back().append(text, j, end - j);
+                j = end;
+                continue;
+            }
+            const char c = text[j++];
+            if (c == '(' || c == '[' || c == '{') ++nesting;
+            if ((c == ')' || c == ']' || c == '}') && nesting > 0) {
+                --nesting;
+            } else if (c == ')') {
+                close = j - 1;
+                break;
+            } else if (c == ',' && nesting == 0) {
+                arguments.emplace_back();
+                continue;
+            }
+            arguments.back() += c;
+        }
+        if (close == std::string::npos) continue;
+        if (arguments.size() == 1 && arguments[0].find_first_not_of(" \t\r\n") == std::string::npos)
+            arguments.clear();
+        std::map<size_t, std::string> passed;
+        for (size_t a = 0; a < arguments.size(); ++a) {
+            const size_t first = arguments[a].find_first_not_of(" \t\r\n");
+            const size_t last = arguments[a].find_last_not_of(" \t\r\n");
+            if (first == std::string::npos) continue;
+            const std::string name = arguments[a].substr(first, last + 1 - first);
+            if (objects.count(name)) passed[a] = name;
+        }
+        if (passed.empty()) continue;  // the arguments are scanned as the text goes on
+        const std::optional<std::string> callee = binder(word, arguments.size(), passed);
+        if (!callee) continue;
+        out.resize(out.size() - word.size());
+        out += *callee;
+        out.append(text, i, open + 1 - i);
+        std::string lineBreaks;
+        bool firstKept = true;
+        for (size_t a = 0; a < arguments.size(); ++a) {
+            if (passed.count(a)) {
+                lineBreaks.append(
+                    static_cast<size_t>(std::count(arguments[a].begin(), arguments[a].end(), '\n')), '\n');
+                continue;
+            }
+            out += (firstKept ? "" : ",") + lineBreaks + bindCallArguments(arguments[a], objects, binder);
+            lineBreaks.clear();
+            firstKept = false;
+        }
+        out += lineBreaks + ")";
+        i = close + 1;
     }
     return out;
 }
