@@ -337,6 +337,40 @@ TEST(D3d9HostEvaluation, LoopsLeftByBreakAndContinueFollowTheirInput) {
     EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 51, 51, 38), kMinObjectPixels);
 }
 
+// FX Composer's shadow includes build their texture-space bias as a static matrix from a function of a
+// tweakable (`static float4x4 BiasXf = make_bias_mat(Bias);`); compile arguments computed from it on the
+// host (a row vector times the matrix, one element) follow the tweakable.
+constexpr const char* kMatrixFunction = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Bias = 0.25;
+float4x4 make_bias_mat(float b) {
+    float4x4 m = float4x4(0.5, 0, 0, 0, 0, -0.5, 0, 0, 0, 0, 1, 0, 0.5, 0.5, -b, 1);
+    return transpose(transpose(m));
+}
+static float4x4 BiasXf = make_bias_mat(Bias);
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS(uniform float2 Corner, uniform float Depth) : COLOR { return float4(Corner, Depth, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS();
+    PixelShader = compile ps_3_0 PS(mul(float4(0.2, -0.4, 0, 1), BiasXf).xy, -BiasXf._43); } }
+)";
+
+TEST(D3d9HostEvaluation, MatrixFromAFunctionFollowsItsInput) {
+    auto renderer = loadEffect(kMatrixFunction, false, "matrix_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    for (const auto& [bias, blue] : {std::pair{"0.25", 64}, std::pair{"0.5", 128}}) {
+        SCOPED_TRACE(bias);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Bias", bias, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        // (0.1 + 0.5, 0.2 + 0.5, bias)
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 153, 178, blue), kMinObjectPixels);
+    }
+}
+
 // A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
 // where it stands, as before.
 TEST(D3d9HostEvaluation, LoopBoundedByAParameterIsReportedAtTheCall) {
