@@ -37,10 +37,10 @@ std::set<std::string> identifiersIn(const std::string& text) {
 }
 
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
-// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
-// the entry point first (bindParameters); one a function passes on to another through a parameter is not
-// rewritten: the parameter's name is not S (and if it is, it names the global anyway).
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` (`tex2Dproj`, `tex2Dlod`, `tex2Dbias`) for
+// the depth samplers S into calls of the comparison helpers. A depth sampler that a shader's compile
+// argument names is bound into the entry point first (bindParameters), and one passed on to a function's
+// sampler parameter into a copy of that function (bindCallArguments), so that every lookup names S.
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers) {
     std::string out;
     size_t i = 0;
@@ -70,7 +70,7 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
             out += "fx_lit";
             continue;
         }
-        if (word == "tex2D" || word == "tex2Dproj") {
+        if (word == "tex2D" || word == "tex2Dproj" || word == "tex2Dlod" || word == "tex2Dbias") {
             size_t p = skipSpace(i);
             if (p < text.size() && text[p] == '(') {
                 size_t s = skipSpace(p + 1), e = s;
@@ -90,14 +90,20 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
 }
 
 // The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
-// the texel (filtered when the sampler filters linearly), in every component.
+// the texel (filtered when the sampler filters linearly), in every component. A shadow map has one level,
+// so tex2Dlod's level, tex2Dbias's bias and tex2D's gradients select nothing.
 std::string depthSamplerHelpers(const std::string& s) {
-    std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
+    const std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
+    auto compare = [&](const std::string& xy, const std::string& z) {
+        return "{ return " + t + ".SampleCmpLevelZero(" + c + ", " + xy + ", " + z + ").xxxx; }\n";
+    };
     return "Texture2D " + t + ";\nSamplerComparisonState " + c + ";\n" + "float4 fx_tex2D_" + s +
-           "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
-           "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c +
-           ", uv.xy, uv.z).xxxx; }\n" + "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t +
-           ".SampleCmpLevelZero(" + c + ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
+           "(float4 uv) " + compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float3 uv) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float4 uv, float2 dx, float2 dy) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float3 uv, float2 dx, float2 dy) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2Dproj_" + s + "(float4 uv) " +
+           compare("uv.xy / uv.w", "uv.z / uv.w") + "float4 fx_tex2Dlod_" + s + "(float4 uv) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2Dbias_" + s + "(float4 uv) " + compare("uv.xy", "uv.z");
 }
 
 namespace {

@@ -23,13 +23,14 @@ bool isIdentChar(char c);
 // Identifiers of HLSL text, skipping comments and string literals.
 std::set<std::string> identifiersIn(const std::string& text);
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
-// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
-// the entry point first (bindParameters), and one passed on to a function's sampler parameter into a copy
-// of that function (bindCallArguments), so that every lookup names S itself.
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` (`tex2Dproj`, `tex2Dlod`, `tex2Dbias`) for
+// the depth samplers S into calls of the comparison helpers. A depth sampler that a shader's compile argument
+// names is bound into the entry point first (bindParameters), and one passed on to a function's sampler
+// parameter into a copy of that function (bindCallArguments), so that every lookup names S itself.
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers);
 // The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
-// the texel (filtered when the sampler filters linearly), in every component.
+// the texel (filtered when the sampler filters linearly), in every component; tex2Dlod, tex2Dbias and
+// tex2D with gradients compare as tex2D does (a shadow map has one level).
 std::string depthSamplerHelpers(const std::string& s);
 // A function's definition `text` (named `name`, renamed `newName`) with the parameters that `bound` maps
 // taken out of its signature, and each use of them in the body naming the effect object they map to

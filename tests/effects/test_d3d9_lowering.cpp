@@ -150,8 +150,9 @@ TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
 // The depth sampler passed on through function parameters: a pixel shader hands the global to a helper,
 // and a pixel shader given it as a compile argument hands its parameter to a helper that hands it to
 // another (NVIDIA's shadow includes: `float shadow(sampler2D s, float4 p) { return tex2Dproj(s, p).r; }`).
-// D3D9 inlined every call, so each lookup is the depth comparison the global's own is: red 1 and green 0
-// on the objects, as above. A colour sampler passed to the same helper keeps reading colour (blue, 0.4).
+// D3D9 inlined every call, so each lookup is the depth comparison the global's own is, tex2Dlod's and
+// tex2Dbias's too: red 1 and green 0 on the objects, as above. A colour sampler passed to the same helper
+// keeps reading colour (blue, 0.4).
 constexpr const char* kDepthSamplerPassedOn = R"(
 float4x4 WorldViewProj : WorldViewProjection;
 float ClearDepth = 1.0;
@@ -171,15 +172,16 @@ sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU
 sampler2D ShadowColourSampler = sampler_state { texture = <ShadowColour>; AddressU = Clamp; AddressV = Clamp;
     MinFilter = Point; MagFilter = Point; MipFilter = None; };
 float lookup(sampler2D s, float4 p) { return tex2Dproj(s, p).r; }
+float level(sampler2D s, float4 p) { return tex2Dlod(s, float4(p.xyz, 0)).r; }
 float shadow(float4 p, sampler2D s) { return lookup(s, p); }
 float4 GlobalPS(VsOut i) : COLOR {
     float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
-    return float4(lookup(ShadowDepthSampler, near), lookup(ShadowDepthSampler, far),
+    return float4(lookup(ShadowDepthSampler, near), level(ShadowDepthSampler, far),
                   lookup(ShadowColourSampler, near), 1);
 }
 float4 ArgumentPS(VsOut i, uniform sampler2D Depth) : COLOR {
     float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
-    return float4(shadow(near, Depth), shadow(far, Depth), lookup(ShadowColourSampler, near), 1);
+    return float4(shadow(near, Depth), tex2Dbias(Depth, far).r, lookup(ShadowColourSampler, near), 1);
 }
 #define SHADOW_TECHNIQUE(name, lookupShader) \
 technique name < string Script = \
