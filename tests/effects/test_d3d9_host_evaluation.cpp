@@ -409,6 +409,35 @@ TEST(D3d9HostEvaluation, IntrinsicsComposedOfPreshaderInstructions) {
     }
 }
 
+// sincos writes its second and third arguments: both locals follow the tweakable.
+constexpr const char* kSineAndCosine = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Angle = 0.5;
+float2 direction(float a) { float s, c; sincos(a, s, c); return float2(s, c); }
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS(uniform float2 d) : COLOR { return float4(d, 0.4, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(direction(Angle)); } }
+)";
+
+TEST(D3d9HostEvaluation, SincosWritesBothOfItsOutputs) {
+    auto renderer = loadEffect(kSineAndCosine, false, "sine_and_cosine.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    // (sin 0.5, cos 0.5) = (0.479, 0.878); (sin 1.2, cos 1.2) = (0.932, 0.362).
+    for (const auto& [angle, colour] :
+         {std::pair{"0.5", std::array{122, 224, 102}}, std::pair{"1.2", std::array{238, 92, 102}}}) {
+        SCOPED_TRACE(angle);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Angle", angle, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, colour[0], colour[1], colour[2]),
+                  kMinObjectPixels);
+    }
+}
+
 // A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
 // where it stands, as before.
 TEST(D3d9HostEvaluation, LoopBoundedByAParameterIsReportedAtTheCall) {
