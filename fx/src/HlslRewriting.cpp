@@ -37,10 +37,10 @@ std::set<std::string> identifiersIn(const std::string& text) {
 }
 
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
-// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
-// the entry point first (bindParameters); one a function passes on to another through a parameter is not
-// rewritten: the parameter's name is not S (and if it is, it names the global anyway).
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` (`tex2Dproj`, `tex2Dlod`, `tex2Dbias`) for
+// the depth samplers S into calls of the comparison helpers. A depth sampler that a shader's compile
+// argument names is bound into the entry point first (bindParameters), and one passed on to a function's
+// sampler parameter into a copy of that function (bindCallArguments), so that every lookup names S.
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers) {
     std::string out;
     size_t i = 0;
@@ -70,7 +70,7 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
             out += "fx_lit";
             continue;
         }
-        if (word == "tex2D" || word == "tex2Dproj") {
+        if (word == "tex2D" || word == "tex2Dproj" || word == "tex2Dlod" || word == "tex2Dbias") {
             size_t p = skipSpace(i);
             if (p < text.size() && text[p] == '(') {
                 size_t s = skipSpace(p + 1), e = s;
@@ -90,14 +90,20 @@ std::string rewriteIntrinsics(const std::string& text, const std::set<std::strin
 }
 
 // The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
-// the texel (filtered when the sampler filters linearly), in every component.
+// the texel (filtered when the sampler filters linearly), in every component. A shadow map has one level,
+// so tex2Dlod's level, tex2Dbias's bias and tex2D's gradients select nothing.
 std::string depthSamplerHelpers(const std::string& s) {
-    std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
+    const std::string t = "fx_depth_" + s, c = "fx_cmp_" + s;
+    auto compare = [&](const std::string& xy, const std::string& z) {
+        return "{ return " + t + ".SampleCmpLevelZero(" + c + ", " + xy + ", " + z + ").xxxx; }\n";
+    };
     return "Texture2D " + t + ";\nSamplerComparisonState " + c + ";\n" + "float4 fx_tex2D_" + s +
-           "(float4 uv) { return " + t + ".SampleCmpLevelZero(" + c + ", uv.xy, uv.z).xxxx; }\n" +
-           "float4 fx_tex2D_" + s + "(float3 uv) { return " + t + ".SampleCmpLevelZero(" + c +
-           ", uv.xy, uv.z).xxxx; }\n" + "float4 fx_tex2Dproj_" + s + "(float4 uv) { return " + t +
-           ".SampleCmpLevelZero(" + c + ", uv.xy / uv.w, uv.z / uv.w).xxxx; }\n";
+           "(float4 uv) " + compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float3 uv) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float4 uv, float2 dx, float2 dy) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2D_" + s + "(float3 uv, float2 dx, float2 dy) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2Dproj_" + s + "(float4 uv) " +
+           compare("uv.xy / uv.w", "uv.z / uv.w") + "float4 fx_tex2Dlod_" + s + "(float4 uv) " +
+           compare("uv.xy", "uv.z") + "float4 fx_tex2Dbias_" + s + "(float4 uv) " + compare("uv.xy", "uv.z");
 }
 
 namespace {
@@ -123,11 +129,11 @@ size_t skipCommentOrString(const std::string& text, size_t i) {
 }  // namespace
 
 std::optional<std::string> bindParameters(const std::string& text, const std::string& name,
-                                          size_t parameterCount,
+                                          const std::string& newName, size_t parameterCount,
                                           const std::map<std::string, std::string>& bound) {
     // The signature: the first `name (` outside comments; its parameters split at the commas outside
     // parentheses and template brackets (`InputPatch<VSOut, 3>`).
-    size_t open = std::string::npos;
+    size_t open = std::string::npos, nameAt = 0;
     for (size_t i = 0; i < text.size() && open == std::string::npos;) {
         if (size_t end = skipCommentOrString(text, i); end != i) {
             i = end;
@@ -137,8 +143,10 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
             size_t j = i;
             while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
             if (text.compare(start, i - start, name) == 0 && i - start == name.size() && j < text.size() &&
-                text[j] == '(')
+                text[j] == '(') {
                 open = j;
+                nameAt = start;
+            }
         } else {
             ++i;
         }
@@ -198,7 +206,9 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
         lineBreaks.clear();
         first = false;
     }
-    std::string out = text.substr(0, open + 1) + signature + lineBreaks;
+    std::string out = text.substr(0, nameAt) + newName +
+                      text.substr(nameAt + name.size(), open + 1 - nameAt - name.size()) + signature +
+                      lineBreaks;
     // The body: each use of a bound name (not a member `.name`) names the effect object.
     for (size_t i = close; i < text.size();) {
         if (size_t end = skipCommentOrString(text, i); end != i) {
@@ -215,6 +225,85 @@ std::optional<std::string> bindParameters(const std::string& text, const std::st
         } else {
             out += text[i++];
         }
+    }
+    return out;
+}
+
+std::string bindCallArguments(const std::string& text, const std::set<std::string>& objects,
+                              const CallBinder& binder) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+        if (size_t end = skipCommentOrString(text, i); end != i) {
+            out.append(text, i, end - i);
+            i = end;
+            continue;
+        }
+        if (!isIdentChar(text[i]) || (i > 0 && isIdentChar(text[i - 1]))) {
+            out += text[i++];
+            continue;
+        }
+        const size_t start = i;
+        while (i < text.size() && isIdentChar(text[i])) ++i;
+        const std::string word = text.substr(start, i - start);
+        size_t before = start, open = i;
+        while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+        while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
+        out += word;
+        if (open >= text.size() || text[open] != '(' || (before > 0 && text[before - 1] == '.')) continue;
+        // The arguments, split at the commas outside brackets.
+        std::vector<std::string> arguments{""};
+        size_t close = std::string::npos;
+        int nesting = 0;
+        for (size_t j = open + 1; j < text.size();) {
+            if (size_t end = skipCommentOrString(text, j); end != j) {
+                arguments.back().append(text, j, end - j);
+                j = end;
+                continue;
+            }
+            const char c = text[j++];
+            if (c == '(' || c == '[' || c == '{') ++nesting;
+            if ((c == ')' || c == ']' || c == '}') && nesting > 0) {
+                --nesting;
+            } else if (c == ')') {
+                close = j - 1;
+                break;
+            } else if (c == ',' && nesting == 0) {
+                arguments.emplace_back();
+                continue;
+            }
+            arguments.back() += c;
+        }
+        if (close == std::string::npos) continue;
+        if (arguments.size() == 1 && arguments[0].find_first_not_of(" \t\r\n") == std::string::npos)
+            arguments.clear();
+        std::map<size_t, std::string> passed;
+        for (size_t a = 0; a < arguments.size(); ++a) {
+            const size_t first = arguments[a].find_first_not_of(" \t\r\n");
+            const size_t last = arguments[a].find_last_not_of(" \t\r\n");
+            if (first == std::string::npos) continue;
+            const std::string name = arguments[a].substr(first, last + 1 - first);
+            if (objects.count(name)) passed[a] = name;
+        }
+        if (passed.empty()) continue;  // the arguments are scanned as the text goes on
+        const std::optional<std::string> callee = binder(word, arguments.size(), passed);
+        if (!callee) continue;
+        out.resize(out.size() - word.size());
+        out += *callee;
+        out.append(text, i, open + 1 - i);
+        std::string lineBreaks;
+        bool firstKept = true;
+        for (size_t a = 0; a < arguments.size(); ++a) {
+            if (passed.count(a)) {
+                lineBreaks.append(
+                    static_cast<size_t>(std::count(arguments[a].begin(), arguments[a].end(), '\n')), '\n');
+                continue;
+            }
+            out += (firstKept ? "" : ",") + lineBreaks + bindCallArguments(arguments[a], objects, binder);
+            lineBreaks.clear();
+            firstKept = false;
+        }
+        out += lineBreaks + ")";
+        i = close + 1;
     }
     return out;
 }

@@ -3,6 +3,7 @@
 // uses collected. Private to fx.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -22,20 +23,30 @@ bool isIdentChar(char c);
 // Identifiers of HLSL text, skipping comments and string literals.
 std::set<std::string> identifiersIn(const std::string& text);
 // Rewrites, token by token (comments untouched), the intrinsic calls glslang gets wrong or cannot express:
-// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` / `tex2Dproj(S,` for the depth samplers S into
-// calls of the comparison helpers. A depth sampler that a shader's compile argument names is bound into
-// the entry point first (bindParameters); one a function passes on to another through a parameter is not
-// rewritten: the parameter's name is not S (and if it is, it names the global anyway).
+// `lit(` -> `fx_lit(` (see kLitReplacement), and `tex2D(S,` (`tex2Dproj`, `tex2Dlod`, `tex2Dbias`) for
+// the depth samplers S into calls of the comparison helpers. A depth sampler that a shader's compile argument
+// names is bound into the entry point first (bindParameters), and one passed on to a function's sampler
+// parameter into a copy of that function (bindCallArguments), so that every lookup names S itself.
 std::string rewriteIntrinsics(const std::string& text, const std::set<std::string>& depthSamplers);
 // The D3D9 shadow-map lookups on a comparison sampler: the result of comparing the reference depth with
-// the texel (filtered when the sampler filters linearly), in every component.
+// the texel (filtered when the sampler filters linearly), in every component; tex2Dlod, tex2Dbias and
+// tex2D with gradients compare as tex2D does (a shadow map has one level).
 std::string depthSamplerHelpers(const std::string& s);
-// A function's definition `text` (named `name`) with the parameters that `bound` maps taken out of its
-// signature, and each use of them in the body naming the effect object they map to instead: D3DX bound a
-// sampler or texture compile argument when it compiled the shader. Line breaks are kept, so the text's
-// `#line` still holds. nullopt where the signature does not have `parameterCount` parameters as written.
+// A function's definition `text` (named `name`, renamed `newName`) with the parameters that `bound` maps
+// taken out of its signature, and each use of them in the body naming the effect object they map to
+// instead: D3DX bound a sampler or texture compile argument when it compiled the shader. Line breaks are
+// kept, so the text's `#line` still holds. nullopt where the signature does not have `parameterCount`
+// parameters as written.
 std::optional<std::string> bindParameters(const std::string& text, const std::string& name,
-                                          size_t parameterCount,
+                                          const std::string& newName, size_t parameterCount,
                                           const std::map<std::string, std::string>& bound);
+// Decides a call whose arguments at the map's indices are exactly the objects it names: the name of the
+// function to call instead with those arguments left out, or nullopt to keep the call as written.
+using CallBinder = std::function<std::optional<std::string>(const std::string& function, size_t argumentCount,
+                                                            const std::map<size_t, std::string>& objects)>;
+// `text` with each call (not a member call) having an argument that is exactly one of `objects` put to
+// `binder`, innermost calls' arguments included. The line breaks of a left-out argument are kept.
+std::string bindCallArguments(const std::string& text, const std::set<std::string>& objects,
+                              const CallBinder& binder);
 
 }  // namespace fx

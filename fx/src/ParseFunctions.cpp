@@ -3,6 +3,7 @@
 #include "TypeNames.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace fx::detail {
 
@@ -164,6 +165,37 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         const bool isFor = mTokens[mPos - 1].is("for");
         if (!isFor) advance();
         parseStraightLoop(isFor, out);
+        return;
+    }
+    // sincos(x, s, c), the one intrinsic that writes its arguments: s = sin(x) and c = cos(x), where x
+    // reads neither (D3DX's preshaders had sincos as an instruction).
+    if (check("sincos") && peek(1).is("(")) {
+        const Token& at = advance();
+        advance();
+        const Expr angle = parseExpr();
+        Statement sine, cosine;
+        sine.kind = cosine.kind = Statement::Kind::Assign;
+        sine.op = cosine.op = "=";
+        sine.hasValue = cosine.hasValue = true;
+        expect(",");
+        sine.name = expectIdentifier("a name").text;
+        expect(",");
+        cosine.name = expectIdentifier("a name").text;
+        expect(")");
+        expect(";");
+        std::function<bool(const Expr&)> reads = [&](const Expr& e) {
+            if (e.kind == Expr::Kind::Identifier && (e.text == sine.name || e.text == cosine.name))
+                return true;
+            return std::any_of(e.args.begin(), e.args.end(), reads);
+        };
+        if (reads(angle)) throw SyntaxError{};
+        for (Statement* written : {&sine, &cosine}) {
+            written->value.kind = Expr::Kind::Call;
+            written->value.text = written == &sine ? "sin" : "cos";
+            written->value.loc = at.loc;
+            written->value.args = {angle};
+            out.push_back(std::move(*written));
+        }
         return;
     }
     Statement statement;

@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <utility>
 
 namespace fx {
 
@@ -173,7 +174,8 @@ bool bindObjectArguments(const Effect& effect, const FunctionDecl& fn, const Exp
         if (argIndex < compile.args.size()) boundArguments.push_back(argIndex);
     }
     if (bound.empty()) return false;
-    const std::optional<std::string> text = bindParameters(fn.hlslText, fn.name, fn.params.size(), bound);
+    const std::optional<std::string> text =
+        bindParameters(fn.hlslText, fn.name, fn.name, fn.params.size(), bound);
     if (!text) return false;
     boundFn = fn;
     boundFn.params = std::move(kept);
@@ -183,6 +185,69 @@ bool bindObjectArguments(const Effect& effect, const FunctionDecl& fn, const Exp
         boundCompile.args.erase(boundCompile.args.begin() + static_cast<std::ptrdiff_t>(*i));
     return true;
 }
+
+// A depth sampler passed on to a function's sampler parameter (`float shadow(sampler2D s, float4 p) {
+// return tex2Dproj(s, p).r; }` called as `shadow(ShadowSampler, p)`, or with a compile argument the entry
+// point passes on): D3D9 inlined every call, so the lookups inside compared depth as the global's own do.
+// Each such callee is emitted again with the sampler bound in place of the parameter, once per callee and
+// sampler, before the first function that calls it; the call then names the copy.
+class DepthSamplerForwarding {
+public:
+    DepthSamplerForwarding(const Effect& effect, const std::set<std::string>& depth)
+        : mEffect(effect), mDepth(depth) {}
+
+    // `text` with its calls that pass a depth sampler on naming the copies, which are added to pending().
+    std::string bindCalls(const std::string& text, int nesting = 0) {
+        if (mDepth.empty()) return text;
+        return bindCallArguments(text, mDepth,
+                                 [this, nesting](const std::string& function, size_t argumentCount,
+                                                 const std::map<size_t, std::string>& samplers) {
+                                     return copyFor(function, argumentCount, samplers, nesting);
+                                 });
+    }
+
+    // The copies bindCalls made since the last call, each behind its `#line`, callees before callers.
+    std::string takePending() { return std::exchange(mPending, {}); }
+
+private:
+    std::optional<std::string> copyFor(const std::string& function, size_t argumentCount,
+                                       const std::map<size_t, std::string>& samplers, int nesting) {
+        // HLSL has no recursion; this bounds a chain of calls all the same.
+        constexpr int kMaxNesting = 16;
+        if (nesting >= kMaxNesting) return std::nullopt;
+        const FunctionDecl* callee = nullptr;
+        for (const FunctionDecl& f : mEffect.functions) {
+            if (f.name != function || !f.hasBody || f.params.size() != argumentCount) continue;
+            bool takesSamplers = true;
+            for (const auto& [index, sampler] : samplers) {
+                const FunctionParam& p = f.params[index];
+                takesSamplers = takesSamplers && isSamplerType(p.type) && p.type.arrayDims.empty() &&
+                                p.direction == FunctionParam::Direction::In;
+            }
+            if (takesSamplers) callee = &f;
+        }
+        if (!callee) return std::nullopt;
+        std::string name = function + "_fx";
+        std::map<std::string, std::string> bound;
+        for (const auto& [index, sampler] : samplers) {
+            name += "_" + std::to_string(index) + "_" + sampler;
+            bound[callee->params[index].name] = sampler;
+        }
+        if (mCopied.count(name)) return name;
+        const std::optional<std::string> text =
+            bindParameters(callee->hlslText, callee->name, name, argumentCount, bound);
+        if (!text) return std::nullopt;
+        mCopied.insert(name);
+        const std::string body = bindCalls(*text, nesting + 1);
+        emitAt(mPending, rewriteIntrinsics(body, mDepth), callee->hlslLoc);
+        return name;
+    }
+
+    const Effect& mEffect;
+    const std::set<std::string>& mDepth;
+    std::set<std::string> mCopied;
+    std::string mPending;
+};
 
 }  // namespace
 
@@ -213,6 +278,7 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
     for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
     nameAll(wrapper);
     std::set<std::string> usedDepth;
+    DepthSamplerForwarding forwarding(effect, depth);
     EffectDeclarations out;
     std::string& hlsl = out.hlsl;
     std::string& staticAssignments = out.staticAssignments;
@@ -280,8 +346,11 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
             }
             case DeclRef::Kind::Function: {
                 const FunctionDecl& f = effect.functions[ref.index];
-                if (reached.count(f.name) && !isBoundEntry(f))
-                    emitAt(hlsl, rewriteIntrinsics(f.hlslText, depth), f.hlslLoc);
+                if (reached.count(f.name) && !isBoundEntry(f)) {
+                    const std::string text = forwarding.bindCalls(f.hlslText);
+                    hlsl += forwarding.takePending();
+                    emitAt(hlsl, rewriteIntrinsics(text, depth), f.hlslLoc);
+                }
                 break;
             }
             case DeclRef::Kind::Verbatim: {
@@ -293,7 +362,11 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
     }
     // Last: its body names the objects bound, which the effect may declare after the function (FX
     // Composer's quad include defines the pixel shaders the effects then pass their samplers to).
-    if (boundEntry) emitAt(hlsl, rewriteIntrinsics(boundEntry->hlslText, depth), boundEntry->hlslLoc);
+    if (boundEntry) {
+        const std::string text = forwarding.bindCalls(boundEntry->hlslText);
+        hlsl += forwarding.takePending();
+        emitAt(hlsl, rewriteIntrinsics(text, depth), boundEntry->hlslLoc);
+    }
     out.depthSamplers.assign(usedDepth.begin(), usedDepth.end());
     return out;
 }

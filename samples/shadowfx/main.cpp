@@ -138,8 +138,13 @@ int renderCommand(const Arguments& args) {
     runtime::FrameStats stats;
     if (!renderer->render(*scene, frame, sink, &stats) || sink.errors() > 0) return 1;
 
+    runtime::FrameImage image = renderer->readFrame();
+    // FX Composer's viewport showed a frame's colour alone: an effect that writes alpha 0 (its edge
+    // detectors' lines) stays visible in an image written so.
+    if (args.flag("--opaque"))
+        for (size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
     std::string writeError;
-    if (!runtime::writePng(renderer->readFrame(), out, writeError)) {
+    if (!runtime::writePng(image, out, writeError)) {
         std::cerr << "shadowfx render: " << writeError << "\n";
         removeStaleOutput(out);
         return 1;
@@ -243,13 +248,14 @@ const shadowfx::cli::Command kCommands[] = {
      "  --stats               print passes, draws, culled objects, triangles and texels written, per pass\n"
      "  --no-leave-out        draw every object in every pass, run every pass (the image is the same)\n"
      "  --no-batching         draw every object alone, not one instanced draw per mesh (the same image)\n"
+     "  --opaque              write the frame's colour with alpha 1, as FX Composer's viewport showed it\n"
      "  --verbose             print the GL renderer and notes\n"
      "  --driver-log          print what the GL driver said compiling each pass's generated GLSL (its\n"
      "                        lines are the GLSL's, which `shadowfx compile` prints), at the "
      "pass\n" SHADOWFX_HOST_OPTION_HELP,
      {"--out"},
      {"--width", "--height", "--technique", "--scene", "--set", "--backend", "--host", "-I", "-D"},
-     {"--stats", "--verbose", "--driver-log", "--no-leave-out", "--no-batching"},
+     {"--stats", "--verbose", "--driver-log", "--no-leave-out", "--no-batching", "--opaque"},
      renderCommand},
     {"compile",
      "print the generated GLSL of every pass, or write a compiled effect file",

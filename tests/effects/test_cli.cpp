@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <runtime/ImageCompare.h>
+
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -80,6 +84,38 @@ TEST(Cli, RenderWritesAPng) {
     png.read(signature, 8);
     EXPECT_EQ(std::string(signature + 1, 3), "PNG");
     EXPECT_NE(result.output.find("passes"), std::string::npos) << result.output;
+}
+
+// An effect that writes its object as (0, 0, 0, 0), as NVIDIA's edge detectors write their lines: the PNG
+// keeps that alpha unless --opaque asks for FX Composer's view of the colour alone.
+TEST(Cli, RenderOpaqueWritesTheColourWithAlphaOne) {
+    const shadowfx::test::ScratchDirectory scratch("cli_opaque");
+    const std::string effect = scratch / "transparent.fx";
+    std::ofstream(effect) << R"(float4x4 WorldViewProj : WorldViewProjection;
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS() : COLOR { return 0; }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+    auto objectAndBackground = [&](const std::string& options) {
+        const std::string out = scratch / "frame.png";
+        const RunResult result =
+            run("render " + effect + " --scene teapot --width 32 --height 24 --out " + out + options);
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        std::string error;
+        const std::optional<runtime::FrameImage> frame = runtime::readPng(out, error);
+        EXPECT_TRUE(frame) << error;
+        std::pair<std::vector<uint8_t>, std::vector<uint8_t>> pixels;
+        if (!frame) return pixels;
+        pixels.first.assign(frame->pixel(16, 12), frame->pixel(16, 12) + 4);  // the teapot
+        pixels.second.assign(frame->pixel(0, 0), frame->pixel(0, 0) + 4);     // the host's background
+        return pixels;
+    };
+    const auto plain = objectAndBackground("");
+    EXPECT_EQ(plain.first, (std::vector<uint8_t>{0, 0, 0, 0}));
+    EXPECT_EQ(plain.second, (std::vector<uint8_t>{64, 72, 96, 255}));
+    const auto opaque = objectAndBackground(" --opaque");
+    EXPECT_EQ(opaque.first, (std::vector<uint8_t>{0, 0, 0, 255}));
+    EXPECT_EQ(opaque.second, plain.second);
 }
 
 TEST(Cli, CompilePrintsGlslForEveryPass) {

@@ -1,7 +1,7 @@
 // What D3DX9 computed on the host for an effect, computed here too and recomputed when its inputs change:
 // statics over host-bound parameters passed as compile arguments, and the effect's own functions called
-// from them. Each test is a minimal effect in the manner of FX Composer's shader library, rendered and
-// checked by pixels.
+// from them, with the intrinsics D3DX's preshaders had. Each test is a minimal effect in the manner of FX
+// Composer's shader library, rendered and checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
@@ -335,6 +335,107 @@ TEST(D3d9HostEvaluation, LoopsLeftByBreakAndContinueFollowTheirInput) {
     ASSERT_TRUE(notConstant(frame));
     // 2 steps below 0.2; j = 0 alone; k = 1, plus 0.05
     EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 51, 51, 38), kMinObjectPixels);
+}
+
+// FX Composer's shadow includes build their texture-space bias as a static matrix from a function of a
+// tweakable (`static float4x4 BiasXf = make_bias_mat(Bias);`); compile arguments computed from it on the
+// host (a row vector times the matrix, one element) follow the tweakable.
+constexpr const char* kMatrixFunction = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Bias = 0.25;
+float4x4 make_bias_mat(float b) {
+    float4x4 m = float4x4(0.5, 0, 0, 0, 0, -0.5, 0, 0, 0, 0, 1, 0, 0.5, 0.5, -b, 1);
+    return transpose(transpose(m));
+}
+static float4x4 BiasXf = make_bias_mat(Bias);
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS(uniform float2 Corner, uniform float Depth) : COLOR { return float4(Corner, Depth, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS();
+    PixelShader = compile ps_3_0 PS(mul(float4(0.2, -0.4, 0, 1), BiasXf).xy, -BiasXf._43); } }
+)";
+
+TEST(D3d9HostEvaluation, MatrixFromAFunctionFollowsItsInput) {
+    auto renderer = loadEffect(kMatrixFunction, false, "matrix_function.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    for (const auto& [bias, blue] : {std::pair{"0.25", 64}, std::pair{"0.5", 128}}) {
+        SCOPED_TRACE(bias);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Bias", bias, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        // (0.1 + 0.5, 0.2 + 0.5, bias)
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 153, 178, blue), kMinObjectPixels);
+    }
+}
+
+// The intrinsics D3DX's preshaders ran as sequences of their own instructions (ldexp, rcp, mad, sinh,
+// cosh, tanh, reflect, faceforward, any, all, lit), in a function of a tweakable evaluated on the host.
+constexpr const char* kComposedIntrinsics = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.5;
+float3 composed(float l) {
+    float3 r = reflect(float3(1, -1, 0), float3(0, 1, 0));
+    float3 n = faceforward(float3(0, 0, 1), float3(0, 0, 1), float3(0, 0, 1));
+    float4 li = lit(0.5, l, 2);
+    return float3(ldexp(l, -1) + rcp(4) * r.y, mad(l, 0.5, 0.25) + tanh(0) + sinh(0),
+                  li.z + cosh(0) * 0.1 + n.z * 0.1 + 0.05 + (any(float2(0, l)) ? 0 : 0.5) +
+                      (all(float2(l - 0.5, 1)) ? 0.1 : 0));
+}
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(composed(Level)); } }
+)";
+
+TEST(D3d9HostEvaluation, IntrinsicsComposedOfPreshaderInstructions) {
+    auto renderer = loadEffect(kComposedIntrinsics, false, "composed_intrinsics.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    // At 0.5: (0.25 + 0.25, 0.5, 0.25 + 0.1 - 0.1 + 0.05), all() false. At 0.9: (0.45 + 0.25, 0.7,
+    // 0.81 + 0.05 + 0.1), all() true; any() is true at both.
+    for (const auto& [level, colour] :
+         {std::pair{"0.5", std::array{128, 128, 76}}, std::pair{"0.9", std::array{179, 179, 245}}}) {
+        SCOPED_TRACE(level);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Level", level, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, colour[0], colour[1], colour[2]),
+                  kMinObjectPixels);
+    }
+}
+
+// sincos writes its second and third arguments: both locals follow the tweakable.
+constexpr const char* kSineAndCosine = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Angle = 0.5;
+float2 direction(float a) { float s, c; sincos(a, s, c); return float2(s, c); }
+float4 VS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProj); }
+float4 PS(uniform float2 d) : COLOR { return float4(d, 0.4, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(direction(Angle)); } }
+)";
+
+TEST(D3d9HostEvaluation, SincosWritesBothOfItsOutputs) {
+    auto renderer = loadEffect(kSineAndCosine, false, "sine_and_cosine.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
+    // (sin 0.5, cos 0.5) = (0.479, 0.878); (sin 1.2, cos 1.2) = (0.932, 0.362).
+    for (const auto& [angle, colour] :
+         {std::pair{"0.5", std::array{122, 224, 102}}, std::pair{"1.2", std::array{238, 92, 102}}}) {
+        SCOPED_TRACE(angle);
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer->setParameterFromText("Angle", angle, diagnostics)) << diagnostics.str();
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, colour[0], colour[1], colour[2]),
+                  kMinObjectPixels);
+    }
 }
 
 // A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported

@@ -1,9 +1,9 @@
 // D3D9 effects whose shaders D3D9 ran as written and whose lowering to glslang and GL must keep running:
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
 // (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
-// function, a shadow-map depth sampler passed as a compile argument, a `for` variable read after its
-// loop, and a cube-map lookup in a direction that is not finite. Minimal effects written for these
-// tests, checked by pixels.
+// function, a shadow-map depth sampler passed as a compile argument or on to other functions, a `for`
+// variable read after its loop, and a cube-map lookup in a direction that is not finite. Minimal effects
+// written for these tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
@@ -145,6 +145,72 @@ TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
     const runtime::FrameImage frame = renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+}
+
+// The depth sampler passed on through function parameters: a pixel shader hands the global to a helper,
+// and a pixel shader given it as a compile argument hands its parameter to a helper that hands it to
+// another (NVIDIA's shadow includes: `float shadow(sampler2D s, float4 p) { return tex2Dproj(s, p).r; }`).
+// D3D9 inlined every call, so each lookup is the depth comparison the global's own is, tex2Dlod's and
+// tex2Dbias's too: red 1 and green 0 on the objects, as above. A colour sampler passed to the same helper
+// keeps reading colour (blue, 0.4).
+constexpr const char* kDepthSamplerPassedOn = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float ClearDepth = 1.0;
+float4 ClearColour = {0.4, 0.4, 0.4, 1};
+struct VsOut { float4 Position : POSITION; float4 Projected : TEXCOORD0; };
+VsOut VS(float3 Position : POSITION) {
+    VsOut o;
+    o.Position = mul(float4(Position, 1), WorldViewProj);
+    o.Projected = float4(o.Position.xy / o.Position.w * float2(0.5, -0.5) + 0.5, 0, 1);
+    return o;
+}
+float4 DepthPS() : COLOR { return 1; }
+texture ShadowColour : RENDERCOLORTARGET < float2 Dimensions = {64, 48}; string Format = "X8B8G8R8"; >;
+texture ShadowDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 48}; string Format = "D24S8_SHADOWMAP"; >;
+sampler2D ShadowDepthSampler = sampler_state { texture = <ShadowDepth>; AddressU = Clamp; AddressV = Clamp;
+    MinFilter = Point; MagFilter = Point; MipFilter = None; };
+sampler2D ShadowColourSampler = sampler_state { texture = <ShadowColour>; AddressU = Clamp; AddressV = Clamp;
+    MinFilter = Point; MagFilter = Point; MipFilter = None; };
+float lookup(sampler2D s, float4 p) { return tex2Dproj(s, p).r; }
+float level(sampler2D s, float4 p) { return tex2Dlod(s, float4(p.xyz, 0)).r; }
+float shadow(float4 p, sampler2D s) { return lookup(s, p); }
+float4 GlobalPS(VsOut i) : COLOR {
+    float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
+    return float4(lookup(ShadowDepthSampler, near), level(ShadowDepthSampler, far),
+                  lookup(ShadowColourSampler, near), 1);
+}
+float4 ArgumentPS(VsOut i, uniform sampler2D Depth) : COLOR {
+    float4 near = float4(i.Projected.xy, 0, 1), far = float4(i.Projected.xy, 1, 1);
+    return float4(shadow(near, Depth), tex2Dbias(Depth, far).r, lookup(ShadowColourSampler, near), 1);
+}
+#define SHADOW_TECHNIQUE(name, lookupShader) \
+technique name < string Script = \
+    "RenderColorTarget0=ShadowColour; RenderDepthStencilTarget=ShadowDepth; ClearSetDepth=ClearDepth;" \
+    "ClearSetColor=ClearColour; Clear=Color; Clear=Depth; Pass=Depth;" \
+    "RenderColorTarget0=; RenderDepthStencilTarget=; Pass=Lookup;"; > { \
+    pass Depth < string Script = "Draw=geometry;"; > { \
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 DepthPS(); \
+        ZEnable = true; ZWriteEnable = true; CullMode = None; ColorWriteEnable = 0; \
+    } \
+    pass Lookup < string Script = "Draw=geometry;"; > { \
+        VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 lookupShader; \
+        ZEnable = true; CullMode = None; \
+    } \
+}
+SHADOW_TECHNIQUE(Global, GlobalPS())
+SHADOW_TECHNIQUE(Argument, ArgumentPS(ShadowDepthSampler))
+)";
+
+TEST(D3d9Lowering, DepthSamplerPassedOnToFunctionsComparesDepth) {
+    auto renderer = loadEffect(kDepthSamplerPassedOn, false, "depth_sampler_passed_on.fx");
+    ASSERT_TRUE(renderer);
+    for (const char* technique : {"Global", "Argument"}) {
+        SCOPED_TRACE(technique);
+        ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48, technique));
+        const runtime::FrameImage frame = renderer->readFrame();
+        ASSERT_TRUE(notConstant(frame));
+        EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+    }
 }
 
 // fxc declared a `for` loop's variable in the enclosing block (an XNA engine's antialiasing filter returns

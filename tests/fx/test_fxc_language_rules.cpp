@@ -1,7 +1,8 @@
 // The effect language as fxc reads it, both ways (no GL): what fxc accepts and glslang's HLSL front end or
 // an older shadowfx refused (files without techniques, matrix-order modifiers on annotations), and what fxc
 // refuses that would otherwise pass (duplicate or self-referring annotations, object-typed annotations,
-// annotations on locals, objects in structs), each at its location.
+// annotations on locals, objects in structs), each at its location, and a SPIRV-Cross refusal told in the
+// effect's terms.
 #include <fx/CompiledEffect.h>
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
@@ -121,6 +122,30 @@ TEST(FxcLanguageRules, ObjectsInsideAStructAreRefusedAtTheMember) {
     EXPECT_EQ(errorsOf("struct Material { float4 Tint; Texture2D Albedo; SamplerState Filter; };" +
                        std::string(kTechnique)),
               (std::vector<std::string>{"1:42 ObjectInStruct", "1:63 ObjectInStruct"}));
+}
+
+// SPIRV-Cross refuses a D3D9 sampler given to a texture object's Sample (its words name one of its own
+// calls); the error stands at the pass's compile expression and says, in the effect's terms, which shader
+// and what in it.
+TEST(FxcLanguageRules, ASpirvCrossRefusalSaysWhatInTheEffectCausedIt) {
+    DiagnosticList diagnostics;
+    EXPECT_EQ(compile(R"(float4x4 Wvp : WorldViewProjection;
+Texture2D Tex;
+sampler2D TexSampler = sampler_state { Texture = <Tex>; };
+float4 VS(float3 p : POSITION, out float2 uv : TEXCOORD0) : POSITION { uv = p.xy; return mul(float4(p, 1), Wvp); }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return Tex.Sample(TexSampler, uv) + tex2D(TexSampler, uv); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                      diagnostics),
+              nullptr);
+    ASSERT_EQ(diagnostics.errorCount(), 1u) << diagnostics.str();
+    const Diagnostic& error = diagnostics.items().back();
+    EXPECT_EQ(error.loc.file, "rules.fx");
+    EXPECT_EQ(error.loc.line, 6);
+    EXPECT_EQ(error.loc.column, 74);
+    EXPECT_NE(error.message.find("Sample or Gather method is given a D3D9 sampler"), std::string::npos)
+        << error.message;
+    EXPECT_NE(error.message.find("the pixel shader 'PS' (ps_3_0)"), std::string::npos) << error.message;
 }
 
 }  // namespace
