@@ -326,6 +326,17 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
         if (!setting.constant) setting.value = compilePreshader(s.value, slotResolver(), nullptr);
         pass.states.push_back(std::move(setting));
     }
+    // D3D10 has no fixed-function pixel stage: a NULL pixel shader writes no colour, only depth and stencil
+    // (a shadow map's depth pass). GL runs the D3D9 stand-in the runtime links for a pass without one, so
+    // the colour writes are masked, after whatever the pass's blend state wrote.
+    const auto nullPixelShader = [](const StateAssignment& s) {
+        return findRenderState(s.name) == RenderStateId::PixelShader &&
+               s.value.kind == Expr::Kind::Identifier && s.value.text == "NULL";
+    };
+    if (mTechnique && mTechnique->d3d10 && std::any_of(p.states.begin(), p.states.end(), nullPixelShader))
+        for (RenderStateId mask : {RenderStateId::ColorWriteEnable, RenderStateId::ColorWriteEnable1,
+                                   RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3})
+            pass.states.push_back(RenderStateSetting{mask, 0.0, {}, p.loc});
     if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
     passAnnotations(p, pass);
     pass.annotations = annotationValues(p.annotations);

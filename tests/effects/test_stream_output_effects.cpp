@@ -111,11 +111,9 @@ TEST(StreamOutputEffects, AStreamOutputPassCapturesTheVerticesItsGeometryShaderA
     EXPECT_EQ(ages, (std::vector<float>{0, 1, 2}));
 }
 
-// A stream-output pass with a NULL pixel shader rasterizes nothing: its meshes at depth 0.1, written with
-// depth test ALWAYS, would hide the same meshes a later pass draws white at depth 0.5 with LESS. The same
-// pass drawn black without stream output hides them: the control that the meshes would have been drawn.
-TEST(StreamOutputEffects, ANullPixelShaderInAStreamOutputPassRasterizesNothing) {
-    const std::string source = R"(
+// Passes with NULL pixel shaders, with and without stream output, before a pass that draws the same meshes
+// white behind them.
+const char* const kNullPixelShaders = R"(
 float4x4 Wvp : WorldViewProjection;
 struct MeshVertex { float3 Position : POSITION; };
 struct Near { float4 Position : SV_Position; };
@@ -148,8 +146,22 @@ technique10 Rasterized < string Script = "Pass=Near; Pass=Far;"; >
     { SetVertexShader(CompileShader(vs_4_0, FarVS())); SetGeometryShader(NULL);
       SetPixelShader(CompileShader(ps_4_0, White())); SetDepthStencilState(TestLess, 0); SetRasterizerState(NoCull); }
 }
+technique10 DepthOnly < string Script = "Pass=Near; Pass=Far;"; >
+{
+    pass Near < string Script = "ClearSetColor=Black; ClearSetDepth=1.0; Clear=Color; Clear=Depth; Draw=Geometry;"; >
+    { SetVertexShader(NearShader); SetGeometryShader(NULL); SetPixelShader(NULL);
+      SetDepthStencilState(WriteAlways, 0); SetRasterizerState(NoCull); }
+    pass Far < string Script = "Draw=Geometry;"; >
+    { SetVertexShader(CompileShader(vs_4_0, FarVS())); SetGeometryShader(NULL);
+      SetPixelShader(CompileShader(ps_4_0, White())); SetDepthStencilState(TestLess, 0); SetRasterizerState(NoCull); }
+}
 )";
-    auto renderer = loadEffect(source, false);
+
+// A stream-output pass with a NULL pixel shader rasterizes nothing: its meshes at depth 0.1, written with
+// depth test ALWAYS, would hide the same meshes a later pass draws white at depth 0.5 with LESS. The same
+// pass drawn black without stream output hides them: the control that the meshes would have been drawn.
+TEST(StreamOutputEffects, ANullPixelShaderInAStreamOutputPassRasterizesNothing) {
+    auto renderer = loadEffect(kNullPixelShaders, false);
     ASSERT_TRUE(renderer);
     ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "Captured"));
     const runtime::FrameImage captured = renderer->readFrame();
@@ -157,6 +169,15 @@ technique10 Rasterized < string Script = "Pass=Near; Pass=Far;"; >
     EXPECT_GT(white, kWidth * kHeight / 10);  // the boxes
     EXPECT_EQ(white + countPixelsOfColour(captured, kWidth, kHeight, 0, 0, 0), kWidth * kHeight);
     ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "Rasterized"));
+    EXPECT_EQ(countPixelsOfColour(renderer->readFrame(), kWidth, kHeight, 0, 0, 0), kWidth * kHeight);
+}
+
+// Without stream output a NULL pixel shader is a depth-only pass, as D3D10 draws a shadow map's: the meshes'
+// depth hides the white pass behind them, and no colour is written (D3D9's fixed-function white would show).
+TEST(StreamOutputEffects, ANullPixelShaderWithoutStreamOutputWritesDepthAndNoColour) {
+    auto renderer = loadEffect(kNullPixelShaders, false);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kWidth, kHeight, "DepthOnly"));
     EXPECT_EQ(countPixelsOfColour(renderer->readFrame(), kWidth, kHeight, 0, 0, 0), kWidth * kHeight);
 }
 
