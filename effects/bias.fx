@@ -280,7 +280,9 @@ float4 AdaptivePS(ReceiverVertexOutput IN) : COLOR
 technique constant
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: constant bias, acne on the ground";
+    string StressExpectedFailures = "grazing [ordinary]: the constant bias this technique exists to show (the "
+                                    "control of the slope, receiver-plane and adaptive techniques): a 0.5 "
+                                    "degree sun's ground slopes away from it within a texel, acne";
     string Script = "Pass=ClearShadowMap;"
                     "Pass=RenderShadowMap;"
                     "Pass=RenderScene;";

@@ -85,6 +85,13 @@ float2 Exponents()
     return min(float2(PositiveExponent, NegativeExponent), EvsmMaxExponentFloat32);
 }
 
+// The depth change across a lookup's footprint within which the positive warp exp(c+ (2 z - 1)), the
+// steeper, changes by at most a factor e (prefiltered.fxh's PlaneLimitedLookup).
+float WarpedDepthSpan()
+{
+    return 0.5 / Exponents().x;
+}
+
 // [SECTION] Maps and passes
 // variant 2: EVSM2 (the positive warp's moments), 4: EVSM4.
 float4 StoredValue(float z, int variant)
@@ -100,14 +107,14 @@ PREFILTERED_TARGETS(Evsm4, "A32B32G32R32F")
 
 float4 Evsm2PS(SceneVertexOutput IN) : COLOR
 {
-    float2 moments = tex2D(Evsm2MapSampler, ShadowMapUV(IN.LP)).xy;
+    float2 moments = PlaneLimitedLookup(Evsm2MapSampler, IN, WarpedDepthSpan()).xy;
     return ShadeOrVisibility(
         IN, Evsm2Visibility(moments, ReceiverDepth(IN), Exponents().x, MinVariance, LightBleedReduction));
 }
 
 float4 Evsm4PS(SceneVertexOutput IN) : COLOR
 {
-    float4 moments = tex2D(Evsm4MapSampler, ShadowMapUV(IN.LP));
+    float4 moments = PlaneLimitedLookup(Evsm4MapSampler, IN, WarpedDepthSpan());
     return ShadeOrVisibility(
         IN, Evsm4Visibility(moments, ReceiverDepth(IN), Exponents(), MinVariance, LightBleedReduction));
 }
@@ -115,11 +122,6 @@ float4 Evsm4PS(SceneVertexOutput IN) : COLOR
 // [SECTION] Techniques
 technique evsm2
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: the positive warp weighs the farthest depth of a "
-                                    "footprint, and a texel spans a wide depth range under a 0.5 degree sun: "
-                                    "false light; low-sun [uniform]: one warp's bound leaks light where "
-                                    "occluders overlap (evsm4's second warp removes it)";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.12;  // measured 0.060 % on dual-l, 0.076 % on teapot (hard truth)
@@ -134,10 +136,6 @@ technique evsm2
 
 technique evsm4
 <
-    // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: the positive warp weighs the farthest depth of a "
-                                    "footprint, and a texel spans a wide depth range under a 0.5 degree sun: "
-                                    "false light";
     string Script = "Pass=RenderDepth; Pass=FilterX; Pass=FilterY; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     float ExpectMisclassifiedBelow = 0.1;  // measured 0.044 % on dual-l, 0.057 % on teapot (hard truth)

@@ -6,7 +6,12 @@
 //
 //   preprocessed  the whole algorithm. (1) A back-face map holding linear light distance (eq. 4; here the
 //                 light-view depth mapped linearly from the near plane to the far plane) in R: back faces
-//                 keep a disk that penetrates its own receiver from shadowing it ("second-depth"). (2) Edge
+//                 keep a disk that penetrates its own receiver from shadowing it ("second-depth"). Open
+//                 objects (the ground) are drawn whole, so their faces turned towards the light are in the
+//                 map too, marked in A (1: front face); a sample of such a texel is tested at the
+//                 receiver's tangent plane at the texel's centre (the adaptive depth bias of Dou et al. 2014,
+//                 as pcf.fx), since a grazing sun's ground slopes away within one texel by more than any
+//                 slope bias covers; a back face's at the receiver's depth less the biases, as the paper. (2) Edge
 //                 detection on the map: a texel at a depth discontinuity is on a hard shadow boundary; it
 //                 gets the minimum depth of its 3x3 neighbourhood (the occluder) in G and distance 0 in B.
 //                 (3) Propagation: G becomes the minimum over the 3x3 texels `step` apart, B the minimum of
@@ -130,8 +135,8 @@ float Bias
     float UIStep = 0.0002;
 > = 0.002;
 
-// Extra bias per texel of receiver slope (the receiver's own open surface, in the map, drops away by its
-// slope across a texel): without it a low sun (stress case low-sun) gives `direct` acne on the ground.
+// Extra bias per texel of receiver slope, for the test against back faces (an open surface's own faces
+// towards the light are tested at its tangent plane instead; see Occludes).
 float SlopeBias
 <
     string UIWidget = "slider";
@@ -231,9 +236,10 @@ float DiskRadiusTexels(float receiver, float occluder, float receiverViewDepth, 
 }
 
 // [SECTION] Back-face map and preprocessing
-float4 BackFaceDepthPS(DepthVertexOutput IN) : COLOR
+// VFACE > 0 on triangles facing the light (D3D's clockwise front faces): only open objects draw them.
+float4 BackFaceDepthPS(DepthVertexOutput IN, float face : VFACE) : COLOR
 {
-    return float4(LinearDepth(LightDepth(IN)), 1.0, 1.0e4, 1.0);
+    return float4(LinearDepth(LightDepth(IN)), 1.0, 1.0e4, face > 0 ? 1.0 : 0.0);
 }
 
 // Pass 1: edges of the depth map are the hard shadow boundaries. Edge texels get the nearest occluder (the
@@ -251,7 +257,8 @@ float4 DetectEdgesPS(BufferVertex IN) : COLOR
             highest = max(highest, d);
         }
     bool edge = highest - lowest > EdgeThreshold;
-    return edge ? float4(centre, lowest, 0.0, 1.0) : float4(centre, 1.0, 1.0e4, 1.0);
+    float frontFace = tex2D(DiskMapSampler, IN.UV).w;
+    return edge ? float4(centre, lowest, 0.0, frontFace) : float4(centre, 1.0, 1.0e4, frontFace);
 }
 
 // Passes 2..: the nearest occluder and the distance to the boundary spread `step` texels further.
@@ -267,7 +274,7 @@ float4 Propagate(sampler2D source, float2 uv, float step)
             occluder = min(occluder, n.y);
             distance = min(distance, n.z + step);
         }
-    return float4(centre.x, occluder, distance, 1.0);
+    return float4(centre.x, occluder, distance, centre.w);
 }
 
 float JumpStep()
@@ -295,6 +302,7 @@ struct DiskSampling
 {
     float2 uv;
     float receiver;          // linear depth, biased (constant and slope)
+    ReceiverPlane plane;     // its tangent plane, for the open objects' front faces
     float receiverViewDepth;
     float texelsPerUnit;
     float start;             // random start into the Poisson disk
@@ -307,6 +315,7 @@ DiskSampling MakeSampling(SceneVertexOutput IN)
     s.uv = ShadowMapUV(IN.LP);
     float clipDepth = IN.LP.z / IN.LP.w;
     s.receiver = LinearDepth(clipDepth) - Bias - SlopeBias * ReceiverSlope(IN) / ShadowMapSize.x;
+    s.plane = TangentReceiverPlane(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal), ShadowMapSize, 0.0);
     s.receiverViewDepth = LightViewDepth(clipDepth);
     s.texelsPerUnit = TexelsPerWorldUnit(IN.LP, ShadowMapSize.x);
     float2 noise = tex2D(DiskNoiseSampler, s.uv * ShadowMapSize / 64.0).xy;
@@ -314,6 +323,16 @@ DiskSampling MakeSampling(SceneVertexOutput IN)
     float angle = 6.2831853 * noise.y;
     s.rotation = float2x2(cos(angle), sin(angle), -sin(angle), cos(angle));
     return s;
+}
+
+// Whether the map texel `texel` (depth in R, front-face mark in A), read at `uv`, is in front of the
+// receiver: a back face against the biased receiver depth, an open object's front face against the
+// receiver's tangent plane at the texel's centre less Bias.
+bool Occludes(DiskSampling s, float4 texel, float2 uv)
+{
+    if (texel.w > 0.5)
+        return texel.x < LinearDepth(PlaneDepthAt(s.plane, floor(uv * ShadowMapSize) + 0.5)) - Bias;
+    return texel.x < s.receiver;
 }
 
 float2 DiskOffsetTexels(DiskSampling s, int i, float radius)
@@ -334,8 +353,10 @@ float DiskVisibility(sampler2D map, DiskSampling s, float q)
     float lit = 0;
     for (int i = 0; i < n; ++i) {
         float2 offset = DiskOffsetTexels(s, i, q);
-        float occluder = tex2D(map, s.uv + offset / ShadowMapSize).x;
-        bool occluded = occluder < s.receiver;
+        float2 uv = s.uv + offset / ShadowMapSize;
+        float4 texel = tex2D(map, uv);
+        float occluder = texel.x;
+        bool occluded = Occludes(s, texel, uv);
         // C's own disk: radius from C's occluder as seen from the receiver's plane; P outside it: C lit.
         if (occluded && length(offset) > DiskRadiusTexels(s.receiver, occluder, s.receiverViewDepth,
                                                           s.texelsPerUnit))
@@ -350,7 +371,7 @@ float2 PreprocessedVisibility(SceneVertexOutput IN)
 {
     DiskSampling s = MakeSampling(IN);
     float4 texel = tex2D(DiskMapSampler, s.uv);
-    float hard = texel.x < s.receiver ? 0.0 : 1.0;
+    float hard = Occludes(s, texel, s.uv) ? 0.0 : 1.0;
     float occluder = hard == 0.0 ? texel.x : texel.y;
     if (hard == 1.0 && texel.y >= 1.0)
         return float2(1.0, 1.0);  // no occluder anywhere near: full light
@@ -363,16 +384,22 @@ float2 PreprocessedVisibility(SceneVertexOutput IN)
 float DirectVisibility(SceneVertexOutput IN)
 {
     DiskSampling s = MakeSampling(IN);
-    float own = tex2D(DiskMapSampler, s.uv).x;
-    float occluder = own;
-    if (own >= s.receiver) {
+    float4 own = tex2D(DiskMapSampler, s.uv);
+    float occluder = own.x;
+    if (!Occludes(s, own, s.uv)) {
         // Lit at the centre: the nearest-to-the-light occluder within the largest disk gives the largest d2.
         occluder = 1.0;
+        bool found = false;
         int n = clamp(MaxSamples, 1, 32);
-        for (int i = 0; i < n; ++i)
-            occluder = min(occluder, tex2D(DiskMapSampler, s.uv + DiskOffsetTexels(s, i, MaxRadiusTexels) /
-                                                                       ShadowMapSize).x);
-        if (occluder >= s.receiver)
+        for (int i = 0; i < n; ++i) {
+            float2 uv = s.uv + DiskOffsetTexels(s, i, MaxRadiusTexels) / ShadowMapSize;
+            float4 texel = tex2D(DiskMapSampler, uv);
+            if (Occludes(s, texel, uv)) {
+                occluder = min(occluder, texel.x);
+                found = true;
+            }
+        }
+        if (!found)
             return 1.0;
     }
     float q = DiskRadiusTexels(s.receiver, occluder, s.receiverViewDepth, s.texelsPerUnit);
@@ -459,11 +486,8 @@ float4 DirectPS(SceneVertexOutput IN) : COLOR
 technique preprocessed
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: the open ground stays in the back-face map "
-                                    "(CullClosedOnly), the slope bias (ReceiverSlope, capped at 10) does not "
-                                    "cover a 0.5 degree sun; behind-ordinary [uniform]: the minimum disk "
-                                    "radius (MinRadiusTexels) softens edges by texels spanning up to 1,000 "
-                                    "pixels here";
+    string StressExpectedFailures = "behind-ordinary [uniform]: the minimum disk radius (MinRadiusTexels) "
+                                    "softens edges by texels spanning up to 1,000 pixels here";
     // Edges are detected into the temporary map, a step-1 pass brings them back, then each loop
     // propagates there and back: the final map is DiskMap again.
     string Script = "Pass=RenderBackFaces; Pass=DetectEdges; Pass=PropagateOnce;"
@@ -491,11 +515,8 @@ technique preprocessed
 technique direct
 <
     // Measured by `shadowfx stress` (docs/measurement.md, "shadowfx stress"); reported as xfail.
-    string StressExpectedFailures = "grazing [ordinary]: the open ground stays in the back-face map "
-                                    "(CullClosedOnly), the slope bias (ReceiverSlope, capped at 10) does not "
-                                    "cover a 0.5 degree sun; behind-ordinary [uniform]: the minimum disk "
-                                    "radius (MinRadiusTexels) softens edges by texels spanning up to 1,000 "
-                                    "pixels here";
+    string StressExpectedFailures = "behind-ordinary [uniform]: the minimum disk radius (MinRadiusTexels) "
+                                    "softens edges by texels spanning up to 1,000 pixels here";
     string Script = "Pass=RenderBackFaces; Pass=RenderScene;";
     string ExpectScenes = "dual-l,teapot";
     // measured 0.044 % on dual-l, 0.114 % on teapot (hard truth); 0.089 / 0.169 % against the area-light

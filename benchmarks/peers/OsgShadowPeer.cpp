@@ -495,8 +495,6 @@ int main(int argc, char** argv) {
     whiteTexture->setWrap(osg::Texture::WRAP_S, osg::Texture::REPEAT);
     whiteTexture->setWrap(osg::Texture::WRAP_T, osg::Texture::REPEAT);
     state->setTextureAttributeAndModes(0, whiteTexture);
-    // The camera's view culls nothing, as shadowfx's G-buffer and ground truth do not.
-    state->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
 
     osg::ref_ptr<osgShadow::ShadowTechnique> technique =
         makeTechnique(options.technique, options.mapSize, *shadowed, osgLight.get());
@@ -515,6 +513,13 @@ int main(int argc, char** argv) {
     camera->setClearColor(osg::Vec4(0, 0, 0, 1));
     camera->setDrawBuffer(GL_BACK);  // a pbuffer has a back buffer only
     camera->setReadBuffer(GL_BACK);
+    // The camera's view culls back faces, as the effects' scene passes and the ground truth's G-buffer do
+    // (D3D's default CullMode = CCW; the triangles are reversed to GL's counter-clockwise front): a camera
+    // inside a closed occluder sees the receivers beyond it, not its inner faces. On the camera rather than
+    // the scene, whose state the map passes inherit: a technique's own map-pass setting (ShadowMap's
+    // override, ViewDependentShadowMap's and LiSPSM's mode left off) is below the camera's and wins.
+    camera->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK),
+                                                        osg::StateAttribute::ON);
     const auto setCamera = [&](const runtime::Camera& eye) {
         // The up shadowfx's view matrix has (its second row): where the scene's up is parallel to the view
         // (a camera looking straight down), Camera::view() takes another axis, and so must OSG's look-at.

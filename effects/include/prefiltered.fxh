@@ -67,6 +67,26 @@ float ReceiverDepth(SceneVertexOutput IN)
     return IN.LP.z / IN.LP.w;
 }
 
+// The filtered map at the receiver, its trilinear footprint narrowed to where the receiver's tangent plane
+// changes by at most `depthSpan` across it. A filter of exponentials weighs each texel by how far from the
+// light its occluder is, so a footprint over a receiver that slopes away from the light (the ground under a
+// low sun: a depth change of many times 1 / c across a mip texel) lets its farthest, lit texels outweigh
+// the shadowed ones: false light. The footprint's side in level-0 texels is the longer of the screen
+// derivatives of the map position (the mip level's isotropic choice); the plane changes across such a
+// square by at most its side times the sum of its slopes per texel (TangentPlaneDepthPerTexel). Where that
+// stays within `depthSpan` the lookup is tex2D's own.
+float4 PlaneLimitedLookup(sampler2D map, SceneVertexOutput IN, float depthSpan)
+{
+    float2 uv = ShadowMapUV(IN.LP);
+    float2 dx = ddx(uv);
+    float2 dy = ddy(uv);
+    float side = max(length(dx * ShadowMapSize), length(dy * ShadowMapSize));
+    float2 slope = abs(TangentPlaneDepthPerTexel(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal), ShadowMapSize));
+    float change = side * (slope.x + slope.y);
+    float narrowing = change > depthSpan ? depthSpan / change : 1.0;
+    return tex2Dgrad(map, uv, dx * narrowing, dy * narrowing);
+}
+
 // Two targets of the stored quantities in `FORMAT`: the first blur's output and the mipmapped, filtered
 // map, each with its sampler (PREFIX##TempSampler: point, PREFIX##MapSampler: trilinear).
 #define PREFILTERED_TARGETS(PREFIX, FORMAT)                                                                 \

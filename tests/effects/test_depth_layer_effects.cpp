@@ -343,6 +343,7 @@ struct CpuLayers {
     float culledZ1 = 1.0f, culledZ2 = 1.0f;       // back faces of closed meshes removed
     float frontFacing = 1.0f, backFacing = 1.0f;  // nearest surface facing the light / facing away
     float closedOnlyBackFaceMap = 1.0f;  // nearest back face of a closed mesh or any face of an open one
+    float openFrontFacing = 1.0f;        // nearest face of an open mesh turned towards the light
 };
 
 CpuLayers cpuLayers(const std::vector<Hit>& hits) {
@@ -361,6 +362,7 @@ CpuLayers cpuLayers(const std::vector<Hit>& hits) {
             layers.backFacing = std::min(layers.backFacing, h.depth);
         if (!h.facesLight || !h.closed)
             layers.closedOnlyBackFaceMap = std::min(layers.closedOnlyBackFaceMap, h.depth);
+        if (h.facesLight && !h.closed) layers.openFrontFacing = std::min(layers.openFrontFacing, h.depth);
     }
     return layers;
 }
@@ -516,6 +518,23 @@ TEST_F(DepthLayers, CullClosedOnlyKeepsOpenObjectsInABackFacePass) {
     }
     ASSERT_GT(groundTexels, 1000u);
     EXPECT_EQ(groundSurvived, 0u) << "the control pass should cull the plane";
+}
+
+// back_faces.fx keeps the open objects' faces towards the light (drawn through CullClosedOnly) apart from
+// the back faces, so that only those are tested at the receiver's tangent plane.
+TEST_F(DepthLayers, BackFaceMapKeepsOpenObjectsFrontFacesInTheirOwnChannel) {
+    auto renderer = loadEffectWithDefines(sourcePath("effects/back_faces.fx"),
+                                          {{"SHADOWFX_SHADOW_MAP_SIZE", std::to_string(kMapSize)}});
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene, 64, 48));
+    size_t groundUnderBox = 0;
+    for (const CpuLayers& l : cpu) groundUnderBox += l.backFacing < 1.0f && l.openFrontFacing < 1.0f;
+    ASSERT_GT(groundUnderBox, 100u);
+    expectLayer(readChannel(*renderer, "ShadowMap", 0),
+                cpuMap([](const CpuLayers& l) { return l.backFacing; }), "back faces of the closed box");
+    expectLayer(readChannel(*renderer, "ShadowMap", 1),
+                cpuMap([](const CpuLayers& l) { return l.openFrontFacing; }),
+                "the open ground's faces towards the light");
 }
 
 // [SECTION] ID buffer
