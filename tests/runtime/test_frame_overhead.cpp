@@ -187,4 +187,24 @@ TEST(FrameOverhead, LoopingScriptOnDualL) {
     EXPECT_EQ(overhead.allocations, 0u);
 }
 
+// A STANDARDSGLOBAL selector whose condition is a parameter is evaluated every frame: by the indices the
+// compiler gave the condition and both techniques, never by their names.
+constexpr const char* kSelectingEffect = R"(
+bool UseBright = true;
+float4x4 WorldViewProjection : WorldViewProjection;
+float Script : STANDARDSGLOBAL < string Script = "Technique=UseBright?bright:dim;"; > = 0.8;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 Bright() : COLOR { return float4(1, 1, 1, 1); }
+float4 Dim() : COLOR { return float4(0.2, 0.2, 0.2, 1); }
+technique dim { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Dim(); } }
+technique bright { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Bright(); } }
+)";
+
+TEST(FrameOverhead, SelectorReadingAParameterOnDualL) {
+    const Overhead overhead = frameOverhead(
+        shadowfx::test::loadEffect(kSelectingEffect, false, "selecting.fx"), "", "dual-l", kFrames, 0.0f);
+    EXPECT_EQ(overhead.lookups, 0u);
+    EXPECT_EQ(overhead.allocations, 0u);
+}
+
 }  // namespace
