@@ -37,6 +37,29 @@ void packNumbers(const fx::TypeDesc& type, size_t offset, uint32_t arrayStride, 
     int elements = 1;
     for (int dim : type.arrayDims) elements *= dim;
 
+    // Floats whose every component the value holds and the block has room for (the per-object matrices a
+    // batched pass packs for every visible object): the same bytes without the per-component checks and
+    // conversions below.
+    const bool matrix = type.shape == fx::Shape::Matrix;
+    const size_t rowStep = !matrix ? 0 : hlslColumnsContiguous ? 4 : matrixStride;
+    const size_t colStep = matrix && hlslColumnsContiguous ? matrixStride : 4;
+    const size_t extent = rows > 0 && cols > 0 ? static_cast<size_t>(rows - 1) * rowStep +
+                                                     static_cast<size_t>(cols - 1) * colStep + 4
+                                               : 0;
+    if (type.base == fx::BaseType::Float && elements > 0 && extent > 0 &&
+        first + static_cast<size_t>(elements) * perElement <= value.data.size() &&
+        offset + static_cast<size_t>(elements - 1) * arrayStride + extent <= block.size()) {
+        const float* from = value.data.data() + first;
+        for (int e = 0; e < elements; ++e) {
+            uint8_t* element = block.data() + offset + static_cast<size_t>(e) * arrayStride;
+            for (int r = 0; r < rows; ++r)
+                for (int c = 0; c < cols; ++c, ++from)
+                    std::memcpy(element + static_cast<size_t>(r) * rowStep + static_cast<size_t>(c) * colStep,
+                                from, 4);
+        }
+        return;
+    }
+
     for (int e = 0; e < elements; ++e) {
         const size_t elementOffset = offset + static_cast<size_t>(e) * arrayStride;
         for (int r = 0; r < rows; ++r) {

@@ -33,6 +33,11 @@ bool consumeSuffix(std::string& text, std::string_view suffix) {
 // float3x3 parameter receives the upper-left 3x3 of a 4x4 matrix, a float3 the first three components.
 void store(fx::Value& value, const float* source, int rows, int cols) {
     const fx::TypeDesc& type = value.type;
+    // A matrix of the source's shape (the 4x4s bound for every drawn object) is the source as it is.
+    if (type.shape == fx::Shape::Matrix && type.rows == rows && type.cols == cols) {
+        value.data.assign(source, source + rows * cols);
+        return;
+    }
     if (type.shape == fx::Shape::Matrix) {
         value.data.assign(static_cast<size_t>(type.rows * type.cols), 0.0f);
         for (int r = 0; r < type.rows; ++r)

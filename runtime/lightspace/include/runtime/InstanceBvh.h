@@ -47,6 +47,8 @@ private:
     };
     void build(uint32_t index, uint32_t begin, uint32_t end);
     void collect(uint32_t node, std::vector<uint32_t>& out) const;
+    // Puts out[start, end) (distinct object indices) in ascending order.
+    void ascend(std::vector<uint32_t>& out, size_t start) const;
 
     std::vector<Aabb> mBoxes;
     std::vector<uint32_t> mOrder;  // object indices, grouped by leaf
@@ -77,7 +79,7 @@ void InstanceBvh::query(const Test& test, std::vector<uint32_t>& out) const {
         for (uint32_t i = node.first; i < node.first + node.count; ++i)
             if (test(mBoxes[mOrder[i]]) != Overlap::Outside) out.push_back(mOrder[i]);
     }
-    std::sort(out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
+    ascend(out, start);
 }
 
 // The world box of a local box under a transform (its eight corners transformed): conservative.
