@@ -8,6 +8,7 @@
 #include "AnnotationTable.h"
 #include "BatchedPass.h"
 #include "CullCache.h"
+#include "EffectTextures.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
 #include <runtime/GpuBuffer.h>
@@ -17,7 +18,8 @@
 #include <runtime/GlStateSnapshot.h>
 #include <runtime/InstanceBvh.h>
 #include "HostScene.h"
-#include "PassPreshaders.h"
+#include "PassPrograms.h"
+#include "ParameterValues.h"
 #include "PassUse.h"
 #include "ScriptInterpreter.h"
 #include "PoolMembership.h"
@@ -62,10 +64,8 @@ public:
     const fx::Value* find(std::string_view name) const;
 
     // [SECTION] Parameters
-    std::vector<fx::Value> values;  // one per parameter
-    std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
-    ParameterStamps stamps;         // of `values`
-    PoolMembership pool;            // the `shared` parameters' values, with the other effects of a pool
+    ParameterValues values;  // with their change stamps and pinned flags
+    PoolMembership pool;     // the `shared` parameters' values, with the other effects of a pool
 
     // [SECTION] Resolved once, when the effect is created (names as indices, kept for the effect's life)
     std::unique_ptr<SemanticBinder> binder;          // the semantics, classified; prepared for each frame
@@ -79,35 +79,11 @@ public:
     } techniqueChoice;
 
     // [SECTION] GL resources
-    std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
-    // The compute programs of passes that also draw (programs holds their graphics stages), by technique
-    // and pass; a compute pass alone has its compute program in `programs`.
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> drawingPassComputePrograms;
-    // What a dispatch of the pass runs: its compute program, or null for a pass without one.
-    GpuProgram* computeProgram(size_t technique, size_t pass) const {
-        if (auto found = drawingPassComputePrograms.find({technique, pass});
-            found != drawingPassComputePrograms.end())
-            return found->second.get();
-        GpuProgram* program = programs[technique][pass].get();
-        return program && program->isCompute() ? program : nullptr;
-    }
-    // The vertex stage alone, for passes that draw with no colour write (FrameExecutor::draw); linked on
-    // first use, null where the pass's pixel shader has side effects (GpuProgram::pixelShaderHasSideEffects).
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> depthOnlyPrograms;  // by technique, pass
-    // Passes drawn instanced (FrameOptions::batching), by technique and pass: made on first use for the
-    // pass's per-object flags; `pass` null where the variant cannot be made or linked.
-    struct BatchedSlot {
-        std::vector<bool> perObjectParameter;
-        std::vector<bool> perObjectArgument;
-        std::unique_ptr<BatchedPass> pass;
-    };
-    std::map<std::pair<size_t, size_t>, BatchedSlot> batchedPasses;
-    // The capture of every stream-output pass (CompiledPass::streamOut), by technique and pass, made at
-    // load and kept between frames: a pass drawing it (DrawAuto) reads last frame's where it runs first.
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<StreamOutBuffers>> streamOuts;
-    std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
-    std::map<size_t, GpuTexture> textures;                // by texture parameter index
-    std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)
+    // Every pass's programs, preshaders and stream-output capture, made at load.
+    std::unique_ptr<PassPrograms> programs;
+    // The textures the effect samples and renders into, with the frame's targets and their framebuffers.
+    std::unique_ptr<EffectTextures> textures;
+    std::map<size_t, GpuBuffer> buffers;  // by buffer parameter index (Buffer<T>, ...)
     // The hidden counter (one uint) of each structured read-write buffer (RWStructuredBuffer,
     // AppendStructuredBuffer, ConsumeStructuredBuffer), by parameter index: zero at load and kept between
     // frames and dispatches, as FX11 binds unordered access views keeping their counters; setBuffer sets it
@@ -130,9 +106,6 @@ public:
         auto view = resourceViews.find(parameter);
         return view == resourceViews.end() ? parameter : view->second;
     }
-    // Mipmapped render targets written since their mip chain was last generated: regenerated before a
-    // pass samples them (D3D9's AUTOGENMIPMAP).
-    std::set<const GpuTexture*> staleMipChains;
     std::map<size_t, SamplerObject> samplers;
     std::map<size_t, SamplerObject> comparisonSamplers;
     // fx::CompiledEffect::passSamplers as GL samplers, by index (SamplerBinding::passSampler).
@@ -140,9 +113,6 @@ public:
     std::vector<SamplerObject> passComparisonSamplers;
     GpuMesh quad;
     HostScenePainter hostScene;  // ScriptExternal=color
-    FramebufferCache framebuffers;
-    GpuTexture frameColor;
-    GpuTexture frameDepth;
     std::unique_ptr<UniformRing> uniformRing;
 
     // [SECTION] The application's passes (runtime/EffectPass.h)
@@ -197,8 +167,7 @@ public:
         std::vector<size_t> objectBatch;     // per visible object: its batch
         std::vector<uint32_t> instances;     // the instance lists, batch after batch
         std::vector<fx::Value> arguments;    // the current draw's compile arguments
-        std::vector<fx::Value> planValues;   // the dry run's copy of the parameter values (PlanRecorder)
-        ParameterStamps planStamps;          // their stamps
+        ParameterValues planValues;          // the dry run's copy of the parameter values (PlanRecorder)
         std::vector<float> planClearColor;   // the dry run's clear colour
         std::vector<bool> neededTargets;     // per parameter: a render target the frame's plan uses
         std::vector<glm::vec3> cameraBody;   // the camera's intersection body, for the plan's regions
@@ -219,13 +188,9 @@ public:
     // Fits to what the camera sees (LightFitVisibleSamples): the pre-pass that finds the samples.
     VisibleSamplePass visibleSamplePass;
 
-    // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
-    // allocate (null: all); others already allocated are still resized.
-    void ensureFrameResources(int width, int height, const std::vector<bool>* needed = nullptr);
-    // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
-    void ensureRenderTargets(int width, int height, const std::vector<bool>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
-    // EffectRenderer::setTexture.
+    // EffectRenderer::setTexture (EffectTextures::set), and what earlier frames drew from the old texels
+    // no longer reused.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
     // The textures of the read-write texture parameters a pass uses, at their Width, Height, Depth and
     // ArraySize annotations, and the buffers of its RWBuffer parameters at their ElementCount, in the format
@@ -236,30 +201,13 @@ public:
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                    fx::DiagnosticSink& diagnostics);
     void updateSceneCache(const Scene& scene);
-    // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
-    uint64_t targetIdentity(int resource) const;
 
 private:
-    bool createFileTextures(fx::DiagnosticSink& diagnostics);
     bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
 
     std::shared_ptr<const fx::CompiledEffect> mCompiled;
     std::unordered_map<std::string, size_t> mParameterIndex;
     std::map<const Mesh*, std::pair<std::shared_ptr<const Mesh>, GpuMesh>> mMeshes;
 };
-
-// Stores `value` as parameter `index` of `values` (its type becomes the parameter's; a value with fewer
-// components than the type, such as a script's loop index, is broadcast, as HLSL broadcasts a scalar) and
-// touches its stamp. The one way values change, whether the application, a script or a dry run sets them.
-void storeParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, fx::Value value,
-                    std::vector<fx::Value>& values, ParameterStamps& stamps);
-// The same for a scalar (a script's loop index), broadcast into the value's own storage: a frame that
-// stores it again allocates nothing.
-void storeScalarParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, float scalar,
-                          std::vector<fx::Value>& values, ParameterStamps& stamps);
-
-// A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
-glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height);
-bool isRenderTarget(const fx::TextureDesc& desc);
 
 }  // namespace runtime

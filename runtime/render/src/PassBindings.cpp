@@ -25,16 +25,15 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
         if (textureParameter) {
             // A view of a read-write texture (`string ViewOf`) samples the image's texture.
             auto image = resources.images.find(resources.viewedResource(*textureParameter));
-            auto it = resources.textures.find(*textureParameter);
             if (image != resources.images.end())
                 texture = &image->second;
-            else if (it != resources.textures.end())
-                texture = &it->second;
+            else
+                texture = resources.textures->find(*textureParameter);
         }
         const bool rendering = std::any_of(drawing.colors.begin(), drawing.colors.end(),
                                            [texture](const auto& color) { return color.texture == texture; });
         // Not while the pass renders into it (the chain would be built before the draw that changes it).
-        if (texture && !rendering && resources.staleMipChains.erase(texture) > 0) texture->generateMipmaps();
+        if (texture && !rendering) resources.textures->refreshMipChain(*texture);
         auto buffer = textureParameter ? resources.buffers.find(resources.viewedResource(*textureParameter))
                                        : resources.buffers.end();
         if (application != resources.applicationTextures.end()) {
@@ -113,16 +112,13 @@ void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
 }  // namespace
 
 bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, std::string& error) {
-    if (!resources.framebuffers.bind(targets, error)) return false;
-    for (const RenderTargetAttachment& color : targets.colors)
-        if (color.texture && color.texture->mipLevels() > 1) resources.staleMipChains.insert(color.texture);
-    return true;
+    return resources.textures->bindTargets(targets, error);
 }
 
 bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
               fx::DiagnosticSink& diagnostics, std::string& error) {
     const fx::CompiledPass& compiled = resources.effect().techniques[technique].passes[pass];
-    GpuProgram* program = binding.program ? binding.program : resources.programs[technique][pass].get();
+    GpuProgram* program = binding.program ? binding.program : resources.programs->program(technique, pass);
     const RenderTargets none;
     const RenderTargets& drawing = binding.framebuffer ? *binding.framebuffer : none;
     // A compute program (a compute pass's, or the dispatch of a pass that also draws) binds no target and
@@ -131,9 +127,10 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
         if (binding.framebuffer && !bindPassTargets(resources, drawing, error)) return false;
         if (binding.viewport)
             gl::Viewport(binding.viewport->x, binding.viewport->y, binding.viewport->z, binding.viewport->w);
-        applyRenderStates(binding.states ? *binding.states
-                                         : resources.preshaders[technique][pass].states(
-                                               resources.values, resources.stamps, diagnostics),
+        applyRenderStates(binding.states
+                              ? *binding.states
+                              : resources.programs->preshaders(technique, pass)
+                                    .states(resources.values.all(), resources.values.stamps(), diagnostics),
                           binding.depthBits);
     }
     if (!program || !program->hasShaders()) return true;
@@ -147,18 +144,18 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
 void evaluatePassArguments(EffectResources& resources, size_t technique, size_t pass,
                            const std::vector<bool>* which, std::vector<fx::Value>& arguments,
                            fx::DiagnosticSink& diagnostics) {
-    resources.preshaders[technique][pass].arguments(resources.values, resources.stamps, which, arguments,
-                                                    diagnostics);
+    resources.programs->preshaders(technique, pass)
+        .arguments(resources.values.all(), resources.values.stamps(), which, arguments, diagnostics);
 }
 
 void uploadPassValues(EffectResources& resources, GpuProgram& program,
                       const std::vector<fx::Value>& arguments) {
-    program.upload(resources.values, arguments, *resources.uniformRing);
+    program.upload(resources.values.all(), arguments, *resources.uniformRing);
 }
 
 void commitPassValues(EffectResources& resources, size_t technique, size_t pass,
                       std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
-    GpuProgram* program = resources.programs[technique][pass].get();
+    GpuProgram* program = resources.programs->program(technique, pass);
     if (!program || !program->hasShaders()) return;
     evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
     uploadPassValues(resources, *program, arguments);

@@ -68,8 +68,7 @@ private:
     const std::vector<glm::vec3>& mBody;
     FramePlan& mPlan;
     fx::DiagnosticSink& mDiagnostics;
-    std::vector<fx::Value>& mValues;  // the dry run's copy of the parameter values (kept between frames)
-    ParameterStamps& mStamps;         // of mValues (the resources' clock: stamps stay unique; kept too)
+    ParameterValues& mValues;  // the dry run's copy of the parameter values (kept between frames)
     std::array<int, RenderTargets::kMaxColorTargets> mColors{};
     int mDepth = kFrameDepth;
     bool mLightPort = false;
