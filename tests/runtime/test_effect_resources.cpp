@@ -1,13 +1,17 @@
 // The invariants of what an EffectRenderer keeps between frames, pinned on the classes that keep them:
 // parameter values change only with their stamps (ParameterValues), a render target reallocated for a new
-// frame size leaves no framebuffer attaching the old one (EffectTextures), and every pass has its
-// programs from load on (PassPrograms). Real glslang and real GL.
+// frame size leaves no framebuffer attaching the old one (EffectTextures), every pass has its programs
+// from load on (PassPrograms), a counted buffer has its counter and a view reaches its resource
+// (StorageResources), and the scene's BVH follows its objects (SceneCache). Real glslang and real GL.
 #include "effects/EffectHarness.h"
 
 #include "EffectResources.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
+#include <runtime/Mesh.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace shadowfx::test {
 namespace {
@@ -37,11 +41,13 @@ technique t
 }
 )";
 
-std::shared_ptr<const fx::CompiledEffect> compile(const char* source) {
+// `source` compiled, or a file's source where `isFile`.
+std::shared_ptr<const fx::CompiledEffect> compile(const std::string& source, bool isFile = false) {
     sharedContext();
     fx::DiagnosticList diagnostics;
     std::shared_ptr<fx::Effect> effect =
-        fx::parseEffectSource(source, "resources.fx", fx::ParseOptions{}, diagnostics);
+        isFile ? fx::parseEffectFile(source, fx::ParseOptions{}, diagnostics)
+               : fx::parseEffectSource(source, "resources.fx", fx::ParseOptions{}, diagnostics);
     std::shared_ptr<fx::CompiledEffect> compiled =
         effect ? fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) : nullptr;
     EXPECT_TRUE(compiled && !diagnostics.hasErrors()) << diagnostics.str();
@@ -219,6 +225,80 @@ TEST(PassPrograms, EveryPassHasItsProgramFromLoadOn) {
     runtime::GpuProgram* depthOnly = programs->depthOnlyProgram(0, 0, pass);
     ASSERT_NE(depthOnly, nullptr);
     EXPECT_EQ(programs->depthOnlyProgram(0, 0, pass), depthOnly);
+}
+
+uint32_t counterValue(const runtime::GpuBuffer& counter) {
+    uint32_t value = 0xFFFFFFFFu;
+    gl::GetNamedBufferSubData(counter.id(), 0, sizeof value, &value);
+    return value;
+}
+
+TEST(StorageResources, ACountedBufferKeepsItsCounterAndAViewReachesItsResource) {
+    const auto effect = compile(sourcePath("tests/data/d3d10/compute_append_consume.fx"), true);
+    ASSERT_TRUE(effect);
+    fx::DiagnosticList diagnostics;
+    std::unique_ptr<runtime::EffectResources> resources =
+        runtime::EffectResources::create(effect, diagnostics);
+    ASSERT_TRUE(resources) << diagnostics.str();
+    runtime::StorageResources& storage = *resources->storage;
+    const size_t live = indexOf(*effect, "Live"), spent = indexOf(*effect, "Spent"),
+                 sparks = indexOf(*effect, "Sparks"), taken = indexOf(*effect, "Taken");
+    EXPECT_EQ(storage.viewedResource(spent), live);
+    EXPECT_EQ(storage.viewedResource(sparks), live);
+    EXPECT_EQ(storage.viewedResource(live), live);
+
+    // From load on: every counted buffer has its counter at zero, and room for its ElementCount.
+    ASSERT_NE(storage.buffer(live), nullptr);
+    ASSERT_NE(storage.counter(live), nullptr);
+    ASSERT_NE(storage.counter(taken), nullptr);
+    EXPECT_EQ(counterValue(*storage.counter(live)), 0u);
+    const size_t room = storage.buffer(live)->size();
+    EXPECT_GE(room, 64 * 12u);
+
+    // Elements set through the consume view are the append buffer's: its counter counts them, and the
+    // buffer keeps room for the ElementCount the shaders append up to.
+    float elements[3][3] = {{0, 0, 1}, {0, 0, 2}, {0, 0, 3}};
+    ASSERT_TRUE(storage.set(spent, elements, 3, sizeof elements[0], diagnostics)) << diagnostics.str();
+    EXPECT_EQ(counterValue(*storage.counter(live)), 3u);
+    EXPECT_EQ(storage.buffer(live)->size(), room);
+    // Elements of the wrong size are refused and change nothing.
+    fx::DiagnosticList refused;
+    EXPECT_FALSE(storage.set(live, elements, 3, 4, refused));
+    EXPECT_EQ(countDiagnostics(refused, fx::DiagId::SetBufferPackedElementSize), 1);
+    EXPECT_EQ(counterValue(*storage.counter(live)), 3u);
+
+    const uint64_t dispatches = storage.dispatches();
+    storage.countDispatch();
+    EXPECT_EQ(storage.dispatches(), dispatches + 1);
+}
+
+TEST(SceneCache, TheBvhFollowsTheObjectsAndOnlyThem) {
+    sharedContext();
+    auto box = std::make_shared<runtime::Mesh>(runtime::makeBox(glm::vec3(1.0f)));
+    const float half = box->boundsMax().x;
+    runtime::Scene scene;
+    scene.objects.resize(2);
+    scene.objects[0].mesh = scene.objects[1].mesh = box;
+    scene.objects.back().world = glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, 0));
+    runtime::SceneCache cache;
+    EXPECT_FALSE(cache.valid());
+    cache.update(scene);
+    ASSERT_TRUE(cache.valid());
+    const uint64_t stamp = cache.stamp();
+    EXPECT_EQ(cache.meshCount(), 1u);
+    EXPECT_EQ(cache.meshSlots(), std::vector<uint32_t>({0, 0}));
+    EXPECT_NEAR(cache.bvh().rootBox().max.x, 10 + half, 1e-4f);
+
+    // The same objects again: the same stamp, nothing rebuilt.
+    cache.update(scene);
+    EXPECT_EQ(cache.stamp(), stamp);
+
+    // An object moved: a new stamp, and the BVH and bounds describe where it is now.
+    scene.objects.back().world = glm::translate(glm::mat4(1.0f), glm::vec3(-20, 0, 0));
+    cache.update(scene);
+    EXPECT_NE(cache.stamp(), stamp);
+    EXPECT_NEAR(cache.bvh().rootBox().min.x, -20 - half, 1e-4f);
+    EXPECT_NEAR(cache.bvh().rootBox().max.x, half, 1e-4f);
 }
 
 }  // namespace

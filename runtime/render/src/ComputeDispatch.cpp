@@ -37,7 +37,7 @@ bool dispatchBoundCompute(EffectResources& resources, const fx::CompiledPass& pa
         }
     }
     gl::DispatchCompute(groups[0], groups[1], groups[2]);
-    ++resources.computeDispatches;
+    resources.storage->countDispatch();
     // GL orders a compute shader's storage-buffer and image writes before nothing by itself (D3D11 orders
     // UAV writes before the next reads implicitly). What reads them next: any shader's storage blocks
     // (SHADER_STORAGE: the next dispatch or a draw's StructuredBuffer), image loads and stores

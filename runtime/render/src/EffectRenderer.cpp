@@ -254,8 +254,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     });
     // Camera-relative rendering for scenes far from the origin (Scene.h, renderOrigin). Such a scene is
     // translated anew each frame and its cache rebuilt: a price only scenes far from the origin pay.
-    mImpl->updateSceneCache(scene);
-    const glm::vec3 origin = renderOrigin(mImpl->sceneCache.bounds);
+    mImpl->sceneCache.update(scene);
+    const glm::vec3 origin = renderOrigin(mImpl->sceneCache.bounds());
     const std::optional<Scene> rebased =
         origin == glm::vec3(0.0f) ? std::nullopt : std::optional<Scene>(scene.translated(-origin));
     const Scene& frameScene = rebased ? *rebased : scene;
@@ -263,16 +263,16 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
     mImpl->textures->ensureFrame(options.width, options.height, &neededTargets);
-    if (rebased) mImpl->updateSceneCache(frameScene);  // else the scene's cache, stamped above
+    if (rebased) mImpl->sceneCache.update(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
     SemanticBinder& binder = *mImpl->binder;
     std::optional<VisibleSamples> visible;
     if (binder.wantsVisibleSamples(mImpl->values.all()))
         visible = mImpl->visibleSamplePass.run(
-            frameScene, mImpl->sceneCache.bvh, options.width, options.height,
+            frameScene, mImpl->sceneCache.bvh(), options.width, options.height,
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
-    binder.prepare(frameScene, mImpl->sceneCache.bounds,
+    binder.prepare(frameScene, mImpl->sceneCache.bounds(),
                    static_cast<float>(options.width) / static_cast<float>(options.height),
                    mImpl->values.all(), diagnostics, visible ? &*visible : nullptr);
     const std::vector<PassUse>& uses = mImpl->passUses[techniqueIndex];
@@ -290,10 +290,10 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     {
         std::vector<glm::vec3>& body = mImpl->frameScratch.cameraBody;
         body.clear();
-        if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
+        if (options.leaveOut && !mImpl->sceneCache.bvh().empty()) {
             RenderPortView camera;
             portMatrices(frameScene, binder, options, "", -1, -1, camera);
-            const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
+            const Aabb& objects = mImpl->sceneCache.bvh().rootBox();
             intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max}, body);
         }
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them

@@ -1,13 +1,26 @@
-// EffectResources: what an EffectRenderer owns between frames. Created once from the compiled effect (the
-// way FX11's EffectLoad turns a compiled effect into runtime structures once): one GpuProgram and one
-// PassPreshaders per pass, the effect's textures and samplers, the parameter values with their change
-// stamps; render targets sized per frame, GPU meshes per scene mesh, the scene's BVH and what each render
-// target holds after the frames so far.
+// EffectResources: what an EffectRenderer owns between frames, as the parts that own it, each a class that
+// keeps its own invariants (FX11's EffectLoad resolves a compiled effect into runtime structures once,
+// its EffectRuntime changes only what changed):
+// - ParameterValues: the values, their change stamps and pinned flags, changed only by writers that
+//   touch the stamp (per frame: semantics, scripts; any time: the application, a pool);
+// - PassPrograms: every pass's programs, preshaders and stream-output capture (at load; variants on first
+//   use);
+// - EffectTextures: the sampled textures, the render targets sized per frame and the framebuffers that
+//   attach them (a target reallocated leaves no framebuffer on the old one);
+// - StorageResources: buffers, counters and read-write textures, kept between frames and dispatches;
+// - EffectSamplers: the GL samplers (at load, unchanged after);
+// - SceneCache: the scene's bounds and BVH, rebuilt when its objects change.
+// Resolved once beside them: the semantic binder, the scripts' operands, each technique's pass uses. What
+// is left as plain members is working storage (frameScratch, framePlan: overwritten by each frame, kept
+// for its allocations), what the application's passes keep between begin() and end(), and the history of
+// the render targets' contents, which every change of what passes read outside the plan (setTexture,
+// setApplicationTexture, setBuffer) clears.
 #pragma once
 
 #include "AnnotationTable.h"
 #include "BatchedPass.h"
 #include "CullCache.h"
+#include "EffectSamplers.h"
 #include "EffectTextures.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
@@ -21,7 +34,9 @@
 #include "PassPrograms.h"
 #include "ParameterValues.h"
 #include "PassUse.h"
+#include "SceneCache.h"
 #include "ScriptInterpreter.h"
+#include "StorageResources.h"
 #include "PoolMembership.h"
 #include <runtime/SamplerObject.h>
 #include <runtime/StreamOutBuffers.h>
@@ -45,15 +60,11 @@
 
 namespace runtime {
 
-// A storage buffer's `int ElementCount = N;` (1 without it); nullopt, with a diagnostic at the parameter,
-// for a count outside 1..2^28.
-std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
-                                           fx::DiagnosticSink& diagnostics);
-
 class EffectResources {
 public:
-    // Links every pass's program, compiles nothing (the effect is compiled), creates textures and samplers.
-    // nullptr if a program does not link or a file texture cannot be read; the diagnostics say why.
+    // Links every pass's program, compiles nothing (the effect is compiled), creates textures, storage and
+    // samplers. nullptr if a program does not link, a file texture cannot be read or a buffer or image
+    // cannot be made; the diagnostics say why.
     static std::unique_ptr<EffectResources> create(std::shared_ptr<const fx::CompiledEffect> compiled,
                                                    fx::DiagnosticSink& diagnostics);
 
@@ -83,47 +94,17 @@ public:
     std::unique_ptr<PassPrograms> programs;
     // The textures the effect samples and renders into, with the frame's targets and their framebuffers.
     std::unique_ptr<EffectTextures> textures;
-    std::map<size_t, GpuBuffer> buffers;  // by buffer parameter index (Buffer<T>, ...)
-    // The hidden counter (one uint) of each structured read-write buffer (RWStructuredBuffer,
-    // AppendStructuredBuffer, ConsumeStructuredBuffer), by parameter index: zero at load and kept between
-    // frames and dispatches, as FX11 binds unordered access views keeping their counters; setBuffer sets it
-    // to the number of elements given.
-    std::map<size_t, GpuBuffer> counters;
-    // The textures of the RWTexture1D, RWTexture2D, RWTexture3D and RWTexture2DArray parameters, by
-    // parameter index (StorageImages.cpp): made at load, kept between frames. An RWBuffer's storage is in
-    // `buffers`, with the buffer texture its image binds.
-    std::map<size_t, GpuTexture> images;
-    // Compute dispatches so far: what a pass reading storage buffers or images reads changes with them,
-    // which the frame plan's signatures take in (PlanRecorder::draw) so that leave-out never keeps such a
-    // pass's last result.
-    uint64_t computeDispatches = 0;
-    // `string ViewOf = "Resource";` on a StructuredBuffer, ByteAddressBuffer or Texture2D: the parameter
-    // reads the read-write resource named (FX11's shader-resource view of the buffer or texture a compute
-    // pass writes through its unordered access view), by index. Made at load (StorageImages.cpp).
-    std::map<size_t, size_t> resourceViews;
-    // The resource `parameter` reads: the one it is a view of, else its own.
-    size_t viewedResource(size_t parameter) const {
-        auto view = resourceViews.find(parameter);
-        return view == resourceViews.end() ? parameter : view->second;
-    }
-    std::map<size_t, SamplerObject> samplers;
-    std::map<size_t, SamplerObject> comparisonSamplers;
-    // fx::CompiledEffect::passSamplers as GL samplers, by index (SamplerBinding::passSampler).
-    std::vector<SamplerObject> passSamplers;
-    std::vector<SamplerObject> passComparisonSamplers;
+    // The buffers and read-write textures behind the buffer and image parameters, with their views.
+    std::unique_ptr<StorageResources> storage;
+    EffectSamplers samplers;  // made at load, unchanged after
     GpuMesh quad;
     HostScenePainter hostScene;  // ScriptExternal=color
     std::unique_ptr<UniformRing> uniformRing;
 
     // [SECTION] The application's passes (runtime/EffectPass.h)
     AnnotationTable annotations;
-    // A GL texture of the application's given to a texture parameter (EffectVariable::setTexture), bound
-    // wherever the parameter is sampled instead of the effect's own; the application keeps it alive.
-    struct ApplicationTexture {
-        GLuint name = 0;
-        GLenum target = GL_TEXTURE_2D;
-    };
-    std::map<size_t, ApplicationTexture> applicationTextures;
+    // What EffectTechnique::begin() captured and EffectPass::apply() bound, until end(): written by those
+    // (EffectPass.cpp, ComputeDispatch.cpp) alone.
     struct ApplicationFrame {
         std::optional<size_t> begun;           // the technique between begin() and end()
         std::optional<GlStateSnapshot> saved;  // what end() restores
@@ -138,18 +119,8 @@ public:
     } application;
 
     // [SECTION] Between frames
-    // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
-    // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
-    struct SceneCache {
-        uint64_t stamp = 0;
-        bool valid = false;
-        Bounds bounds;
-        InstanceBvh bvh;
-        std::map<const Mesh*, Aabb> meshBoxes;
-        // Per object: its mesh's index among the scene's distinct meshes (batching groups by it).
-        std::vector<uint32_t> meshSlots;
-        size_t meshCount = 0;
-    } sceneCache;
+    // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.
+    SceneCache sceneCache;
     // The culling volumes' visible lists, kept while the scene and the volume stand still.
     CullCache cullCache;
     // FrameExecutor's working lists, kept between frames so that a frame like the last allocates nothing.
@@ -192,19 +163,14 @@ public:
     // EffectRenderer::setTexture (EffectTextures::set), and what earlier frames drew from the old texels
     // no longer reused.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
-    // The textures of the read-write texture parameters a pass uses, at their Width, Height, Depth and
-    // ArraySize annotations, and the buffers of its RWBuffer parameters at their ElementCount, in the format
-    // their code declares (StorageImages.cpp). False, with a diagnostic, for a format or size shadowfx
-    // cannot make.
-    bool createImages(fx::DiagnosticSink& diagnostics);
-    // EffectRenderer::setBuffer.
+    // EffectVariable::setTexture (EffectTextures::setApplicationTexture), and the same.
+    void setApplicationTexture(size_t parameter, GLuint name, GLenum target);
+    // EffectRenderer::setBuffer (StorageResources::set), and what earlier frames drew from the old
+    // contents no longer reused.
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                    fx::DiagnosticSink& diagnostics);
-    void updateSceneCache(const Scene& scene);
 
 private:
-    bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
-
     std::shared_ptr<const fx::CompiledEffect> mCompiled;
     std::unordered_map<std::string, size_t> mParameterIndex;
     std::map<const Mesh*, std::pair<std::shared_ptr<const Mesh>, GpuMesh>> mMeshes;

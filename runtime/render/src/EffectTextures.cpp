@@ -259,6 +259,19 @@ void EffectTextures::refreshMipChain(const GpuTexture& texture) {
     if (mStaleMipChains.erase(&texture) > 0) texture.generateMipmaps();
 }
 
+void EffectTextures::setApplicationTexture(size_t parameter, GLuint name, GLenum target) {
+    if (name == 0) {
+        mApplicationTextures.erase(parameter);
+    } else {
+        mApplicationTextures[parameter] = ApplicationTexture{name, target};
+    }
+}
+
+const EffectTextures::ApplicationTexture* EffectTextures::applicationTexture(size_t parameter) const {
+    auto found = mApplicationTextures.find(parameter);
+    return found == mApplicationTextures.end() ? nullptr : &found->second;
+}
+
 void EffectTextures::uploadFrameColor(const uint8_t* rgba8) {
     mFrameColor.uploadRGBA8(rgba8);
 }

@@ -15,6 +15,7 @@
 #include <fx/Diagnostics.h>
 #include <runtime/EffectRenderer.h>
 #include <runtime/Framebuffer.h>
+#include <runtime/GlApi.h>
 #include <runtime/GpuTexture.h>
 #include <runtime/GpuProgram.h>
 
@@ -50,6 +51,16 @@ public:
     // EffectRenderer::setTexture: a read texture's texels replaced. False, with a diagnostic, for a
     // parameter that is no read texture or data of the wrong size.
     bool set(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
+    // A GL texture of the application's given to a texture parameter (EffectVariable::setTexture), bound
+    // wherever the parameter is sampled instead of the effect's own; the application keeps it alive.
+    // Name 0 takes it back.
+    struct ApplicationTexture {
+        GLuint name = 0;
+        GLenum target = GL_TEXTURE_2D;
+    };
+    void setApplicationTexture(size_t parameter, GLuint name, GLenum target);
+    // The application's texture for a parameter, or null where it gave none.
+    const ApplicationTexture* applicationTexture(size_t parameter) const;
     // Host files write their shadow ratio into the frame's colour target.
     void uploadFrameColor(const uint8_t* rgba8);
 
@@ -79,6 +90,7 @@ private:
     GpuTexture mFrameColor;
     GpuTexture mFrameDepth;
     std::set<const GpuTexture*> mStaleMipChains;  // mipmapped targets written since their chain was made
+    std::map<size_t, ApplicationTexture> mApplicationTextures;  // by texture parameter index
 };
 
 // A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.

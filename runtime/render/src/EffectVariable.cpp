@@ -223,13 +223,7 @@ bool EffectVariable::setTexture(GLuint name) {
     if (!isValid() || !isWhole()) return false;
     const std::optional<GLenum> target = textureTarget(mResources->parameterInfo()[mParameter].type.base);
     if (!target) return false;
-    if (name == 0) {
-        mResources->applicationTextures.erase(mParameter);
-    } else {
-        mResources->applicationTextures[mParameter] = EffectResources::ApplicationTexture{name, *target};
-    }
-    // What render(Scene) kept in its targets may have been drawn from the texture this replaces.
-    mResources->targetHistory.clear();
+    mResources->setApplicationTexture(mParameter, name, *target);
     return true;
 }
 

@@ -235,7 +235,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         mVisible.clear();
         mVisible.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
         // What a pass streams out must not depend on the view: it draws every object.
-        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid &&
+        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid() &&
                              use.projectsWith(mPortLight, mBinder) && !capture;
         int drawable = 0;
         for (size_t index = 0; index < mScene.objects.size(); ++index) {
@@ -358,9 +358,9 @@ void FrameExecutor::closePass() {
 // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
 // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
 void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) const {
-    const InstanceBvh& bvh = mResources.sceneCache.bvh;
+    const InstanceBvh& bvh = mResources.sceneCache.bvh();
     CullCache::Volume volume;
-    volume.sceneStamp = mResources.sceneCache.stamp;
+    volume.sceneStamp = mResources.sceneCache.stamp();
     volume.viewProjection = mPort.projection * mPort.view;
     volume.lightPort = mLightPort;
     if (mLightPort) volume.region = op && op->cullToReceivers ? op->region : fullLightRegion();
@@ -618,7 +618,7 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
                 std::memcpy(mContext.data() + at + 1, data.data(), data.size() * sizeof(float));
         }
     }
-    batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp);
+    batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp());
     const auto bindObject = [&](const SceneObject& object) {
         mResources.values.bindSemantics(mBinder, mPort, &object, mOptions.time,
                                         SemanticBinder::Scope::PerObject, &use.used);
@@ -642,9 +642,9 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     // or per run of consecutive objects with one mesh where the order matters.
     const bool anyOrder = orderFree(states);
     constexpr size_t kNoBatch = ~size_t(0);
-    const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots;
+    const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots();
     mBatches.clear();
-    if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount, kNoBatch);
+    if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount(), kNoBatch);
     mObjectBatch.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {

@@ -19,43 +19,31 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
                                                        : desc                   ? desc->texture
                                                                                 : std::nullopt;
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
-        auto application = textureParameter ? resources.applicationTextures.find(*textureParameter)
-                                            : resources.applicationTextures.end();
+        const EffectTextures::ApplicationTexture* application =
+            textureParameter ? resources.textures->applicationTexture(*textureParameter) : nullptr;
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
             // A view of a read-write texture (`string ViewOf`) samples the image's texture.
-            auto image = resources.images.find(resources.viewedResource(*textureParameter));
-            if (image != resources.images.end())
-                texture = &image->second;
-            else
-                texture = resources.textures->find(*textureParameter);
+            texture = resources.storage->image(resources.storage->viewedResource(*textureParameter));
+            if (!texture) texture = resources.textures->find(*textureParameter);
         }
         const bool rendering = std::any_of(drawing.colors.begin(), drawing.colors.end(),
                                            [texture](const auto& color) { return color.texture == texture; });
         // Not while the pass renders into it (the chain would be built before the draw that changes it).
         if (texture && !rendering) resources.textures->refreshMipChain(*texture);
-        auto buffer = textureParameter ? resources.buffers.find(resources.viewedResource(*textureParameter))
-                                       : resources.buffers.end();
-        if (application != resources.applicationTextures.end()) {
-            gl::BindTexture(application->second.target, application->second.name);
+        const GpuBuffer* buffer =
+            textureParameter ? resources.storage->buffer(resources.storage->viewedResource(*textureParameter))
+                             : nullptr;
+        if (application) {
+            gl::BindTexture(application->target, application->name);
         } else if (texture) {
             gl::BindTexture(texture->target(), texture->id());
-        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {
-            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->second.texture());  // Buffer<T>
+        } else if (buffer && buffer->texture()) {
+            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->texture());  // Buffer<T>
         } else {
             gl::BindTexture(GL_TEXTURE_2D, 0);
         }
-        const auto passSampler = static_cast<size_t>(binding.passSampler);
-        auto& passSamplers = binding.depthCompare ? resources.passComparisonSamplers : resources.passSamplers;
-        auto& samplers = binding.depthCompare ? resources.comparisonSamplers : resources.samplers;
-        auto sampler = samplers.find(binding.samplerParameter);
-        if (binding.passSampler >= 0 && passSampler < passSamplers.size()) {
-            passSamplers[passSampler].bind(binding.unit);  // the states the pass sets on its register
-        } else if (sampler != samplers.end()) {
-            sampler->second.bind(binding.unit);
-        } else {
-            SamplerObject::unbind(binding.unit);
-        }
+        resources.samplers.bind(binding);
     }
 }
 
@@ -76,16 +64,16 @@ void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
     for (size_t binding = 0; binding < parameters.size(); ++binding) {
-        auto buffer = resources.buffers.find(resources.viewedResource(parameters[binding]));
-        if (buffer != resources.buffers.end())
-            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
+        const GpuBuffer* buffer =
+            resources.storage->buffer(resources.storage->viewedResource(parameters[binding]));
+        if (buffer) gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->id());
     }
     const std::vector<size_t> counters = GpuProgram::counterParameters(pass);
     for (size_t k = 0; k < counters.size(); ++k) {
-        auto counter = resources.counters.find(resources.viewedResource(counters[k]));
-        if (counter != resources.counters.end())
+        const GpuBuffer* counter = resources.storage->counter(resources.storage->viewedResource(counters[k]));
+        if (counter)
             gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(parameters.size() + k),
-                               counter->second.id());
+                               counter->id());
     }
 }
 
@@ -94,17 +82,17 @@ void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& 
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
     for (size_t unit = 0; unit < parameters.size(); ++unit) {
-        auto image = resources.images.find(parameters[unit]);
-        auto buffer = resources.buffers.find(parameters[unit]);
-        if (image != resources.images.end()) {
+        const GpuTexture* image = resources.storage->image(parameters[unit]);
+        const GpuBuffer* buffer = resources.storage->buffer(parameters[unit]);
+        if (image) {
             // A 3D texture's slices and an array's elements are all the image's (image3D, image2DArray).
-            const GLenum target = image->second.target();
+            const GLenum target = image->target();
             const GLboolean layered = target == GL_TEXTURE_3D || target == GL_TEXTURE_2D_ARRAY;
-            gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, layered, 0, GL_READ_WRITE,
-                                 image->second.glFormat().internalFormat);
-        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {  // RWBuffer<T>
-            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->second.texture(), 0, GL_FALSE, 0,
-                                 GL_READ_WRITE, buffer->second.texelFormat());
+            gl::BindImageTexture(static_cast<GLuint>(unit), image->id(), 0, layered, 0, GL_READ_WRITE,
+                                 image->glFormat().internalFormat);
+        } else if (buffer && buffer->texture()) {  // RWBuffer<T>
+            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->texture(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                                 buffer->texelFormat());
         }
     }
 }

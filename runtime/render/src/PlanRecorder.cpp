@@ -107,7 +107,7 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
         op.writes.push_back(mDepth);
         op.reads.push_back(mDepth);
     }
-    uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp);  // "HostScne"
+    uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp());  // "HostScne"
     h = hashBytes(h, &mPort.view, sizeof(mPort.view));
     op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
 }
@@ -181,11 +181,11 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
                     static_cast<uint64_t>(mPort.cascade + 1));
     for (size_t p : use.perPassParameters)
         h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
-    if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp);
+    if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp());
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
         if (!stage->storageBuffers.empty() || !stage->images.empty())
-            h = hashCombine(h, mResources.computeDispatches);
+            h = hashCombine(h, mResources.storage->dispatches());
     op.signature = h;
     op.sceneSaysSkip = mSceneSaysSkip;
     if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
@@ -201,7 +201,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         } else if (mPort.cascade >= 0) {
             // A cascade serves the receivers of its own depth slice only: its casters are culled to that
             // slice, and a slice beyond the farthest receiver has nothing to serve.
-            const InstanceBvh& bvh = mResources.sceneCache.bvh;
+            const InstanceBvh& bvh = mResources.sceneCache.bvh();
             const glm::mat4 slice = cascadeSlice();
             std::vector<glm::vec3>& body = mResources.frameScratch.sliceBody;
             std::vector<uint32_t>& receivers = mResources.frameScratch.sliceObjects;
