@@ -11,7 +11,7 @@ namespace runtime {
 
 bool bindComputePass(EffectResources& resources, size_t technique, size_t pass,
                      std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
-    GpuProgram* program = resources.computeProgram(technique, pass);
+    GpuProgram* program = resources.programs->computeProgram(technique, pass);
     if (!program) return false;
     PassBinding binding;
     binding.program = program;
@@ -37,7 +37,7 @@ bool dispatchBoundCompute(EffectResources& resources, const fx::CompiledPass& pa
         }
     }
     gl::DispatchCompute(groups[0], groups[1], groups[2]);
-    ++resources.computeDispatches;
+    resources.storage->countDispatch();
     // GL orders a compute shader's storage-buffer and image writes before nothing by itself (D3D11 orders
     // UAV writes before the next reads implicitly). What reads them next: any shader's storage blocks
     // (SHADER_STORAGE: the next dispatch or a draw's StructuredBuffer), image loads and stores
@@ -55,13 +55,13 @@ bool EffectPass::dispatch(uint32_t x, uint32_t y, uint32_t z, fx::DiagnosticSink
     fx::DiagnosticList unreported;
     fx::DiagnosticSink& sink = diagnostics ? *diagnostics : unreported;
     const fx::CompiledPass& pass = mResources->effect().techniques[mTechnique].passes[mPass];
-    if (!mResources->computeProgram(mTechnique, mPass)) {
+    if (!mResources->programs->computeProgram(mTechnique, mPass)) {
         sink.report(fx::DiagId::DispatchNotCompute, pass.loc, {pass.name});
         return false;
     }
     // As FX11's Dispatch after the pass's Apply: the values are those apply() or commitChanges() uploaded.
     if (mResources->application.applied != std::make_pair(mTechnique, mPass) && !apply(&sink)) return false;
-    GpuProgram* applied = mResources->programs[mTechnique][mPass].get();
+    GpuProgram* applied = mResources->programs->program(mTechnique, mPass);
     if (applied->isCompute()) return dispatchBoundCompute(*mResources, pass, {x, y, z}, sink);
     // A pass that also draws: apply() made its graphics program current for the application's draws,
     // which it is again after the dispatch.
@@ -69,7 +69,7 @@ bool EffectPass::dispatch(uint32_t x, uint32_t y, uint32_t z, fx::DiagnosticSink
     if (!bindComputePass(*mResources, mTechnique, mPass, arguments, sink)) return false;
     const bool dispatched = dispatchBoundCompute(*mResources, pass, {x, y, z}, sink);
     applied->bind();
-    applied->upload(mResources->values, mResources->application.arguments, *mResources->uniformRing);
+    applied->upload(mResources->values.all(), mResources->application.arguments, *mResources->uniformRing);
     return dispatched;
 }
 

@@ -42,7 +42,7 @@ void captureApplicationTarget(EffectResources& resources) {
     frame.depthBits = boundDepthBits(frame.framebuffer);
     frame.boundDepthBits = frame.depthBits;
     frame.targetKnown = true;
-    resources.ensureRenderTargets(std::max(frame.viewport[2], 1), std::max(frame.viewport[3], 1));
+    resources.textures->ensureRenderTargets(std::max(frame.viewport[2], 1), std::max(frame.viewport[3], 1));
 }
 
 // The targets a pass's Script annotation names (RenderColorTargetN, RenderDepthStencilTarget).
@@ -64,15 +64,13 @@ ScriptTargets scriptTargets(const EffectResources& resources, const fx::Compiled
         const GpuTexture* texture = nullptr;
         if (!command.value.empty()) {
             out.effectTargets = true;
-            auto found = command.parameter >= 0
-                             ? resources.textures.find(static_cast<size_t>(command.parameter))
-                             : resources.textures.end();
-            if (found == resources.textures.end()) {
+            texture = command.parameter >= 0 ? resources.textures->find(static_cast<size_t>(command.parameter))
+                                             : nullptr;
+            if (!texture) {
                 out.missing = command.value;
                 out.missingLoc = command.loc;
                 continue;
             }
-            texture = &found->second;
         }
         if (color) {
             out.targets.colors[static_cast<size_t>(command.index)] = RenderTargetAttachment::wholeOf(texture);
@@ -119,7 +117,7 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     r.pool.pull(r);
     EffectResources::ApplicationFrame& frame = r.application;
     const fx::CompiledPass& pass = compiledPass(r, mTechnique, mPass);
-    if (r.programs[mTechnique][mPass] && r.programs[mTechnique][mPass]->isCompute()) {
+    if (r.programs->program(mTechnique, mPass) && r.programs->program(mTechnique, mPass)->isCompute()) {
         if (!bindComputePass(r, mTechnique, mPass, frame.arguments, sink)) return false;
         frame.applied = std::make_pair(mTechnique, mPass);
         return true;
@@ -167,26 +165,26 @@ bool EffectPass::commitChanges(fx::DiagnosticSink* diagnostics) const {
 
 std::optional<StreamOutCapture> EffectPass::streamOutput() const {
     if (!isValid()) return std::nullopt;
-    auto found = mResources->streamOuts.find({mTechnique, mPass});
-    if (found == mResources->streamOuts.end()) return std::nullopt;
-    return found->second->last();
+    StreamOutBuffers* capture = mResources->programs->streamOut(mTechnique, mPass);
+    if (!capture) return std::nullopt;
+    return capture->last();
 }
 
 bool EffectPass::beginStreamOutput() const {
     if (!isValid()) return false;
-    auto found = mResources->streamOuts.find({mTechnique, mPass});
-    if (found == mResources->streamOuts.end()) return false;
+    StreamOutBuffers* capture = mResources->programs->streamOut(mTechnique, mPass);
+    if (!capture) return false;
     if (!mResources->effect().techniques[mTechnique].passes[mPass].streamOut->rasterizes)
         gl::Enable(GL_RASTERIZER_DISCARD);
-    found->second->begin();
+    capture->begin();
     return true;
 }
 
 void EffectPass::endStreamOutput() const {
     if (!isValid()) return;
-    auto found = mResources->streamOuts.find({mTechnique, mPass});
-    if (found == mResources->streamOuts.end()) return;
-    found->second->end();
+    StreamOutBuffers* capture = mResources->programs->streamOut(mTechnique, mPass);
+    if (!capture) return;
+    capture->end();
     gl::Disable(GL_RASTERIZER_DISCARD);
 }
 

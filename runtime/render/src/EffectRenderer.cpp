@@ -79,13 +79,12 @@ const fx::Value& EffectRenderer::parameter(size_t index) const {
 }
 
 void EffectRenderer::setParameter(size_t index, const fx::Value& value) {
-    storeParameter(mImpl->parameterInfo(), index, value, mImpl->values, mImpl->stamps);
-    mImpl->pinned.at(index) = true;
+    mImpl->values.pin(index, value);
     mImpl->pool.published(*mImpl, index);
 }
 
 bool EffectRenderer::isPinned(size_t index) const {
-    return mImpl->pinned.at(index);
+    return mImpl->values.isPinned(index);
 }
 
 bool EffectRenderer::setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics) {
@@ -208,13 +207,13 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
     SemanticBinder binder(mImpl->parameterInfo(), mImpl->effect().lights);
     // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
     std::optional<VisibleSamples> visible;
-    if (binder.wantsVisibleSamples(mImpl->values))
+    if (binder.wantsVisibleSamples(mImpl->values.all()))
         visible = mImpl->visibleSamplePass.run(
             scene, InstanceBvh{}, options.width, options.height,
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
     binder.prepare(scene, scene.bounds(),
-                   static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
+                   static_cast<float>(options.width) / static_cast<float>(options.height),
+                   mImpl->values.all(), mImpl->values.stamps(), diagnostics, visible ? &*visible : nullptr);
     return binder.lightFit(*light);
 }
 
@@ -253,30 +252,30 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     });
     // Camera-relative rendering for scenes far from the origin (Scene.h, renderOrigin). Such a scene is
     // translated anew each frame and its cache rebuilt: a price only scenes far from the origin pay.
-    mImpl->updateSceneCache(scene);
-    const glm::vec3 origin = renderOrigin(mImpl->sceneCache.bounds);
+    mImpl->sceneCache.update(scene);
+    const glm::vec3 origin = renderOrigin(mImpl->sceneCache.bounds());
     const std::optional<Scene> rebased =
         origin == glm::vec3(0.0f) ? std::nullopt : std::optional<Scene>(scene.translated(-origin));
     const Scene& frameScene = rebased ? *rebased : scene;
     // Render targets are allocated once an operation that runs needs them (below); the frame's own now.
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
-    mImpl->ensureFrameResources(options.width, options.height, &neededTargets);
-    if (rebased) mImpl->updateSceneCache(frameScene);  // else the scene's cache, stamped above
+    mImpl->textures->ensureFrame(options.width, options.height, &neededTargets);
+    if (rebased) mImpl->sceneCache.update(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
     SemanticBinder& binder = *mImpl->binder;
     std::optional<VisibleSamples> visible;
-    if (binder.wantsVisibleSamples(mImpl->values))
+    if (binder.wantsVisibleSamples(mImpl->values.all()))
         visible = mImpl->visibleSamplePass.run(
-            frameScene, mImpl->sceneCache.bvh, options.width, options.height,
+            frameScene, mImpl->sceneCache.bvh(), options.width, options.height,
             [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
-    binder.prepare(frameScene, mImpl->sceneCache.bounds,
-                   static_cast<float>(options.width) / static_cast<float>(options.height), mImpl->values,
-                   mImpl->stamps, diagnostics, visible ? &*visible : nullptr);
+    binder.prepare(frameScene, mImpl->sceneCache.bounds(),
+                   static_cast<float>(options.width) / static_cast<float>(options.height),
+                   mImpl->values.all(), mImpl->values.stamps(), diagnostics, visible ? &*visible : nullptr);
     const std::vector<PassUse>& uses = mImpl->passUses[techniqueIndex];
 
-    std::vector<PassPreshaders>& preshaders = mImpl->preshaders[techniqueIndex];
+    const std::vector<PassPreshaders>& preshaders = mImpl->programs->techniquePreshaders(techniqueIndex);
     const auto preshaderRuns = [&preshaders] {
         uint64_t runs = 0;
         for (const PassPreshaders& pass : preshaders) runs += pass.runs();
@@ -289,10 +288,10 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     {
         std::vector<glm::vec3>& body = mImpl->frameScratch.cameraBody;
         body.clear();
-        if (options.leaveOut && !mImpl->sceneCache.bvh.empty()) {
+        if (options.leaveOut && !mImpl->sceneCache.bvh().empty()) {
             RenderPortView camera;
             portMatrices(frameScene, binder, options, "", -1, -1, camera);
-            const Aabb& objects = mImpl->sceneCache.bvh.rootBox();
+            const Aabb& objects = mImpl->sceneCache.bvh().rootBox();
             intersectionBodyPoints(camera.projection * camera.view, Bounds{objects.min, objects.max}, body);
         }
         fx::DiagnosticList dryRunDiagnostics;  // the real run reports them
@@ -322,13 +321,13 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
             for (int resource : op.writes) need(resource);
             for (int resource : op.reads) need(resource);
         }
-        mImpl->ensureFrameResources(options.width, options.height,
-                                    options.leaveOut ? &neededTargets : nullptr);
+        mImpl->textures->ensureFrame(options.width, options.height,
+                                     options.leaveOut ? &neededTargets : nullptr);
         // Without reuse the plan sees no history: nothing matches, as after a moved light.
         static const std::map<int, TargetHistory> noHistory;
         plan.decide(
             options.reuseTargets ? mImpl->targetHistory : noHistory,
-            [this](int resource) { return mImpl->targetIdentity(resource); }, options.leaveOut);
+            [this](int resource) { return mImpl->textures->identity(resource); }, options.leaveOut);
     }
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
@@ -353,8 +352,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
 FrameImage EffectRenderer::readFrame() const {
     FrameImage frame;
-    if (!mImpl->frameColor) return frame;
-    const Image image = readColorTarget(mImpl->frameColor).toRGBA8();
+    if (!mImpl->textures->frameColor()) return frame;
+    const Image image = readColorTarget(mImpl->textures->frameColor()).toRGBA8();
     frame.width = image.width;
     frame.height = image.height;
     frame.rgba = image.bytes;
@@ -362,12 +361,13 @@ FrameImage EffectRenderer::readFrame() const {
 }
 
 bool EffectRenderer::blitFrameTo(uint32_t framebuffer) const {
-    if (!mImpl->frameColor) return false;
+    const GpuTexture& frameColor = mImpl->textures->frameColor();
+    if (!frameColor) return false;
     RenderTargets source;
-    source.colors[0].texture = &mImpl->frameColor;
+    source.colors[0].texture = &frameColor;
     std::string error;
-    if (!mImpl->framebuffers.bind(source, error)) return false;
-    const int width = mImpl->frameColor.width(), height = mImpl->frameColor.height();
+    if (!mImpl->textures->bindFramebuffer(source, error)) return false;
+    const int width = frameColor.width(), height = frameColor.height();
     gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     gl::BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -378,9 +378,9 @@ std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view te
                                                              int* height, int* channels, int level) const {
     const std::optional<size_t> index = findParameter(textureName);
     if (!index) return std::nullopt;
-    auto it = mImpl->textures.find(*index);
-    if (it == mImpl->textures.end() || level < 0 || level >= it->second.mipLevels()) return std::nullopt;
-    const Image image = readFloatTexture(it->second, level);
+    const GpuTexture* texture = mImpl->textures->find(*index);
+    if (!texture || level < 0 || level >= texture->mipLevels()) return std::nullopt;
+    const Image image = readFloatTexture(*texture, level);
     if (width) *width = image.width;
     if (height) *height = image.height;
     if (channels) *channels = image.channels;

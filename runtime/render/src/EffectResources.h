@@ -1,13 +1,27 @@
-// EffectResources: what an EffectRenderer owns between frames. Created once from the compiled effect (the
-// way FX11's EffectLoad turns a compiled effect into runtime structures once): one GpuProgram and one
-// PassPreshaders per pass, the effect's textures and samplers, the parameter values with their change
-// stamps; render targets sized per frame, GPU meshes per scene mesh, the scene's BVH and what each render
-// target holds after the frames so far.
+// EffectResources: what an EffectRenderer owns between frames, as the parts that own it, each a class that
+// keeps its own invariants (FX11's EffectLoad resolves a compiled effect into runtime structures once,
+// its EffectRuntime changes only what changed):
+// - ParameterValues: the values, their change stamps and pinned flags, changed only by writers that
+//   touch the stamp (per frame: semantics, scripts; any time: the application, a pool);
+// - PassPrograms: every pass's programs, preshaders and stream-output capture (at load; variants on first
+//   use);
+// - EffectTextures: the sampled textures, the render targets sized per frame and the framebuffers that
+//   attach them (a target reallocated leaves no framebuffer on the old one);
+// - StorageResources: buffers, counters and read-write textures, kept between frames and dispatches;
+// - EffectSamplers: the GL samplers (at load, unchanged after);
+// - SceneCache: the scene's bounds and BVH, rebuilt when its objects change.
+// Resolved once beside them: the semantic binder and each technique's pass uses. What
+// is left as plain members is working storage (frameScratch, framePlan: overwritten by each frame, kept
+// for its allocations), what the application's passes keep between begin() and end(), and the history of
+// the render targets' contents, which every change of what passes read outside the plan (setTexture,
+// setApplicationTexture, setBuffer) clears.
 #pragma once
 
 #include "AnnotationTable.h"
 #include "BatchedPass.h"
 #include "CullCache.h"
+#include "EffectSamplers.h"
+#include "EffectTextures.h"
 #include <private/runtime/FramePlan.h>
 #include <runtime/Framebuffer.h>
 #include <runtime/GpuBuffer.h>
@@ -17,9 +31,12 @@
 #include <runtime/GlStateSnapshot.h>
 #include <runtime/InstanceBvh.h>
 #include "HostScene.h"
-#include "PassPreshaders.h"
+#include "PassPrograms.h"
+#include "ParameterValues.h"
 #include "PassUse.h"
+#include "SceneCache.h"
 #include "ScriptInterpreter.h"
+#include "StorageResources.h"
 #include "PoolMembership.h"
 #include <runtime/SamplerObject.h>
 #include <runtime/StreamOutBuffers.h>
@@ -43,15 +60,11 @@
 
 namespace runtime {
 
-// A storage buffer's `int ElementCount = N;` (1 without it); nullopt, with a diagnostic at the parameter,
-// for a count outside 1..2^28.
-std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
-                                           fx::DiagnosticSink& diagnostics);
-
 class EffectResources {
 public:
-    // Links every pass's program, compiles nothing (the effect is compiled), creates textures and samplers.
-    // nullptr if a program does not link or a file texture cannot be read; the diagnostics say why.
+    // Links every pass's program, compiles nothing (the effect is compiled), creates textures, storage and
+    // samplers. nullptr if a program does not link, a file texture cannot be read or a buffer or image
+    // cannot be made; the diagnostics say why.
     static std::unique_ptr<EffectResources> create(std::shared_ptr<const fx::CompiledEffect> compiled,
                                                    fx::DiagnosticSink& diagnostics);
 
@@ -62,10 +75,8 @@ public:
     const fx::Value* find(std::string_view name) const;
 
     // [SECTION] Parameters
-    std::vector<fx::Value> values;  // one per parameter
-    std::vector<bool> pinned;       // set through the API: semantics no longer overwrite it
-    ParameterStamps stamps;         // of `values`
-    PoolMembership pool;            // the `shared` parameters' values, with the other effects of a pool
+    ParameterValues values;  // with their change stamps and pinned flags
+    PoolMembership pool;     // the `shared` parameters' values, with the other effects of a pool
 
     // [SECTION] Resolved once, when the effect is created (names as indices, kept for the effect's life)
     std::unique_ptr<SemanticBinder> binder;      // the semantics, classified; prepared for each frame
@@ -78,81 +89,21 @@ public:
     } techniqueChoice;
 
     // [SECTION] GL resources
-    std::vector<std::vector<std::unique_ptr<GpuProgram>>> programs;  // [technique][pass]
-    // The compute programs of passes that also draw (programs holds their graphics stages), by technique
-    // and pass; a compute pass alone has its compute program in `programs`.
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> drawingPassComputePrograms;
-    // What a dispatch of the pass runs: its compute program, or null for a pass without one.
-    GpuProgram* computeProgram(size_t technique, size_t pass) const {
-        if (auto found = drawingPassComputePrograms.find({technique, pass});
-            found != drawingPassComputePrograms.end())
-            return found->second.get();
-        GpuProgram* program = programs[technique][pass].get();
-        return program && program->isCompute() ? program : nullptr;
-    }
-    // The vertex stage alone, for passes that draw with no colour write (FrameExecutor::draw); linked on
-    // first use, null where the pass's pixel shader has side effects (GpuProgram::pixelShaderHasSideEffects).
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<GpuProgram>> depthOnlyPrograms;  // by technique, pass
-    // Passes drawn instanced (FrameOptions::batching), by technique and pass: made on first use for the
-    // pass's per-object flags; `pass` null where the variant cannot be made or linked.
-    struct BatchedSlot {
-        std::vector<bool> perObjectParameter;
-        std::vector<bool> perObjectArgument;
-        std::unique_ptr<BatchedPass> pass;
-    };
-    std::map<std::pair<size_t, size_t>, BatchedSlot> batchedPasses;
-    // The capture of every stream-output pass (CompiledPass::streamOut), by technique and pass, made at
-    // load and kept between frames: a pass drawing it (DrawAuto) reads last frame's where it runs first.
-    std::map<std::pair<size_t, size_t>, std::unique_ptr<StreamOutBuffers>> streamOuts;
-    std::vector<std::vector<PassPreshaders>> preshaders;  // [technique][pass]
-    std::map<size_t, GpuTexture> textures;                // by texture parameter index
-    std::map<size_t, GpuBuffer> buffers;                  // by buffer parameter index (Buffer<T>, ...)
-    // The hidden counter (one uint) of each structured read-write buffer (RWStructuredBuffer,
-    // AppendStructuredBuffer, ConsumeStructuredBuffer), by parameter index: zero at load and kept between
-    // frames and dispatches, as FX11 binds unordered access views keeping their counters; setBuffer sets it
-    // to the number of elements given.
-    std::map<size_t, GpuBuffer> counters;
-    // The textures of the RWTexture1D, RWTexture2D, RWTexture3D and RWTexture2DArray parameters, by
-    // parameter index (StorageImages.cpp): made at load, kept between frames. An RWBuffer's storage is in
-    // `buffers`, with the buffer texture its image binds.
-    std::map<size_t, GpuTexture> images;
-    // Compute dispatches so far: what a pass reading storage buffers or images reads changes with them,
-    // which the frame plan's signatures take in (PlanRecorder::draw) so that leave-out never keeps such a
-    // pass's last result.
-    uint64_t computeDispatches = 0;
-    // `string ViewOf = "Resource";` on a StructuredBuffer, ByteAddressBuffer or Texture2D: the parameter
-    // reads the read-write resource named (FX11's shader-resource view of the buffer or texture a compute
-    // pass writes through its unordered access view), by index. Made at load (StorageImages.cpp).
-    std::map<size_t, size_t> resourceViews;
-    // The resource `parameter` reads: the one it is a view of, else its own.
-    size_t viewedResource(size_t parameter) const {
-        auto view = resourceViews.find(parameter);
-        return view == resourceViews.end() ? parameter : view->second;
-    }
-    // Mipmapped render targets written since their mip chain was last generated: regenerated before a
-    // pass samples them (D3D9's AUTOGENMIPMAP).
-    std::set<const GpuTexture*> staleMipChains;
-    std::map<size_t, SamplerObject> samplers;
-    std::map<size_t, SamplerObject> comparisonSamplers;
-    // fx::CompiledEffect::passSamplers as GL samplers, by index (SamplerBinding::passSampler).
-    std::vector<SamplerObject> passSamplers;
-    std::vector<SamplerObject> passComparisonSamplers;
+    // Every pass's programs, preshaders and stream-output capture, made at load.
+    std::unique_ptr<PassPrograms> programs;
+    // The textures the effect samples and renders into, with the frame's targets and their framebuffers.
+    std::unique_ptr<EffectTextures> textures;
+    // The buffers and read-write textures behind the buffer and image parameters, with their views.
+    std::unique_ptr<StorageResources> storage;
+    EffectSamplers samplers;  // made at load, unchanged after
     GpuMesh quad;
     HostScenePainter hostScene;  // ScriptExternal=color
-    FramebufferCache framebuffers;
-    GpuTexture frameColor;
-    GpuTexture frameDepth;
     std::unique_ptr<UniformRing> uniformRing;
 
     // [SECTION] The application's passes (runtime/EffectPass.h)
     AnnotationTable annotations;
-    // A GL texture of the application's given to a texture parameter (EffectVariable::setTexture), bound
-    // wherever the parameter is sampled instead of the effect's own; the application keeps it alive.
-    struct ApplicationTexture {
-        GLuint name = 0;
-        GLenum target = GL_TEXTURE_2D;
-    };
-    std::map<size_t, ApplicationTexture> applicationTextures;
+    // What EffectTechnique::begin() captured and EffectPass::apply() bound, until end(): written by those
+    // (EffectPass.cpp, ComputeDispatch.cpp) alone.
     struct ApplicationFrame {
         std::optional<size_t> begun;           // the technique between begin() and end()
         std::optional<GlStateSnapshot> saved;  // what end() restores
@@ -167,18 +118,8 @@ public:
     } application;
 
     // [SECTION] Between frames
-    // The scene as last rendered: a stamp of its objects, its bounds (a pass over every vertex) and the
-    // BVH over its objects' boxes, rebuilt only when the stamp changes (see sceneStamp()).
-    struct SceneCache {
-        uint64_t stamp = 0;
-        bool valid = false;
-        Bounds bounds;
-        InstanceBvh bvh;
-        std::map<const Mesh*, Aabb> meshBoxes;
-        // Per object: its mesh's index among the scene's distinct meshes (batching groups by it).
-        std::vector<uint32_t> meshSlots;
-        size_t meshCount = 0;
-    } sceneCache;
+    // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.
+    SceneCache sceneCache;
     // The culling volumes' visible lists, kept while the scene and the volume stand still.
     CullCache cullCache;
     // FrameExecutor's working lists, kept between frames so that a frame like the last allocates nothing.
@@ -196,8 +137,7 @@ public:
         std::vector<size_t> objectBatch;     // per visible object: its batch
         std::vector<uint32_t> instances;     // the instance lists, batch after batch
         std::vector<fx::Value> arguments;    // the current draw's compile arguments
-        std::vector<fx::Value> planValues;   // the dry run's copy of the parameter values (PlanRecorder)
-        ParameterStamps planStamps;          // their stamps
+        ParameterValues planValues;          // the dry run's copy of the parameter values (PlanRecorder)
         std::vector<float> planClearColor;   // the dry run's clear colour
         std::vector<bool> neededTargets;     // per parameter: a render target the frame's plan uses
         std::vector<glm::vec3> cameraBody;   // the camera's intersection body, for the plan's regions
@@ -218,47 +158,21 @@ public:
     // Fits to what the camera sees (LightFitVisibleSamples): the pre-pass that finds the samples.
     VisibleSamplePass visibleSamplePass;
 
-    // (Re)allocates render targets whose size depends on the frame's. `needed`: the render targets to
-    // allocate (null: all); others already allocated are still resized.
-    void ensureFrameResources(int width, int height, const std::vector<bool>* needed = nullptr);
-    // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
-    void ensureRenderTargets(int width, int height, const std::vector<bool>* needed = nullptr);
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
-    // EffectRenderer::setTexture.
+    // EffectRenderer::setTexture (EffectTextures::set), and what earlier frames drew from the old texels
+    // no longer reused.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);
-    // The textures of the read-write texture parameters a pass uses, at their Width, Height, Depth and
-    // ArraySize annotations, and the buffers of its RWBuffer parameters at their ElementCount, in the format
-    // their code declares (StorageImages.cpp). False, with a diagnostic, for a format or size shadowfx
-    // cannot make.
-    bool createImages(fx::DiagnosticSink& diagnostics);
-    // EffectRenderer::setBuffer.
+    // EffectVariable::setTexture (EffectTextures::setApplicationTexture), and the same.
+    void setApplicationTexture(size_t parameter, GLuint name, GLenum target);
+    // EffectRenderer::setBuffer (StorageResources::set), and what earlier frames drew from the old
+    // contents no longer reused.
     bool setBuffer(size_t index, const void* bytes, size_t elements, size_t elementBytes,
                    fx::DiagnosticSink& diagnostics);
-    void updateSceneCache(const Scene& scene);
-    // A render target's allocation (GL name, size, format), for FramePlan's content hashes.
-    uint64_t targetIdentity(int resource) const;
 
 private:
-    bool createFileTextures(fx::DiagnosticSink& diagnostics);
-    bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
-
     std::shared_ptr<const fx::CompiledEffect> mCompiled;
     std::unordered_map<std::string, size_t> mParameterIndex;
     std::map<const Mesh*, std::pair<std::shared_ptr<const Mesh>, GpuMesh>> mMeshes;
 };
-
-// Stores `value` as parameter `index` of `values` (its type becomes the parameter's; a value with fewer
-// components than the type, such as a script's loop index, is broadcast, as HLSL broadcasts a scalar) and
-// touches its stamp. The one way values change, whether the application, a script or a dry run sets them.
-void storeParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, fx::Value value,
-                    std::vector<fx::Value>& values, ParameterStamps& stamps);
-// The same for a scalar (a script's loop index), broadcast into the value's own storage: a frame that
-// stores it again allocates nothing.
-void storeScalarParameter(const std::vector<fx::ParameterInfo>& parameters, size_t index, float scalar,
-                          std::vector<fx::Value>& values, ParameterStamps& stamps);
-
-// A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.
-glm::ivec2 renderTargetSize(const fx::TextureDesc& desc, int width, int height);
-bool isRenderTarget(const fx::TextureDesc& desc);
 
 }  // namespace runtime

@@ -1,5 +1,5 @@
-// EffectVariable: see runtime/EffectVariable.h. Values go through storeParameter(), the one way values
-// change (EffectResources.h), so the preshaders and uniform blocks see them by their change stamps.
+// EffectVariable: see runtime/EffectVariable.h. Values go through ParameterValues::pin(), the one way the
+// application's values change, so the preshaders and uniform blocks see them by their change stamps.
 #include <runtime/EffectVariable.h>
 
 #include "EffectResources.h"
@@ -141,9 +141,7 @@ bool EffectVariable::store(std::span<const float> components, size_t firstCompon
     value.data.resize(effect.componentCount(mResources->parameterInfo()[mParameter].type), 0.0f);
     std::copy(components.begin(), components.end(),
               value.data.begin() + static_cast<std::ptrdiff_t>(mFirst + firstComponent));
-    storeParameter(mResources->parameterInfo(), mParameter, std::move(value), mResources->values,
-                   mResources->stamps);
-    mResources->pinned[mParameter] = true;
+    mResources->values.pin(mParameter, std::move(value));
     mResources->pool.published(*mResources, mParameter);
     return true;
 }
@@ -195,9 +193,7 @@ bool EffectVariable::setValue(const fx::Value& value) {
     if (!isValid()) return false;
     if (mType.base == fx::BaseType::String && isWhole()) {
         if (value.type.base != fx::BaseType::String) return false;
-        storeParameter(mResources->parameterInfo(), mParameter, value, mResources->values,
-                       mResources->stamps);
-        mResources->pinned[mParameter] = true;
+        mResources->values.pin(mParameter, value);
         mResources->pool.published(*mResources, mParameter);
         return true;
     }
@@ -227,13 +223,7 @@ bool EffectVariable::setTexture(GLuint name) {
     if (!isValid() || !isWhole()) return false;
     const std::optional<GLenum> target = textureTarget(mResources->parameterInfo()[mParameter].type.base);
     if (!target) return false;
-    if (name == 0) {
-        mResources->applicationTextures.erase(mParameter);
-    } else {
-        mResources->applicationTextures[mParameter] = EffectResources::ApplicationTexture{name, *target};
-    }
-    // What render(Scene) kept in its targets may have been drawn from the texture this replaces.
-    mResources->targetHistory.clear();
+    mResources->setApplicationTexture(mParameter, name, *target);
     return true;
 }
 

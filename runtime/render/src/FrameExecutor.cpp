@@ -36,8 +36,8 @@ FrameExecutor::FrameExecutor(EffectResources& resources, const Scene& scene, con
       mArguments(resources.frameScratch.arguments),
       mBatches(resources.frameScratch.batches),
       mStencilUnread(!techniqueTestsStencil(resources.effect().techniques[techniqueIndex])) {
-    mTargets.colors[0].texture = &resources.frameColor;
-    mTargets.depth.texture = &resources.frameDepth;
+    mTargets.colors[0].texture = &resources.textures->frameColor();
+    mTargets.depth.texture = &resources.textures->frameDepth();
     setRenderPort("", -1, -1, {});
 }
 
@@ -74,14 +74,14 @@ void FrameExecutor::setColorTarget(int index, const std::string& texture, int pa
     if (index < 0 || index >= RenderTargets::kMaxColorTargets) return;
     if (texture.empty()) {
         mTargets.colors[static_cast<size_t>(index)] =
-            RenderTargetAttachment::wholeOf(index == 0 ? &mResources.frameColor : nullptr);
+            RenderTargetAttachment::wholeOf(index == 0 ? &mResources.textures->frameColor() : nullptr);
         return;
     }
     mTargets.colors[static_cast<size_t>(index)] = RenderTargetAttachment::wholeOf(target(texture, parameter));
 }
 
 void FrameExecutor::setDepthTarget(const std::string& texture, int parameter) {
-    mTargets.depth = RenderTargetAttachment::wholeOf(texture.empty() ? &mResources.frameDepth
+    mTargets.depth = RenderTargetAttachment::wholeOf(texture.empty() ? &mResources.textures->frameDepth()
                                                                      : target(texture, parameter));
 }
 
@@ -154,7 +154,7 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
 void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
     const size_t passIndex =
         static_cast<size_t>(&pass - mResources.effect().techniques[mTechnique].passes.data());
-    GpuProgram* program = mResources.programs[mTechnique][passIndex].get();
+    GpuProgram* program = mResources.programs->program(mTechnique, passIndex);
     if (!program || !program->hasShaders() || program->isCompute()) {  // a compute pass dispatches
         if (mWarnedPasses.insert(passIndex).second) {
             mDiagnostics.report(fx::DiagId::PassWithoutShaders, pass.loc, {pass.name});
@@ -210,8 +210,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     if (mOptions.leaveOut) {
         // Per-frame and per-port values once per pass; drawWith() then binds only per-object ones.
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
-                     SemanticBinder::Scope::PerPort, &use.used, &mResources.stamps);
+        mResources.values.bindSemantics(mBinder, mPort, nullptr, mOptions.time,
+                                        SemanticBinder::Scope::PerPort, &use.used);
     }
     evaluateArguments(passIndex, use, false);
 
@@ -222,7 +222,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         gl::BeginQuery(GL_SAMPLES_PASSED, query);
     }
     StreamOutBuffers* capture =
-        pass.streamOut ? mResources.streamOuts.at({mTechnique, passIndex}).get() : nullptr;
+        pass.streamOut ? mResources.programs->streamOut(mTechnique, passIndex) : nullptr;
     if (capture) {
         if (!pass.streamOut->rasterizes) gl::Enable(GL_RASTERIZER_DISCARD);
         capture->begin();
@@ -235,7 +235,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         mVisible.clear();
         mVisible.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
         // What a pass streams out must not depend on the view: it draws every object.
-        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid &&
+        const bool culling = mOptions.leaveOut && mResources.sceneCache.valid() &&
                              use.projectsWith(mPortLight, mBinder) && !capture;
         int drawable = 0;
         for (size_t index = 0; index < mScene.objects.size(); ++index) {
@@ -280,8 +280,8 @@ void FrameExecutor::dispatch(const fx::CompiledPass& pass, const std::array<uint
     {
         // The frame's and the render port's semantics (Time, the camera's matrices), as a draw binds them.
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
-                     SemanticBinder::Scope::PerPort, &mUses[passIndex].used, &mResources.stamps);
+        mResources.values.bindSemantics(mBinder, mPort, nullptr, mOptions.time,
+                                        SemanticBinder::Scope::PerPort, &mUses[passIndex].used);
     }
     if (!bindComputePass(mResources, mTechnique, passIndex, mArguments, mDiagnostics)) {
         mDiagnostics.report(fx::DiagId::DispatchNotCompute, loc, {pass.name});
@@ -311,8 +311,7 @@ void FrameExecutor::setLoopIndex(const std::string& name, int parameter, int ind
         fail(fx::DiagId::UnknownParameter, {name});
         return;
     }
-    storeScalarParameter(mResources.parameterInfo(), static_cast<size_t>(parameter),
-                         static_cast<float>(index), mResources.values, mResources.stamps);
+    mResources.values.storeScalar(static_cast<size_t>(parameter), static_cast<float>(index));
     // A script's value of a `shared` parameter is the pool's, as an application's setter's is.
     mResources.pool.published(mResources, static_cast<size_t>(parameter));
 }
@@ -359,9 +358,9 @@ void FrameExecutor::closePass() {
 // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
 // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
 void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) const {
-    const InstanceBvh& bvh = mResources.sceneCache.bvh;
+    const InstanceBvh& bvh = mResources.sceneCache.bvh();
     CullCache::Volume volume;
-    volume.sceneStamp = mResources.sceneCache.stamp;
+    volume.sceneStamp = mResources.sceneCache.stamp();
     volume.viewProjection = mPort.projection * mPort.view;
     volume.lightPort = mLightPort;
     if (mLightPort) volume.region = op && op->cullToReceivers ? op->region : fullLightRegion();
@@ -384,14 +383,14 @@ void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) co
 const GpuTexture* FrameExecutor::target(const std::string& name, int parameter) {
     const std::optional<size_t> index =
         parameter >= 0 ? std::optional<size_t>(static_cast<size_t>(parameter)) : std::nullopt;
-    auto texture = index ? mResources.textures.find(*index) : mResources.textures.end();
-    if (texture == mResources.textures.end()) {
+    const GpuTexture* texture = index ? mResources.textures->find(*index) : nullptr;
+    if (!texture) {
         // Left unallocated because no operation that runs uses it (FramePlan): not an error.
         const fx::TextureDesc* desc = index ? mResources.effect().findTexture(*index) : nullptr;
         if (!desc || !isRenderTarget(*desc)) fail(fx::DiagId::ScriptUnknownTarget, {name});
         return nullptr;
     }
-    return &texture->second;
+    return texture;
 }
 
 glm::ivec2 FrameExecutor::depthTargetSize() const {
@@ -451,8 +450,8 @@ const RenderStateBlock& FrameExecutor::passStates(const fx::CompiledPass& pass, 
     const RenderStateBlock* block = op ? &op->states : nullptr;
     if (!block) {
         PassTimer::Scope preshaderTime(mTimer, &FrameCpuTime::preshaderNs);
-        block = &mResources.preshaders[mTechnique][passIndex].states(mResources.values, mResources.stamps,
-                                                                     mDiagnostics);
+        block = &mResources.programs->preshaders(mTechnique, passIndex)
+                     .states(mResources.values.all(), mResources.values.stamps(), mDiagnostics);
     }
     // The pass annotation `bool CullClosedOnly = true;`: its CullMode applies to closed (watertight)
     // meshes only, open ones are drawn with culling off. Back-face shadow maps (Wang & Molnar) and dual
@@ -480,16 +479,8 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
         if (mTargets.colors[slot].texture && states.get(kColorWrites[slot]) != 0.0) return nullptr;
     if (GpuProgram::pixelShaderHasSideEffects(pass.fragment)) return nullptr;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-    const std::pair<size_t, size_t> key{mTechnique, passIndex};
-    auto found = mResources.depthOnlyPrograms.find(key);
-    if (found == mResources.depthOnlyPrograms.end()) {
-        // An optimization, not the effect's program: a driver that refuses it costs speed, not the frame.
-        fx::DiagnosticList ignored;
-        found = mResources.depthOnlyPrograms
-                    .emplace(key, GpuProgram::create(pass, ignored, GpuProgram::Stages::DepthOnly))
-                    .first;
-    }
-    return found->second.get();  // null where it did not link: the full pass is drawn
+    // An optimization, not the effect's program: null where it did not link, and the full pass is drawn.
+    return mResources.programs->depthOnlyProgram(mTechnique, passIndex, pass);
 }
 
 // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per
@@ -507,11 +498,11 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
     {
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);  // the preshaders' time nested
         if (mOptions.leaveOut) {
-            mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
-                         SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
+            mResources.values.bindSemantics(mBinder, mPort, object, mOptions.time,
+                                            SemanticBinder::Scope::PerObject, &use.used);
         } else {
-            mBinder.bind(mPort, object, mOptions.time, mResources.values, mResources.pinned,
-                         SemanticBinder::Scope::All, nullptr, &mResources.stamps);
+            mResources.values.bindSemantics(mBinder, mPort, object, mOptions.time, SemanticBinder::Scope::All,
+                                            nullptr);
         }
         evaluateArguments(passIndex, use, true);
         uploadPassValues(mResources, program, mArguments);
@@ -531,12 +522,13 @@ void FrameExecutor::drawWith(const fx::CompiledPass& pass, size_t passIndex, Gpu
 void FrameExecutor::drawCapture(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
                                 const PassUse& use) {
     const StreamOutBuffers& source =
-        *mResources.streamOuts.at({mTechnique, static_cast<size_t>(pass.drawAuto)});
+        *mResources.programs->streamOut(mTechnique, static_cast<size_t>(pass.drawAuto));
     {
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        mBinder.bind(mPort, nullptr, mOptions.time, mResources.values, mResources.pinned,
-                     mOptions.leaveOut ? SemanticBinder::Scope::PerObject : SemanticBinder::Scope::All,
-                     mOptions.leaveOut ? &use.used : nullptr, &mResources.stamps);
+        mResources.values.bindSemantics(
+            mBinder, mPort, nullptr, mOptions.time,
+            mOptions.leaveOut ? SemanticBinder::Scope::PerObject : SemanticBinder::Scope::All,
+            mOptions.leaveOut ? &use.used : nullptr);
     }
     evaluateArguments(passIndex, use, true);
     {
@@ -582,15 +574,9 @@ BatchedPass* FrameExecutor::batchedPass(const fx::CompiledPass& pass, size_t pas
     if (!mOptions.batching || !mOptions.leaveOut) return nullptr;
     mPerObject.assign(use.used.size(), false);
     for (size_t p = 0; p < use.used.size(); ++p)
-        mPerObject[p] = use.used[p] && !mResources.pinned[p] && mBinder.isPerObject(p);
-    EffectResources::BatchedSlot& slot = mResources.batchedPasses[{mTechnique, passIndex}];
-    if (slot.perObjectParameter != mPerObject || slot.perObjectArgument != use.argumentPerObject) {
-        slot.perObjectParameter = mPerObject;
-        slot.perObjectArgument = use.argumentPerObject;
-        PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-        slot.pass = BatchedPass::create(pass, mPerObject, use.argumentPerObject);
-    }
-    return slot.pass.get();
+        mPerObject[p] = use.used[p] && !mResources.values.isPinned(p) && mBinder.isPerObject(p);
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);  // a variant is linked when the flags change
+    return mResources.programs->batchedPass(mTechnique, passIndex, pass, mPerObject, use.argumentPerObject);
 }
 
 // True if drawing the pass's objects in another order leaves the same image: fragments that meet at a
@@ -632,10 +618,10 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
                 std::memcpy(mContext.data() + at + 1, data.data(), data.size() * sizeof(float));
         }
     }
-    batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp);
+    batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp());
     const auto bindObject = [&](const SceneObject& object) {
-        mBinder.bind(mPort, &object, mOptions.time, mResources.values, mResources.pinned,
-                     SemanticBinder::Scope::PerObject, &use.used, &mResources.stamps);
+        mResources.values.bindSemantics(mBinder, mPort, &object, mOptions.time,
+                                        SemanticBinder::Scope::PerObject, &use.used);
         evaluateArguments(passIndex, use, true);
     };
     {
@@ -645,7 +631,7 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
             const SceneObject& object = mScene.objects[index];
             if (batched.recordCurrent(index, object)) continue;
             bindObject(object);
-            batched.packRecord(index, object, mResources.values, mArguments);
+            batched.packRecord(index, object, mResources.values.all(), mArguments);
         }
         // The values as drawing object by object leaves them (the last object's), for whatever reads them
         // next.
@@ -656,9 +642,9 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     // or per run of consecutive objects with one mesh where the order matters.
     const bool anyOrder = orderFree(states);
     constexpr size_t kNoBatch = ~size_t(0);
-    const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots;
+    const std::vector<uint32_t>& meshSlots = mResources.sceneCache.meshSlots();
     mBatches.clear();
-    if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount, kNoBatch);
+    if (anyOrder) mBatchOfMesh.assign(mResources.sceneCache.meshCount(), kNoBatch);
     mObjectBatch.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {

@@ -244,15 +244,15 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
         // The step's target, as the application binds it before Begin().
         RenderTargets targets;
         if (step.target == "frame") {
-            targets.colors[0].texture = &r.frameColor;
-            targets.depth.texture = &r.frameDepth;
+            targets.colors[0].texture = &r.textures->frameColor();
+            targets.depth.texture = &r.textures->frameDepth();
         } else {
             Target& target = mTargets.at(step.target);
             targets.colors[0] = RenderTargetAttachment::wholeOf(&target.color);
             targets.depth = RenderTargetAttachment::wholeOf(&target.depth);
         }
         std::string error;
-        if (!r.framebuffers.bind(targets, error)) {
+        if (!r.textures->bindFramebuffer(targets, error)) {
             diagnostics.report(fx::DiagId::HostTargetUnbindable, step.loc, {error});
             return false;
         }
@@ -322,7 +322,7 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
 bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
                        const FrameOptions& options, fx::DiagnosticSink& diagnostics) {
     const std::vector<bool> none;  // no render target allocated here: ensureTargets does
-    r.ensureFrameResources(options.width, options.height, &none);
+    r.textures->ensureFrame(options.width, options.height, &none);
     ensureTargets(renderer, options.width, options.height);
     for (const HostParameter& parameter : mHost->parameters)
         if (parameter.value.kind == HostValue::Kind::Constant)
@@ -347,9 +347,9 @@ bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene
         const std::set<std::string> unshadowed(mHost->visibility->unshadowed.begin(),
                                                mHost->visibility->unshadowed.end());
         ok = drawSteps(renderer, r, scene, options, {}, diagnostics);
-        const Image shadowed = readColorTarget(r.frameColor).toRGBA8();
+        const Image shadowed = readColorTarget(r.textures->frameColor()).toRGBA8();
         ok = ok && drawSteps(renderer, r, scene, options, unshadowed, diagnostics);
-        const Image lit = readColorTarget(r.frameColor).toRGBA8();
+        const Image lit = readColorTarget(r.textures->frameColor()).toRGBA8();
         std::vector<uint8_t> ratio(shadowed.bytes.size());
         for (size_t i = 0; i + 3 < ratio.size(); i += 4) {
             // Where the light does not reach at all (outside a spot's cone, facing away) nothing is lit.
@@ -361,7 +361,7 @@ bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene
             ratio[i] = ratio[i + 1] = ratio[i + 2] = byte;
             ratio[i + 3] = 255;
         }
-        r.frameColor.uploadRGBA8(ratio.data());
+        r.textures->uploadFrameColor(ratio.data());
     }
     if (options.timePasses) gl::Finish();
     FramebufferCache::bindDefault();

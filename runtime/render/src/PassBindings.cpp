@@ -19,44 +19,31 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
                                                        : desc                   ? desc->texture
                                                                                 : std::nullopt;
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
-        auto application = textureParameter ? resources.applicationTextures.find(*textureParameter)
-                                            : resources.applicationTextures.end();
+        const EffectTextures::ApplicationTexture* application =
+            textureParameter ? resources.textures->applicationTexture(*textureParameter) : nullptr;
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
             // A view of a read-write texture (`string ViewOf`) samples the image's texture.
-            auto image = resources.images.find(resources.viewedResource(*textureParameter));
-            auto it = resources.textures.find(*textureParameter);
-            if (image != resources.images.end())
-                texture = &image->second;
-            else if (it != resources.textures.end())
-                texture = &it->second;
+            texture = resources.storage->image(resources.storage->viewedResource(*textureParameter));
+            if (!texture) texture = resources.textures->find(*textureParameter);
         }
         const bool rendering = std::any_of(drawing.colors.begin(), drawing.colors.end(),
                                            [texture](const auto& color) { return color.texture == texture; });
         // Not while the pass renders into it (the chain would be built before the draw that changes it).
-        if (texture && !rendering && resources.staleMipChains.erase(texture) > 0) texture->generateMipmaps();
-        auto buffer = textureParameter ? resources.buffers.find(resources.viewedResource(*textureParameter))
-                                       : resources.buffers.end();
-        if (application != resources.applicationTextures.end()) {
-            gl::BindTexture(application->second.target, application->second.name);
+        if (texture && !rendering) resources.textures->refreshMipChain(*texture);
+        const GpuBuffer* buffer =
+            textureParameter ? resources.storage->buffer(resources.storage->viewedResource(*textureParameter))
+                             : nullptr;
+        if (application) {
+            gl::BindTexture(application->target, application->name);
         } else if (texture) {
             gl::BindTexture(texture->target(), texture->id());
-        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {
-            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->second.texture());  // Buffer<T>
+        } else if (buffer && buffer->texture()) {
+            gl::BindTexture(GL_TEXTURE_BUFFER, buffer->texture());  // Buffer<T>
         } else {
             gl::BindTexture(GL_TEXTURE_2D, 0);
         }
-        const auto passSampler = static_cast<size_t>(binding.passSampler);
-        auto& passSamplers = binding.depthCompare ? resources.passComparisonSamplers : resources.passSamplers;
-        auto& samplers = binding.depthCompare ? resources.comparisonSamplers : resources.samplers;
-        auto sampler = samplers.find(binding.samplerParameter);
-        if (binding.passSampler >= 0 && passSampler < passSamplers.size()) {
-            passSamplers[passSampler].bind(binding.unit);  // the states the pass sets on its register
-        } else if (sampler != samplers.end()) {
-            sampler->second.bind(binding.unit);
-        } else {
-            SamplerObject::unbind(binding.unit);
-        }
+        resources.samplers.bind(binding);
     }
 }
 
@@ -77,16 +64,16 @@ void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
     for (size_t binding = 0; binding < parameters.size(); ++binding) {
-        auto buffer = resources.buffers.find(resources.viewedResource(parameters[binding]));
-        if (buffer != resources.buffers.end())
-            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->second.id());
+        const GpuBuffer* buffer =
+            resources.storage->buffer(resources.storage->viewedResource(parameters[binding]));
+        if (buffer) gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->id());
     }
     const std::vector<size_t> counters = GpuProgram::counterParameters(pass);
     for (size_t k = 0; k < counters.size(); ++k) {
-        auto counter = resources.counters.find(resources.viewedResource(counters[k]));
-        if (counter != resources.counters.end())
+        const GpuBuffer* counter = resources.storage->counter(resources.storage->viewedResource(counters[k]));
+        if (counter)
             gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(parameters.size() + k),
-                               counter->second.id());
+                               counter->id());
     }
 }
 
@@ -95,17 +82,17 @@ void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& 
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
     const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
     for (size_t unit = 0; unit < parameters.size(); ++unit) {
-        auto image = resources.images.find(parameters[unit]);
-        auto buffer = resources.buffers.find(parameters[unit]);
-        if (image != resources.images.end()) {
+        const GpuTexture* image = resources.storage->image(parameters[unit]);
+        const GpuBuffer* buffer = resources.storage->buffer(parameters[unit]);
+        if (image) {
             // A 3D texture's slices and an array's elements are all the image's (image3D, image2DArray).
-            const GLenum target = image->second.target();
+            const GLenum target = image->target();
             const GLboolean layered = target == GL_TEXTURE_3D || target == GL_TEXTURE_2D_ARRAY;
-            gl::BindImageTexture(static_cast<GLuint>(unit), image->second.id(), 0, layered, 0, GL_READ_WRITE,
-                                 image->second.glFormat().internalFormat);
-        } else if (buffer != resources.buffers.end() && buffer->second.texture()) {  // RWBuffer<T>
-            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->second.texture(), 0, GL_FALSE, 0,
-                                 GL_READ_WRITE, buffer->second.texelFormat());
+            gl::BindImageTexture(static_cast<GLuint>(unit), image->id(), 0, layered, 0, GL_READ_WRITE,
+                                 image->glFormat().internalFormat);
+        } else if (buffer && buffer->texture()) {  // RWBuffer<T>
+            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->texture(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                                 buffer->texelFormat());
         }
     }
 }
@@ -113,16 +100,13 @@ void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
 }  // namespace
 
 bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, std::string& error) {
-    if (!resources.framebuffers.bind(targets, error)) return false;
-    for (const RenderTargetAttachment& color : targets.colors)
-        if (color.texture && color.texture->mipLevels() > 1) resources.staleMipChains.insert(color.texture);
-    return true;
+    return resources.textures->bindTargets(targets, error);
 }
 
 bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
               fx::DiagnosticSink& diagnostics, std::string& error) {
     const fx::CompiledPass& compiled = resources.effect().techniques[technique].passes[pass];
-    GpuProgram* program = binding.program ? binding.program : resources.programs[technique][pass].get();
+    GpuProgram* program = binding.program ? binding.program : resources.programs->program(technique, pass);
     const RenderTargets none;
     const RenderTargets& drawing = binding.framebuffer ? *binding.framebuffer : none;
     // A compute program (a compute pass's, or the dispatch of a pass that also draws) binds no target and
@@ -131,9 +115,10 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
         if (binding.framebuffer && !bindPassTargets(resources, drawing, error)) return false;
         if (binding.viewport)
             gl::Viewport(binding.viewport->x, binding.viewport->y, binding.viewport->z, binding.viewport->w);
-        applyRenderStates(binding.states ? *binding.states
-                                         : resources.preshaders[technique][pass].states(
-                                               resources.values, resources.stamps, diagnostics),
+        applyRenderStates(binding.states
+                              ? *binding.states
+                              : resources.programs->preshaders(technique, pass)
+                                    .states(resources.values.all(), resources.values.stamps(), diagnostics),
                           binding.depthBits);
     }
     if (!program || !program->hasShaders()) return true;
@@ -147,18 +132,18 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
 void evaluatePassArguments(EffectResources& resources, size_t technique, size_t pass,
                            const std::vector<bool>* which, std::vector<fx::Value>& arguments,
                            fx::DiagnosticSink& diagnostics) {
-    resources.preshaders[technique][pass].arguments(resources.values, resources.stamps, which, arguments,
-                                                    diagnostics);
+    resources.programs->preshaders(technique, pass)
+        .arguments(resources.values.all(), resources.values.stamps(), which, arguments, diagnostics);
 }
 
 void uploadPassValues(EffectResources& resources, GpuProgram& program,
                       const std::vector<fx::Value>& arguments) {
-    program.upload(resources.values, arguments, *resources.uniformRing);
+    program.upload(resources.values.all(), arguments, *resources.uniformRing);
 }
 
 void commitPassValues(EffectResources& resources, size_t technique, size_t pass,
                       std::vector<fx::Value>& arguments, fx::DiagnosticSink& diagnostics) {
-    GpuProgram* program = resources.programs[technique][pass].get();
+    GpuProgram* program = resources.programs->program(technique, pass);
     if (!program || !program->hasShaders()) return;
     evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
     uploadPassValues(resources, *program, arguments);

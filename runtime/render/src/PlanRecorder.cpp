@@ -30,12 +30,10 @@ PlanRecorder::PlanRecorder(EffectResources& resources, const Scene& scene, const
       mPlan(plan),
       mDiagnostics(diagnostics),
       mValues(resources.frameScratch.planValues),
-      mStamps(resources.frameScratch.planStamps),
       mPadTexels(kReceiverPadTexels),
       mStencilTested(techniqueTestsStencil(resources.effect().techniques[technique])),
       mClearColor(resources.frameScratch.planClearColor) {
-    mValues = resources.values;  // element by element: the copies' storage is reused
-    mStamps = resources.stamps;
+    mValues.copyFrom(resources.values);
     mClearColor.clear();
     mColors.fill(kNone);
     mColors[0] = kFrameColor;
@@ -109,14 +107,14 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
         op.writes.push_back(mDepth);
         op.reads.push_back(mDepth);
     }
-    uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp);  // "HostScne"
+    uint64_t h = hashCombine(0x486f737453636e65ull, mResources.sceneCache.stamp());  // "HostScne"
     h = hashBytes(h, &mPort.view, sizeof(mPort.view));
     op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
 }
 
 void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
     const size_t index = passIndex(pass);
-    const GpuProgram* program = mResources.programs[mTechnique][index].get();
+    const GpuProgram* program = mResources.programs->program(mTechnique, index);
     // FrameExecutor warns and skips it too.
     if (!program || !program->hasShaders() || program->isCompute()) return;
     PlannedOp& op = mPlan.add();
@@ -127,7 +125,8 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     // The pass's render states, evaluated here once for the executor (PlannedOp::states). Bound targets are
     // read (blending, depth and stencil tests); they are written unless the states mask the writes (the
     // hardware shadow map's ColorWriteEnable = 0, BlendOp=min without Z).
-    op.states = mResources.preshaders[mTechnique][index].states(mValues, mStamps, mDiagnostics);
+    op.states = mResources.programs->preshaders(mTechnique, index)
+                    .states(mValues.all(), mValues.stamps(), mDiagnostics);
     const RenderStateBlock& states = op.states;
     static constexpr fx::RenderStateId kColorWrites[] = {
         fx::RenderStateId::ColorWriteEnable, fx::RenderStateId::ColorWriteEnable1,
@@ -171,8 +170,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
                                          static_cast<int>(mPort.viewportSize.y));
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
     }
-    mBinder.bind(mPort, nullptr, mOptions.time, mValues, mResources.pinned, SemanticBinder::Scope::PerPort,
-                 &use.used, &mStamps);
+    mValues.bindSemantics(mBinder, mPort, nullptr, mOptions.time, SemanticBinder::Scope::PerPort, &use.used);
     uint64_t h = hashCombine(hashCombine(static_cast<uint64_t>(op.kind) + 1, mTechnique), index);
     // Field by field: the struct's padding bytes are not part of its value.
     h = hashBytes(h, &mPort.view, sizeof(mPort.view));
@@ -183,11 +181,11 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
                     static_cast<uint64_t>(mPort.cascade + 1));
     for (size_t p : use.perPassParameters)
         h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
-    if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp);
+    if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp());
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
         if (!stage->storageBuffers.empty() || !stage->images.empty())
-            h = hashCombine(h, mResources.computeDispatches);
+            h = hashCombine(h, mResources.storage->dispatches());
     op.signature = h;
     op.sceneSaysSkip = mSceneSaysSkip;
     if (mLightPort && op.kind == PlannedOp::Kind::DrawGeometry) {
@@ -203,7 +201,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
         } else if (mPort.cascade >= 0) {
             // A cascade serves the receivers of its own depth slice only: its casters are culled to that
             // slice, and a slice beyond the farthest receiver has nothing to serve.
-            const InstanceBvh& bvh = mResources.sceneCache.bvh;
+            const InstanceBvh& bvh = mResources.sceneCache.bvh();
             const glm::mat4 slice = cascadeSlice();
             std::vector<glm::vec3>& body = mResources.frameScratch.sliceBody;
             std::vector<uint32_t>& receivers = mResources.frameScratch.sliceObjects;
@@ -224,9 +222,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
 }
 
 void PlanRecorder::setLoopIndex(const std::string&, int parameter, int index) {
-    if (parameter >= 0)
-        storeScalarParameter(mResources.parameterInfo(), static_cast<size_t>(parameter),
-                             static_cast<float>(index), mValues, mStamps);
+    if (parameter >= 0) mValues.storeScalar(static_cast<size_t>(parameter), static_cast<float>(index));
 }
 
 size_t PlanRecorder::passIndex(const fx::CompiledPass& pass) const {
@@ -237,7 +233,7 @@ int PlanRecorder::resource(int parameter) const {
     if (parameter < 0) return kUnknown;
     const size_t index = static_cast<size_t>(parameter);
     const fx::TextureDesc* desc = mResources.effect().findTexture(index);
-    if (!mResources.textures.count(index) && !(desc && isRenderTarget(*desc))) return kUnknown;
+    if (!mResources.textures->find(index) && !(desc && isRenderTarget(*desc))) return kUnknown;
     return parameter;
 }
 

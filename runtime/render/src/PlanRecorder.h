@@ -41,7 +41,7 @@ public:
     void clear(fx::ScriptCommand::ClearWhat what) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
     // A dispatch draws nothing: no operation of the plan (what it writes reaches draws through
-    // EffectResources::computeDispatches).
+    // StorageResources::dispatches).
     void dispatch(const fx::CompiledPass&, const std::array<uint32_t, 3>&, const fx::SourceLoc&) override {}
     // The host's scene draw writes the bound targets like a pass of its own; its signature changes with
     // the scene and the camera, so it is never taken for cached.
@@ -68,8 +68,7 @@ private:
     const std::vector<glm::vec3>& mBody;
     FramePlan& mPlan;
     fx::DiagnosticSink& mDiagnostics;
-    std::vector<fx::Value>& mValues;  // the dry run's copy of the parameter values (kept between frames)
-    ParameterStamps& mStamps;         // of mValues (the resources' clock: stamps stay unique; kept too)
+    ParameterValues& mValues;  // the dry run's copy of the parameter values (kept between frames)
     std::array<int, RenderTargets::kMaxColorTargets> mColors{};
     int mDepth = kFrameDepth;
     bool mLightPort = false;

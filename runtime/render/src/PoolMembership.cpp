@@ -38,9 +38,7 @@ void PoolMembership::published(const EffectResources& resources, size_t index) {
 void PoolMembership::pull(EffectResources& resources) {
     for (Shared& shared : mShared) {
         if (shared.slot->generation == shared.seen) continue;
-        storeParameter(resources.parameterInfo(), shared.parameter, shared.slot->value, resources.values,
-                       resources.stamps);
-        resources.pinned[shared.parameter] = true;
+        resources.values.pin(shared.parameter, shared.slot->value);
         shared.seen = shared.slot->generation;
     }
 }

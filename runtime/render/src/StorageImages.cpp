@@ -1,12 +1,12 @@
 // StorageImages: the textures behind an effect's RWTexture1D, RWTexture2D, RWTexture3D and
 // RWTexture2DArray parameters and the buffers behind its RWBuffer parameters
-// (EffectResources::createImages), and the parameters that view them or read-write buffers
+// (StorageResources::createImages), and the parameters that view them or read-write buffers
 // (`string ViewOf = "..."`).
 // FX11 applications create the resource and its unordered access view themselves; here the parameter's
 // annotations size it (`int Width`, `Height`: 64 without them; `Depth` of a 3D texture and `ArraySize` of
 // an array: 1; an RWBuffer's `ElementCount`: 1) and the format its code declares (glslang's, from the
 // element type) is the texture's or the buffer texture's.
-#include "EffectResources.h"
+#include "StorageResources.h"
 
 #include <optional>
 #include <string>
@@ -71,22 +71,22 @@ GpuTexture imageTexture(fx::BaseType type, fx::TextureFormat format, int width, 
 
 }  // namespace
 
-bool EffectResources::createImages(fx::DiagnosticSink& diagnostics) {
-    for (size_t i = 0; i < parameterInfo().size(); ++i) {
-        const fx::ParameterInfo& parameter = parameterInfo()[i];
+bool StorageResources::createImages(const ParameterLookup& findParameter, fx::DiagnosticSink& diagnostics) {
+    for (size_t i = 0; i < mEffect->parameters.size(); ++i) {
+        const fx::ParameterInfo& parameter = mEffect->parameters[i];
         if (const fx::AnnotationValue* view = fx::findAnnotation(parameter.annotations, "ViewOf")) {
             const std::optional<size_t> viewed = findParameter(view->value.string);
-            const bool readWrite = viewed && (parameterInfo()[*viewed].type.isImage() ||
-                                              parameterInfo()[*viewed].type.isBuffer());
+            const bool readWrite = viewed && (mEffect->parameters[*viewed].type.isImage() ||
+                                              mEffect->parameters[*viewed].type.isBuffer());
             if (!readWrite) {
                 diagnostics.report(fx::DiagId::ViewOfUnknownResource, parameter.loc,
                                    {parameter.name, view->value.string});
                 return false;
             }
-            resourceViews[i] = *viewed;
+            mResourceViews[i] = *viewed;
         }
         if (!parameter.type.isImage()) continue;
-        const fx::ImageBinding* use = imageUse(*mCompiled, i);
+        const fx::ImageBinding* use = imageUse(*mEffect, i);
         if (!use) continue;  // no pass reads or writes it
         const std::optional<fx::TextureFormat> format = imageTextureFormat(use->format);
         if (!format) {
@@ -98,8 +98,8 @@ bool EffectResources::createImages(fx::DiagnosticSink& diagnostics) {
         if (type == fx::BaseType::RWBuffer) {
             const std::optional<size_t> elements = declaredElementCount(parameter, diagnostics);
             if (!elements) return false;
-            buffers[i] = GpuBuffer::create(nullptr, *elements * texelBytes(*format),
-                                           glTextureFormat(*format).internalFormat);
+            mBuffers[i] = GpuBuffer::create(nullptr, *elements * texelBytes(*format),
+                                            glTextureFormat(*format).internalFormat);
             continue;
         }
         const int width = sizeAnnotation(parameter, "Width", 64);
@@ -118,7 +118,7 @@ bool EffectResources::createImages(fx::DiagnosticSink& diagnostics) {
         }
         GpuTexture texture = imageTexture(type, *format, width, height, depth);
         texture.setLabel(parameter.name);
-        images[i] = std::move(texture);
+        mImages[i] = std::move(texture);
     }
     return true;
 }

@@ -1,0 +1,190 @@
+// StorageResources: see StorageResources.h. The images are made in StorageImages.cpp.
+#include "StorageResources.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace runtime {
+
+namespace {
+
+// A Buffer<T>'s texel: T's GL buffer-texture format and size. nullopt for a T GL cannot hold as texels
+// (doubles, structs, 16-bit types).
+struct TexelFormat {
+    GLenum format;
+    size_t bytes;
+};
+std::optional<TexelFormat> bufferTexelFormat(const std::string& templateArgs) {
+    std::string t;
+    for (char c : templateArgs)
+        if (c != ' ' && c != '\t') t += c;
+    if (t.empty()) t = "float4";  // Buffer without <T> reads float4s
+    static const struct {
+        const char* name;
+        GLenum formats[4];
+    } kTypes[] = {{"float", {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F}},
+                  {"int", {GL_R32I, GL_RG32I, GL_RGB32I, GL_RGBA32I}},
+                  {"uint", {GL_R32UI, GL_RG32UI, GL_RGB32UI, GL_RGBA32UI}}};
+    for (const auto& type : kTypes) {
+        const std::string name = type.name;
+        if (t.rfind(name, 0) != 0) continue;
+        const std::string rest = t.substr(name.size());
+        const int n = rest.empty()                                           ? 1
+                      : rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4' ? rest[0] - '0'
+                                                                             : 0;
+        if (n == 0) continue;
+        return TexelFormat{type.formats[n - 1], static_cast<size_t>(n) * 4};
+    }
+    return std::nullopt;
+}
+
+// The storage layout a pass's code gives a StructuredBuffer or ByteAddressBuffer (the first found; every
+// unit declares the same type the same way); null if no pass reads it.
+const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, size_t parameter) {
+    for (const fx::CompiledTechnique& technique : effect.techniques)
+        for (const fx::CompiledPass& pass : technique.passes)
+            for (const fx::StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
+                for (const fx::StorageBufferBinding& b : stage->storageBuffers)
+                    if (b.parameter == parameter) return &b;
+    return nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<StorageResources> StorageResources::create(const fx::CompiledEffect& effect,
+                                                           const ParameterLookup& findParameter,
+                                                           fx::DiagnosticSink& diagnostics) {
+    auto storage = std::unique_ptr<StorageResources>(new StorageResources(effect));
+    if (!storage->createDefaultBuffers(diagnostics) || !storage->createImages(findParameter, diagnostics))
+        return nullptr;
+    return storage;
+}
+
+const GpuBuffer* StorageResources::buffer(size_t parameter) const {
+    auto found = mBuffers.find(parameter);
+    return found == mBuffers.end() ? nullptr : &found->second;
+}
+
+const GpuBuffer* StorageResources::counter(size_t parameter) const {
+    auto found = mCounters.find(parameter);
+    return found == mCounters.end() ? nullptr : &found->second;
+}
+
+const GpuTexture* StorageResources::image(size_t parameter) const {
+    auto found = mImages.find(parameter);
+    return found == mImages.end() ? nullptr : &found->second;
+}
+
+size_t StorageResources::viewedResource(size_t parameter) const {
+    auto view = mResourceViews.find(parameter);
+    return view == mResourceViews.end() ? parameter : view->second;
+}
+
+// `int ElementCount = N;` on a storage buffer (docs/d3d10.md, "Compute shaders and read-write resources"):
+// the elements it holds from load on, as the buffer an FX11 application creates for it; 1 without one.
+std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
+                                           fx::DiagnosticSink& diagnostics) {
+    const fx::AnnotationValue* count = fx::findAnnotation(parameter.annotations, "ElementCount");
+    if (!count) return 1;
+    const double value = count->value.data.empty() ? 0.0 : count->value.data[0];
+    if (count->value.data.size() != 1 || !(value >= 1 && value <= double(size_t(1) << 28)) ||
+        value != static_cast<double>(static_cast<size_t>(value))) {
+        diagnostics.report(
+            fx::DiagId::ElementCountInvalid, parameter.loc,
+            {parameter.name, count->value.data.empty() ? "not a number" : std::to_string(value)});
+        return std::nullopt;
+    }
+    return static_cast<size_t>(value);
+}
+
+// Zeros until the application sets them: what D3D10 reads from a resource slot with nothing bound.
+bool StorageResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
+    for (size_t i = 0; i < mEffect->parameters.size(); ++i) {
+        const fx::TypeDesc& type = mEffect->parameters[i].type;
+        if (!type.isBuffer()) continue;
+        if (type.base == fx::BaseType::Buffer) {
+            const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
+            if (!texel) {
+                diagnostics.report(fx::DiagId::BufferElementUnsupported, mEffect->parameters[i].loc,
+                                   {type.templateArgs});
+                return false;
+            }
+            mBuffers[i] = GpuBuffer::create(nullptr, texel->bytes, texel->format);
+            continue;
+        }
+        const fx::StorageBufferBinding* layout = storageLayout(*mEffect, i);
+        const std::optional<size_t> elements = declaredElementCount(mEffect->parameters[i], diagnostics);
+        if (!elements) return false;
+        mBuffers[i] =
+            GpuBuffer::create(nullptr, *elements * (layout ? std::max<size_t>(layout->glStride, 4) : 16));
+        if (type.base == fx::BaseType::RWStructuredBuffer ||
+            type.base == fx::BaseType::AppendStructuredBuffer ||
+            type.base == fx::BaseType::ConsumeStructuredBuffer) {
+            const uint32_t zero = 0;
+            mCounters[i] = GpuBuffer::create(&zero, sizeof zero);
+        }
+    }
+    return true;
+}
+
+bool StorageResources::set(size_t index, const void* bytes, size_t elements, size_t elementBytes,
+                           fx::DiagnosticSink& diagnostics) {
+    index = viewedResource(index);  // a view's contents are its resource's
+    const bool isBuffer = index < mEffect->parameters.size() && mEffect->parameters[index].type.isBuffer();
+    auto refuse = [&](fx::DiagId id, const std::vector<std::string>& args) {
+        const fx::SourceLoc where = index < mEffect->parameters.size() ? mEffect->parameters[index].loc
+                                                                       : fx::SourceLoc{mEffect->path, 0, 0};
+        diagnostics.report(id, where, args);
+        return false;
+    };
+    if (!isBuffer) return refuse(fx::DiagId::SetBufferNotBuffer, {std::to_string(index)});
+    const fx::TypeDesc& type = mEffect->parameters[index].type;
+    const std::vector<std::string> what = {mEffect->parameters[index].name, type.hlslName()};
+    const auto withSize = [&](size_t elementSize) {
+        std::vector<std::string> args = what;
+        args.push_back(std::to_string(elementSize));
+        return args;
+    };
+    if ((bytes == nullptr && elements > 0) || elements > (size_t(1) << 28) || elementBytes > 65536)
+        return refuse(fx::DiagId::SetBufferByteCount, what);
+    const size_t total = elements * elementBytes;
+    if (type.base == fx::BaseType::Buffer) {
+        const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
+        if (!texel || elementBytes != texel->bytes)
+            return refuse(fx::DiagId::SetBufferElementSize, withSize(texel ? texel->bytes : 0));
+        mBuffers[index] = GpuBuffer::create(bytes, total, texel->format);
+    } else if (type.base == fx::BaseType::ByteAddressBuffer) {
+        if (total % 4 != 0) return refuse(fx::DiagId::SetBufferWholeWords, what);
+        mBuffers[index] = GpuBuffer::create(bytes, total);
+    } else if (const fx::StorageBufferBinding* layout = storageLayout(*mEffect, index)) {
+        if (elementBytes != layout->d3dStride)
+            return refuse(fx::DiagId::SetBufferPackedElementSize, withSize(layout->d3dStride));
+        // From D3D's packing to the GL block's (std430 aligns vectors and pads elements). A buffer with a
+        // counter keeps room for its ElementCount (validated at load), where the shaders append.
+        auto counter = mCounters.find(index);
+        const size_t room =
+            counter == mCounters.end()
+                ? elements
+                : std::max(elements,
+                           declaredElementCount(mEffect->parameters[index], diagnostics).value_or(0));
+        std::vector<uint8_t> packed(room * layout->glStride, 0);
+        const auto* in = static_cast<const uint8_t*>(bytes);
+        for (size_t e = 0; e < elements; ++e)
+            for (const fx::StorageBufferBinding::Run& run : layout->runs)
+                std::memcpy(packed.data() + e * layout->glStride + run.glOffset,
+                            in + e * layout->d3dStride + run.d3dOffset, run.bytes);
+        mBuffers[index] = GpuBuffer::create(packed.data(), packed.size());
+        // D3D11's initial count of the view an application binds the elements it filled through: a consume
+        // buffer holds them to consume, an append buffer appends after them.
+        if (counter != mCounters.end()) {
+            const auto count = static_cast<uint32_t>(elements);
+            counter->second = GpuBuffer::create(&count, sizeof count);
+        }
+    } else {
+        mBuffers[index] = GpuBuffer::create(bytes, total);  // no pass reads it
+    }
+    return true;
+}
+
+}  // namespace runtime
