@@ -426,9 +426,22 @@ void GpuProgram::upload(const std::vector<fx::Value>& parameters, const std::vec
                 member.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
             if (member.index < source.size()) UniformPacker::pack(member, source[member.index], block.data);
         }
-        if (block.uploaded == block.data) continue;
+    }
+    const uint64_t lap = ring.lap();
+    bindStaleBlocks(ring);
+    // Binding one block may start the ring over; a block this call left bound from the lap before may lie
+    // where the new lap writes next: bind it again before the draw (once: the blocks together are far
+    // smaller than the ring).
+    if (ring.lap() != lap) bindStaleBlocks(ring);
+}
+
+void GpuProgram::bindStaleBlocks(UniformRing& ring) {
+    for (StageBlock& block : mBlocks) {
+        if (block.data.empty()) continue;
+        if (block.uploaded == block.data && block.uploadedLap == ring.lap()) continue;
         ring.bindBlock(static_cast<GLuint>(block.stage->uniformBlockBinding), block.data);
         block.uploaded = block.data;
+        block.uploadedLap = ring.lap();
     }
 }
 
@@ -467,6 +480,7 @@ void UniformRing::bindBlock(GLuint binding, const std::vector<uint8_t>& data) {
         }
         gl::DeleteSync(fence);
         mHead = 0;
+        ++mLap;
     }
     std::memcpy(mMapped + mHead, data.data(), data.size());
     gl::BindBufferRange(GL_UNIFORM_BUFFER, binding, mBuffer, static_cast<GLintptr>(mHead),

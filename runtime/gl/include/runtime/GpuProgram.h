@@ -31,7 +31,8 @@ public:
 // One persistently mapped uniform buffer that every draw's blocks are written to at a fresh offset. A
 // per-program buffer updated with glBufferSubData makes the driver wait for (llvmpipe: flush) the draws
 // still reading the old contents at every draw; writing ahead in a ring never touches bytes in flight.
-// When the ring is full it fences, waits for the GPU to finish what it queued, and starts over.
+// When the ring is full it fences, waits for the GPU to finish what it queued, and starts over: a new lap,
+// whose writes overwrite the ranges of the laps before, bound or not.
 class UniformRing {
 public:
     UniformRing();
@@ -41,6 +42,9 @@ public:
 
     // Copies `data` into the ring and binds that range to uniform block binding `binding`.
     void bindBlock(GLuint binding, const std::vector<uint8_t>& data);
+    // How many times the ring has started over. A block bound in an earlier lap must be copied in again
+    // before the next draw, even if its bytes did not change: what the ring wrote since may be on its range.
+    uint64_t lap() const { return mLap; }
 
 private:
     static constexpr size_t kCapacity = size_t(8) << 20;
@@ -48,6 +52,7 @@ private:
     uint8_t* mMapped = nullptr;
     size_t mHead = 0;
     size_t mAlignment = 256;
+    uint64_t mLap = 0;
 };
 
 class GpuProgram {
@@ -94,7 +99,8 @@ public:
     void bind();
     // Packs the stages' uniform blocks from `parameters` (one value per effect parameter) and `arguments`
     // (one value per CompiledPass::arguments entry) and uploads a block only where its bytes changed since
-    // this program's last upload (per-pass values stay put between the draws of a pass).
+    // this program's last upload (per-pass values stay put between the draws of a pass), or where the ring
+    // has started over since (UniformRing::lap).
     void upload(const std::vector<fx::Value>& parameters, const std::vector<fx::Value>& arguments,
                 UniformRing& ring);
 
@@ -103,10 +109,13 @@ private:
         const fx::StageProgram* stage = nullptr;
         std::vector<uint8_t> data;
         std::vector<uint8_t> uploaded;  // what the bound range holds; empty = nothing bound yet
+        uint64_t uploadedLap = 0;       // the ring's lap when it was bound
     };
     GpuProgram() = default;
     // Binds the pass's storage blocks and images to the binding points and units their parameters' orders
     // give (storageBufferParameters, imageParameters).
+    // Binds each stage's block whose bytes changed or whose range is from an earlier lap of the ring.
+    void bindStaleBlocks(UniformRing& ring);
     void bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked, size_t count);
 
     GLuint mProgram = 0;
