@@ -95,7 +95,7 @@ TEST(ParameterValues, SemanticsLeaveAPinnedValueAndTouchOnlyWhatChanged) {
     const auto effect = compile(kEffect);
     ASSERT_TRUE(effect);
     runtime::ParameterValues values(effect->parameters, effect->initialValues);
-    const runtime::SemanticBinder binder(effect->parameters);
+    const runtime::SemanticBinder binder(effect->parameters, effect->lights);
     const size_t wvp = indexOf(*effect, "WorldViewProjection");
     runtime::RenderPortView port;
     port.projection = glm::mat4(2.0f);

@@ -236,7 +236,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     EffectResources::TechniqueChoice& choice = mImpl->techniqueChoice;
     if (!choice.valid || choice.requested != options.technique) {
         const fx::CompiledTechnique* chosen = ScriptInterpreter::selectTechnique(
-            mImpl->effect(), options.technique, mImpl->values, diagnostics);
+            mImpl->effect(), options.technique, mImpl->values.all(), diagnostics);
         if (!chosen) return false;
         choice.technique = static_cast<size_t>(chosen - mImpl->effect().techniques.data());
         choice.requested = options.technique;
