@@ -822,9 +822,10 @@ FX_DIAGNOSTIC(CompiledEffectScriptLightOutOfRange, Error,
               "the compiled effect file is corrupt: a script names a light out of range")
 FX_DIAGNOSTIC(CompiledEffectScriptTechniqueOutOfRange, Error,
               "the compiled effect file is corrupt: a script names a technique out of range")
-FX_DIAGNOSTIC(CompiledEffectPreshaderMemberTooWide, Error,
-              "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (a member of "
-              "more than 4 components)")
+FX_DIAGNOSTIC(
+    CompiledEffectPreshaderMemberTooWide, Error,
+    "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (a member of "
+    "more than 4 components)")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

@@ -64,8 +64,9 @@ ScriptTargets scriptTargets(const EffectResources& resources, const fx::Compiled
         const GpuTexture* texture = nullptr;
         if (!command.value.empty()) {
             out.effectTargets = true;
-            texture = command.parameter >= 0 ? resources.textures->find(static_cast<size_t>(command.parameter))
-                                             : nullptr;
+            texture = command.parameter >= 0
+                          ? resources.textures->find(static_cast<size_t>(command.parameter))
+                          : nullptr;
             if (!texture) {
                 out.missing = command.value;
                 out.missingLoc = command.loc;
