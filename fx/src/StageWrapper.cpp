@@ -353,7 +353,7 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             const bool clip = s[3] == 'C' && s[4] == 'L';
             const std::string index = s.substr(15).empty() ? "0" : s.substr(15);
             const std::string name = std::string(clip ? "fx_clip" : "fx_cull") + index;
-            if (!used.insert(1000 + (clip ? 0 : 100) + std::stoi(index)).second) continue;
+            if (!used.insert(1000 + (clip ? 0 : 100) + splitSemantic(s).second).second) continue;
             TypeDesc t = f.type;
             t.arrayDims.clear();
             members += "    " + hlslTypeName(t) + " " + name +

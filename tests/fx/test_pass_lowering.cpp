@@ -113,6 +113,25 @@ TEST(SemanticTables, LocationsAreFixed) {
     EXPECT_FALSE(varyingLocation("PSIZE"));
 }
 
+// A semantic index too long for an int (a fuzzer's input: it threw out of the compiler) reads as an index no
+// table or limit takes, and a stage that writes it lowers without throwing.
+TEST(SemanticTables, AnIndexTooLongForAnIntIsNoRegister) {
+    EXPECT_EQ(splitSemantic("TEXCOORD12"), (std::pair<std::string, int>("TEXCOORD", 12)));
+    EXPECT_EQ(splitSemantic("TEXCOORD99999999999"), (std::pair<std::string, int>("TEXCOORD", 1 << 30)));
+    EXPECT_FALSE(varyingLocation("TEXCOORD99999999999"));
+    DiagnosticList diags;
+    const std::shared_ptr<Effect> effect = parseEffectSource(R"(
+struct VOut { float4 Pos : POSITION; float4 T : TEXCOORD99999999999; float C : SV_ClipDistance99999999999; };
+VOut VS(float3 p : POSITION) { VOut o; o.Pos = float4(p, 1); o.T = o.Pos; o.C = 1; return o; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                             "long_index.fx", ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    std::vector<LoweredArgument> args;
+    EXPECT_NO_THROW(lowerStage(*effect, effect->techniques[0].passes[0].states[0].value, ShaderStage::Vertex,
+                               args, diags));
+}
+
 // D3D10 input layouts' names, as the SDK samples and applications spelled them.
 TEST(SemanticTables, FreeVertexInputNamesMatchTheMeshStreamsByPrefix) {
     EXPECT_EQ(vertexStreamByName("POS"), 0);
