@@ -12,6 +12,25 @@
 namespace shadowfx::test {
 namespace {
 
+// What the tests of host-evaluated functions render: the teapot, small. An object colour counts where it
+// covers a twentieth of the frame.
+constexpr int kTeapotWidth = 64, kTeapotHeight = 48, kMinTeapotPixels = kTeapotWidth * kTeapotHeight / 20;
+
+// Sets `parameter` to `value` (none: the effect's own value stands), renders the teapot and requires the
+// object in `colour` (0-255), the colour the host's evaluation of the effect's functions gives it.
+void expectTeapotColour(runtime::EffectRenderer& renderer, const char* parameter, const std::string& value,
+                        std::array<int, 3> colour) {
+    if (parameter) {
+        fx::DiagnosticList diagnostics;
+        ASSERT_TRUE(renderer.setParameterFromText(parameter, value, diagnostics)) << diagnostics.str();
+    }
+    ASSERT_TRUE(render(renderer, *runtime::makeBuiltinScene("teapot"), kTeapotWidth, kTeapotHeight));
+    const runtime::FrameImage frame = renderer.readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, kTeapotWidth, kTeapotHeight, colour[0], colour[1], colour[2]),
+              kMinTeapotPixels);
+}
+
 // A scene pass into a target, then a full-screen pass that copies it with the half-texel offset D3D9
 // needed, computed as FX Composer's quad include computes it: a static over the viewport size, which the
 // runtime binds only when it knows the frame's size (the parameter has no default, so a value computed
@@ -147,21 +166,8 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9HostEvaluation, FunctionWithBranchesFollowsItsInput) {
     auto renderer = loadEffect(kBranchingFunction, false, "branching_function.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 64, 128, 204),
-              kMinObjectPixels);  // (0.25, 0.5, 0.8)
-
-    fx::DiagnosticList diagnostics;
-    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.1", diagnostics)) << diagnostics.str();
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 191, 128, 51),
-              kMinObjectPixels);  // (0.75, 0.5, 0.2)
+    expectTeapotColour(*renderer, nullptr, "", {64, 128, 204});     // (0.25, 0.5, 0.8)
+    expectTeapotColour(*renderer, "Level", "0.1", {191, 128, 51});  // (0.75, 0.5, 0.2)
 }
 
 // The hue, saturation and value of a colour, in the style of FX Composer's colour-space include: a chain of
@@ -208,23 +214,16 @@ std::array<float, 3> hueSaturationValue(float r, float g, float b) {
 TEST(D3d9HostEvaluation, ChainedBranchesOverOneVector) {
     auto renderer = loadEffect(kHueSaturationValue, false, "hue_saturation_value.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
     for (const std::array<float, 3>& key :
          {std::array<float, 3>{0.2f, 0.7f, 0.3f}, {0.9f, 0.1f, 0.3f}, {0.1f, 0.2f, 0.8f}}) {
         const std::string text =
             std::to_string(key[0]) + "," + std::to_string(key[1]) + "," + std::to_string(key[2]);
         SCOPED_TRACE(text);
-        fx::DiagnosticList diagnostics;
-        ASSERT_TRUE(renderer->setParameterFromText("Key", text, diagnostics)) << diagnostics.str();
-        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-        const runtime::FrameImage frame = renderer->readFrame();
-        ASSERT_TRUE(notConstant(frame));
         const std::array<float, 3> hsv = hueSaturationValue(key[0], key[1], key[2]);
-        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, static_cast<int>(std::lround(hsv[0] * 255)),
-                                      static_cast<int>(std::lround(hsv[1] * 255)),
-                                      static_cast<int>(std::lround(hsv[2] * 255))),
-                  kMinObjectPixels);
+        expectTeapotColour(
+            *renderer, "Key", text,
+            {static_cast<int>(std::lround(hsv[0] * 255)), static_cast<int>(std::lround(hsv[1] * 255)),
+             static_cast<int>(std::lround(hsv[2] * 255))});
     }
 }
 
@@ -264,20 +263,9 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9HostEvaluation, FunctionWithLoopsFollowsItsInput) {
     auto renderer = loadEffect(kLoopingFunction, false, "looping_function.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
     // x * (1 + 1/2 + 1/4 + 1/8), 3 * 0.1, (1 + 2) * 0.1 + x / 2
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 239, 77, 140), kMinObjectPixels);
-
-    fx::DiagnosticList diagnostics;
-    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.2", diagnostics)) << diagnostics.str();
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 96, 77, 204), kMinObjectPixels);  // early: 0.5
+    expectTeapotColour(*renderer, nullptr, "", {239, 77, 140});
+    expectTeapotColour(*renderer, "Level", "0.2", {96, 77, 204});  // early: 0.5
 }
 
 // `break` and `continue` in loops of a function evaluated on the host, on conditions over the input: the
@@ -320,21 +308,10 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9HostEvaluation, LoopsLeftByBreakAndContinueFollowTheirInput) {
     auto renderer = loadEffect(kLeavingLoops, false, "leaving_loops.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
     // 4 steps below 0.5; j = 0 and 2 summed; k = 2, plus 0.05
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 102, 102, 64), kMinObjectPixels);
-
-    fx::DiagnosticList diagnostics;
-    ASSERT_TRUE(renderer->setParameterFromText("Level", "0.2", diagnostics)) << diagnostics.str();
-    ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-    frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
+    expectTeapotColour(*renderer, nullptr, "", {102, 102, 64});
     // 2 steps below 0.2; j = 0 alone; k = 1, plus 0.05
-    EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 51, 51, 38), kMinObjectPixels);
+    expectTeapotColour(*renderer, "Level", "0.2", {51, 51, 38});
 }
 
 // FX Composer's shadow includes build their texture-space bias as a static matrix from a function of a
@@ -357,18 +334,9 @@ technique T { pass P { VertexShader = compile vs_3_0 VS();
 TEST(D3d9HostEvaluation, MatrixFromAFunctionFollowsItsInput) {
     auto renderer = loadEffect(kMatrixFunction, false, "matrix_function.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
-    for (const auto& [bias, blue] : {std::pair{"0.25", 64}, std::pair{"0.5", 128}}) {
-        SCOPED_TRACE(bias);
-        fx::DiagnosticList diagnostics;
-        ASSERT_TRUE(renderer->setParameterFromText("Bias", bias, diagnostics)) << diagnostics.str();
-        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-        const runtime::FrameImage frame = renderer->readFrame();
-        ASSERT_TRUE(notConstant(frame));
-        // (0.1 + 0.5, 0.2 + 0.5, bias)
-        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, 153, 178, blue), kMinObjectPixels);
-    }
+    // (0.1 + 0.5, 0.2 + 0.5, bias)
+    expectTeapotColour(*renderer, "Bias", "0.25", {153, 178, 64});
+    expectTeapotColour(*renderer, "Bias", "0.5", {153, 178, 128});
 }
 
 // The intrinsics D3DX's preshaders ran as sequences of their own instructions (ldexp, rcp, mad, sinh,
@@ -392,21 +360,10 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9HostEvaluation, IntrinsicsComposedOfPreshaderInstructions) {
     auto renderer = loadEffect(kComposedIntrinsics, false, "composed_intrinsics.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
     // At 0.5: (0.25 + 0.25, 0.5, 0.25 + 0.1 - 0.1 + 0.05), all() false. At 0.9: (0.45 + 0.25, 0.7,
     // 0.81 + 0.05 + 0.1), all() true; any() is true at both.
-    for (const auto& [level, colour] :
-         {std::pair{"0.5", std::array{128, 128, 76}}, std::pair{"0.9", std::array{179, 179, 245}}}) {
-        SCOPED_TRACE(level);
-        fx::DiagnosticList diagnostics;
-        ASSERT_TRUE(renderer->setParameterFromText("Level", level, diagnostics)) << diagnostics.str();
-        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-        const runtime::FrameImage frame = renderer->readFrame();
-        ASSERT_TRUE(notConstant(frame));
-        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, colour[0], colour[1], colour[2]),
-                  kMinObjectPixels);
-    }
+    expectTeapotColour(*renderer, "Level", "0.5", {128, 128, 76});
+    expectTeapotColour(*renderer, "Level", "0.9", {179, 179, 245});
 }
 
 // sincos writes its second and third arguments: both locals follow the tweakable.
@@ -422,20 +379,9 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9HostEvaluation, SincosWritesBothOfItsOutputs) {
     auto renderer = loadEffect(kSineAndCosine, false, "sine_and_cosine.fx");
     ASSERT_TRUE(renderer);
-    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    constexpr int kWidth = 64, kHeight = 48, kMinObjectPixels = kWidth * kHeight / 20;
     // (sin 0.5, cos 0.5) = (0.479, 0.878); (sin 1.2, cos 1.2) = (0.932, 0.362).
-    for (const auto& [angle, colour] :
-         {std::pair{"0.5", std::array{122, 224, 102}}, std::pair{"1.2", std::array{238, 92, 102}}}) {
-        SCOPED_TRACE(angle);
-        fx::DiagnosticList diagnostics;
-        ASSERT_TRUE(renderer->setParameterFromText("Angle", angle, diagnostics)) << diagnostics.str();
-        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
-        const runtime::FrameImage frame = renderer->readFrame();
-        ASSERT_TRUE(notConstant(frame));
-        EXPECT_GE(countPixelsOfColour(frame, kWidth, kHeight, colour[0], colour[1], colour[2]),
-                  kMinObjectPixels);
-    }
+    expectTeapotColour(*renderer, "Angle", "0.5", {122, 224, 102});
+    expectTeapotColour(*renderer, "Angle", "1.2", {238, 92, 102});
 }
 
 // A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
