@@ -54,6 +54,17 @@ std::shared_ptr<const fx::CompiledEffect> compile(const std::string& source, boo
     return compiled;
 }
 
+// The resources a renderer of `effect` keeps (null, with the diagnostics as a failure, where they cannot be
+// made).
+std::unique_ptr<runtime::EffectResources> createResources(
+    const std::shared_ptr<const fx::CompiledEffect>& effect) {
+    fx::DiagnosticList diagnostics;
+    std::unique_ptr<runtime::EffectResources> resources =
+        runtime::EffectResources::create(effect, diagnostics);
+    EXPECT_TRUE(resources) << diagnostics.str();
+    return resources;
+}
+
 size_t indexOf(const fx::CompiledEffect& effect, const std::string& name) {
     for (size_t i = 0; i < effect.parameters.size(); ++i)
         if (effect.parameters[i].name == name) return i;
@@ -137,10 +148,8 @@ TEST(ParameterValues, ACopysStampsNeverMeetTheOriginals) {
 TEST(EffectTextures, AResizedTargetLeavesNoFramebufferOnTheOldOne) {
     const auto effect = compile(kEffect);
     ASSERT_TRUE(effect);
-    fx::DiagnosticList diagnostics;
-    std::unique_ptr<runtime::EffectResources> resources =
-        runtime::EffectResources::create(effect, diagnostics);
-    ASSERT_TRUE(resources) << diagnostics.str();
+    std::unique_ptr<runtime::EffectResources> resources = createResources(effect);
+    ASSERT_TRUE(resources);
     runtime::EffectTextures& textures = *resources->textures;
     const size_t half = indexOf(*effect, "Half"), fixed = indexOf(*effect, "Fixed"),
                  unused = indexOf(*effect, "Unused");
@@ -193,10 +202,8 @@ TEST(EffectTextures, AResizedTargetLeavesNoFramebufferOnTheOldOne) {
 TEST(EffectTextures, SetRefusesARenderTarget) {
     const auto effect = compile(kEffect);
     ASSERT_TRUE(effect);
-    fx::DiagnosticList diagnostics;
-    std::unique_ptr<runtime::EffectResources> resources =
-        runtime::EffectResources::create(effect, diagnostics);
-    ASSERT_TRUE(resources) << diagnostics.str();
+    std::unique_ptr<runtime::EffectResources> resources = createResources(effect);
+    ASSERT_TRUE(resources);
     const size_t fixed = indexOf(*effect, "Fixed");
     resources->textures->ensureFrame(32, 32);
     const uint64_t identity = resources->textures->identity(static_cast<int>(fixed));
@@ -236,10 +243,8 @@ uint32_t counterValue(const runtime::GpuBuffer& counter) {
 TEST(StorageResources, ACountedBufferKeepsItsCounterAndAViewReachesItsResource) {
     const auto effect = compile(sourcePath("tests/data/d3d10/compute_append_consume.fx"), true);
     ASSERT_TRUE(effect);
-    fx::DiagnosticList diagnostics;
-    std::unique_ptr<runtime::EffectResources> resources =
-        runtime::EffectResources::create(effect, diagnostics);
-    ASSERT_TRUE(resources) << diagnostics.str();
+    std::unique_ptr<runtime::EffectResources> resources = createResources(effect);
+    ASSERT_TRUE(resources);
     runtime::StorageResources& storage = *resources->storage;
     const size_t live = indexOf(*effect, "Live"), spent = indexOf(*effect, "Spent"),
                  sparks = indexOf(*effect, "Sparks"), taken = indexOf(*effect, "Taken");
@@ -258,6 +263,7 @@ TEST(StorageResources, ACountedBufferKeepsItsCounterAndAViewReachesItsResource) 
     // Elements set through the consume view are the append buffer's: its counter counts them, and the
     // buffer keeps room for the ElementCount the shaders append up to.
     float elements[3][3] = {{0, 0, 1}, {0, 0, 2}, {0, 0, 3}};
+    fx::DiagnosticList diagnostics;
     ASSERT_TRUE(storage.set(spent, elements, 3, sizeof elements[0], diagnostics)) << diagnostics.str();
     EXPECT_EQ(counterValue(*storage.counter(live)), 3u);
     EXPECT_EQ(storage.buffer(live)->size(), room);
