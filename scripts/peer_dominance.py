@@ -54,6 +54,13 @@ def read_runs(paths):
     return list(merged.values())
 
 
+def log_ticks(log_span):
+    """The 1, 2, 5 of each decade that lie within a logarithmic axis's span (log10 of its ends)."""
+    lo, hi = log_span
+    return [m * 10.0 ** decade for decade in range(math.floor(lo), math.ceil(hi) + 1) for m in (1, 2, 5)
+            if lo <= math.log10(m * 10.0 ** decade) <= hi]
+
+
 def draw_svg(runs, scene, path):
     points = [r for r in runs if r["scene"] == scene and r["misclassified"] > 0 and r["time"] > 0]
     width, height, left, right, top, bottom = 1000, 640, 80, 300, 40, 60
@@ -70,18 +77,12 @@ def draw_svg(runs, scene, path):
            f'font-size="11"><rect width="100%" height="100%" fill="#fff"/>',
            f'<text x="{left}" y="20" font-size="14">{escape(scene)}: misclassified % against full-cost frame ms '
            f'(median of the repetitions; log-log)</text>']
-    for decade in range(math.floor(tx[0]), math.ceil(tx[1]) + 1):
-        for m in (1, 2, 5):
-            v = m * 10.0 ** decade
-            if tx[0] <= math.log10(v) <= tx[1]:
-                out.append(f'<line x1="{x(v):.1f}" y1="{top}" x2="{x(v):.1f}" y2="{height - bottom}" stroke="#ddd"/>'
-                           f'<text x="{x(v):.1f}" y="{height - bottom + 15}" text-anchor="middle">{v:g}</text>')
-    for decade in range(math.floor(ty[0]), math.ceil(ty[1]) + 1):
-        for m in (1, 2, 5):
-            v = m * 10.0 ** decade
-            if ty[0] <= math.log10(v) <= ty[1]:
-                out.append(f'<line x1="{left}" y1="{y(v):.1f}" x2="{width - right}" y2="{y(v):.1f}" stroke="#ddd"/>'
-                           f'<text x="{left - 5}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
+    for v in log_ticks(tx):
+        out.append(f'<line x1="{x(v):.1f}" y1="{top}" x2="{x(v):.1f}" y2="{height - bottom}" stroke="#ddd"/>'
+                   f'<text x="{x(v):.1f}" y="{height - bottom + 15}" text-anchor="middle">{v:g}</text>')
+    for v in log_ticks(ty):
+        out.append(f'<line x1="{left}" y1="{y(v):.1f}" x2="{width - right}" y2="{y(v):.1f}" stroke="#ddd"/>'
+                   f'<text x="{left - 5}" y="{y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
     out.append(f'<text x="{(left + width - right) / 2}" y="{height - 20}" text-anchor="middle">full-cost frame ms</text>')
     for r in sorted(points, key=lambda r: r["time"]):
         colour = "#d62728" if r["peer"] else "#1f77b4"
