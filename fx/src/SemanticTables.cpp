@@ -1,6 +1,7 @@
 // SemanticTables: see SemanticTables.h.
 #include "SemanticTables.h"
 #include "CaseFolding.h"
+#include "SemanticIndex.h"
 
 #include <fx/RenderStates.h>
 #include <fx/VertexStreams.h>
@@ -12,15 +13,8 @@
 
 namespace fx {
 
-// Splits "TEXCOORD3" into ("TEXCOORD", 3); no trailing digits -> index 0. An index of more than nine digits
-// is no register's: it reads as 2^30, which every table and limit refuses, rather than overflowing an int
-// (the rule VertexStreams.cpp applies to vertex inputs).
 std::pair<std::string, int> splitSemantic(const std::string& canonical) {
-    size_t end = canonical.size();
-    while (end > 0 && std::isdigit(static_cast<unsigned char>(canonical[end - 1]))) --end;
-    if (end == canonical.size()) return {canonical, 0};
-    if (canonical.size() - end > 9) return {canonical.substr(0, end), 1 << 30};
-    return {canonical.substr(0, end), std::stoi(canonical.substr(end))};
+    return splitSemanticIndex(canonical);
 }
 
 std::string canonicalSemantic(const std::string& semantic) {

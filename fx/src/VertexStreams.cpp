@@ -2,6 +2,7 @@
 #include <fx/VertexStreams.h>
 
 #include "CaseFolding.h"
+#include "SemanticIndex.h"
 
 #include <array>
 #include <cctype>
@@ -28,14 +29,9 @@ constexpr std::array<StreamRange, 8> kStreams = {{
     {"BLENDINDICES", VertexStream::BlendIndices, 15, 1},
 }};
 
-// "TEXCOORD3" -> ("TEXCOORD", 3), upper case; no trailing digits -> index 0.
+// "TEXCOORD3" -> ("TEXCOORD", 3), upper case.
 std::pair<std::string, int> splitUpper(const std::string& semantic) {
-    std::string s = upperCase(semantic);
-    size_t end = s.size();
-    while (end > 0 && std::isdigit(static_cast<unsigned char>(s[end - 1]))) --end;
-    // Beyond nine digits the index cannot be a stream's; treat it as too large rather than overflow.
-    if (end == s.size() || s.size() - end > 9) return {s.substr(0, end), end == s.size() ? 0 : 1 << 30};
-    return {s.substr(0, end), std::stoi(s.substr(end))};
+    return splitSemanticIndex(upperCase(semantic));
 }
 
 std::optional<int> locationOf(VertexStream stream, int index) {
