@@ -5,7 +5,8 @@
 # tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
 # any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
-# input. It runs every target before it exits.
+# input. It runs every target before it exits. A finding's lines of the log (the sanitizer's or libFuzzer's
+# error, an uncaught exception's type and text) and its input, base64, are printed: CI's log reproduces it.
 # Every crash found is fixed and added to tests/data/malformed/ with its golden diagnostics.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
@@ -72,7 +73,8 @@ for target in "${targets[@]}"; do
   (cd "$work" && "$root/build-asan/fuzz/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 \
      -rss_limit_mb=3072 -print_final_stats=1 -artifact_prefix="$root/build-asan/artifacts/$target/" \
      "$root/build-asan/corpus/$target" >"$log" 2>&1) || fuzzer_status=$?
-  grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+==ERROR|SUMMARY)' "$log" || echo "$target: no statistics in $log"
+  grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+== ?ERROR|SUMMARY|terminate called|  what\(\))' "$log" ||
+    echo "$target: no statistics in $log"
   if [ "$fuzzer_status" -ne 0 ]; then
     echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; status=1
   fi
@@ -80,6 +82,12 @@ for target in "${targets[@]}"; do
     -o -name 'timeout-*' -o -name 'oom-*' -o -name 'slow-unit-*' \) | sort)
   if [ -n "$findings" ]; then
     echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; status=1
+    # Where the artifacts are out of reach (a CI machine), the log alone must let a developer reproduce
+    # the finding: each input's first 4 KiB, base64 (`base64 -d > input`, then run the target on it).
+    for finding in $findings; do
+      echo "$finding ($(stat -c %s "$finding") bytes), base64 of its first 4 KiB:"
+      head -c 4096 "$finding" | base64
+    done
   fi
   executed=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -1)
   if [ "${executed:-0}" -eq 0 ]; then

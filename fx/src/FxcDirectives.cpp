@@ -2,6 +2,7 @@
 #include "FxcDirectives.h"
 
 #include <cctype>
+#include <charconv>
 #include <map>
 
 namespace fx::detail {
@@ -214,10 +215,17 @@ void FxcDirectives::takeUndefinedCallMarkers(std::string& preprocessed, Diagnost
          at = preprocessed.find(directive, at)) {
         size_t end = preprocessed.find('\n', at);
         if (end == std::string::npos) end = preprocessed.size();
-        const size_t number =
-            std::stoul(preprocessed.substr(at + directive.size(), end - at - directive.size()));
-        if (number < mCalls.size())
-            diagnostics.report(DiagId::UndefinedConditionCall, mCalls[number].loc, {mCalls[number].name});
+        // The effect may spell the directive itself: only a marker this pass wrote (one of its call
+        // numbers, nothing after it) is taken; any other line is the effect's pragma and stays.
+        const char* first = preprocessed.data() + at + directive.size();
+        const char* last = preprocessed.data() + end;
+        size_t number = 0;
+        const auto [stop, error] = std::from_chars(first, last, number);
+        if (error != std::errc() || stop != last || number >= mCalls.size()) {
+            at = end;
+            continue;
+        }
+        diagnostics.report(DiagId::UndefinedConditionCall, mCalls[number].loc, {mCalls[number].name});
         preprocessed.erase(at, end - at);
     }
 }

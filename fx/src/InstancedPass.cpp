@@ -88,8 +88,11 @@ bool std140Layout(const MemberDecl& decl, uint32_t& align, uint32_t& size, uint3
         const size_t close = decl.dims.find(']', p);
         if (close == std::string::npos) return false;
         const std::string digits = decl.dims.substr(p + 1, close - p - 1);
-        if (digits.empty() || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return false;
+        // Nine digits at most: a record far larger than any uniform block, and no overflow below.
+        if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit))
+            return false;
         count *= static_cast<uint32_t>(std::stoul(digits));
+        if (count > (1u << 24)) return false;
         p = close + 1;
     }
     if (!decl.dims.empty()) {

@@ -351,7 +351,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             for (const spirv_cross::Resource& r : resources.stage_outputs)
                 if (compiler.has_decoration(r.id, spv::DecorationLocation))
                     ++atLocation[compiler.get_decoration(r.id, spv::DecorationLocation)];
-            static const std::regex kElement(R"((?:\[(\d+)\]|_(\d+)_)$)");
+            // Nine digits at most: more would be no element of an array a stage can output.
+            static const std::regex kElement(R"((?:\[(\d{1,9})\]|_(\d{1,9})_)$)");
             for (const spirv_cross::Resource& r : resources.stage_outputs) {
                 std::smatch element;
                 if (!compiler.has_decoration(r.id, spv::DecorationLocation)) continue;

@@ -260,6 +260,23 @@ float last;
 }
 
 // FX11 game code wrote `#include "x.fxh";`: fxc warned about the text after the file name and went on.
+// The rewrite above marks its calls with pragmas of its own; an effect that writes such a pragma itself
+// (no number, a number past any call, one too long for an integer) keeps it as an ordinary pragma: no
+// warning, no exception out of the parser.
+TEST(Preprocessor, AnEffectsOwnMarkerPragmaIsAnOrdinaryPragma) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#pragma shadowfx_undefined_condition_call_
+#pragma shadowfx_undefined_condition_call_x
+#pragma shadowfx_undefined_condition_call_0
+#pragma shadowfx_undefined_condition_call_99999999999999999999999
+float kept;
+)",
+                                    "main.fx", memoryOptions({}), diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_TRUE(effect->findParameter("kept"));
+    for (const Diagnostic& d : diags.items()) EXPECT_NE(d.id, DiagId::UndefinedConditionCall) << d.message;
+}
+
 TEST(Preprocessor, TextAfterIncludeFileNameIsIgnoredWithWarning) {
     std::map<std::string, std::string> files = {{"a.fxh", "float fromA;\n"}, {"b.fxh", "float fromB;\n"}};
     DiagnosticList diags;
