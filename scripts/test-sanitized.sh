@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ (clang; the build
-# scripts/fuzz.sh shares, see scripts/configure-sanitized.sh) and runs the whole test suite under them. A sanitizer report fails the test that triggered it.
+# scripts/fuzz.sh shares, see scripts/configure-sanitized.sh) and runs the whole test suite under them, less
+# the checks that run none of our instrumented code (layering, docs, the installed package: docs/testing.md,
+# "What the sanitized suite leaves out"), which the plain suite runs. A sanitizer report fails the test that
+# triggered it.
 #
 # Leak checking (LeakSanitizer) covers the GL-free tests (CTest labels "fx": parser, compiler, corpus, and
 # "report": the report writers and shard merging): the
