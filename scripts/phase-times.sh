@@ -15,13 +15,15 @@ _phase_children_cpu() {
   local file
   file="${TMPDIR:-/tmp}/phase-times.$$"
   times >"$file"
-  _phase_now_cpu="$(awk 'NR == 2 { t = 0; for (i = 1; i <= 2; ++i) { split($i, p, /[ms]/); t += p[1] * 60 + p[2] }
-                                    printf "%.1f", t }' "$file")"
+  # "0m1.234s 0m0.567s" (the decimal separator the locale's): the second line is the children's.
+  _phase_now_cpu="$(awk 'NR == 2 { gsub(/,/, "."); t = 0
+                                   for (i = 1; i <= 2; ++i) { split($i, p, /[ms]/); t += p[1] * 60 + p[2] }
+                                   printf "%.1f", t }' "$file")"
   rm -f "$file"
 }
 
 phase_start() {
-  _phase_wall="$EPOCHREALTIME"
+  _phase_wall="${EPOCHREALTIME/,/.}"  # the locale's decimal separator, awk's is a point
   _phase_children_cpu
   _phase_cpu="$_phase_now_cpu"
 }
@@ -29,7 +31,7 @@ phase_start() {
 phase_end() {  # NAME STATUS
   [ -n "${SHADOWFX_PHASE_TIMES:-}" ] || return 0
   _phase_children_cpu
-  awk -v name="$1" -v status="$2" -v w0="$_phase_wall" -v w1="$EPOCHREALTIME" -v c0="$_phase_cpu" \
+  awk -v name="$1" -v status="$2" -v w0="$_phase_wall" -v w1="${EPOCHREALTIME/,/.}" -v c0="$_phase_cpu" \
     -v c1="$_phase_now_cpu" 'BEGIN { printf "%s\t%.0f\t%.1f\t%d\n", name, w1 - w0, c1 - c0, status }' \
     >>"$SHADOWFX_PHASE_TIMES"
 }
