@@ -7,9 +7,9 @@
 #include <cstdint>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    std::string error;
-    const std::optional<runtime::TextureFile> file = runtime::decodeTextureFile({data, size}, error);
-    if (file.has_value() == !error.empty()) __builtin_trap();
+    std::optional<runtime::TextureFileFault> fault;
+    const std::optional<runtime::TextureFile> file = runtime::decodeTextureFile({data, size}, fault);
+    if (file.has_value() == fault.has_value()) __builtin_trap();
     if (!file) return 0;
     const size_t layers = size_t(file->elements) * (file->kind == runtime::TextureFile::Kind::Cube ? 6 : 1);
     for (size_t level = 0; level < file->levels.size(); ++level) {

@@ -11,6 +11,7 @@
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/phase-times.sh
 seconds="${1:-60}"
 shift || true
 targets=("$@")
@@ -20,13 +21,13 @@ if [ ${#targets[@]} -eq 0 ]; then
   [ -f runtime/assets/include/runtime/SceneFile.h ] && targets+=(fuzz_scene_file)
 fi
 
-scripts/install-deps.sh >/dev/null
-scripts/configure-sanitized.sh
+phase install-deps scripts/install-deps.sh >/dev/null
+phase "fuzz configure+build" scripts/configure-sanitized.sh
 # Only what the chosen targets need (fuzz_compile_workers depends on the worker in CMake): the CLI, which
 # compiles the compiled-effect fuzzer's seeds, is the whole project (after test-sanitized.sh, built already).
 build=("${targets[@]}")
 [[ " ${targets[*]} " == *" fuzz_compiled_effect_file "* ]] && build+=(shadowfx)
-cmake --build build-asan -j "$(nproc)" --target "${build[@]}"
+phase "fuzz configure+build" cmake --build build-asan -j "$(nproc)" --target "${build[@]}"
 
 root="$(pwd)"
 seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
@@ -60,6 +61,7 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LP_NUM_THREADS=1
 status=0
+phase_start
 for target in "${targets[@]}"; do
   seed "$target"
   mkdir -p "build-asan/artifacts/$target"
@@ -96,4 +98,5 @@ for target in "${targets[@]}"; do
   echo "corpus: $(ls "build-asan/corpus/$target" | wc -l) inputs"
   rm -rf "$work"
 done
+phase_end "fuzz (${#targets[@]} targets x ${seconds} s)" "$status"
 exit $status

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ (clang; the build
-# scripts/fuzz.sh shares, see scripts/configure-sanitized.sh) and runs the whole test suite under them. A sanitizer report fails the test that triggered it.
+# scripts/fuzz.sh shares, see scripts/configure-sanitized.sh) and runs the whole test suite under them, less
+# the checks that run none of our instrumented code (layering, docs, the installed package: docs/testing.md,
+# "What the sanitized suite leaves out"), which the plain suite runs. A sanitizer report fails the test that
+# triggered it.
 #
 # Leak checking (LeakSanitizer) covers the GL-free tests (CTest labels "fx": parser, compiler, corpus, and
 # "report": the report writers and shard merging): the
@@ -17,18 +20,19 @@
 # build does not build the peer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-scripts/configure-sanitized.sh "$@"
-cmake --build build-asan -j "$(nproc)"
+source scripts/phase-times.sh
+phase install-deps scripts/install-deps.sh
+phase "sanitized configure+build" scripts/configure-sanitized.sh "$@"
+phase "sanitized configure+build" cmake --build build-asan -j "$(nproc)"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 asan="strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
 export LSAN_OPTIONS="suppressions=$(pwd)/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 status=0
-ASAN_OPTIONS="detect_leaks=1:$asan" ctest --test-dir build-asan --output-on-failure -j "$(nproc)" --timeout 1200 \
-  -L '^(fx|report)$' || status=1
+ASAN_OPTIONS="detect_leaks=1:$asan" phase "sanitized ctest fx+report (LSan)" \
+  ctest --test-dir build-asan --output-on-failure -j "$(nproc)" --timeout 1200 -L '^(fx|report)$' || status=1
 gl_leaks=0
 [ "${SHADOWFX_LEAKS_EVERYWHERE:-0}" = 1 ] && gl_leaks=1
-ASAN_OPTIONS="detect_leaks=$gl_leaks:$asan" ctest --test-dir build-asan --output-on-failure -j "$(nproc)" \
-  --timeout 1200 -LE '^(fx|report)$' || status=1
+ASAN_OPTIONS="detect_leaks=$gl_leaks:$asan" phase "sanitized ctest GL" \
+  ctest --test-dir build-asan --output-on-failure -j "$(nproc)" --timeout 1200 -LE '^(fx|report)$' || status=1
 exit $status

@@ -244,7 +244,6 @@ std::string encodeOutcome(const StageOutcome& outcome) {
         w.str(m.text);
     }
     w.str(outcome.crossError);
-    w.u32(static_cast<uint32_t>(outcome.signal));
     writeProgram(w, outcome.program);
     return w.take();
 }
@@ -262,7 +261,6 @@ std::optional<StageOutcome> decodeOutcome(const std::string& payload) {
         m.text = r.str();
     }
     outcome.crossError = r.str();
-    outcome.signal = r.i32();
     readProgram(r, outcome.program);
     if (!r.done() || status > static_cast<uint32_t>(StageOutcome::Status::SanitizerReport))
         return std::nullopt;

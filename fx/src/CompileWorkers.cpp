@@ -52,6 +52,12 @@ struct Worker {
     int fd = -1;
 };
 
+// Why no worker could be started: the system call that failed and the system's message.
+struct SpawnError {
+    std::string call;
+    std::string reason;
+};
+
 using Clock = std::chrono::steady_clock;
 
 // Reads exactly `size` bytes unless the stream ends, fails or the deadline passes.
@@ -74,21 +80,26 @@ ReadResult receiveBefore(int fd, char* data, size_t size, Clock::time_point dead
     return ReadResult::Ok;
 }
 
-StageOutcome failure(StageOutcome::Status status, std::string text, int signal = 0) {
+StageOutcome failure(StageOutcome::Status status, DiagId fault, std::vector<std::string> arguments) {
     StageOutcome outcome;
     outcome.status = status;
-    outcome.crossError = std::move(text);
-    outcome.signal = signal;
+    outcome.fault = fault;
+    outcome.faultArguments = std::move(arguments);
     return outcome;
 }
 
 // A worker that exited instead of answering: a sanitizer finding (its report is on standard error, which
-// workers share with the compiler) or any other exit, `when` said after the status.
-StageOutcome exitedOutcome(int exitStatus, const std::string& when) {
-    const std::string text = "exit status " + std::to_string(exitStatus) + (when.empty() ? "" : " " + when);
-    return failure(exitStatus == kWorkerSanitizerExitStatus ? StageOutcome::Status::SanitizerReport
-                                                            : StageOutcome::Status::Crashed,
-                   text);
+// workers share with the compiler) or any other exit, on the shader or while idle.
+StageOutcome exitedOutcome(int exitStatus, bool whileIdle) {
+    const std::string status = std::to_string(exitStatus);
+    if (exitStatus == kWorkerSanitizerExitStatus) {
+        StageOutcome outcome;
+        outcome.status = StageOutcome::Status::SanitizerReport;
+        outcome.crossError = "exit status " + status + (whileIdle ? " while idle" : "");
+        return outcome;
+    }
+    return failure(StageOutcome::Status::Crashed,
+                   whileIdle ? DiagId::CompileWorkerExitedWhileIdle : DiagId::HlslCompilerExited, {status});
 }
 
 }  // namespace
@@ -126,7 +137,7 @@ struct CompileWorkers::Impl {
     size_t replaced = 0;
 
     // An idle worker, or a new one while fewer than maxWorkers run; waits otherwise.
-    bool acquire(Worker& worker, std::string& error) {
+    bool acquire(Worker& worker, SpawnError& error) {
         {
             std::unique_lock<std::mutex> lock(mutex);
             changed.wait(
@@ -178,15 +189,15 @@ struct CompileWorkers::Impl {
     // fork + exec: the child runs only async-signal-safe calls before exec (the parent may have GL driver
     // and compile threads holding locks); its end of the socket becomes its fd 0. A close-on-exec pipe
     // tells the parent whether exec worked: it closes empty on success, carries errno on failure.
-    bool spawn(Worker& worker, std::string& error) {
+    bool spawn(Worker& worker, SpawnError& error) {
         int sv[2];
         if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
-            error = std::string("socketpair: ") + std::strerror(errno);
+            error = {"socketpair", std::strerror(errno)};
             return false;
         }
         int status[2];
         if (pipe2(status, O_CLOEXEC) != 0) {
-            error = std::string("pipe: ") + std::strerror(errno);
+            error = {"pipe", std::strerror(errno)};
             close(sv[0]);
             close(sv[1]);
             return false;
@@ -220,8 +231,8 @@ struct CompileWorkers::Impl {
         if (pid < 0 || n > 0) {
             close(sv[0]);
             if (pid > 0) waitpid(pid, nullptr, 0);
-            error = pid < 0 ? std::string("fork: ") + std::strerror(forkErrno)
-                            : std::string("exec: ") + std::strerror(execErrno);
+            error = pid < 0 ? SpawnError{"fork", std::strerror(forkErrno)}
+                            : SpawnError{"exec", std::strerror(execErrno)};
             return false;
         }
         worker = Worker{pid, sv[0]};
@@ -232,17 +243,17 @@ struct CompileWorkers::Impl {
         // One retry: a worker that died while idle (killed from outside) fails the send, not the job.
         for (int attempt = 0;; ++attempt) {
             Worker worker;
-            std::string error;
+            SpawnError error;
             if (!acquire(worker, error))
-                return failure(StageOutcome::Status::WorkerFailed, "cannot start '" + path + "': " + error);
+                return failure(StageOutcome::Status::WorkerFailed, DiagId::CompileWorkerFailed,
+                               {path, error.call, error.reason});
             if (!sendAll(worker.fd, request.data(), request.size())) {
                 // Killed from outside while idle: replaced and sent again. A worker that exited by itself
                 // while idle ran nothing since its last reply, yet its status is a finding, never dropped.
                 const int status = discard(worker, true);
-                if (status != -1 && WIFEXITED(status))
-                    return exitedOutcome(WEXITSTATUS(status), "while idle");
+                if (status != -1 && WIFEXITED(status)) return exitedOutcome(WEXITSTATUS(status), true);
                 if (attempt == 0) continue;
-                return failure(StageOutcome::Status::WorkerFailed, "the worker does not accept requests");
+                return failure(StageOutcome::Status::WorkerFailed, DiagId::CompileWorkerRefusedRequest, {});
             }
             const Clock::time_point deadline = Clock::now() + std::chrono::milliseconds(options.timeLimitMs);
             char header[kFrameHeaderBytes];
@@ -258,21 +269,23 @@ struct CompileWorkers::Impl {
             }
             if (read == ReadResult::TimedOut) {
                 discard(worker, true);
-                return failure(StageOutcome::Status::TimedOut, "");
+                StageOutcome outcome;
+                outcome.status = StageOutcome::Status::TimedOut;
+                return outcome;
             }
             if (read == ReadResult::Closed) {
                 int status = discard(worker, false);
                 if (status != -1 && WIFSIGNALED(status))
-                    return failure(StageOutcome::Status::Crashed, "", WTERMSIG(status));
-                if (status != -1 && WIFEXITED(status)) return exitedOutcome(WEXITSTATUS(status), "");
-                return failure(StageOutcome::Status::Crashed, "stream closed");
+                    return failure(StageOutcome::Status::Crashed, DiagId::HlslCompilerCrashed,
+                                   {std::to_string(WTERMSIG(status))});
+                if (status != -1 && WIFEXITED(status)) return exitedOutcome(WEXITSTATUS(status), false);
+                return failure(StageOutcome::Status::Crashed, DiagId::CompileWorkerConnectionClosed, {});
             }
             std::optional<StageOutcome> outcome;
             if (h && h->kind == FrameKind::Reply) outcome = decodeOutcome(payload);
             if (!outcome) {
                 discard(worker, true);
-                return failure(StageOutcome::Status::WorkerFailed,
-                               "unreadable reply (a worker from another build?)");
+                return failure(StageOutcome::Status::WorkerFailed, DiagId::CompileWorkerReplyUnreadable, {});
             }
             release(worker);
             return std::move(*outcome);

@@ -264,9 +264,8 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             case Status::Crashed:
-                if (first)
-                    error(DiagId::HlslCompilerCrashed, function,
-                          {outcome.signal ? "signal " + std::to_string(outcome.signal) : outcome.crossError});
+            case Status::WorkerFailed:
+                if (first) error(outcome.fault, function, outcome.faultArguments);
                 mFailed = true;
                 continue;
             case Status::TimedOut: {
@@ -276,10 +275,6 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             }
-            case Status::WorkerFailed:
-                if (first) error(DiagId::CompileWorkerFailed, function, {outcome.crossError});
-                mFailed = true;
-                continue;
             case Status::SanitizerReport:
                 if (first) error(DiagId::CompileWorkerSanitizerReport, function, {outcome.crossError});
                 mFailed = true;

@@ -24,15 +24,18 @@ struct StageOutcome {
         Compiled,         // `program` holds GLSL and reflection
         HlslFailed,       // glslang rejected the unit: `messages` say why
         CrossFailed,      // SPIRV-Cross threw: `crossError`
-        Crashed,          // the worker died (`signal`, 0 if it exited) before it answered
+        Crashed,          // the worker died or exited before it answered: `fault`
         TimedOut,         // the worker took longer than the time limit and was killed
-        WorkerFailed,     // no worker could be started, or it answered something unreadable: `crossError`
-        SanitizerReport,  // the worker stopped on a sanitizer finding (kWorkerSanitizerExitStatus)
+        WorkerFailed,     // no worker could be started, or it answered something unreadable: `fault`
+        SanitizerReport,  // the worker stopped on a sanitizer finding (kWorkerSanitizerExitStatus):
+                          // `crossError`
     };
     Status status = Status::Compiled;
     std::vector<HlslMessage> messages;  // glslang's errors and warnings (any status)
     std::string crossError;
-    int signal = 0;
+    // What the worker pool reports for Crashed and WorkerFailed (set in this process, never sent).
+    DiagId fault = DiagId::CompileWorkerFailed;
+    std::vector<std::string> faultArguments;
     // Filled when Compiled: glsl, uniform block, uniforms, samplers and inputs (stage, entry point,
     // profile, hlsl and hash are the caller's).
     StageProgram program;

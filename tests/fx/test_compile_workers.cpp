@@ -7,6 +7,7 @@
 #include <fx/EffectParser.h>
 
 #include "CompileProtocol.h"
+#include "ScratchDirectory.h"
 #include "SpirvToGlsl.h"
 
 #include <gtest/gtest.h>
@@ -17,8 +18,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 namespace {
@@ -208,7 +212,27 @@ TEST(CompileWorkers, AWorkerThatCannotBeExecutedIsAnErrorNotAHang) {
     Compiled compiled = compileSource(kGood, &workers);
     EXPECT_EQ(compiled.effect, nullptr);
     ASSERT_TRUE(compiled.diagnostics.hasErrors());
-    EXPECT_EQ(compiled.diagnostics.items()[0].id, fx::DiagId::CompileWorkerFailed);
+    const fx::Diagnostic& d = compiled.diagnostics.items()[0];
+    EXPECT_EQ(d.id, fx::DiagId::CompileWorkerFailed);
+    EXPECT_EQ(d.message, "cannot start the HLSL compiler's worker '" + kSourceDir +
+                             "/README.md' (exec: " + std::strerror(EACCES) + ")");
+}
+
+// A worker that reads its request's frame header and exits with status 3 without answering: the status is
+// the error's value, at the shader function, under its own id.
+TEST(CompileWorkers, AWorkerThatExitsWithoutAnsweringIsAnErrorNamingItsStatus) {
+    const shadowfx::test::ScratchDirectory scratch("exiting_worker");
+    const std::string worker = (scratch / "worker.sh").string();
+    std::ofstream(worker) << "#!/bin/sh\nhead -c " << fx::kFrameHeaderBytes << " >/dev/null\nexit 3\n";
+    std::filesystem::permissions(worker, std::filesystem::perms::owner_all);
+    fx::CompileWorkers workers(fx::CompileWorkerOptions{worker, 1, 20000, 2048});
+    Compiled compiled = compileSource(kGood, &workers);
+    EXPECT_EQ(compiled.effect, nullptr);
+    ASSERT_TRUE(compiled.diagnostics.hasErrors());
+    const fx::Diagnostic& d = compiled.diagnostics.items()[0];
+    EXPECT_EQ(d.id, fx::DiagId::HlslCompilerExited) << compiled.diagnostics.str();
+    EXPECT_EQ(d.message, "the HLSL compiler's worker exited with status 3 on this shader without answering");
+    EXPECT_TRUE(d.loc.valid());
 }
 
 // tests/data/glslang_crashes/: HLSL that crashes glslang. In-process each still kills the process (a

@@ -28,19 +28,14 @@ const std::set<DiagId> kWholeMessageQuoted = {DiagId::PreprocessorError, DiagId:
 // The ids whose last argument quotes a library, the GL driver or the system; their template says first what
 // failed.
 const std::set<DiagId> kMessageQuotedAfterStage = {
-    DiagId::CrossCompileError, DiagId::CrossCompileCombinedSampler,
-    DiagId::LinkError,         DiagId::GlDebugMessage,
-    DiagId::DriverShaderLog,   DiagId::DriverFixedFunctionLog,
-    DiagId::DriverLinkLog,     DiagId::ImplicitVectorTruncation,
-    DiagId::SceneSyntaxError,  DiagId::SceneReadFailed};
-
-// The ids whose last argument is still the reason another part of shadowfx gave as text (the framebuffer
-// cache, the texture file reader, the compile worker pool, the module loader; the last two with the
-// system's or assimp's words in it), listed on docs/diagnostics.md to be split as the rest were.
-const std::set<DiagId> kReasonQuotedAfterStage = {
-    DiagId::PassTargetsUnbindable, DiagId::ScriptTargetsUnbindable, DiagId::HostTargetUnbindable,
-    DiagId::TextureFileUnreadable, DiagId::CompileWorkerFailed,     DiagId::HlslCompilerCrashed,
-    DiagId::MeshImportError};
+    DiagId::CrossCompileError,   DiagId::CrossCompileCombinedSampler,
+    DiagId::LinkError,           DiagId::GlDebugMessage,
+    DiagId::DriverShaderLog,     DiagId::DriverFixedFunctionLog,
+    DiagId::DriverLinkLog,       DiagId::ImplicitVectorTruncation,
+    DiagId::SceneSyntaxError,    DiagId::SceneReadFailed,
+    DiagId::HostValueUnreadable, DiagId::TextureFileUnreadable,
+    DiagId::MeshImportError,     DiagId::MeshModuleUnloadable,
+    DiagId::CompileWorkerFailed};
 
 // The numbers of the placeholders ({0}, {1}, ...) of a template, in order of appearance.
 std::vector<int> placeholders(std::string_view text) {
@@ -61,9 +56,7 @@ TEST(DiagnosticTable, OnlyAnotherToolsMessageIsABareArgument) {
 }
 
 TEST(DiagnosticTable, AQuotedMessageFollowsWhatFailed) {
-    std::set<DiagId> quoting = kMessageQuotedAfterStage;
-    quoting.insert(kReasonQuotedAfterStage.begin(), kReasonQuotedAfterStage.end());
-    for (DiagId id : quoting) {
+    for (DiagId id : kMessageQuotedAfterStage) {
         const std::string_view text = diagnosticTemplate(id);
         const std::vector<int> numbers = placeholders(text);
         ASSERT_FALSE(numbers.empty()) << diagnosticName(id);

@@ -177,9 +177,9 @@ float3 axis(float i) {
 // [SECTION] The reader alone: formats, channels a format lacks, damaged files (no GL)
 
 std::vector<float> firstTexel(const std::filesystem::path& path) {
-    std::string error;
-    const std::optional<runtime::TextureFile> file = runtime::loadTextureFile(path.string(), error);
-    EXPECT_TRUE(file) << error;
+    std::optional<runtime::TextureFileFault> fault;
+    const std::optional<runtime::TextureFile> file = runtime::loadTextureFile(path.string(), fault);
+    EXPECT_TRUE(file) << fx::diagnosticName(fault->id);
     if (!file || file->levels.empty() || file->levels[0].size() < 4) return {};
     return {file->levels[0].begin(), file->levels[0].begin() + 4};
 }
@@ -235,9 +235,9 @@ TEST(DdsReader, Bc4AndBc5BlocksDecodeIntoRedAndGreen) {
     const std::vector<uint8_t> bc4 = {255, 0, 0b010001, 0, 0, 0, 0, 0};
     const std::filesystem::path ati1 = scratch.path() / "ati1.dds";
     ASSERT_TRUE(DdsWriter::writeSurface(ati1.string(), 4, 4, {0x4, 0x31495441}, bc4));  // "ATI1"
-    std::string error;
-    std::optional<runtime::TextureFile> file = runtime::loadTextureFile(ati1.string(), error);
-    ASSERT_TRUE(file) << error;
+    std::optional<runtime::TextureFileFault> fault;
+    std::optional<runtime::TextureFile> file = runtime::loadTextureFile(ati1.string(), fault);
+    ASSERT_TRUE(file) << fx::diagnosticName(fault->id);
     EXPECT_EQ(std::vector<float>(file->levels[0].begin(), file->levels[0].begin() + 8),
               (std::vector<float>{0, 0, 0, 1, 6.0f / 7.0f, 0, 0, 1}));
     // BC5 (DXGI 83): red from the first half, green from the second (endpoints 10 <= 200: six values).
@@ -245,29 +245,35 @@ TEST(DdsReader, Bc4AndBc5BlocksDecodeIntoRedAndGreen) {
     bc5.insert(bc5.end(), {10, 200, 0, 0, 0, 0, 0, 0});
     const std::filesystem::path bc5File = scratch.path() / "bc5.dds";
     ASSERT_TRUE(DdsWriter::writeSurface(bc5File.string(), 4, 4, {}, bc5, 83));
-    file = runtime::loadTextureFile(bc5File.string(), error);
-    ASSERT_TRUE(file) << error;
+    file = runtime::loadTextureFile(bc5File.string(), fault);
+    ASSERT_TRUE(file) << fx::diagnosticName(fault->id);
     EXPECT_EQ(std::vector<float>(file->levels[0].begin(), file->levels[0].begin() + 4),
               (std::vector<float>{0, 10.0f / 255.0f, 0, 1}));
 }
 
 TEST(DdsReader, DamagedFilesAreErrorsThatSayWhat) {
     ScratchDirectory scratch{"dds-reader"};
-    std::string error;
+    std::optional<runtime::TextureFileFault> fault;
     const std::filesystem::path text = scratch.path() / "text.dds";
     std::ofstream(text) << "not a texture";
-    EXPECT_FALSE(runtime::loadTextureFile(text.string(), error));
-    EXPECT_EQ(error, "not a DDS file (no \"DDS \" magic and 124-byte header)");
+    EXPECT_FALSE(runtime::loadTextureFile(text.string(), fault));
+    EXPECT_EQ(fault->id, fx::DiagId::TextureFileNotDds);
+    EXPECT_TRUE(fault->values.empty());
 
     const std::filesystem::path shortFile = scratch.path() / "short.dds";
     ASSERT_TRUE(DdsWriter::writeSurface(shortFile.string(), 2, 2, {0x4, 114}, bytesOf({1, 2, 3})));
-    EXPECT_FALSE(runtime::loadTextureFile(shortFile.string(), error));
-    EXPECT_EQ(error, "the file ends inside its texel data (12 of 16 bytes)");
+    EXPECT_FALSE(runtime::loadTextureFile(shortFile.string(), fault));
+    EXPECT_EQ(fault->id, fx::DiagId::TextureFileTexelsTruncated);
+    EXPECT_EQ(fault->values, (std::vector<std::string>{"12", "16"}));
 
     const std::filesystem::path unknown = scratch.path() / "unknown.dds";
     ASSERT_TRUE(DdsWriter::writeSurface(unknown.string(), 1, 1, {0x4, 0x31545848}, bytesOf({1})));  // "HXT1"
-    EXPECT_FALSE(runtime::loadTextureFile(unknown.string(), error));
-    EXPECT_NE(error.find("pixel format 'HXT1'"), std::string::npos) << error;
+    EXPECT_FALSE(runtime::loadTextureFile(unknown.string(), fault));
+    EXPECT_EQ(fault->id, fx::DiagId::TextureFileFourCCUnsupported);
+    EXPECT_EQ(fault->values, (std::vector<std::string>{"HXT1", std::to_string(0x31545848)}));
+
+    EXPECT_FALSE(runtime::loadTextureFile((scratch.path() / "absent.dds").string(), fault));
+    EXPECT_EQ(fault->id, fx::DiagId::TextureFileUnopenable);
 }
 
 // [SECTION] Direct3D 10 arrays (DX10 header, arraySize > 1)
@@ -328,8 +334,10 @@ technique11 t { pass p { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
     ASSERT_TRUE(compiled) << diagnostics.str();
     EXPECT_FALSE(runtime::EffectRenderer::create(compiled, diagnostics));
     EXPECT_NE(diagnostics.str().find("dds.fx:1:16: error:"), std::string::npos) << diagnostics.str();
-    EXPECT_NE(diagnostics.str().find("the file ends inside element 2's data"), std::string::npos)
+    EXPECT_NE(diagnostics.str().find("texture file 'short.dds' ends inside element 2's data"),
+              std::string::npos)
         << diagnostics.str();
+    EXPECT_EQ(diagnostics.items().back().id, fx::DiagId::TextureFileElementTruncated);
 
     // A header that claims 16384² texels per element is refused before anything that size is allocated.
     const std::string huge = (mDir / "huge.dds").string();
@@ -341,9 +349,10 @@ technique11 t { pass p { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
         file.write(side, 4);
         file.write(side, 4);
     }
-    std::string error;
-    EXPECT_FALSE(runtime::loadTextureFile(huge, error));
-    EXPECT_EQ(error, "the file ends inside element 0's data");
+    std::optional<runtime::TextureFileFault> fault;
+    EXPECT_FALSE(runtime::loadTextureFile(huge, fault));
+    EXPECT_EQ(fault->id, fx::DiagId::TextureFileElementTruncated);
+    EXPECT_EQ(fault->values, std::vector<std::string>{"0"});
 }
 
 }  // namespace

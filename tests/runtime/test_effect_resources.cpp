@@ -168,11 +168,11 @@ TEST(EffectTextures, AResizedTargetLeavesNoFramebufferOnTheOldOne) {
 
     runtime::RenderTargets targets;
     targets.colors[0] = runtime::RenderTargetAttachment::wholeOf(textures.find(half));
-    std::string error;
-    ASSERT_TRUE(textures.bindTargets(targets, error)) << error;
+    runtime::FramebufferFault fault;
+    ASSERT_TRUE(textures.bindTargets(targets, fault));
     runtime::RenderTargets fixedTargets;
     fixedTargets.colors[0] = runtime::RenderTargetAttachment::wholeOf(textures.find(fixed));
-    ASSERT_TRUE(textures.bindTargets(fixedTargets, error)) << error;
+    ASSERT_TRUE(textures.bindTargets(fixedTargets, fault));
     EXPECT_EQ(textures.framebufferCount(), 2u);
 
     // The same size again reallocates nothing.
@@ -194,7 +194,7 @@ TEST(EffectTextures, AResizedTargetLeavesNoFramebufferOnTheOldOne) {
 
     // The next bind builds a framebuffer on the new texture, of its size.
     targets.colors[0] = runtime::RenderTargetAttachment::wholeOf(textures.find(half));
-    ASSERT_TRUE(textures.bindTargets(targets, error)) << error;
+    ASSERT_TRUE(textures.bindTargets(targets, fault));
     EXPECT_EQ(targets.width(), 50);
     EXPECT_EQ(textures.framebufferCount(), 2u);
 }

@@ -28,8 +28,8 @@ protected:
         RenderTargets targets;
         targets.colors[0].texture = color;
         targets.depth.texture = depth;
-        std::string error;
-        ASSERT_TRUE(mFramebuffers.bind(targets, error)) << error;
+        FramebufferFault fault;
+        ASSERT_TRUE(mFramebuffers.bind(targets, fault));
     }
 
     void drawColor(GpuMesh& mesh, float r, float g, float b, float a) {

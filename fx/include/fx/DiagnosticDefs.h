@@ -261,10 +261,12 @@ FX_DIAGNOSTIC(HlslWarning, Warning, "{0}")
 // {0}: the stage, {1}: the entry point, {2}: the profile, {3}: SPIRV-Cross's message.
 FX_DIAGNOSTIC(CrossCompileError, Error,
               "SPIR-V to GLSL: the {0} shader '{1}' ({2}) cannot be written as GLSL (SPIRV-Cross: {3})")
-FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this shader ({0})")
+// {0}: the signal that ended the worker.
+FX_DIAGNOSTIC(HlslCompilerCrashed, Error, "the HLSL compiler crashed on this shader (signal {0})")
 FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
               "the HLSL compiler did not finish this shader within {0} ms and was stopped")
-FX_DIAGNOSTIC(CompileWorkerFailed, Error, "the HLSL compiler's worker process failed: {0}")
+// {0}: the worker program, {1}: the system call that failed, {2}: the system's message.
+FX_DIAGNOSTIC(CompileWorkerFailed, Error, "cannot start the HLSL compiler's worker '{0}' ({1}: {2})")
 FX_DIAGNOSTIC(CompileWorkerSanitizerReport, Error,
               "the HLSL compiler's worker process stopped on a sanitizer report ({0}); the report is on "
               "standard error")
@@ -495,12 +497,23 @@ FX_DIAGNOSTIC(StreamOutPartialPosition, Error,
 FX_DIAGNOSTIC(StreamOutPartialFloat4Varying, Error,
               "stream-output entry '{0}' captures part of an output; GL captures whole outputs (4 components "
               "here, a float4 varying)")
+// A compile worker that stopped or failed without answering (fx/src/CompileWorkers.cpp).
+FX_DIAGNOSTIC(HlslCompilerExited, Error,
+              "the HLSL compiler's worker exited with status {0} on this shader without answering")
+FX_DIAGNOSTIC(CompileWorkerExitedWhileIdle, Error,
+              "the HLSL compiler's worker exited with status {0} while idle, before this shader was sent")
+FX_DIAGNOSTIC(CompileWorkerConnectionClosed, Error,
+              "the HLSL compiler's worker closed its connection without answering")
+FX_DIAGNOSTIC(CompileWorkerRefusedRequest, Error, "the HLSL compiler's worker does not accept requests")
+FX_DIAGNOSTIC(CompileWorkerReplyUnreadable, Error,
+              "the HLSL compiler's worker answered something unreadable (a worker from another build?)")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
 FX_DIAGNOSTIC(TextureCaseMismatch, Warning,
               "texture file '{0}' found as '{1}', which differs in case (names are case-blind on Windows)")
-FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}': {1}")
+// An image file stb_image refuses; {1}: its reason.
+FX_DIAGNOSTIC(TextureFileUnreadable, Error, "cannot read texture file '{0}' (stb_image: {1})")
 FX_DIAGNOSTIC(InvalidTextureFormat, Error, "unknown texture format '{0}'")
 FX_DIAGNOSTIC(SampleCountReduced, Warning,
               "'{0}' has {1} samples per texel; this OpenGL holds at most {2}, which it gets instead")
@@ -592,9 +605,11 @@ FX_DIAGNOSTIC(VolumeDepthOutOfRange, Error, "invalid render-target size: a volum
 FX_DIAGNOSTIC(ImageSizeOutOfRange, Error, "invalid render-target size: {0} is {1}")
 
 // A frame that could not run on GL.
-// {1}: the framebuffer's reason (a target of the wrong format, an incomplete framebuffer).
-FX_DIAGNOSTIC(PassTargetsUnbindable, Error, "OpenGL: cannot bind the targets of pass '{0}': {1}")
-FX_DIAGNOSTIC(ScriptTargetsUnbindable, Error, "OpenGL: cannot render to the script's targets: {0}")
+// {1}: the status glCheckFramebufferStatus gave (GL_FRAMEBUFFER_UNSUPPORTED, ...).
+FX_DIAGNOSTIC(PassTargetsUnbindable, Error,
+              "OpenGL: the targets of pass '{0}' make an incomplete framebuffer ({1})")
+FX_DIAGNOSTIC(ScriptTargetsUnbindable, Error,
+              "OpenGL: the script's targets make an incomplete framebuffer ({0})")
 FX_DIAGNOSTIC(GlErrorDuringFrame, Error, "OpenGL: GL error during the frame")
 // As DriverShaderLog, for the pixel stage shadowfx generated for a fixed-function pass ({0}), {1}: the log
 // line.
@@ -602,13 +617,48 @@ FX_DIAGNOSTIC(DriverFixedFunctionLog, Note,
               "the GL driver on the generated GLSL of the fixed-function pixel stage of pass '{0}': {1}")
 // As DriverShaderLog, for what the driver said linking the program of pass {0}.
 FX_DIAGNOSTIC(DriverLinkLog, Note, "the GL driver on the generated GLSL of pass '{0}', linking: {1}")
+// A DDS file the texture reader refuses (runtime/gl/src/TextureFile.cpp); {0}: the file as the effect names
+// it.
+FX_DIAGNOSTIC(TextureFileUnopenable, Error, "cannot open texture file '{0}'")
+FX_DIAGNOSTIC(TextureFileNotDds, Error,
+              "texture file '{0}' is not a DDS file (no \"DDS \" magic and 124-byte header)")
+FX_DIAGNOSTIC(TextureFileDx10HeaderTruncated, Error, "texture file '{0}' ends inside its DX10 header")
+FX_DIAGNOSTIC(
+    TextureFileDxgiFormatUnsupported, Error,
+    "texture file '{0}': DXGI format {1} is not read (the 8-, 16- and 32-bit UNORM and FLOAT colour "
+    "formats and BC1-5 are)")
+FX_DIAGNOSTIC(TextureFileDimensionNotTexture, Error,
+              "texture file '{0}': DX10 resource dimension {1} is not a texture")
+// {1}: the FourCC's four characters ('?' for one that does not print), {2}: its value.
+FX_DIAGNOSTIC(
+    TextureFileFourCCUnsupported, Error,
+    "texture file '{0}': pixel format '{1}' (FourCC {2}) is not read (DXT1-5, ATI1/ATI2 and the D3D9 "
+    "float and 16-bit formats are)")
+FX_DIAGNOSTIC(
+    TextureFilePixelFormatUnsupported, Error,
+    "texture file '{0}': pixel format flags {1} with {2} bits per texel are not read (RGB, luminance "
+    "and alpha masks of 8 to 32 bits are)")
+FX_DIAGNOSTIC(TextureFileCubeFacesMissing, Error,
+              "texture file '{0}' is a cube map with fewer than six faces, which is not read")
+// {1}x{2}x{3}: width, height and depth the header gives, {4}: its elements, {5}: the largest side read.
+FX_DIAGNOSTIC(TextureFileHeaderMalformed, Error,
+              "texture file '{0}' has a malformed header: {1}x{2}x{3}, {4} elements (sides up to {5}, square "
+              "cube faces)")
+FX_DIAGNOSTIC(TextureFileElementTruncated, Error, "texture file '{0}' ends inside element {1}'s data")
+FX_DIAGNOSTIC(TextureFileTexelsTruncated, Error,
+              "texture file '{0}' ends inside its texel data ({1} of {2} bytes)")
+// A target the framebuffer cache refuses before GL sees it (runtime/gl/src/Framebuffer.cpp).
+FX_DIAGNOSTIC(ColorTargetHasDepthFormat, Error,
+              "OpenGL: colour target {0} has a depth format and cannot be drawn to")
+FX_DIAGNOSTIC(DepthTargetHasColorFormat, Error,
+              "OpenGL: the depth-stencil target has a colour format and cannot be drawn to")
 
 // [SECTION] Scenes (runtime/assets/src/SceneFile.cpp, MeshImporter.cpp)
 FX_DIAGNOSTIC(SceneSyntaxError, Error, "invalid JSON: {0}")
 FX_DIAGNOSTIC(SceneUnknownKey, Warning, "{0}: unknown key '{1}' (ignored)")
 FX_DIAGNOSTIC(MeshFileNotFound, Error, "cannot open mesh file '{0}'")
 // {1}: assimp's reason.
-FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}': {1}")
+FX_DIAGNOSTIC(MeshImportError, Error, "cannot import mesh '{0}' (assimp: {1})")
 FX_DIAGNOSTIC(UnknownScene, Error, "no built-in scene named '{0}' (known: {1})")
 // Invalid values in a scene file, one id per message ({0}: the key).
 FX_DIAGNOSTIC(SceneObjectExpected, Error, "{0}: expected an object, found {1}")
@@ -702,8 +752,8 @@ FX_DIAGNOSTIC(HostTargetTextureKindMismatch, Error,
               "texture, a cube to a TextureCube, an array to a Texture2DArray, a volume to a Texture3D)")
 // Drawing a host file's frame (runtime::HostFrame).
 FX_DIAGNOSTIC(HostLightNotInScene, Error, "light: the scene has no light named '{0}'")
-// The framebuffer's own reason a step's target cannot be bound.
-FX_DIAGNOSTIC(HostTargetUnbindable, Error, "target: {0}")
+// {0}: the step's target, {1}: the status glCheckFramebufferStatus gave.
+FX_DIAGNOSTIC(HostTargetUnbindable, Error, "target: '{0}' makes an incomplete framebuffer in OpenGL ({1})")
 // A mesh file assimp read that holds nothing to draw (MeshImporter.cpp).
 FX_DIAGNOSTIC(MeshWithoutTriangles, Error, "cannot import mesh '{0}': the file has no triangles")
 // A mesh of a Debian package ({1}) that is not installed.
@@ -711,6 +761,21 @@ FX_DIAGNOSTIC(
     MeshFileNotInstalled, Error,
     "cannot open mesh file '{0}' (installed by the Debian package '{1}': apt-get install {1}, or run "
     "scripts/install-deps.sh)")
+// The mesh import module (runtime/RuntimeModules.h) that could not be opened; {1}: its file.
+FX_DIAGNOSTIC(MeshModuleMissing, Error,
+              "cannot import mesh '{0}': the mesh import (assimp) module {1} is missing: looked for {2} "
+              "(SHADOWFX_MODULE_DIR names the folder that holds it)")
+// {2}: the dynamic loader's reason.
+FX_DIAGNOSTIC(
+    MeshModuleUnloadable, Error,
+    "cannot import mesh '{0}': the dynamic loader refused the mesh import (assimp) module {1} ({2})")
+FX_DIAGNOSTIC(
+    MeshModuleEntryMissing, Error,
+    "cannot import mesh '{0}': the mesh import (assimp) module {1} has no entry point '{2}': it was "
+    "built from another version of shadowfx")
+// A host file's value of a type the reader did not check first (as SceneReadFailed); {0}: nlohmann-json's
+// message.
+FX_DIAGNOSTIC(HostValueUnreadable, Error, "a value of the host file cannot be read (nlohmann-json: {0})")
 
 // [SECTION] Compiled effect files (fx/CompiledEffectFile.h, docs/compiled-effect.md)
 FX_DIAGNOSTIC(

@@ -470,8 +470,9 @@ std::shared_ptr<const HostFile> parseHostJson(const std::string& text, const std
     try {
         return HostFileReader(path, text, diagnostics).read(root);
     } catch (const std::exception& e) {
-        // A value nlohmann cannot convert (a number out of float's range): an error, never a crash.
-        diagnostics.report(fx::DiagId::SceneSyntaxError, fx::SourceLoc{path, 0, 0}, {e.what()});
+        // The reader checks every type before reading it; this is the net under anything it missed: an
+        // error, never a crash.
+        diagnostics.report(fx::DiagId::HostValueUnreadable, fx::SourceLoc{path, 0, 0}, {e.what()});
         return nullptr;
     }
 }

@@ -66,7 +66,11 @@ std::optional<Mesh> importMesh(const std::string& path, const MeshImportOptions&
     try {
         module = meshFileModule();
     } catch (const ModuleLoadError& e) {
-        diagnostics.report(fx::DiagId::MeshImportError, where, {path, e.what()});
+        const fx::DiagId id = e.reason == ModuleLoadError::Reason::Missing ? fx::DiagId::MeshModuleMissing
+                              : e.reason == ModuleLoadError::Reason::Refused
+                                  ? fx::DiagId::MeshModuleUnloadable
+                                  : fx::DiagId::MeshModuleEntryMissing;
+        diagnostics.report(id, where, {path, e.file, e.detail});
         return std::nullopt;
     }
     Mesh mesh;

@@ -42,22 +42,25 @@ void* openModuleEntry(const std::string& name, const std::string& purpose, const
         // namespace.
         handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle) {
-            const char* reason = dlerror();
-            throw ModuleLoadError("cannot load the " + purpose + " module " + path + ": " +
-                                  (reason ? reason : "the dynamic loader refused it"));
+            const char* message = dlerror();
+            const std::string reason = message ? message : "the dynamic loader refused it";
+            throw ModuleLoadError(ModuleLoadError::Reason::Refused, path, reason,
+                                  "cannot load the " + purpose + " module " + path + ": " + reason);
         }
         opened[file] = handle;
         break;
     }
     if (!handle) {
-        throw ModuleLoadError("the " + purpose + " module " + file + " is missing: looked for " + tried +
-                              " (SHADOWFX_MODULE_DIR names the folder that holds it)");
+        throw ModuleLoadError(ModuleLoadError::Reason::Missing, file, tried,
+                              "the " + purpose + " module " + file + " is missing: looked for " + tried +
+                                  " (SHADOWFX_MODULE_DIR names the folder that holds it)");
     }
     dlerror();
     void* entry = dlsym(handle, symbol);
     if (!entry) {
-        throw ModuleLoadError("the " + purpose + " module " + file + " has no entry point '" + symbol +
-                              "': it was built from another version of shadowfx");
+        throw ModuleLoadError(ModuleLoadError::Reason::NoEntryPoint, file, symbol,
+                              "the " + purpose + " module " + file + " has no entry point '" + symbol +
+                                  "': it was built from another version of shadowfx");
     }
     return entry;
 }

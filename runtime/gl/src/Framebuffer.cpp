@@ -72,6 +72,13 @@ int RenderTargets::height() const {
     return depth.texture != nullptr ? levelSize(depth.texture->height(), depth.level) : 0;
 }
 
+std::pair<fx::DiagId, std::vector<std::string>> FramebufferFault::diagnostic(
+    fx::DiagId incomplete, std::vector<std::string> names) const {
+    if (id) return {*id, arguments};
+    names.insert(names.end(), arguments.begin(), arguments.end());
+    return {incomplete, std::move(names)};
+}
+
 FramebufferCache::~FramebufferCache() {
     clearCache();
 }
@@ -89,7 +96,7 @@ FramebufferCache::Key FramebufferCache::keyOf(const RenderTargets& targets) {
     return key;
 }
 
-bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
+bool FramebufferCache::bind(const RenderTargets& targets, FramebufferFault& fault) {
     Key key = keyOf(targets);
     auto found = mFramebuffers.find(key);
     if (found == mFramebuffers.end()) {
@@ -102,7 +109,7 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
             entry.drawBuffers[size_t(i)] = GL_NONE;
             if (color.texture == nullptr) continue;
             if (color.texture->isDepth()) {
-                error = "colour target " + std::to_string(i) + " has a depth format";
+                fault = {fx::DiagId::ColorTargetHasDepthFormat, {std::to_string(i)}};
                 gl::DeleteFramebuffers(1, &entry.framebuffer);
                 return false;
             }
@@ -111,7 +118,7 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
         }
         if (targets.depth.texture != nullptr) {
             if (!targets.depth.texture->isDepth()) {
-                error = "the depth-stencil target has a colour format";
+                fault = {fx::DiagId::DepthTargetHasColorFormat, {}};
                 gl::DeleteFramebuffers(1, &entry.framebuffer);
                 return false;
             }
@@ -136,7 +143,7 @@ bool FramebufferCache::bind(const RenderTargets& targets, std::string& error) {
         gl::ReadBuffer(firstColor);
         GLenum status = gl::CheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
-            error = "incomplete framebuffer: " + statusName(status);
+            fault = {std::nullopt, {statusName(status)}};
             gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
             gl::DeleteFramebuffers(1, &entry.framebuffer);
             return false;

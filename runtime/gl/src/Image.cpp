@@ -120,7 +120,7 @@ std::optional<Image> loadImageFile(const std::string& path, std::string& error) 
     if (stbi_is_hdr(path.c_str())) {
         float* pixels = stbi_loadf(path.c_str(), &width, &height, &fileChannels, 4);
         if (pixels == nullptr) {
-            error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "cannot load");
+            error = stbi_failure_reason() ? stbi_failure_reason() : "cannot load";
             return std::nullopt;
         }
         Image image = Image::makeFloats(width, height, 4);
@@ -130,7 +130,7 @@ std::optional<Image> loadImageFile(const std::string& path, std::string& error) 
     }
     uint8_t* pixels = stbi_load(path.c_str(), &width, &height, &fileChannels, 4);
     if (pixels == nullptr) {
-        error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "cannot load");
+        error = stbi_failure_reason() ? stbi_failure_reason() : "cannot load";
         return std::nullopt;
     }
     Image image = Image::makeBytes(width, height, 4);

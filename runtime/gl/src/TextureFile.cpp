@@ -216,7 +216,7 @@ size_t levelBytes(const Layout& layout, uint32_t level) {
     return w * h * d * size_t(layout.format.bytes);
 }
 
-std::optional<TexelFormat> legacyFormat(const uint8_t* pf, std::string& error) {
+std::optional<TexelFormat> legacyFormat(const uint8_t* pf, std::optional<TextureFileFault>& fault) {
     const uint32_t flags = readU32(pf + 4);
     if (flags & kFourCC) {
         const uint32_t fourCC = readU32(pf + 8);
@@ -226,14 +226,13 @@ std::optional<TexelFormat> legacyFormat(const uint8_t* pf, std::string& error) {
             const char c = static_cast<char>(fourCC >> (8 * i));
             name += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
         }
-        error = "pixel format '" + name + "' (FourCC " + std::to_string(fourCC) +
-                ") is not read (DXT1-5, ATI1/ATI2 and the D3D9 float and 16-bit formats are)";
+        fault = {fx::DiagId::TextureFileFourCCUnsupported, {name, std::to_string(fourCC)}};
         return std::nullopt;
     }
     const uint32_t bits = readU32(pf + 12);
     if (!(flags & (kRgb | kLuminance | kAlpha)) || (bits != 8 && bits != 16 && bits != 24 && bits != 32)) {
-        error = "pixel format flags " + std::to_string(flags) + " with " + std::to_string(bits) +
-                " bits per texel are not read (RGB, luminance and alpha masks of 8 to 32 bits are)";
+        fault = {fx::DiagId::TextureFilePixelFormatUnsupported,
+                 {std::to_string(flags), std::to_string(bits)}};
         return std::nullopt;
     }
     const uint32_t alphaMask = (flags & (kAlphaPixels | kAlpha)) ? readU32(pf + 28) : 0;
@@ -242,9 +241,9 @@ std::optional<TexelFormat> legacyFormat(const uint8_t* pf, std::string& error) {
     return masks(int(bits), readU32(pf + 16), readU32(pf + 20), readU32(pf + 24), alphaMask, 1.0f);
 }
 
-std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::string& error) {
+std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::optional<TextureFileFault>& fault) {
     if (bytes.size() < 128 || std::memcmp(bytes.data(), "DDS ", 4) != 0 || readU32(&bytes[4]) != 124) {
-        error = "not a DDS file (no \"DDS \" magic and 124-byte header)";
+        fault = {fx::DiagId::TextureFileNotDds, {}};
         return std::nullopt;
     }
     const uint8_t* header = bytes.data() + 4;  // DDS_HEADER
@@ -260,21 +259,20 @@ std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::string& er
     const bool dx10 = (readU32(pf + 4) & kFourCC) && std::memcmp(pf + 8, "DX10", 4) == 0;
     if (dx10) {
         if (bytes.size() < 148) {
-            error = "the file ends inside its DX10 header";
+            fault = {fx::DiagId::TextureFileDx10HeaderTruncated, {}};
             return std::nullopt;
         }
         const uint8_t* ext = bytes.data() + 128;
         const uint32_t dxgi = readU32(ext);
         std::optional<TexelFormat> format = dxgiFormat(dxgi);
         if (!format) {
-            error = "DXGI format " + std::to_string(dxgi) +
-                    " is not read (the 8-, 16- and 32-bit UNORM and FLOAT colour formats and BC1-5 are)";
+            fault = {fx::DiagId::TextureFileDxgiFormatUnsupported, {std::to_string(dxgi)}};
             return std::nullopt;
         }
         layout.format = *format;
         const uint32_t dimension = readU32(ext + 4);
         if (dimension != kDx10Texture1D && dimension != kDx10Texture2D && dimension != kDx10Texture3D) {
-            error = "DX10 resource dimension " + std::to_string(dimension) + " is not a texture";
+            fault = {fx::DiagId::TextureFileDimensionNotTexture, {std::to_string(dimension)}};
             return std::nullopt;
         }
         if (dimension == kDx10Texture1D) layout.height = 1;
@@ -284,13 +282,13 @@ std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::string& er
         layout.elements = std::max(readU32(ext + 12), 1u);
         layout.dataOffset = 148;
     } else {
-        std::optional<TexelFormat> format = legacyFormat(pf, error);
+        std::optional<TexelFormat> format = legacyFormat(pf, fault);
         if (!format) return std::nullopt;
         layout.format = *format;
         if (caps2 & kCaps2Cube) {
             // D3D9 allowed cube maps with some faces left out; a cube texture needs all six.
             if ((caps2 & kCaps2AllFaces) != kCaps2AllFaces) {
-                error = "a cube map with fewer than six faces is not read";
+                fault = {fx::DiagId::TextureFileCubeFacesMissing, {}};
                 return std::nullopt;
             }
             layout.kind = TextureFile::Kind::Cube;
@@ -304,9 +302,9 @@ std::optional<Layout> readLayout(std::span<const uint8_t> bytes, std::string& er
         layout.depth > kMaxSide3D || layout.elements > kMaxElements ||
         (layout.kind == TextureFile::Kind::Volume && layout.elements > 1) ||
         (layout.kind == TextureFile::Kind::Cube && layout.width != layout.height)) {
-        error = "malformed header: " + std::to_string(layout.width) + "x" + std::to_string(layout.height) +
-                "x" + std::to_string(layout.depth) + ", " + std::to_string(layout.elements) +
-                " elements (sides up to " + std::to_string(maxSide) + ", square cube faces)";
+        fault = {fx::DiagId::TextureFileHeaderMalformed,
+                 {std::to_string(layout.width), std::to_string(layout.height), std::to_string(layout.depth),
+                  std::to_string(layout.elements), std::to_string(maxSide)}};
         return std::nullopt;
     }
     // A mip chain ends at 1x1x1; a count beyond that is the writer's mistake, not more data.
@@ -417,18 +415,19 @@ bool isTextureFile(const std::string& path) {
     return extension == ".dds";
 }
 
-std::optional<TextureFile> loadTextureFile(const std::string& path, std::string& error) {
+std::optional<TextureFile> loadTextureFile(const std::string& path, std::optional<TextureFileFault>& fault) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        error = "cannot open the file";
+        fault = {fx::DiagId::TextureFileUnopenable, {}};
         return std::nullopt;
     }
     const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return decodeTextureFile(bytes, error);
+    return decodeTextureFile(bytes, fault);
 }
 
-std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes, std::string& error) {
-    const std::optional<Layout> layout = readLayout(bytes, error);
+std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes,
+                                             std::optional<TextureFileFault>& fault) {
+    const std::optional<Layout> layout = readLayout(bytes, fault);
     if (!layout) return std::nullopt;
 
     // The data's size is checked before any allocation: a header may claim 2048 elements of 16384² texels.
@@ -439,9 +438,10 @@ std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes, std
     const size_t available = bytes.size() - layout->dataOffset;
     if (available / elementBytes < layout->elements) {
         const size_t complete = available / elementBytes;
-        error = layout->elements > 1 ? "the file ends inside element " + std::to_string(complete) + "'s data"
-                                     : "the file ends inside its texel data (" + std::to_string(available) +
-                                           " of " + std::to_string(elementBytes) + " bytes)";
+        fault = layout->elements > 1
+                    ? TextureFileFault{fx::DiagId::TextureFileElementTruncated, {std::to_string(complete)}}
+                    : TextureFileFault{fx::DiagId::TextureFileTexelsTruncated,
+                                       {std::to_string(available), std::to_string(elementBytes)}};
         return std::nullopt;
     }
 

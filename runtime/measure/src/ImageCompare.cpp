@@ -110,7 +110,10 @@ FuzzyCompareResult fuzzyCompare(const FrameImage& reference, const FrameImage& r
 
 std::optional<FrameImage> readPng(const std::string& path, std::string& error) {
     std::optional<Image> image = loadImageFile(path, error);
-    if (!image) return std::nullopt;
+    if (!image) {
+        error = path + ": " + error;
+        return std::nullopt;
+    }
     const Image rgba = image->toRGBA8();
     FrameImage frame;
     frame.width = rgba.width;

@@ -15,7 +15,7 @@ bool bindComputePass(EffectResources& resources, size_t technique, size_t pass,
     if (!program) return false;
     PassBinding binding;
     binding.program = program;
-    std::string unused;  // a compute program binds no framebuffer, the one thing that can fail
+    FramebufferFault unused;  // a compute program binds no framebuffer, the one thing that can fail
     bindPass(resources, technique, pass, binding, diagnostics, unused);
     evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
     uploadPassValues(resources, *program, arguments);

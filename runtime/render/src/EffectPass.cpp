@@ -141,9 +141,10 @@ bool EffectPass::apply(fx::DiagnosticSink* diagnostics) const {
     } else {
         binding.depthBits = frame.boundDepthBits;
     }
-    std::string error;
-    if (!bindPass(r, mTechnique, mPass, binding, sink, error)) {
-        sink.report(fx::DiagId::PassTargetsUnbindable, pass.loc, {pass.name, error});
+    FramebufferFault fault;
+    if (!bindPass(r, mTechnique, mPass, binding, sink, fault)) {
+        const auto [id, arguments] = fault.diagnostic(fx::DiagId::PassTargetsUnbindable, {pass.name});
+        sink.report(id, pass.loc, arguments);
         return false;
     }
     // render(Scene) may no longer reuse what it left in the targets (leave-out's cached passes).

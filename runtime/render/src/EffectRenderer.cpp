@@ -365,8 +365,8 @@ bool EffectRenderer::blitFrameTo(uint32_t framebuffer) const {
     if (!frameColor) return false;
     RenderTargets source;
     source.colors[0].texture = &frameColor;
-    std::string error;
-    if (!mImpl->textures->bindFramebuffer(source, error)) return false;
+    FramebufferFault unused;  // the frame's own colour target: always bindable
+    if (!mImpl->textures->bindFramebuffer(source, unused)) return false;
     const int width = frameColor.width(), height = frameColor.height();
     gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     gl::BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);

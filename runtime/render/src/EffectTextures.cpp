@@ -243,15 +243,15 @@ const GpuTexture* EffectTextures::find(size_t parameter) const {
     return it == mTextures.end() ? nullptr : &it->second;
 }
 
-bool EffectTextures::bindTargets(const RenderTargets& targets, std::string& error) {
-    if (!mFramebuffers.bind(targets, error)) return false;
+bool EffectTextures::bindTargets(const RenderTargets& targets, FramebufferFault& fault) {
+    if (!mFramebuffers.bind(targets, fault)) return false;
     for (const RenderTargetAttachment& color : targets.colors)
         if (color.texture && color.texture->mipLevels() > 1) mStaleMipChains.insert(color.texture);
     return true;
 }
 
-bool EffectTextures::bindFramebuffer(const RenderTargets& targets, std::string& error) {
-    return mFramebuffers.bind(targets, error);
+bool EffectTextures::bindFramebuffer(const RenderTargets& targets, FramebufferFault& fault) {
+    return mFramebuffers.bind(targets, fault);
 }
 
 void EffectTextures::refreshMipChain(const GpuTexture& texture) {
@@ -315,10 +315,12 @@ bool EffectTextures::createFileTextures(const std::vector<fx::Value>& values, Un
         }
         if (desc.kind == fx::TextureDesc::Kind::File && !desc.resolvedPath.empty() &&
             isTextureFile(desc.resolvedPath)) {
-            std::string error;
-            std::optional<TextureFile> file = loadTextureFile(desc.resolvedPath, error);
+            std::optional<TextureFileFault> fault;
+            std::optional<TextureFile> file = loadTextureFile(desc.resolvedPath, fault);
             if (!file) {
-                diagnostics.report(fx::DiagId::TextureFileUnreadable, desc.loc, {desc.resourceName, error});
+                std::vector<std::string> arguments{desc.resourceName};
+                arguments.insert(arguments.end(), fault->values.begin(), fault->values.end());
+                diagnostics.report(fault->id, desc.loc, arguments);
                 return false;
             }
             std::optional<GpuTexture> texture = makeFileTexture(*file, desc);

@@ -66,9 +66,9 @@ public:
 
     // Binds a framebuffer of `targets` (FramebufferCache::bind); the mipmapped colour targets among them
     // are marked written, so that refreshMipChain regenerates their chain before they are sampled.
-    bool bindTargets(const RenderTargets& targets, std::string& error);
+    bool bindTargets(const RenderTargets& targets, FramebufferFault& fault);
     // The same without marking: the frame's colour target read back, a host file's own targets.
-    bool bindFramebuffer(const RenderTargets& targets, std::string& error);
+    bool bindFramebuffer(const RenderTargets& targets, FramebufferFault& fault);
     // Regenerates the texture's mip chain if it was written since its last regeneration.
     void refreshMipChain(const GpuTexture& texture);
     size_t framebufferCount() const { return mFramebuffers.size(); }

@@ -201,9 +201,10 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     binding.program = program;
     {
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-        std::string error;
-        if (!bindPass(mResources, mTechnique, passIndex, binding, mDiagnostics, error)) {
-            fail(fx::DiagId::ScriptTargetsUnbindable, {error});
+        FramebufferFault fault;
+        if (!bindPass(mResources, mTechnique, passIndex, binding, mDiagnostics, fault)) {
+            const auto [id, arguments] = fault.diagnostic(fx::DiagId::ScriptTargetsUnbindable, {});
+            fail(id, arguments);
             return;
         }
     }
@@ -436,10 +437,11 @@ bool FrameExecutor::drawTargets(bool usesDepth, const fx::CompiledPass* pass, Re
 bool FrameExecutor::bindTargets(bool usesDepth) {
     RenderTargets targets;
     if (!drawTargets(usesDepth, nullptr, targets)) return false;
-    std::string error;
+    FramebufferFault fault;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-    if (!bindPassTargets(mResources, targets, error)) {
-        fail(fx::DiagId::ScriptTargetsUnbindable, {error});
+    if (!bindPassTargets(mResources, targets, fault)) {
+        const auto [id, arguments] = fault.diagnostic(fx::DiagId::ScriptTargetsUnbindable, {});
+        fail(id, arguments);
         return false;
     }
     return true;

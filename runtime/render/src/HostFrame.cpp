@@ -251,9 +251,10 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
             targets.colors[0] = RenderTargetAttachment::wholeOf(&target.color);
             targets.depth = RenderTargetAttachment::wholeOf(&target.depth);
         }
-        std::string error;
-        if (!r.textures->bindFramebuffer(targets, error)) {
-            diagnostics.report(fx::DiagId::HostTargetUnbindable, step.loc, {error});
+        FramebufferFault fault;
+        if (!r.textures->bindFramebuffer(targets, fault)) {
+            const auto [id, arguments] = fault.diagnostic(fx::DiagId::HostTargetUnbindable, {step.target});
+            diagnostics.report(id, step.loc, arguments);
             return false;
         }
         context.viewport = {targets.width(), targets.height()};

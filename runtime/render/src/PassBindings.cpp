@@ -99,12 +99,12 @@ void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
 
 }  // namespace
 
-bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, std::string& error) {
-    return resources.textures->bindTargets(targets, error);
+bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, FramebufferFault& fault) {
+    return resources.textures->bindTargets(targets, fault);
 }
 
 bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
-              fx::DiagnosticSink& diagnostics, std::string& error) {
+              fx::DiagnosticSink& diagnostics, FramebufferFault& fault) {
     const fx::CompiledPass& compiled = resources.effect().techniques[technique].passes[pass];
     GpuProgram* program = binding.program ? binding.program : resources.programs->program(technique, pass);
     const RenderTargets none;
@@ -112,7 +112,7 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
     // A compute program (a compute pass's, or the dispatch of a pass that also draws) binds no target and
     // no state; the graphics program of a pass that also dispatches binds both.
     if (!program || !program->isCompute()) {
-        if (binding.framebuffer && !bindPassTargets(resources, drawing, error)) return false;
+        if (binding.framebuffer && !bindPassTargets(resources, drawing, fault)) return false;
         if (binding.viewport)
             gl::Viewport(binding.viewport->x, binding.viewport->y, binding.viewport->z, binding.viewport->w);
         applyRenderStates(binding.states

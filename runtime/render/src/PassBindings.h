@@ -41,13 +41,13 @@ struct PassBinding {
 // for a new chain), every render state, the textures and sampler objects, storage buffers and images its
 // stages read, and its program. A pass without shaders binds targets and states and leaves the bound
 // program; a compute program (a compute pass's, or the dispatch of a pass that also draws, given in
-// `binding.program`) binds no target and no state. False, with the reason in `error`, where the
+// `binding.program`) binds no target and no state. False, with the reason in `fault`, where the
 // framebuffer cannot be bound (nothing after it is bound then).
 bool bindPass(EffectResources& resources, size_t technique, size_t pass, const PassBinding& binding,
-              fx::DiagnosticSink& diagnostics, std::string& error);
+              fx::DiagnosticSink& diagnostics, FramebufferFault& fault);
 // Binds `targets` as the framebuffer and viewport and marks their mipmapped colour targets for a new chain
 // (D3D9's AUTOGENMIPMAP): what bindPass() does first, and what a script's clears bind.
-bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, std::string& error);
+bool bindPassTargets(EffectResources& resources, const RenderTargets& targets, FramebufferFault& fault);
 
 // The pass's compile arguments that `which` selects (one flag per CompiledPass::arguments entry; null:
 // all), evaluated over the current values into `arguments`; each runs only if an input changed.

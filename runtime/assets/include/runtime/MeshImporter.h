@@ -24,8 +24,10 @@ struct MeshImportOptions {
                                    // bunny.obj has inward normals, assimp's spider.obj mixed ones)
 };
 
-// Imports every mesh of the file (node transforms baked in) into one Mesh. nullopt after reporting
-// MeshFileNotFound (naming the Debian package of a known asset) or MeshImportError at `where`.
+// Imports every mesh of the file (node transforms baked in) into one Mesh. nullopt after reporting at
+// `where` MeshFileNotFound (MeshFileNotInstalled naming the Debian package of a known asset), the mesh
+// import module's MeshModuleMissing, MeshModuleUnloadable or MeshModuleEntryMissing, assimp's
+// MeshImportError, or MeshWithoutTriangles.
 std::optional<Mesh> importMesh(const std::string& path, const MeshImportOptions& options,
                                fx::DiagnosticSink& diagnostics, const fx::SourceLoc& where = {});
 

@@ -13,15 +13,23 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace runtime {
 
-// A module that is in none of the folders searched, or that the dynamic loader refused; what() names the
-// module, what it is for and every path tried.
+// A module that is in none of the folders searched, that the dynamic loader refused, or that lacks its
+// entry point; what() names the module, what it is for and every path tried. `detail` is what the reason
+// names: the paths tried (Missing), the dynamic loader's message (Refused), the entry point (NoEntryPoint).
 class ModuleLoadError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    enum class Reason { Missing, Refused, NoEntryPoint };
+    ModuleLoadError(Reason reason, std::string file, std::string detail, const std::string& what)
+        : std::runtime_error(what), reason(reason), file(std::move(file)), detail(std::move(detail)) {}
+
+    Reason reason;
+    std::string file;  // libshadowfx_<name>.so, or the path the dynamic loader refused
+    std::string detail;
 };
 
 // The folders searched, in order (above), without duplicates.

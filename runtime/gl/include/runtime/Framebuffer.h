@@ -6,6 +6,7 @@
 // until evict()/clear(): cheap, and render targets live as long as their effect.
 #pragma once
 
+#include <fx/Diagnostics.h>
 #include <runtime/GpuTexture.h>
 
 #include <array>
@@ -13,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace runtime {
 
@@ -56,6 +58,19 @@ struct ClearRequest {
     std::optional<int> stencil;  // only if the depth target has stencil
 };
 
+// Why FramebufferCache::bind refused targets: a target of the wrong format (`id`, with `arguments`), or GL
+// calling the combination incomplete (no `id`; `arguments` holds the GL_FRAMEBUFFER_... status), which each
+// caller reports with its own id, naming what it drew.
+struct FramebufferFault {
+    std::optional<fx::DiagId> id;
+    std::vector<std::string> arguments;
+
+    // The id and arguments to report: the fault's own, or `incomplete` with `names` (what was drawn)
+    // followed by the status.
+    std::pair<fx::DiagId, std::vector<std::string>> diagnostic(fx::DiagId incomplete,
+                                                               std::vector<std::string> names) const;
+};
+
 class FramebufferCache {
 public:
     FramebufferCache() = default;
@@ -65,10 +80,10 @@ public:
 
     // Binds (creating on first use) the FBO for these targets as GL_FRAMEBUFFER (draw and read) with
     // glDrawBuffers(color slot i -> GL_COLOR_ATTACHMENTi; empty slots GL_NONE), the read buffer on the
-    // first colour target, and the viewport to the targets' size. Returns false and sets `error` when GL
-    // calls the combination incomplete (GL_FRAMEBUFFER_... status named). Sizes may differ, as D3D9
+    // first colour target, and the viewport to the targets' size. Returns false and sets `fault` for a
+    // target of the wrong format or when GL calls the combination incomplete. Sizes may differ, as D3D9
     // allows a depth surface larger than the colour targets: GL renders the intersection.
-    bool bind(const RenderTargets& targets, std::string& error);
+    bool bind(const RenderTargets& targets, FramebufferFault& fault);
     // The window's (or the headless context's) default framebuffer.
     static void bindDefault();
 

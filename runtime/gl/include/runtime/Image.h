@@ -46,7 +46,8 @@ Image readFramebufferColor(int index, int width, int height);
 // Reads the stencil values of the bound read framebuffer as 8-bit, one channel.
 Image readFramebufferStencil(int width, int height);
 
-// PNG, TGA, JPG, BMP, ... through stb_image, as 8-bit RGBA (HDR files as float RGBA).
+// PNG, TGA, JPG, BMP, ... through stb_image, as 8-bit RGBA (HDR files as float RGBA). nullopt, with
+// stb_image's reason in `error`, if the file cannot be read.
 std::optional<Image> loadImageFile(const std::string& path, std::string& error);
 
 }  // namespace runtime

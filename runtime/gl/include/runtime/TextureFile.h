@@ -6,6 +6,8 @@
 // lists the formats under Textures).
 #pragma once
 
+#include <fx/Diagnostics.h>
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -26,13 +28,21 @@ struct TextureFile {
     std::vector<std::vector<float>> levels;
 };
 
+// Why a file could not be read: the diagnostic to report at the effect's texture, whose first argument is
+// the file as the effect names it and whose others are `values` (a format number, a size, ...).
+struct TextureFileFault {
+    fx::DiagId id;
+    std::vector<std::string> values;
+};
+
 // Whether the runtime reads `path` through loadTextureFile (by its extension, any case).
 bool isTextureFile(const std::string& path);
 
-// Reads every level. nullopt, with `error` set, if the file cannot be read.
-std::optional<TextureFile> loadTextureFile(const std::string& path, std::string& error);
+// Reads every level. nullopt, with `fault` set, if the file cannot be read.
+std::optional<TextureFile> loadTextureFile(const std::string& path, std::optional<TextureFileFault>& fault);
 
 // The same from a DDS file's bytes (fuzz/fuzz_dds_file.cpp feeds it any bytes).
-std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes, std::string& error);
+std::optional<TextureFile> decodeTextureFile(std::span<const uint8_t> bytes,
+                                             std::optional<TextureFileFault>& fault);
 
 }  // namespace runtime
