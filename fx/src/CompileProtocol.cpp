@@ -130,6 +130,11 @@ void writeProgram(Writer& w, const StageProgram& p) {
         w.u32(static_cast<uint32_t>(i.stream.stream));
         w.u32(static_cast<uint32_t>(i.stream.index));
     }
+    const StageEffects& e = p.effects;
+    w.u32((e.discards ? 1u : 0u) | (e.writesDepth ? 2u : 0u) | (e.writesSampleMask ? 4u : 0u) |
+          (e.writesImages ? 8u : 0u) | (e.writesBuffers ? 16u : 0u) | (e.atomics ? 32u : 0u) |
+          (e.writesPointSize ? 64u : 0u) | (e.writesDiffuse ? 128u : 0u));
+    w.u32(static_cast<uint32_t>(e.clipDistances));
 }
 
 void readProgram(Reader& r, StageProgram& p) {
@@ -191,6 +196,17 @@ void readProgram(Reader& r, StageProgram& p) {
             std::min<uint32_t>(r.u32(), static_cast<uint32_t>(VertexStream::BlendIndices)));
         i.stream.index = r.i32();
     }
+    StageEffects& e = p.effects;
+    const uint32_t effects = r.u32();
+    e.discards = effects & 1u;
+    e.writesDepth = effects & 2u;
+    e.writesSampleMask = effects & 4u;
+    e.writesImages = effects & 8u;
+    e.writesBuffers = effects & 16u;
+    e.atomics = effects & 32u;
+    e.writesPointSize = effects & 64u;
+    e.writesDiffuse = effects & 128u;
+    e.clipDistances = std::clamp(r.i32(), 0, 8);
 }
 
 }  // namespace

@@ -42,6 +42,8 @@ struct EnumLast {
 template <>
 struct EnumLimit<ShaderStage> : EnumLast<ShaderStage, ShaderStage::Compute> {};
 template <>
+struct EnumLimit<SemanticKind> : EnumLast<SemanticKind, SemanticKind::StandardsGlobal> {};
+template <>
 struct EnumLimit<UniformBinding::Source>
     : EnumLast<UniformBinding::Source, UniformBinding::Source::CompileArgument> {};
 template <>
@@ -87,9 +89,10 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 8,
-              "the enum lengths below were pinned at format version 8: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 9,
+              "the enum lengths below were pinned at format version 9: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
+static_assert(enumLength<SemanticKind>() == 35);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
 static_assert(enumLength<LeaveOutCondition>() == 3);
@@ -122,7 +125,8 @@ static_assert(sizeof(StorageBufferBinding::Run) == 12);
 static_assert(sizeof(StorageBufferBinding) == 104);
 static_assert(sizeof(VertexInput) == 48);
 static_assert(sizeof(ImageBinding) == 72);
-static_assert(sizeof(StageProgram) == 304);
+static_assert(sizeof(StageEffects) == 12);
+static_assert(sizeof(StageProgram) == 320);
 static_assert(sizeof(PreshaderProgram::Instruction::MemberComponents) == 14);
 static_assert(sizeof(PreshaderProgram::Instruction) == 216);
 static_assert(sizeof(PreshaderProgram::Error) == 72);
@@ -133,14 +137,15 @@ static_assert(sizeof(ScriptCommand::DispatchTerm) == 8);
 static_assert(sizeof(ScriptCommand) == 456);
 static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
-static_assert(sizeof(CompiledPass) == 2120);
+static_assert(sizeof(CompiledPass) == 2216);
 static_assert(sizeof(CompiledTechnique) == 184);
-static_assert(sizeof(TextureDesc) == 2296);
+static_assert(sizeof(TextureDesc) == 2392);
 static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
-static_assert(sizeof(ParameterInfo) == 360);
+static_assert(sizeof(SemanticBinding) == 12);
+static_assert(sizeof(ParameterInfo) == 368);
 static_assert(sizeof(EffectProvenance) == 112);
 static_assert(sizeof(CompiledEffect) == 400);
 #endif
@@ -208,9 +213,15 @@ void fields(A& a, VertexInput& x) {
     a(x.semantic, x.location, x.components, x.stream);
 }
 template <class A>
+void fields(A& a, StageEffects& x) {
+    a(x.discards, x.writesDepth, x.writesSampleMask, x.writesImages, x.writesBuffers, x.atomics);
+    a(x.writesPointSize, x.writesDiffuse, x.clipDistances);
+}
+template <class A>
 void fields(A& a, StageProgram& x) {
     a(x.stage, x.entryPoint, x.profile, x.hlsl, x.glsl, x.uniformBlockName, x.uniformBlockBinding);
     a(x.uniformBlockSize, x.uniforms, x.samplers, x.storageBuffers, x.images, x.inputs, x.sourceHash);
+    a(x.effects);
 }
 template <class A>
 void fields(A& a, PreshaderProgram::Instruction::MemberComponents& x) {
@@ -294,9 +305,13 @@ void fields(A& a, StructInfo& x) {
     a(x.name, x.members);
 }
 template <class A>
+void fields(A& a, SemanticBinding& x) {
+    a(x.kind, x.inverse, x.transpose, x.byName, x.light);
+}
+template <class A>
 void fields(A& a, ParameterInfo& x) {
-    a(x.name, x.type, x.semantic, x.isStatic, x.isShared, x.loc, x.light, x.hasParameterization);
-    a(x.parameterization, x.parameterizationLoc, x.annotations);
+    a(x.name, x.type, x.semantic, x.standard, x.isStatic, x.isShared, x.loc, x.light);
+    a(x.hasParameterization, x.parameterization, x.parameterizationLoc, x.annotations);
 }
 template <class A>
 void fields(A& a, EffectProvenance& x) {

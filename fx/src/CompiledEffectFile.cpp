@@ -67,9 +67,13 @@ public:
                                  mEffect.structs.begin() + static_cast<std::ptrdiff_t>(i),
                                  [&](const StructInfo& s) { return s.name == member.type.structName; }))
                     return Corruption{DiagId::CompiledEffectStructOrder, {mEffect.structs[i].name}};
-        for (const ParameterInfo& parameter : mEffect.parameters)
+        for (const ParameterInfo& parameter : mEffect.parameters) {
             if (mEffect.componentCount(parameter.type) > (size_t(1) << 24))
                 return Corruption{DiagId::CompiledEffectParameterTooLarge, {parameter.name}};
+            const int light = parameter.standard.light;
+            if (light < -1 || (light >= 0 && static_cast<size_t>(light) >= mEffect.lights.size()))
+                return Corruption{DiagId::CompiledEffectParameterLightOutOfRange, {parameter.name}};
+        }
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters)
                 return Corruption{DiagId::CompiledEffectTextureWithoutParameter};
@@ -150,6 +154,9 @@ private:
             for (const StorageBufferBinding& buffer : stage->storageBuffers)
                 if (buffer.parameter >= mParameters)
                     return inPass(DiagId::CompiledEffectStorageBufferWithoutParameter);
+            // GL enables one clip plane per entry (GL_CLIP_DISTANCE0 + i), of which it guarantees 8.
+            if (stage->effects.clipDistances < 0 || stage->effects.clipDistances > 8)
+                return inPass(DiagId::CompiledEffectClipDistancesOutOfRange);
         }
         // Stream output sizes the pass's GL buffers (capacity times stride) and names their slots.
         if (pass.streamOut) {

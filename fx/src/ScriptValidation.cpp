@@ -3,6 +3,7 @@
 
 #include "Compiler.h"
 #include "CaseFolding.h"
+#include "SemanticClassification.h"
 
 #include <fx/DispatchTerms.h>
 #include <fx/LiteralNumbers.h>
@@ -201,9 +202,14 @@ void Compiler::resolveTechniqueSelection() {
 }
 
 void Compiler::scripts() {
-    // The parameters' lights first, so that their indices do not depend on which scripts compile.
-    for (const ParameterInfo& parameter : mOut->parameters)
+    // The parameters' lights first, so that their indices do not depend on which scripts compile; what
+    // each parameter's semantic gives it, with them.
+    std::string semanticLight;
+    for (ParameterInfo& parameter : mOut->parameters) {
         if (!parameter.light.empty()) lightIndex(parameter.light);
+        parameter.standard = classifySemantic(parameter, semanticLight);
+        if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
+    }
     for (const Parameter& p : mEffect.parameters) {
         if (upperCase(p.semantic) != "STANDARDSGLOBAL") continue;
         mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);

@@ -2,6 +2,7 @@
 #include "SpirvToGlsl.h"
 
 #include "PassLowering.h"
+#include "SemanticTables.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 
@@ -174,6 +175,81 @@ void guardCubeDirections(std::string& glsl, const std::vector<std::string>& samp
                "1.0) : d; }\n"
                "vec4 fx_finite_direction(vec4 d) { return vec4(fx_finite_direction(d.xyz), d.w); }\n");
     glsl = std::move(out);
+}
+
+// What the stage does besides computing its outputs: its instructions (a discard, an image store, an
+// atomic), its builtin outputs and its storage blocks.
+StageEffects stageEffects(const std::vector<uint32_t>& spirv, const spirv_cross::CompilerGLSL& compiler,
+                          const spirv_cross::ShaderResources& resources, ShaderStage stage) {
+    StageEffects effects;
+    for (size_t at = 5; at < spirv.size();) {
+        const uint32_t words = spirv[at] >> 16;
+        const auto opcode = static_cast<spv::Op>(spirv[at] & 0xffff);
+        if (words == 0) break;
+        at += words;
+        switch (opcode) {
+            case spv::OpKill:
+            case spv::OpTerminateInvocation:
+            case spv::OpDemoteToHelperInvocationEXT:
+                effects.discards = true;
+                break;
+            case spv::OpImageWrite:
+                effects.writesImages = true;
+                break;
+            case spv::OpAtomicLoad:
+            case spv::OpAtomicStore:
+            case spv::OpAtomicExchange:
+            case spv::OpAtomicCompareExchange:
+            case spv::OpAtomicCompareExchangeWeak:
+            case spv::OpAtomicIIncrement:
+            case spv::OpAtomicIDecrement:
+            case spv::OpAtomicIAdd:
+            case spv::OpAtomicISub:
+            case spv::OpAtomicSMin:
+            case spv::OpAtomicUMin:
+            case spv::OpAtomicSMax:
+            case spv::OpAtomicUMax:
+            case spv::OpAtomicAnd:
+            case spv::OpAtomicOr:
+            case spv::OpAtomicXor:
+                effects.atomics = true;
+                break;
+            default:
+                break;
+        }
+    }
+    for (const spirv_cross::BuiltInResource& output : resources.builtin_outputs) {
+        switch (output.builtin) {
+            case spv::BuiltInFragDepth:
+                effects.writesDepth = true;
+                break;
+            case spv::BuiltInSampleMask:
+                effects.writesSampleMask = true;
+                break;
+            case spv::BuiltInPointSize:
+                effects.writesPointSize = true;
+                break;
+            case spv::BuiltInClipDistance: {
+                const spirv_cross::SPIRType& type = compiler.get_type(output.value_type_id);
+                effects.clipDistances =
+                    type.array.empty() ? 1 : static_cast<int>(std::min(type.array[0], 8u));
+                break;
+            }
+            default:
+                break;
+        }
+    }
+    // A block the code may write is one not declared NonWritable (a StructuredBuffer's is).
+    for (const spirv_cross::Resource& r : resources.storage_buffers)
+        if (!compiler.get_buffer_block_flags(r.id).get(spv::DecorationNonWritable))
+            effects.writesBuffers = true;
+    if (stage == ShaderStage::Vertex)
+        for (const spirv_cross::Resource& r : resources.stage_outputs)
+            if (compiler.has_decoration(r.id, spv::DecorationLocation) &&
+                static_cast<int>(compiler.get_decoration(r.id, spv::DecorationLocation)) ==
+                    *varyingLocation("COLOR0"))
+                effects.writesDiffuse = true;
+    return effects;
 }
 
 }  // namespace
@@ -379,6 +455,7 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             }
         }
 
+        program.effects = stageEffects(spirv, compiler, resources, stage);
         program.glsl = compiler.compile();
         std::vector<std::string> cubeSamplers;
         for (const spirv_cross::Resource& r : compiler.get_shader_resources().sampled_images)

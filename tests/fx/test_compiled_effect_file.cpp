@@ -182,6 +182,60 @@ technique t < string Script = "ClearSetColor=Background; Clear=Color; RenderPort
     }
 }
 
+// What the runtime binds and enables by, resolved by the compiler (each parameter's semantic with its
+// light, each stage's effects), survives the file; a light out of range, a kind out of the enum or more
+// clip distances than GL has planes is a corrupt file.
+TEST(CompiledEffectFile, SemanticsAndStageEffectsRoundTrip) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+float4x4 gWorldViewProj;
+float4x4 SunMatrix : ViewProjectionInverse < string frustum = "sun"; >;
+struct VOut { float4 Pos : POSITION; float4 Colour : COLOR0; float2 Clip : SV_ClipDistance0; };
+VOut VS(float4 p : POSITION) { VOut o; o.Pos = mul(mul(p, gWorldViewProj), SunMatrix); o.Colour = p; o.Clip = p.xy; return o; }
+float4 PS(float4 c : COLOR0) : COLOR { clip(c.x - 0.5); return c; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                                       "resolved.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "resolved.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    const SemanticBinding& sun = read->findParameter("SunMatrix")->standard;
+    EXPECT_EQ(sun.kind, SemanticKind::ViewProjection);
+    EXPECT_TRUE(sun.inverse && !sun.transpose && !sun.byName);
+    ASSERT_GE(sun.light, 0);
+    EXPECT_EQ(read->lights.at(static_cast<size_t>(sun.light)), "sun");
+    EXPECT_TRUE(read->findParameter("gWorldViewProj")->standard.byName);
+    const CompiledPass& pass = read->techniques.at(0).passes.at(0);
+    EXPECT_EQ(pass.vertex.effects.clipDistances, 2);
+    EXPECT_TRUE(pass.vertex.effects.writesDiffuse);
+    EXPECT_TRUE(pass.fragment.effects.discards);
+
+    const size_t sunIndex = static_cast<size_t>(read->findParameter("SunMatrix") - read->parameters.data());
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[sunIndex].standard.light = static_cast<int>(damaged.lights.size());
+        EXPECT_NE(readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectParameterLightOutOfRange)
+                      .find("parameter 'SunMatrix' is bound to a light out of range"),
+                  std::string::npos);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[sunIndex].standard.kind = static_cast<SemanticKind>(99);
+        readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectEnumeratorOutOfRange);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.techniques[0].passes[0].vertex.effects.clipDistances = 9;
+        EXPECT_NE(readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectClipDistancesOutOfRange)
+                      .find("pass 'p': a stage writes clip distances out of range"),
+                  std::string::npos);
+    }
+}
+
 // Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
 TEST(CompiledEffectFile, StreamOutputRoundTrips) {
     DiagnosticList diagnostics;
@@ -264,8 +318,8 @@ TEST_F(DamagedFile, ANewerFormatVersionIsNamed) {
     readError(bytes, DiagId::CompiledEffectOlderFormat);
 }
 
-// A file of the format before this one (its preshader intrinsics named, not resolved) is refused with the
-// way out, never read with other meanings.
+// A file of the format before this one (its parameters' semantics and stages' effects left to the runtime)
+// is refused with the way out, never read with other meanings.
 TEST_F(DamagedFile, TheFormatBeforeThisOneIsOlder) {
     std::string bytes = mBytes;
     bytes[8] = static_cast<char>(kCompiledEffectFormatVersion - 1);

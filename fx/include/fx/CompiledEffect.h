@@ -4,6 +4,7 @@
 // parameter values, textures and samplers. No OpenGL here: the runtime turns this into GL objects.
 #pragma once
 
+#include <fx/ParameterSemantics.h>
 #include <fx/PreshaderProgram.h>
 #include <fx/RefusedTechnique.h>
 #include <fx/RenderStates.h>
@@ -133,6 +134,21 @@ struct VertexInput {
     VertexStreamSlot stream;
 };
 
+// What a stage's code does besides computing its outputs, read by the compiler from its SPIR-V: the
+// program state the runtime enables for it, and whether a pass that writes no colour may leave its pixel
+// stage out (GpuProgram::pixelShaderHasSideEffects).
+struct StageEffects {
+    bool discards = false;          // clip(), texkill, an alpha test written as clip (OpKill)
+    bool writesDepth = false;       // SV_Depth (gl_FragDepth)
+    bool writesSampleMask = false;  // SV_Coverage (gl_SampleMask)
+    bool writesImages = false;      // stores to a read-write texture (imageStore)
+    bool writesBuffers = false;     // declares a storage buffer it may write (RWStructuredBuffer, ...)
+    bool atomics = false;           // Interlocked* on an image, a buffer or groupshared memory
+    bool writesPointSize = false;   // PSIZE (gl_PointSize)
+    bool writesDiffuse = false;     // the COLOR0 varying, what a fixed-function pixel stage outputs
+    int clipDistances = 0;          // SV_ClipDistance: the gl_ClipDistance entries it writes, 0 to 8
+};
+
 struct StageProgram {
     ShaderStage stage = ShaderStage::Vertex;
     std::string entryPoint;        // the user's function
@@ -150,6 +166,7 @@ struct StageProgram {
     std::vector<ImageBinding> images;                  // likewise
     std::vector<VertexInput> inputs;                   // vertex stage
     uint64_t sourceHash = 0;                           // hash of hlsl + options: the compile cache's key
+    StageEffects effects;
 };
 
 // An argument of a compile expression bound to a `uniform` entry-point parameter; the runtime runs `value`
@@ -333,7 +350,8 @@ struct SamplerDesc {
 struct ParameterInfo {
     std::string name;
     TypeDesc type;
-    std::string semantic;  // as written; "" if none
+    std::string semantic;      // as written; "" if none
+    SemanticBinding standard;  // what the runtime gives it by `semantic` (or by its name, without one)
     bool isStatic = false;
     bool isShared = false;  // declared `shared`: one value across the effects of a pool
     SourceLoc loc;
@@ -385,8 +403,9 @@ struct CompiledEffect {
     bool hasGlobalScript = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
     // Every light the effect names, once each, as written: the parameters' `frustum`/`Object`
-    // annotations in parameter order, then the scripts' RenderPort=lightN (ScriptCommand::light indexes
-    // it). The runtime finds each in the scene by name, since only the scene knows its lights.
+    // annotations and the light0 of a light property without one, in parameter order, then the scripts'
+    // RenderPort=lightN (ScriptCommand::light and SemanticBinding::light index it). The runtime finds each
+    // in the scene by name, since only the scene knows its lights.
     std::vector<std::string> lights;
     // The most iterations one LoopByCount may run (CompileOptions::maxScriptLoopCount): the compiler
     // checks literal counts, the runtime a parameter's value.

@@ -891,6 +891,10 @@ FX_DIAGNOSTIC(
     CompiledEffectPreshaderMemberTooWide, Error,
     "the compiled effect file is corrupt: pass '{0}': a preshader program is malformed (a member of "
     "more than 4 components)")
+FX_DIAGNOSTIC(CompiledEffectParameterLightOutOfRange, Error,
+              "the compiled effect file is corrupt: parameter '{0}' is bound to a light out of range")
+FX_DIAGNOSTIC(CompiledEffectClipDistancesOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': a stage writes clip distances out of range")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

@@ -1,0 +1,73 @@
+// ParameterSemantics: what the runtime gives a parameter by its semantic (docs/effect-format.md, "What the
+// runtime provides"), classified once by the compiler from the semantic as written (case-blind, as D3DX
+// and SAS match them) or, for a parameter written without one, from its conventional name. The runtime
+// binds by the enum and never reads the semantic's text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fx {
+
+enum class SemanticKind {
+    None,  // no semantic, or the user's own: the parameter keeps the value it is given
+    // Matrices; SemanticBinding::inverse and ::transpose say which variant.
+    World,
+    View,
+    Projection,
+    WorldView,
+    ViewProjection,
+    WorldViewProjection,
+    ViewportPixelSize,
+    Time,
+    CameraPosition,
+    ObjectId,
+    // A light's properties: SemanticBinding::light names the light. Position and Direction written
+    // without a light annotation are the object's, which nothing supplies: they keep light -1.
+    LightPosition,
+    LightDirection,
+    LightColor,
+    LightAreaRadius,
+    ObjectColor,
+    Ambient,
+    SceneHasClosedObjects,
+    CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
+    CascadeAtlasRects,
+    CascadeSplitDepths,
+    CubeFaceSelect,
+    // Tunables the light fits read (runtime/LightParameterization.h), not bound.
+    LispsmNScale,
+    LispsmNOpt,
+    LispsmDepthExtent,
+    LispsmMiddleVector,
+    LightPancaking,
+    TsmFocus,
+    PsmSlideBack,
+    PsmMaxWarpRatio,
+    CascadeCount,
+    CascadeSplitLambda,
+    CascadeBlend,
+    LightFitVisibleSamples,
+    StandardsGlobal,  // the parameter whose Script the compiler reads (fx/SasScript.h)
+};
+
+struct SemanticBinding {
+    SemanticKind kind = SemanticKind::None;
+    bool inverse = false;  // a matrix's Inverse / InverseTranspose suffix
+    bool transpose = false;
+    // Read from the parameter's name (`gWorldViewProj`): it was written without a semantic.
+    bool byName = false;
+    // CompiledEffect::lights index of the light whose matrices or properties the value is (a `frustum` or
+    // `Object` annotation, or light0 for a light property without one); -1: the render port's or the
+    // object's.
+    int light = -1;
+};
+
+// True for the kinds the runtime writes a value for (neither None, a tunable nor StandardsGlobal).
+bool isBoundSemantic(SemanticKind kind);
+// The semantic as the docs spell it, with a matrix's suffix ("WorldViewProjectionInverse"); "" for None.
+std::string semanticBindingName(const SemanticBinding& binding);
+// Every semantic the runtime gives a value or reads, as the docs spell them (shadowfx info lists them).
+std::vector<std::string> standardSemanticNames();
+
+}  // namespace fx

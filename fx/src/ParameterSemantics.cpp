@@ -1,0 +1,292 @@
+// ParameterSemantics: the runtime's semantics, their spellings and the compiler's classification
+// (fx/ParameterSemantics.h, SemanticClassification.h).
+#include "SemanticClassification.h"
+
+#include "CaseFolding.h"
+
+#include <fx/ParameterSemantics.h>
+
+#include <cctype>
+#include <iterator>
+#include <string_view>
+#include <utility>
+
+namespace fx {
+
+namespace {
+
+// Every semantic with its spellings, as the docs write them (matched case-blind).
+constexpr std::pair<const char*, SemanticKind> kMatrixSemantics[] = {
+    {"World", SemanticKind::World},
+    {"View", SemanticKind::View},
+    {"Projection", SemanticKind::Projection},
+    {"WorldView", SemanticKind::WorldView},
+    {"ViewProjection", SemanticKind::ViewProjection},
+    {"WorldViewProjection", SemanticKind::WorldViewProjection},
+};
+constexpr const char* kMatrixSuffixes[] = {"Inverse", "Transpose", "InverseTranspose"};
+constexpr std::pair<const char*, SemanticKind> kOtherSemantics[] = {
+    {"ViewportPixelSize", SemanticKind::ViewportPixelSize},
+    {"Time", SemanticKind::Time},
+    {"CameraPosition", SemanticKind::CameraPosition},
+    {"EyePosition", SemanticKind::CameraPosition},
+    {"ObjectId", SemanticKind::ObjectId},
+    {"Position", SemanticKind::LightPosition},
+    {"LightPosition", SemanticKind::LightPosition},
+    {"Direction", SemanticKind::LightDirection},
+    {"LightDirection", SemanticKind::LightDirection},
+    {"LightColor", SemanticKind::LightColor},
+    {"LightAreaRadius", SemanticKind::LightAreaRadius},
+    {"LightSize", SemanticKind::LightAreaRadius},
+    {"Diffuse", SemanticKind::ObjectColor},
+    {"MaterialDiffuse", SemanticKind::ObjectColor},
+    {"DiffuseColor", SemanticKind::ObjectColor},
+    {"Ambient", SemanticKind::Ambient},
+    {"SceneHasClosedObjects", SemanticKind::SceneHasClosedObjects},
+    {"CascadeViewProjection", SemanticKind::CascadeViewProjection},
+    {"CascadeAtlasRects", SemanticKind::CascadeAtlasRects},
+    {"CascadeSplitDepths", SemanticKind::CascadeSplitDepths},
+    {"CubeFaceSelect", SemanticKind::CubeFaceSelect},
+};
+// Read by the light fits, whatever the parameter's type (LiSPSMNOpt is a string).
+constexpr std::pair<const char*, SemanticKind> kTunableSemantics[] = {
+    {"LiSPSMNScale", SemanticKind::LispsmNScale},
+    {"LiSPSMNOpt", SemanticKind::LispsmNOpt},
+    {"LiSPSMDepthExtent", SemanticKind::LispsmDepthExtent},
+    {"LiSPSMMiddleVector", SemanticKind::LispsmMiddleVector},
+    {"LightPancaking", SemanticKind::LightPancaking},
+    {"TSMFocus", SemanticKind::TsmFocus},
+    {"PSMSlideBack", SemanticKind::PsmSlideBack},
+    {"PSMMaxWarpRatio", SemanticKind::PsmMaxWarpRatio},
+    {"CascadeCount", SemanticKind::CascadeCount},
+    {"CascadeSplitLambda", SemanticKind::CascadeSplitLambda},
+    {"CascadeBlend", SemanticKind::CascadeBlend},
+    {"LightFitVisibleSamples", SemanticKind::LightFitVisibleSamples},
+    // The parameter whose Script the compiler reads (ScriptValidation.cpp).
+    {"STANDARDSGLOBAL", SemanticKind::StandardsGlobal},
+};
+
+// Each kind's name, in SemanticKind's order.
+constexpr const char* kKindNames[] = {
+    "",
+    "World",
+    "View",
+    "Projection",
+    "WorldView",
+    "ViewProjection",
+    "WorldViewProjection",
+    "ViewportPixelSize",
+    "Time",
+    "CameraPosition",
+    "ObjectId",
+    "LightPosition",
+    "LightDirection",
+    "LightColor",
+    "LightAreaRadius",
+    "Diffuse",
+    "Ambient",
+    "SceneHasClosedObjects",
+    "CascadeViewProjection",
+    "CascadeAtlasRects",
+    "CascadeSplitDepths",
+    "CubeFaceSelect",
+    "LiSPSMNScale",
+    "LiSPSMNOpt",
+    "LiSPSMDepthExtent",
+    "LiSPSMMiddleVector",
+    "LightPancaking",
+    "TSMFocus",
+    "PSMSlideBack",
+    "PSMMaxWarpRatio",
+    "CascadeCount",
+    "CascadeSplitLambda",
+    "CascadeBlend",
+    "LightFitVisibleSamples",
+    "STANDARDSGLOBAL",
+};
+static_assert(std::size(kKindNames) == static_cast<size_t>(SemanticKind::StandardsGlobal) + 1);
+
+bool consumeSuffix(std::string& text, std::string_view suffix) {
+    if (text.size() < suffix.size() || text.compare(text.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    text.resize(text.size() - suffix.size());
+    return true;
+}
+
+bool consumePrefix(std::string& text, std::string_view prefix) {
+    if (text.size() <= prefix.size() || text.compare(0, prefix.size(), prefix) != 0) return false;
+    text.erase(0, prefix.size());
+    return true;
+}
+
+// A bound semantic's kind and matrix suffix; false for one the runtime does not bind.
+bool classifyBound(std::string_view semantic, SemanticBinding& binding) {
+    std::string name = upperCase(semantic);
+    if (consumeSuffix(name, "INVERSETRANSPOSE")) {
+        binding.inverse = binding.transpose = true;
+    } else if (consumeSuffix(name, "TRANSPOSE")) {
+        binding.transpose = true;
+    } else if (consumeSuffix(name, "INVERSE")) {
+        binding.inverse = true;
+    }
+    for (const auto& [text, kind] : kMatrixSemantics) {
+        if (name == upperCase(text)) {
+            binding.kind = kind;
+            return true;
+        }
+    }
+    if (binding.inverse || binding.transpose) return false;
+    for (const auto& [text, kind] : kOtherSemantics) {
+        if (name == upperCase(text)) {
+            binding.kind = kind;
+            return true;
+        }
+    }
+    return false;
+}
+
+// `name` without its scope prefix (g_, m_, g before a capital) and Hungarian type prefix (m, mat, mtx,
+// v, vec, f before a capital), underscores removed, in capitals.
+std::string conventionalStem(std::string_view name) {
+    std::string text(name);
+    const auto capitalAt = [&text](size_t i) {
+        return i < text.size() && (std::isupper(static_cast<unsigned char>(text[i])) || text[i] == '_');
+    };
+    if (text.rfind("g_", 0) == 0 || text.rfind("m_", 0) == 0) {
+        text.erase(0, 2);
+    } else if (text.size() > 1 && text[0] == 'g' && capitalAt(1)) {
+        text.erase(0, 1);
+    }
+    for (std::string_view hungarian : {"mtx", "mat", "vec", "m", "v", "f"}) {
+        if (text.rfind(hungarian, 0) == 0 && capitalAt(hungarian.size())) {
+            text.erase(0, hungarian.size());
+            break;
+        }
+    }
+    std::string stem;
+    for (char c : text)
+        if (c != '_') stem += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return stem;
+}
+
+}  // namespace
+
+bool isBoundSemantic(SemanticKind kind) {
+    return kind != SemanticKind::None && kind < SemanticKind::LispsmNScale;
+}
+
+std::string semanticBindingName(const SemanticBinding& binding) {
+    const std::string name = kKindNames[static_cast<size_t>(binding.kind)];
+    if (binding.inverse && binding.transpose) return name + "InverseTranspose";
+    if (binding.transpose) return name + "Transpose";
+    if (binding.inverse) return name + "Inverse";
+    return name;
+}
+
+std::vector<std::string> standardSemanticNames() {
+    std::vector<std::string> names;
+    for (const auto& [text, kind] : kMatrixSemantics) {
+        names.push_back(text);
+        for (const char* suffix : kMatrixSuffixes) names.push_back(std::string(text) + suffix);
+    }
+    for (const auto& [text, kind] : kOtherSemantics) names.push_back(text);
+    for (const auto& [text, kind] : kTunableSemantics) names.push_back(text);
+    return names;
+}
+
+std::string conventionalSemantic(const ParameterInfo& parameter) {
+    if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return "";
+    std::string stem = conventionalStem(parameter.name);
+    const TypeDesc& type = parameter.type;
+    if (type.shape == Shape::Matrix) {
+        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return "";
+        if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
+        std::string modifier;
+        if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||
+            consumeSuffix(stem, "INVTRANS") || consumeSuffix(stem, "IT")) {
+            modifier = "InverseTranspose";
+        } else if (consumeSuffix(stem, "INVERSE") || consumeSuffix(stem, "INV") ||
+                   consumePrefix(stem, "INVERSE") || consumePrefix(stem, "INV")) {
+            modifier = "Inverse";
+        }
+        static const std::pair<const char*, const char*> kMatrixNames[] = {
+            {"WORLD", "World"},
+            {"MODEL", "World"},
+            {"VIEW", "View"},
+            {"PROJ", "Projection"},
+            {"PROJECTION", "Projection"},
+            {"WORLDVIEW", "WorldView"},
+            {"MODELVIEW", "WorldView"},
+            {"WV", "WorldView"},
+            {"VIEWPROJ", "ViewProjection"},
+            {"VIEWPROJECTION", "ViewProjection"},
+            {"VP", "ViewProjection"},
+            {"WORLDVIEWPROJ", "WorldViewProjection"},
+            {"WORLDVIEWPROJECTION", "WorldViewProjection"},
+            {"MODELVIEWPROJ", "WorldViewProjection"},
+            {"MODELVIEWPROJECTION", "WorldViewProjection"},
+            {"WVP", "WorldViewProjection"},
+            {"MVP", "WorldViewProjection"},
+        };
+        for (const auto& [text, semantic] : kMatrixNames)
+            if (stem == text) return semantic + modifier;
+        return "";
+    }
+    const bool isVector = type.shape == Shape::Vector && type.cols >= 3 && type.arrayDims.empty();
+    if (isVector) {
+        static const std::pair<const char*, const char*> kVectorNames[] = {
+            {"EYEPOS", "CameraPosition"},         {"EYEPOSW", "CameraPosition"},
+            {"EYEPOSITION", "CameraPosition"},    {"EYEPOSITIONW", "CameraPosition"},
+            {"EYEPT", "CameraPosition"},          {"EYE", "CameraPosition"},
+            {"CAMERAPOS", "CameraPosition"},      {"CAMERAPOSW", "CameraPosition"},
+            {"CAMERAPOSITION", "CameraPosition"}, {"CAMPOS", "CameraPosition"},
+            {"VIEWPOS", "CameraPosition"},        {"VIEWPOSITION", "CameraPosition"},
+            {"VIEWERPOS", "CameraPosition"},      {"LIGHTDIR", "LightDirection"},
+            {"LIGHTDIRW", "LightDirection"},      {"LIGHTDIRECTION", "LightDirection"},
+            {"LIGHTPOS", "LightPosition"},        {"LIGHTPOSW", "LightPosition"},
+            {"LIGHTPOSITION", "LightPosition"},
+        };
+        for (const auto& [text, semantic] : kVectorNames)
+            if (stem == text) return semantic;
+        return "";
+    }
+    if (type.shape == Shape::Scalar && type.arrayDims.empty() &&
+        (stem == "TIME" || stem == "TOTALTIME" || stem == "APPTIME"))
+        return "Time";
+    return "";
+}
+
+SemanticBinding classifySemantic(const ParameterInfo& parameter, std::string& lightName) {
+    SemanticBinding binding;
+    lightName.clear();
+    const std::string upperSemantic = upperCase(parameter.semantic);
+    for (const auto& [text, kind] : kTunableSemantics) {
+        if (upperSemantic == upperCase(text)) {
+            binding.kind = kind;
+            return binding;
+        }
+    }
+    // The runtime writes numbers into parameters it may change.
+    if (parameter.isStatic || !parameter.type.isNumeric()) return binding;
+    binding.byName = parameter.semantic.empty();
+    const std::string semantic = binding.byName ? conventionalSemantic(parameter) : parameter.semantic;
+    if (semantic.empty() || !classifyBound(semantic, binding)) return SemanticBinding{};
+
+    const SemanticKind kind = binding.kind;
+    const bool isCascadeProperty =
+        kind == SemanticKind::CascadeViewProjection || kind == SemanticKind::CascadeAtlasRects ||
+        kind == SemanticKind::CascadeSplitDepths || kind == SemanticKind::CubeFaceSelect;
+    const bool isLightProperty = kind == SemanticKind::LightPosition ||
+                                 kind == SemanticKind::LightDirection || kind == SemanticKind::LightColor ||
+                                 kind == SemanticKind::LightAreaRadius || isCascadeProperty;
+    // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
+    // LightPosition/LightDirection/LightColor and the cascades default to light0.
+    if (!parameter.light.empty() ||
+        (isLightProperty && (upperCase(semantic).rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
+        lightName = parameter.light.empty() ? "light0" : parameter.light;
+        if (binding.kind == SemanticKind::ObjectColor) binding.kind = SemanticKind::LightColor;
+    }
+    return binding;
+}
+
+}  // namespace fx

@@ -1,0 +1,172 @@
+// What the compiler resolves for the runtime so that the runtime reads no text: each parameter's semantic
+// as an enum (fx/ParameterSemantics.h) with the light it names as an index, and what each stage's code
+// does besides computing its outputs (fx::StageEffects), read from its SPIR-V.
+#include <fx/CompiledEffect.h>
+#include <fx/EffectCompiler.h>
+#include <fx/EffectParser.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace fx {
+namespace {
+
+std::shared_ptr<CompiledEffect> compile(const std::string& source, const std::string& name) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(source, name, ParseOptions{}, diagnostics);
+    EXPECT_TRUE(effect) << diagnostics.str();
+    if (!effect) return nullptr;
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    EXPECT_TRUE(compiled) << diagnostics.str();
+    return compiled;
+}
+
+const SemanticBinding& standard(const CompiledEffect& effect, const std::string& parameter) {
+    const ParameterInfo* info = effect.findParameter(parameter);
+    EXPECT_TRUE(info) << parameter;
+    static const SemanticBinding kNone;
+    return info ? info->standard : kNone;
+}
+
+int lightIndex(const CompiledEffect& effect, const std::string& light) {
+    const auto found = std::find(effect.lights.begin(), effect.lights.end(), light);
+    return found == effect.lights.end() ? -2 : static_cast<int>(found - effect.lights.begin());
+}
+
+TEST(ParameterSemantics, TheCompilerClassifiesEachParameterOnce) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+float4x4 WvpIT : worldviewprojectionINVERSETRANSPOSE;
+float4x4 gWorldViewProj;
+float3 gEyePosW;
+float3 SunPosition : LightPosition;
+float3 PlainPosition : Position;
+float4 SunColour : Diffuse < string Object = "sun"; >;
+float4 ObjectColour : Diffuse;
+float4x4 SunViewProjection : ViewProjection < string frustum = "sun"; >;
+float Scale : LISPSMNSCALE;
+string Choice : LiSPSMNOpt = "Reparametrized";
+float4 MapSize : ShadowMapDimensions;
+static const float4x4 Fixed : World = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+float4 VS(float4 p : POSITION) : POSITION {
+    return mul(p, WvpIT) + mul(p, gWorldViewProj) + mul(p, SunViewProjection) + Fixed[0] +
+           float4(gEyePosW + SunPosition + PlainPosition, Scale) + SunColour + ObjectColour + MapSize;
+}
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                                           "semantics.fx");
+    ASSERT_TRUE(effect);
+    const SemanticBinding& wvp = standard(*effect, "WvpIT");
+    EXPECT_EQ(wvp.kind, SemanticKind::WorldViewProjection);
+    EXPECT_TRUE(wvp.inverse && wvp.transpose && !wvp.byName);
+    EXPECT_EQ(wvp.light, -1);
+    EXPECT_EQ(semanticBindingName(wvp), "WorldViewProjectionInverseTranspose");
+
+    // Written without a semantic, bound by the name FX11 applications set it by.
+    const SemanticBinding& byName = standard(*effect, "gWorldViewProj");
+    EXPECT_EQ(byName.kind, SemanticKind::WorldViewProjection);
+    EXPECT_TRUE(byName.byName);
+    EXPECT_EQ(standard(*effect, "gEyePosW").kind, SemanticKind::CameraPosition);
+
+    // A light property without an annotation is light0's; a plain Position is the object's: no light.
+    EXPECT_EQ(standard(*effect, "SunPosition").kind, SemanticKind::LightPosition);
+    EXPECT_EQ(standard(*effect, "SunPosition").light, lightIndex(*effect, "light0"));
+    EXPECT_EQ(standard(*effect, "PlainPosition").kind, SemanticKind::LightPosition);
+    EXPECT_EQ(standard(*effect, "PlainPosition").light, -1);
+    // Diffuse is the object's colour, or with an Object annotation the light's.
+    EXPECT_EQ(standard(*effect, "SunColour").kind, SemanticKind::LightColor);
+    EXPECT_EQ(standard(*effect, "SunColour").light, lightIndex(*effect, "sun"));
+    EXPECT_EQ(standard(*effect, "ObjectColour").kind, SemanticKind::ObjectColor);
+    EXPECT_EQ(standard(*effect, "SunViewProjection").kind, SemanticKind::ViewProjection);
+    EXPECT_EQ(standard(*effect, "SunViewProjection").light, lightIndex(*effect, "sun"));
+
+    // Tunables, whatever their type; the user's own semantics and statics are left alone.
+    EXPECT_EQ(standard(*effect, "Scale").kind, SemanticKind::LispsmNScale);
+    EXPECT_EQ(standard(*effect, "Choice").kind, SemanticKind::LispsmNOpt);
+    EXPECT_EQ(standard(*effect, "MapSize").kind, SemanticKind::None);
+    EXPECT_EQ(standard(*effect, "Fixed").kind, SemanticKind::None);
+
+    // The parameters' lights come first, in parameter order.
+    ASSERT_EQ(effect->lights.size(), 2u);
+    EXPECT_EQ(effect->lights[0], "light0");
+    EXPECT_EQ(effect->lights[1], "sun");
+}
+
+TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
+    for (const std::string& name : standardSemanticNames()) {
+        SCOPED_TRACE(name);
+        // Whatever the type it is written on, a semantic the runtime lists is one it takes.
+        const std::shared_ptr<CompiledEffect> effect =
+            compile("float4x4 P : " + name +
+                        ";\nfloat4 VS(float4 p : POSITION) : POSITION { return mul(p, P); }\n"
+                        "technique t { pass p { VertexShader = compile vs_3_0 VS(); } }\n",
+                    "named.fx");
+        ASSERT_TRUE(effect);
+        EXPECT_NE(standard(*effect, "P").kind, SemanticKind::None);
+    }
+}
+
+const CompiledPass& onlyPass(const CompiledEffect& effect) {
+    return effect.techniques.at(0).passes.at(0);
+}
+
+// What the runtime enables per program (clip planes, program point size) and whether a pass without
+// colour writes may leave its pixel stage out: from the SPIR-V, never from the GLSL's text.
+TEST(StageEffects, ComeFromTheCompiledCode) {
+    const std::shared_ptr<CompiledEffect> plain = compile(R"(
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return 1; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                                          "plain.fx");
+    ASSERT_TRUE(plain);
+    const StageEffects& none = onlyPass(*plain).fragment.effects;
+    EXPECT_FALSE(none.discards || none.writesDepth || none.writesSampleMask || none.writesImages ||
+                 none.writesBuffers || none.atomics);
+    EXPECT_FALSE(onlyPass(*plain).vertex.effects.writesDiffuse);
+    EXPECT_EQ(onlyPass(*plain).vertex.effects.clipDistances, 0);
+
+    const std::shared_ptr<CompiledEffect> busy = compile(R"(
+struct VOut { float4 Pos : POSITION; float4 Colour : COLOR0; float Size : PSIZE; float2 Clip : SV_ClipDistance0; };
+VOut VS(float4 p : POSITION) { VOut o; o.Pos = p; o.Colour = p; o.Size = 2; o.Clip = p.xy; return o; }
+struct POut { float4 Colour : COLOR0; float Depth : DEPTH; };
+POut PS(float4 c : COLOR0) { clip(c.x - 0.5); POut o; o.Colour = c; o.Depth = c.y; return o; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                                         "busy.fx");
+    ASSERT_TRUE(busy);
+    const StageEffects& vertex = onlyPass(*busy).vertex.effects;
+    EXPECT_TRUE(vertex.writesDiffuse);
+    EXPECT_TRUE(vertex.writesPointSize);
+    EXPECT_EQ(vertex.clipDistances, 2);
+    const StageEffects& pixel = onlyPass(*busy).fragment.effects;
+    EXPECT_TRUE(pixel.discards);
+    EXPECT_TRUE(pixel.writesDepth);
+    EXPECT_FALSE(pixel.writesImages || pixel.atomics);
+}
+
+TEST(StageEffects, ImageStoresAndAtomics) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+RWTexture2D<float4> Field < int Width = 8; int Height = 8; >;
+RWStructuredBuffer<uint> Counts;
+[numthreads(8, 8, 1)]
+void Fill(uint3 id : SV_DispatchThreadID)
+{
+    Field[id.xy] = float4(id.x, id.y, 0, 1);
+    InterlockedAdd(Counts[0], 1);
+}
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Fill())); } }
+)",
+                                                           "compute.fx");
+    ASSERT_TRUE(effect);
+    const StageEffects& compute = onlyPass(*effect).compute.effects;
+    EXPECT_TRUE(compute.writesImages);
+    EXPECT_TRUE(compute.atomics);
+    EXPECT_TRUE(compute.writesBuffers);
+    EXPECT_FALSE(compute.discards);
+}
+
+}  // namespace
+}  // namespace fx
