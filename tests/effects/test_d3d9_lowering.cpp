@@ -13,6 +13,16 @@ namespace {
 // The scene's objects cover this share of the frame at least (the teapot at 64x48).
 constexpr int kMinObjectPixels = 64 * 48 / 20;
 
+// Renders the effect's technique (its first when none is named) on the teapot scene at 64x48 and checks
+// that the frame is not one colour and that the objects came out in exactly the colour (r, g, b).
+void expectObjectsInColour(runtime::EffectRenderer& renderer, int r, int g, int b,
+                           const std::string& technique = "") {
+    ASSERT_TRUE(render(renderer, *runtime::makeBuiltinScene("teapot"), 64, 48, technique));
+    const runtime::FrameImage frame = renderer.readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, r, g, b), kMinObjectPixels);
+}
+
 // The vertex shader writes TEXCOORD0 only; the pixel shader also reads TEXCOORD1 and COLOR1, which D3D9
 // reads as 0. The objects come out in exactly the colour of the written part.
 constexpr const char* kUnwrittenInput = R"(
@@ -33,10 +43,7 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9Lowering, PixelInputTheVertexShaderDoesNotWriteReadsZero) {
     auto renderer = loadEffect(kUnwrittenInput, false, "unwritten_input.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 51, 153, 102);
 }
 
 // `float2 Jitter[3] : TEXCOORD1` takes TEXCOORD1..3; `uniform bool` is given a literal `true`; the static
@@ -63,11 +70,8 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(true); PixelShader = com
 TEST(D3d9Lowering, ArrayInputBoolLiteralArgumentAndStaticFromAFunction) {
     auto renderer = loadEffect(kArraysAndStatics, false, "arrays_and_statics.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
     // (0.5 + 0.2, 0.25 + 0.1, 0.2): each element of the array came through its own semantic.
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 179, 89, 51), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 179, 89, 51);
 }
 
 // The DirectX SDK's PRT samples' vertex shader: an array-typed input (`float4 Weights[1] : BLENDWEIGHT1`,
@@ -92,10 +96,7 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(true); PixelShader = com
 TEST(D3d9Lowering, BoolLiteralArgumentAfterAnArrayInput) {
     auto renderer = loadEffect(kArrayInputBeforeBool, false, "array_input_before_bool.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 51, 153, 102), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 51, 153, 102);
 }
 
 // FX Composer's shadow-map effects pass the depth target's sampler to the pixel shader as a compile
@@ -141,10 +142,7 @@ technique T < string Script =
 TEST(D3d9Lowering, DepthSamplerCompileArgumentComparesDepth) {
     auto renderer = loadEffect(kDepthSamplerArgument, false, "depth_sampler_argument.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 255, 0, 102);
 }
 
 // The depth sampler passed on through function parameters: a pixel shader hands the global to a helper,
@@ -206,10 +204,7 @@ TEST(D3d9Lowering, DepthSamplerPassedOnToFunctionsComparesDepth) {
     ASSERT_TRUE(renderer);
     for (const char* technique : {"Global", "Argument"}) {
         SCOPED_TRACE(technique);
-        ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48, technique));
-        const runtime::FrameImage frame = renderer->readFrame();
-        ASSERT_TRUE(notConstant(frame));
-        EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 0, 102), kMinObjectPixels);
+        expectObjectsInColour(*renderer, 255, 0, 102, technique);
     }
 }
 
@@ -230,10 +225,7 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9Lowering, LoopVariableReadAfterTheLoop) {
     auto renderer = loadEffect(kLoopVariableAfterTheLoop, false, "loop_variable.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 76, 153, 102), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 76, 153, 102);
 }
 
 // An XNA engine's material normalizes the camera's direction in the vertex shader, a zero vector where the
@@ -257,10 +249,7 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 TEST(D3d9Lowering, CubeLookupInADirectionThatIsNotFinite) {
     auto renderer = loadEffect(kCubeLookupNotFinite, false, "cube_not_finite.fx");
     ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
-    const runtime::FrameImage frame = renderer->readFrame();
-    ASSERT_TRUE(notConstant(frame));
-    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 128, 128, 128), kMinObjectPixels);
+    expectObjectsInColour(*renderer, 128, 128, 128);
 }
 
 }  // namespace
