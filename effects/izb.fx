@@ -44,17 +44,19 @@ float Script : STANDARDSGLOBAL
 > = 0.8;
 
 // [SECTION] Tweakables
-// How far the receiver moves along its normal (toward the light's side) before the test, in world units:
-// the receiver's own triangle lies behind it, where float rounding would otherwise let it shadow itself.
-// The ray-cast truth moves 1e-4 of the scene's radius (1 mm in a 10-unit scene).
+// How far the receiver moves along its normal (toward the light's side) before the test, as a fraction of
+// the light frustum's width at the receiver: the receiver's own triangle lies behind it, where float
+// rounding would otherwise let it shadow itself. A fraction, not world units, so that a scene scaled by
+// 1e-3 or 1e4 is answered alike (stress cases scaled-1e-3, scaled-1e4); the ray-cast truth moves 1e-4 of
+// the scene's radius, about half this default where the fit spans the scene.
 float ReceiverOffset
 <
     string UIWidget = "slider";
-    string UIName = "Receiver offset along the normal (world units)";
-    float UIMin = 0.0001;
-    float UIMax = 0.05;
-    bool LogScale = true;
-> = 0.002;
+    string UIName = "Receiver offset along the normal (fraction of the light frustum's width)";
+    float UIMin = 0.000001;
+    float UIMax = 0.001;
+    string UIScale = "log";
+> = 0.0001;
 
 // The fit's tunables, as lispsm.fx declares them: they move texels, never the answer, only the time.
 bool FitVisible : LightFitVisibleSamples
@@ -154,7 +156,11 @@ float4 ReceiverPS(ReceiverPixel IN) : SV_Target
     float3 toLight = normalize(DirectionToLight());
     if (dot(normal, toLight) <= 0.0)
         return NoReceiver;
-    float4 clip = mul(float4(IN.World + normal * ReceiverOffset, 1.0), LightViewProjectionMatrix);
+    float4 visible = mul(float4(IN.World, 1.0), LightViewProjectionMatrix);
+    if (visible.w <= 0.0)
+        return NoReceiver;
+    float frustumWidth = 2.0 * visible.w / abs(LightProjectionMatrix._11);
+    float4 clip = mul(float4(IN.World + normal * ReceiverOffset * frustumWidth, 1.0), LightViewProjectionMatrix);
     if (clip.w <= 0.0)
         return NoReceiver;
     float3 ndc = clip.xyz / clip.w;
@@ -345,7 +351,7 @@ technique11 exact
 <
     string Script = "Pass=ClearHeads; Pass=Receivers; Pass=Build; Pass=Occlude; Pass=Shade;";
     string ExpectScenes = "dual-l,teapot";
-    float ExpectMisclassifiedBelow = 0.012;  // measured 0.000 % on dual-l, 0.008 % on teapot (hard truth)
+    float ExpectMisclassifiedBelow = 0.01;  // measured 0.000 % on dual-l and on the teapot (hard truth)
     int ExpectMapSize = 512;
 >
 {
