@@ -3,7 +3,8 @@
 // wide and run far across it. The thesis's plain shadow map at the same map size (256²) finds a third of
 // the truly shadowed pixels and shadows much of the lit ground under so low a sun (measured: 300 of 853
 // found, 30.2 % misclassified); the irregular z-buffer tests every camera pixel against the casters'
-// triangles themselves (853 of 853, 0.000 %). A blank or constant frame finds none.
+// triangles themselves (853 of 853, 0.000 %). A blank or constant frame finds none. The frames are drawn
+// with leave-out on, as an application draws them: the passes that write only the lists' buffers must run.
 #include "VisibilityHarness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
