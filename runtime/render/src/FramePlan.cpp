@@ -7,6 +7,19 @@
 
 namespace runtime {
 
+bool passWritesStorage(const fx::CompiledEffect& effect, const fx::CompiledPass& pass) {
+    for (const fx::StageProgram* stage :
+         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment}) {
+        if (!stage->images.empty()) return true;
+        for (const fx::StorageBufferBinding& buffer : stage->storageBuffers) {
+            const fx::BaseType base = effect.parameters[buffer.parameter].type.base;
+            if (base != fx::BaseType::StructuredBuffer && base != fx::BaseType::ByteAddressBuffer)
+                return true;
+        }
+    }
+    return false;
+}
+
 uint64_t hashCombine(uint64_t seed, uint64_t value) {
     uint64_t z = seed ^ (value + 0x9E3779B97F4A7C15ull + (seed << 6) + (seed >> 2));
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -73,7 +86,7 @@ void FramePlan::markDead(const std::vector<int>& outputs, bool leaveOut) {
         for (auto op = ops.rbegin(); op != ops.rend(); ++op) {
             if (op->leftOut != LeftOut::No) continue;
             const bool needed = std::any_of(op->writes.begin(), op->writes.end(),
-                                            [&](int w) { return track(w).live || isStreamOutResource(w); });
+                                            [&](int w) { return track(w).live || isPassOutputResource(w); });
             if (!needed) {
                 op->leftOut = LeftOut::Dead;
                 continue;

@@ -150,9 +150,12 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     // writes no target); a DrawAuto pass reads the capture it draws.
     if (pass.streamOut) {
         if (!pass.streamOut->rasterizes) op.writes.clear();
-        op.writes.push_back(streamOutResource(index));
+        op.writes.push_back(passOutputResource(index));
+    } else if (passWritesStorage(mResources.effect(), pass)) {
+        // A pass drawing into no target but a buffer (an irregular z-buffer's list building) is not dead.
+        op.writes.push_back(passOutputResource(index));
     }
-    if (pass.drawAuto >= 0) op.reads.push_back(streamOutResource(static_cast<size_t>(pass.drawAuto)));
+    if (pass.drawAuto >= 0) op.reads.push_back(passOutputResource(static_cast<size_t>(pass.drawAuto)));
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
         for (const fx::SamplerBinding& binding : stage->samplers) {

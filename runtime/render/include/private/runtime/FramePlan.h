@@ -20,23 +20,30 @@
 #include <vector>
 
 namespace fx {
+struct CompiledEffect;
+struct CompiledPass;
 struct CompiledTechnique;
-}
+}  // namespace fx
 
 namespace runtime {
 
 // A resource an operation writes or reads: a texture parameter index, or the frame's own targets.
 constexpr int kFrameColor = -1;
 constexpr int kFrameDepth = -2;
-// A stream-output pass's capture (its StreamOutBuffers): written by the pass's draws, read by the passes
-// that draw it (DrawAuto). Always live: the next frame and the application read it too.
-constexpr int kFirstStreamOut = -16;
-constexpr int streamOutResource(size_t pass) {
-    return kFirstStreamOut - static_cast<int>(pass);
+// What a pass's draws write besides its targets: a stream-output pass's capture (its StreamOutBuffers),
+// read by the passes that draw it (DrawAuto), and the storage buffers and images its shaders write
+// (RWStructuredBuffer, RWTexture2D, ...), read by any later pass or dispatch. Always live, never cached:
+// the next frame and the application read them too, and the plan does not follow them.
+constexpr int kFirstPassOutput = -16;
+constexpr int passOutputResource(size_t pass) {
+    return kFirstPassOutput - static_cast<int>(pass);
 }
-constexpr bool isStreamOutResource(int resource) {
-    return resource <= kFirstStreamOut;
+constexpr bool isPassOutputResource(int resource) {
+    return resource <= kFirstPassOutput;
 }
+// Whether a graphics stage of `pass` may write a storage buffer or an image (the read-only
+// StructuredBuffer and ByteAddressBuffer cannot).
+bool passWritesStorage(const fx::CompiledEffect& effect, const fx::CompiledPass& pass);
 
 // Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
 // the scene does not need it (its pass's `LeaveOutWhen` annotation, or a cascade draw whose depth slice
