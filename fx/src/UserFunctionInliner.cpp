@@ -4,7 +4,8 @@
 // struct is an aggregate: an InitList whose castType is its type and whose args are its elements or
 // members, each such an expression; reading a part picks it (by a select on the index where the index
 // reads a parameter), writing one rebuilds the aggregate, and a select between two aggregates is the
-// aggregate of the selects of their parts, so that no aggregate reaches the host evaluator.
+// aggregate of the selects of their parts, so that the host evaluator sees no struct, and an array only
+// as the initializer list it already reads.
 #include "UserFunctionInliner.h"
 
 #include "ComposedIntrinsics.h"
