@@ -410,7 +410,8 @@ std::shared_ptr<Effect> parseEffectSource(const std::string& source, const std::
     detail::Parser parser(std::move(tokens), pp.text, *effect, counted);
     parser.parseEffect();
     if (counted.errors() > 0) return nullptr;
-    detail::inlineUserFunctionCalls(*effect);
+    detail::inlineUserFunctionCalls(*effect, counted);
+    if (counted.errors() > 0) return nullptr;
     return effect;
 }
 

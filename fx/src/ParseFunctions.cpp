@@ -92,7 +92,7 @@ void Parser::parseFunction(size_t first, const TypeDesc& returnType, const Token
         }
         last = mPos - 1;
         rejectLocalAnnotations(bodyBegin, last);
-        decl.straightBody = parseStraightBody(bodyBegin, last);
+        decl.straightBody = parseStraightBody(bodyBegin, last, decl.returnType);
         mFunctionRanges.push_back({mEffect.functions.size(), first, last});
     }
     decl.hlslText = sliceText(first, last);
@@ -121,7 +121,8 @@ void Parser::rejectLocalAnnotations(size_t begin, size_t end) {
     }
 }
 
-std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, size_t end) {
+std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, size_t end,
+                                                               const TypeDesc& returnType) {
     using Statement = FunctionDecl::Statement;
     const size_t resume = mPos;
     std::vector<Statement> body;
@@ -130,6 +131,11 @@ std::vector<FunctionDecl::Statement> Parser::parseStraightBody(size_t begin, siz
     try {
         mPos = begin;
         while (mPos < end) parseStraightStatement(body);
+        // A void function returns where its body ends.
+        if (returnType.base == BaseType::Void && returnType.arrayDims.empty() &&
+            (body.empty() || body.back().kind != Statement::Kind::Return))
+            body.emplace_back();
+        lowerReturnsInLoops(body, returnType);
         if (mPos != end || !endsInReturns(body)) body.clear();
     } catch (const SyntaxError&) {
         body.clear();
@@ -190,6 +196,9 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
         };
         if (reads(angle)) throw SyntaxError{};
         for (Statement* written : {&sine, &cosine}) {
+            written->target.kind = Expr::Kind::Identifier;
+            written->target.text = written->name;
+            written->target.loc = at.loc;
             written->value.kind = Expr::Kind::Call;
             written->value.text = written == &sine ? "sin" : "cos";
             written->value.loc = at.loc;
@@ -211,12 +220,19 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
     }
     if (accept("return")) {
         statement.kind = Statement::Kind::Return;
-        statement.value = parseExpr();
-        statement.hasValue = true;
+        if (!check(";")) {
+            statement.value = parseExpr();
+            statement.hasValue = true;
+        }
     } else if (check("break") || check("continue")) {
         if (mStraightLoops == 0) throw SyntaxError{};  // a `switch`'s break: not straight code
         statement.kind = advance().is("break") ? Statement::Kind::Break : Statement::Kind::Continue;
     } else if (parseStraightAssignment(statement)) {
+    } else if (peek().kind == Token::Kind::Identifier && peek(1).is("(")) {
+        // A call for what it writes to its `out` arguments.
+        statement.kind = Statement::Kind::Evaluate;
+        statement.value = parseExpr();
+        statement.hasValue = true;
     } else {
         accept("const");
         accept("static");
@@ -226,7 +242,7 @@ void Parser::parseStraightStatement(std::vector<FunctionDecl::Statement>& out) {
             declaration.kind = Statement::Kind::Declare;
             declaration.type = type;
             declaration.name = expectIdentifier("a name").text;
-            if (check("[")) throw SyntaxError{};  // local arrays: not straight-line values
+            parseArrayDims(declaration.type);
             if (accept("=")) {
                 declaration.value = parseExpr();
                 declaration.hasValue = true;
@@ -251,37 +267,76 @@ bool Parser::parseStraightAssignment(FunctionDecl::Statement& statement) {
         e.loc = at.loc;
         return e;
     };
-    // ++i, --i
+    // ++x, --x
     if ((check("++") || check("--")) && peek(1).kind == Token::Kind::Identifier) {
         const Token& op = advance();
         statement.kind = Statement::Kind::Assign;
-        statement.name = advance().text;
+        statement.target = parseAssignmentTarget(statement.name);
         statement.op = op.is("++") ? "+=" : "-=";
         statement.value = one(op);
         statement.hasValue = true;
         return true;
     }
     if (peek().kind != Token::Kind::Identifier) return false;
-    // i++, i--
-    if (peek(1).is("++") || peek(1).is("--")) {
-        statement.kind = Statement::Kind::Assign;
-        statement.name = advance().text;
-        const Token& op = advance();
+    const Token& after = mTokens[std::min(targetEnd(mPos), mTokens.size() - 1)];
+    if (!isAssignment(after) && !after.is("++") && !after.is("--")) return false;
+    statement.kind = Statement::Kind::Assign;
+    statement.target = parseAssignmentTarget(statement.name);
+    const Token& op = advance();
+    statement.hasValue = true;
+    if (op.is("++") || op.is("--")) {  // x++, x--
         statement.op = op.is("++") ? "+=" : "-=";
         statement.value = one(op);
-        statement.hasValue = true;
         return true;
     }
-    if (!isAssignment(peek(1)) &&
-        !(peek(1).is(".") && peek(2).kind == Token::Kind::Identifier && isAssignment(peek(3))))
-        return false;
-    statement.kind = Statement::Kind::Assign;
-    statement.name = advance().text;
-    if (accept(".")) statement.member = advance().text;
-    statement.op = advance().text;
+    statement.op = op.text;
     statement.value = parseExpr();
-    statement.hasValue = true;
     return true;
+}
+
+size_t Parser::targetEnd(size_t at) const {
+    size_t i = at + 1;
+    while (i < mTokens.size()) {
+        if (mTokens[i].is(".") && i + 1 < mTokens.size() && mTokens[i + 1].kind == Token::Kind::Identifier) {
+            i += 2;
+        } else if (mTokens[i].is("[")) {
+            int depth = 0;
+            for (; i < mTokens.size(); ++i) {
+                if (mTokens[i].is("[")) ++depth;
+                if (mTokens[i].is("]") && --depth == 0) break;
+            }
+            ++i;
+        } else {
+            break;
+        }
+    }
+    return i;
+}
+
+Expr Parser::parseAssignmentTarget(std::string& local) {
+    const Token& name = expectIdentifier("a name");
+    local = name.text;
+    Expr target;
+    target.kind = Expr::Kind::Identifier;
+    target.text = name.text;
+    target.loc = name.loc;
+    for (;;) {
+        Expr part;
+        part.loc = peek().loc;
+        if (accept(".")) {
+            part.kind = Expr::Kind::Member;
+            part.text = expectIdentifier("a member").text;
+            part.args.push_back(std::move(target));
+        } else if (accept("[")) {
+            part.kind = Expr::Kind::Index;
+            part.args.push_back(std::move(target));
+            part.args.push_back(parseExpr());
+            expect("]");
+        } else {
+            return target;
+        }
+        target = std::move(part);
+    }
 }
 
 void Parser::parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>& out) {
@@ -307,7 +362,6 @@ void Parser::parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>&
     ++mStraightLoops;
     parseStraightStatement(loop.then);
     --mStraightLoops;
-    if (containsReturn(loop.then)) throw SyntaxError{};  // leaving a loop early: not unrolled here
     out.push_back(std::move(loop));
 }
 
@@ -317,6 +371,87 @@ bool Parser::containsReturn(const std::vector<FunctionDecl::Statement>& statemen
             containsReturn(s.otherwise))
             return true;
     return false;
+}
+
+// A `return` inside a loop, as fxc's unrolled code had it: the value is kept in `$result`, `$returned`
+// set and the loop left; after each loop that held one, `$returned` leaves the enclosing loop too, or,
+// outside every loop, returns the value kept (the rest of the body then reads as that branch's `else`,
+// endsInReturns). The names are no HLSL identifiers, so they hide none of the function's.
+void Parser::lowerReturnsInLoops(std::vector<FunctionDecl::Statement>& body, const TypeDesc& returnType) {
+    using Statement = FunctionDecl::Statement;
+    const bool returnsValue = returnType.base != BaseType::Void || !returnType.arrayDims.empty();
+    const auto name = [](const char* text) {
+        Expr e;
+        e.kind = Expr::Kind::Identifier;
+        e.text = text;
+        return e;
+    };
+    const auto assign = [&](const char* local, Expr value) {
+        Statement s;
+        s.kind = Statement::Kind::Assign;
+        s.name = local;
+        s.target = name(local);
+        s.op = "=";
+        s.value = std::move(value);
+        s.hasValue = true;
+        return s;
+    };
+    std::function<bool(std::vector<Statement>&, bool)> lower = [&](std::vector<Statement>& list,
+                                                                   bool inLoop) {
+        bool returns = false;
+        for (size_t i = 0; i < list.size(); ++i) {
+            Statement& s = list[i];
+            if (s.kind == Statement::Kind::Return && inLoop) {
+                std::vector<Statement> leaving;
+                if (s.hasValue) leaving.push_back(assign("$result", std::move(s.value)));
+                Expr yes;
+                yes.kind = Expr::Kind::Bool;
+                yes.number = 1;
+                leaving.push_back(assign("$returned", std::move(yes)));
+                leaving.emplace_back().kind = Statement::Kind::Break;
+                list.erase(list.begin() + static_cast<long>(i));
+                list.insert(list.begin() + static_cast<long>(i), leaving.begin(), leaving.end());
+                i += leaving.size() - 1;
+                returns = true;
+            } else if (s.kind == Statement::Kind::If) {
+                const bool inThen = lower(s.then, inLoop);
+                const bool inOtherwise = lower(s.otherwise, inLoop);
+                returns = returns || inThen || inOtherwise;
+            } else if (s.kind == Statement::Kind::Loop && lower(s.then, true)) {
+                Statement after;
+                after.kind = Statement::Kind::If;
+                after.value = name("$returned");
+                Statement& leave = after.then.emplace_back();
+                leave.kind = inLoop ? Statement::Kind::Break : Statement::Kind::Return;
+                if (!inLoop && returnsValue) {
+                    leave.value = name("$result");
+                    leave.hasValue = true;
+                }
+                list.insert(list.begin() + static_cast<long>(i) + 1, std::move(after));
+                ++i;
+                returns = true;
+            }
+        }
+        return returns;
+    };
+    std::vector<Statement> lowered = body;
+    if (!lower(lowered, false)) return;
+    Statement returned;
+    returned.kind = Statement::Kind::Declare;
+    returned.name = "$returned";
+    returned.type.base = BaseType::Bool;
+    returned.value.kind = Expr::Kind::Bool;
+    returned.hasValue = true;
+    std::vector<Statement> declarations{std::move(returned)};
+    if (returnsValue) {
+        Statement result;
+        result.kind = Statement::Kind::Declare;
+        result.name = "$result";
+        result.type = returnType;
+        declarations.push_back(std::move(result));
+    }
+    body = std::move(declarations);
+    body.insert(body.end(), std::make_move_iterator(lowered.begin()), std::make_move_iterator(lowered.end()));
 }
 
 // An early return (`if (x < 0) return 0; ... return sqrt(x);`) reads as if the rest of the body were the

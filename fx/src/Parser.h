@@ -130,19 +130,26 @@ private:
 
     void parseFunction(size_t first, const TypeDesc& returnType, const Token& name);
 
-    // The statements of tokens [begin, end) if they are code without loops (FunctionDecl::straightBody),
+    // The statements of tokens [begin, end) if they are side-effect-free code (FunctionDecl::straightBody),
     // else nothing. Tried without reporting: any other body is HLSL's business, not the effect parser's.
-    std::vector<FunctionDecl::Statement> parseStraightBody(size_t begin, size_t end);
+    std::vector<FunctionDecl::Statement> parseStraightBody(size_t begin, size_t end,
+                                                           const TypeDesc& returnType);
     // fxc refuses annotations on a function's local variables; glslang's HLSL front end drops them.
     void rejectLocalAnnotations(size_t begin, size_t end);
 
     static bool isAssignment(const Token& t);
 
     // One statement (a block's statements, a declaration's declarators) appended to `out`; throws
-    // SyntaxError on anything else (loops, calls for their effect, returns inside branches).
+    // SyntaxError on anything else (a `switch`, a `do` loop, a `for` without a condition, ...).
     void parseStraightStatement(std::vector<FunctionDecl::Statement>& out);
-    // `x = e`, `x.yz += e`, `i++`, `--i` (no ';'); false, consuming nothing, if the tokens are none of them.
+    // `x = e`, `x.yz += e`, `w[i].y *= e`, `i++`, `--i` (no ';'); false, consuming nothing, if the tokens
+    // are none of them.
     bool parseStraightAssignment(FunctionDecl::Statement& statement);
+    // Where `name(.member | [index])*` starting at token `at` ends.
+    size_t targetEnd(size_t at) const;
+    // That target as an expression (Identifier, Member and Index nodes); `local` its name.
+    Expr parseAssignmentTarget(std::string& local);
+    static void lowerReturnsInLoops(std::vector<FunctionDecl::Statement>& body, const TypeDesc& returnType);
     // `for (init; condition; step) body` and `while (condition) body`, the keyword read.
     void parseStraightLoop(bool isFor, std::vector<FunctionDecl::Statement>& out);
     static bool containsReturn(const std::vector<FunctionDecl::Statement>& statements);

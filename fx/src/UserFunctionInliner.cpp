@@ -1,10 +1,17 @@
 // UserFunctionInliner: user-function calls in host-evaluated expressions become expressions (see the
 // header). Each parameter and local becomes its value's expression, converted to the declared type by a
-// cast, so that `float3 c = 1;` or an int parameter truncates exactly as the function would.
+// cast, so that `float3 c = 1;` or an int parameter truncates exactly as the function would. An array or
+// struct is an aggregate: an InitList whose castType is its type and whose args are its elements or
+// members, each such an expression; reading a part picks it (by a select on the index where the index
+// reads a parameter), writing one rebuilds the aggregate, and a select between two aggregates is the
+// aggregate of the selects of their parts, so that the host evaluator sees no struct, and an array only
+// as the initializer list it already reads.
 #include "UserFunctionInliner.h"
 
+#include "ComposedIntrinsics.h"
 #include "ConstantFolding.h"
 
+#include <fx/Diagnostics.h>
 #include <fx/Preshader.h>
 
 #include <algorithm>
@@ -30,7 +37,7 @@ constexpr int kMaxLoopIterations = 1024;
 
 class Inliner {
 public:
-    explicit Inliner(const Effect& effect) : mEffect(effect) {}
+    Inliner(const Effect& effect, DiagnosticSink& diagnostics) : mEffect(effect), mDiagnostics(diagnostics) {}
 
     // Rewrites a whole host expression (rewrite()), with a budget of its own.
     void rewriteExpression(Expr& e, bool expandStatics) {
@@ -52,73 +59,32 @@ public:
             return;
         }
         for (Expr& arg : e.args) rewrite(arg, depth, expandStatics);
-        if (e.kind != Expr::Kind::Call || depth >= kMaxInlineDepth) return;
-        const FunctionDecl* function = find(e.text, e.args.size());
-        if (!function) {
-            if (mEffect.findFunctions(e.text).empty()) expandIntrinsic(e);
+        if (e.kind != Expr::Kind::Call) {
+            project(e);
             return;
         }
-        std::optional<Expr> inlined = expand(*function, e, depth);
-        if (inlined) e = std::move(*inlined);
+        if (depth >= kMaxInlineDepth) return;
+        const FunctionDecl* function = find(e.text, e.args.size());
+        if (!function) {
+            if (mEffect.findFunctions(e.text).empty()) expandComposedIntrinsic(e);
+            return;
+        }
+        // A function that writes its arguments is inlined where a statement calls it (hoist()).
+        if (writesArguments(*function) || !returnsValue(function->returnType)) return;
+        if (depth == 0) mLoopFailure.reset();
+        std::optional<Outcome> inlined = expand(*function, e.args, e.loc, depth);
+        if (inlined) e = std::move(*inlined->value);
+        // A loop no host could unroll: said where the host expression calls the function, naming the loop.
+        if (depth == 0 && mLoopFailure) {
+            std::vector<std::string> args{e.text, mLoopFailure->loc.str()};
+            if (mLoopFailure->id == DiagId::HostLoopIterationLimit)
+                args.push_back(std::to_string(kMaxLoopIterations));
+            mDiagnostics.report(mLoopFailure->id, e.loc, args);
+            mLoopFailure.reset();
+        }
     }
 
 private:
-    // The intrinsics that D3DX's preshaders ran as a sequence of their instructions, written with those the
-    // host evaluator has (HLSL's definitions): ldexp, rcp, mad, sinh, cosh, tanh, reflect, faceforward,
-    // any, all and lit. Any other call stays as it is.
-    static void expandIntrinsic(Expr& e) {
-        const SourceLoc loc = e.loc;
-        auto number = [&](double value) {
-            Expr n;
-            n.kind = Expr::Kind::Number;
-            n.number = value;
-            n.loc = loc;
-            return n;
-        };
-        auto binary = [&](const char* op, Expr a, Expr b) {
-            return node(Expr::Kind::Binary, loc, op, {std::move(a), std::move(b)});
-        };
-        auto call = [&](const char* name, std::vector<Expr> args) {
-            return node(Expr::Kind::Call, loc, name, std::move(args));
-        };
-        auto negated = [&](Expr a) { return node(Expr::Kind::Unary, loc, "-", {std::move(a)}); };
-        const std::vector<Expr>& a = e.args;
-        const std::string& name = e.text;
-        if (name == "ldexp" && a.size() == 2) {
-            e = binary("*", a[0], call("exp2", {a[1]}));
-        } else if (name == "rcp" && a.size() == 1) {
-            e = binary("/", number(1), a[0]);
-        } else if (name == "mad" && a.size() == 3) {
-            e = binary("+", binary("*", a[0], a[1]), a[2]);
-        } else if ((name == "sinh" || name == "cosh") && a.size() == 1) {
-            e = binary("*",
-                       binary(name == "sinh" ? "-" : "+", call("exp", {a[0]}), call("exp", {negated(a[0])})),
-                       number(0.5));
-        } else if (name == "tanh" && a.size() == 1) {
-            // 1 - 2 / (e^2x + 1): ±1 where e^2x overflows or vanishes, not inf / inf.
-            e = binary(
-                "-", number(1),
-                binary("/", number(2), binary("+", call("exp", {binary("*", number(2), a[0])}), number(1))));
-        } else if (name == "reflect" && a.size() == 2) {
-            e = binary("-", a[0], binary("*", binary("*", number(2), call("dot", {a[0], a[1]})), a[1]));
-        } else if (name == "faceforward" && a.size() == 3) {
-            e = binary("*", negated(a[0]), call("sign", {call("dot", {a[1], a[2]})}));
-        } else if ((name == "any" || name == "all") && a.size() == 1) {
-            // Over the components that are not zero (1) or are (0): any sums the first, all the second.
-            Expr nonZero = call("abs", {call("sign", {a[0]})});
-            Expr counted = name == "any" ? nonZero : binary("-", number(1), nonZero);
-            Expr sum = call("dot", {counted, counted});
-            e = name == "any" ? binary(">", std::move(sum), number(0))
-                              : binary("==", std::move(sum), number(0));
-        } else if (name == "lit" && a.size() == 3) {
-            // As the shaders' replacement (HlslRewriting.h): the specular term is 0 where either cosine is.
-            Expr specular = node(Expr::Kind::Ternary, loc, "",
-                                 {binary("||", binary("<", a[0], number(0)), binary("<", a[1], number(0))),
-                                  number(0), call("pow", {call("max", {a[1], number(0)}), a[2]})});
-            e = call("float4", {number(1), call("max", {a[0], number(0)}), std::move(specular), number(1)});
-        }
-    }
-
     // A `static` global computed from others (`static float2 TexelOffsets = Offset / ScreenSize;`): D3DX
     // recomputed it whenever an input changed, a bound semantic such as VIEWPORTPIXELSIZE included. Its
     // slot holds the value of the defaults only, so a host expression that reads it reads the
@@ -132,15 +98,19 @@ private:
     }
 
     const FunctionDecl* find(const std::string& name, size_t arguments) const {
-        for (const FunctionDecl& f : mEffect.functions) {
-            if (f.name != name || !f.hasBody || f.straightBody.empty() || f.params.size() != arguments)
-                continue;
-            bool plain = true;
-            for (const FunctionParam& p : f.params)
-                plain = plain && p.direction == FunctionParam::Direction::In;
-            if (plain) return &f;
-        }
+        for (const FunctionDecl& f : mEffect.functions)
+            if (f.name == name && f.hasBody && !f.straightBody.empty() && f.params.size() == arguments)
+                return &f;
         return nullptr;
+    }
+
+    static bool writesArguments(const FunctionDecl& function) {
+        return std::any_of(function.params.begin(), function.params.end(), [](const FunctionParam& p) {
+            return p.direction != FunctionParam::Direction::In;
+        });
+    }
+    static bool returnsValue(const TypeDesc& type) {
+        return type.base != BaseType::Void || !type.arrayDims.empty();
     }
 
     static Expr cast(const TypeDesc& type, Expr value, const SourceLoc& loc) {
@@ -150,6 +120,239 @@ private:
         e.castType = type;
         e.args.push_back(std::move(value));
         return e;
+    }
+
+    static Expr integer(size_t value, const SourceLoc& loc) {
+        Expr e;
+        e.kind = Expr::Kind::Number;
+        e.number = static_cast<double>(value);
+        e.isInteger = true;
+        e.loc = loc;
+        return e;
+    }
+
+    // [SECTION] Aggregates: arrays and structs (see the file's comment)
+
+    static bool isAggregate(const Expr& e) {
+        return e.kind == Expr::Kind::InitList &&
+               (!e.castType.arrayDims.empty() || e.castType.base == BaseType::Struct);
+    }
+
+    // The parts of an array (its elements, named "") or a struct (its members); none for any other type,
+    // an unsized array or a struct the effect does not declare.
+    std::optional<std::vector<std::pair<std::string, TypeDesc>>> partsOf(const TypeDesc& type) const {
+        std::vector<std::pair<std::string, TypeDesc>> parts;
+        if (!type.arrayDims.empty()) {
+            if (type.arrayDims[0] <= 0) return std::nullopt;
+            TypeDesc element = type;
+            element.arrayDims.erase(element.arrayDims.begin());
+            parts.assign(static_cast<size_t>(type.arrayDims[0]), {"", element});
+            return parts;
+        }
+        const StructDecl* decl =
+            type.base == BaseType::Struct ? mEffect.findStruct(type.structName) : nullptr;
+        if (!decl || decl->members.empty()) return std::nullopt;
+        for (const StructMember& m : decl->members) parts.emplace_back(m.name, m.type);
+        return parts;
+    }
+
+    static bool isAggregateType(const TypeDesc& type) {
+        return !type.arrayDims.empty() || type.base == BaseType::Struct;
+    }
+
+    static Expr aggregate(const TypeDesc& type, std::vector<Expr> parts, const SourceLoc& loc) {
+        Expr e = node(Expr::Kind::InitList, loc, "", std::move(parts));
+        e.castType = type;
+        return e;
+    }
+
+    // Every number of `type` the scalar `value` (`(S)0`, a local declared without a value).
+    std::optional<Expr> broadcast(const TypeDesc& type, const Expr& value, const SourceLoc& loc) {
+        if (!isAggregateType(type)) return cast(type, value, loc);
+        const auto parts = partsOf(type);
+        if (!parts) return std::nullopt;
+        std::vector<Expr> pieces;
+        for (const auto& part : *parts) {
+            std::optional<Expr> piece = broadcast(part.second, value, loc);
+            if (!piece) return std::nullopt;
+            pieces.push_back(std::move(*piece));
+        }
+        return aggregate(type, std::move(pieces), loc);
+    }
+
+    // `value` as a local of `type` holds it: a number cast to the type; an array or struct an aggregate of
+    // its parts, so converted, from an aggregate or initializer list (a flat one too: `float2 w[2] = {1, 2,
+    // 3, 4};`), a cast of a scalar, or a parameter's parts where they stand. None where the host cannot
+    // take the value apart.
+    std::optional<Expr> typed(const TypeDesc& type, Expr value, const SourceLoc& loc) {
+        if (!isAggregateType(type)) return cast(type, std::move(value), loc);
+        const auto parts = partsOf(type);
+        if (!parts) return std::nullopt;
+        if (value.kind == Expr::Kind::Cast && value.args.size() == 1 && isAggregateType(value.castType)) {
+            // `(S)0` spreads the scalar; `(S)s` converts an aggregate.
+            const bool whole = value.args[0].kind == Expr::Kind::InitList;
+            std::optional<Expr> converted = whole ? typed(value.castType, value.args[0], loc)
+                                                  : broadcast(value.castType, value.args[0], loc);
+            if (!converted) return std::nullopt;
+            value = std::move(*converted);
+        }
+        std::vector<Expr> pieces;
+        if (value.kind == Expr::Kind::InitList && value.args.size() == parts->size()) {
+            pieces = std::move(value.args);
+        } else if (value.kind == Expr::Kind::InitList) {
+            size_t next = 0;
+            for (const auto& part : *parts) {
+                const size_t count = static_cast<size_t>(part.second.componentCount());
+                if (isAggregateType(part.second) || !part.second.isNumeric() ||
+                    next + count > value.args.size())
+                    return std::nullopt;
+                std::vector<Expr> numbers(value.args.begin() + static_cast<long>(next),
+                                          value.args.begin() + static_cast<long>(next + count));
+                next += count;
+                pieces.push_back(
+                    count == 1 ? std::move(numbers[0])
+                               : node(Expr::Kind::Call, loc, part.second.hlslName(), std::move(numbers)));
+            }
+            if (next != value.args.size()) return std::nullopt;
+        } else if (value.kind == Expr::Kind::Identifier && mEffect.findParameter(value.text)) {
+            for (size_t i = 0; i < parts->size(); ++i)
+                pieces.push_back((*parts)[i].first.empty()
+                                     ? node(Expr::Kind::Index, loc, "", {value, integer(i, loc)})
+                                     : node(Expr::Kind::Member, loc, (*parts)[i].first, {value}));
+        } else {
+            return std::nullopt;
+        }
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            std::optional<Expr> piece = typed((*parts)[i].second, std::move(pieces[i]), loc);
+            if (!piece) return std::nullopt;
+            pieces[i] = std::move(*piece);
+        }
+        return aggregate(type, std::move(pieces), loc);
+    }
+
+    static Expr equals(const Expr& index, size_t value, const SourceLoc& loc) {
+        return node(Expr::Kind::Binary, loc, "==", {index, integer(value, loc)});
+    }
+
+    // `condition ? a : b`, part by part where both are aggregates; `a` where both are the same.
+    Expr choose(const Expr& condition, Expr a, Expr b, const SourceLoc& loc) {
+        if (same(a, b)) return a;
+        if (isAggregate(a) && isAggregate(b) && a.args.size() == b.args.size()) {
+            for (size_t i = 0; i < a.args.size(); ++i)
+                a.args[i] = choose(condition, std::move(a.args[i]), std::move(b.args[i]), loc);
+            return a;
+        }
+        return node(Expr::Kind::Ternary, loc, "", {condition, std::move(a), std::move(b)});
+    }
+
+    // Element `index` of the aggregate array `whole`: the element where the index is known, else a chain of
+    // selects on its value; none for a known index out of range (the evaluator reports it).
+    std::optional<Expr> element(const Expr& whole, const Expr& index, const SourceLoc& loc) {
+        double k = 0;
+        if (constant(index, k)) {
+            if (k < 0 || k >= static_cast<double>(whole.args.size()) || k != std::trunc(k))
+                return std::nullopt;
+            return whole.args[static_cast<size_t>(k)];
+        }
+        Expr chosen = whole.args.back();
+        for (size_t i = whole.args.size() - 1; i-- > 0;)
+            chosen = choose(equals(index, i, loc), whole.args[i], std::move(chosen), loc);
+        return counted(std::move(chosen));
+    }
+
+    // A part of an aggregate read (`s.colour`, `w[2]`, `w[i]`) becomes that part; a select between two
+    // aggregates, the aggregate of the selects.
+    void project(Expr& e) {
+        if (e.kind == Expr::Kind::Ternary && e.args.size() == 3 && isAggregate(e.args[1]) &&
+            isAggregate(e.args[2])) {
+            Expr chosen = choose(e.args[0], std::move(e.args[1]), std::move(e.args[2]), e.loc);
+            e = std::move(chosen);
+            return;
+        }
+        if (e.args.empty() || !isAggregate(e.args[0])) return;
+        Expr& whole = e.args[0];
+        if (e.kind == Expr::Kind::Member && whole.castType.arrayDims.empty()) {
+            const auto parts = partsOf(whole.castType);
+            for (size_t i = 0; parts && i < parts->size(); ++i) {
+                if ((*parts)[i].first != e.text) continue;
+                Expr part = std::move(whole.args[i]);
+                e = std::move(part);
+                return;
+            }
+        } else if (e.kind == Expr::Kind::Index && !whole.castType.arrayDims.empty()) {
+            if (std::optional<Expr> part = element(whole, e.args[1], e.loc)) e = std::move(*part);
+        }
+    }
+
+    // `old`, a value of `type`, with the part that `path[at..]` names (Member and Index nodes, from the
+    // local outwards) replaced by `value`; none where the host cannot say which part that is.
+    std::optional<Expr> assignAt(Expr old, const TypeDesc& type, const std::vector<const Expr*>& path,
+                                 size_t at, const Expr& value, const std::map<std::string, Expr>& scope,
+                                 int depth, const SourceLoc& loc) {
+        if (at == path.size()) return typed(type, value, loc);
+        const Expr& part = *path[at];
+        const auto parts = partsOf(type);
+        if (part.kind == Expr::Kind::Member) {
+            if (!parts) {
+                if (at + 1 != path.size()) return std::nullopt;
+                return assignComponents(type, part.text, std::move(old), value, loc);
+            }
+            if (!isAggregate(old) || !type.arrayDims.empty()) return std::nullopt;
+            for (size_t i = 0; i < parts->size(); ++i) {
+                if ((*parts)[i].first != part.text) continue;
+                std::optional<Expr> written =
+                    assignAt(old.args[i], (*parts)[i].second, path, at + 1, value, scope, depth, loc);
+                if (!written) return std::nullopt;
+                old.args[i] = std::move(*written);
+                return old;
+            }
+            return std::nullopt;
+        }
+        if (part.kind != Expr::Kind::Index) return std::nullopt;
+        const Expr index = substitute(part.args[1], scope, depth);
+        double k = 0;
+        const bool known = constant(index, k);
+        if (known && (k < 0 || k != std::trunc(k))) return std::nullopt;
+        const size_t written = known ? static_cast<size_t>(k) : 0;
+        if (parts && !type.arrayDims.empty()) {  // an array's element
+            if (!isAggregate(old) || (known && written >= old.args.size())) return std::nullopt;
+            for (size_t i = 0; i < old.args.size(); ++i) {
+                if (known && i != written) continue;
+                std::optional<Expr> element =
+                    assignAt(old.args[i], (*parts)[i].second, path, at + 1, value, scope, depth, loc);
+                if (!element) return std::nullopt;
+                old.args[i] = counted(
+                    known ? std::move(*element)
+                          : choose(equals(index, i, loc), std::move(*element), std::move(old.args[i]), loc));
+            }
+            return old;
+        }
+        if (type.shape == Shape::Vector && known && written < static_cast<size_t>(type.cols) &&
+            at + 1 == path.size())
+            return assignComponents(type, std::string(1, "xyzw"[written]), std::move(old), value, loc);
+        if (type.shape != Shape::Matrix || (known && written >= static_cast<size_t>(type.rows)))
+            return std::nullopt;
+        // A matrix's row: the matrix is rebuilt from its rows (those of the constructor that built it last,
+        // so that writing every row in turn copies none of them again).
+        TypeDesc row = type;
+        row.shape = Shape::Vector;
+        row.rows = 1;
+        const bool ofRows = old.kind == Expr::Kind::Call && old.text == type.hlslName() &&
+                            old.args.size() == static_cast<size_t>(type.rows);
+        std::vector<Expr> rows;
+        for (size_t r = 0; r < static_cast<size_t>(type.rows); ++r) {
+            Expr current = ofRows ? old.args[r] : node(Expr::Kind::Index, loc, "", {old, integer(r, loc)});
+            if (known && r != written) {
+                rows.push_back(std::move(current));
+                continue;
+            }
+            std::optional<Expr> changed = assignAt(current, row, path, at + 1, value, scope, depth, loc);
+            if (!changed) return std::nullopt;
+            rows.push_back(known
+                               ? std::move(*changed)
+                               : choose(equals(index, r, loc), std::move(*changed), std::move(current), loc));
+        }
+        return counted(node(Expr::Kind::Call, loc, type.hlslName(), std::move(rows)));
     }
 
     // `e`'s value where it reads no parameter: exactly as the host evaluates it, or, for the effect's
@@ -186,7 +389,10 @@ private:
         }
         Expr out = e;
         for (size_t i = 0; i < out.args.size(); ++i) out.args[i] = substitute(e.args[i], scope, depth);
-        if (out.kind == Expr::Kind::Call) rewrite(out, depth + 1);
+        if (out.kind == Expr::Kind::Call)
+            rewrite(out, depth + 1);
+        else
+            project(out);
         return out;
     }
 
@@ -229,8 +435,9 @@ private:
     static bool same(const Expr& a, const Expr& b) {
         if (a.kind != b.kind || a.text != b.text || a.number != b.number || a.isInteger != b.isInteger ||
             a.args.size() != b.args.size() ||
-            (a.kind == Expr::Kind::Cast && (a.castType.hlslName() != b.castType.hlslName() ||
-                                            a.castType.arrayDims != b.castType.arrayDims)))
+            ((a.kind == Expr::Kind::Cast || a.kind == Expr::Kind::InitList) &&
+             (a.castType.hlslName() != b.castType.hlslName() ||
+              a.castType.arrayDims != b.castType.arrayDims)))
             return false;
         for (size_t i = 0; i < a.args.size(); ++i)
             if (!same(a.args[i], b.args[i])) return false;
@@ -243,10 +450,10 @@ private:
         return copy;
     }
 
-    // `condition ? a : b`; `a` where both are the same expression (a counter no path changed).
+    // `condition ? a : b` (choose()); `a` where both are the same expression (a counter no path changed).
     Expr select(const std::optional<Expr>& condition, Expr a, Expr b, const SourceLoc& loc) {
         if (!condition || same(a, b)) return a;
-        return counted(node(Expr::Kind::Ternary, loc, "", {*condition, std::move(a), std::move(b)}));
+        return counted(choose(*condition, std::move(a), std::move(b), loc));
     }
 
     static Expr truth(bool value, const SourceLoc& loc) {
@@ -355,7 +562,90 @@ private:
             value.args[0] = node(Expr::Kind::Binary, loc, "&&", {std::move(value.args[0]), std::move(taken)});
             return value;
         }
-        return node(Expr::Kind::Ternary, loc, "", {condition, then.values[name], otherwise.values[name]});
+        return choose(condition, then.values[name], otherwise.values[name], loc);
+    }
+
+    // [SECTION] Statements
+
+    // What an inlined call gives: its value (none for a void function) and the last values of its `out`
+    // and `inout` parameters.
+    struct Outcome {
+        std::optional<Expr> value;
+        std::map<std::string, Expr> outs;
+    };
+
+    // `target op= value` over `locals`: the local the target names, or its part, written.
+    bool assign(const Expr& target, const std::string& op, Expr value, Locals& locals,
+                const std::set<std::string>& declaredHere, int depth, const SourceLoc& loc) {
+        std::vector<const Expr*> path;
+        const Expr* root = &target;
+        for (; root->kind == Expr::Kind::Member || root->kind == Expr::Kind::Index; root = &root->args[0])
+            path.insert(path.begin(), root);
+        if (root->kind != Expr::Kind::Identifier) return false;
+        const auto type = locals.types.find(root->text);
+        if (type == locals.types.end()) return false;  // a global: not ours to fold
+        if (op != "=")
+            value = node(Expr::Kind::Binary, loc, op.substr(0, 1),
+                         {substitute(target, locals.values, depth), std::move(value)});
+        std::optional<Expr> whole =
+            assignAt(locals.values[root->text], type->second, path, 0, value, locals.values, depth, loc);
+        if (!whole) return false;
+        locals.values[root->text] = std::move(*whole);
+        if (!declaredHere.count(root->text)) ++locals.assigned[root->text];
+        return true;
+    }
+
+    // `e`'s value over `locals`. Its calls of functions that write their arguments run first, in order,
+    // writing the locals they name (hoist()); none where one cannot be inlined.
+    std::optional<Expr> valueOf(const Expr& e, Locals& locals, const std::set<std::string>& declaredHere,
+                                int depth) {
+        Expr hoisted = e;
+        std::vector<std::string> results;
+        const bool ran = hoist(hoisted, locals, declaredHere, results, depth);
+        std::optional<Expr> value;
+        if (ran) value = substitute(hoisted, locals.values, depth);
+        for (const std::string& name : results) {
+            locals.values.erase(name);
+            locals.types.erase(name);
+        }
+        return value;
+    }
+
+    // Inlines each call in `e` of a function with `out` or `inout` parameters (or none to return): its
+    // arguments written to the caller's locals, the call replaced by a name (`results`) bound to its value.
+    bool hoist(Expr& e, Locals& locals, const std::set<std::string>& declaredHere,
+               std::vector<std::string>& results, int depth) {
+        for (Expr& arg : e.args)
+            if (!hoist(arg, locals, declaredHere, results, depth)) return false;
+        if (e.kind != Expr::Kind::Call) return true;
+        const FunctionDecl* function = find(e.text, e.args.size());
+        if (!function) {  // one of ours that cannot be inlined must not lose what it writes
+            const std::vector<const FunctionDecl*> ours = mEffect.findFunctions(e.text);
+            return std::none_of(ours.begin(), ours.end(),
+                                [](const FunctionDecl* f) { return writesArguments(*f); });
+        }
+        if (!writesArguments(*function) && returnsValue(function->returnType)) return true;  // substitute()'s
+        if (depth + 1 >= kMaxInlineDepth) return false;
+        std::vector<Expr> arguments;
+        for (const Expr& arg : e.args) arguments.push_back(substitute(arg, locals.values, depth));
+        std::optional<Outcome> outcome = expand(*function, arguments, e.loc, depth + 1);
+        if (!outcome) return false;
+        for (size_t i = 0; i < e.args.size(); ++i) {
+            const FunctionParam& p = function->params[i];
+            if (p.direction != FunctionParam::Direction::In &&
+                !assign(e.args[i], "=", outcome->outs[p.name], locals, declaredHere, depth, e.loc))
+                return false;
+        }
+        const std::string name = "$call" + std::to_string(results.size());
+        locals.values[name] = outcome->value ? std::move(*outcome->value) : integer(0, e.loc);
+        locals.types[name] = function->returnType;
+        results.push_back(name);
+        Expr result;
+        result.kind = Expr::Kind::Identifier;
+        result.text = name;
+        result.loc = e.loc;
+        e = std::move(result);
+        return true;
     }
 
     // Runs `statements` (none of them a return) over `locals`; false if one cannot become an expression.
@@ -371,44 +661,35 @@ private:
                     // A name declared again in a branch would hide the outer one: not worth following.
                     if (locals.types.count(statement.name) && !declaredHere.count(statement.name))
                         return false;
-                    Expr zero;
-                    zero.kind = Expr::Kind::Number;
-                    zero.loc = loc;
                     // An uninitialized local reads 0 here; HLSL leaves it undefined until written.
-                    locals.values[statement.name] = cast(
-                        statement.type,
-                        statement.hasValue ? substitute(statement.value, locals.values, depth) : zero, loc);
+                    std::optional<Expr> value = statement.hasValue
+                                                    ? valueOf(statement.value, locals, declaredHere, depth)
+                                                    : std::optional<Expr>(integer(0, loc));
+                    if (value)
+                        value = statement.hasValue ? typed(statement.type, std::move(*value), loc)
+                                                   : broadcast(statement.type, *value, loc);
+                    if (!value) return false;
+                    locals.values[statement.name] = std::move(*value);
                     locals.types[statement.name] = statement.type;
                     declaredHere.insert(statement.name);
                     break;
                 }
                 case Statement::Kind::Assign: {
-                    auto type = locals.types.find(statement.name);
-                    if (type == locals.types.end()) return false;  // assigns a global: not ours to fold
-                    Expr old = locals.values[statement.name];
-                    Expr value = substitute(statement.value, locals.values, depth);
-                    if (statement.op != "=") {
-                        Expr target = statement.member.empty()
-                                          ? old
-                                          : node(Expr::Kind::Member, loc, statement.member, {old});
-                        value = node(Expr::Kind::Binary, loc, statement.op.substr(0, 1),
-                                     {std::move(target), std::move(value)});
-                    }
-                    if (statement.member.empty()) {
-                        locals.values[statement.name] = cast(type->second, std::move(value), loc);
-                    } else {
-                        std::optional<Expr> whole = assignComponents(type->second, statement.member,
-                                                                     std::move(old), std::move(value), loc);
-                        if (!whole) return false;
-                        locals.values[statement.name] = std::move(*whole);
-                    }
-                    if (!declaredHere.count(statement.name)) ++locals.assigned[statement.name];
+                    std::optional<Expr> value = valueOf(statement.value, locals, declaredHere, depth);
+                    if (!value || !assign(statement.target, statement.op, std::move(*value), locals,
+                                          declaredHere, depth, loc))
+                        return false;
                     break;
                 }
+                case Statement::Kind::Evaluate:
+                    if (!valueOf(statement.value, locals, declaredHere, depth)) return false;
+                    break;
                 case Statement::Kind::If: {
                     // Both branches run on copies; what either assigns becomes `condition ? then : else`,
                     // which the host evaluates as the branch taken (PreshaderProgram's Select).
-                    const Expr condition = substitute(statement.value, locals.values, depth);
+                    const std::optional<Expr> tested = valueOf(statement.value, locals, declaredHere, depth);
+                    if (!tested) return false;
+                    const Expr& condition = *tested;
                     Locals then = locals, otherwise = locals;
                     then.assigned.clear();
                     otherwise.assigned.clear();
@@ -472,12 +753,20 @@ private:
                 const std::set<std::string>& declaredHere, const SourceLoc& loc, int depth) {
         LoopExits exits;
         LoopExits* const outer = std::exchange(mLoop, &exits);
-        const std::optional<Expr> pathBefore = locals.path;
+        // Paths inside are counted from the loop's entry: its exits select only among the values of the
+        // path that entered it, and an outer loop's path copied into every exit of an inner one would
+        // grow as a power of the iterations (a `return` inside nested loops).
+        const std::optional<Expr> pathBefore = std::exchange(locals.path, std::nullopt);
         bool unrolled = true;
         for (int iteration = 0;; ++iteration) {
             double going = 0;
-            if (iteration > kMaxLoopIterations || mBudget <= 0 ||
-                !constant(substitute(loop.value, locals.values, depth), going)) {
+            const bool bounded = mBudget > 0 && iteration <= kMaxLoopIterations &&
+                                 constant(substitute(loop.value, locals.values, depth), going);
+            if (!bounded) {
+                if (mBudget > 0 && !mLoopFailure)
+                    mLoopFailure = LoopFailure{iteration > kMaxLoopIterations ? DiagId::HostLoopIterationLimit
+                                                                              : DiagId::HostLoopUnbounded,
+                                               loop.value.loc};
                 unrolled = false;
                 break;
             }
@@ -515,7 +804,8 @@ private:
                 // A counter stays a literal, not a chain of every step before.
                 double number = 0;
                 const TypeDesc& type = locals.types[name];
-                if (type.shape == Shape::Scalar && type.arrayDims.empty() && constant(value, number)) {
+                if (type.shape == Shape::Scalar && type.arrayDims.empty() && type.isNumeric() &&
+                    constant(value, number)) {
                     Expr literal;
                     literal.kind = Expr::Kind::Number;
                     literal.number = number;
@@ -545,50 +835,81 @@ private:
         return true;
     }
 
-    std::optional<Expr> expand(const FunctionDecl& function, const Expr& call, int depth) {
+    std::optional<Outcome> expand(const FunctionDecl& function, const std::vector<Expr>& arguments,
+                                  const SourceLoc& loc, int depth) {
         if (mBudget <= 0 || function.straightBody.empty()) return std::nullopt;
         // A function called inside a loop's body is not in that loop.
         LoopExits* const callersLoop = std::exchange(mLoop, nullptr);
-        std::optional<Expr> value = expandBody(function, call, depth);
+        std::optional<Outcome> outcome = expandBody(function, arguments, loc, depth);
         mLoop = callersLoop;
-        return value;
+        return outcome;
     }
 
-    std::optional<Expr> expandBody(const FunctionDecl& function, const Expr& call, int depth) {
+    std::optional<Outcome> expandBody(const FunctionDecl& function, const std::vector<Expr>& arguments,
+                                      const SourceLoc& loc, int depth) {
         Locals locals;
         for (size_t i = 0; i < function.params.size(); ++i) {
             const FunctionParam& p = function.params[i];
-            locals.values[p.name] = cast(p.type, call.args[i], call.loc);
+            // An `out` parameter starts as a local declared without a value.
+            std::optional<Expr> value = p.direction == FunctionParam::Direction::Out
+                                            ? broadcast(p.type, integer(0, loc), loc)
+                                            : typed(p.type, arguments[i], loc);
+            if (!value) return std::nullopt;
+            locals.values[p.name] = std::move(*value);
             locals.types[p.name] = p.type;
         }
-        std::optional<Expr> value =
-            result(function.straightBody, function.returnType, locals, call.loc, depth);
-        if (!value || mBudget <= 0) return std::nullopt;
-        return value;
+        std::optional<Outcome> outcome =
+            result(function, function.straightBody, std::move(locals), loc, depth);
+        if (!outcome || mBudget <= 0) return std::nullopt;
+        return outcome;
     }
 
-    // What `statements` return, every path of which ends in a return (the parser's endsInReturns): the
-    // last statement's value, or, for an `if` whose branches return, `condition ? then : otherwise`.
-    std::optional<Expr> result(const std::vector<FunctionDecl::Statement>& statements, const TypeDesc& type,
-                               Locals locals, const SourceLoc& loc, int depth) {
+    // What `statements` give, every path of which ends in a return (the parser's endsInReturns): the last
+    // statement's value and the parameters written, or, for an `if` whose branches return, the selects
+    // of the two.
+    std::optional<Outcome> result(const FunctionDecl& function,
+                                  const std::vector<FunctionDecl::Statement>& statements, Locals locals,
+                                  const SourceLoc& loc, int depth) {
         using Statement = FunctionDecl::Statement;
         if (statements.empty()) return std::nullopt;
         const std::vector<Statement> body(statements.begin(), statements.end() - 1);
         if (!execute(body, locals, loc, depth)) return std::nullopt;
         const Statement& last = statements.back();
-        if (last.kind == Statement::Kind::Return)
-            return cast(type, substitute(last.value, locals.values, depth), loc);
+        const std::set<std::string> none;
+        if (last.kind == Statement::Kind::Return) {
+            Outcome outcome;
+            if (last.hasValue != returnsValue(function.returnType)) return std::nullopt;
+            if (last.hasValue) {
+                std::optional<Expr> value = valueOf(last.value, locals, none, depth);
+                if (value) outcome.value = typed(function.returnType, std::move(*value), loc);
+                if (!outcome.value) return std::nullopt;
+            }
+            for (const FunctionParam& p : function.params)
+                if (p.direction != FunctionParam::Direction::In) outcome.outs[p.name] = locals.values[p.name];
+            return outcome;
+        }
         if (last.kind != Statement::Kind::If) return std::nullopt;
-        Expr condition = substitute(last.value, locals.values, depth);
-        std::optional<Expr> then = result(last.then, type, locals, loc, depth);
-        std::optional<Expr> otherwise =
-            then ? result(last.otherwise, type, locals, loc, depth) : std::nullopt;
+        const std::optional<Expr> condition = valueOf(last.value, locals, none, depth);
+        if (!condition) return std::nullopt;
+        std::optional<Outcome> then = result(function, last.then, locals, loc, depth);
+        std::optional<Outcome> otherwise =
+            then ? result(function, last.otherwise, locals, loc, depth) : std::nullopt;
         if (!otherwise) return std::nullopt;
-        return node(Expr::Kind::Ternary, loc, "",
-                    {std::move(condition), std::move(*then), std::move(*otherwise)});
+        if (then->value)
+            then->value = choose(*condition, std::move(*then->value), std::move(*otherwise->value), loc);
+        for (auto& [name, value] : then->outs)
+            value = choose(*condition, std::move(value), std::move(otherwise->outs[name]), loc);
+        return then;
     }
 
     const Effect& mEffect;
+    DiagnosticSink& mDiagnostics;
+    // The first loop of the expression being rewritten that could not be unrolled, and why.
+    struct LoopFailure {
+        DiagId id;
+        SourceLoc loc;
+    };
+    std::optional<LoopFailure> mLoopFailure;
     int mBudget = kMaxInlinedNodes;
     LoopExits* mLoop = nullptr;  // the loop whose body is being unrolled
     int mExitsTaken = 0;         // `break`s and `continue`s unrolled so far
@@ -596,8 +917,8 @@ private:
 
 }  // namespace
 
-void inlineUserFunctionCalls(Effect& effect) {
-    Inliner inliner(effect);
+void inlineUserFunctionCalls(Effect& effect, DiagnosticSink& diagnostics) {
+    Inliner inliner(effect, diagnostics);
     // Initializers first, so that a static's expansion carries its calls inlined. They are evaluated in
     // declaration order over the values before them, so their own static names stay names.
     for (Parameter& parameter : effect.parameters)

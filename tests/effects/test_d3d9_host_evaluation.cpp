@@ -384,23 +384,156 @@ TEST(D3d9HostEvaluation, SincosWritesBothOfItsOutputs) {
     expectTeapotColour(*renderer, "Angle", "1.2", {238, 92, 102});
 }
 
-// A loop whose bound is a tweakable cannot be unrolled when the effect is compiled: the call is reported
-// where it stands, as before.
-TEST(D3d9HostEvaluation, LoopBoundedByAParameterIsReportedAtTheCall) {
+// A `return` inside a loop, as fxc's preshaders ran it: the first iteration whose test passes gives the
+// value, from a loop and from the inner one of two nested loops, on a test over the tweakable.
+constexpr const char* kReturnInLoop = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.35;
+float first_above(float x) {
+    for (int i = 0; i < 8; i++) {
+        if (i * 0.125 >= x) return i * 0.1;
+    }
+    return 1;
+}
+float nested(float x) {
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            if (a * 3 + b >= x * 10) return (a * 3 + b) * 0.05 + 0.1;
+    return 0.9;
+}
+static float3 Derived = float3(first_above(Level), nested(Level), 0.5);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
+)";
+
+TEST(D3d9HostEvaluation, ReturnInsideALoopFollowsItsInput) {
+    auto renderer = loadEffect(kReturnInLoop, false, "return_in_loop.fx");
+    ASSERT_TRUE(renderer);
+    // 0.35: i = 3 (0.375) gives 0.3, a * 3 + b = 4 gives 0.3. 0.65: i = 6 gives 0.6, 7 gives 0.45.
+    expectTeapotColour(*renderer, nullptr, "", {77, 77, 128});
+    expectTeapotColour(*renderer, "Level", "0.65", {153, 115, 128});
+}
+
+// Functions that write their `out` and `inout` parameters, called as statements and inside an expression,
+// in a compile argument over a tweakable.
+constexpr const char* kOutParameters = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.5;
+void split(float x, out float hi, out float lo) { hi = x * 0.5 + 0.25; lo = x * 0.25; }
+void raise(inout float3 c, float by) {
+    c.z += by;
+    if (c.z > 0.6) c.z = 0.6;
+}
+float halve(float x, out float rest) { rest = x * 0.5; return x - rest; }
+float3 shade(float x) {
+    float h, l;
+    split(x, h, l);
+    float3 c = float3(h, l, 0.2);
+    raise(c, x * 0.5);
+    float rest;
+    c.y += halve(0.2, rest) * 0 + rest * 0.5;
+    return c;
+}
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(shade(Level)); } }
+)";
+
+TEST(D3d9HostEvaluation, OutAndInoutParametersFollowTheirInput) {
+    auto renderer = loadEffect(kOutParameters, false, "out_parameters.fx");
+    ASSERT_TRUE(renderer);
+    // 0.5: (0.5, 0.125 + 0.05, 0.45). 1.0: (0.75, 0.25 + 0.05, 0.6, 0.7 raised past the limit).
+    expectTeapotColour(*renderer, nullptr, "", {128, 45, 115});
+    expectTeapotColour(*renderer, "Level", "1.0", {191, 77, 153});
+}
+
+// Local arrays: elements written in a loop, a flat initializer list of vectors, a read and a write at an
+// index known only from the tweakable, and a component of an element written.
+constexpr const char* kLocalArrays = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Spread = 0.5;
+float3 ramp(float s) {
+    float w[4];
+    for (int i = 0; i < 4; i++) w[i] = i * s;
+    float2 pairs[2] = {0.1, 0.2, 0.3, 0.4};
+    int k = s > 0.3 ? 1 : 0;
+    w[k] += 0.1;
+    pairs[1].y = pairs[k].x;
+    return float3(w[2] * 0.5, pairs[1].y, w[1]);
+}
+static float3 Derived = ramp(Spread);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(Derived); } }
+)";
+
+TEST(D3d9HostEvaluation, LocalArraysFollowTheirInput) {
+    auto renderer = loadEffect(kLocalArrays, false, "local_arrays.fx");
+    ASSERT_TRUE(renderer);
+    // 0.5: w = (0, 0.6, 1, 1.5), k = 1. 0.2: w = (0.1, 0.2, 0.4, 0.6), k = 0.
+    expectTeapotColour(*renderer, nullptr, "", {128, 77, 153});
+    expectTeapotColour(*renderer, "Spread", "0.2", {51, 26, 51});
+}
+
+// Local structs, and struct values passed to, returned from and selected between in functions: `(S)0`,
+// members and their components written, a struct argument changed in its callee (a copy), a select
+// between two structs on the tweakable.
+constexpr const char* kLocalStructs = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.4;
+struct Tint { float3 colour; float weight; };
+Tint make_tint(float x) {
+    Tint t = (Tint)0;
+    t.colour = float3(x, 0.5 * x, 0.2);
+    t.weight = 0.5;
+    return t;
+}
+Tint brighter(Tint t, float by) { t.colour.g += by; t.weight *= 2; return t; }
+float3 tinted(float x) {
+    Tint t = brighter(make_tint(x), 0.1);
+    Tint u;
+    u.colour = t.colour * 0.5 * t.weight;
+    u.weight = 0;
+    Tint chosen = x > 0.7 ? t : u;
+    return chosen.colour + make_tint(x).weight * 0;
+}
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(tinted(Level)); } }
+)";
+
+TEST(D3d9HostEvaluation, LocalStructsFollowTheirInput) {
+    auto renderer = loadEffect(kLocalStructs, false, "local_structs.fx");
+    ASSERT_TRUE(renderer);
+    // 0.4: u, half of (0.4, 0.3, 0.2). 0.8: t, (0.8, 0.5, 0.2).
+    expectTeapotColour(*renderer, nullptr, "", {51, 38, 26});
+    expectTeapotColour(*renderer, "Level", "0.8", {204, 128, 51});
+}
+
+// A loop the host cannot unroll (its bound a tweakable, or more iterations than fxc unrolled) is an error
+// where the host expression calls the function, naming the loop.
+TEST(D3d9HostEvaluation, LoopsTheHostCannotUnrollAreReportedAtTheCall) {
     sharedContext();
-    fx::DiagnosticList diagnostics;
-    auto effect = fx::parseEffectSource(
-        "int Count = 3;\n"
-        "float total(float x) { float s = 0; for (int i = 0; i < Count; i++) s += x; return s; }\n"
-        "float4 PS(uniform float v) : COLOR { return v; }\n"
-        "technique T { pass P { PixelShader = compile ps_3_0 PS(total(0.25)); } }\n",
-        "parameter_loop.fx", {}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    EXPECT_FALSE(fx::compileEffect(effect, fx::CompileOptions{}, diagnostics) && !diagnostics.hasErrors());
-    EXPECT_NE(diagnostics.str().find("parameter_loop.fx:4:56: error: function 'total' "
-                                     "cannot be evaluated on the host"),
-              std::string::npos)
-        << diagnostics.str();
+    for (const auto& [bound, message] :
+         {std::pair{"Count",
+                    "parameter_loop.fx:4:56: error: function 'total' cannot be evaluated on the host: the "
+                    "loop at parameter_loop.fx:2:53 has no count known when the effect is compiled"},
+          std::pair{"2000",
+                    "parameter_loop.fx:4:56: error: function 'total' cannot be evaluated on the host: the "
+                    "loop at parameter_loop.fx:2:53 runs more than 1024 iterations"}}) {
+        fx::DiagnosticList diagnostics;
+        auto effect = fx::parseEffectSource(
+            std::string("int Count = 3;\n"
+                        "float total(float x) { float s = 0; for (int i = 0; i < ") +
+                bound +
+                "; i++) s = x; return s; }\n"
+                "float4 PS(uniform float v) : COLOR { return v; }\n"
+                "technique T { pass P { PixelShader = compile ps_3_0 PS(total(0.25)); } }\n",
+            "parameter_loop.fx", {}, diagnostics);
+        EXPECT_FALSE(effect);
+        EXPECT_NE(diagnostics.str().find(message), std::string::npos) << diagnostics.str();
+    }
 }
 
 }  // namespace

@@ -302,5 +302,61 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
     EXPECT_FLOAT_EQ(gain->asFloat(), 1.0f);  // saturate(0.5 * 1.5 + 0.25)
 }
 
+// The four shapes of function D3DX's preshaders ran and the host once refused, in one compile argument:
+// a `return` inside a loop, `out`/`inout` parameters, a local array indexed by a tweakable and struct
+// values through functions. The program is run at the default and at another value of the tweakable.
+TEST(FxComposerSyntax, HostEvaluatedFunctionsReturnInLoopsWriteOutParametersAndHoldArraysAndStructs) {
+    const char* source = R"(float4x4 Wvp : WorldViewProjection;
+float Level = 0.35;
+struct Pair { float a; float2 b; };
+float first_above(float x) {
+    for (int i = 0; i < 8; i++)
+        for (int j = 0; j < 1; j++)
+            if (i * 0.125 >= x) return i * 0.1;
+    return 1;
+}
+void split(float x, out float hi, inout float lo) { hi = x * 2; lo += x; }
+float picked(float x) {
+    float w[3] = {0.25, 0.5, 0.75};
+    int k = x > 0.5 ? 2 : 1;
+    w[k] += 0.125;
+    return w[k];
+}
+Pair make_pair(float x) { Pair p = (Pair)0; p.b.y = x; p.a = 1; return p; }
+float3 all_four(float x) {
+    float hi, lo = 0.5;
+    split(x, hi, lo);
+    Pair p = make_pair(hi);
+    Pair q = x > 0.5 ? p : make_pair(lo);
+    return float3(first_above(x) + picked(x), q.b.y, p.a);
+}
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, Wvp); }
+float4 PS(uniform float3 v) : COLOR { return float4(v, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(all_four(Level)); } }
+)";
+    DiagnosticList diagnostics;
+    auto compiled = compile(source, diagnostics);
+    ASSERT_TRUE(compiled && !diagnostics.hasErrors()) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    ASSERT_EQ(pass.arguments.size(), 1u);
+    EXPECT_FALSE(pass.arguments[0].value.isConstant());
+    std::vector<Value> values = compiled->initialValues;
+    std::optional<Value> v = pass.arguments[0].value.run(values, &diagnostics);
+    ASSERT_TRUE(v && v->data.size() == 3) << diagnostics.str();
+    // 0.35: 0.3 + (0.5 + 0.125); lo = 0.85 chosen; a = 1.
+    EXPECT_FLOAT_EQ(v->data[0], 0.925f);
+    EXPECT_FLOAT_EQ(v->data[1], 0.85f);
+    EXPECT_FLOAT_EQ(v->data[2], 1.0f);
+    size_t level = 0;
+    while (compiled->parameters[level].name != "Level") ++level;
+    values[level] = Value::scalar(0.65f);
+    v = pass.arguments[0].value.run(values, &diagnostics);
+    ASSERT_TRUE(v && v->data.size() == 3) << diagnostics.str();
+    // 0.65: 0.6 + (0.75 + 0.125); hi = 1.3 chosen.
+    EXPECT_FLOAT_EQ(v->data[0], 1.475f);
+    EXPECT_FLOAT_EQ(v->data[1], 1.3f);
+    EXPECT_FLOAT_EQ(v->data[2], 1.0f);
+}
+
 }  // namespace
 }  // namespace fx

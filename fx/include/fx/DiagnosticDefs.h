@@ -410,6 +410,13 @@ FX_DIAGNOSTIC(MulDimensionMismatch, Error, "mul({0}, {1}): inner dimensions diff
 FX_DIAGNOSTIC(FunctionNotHostEvaluable, Error, "function '{0}' cannot be evaluated on the host")
 FX_DIAGNOSTIC(ConstructorComponentCount, Error, "{0} constructor needs {1} components, got {2}")
 FX_DIAGNOSTIC(StringInInitializerList, Error, "string in an initializer list")
+// A loop in a function a host expression calls, which the host unrolls as fxc did (the call stands at the
+// location; {1}: where the loop's condition is).
+FX_DIAGNOSTIC(HostLoopUnbounded, Error,
+              "function '{0}' cannot be evaluated on the host: the loop at {1} has no count known when the "
+              "effect is compiled")
+FX_DIAGNOSTIC(HostLoopIterationLimit, Error,
+              "function '{0}' cannot be evaluated on the host: the loop at {1} runs more than {2} iterations")
 // Compute passes (SetComputeShader; docs/d3d10.md, "Compute shaders and read-write resources").
 FX_DIAGNOSTIC(ComputeNumThreadsMissing, Error, "compute shader '{0}' has no [numthreads(x, y, z)] attribute")
 FX_DIAGNOSTIC(ComputeParameterUnsupported, Error,

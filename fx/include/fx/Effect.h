@@ -175,23 +175,30 @@ struct FunctionDecl {
     SourceLoc hlslLoc;     // where hlslText starts
     SourceLoc loc;         // the name's location
 
-    // A body of side-effect-free code: local declarations, assignments to locals and their components,
-    // if/else, `for` and `while` loops with `break` and `continue`, and returns where every path ends (an
-    // early return's rest reads as its branch's `else`). Such a function, called in a pass's compile
-    // arguments, states or a static's initializer, is inlined there and evaluated on the host as D3DX's
-    // preshaders did (fx/src/UserFunctionInliner.cpp; a loop is unrolled, so its condition must be known
-    // there). Empty for any other body.
+    // A body of side-effect-free code: local declarations (scalars, vectors, matrices, arrays, structs),
+    // assignments to locals and to their parts, calls of such functions (`out` and `inout` parameters
+    // included), if/else, `for` and `while` loops with `break`, `continue` and `return`, and returns where
+    // every path ends (an early return's rest reads as its branch's `else`; a `return` in a loop sets a
+    // flag, keeps its value and leaves the loop). Such a function, called in a pass's compile arguments,
+    // states or a static's initializer, is inlined there and evaluated on the host as D3DX's preshaders
+    // did (fx/src/UserFunctionInliner.cpp; a loop is unrolled, so its condition must be known there).
+    // Empty for any other body.
     struct Statement {
         // Loop: `value` is the condition, `then` the body, `otherwise` the step (`for`'s third part); a
-        // `for`'s first part stands before it as statements of their own.
-        enum class Kind { Declare, Assign, If, Loop, Return, Break, Continue };
+        // `for`'s first part stands before it as statements of their own. Evaluate: `value` is an
+        // expression whose calls write their `out` arguments (`split(c, hi, lo);`).
+        enum class Kind { Declare, Assign, If, Loop, Return, Break, Continue, Evaluate };
         Kind kind = Kind::Return;
-        TypeDesc type;       // Declare
-        std::string name;    // Declare, Assign: the local
-        std::string member;  // Assign: the swizzle written (`v.xy = ...`), or "" for the whole local
-        std::string op;      // Assign: "=", "+=", "-=", "*=", "/="
-        Expr value;  // Declare's initializer, Assign's right-hand side, Return's value, If's condition
-        bool hasValue = false;
+        TypeDesc type;     // Declare
+        std::string name;  // Declare, Assign: the local
+        // Assign: what is written: the local (an Identifier), or a part of it (`v.yz`, `w[i]`,
+        // `s.colour.r`: Member and Index nodes over it).
+        Expr target;
+        std::string op;  // Assign: "=", "+=", "-=", "*=", "/="
+        // Declare's initializer, Assign's right-hand side, Return's value, If's condition, Evaluate's
+        // expression.
+        Expr value;
+        bool hasValue = false;                   // false for a declaration without a value and a `return;`
         std::vector<Statement> then, otherwise;  // If, Loop
     };
     std::vector<Statement> straightBody;
