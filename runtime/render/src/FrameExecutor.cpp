@@ -576,7 +576,8 @@ BatchedPass* FrameExecutor::batchedPass(const fx::CompiledPass& pass, size_t pas
     for (size_t p = 0; p < use.used.size(); ++p)
         mPerObject[p] = use.used[p] && !mResources.values.isPinned(p) && mBinder.isPerObject(p);
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);  // a variant is linked when the flags change
-    return mResources.programs->batchedPass(mTechnique, passIndex, pass, mPerObject, use.argumentPerObject);
+    return mResources.programs->batchedPass(mTechnique, passIndex, pass, mPerObject, use.argumentPerObject,
+                                            use.viewDerived);
 }
 
 // True if drawing the pass's objects in another order leaves the same image: fragments that meet at a
@@ -601,8 +602,8 @@ bool FrameExecutor::orderFree(const RenderStateBlock& states) {
 
 void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
                                 const PassUse& use, BatchedPass& batched, const RenderStateBlock& states) {
-    // The objects' records: packed again only for objects that changed or whose values derive from
-    // something that did (the port's or a light's matrices, the other inputs of per-object compile
+    // The objects' records: packed again only for objects that changed (whole) or whose view part derives
+    // from something that did (the port's or a light's matrices, the other inputs of per-object compile
     // arguments: their values, since stamps change whenever passes with other ports bind them).
     mContext.clear();
     mBinder.objectContext(mPort, use.used, mContext);
@@ -619,9 +620,9 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
         }
     }
     batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp());
-    const auto bindObject = [&](const SceneObject& object) {
+    const auto bindObject = [&](const SceneObject& object, const std::vector<bool>& parameters) {
         mResources.values.bindSemantics(mBinder, mPort, &object, mOptions.time,
-                                        SemanticBinder::Scope::PerObject, &use.used);
+                                        SemanticBinder::Scope::PerObject, &parameters);
         evaluateArguments(passIndex, use, true);
     };
     {
@@ -629,13 +630,24 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
         for (uint32_t index : mVisible) {
             const SceneObject& object = mScene.objects[index];
-            if (batched.recordCurrent(index, object)) continue;
-            bindObject(object);
-            batched.packRecord(index, object, mResources.values.all(), mArguments);
+            switch (batched.recordNeed(index, object)) {
+                case BatchedPass::RecordNeed::Nothing:
+                    break;
+                case BatchedPass::RecordNeed::ViewPart:
+                    bindObject(object, use.viewRebound);
+                    batched.packViewPart(index, mResources.values.all(), mArguments);
+                    ++mStats.recordViewPartsPacked;
+                    break;
+                case BatchedPass::RecordNeed::Whole:
+                    bindObject(object, use.used);
+                    batched.packRecord(index, object, mResources.values.all(), mArguments);
+                    ++mStats.recordsPacked;
+                    break;
+            }
         }
         // The values as drawing object by object leaves them (the last object's), for whatever reads them
         // next.
-        if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()]);
+        if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()], use.used);
     }
 
     // The instance lists: one run per mesh (in order of first appearance, each keeping its objects' order),
