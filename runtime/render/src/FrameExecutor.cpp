@@ -237,13 +237,13 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         // What a pass streams out must not depend on the view: it draws every object.
         const bool culling = mOptions.leaveOut && mResources.sceneCache.valid() &&
                              use.projectsWith(mPortLight, mBinder) && !capture;
-        int drawable = 0;
-        for (size_t index = 0; index < mScene.objects.size(); ++index) {
-            if (!mScene.objects[index].mesh) continue;
-            ++drawable;
-            if (!culling) mVisible.push_back(static_cast<uint32_t>(index));
+        // The executor runs after the scene cache was updated with its scene (EffectRenderer::render).
+        const std::vector<uint32_t>& drawable = mResources.sceneCache.drawable();
+        if (culling) {
+            cull(op, mVisible);
+        } else {
+            mVisible.assign(drawable.begin(), drawable.end());
         }
-        if (culling) cull(op, mVisible);
         if (batched) {
             drawBatched(pass, passIndex, *program, use, *batched, states);
         } else {
@@ -253,7 +253,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             }
         }
         if (culling) {
-            const int culled = drawable - static_cast<int>(mVisible.size());
+            const int culled = static_cast<int>(drawable.size() - mVisible.size());
             mStats.culled += culled;
             if (PassStats* record = currentPass()) record->culled += culled;
         }
@@ -660,16 +660,15 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     mObjectBatch.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {
-        const Mesh* mesh = mScene.objects[mVisible[i]].mesh.get();
         size_t batch = mBatches.size();
-        if (anyOrder) {
+        if (anyOrder) {  // by the mesh's slot: the objects themselves, scattered in memory, are not read
             size_t& ofMesh = mBatchOfMesh[meshSlots[mVisible[i]]];
             if (ofMesh == kNoBatch) {
                 ofMesh = mBatches.size();
                 mBatches.push_back(Batch{mVisible[i], 0, 0});
             }
             batch = ofMesh;
-        } else if (!mBatches.empty() && mScene.objects[mBatches.back().first].mesh.get() == mesh) {
+        } else if (!mBatches.empty() && meshSlots[mBatches.back().first] == meshSlots[mVisible[i]]) {
             batch = mBatches.size() - 1;
         } else {
             mBatches.push_back(Batch{mVisible[i], 0, 0});
