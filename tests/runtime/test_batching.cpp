@@ -3,7 +3,8 @@
 // - frames with batching on and off are identical, byte for byte, for several shipped effects (per-object
 //   values in the vertex stage, in the pixel stage, in compile arguments, cascaded light ports) on a grid
 //   of boxes sharing one mesh and on built-in scenes, while the draws per pass drop to one per mesh;
-// - per-object records kept between frames follow what changed: a moved object, a moved camera;
+// - per-object records kept between frames follow what changed: a moved object, a moved camera (which
+//   packs only the records' view parts);
 // - a parameter the application pins is no longer per object, and the frame follows it;
 // - every technique of every shipped effect renders the same frame either way (what `shadowfx check`
 //   scores and compares with goldens, so its results cannot differ; the full check without batching is
@@ -163,6 +164,48 @@ TEST(Batching, RecordsFollowObjectsAndCamera) {
     EXPECT_GT(differingPixels(same("object moved"), first), 0u);
     scene.camera.position += glm::vec3(1.0f, 0.5f, 0.0f);
     same("camera moved");
+}
+
+// A record's object part (World and its inverse transpose, the object's colour) derives from the object
+// alone: with only the camera moving, a frame packs the view parts of the objects it draws
+// (World*View*Projection) and no whole record, once every object in view has been drawn before (one first
+// seen is packed whole); a recoloured object is packed whole, the others not at all.
+TEST(Batching, MovingCameraPacksOnlyTheViewParts) {
+    auto batchedRenderer = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    auto singleRenderer = loadEffect(sourcePath("effects/thesis_fxcomposer.fx"), true);
+    ASSERT_TRUE(batchedRenderer && singleRenderer);
+    Scene scene = gridScene();
+    const auto render = [&](const char* what) {
+        SCOPED_TRACE(what);
+        const Frame batched = renderFrame(*batchedRenderer, scene, "main", true);
+        const Frame single = renderFrame(*singleRenderer, scene, "main", false);
+        EXPECT_TRUE(notConstant(batched.image));
+        EXPECT_EQ(differingPixels(batched.image, single.image), 0u);
+        return batched.stats;
+    };
+    const FrameStats first = render("first frame");
+    EXPECT_GT(first.recordsPacked, 0u);
+    EXPECT_EQ(first.recordViewPartsPacked, 0u);
+    const FrameStats unchanged = render("unchanged");
+    EXPECT_EQ(unchanged.recordsPacked, 0u);
+    EXPECT_EQ(unchanged.recordViewPartsPacked, 0u);
+    const glm::vec3 start = scene.camera.position;
+    const glm::vec3 step(0.4f, 0.2f, -0.3f);
+    for (int round = 0; round < 2; ++round) {
+        for (int position = 0; position < 3; ++position) {
+            scene.camera.position = start + step * static_cast<float>(position + 1);
+            const FrameStats moved = render(round == 0 ? "camera moved" : "camera moved where it was");
+            if (round == 0) continue;  // objects come into view
+            EXPECT_EQ(moved.recordsPacked, 0u);
+            EXPECT_GT(moved.recordViewPartsPacked, 0u);
+            EXPECT_LE(moved.recordViewPartsPacked, static_cast<uint64_t>(moved.objects));
+        }
+    }
+    scene.objects[1 + 2 * 12 + 3].color = glm::vec3(1.0f, 0.0f, 0.0f);  // a box in view
+    const FrameStats recoloured = render("object recoloured");
+    EXPECT_GE(recoloured.recordsPacked, 1u);  // in each pass that draws it: the scene's and the shadow map's
+    EXPECT_LE(recoloured.recordsPacked, 2u);
+    EXPECT_EQ(recoloured.recordViewPartsPacked, 0u);
 }
 
 // The batched variant is GLSL shadowfx writes itself, so the driver must have nothing to say about it:

@@ -8,7 +8,8 @@ namespace runtime {
 
 std::unique_ptr<BatchedPass> BatchedPass::create(const fx::CompiledPass& pass,
                                                  const std::vector<bool>& perObjectParameter,
-                                                 const std::vector<bool>& perObjectArgument) {
+                                                 const std::vector<bool>& perObjectArgument,
+                                                 const std::vector<bool>& viewParameter) {
     GLint vertexBlocks = 0;
     gl::GetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertexBlocks);
     if (vertexBlocks < 2) return nullptr;  // GL 4.5 allows vertex stages without storage buffers
@@ -20,6 +21,25 @@ std::unique_ptr<BatchedPass> BatchedPass::create(const fx::CompiledPass& pass,
     batched->mVariant = std::move(*variant);
     batched->mPerObjectParameter = perObjectParameter;
     batched->mPerObjectArgument = perObjectArgument;
+    for (const fx::UniformBinding& field : batched->mVariant.record) {
+        const bool view = field.source == fx::UniformBinding::Source::CompileArgument ||
+                          (field.index < viewParameter.size() && viewParameter[field.index]);
+        if (!view) continue;
+        batched->mViewFields.push_back(&field);
+        batched->mViewSpans.push_back(Span{field.offset, field.size});
+    }
+    std::vector<Span>& spans = batched->mViewSpans;
+    std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.offset < b.offset; });
+    size_t merged = 0;
+    for (const Span& span : spans) {
+        if (merged > 0 && spans[merged - 1].offset + spans[merged - 1].size >= span.offset) {
+            Span& last = spans[merged - 1];
+            last.size = std::max(last.size, span.offset + span.size - last.offset);
+        } else {
+            spans[merged++] = span;
+        }
+    }
+    spans.resize(merged);
     // An optimization, not the effect's program: a driver that refuses it costs speed, not the frame.
     fx::DiagnosticList ignored;
     batched->mProgram = GpuProgram::create(batched->mVariant.pass, ignored);
@@ -57,37 +77,74 @@ void BatchedPass::beginRecords(const std::vector<uint32_t>& context, size_t obje
     }
     if (mKeys.size() != objectCount) {
         mKeys.assign(objectCount, RecordKey{});
-        mKeyContexts.assign(objectCount, 0);
+        mStamps.assign(objectCount, RecordStamps{});
         mRecords.assign(objectCount * mVariant.recordSize, 0);
         mDirtyBegin = mDirtyEnd = 0;
     }
 }
 
-bool BatchedPass::recordCurrent(size_t index, const SceneObject& object) {
-    if (mKeyContexts[index] != mContextGeneration) return false;
-    RecordKey& key = mKeys[index];
-    if (key.sceneStamp == mSceneStamp) return true;  // no object changed since it was last compared
-    if (key.world != object.world || key.color != object.color || key.id != object.id) return false;
-    key.sceneStamp = mSceneStamp;
-    return true;
+BatchedPass::RecordNeed BatchedPass::recordNeed(size_t index, const SceneObject& object) {
+    RecordStamps& stamps = mStamps[index];
+    if (stamps.contextGeneration == 0) return RecordNeed::Whole;
+    if (stamps.sceneStamp != mSceneStamp) {  // some object changed since this one was last compared
+        const RecordKey& key = mKeys[index];
+        if (key.world != object.world || key.color != object.color || key.id != object.id)
+            return RecordNeed::Whole;
+        stamps.sceneStamp = mSceneStamp;
+    }
+    return stamps.contextGeneration == mContextGeneration ? RecordNeed::Nothing : RecordNeed::ViewPart;
 }
+
+namespace {
+
+const fx::Value* fieldValue(const fx::UniformBinding& field, const std::vector<fx::Value>& parameters,
+                            const std::vector<fx::Value>& arguments) {
+    const std::vector<fx::Value>& source =
+        field.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
+    return field.index < source.size() ? &source[field.index] : nullptr;
+}
+
+}  // namespace
 
 void BatchedPass::packRecord(size_t index, const SceneObject& object,
                              const std::vector<fx::Value>& parameters,
                              const std::vector<fx::Value>& arguments) {
-    mKeyContexts[index] = mContextGeneration;
-    mKeys[index] = RecordKey{mSceneStamp, object.world, object.color, object.id};
+    mStamps[index] = RecordStamps{mContextGeneration, mSceneStamp};
+    mKeys[index] = RecordKey{object.world, object.color, object.id};
     const size_t size = mVariant.recordSize;
     if (size == 0) return;
     mScratch.assign(size, 0);
-    for (const fx::UniformBinding& field : mVariant.record) {
-        const std::vector<fx::Value>& source =
-            field.source == fx::UniformBinding::Source::Parameter ? parameters : arguments;
-        if (field.index < source.size()) UniformPacker::pack(field, source[field.index], mScratch);
-    }
+    for (const fx::UniformBinding& field : mVariant.record)
+        if (const fx::Value* value = fieldValue(field, parameters, arguments))
+            UniformPacker::pack(field, *value, mScratch);
     uint8_t* record = mRecords.data() + index * size;
     if (std::memcmp(record, mScratch.data(), size) == 0) return;
     std::memcpy(record, mScratch.data(), size);
+    markDirty(index);
+}
+
+void BatchedPass::packViewPart(size_t index, const std::vector<fx::Value>& parameters,
+                               const std::vector<fx::Value>& arguments) {
+    mStamps[index].contextGeneration = mContextGeneration;
+    const size_t size = mVariant.recordSize;
+    if (size == 0 || mViewFields.empty()) return;
+    // The scratch record's bytes outside the view part's members are left as they are: only the spans are
+    // compared and copied, and the members' padding, never written, stays zero as the whole pack left it.
+    mScratch.resize(size, 0);
+    for (const fx::UniformBinding* field : mViewFields)
+        if (const fx::Value* value = fieldValue(*field, parameters, arguments))
+            UniformPacker::pack(*field, *value, mScratch);
+    uint8_t* record = mRecords.data() + index * size;
+    bool changed = false;
+    for (const Span& span : mViewSpans) {
+        if (std::memcmp(record + span.offset, mScratch.data() + span.offset, span.size) == 0) continue;
+        std::memcpy(record + span.offset, mScratch.data() + span.offset, span.size);
+        changed = true;
+    }
+    if (changed) markDirty(index);
+}
+
+void BatchedPass::markDirty(size_t index) {
     if (mDirtyBegin == mDirtyEnd) {
         mDirtyBegin = index;
         mDirtyEnd = index + 1;

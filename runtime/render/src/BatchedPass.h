@@ -3,6 +3,12 @@
 // buffer (one record per scene object, packed when the object or what its values derive from changed, and
 // uploaded only then) and the instance lists (the culled objects of each mesh, uploaded per pass when
 // they differ from the last ones).
+//
+// A record has two parts. Its object part holds the values that derive from the object alone (World and
+// its inverses, the object's colour and id); its view part those that also derive from the port's or a
+// light's matrices (World*View*Projection and the like) and the per-object compile arguments. A moving
+// camera changes every view part every frame and no object part: only the view parts are bound and
+// packed again.
 #pragma once
 
 #include <runtime/GlApi.h>
@@ -24,10 +30,12 @@ class BatchedPass {
 public:
     // The variant for these per-object flags (one per effect parameter, one per compile argument of the
     // pass), or nullopt where the pass cannot be drawn instanced (InstancedPass.h) or the variant does not
-    // link: the pass is then drawn object by object, as with batching off.
+    // link: the pass is then drawn object by object, as with batching off. `viewParameter` (one flag per
+    // effect parameter, PassUse::viewDerived) marks the per-object parameters of the records' view part.
     static std::unique_ptr<BatchedPass> create(const fx::CompiledPass& pass,
                                                const std::vector<bool>& perObjectParameter,
-                                               const std::vector<bool>& perObjectArgument);
+                                               const std::vector<bool>& perObjectArgument,
+                                               const std::vector<bool>& viewParameter);
     ~BatchedPass();
     BatchedPass(const BatchedPass&) = delete;
     BatchedPass& operator=(const BatchedPass&) = delete;
@@ -42,16 +50,23 @@ public:
     const fx::CompiledPass& pass() const { return mVariant.pass; }
 
     // [SECTION] Per-object records
-    // Starts a pass's records: `context` is what the objects' values derive from besides the objects
-    // (SemanticBinder::objectContext, the stamps of the per-pass inputs of per-object compile arguments);
-    // when it differs from the last pass's, every record is stale. `sceneStamp` is leave-out's stamp of the
-    // scene's objects (EffectResources::SceneCache): while it stays, no object changed.
+    // Starts a pass's records: `context` is what the view parts derive from besides the objects
+    // (SemanticBinder::objectContext, the values of the per-pass inputs of per-object compile arguments);
+    // when it differs from the last pass's, every view part is stale. `sceneStamp` is leave-out's stamp of
+    // the scene's objects (EffectResources::SceneCache): while it stays, no object changed.
     void beginRecords(const std::vector<uint32_t>& context, size_t objectCount, uint64_t sceneStamp);
-    // True if object `index`'s record was packed in this context from an object equal to `object`.
-    bool recordCurrent(size_t index, const SceneObject& object);
-    // Packs object `index`'s record from the bound values and the evaluated compile arguments.
+    // What object `index`'s record needs: nothing (packed in this context from an object equal to
+    // `object`), its view part packed again (packed from an equal object in another context), or packing
+    // whole.
+    enum class RecordNeed { Nothing, ViewPart, Whole };
+    RecordNeed recordNeed(size_t index, const SceneObject& object);
+    // Packs object `index`'s record whole from the bound values and the evaluated compile arguments.
     void packRecord(size_t index, const SceneObject& object, const std::vector<fx::Value>& parameters,
                     const std::vector<fx::Value>& arguments);
+    // Packs the view part of object `index`'s record, whose object part stands: the view part's
+    // parameters bound for the object, the compile arguments evaluated.
+    void packViewPart(size_t index, const std::vector<fx::Value>& parameters,
+                      const std::vector<fx::Value>& arguments);
     // Uploads the records packed since the last upload and binds the record buffer.
     void bindRecords();
 
@@ -66,13 +81,25 @@ public:
 private:
     BatchedPass() = default;
 
-    // What an object's record was packed from, besides the context (mKeyContexts).
+    // The object an object's record was packed from.
     struct RecordKey {
-        uint64_t sceneStamp = 0;  // of the scene in which the object was last seen equal
         glm::mat4 world{1.0f};
         glm::vec3 color{0.0f};
         uint32_t id = 0;
     };
+    // When an object's record was packed. Apart from mKeys because every visible object's is read when
+    // the context changed (a moving camera: every frame), and 16 bytes an object stay in the CPU's caches
+    // where a whole key, fetched from memory, stalls.
+    struct RecordStamps {
+        uint64_t contextGeneration = 0;  // the context its view part was packed in; 0: never packed
+        uint64_t sceneStamp = 0;         // of the scene in which the object was last seen equal to its key
+    };
+    // A byte range of the record (the view part's fields, adjacent ones merged).
+    struct Span {
+        uint32_t offset = 0;
+        uint32_t size = 0;
+    };
+    void markDirty(size_t index);
 
     fx::InstancedPass mVariant;
     std::vector<bool> mPerObjectParameter;
@@ -83,11 +110,10 @@ private:
     std::vector<uint32_t> mContext;
     uint64_t mContextGeneration = 1;
     uint64_t mSceneStamp = 0;
-    std::vector<RecordKey> mKeys;  // per scene object
-    // Per scene object: the context generation its record was packed in, 0 for none. Apart from mKeys
-    // because every visible object's is read when the context changed (a moving camera: every frame),
-    // and 8 bytes an object stay in the CPU's caches where a whole key, fetched from memory, stalls.
-    std::vector<uint64_t> mKeyContexts;
+    std::vector<RecordKey> mKeys;                        // per scene object
+    std::vector<RecordStamps> mStamps;                   // per scene object
+    std::vector<const fx::UniformBinding*> mViewFields;  // the view part's members of mVariant.record
+    std::vector<Span> mViewSpans;
     std::vector<uint8_t> mRecords;
     std::vector<uint8_t> mScratch;
     size_t mDirtyBegin = 0, mDirtyEnd = 0;  // records packed since the last upload, in objects

@@ -238,13 +238,13 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         // What a pass streams out must not depend on the view: it draws every object.
         const bool culling = mOptions.leaveOut && mResources.sceneCache.valid() &&
                              use.projectsWith(mPortLight, mBinder) && !capture;
-        int drawable = 0;
-        for (size_t index = 0; index < mScene.objects.size(); ++index) {
-            if (!mScene.objects[index].mesh) continue;
-            ++drawable;
-            if (!culling) mVisible.push_back(static_cast<uint32_t>(index));
+        // The executor runs after the scene cache was updated with its scene (EffectRenderer::render).
+        const std::vector<uint32_t>& drawable = mResources.sceneCache.drawable();
+        if (culling) {
+            cull(op, mVisible);
+        } else {
+            mVisible.assign(drawable.begin(), drawable.end());
         }
-        if (culling) cull(op, mVisible);
         if (batched) {
             drawBatched(pass, passIndex, *program, use, *batched, states);
         } else {
@@ -254,7 +254,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             }
         }
         if (culling) {
-            const int culled = drawable - static_cast<int>(mVisible.size());
+            const int culled = static_cast<int>(drawable.size() - mVisible.size());
             mStats.culled += culled;
             if (PassStats* record = currentPass()) record->culled += culled;
         }
@@ -585,7 +585,8 @@ BatchedPass* FrameExecutor::batchedPass(const fx::CompiledPass& pass, size_t pas
     for (size_t p = 0; p < use.used.size(); ++p)
         mPerObject[p] = use.used[p] && !mResources.values.isPinned(p) && mBinder.isPerObject(p);
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);  // a variant is linked when the flags change
-    return mResources.programs->batchedPass(mTechnique, passIndex, pass, mPerObject, use.argumentPerObject);
+    return mResources.programs->batchedPass(mTechnique, passIndex, pass, mPerObject, use.argumentPerObject,
+                                            use.viewDerived);
 }
 
 // True if drawing the pass's objects in another order leaves the same image: fragments that meet at a
@@ -610,8 +611,8 @@ bool FrameExecutor::orderFree(const RenderStateBlock& states) {
 
 void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program,
                                 const PassUse& use, BatchedPass& batched, const RenderStateBlock& states) {
-    // The objects' records: packed again only for objects that changed or whose values derive from
-    // something that did (the port's or a light's matrices, the other inputs of per-object compile
+    // The objects' records: packed again only for objects that changed (whole) or whose view part derives
+    // from something that did (the port's or a light's matrices, the other inputs of per-object compile
     // arguments: their values, since stamps change whenever passes with other ports bind them).
     mContext.clear();
     mBinder.objectContext(mPort, use.used, mContext);
@@ -628,9 +629,9 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
         }
     }
     batched.beginRecords(mContext, mScene.objects.size(), mResources.sceneCache.stamp());
-    const auto bindObject = [&](const SceneObject& object) {
+    const auto bindObject = [&](const SceneObject& object, const std::vector<bool>& parameters) {
         mResources.values.bindSemantics(mBinder, mPort, &object, mOptions.time,
-                                        SemanticBinder::Scope::PerObject, &use.used);
+                                        SemanticBinder::Scope::PerObject, &parameters);
         evaluateArguments(passIndex, use, true);
     };
     {
@@ -638,13 +639,24 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
         for (uint32_t index : mVisible) {
             const SceneObject& object = mScene.objects[index];
-            if (batched.recordCurrent(index, object)) continue;
-            bindObject(object);
-            batched.packRecord(index, object, mResources.values.all(), mArguments);
+            switch (batched.recordNeed(index, object)) {
+                case BatchedPass::RecordNeed::Nothing:
+                    break;
+                case BatchedPass::RecordNeed::ViewPart:
+                    bindObject(object, use.viewRebound);
+                    batched.packViewPart(index, mResources.values.all(), mArguments);
+                    ++mStats.recordViewPartsPacked;
+                    break;
+                case BatchedPass::RecordNeed::Whole:
+                    bindObject(object, use.used);
+                    batched.packRecord(index, object, mResources.values.all(), mArguments);
+                    ++mStats.recordsPacked;
+                    break;
+            }
         }
         // The values as drawing object by object leaves them (the last object's), for whatever reads them
         // next.
-        if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()]);
+        if (!mVisible.empty()) bindObject(mScene.objects[mVisible.back()], use.used);
     }
 
     // The instance lists: one run per mesh (in order of first appearance, each keeping its objects' order),
@@ -657,16 +669,15 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     mObjectBatch.reserve(mScene.objects.size());  // once: the list then never outgrows its storage
     mObjectBatch.resize(mVisible.size());
     for (size_t i = 0; i < mVisible.size(); ++i) {
-        const Mesh* mesh = mScene.objects[mVisible[i]].mesh.get();
         size_t batch = mBatches.size();
-        if (anyOrder) {
+        if (anyOrder) {  // by the mesh's slot: the objects themselves, scattered in memory, are not read
             size_t& ofMesh = mBatchOfMesh[meshSlots[mVisible[i]]];
             if (ofMesh == kNoBatch) {
                 ofMesh = mBatches.size();
                 mBatches.push_back(Batch{mVisible[i], 0, 0});
             }
             batch = ofMesh;
-        } else if (!mBatches.empty() && mScene.objects[mBatches.back().first].mesh.get() == mesh) {
+        } else if (!mBatches.empty() && meshSlots[mBatches.back().first] == meshSlots[mVisible[i]]) {
             batch = mBatches.size() - 1;
         } else {
             mBatches.push_back(Batch{mVisible[i], 0, 0});

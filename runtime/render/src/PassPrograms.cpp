@@ -63,12 +63,13 @@ GpuProgram* PassPrograms::depthOnlyProgram(size_t technique, size_t pass, const 
 
 BatchedPass* PassPrograms::batchedPass(size_t technique, size_t pass, const fx::CompiledPass& compiled,
                                        const std::vector<bool>& perObjectParameter,
-                                       const std::vector<bool>& perObjectArgument) {
+                                       const std::vector<bool>& perObjectArgument,
+                                       const std::vector<bool>& viewParameter) {
     BatchedSlot& slot = mBatchedPasses[{technique, pass}];
     if (slot.perObjectParameter != perObjectParameter || slot.perObjectArgument != perObjectArgument) {
         slot.perObjectParameter = perObjectParameter;
         slot.perObjectArgument = perObjectArgument;
-        slot.pass = BatchedPass::create(compiled, perObjectParameter, perObjectArgument);
+        slot.pass = BatchedPass::create(compiled, perObjectParameter, perObjectArgument, viewParameter);
     }
     return slot.pass.get();
 }

@@ -42,9 +42,11 @@ public:
     GpuProgram* depthOnlyProgram(size_t technique, size_t pass, const fx::CompiledPass& compiled);
     // The pass drawn instanced (FrameOptions::batching) for these per-object flags: relinked when the
     // flags differ from the last call's, null where the variant cannot be made or linked.
+    // `viewParameter` (PassUse::viewDerived, the same for every call of a pass) splits its records.
     BatchedPass* batchedPass(size_t technique, size_t pass, const fx::CompiledPass& compiled,
                              const std::vector<bool>& perObjectParameter,
-                             const std::vector<bool>& perObjectArgument);
+                             const std::vector<bool>& perObjectArgument,
+                             const std::vector<bool>& viewParameter);
 
 private:
     using PassKey = std::pair<size_t, size_t>;  // technique, pass

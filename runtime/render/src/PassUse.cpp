@@ -42,6 +42,14 @@ std::vector<PassUse> passUses(const fx::CompiledTechnique& technique, size_t cou
             use.argumentPerPass.push_back(!perObject);
             use.anyArgumentPerObject = use.anyArgumentPerObject || perObject;
         }
+        use.viewDerived.assign(count, false);
+        for (size_t p = 0; p < count; ++p) use.viewDerived[p] = use.used[p] && binder.derivesFromView(p);
+        use.viewRebound = use.viewDerived;
+        for (size_t a = 0; a < pass.arguments.size(); ++a) {
+            if (!use.argumentPerObject[a]) continue;
+            for (size_t p : pass.arguments[a].value.inputs())
+                if (p < count && binder.isPerObject(p)) use.viewRebound[p] = true;
+        }
         for (size_t p = 0; p < count; ++p) {
             if (!use.used[p]) continue;
             if (!binder.isPerObject(p)) use.perPassParameters.push_back(p);

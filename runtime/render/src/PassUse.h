@@ -19,6 +19,12 @@ struct PassUse {
     std::vector<bool> argumentPerPass;      // its complement
     bool anyArgumentPerObject = false;      // some argumentPerObject entry is true
     std::vector<size_t> perPassParameters;  // used and not bound per object
+    // Per effect parameter: used, and its per-object value derives from the view too
+    // (SemanticBinder::derivesFromView): batching packs it again when only the view changed.
+    std::vector<bool> viewDerived;
+    // Per effect parameter: what a draw binds when only the view changed: the viewDerived parameters and
+    // the per-object inputs of per-object compile arguments (they run again with them).
+    std::vector<bool> viewRebound;
     // The view/projection matrices it reads: the port's, and those of annotated lights. Culling trusts
     // the port's frustum only for passes that project with it (a camera-port pass that draws a light's
     // view with frustum="light0" matrices is not culled).

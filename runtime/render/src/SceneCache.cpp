@@ -76,11 +76,14 @@ void SceneCache::update(const Scene& scene) {
     std::vector<bool> present(scene.objects.size(), false);
     std::map<const Mesh*, uint32_t> slots;
     mMeshSlots.assign(scene.objects.size(), 0);
+    mDrawable.clear();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        if (object.mesh)
+        if (object.mesh) {
             mMeshSlots[i] =
                 slots.emplace(object.mesh.get(), static_cast<uint32_t>(slots.size())).first->second;
+            mDrawable.push_back(static_cast<uint32_t>(i));
+        }
         if (!object.mesh || object.mesh->positions.empty()) continue;
         auto it = mMeshBoxes.find(object.mesh.get());
         if (it == mMeshBoxes.end())

@@ -28,6 +28,9 @@ public:
     // Per object: its mesh's index among the scene's distinct meshes (batching groups by it).
     const std::vector<uint32_t>& meshSlots() const { return mMeshSlots; }
     size_t meshCount() const { return mMeshCount; }
+    // The objects with a mesh, in the scene's order: what a Draw=Geometry draws before culling, listed once
+    // per scene state so that a culled pass does not walk every object.
+    const std::vector<uint32_t>& drawable() const { return mDrawable; }
 
 private:
     uint64_t mStamp = 0;
@@ -37,6 +40,7 @@ private:
     std::map<const Mesh*, Aabb> mMeshBoxes;
     std::vector<uint32_t> mMeshSlots;
     size_t mMeshCount = 0;
+    std::vector<uint32_t> mDrawable;
 };
 
 }  // namespace runtime

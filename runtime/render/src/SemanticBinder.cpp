@@ -553,6 +553,13 @@ bool SemanticBinder::isPerObject(size_t parameter) const {
     });
 }
 
+bool SemanticBinder::derivesFromView(size_t parameter) const {
+    return std::any_of(mBindings.begin(), mBindings.end(), [parameter](const Binding& b) {
+        return b.parameter == parameter && dependsOnObject(b.kind) &&
+               (b.kind == Kind::WorldView || b.kind == Kind::WorldViewProjection || b.lightSlot >= 0);
+    });
+}
+
 void SemanticBinder::objectContext(const RenderPortView& port, const std::vector<bool>& used,
                                    std::vector<uint32_t>& out) const {
     const auto append = [&out](const glm::mat4& m) {

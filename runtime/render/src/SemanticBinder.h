@@ -121,6 +121,11 @@ public:
 
     // True if the parameter's bound value depends on the drawn object.
     bool isPerObject(size_t parameter) const;
+    // True if the parameter's per-object value also derives from the port's or a light's matrices
+    // (WorldView and WorldViewProjection with their variants, or any per-object binding annotated with a
+    // light): what a moving camera changes. The other per-object values (World and its variants, ObjectId,
+    // the object's colour) derive from the object alone.
+    bool derivesFromView(size_t parameter) const;
     // What the per-object values of the parameters `used` selects derive from besides the object (the
     // port's matrices and cascade, the matrices of annotated lights), appended to `out` as bit patterns:
     // equal contexts and equal objects bind equal values (what batching's per-object records are kept by).

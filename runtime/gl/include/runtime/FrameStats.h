@@ -58,6 +58,12 @@ struct FrameStats {
     // Preshader programs run (render states and compile arguments, fx/PreshaderProgram.h): only those
     // one of whose input parameters changed since their last run; 0 for a frame that changes nothing.
     uint64_t preshaderRuns = 0;
+    // Batching's per-object records (FrameOptions::batching) packed: whole (an object first drawn or
+    // changed), and their view part alone (only the port's or a light's matrices changed, as when the
+    // camera moves: World*View*Projection packed again, World and the object's colour kept). Both 0 for a
+    // frame that changes nothing.
+    uint64_t recordsPacked = 0;
+    uint64_t recordViewPartsPacked = 0;
     std::vector<PassStats> passes;
     std::vector<PassTiming> passTimings;  // only with FrameOptions::timePasses
     FrameCpuTime cpu;                     // only with FrameOptions::timePasses
