@@ -48,12 +48,12 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     std::unique_ptr<EffectResources> resources = EffectResources::create(std::move(effect), diagnostics);
     if (!resources || !resources->pool.join(std::move(pool), *resources, diagnostics)) return nullptr;
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
-        const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
-        if (!semantic.empty())
-            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc, {parameter.name, semantic});
+        if (parameter.standard.byName)
+            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc,
+                               {parameter.name, fx::semanticBindingName(parameter.standard)});
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
-            !SemanticBinder::takesSemantic(parameter.semantic))
+            parameter.standard.kind == fx::SemanticKind::None)
             diagnostics.report(fx::DiagId::UnboundSemantic, parameter.loc,
                                {parameter.name, parameter.semantic});
     }
@@ -61,7 +61,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
 }
 
 std::vector<std::string> EffectRenderer::boundSemantics() {
-    return SemanticBinder::semanticNames();
+    return fx::standardSemanticNames();
 }
 
 const fx::CompiledEffect& EffectRenderer::effect() const {
