@@ -212,22 +212,17 @@ int infoCommand(const Arguments& args) {
         for (const fx::CompiledPass& pass : technique.passes) std::cout << " " << pass.name;
         std::cout << "\n";
     }
-    const std::vector<std::string> bound = runtime::EffectRenderer::boundSemantics();
-    auto binds = [&](const std::string& semantic) {
-        return std::any_of(bound.begin(), bound.end(),
-                           [&](const std::string& name) { return fx::equalsIgnoreCase(name, semantic); });
-    };
     std::cout << "parameters:\n";
     for (const fx::ParameterInfo& p : compiled->parameters) {
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
-        if (!p.semantic.empty() && p.type.isNumeric() && !binds(p.semantic))
+        if (!p.semantic.empty() && p.type.isNumeric() && p.standard.kind == fx::SemanticKind::None)
             std::cout << "  (not bound by shadowfx: keeps its default value)";
         std::cout << "\n";
     }
     std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";
-    for (const std::string& name : bound) std::cout << " " << name;
+    for (const std::string& name : runtime::EffectRenderer::boundSemantics()) std::cout << " " << name;
     std::cout << "\n";
     return 0;
 }

@@ -1,7 +1,6 @@
 #include <runtime/GpuProgram.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -186,12 +185,12 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     // fixed-function pixel stage, which with no texture stage set outputs the interpolated diffuse
     // colour: COLOR0 (varying location 8, fx/src/SemanticTables.cpp) where the vertex shader writes it,
     // else D3D's default diffuse, white.
-    const bool writesColor0 = pass.vertex.glsl.find("layout(location = 8) out") != std::string::npos;
     const std::string fixedFunctionPixels =
-        writesColor0 ? "#version 450\nlayout(location = 8) in vec4 fx_v8;\nlayout(location = 0) out vec4 "
-                       "fx_color;\nvoid main() { fx_color = fx_v8; }\n"
-                     : "#version 450\nlayout(location = 0) out vec4 fx_color;\nvoid main() { fx_color = "
-                       "vec4(1.0); }\n";
+        pass.vertex.effects.writesDiffuse
+            ? "#version 450\nlayout(location = 8) in vec4 fx_v8;\nlayout(location = 0) out vec4 "
+              "fx_color;\nvoid main() { fx_color = fx_v8; }\n"
+            : "#version 450\nlayout(location = 0) out vec4 fx_color;\nvoid main() { fx_color = "
+              "vec4(1.0); }\n";
     const std::string& fragment = pass.fragment.glsl.empty() ? fixedFunctionPixels : pass.fragment.glsl;
 
     // A stream-output pass that rasterizes nothing (D3D10's NULL pixel shader) links no fragment stage.
@@ -255,15 +254,14 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     }
 
     // SV_ClipDistance: GL clips only against the planes enabled, so enable those the program writes.
-    if (const size_t at = pass.vertex.glsl.find("gl_ClipDistance["); at != std::string::npos)
-        program->mClipDistances = std::clamp(std::atoi(pass.vertex.glsl.c_str() + at + 16), 0, 8);
+    program->mClipDistances = pass.vertex.effects.clipDistances;
     // PSIZE: the last stage before the rasterizer sizes its points (D3D9 took PSIZE over the PointSize
     // state); GL does so only with GL_PROGRAM_POINT_SIZE, and a program that does not write gl_PointSize
     // then has undefined sizes, so it is enabled for the programs that write it and no others.
-    const std::string& rasterized = withGeometry       ? pass.geometry.glsl
-                                    : withTessellation ? pass.domain.glsl
-                                                       : pass.vertex.glsl;
-    program->mWritesPointSize = rasterized.find("gl_PointSize") != std::string::npos;
+    const fx::StageProgram& rasterized = withGeometry       ? pass.geometry
+                                         : withTessellation ? pass.domain
+                                                            : pass.vertex;
+    program->mWritesPointSize = rasterized.effects.writesPointSize;
     const fx::StageProgram* linked[5] = {
         &pass.vertex, withPixel ? &pass.fragment : nullptr, withGeometry ? &pass.geometry : nullptr,
         withTessellation ? &pass.hull : nullptr, withTessellation ? &pass.domain : nullptr};
@@ -389,12 +387,9 @@ std::vector<size_t> GpuProgram::counterParameters(const fx::CompiledPass& pass) 
 }
 
 bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {
-    // SPIRV-Cross spells each of these one way in the GLSL it writes.
-    static constexpr const char* kSideEffects[] = {
-        "discard", "gl_FragDepth", "gl_SampleMask", "imageStore", "imageAtomic", "atomic", "buffer "};
-    for (const char* word : kSideEffects)
-        if (pixel.glsl.find(word) != std::string::npos) return true;
-    return false;
+    const fx::StageEffects& e = pixel.effects;
+    return e.discards || e.writesDepth || e.writesSampleMask || e.writesImages || e.writesBuffers ||
+           e.atomics;
 }
 
 GpuProgram::~GpuProgram() {

@@ -48,12 +48,12 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     std::unique_ptr<EffectResources> resources = EffectResources::create(std::move(effect), diagnostics);
     if (!resources || !resources->pool.join(std::move(pool), *resources, diagnostics)) return nullptr;
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
-        const std::string semantic = SemanticBinder::conventionalSemantic(parameter);
-        if (!semantic.empty())
-            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc, {parameter.name, semantic});
+        if (parameter.standard.byName)
+            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc,
+                               {parameter.name, fx::semanticBindingName(parameter.standard)});
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
-            !SemanticBinder::takesSemantic(parameter.semantic))
+            parameter.standard.kind == fx::SemanticKind::None)
             diagnostics.report(fx::DiagId::UnboundSemantic, parameter.loc,
                                {parameter.name, parameter.semantic});
     }
@@ -61,7 +61,7 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
 }
 
 std::vector<std::string> EffectRenderer::boundSemantics() {
-    return SemanticBinder::semanticNames();
+    return fx::standardSemanticNames();
 }
 
 const fx::CompiledEffect& EffectRenderer::effect() const {
@@ -193,7 +193,7 @@ bool EffectRenderer::setHostFile(std::shared_ptr<const fx::HostFile> host, fx::D
         return true;
     }
     if (!fx::checkHostFile(*host, mImpl->effect(), diagnostics)) return false;
-    mHostFrame = std::make_unique<HostFrame>(std::move(host));
+    mHostFrame = std::make_unique<HostFrame>(std::move(host), *this);
     return true;
 }
 
@@ -203,18 +203,7 @@ std::optional<LightFit> EffectRenderer::lightFit(const Scene& scene, std::string
                                                  const FrameOptions& options) const {
     const Light* light = scene.findLight(lightName);
     if (!light) return std::nullopt;
-    fx::DiagnosticList diagnostics;  // render() reports the annotations' mistakes
-    SemanticBinder binder(mImpl->parameterInfo(), mImpl->effect().lights);
-    // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
-    std::optional<VisibleSamples> visible;
-    if (binder.wantsVisibleSamples(mImpl->values.all()))
-        visible = mImpl->visibleSamplePass.run(
-            scene, InstanceBvh{}, options.width, options.height,
-            [this](const SceneObject& object) -> GpuMesh& { return mImpl->gpuMesh(object.mesh); });
-    binder.prepare(scene, scene.bounds(),
-                   static_cast<float>(options.width) / static_cast<float>(options.height),
-                   mImpl->values.all(), mImpl->values.stamps(), diagnostics, visible ? &*visible : nullptr);
-    return binder.lightFit(*light);
+    return mImpl->fitLights(scene, options.width, options.height).lightFit(*light);
 }
 
 bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
@@ -224,7 +213,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     frameStats.reset();
     mImpl->pool.pull(*mImpl);
     if (mHostFrame) {
-        const bool ran = mHostFrame->render(*this, *mImpl, scene, options, diagnostics);
+        const bool ran = mHostFrame->render(*mImpl, scene, options, diagnostics);
         const bool clean = checkGlErrors("EffectRenderer::render", __FILE__, __LINE__);
         if (!clean)
             diagnostics.report(fx::DiagId::GlErrorDuringFrame, fx::SourceLoc{mImpl->effect().path, 0, 0});

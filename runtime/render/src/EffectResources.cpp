@@ -4,6 +4,7 @@
 #include <private/runtime/NameLookups.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace runtime {
 
@@ -33,6 +34,19 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
     r.quad = GpuMesh::makeFullScreenQuad();
     r.annotations = AnnotationTable(*r.mCompiled);
     return resources;
+}
+
+const SemanticBinder& EffectResources::fitLights(const Scene& scene, int width, int height) {
+    // A fit to what the camera sees finds the samples of this scene at this size, as render() does.
+    std::optional<VisibleSamples> visible;
+    if (binder->wantsVisibleSamples(values.all()))
+        visible = visibleSamplePass.run(
+            scene, InstanceBvh{}, width, height,
+            [this](const SceneObject& object) -> GpuMesh& { return gpuMesh(object.mesh); });
+    fx::DiagnosticList ignored;
+    binder->prepare(scene, scene.bounds(), static_cast<float>(width) / static_cast<float>(height),
+                    values.all(), values.stamps(), ignored, visible ? &*visible : nullptr);
+    return *binder;
 }
 
 std::optional<size_t> EffectResources::findParameter(std::string_view name) const {

@@ -159,6 +159,10 @@ public:
     VisibleSamplePass visibleSamplePass;
 
     GpuMesh& gpuMesh(const std::shared_ptr<const Mesh>& mesh);
+    // The binder with its lights fitted for a frame of `scene` at width x height, outside render(): what
+    // EffectRenderer::lightFit and a host file's frame see. A fit to what the camera sees runs its own
+    // pre-pass (GL work). The annotations' mistakes are render()'s to report.
+    const SemanticBinder& fitLights(const Scene& scene, int width, int height);
     // EffectRenderer::setTexture (EffectTextures::set), and what earlier frames drew from the old texels
     // no longer reused.
     bool setTexture(size_t index, const TextureData& data, fx::DiagnosticSink& diagnostics);

@@ -1,6 +1,7 @@
 // HostFrame: see HostFrame.h. Feature list:
 //   [SECTION] Values   — what a host file's parameter is, for a step's render port and an object
 //   [SECTION] Targets  — the render targets the application created, given to their texture parameters
+//   [SECTION] Resolution — the file's names as indices and handles, once
 //   [SECTION] Steps    — techniques and passes applied through the pass API, the draws between them
 //   [SECTION] Frame    — one frame, or the shadow factor for scoring
 #include "HostFrame.h"
@@ -42,16 +43,21 @@ struct StepContext {
     const Scene& scene;
     PortMatrices camera;
     PortMatrices port;
-    std::map<std::string, PortMatrices>& lights;
+    // Per light the file names (HostFrame's list): its matrices, fitted before the first step, and the
+    // scene's light of that name.
+    const std::vector<PortMatrices>& lights;
+    const std::vector<const Light*>& sceneLights;
     glm::ivec2 viewport{0};
 };
 
 // glm holds D3DX's row-vector matrices in the same memory (docs/api.md), so D3D's World * View is glm's
 // view * world.
-glm::mat4 factorMatrix(const HostMatrix& factor, const StepContext& step, const SceneObject* object) {
-    const PortMatrices& space = factor.space == HostMatrix::Space::Camera  ? step.camera
-                                : factor.space == HostMatrix::Space::Light ? step.lights.at(factor.light)
-                                                                           : step.port;
+glm::mat4 factorMatrix(const HostMatrix& factor, int light, const StepContext& step,
+                       const SceneObject* object) {
+    const PortMatrices& space = factor.space == HostMatrix::Space::Camera ? step.camera
+                                : factor.space == HostMatrix::Space::Light
+                                    ? step.lights[static_cast<size_t>(light)]
+                                    : step.port;
     const glm::mat4 world = object ? object->world : glm::mat4(1.0f);
     glm::mat4 m{1.0f};
     switch (factor.kind) {
@@ -80,16 +86,20 @@ glm::mat4 factorMatrix(const HostMatrix& factor, const StepContext& step, const 
 }
 
 // The value's components: a matrix as its 16 elements row after row (HLSL's order), vectors as they are.
-std::vector<float> components(const HostValue& value, const StepContext& step, const SceneObject* object) {
-    const auto light = [&]() -> const Light& { return *step.scene.findLight(value.light); };
+std::vector<float> components(const HostFrame::Value& resolved, const StepContext& step,
+                              const SceneObject* object) {
+    const HostValue& value = resolved.parameter->value;
+    const auto light = [&]() -> const Light& {
+        return *step.sceneLights[static_cast<size_t>(resolved.light)];
+    };
     switch (value.kind) {
         case HostValue::Kind::Constant:
             return value.numbers;
         case HostValue::Kind::Matrix: {
             // D3D's A * B * C, applied to a row vector left to right, is glm's C * B * A.
             glm::mat4 product{1.0f};
-            for (const HostMatrix& factor : value.factors)
-                product = factorMatrix(factor, step, object) * product;
+            for (size_t f = 0; f < value.factors.size(); ++f)
+                product = factorMatrix(value.factors[f], resolved.factorLights[f], step, object) * product;
             std::vector<float> out(16);
             for (int r = 0; r < 4; ++r)
                 for (int c = 0; c < 4; ++c) out[r * 4 + c] = product[r][c];
@@ -139,17 +149,19 @@ bool setComponents(EffectVariable variable, const HostValue& value, const std::v
 }
 
 // The step's group counts, each term a count or a parameter's components (a script's Dispatch=x,y,z);
-// nothing where they are more than three or a parameter holds a negative count.
-std::optional<std::array<uint32_t, 3>> dispatchGroups(EffectRenderer& renderer, const HostStep& step) {
+// nothing where they are more than three or a parameter holds a negative count. `parameters`: each term's
+// parameter, invalid for a count.
+std::optional<std::array<uint32_t, 3>> dispatchGroups(const HostStep& step,
+                                                      const std::vector<EffectVariable>& parameters) {
     std::array<uint32_t, 3> groups{1, 1, 1};
     size_t given = 0;
-    for (const HostStep::DispatchTerm& term : step.dispatch) {
-        if (term.parameter.empty()) {
+    for (size_t t = 0; t < step.dispatch.size(); ++t) {
+        if (!parameters[t].isValid()) {
             if (given == 3) return std::nullopt;
-            groups[given++] = term.count;
+            groups[given++] = step.dispatch[t].count;
             continue;
         }
-        const fx::Value value = renderer.variable(term.parameter).value();
+        const fx::Value value = parameters[t].value();
         for (float count : value.data) {
             if (given == 3 || !(count >= 0.0f)) return std::nullopt;
             groups[given++] = static_cast<uint32_t>(count);
@@ -187,69 +199,145 @@ std::pair<GpuTexture, GpuTexture> makeTarget(const HostTarget& target, glm::ivec
 
 }  // namespace
 
-void HostFrame::ensureTargets(EffectRenderer& renderer, int width, int height) {
-    for (const HostTarget& target : mHost->targets) {
+void HostFrame::ensureTargets(int width, int height) {
+    for (size_t i = 0; i < mTargets.size(); ++i) {
+        const HostTarget& target = mHost->targets[i];
+        Target& t = mTargets[i];
         glm::ivec2 size =
             target.width > 0 ? glm::ivec2(target.width, target.height) : glm::ivec2(width, height);
         if (target.kind == HostTarget::Kind::Cube) size.y = size.x = target.width > 0 ? target.width : height;
-        Target& t = mTargets[target.name];
         if (t.color.id() == 0 || t.color.width() != size.x || t.color.height() != size.y) {
             std::tie(t.color, t.depth) = makeTarget(target, size);
             t.color.setLabel("host target " + target.name);
         }
         // As the application's SetTexture: the effect samples the target wherever it samples the parameter.
-        if (!target.texture.empty()) renderer.variable(target.texture).setTexture(t.color.id());
+        if (t.texture.isValid()) t.texture.setTexture(t.color.id());
     }
+}
+
+// [SECTION] Resolution
+
+HostFrame::HostFrame(std::shared_ptr<const fx::HostFile> host, EffectRenderer& renderer)
+    : mHost(std::move(host)), mTargets(mHost->targets.size()), mOverridden(renderer.variableCount(), false) {
+    for (size_t i = 0; i < mTargets.size(); ++i)
+        if (!mHost->targets[i].texture.empty())
+            mTargets[i].texture = renderer.variable(mHost->targets[i].texture);
+    for (const HostParameter& parameter : mHost->parameters)
+        mParameters.push_back(resolve(parameter, renderer));
+    if (mHost->visibility)
+        for (const HostParameter& parameter : mHost->visibility->set)
+            mVisibilitySet.push_back(resolve(parameter, renderer));
+    for (const HostStep& step : mHost->frame) {
+        Step resolved;
+        resolved.technique = renderer.technique(step.technique);
+        for (size_t p = 0; p < resolved.technique.passCount(); ++p)
+            if (step.pass.empty() || resolved.technique.pass(p).name() == step.pass)
+                resolved.passes.push_back(p);
+        for (size_t t = 0; t < mHost->targets.size() && step.target != "frame"; ++t)
+            if (mHost->targets[t].name == step.target) resolved.target = static_cast<int>(t);
+        if (mHost->visibility)
+            for (const std::string& unshadowed : mHost->visibility->unshadowed)
+                resolved.unshadowed = resolved.unshadowed || unshadowed == step.target;
+        if (step.port != "camera") resolved.port = lightIndex(step.port);
+        for (const HostStep::DispatchTerm& term : step.dispatch)
+            resolved.dispatch.push_back(term.parameter.empty() ? EffectVariable{}
+                                                               : renderer.variable(term.parameter));
+        mSteps.push_back(std::move(resolved));
+    }
+    mLightProjections.assign(mLightNames.size(), nullptr);
+    for (const HostLightProjection& projection : mHost->lights)
+        for (size_t light = 0; light < mLightNames.size(); ++light)
+            if (mLightNames[light] == projection.light) mLightProjections[light] = &projection;
+}
+
+int HostFrame::lightIndex(const std::string& name) {
+    const auto known = std::find(mLightNames.begin(), mLightNames.end(), name);
+    if (known != mLightNames.end()) return static_cast<int>(known - mLightNames.begin());
+    mLightNames.push_back(name);
+    return static_cast<int>(mLightNames.size() - 1);
+}
+
+HostFrame::Value HostFrame::resolve(const HostParameter& parameter, EffectRenderer& renderer) {
+    Value value;
+    value.parameter = &parameter;
+    value.variable = renderer.variable(parameter.name);
+    if (!parameter.value.light.empty()) value.light = lightIndex(parameter.value.light);
+    for (const HostMatrix& factor : parameter.value.factors)
+        value.factorLights.push_back(factor.space == HostMatrix::Space::Light ? lightIndex(factor.light)
+                                                                              : -1);
+    return value;
+}
+
+// Scene::findLight's answer depends on the names of the scene's lights and nothing else.
+void HostFrame::resolveSceneLights(const Scene& scene) {
+    bool same = mSceneLightsResolved && mSceneLightNames.size() == scene.lights.size();
+    for (size_t i = 0; same && i < scene.lights.size(); ++i)
+        same = mSceneLightNames[i] == scene.lights[i].name;
+    if (same) return;
+    mSceneLightNames.clear();
+    for (const Light& light : scene.lights) mSceneLightNames.push_back(light.name);
+    mSceneLights.assign(mLightNames.size(), -1);
+    for (size_t light = 0; light < mLightNames.size(); ++light)
+        if (const Light* found = scene.findLight(mLightNames[light]))
+            mSceneLights[light] = static_cast<int>(found - scene.lights.data());
+    mSceneLightsResolved = true;
 }
 
 // [SECTION] Steps
 
-bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
-                          const FrameOptions& options, const std::set<std::string>& unshadowed,
-                          fx::DiagnosticSink& diagnostics) {
+bool HostFrame::drawSteps(EffectResources& r, const Scene& scene, const FrameOptions& options,
+                          bool leaveUnshadowed, fx::DiagnosticSink& diagnostics) {
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-    std::map<std::string, PortMatrices> lights;
-    const auto lightMatrices = [&](const std::string& name, const fx::SourceLoc& loc) -> bool {
-        if (lights.count(name)) return true;
-        const std::optional<LightFit> fit = renderer.lightFit(scene, name, options);
-        if (!fit) {
-            diagnostics.report(fx::DiagId::HostLightNotInScene, loc, {name});
+    resolveSceneLights(scene);
+    std::vector<const Light*> sceneLights(mLightNames.size(), nullptr);
+    for (size_t light = 0; light < mLightNames.size(); ++light)
+        if (mSceneLights[light] >= 0)
+            sceneLights[light] = &scene.lights[static_cast<size_t>(mSceneLights[light])];
+    std::vector<PortMatrices> lights(mLightNames.size());
+    std::vector<bool> fitted(mLightNames.size(), false);
+    const SemanticBinder* binder = nullptr;  // the effect's light fits, prepared when a light is first needed
+    const auto lightMatrices = [&](int light, const fx::SourceLoc& loc) -> bool {
+        const auto l = static_cast<size_t>(light);
+        if (fitted[l]) return true;
+        if (!sceneLights[l]) {
+            diagnostics.report(fx::DiagId::HostLightNotInScene, loc, {mLightNames[l]});
             return false;
         }
-        PortMatrices matrices{fit->view, fit->projection};
-        for (const HostLightProjection& projection : mHost->lights)
-            if (projection.light == name)
-                matrices.projection = glm::perspectiveLH_ZO(glm::radians(projection.fovY), 1.0f,
-                                                            projection.nearPlane, projection.farPlane);
-        lights[name] = matrices;
+        if (!binder) binder = &r.fitLights(scene, options.width, options.height);
+        const LightFit fit = binder->lightFit(*sceneLights[l]);
+        lights[l] = PortMatrices{fit.view, fit.projection};
+        if (const HostLightProjection* projection = mLightProjections[l])
+            lights[l].projection = glm::perspectiveLH_ZO(glm::radians(projection->fovY), 1.0f,
+                                                         projection->nearPlane, projection->farPlane);
+        fitted[l] = true;
         return true;
     };
     // Every light a value names, before the first step needs it.
-    const auto lightsOf = [&](const HostParameter& parameter) {
-        bool ok = true;
-        if (!parameter.value.light.empty()) ok = lightMatrices(parameter.value.light, parameter.loc);
-        for (const HostMatrix& factor : parameter.value.factors)
-            if (factor.space == HostMatrix::Space::Light)
-                ok = lightMatrices(factor.light, parameter.loc) && ok;
-        return ok;
-    };
-    for (const HostParameter& parameter : mHost->parameters)
-        if (!lightsOf(parameter)) return false;
+    for (const Value& value : mParameters) {
+        bool ok = value.light < 0 || lightMatrices(value.light, value.parameter->loc);
+        for (int light : value.factorLights)
+            if (light >= 0) ok = lightMatrices(light, value.parameter->loc) && ok;
+        if (!ok) return false;
+    }
 
     const PortMatrices camera{scene.camera.view(), scene.camera.projection(aspect)};
-    for (const HostStep& step : mHost->frame) {
-        if (step.port != "camera" && !lightMatrices(step.port, step.loc)) return false;
-        StepContext context{scene, camera, step.port == "camera" ? camera : lights.at(step.port), lights};
+    for (size_t s = 0; s < mSteps.size(); ++s) {
+        const HostStep& step = mHost->frame[s];
+        const Step& resolved = mSteps[s];
+        if (resolved.port >= 0 && !lightMatrices(resolved.port, step.loc)) return false;
+        StepContext context{scene, camera,
+                            resolved.port < 0 ? camera : lights[static_cast<size_t>(resolved.port)], lights,
+                            sceneLights};
 
         // The step's target, as the application binds it before Begin().
         RenderTargets targets;
-        if (step.target == "frame") {
+        Target* target = resolved.target < 0 ? nullptr : &mTargets[static_cast<size_t>(resolved.target)];
+        if (!target) {
             targets.colors[0].texture = &r.textures->frameColor();
             targets.depth.texture = &r.textures->frameDepth();
         } else {
-            Target& target = mTargets.at(step.target);
-            targets.colors[0] = RenderTargetAttachment::wholeOf(&target.color);
-            targets.depth = RenderTargetAttachment::wholeOf(&target.depth);
+            targets.colors[0] = RenderTargetAttachment::wholeOf(&target->color);
+            targets.depth = RenderTargetAttachment::wholeOf(&target->depth);
         }
         FramebufferFault fault;
         if (!r.textures->bindFramebuffer(targets, fault)) {
@@ -264,31 +352,29 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
         if (step.clearColor) clear.color = *step.clearColor;
         clear.depth = step.clearDepth;
         if (clear.color || clear.depth) FramebufferCache::clear(clear);
-        if (step.draw == HostStep::Draw::Nothing || unshadowed.count(step.target)) continue;
+        if (step.draw == HostStep::Draw::Nothing || (leaveUnshadowed && resolved.unshadowed)) continue;
 
-        EffectTechnique technique = renderer.technique(step.technique);
+        const EffectTechnique& technique = resolved.technique;
         if (!technique.begin()) return false;
         bool ok = true;
-        for (size_t p = 0; p < technique.passCount() && ok; ++p) {
+        for (size_t p : resolved.passes) {
             EffectPass pass = technique.pass(p);
-            if (!step.pass.empty() && pass.name() != step.pass) continue;
             // Values of the step before apply() uploads them; values of each object before its draw.
-            for (const HostParameter& parameter : mHost->parameters)
-                if (parameter.value.kind != HostValue::Kind::Constant && !parameter.value.perObject() &&
-                    !mOverridden.count(parameter.name))
-                    setComponents(renderer.variable(parameter.name), parameter.value,
-                                  components(parameter.value, context, nullptr));
+            for (const Value& value : mParameters)
+                if (value.parameter->value.kind != HostValue::Kind::Constant &&
+                    !value.parameter->value.perObject() && !mOverridden[value.variable.index()])
+                    setComponents(value.variable, value.parameter->value,
+                                  components(value, context, nullptr));
             if (!pass.apply(&diagnostics)) {
                 ok = false;
                 break;
             }
             const fx::CompiledPass& compiled = r.effect().techniques[pass.techniqueIndex()].passes[p];
             if (!step.dispatch.empty() && !compiled.compute.glsl.empty()) {
-                const std::optional<std::array<uint32_t, 3>> groups = dispatchGroups(renderer, step);
+                const std::optional<std::array<uint32_t, 3>> groups = dispatchGroups(step, resolved.dispatch);
                 if (!groups) {
-                    const auto index = static_cast<size_t>(&step - mHost->frame.data());
                     diagnostics.report(fx::DiagId::HostStepDispatchInvalid, step.loc,
-                                       {"frame/" + std::to_string(index) + "/dispatch"});
+                                       {"frame/" + std::to_string(s) + "/dispatch"});
                     ok = false;
                     break;
                 }
@@ -303,10 +389,10 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
                 continue;
             }
             for (const SceneObject& object : scene.objects) {
-                for (const HostParameter& parameter : mHost->parameters)
-                    if (parameter.value.perObject() && !mOverridden.count(parameter.name))
-                        setComponents(renderer.variable(parameter.name), parameter.value,
-                                      components(parameter.value, context, &object));
+                for (const Value& value : mParameters)
+                    if (value.parameter->value.perObject() && !mOverridden[value.variable.index()])
+                        setComponents(value.variable, value.parameter->value,
+                                      components(value, context, &object));
                 pass.commitChanges(&diagnostics);
                 r.gpuMesh(object.mesh)
                     .draw(compiled.vertex.inputs, 1, compiled.patchVertices, compiled.primitive);
@@ -320,36 +406,34 @@ bool HostFrame::drawSteps(EffectRenderer& renderer, EffectResources& r, const Sc
 
 // [SECTION] Frame
 
-bool HostFrame::render(EffectRenderer& renderer, EffectResources& r, const Scene& scene,
-                       const FrameOptions& options, fx::DiagnosticSink& diagnostics) {
+bool HostFrame::render(EffectResources& r, const Scene& scene, const FrameOptions& options,
+                       fx::DiagnosticSink& diagnostics) {
     const std::vector<bool> none;  // no render target allocated here: ensureTargets does
     r.textures->ensureFrame(options.width, options.height, &none);
-    ensureTargets(renderer, options.width, options.height);
-    for (const HostParameter& parameter : mHost->parameters)
-        if (parameter.value.kind == HostValue::Kind::Constant)
-            setComponents(renderer.variable(parameter.name), parameter.value, parameter.value.numbers);
+    ensureTargets(options.width, options.height);
+    for (const Value& value : mParameters)
+        if (value.parameter->value.kind == HostValue::Kind::Constant)
+            setComponents(value.variable, value.parameter->value, value.parameter->value.numbers);
 
     const auto& defines = r.effect().provenance.defines;
     const bool scored = mHost->visibility &&
                         std::any_of(defines.begin(), defines.end(),
                                     [](const auto& define) { return define.first == "SHADOWFX_VISIBILITY"; });
-    mOverridden.clear();
+    std::fill(mOverridden.begin(), mOverridden.end(), false);
     bool ok = true;
     if (!scored) {
-        ok = drawSteps(renderer, r, scene, options, {}, diagnostics);
+        ok = drawSteps(r, scene, options, false, diagnostics);
     } else {
         // The shadow factor of an effect with no hook of its own: the frame with the visibility constants
         // (no ambient, a white material) divided by the same frame with the shadow maps left cleared,
         // which lights everything. What remains is the fraction of the light the shadow test let through.
-        for (const HostParameter& parameter : mHost->visibility->set) {
-            setComponents(renderer.variable(parameter.name), parameter.value, parameter.value.numbers);
-            mOverridden.insert(parameter.name);
+        for (const Value& value : mVisibilitySet) {
+            setComponents(value.variable, value.parameter->value, value.parameter->value.numbers);
+            mOverridden[value.variable.index()] = true;
         }
-        const std::set<std::string> unshadowed(mHost->visibility->unshadowed.begin(),
-                                               mHost->visibility->unshadowed.end());
-        ok = drawSteps(renderer, r, scene, options, {}, diagnostics);
+        ok = drawSteps(r, scene, options, false, diagnostics);
         const Image shadowed = readColorTarget(r.textures->frameColor()).toRGBA8();
-        ok = ok && drawSteps(renderer, r, scene, options, unshadowed, diagnostics);
+        ok = ok && drawSteps(r, scene, options, true, diagnostics);
         const Image lit = readColorTarget(r.textures->frameColor()).toRGBA8();
         std::vector<uint8_t> ratio(shadowed.bytes.size());
         for (size_t i = 0; i + 3 < ratio.size(); i += 4) {

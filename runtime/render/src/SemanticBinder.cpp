@@ -1,33 +1,18 @@
 #include "SemanticBinder.h"
 
 #include <fx/RenderStates.h>
-#include <private/runtime/NameLookups.h>
 #include <runtime/CascadedShadowMaps.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cstring>
-#include <cctype>
 #include <cmath>
 #include <optional>
 
 namespace runtime {
 
 namespace {
-
-std::string upper(std::string_view text) {
-    std::string out(text);
-    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
-
-bool consumeSuffix(std::string& text, std::string_view suffix) {
-    if (text.size() < suffix.size() || text.compare(text.size() - suffix.size(), suffix.size(), suffix) != 0)
-        return false;
-    text.resize(text.size() - suffix.size());
-    return true;
-}
 
 // Copies a rows x cols block of `source` (HLSL row order) into `value`, converting to its shape: a
 // float3x3 parameter receives the upper-left 3x3 of a 4x4 matrix, a float3 the first three components.
@@ -81,214 +66,13 @@ void storeElements(fx::Value& value, const std::vector<float>& elements, int row
 
 }  // namespace
 
-namespace {
-
-// The semantics bind() gives values, as the docs spell them (matched case-insensitively).
-constexpr std::pair<const char*, SemanticBinder::Kind> kMatrixSemantics[] = {
-    {"World", SemanticBinder::Kind::World},
-    {"View", SemanticBinder::Kind::View},
-    {"Projection", SemanticBinder::Kind::Projection},
-    {"WorldView", SemanticBinder::Kind::WorldView},
-    {"ViewProjection", SemanticBinder::Kind::ViewProjection},
-    {"WorldViewProjection", SemanticBinder::Kind::WorldViewProjection},
-};
-constexpr const char* kMatrixSuffixes[] = {"Inverse", "Transpose", "InverseTranspose"};
-constexpr std::pair<const char*, SemanticBinder::Kind> kOtherSemantics[] = {
-    {"ViewportPixelSize", SemanticBinder::Kind::ViewportPixelSize},
-    {"Time", SemanticBinder::Kind::Time},
-    {"CameraPosition", SemanticBinder::Kind::CameraPosition},
-    {"EyePosition", SemanticBinder::Kind::CameraPosition},
-    {"ObjectId", SemanticBinder::Kind::ObjectId},
-    {"Position", SemanticBinder::Kind::LightPosition},
-    {"LightPosition", SemanticBinder::Kind::LightPosition},
-    {"Direction", SemanticBinder::Kind::LightDirection},
-    {"LightDirection", SemanticBinder::Kind::LightDirection},
-    {"LightColor", SemanticBinder::Kind::LightColor},
-    {"LightAreaRadius", SemanticBinder::Kind::LightAreaRadius},
-    {"LightSize", SemanticBinder::Kind::LightAreaRadius},
-    {"Diffuse", SemanticBinder::Kind::ObjectColor},
-    {"MaterialDiffuse", SemanticBinder::Kind::ObjectColor},
-    {"DiffuseColor", SemanticBinder::Kind::ObjectColor},
-    {"Ambient", SemanticBinder::Kind::Ambient},
-    {"SceneHasClosedObjects", SemanticBinder::Kind::SceneHasClosedObjects},
-    {"CascadeViewProjection", SemanticBinder::Kind::CascadeViewProjection},
-    {"CascadeAtlasRects", SemanticBinder::Kind::CascadeAtlasRects},
-    {"CascadeSplitDepths", SemanticBinder::Kind::CascadeSplitDepths},
-    {"CubeFaceSelect", SemanticBinder::Kind::CubeFaceSelect},
-};
-// Read by the light fits as tunables (SemanticBinder's constructor), not bound.
-constexpr const char* kTunableSemantics[] = {
-    "LiSPSMNScale",   "LiSPSMNOpt",         "LiSPSMDepthExtent", "LiSPSMMiddleVector",
-    "LightPancaking", "TSMFocus",           "PSMSlideBack",      "PSMMaxWarpRatio",
-    "CascadeCount",   "CascadeSplitLambda", "CascadeBlend",      "LightFitVisibleSamples"};
-
-}  // namespace
-
-bool SemanticBinder::classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose) {
-    countNameLookup();
-    std::string name = upper(semantic);
-    inverse = transpose = false;
-    if (consumeSuffix(name, "INVERSETRANSPOSE")) {
-        inverse = transpose = true;
-    } else if (consumeSuffix(name, "TRANSPOSE")) {
-        transpose = true;
-    } else if (consumeSuffix(name, "INVERSE")) {
-        inverse = true;
-    }
-    for (const auto& [text, matrixKind] : kMatrixSemantics) {
-        if (name == upper(text)) {
-            kind = matrixKind;
-            return true;
-        }
-    }
-    if (inverse || transpose) return false;
-    for (const auto& [text, otherKind] : kOtherSemantics) {
-        if (name == upper(text)) {
-            kind = otherKind;
-            return true;
-        }
-    }
-    return false;
-}
-
 bool SemanticBinder::wantsVisibleSamples(const std::vector<fx::Value>& values) const {
     for (const FitInput& input : mFitInputs)
-        if (input.tunable == Tunable::FitToVisibleSamples && input.parameter < values.size() &&
+        if (input.tunable == Kind::LightFitVisibleSamples && input.parameter < values.size() &&
             !values[input.parameter].data.empty() && values[input.parameter].data[0] != 0.0f)
             return true;
     return false;
 }
-
-bool SemanticBinder::takesSemantic(const std::string& semantic) {
-    Kind kind;
-    bool inverse = false, transpose = false;
-    if (classify(semantic, kind, inverse, transpose)) return true;
-    const std::string name = upper(semantic);
-    // STANDARDSGLOBAL marks the script parameter the compiler reads (fx/src/ScriptValidation.cpp).
-    if (name == "STANDARDSGLOBAL") return true;
-    return std::any_of(std::begin(kTunableSemantics), std::end(kTunableSemantics),
-                       [&](const char* tunable) { return name == upper(tunable); });
-}
-
-std::vector<std::string> SemanticBinder::semanticNames() {
-    std::vector<std::string> names;
-    for (const auto& [text, kind] : kMatrixSemantics) {
-        names.push_back(text);
-        for (const char* suffix : kMatrixSuffixes) names.push_back(std::string(text) + suffix);
-    }
-    for (const auto& [text, kind] : kOtherSemantics) names.push_back(text);
-    for (const char* text : kTunableSemantics) names.push_back(text);
-    names.push_back("STANDARDSGLOBAL");
-    return names;
-}
-
-namespace {
-
-bool consumePrefix(std::string& text, std::string_view prefix) {
-    if (text.size() <= prefix.size() || text.compare(0, prefix.size(), prefix) != 0) return false;
-    text.erase(0, prefix.size());
-    return true;
-}
-
-// `name` without its scope prefix (g_, m_, g before a capital) and Hungarian type prefix (m, mat, mtx,
-// v, vec, f before a capital), underscores removed, in capitals.
-std::string conventionalStem(std::string_view name) {
-    std::string text(name);
-    const auto capitalAt = [&text](size_t i) {
-        return i < text.size() && (std::isupper(static_cast<unsigned char>(text[i])) || text[i] == '_');
-    };
-    if (text.rfind("g_", 0) == 0 || text.rfind("m_", 0) == 0) {
-        text.erase(0, 2);
-    } else if (text.size() > 1 && text[0] == 'g' && capitalAt(1)) {
-        text.erase(0, 1);
-    }
-    for (std::string_view hungarian : {"mtx", "mat", "vec", "m", "v", "f"}) {
-        if (text.rfind(hungarian, 0) == 0 && capitalAt(hungarian.size())) {
-            text.erase(0, hungarian.size());
-            break;
-        }
-    }
-    std::string stem;
-    for (char c : text)
-        if (c != '_') stem += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return stem;
-}
-
-}  // namespace
-
-std::string SemanticBinder::conventionalSemantic(const fx::ParameterInfo& parameter) {
-    if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return "";
-    countNameLookup();
-    std::string stem = conventionalStem(parameter.name);
-    const fx::TypeDesc& type = parameter.type;
-    if (type.shape == fx::Shape::Matrix) {
-        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return "";
-        if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
-        std::string modifier;
-        if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||
-            consumeSuffix(stem, "INVTRANS") || consumeSuffix(stem, "IT")) {
-            modifier = "InverseTranspose";
-        } else if (consumeSuffix(stem, "INVERSE") || consumeSuffix(stem, "INV") ||
-                   consumePrefix(stem, "INVERSE") || consumePrefix(stem, "INV")) {
-            modifier = "Inverse";
-        }
-        static const std::pair<const char*, const char*> kMatrixNames[] = {
-            {"WORLD", "World"},
-            {"MODEL", "World"},
-            {"VIEW", "View"},
-            {"PROJ", "Projection"},
-            {"PROJECTION", "Projection"},
-            {"WORLDVIEW", "WorldView"},
-            {"MODELVIEW", "WorldView"},
-            {"WV", "WorldView"},
-            {"VIEWPROJ", "ViewProjection"},
-            {"VIEWPROJECTION", "ViewProjection"},
-            {"VP", "ViewProjection"},
-            {"WORLDVIEWPROJ", "WorldViewProjection"},
-            {"WORLDVIEWPROJECTION", "WorldViewProjection"},
-            {"MODELVIEWPROJ", "WorldViewProjection"},
-            {"MODELVIEWPROJECTION", "WorldViewProjection"},
-            {"WVP", "WorldViewProjection"},
-            {"MVP", "WorldViewProjection"},
-        };
-        for (const auto& [text, semantic] : kMatrixNames)
-            if (stem == text) return semantic + modifier;
-        return "";
-    }
-    const bool isVector = type.shape == fx::Shape::Vector && type.cols >= 3 && type.arrayDims.empty();
-    if (isVector) {
-        static const std::pair<const char*, const char*> kVectorNames[] = {
-            {"EYEPOS", "CameraPosition"},         {"EYEPOSW", "CameraPosition"},
-            {"EYEPOSITION", "CameraPosition"},    {"EYEPOSITIONW", "CameraPosition"},
-            {"EYEPT", "CameraPosition"},          {"EYE", "CameraPosition"},
-            {"CAMERAPOS", "CameraPosition"},      {"CAMERAPOSW", "CameraPosition"},
-            {"CAMERAPOSITION", "CameraPosition"}, {"CAMPOS", "CameraPosition"},
-            {"VIEWPOS", "CameraPosition"},        {"VIEWPOSITION", "CameraPosition"},
-            {"VIEWERPOS", "CameraPosition"},      {"LIGHTDIR", "LightDirection"},
-            {"LIGHTDIRW", "LightDirection"},      {"LIGHTDIRECTION", "LightDirection"},
-            {"LIGHTPOS", "LightPosition"},        {"LIGHTPOSW", "LightPosition"},
-            {"LIGHTPOSITION", "LightPosition"},
-        };
-        for (const auto& [text, semantic] : kVectorNames)
-            if (stem == text) return semantic;
-        return "";
-    }
-    if (type.shape == fx::Shape::Scalar && type.arrayDims.empty() &&
-        (stem == "TIME" || stem == "TOTALTIME" || stem == "APPTIME"))
-        return "Time";
-    return "";
-}
-
-namespace {
-
-constexpr std::pair<const char*, int> kTunableNames[] = {
-    {"LISPSMNSCALE", 1},        {"LISPSMNOPT", 2},      {"LISPSMDEPTHEXTENT", 3},
-    {"LISPSMMIDDLEVECTOR", 4},  {"LIGHTPANCAKING", 5},  {"TSMFOCUS", 6},
-    {"PSMSLIDEBACK", 7},        {"PSMMAXWARPRATIO", 8}, {"CASCADECOUNT", 9},
-    {"CASCADESPLITLAMBDA", 10}, {"CASCADEBLEND", 11},   {"LIGHTFITVISIBLESAMPLES", 12},
-};
-
-}  // namespace
 
 SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
                                const std::vector<std::string>& lights)
@@ -296,46 +80,28 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
     for (const std::string& light : lights) lightSlot(light);
     for (size_t i = 0; i < parameters.size(); ++i) {
         const fx::ParameterInfo& parameter = parameters[i];
+        const fx::SemanticBinding& standard = parameter.standard;
         FitInput input;
         input.parameter = i;
-        if (!parameter.semantic.empty()) {
-            countNameLookup();
-            const std::string upperSemantic = upper(parameter.semantic);
-            for (const auto& [text, tunable] : kTunableNames)
-                if (upperSemantic == text) input.tunable = static_cast<Tunable>(tunable);
-        }
+        if (!fx::isBoundSemantic(standard.kind) && standard.kind != Kind::StandardsGlobal)
+            input.tunable = standard.kind;
         if (parameter.hasParameterization && !parameter.light.empty()) {
             input.parameterizationSlot = lightSlot(parameter.light);
             input.method = parseLightParameterization(parameter.parameterization);
         }
-        if (input.tunable != Tunable::None || input.parameterizationSlot >= 0) mFitInputs.push_back(input);
-    }
-    for (size_t i = 0; i < parameters.size(); ++i) {
-        const fx::ParameterInfo& parameter = parameters[i];
-        if (parameter.isStatic || !parameter.type.isNumeric()) continue;
-        const std::string semantic =
-            parameter.semantic.empty() ? conventionalSemantic(parameter) : parameter.semantic;
-        if (semantic.empty()) continue;
-        Binding binding{i, Kind::World};
-        if (!classify(semantic, binding.kind, binding.inverse, binding.transpose)) continue;
-
-        const std::string& lightName = parameter.light;
-        const bool isCascadeProperty =
-            binding.kind == Kind::CascadeViewProjection || binding.kind == Kind::CascadeAtlasRects ||
-            binding.kind == Kind::CascadeSplitDepths || binding.kind == Kind::CubeFaceSelect;
+        if (input.tunable != Kind::None || input.parameterizationSlot >= 0) mFitInputs.push_back(input);
+        // The compiler binds numbers the runtime may change only; a light property without a light (a
+        // plain Position or Direction) is the object's, which nothing supplies.
+        if (!fx::isBoundSemantic(standard.kind)) continue;
         const bool isLightProperty =
-            binding.kind == Kind::LightPosition || binding.kind == Kind::LightDirection ||
-            binding.kind == Kind::LightColor || binding.kind == Kind::LightAreaRadius || isCascadeProperty;
-        // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
-        // LightPosition/LightDirection/LightColor default to light0.
-        const std::string upperSemantic = upper(semantic);
-        if (!lightName.empty() ||
-            (isLightProperty && (upperSemantic.rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
-            binding.lightSlot = lightSlot(lightName.empty() ? std::string_view("light0") : lightName);
-            if (binding.kind == Kind::ObjectColor) binding.kind = Kind::LightColor;
-        } else if (isLightProperty) {
-            continue;  // a plain "Position"/"Direction" semantic without a light: not ours to bind
-        }
+            standard.kind == Kind::LightPosition || standard.kind == Kind::LightDirection ||
+            standard.kind == Kind::LightColor || standard.kind == Kind::LightAreaRadius;
+        if (isLightProperty && standard.light < 0) continue;
+        Binding binding{i, standard.kind};
+        binding.inverse = standard.inverse;
+        binding.transpose = standard.transpose;
+        // CompiledEffect::lights took the first slots in order: the compiler's index is the slot.
+        binding.lightSlot = standard.light;
         mBindings.push_back(binding);
     }
     for (size_t b = 0; b < mBindings.size(); ++b)
@@ -398,45 +164,44 @@ void SemanticBinder::prepare(const Scene& scene, const Bounds& sceneBounds, floa
         if (i < values.size() && !values[i].data.empty()) {
             const float value = values[i].data[0];
             switch (input.tunable) {
-                case Tunable::LispsmNScale:
+                case Kind::LispsmNScale:
                     mTunables.lispsmNScale = value;
                     break;
-                case Tunable::LispsmDepthExtent:
+                case Kind::LispsmDepthExtent:
                     mTunables.lispsmDepthExtent = value;
                     break;
-                case Tunable::LispsmMiddleVector:
+                case Kind::LispsmMiddleVector:
                     mTunables.lispsmMiddleVector = value != 0.0f;
                     break;
-                case Tunable::Pancaking:
+                case Kind::LightPancaking:
                     mTunables.pancaking = value != 0.0f;
                     break;
-                case Tunable::TsmFocus:
+                case Kind::TsmFocus:
                     mTunables.tsmFocus = value;
                     break;
-                case Tunable::PsmSlideBack:
+                case Kind::PsmSlideBack:
                     mTunables.psmSlideBack = value;
                     break;
-                case Tunable::PsmMaxWarpRatio:
+                case Kind::PsmMaxWarpRatio:
                     mTunables.psmMaxWarpRatio = value;
                     break;
-                case Tunable::CascadeCount:
+                case Kind::CascadeCount:
                     mTunables.cascadeCount = static_cast<int>(std::lround(value));
                     break;
-                case Tunable::CascadeSplitLambda:
+                case Kind::CascadeSplitLambda:
                     mTunables.cascadeSplitLambda = value;
                     break;
-                case Tunable::CascadeBlend:
+                case Kind::CascadeBlend:
                     mTunables.cascadeBlend = value;
                     break;
-                case Tunable::FitToVisibleSamples:
+                case Kind::LightFitVisibleSamples:
                     mTunables.fitToVisibleSamples = value != 0.0f;
                     break;
-                case Tunable::None:
-                case Tunable::LispsmNOpt:
+                default:
                     break;
             }
         }
-        if (input.tunable == Tunable::LispsmNOpt && i < values.size()) {
+        if (input.tunable == Kind::LispsmNOpt && i < values.size()) {
             const uint64_t stamp = i < stamps.stamps.size() ? stamps.stamps[i] : FitInput::kNeverRead;
             if (stamp == FitInput::kNeverRead || stamp != input.readAt) {
                 input.lispsmN = parseLispsmN(values[i].string);
@@ -700,6 +465,8 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
         case Kind::CascadeAtlasRects:
         case Kind::CascadeSplitDepths:
             storeCascades(binding, value);
+            return;
+        default:  // the tunables, StandardsGlobal and None are never bound
             return;
     }
     if (binding.inverse) matrix = glm::inverse(matrix);

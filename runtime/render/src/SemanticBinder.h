@@ -22,8 +22,9 @@
 // cube frame whose dominant axis picks a point's face). Scene-driven choices: SceneHasClosedObjects (true
 // if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
 // filter needed). A parameter without a semantic whose name follows D3D applications' conventions
-// (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`) is bound as the semantic it spells
-// (conventionalSemantic below).
+// (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`) is bound as the semantic it spells. The compiler
+// classifies each parameter (fx::ParameterInfo::standard, fx/ParameterSemantics.h): the binder reads no
+// semantic's text.
 #pragma once
 
 #include <fx/Diagnostics.h>
@@ -67,11 +68,12 @@ struct RenderPortView {
 
 class SemanticBinder {
 public:
-    // Classifies every parameter's semantic and registers the lights its annotations name, once, when the
-    // effect is created: a frame looks up no semantic and no light by name. Parameters with semantics the
-    // runtime does not know are left alone (they are the user's own).
+    // Builds the bindings of the parameters' semantics as the compiler classified them and registers the
+    // lights they name, once, when the effect is created: a frame looks up no semantic and no light by
+    // name. Parameters with semantics the runtime does not know are left alone (they are the user's own).
     // `lights` (fx::CompiledEffect::lights) take the first slots, in order: slot k is lights[k], the index
-    // the compiler gave RenderPort=lightN (fx::ScriptCommand::light).
+    // the compiler gave RenderPort=lightN (fx::ScriptCommand::light) and the parameters' semantics
+    // (fx::SemanticBinding::light).
     SemanticBinder(const std::vector<fx::ParameterInfo>& parameters, const std::vector<std::string>& lights);
 
     // The slot of a light an effect names (`RenderPort=light0`, a `frustum`/`Object` annotation), registered
@@ -95,17 +97,6 @@ public:
     // True if a parameter with semantic LightFitVisibleSamples is set: the frame must find the visible
     // samples (VisibleSamplePass) before the lights are fitted.
     bool wantsVisibleSamples(const std::vector<fx::Value>& values) const;
-
-    // The semantic a parameter written without one is bound by, from its name, or "" for none. FX11 and
-    // D3DX applications set parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`,
-    // `matView`, `g_vEyePt`, `g_fTime`), so an effect written for them has no semantics to bind by; these
-    // conventional names are read as the semantic they spell, where the parameter's type fits it (a
-    // matrix for a matrix name, a vector for a position or direction, a scalar for a time). Prefixes
-    // `g_`/`g`/`m_` and Hungarian `m`/`mat`/`mtx`/`v`/`vec`/`f` go, then underscores and case; suffixes
-    // `Matrix`, `Inv`/`Inverse`, `IT`/`InvTranspose`/`InverseTranspose`, a leading `Inv`; a world-space
-    // `W` on a position. A parameter with a semantic keeps it, and parameters named otherwise stay the
-    // user's.
-    static std::string conventionalSemantic(const fx::ParameterInfo& parameter);
 
     // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
     // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
@@ -143,37 +134,8 @@ public:
     size_t boundCount() const { return mBindings.size(); }
     bool isBound(size_t parameter) const;
 
-    // True if some part of the runtime gives a parameter with this semantic its value or reads it (bound
-    // here, a light fit's tunable, the script's STANDARDSGLOBAL); a parameter with any other semantic keeps
-    // its default value.
-    static bool takesSemantic(const std::string& semantic);
-    // Every semantic takesSemantic accepts, as the docs spell them (shadowfx info lists them).
-    static std::vector<std::string> semanticNames();
-
-    enum class Kind {
-        World,
-        View,
-        Projection,
-        WorldView,
-        ViewProjection,
-        WorldViewProjection,
-        ViewportPixelSize,
-        Time,
-        CameraPosition,
-        ObjectId,
-        LightPosition,
-        LightDirection,
-        LightColor,
-        LightAreaRadius,
-        ObjectColor,
-        Ambient,
-        SceneHasClosedObjects,  // scene-driven choices (docs/measurement.md, "Leave-out"): effects branch or
-                                // loop on them
-        CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
-        CascadeAtlasRects,
-        CascadeSplitDepths,
-        CubeFaceSelect,  // a PSMCube light's face selection (LightFit::faceSelect)
-    };
+    // What a parameter's semantic gives it, as the compiler classified it.
+    using Kind = fx::SemanticKind;
 
 private:
     struct Binding {
@@ -191,24 +153,9 @@ private:
         glm::mat4 lightFaceSelect{0.0f};         // a PSMCube fit's LightFit::faceSelect
     };
     // A parameter a light fit reads: a tunable, or the `Parameterization` annotation of a light.
-    enum class Tunable {
-        None,
-        LispsmNScale,
-        LispsmNOpt,
-        LispsmDepthExtent,
-        LispsmMiddleVector,
-        Pancaking,
-        TsmFocus,
-        PsmSlideBack,
-        PsmMaxWarpRatio,
-        CascadeCount,
-        CascadeSplitLambda,
-        CascadeBlend,
-        FitToVisibleSamples,
-    };
     struct FitInput {
         size_t parameter = 0;
-        Tunable tunable = Tunable::None;
+        Kind tunable = Kind::None;      // a tunable's kind (LispsmNScale ... LightFitVisibleSamples)
         int parameterizationSlot = -1;  // a Parameterization annotation's light, or -1
         std::optional<LightParameterization> method;
         // LiSPSMNOpt: the choice its string names (nullopt: none), read at the parameter's stamp `readAt`.
@@ -220,7 +167,6 @@ private:
     void write(const Binding& binding, const RenderPortView& port, const SceneObject* object, float time,
                const glm::mat4& world, fx::Value& value) const;
 
-    static bool classify(const std::string& semantic, Kind& kind, bool& inverse, bool& transpose);
     void resolveLights(const Scene& scene);
 
     struct FittedLight {
