@@ -74,6 +74,20 @@ TEST(FxcFrontEnd, XnaSampleStyleEffect) {
     EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
 }
 
+// MonoGame's macros for OpenGL and Direct3D 9: a sampler block naming a texture nothing declares declares
+// it, and the teapot draws lit through it.
+TEST(FxcFrontEnd, MonoGameSamplerNamesItsTexture) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/monogame_gl_style.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    EXPECT_FALSE(loaded.diagnostics.hasErrors()) << loaded.diagnostics.str();
+    const fx::ParameterInfo* texture = loaded.renderer->effect().findParameter("diffuseTexture");
+    ASSERT_TRUE(texture);
+    EXPECT_TRUE(texture->type.isTexture());
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+}
+
 // Vectors cast to arrays, `unsigned`, the l-value constructor, a vertex shader doubling a uniform on its
 // own copy and `line` as a name, as the SDK and FX Composer wrote them: the lit teapot is Tint's colour
 // (red, half as much green, a quarter as much blue) at full strength, which it reaches only with the
