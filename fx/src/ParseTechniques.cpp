@@ -265,6 +265,8 @@ std::vector<std::vector<StateAssignment>> Parser::parseObjectStateArray(StateObj
 
 std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
     if (!check("{")) unexpected("'{'");
+    // `sampler S = sampler_state { ... }` is D3DX's form; `sampler S : register(s0) { ... }` MonoGame's.
+    const bool monoGameForm = mPos == 0 || !mTokens[mPos - 1].is("sampler_state");
     const Token& open = advance();
     std::vector<StateAssignment> states;
     while (!check("}")) {
@@ -297,10 +299,21 @@ std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
                 error(DiagId::TextureStateValueExpected, v.loc, {state.name});
                 continue;
             }
-            const Parameter* texture = mEffect.findParameter(v.text);
-            if (!texture) {
+            if (!mEffect.findParameter(v.text) && !monoGameForm) {
                 error(DiagId::UnknownIdentifier, v.loc, {v.text});
                 continue;
+            }
+            if (!mEffect.findParameter(v.text)) {
+                // MonoGame's macros for Direct3D 9 and OpenGL declare a sampler whose Texture names a
+                // texture nothing declares: its effect compiler named the sampler's texture parameter
+                // after the identifier, and said nothing. So does this one; fxc, reading D3DX's form,
+                // refused the name.
+                Parameter texture;
+                texture.name = v.text;
+                texture.type.base = BaseType::Texture;
+                texture.loc = v.loc;
+                mEffect.parameters.push_back(std::move(texture));
+                mEffect.order.push_back({DeclRef::Kind::Parameter, mEffect.parameters.size() - 1});
             }
         } else {
             mStates.resolveStateValue(state.value, info.domain, state.name);

@@ -14,7 +14,7 @@
 namespace fx {
 
 std::string spirvToGlslOptionsKey() {
-    return "spirv-cross glsl450 core novk pairs finite-cube";
+    return "spirv-cross glsl450 core novk pairs finite-cube user-main";
 }
 
 namespace {
@@ -252,6 +252,30 @@ StageEffects stageEffects(const std::vector<uint32_t>& spirv, const spirv_cross:
     return effects;
 }
 
+// GLSL reserves `main` for the entry point, and D3DX compiled any function as a shader: XNA's sprite
+// effects name their pixel shader `main`. That function, which the stage's wrapper calls, would come out as
+// a second main() that the GL driver refuses; it gets a name of its own.
+void renameUserMain(spirv_cross::CompilerGLSL& compiler, const std::vector<uint32_t>& spirv) {
+    constexpr uint32_t kOpEntryPoint = 15;
+    constexpr uint32_t kOpFunction = 54;
+    constexpr size_t kHeaderWords = 5;
+    std::vector<uint32_t> entries;
+    std::vector<uint32_t> functions;
+    for (size_t at = kHeaderWords; at < spirv.size();) {
+        const uint32_t words = spirv[at] >> 16;
+        const uint32_t opcode = spirv[at] & 0xffff;
+        if (words == 0 || at + words > spirv.size()) break;
+        if (opcode == kOpEntryPoint && words > 2) entries.push_back(spirv[at + 2]);
+        if (opcode == kOpFunction && words > 2) functions.push_back(spirv[at + 2]);
+        at += words;
+    }
+    for (uint32_t id : functions) {
+        if (std::find(entries.begin(), entries.end(), id) != entries.end()) continue;
+        const std::string& name = compiler.get_name(id);
+        if (name == "main" || name.rfind("main(", 0) == 0) compiler.set_name(id, "fx_user_main");
+    }
+}
+
 }  // namespace
 
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
@@ -267,6 +291,7 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
         glsl.vertex.flip_vert_y = false;
         glsl.enable_420pack_extension = true;
         compiler.set_common_options(glsl);
+        renameUserMain(compiler, spirv);
         // The runtime sets glClipControl(GL_UPPER_LEFT), which already makes gl_FragCoord top-down; an
         // origin_upper_left redeclaration on top would flip it back.
         if (stage == ShaderStage::Fragment) compiler.unset_execution_mode(spv::ExecutionModeOriginUpperLeft);

@@ -286,6 +286,11 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
             frontFace = true;
             body += "    " + f.lvalue + " = " +
                     (s == "VFACE" ? "(fx_frontFace ? 1.0 : -1.0)" : "fx_frontFace") + ";\n";
+        } else if (s.rfind("PSIZE", 0) == 0) {
+            // The point size goes to the rasterizer, not to the pixel stage: a pixel shader that reuses the
+            // vertex output struct (XNA's particle effects) reads 0 there, D3D9's value for an input that no
+            // earlier stage writes.
+            body += assignField(f, "float4(0, 0, 0, 0)");
         } else if (const auto value = kPixelSystemValues.find(s); value != kPixelSystemValues.end()) {
             const auto& [name, spelling] = value->second;
             if (systemValues.insert(name).second) systemParams.push_back("uint " + name + " : " + spelling);

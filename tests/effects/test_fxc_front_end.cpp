@@ -63,6 +63,31 @@ TEST(FxcFrontEnd, MonoGameStyleEffect) {
     }
 }
 
+// XNA samples' shapes: a pixel shader named `main` (a second main() in GLSL, which the GL driver refuses,
+// unless renamed) and a pixel input with the point-size semantic, read as 0: were it the 4 the vertex
+// shader writes, the teapot would be black.
+TEST(FxcFrontEnd, XnaSampleStyleEffect) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/xna_sample_style.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+}
+
+// MonoGame's macros for OpenGL and Direct3D 9: a sampler block naming a texture nothing declares declares
+// it, and the teapot draws lit through it.
+TEST(FxcFrontEnd, MonoGameSamplerNamesItsTexture) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/monogame_gl_style.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    EXPECT_FALSE(loaded.diagnostics.hasErrors()) << loaded.diagnostics.str();
+    const fx::ParameterInfo* texture = loaded.renderer->effect().findParameter("diffuseTexture");
+    ASSERT_TRUE(texture);
+    EXPECT_TRUE(texture->type.isTexture());
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, 96, 72));
+    EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
+}
+
 // Vectors cast to arrays, `unsigned`, the l-value constructor, a vertex shader doubling a uniform on its
 // own copy and `line` as a name, as the SDK and FX Composer wrote them: the lit teapot is Tint's colour
 // (red, half as much green, a quarter as much blue) at full strength, which it reaches only with the
