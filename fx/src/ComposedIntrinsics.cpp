@@ -5,9 +5,7 @@
 
 namespace fx::detail {
 
-namespace {
-
-Expr node(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<Expr> args) {
+Expr exprNode(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<Expr> args) {
     Expr e;
     e.kind = kind;
     e.loc = loc;
@@ -15,8 +13,6 @@ Expr node(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<E
     e.args = std::move(args);
     return e;
 }
-
-}  // namespace
 
 void expandComposedIntrinsic(Expr& e) {
     const SourceLoc loc = e.loc;
@@ -28,12 +24,12 @@ void expandComposedIntrinsic(Expr& e) {
         return n;
     };
     auto binary = [&](const char* op, Expr a, Expr b) {
-        return node(Expr::Kind::Binary, loc, op, {std::move(a), std::move(b)});
+        return exprNode(Expr::Kind::Binary, loc, op, {std::move(a), std::move(b)});
     };
     auto call = [&](const char* name, std::vector<Expr> args) {
-        return node(Expr::Kind::Call, loc, name, std::move(args));
+        return exprNode(Expr::Kind::Call, loc, name, std::move(args));
     };
-    auto negated = [&](Expr a) { return node(Expr::Kind::Unary, loc, "-", {std::move(a)}); };
+    auto negated = [&](Expr a) { return exprNode(Expr::Kind::Unary, loc, "-", {std::move(a)}); };
     const std::vector<Expr>& a = e.args;
     const std::string& name = e.text;
     if (name == "ldexp" && a.size() == 2) {
@@ -62,9 +58,9 @@ void expandComposedIntrinsic(Expr& e) {
         e = name == "any" ? binary(">", std::move(sum), number(0)) : binary("==", std::move(sum), number(0));
     } else if (name == "lit" && a.size() == 3) {
         // As the shaders' replacement (HlslRewriting.h): the specular term is 0 where either cosine is.
-        Expr specular = node(Expr::Kind::Ternary, loc, "",
-                             {binary("||", binary("<", a[0], number(0)), binary("<", a[1], number(0))),
-                              number(0), call("pow", {call("max", {a[1], number(0)}), a[2]})});
+        Expr specular = exprNode(Expr::Kind::Ternary, loc, "",
+                                 {binary("||", binary("<", a[0], number(0)), binary("<", a[1], number(0))),
+                                  number(0), call("pow", {call("max", {a[1], number(0)}), a[2]})});
         e = call("float4", {number(1), call("max", {a[0], number(0)}), std::move(specular), number(1)});
     }
 }

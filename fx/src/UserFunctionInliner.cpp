@@ -161,7 +161,7 @@ private:
     }
 
     static Expr aggregate(const TypeDesc& type, std::vector<Expr> parts, const SourceLoc& loc) {
-        Expr e = node(Expr::Kind::InitList, loc, "", std::move(parts));
+        Expr e = exprNode(Expr::Kind::InitList, loc, "", std::move(parts));
         e.castType = type;
         return e;
     }
@@ -211,14 +211,14 @@ private:
                 next += count;
                 pieces.push_back(
                     count == 1 ? std::move(numbers[0])
-                               : node(Expr::Kind::Call, loc, part.second.hlslName(), std::move(numbers)));
+                               : exprNode(Expr::Kind::Call, loc, part.second.hlslName(), std::move(numbers)));
             }
             if (next != value.args.size()) return std::nullopt;
         } else if (value.kind == Expr::Kind::Identifier && mEffect.findParameter(value.text)) {
             for (size_t i = 0; i < parts->size(); ++i)
                 pieces.push_back((*parts)[i].first.empty()
-                                     ? node(Expr::Kind::Index, loc, "", {value, integer(i, loc)})
-                                     : node(Expr::Kind::Member, loc, (*parts)[i].first, {value}));
+                                     ? exprNode(Expr::Kind::Index, loc, "", {value, integer(i, loc)})
+                                     : exprNode(Expr::Kind::Member, loc, (*parts)[i].first, {value}));
         } else {
             return std::nullopt;
         }
@@ -231,7 +231,7 @@ private:
     }
 
     static Expr equals(const Expr& index, size_t value, const SourceLoc& loc) {
-        return node(Expr::Kind::Binary, loc, "==", {index, integer(value, loc)});
+        return exprNode(Expr::Kind::Binary, loc, "==", {index, integer(value, loc)});
     }
 
     // `condition ? a : b`, part by part where both are aggregates; `a` where both are the same.
@@ -242,7 +242,7 @@ private:
                 a.args[i] = choose(condition, std::move(a.args[i]), std::move(b.args[i]), loc);
             return a;
         }
-        return node(Expr::Kind::Ternary, loc, "", {condition, std::move(a), std::move(b)});
+        return exprNode(Expr::Kind::Ternary, loc, "", {condition, std::move(a), std::move(b)});
     }
 
     // Element `index` of the aggregate array `whole`: the element where the index is known, else a chain of
@@ -341,7 +341,8 @@ private:
                             old.args.size() == static_cast<size_t>(type.rows);
         std::vector<Expr> rows;
         for (size_t r = 0; r < static_cast<size_t>(type.rows); ++r) {
-            Expr current = ofRows ? old.args[r] : node(Expr::Kind::Index, loc, "", {old, integer(r, loc)});
+            Expr current =
+                ofRows ? old.args[r] : exprNode(Expr::Kind::Index, loc, "", {old, integer(r, loc)});
             if (known && r != written) {
                 rows.push_back(std::move(current));
                 continue;
@@ -352,7 +353,7 @@ private:
                                ? std::move(*changed)
                                : choose(equals(index, r, loc), std::move(*changed), std::move(current), loc));
         }
-        return counted(node(Expr::Kind::Call, loc, type.hlslName(), std::move(rows)));
+        return counted(exprNode(Expr::Kind::Call, loc, type.hlslName(), std::move(rows)));
     }
 
     // `e`'s value where it reads no parameter: exactly as the host evaluates it, or, for the effect's
@@ -423,15 +424,6 @@ private:
     // Marks the per-component selects assignComponents builds: (mask, new components, old value).
     static constexpr const char* kComponentSelect = "components";
 
-    static Expr node(Expr::Kind kind, const SourceLoc& loc, std::string text, std::vector<Expr> args) {
-        Expr e;
-        e.kind = kind;
-        e.loc = loc;
-        e.text = std::move(text);
-        e.args = std::move(args);
-        return e;
-    }
-
     static bool same(const Expr& a, const Expr& b) {
         if (a.kind != b.kind || a.text != b.text || a.number != b.number || a.isInteger != b.isInteger ||
             a.args.size() != b.args.size() ||
@@ -467,12 +459,12 @@ private:
     // `a && b`, `a || b` over paths, where none is "always".
     std::optional<Expr> both(const std::optional<Expr>& a, Expr b, const SourceLoc& loc) {
         if (!a) return b;
-        return counted(node(Expr::Kind::Binary, loc, "&&", {*a, std::move(b)}));
+        return counted(exprNode(Expr::Kind::Binary, loc, "&&", {*a, std::move(b)}));
     }
     std::optional<Expr> either(const std::optional<Expr>& a, const std::optional<Expr>& b,
                                const SourceLoc& loc) {
         if (!a || !b) return std::nullopt;
-        return counted(node(Expr::Kind::Binary, loc, "||", {*a, *b}));
+        return counted(exprNode(Expr::Kind::Binary, loc, "||", {*a, *b}));
     }
 
     // A path of `locals` leaves by `exit` (a `break` or `continue`): where the path runs, the exit's
@@ -526,18 +518,19 @@ private:
             Expr zero;
             zero.kind = Expr::Kind::Number;
             zero.loc = loc;
-            spread.push_back(
-                k == written.end() ? std::move(zero)
-                : written.size() == 1
-                    ? cast(component, value, loc)
-                    : node(Expr::Kind::Member, loc, std::string(1, "xyzw"[k - written.begin()]), {value}));
+            spread.push_back(k == written.end() ? std::move(zero)
+                             : written.size() == 1
+                                 ? cast(component, value, loc)
+                                 : exprNode(Expr::Kind::Member, loc,
+                                            std::string(1, "xyzw"[k - written.begin()]), {value}));
         }
         if (columns == 1) return cast(type, std::move(value), loc);
         TypeDesc boolean = type;
         boolean.base = BaseType::Bool;
-        return node(Expr::Kind::Ternary, loc, kComponentSelect,
-                    {node(Expr::Kind::Call, loc, boolean.hlslName(), std::move(mask)),
-                     node(Expr::Kind::Call, loc, type.hlslName(), std::move(spread)), std::move(old)});
+        return exprNode(
+            Expr::Kind::Ternary, loc, kComponentSelect,
+            {exprNode(Expr::Kind::Call, loc, boolean.hlslName(), std::move(mask)),
+             exprNode(Expr::Kind::Call, loc, type.hlslName(), std::move(spread)), std::move(old)});
     }
 
     // `name` after `if (condition) then else otherwise`: `condition ? then : otherwise`. When one branch
@@ -558,8 +551,9 @@ private:
                 value.kind != Expr::Kind::Ternary || value.text != kComponentSelect)
                 continue;
             Expr taken = condition;
-            if (!inThen) taken = node(Expr::Kind::Unary, loc, "!", {std::move(taken)});
-            value.args[0] = node(Expr::Kind::Binary, loc, "&&", {std::move(value.args[0]), std::move(taken)});
+            if (!inThen) taken = exprNode(Expr::Kind::Unary, loc, "!", {std::move(taken)});
+            value.args[0] =
+                exprNode(Expr::Kind::Binary, loc, "&&", {std::move(value.args[0]), std::move(taken)});
             return value;
         }
         return choose(condition, then.values[name], otherwise.values[name], loc);
@@ -585,8 +579,8 @@ private:
         const auto type = locals.types.find(root->text);
         if (type == locals.types.end()) return false;  // a global: not ours to fold
         if (op != "=")
-            value = node(Expr::Kind::Binary, loc, op.substr(0, 1),
-                         {substitute(target, locals.values, depth), std::move(value)});
+            value = exprNode(Expr::Kind::Binary, loc, op.substr(0, 1),
+                             {substitute(target, locals.values, depth), std::move(value)});
         std::optional<Expr> whole =
             assignAt(locals.values[root->text], type->second, path, 0, value, locals.values, depth, loc);
         if (!whole) return false;
@@ -696,7 +690,7 @@ private:
                     if (mLoop) {  // only a `break` or `continue` reads which path runs
                         then.path = both(locals.path, condition, loc);
                         otherwise.path =
-                            both(locals.path, node(Expr::Kind::Unary, loc, "!", {condition}), loc);
+                            both(locals.path, exprNode(Expr::Kind::Unary, loc, "!", {condition}), loc);
                     }
                     const int exitsBefore = mExitsTaken;
                     if (!execute(statement.then, then, loc, depth) ||
