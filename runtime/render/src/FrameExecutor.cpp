@@ -275,7 +275,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
     // What the draws wrote to storage buffers and images reaches the next pass's reads only through a
     // barrier in GL, where D3D11 orders a draw's UAV writes before later draws by itself (as after a
     // dispatch, ComputeDispatch.cpp).
-    if (passWritesStorage(mResources.effect(), pass))
+    if (passWritesStorage(pass))
         gl::MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                           GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
                           GL_TEXTURE_UPDATE_BARRIER_BIT);

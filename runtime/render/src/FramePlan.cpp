@@ -7,15 +7,11 @@
 
 namespace runtime {
 
-bool passWritesStorage(const fx::CompiledEffect& effect, const fx::CompiledPass& pass) {
+bool passWritesStorage(const fx::CompiledPass& pass) {
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment}) {
-        if (!stage->images.empty()) return true;
-        for (const fx::StorageBufferBinding& buffer : stage->storageBuffers) {
-            const fx::BaseType base = effect.parameters[buffer.parameter].type.base;
-            if (base != fx::BaseType::StructuredBuffer && base != fx::BaseType::ByteAddressBuffer)
-                return true;
-        }
+        const fx::StageEffects& e = stage->effects;
+        if (e.writesBuffers || e.writesImages || e.atomics) return true;
     }
     return false;
 }

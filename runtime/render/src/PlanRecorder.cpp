@@ -151,7 +151,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     if (pass.streamOut) {
         if (!pass.streamOut->rasterizes) op.writes.clear();
         op.writes.push_back(passOutputResource(index));
-    } else if (passWritesStorage(mResources.effect(), pass)) {
+    } else if (passWritesStorage(pass)) {
         // A pass drawing into no target but a buffer (an irregular z-buffer's list building) is not dead.
         op.writes.push_back(passOutputResource(index));
     }

@@ -41,9 +41,9 @@ constexpr int passOutputResource(size_t pass) {
 constexpr bool isPassOutputResource(int resource) {
     return resource <= kFirstPassOutput;
 }
-// Whether a graphics stage of `pass` may write a storage buffer or an image (the read-only
-// StructuredBuffer and ByteAddressBuffer cannot).
-bool passWritesStorage(const fx::CompiledEffect& effect, const fx::CompiledPass& pass);
+// Whether a graphics stage of `pass` may write a storage buffer or an image: the stage effects the
+// compiler read from its SPIR-V (a read-only StructuredBuffer or ByteAddressBuffer writes nothing).
+bool passWritesStorage(const fx::CompiledPass& pass);
 
 // Why an operation does not run: nothing reads what it writes, its targets already hold its result, or
 // the scene does not need it (its pass's `LeaveOutWhen` annotation, or a cascade draw whose depth slice
