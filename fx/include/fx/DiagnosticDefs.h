@@ -41,6 +41,9 @@ FX_DIAGNOSTIC(UnknownType, Error, "unknown type '{0}'")
 FX_DIAGNOSTIC(Redefinition, Error, "redefinition of '{0}'")
 FX_DIAGNOSTIC(UnknownState, Error, "unknown state '{0}'")
 FX_DIAGNOSTIC(UnknownStateValue, Error, "'{0}' is not a value of state '{1}' (expected one of: {2})")
+FX_DIAGNOSTIC(SamplerTextureUndeclared, Warning,
+              "sampler '{0}' names texture '{1}', which the effect does not declare: it is declared as a "
+              "texture parameter, as MonoGame's effect compiler declared it")
 // A technique the compiler leaves out while another runs. Its first error follows as a note of this warning,
 // with that error's own id (where every technique is left out the errors are reported as errors instead).
 FX_DIAGNOSTIC(TechniqueRefused, Warning,
