@@ -47,6 +47,7 @@ constexpr std::pair<const char*, SemanticKind> kOtherSemantics[] = {
     {"CascadeAtlasRects", SemanticKind::CascadeAtlasRects},
     {"CascadeSplitDepths", SemanticKind::CascadeSplitDepths},
     {"CubeFaceSelect", SemanticKind::CubeFaceSelect},
+    {"FXCOMPOSER_RESETPULSE", SemanticKind::ResetPulse},
 };
 // Read by the light fits, whatever the parameter's type (LiSPSMNOpt is a string).
 constexpr std::pair<const char*, SemanticKind> kTunableSemantics[] = {
@@ -90,6 +91,7 @@ constexpr const char* kKindNames[] = {
     "CascadeAtlasRects",
     "CascadeSplitDepths",
     "CubeFaceSelect",
+    "FXCOMPOSER_RESETPULSE",
     "LiSPSMNScale",
     "LiSPSMNOpt",
     "LiSPSMDepthExtent",

@@ -35,6 +35,9 @@ enum class SemanticKind {
     CascadeAtlasRects,
     CascadeSplitDepths,
     CubeFaceSelect,
+    // FX Composer's reset pulse: true in the first frame after the effect is created or reset, false in
+    // the others.
+    ResetPulse,
     // Tunables the light fits read (runtime/LightParameterization.h), not bound.
     LispsmNScale,
     LispsmNOpt,
