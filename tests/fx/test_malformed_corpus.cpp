@@ -5,8 +5,8 @@
 // equal the golden file beside it (NAME.out): a message moved to another id fails as a changed text does.
 //
 // A missing golden fails. To regenerate the goldens after a deliberate change of messages, run
-//     SHADOWFX_UPDATE_GOLDEN=1 build/tests/test_malformed_corpus      (or: ... test_malformed_corpus
-//     --update)
+//     SHADOWFX_UPDATE_GOLDEN=1 build/tests/fx_tests --gtest_filter='*MalformedCorpus*'
+//     (or: build/tests/fx_tests --gtest_filter='*MalformedCorpus*' --update)
 // from anywhere, then read every changed .out before committing. CI never runs the update mode.
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
