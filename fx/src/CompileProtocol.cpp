@@ -106,7 +106,8 @@ void writeProgram(Writer& w, const StageProgram& p) {
     }
     w.u32(static_cast<uint32_t>(p.storageBuffers.size()));
     for (const StorageBufferBinding& b : p.storageBuffers) {
-        w.str(b.blockName);
+        w.str(b.glslName);
+        w.u32(static_cast<uint32_t>(b.binding));
         w.u32(b.glStride);
         w.u32(b.d3dStride);
         w.u32(static_cast<uint32_t>(b.runs.size()));
@@ -115,7 +116,7 @@ void writeProgram(Writer& w, const StageProgram& p) {
             w.u32(run.glOffset);
             w.u32(run.bytes);
         }
-        w.str(b.counterBlockName);
+        w.u32(static_cast<uint32_t>(b.counterBinding));
     }
     w.u32(static_cast<uint32_t>(p.images.size()));
     for (const ImageBinding& image : p.images) {
@@ -171,7 +172,8 @@ void readProgram(Reader& r, StageProgram& p) {
     }
     p.storageBuffers.resize(r.count(16));
     for (StorageBufferBinding& b : p.storageBuffers) {
-        b.blockName = r.str();
+        b.glslName = r.str();
+        b.binding = r.i32();
         b.glStride = r.u32();
         b.d3dStride = r.u32();
         b.runs.resize(r.count(12));
@@ -180,7 +182,7 @@ void readProgram(Reader& r, StageProgram& p) {
             run.glOffset = r.u32();
             run.bytes = r.u32();
         }
-        b.counterBlockName = r.str();
+        b.counterBinding = r.i32();
     }
     p.images.resize(r.count(8));
     for (ImageBinding& image : p.images) {
@@ -223,6 +225,14 @@ std::string encodeJob(const StageJob& job) {
         w.str(name);
         w.u32(static_cast<uint32_t>(unit));
     }
+    for (const std::map<std::string, int>* bindings :
+         {&job.cross.storageBindings, &job.cross.counterBindings}) {
+        w.u32(static_cast<uint32_t>(bindings->size()));
+        for (const auto& [name, binding] : *bindings) {
+            w.str(name);
+            w.u32(static_cast<uint32_t>(binding));
+        }
+    }
     w.u32(static_cast<uint32_t>(job.cross.depthSamplers.size()));
     for (const std::string& s : job.cross.depthSamplers) w.str(s);
     return w.take();
@@ -242,6 +252,11 @@ std::optional<StageJob> decodeJob(const std::string& payload) {
         std::string name = r.str();
         job.cross.samplerUnits[name] = r.i32();
     }
+    for (std::map<std::string, int>* bindings : {&job.cross.storageBindings, &job.cross.counterBindings})
+        for (uint32_t i = 0, n = r.count(8); i < n; ++i) {
+            std::string name = r.str();
+            (*bindings)[name] = r.i32();
+        }
     job.cross.depthSamplers.resize(r.count(4));
     for (std::string& s : job.cross.depthSamplers) s = r.str();
     if (!r.done() || stage > static_cast<uint32_t>(ShaderStage::Compute)) return std::nullopt;

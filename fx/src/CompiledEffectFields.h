@@ -122,7 +122,7 @@ static_assert(sizeof(UniformField) == 168);
 static_assert(sizeof(UniformBinding) == 208);
 static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
-static_assert(sizeof(StorageBufferBinding) == 104);
+static_assert(sizeof(StorageBufferBinding) == 88);
 static_assert(sizeof(VertexInput) == 48);
 static_assert(sizeof(ImageBinding) == 72);
 static_assert(sizeof(StageEffects) == 12);
@@ -198,7 +198,7 @@ void fields(A& a, StorageBufferBinding::Run& x) {
 }
 template <class A>
 void fields(A& a, StorageBufferBinding& x) {
-    a(x.blockName, x.parameter, x.glStride, x.d3dStride, x.runs, x.counterBlockName);
+    a(x.glslName, x.parameter, x.binding, x.glStride, x.d3dStride, x.runs, x.counterBinding);
 }
 template <class A>
 void fields(A& a, ImageBinding& x) {

@@ -72,6 +72,7 @@ private:
     void procedural(const Parameter& p, const Annotation& annotation, TextureDesc& t);
     void resourceShape(const Parameter& p, TextureDesc& t);
     void samplers();
+    void storageBindings();
     void applySamplerState(const StateAssignment& a, BaseType samplerType, SamplerDesc& s,
                            bool& hasComparison);
     // The D3D9 sampler-register states of every pass (`MinFilter[0] = LINEAR;`), once its stages compiled.
@@ -163,6 +164,9 @@ private:
     std::unique_ptr<CompiledEffect> mOut;
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
+    // Storage-block parameters' binding points, and their counters' (storageBindings()).
+    std::map<std::string, int> mStorageBindings;
+    std::map<std::string, int> mCounterBindings;
     std::vector<LoweredArgument> mPassArguments;  // the current pass's, as lowering numbers them
     // The outputs (by varying location) of the current pass's stage before its pixel shader: its geometry
     // shader's, else its vertex shader's (none after tessellation), which the pixel shader reads.

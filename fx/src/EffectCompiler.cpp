@@ -374,6 +374,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     parameterInfo();
     textures();
     samplers();
+    storageBindings();
     scripts();
     bool found = mOptions.technique.empty();
     // Techniques whose code uses what the lowering cannot express, with what it said. D3DX offered the

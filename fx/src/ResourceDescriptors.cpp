@@ -6,6 +6,8 @@
 
 #include "CaseBlindPath.h"
 
+#include <fx/InstancedPass.h>
+
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -373,6 +375,26 @@ void Compiler::samplers() {
         if (p.type.base == BaseType::SamplerState) s.comparisonFunc = 0;
         mOut->samplers.push_back(s);
     }
+}
+
+// Storage-block parameters (StructuredBuffer, ByteAddressBuffer, their read-write, append and consume
+// forms) get GL_SHADER_STORAGE_BUFFER binding points in the effect's order of parameters, and those that can
+// have a hidden counter (RWStructuredBuffer, AppendStructuredBuffer, ConsumeStructuredBuffer) one for it
+// after them: every stage declares a parameter's block at its point, so the runtime binds by parameter.
+// The instanced passes' object records and instance lists keep their own points.
+void Compiler::storageBindings() {
+    int next = 0;
+    const auto take = [&next] {
+        while (next == kObjectBufferBinding || next == kInstanceBufferBinding) ++next;
+        return next++;
+    };
+    for (const Parameter& p : mEffect.parameters)
+        if (p.type.base >= BaseType::StructuredBuffer && p.type.base <= BaseType::ConsumeStructuredBuffer)
+            mStorageBindings[p.name] = take();
+    for (const Parameter& p : mEffect.parameters)
+        if (p.type.base == BaseType::RWStructuredBuffer || p.type.base == BaseType::AppendStructuredBuffer ||
+            p.type.base == BaseType::ConsumeStructuredBuffer)
+            mCounterBindings[p.name] = take();
 }
 
 // D3D10 (texture, sampler) pairs: units after the D3D9 samplers', one per pair a pass samples (the same

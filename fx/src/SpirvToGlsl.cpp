@@ -359,9 +359,15 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
             program.samplers.push_back(s);
         }
         program.storageBuffers.clear();
+        // Every block is declared at its parameter's binding point (CrossOptions::storageBindings), which
+        // the runtime binds the parameter's buffer to.
+        const auto bindingOf = [](const std::map<std::string, int>& bindings, const std::string& name) {
+            const auto at = bindings.find(name);
+            return at == bindings.end() ? -1 : at->second;
+        };
         // An AppendStructuredBuffer's or ConsumeStructuredBuffer's counter (and a RWStructuredBuffer's
         // IncrementCounter) is a block of its own, which glslang names "<buffer>@count": one uint.
-        std::map<std::string, std::string> counterBlocks;  // by buffer name
+        std::map<std::string, int> counterBindings;  // by buffer name
         constexpr std::string_view kCounterSuffix = "@count";
         for (const spirv_cross::Resource& r : resources.storage_buffers) {
             const std::string name = compiler.get_name(r.id);
@@ -369,24 +375,34 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                 name.compare(name.size() - kCounterSuffix.size(), kCounterSuffix.size(), kCounterSuffix) != 0)
                 continue;
             const std::string buffer = name.substr(0, name.size() - kCounterSuffix.size());
+            const int binding = bindingOf(options.counterBindings, buffer);
+            if (binding < 0) continue;
+            counterBindings[buffer] = binding;
             // "@" is no GLSL identifier character; fx_ names are the generator's own.
-            counterBlocks[buffer] = "fx_counter_" + buffer;
-            compiler.set_name(r.base_type_id, counterBlocks[buffer]);
+            compiler.set_name(r.id, "fx_counter_" + buffer);
+            compiler.set_name(r.base_type_id, std::string());  // the block named after it, as below
+            compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(binding));
         }
         for (const spirv_cross::Resource& r : resources.storage_buffers) {
             // glslang's block for a StructuredBuffer<T> or ByteAddressBuffer holds one runtime array of T.
             const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
             const std::string name = compiler.get_name(r.id);
-            if (block.member_types.size() != 1 || compiler.get_type(block.member_types[0]).array.empty())
+            const int binding = bindingOf(options.storageBindings, name);
+            if (binding < 0 || block.member_types.size() != 1 ||
+                compiler.get_type(block.member_types[0]).array.empty())
                 continue;
-            compiler.set_name(r.base_type_id, name);  // what GL's program interface calls the block
+            // Buffers of one element type share one SPIR-V block type: left unnamed, the type gives each
+            // GLSL block its buffer's name, which GL matches between the stages of a program.
+            compiler.set_name(r.base_type_id, std::string());
+            compiler.set_decoration(r.id, spv::DecorationBinding, static_cast<uint32_t>(binding));
             StorageBufferBinding b;
-            b.blockName = name;
+            b.glslName = name;
+            b.binding = binding;
             b.glStride = compiler.type_struct_member_array_stride(block, 0);
             const spirv_cross::SPIRType& array = compiler.get_type(block.member_types[0]);
             storageRuns(compiler, compiler.get_type(array.parent_type), 0, b.d3dStride, b.runs);
-            if (auto counter = counterBlocks.find(name); counter != counterBlocks.end())
-                b.counterBlockName = counter->second;
+            if (auto counter = counterBindings.find(name); counter != counterBindings.end())
+                b.counterBinding = counter->second;
             program.storageBuffers.push_back(std::move(b));
         }
 

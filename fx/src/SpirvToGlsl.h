@@ -17,6 +17,11 @@ struct CrossOptions {
     int uniformBlockBinding = 0;   // its binding point
     // Texture unit per effect sampler name; samplers not listed keep unit 0.
     std::map<std::string, int> samplerUnits;
+    // GL_SHADER_STORAGE_BUFFER binding point per effect storage-block parameter name, and of the block of
+    // its hidden counter (Compiler::storageBindings): every stage of every pass declares a parameter's
+    // block at the same point, whatever GLSL names SPIRV-Cross gives blocks that share one type.
+    std::map<std::string, int> storageBindings;
+    std::map<std::string, int> counterBindings;
     // Effect samplers whose GLSL sampler is the combined (fx_depth_S, fx_cmp_S) comparison sampler.
     std::vector<std::string> depthSamplers;
 };

@@ -144,7 +144,7 @@ void Compiler::resolveReflection(StageProgram& program, const CompiledPass& pass
             s.textureParameter = texture->second;
     }
     for (StorageBufferBinding& b : program.storageBuffers)
-        if (auto it = mIndex.find(b.blockName); it != mIndex.end()) b.parameter = it->second;
+        if (auto it = mIndex.find(b.glslName); it != mIndex.end()) b.parameter = it->second;
     for (ImageBinding& image : program.images)
         if (auto it = mIndex.find(image.glslName); it != mIndex.end()) image.parameter = it->second;
 }
@@ -197,6 +197,10 @@ void Compiler::enqueueStage(LoweredStage&& lowered, CompiledPass& pass, PassSlot
     const ShaderStage stage = lowered.stage;
     StageProgram& program = stageProgram(pass, stage);
     std::string options = hlslToSpirvOptionsKey() + "|" + spirvToGlslOptionsKey() + "|" + lowered.profile;
+    // A stage's blocks take their binding points from the whole effect's storage parameters, which an edit
+    // elsewhere in the effect renumbers (hot reload) without changing the stage's source.
+    for (const std::map<std::string, int>* bindings : {&mStorageBindings, &mCounterBindings})
+        for (const auto& [name, binding] : *bindings) options += "|" + name + "=" + std::to_string(binding);
     uint64_t key = CompileCache::hash(lowered.hlsl, stage, options);
     // A unit already waiting for a worker is looked up once that job is done (finishPendingStages).
     const bool waiting = mJobByKey.count(key) > 0;
@@ -220,6 +224,8 @@ void Compiler::enqueueStage(LoweredStage&& lowered, CompiledPass& pass, PassSlot
         // One uniform block binding per stage: the stage enum's order.
         job.cross.uniformBlockBinding = static_cast<int>(stage);
         job.cross.samplerUnits = mSamplerUnits;
+        job.cross.storageBindings = mStorageBindings;
+        job.cross.counterBindings = mCounterBindings;
         job.cross.depthSamplers = lowered.depthSamplers;
         mJobs.push_back(std::move(job));
     }

@@ -185,6 +185,23 @@ TEST(ComputeEffects, AGroupsharedReductionReachesAPixelShaderThroughAByteAddress
     }
 }
 
+// Two RWStructuredBuffer<uint> written differently by one compute shader and read by one pixel shader
+// (and one of them by the vertex shader): each reaches its own buffer, bound by its parameter (blocks of
+// one element type share one SPIR-V type, whose GLSL names are not the buffers'). A frame that is blank,
+// or whose buffers alias (one value in every channel), fails.
+TEST(ComputeEffects, TwoReadWriteBuffersOfOneElementTypeInOneShaderReachTheirOwnBuffers) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/compute_same_type_buffers.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    for (const auto& [x, y] : {std::pair{3, 3}, std::pair{kWidth / 2, kHeight / 2}}) {
+        const uint8_t* p = frame.pixel(x, y);
+        EXPECT_EQ(p[0], 64) << x << "," << y;
+        EXPECT_EQ(p[1], 192) << x << "," << y;
+        EXPECT_EQ(p[2], 192) << x << "," << y;
+    }
+}
+
 // The centre of cell `cell` of tests/data/d3d10/compute_append_consume.fx's 8 x 8 grid.
 const uint8_t* cellPixel(const runtime::FrameImage& frame, int cell) {
     return frame.pixel((cell % 8) * kWidth / 8 + kWidth / 16, (cell / 8) * kHeight / 8 + kHeight / 16);

@@ -104,14 +104,20 @@ struct StorageBufferBinding {
         uint32_t glOffset = 0;   // within a GL element
         uint32_t bytes = 0;
     };
-    std::string blockName;   // the GLSL block (the parameter's name)
-    size_t parameter = 0;    // CompiledEffect::parameters index
+    std::string glslName;  // the GLSL block (the parameter's name)
+    size_t parameter = 0;  // CompiledEffect::parameters index
+    // The block's GL_SHADER_STORAGE_BUFFER binding point, fixed in its GLSL by the parameter's place
+    // among the effect's storage-block parameters (docs/d3d10.md): the runtime binds the parameter's buffer
+    // there, never looks a block up by name (two buffers of one element type share one SPIR-V block type,
+    // whose GLSL names are not theirs).
+    int binding = 0;
     uint32_t glStride = 0;   // bytes per element in the GL block
     uint32_t d3dStride = 0;  // bytes per element as D3D packs it
     std::vector<Run> runs;   // in D3D order, covering the element
-    // The block of the buffer's hidden counter (AppendStructuredBuffer, ConsumeStructuredBuffer, a
-    // RWStructuredBuffer's IncrementCounter): one uint the runtime keeps with the buffer; "" without one.
-    std::string counterBlockName;
+    // The binding point of the block of the buffer's hidden counter (AppendStructuredBuffer,
+    // ConsumeStructuredBuffer, a RWStructuredBuffer's IncrementCounter): one uint the runtime keeps with the
+    // buffer; -1 without one.
+    int counterBinding = -1;
 };
 
 // A D3D11 RWTexture1D/2D/3D/2DArray<T> or RWBuffer<T> a stage reads or writes: a GL image (image load/store).
@@ -162,7 +168,7 @@ struct StageProgram {
     // D3D10 pairs, and Buffer<T> as a GL buffer texture: a SamplerBinding with pairTexture the buffer's
     // name and no sampler.
     std::vector<SamplerBinding> samplers;
-    std::vector<StorageBufferBinding> storageBuffers;  // the runtime binds them per program (GpuProgram)
+    std::vector<StorageBufferBinding> storageBuffers;  // the runtime binds them per pass (PassBindings)
     std::vector<ImageBinding> images;                  // likewise
     std::vector<VertexInput> inputs;                   // vertex stage
     uint64_t sourceHash = 0;                           // hash of hlsl + options: the compile cache's key

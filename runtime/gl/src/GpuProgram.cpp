@@ -320,25 +320,10 @@ std::unique_ptr<GpuProgram> GpuProgram::createCompute(const fx::CompiledPass& pa
 
 void GpuProgram::bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked,
                                    size_t count) {
-    // StructuredBuffer and ByteAddressBuffer blocks: binding points by the pass's order of parameters.
-    const std::vector<size_t> storage = storageBufferParameters(pass);
-    const std::vector<size_t> counters = counterParameters(pass);
+    // Storage blocks are declared at their parameters' binding points in the GLSL itself.
     const std::vector<size_t> images = imageParameters(pass);
-    const auto bindBlock = [this](const std::string& name, size_t binding) {
-        const GLuint index = gl::GetProgramResourceIndex(mProgram, GL_SHADER_STORAGE_BLOCK, name.c_str());
-        if (index != GL_INVALID_INDEX)
-            gl::ShaderStorageBlockBinding(mProgram, index, static_cast<GLuint>(binding));
-    };
     for (size_t s = 0; s < count; ++s) {
         if (!linked[s]) continue;
-        for (const fx::StorageBufferBinding& b : linked[s]->storageBuffers) {
-            const auto at = std::find(storage.begin(), storage.end(), b.parameter);
-            if (at != storage.end()) bindBlock(b.blockName, static_cast<size_t>(at - storage.begin()));
-            const auto counter = std::find(counters.begin(), counters.end(), b.parameter);
-            if (!b.counterBlockName.empty() && counter != counters.end())
-                bindBlock(b.counterBlockName,
-                          storage.size() + static_cast<size_t>(counter - counters.begin()));
-        }
         // An image uniform holds its unit as a sampler uniform does (glUniform1i).
         for (const fx::ImageBinding& image : linked[s]->images) {
             const GLint location = gl::GetUniformLocation(mProgram, image.glslName.c_str());
@@ -369,21 +354,6 @@ std::vector<size_t> boundParameters(const fx::CompiledPass& pass,
 
 std::vector<size_t> GpuProgram::imageParameters(const fx::CompiledPass& pass) {
     return boundParameters(pass, &fx::StageProgram::images);
-}
-
-std::vector<size_t> GpuProgram::storageBufferParameters(const fx::CompiledPass& pass) {
-    return boundParameters(pass, &fx::StageProgram::storageBuffers);
-}
-
-std::vector<size_t> GpuProgram::counterParameters(const fx::CompiledPass& pass) {
-    std::vector<size_t> parameters;
-    for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
-        for (const fx::StorageBufferBinding& b : stage->storageBuffers)
-            if (!b.counterBlockName.empty()) parameters.push_back(b.parameter);
-    std::sort(parameters.begin(), parameters.end());
-    parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
-    return parameters;
 }
 
 bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {

@@ -59,22 +59,19 @@ void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
     for (const fx::StageProgram* stage : stagesOf(pass)) bindStageTextures(resources, *stage, drawing);
 }
 
-// The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks, and after them the counters of
-// its append, consume and counted buffers (GpuProgram::counterParameters).
+// The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks, and the counters of its
+// append, consume and counted buffers, at the binding points their blocks are declared at.
 void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& pass) {
-    const std::vector<size_t> parameters = GpuProgram::storageBufferParameters(pass);
-    for (size_t binding = 0; binding < parameters.size(); ++binding) {
-        const GpuBuffer* buffer =
-            resources.storage->buffer(resources.storage->viewedResource(parameters[binding]));
-        if (buffer) gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding), buffer->id());
-    }
-    const std::vector<size_t> counters = GpuProgram::counterParameters(pass);
-    for (size_t k = 0; k < counters.size(); ++k) {
-        const GpuBuffer* counter = resources.storage->counter(resources.storage->viewedResource(counters[k]));
-        if (counter)
-            gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(parameters.size() + k),
-                               counter->id());
-    }
+    for (const fx::StageProgram* stage : stagesOf(pass))
+        for (const fx::StorageBufferBinding& b : stage->storageBuffers) {
+            const size_t resource = resources.storage->viewedResource(b.parameter);
+            if (const GpuBuffer* buffer = resources.storage->buffer(resource))
+                gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(b.binding), buffer->id());
+            const GpuBuffer* counter = b.counterBinding >= 0 ? resources.storage->counter(resource) : nullptr;
+            if (counter)
+                gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(b.counterBinding),
+                                   counter->id());
+        }
 }
 
 // The textures behind the pass's images (RWTexture1D/2D/3D/2DArray, all layers) and the buffer textures
@@ -167,10 +164,11 @@ GlStateMask passStateMask(const fx::CompiledPass& pass) {
         mask.add(stageMask);
     }
     GlStateMask storage;
-    const size_t bindings =
-        GpuProgram::storageBufferParameters(pass).size() + GpuProgram::counterParameters(pass).size();
-    for (size_t binding = 0; binding < bindings; ++binding)
-        storage.storageBuffers.push_back(static_cast<int>(binding));
+    for (const fx::StageProgram* stage : stagesOf(pass))
+        for (const fx::StorageBufferBinding& b : stage->storageBuffers) {
+            storage.storageBuffers.push_back(b.binding);
+            if (b.counterBinding >= 0) storage.storageBuffers.push_back(b.counterBinding);
+        }
     mask.add(storage);
     return mask;
 }

@@ -81,16 +81,9 @@ public:
 
     bool hasShaders() const { return mProgram != 0; }
 
-    // The effect parameters behind the pass's storage blocks (StructuredBuffer, ByteAddressBuffer), in
-    // the order of their binding points: parameter k is bound at GL_SHADER_STORAGE_BUFFER binding k in
-    // every program linked from the pass.
-    static std::vector<size_t> storageBufferParameters(const fx::CompiledPass& pass);
-    // The storage-buffer parameters whose counters the pass's code uses (AppendStructuredBuffer,
-    // ConsumeStructuredBuffer, IncrementCounter), ascending: parameter k's counter block is bound at
-    // binding storageBufferParameters(pass).size() + k.
-    static std::vector<size_t> counterParameters(const fx::CompiledPass& pass);
-    // The effect parameters behind the pass's images (RWTexture1D/2D/3D/2DArray, RWBuffer), likewise:
-    // parameter k is bound at image unit k.
+    // The effect parameters behind the pass's images (RWTexture1D/2D/3D/2DArray, RWBuffer), ascending:
+    // parameter k is bound at image unit k in every program linked from the pass. (Storage blocks carry
+    // their binding points in their GLSL: fx::StorageBufferBinding::binding.)
     static std::vector<size_t> imageParameters(const fx::CompiledPass& pass);
     // True for a compute pass's program: dispatched (glDispatchCompute), never drawn.
     bool isCompute() const { return mCompute; }
@@ -112,8 +105,7 @@ private:
         uint64_t uploadedLap = 0;       // the ring's lap when it was bound
     };
     GpuProgram() = default;
-    // Binds the pass's storage blocks and images to the binding points and units their parameters' orders
-    // give (storageBufferParameters, imageParameters).
+    // Binds the pass's images to the units their parameters' order gives (imageParameters).
     // Binds each stage's block whose bytes changed or whose range is from an earlier lap of the ring.
     void bindStaleBlocks(UniformRing& ring);
     void bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked, size_t count);
