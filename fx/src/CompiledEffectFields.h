@@ -62,7 +62,7 @@ struct EnumLimit<StreamOutput::Primitive>
 template <>
 struct EnumLimit<TextureFormat> : EnumLast<TextureFormat, TextureFormat::D32F> {};
 template <>
-struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Function> {};
+struct EnumLimit<TextureDesc::Kind> : EnumLast<TextureDesc::Kind, TextureDesc::Kind::Noise> {};
 template <>
 struct EnumLimit<BaseType> : EnumLast<BaseType, BaseType::Struct> {};
 template <>
@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 11,
-              "the enum lengths below were pinned at format version 11: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 12,
+              "the enum lengths below were pinned at format version 12: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 36);
 static_assert(enumLength<UniformBinding::Source>() == 2);
@@ -100,7 +100,7 @@ static_assert(enumLength<CompiledPass::DrawPrimitive>() == 4);
 static_assert(enumLength<StreamOutElement::Component>() == 3);
 static_assert(enumLength<StreamOutput::Primitive>() == 3);
 static_assert(enumLength<TextureFormat>() == 12);
-static_assert(enumLength<TextureDesc::Kind>() == 6);
+static_assert(enumLength<TextureDesc::Kind>() == 7);
 static_assert(enumLength<BaseType>() == 49);
 static_assert(enumLength<Shape>() == 3);
 static_assert(enumLength<ScriptCommand::Kind>() == 19);

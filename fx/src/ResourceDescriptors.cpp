@@ -168,6 +168,10 @@ void Compiler::textures() {
             }
         }
         if (t.kind == TextureDesc::Kind::Runtime && !resource.empty()) t.resourceName = resource;
+        // The thesis's noise texture, by its semantic: classified here so that the runtime reads the kind
+        // and compares no semantic text.
+        if (t.kind == TextureDesc::Kind::Runtime && t.type == BaseType::Texture2D && semantic == "NOISE")
+            t.kind = TextureDesc::Kind::Noise;
         if ((t.type == BaseType::Texture2DMS || t.type == BaseType::Texture2DMSArray) && t.samples == 0) {
             if (t.kind == TextureDesc::Kind::RenderColorTarget ||
                 t.kind == TextureDesc::Kind::RenderDepthStencilTarget)

@@ -376,6 +376,28 @@ TEST(EffectCompiler, UnknownTextureFormat) {
     EXPECT_EQ(diags.items()[0].loc.line, 1);
 }
 
+// The NOISE semantic is resolved here, case-blind: a 2D texture that nothing else fills is the runtime's
+// noise texture by its kind (the runtime compares no semantic); a cube with it, or one a procedural
+// annotation fills, is not.
+TEST(EffectCompiler, NoiseSemanticIsATextureKind) {
+    DiagnosticList diags;
+    std::string src =
+        "texture Untyped : noise;\n"
+        "Texture2D Typed : NOISE;\n"
+        "textureCUBE Cube : noise;\n"
+        "texture Generated : noise < string Procedural = \"noise\"; >;\n"
+        "texture Other : Diffuse;\n"
+        "float4 PS() : COLOR { return 1; }\ntechnique t { pass p { PixelShader = compile ps_2_0 PS(); } }\n";
+    auto fx = compile(src, diags);
+    ASSERT_TRUE(fx) << diags.str();
+    ASSERT_EQ(fx->textures.size(), 5u);
+    EXPECT_EQ(fx->textures[0].kind, TextureDesc::Kind::Noise);
+    EXPECT_EQ(fx->textures[1].kind, TextureDesc::Kind::Noise);
+    EXPECT_EQ(fx->textures[2].kind, TextureDesc::Kind::Runtime);
+    EXPECT_EQ(fx->textures[3].kind, TextureDesc::Kind::Procedural);
+    EXPECT_EQ(fx->textures[4].kind, TextureDesc::Kind::Runtime);
+}
+
 // A sampler's Texture naming a parameter that exists but is no texture says it is the wrong type, at the
 // reference.
 TEST(EffectCompiler, ASamplerTextureOfTheWrongTypeSaysSo) {

@@ -11,6 +11,7 @@
 #include <runtime/Image.h>
 #include <private/runtime/ProceduralTexture.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -95,6 +96,25 @@ TEST(ProceduralNoise, TextureIsTheDocumentedWhiteNoiseAndTheSameEveryTime) {
     }
     ASSERT_TRUE(render(*first, boxes(), 16, 16));
     EXPECT_TRUE(notConstant(first->readFrame()));
+}
+
+// The NOISE semantic (the thesis's noise texture): the runtime's fixed 64x64 noise by the kind the compiler
+// gave it, not a neutral texture.
+TEST(ProceduralNoise, NoiseSemanticGivesTheRuntimesNoiseTexture) {
+    const std::string source = fullScreenEffect(
+        "texture Jitter : noise;\nsampler JitterSampler = sampler_state { Texture = <Jitter>; };\n",
+        "float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(JitterSampler, uv); }");
+    auto effect = loadEffect(source, false);
+    ASSERT_TRUE(effect);
+    int width = 0, height = 0, channels = 0;
+    auto noise = effect->readTarget("Jitter", &width, &height, &channels);
+    ASSERT_TRUE(noise);
+    EXPECT_EQ(width, 64);
+    EXPECT_EQ(height, 64);
+    ASSERT_FALSE(noise->empty());
+    EXPECT_NE(std::count(noise->begin(), noise->end(), (*noise)[0]), static_cast<long>(noise->size()));
+    ASSERT_TRUE(render(*effect, boxes(), 16, 16));
+    EXPECT_TRUE(notConstant(effect->readFrame()));
 }
 
 TEST(ProceduralNoise, UnknownGeneratorIsAnErrorAtTheAnnotation) {

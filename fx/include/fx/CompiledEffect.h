@@ -308,11 +308,13 @@ struct TextureDesc {
         RenderColorTarget,         // semantic RENDERCOLORTARGET
         RenderDepthStencilTarget,  // semantic RENDERDEPTHSTENCILTARGET
         File,                      // ResourceName annotation (or a file name initializer)
-        Runtime,     // other semantics (e.g. "noise"): the runtime supplies it, or a neutral one
+        Runtime,     // other semantics: the application supplies it, or the runtime a neutral one
         Procedural,  // `string Procedural = "noise"`: white noise generated at effect creation (the only
                      // generator so far; runtime/render/include/private/runtime/ProceduralTexture.h)
         Function,    // `string function = "f"`: FX Composer's texture function, `fill` drawn into every
                      // texel of every level (and slice, or face) at effect creation
+        Noise,       // semantic NOISE on a 2D texture nothing else fills: the runtime's fixed-seed 64x64
+                     // noise texture (the thesis's)
     };
     size_t parameter = 0;  // CompiledEffect::parameters index
     Kind kind = Kind::File;

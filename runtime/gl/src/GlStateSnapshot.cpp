@@ -78,8 +78,14 @@ std::vector<std::string> GlStateMask::describe() const {
 
 GlStateSnapshot GlStateSnapshot::capture(const GlStateMask& mask) {
     GlStateSnapshot s;
+    capture(mask, s);
+    return s;
+}
+
+void GlStateSnapshot::capture(const GlStateMask& mask, GlStateSnapshot& s) {
     s.mMask = mask;
     if (mask.program) s.mProgram = integer(GL_CURRENT_PROGRAM);
+    s.mEnables.clear();
     if (mask.renderStates) {
         for (GLenum capability : kCapabilities)
             s.mEnables.push_back({capability, gl::IsEnabled(capability) != 0});
@@ -125,8 +131,12 @@ GlStateSnapshot GlStateSnapshot::capture(const GlStateMask& mask) {
     // The active unit's bindings too: creating a texture (a render target allocated on first use) binds it
     // there.
     s.mActiveTexture = integer(GL_ACTIVE_TEXTURE);
-    std::vector<int> units = mask.textureUnits;
-    unionInto(units, {static_cast<int>(s.mActiveTexture - GL_TEXTURE0)});
+    std::vector<int>& units = s.mUnitOrder;
+    units = mask.textureUnits;
+    const int active = static_cast<int>(s.mActiveTexture - GL_TEXTURE0);
+    if (std::find(units.begin(), units.end(), active) == units.end()) units.push_back(active);
+    std::sort(units.begin(), units.end());
+    s.mUnits.clear();
     for (int unit : units) {
         TextureUnit saved{unit, {}, 0};
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
@@ -136,21 +146,20 @@ GlStateSnapshot GlStateSnapshot::capture(const GlStateMask& mask) {
         s.mUnits.push_back(saved);
     }
     gl::ActiveTexture(static_cast<GLenum>(s.mActiveTexture));
-    const auto ranges = [](const std::vector<int>& bindings, GLenum binding, GLenum start, GLenum size) {
-        std::vector<BufferRange> out;
+    const auto ranges = [](const std::vector<int>& bindings, GLenum binding, GLenum start, GLenum size,
+                           std::vector<BufferRange>& out) {
+        out.clear();
         for (int index : bindings) {
             const GLuint i = static_cast<GLuint>(index);
             out.push_back(BufferRange{index, integerAt(binding, i), integerAt(start, i), integerAt(size, i)});
         }
-        return out;
     };
     s.mUniformBuffer = integer(GL_UNIFORM_BUFFER_BINDING);
-    s.mUniformRanges = ranges(mask.uniformBuffers, GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_START,
-                              GL_UNIFORM_BUFFER_SIZE);
+    ranges(mask.uniformBuffers, GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_START, GL_UNIFORM_BUFFER_SIZE,
+           s.mUniformRanges);
     s.mStorageBuffer = integer(GL_SHADER_STORAGE_BUFFER_BINDING);
-    s.mStorageRanges = ranges(mask.storageBuffers, GL_SHADER_STORAGE_BUFFER_BINDING,
-                              GL_SHADER_STORAGE_BUFFER_START, GL_SHADER_STORAGE_BUFFER_SIZE);
-    return s;
+    ranges(mask.storageBuffers, GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_START,
+           GL_SHADER_STORAGE_BUFFER_SIZE, s.mStorageRanges);
 }
 
 void GlStateSnapshot::restore() const {

@@ -166,12 +166,15 @@ Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewPr
     float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
     int behind = 0;  // corners at w <= 0: behind the light's plane
     const std::array<glm::vec3, 8> corners = boxCorners(box.min, box.max);
-    for (const glm::vec3& corner : corners)
-        behind += (lightViewProjection * glm::vec4(corner, 1.0f)).w <= 1e-6f ? 1 : 0;
+    // Each corner transformed once: the light's cull tests every node of the scene's tree it reaches.
+    std::array<glm::vec4, 8> clips;
+    for (size_t i = 0; i < corners.size(); ++i) {
+        clips[i] = lightViewProjection * glm::vec4(corners[i], 1.0f);
+        behind += clips[i].w <= 1e-6f ? 1 : 0;
+    }
     if (behind == 8 && region.castersBehindLightPlaneCastNothing) return Overlap::Outside;
     if (behind > 0) return Overlap::Partial;  // crosses the light's plane: keep, look closer
-    for (const glm::vec3& corner : corners) {
-        const glm::vec4 clip = lightViewProjection * glm::vec4(corner, 1.0f);
+    for (const glm::vec4& clip : clips) {
         const glm::vec3 ndc = glm::vec3(clip) / clip.w;
         lo = glm::min(lo, glm::vec2(ndc));
         hi = glm::max(hi, glm::vec2(ndc));

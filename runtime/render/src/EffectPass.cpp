@@ -242,7 +242,14 @@ bool EffectTechnique::begin(bool saveState) const {
     if (!isValid() || mResources->application.begun) return false;
     EffectResources::ApplicationFrame& frame = mResources->application;
     // Read before anything is written: allocating the render targets binds textures.
-    if (saveState) frame.saved = GlStateSnapshot::capture(stateMask());
+    if (saveState) {
+        std::vector<std::optional<GlStateMask>>& masks = mResources->techniqueStateMasks;
+        if (masks.size() <= mTechnique) masks.resize(mResources->effect().techniques.size());
+        if (!masks[mTechnique]) masks[mTechnique] = stateMask();
+        if (!frame.saved) frame.saved.emplace();
+        GlStateSnapshot::capture(*masks[mTechnique], *frame.saved);
+    }
+    frame.saving = saveState;
     captureApplicationTarget(*mResources);
     frame.begun = mTechnique;
     return true;
@@ -251,8 +258,14 @@ bool EffectTechnique::begin(bool saveState) const {
 void EffectTechnique::end() const {
     if (!isValid() || mResources->application.begun != mTechnique) return;
     EffectResources::ApplicationFrame& frame = mResources->application;
-    if (frame.saved) frame.saved->restore();
+    if (frame.saving) frame.saved->restore();
+    // As a new frame, the snapshot's and the arguments' storage kept for the next begin().
+    std::optional<GlStateSnapshot> saved = std::move(frame.saved);
+    std::vector<fx::Value> arguments = std::move(frame.arguments);
+    arguments.clear();
     frame = EffectResources::ApplicationFrame{};
+    frame.saved = std::move(saved);
+    frame.arguments = std::move(arguments);
 }
 
 size_t EffectTechnique::annotationCount() const {

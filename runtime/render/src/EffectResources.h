@@ -106,7 +106,8 @@ public:
     // (EffectPass.cpp, ComputeDispatch.cpp) alone.
     struct ApplicationFrame {
         std::optional<size_t> begun;           // the technique between begin() and end()
-        std::optional<GlStateSnapshot> saved;  // what end() restores
+        bool saving = false;                   // begin() saved the state: end() restores `saved`
+        std::optional<GlStateSnapshot> saved;  // what end() restores (kept after it for its storage)
         // The application's framebuffer and viewport, for passes whose script binds the frame's targets.
         bool targetKnown = false;
         GLint framebuffer = 0;
@@ -116,6 +117,8 @@ public:
         std::optional<std::pair<size_t, size_t>> applied;  // the technique and pass last applied
         std::vector<fx::Value> arguments;                  // its compile arguments' values
     } application;
+    // Per technique: the state its begin() saves (EffectTechnique::stateMask), made on its first begin().
+    std::vector<std::optional<GlStateMask>> techniqueStateMasks;
 
     // [SECTION] Between frames
     // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.

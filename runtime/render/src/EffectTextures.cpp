@@ -294,9 +294,7 @@ bool EffectTextures::createFileTextures(const std::vector<fx::Value>& values, Un
                                 std::to_string(supportedSamples(desc))});
         if (isRenderTarget(desc)) continue;
         const bool cube = desc.type == fx::BaseType::TextureCube;
-        const std::string& semantic = mEffect->parameters[desc.parameter].semantic;
-        if (desc.kind == fx::TextureDesc::Kind::Runtime && fx::equalsIgnoreCase(semantic, "noise") &&
-            desc.type == fx::BaseType::Texture2D) {
+        if (desc.kind == fx::TextureDesc::Kind::Noise) {
             mTextures[desc.parameter] = makeNoiseTexture();
             continue;
         }

@@ -137,11 +137,9 @@ bool EffectVariable::store(std::span<const float> components, size_t firstCompon
     const fx::CompiledEffect& effect = mResources->effect();
     const size_t own = effect.componentCount(mType);
     if (components.empty() || firstComponent + components.size() > own) return false;
-    fx::Value value = mResources->values[mParameter];
-    value.data.resize(effect.componentCount(mResources->parameterInfo()[mParameter].type), 0.0f);
-    std::copy(components.begin(), components.end(),
-              value.data.begin() + static_cast<std::ptrdiff_t>(mFirst + firstComponent));
-    mResources->values.pin(mParameter, std::move(value));
+    mResources->values.pinComponents(mParameter,
+                                     effect.componentCount(mResources->parameterInfo()[mParameter].type),
+                                     mFirst + firstComponent, components);
     mResources->pool.published(*mResources, mParameter);
     return true;
 }

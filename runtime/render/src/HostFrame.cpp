@@ -17,7 +17,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
+#include <span>
 #include <tuple>
 
 namespace runtime {
@@ -33,11 +35,7 @@ namespace {
 
 // [SECTION] Values
 
-// A render port's matrices: the camera's, or a light's as RenderPort=lightN gets them.
-struct PortMatrices {
-    glm::mat4 view{1.0f};
-    glm::mat4 projection{1.0f};
-};
+using PortMatrices = HostFrame::PortMatrices;
 
 struct StepContext {
     const Scene& scene;
@@ -85,12 +83,17 @@ glm::mat4 factorMatrix(const HostMatrix& factor, int light, const StepContext& s
     return m;
 }
 
-// The value's components: a matrix as its 16 elements row after row (HLSL's order), vectors as they are.
-std::vector<float> components(const HostFrame::Value& resolved, const StepContext& step,
-                              const SceneObject* object) {
+// The value's components: a matrix as its 16 elements row after row (HLSL's order), vectors as they are;
+// computed into `out` (a constant's are its own numbers).
+std::span<const float> components(const HostFrame::Value& resolved, const StepContext& step,
+                                  const SceneObject* object, std::array<float, 16>& out) {
     const HostValue& value = resolved.parameter->value;
     const auto light = [&]() -> const Light& {
         return *step.sceneLights[static_cast<size_t>(resolved.light)];
+    };
+    const auto numbers = [&](std::initializer_list<float> list) {
+        std::copy(list.begin(), list.end(), out.begin());
+        return std::span<const float>(out.data(), list.size());
     };
     switch (value.kind) {
         case HostValue::Kind::Constant:
@@ -100,42 +103,44 @@ std::vector<float> components(const HostFrame::Value& resolved, const StepContex
             glm::mat4 product{1.0f};
             for (size_t f = 0; f < value.factors.size(); ++f)
                 product = factorMatrix(value.factors[f], resolved.factorLights[f], step, object) * product;
-            std::vector<float> out(16);
             for (int r = 0; r < 4; ++r)
-                for (int c = 0; c < 4; ++c) out[r * 4 + c] = product[r][c];
+                for (int c = 0; c < 4; ++c) out[static_cast<size_t>(r * 4 + c)] = product[r][c];
             return out;
         }
         case HostValue::Kind::LightPosition: {
             const glm::vec4 p = (value.cameraViewSpace ? step.camera.view : glm::mat4(1.0f)) *
                                 glm::vec4(light().position, 1.0f);
-            return {p.x, p.y, p.z, 1.0f};
+            return numbers({p.x, p.y, p.z, 1.0f});
         }
         case HostValue::Kind::LightDirection: {
             glm::vec3 d = light().direction;
             if (value.cameraViewSpace) d = glm::normalize(glm::mat3(step.camera.view) * d);
-            return {d.x, d.y, d.z, 0.0f};
+            return numbers({d.x, d.y, d.z, 0.0f});
         }
         case HostValue::Kind::LightColor: {
             const glm::vec3 c = light().color;
-            return {c.x, c.y, c.z, 1.0f};
+            return numbers({c.x, c.y, c.z, 1.0f});
         }
         case HostValue::Kind::LightCosHalfAngle:
-            return {std::cos(light().spotAngle * 0.5f)};
+            return numbers({std::cos(light().spotAngle * 0.5f)});
         case HostValue::Kind::ObjectColor: {
             const glm::vec3 c = object ? object->color : glm::vec3(1.0f);
-            return {c.x, c.y, c.z, 1.0f};
+            return numbers({c.x, c.y, c.z, 1.0f});
         }
         case HostValue::Kind::ViewportSize:
-            return {static_cast<float>(step.viewport.x), static_cast<float>(step.viewport.y)};
+            return numbers({static_cast<float>(step.viewport.x), static_cast<float>(step.viewport.y)});
     }
     return {};
 }
 
-// Sets `numbers` as the variable's value: a matrix's upper-left rows x columns (as D3DX's SetMatrix fills
-// a float3x3), a vector's first components (a position's w dropped for a float3), a scalar broadcast.
-bool setComponents(EffectVariable variable, const HostValue& value, const std::vector<float>& numbers) {
-    const fx::TypeDesc type = variable.type();
-    fx::Value v = fx::zeroValue(type);
+// Sets `numbers` as the value's variable's value: a matrix's upper-left rows x columns (as D3DX's SetMatrix
+// fills a float3x3), a vector's first components (a position's w dropped for a float3), a scalar
+// broadcast. Built in the value's own `staged`, so that a frame allocates nothing.
+bool setComponents(HostFrame::Value& resolved, std::span<const float> numbers) {
+    const HostValue& value = resolved.parameter->value;
+    fx::Value& v = resolved.staged;
+    const fx::TypeDesc& type = v.type;
+    std::fill(v.data.begin(), v.data.end(), 0.0f);
     if (value.kind == HostValue::Kind::Matrix) {
         for (int r = 0; r < type.rows; ++r)
             for (int c = 0; c < type.cols; ++c)
@@ -145,7 +150,7 @@ bool setComponents(EffectVariable variable, const HostValue& value, const std::v
     } else {
         for (size_t i = 0; i < v.data.size() && i < numbers.size(); ++i) v.data[i] = numbers[i];
     }
-    return variable.setValue(v);
+    return resolved.variable.setValue(v);
 }
 
 // The step's group counts, each term a count or a parameter's components (a script's Dispatch=x,y,z);
@@ -261,6 +266,7 @@ HostFrame::Value HostFrame::resolve(const HostParameter& parameter, EffectRender
     Value value;
     value.parameter = &parameter;
     value.variable = renderer.variable(parameter.name);
+    value.staged = fx::zeroValue(value.variable.type());
     if (!parameter.value.light.empty()) value.light = lightIndex(parameter.value.light);
     for (const HostMatrix& factor : parameter.value.factors)
         value.factorLights.push_back(factor.space == HostMatrix::Space::Light ? lightIndex(factor.light)
@@ -289,12 +295,16 @@ bool HostFrame::drawSteps(EffectResources& r, const Scene& scene, const FrameOpt
                           bool leaveUnshadowed, fx::DiagnosticSink& diagnostics) {
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
     resolveSceneLights(scene);
-    std::vector<const Light*> sceneLights(mLightNames.size(), nullptr);
+    std::vector<const Light*>& sceneLights = mSceneLightsDrawn;
+    sceneLights.assign(mLightNames.size(), nullptr);
     for (size_t light = 0; light < mLightNames.size(); ++light)
         if (mSceneLights[light] >= 0)
             sceneLights[light] = &scene.lights[static_cast<size_t>(mSceneLights[light])];
-    std::vector<PortMatrices> lights(mLightNames.size());
-    std::vector<bool> fitted(mLightNames.size(), false);
+    std::vector<PortMatrices>& lights = mLightMatrices;
+    lights.assign(mLightNames.size(), PortMatrices{});
+    std::vector<bool>& fitted = mLightsFitted;
+    fitted.assign(mLightNames.size(), false);
+    std::array<float, 16> computed{};        // a value's components as components() computes them
     const SemanticBinder* binder = nullptr;  // the effect's light fits, prepared when a light is first needed
     const auto lightMatrices = [&](int light, const fx::SourceLoc& loc) -> bool {
         const auto l = static_cast<size_t>(light);
@@ -360,11 +370,10 @@ bool HostFrame::drawSteps(EffectResources& r, const Scene& scene, const FrameOpt
         for (size_t p : resolved.passes) {
             EffectPass pass = technique.pass(p);
             // Values of the step before apply() uploads them; values of each object before its draw.
-            for (const Value& value : mParameters)
+            for (Value& value : mParameters)
                 if (value.parameter->value.kind != HostValue::Kind::Constant &&
                     !value.parameter->value.perObject() && !mOverridden[value.variable.index()])
-                    setComponents(value.variable, value.parameter->value,
-                                  components(value, context, nullptr));
+                    setComponents(value, components(value, context, nullptr, computed));
             if (!pass.apply(&diagnostics)) {
                 ok = false;
                 break;
@@ -389,10 +398,9 @@ bool HostFrame::drawSteps(EffectResources& r, const Scene& scene, const FrameOpt
                 continue;
             }
             for (const SceneObject& object : scene.objects) {
-                for (const Value& value : mParameters)
+                for (Value& value : mParameters)
                     if (value.parameter->value.perObject() && !mOverridden[value.variable.index()])
-                        setComponents(value.variable, value.parameter->value,
-                                      components(value, context, &object));
+                        setComponents(value, components(value, context, &object, computed));
                 pass.commitChanges(&diagnostics);
                 r.gpuMesh(object.mesh)
                     .draw(compiled.vertex.inputs, 1, compiled.patchVertices, compiled.primitive);
@@ -411,9 +419,9 @@ bool HostFrame::render(EffectResources& r, const Scene& scene, const FrameOption
     const std::vector<bool> none;  // no render target allocated here: ensureTargets does
     r.textures->ensureFrame(options.width, options.height, &none);
     ensureTargets(options.width, options.height);
-    for (const Value& value : mParameters)
+    for (Value& value : mParameters)
         if (value.parameter->value.kind == HostValue::Kind::Constant)
-            setComponents(value.variable, value.parameter->value, value.parameter->value.numbers);
+            setComponents(value, value.parameter->value.numbers);
 
     const auto& defines = r.effect().provenance.defines;
     const bool scored = mHost->visibility &&
@@ -427,8 +435,8 @@ bool HostFrame::render(EffectResources& r, const Scene& scene, const FrameOption
         // The shadow factor of an effect with no hook of its own: the frame with the visibility constants
         // (no ambient, a white material) divided by the same frame with the shadow maps left cleared,
         // which lights everything. What remains is the fraction of the light the shadow test let through.
-        for (const Value& value : mVisibilitySet) {
-            setComponents(value.variable, value.parameter->value, value.parameter->value.numbers);
+        for (Value& value : mVisibilitySet) {
+            setComponents(value, value.parameter->value.numbers);
             mOverridden[value.variable.index()] = true;
         }
         ok = drawSteps(r, scene, options, false, diagnostics);

@@ -10,6 +10,8 @@
 #include <runtime/GpuTexture.h>
 #include <fx/HostFile.h>
 
+#include <glm/glm.hpp>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +37,12 @@ public:
         EffectVariable variable;
         int light = -1;                 // HostValue::light
         std::vector<int> factorLights;  // per HostValue::factors entry: its light, or -1
+        fx::Value staged;               // of the variable's type: the value set, built in place each time
+    };
+    // A render port's matrices: the camera's, or a light's as RenderPort=lightN gets them.
+    struct PortMatrices {
+        glm::mat4 view{1.0f};
+        glm::mat4 projection{1.0f};
     };
 
 private:
@@ -74,6 +82,11 @@ private:
     bool mSceneLightsResolved = false;
     // Per effect parameter: held at the visibility section's constants while the scored frames run.
     std::vector<bool> mOverridden;
+    // A frame's working lists, per mLightNames entry, kept between frames for their storage: the scene's
+    // light, its matrices and whether they are fitted yet.
+    std::vector<const Light*> mSceneLightsDrawn;
+    std::vector<PortMatrices> mLightMatrices;
+    std::vector<bool> mLightsFitted;
 };
 
 }  // namespace runtime

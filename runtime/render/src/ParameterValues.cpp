@@ -39,6 +39,19 @@ void ParameterValues::pin(size_t index, fx::Value value) {
     mPinned.at(index) = true;
 }
 
+void ParameterValues::pinComponents(size_t index, size_t componentCount, size_t first,
+                                    std::span<const float> components) {
+    fx::Value& value = mValues.at(index);
+    value.data.resize(componentCount, 0.0f);
+    std::copy(components.begin(), components.end(), value.data.begin() + static_cast<std::ptrdiff_t>(first));
+    value.type = mParameters->at(index).type;
+    const size_t typeComponents = static_cast<size_t>(std::max(1, value.type.componentCount()));
+    if (value.type.isNumeric() && value.data.size() < typeComponents)
+        value.data.resize(typeComponents, value.asFloat());
+    mStamps.touch(index);
+    mPinned.at(index) = true;
+}
+
 void ParameterValues::bindSemantics(const SemanticBinder& binder, const RenderPortView& port,
                                     const SceneObject* object, float time, SemanticBinder::Scope scope,
                                     const std::vector<bool>* used) {

@@ -10,6 +10,7 @@
 #include <fx/CompiledEffect.h>
 #include <runtime/Scene.h>
 
+#include <span>
 #include <vector>
 
 namespace runtime {
@@ -40,6 +41,9 @@ public:
     void storeScalar(size_t index, float scalar);
     // store(), and the value pinned: what the application's setters and a pool's shared values do.
     void pin(size_t index, fx::Value value);
+    // pin() of a value that holds `componentCount` numbers, `components` written from number `first` on
+    // (the rest as they were): in the value's own storage, so that setting it again allocates nothing.
+    void pinComponents(size_t index, size_t componentCount, size_t first, std::span<const float> components);
     // Writes the values `binder` binds by semantic (SemanticBinder::bind), leaving the pinned ones, and
     // touches the stamps of those whose value changed.
     void bindSemantics(const SemanticBinder& binder, const RenderPortView& port, const SceneObject* object,

@@ -45,6 +45,9 @@ class GlStateSnapshot {
 public:
     // Reads the state `mask` names from the current context.
     static GlStateSnapshot capture(const GlStateMask& mask);
+    // The same into `into`, whose storage is reused: a snapshot taken every frame allocates nothing once
+    // it has been taken.
+    static void capture(const GlStateMask& mask, GlStateSnapshot& into);
     // Writes it back to the current context.
     void restore() const;
 
@@ -85,6 +88,7 @@ private:
     // Resources.
     GLint mActiveTexture = GL_TEXTURE0;
     std::vector<TextureUnit> mUnits;
+    std::vector<int> mUnitOrder;  // the units mUnits saves, in order: the mask's and the active one
     GLint mUniformBuffer = 0, mStorageBuffer = 0;
     std::vector<BufferRange> mUniformRanges, mStorageRanges;
 };
