@@ -7,12 +7,14 @@
 // 2. `Receivers`: the camera's view; each pixel stores its receiver's light position (NDC x, y and depth z),
 //    the visible point moved ReceiverOffset along its normal, as the ray-cast truth moves its rays
 //    (docs/scoring.md, "The ground truth").
-// 3. `Build`: each pixel's receiver (node index = pixel index) is pushed onto the list of the texel it
-//    projects to (an atomic exchange on that texel's head).
+// 3. `Build`: each pixel's receiver (node index = pixel index) is copied into its node and pushed onto the
+//    list of the texel it projects to (an atomic exchange on that texel's head).
 // 4. `Occlude`: the casters from the light, conservatively rasterized (each triangle enlarged by half a
-//    texel and clipped to its box, Hasselgren, Akenine-Möller & Ohlsson 2005): every texel a triangle
-//    touches walks its list and tests each receiver against the triangle itself, point in triangle in the
-//    light's x, y and the triangle's depth there in front of the receiver; a hit marks the node shadowed.
+//    texel and clipped to its box, Hasselgren, Akenine-Möller & Ohlsson 2005; a closed mesh's triangles
+//    that face away from the light left out, as they shadow nothing the others do not): every texel a
+//    triangle touches walks its list and tests each receiver against the triangle itself, point in
+//    triangle in the light's x, y and the triangle's depth there in front of the receiver; a hit marks the
+//    node shadowed.
 // 5. `Shade`: the scene, each pixel shaded from its node's mark.
 //
 // The light matrices are LiSPSM's fit (lispsm.fx): the map's texels only decide which triangles meet which
@@ -78,10 +80,14 @@ float4 MissingNodeColor <string UIWidget = "color";> = {1.0, 0.0, 1.0, 1.0};
 // [SECTION] Buffers and targets
 // Each light-map texel's first node + 1 (0: an empty list); ClearHeads empties them every frame.
 RWStructuredBuffer<uint> Heads < int ElementCount = SHADOW_MAP_SIZE * SHADOW_MAP_SIZE; >;
-// Each node's link and shadowed mark (NODE_SHADOWED); Build writes every pixel's every frame. Its
-// elements are int where the heads' are uint: the GLSL blocks of two buffers of one element type share
-// one block name, and the runtime binds blocks by name.
-RWStructuredBuffer<int> Links < int ElementCount = RECEIVER_CAPACITY; >;
+// One node per frame pixel: its receiver's light position, and its link with the shadowed mark
+// (NODE_SHADOWED). Build writes every pixel's every frame; a list walk reads a node's 16 bytes at once.
+struct ReceiverNode
+{
+    float3 Light;
+    int Link;
+};
+RWStructuredBuffer<ReceiverNode> Nodes < int ElementCount = RECEIVER_CAPACITY; >;
 
 // The receivers' light positions (xyz) and whether the pixel holds a receiver the lists test (w = 1).
 Texture2D<float4> Receivers : RENDERCOLORTARGET
@@ -184,7 +190,10 @@ float4 BuildPS(float4 position : SV_Position) : SV_Target
         uint2 texel = min(uint2(TexelOf(receiver.xy)), SHADOW_MAP_SIZE - 1);
         InterlockedExchange(Heads[texel.y * SHADOW_MAP_SIZE + texel.x], node + 1, next);
     }
-    Links[node] = int(next);
+    ReceiverNode written;
+    written.Light = receiver.xyz;
+    written.Link = int(next);
+    Nodes[node] = written;
     return 0;
 }
 
@@ -263,11 +272,15 @@ void ConservativeGS(triangle CasterVertex IN[3], inout TriangleStream<CasterPixe
     float3 e01 = OutsetEdge(p0, p1);
     float3 e12 = OutsetEdge(p1, p2);
     float3 e20 = OutsetEdge(p2, p0);
-    OUT.Position = Corner(e20, e01);
+    // The corners at the (swapped) p0, p1, p2, emitted in the input triangle's own order: the
+    // rasterizer's culling then sees the caster's winding as the light sees it (CullLightBack).
+    float4 corners[3] = {Corner(e20, e01), Corner(e01, e12), Corner(e12, e20)};
+    uint second = area < 0.0 ? 2 : 1;
+    OUT.Position = corners[0];
     stream.Append(OUT);
-    OUT.Position = Corner(e01, e12);
+    OUT.Position = corners[second];
     stream.Append(OUT);
-    OUT.Position = Corner(e12, e20);
+    OUT.Position = corners[3 - second];
     stream.Append(OUT);
 }
 
@@ -288,21 +301,14 @@ float4 OccludePS(CasterPixel IN) : SV_Target
     if (any(IN.Position.xy < IN.Box.xy) || any(IN.Position.xy > IN.Box.zw))
         return 0;
     uint2 texel = uint2(IN.Position.xy);
-    uint width, height;
-    Receivers.GetDimensions(width, height);
     int link = int(Heads[texel.y * SHADOW_MAP_SIZE + texel.x]);
-    for (uint walked = 0; link != 0 && walked < width * height; ++walked)
+    for (uint walked = 0; link != 0 && walked < RECEIVER_CAPACITY; ++walked)
     {
         uint node = uint(link - 1);
-        link = Links[node];
-        if ((link & NODE_SHADOWED) != 0)
-        {
-            link &= ~NODE_SHADOWED;
-            continue;
-        }
-        float3 receiver = Receivers.Load(int3(node % width, node / width, 0)).xyz;
-        if (Occludes(IN.A, IN.B, IN.C, receiver))
-            InterlockedOr(Links[node], NODE_SHADOWED);
+        ReceiverNode visited = Nodes[node];
+        link = visited.Link & ~NODE_SHADOWED;
+        if ((visited.Link & NODE_SHADOWED) == 0 && Occludes(IN.A, IN.B, IN.C, visited.Light))
+            InterlockedOr(Nodes[node].Link, NODE_SHADOWED);
     }
     return 0;
 }
@@ -334,13 +340,17 @@ float4 ShadePS(ShadePixel IN) : SV_Target
     uint node = pixel.y * width + pixel.x;
     if (pixel.x >= width || pixel.y >= height || node >= RECEIVER_CAPACITY)
         return MissingNodeColor;
-    float shadow = (Links[node] & NODE_SHADOWED) != 0 ? 0.0 : 1.0;
+    float shadow = (Nodes[node].Link & NODE_SHADOWED) != 0 ? 0.0 : 1.0;
     return ShadedOrVisibility(IN.WNormal, IN.WView, IN.LightVec, shadow);
 }
 
 // [SECTION] States
 RasterizerState CullBack { CullMode = Back; };
 RasterizerState NoCull { CullMode = None; };
+// A closed mesh's triangles that face away from the light shadow nothing its light-facing ones do not:
+// a ray from a receiver to the light that enters the mesh leaves it through a light-facing triangle.
+// Open meshes (a ground plane, a one-sided wall) are drawn whole (CullClosedOnly).
+RasterizerState CullLightBack { CullMode = Back; };
 DepthStencilState DepthTest { DepthEnable = true; DepthWriteMask = ALL; DepthFunc = LESS_EQUAL; };
 DepthStencilState NoDepth { DepthEnable = false; DepthWriteMask = ZERO; };
 BlendState NoColour { RenderTargetWriteMask[0] = 0; };
@@ -402,6 +412,7 @@ technique11 exact
     }
     pass Occlude
     <
+        bool CullClosedOnly = true;
         float FilterReachTexels = 1;
         string Script = "RenderColorTarget0=LightTarget;"
                         "RenderDepthStencilTarget=LightDepth;"
@@ -412,7 +423,7 @@ technique11 exact
         SetVertexShader(CompileShader(vs_5_0, CasterVS()));
         SetGeometryShader(CompileShader(gs_5_0, ConservativeGS()));
         SetPixelShader(CompileShader(ps_5_0, OccludePS()));
-        SetRasterizerState(NoCull);
+        SetRasterizerState(CullLightBack);
         SetDepthStencilState(NoDepth, 0);
         SetBlendState(NoColour, float4(0, 0, 0, 0), 0xFFFFFFFF);
     }

@@ -90,5 +90,54 @@ TEST(ExactShadows, ThinCastersAtAGrazingSunAreExactWhereAShadowMapBreaksThem) {
     EXPECT_GT(static_cast<double>(exact.found), 0.99 * static_cast<double>(shadowed));
 }
 
+// A roof that is an open plane turned upside down (its back toward the sun) and a closed box, above a
+// ground under a high sun. izb.fx culls the triangles of closed meshes that face away from the light in
+// its Occlude pass (the light-facing ones cast the same shadow) and draws open meshes whole: a roof culled
+// as the box is would cast nothing, and its shadow is most of the truly shadowed ground.
+runtime::Scene anUpsideDownRoofAndABox() {
+    runtime::Scene scene;
+    scene.name = "upside-down-roof-and-box";
+    runtime::SceneObject ground;
+    ground.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(30.0f, 30.0f));
+    ground.id = 1;
+    scene.objects.push_back(ground);
+    runtime::SceneObject roof;
+    roof.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(4.0f, 4.0f));
+    roof.world = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(-2.5f, 2.0f, 8.0f)),
+                             glm::radians(180.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    roof.id = 2;
+    scene.objects.push_back(roof);
+    runtime::SceneObject box;
+    box.mesh = std::make_shared<runtime::Mesh>(runtime::makeBox(glm::vec3(1.0f, 2.0f, 1.0f)));
+    box.world = glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 1.0f, 8.0f));
+    box.id = 3;
+    scene.objects.push_back(box);
+    scene.camera.position = {0.0f, 6.0f, -2.0f};
+    scene.camera.target = {0.0f, 0.0f, 8.0f};
+    scene.camera.nearPlane = 0.1f;
+    scene.camera.farPlane = 100.0f;
+    runtime::Light sun;
+    sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.3f));
+    scene.lights.push_back(sun);
+    return scene;
+}
+
+TEST(ExactShadows, AnOpenCasterShadowsWhicheverSideFacesTheLightWhereClosedOnesAreCulled) {
+    const runtime::Scene scene = anUpsideDownRoofAndABox();
+    ASSERT_FALSE(scene.objects[1].mesh->closed);
+    ASSERT_TRUE(scene.objects[2].mesh->closed);
+    const SceneTruth t = computeSceneTruth(scene, kWidth, kHeight);
+    size_t shadowed = 0;
+    for (size_t i = 0; i < t.receivers.size(); ++i)
+        shadowed += t.receivers[i] && t.truth.visibility[i] < runtime::kShadowedBelow;
+    ASSERT_GT(shadowed, 2000u);
+
+    const Score exact = score("effects/izb.fx", "exact", t);
+    RecordProperty("izb_misclassified_percent", std::to_string(exact.misclassifiedPercent));
+    RecordProperty("izb_shadowed_found", std::to_string(exact.found) + " of " + std::to_string(shadowed));
+    EXPECT_LT(exact.misclassifiedPercent, 0.05);
+    EXPECT_GT(static_cast<double>(exact.found), 0.99 * static_cast<double>(shadowed));
+}
+
 }  // namespace
 }  // namespace shadowfx::test
