@@ -164,6 +164,40 @@ technique t < string Script = "Pass=Depth; Pass=Scene;"; > {
     }
 }
 
+// A colour target smaller than the depth target: D3D9 draws into the colour target's viewport, the corner
+// of the depth target it covers, and so must the depth-only draw that leaves the colour target out. The
+// scene pass shows the depth target through a comparison: the boxes' depth where the map pass drew them.
+TEST(DepthOnlyPasses, DrawIntoTheSmallerColourTargetsViewport) {
+    const char* source = R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {32, 32}; string Format = "A8R8G8B8"; >;
+texture MapDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 64}; string Format = "D24S8"; >;
+sampler DepthSampler = sampler_state { Texture = <MapDepth>; MinFilter = Point; MagFilter = Point; };
+float4 VS(float4 p : POSITION) : POSITION { return mul(float4(p.xyz, 1), WorldViewProjection); }
+struct QuadVertex { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+struct QuadOut { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+QuadOut QuadVS(QuadVertex IN) { QuadOut OUT; OUT.Position = IN.Position; OUT.UV = IN.UV; return OUT; }
+float4 White() : COLOR { return 1; }
+float4 Show(QuadOut i) : COLOR { return tex2Dproj(DepthSampler, float4(i.UV, 0.999, 1)).x; }
+technique t < string Script = "Pass=Depth; Pass=Scene;"; > {
+    pass Depth < string Script = "RenderColorTarget0=Map; RenderDepthStencilTarget=MapDepth; Clear=Depth; Draw=Geometry;"; >
+    { ColorWriteEnable = 0; ZEnable = true; ZWriteEnable = true;
+      VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 White(); }
+    pass Scene < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=; Clear=Color; Draw=Buffer;"; >
+    { ZEnable = false; VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 Show(); }
+}
+)";
+    std::unique_ptr<runtime::EffectRenderer> first = loadEffect(source, false, "corner.fx");
+    std::unique_ptr<runtime::EffectRenderer> second = loadEffect(source, false, "corner.fx");
+    ASSERT_TRUE(first && second);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    const Frame masked = renderWith(*first, scene, "t", false, false);
+    const Frame depthOnly = renderWith(*second, scene, "t", true, false);
+    EXPECT_TRUE(hasLightAndShadow(masked.image));
+    ASSERT_EQ(masked.image.rgba.size(), depthOnly.image.rgba.size());
+    EXPECT_TRUE(masked.image.rgba == depthOnly.image.rgba) << "the depth-only draw filled another viewport";
+}
+
 // A depth clear may take the stencil bits with it (one whole-texel clear instead of a masked one) only when
 // no pass tests stencil. Here one does: the first pass marks the boxes' pixels in stencil, the second
 // clears depth alone and draws white where the mark is. Were the mark cleared with the depth, the frame

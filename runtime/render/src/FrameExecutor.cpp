@@ -190,6 +190,9 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
         binding.viewport = tile;
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
+    } else if (vertexOnly) {
+        // The colour targets' viewport, as D3D9 sets it: a larger depth target alone would set its own.
+        binding.viewport = glm::ivec4(0, 0, mTargets.width(), mTargets.height());
     }
     const PassUse& use = mUses[passIndex];
     BatchedPass* batched = buffer || streams ? nullptr : batchedPass(pass, passIndex, use);
