@@ -110,7 +110,9 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
                                      ? PlannedOp::Kind::ClearDepth
                                      : PlannedOp::Kind::ClearStencil;
     if (leftOut(nextOp(kind, mCurrentPass))) return;
-    if (!bindTargets(what != fx::ScriptCommand::ClearWhat::Color)) return;
+    const bool colour = what == fx::ScriptCommand::ClearWhat::Color;
+    const bool depthAlone = !colour && clearsDepthAlone();
+    if (!bindTargets(!colour, depthAlone)) return;
     const bool tileOnly = mPort.cascade >= 0;  // D3D clears the viewport: a cascade port its tile
     if (tileOnly) {
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
@@ -147,6 +149,7 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
     ++mStats.clears;
     if (PassStats* record = currentPass()) {
         ++record->clears;
+        record->depthOnlyClears += depthAlone;
         record->texelsWritten += texels;
     }
 }
@@ -187,6 +190,9 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         const glm::ivec4 tile = portTile(mBinder, mScene, mPort, mTargets.width(), mTargets.height());
         binding.viewport = tile;
         mPort.viewportSize = glm::vec2(tile.z, tile.w);
+    } else if (vertexOnly) {
+        // The colour targets' viewport, as D3D9 sets it: a larger depth target alone would set its own.
+        binding.viewport = glm::ivec4(0, 0, mTargets.width(), mTargets.height());
     }
     const PassUse& use = mUses[passIndex];
     BatchedPass* batched = buffer || streams ? nullptr : batchedPass(pass, passIndex, use);
@@ -441,9 +447,14 @@ bool FrameExecutor::drawTargets(bool usesDepth, const fx::CompiledPass* pass, Re
     return true;
 }
 
-bool FrameExecutor::bindTargets(bool usesDepth) {
+bool FrameExecutor::bindTargets(bool usesDepth, bool depthAlone) {
     RenderTargets targets;
     if (!drawTargets(usesDepth, nullptr, targets)) return false;
+    if (depthAlone && targets.depth.texture) {
+        const RenderTargetAttachment depth = targets.depth;
+        targets = RenderTargets{};
+        targets.depth = depth;
+    }
     FramebufferFault fault;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     if (!bindPassTargets(mResources, targets, fault)) {
@@ -490,6 +501,34 @@ GpuProgram* FrameExecutor::depthOnly(const fx::CompiledPass& pass, size_t passIn
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
     // An optimization, not the effect's program: null where it did not link, and the full pass is drawn.
     return mResources.programs->depthOnlyProgram(mTechnique, passIndex, pass);
+}
+
+// A depth-only draw binds another framebuffer than its pass's depth clear did, and llvmpipe ends its binned
+// scene at every change of framebuffer: the clear ran as a scene of its own over the whole target, then the
+// draw's scene went over the same tiles again (on the teapot with a 2048² map, about a fifth of the frame's
+// CPU time). A depth or stencil clear binds the draw's framebuffer instead, where every colour target is at
+// least the depth target's size: GL clears where all attachments overlap, which is then the depth target
+// either way. The draw is found in the plan (the pass's next draw, with the states the dry run evaluated);
+// where the script rebinds targets in between, the clear is the same, only not the draw's framebuffer.
+bool FrameExecutor::clearsDepthAlone() {
+    if (!mOptions.depthOnlyPasses || !mPlanFollowed || !mTargets.depth.texture) return false;
+    const glm::ivec2 depthSize = depthTargetSize();
+    for (const RenderTargetAttachment& color : mTargets.colors)
+        if (color.texture && (std::max(1, color.texture->width() >> color.level) < depthSize.x ||
+                              std::max(1, color.texture->height() >> color.level) < depthSize.y))
+            return false;
+    const fx::CompiledTechnique& technique = mResources.effect().techniques[mTechnique];
+    for (size_t i = mNextOp; i < mPlan.ops.size() && mPlan.ops[i].pass == mCurrentPass; ++i) {
+        const PlannedOp& op = mPlan.ops[i];
+        if (!op.isDraw()) continue;
+        if (op.leftOut != LeftOut::No && mOptions.leaveOut) return false;
+        const fx::CompiledPass& pass = technique.passes[mCurrentPass];
+        if (pass.streamOut || pass.drawAuto >= 0) return false;
+        const GpuProgram* program = mResources.programs->program(mTechnique, mCurrentPass);
+        if (!program || !program->hasShaders() || program->isCompute()) return false;
+        return depthOnly(pass, mCurrentPass, op.states) != nullptr;
+    }
+    return false;
 }
 
 // Evaluates the pass's compile arguments into mArguments: with leave-out, the per-pass ones once per

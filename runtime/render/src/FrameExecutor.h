@@ -71,8 +71,12 @@ private:
     // than the colour targets and the operation does not use it (`usesDepth`), with a warning for `pass`
     // when it does. False once the frame failed.
     bool drawTargets(bool usesDepth, const fx::CompiledPass* pass, RenderTargets& targets);
-    // Binds drawTargets() for a clear, or for the host scene a script draws (ScriptExternal=color).
-    bool bindTargets(bool usesDepth);
+    // Binds drawTargets() for a clear, or for the host scene a script draws (ScriptExternal=color);
+    // `depthAlone`: the depth-stencil target without the colour targets.
+    bool bindTargets(bool usesDepth, bool depthAlone = false);
+    // Whether a depth or stencil clear now may bind the depth-stencil target alone: the pass's draw after
+    // it will (depthOnly), and the clear covers the same texels either way.
+    bool clearsDepthAlone();
     glm::ivec2 depthTargetSize() const;  // at its mip level; 0x0 without one
     bool depthTargetIsSmaller() const;
     // The pass's render states for this draw: those the plan evaluated (`op`), or, once the frame left the

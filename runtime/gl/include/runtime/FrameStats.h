@@ -21,6 +21,7 @@ struct PassStats {
     int culled = 0;          // objects a Draw=Geometry left out
     uint64_t triangles = 0;
     int clears = 0;
+    int depthOnlyClears = 0;     // of `clears`, bound as the pass's depth-only draws are (depthOnlyPasses)
     uint64_t texelsWritten = 0;  // cleared texels + fragments drawn (the latter with countTexels)
 };
 
