@@ -258,7 +258,7 @@ void Parser::parseDeclaration(bool inBuffer) {
         if (check("<")) parameter.annotations = parseAnnotations();
         endsInBlock = check("{");
         if (parameter.type.isSampler() && check("{")) {
-            parameter.samplerState = parseSamplerStateBlock();  // D3D10: SamplerState s { ... };
+            parameter.samplerState = parseSamplerStateBlock(parameter);  // D3D10: SamplerState s { ... };
         } else if (parameter.type.isStateObject()) {
             const StateObjectKind kind = StateAssignments::objectKind(parameter.type.base);
             if (parameter.type.arrayDims.size() > 1) fail(DiagId::StateObjectArray, parameter.loc, {});
@@ -273,7 +273,7 @@ void Parser::parseDeclaration(bool inBuffer) {
         } else if (accept("=")) {
             if (check("sampler_state")) {
                 advance();
-                parameter.samplerState = parseSamplerStateBlock();
+                parameter.samplerState = parseSamplerStateBlock(parameter);
             } else {
                 parameter.initializer = parseExpr();
                 mStates.normalizeCompileShader(*parameter.initializer);

@@ -263,7 +263,7 @@ std::vector<std::vector<StateAssignment>> Parser::parseObjectStateArray(StateObj
     return elements;
 }
 
-std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
+std::vector<StateAssignment> Parser::parseSamplerStateBlock(const Parameter& sampler) {
     if (!check("{")) unexpected("'{'");
     // `sampler S = sampler_state { ... }` is D3DX's form; `sampler S : register(s0) { ... }` MonoGame's.
     const bool monoGameForm = mPos == 0 || !mTokens[mPos - 1].is("sampler_state");
@@ -306,8 +306,11 @@ std::vector<StateAssignment> Parser::parseSamplerStateBlock() {
             if (!mEffect.findParameter(v.text)) {
                 // MonoGame's macros for Direct3D 9 and OpenGL declare a sampler whose Texture names a
                 // texture nothing declares: its effect compiler named the sampler's texture parameter
-                // after the identifier, and said nothing. So does this one; fxc, reading D3DX's form,
-                // refused the name.
+                // after the identifier, and said nothing. So does this one, with a warning at the
+                // sampler (a misspelt texture name reads the same); fxc, reading D3DX's form, refused
+                // the name.
+                if (!mSpeculative)
+                    mDiag.report(DiagId::SamplerTextureUndeclared, sampler.loc, {sampler.name, v.text});
                 Parameter texture;
                 texture.name = v.text;
                 texture.type.base = BaseType::Texture;

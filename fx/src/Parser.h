@@ -182,7 +182,8 @@ private:
     std::vector<std::vector<StateAssignment>> parseObjectStateArray(StateObjectKind kind,
                                                                     const Parameter& parameter);
 
-    std::vector<StateAssignment> parseSamplerStateBlock();
+    // `sampler`: the declaration the block belongs to (named in a warning).
+    std::vector<StateAssignment> parseSamplerStateBlock(const Parameter& sampler);
 
     // [SECTION] Expressions
 

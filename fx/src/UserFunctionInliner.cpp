@@ -8,6 +8,7 @@
 // as the initializer list it already reads.
 #include "UserFunctionInliner.h"
 
+#include "ComponentWrites.h"
 #include "ComposedIntrinsics.h"
 #include "ConstantFolding.h"
 
@@ -16,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <set>
 #include <utility>
@@ -295,7 +295,12 @@ private:
         if (part.kind == Expr::Kind::Member) {
             if (!parts) {
                 if (at + 1 != path.size()) return std::nullopt;
-                return assignComponents(type, part.text, std::move(old), value, loc);
+                if (type.shape == Shape::Matrix) {
+                    std::optional<Expr> written = writeMatrixElements(type, part.text, old, value, loc);
+                    if (written) written = counted(std::move(*written));
+                    return written;
+                }
+                return writeComponents(type, part.text, std::move(old), value, loc);
             }
             if (!isAggregate(old) || !type.arrayDims.empty()) return std::nullopt;
             for (size_t i = 0; i < parts->size(); ++i) {
@@ -329,29 +334,18 @@ private:
         }
         if (type.shape == Shape::Vector && known && written < static_cast<size_t>(type.cols) &&
             at + 1 == path.size())
-            return assignComponents(type, std::string(1, "xyzw"[written]), std::move(old), value, loc);
+            return writeComponents(type, std::string(1, "xyzw"[written]), std::move(old), value, loc);
         if (type.shape != Shape::Matrix || (known && written >= static_cast<size_t>(type.rows)))
             return std::nullopt;
-        // A matrix's row: the matrix is rebuilt from its rows (those of the constructor that built it last,
-        // so that writing every row in turn copies none of them again).
-        TypeDesc row = type;
-        row.shape = Shape::Vector;
-        row.rows = 1;
-        const bool ofRows = old.kind == Expr::Kind::Call && old.text == type.hlslName() &&
-                            old.args.size() == static_cast<size_t>(type.rows);
-        std::vector<Expr> rows;
-        for (size_t r = 0; r < static_cast<size_t>(type.rows); ++r) {
-            Expr current =
-                ofRows ? old.args[r] : exprNode(Expr::Kind::Index, loc, "", {old, integer(r, loc)});
-            if (known && r != written) {
-                rows.push_back(std::move(current));
-                continue;
-            }
-            std::optional<Expr> changed = assignAt(current, row, path, at + 1, value, scope, depth, loc);
+        // A matrix's row.
+        const TypeDesc row = matrixRowType(type);
+        std::vector<Expr> rows = matrixRows(type, old, loc);
+        for (size_t r = 0; r < rows.size(); ++r) {
+            if (known && r != written) continue;
+            std::optional<Expr> changed = assignAt(rows[r], row, path, at + 1, value, scope, depth, loc);
             if (!changed) return std::nullopt;
-            rows.push_back(known
-                               ? std::move(*changed)
-                               : choose(equals(index, r, loc), std::move(*changed), std::move(current), loc));
+            rows[r] = known ? std::move(*changed)
+                            : choose(equals(index, r, loc), std::move(*changed), std::move(rows[r]), loc);
         }
         return counted(exprNode(Expr::Kind::Call, loc, type.hlslName(), std::move(rows)));
     }
@@ -421,9 +415,6 @@ private:
         Exit broken, continued;
     };
 
-    // Marks the per-component selects assignComponents builds: (mask, new components, old value).
-    static constexpr const char* kComponentSelect = "components";
-
     static bool same(const Expr& a, const Expr& b) {
         if (a.kind != b.kind || a.text != b.text || a.number != b.number || a.isInteger != b.isInteger ||
             a.args.size() != b.args.size() ||
@@ -484,53 +475,6 @@ private:
             exit.taken = locals.path ? either(exit.taken, locals.path, loc) : truth(true, loc);
         }
         locals.dead = true;
-    }
-
-    // `local.member = value` (`dir.x = ...`, `c.rgb += ...`): the local becomes a per-component select
-    // between the value, widened to the local's type, and its old value.
-    std::optional<Expr> assignComponents(const TypeDesc& type, const std::string& member, Expr old,
-                                         Expr value, const SourceLoc& loc) {
-        if (!type.arrayDims.empty() || (type.shape != Shape::Vector && type.shape != Shape::Scalar))
-            return std::nullopt;
-        const int columns = type.shape == Shape::Scalar ? 1 : type.cols;
-        std::vector<int> written;
-        for (char c : member) {
-            const char* at = std::strchr("xyzw", c);
-            const char* colour = std::strchr("rgba", c);
-            const int index = c == '\0' ? -1
-                              : at      ? static_cast<int>(at - "xyzw")
-                              : colour  ? static_cast<int>(colour - "rgba")
-                                        : -1;
-            if (index < 0 || index >= columns) return std::nullopt;
-            written.push_back(index);
-        }
-        TypeDesc component = type;
-        component.shape = Shape::Scalar;
-        component.cols = 1;
-        std::vector<Expr> spread, mask;
-        for (int i = 0; i < columns; ++i) {
-            const auto k = std::find(written.begin(), written.end(), i);
-            Expr flag;
-            flag.kind = Expr::Kind::Bool;
-            flag.loc = loc;
-            flag.number = k != written.end() ? 1.0 : 0.0;
-            mask.push_back(std::move(flag));
-            Expr zero;
-            zero.kind = Expr::Kind::Number;
-            zero.loc = loc;
-            spread.push_back(k == written.end() ? std::move(zero)
-                             : written.size() == 1
-                                 ? cast(component, value, loc)
-                                 : exprNode(Expr::Kind::Member, loc,
-                                            std::string(1, "xyzw"[k - written.begin()]), {value}));
-        }
-        if (columns == 1) return cast(type, std::move(value), loc);
-        TypeDesc boolean = type;
-        boolean.base = BaseType::Bool;
-        return exprNode(
-            Expr::Kind::Ternary, loc, kComponentSelect,
-            {exprNode(Expr::Kind::Call, loc, boolean.hlslName(), std::move(mask)),
-             exprNode(Expr::Kind::Call, loc, type.hlslName(), std::move(spread)), std::move(old)});
     }
 
     // `name` after `if (condition) then else otherwise`: `condition ? then : otherwise`. When one branch

@@ -448,6 +448,59 @@ TEST(D3d9HostEvaluation, OutAndInoutParametersFollowTheirInput) {
     expectTeapotColour(*renderer, "Level", "1.0", {191, 77, 153});
 }
 
+// Writes to a matrix's members, as D3DX's preshaders ran them: one-based (`._11`) and zero-based
+// (`._m01`) elements, several at once (`._22_44 = float2(...)`, `._m30_m32 = ...`), an element by row and
+// column (`m[1][2]`), a row (`m[2] = float4(...)`) and a row's component; a compile argument multiplies a
+// vector by the matrix. The colour must be the product computed here from the same writes.
+constexpr const char* kMatrixMemberWrites = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float Level = 0.3;
+float4x4 build(float k) {
+    float4x4 m = (float4x4)0;
+    m._11 = k;
+    m._m01 = 0.5 * k;
+    m[1][2] = 1 - k;
+    m[2] = float4(0.1, k, 0.2, 0);
+    m._22_44 = float2(0.25, 1);
+    m._m30_m32 = m._m30_m32 + float2(k, 0.05);
+    m[3].y = 0.5 * m._11;
+    return m;
+}
+static float4x4 Built = build(Level);
+float4 VS(float3 Position : POSITION) : POSITION { return mul(float4(Position, 1), WorldViewProj); }
+float4 PS(uniform float3 Colour) : COLOR { return float4(Colour, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS();
+    PixelShader = compile ps_3_0 PS(mul(float4(0.5, 0.4, 0.3, 0.2), Built).xyz); } }
+)";
+
+// The colour kMatrixMemberWrites draws for Level `k`: its matrix built element by element (m[row][column])
+// and the row vector (0.5, 0.4, 0.3, 0.2) times it, in 0-255.
+std::array<int, 3> matrixMemberWritesColour(float k) {
+    float m[4][4] = {};
+    m[0][0] = k;
+    m[0][1] = 0.5f * k;
+    m[1][2] = 1 - k;
+    m[2][0] = 0.1f, m[2][1] = k, m[2][2] = 0.2f, m[2][3] = 0;
+    m[1][1] = 0.25f, m[3][3] = 1;
+    m[3][0] += k, m[3][2] += 0.05f;
+    m[3][1] = 0.5f * m[0][0];
+    const float v[4] = {0.5f, 0.4f, 0.3f, 0.2f};
+    std::array<int, 3> colour{};
+    for (int c = 0; c < 3; ++c) {
+        float sum = 0;
+        for (int r = 0; r < 4; ++r) sum += v[r] * m[r][c];
+        colour[static_cast<size_t>(c)] = static_cast<int>(std::lround(sum * 255));
+    }
+    return colour;
+}
+
+TEST(D3d9HostEvaluation, MatrixMemberWritesFollowTheirInput) {
+    auto renderer = loadEffect(kMatrixMemberWrites, false, "matrix_member_writes.fx");
+    ASSERT_TRUE(renderer);
+    expectTeapotColour(*renderer, nullptr, "", matrixMemberWritesColour(0.3f));
+    expectTeapotColour(*renderer, "Level", "0.8", matrixMemberWritesColour(0.8f));
+}
+
 // Local arrays: elements written in a loop, a flat initializer list of vectors, a read and a write at an
 // index known only from the tweakable, and a component of an element written.
 constexpr const char* kLocalArrays = R"(

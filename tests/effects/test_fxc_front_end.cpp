@@ -80,6 +80,18 @@ TEST(FxcFrontEnd, MonoGameSamplerNamesItsTexture) {
     LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/monogame_gl_style.fx");
     ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
     EXPECT_FALSE(loaded.diagnostics.hasErrors()) << loaded.diagnostics.str();
+    // Declared, and said so at the sampler (the line whose macro declares it).
+    ASSERT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::SamplerTextureUndeclared), 1)
+        << loaded.diagnostics.str();
+    for (const fx::Diagnostic& d : loaded.diagnostics.items()) {
+        if (d.id != fx::DiagId::SamplerTextureUndeclared) continue;
+        EXPECT_EQ(d.severity, fx::Severity::Warning);
+        EXPECT_EQ(d.loc.line, 14);
+        EXPECT_EQ(
+            d.message,
+            "sampler 'diffuseTextureSampler' names texture 'diffuseTexture', which the effect does not "
+            "declare: it is declared as a texture parameter, as MonoGame's effect compiler declared it");
+    }
     const fx::ParameterInfo* texture = loaded.renderer->effect().findParameter("diffuseTexture");
     ASSERT_TRUE(texture);
     EXPECT_TRUE(texture->type.isTexture());

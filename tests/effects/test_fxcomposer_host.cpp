@@ -210,6 +210,55 @@ technique t { pass p { VertexShader = compile vs_1_1 VS(); PixelShader = null; }
     EXPECT_GT(red, kWidth * kHeight / 20);
 }
 
+// FXCOMPOSER_RESETPULSE is true in the first frame after the effect is created and after reset(), false
+// in the others: a script's LoopByCount reads it before the frame's first pass (the red clear runs only
+// then) and a shader reads it as a uniform (the left half green in a reset frame, blue in the others).
+TEST(FxComposerHost, ResetPulseIsTrueInTheFirstFrameAndAfterReset) {
+    auto renderer = loadEffect(R"(bool bReset : FXCOMPOSER_RESETPULSE;
+float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "standard";
+    string ScriptOutput = "color"; string Script = "Technique=Main;"; > = 0.8;
+struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
+Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
+float4 ClearPS(Q i) : COLOR { return float4(1, 0, 0, 1); }
+float4 MarkPS(Q i) : COLOR {
+    clip(0.5 - i.UV.x);
+    return bReset ? float4(0, 1, 0, 1) : float4(0, 0, 1, 1);
+}
+technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
+    "LoopByCount=bReset; Pass=clear; LoopEnd=; Pass=mark;"; > {
+    pass clear < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 ClearPS(); ZEnable = false; }
+    pass mark < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 MarkPS(); ZEnable = false; }
+}
+)",
+                               false);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    const auto expectFrame = [&](bool resetFrame) {
+        ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
+        const runtime::FrameImage frame = renderer->readFrame();
+        const uint8_t* left = frame.pixel(kWidth / 4, kHeight / 2);
+        const uint8_t* right = frame.pixel(3 * kWidth / 4, kHeight / 2);
+        EXPECT_EQ(left[0], 0);
+        EXPECT_EQ(left[1], resetFrame ? 255 : 0);
+        EXPECT_EQ(left[2], resetFrame ? 0 : 255);
+        if (resetFrame) {
+            EXPECT_EQ(right[0], 255);
+            EXPECT_EQ(right[1], 0);
+            EXPECT_EQ(right[2], 0);
+        } else {
+            EXPECT_TRUE(isBackground(right));
+        }
+    };
+    expectFrame(true);
+    expectFrame(false);
+    expectFrame(false);
+    renderer->reset();
+    expectFrame(true);
+    expectFrame(false);
+}
+
 // Every effect written in FX Composer's or the DirectX SDK's style (tests/data/fxcomposer/, the encoded
 // copies included) compiles without errors and draws a frame that is not blank with every technique.
 TEST(FxComposerHost, EveryFxComposerStyleEffectDrawsANonBlankFrameWithEveryTechnique) {

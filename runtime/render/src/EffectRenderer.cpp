@@ -83,6 +83,10 @@ void EffectRenderer::setParameter(size_t index, const fx::Value& value) {
     mImpl->pool.published(*mImpl, index);
 }
 
+void EffectRenderer::reset() {
+    mImpl->resetPending = true;
+}
+
 bool EffectRenderer::isPinned(size_t index) const {
     return mImpl->values.isPinned(index);
 }
@@ -220,6 +224,12 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         return ran && clean;
     }
 
+    // The frame's own values, before a Technique= selector or the script (and its dry run) reads them.
+    mImpl->binder->setResetPulse(mImpl->resetPending);
+    mImpl->resetPending = false;
+    mImpl->values.bindSemantics(*mImpl->binder, RenderPortView{}, nullptr, options.time,
+                                SemanticBinder::Scope::PerFrame, nullptr);
+
     // The technique, chosen by name once for each FrameOptions::technique (every frame where a Technique=
     // selector reads a parameter).
     EffectResources::TechniqueChoice& choice = mImpl->techniqueChoice;
@@ -233,6 +243,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     }
     const size_t techniqueIndex = choice.technique;
     const fx::CompiledTechnique* technique = &mImpl->effect().techniques[techniqueIndex];
+    SemanticBinder& binder = *mImpl->binder;
 
     // KHR_debug messages (debug contexts) and GL errors found while the frame runs go to the caller's sink.
     setDebugSink([&diagnostics](std::string message) {
@@ -253,7 +264,6 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     if (rebased) mImpl->sceneCache.update(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
-    SemanticBinder& binder = *mImpl->binder;
     std::optional<VisibleSamples> visible;
     if (binder.wantsVisibleSamples(mImpl->values.all()))
         visible = mImpl->visibleSamplePass.run(

@@ -121,6 +121,9 @@ public:
     std::vector<std::optional<GlStateMask>> techniqueStateMasks;
 
     // [SECTION] Between frames
+    // The next frame is a reset frame (FXCOMPOSER_RESETPULSE reads true in it): the first one after the
+    // effect is created, and the first after EffectRenderer::reset().
+    bool resetPending = true;
     // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.
     SceneCache sceneCache;
     // The culling volumes' visible lists, kept while the scene and the volume stand still.

@@ -104,8 +104,13 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         binding.lightSlot = standard.light;
         mBindings.push_back(binding);
     }
-    for (size_t b = 0; b < mBindings.size(); ++b)
-        (dependsOnObject(mBindings[b].kind) ? mObjectBindings : mPortBindings).push_back(b);
+    for (size_t b = 0; b < mBindings.size(); ++b) {
+        if (mBindings[b].kind == Kind::ResetPulse) {
+            mFrameBindings.push_back(b);
+        } else {
+            (dependsOnObject(mBindings[b].kind) ? mObjectBindings : mPortBindings).push_back(b);
+        }
+    }
 }
 
 int SemanticBinder::lightSlot(std::string_view lightName) {
@@ -378,7 +383,10 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
         return;
     }
     // A draw binds the few per-object bindings without walking past the others.
-    for (size_t b : scope == Scope::PerObject ? mObjectBindings : mPortBindings) bindOne(mBindings[b]);
+    const std::vector<size_t>& bindings = scope == Scope::PerObject  ? mObjectBindings
+                                          : scope == Scope::PerFrame ? mFrameBindings
+                                                                     : mPortBindings;
+    for (size_t b : bindings) bindOne(mBindings[b]);
 }
 
 void SemanticBinder::write(const Binding& binding, const RenderPortView& port, const SceneObject* object,
@@ -426,6 +434,9 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             return;
         case Kind::Time:
             storeVector(value, glm::vec4(time));
+            return;
+        case Kind::ResetPulse:
+            storeVector(value, glm::vec4(mResetPulse ? 1.0f : 0.0f));
             return;
         case Kind::CameraPosition: {
             const glm::mat4 viewInverse = glm::inverse(view);

@@ -4,20 +4,20 @@
 // suffixes Inverse, Transpose and InverseTranspose (case-insensitive, as in D3DX/SAS). A parameter
 // annotated `string frustum = "light0";` (or `string Object = "light0";`) sees that light's view and
 // projection instead of the current render port's. Other semantics: ViewportPixelSize, Time,
-// CameraPosition, ObjectId; light properties Position/LightPosition, Direction/LightDirection and
-// LightColor, LightAreaRadius/LightSize (the light's areaRadius in world units, for soft-shadow filters)
-// (light named by an Object/frustum annotation, default light0); Diffuse/MaterialDiffuse (the
-// object's colour; with an Object annotation, the light's colour) and Ambient (the scene's ambient light).
-// A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" | "TSM";`
-// (runtime/LightParameterization.h): that light's matrices, for every parameter and for RenderPort=lightN,
-// are then the provider's fit, with tunables from the parameters with semantics LiSPSMNScale,
-// LiSPSMNOpt (a string), LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking, TSMFocus, PSMSlideBack,
-// PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda, CascadeBlend and LightFitVisibleSamples (a bool: fit
-// to the samples the camera sees, runtime/VisibleSamples.h). A `Cascaded` light's sub-views
-// (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each cascade's view x
-// projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]: u0, v0, du, dv
-// of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each cascade
-// ends; components past the last cascade repeat its value). A `PSMCube` light's six faces
+// CameraPosition, ObjectId, FXCOMPOSER_RESETPULSE (true in a reset frame); light properties
+// Position/LightPosition, Direction/LightDirection and LightColor, LightAreaRadius/LightSize (the light's
+// areaRadius in world units, for soft-shadow filters) (light named by an Object/frustum annotation, default
+// light0); Diffuse/MaterialDiffuse (the object's colour; with an Object annotation, the light's colour) and
+// Ambient (the scene's ambient light). A light matrix may also carry `string Parameterization = "Uniform" |
+// "Focused" | "LiSPSM" | "TSM";` (runtime/LightParameterization.h): that light's matrices, for every
+// parameter and for RenderPort=lightN, are then the provider's fit, with tunables from the parameters with
+// semantics LiSPSMNScale, LiSPSMNOpt (a string), LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking,
+// TSMFocus, PSMSlideBack, PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda, CascadeBlend and
+// LightFitVisibleSamples (a bool: fit to the samples the camera sees, runtime/VisibleSamples.h). A `Cascaded`
+// light's sub-views (runtime/CascadedShadowMaps.h) bind to arrays: CascadeViewProjection (float4x4[K], each
+// cascade's view x projection, what RenderPort=lightN.cascadeK renders with), CascadeAtlasRects (float4[K]:
+// u0, v0, du, dv of its atlas tile) and CascadeSplitDepths (floats, e.g. a float4: the view depth where each
+// cascade ends; components past the last cascade repeat its value). A `PSMCube` light's six faces
 // (runtime/PerspectiveShadowCubeMap.h) bind to the same arrays, plus CubeFaceSelect (float4x4: world -> the
 // cube frame whose dominant axis picks a point's face). Scene-driven choices: SceneHasClosedObjects (true
 // if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
@@ -98,9 +98,13 @@ public:
     // samples (VisibleSamplePass) before the lights are fitted.
     bool wantsVisibleSamples(const std::vector<fx::Value>& values) const;
 
-    // Which bindings one bind() call writes: the per-draw loop binds the port's values once per pass
-    // (PerPort) and only what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
-    enum class Scope { All, PerPort, PerObject };
+    // Which bindings one bind() call writes: the frame's once before its script runs (PerFrame: the reset
+    // pulse, which a script's LoopByCount may read), the port's values once per pass (PerPort) and only
+    // what depends on the object per draw (PerObject: World*, ObjectId, Diffuse).
+    enum class Scope { All, PerFrame, PerPort, PerObject };
+
+    // Whether the frame bind() writes for is a reset frame: FXCOMPOSER_RESETPULSE's value.
+    void setResetPulse(bool resetPulse) { mResetPulse = resetPulse; }
 
     // Writes the values of every bound parameter that is not pinned into `values` (one per parameter).
     // `object` may be null (Draw=Buffer), then World is the identity. `used` (one flag per parameter, may
@@ -187,7 +191,9 @@ private:
     bool mHasClosedObjects = false;
     std::vector<Binding> mBindings;
     std::vector<size_t> mObjectBindings;  // indices in mBindings of those that depend on the object
+    std::vector<size_t> mFrameBindings;   // of those whose value is the frame's (ResetPulse)
     std::vector<size_t> mPortBindings;    // and of the others
+    bool mResetPulse = false;
     // The light slots: the names the effect uses, and per frame the scene's light of each (by index into
     // Scene::lights, resolved again only when the names of the scene's lights change).
     std::vector<std::string> mSlotNames;

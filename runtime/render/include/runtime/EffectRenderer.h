@@ -144,6 +144,11 @@ public:
     // then). nullptr goes back to the SAS host.
     bool setHostFile(std::shared_ptr<const fx::HostFile> host, fx::DiagnosticSink& diagnostics);
 
+    // Makes the next render() a reset frame, as FX Composer's Reset made one: parameters with the
+    // FXCOMPOSER_RESETPULSE semantic read true in it and false in the frames after (effects clear what
+    // they accumulate over frames then). The first frame after create() is one too.
+    void reset();
+
     // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
     // GL error occurred.
     bool render(const Scene& scene, const FrameOptions& options, fx::DiagnosticSink& diagnostics,
