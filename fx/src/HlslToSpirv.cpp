@@ -123,6 +123,29 @@ public:
     }
 };
 
+// A swizzle of several matrix elements that glslang's HLSL front end keeps as a matrix swizzle (`m._11_22`,
+// `m._m00_m11`; a single element, or elements of one of its vectors, become ordinary indexing there): its
+// SPIR-V back end only logs "Missing functionality: matrix swizzle" and writes an element index in the
+// swizzle's place, a constant (a known glslang defect), so the shader would run with a wrong value.
+// Such a read is an error at its location, where fxc compiled it, until it is rewritten element by element.
+class MatrixSwizzleFinder : public glslang::TIntermTraverser {
+public:
+    std::vector<HlslMessage> found;
+
+    bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
+        if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
+        const glslang::TSourceLoc& at = node->getLoc();
+        const int elements = node->getType().getVectorSize();
+        found.push_back({true, at.getFilenameStr(), at.line, at.column,
+                         "'.' : a swizzle of " + std::to_string(elements) +
+                             " matrix elements cannot be compiled (glslang would read a constant in its "
+                             "place): spell the elements one by one, e.g. float" +
+                             std::to_string(elements) + "(m._11, m._22" + (elements > 2 ? ", ..." : "") +
+                             ")"});
+        return true;
+    }
+};
+
 }  // namespace
 
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
@@ -157,6 +180,14 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             truncationMessages = std::move(truncations.found);
+            MatrixSwizzleFinder matrixSwizzles;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);
+            if (!matrixSwizzles.found.empty()) {
+                result.messages = parseGlslangLog(result.log);
+                result.messages.insert(result.messages.end(), matrixSwizzles.found.begin(),
+                                       matrixSwizzles.found.end());
+                return result;
+            }
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;

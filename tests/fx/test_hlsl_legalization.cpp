@@ -250,5 +250,39 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_NE(diags.str().find("'float4' to 'float'"), std::string::npos) << diags.str();
 }
 
+// A swizzle of several matrix elements (`M._11_22`) compiles under fxc; glslang's SPIR-V back end writes
+// a constant in its place, so the shader would read a wrong value without a word. It is an error at the
+// swizzle; single elements and rows, which glslang indexes, still compile.
+TEST(HlslLegalization, AMatrixSwizzleGlslangWouldReadAsAConstantIsAnErrorAtIt) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float4x4 M;
+float4 PS() : COLOR {
+    float2 diagonal = M._11_22;
+    return float4(diagonal, M._m01 + M[2].y, 1);
+}
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
+    ASSERT_EQ(diags.errorCount(), 1u) << diags.str();
+    const Diagnostic& error = diags.items().front();
+    EXPECT_EQ(error.id, DiagId::HlslError);
+    EXPECT_EQ(error.loc.file, "legal.fx");
+    EXPECT_EQ(error.loc.line, 3);
+    EXPECT_NE(error.message.find("swizzle of 2 matrix elements"), std::string::npos) << error.message;
+
+    DiagnosticList rowsOnly;
+    auto elementsAndRows = parse(R"(float4x4 M;
+float4 PS() : COLOR { return float4(float2(M._11, M._22), M._m01 + M[2].y, 1); }
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                 rowsOnly);
+    ASSERT_TRUE(elementsAndRows) << rowsOnly.str();
+    EXPECT_TRUE(compilesClean(elementsAndRows));
+}
+
 }  // namespace
 }  // namespace fx
