@@ -126,8 +126,9 @@ public:
 // A swizzle of several matrix elements that glslang's HLSL front end keeps as a matrix swizzle (`m._11_22`,
 // `m._m00_m11`; a single element, or elements of one of its vectors, become ordinary indexing there): its
 // SPIR-V back end only logs "Missing functionality: matrix swizzle" and writes an element index in the
-// swizzle's place, a constant (a known glslang defect), so the shader would run with a wrong value.
-// Such a read is an error at its location, where fxc compiled it, until it is rewritten element by element.
+// swizzle's place, a constant (a known glslang defect). A warning at its location, not an error: the unit
+// holds code whose value no output reads (a function D3DX ran on the host, a static that only a compile
+// argument uses), where the constant changes nothing and fxc's effect still runs.
 class MatrixSwizzleFinder : public glslang::TIntermTraverser {
 public:
     std::vector<HlslMessage> found;
@@ -136,12 +137,12 @@ public:
         if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
         const glslang::TSourceLoc& at = node->getLoc();
         const int elements = node->getType().getVectorSize();
-        found.push_back({true, at.getFilenameStr(), at.line, at.column,
-                         "'.' : a swizzle of " + std::to_string(elements) +
-                             " matrix elements cannot be compiled (glslang would read a constant in its "
-                             "place): spell the elements one by one, e.g. float" +
-                             std::to_string(elements) + "(m._11, m._22" + (elements > 2 ? ", ..." : "") +
-                             ")"});
+        found.push_back(
+            {false, at.getFilenameStr(), at.line, at.column,
+             "'.' : a swizzle of " + std::to_string(elements) +
+                 " matrix elements reads a constant here (glslang compiles it to an element index, "
+                 "not the elements fxc read): spell the elements one by one, e.g. float" +
+                 std::to_string(elements) + "(m._11, m._22" + (elements > 2 ? ", ..." : "") + ")"});
         return true;
     }
 };
@@ -171,7 +172,7 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
     shader.setAutoMapLocations(true);
 
     bool parsed = shader.parse(GetDefaultResources(), 100, false, kMessages);
-    std::vector<HlslMessage> truncationMessages;
+    std::vector<HlslMessage> syntaxTreeWarnings;
     result.log = shader.getInfoLog();
     if (parsed) {
         glslang::TProgram program;
@@ -179,15 +180,11 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
         if (program.link(kMessages) && program.mapIO()) {
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
-            truncationMessages = std::move(truncations.found);
+            syntaxTreeWarnings = std::move(truncations.found);
             MatrixSwizzleFinder matrixSwizzles;
             program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);
-            if (!matrixSwizzles.found.empty()) {
-                result.messages = parseGlslangLog(result.log);
-                result.messages.insert(result.messages.end(), matrixSwizzles.found.begin(),
-                                       matrixSwizzles.found.end());
-                return result;
-            }
+            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixSwizzles.found.begin(),
+                                      matrixSwizzles.found.end());
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;
@@ -208,7 +205,7 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
         }
     }
     result.messages = parseGlslangLog(result.log);
-    result.messages.insert(result.messages.end(), truncationMessages.begin(), truncationMessages.end());
+    result.messages.insert(result.messages.end(), syntaxTreeWarnings.begin(), syntaxTreeWarnings.end());
     if (!result.success && std::none_of(result.messages.begin(), result.messages.end(),
                                         [](const HlslMessage& m) { return m.error; }))
         result.messages.push_back({true, "", 0, 0, "glslang failed: " + result.log});
