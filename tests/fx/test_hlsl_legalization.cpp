@@ -41,6 +41,23 @@ bool contains(const std::string& text, const std::string& part) {
     return ::testing::AssertionSuccess();
 }
 
+// The effect compiles with exactly one diagnostic: a warning `id` at legal.fx's `line` whose message holds
+// `text`. Returns it for the checks a test adds.
+Diagnostic compilesWithOneWarning(const std::shared_ptr<Effect>& effect, DiagId id, int line,
+                                  const std::string& text) {
+    DiagnosticList diags;
+    EXPECT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
+    EXPECT_EQ(diags.items().size(), 1u) << diags.str();
+    if (diags.items().empty()) return {};
+    const Diagnostic& warning = diags.items().front();
+    EXPECT_EQ(warning.id, id) << diags.str();
+    EXPECT_EQ(warning.severity, Severity::Warning);
+    EXPECT_EQ(warning.loc.file, "legal.fx");
+    EXPECT_EQ(warning.loc.line, line);
+    EXPECT_NE(warning.message.find(text), std::string::npos) << warning.message;
+    return warning;
+}
+
 const char* kSkinning = R"(float4 Weights = {0.25, 0.25, 0.5, 0};
 float4x4 Bones[4];
 struct VIn { float4 Pos : POSITION; float4 Indices : BLENDINDICES; float3 Normal : NORMAL; };
@@ -204,15 +221,8 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 )",
                         diags);
     ASSERT_TRUE(effect) << diags.str();
-    ASSERT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
-    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
-    const Diagnostic& warning = diags.items().front();
-    EXPECT_EQ(warning.id, DiagId::ImplicitTruncation);
-    EXPECT_EQ(warning.severity, Severity::Warning);
-    EXPECT_EQ(warning.loc.file, "legal.fx");
-    EXPECT_EQ(warning.loc.line, 3);
+    const Diagnostic warning = compilesWithOneWarning(effect, DiagId::ImplicitTruncation, 3, "X3206");
     EXPECT_EQ(warning.loc.column, 5);  // glslang gives no column: the statement's
-    EXPECT_NE(warning.message.find("X3206"), std::string::npos) << warning.message;
 }
 
 // A vector where a smaller one or a scalar is expected (initialized, passed, returned): glslang keeps the
@@ -266,15 +276,7 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 )",
                         diags);
     ASSERT_TRUE(effect) << diags.str();
-    ASSERT_TRUE(compileEffect(effect, CompileOptions{}, diags)) << diags.str();
-    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
-    const Diagnostic& warning = diags.items().front();
-    EXPECT_EQ(warning.id, DiagId::HlslWarning);
-    EXPECT_EQ(warning.severity, Severity::Warning);
-    EXPECT_EQ(warning.loc.file, "legal.fx");
-    EXPECT_EQ(warning.loc.line, 3);
-    EXPECT_NE(warning.message.find("swizzle of 2 matrix elements reads a constant"), std::string::npos)
-        << warning.message;
+    compilesWithOneWarning(effect, DiagId::HlslWarning, 3, "swizzle of 2 matrix elements reads a constant");
 
     DiagnosticList rowsOnly;
     auto elementsAndRows = parse(R"(float4x4 M;
