@@ -26,6 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // report in a worker (a memory error or a leak, printed above) is a finding of this target.
     return fuzz::compileInput(data, size, options, [](const fx::DiagnosticList& diagnostics) {
         for (const fx::Diagnostic& d : diagnostics.items())
-            if (d.id == fx::DiagId::CompileWorkerSanitizerReport) __builtin_trap();
+            if (d.id == fx::DiagId::CompileWorkerSanitizerReport ||
+                d.id == fx::DiagId::CompileWorkerSanitizerReportWhileIdle)
+                __builtin_trap();
     });
 }

@@ -92,12 +92,11 @@ StageOutcome failure(StageOutcome::Status status, DiagId fault, std::vector<std:
 // workers share with the compiler) or any other exit, on the shader or while idle.
 StageOutcome exitedOutcome(int exitStatus, bool whileIdle) {
     const std::string status = std::to_string(exitStatus);
-    if (exitStatus == kWorkerSanitizerExitStatus) {
-        StageOutcome outcome;
-        outcome.status = StageOutcome::Status::SanitizerReport;
-        outcome.crossError = "exit status " + status + (whileIdle ? " while idle" : "");
-        return outcome;
-    }
+    if (exitStatus == kWorkerSanitizerExitStatus)
+        return failure(
+            StageOutcome::Status::SanitizerReport,
+            whileIdle ? DiagId::CompileWorkerSanitizerReportWhileIdle : DiagId::CompileWorkerSanitizerReport,
+            {status});
     return failure(StageOutcome::Status::Crashed,
                    whileIdle ? DiagId::CompileWorkerExitedWhileIdle : DiagId::HlslCompilerExited, {status});
 }

@@ -271,6 +271,7 @@ void Compiler::finishPendingStages() {
                 continue;
             case Status::Crashed:
             case Status::WorkerFailed:
+            case Status::SanitizerReport:
                 if (first) error(outcome.fault, function, outcome.faultArguments);
                 mFailed = true;
                 continue;
@@ -281,10 +282,6 @@ void Compiler::finishPendingStages() {
                 mFailed = true;
                 continue;
             }
-            case Status::SanitizerReport:
-                if (first) error(DiagId::CompileWorkerSanitizerReport, function, {outcome.crossError});
-                mFailed = true;
-                continue;
         }
         StageProgram& program = stageProgram(pass, lowered.stage);
         program = outcome.program;

@@ -28,12 +28,13 @@ struct StageOutcome {
         TimedOut,         // the worker took longer than the time limit and was killed
         WorkerFailed,     // no worker could be started, or it answered something unreadable: `fault`
         SanitizerReport,  // the worker stopped on a sanitizer finding (kWorkerSanitizerExitStatus):
-                          // `crossError`
+                          // `fault`
     };
     Status status = Status::Compiled;
     std::vector<HlslMessage> messages;  // glslang's errors and warnings (any status)
     std::string crossError;
-    // What the worker pool reports for Crashed and WorkerFailed (set in this process, never sent).
+    // What the worker pool reports for Crashed, WorkerFailed and SanitizerReport (set in this process,
+    // never sent).
     DiagId fault = DiagId::CompileWorkerFailed;
     std::vector<std::string> faultArguments;
     // Filled when Compiled: glsl, uniform block, uniforms, samplers and inputs (stage, entry point,

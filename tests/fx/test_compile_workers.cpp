@@ -235,6 +235,26 @@ TEST(CompileWorkers, AWorkerThatExitsWithoutAnsweringIsAnErrorNamingItsStatus) {
     EXPECT_TRUE(d.loc.valid());
 }
 
+// A worker that exits with the sanitizer status (a sanitized worker's report, which this script does not
+// print) is that finding, under its own id, with the status as its value; never an ordinary exit.
+TEST(CompileWorkers, AWorkerThatStopsOnASanitizerReportIsThatErrorNamingItsStatus) {
+    const shadowfx::test::ScratchDirectory scratch("sanitizer_report_worker");
+    const std::string worker = (scratch / "worker.sh").string();
+    std::ofstream(worker) << "#!/bin/sh\nhead -c " << fx::kFrameHeaderBytes << " >/dev/null\nexit "
+                          << fx::kWorkerSanitizerExitStatus << "\n";
+    std::filesystem::permissions(worker, std::filesystem::perms::owner_all);
+    fx::CompileWorkers workers(fx::CompileWorkerOptions{worker, 1, 20000, 2048});
+    Compiled compiled = compileSource(kGood, &workers);
+    EXPECT_EQ(compiled.effect, nullptr);
+    ASSERT_TRUE(compiled.diagnostics.hasErrors());
+    const fx::Diagnostic& d = compiled.diagnostics.items()[0];
+    EXPECT_EQ(d.id, fx::DiagId::CompileWorkerSanitizerReport) << compiled.diagnostics.str();
+    EXPECT_EQ(d.message,
+              "the HLSL compiler's worker process stopped on a sanitizer report (exit status 86); the "
+              "report is on standard error");
+    EXPECT_TRUE(d.loc.valid());
+}
+
 // tests/data/glslang_crashes/: HLSL that crashes glslang. In-process each still kills the process (a
 // glslang that no longer crashes fails here, and the reproducer can go); through the workers each is an
 // error at its shader function.

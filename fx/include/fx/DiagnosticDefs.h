@@ -270,9 +270,11 @@ FX_DIAGNOSTIC(HlslCompilerTimedOut, Error,
               "the HLSL compiler did not finish this shader within {0} ms and was stopped")
 // {0}: the worker program, {1}: the system call that failed, {2}: the system's message.
 FX_DIAGNOSTIC(CompileWorkerFailed, Error, "cannot start the HLSL compiler's worker '{0}' ({1}: {2})")
-FX_DIAGNOSTIC(CompileWorkerSanitizerReport, Error,
-              "the HLSL compiler's worker process stopped on a sanitizer report ({0}); the report is on "
-              "standard error")
+// {0}: the worker's exit status (kWorkerSanitizerExitStatus).
+FX_DIAGNOSTIC(
+    CompileWorkerSanitizerReport, Error,
+    "the HLSL compiler's worker process stopped on a sanitizer report (exit status {0}); the report "
+    "is on standard error")
 FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
               "no shadowfx-compile-worker found (set SHADOWFX_COMPILE_WORKER); compiling in this process, "
               "where a crash of the HLSL compiler ends the program")
@@ -517,6 +519,11 @@ FX_DIAGNOSTIC(CompileWorkerConnectionClosed, Error,
 FX_DIAGNOSTIC(CompileWorkerRefusedRequest, Error, "the HLSL compiler's worker does not accept requests")
 FX_DIAGNOSTIC(CompileWorkerReplyUnreadable, Error,
               "the HLSL compiler's worker answered something unreadable (a worker from another build?)")
+// {0}: the worker's exit status (kWorkerSanitizerExitStatus), found when the next shader was sent.
+FX_DIAGNOSTIC(
+    CompileWorkerSanitizerReportWhileIdle, Error,
+    "the HLSL compiler's worker process stopped on a sanitizer report while idle (exit status {0}), "
+    "before this shader was sent; the report is on standard error")
 
 // [SECTION] Resources and execution
 FX_DIAGNOSTIC(TextureFileNotFound, Warning, "cannot load texture '{0}'; using a neutral texture")
