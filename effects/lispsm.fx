@@ -76,3 +76,18 @@ technique hardware
 {
     LIGHTSPACE_HARDWARE_PASSES
 }
+
+// `hardware`'s map drawn from the casters alone (lightspace.fxh, LIGHTSPACE_CASTER_PASSES): the objects the
+// scene says cast shadows, of the closed ones the faces towards the light. The same map as `hardware`'s
+// where every object casts (the built-in scenes); where a scene declares an object a receiver only, the map
+// leaves it out, as the ray-cast truth does.
+technique hardware_casters
+<
+    string Script = "Pass=RenderShadowDepth; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.12;  // measured 0.026 % on dual-l, 0.035 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_CASTER_PASSES
+}

@@ -205,6 +205,27 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         PixelShader = compile ps_3_0 LIGHTSPACE_SCENE_PS();                                                 \
     }
 
+// The scene pass of the depth-only maps below: the receiver's biased depth compared in hardware (HardwarePS).
+#define LIGHTSPACE_HARDWARE_SCENE_PASS                                                                      \
+    pass RenderScene                                                                                        \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=;"                                                              \
+                        "RenderDepthStencilTarget=;"                                                        \
+                        "RenderPort=;"                                                                      \
+                        "ClearSetColor=ClearColor;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
+        PixelShader = compile ps_3_0 HardwarePS();                                                          \
+    }
+
 // A depth-only map: the map pass writes the depth target alone (ColorWriteEnable = 0, no R32F colour target
 // cleared or written) and the scene pass compares against it in hardware (HardwarePS): the same errors as
 // BilinearPS, a cheaper frame on llvmpipe (docs/results/2026-12-05-peers-city-street.md).
@@ -228,14 +249,24 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
         PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
     }                                                                                                       \
-    pass RenderScene                                                                                        \
+    LIGHTSPACE_HARDWARE_SCENE_PASS
+
+// The same depth-only map drawn from the casters alone: the objects the scene says cast shadows
+// (CastersOnly; a ground that only receives no longer covers the map, as osgShadow's casters mask leaves it
+// out) and, of the closed ones, the faces towards the light (CullMode = CCW with CullClosedOnly: open meshes
+// drawn whole). With the light outside every closed caster the nearest surface along a light ray is a face
+// towards it, so the map is `hardware`'s less the non-casters, for a fraction of its rasterization
+// (docs/results/2026-12-06-plain-shadow-map.md).
+#define LIGHTSPACE_CASTER_PASSES                                                                            \
+    pass RenderShadowDepth                                                                                  \
     <                                                                                                       \
-        string Script = "RenderColorTarget0=;"                                                              \
-                        "RenderDepthStencilTarget=;"                                                        \
-                        "RenderPort=;"                                                                      \
-                        "ClearSetColor=ClearColor;"                                                         \
+        float FilterReachTexels = 2;                                                                        \
+        bool CastersOnly = true;                                                                            \
+        bool CullClosedOnly = true;                                                                         \
+        string Script = "RenderColorTarget0=ShadowMap;"                                                     \
+                        "RenderDepthStencilTarget=ShadowDepth;"                                             \
+                        "RenderPort=light0;"                                                                \
                         "ClearSetDepth=ClearDepth;"                                                         \
-                        "Clear=Color;"                                                                      \
                         "Clear=Depth;"                                                                      \
                         "Draw=Geometry;";                                                                   \
     >                                                                                                       \
@@ -243,8 +274,11 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         CullMode = CCW;                                                                                     \
         ZEnable = true;                                                                                     \
         ZWriteEnable = true;                                                                                \
-        VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
-        PixelShader = compile ps_3_0 HardwarePS();                                                          \
-    }
+        ColorWriteEnable = 0;                                                                               \
+        DepthClipEnable = false;                                                                            \
+        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
+        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
+    }                                                                                                       \
+    LIGHTSPACE_HARDWARE_SCENE_PASS
 
 #endif

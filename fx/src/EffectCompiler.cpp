@@ -115,8 +115,14 @@ void Compiler::parameterInfo() {
     }
 }
 
-// The pass annotations the runtime acts on (CompiledPass): CullClosedOnly, LeaveOutWhen, FilterReachTexels.
+// The pass annotations the runtime acts on (CompiledPass): CullClosedOnly, LeaveOutWhen, FilterReachTexels;
+// and CastersOnly, which the runtime reads from the pass's annotations (a bool: a string would be read as
+// false without a word).
 void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
+    if (const Annotation* a = source.annotation("CastersOnly")) {
+        std::optional<Value> value = eval(a->value, nullptr);
+        if (value && value->data.empty()) error(DiagId::AnnotationNumberExpected, a->loc, {a->name});
+    }
     if (const Annotation* a = source.annotation("CullClosedOnly")) {
         std::optional<Value> value = eval(a->value, nullptr);
         if (value && !value->data.empty()) {

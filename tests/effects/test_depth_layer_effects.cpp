@@ -1,6 +1,6 @@
 // The depth-bias and depth-layer effects (effects/bias.fx, back_faces.fx, depth_formats.fx, midpoint.fx,
 // dual_depth.fx, id_buffer.fx) against the ray-cast ground truth, their depth layers against depths
-// computed from the scene's triangles on the CPU, and the pass annotation CullClosedOnly.
+// computed from the scene's triangles on the CPU, and the pass annotations CullClosedOnly and CastersOnly.
 //
 // Conformance: every technique names its scenes, map size and misclassified-% bound in annotations
 // (ExpectScenes, ExpectMapSize, ExpectMisclassifiedBelow; the measured value each bound came from is the
@@ -535,6 +535,66 @@ TEST_F(DepthLayers, BackFaceMapKeepsOpenObjectsFrontFacesInTheirOwnChannel) {
     expectLayer(readChannel(*renderer, "ShadowMap", 1),
                 cpuMap([](const CpuLayers& l) { return l.openFrontFacing; }),
                 "the open ground's faces towards the light");
+}
+
+// [SECTION] CastersOnly
+
+// The nearest surface's light depth (blended with Min: no depth target decides what is kept), drawn with and
+// without the annotation.
+std::string casterMapEffect(bool castersOnly) {
+    return std::string(R"(
+float4x4 WorldLightViewProjection : WorldViewProjection < string frustum = "light0"; >;
+float4 Far = {1, 1, 1, 1};
+texture Map : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; string Format = "R32F"; >;
+texture MapDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 64}; string Format = "D24S8"; >;
+struct Out { float4 Position : POSITION; float2 Z : TEXCOORD0; };
+Out VS(float4 position : POSITION) { Out o; o.Position = mul(float4(position.xyz, 1), WorldLightViewProjection); o.Z = o.Position.zw; return o; }
+float4 PS(Out i) : COLOR { return float4(i.Z.x / i.Z.y, 0, 0, 1); }
+technique t < string Script = "Pass=p;"; >
+{
+    pass p < string Script = "RenderColorTarget0=Map; RenderDepthStencilTarget=MapDepth; RenderPort=light0;"
+                             "ClearSetColor=Far; Clear=Color; Draw=Geometry;";
+             bool CastersOnly = )") +
+           (castersOnly ? "true" : "false") + R"(; >
+    {
+        CullMode = None;
+        ZEnable = false;
+        AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; BlendOp = Min;
+        VertexShader = compile vs_3_0 VS();
+        PixelShader = compile ps_3_0 PS();
+    }
+}
+)";
+}
+
+TEST_F(DepthLayers, CastersOnlyLeavesTheScenesNonCastersOutOfALightPass) {
+    runtime::Scene groundCastsNothing = scene;
+    for (runtime::SceneObject& object : groundCastsNothing.objects)
+        object.castsShadow = object.name != "ground";
+    auto castersOnly = loadEffect(casterMapEffect(true), false);
+    auto everyObject = loadEffect(casterMapEffect(false), false);
+    ASSERT_TRUE(castersOnly && everyObject);
+    ASSERT_TRUE(render(*castersOnly, groundCastsNothing, 64, 48, "", {"Map"}));  // nothing samples Map
+    ASSERT_TRUE(render(*everyObject, groundCastsNothing, 64, 48, "", {"Map"}));
+    // With the annotation: the box alone, its nearest face where the ray meets it (two layers or more: the
+    // ground lies beneath every box texel), the cleared far value elsewhere.
+    const std::vector<float> casters = readChannel(*castersOnly, "Map", 0);
+    expectLayer(casters, cpuMap([](const CpuLayers& l) { return l.z2 < 1.0f ? l.z1 : 1.0f; }),
+                "the box alone");
+    ASSERT_EQ(casters.size(), cpu.size());
+    size_t boxDrawn = 0, groundTexels = 0, groundDrawn = 0;
+    for (size_t i = 0; i < cpu.size(); ++i) {
+        boxDrawn += cpu[i].z2 < 1.0f && casters[i] < 1.0f;
+        if (cpu[i].z1 == 1.0f || cpu[i].z2 < 1.0f) continue;  // ground only
+        ++groundTexels;
+        groundDrawn += casters[i] < 1.0f;
+    }
+    EXPECT_GT(boxDrawn, 100u) << "the box should be in the map";
+    ASSERT_GT(groundTexels, 1000u);
+    EXPECT_EQ(groundDrawn, 0u) << "the ground casts nothing and should be left out";
+    // Without it every object is drawn, the ground included, as before the annotation.
+    expectLayer(readChannel(*everyObject, "Map", 0), cpuMap([](const CpuLayers& l) { return l.z1; }),
+                "every object");
 }
 
 // [SECTION] ID buffer

@@ -610,6 +610,29 @@ technique t
     EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);
 }
 
+// CastersOnly is a bool the runtime reads from the pass's annotations: a string, which it would read as
+// false, is an error at the annotation.
+TEST(EffectCompiler, AStringCastersOnlyIsALocatedError) {
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+float4 PS() : COLOR { return float4(1, 1, 1, 1); }
+technique t
+{
+    pass p < string CastersOnly = "true"; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+}
+)",
+                                    "casters.fx", ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
+    ASSERT_TRUE(diags.hasErrors());
+    const Diagnostic& error = diags.items().back();
+    EXPECT_EQ(error.id, DiagId::AnnotationNumberExpected);
+    EXPECT_EQ(error.loc.file, "casters.fx");
+    EXPECT_EQ(error.loc.line, 6);
+    EXPECT_NE(error.message.find("CastersOnly"), std::string::npos);
+}
+
 // SPIRV-Cross's own words never reach the user alone: its failure names the shader of the effect and, for a
 // D3D9 sampler handed to Texture2D.Sample, what in the effect caused it.
 TEST(EffectCompiler, CrossCompileErrorSaysWhatInTheEffectCausedIt) {
