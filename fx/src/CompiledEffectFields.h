@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 12,
-              "the enum lengths below were pinned at format version 12: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 13,
+              "the enum lengths below were pinned at format version 13: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 36);
 static_assert(enumLength<UniformBinding::Source>() == 2);
@@ -273,7 +273,7 @@ void fields(A& a, StreamOutput& x) {
 }
 template <class A>
 void fields(A& a, CompiledPass& x) {
-    a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels);
+    a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels, x.castersOnly);
     a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.compute, x.patchVertices, x.primitive);
     a(x.arguments, x.states, x.hasScript, x.script, x.annotations);
     a(x.streamOut, x.drawAuto);

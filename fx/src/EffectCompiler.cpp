@@ -115,13 +115,16 @@ void Compiler::parameterInfo() {
     }
 }
 
-// The pass annotations the runtime acts on (CompiledPass): CullClosedOnly, LeaveOutWhen, FilterReachTexels;
-// and CastersOnly, which the runtime reads from the pass's annotations (a bool: a string would be read as
-// false without a word).
+// The pass annotations the runtime acts on (CompiledPass): CullClosedOnly, LeaveOutWhen, FilterReachTexels,
+// CastersOnly.
 void Compiler::passAnnotations(const Pass& source, CompiledPass& pass) {
     if (const Annotation* a = source.annotation("CastersOnly")) {
         std::optional<Value> value = eval(a->value, nullptr);
-        if (value && value->data.empty()) error(DiagId::AnnotationNumberExpected, a->loc, {a->name});
+        if (value && !value->data.empty()) {
+            pass.castersOnly = value->asBool();
+        } else if (value) {
+            error(DiagId::AnnotationNumberExpected, a->loc, {a->name});
+        }
     }
     if (const Annotation* a = source.annotation("CullClosedOnly")) {
         std::optional<Value> value = eval(a->value, nullptr);

@@ -610,8 +610,8 @@ technique t
     EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);
 }
 
-// CastersOnly is a bool the runtime reads from the pass's annotations: a string, which it would read as
-// false, is an error at the annotation.
+// CastersOnly is a bool the compiler resolves into CompiledPass::castersOnly: a string is an error at the
+// annotation, never read as false without a word.
 TEST(EffectCompiler, AStringCastersOnlyIsALocatedError) {
     DiagnosticList diags;
     auto effect = parseEffectSource(R"(

@@ -243,6 +243,9 @@ struct CompiledPass {
     // `float FilterReachTexels = N;`: how far around a receiver's texel the passes reading this pass's map
     // look (light-pass culling keeps every caster they can see); 0 = not declared, the runtime's default.
     float filterReachTexels = 0.0f;
+    // `bool CastersOnly = true;`: a light pass draws the objects that cast shadows alone
+    // (SceneObject::castsShadow); receivers only, such as a ground under a sun, stay out of its map.
+    bool castersOnly = false;
     StageProgram vertex;
     StageProgram fragment;
     StageProgram geometry;  // D3D10's geometry shader (SetGeometryShader); empty glsl when the pass has none

@@ -252,7 +252,10 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
             mVisible.assign(drawable.begin(), drawable.end());
         }
         const int culled = culling ? static_cast<int>(drawable.size() - mVisible.size()) : 0;
-        if (drawsCastersOnly(pass))
+        // A light pass of shadow casters alone: an object the scene declares a receiver only (a ground under
+        // a sun) would cover the map and shadow nothing but itself, where the truth and osgShadow's casters
+        // mask leave it out. Not counted as culled: no volume test dropped it.
+        if (pass.castersOnly)
             mVisible.erase(std::remove_if(mVisible.begin(), mVisible.end(),
                                           [&](uint32_t index) { return !mScene.objects[index].castsShadow; }),
                            mVisible.end());
@@ -371,16 +374,6 @@ void FrameExecutor::closePass() {
     for (size_t reason = 1; reason < mPassLeftOut.size(); ++reason)
         if (mPassLeftOut[reason] > 0)
             record->leftOut += (record->leftOut.empty() ? "" : "+") + std::string(kReasons[reason]);
-}
-
-// The pass annotation `bool CastersOnly = true;`: the pass draws the objects that cast shadows alone
-// (SceneObject::castsShadow). A shadow map's light pass says so: an object the scene declares a receiver
-// only (a ground under a sun) would otherwise cover the map and shadow nothing but itself, where the
-// truth and osgShadow's casters mask leave it out. Passes that need the receivers from the light (ID
-// buffers, second depth layers) keep every object.
-bool FrameExecutor::drawsCastersOnly(const fx::CompiledPass& pass) {
-    const fx::AnnotationValue* castersOnly = fx::findAnnotation(pass.annotations, "CastersOnly");
-    return castersOnly && castersOnly->value.asBool();
 }
 
 // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose

@@ -65,8 +65,6 @@ private:
     // Objects whose draws can change this pass's targets: inside the camera's frustum, or casters whose
     // extrusion away from the light meets the camera's receivers (IntersectionBody.h).
     void cull(const PlannedOp* op, std::vector<uint32_t>& visible) const;
-    // True where the pass is annotated `bool CastersOnly = true;`: it draws shadow casters alone.
-    static bool drawsCastersOnly(const fx::CompiledPass& pass);
     // The render target a script names (`name`, resolved to `parameter`); null where it is not allocated.
     const GpuTexture* target(const std::string& name, int parameter);
     // The framebuffer for a clear or draw into mTargets: without the depth-stencil target when it is smaller
