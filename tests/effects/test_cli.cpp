@@ -26,6 +26,11 @@ struct BadInput {
     const char* message;   // a part of the message
 };
 
+// GoogleTest prints a parameter's bytes unless told otherwise.
+void PrintTo(const BadInput& bad, std::ostream* out) {
+    *out << bad.file;
+}
+
 class BadInputs : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInputs, RenderReportsTheUsersLocationExitsNonZeroAndWritesNoImage) {

@@ -62,6 +62,11 @@ struct Case {
     const char* scene;
 };
 
+// GoogleTest prints a parameter's bytes unless told otherwise.
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << c.effect << " " << c.technique << " on " << c.scene;
+}
+
 class DepthOnlyPasses : public ::testing::TestWithParam<Case> {};
 
 TEST_P(DepthOnlyPasses, SameBytesAsTheMaskedColourPass) {

@@ -67,6 +67,11 @@ struct FitCase {
     double minFoundShare;
 };
 
+// GoogleTest prints a parameter's bytes unless told otherwise.
+void PrintTo(const FitCase& c, std::ostream* out) {
+    *out << c.effect << " " << c.technique;
+}
+
 class VisibleSampleFits : public ::testing::TestWithParam<FitCase> {};
 
 TEST_P(VisibleSampleFits, SpendTheMapOnWhatTheCameraSees) {

@@ -96,6 +96,11 @@ struct Case {
     const char* technique;
 };
 
+// GoogleTest prints a parameter's bytes unless told otherwise.
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << c.effect << " " << c.technique;
+}
+
 class BatchedFrames : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BatchedFrames, SameImageFewerDraws) {

@@ -172,6 +172,31 @@ struct Case {
     Light::Type light;
 };
 
+const char* lightTypeName(Light::Type type) {
+    switch (type) {
+        case Light::Type::Directional:
+            return "directional";
+        case Light::Type::Spot:
+            return "spot";
+        case Light::Type::Point:
+            return "point";
+    }
+    return "unknown";
+}
+
+// The technique, the settings on (PCF, JITTER) and the light: a test's name, the same in every build
+// (GoogleTest's default would print the parameter's bytes, pointers included, into the name CTest registers).
+std::string caseName(const Case& c) {
+    std::string name = c.technique;
+    if (std::strchr(c.settings, 'P')) name += "_PCF";
+    if (std::strchr(c.settings, 'J')) name += "_JITTER";
+    return name + "_" + lightTypeName(c.light);
+}
+
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << caseName(c);
+}
+
 class LeaveOutImage : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LeaveOutImage, IsIdenticalAndCulls) {
@@ -215,13 +240,23 @@ INSTANTIATE_TEST_SUITE_P(ThesisEffect, LeaveOutImage,
                                            Case{"main", "PJ", Light::Type::Directional},
                                            Case{"hardware", "", Light::Type::Directional},
                                            Case{"main", "P", Light::Type::Spot},
-                                           Case{"hardware", "", Light::Type::Spot}));
+                                           Case{"hardware", "", Light::Type::Spot}),
+                         [](const ::testing::TestParamInfo<Case>& info) { return caseName(info.param); });
 
 // The light-space parameterizations (lightspace.fxh) declare the reach of their 2x2 bilinear test
 // (FilterReachTexels = 2) and LiSPSM's fit says that casters behind its warp centre shadow nothing
 // (LightFit::shinesIntoPositiveW): the image stays identical to the frame without leave-out, for
 // directional lights and for spot lights, whose window Focused and LiSPSM crop to the receivers.
-class LightSpaceLeaveOut : public ::testing::TestWithParam<std::pair<const char*, Light::Type>> {};
+struct LightSpaceCase {
+    const char* file;
+    Light::Type light;
+};
+
+void PrintTo(const LightSpaceCase& c, std::ostream* out) {
+    *out << c.file << " " << lightTypeName(c.light);
+}
+
+class LightSpaceLeaveOut : public ::testing::TestWithParam<LightSpaceCase> {};
 
 TEST_P(LightSpaceLeaveOut, IsIdenticalAndCulls) {
     const auto [file, lightType] = GetParam();
@@ -239,14 +274,13 @@ TEST_P(LightSpaceLeaveOut, IsIdenticalAndCulls) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Effects, LightSpaceLeaveOut,
-                         ::testing::Values(std::make_pair("focused.fx", Light::Type::Directional),
-                                           std::make_pair("lispsm.fx", Light::Type::Directional),
-                                           std::make_pair("focused.fx", Light::Type::Spot),
-                                           std::make_pair("lispsm.fx", Light::Type::Spot)),
-                         [](const auto& info) {
-                             std::string name = info.param.first;
-                             return name.substr(0, name.size() - 3) +
-                                    (info.param.second == Light::Type::Spot ? "_spot" : "_directional");
+                         ::testing::Values(LightSpaceCase{"focused.fx", Light::Type::Directional},
+                                           LightSpaceCase{"lispsm.fx", Light::Type::Directional},
+                                           LightSpaceCase{"focused.fx", Light::Type::Spot},
+                                           LightSpaceCase{"lispsm.fx", Light::Type::Spot}),
+                         [](const ::testing::TestParamInfo<LightSpaceCase>& info) {
+                             std::string name = info.param.file;
+                             return name.substr(0, name.size() - 3) + "_" + lightTypeName(info.param.light);
                          });
 
 // A map read by a wide filter declares its reach (`float FilterReachTexels` on the light pass: PCSS's
@@ -324,7 +358,10 @@ TEST_P(ShadowMapCache, ReusedOnlyWhileUnchanged) {
     EXPECT_EQ(mapState(step("a parameter only the scene pass reads changed")), "cached");
 }
 
-INSTANTIATE_TEST_SUITE_P(ThesisEffect, ShadowMapCache, ::testing::Values("main", "hardware"));
+INSTANTIATE_TEST_SUITE_P(ThesisEffect, ShadowMapCache, ::testing::Values("main", "hardware"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             return std::string(info.param);
+                         });
 
 // The thesis effect's map pass binds a depth target with ZEnable = false (BlendOp=min keeps the nearest
 // depth): its draws neither test nor write depth, so the clear of that target is dead and the target is
