@@ -123,6 +123,16 @@ public:
     }
 };
 
+// The highest id of the symbols of a tree.
+class SymbolIds : public glslang::TIntermTraverser {
+public:
+    long long highest = 0;
+
+    void visitSymbol(glslang::TIntermSymbol* symbol) override {
+        highest = std::max(highest, symbol->getId());
+    }
+};
+
 // A swizzle of several matrix elements (`m._11_22`, `m._m00_m11`) is kept by glslang's HLSL front end as a
 // matrix swizzle node (a single element, or the elements of one of its vectors, become ordinary indexing
 // there), which its SPIR-V back end does not compile: it logs "Missing functionality: matrix swizzle" and
@@ -130,28 +140,54 @@ public:
 // rewritten into what fxc compiled, a vector constructed from the single elements, each indexed the way the
 // front end indexes `m._12` (m[first selector][second selector]: glslang's matrices are HLSL's rows), so
 // `m._11_22` reads as `float2(m._11, m._22)`. The matrix operand then stands once per element, which reads
-// the same value only where evaluating it has no side effects; a swizzle of anything else (a call's
-// result), and one a write or an `out` argument reaches, is left as it is with a warning at it, not an
-// error: the unit also holds code whose value no output reads (a function D3DX ran on the host, a static
-// only a compile argument uses), where the constant changes nothing and fxc's effect still runs.
+// the same value only where evaluating it has no side effects; anything else (a call's result) is
+// evaluated once into a temporary first: `(t = f(), float2(t._11, t._22))`. A swizzle a write or an `out`
+// argument reaches is left as it is with a warning at it, not an error: the unit also holds code whose
+// value no output reads (a function D3DX ran on the host, a static only a compile argument uses), where
+// the constant changes nothing and fxc's effect still runs.
 class MatrixSwizzleRewriter : public glslang::TIntermTraverser {
 public:
-    explicit MatrixSwizzleRewriter(glslang::TIntermediate& intermediate)
-        : glslang::TIntermTraverser(false, false, true), intermediate(intermediate) {}
+    // `unusedSymbolId`: above every symbol id of the tree, for the temporaries.
+    MatrixSwizzleRewriter(glslang::TIntermediate& intermediate, long long unusedSymbolId)
+        : glslang::TIntermTraverser(false, false, true),
+          intermediate(intermediate),
+          nextSymbolId(unusedSymbolId) {}
 
     std::vector<HlslMessage> leftAsTheyAre;
 
     // Post-order: a swizzle inside the matrix operand (an index) is rewritten before the swizzle around it.
     bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
         if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
-        glslang::TIntermTyped* elements =
-            isSideEffectFree(node->getLeft()) ? constructFromElements(node) : nullptr;
+        glslang::TIntermTyped* elements = readOfElements(node);
         if (!elements || !replaceInParent(node, elements)) warnAt(node);
         return true;
     }
 
 private:
     glslang::TIntermediate& intermediate;
+    long long nextSymbolId;
+
+    // The swizzle's elements read from its matrix, the matrix evaluated once; nullptr where glslang has no
+    // constructor for their type.
+    glslang::TIntermTyped* readOfElements(glslang::TIntermBinary* swizzle) {
+        glslang::TIntermTyped* matrix = swizzle->getLeft();
+        if (isSideEffectFree(matrix)) return constructFromElements(swizzle, matrix);
+        const glslang::TSourceLoc& at = swizzle->getLoc();
+        const glslang::TType temporaryType(matrix->getBasicType(), glslang::EvqTemporary, 0,
+                                           matrix->getMatrixCols(), matrix->getMatrixRows());
+        const long long id = nextSymbolId++;
+        const auto temporary = [&] {
+            glslang::TIntermSymbol* symbol =
+                new glslang::TIntermSymbol(id, glslang::TString("swizzledMatrix"), temporaryType);
+            symbol->setLoc(at);
+            return symbol;
+        };
+        glslang::TIntermTyped* evaluation =
+            intermediate.addAssign(glslang::EOpAssign, temporary(), matrix, at);
+        glslang::TIntermTyped* elements = constructFromElements(swizzle, temporary());
+        if (!evaluation || !elements) return nullptr;
+        return intermediate.addComma(evaluation, elements, at);
+    }
 
     // Symbols and constants combined by indexing, member selection, swizzles, arithmetic and constructors:
     // evaluating it again reads the same value and changes nothing.
@@ -174,9 +210,10 @@ private:
         return false;
     }
 
-    // The vector of the swizzle's elements, or nullptr for an element type glslang has no constructor for.
-    glslang::TIntermTyped* constructFromElements(glslang::TIntermBinary* swizzle) {
-        glslang::TIntermTyped* matrix = swizzle->getLeft();
+    // The vector of the swizzle's elements read from `matrix`, or nullptr for an element type glslang has no
+    // constructor for.
+    glslang::TIntermTyped* constructFromElements(glslang::TIntermBinary* swizzle,
+                                                 glslang::TIntermTyped* matrix) {
         const glslang::TIntermSequence& selectors = swizzle->getRight()->getAsAggregate()->getSequence();
         const glslang::TType& vectorType = swizzle->getType();
         const glslang::TOperator construct = intermediate.mapTypeToConstructorOp(vectorType);
@@ -262,11 +299,12 @@ private:
         leftAsTheyAre.push_back(
             {false, at.getFilenameStr(), at.line, at.column,
              "'.' : a swizzle of " + std::to_string(elements) +
-                 " matrix elements reads a constant here (glslang compiles it to an element index, not the "
-                 "elements fxc read; shadowfx reads the elements only of a matrix without side effects, "
-                 "where the swizzle is not written): keep the matrix in a variable and spell the elements "
-                 "one by one, e.g. float" +
-                 std::to_string(elements) + "(m._11, m._22" + (elements > 2 ? ", ..." : "") + ")"});
+                 " matrix elements written here compiles to a constant (glslang compiles it to an element "
+                 "index, not the elements fxc wrote; shadowfx rewrites the swizzles it reads): write a "
+                 "vector "
+                 "variable and assign it after, e.g. float" +
+                 std::to_string(elements) + " v; f(v); m." + (elements > 2 ? "_11_22_33" : "_11_22") +
+                 " = v;"});
     }
 };
 
@@ -304,7 +342,9 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
-            MatrixSwizzleRewriter matrixSwizzles(*program.getIntermediate(language));
+            SymbolIds symbols;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
+            MatrixSwizzleRewriter matrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
             program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);
             syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixSwizzles.leftAsTheyAre.begin(),
                                       matrixSwizzles.leftAsTheyAre.end());

@@ -44,6 +44,10 @@ float4 ChainsPS(QuadOut IN) : COLOR {
     float4 right = float4(both[Seven - 6]._12_21, ((float3x3)M)._33_11);
     return IN.UV.x < 0.5 ? left : right;
 }
+float4x4 halved() { return M * 0.5; }
+float4 CallsPS(QuadOut IN) : COLOR {
+    return IN.UV.x < 0.5 ? float4(halved()._12_21, halved()._m00_m11.yx) : halved()._31_42_13_24;
+}
 float4 WritesPS(QuadOut IN) : COLOR {
     float4x4 w = M;
     w._12_21 = float2(0.3, 0.9);
@@ -73,6 +77,14 @@ technique Chains < string Script = "Pass=p;"; > {
         CullMode = None;
         VertexShader = compile vs_3_0 QuadVS();
         PixelShader = compile ps_3_0 ChainsPS();
+    }
+}
+technique Calls < string Script = "Pass=p;"; > {
+    pass p < string Script = "Draw=Buffer;"; > {
+        ZEnable = false;
+        CullMode = None;
+        VertexShader = compile vs_3_0 QuadVS();
+        PixelShader = compile ps_3_0 CallsPS();
     }
 }
 technique Writes < string Script = "Pass=p;"; > {
@@ -112,6 +124,7 @@ TEST(MatrixSwizzles, ReadAndWriteTheElementsFxcDid) {
         {"Pairs", {0.10f, 0.60f, 0.20f, 0.50f}, {0.35f, 0.65f, 0.45f, 0.40f}},
         {"TriplesAndQuads", {0.20f, 0.70f, 0.35f, 0.75f}, {0.40f, 0.70f, 0.15f, 0.45f}},
         {"Chains", {0.55f, 0.90f, 0.60f, 0.20f}, {0.50f, 0.20f, 0.25f, 0.10f}},
+        {"Calls", {0.10f, 0.25f, 0.30f, 0.05f}, {0.45f, 0.275f, 0.15f, 0.40f}},
         {"Writes", {0.30f, 0.90f, 0.10f, 0.60f}, {0.05f, 0.95f, 0.85f, 0.70f}},
     };
     for (const Halves& halves : expected) {
