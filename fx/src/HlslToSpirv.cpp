@@ -123,27 +123,188 @@ public:
     }
 };
 
-// A swizzle of several matrix elements that glslang's HLSL front end keeps as a matrix swizzle (`m._11_22`,
-// `m._m00_m11`; a single element, or elements of one of its vectors, become ordinary indexing there): its
-// SPIR-V back end only logs "Missing functionality: matrix swizzle" and writes an element index in the
-// swizzle's place, a constant (a known glslang defect). A warning at its location, not an error: the unit
-// holds code whose value no output reads (a function D3DX ran on the host, a static that only a compile
-// argument uses), where the constant changes nothing and fxc's effect still runs.
-class MatrixSwizzleFinder : public glslang::TIntermTraverser {
+// The highest id of the symbols of a tree.
+class SymbolIds : public glslang::TIntermTraverser {
 public:
-    std::vector<HlslMessage> found;
+    long long highest = 0;
 
+    void visitSymbol(glslang::TIntermSymbol* symbol) override {
+        highest = std::max(highest, symbol->getId());
+    }
+};
+
+// A swizzle of several matrix elements (`m._11_22`, `m._m00_m11`) is kept by glslang's HLSL front end as a
+// matrix swizzle node (a single element, or the elements of one of its vectors, become ordinary indexing
+// there), which its SPIR-V back end does not compile: it logs "Missing functionality: matrix swizzle" and
+// writes an element index in the swizzle's place, a constant (a known glslang defect). Each such read is
+// rewritten into what fxc compiled, a vector constructed from the single elements, each indexed the way the
+// front end indexes `m._12` (m[first selector][second selector]: glslang's matrices are HLSL's rows), so
+// `m._11_22` reads as `float2(m._11, m._22)`. The matrix operand then stands once per element, which reads
+// the same value only where evaluating it has no side effects; anything else (a call's result) is
+// evaluated once into a temporary first: `(t = f(), float2(t._11, t._22))`. A swizzle a write or an `out`
+// argument reaches is left as it is with a warning at it, not an error: the unit also holds code whose
+// value no output reads (a function D3DX ran on the host, a static only a compile argument uses), where
+// the constant changes nothing and fxc's effect still runs.
+class MatrixSwizzleRewriter : public glslang::TIntermTraverser {
+public:
+    // `unusedSymbolId`: above every symbol id of the tree, for the temporaries.
+    MatrixSwizzleRewriter(glslang::TIntermediate& intermediate, long long unusedSymbolId)
+        : glslang::TIntermTraverser(false, false, true),
+          intermediate(intermediate),
+          nextSymbolId(unusedSymbolId) {}
+
+    std::vector<HlslMessage> leftAsTheyAre;
+
+    // Post-order: a swizzle inside the matrix operand (an index) is rewritten before the swizzle around it.
     bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
         if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
-        const glslang::TSourceLoc& at = node->getLoc();
-        const int elements = node->getType().getVectorSize();
-        found.push_back(
+        glslang::TIntermTyped* elements = readOfElements(node);
+        if (!elements || !replaceInParent(node, elements)) warnAt(node);
+        return true;
+    }
+
+private:
+    glslang::TIntermediate& intermediate;
+    long long nextSymbolId;
+
+    // The swizzle's elements read from its matrix, the matrix evaluated once; nullptr where glslang has no
+    // constructor for their type.
+    glslang::TIntermTyped* readOfElements(glslang::TIntermBinary* swizzle) {
+        glslang::TIntermTyped* matrix = swizzle->getLeft();
+        if (isSideEffectFree(matrix)) return constructFromElements(swizzle, matrix);
+        const glslang::TSourceLoc& at = swizzle->getLoc();
+        const glslang::TType temporaryType(matrix->getBasicType(), glslang::EvqTemporary, 0,
+                                           matrix->getMatrixCols(), matrix->getMatrixRows());
+        const long long id = nextSymbolId++;
+        const auto temporary = [&] {
+            glslang::TIntermSymbol* symbol =
+                new glslang::TIntermSymbol(id, glslang::TString("swizzledMatrix"), temporaryType);
+            symbol->setLoc(at);
+            return symbol;
+        };
+        glslang::TIntermTyped* evaluation =
+            intermediate.addAssign(glslang::EOpAssign, temporary(), matrix, at);
+        glslang::TIntermTyped* elements = constructFromElements(swizzle, temporary());
+        if (!evaluation || !elements) return nullptr;
+        return intermediate.addComma(evaluation, elements, at);
+    }
+
+    // Symbols and constants combined by indexing, member selection, swizzles, arithmetic and constructors:
+    // evaluating it again reads the same value and changes nothing.
+    static bool isSideEffectFree(const TIntermNode* node) {
+        if (node->getAsSymbolNode() || node->getAsConstantUnion()) return true;
+        if (const glslang::TIntermBinary* binary = node->getAsBinaryNode()) {
+            if (binary->modifiesState()) return false;
+            // A vector swizzle's selectors are a sequence of constants.
+            return isSideEffectFree(binary->getLeft()) &&
+                   (binary->getOp() == glslang::EOpVectorSwizzle || isSideEffectFree(binary->getRight()));
+        }
+        if (const glslang::TIntermUnary* unary = node->getAsUnaryNode())
+            return !unary->modifiesState() && isSideEffectFree(unary->getOperand());
+        if (const glslang::TIntermAggregate* aggregate = node->getAsAggregate()) {
+            if (!aggregate->isConstructor()) return false;
+            for (const TIntermNode* operand : aggregate->getSequence())
+                if (!isSideEffectFree(operand)) return false;
+            return true;
+        }
+        return false;
+    }
+
+    // The vector of the swizzle's elements read from `matrix`, or nullptr for an element type glslang has no
+    // constructor for.
+    glslang::TIntermTyped* constructFromElements(glslang::TIntermBinary* swizzle,
+                                                 glslang::TIntermTyped* matrix) {
+        const glslang::TIntermSequence& selectors = swizzle->getRight()->getAsAggregate()->getSequence();
+        const glslang::TType& vectorType = swizzle->getType();
+        const glslang::TOperator construct = intermediate.mapTypeToConstructorOp(vectorType);
+        if (construct == glslang::EOpNull) return nullptr;
+        const glslang::TSourceLoc& at = swizzle->getLoc();
+        const glslang::TType columnType(matrix->getType(), 0);
+        const glslang::TType elementType(columnType, 0);
+        glslang::TIntermAggregate* vector = new glslang::TIntermAggregate;
+        for (size_t i = 0; i + 1 < selectors.size(); i += 2) {
+            glslang::TIntermTyped* column =
+                intermediate.addIndex(glslang::EOpIndexDirect, matrix, selectors[i]->getAsTyped(), at);
+            column->setType(columnType);
+            glslang::TIntermTyped* element =
+                intermediate.addIndex(glslang::EOpIndexDirect, column, selectors[i + 1]->getAsTyped(), at);
+            element->setType(elementType);
+            vector->getSequence().push_back(element);
+        }
+        return intermediate.setAggregateOperator(vector, construct, vectorType, at);
+    }
+
+    // Puts `to` where the parent holds `from`; false where `from` is written (an assignment's target, an
+    // `out` argument) or the parent is a node glslang gives no way to change (a loop's step
+    // expression).
+    bool replaceInParent(glslang::TIntermTyped* from, glslang::TIntermTyped* to) {
+        TIntermNode* parent = getParentNode();
+        if (!parent) return false;
+        if (glslang::TIntermBinary* binary = parent->getAsBinaryNode()) {
+            if (binary->getLeft() == from && !binary->modifiesState()) {
+                binary->setLeft(to);
+                return true;
+            }
+            if (binary->getRight() != from) return false;
+            binary->setRight(to);
+            return true;
+        }
+        if (glslang::TIntermUnary* unary = parent->getAsUnaryNode()) {
+            if (unary->modifiesState()) return false;
+            unary->setOperand(to);
+            return true;
+        }
+        if (glslang::TIntermAggregate* aggregate = parent->getAsAggregate()) {
+            glslang::TIntermSequence& operands = aggregate->getSequence();
+            const glslang::TQualifierList& qualifiers = aggregate->getQualifierList();
+            for (size_t i = 0; i < operands.size(); ++i) {
+                if (operands[i] != from) continue;
+                if (writesOperand(*aggregate, i, qualifiers)) return false;
+                operands[i] = to;
+                return true;
+            }
+            return false;
+        }
+        if (glslang::TIntermSelection* selection = parent->getAsSelectionNode()) {
+            if (selection->getCondition() == from)
+                selection->setCondition(to);
+            else if (selection->getTrueBlock() == from)
+                selection->setTrueBlock(to);
+            else if (selection->getFalseBlock() == from)
+                selection->setFalseBlock(to);
+            else
+                return false;
+            return true;
+        }
+        if (glslang::TIntermBranch* branch = parent->getAsBranchNode()) {
+            if (branch->getExpression() != from) return false;
+            branch->setExpression(to);
+            return true;
+        }
+        return false;
+    }
+
+    // Whether the call writes its `i`th operand: an `out` or `inout` parameter of the effect's function,
+    // the whole-number part of `modf` and the exponent of `frexp`.
+    static bool writesOperand(const glslang::TIntermAggregate& call, size_t i,
+                              const glslang::TQualifierList& qualifiers) {
+        if (i < qualifiers.size() && (qualifiers[i] == glslang::EvqOut || qualifiers[i] == glslang::EvqInOut))
+            return true;
+        return i == 1 && (call.getOp() == glslang::EOpModf || call.getOp() == glslang::EOpFrexp);
+    }
+
+    void warnAt(const glslang::TIntermBinary* swizzle) {
+        const glslang::TSourceLoc& at = swizzle->getLoc();
+        const int elements = swizzle->getType().getVectorSize();
+        leftAsTheyAre.push_back(
             {false, at.getFilenameStr(), at.line, at.column,
              "'.' : a swizzle of " + std::to_string(elements) +
-                 " matrix elements reads a constant here (glslang compiles it to an element index, "
-                 "not the elements fxc read): spell the elements one by one, e.g. float" +
-                 std::to_string(elements) + "(m._11, m._22" + (elements > 2 ? ", ..." : "") + ")"});
-        return true;
+                 " matrix elements written here compiles to a constant (glslang compiles it to an element "
+                 "index, not the elements fxc wrote; shadowfx rewrites the swizzles it reads): write a "
+                 "vector "
+                 "variable and assign it after, e.g. float" +
+                 std::to_string(elements) + " v; f(v); m." + (elements > 2 ? "_11_22_33" : "_11_22") +
+                 " = v;"});
     }
 };
 
@@ -181,10 +342,12 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
-            MatrixSwizzleFinder matrixSwizzles;
+            SymbolIds symbols;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
+            MatrixSwizzleRewriter matrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
             program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);
-            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixSwizzles.found.begin(),
-                                      matrixSwizzles.found.end());
+            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixSwizzles.leftAsTheyAre.begin(),
+                                      matrixSwizzles.leftAsTheyAre.end());
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;

@@ -261,32 +261,52 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 }
 
 // A swizzle of several matrix elements (`M._11_22`) compiles under fxc; glslang's SPIR-V back end writes
-// a constant in its place. A warning at the swizzle says so (an error would refuse effects whose swizzle
-// feeds nothing, such as a function D3DX ran on the host); single elements and rows, which glslang
-// indexes, compile clean.
-TEST(HlslLegalization, AMatrixSwizzleGlslangReadsAsAConstantIsAWarningAtIt) {
+// a constant in its place unless the swizzle is rewritten into its elements: every read compiles clean,
+// of a matrix whose evaluation has no side effects (a parameter, an array element, a member, a product)
+// and of one evaluated once into a temporary (a call's result), in a function or a static's initializer
+// (the frames: the runtime tests' MatrixSwizzles).
+TEST(HlslLegalization, AMatrixSwizzleReadCompilesClean) {
     DiagnosticList diags;
     auto effect = parse(R"(float4x4 M;
+float4x4 Bones[2];
+int Bone = 1;
+struct Frame { float3x3 basis; };
+float4x4 twice() { return M * 2; }
+static float2 Scale = twice()._11_22;
 float4 PS() : COLOR {
-    float2 diagonal = M._11_22;
-    return float4(diagonal, M._m01 + M[2].y, 1);
+    Frame f;
+    f.basis = (float3x3)M;
+    float2 diagonal = M._11_22 + M._m01_m10.yx + twice()._21_12 * Scale;
+    float3 picked = Bones[Bone]._12_23_34 + f.basis._m02_m11_m20 + mul(M, M)._41_42_43;
+    return float4(diagonal, M._m01 + M[2].y, dot(picked, Bones[(int)M._44]._14_24_34)) + Bones[0]._11_22_33_44;
 }
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
                         diags);
     ASSERT_TRUE(effect) << diags.str();
-    compilesWithOneWarning(effect, DiagId::HlslWarning, 3, "swizzle of 2 matrix elements reads a constant");
+    EXPECT_TRUE(compilesClean(effect));
+}
 
-    DiagnosticList rowsOnly;
-    auto elementsAndRows = parse(R"(float4x4 M;
-float4 PS() : COLOR { return float4(float2(M._11, M._22), M._m01 + M[2].y, 1); }
+// A swizzle written through an `out` argument still compiles to glslang's constant, with a warning at it
+// (an error would refuse effects whose swizzle feeds nothing, such as a function D3DX ran on the host).
+TEST(HlslLegalization, AMatrixSwizzleAnOutArgumentWritesIsAWarningAtIt) {
+    DiagnosticList diags;
+    auto written = parse(R"(float4x4 M;
+void halve(out float3 v) { v = 0.5; }
+float4 PS() : COLOR {
+    float4x4 w = M;
+    halve(w._11_22_33);
+    return w[0];
+}
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
-                                 rowsOnly);
-    ASSERT_TRUE(elementsAndRows) << rowsOnly.str();
-    EXPECT_TRUE(compilesClean(elementsAndRows));
+                         diags);
+    ASSERT_TRUE(written) << diags.str();
+    const Diagnostic warning =
+        compilesWithOneWarning(written, DiagId::HlslWarning, 5, "swizzle of 3 matrix elements written here");
+    EXPECT_NE(warning.message.find("float3 v; f(v); m._11_22_33 = v;"), std::string::npos) << warning.message;
 }
 
 }  // namespace
