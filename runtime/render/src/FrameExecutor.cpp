@@ -388,8 +388,8 @@ void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) co
         const ConvexVolume frustum = frustumPlanes(volume.viewProjection);
         bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, list);
     } else {
-        bvh.query([&](const Aabb& box) { return casterReaches(volume.region, volume.viewProjection, box); },
-                  list);
+        mResources.cullCache.footprints(bvh, volume.sceneStamp, volume.viewProjection)
+            .query(bvh, volume.region, list);
     }
     visible.insert(visible.end(), list.begin(), list.end());
 }
