@@ -676,7 +676,11 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     {
         // The records timed as one binding scope, the preshaders' share nested (PassTimer::Scope).
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        for (uint32_t index : mVisible) {
+        // A few objects ahead: far enough that their records arrive before they are compared.
+        constexpr size_t kPrefetchAhead = 8;
+        for (size_t i = 0; i < mVisible.size(); ++i) {
+            if (i + kPrefetchAhead < mVisible.size()) batched.prefetchRecord(mVisible[i + kPrefetchAhead]);
+            const uint32_t index = mVisible[i];
             const SceneObject& object = mScene.objects[index];
             switch (batched.recordNeed(index, object)) {
                 case BatchedPass::RecordNeed::Nothing:
