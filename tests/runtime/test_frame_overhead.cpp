@@ -229,6 +229,33 @@ TEST(FrameOverhead, HostFileFramesOnDualL) {
     EXPECT_EQ(overhead.allocations, 0u);
 }
 
+// A host file's step that dispatches a compute pass with a group count from a parameter: the count is read
+// where the parameter holds it, not copied, so these frames allocate nothing either. Two frames put the
+// particles on screen; then the count is 0, so that they stay there through the counted frames.
+TEST(FrameOverhead, HostFileDispatchFramesOnDualL) {
+    std::unique_ptr<EffectRenderer> renderer =
+        shadowfx::test::loadEffect(shadowfx::test::sourcePath("tests/data/d3d10/compute_particles.fx"), true);
+    fx::DiagnosticList diagnostics;
+    std::shared_ptr<const fx::HostFile> host = parseHostJson(
+        R"({"frame": [{"technique": "Particles", "pass": "Advance", "dispatch": ["GroupCount", 1, 1]},
+                      {"technique": "Particles", "pass": "Draw", "draw": "nothing",
+                       "clear": {"color": [0, 0, 0, 1]}},
+                      {"technique": "Particles", "pass": "Draw", "draw": "quad"}]})",
+        "dispatch.json", diagnostics);
+    ASSERT_TRUE(renderer && host && renderer->setHostFile(host, diagnostics)) << diagnostics.str();
+    const std::optional<Scene> scene = makeBuiltinScene("dual-l");
+    ASSERT_TRUE(scene);
+    FrameOptions options;
+    options.width = 128;
+    options.height = 96;
+    for (int frame = 0; frame < 2; ++frame)
+        ASSERT_TRUE(renderer->render(*scene, options, diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(renderer->variable("GroupCount").setInt(0));
+    const Overhead overhead = frameOverhead(std::move(renderer), "", "dual-l", kFrames, 0.0f, true);
+    EXPECT_EQ(overhead.lookups, 0u);
+    EXPECT_EQ(overhead.allocations, 0u);
+}
+
 // The compiler classified every parameter's semantic (fx::SemanticBinding) and every stage's effects
 // (fx::StageEffects): creating a renderer reads neither from text.
 TEST(FrameOverhead, CreatingTheThesisRendererLooksUpNoName) {

@@ -1,5 +1,7 @@
 // Leave-out (FrameOptions::leaveOut): what it leaves out must never change the image.
 // - InstanceBvh queries return exactly what a brute-force test of every box returns;
+// - a light's cull from kept footprints (CasterFootprints) returns what a fresh cull returns, frame after
+//   frame of an orbiting camera, under directional and spot lights and after the light moved;
 // - the intersection body B's light-space region contains every point of frustum ∩ bounds;
 // - frames with and without leave-out are identical, byte for byte, for the thesis effect's techniques
 //   (plain, PCF, jittered, hardware) and directional and spot lights, with a camera that sees part of a
@@ -9,6 +11,7 @@
 //   and rerun when the light moved, every frame identical to a frame without leave-out;
 // - the per-pass counts add up.
 #include <private/runtime/FramePlan.h>
+#include <runtime/CasterFootprints.h>
 #include <runtime/InstanceBvh.h>
 #include <runtime/IntersectionBody.h>
 #include "LeaveOutFrames.h"
@@ -76,6 +79,53 @@ TEST(InstanceBvh, QueriesMatchBruteForce) {
             EXPECT_EQ(found, expected) << "trial " << trial << (which == 0 ? " frustum" : " casters");
         }
     }
+}
+
+// An orbiting camera under a light that stands: the region moves every frame, the footprints are kept,
+// and each frame's list is the one a fresh cull (casterReaches on every box it reaches) gives.
+TEST(CasterFootprints, KeptCullEqualsFreshCullOverAMovingCamera) {
+    std::mt19937 rng(31);
+    std::vector<Aabb> boxes = randomBoxes(rng, 3000);
+    std::vector<bool> present(boxes.size(), true);
+    present[5] = false;
+    const InstanceBvh bvh(boxes, present);
+    const Bounds bounds{glm::vec3(-50, -10, -50), glm::vec3(55, 15, 55)};
+    const glm::mat4 directional = glm::orthoLH_ZO(-80.0f, 80.0f, -80.0f, 80.0f, 0.0f, 250.0f) *
+                                  glm::lookAtLH(glm::vec3(40, 80, -30), glm::vec3(0), glm::vec3(0, 1, 0));
+    // A spot light inside the field: boxes behind it and across its plane.
+    const glm::mat4 spot = glm::perspectiveLH_ZO(glm::radians(90.0f), 1.0f, 0.5f, 200.0f) *
+                           glm::lookAtLH(glm::vec3(0, 12, 0), glm::vec3(20, 0, 5), glm::vec3(0, 1, 0));
+    const glm::mat4 lights[] = {directional, spot, directional};
+    CasterFootprints kept;
+    uint64_t treeStamp = 1;
+    int nonEmpty = 0, changed = 0;
+    std::vector<uint32_t> previous;
+    for (size_t l = 0; l < std::size(lights); ++l) {
+        const glm::mat4& light = lights[l];
+        EXPECT_FALSE(kept.holds(treeStamp, light));  // one light's footprints at a time
+        kept.reset(bvh, treeStamp, light);
+        for (int frame = 0; frame < 40; ++frame) {
+            const float angle = glm::radians(4.0f * static_cast<float>(frame + 10 * static_cast<int>(l)));
+            const glm::vec3 eye(45.0f * std::cos(angle), 12.0f, 45.0f * std::sin(angle));
+            const glm::mat4 camera = cameraViewProjection(eye, glm::vec3(0, 0, 0), 50.0f, 70.0f);
+            ReceiverRegion region =
+                receiverRegion(intersectionBodyPoints(camera, bounds), light, glm::vec2(2048), 2.0f);
+            region.castersBehindLightPlaneCastNothing = l == 1 && frame % 2 == 0;
+            ASSERT_TRUE(kept.holds(treeStamp, light));
+            std::vector<uint32_t> found, fresh;
+            kept.query(bvh, region, found);
+            bvh.query([&](const Aabb& box) { return casterReaches(region, light, box); }, fresh);
+            ASSERT_EQ(found, fresh) << "light " << l << ", frame " << frame;
+            nonEmpty += found.empty() ? 0 : 1;
+            changed += found != previous ? 1 : 0;
+            previous = found;
+        }
+    }
+    // The region really moved the lists, and they held objects to keep.
+    EXPECT_GT(nonEmpty, 100);
+    EXPECT_GT(changed, 60);
+    // Another tree state forgets what was kept.
+    EXPECT_FALSE(kept.holds(treeStamp + 1, directional));
 }
 
 // Every point of frustum ∩ bounds projects into the receiver region; a box around such a point, or

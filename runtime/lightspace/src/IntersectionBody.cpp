@@ -160,20 +160,18 @@ ReceiverRegion receiverRegion(const std::vector<glm::vec3>& points, const glm::m
     return region;
 }
 
-Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewProjection, const Aabb& box) {
-    if (region.empty) return Overlap::Outside;
-    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
-    int behind = 0;  // corners at w <= 0: behind the light's plane
+LightFootprint lightFootprint(const glm::mat4& lightViewProjection, const Aabb& box) {
+    LightFootprint footprint;
     const std::array<glm::vec3, 8> corners = boxCorners(box.min, box.max);
     // Each corner transformed once: the light's cull tests every node of the scene's tree it reaches.
     std::array<glm::vec4, 8> clips;
     for (size_t i = 0; i < corners.size(); ++i) {
         clips[i] = lightViewProjection * glm::vec4(corners[i], 1.0f);
-        behind += clips[i].w <= 1e-6f ? 1 : 0;
+        footprint.behind += clips[i].w <= 1e-6f ? 1 : 0;
     }
-    if (behind == 8 && region.castersBehindLightPlaneCastNothing) return Overlap::Outside;
-    if (behind > 0) return Overlap::Partial;  // crosses the light's plane: keep, look closer
+    if (footprint.behind > 0) return footprint;
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
     for (const glm::vec4& clip : clips) {
         const glm::vec3 ndc = glm::vec3(clip) / clip.w;
         lo = glm::min(lo, glm::vec2(ndc));
@@ -181,16 +179,33 @@ Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewPr
         nearest = std::min(nearest, ndc.z);
         farthest = std::max(farthest, ndc.z);
     }
+    footprint.lo = lo;
+    footprint.hi = hi;
+    footprint.nearest = nearest;
+    footprint.farthest = farthest;
+    return footprint;
+}
+
+Overlap casterReaches(const ReceiverRegion& region, const LightFootprint& footprint) {
+    if (region.empty) return Overlap::Outside;
+    if (footprint.behind == 8 && region.castersBehindLightPlaneCastNothing) return Overlap::Outside;
+    if (footprint.behind > 0) return Overlap::Partial;  // crosses the light's plane: keep, look closer
     const glm::vec2 regionMin = region.full ? glm::vec2(-1.0f) : region.min;
     const glm::vec2 regionMax = region.full ? glm::vec2(1.0f) : region.max;
     const float slack = 1e-5f;
+    const glm::vec2 lo = footprint.lo, hi = footprint.hi;
     if (hi.x < regionMin.x - slack || hi.y < regionMin.y - slack || lo.x > regionMax.x + slack ||
-        lo.y > regionMax.y + slack || nearest > region.maxDepth)
+        lo.y > regionMax.y + slack || footprint.nearest > region.maxDepth)
         return Overlap::Outside;
     if (lo.x >= regionMin.x && lo.y >= regionMin.y && hi.x <= regionMax.x && hi.y <= regionMax.y &&
-        farthest <= region.maxDepth)
+        footprint.farthest <= region.maxDepth)
         return Overlap::Inside;
     return Overlap::Partial;
+}
+
+Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewProjection, const Aabb& box) {
+    if (region.empty) return Overlap::Outside;
+    return casterReaches(region, lightFootprint(lightViewProjection, box));
 }
 
 }  // namespace runtime

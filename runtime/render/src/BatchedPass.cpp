@@ -95,6 +95,16 @@ BatchedPass::RecordNeed BatchedPass::recordNeed(size_t index, const SceneObject&
     return stamps.contextGeneration == mContextGeneration ? RecordNeed::Nothing : RecordNeed::ViewPart;
 }
 
+void BatchedPass::prefetchRecord(size_t index) const {
+    if (index >= mStamps.size()) return;
+    __builtin_prefetch(&mStamps[index]);
+    const uint8_t* record = mRecords.data() + index * mVariant.recordSize;
+    for (const Span& span : mViewSpans) {  // its first and last bytes: a span may straddle cache lines
+        __builtin_prefetch(record + span.offset);
+        __builtin_prefetch(record + span.offset + span.size - 1);
+    }
+}
+
 namespace {
 
 const fx::Value* fieldValue(const fx::UniformBinding& field, const std::vector<fx::Value>& parameters,

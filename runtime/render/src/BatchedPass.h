@@ -60,6 +60,10 @@ public:
     // whole.
     enum class RecordNeed { Nothing, ViewPart, Whole };
     RecordNeed recordNeed(size_t index, const SceneObject& object);
+    // Asks the CPU to fetch object `index`'s stamps and record ahead of recordNeed and the packs: a pass
+    // reads the records of its visible objects, scattered over every object's, and with a moving camera
+    // each compare of a view part otherwise waits on memory.
+    void prefetchRecord(size_t index) const;
     // Packs object `index`'s record whole from the bound values and the evaluated compile arguments.
     void packRecord(size_t index, const SceneObject& object, const std::vector<fx::Value>& parameters,
                     const std::vector<fx::Value>& arguments);

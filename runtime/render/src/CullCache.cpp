@@ -44,4 +44,19 @@ void CullCache::reserve(size_t objects) {
     for (Entry& entry : mEntries) entry.visible.reserve(objects);
 }
 
+CasterFootprints& CullCache::footprints(const InstanceBvh& bvh, uint64_t sceneStamp,
+                                        const glm::mat4& lightViewProjection) {
+    Light* oldest = &mLights.front();
+    for (Light& light : mLights) {
+        if (light.footprints.holds(sceneStamp, lightViewProjection)) {
+            light.lastUse = ++mClock;
+            return light.footprints;
+        }
+        if (light.lastUse < oldest->lastUse) oldest = &light;
+    }
+    oldest->lastUse = ++mClock;
+    oldest->footprints.reset(bvh, sceneStamp, lightViewProjection);
+    return oldest->footprints;
+}
+
 }  // namespace runtime

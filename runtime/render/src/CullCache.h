@@ -2,9 +2,11 @@
 // scene's change costs. A draw culls against the camera's frustum or a light's receiver region
 // (FrameExecutor::cull); while the scene's objects (the scene cache's stamp), the volume's view-projection
 // and its region stand still, the list is the same and is not traversed again, and passes of one frame that
-// cull against the same volume share one traversal.
+// cull against the same volume share one traversal. A light's volume whose region moved is culled again, from
+// the footprints of the tree kept for its matrix (CasterFootprints).
 #pragma once
 
+#include <runtime/CasterFootprints.h>
 #include <runtime/IntersectionBody.h>
 
 #include <glm/glm.hpp>
@@ -34,6 +36,10 @@ public:
     // Gives every list room for `objects` (the scene's object count): a list then never grows, and a
     // volume first culled frames after the first allocates nothing either.
     void reserve(size_t objects);
+    // The footprints of `bvh` (the scene of `sceneStamp`) under a light's matrix: those kept for it, or
+    // the least recently used light's reset for it.
+    CasterFootprints& footprints(const InstanceBvh& bvh, uint64_t sceneStamp,
+                                 const glm::mat4& lightViewProjection);
 
 private:
     // A frame culls against a few volumes (the camera, each light or cascade it renders).
@@ -47,6 +53,13 @@ private:
     static bool same(const Volume& a, const Volume& b);
 
     std::array<Entry, kEntries> mEntries;
+    // A frame culls against a light or a few (a cascade's maps).
+    static constexpr size_t kLights = 4;
+    struct Light {
+        uint64_t lastUse = 0;
+        CasterFootprints footprints;
+    };
+    std::array<Light, kLights> mLights;
     uint64_t mClock = 0;
 };
 

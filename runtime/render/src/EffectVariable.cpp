@@ -215,6 +215,14 @@ fx::Value EffectVariable::value() const {
     return part;
 }
 
+std::span<const float> EffectVariable::components() const {
+    if (!isValid()) return {};
+    const std::span<const float> whole(mResources->values[mParameter].data);
+    if (isWhole()) return whole;
+    const size_t first = std::min(mFirst, whole.size());
+    return whole.subspan(first, std::min(mResources->effect().componentCount(mType), whole.size() - first));
+}
+
 // [SECTION] Textures
 
 bool EffectVariable::setTexture(GLuint name) {

@@ -395,8 +395,8 @@ void FrameExecutor::cull(const PlannedOp* op, std::vector<uint32_t>& visible) co
         const ConvexVolume frustum = frustumPlanes(volume.viewProjection);
         bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, list);
     } else {
-        bvh.query([&](const Aabb& box) { return casterReaches(volume.region, volume.viewProjection, box); },
-                  list);
+        mResources.cullCache.footprints(bvh, volume.sceneStamp, volume.viewProjection)
+            .query(bvh, volume.region, list);
     }
     visible.insert(visible.end(), list.begin(), list.end());
 }
@@ -683,7 +683,11 @@ void FrameExecutor::drawBatched(const fx::CompiledPass& pass, size_t passIndex, 
     {
         // The records timed as one binding scope, the preshaders' share nested (PassTimer::Scope).
         PassTimer::Scope bindingTime(mTimer, &FrameCpuTime::bindingNs);
-        for (uint32_t index : mVisible) {
+        // A few objects ahead: far enough that their records arrive before they are compared.
+        constexpr size_t kPrefetchAhead = 8;
+        for (size_t i = 0; i < mVisible.size(); ++i) {
+            if (i + kPrefetchAhead < mVisible.size()) batched.prefetchRecord(mVisible[i + kPrefetchAhead]);
+            const uint32_t index = mVisible[i];
             const SceneObject& object = mScene.objects[index];
             switch (batched.recordNeed(index, object)) {
                 case BatchedPass::RecordNeed::Nothing:

@@ -166,8 +166,7 @@ std::optional<std::array<uint32_t, 3>> dispatchGroups(const HostStep& step,
             groups[given++] = step.dispatch[t].count;
             continue;
         }
-        const fx::Value value = parameters[t].value();
-        for (float count : value.data) {
+        for (float count : parameters[t].components()) {
             if (given == 3 || !(count >= 0.0f)) return std::nullopt;
             groups[given++] = static_cast<uint32_t>(count);
         }

@@ -33,8 +33,14 @@ public:
     // Appends to `out` (ascending) every present object whose box `test` does not reject.
     template <class Test>
     void query(const Test& test, std::vector<uint32_t>& out) const;
+    // The same, with the tests given what they test by index: `nodeTest(node, box)` with the node's index
+    // (below nodeCount()), `objectTest(object, box)` with the object's. A caller keeping what it derived
+    // from each box (CasterFootprints) finds it there.
+    template <class NodeTest, class ObjectTest>
+    void query(const NodeTest& nodeTest, const ObjectTest& objectTest, std::vector<uint32_t>& out) const;
 
     size_t nodeCount() const { return mNodes.size(); }
+    size_t objectCount() const { return mBoxes.size(); }  // present or not
     const Aabb& box(size_t object) const { return mBoxes[object]; }
     bool empty() const { return mNodes.empty(); }
     const Aabb& rootBox() const { return mNodes.front().box; }  // not when empty()
@@ -57,6 +63,13 @@ private:
 
 template <class Test>
 void InstanceBvh::query(const Test& test, std::vector<uint32_t>& out) const {
+    const auto byBox = [&test](uint32_t, const Aabb& box) { return test(box); };
+    query(byBox, byBox, out);
+}
+
+template <class NodeTest, class ObjectTest>
+void InstanceBvh::query(const NodeTest& nodeTest, const ObjectTest& objectTest,
+                        std::vector<uint32_t>& out) const {
     if (mNodes.empty()) return;
     const size_t start = out.size();
     uint32_t stack[64];
@@ -65,7 +78,7 @@ void InstanceBvh::query(const Test& test, std::vector<uint32_t>& out) const {
     while (top > 0) {
         const uint32_t index = stack[--top];
         const Node& node = mNodes[index];
-        const Overlap overlap = test(node.box);
+        const Overlap overlap = nodeTest(index, node.box);
         if (overlap == Overlap::Outside) continue;
         if (overlap == Overlap::Inside) {
             collect(index, out);
@@ -77,7 +90,7 @@ void InstanceBvh::query(const Test& test, std::vector<uint32_t>& out) const {
             continue;
         }
         for (uint32_t i = node.first; i < node.first + node.count; ++i)
-            if (test(mBoxes[mOrder[i]]) != Overlap::Outside) out.push_back(mOrder[i]);
+            if (objectTest(mOrder[i], mBoxes[mOrder[i]]) != Overlap::Outside) out.push_back(mOrder[i]);
     }
     ascend(out, start);
 }

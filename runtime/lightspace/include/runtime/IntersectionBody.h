@@ -63,4 +63,17 @@ ReceiverRegion fullLightRegion();
 // Can a caster in `box`, extruded away from the light, meet the region? Conservative.
 Overlap casterReaches(const ReceiverRegion& region, const glm::mat4& lightViewProjection, const Aabb& box);
 
+// What casterReaches reads of a box: its corners' extent in the light's NDC. Apart from the region, so
+// that a cull under a light that stands keeps it while the receivers move (CasterFootprints.h).
+struct LightFootprint {
+    glm::vec2 lo{0.0f};  // NDC x, y of the corners: set only where no corner is behind
+    glm::vec2 hi{0.0f};
+    float nearest = 0.0f;  // NDC depth of the corners: likewise
+    float farthest = 0.0f;
+    int behind = 0;  // corners at clip w <= 0: behind the light's plane
+};
+LightFootprint lightFootprint(const glm::mat4& lightViewProjection, const Aabb& box);
+// casterReaches for the box whose footprint this is: the same comparisons, the same answer.
+Overlap casterReaches(const ReceiverRegion& region, const LightFootprint& footprint);
+
 }  // namespace runtime

@@ -111,6 +111,9 @@ public:
     bool setValue(const fx::Value& value);
     // The current value (an element's or member's part of its parameter's); a zero float when invalid.
     fx::Value value() const;
+    // The current value's numbers where the parameter holds them, without a copy: valid until the next
+    // setter or frame. Empty when invalid; a part the parameter's value does not hold is left out.
+    std::span<const float> components() const;
 
     // [SECTION] Textures
     // Samples the application's GL texture `name` wherever the effect samples this texture parameter (its
