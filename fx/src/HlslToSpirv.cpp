@@ -124,7 +124,7 @@ public:
 };
 
 // The highest id of the symbols of a tree.
-class SymbolIds : public glslang::TIntermTraverser {
+class HighestSymbolId : public glslang::TIntermTraverser {
 public:
     long long highest = 0;
 
@@ -158,8 +158,12 @@ public:
     // Post-order: a swizzle inside the matrix operand (an index) is rewritten before the swizzle around it.
     bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
         if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
+        if (isWritten(node)) {
+            if (!writeOneElement(node)) warnAt(node, Reason::Written);
+            return true;
+        }
         glslang::TIntermTyped* elements = readOfElements(node);
-        if (!elements || !replaceInParent(node, elements)) warnAt(node);
+        if (!elements || !replaceChild(getParentNode(), node, elements)) warnAt(node, Reason::NotRewritable);
         return true;
     }
 
@@ -234,14 +238,85 @@ private:
         return intermediate.setAggregateOperator(vector, construct, vectorType, at);
     }
 
-    // Puts `to` where the parent holds `from`; false where `from` is written (an assignment's target, an
-    // `out` argument) or the parent is a node glslang gives no way to change (a loop's step
-    // expression).
-    bool replaceInParent(glslang::TIntermTyped* from, glslang::TIntermTyped* to) {
-        TIntermNode* parent = getParentNode();
+    // Whether the swizzle's elements are written: the swizzle, or an element or vector swizzle of it
+    // (`m._11_22.x`, `m._11_22[0]`), is an assignment's target, incremented or decremented, or an `out`
+    // argument. A constructor put in its place could not be written (glslang would store through a value).
+    bool isWritten(const glslang::TIntermTyped* swizzle) const {
+        const TIntermNode* written = swizzle;
+        for (size_t i = path.size(); i-- > 0;) {
+            const TIntermNode* parent = path[i];
+            if (const glslang::TIntermBinary* binary = parent->getAsBinaryNode()) {
+                if (binary->getLeft() != written) return false;
+                if (binary->modifiesState()) return true;
+                const glslang::TOperator op = binary->getOp();
+                if (op != glslang::EOpIndexDirect && op != glslang::EOpIndexIndirect &&
+                    op != glslang::EOpVectorSwizzle)
+                    return false;
+                written = parent;
+                continue;
+            }
+            if (const glslang::TIntermUnary* unary = parent->getAsUnaryNode()) return unary->modifiesState();
+            if (const glslang::TIntermAggregate* aggregate = parent->getAsAggregate()) {
+                const glslang::TIntermSequence& operands = aggregate->getSequence();
+                for (size_t operand = 0; operand < operands.size(); ++operand)
+                    if (operands[operand] == written)
+                        return writesOperand(*aggregate, operand, aggregate->getQualifierList());
+            }
+            return false;
+        }
+        return false;
+    }
+
+    // A written swizzle whose element or vector swizzle picks one element by constants (`m._11_22.y = e;`,
+    // `m._11_22[1]++`, `f(m._11_22.x)` with an `out` parameter): that chain replaced by the element itself,
+    // `m[1][1]`, which can be written. False (nothing changed) for any other write.
+    bool writeOneElement(glslang::TIntermBinary* swizzle) {
+        glslang::TIntermTyped* matrix = swizzle->getLeft();
+        if (!isSideEffectFree(matrix)) return false;
+        const glslang::TIntermSequence& selectors = swizzle->getRight()->getAsAggregate()->getSequence();
+        std::vector<size_t> picked;  // into the swizzle's elements
+        for (size_t i = 0; i + 1 < selectors.size(); i += 2) picked.push_back(i / 2);
+        glslang::TIntermTyped* chain = swizzle;
+        size_t depth = path.size();
+        while (depth > 0) {
+            glslang::TIntermBinary* parent = path[depth - 1]->getAsBinaryNode();
+            if (!parent || parent->getLeft() != chain) break;
+            const glslang::TOperator op = parent->getOp();
+            std::vector<size_t> narrowed;
+            if (op == glslang::EOpVectorSwizzle) {
+                for (const TIntermNode* component : parent->getRight()->getAsAggregate()->getSequence())
+                    narrowed.push_back(component->getAsConstantUnion()->getConstArray()[0].getIConst());
+            } else if (op == glslang::EOpIndexDirect && parent->getRight()->getAsConstantUnion()) {
+                narrowed.push_back(parent->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst());
+            } else {
+                break;
+            }
+            for (size_t& n : narrowed) {
+                if (n >= picked.size()) return false;
+                n = picked[n];
+            }
+            picked = std::move(narrowed);
+            chain = parent;
+            --depth;
+        }
+        if (picked.size() != 1 || chain == swizzle || depth == 0) return false;
+        const glslang::TSourceLoc& at = swizzle->getLoc();
+        const glslang::TType columnType(matrix->getType(), 0);
+        glslang::TIntermTyped* column = intermediate.addIndex(glslang::EOpIndexDirect, matrix,
+                                                              selectors[2 * picked[0]]->getAsTyped(), at);
+        column->setType(columnType);
+        glslang::TIntermTyped* element = intermediate.addIndex(
+            glslang::EOpIndexDirect, column, selectors[2 * picked[0] + 1]->getAsTyped(), at);
+        element->setType(glslang::TType(columnType, 0));
+        return replaceChild(path[depth - 1], chain, element);
+    }
+
+    // Puts `to` where `parent` holds `from`; false where the parent is a node glslang gives no way to
+    // change (a loop's step expression).
+    bool replaceChild(TIntermNode* parent, glslang::TIntermTyped* from, glslang::TIntermTyped* to) {
         if (!parent) return false;
         if (glslang::TIntermBinary* binary = parent->getAsBinaryNode()) {
-            if (binary->getLeft() == from && !binary->modifiesState()) {
+            if (binary->getLeft() == from) {
                 binary->setLeft(to);
                 return true;
             }
@@ -250,17 +325,13 @@ private:
             return true;
         }
         if (glslang::TIntermUnary* unary = parent->getAsUnaryNode()) {
-            if (unary->modifiesState()) return false;
             unary->setOperand(to);
             return true;
         }
         if (glslang::TIntermAggregate* aggregate = parent->getAsAggregate()) {
-            glslang::TIntermSequence& operands = aggregate->getSequence();
-            const glslang::TQualifierList& qualifiers = aggregate->getQualifierList();
-            for (size_t i = 0; i < operands.size(); ++i) {
-                if (operands[i] != from) continue;
-                if (writesOperand(*aggregate, i, qualifiers)) return false;
-                operands[i] = to;
+            for (TIntermNode*& operand : aggregate->getSequence()) {
+                if (operand != from) continue;
+                operand = to;
                 return true;
             }
             return false;
@@ -293,18 +364,29 @@ private:
         return i == 1 && (call.getOp() == glslang::EOpModf || call.getOp() == glslang::EOpFrexp);
     }
 
-    void warnAt(const glslang::TIntermBinary* swizzle) {
+    enum class Reason {
+        Written,        // isWritten: the fix is the user's, through a vector variable
+        NotRewritable,  // no constructor for the element type, or a parent glslang gives no way to change
+    };
+
+    void warnAt(const glslang::TIntermBinary* swizzle, Reason reason) {
         const glslang::TSourceLoc& at = swizzle->getLoc();
-        const int elements = swizzle->getType().getVectorSize();
-        leftAsTheyAre.push_back(
-            {false, at.getFilenameStr(), at.line, at.column,
-             "'.' : a swizzle of " + std::to_string(elements) +
-                 " matrix elements written here compiles to a constant (glslang compiles it to an element "
-                 "index, not the elements fxc wrote; shadowfx rewrites the swizzles it reads): write a "
-                 "vector "
-                 "variable and assign it after, e.g. float" +
-                 std::to_string(elements) + " v; f(v); m." + (elements > 2 ? "_11_22_33" : "_11_22") +
-                 " = v;"});
+        const std::string elements = std::to_string(swizzle->getType().getVectorSize());
+        const std::string example = swizzle->getType().getVectorSize() > 2 ? "_11_22_33" : "_11_22";
+        const std::string text =
+            reason == Reason::Written
+                ? "'.' : a swizzle of " + elements +
+                      " matrix elements written here compiles to a constant (glslang compiles it to an "
+                      "element index, not the elements fxc wrote; shadowfx rewrites the swizzles it reads): "
+                      "write a vector variable and assign it after, e.g. float" +
+                      elements + " v; f(v); m." + example + " = v;"
+                : "'.' : a swizzle of " + elements +
+                      " matrix elements is not rewritten here and reads a constant (glslang compiles it to "
+                      "an "
+                      "element index, not the elements fxc read): spell the elements one by one, e.g. float" +
+                      elements + "(m._11, m._22" + (swizzle->getType().getVectorSize() > 2 ? ", ..." : "") +
+                      ")";
+        leftAsTheyAre.push_back({false, at.getFilenameStr(), at.line, at.column, text});
     }
 };
 
@@ -342,7 +424,7 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
-            SymbolIds symbols;
+            HighestSymbolId symbols;
             program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
             MatrixSwizzleRewriter matrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
             program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);

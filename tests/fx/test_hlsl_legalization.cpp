@@ -309,5 +309,30 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_NE(warning.message.find("float3 v; f(v); m._11_22_33 = v;"), std::string::npos) << warning.message;
 }
 
+// One element of the swizzle written (`w._11_22.x = e;`, `[1]`, an `out` argument, `++`): that element is
+// written (its value: MatrixSwizzles in tests/runtime/), no warning; glslang alone crashed on each.
+TEST(HlslLegalization, AWriteThroughOneElementOfAMatrixSwizzleCompilesClean) {
+    for (const char* write :
+         {"w._11_22.x = 0.5;", "w._11_22[1] = 0.5;", "halve(w._11_22.y);", "w._11_22.x++;"}) {
+        DiagnosticList diags;
+        auto written = parse(std::string(R"(float4x4 M;
+void halve(out float v) { v = 0.5; }
+float4 PS() : COLOR {
+    float4x4 w = M;
+    )") + write + R"(
+    return w[0];
+}
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                             diags);
+        ASSERT_TRUE(written) << write << "\n" << diags.str();
+        DiagnosticList compileDiags;
+        EXPECT_TRUE(compileEffect(written, CompileOptions{}, compileDiags)) << write << "\n"
+                                                                            << compileDiags.str();
+        EXPECT_TRUE(compileDiags.items().empty()) << write << "\n" << compileDiags.str();
+    }
+}
+
 }  // namespace
 }  // namespace fx

@@ -55,6 +55,16 @@ float4 WritesPS(QuadOut IN) : COLOR {
     v._13_31_44 = float3(0.05, 0.95, 0.85);
     return IN.UV.x < 0.5 ? float4(w._m01, w._m10, w._11, w._22) : float4(v._m02, v._m20, v._m33, v._m12);
 }
+void toQuarter(out float x) { x = 0.25; }
+float4 ElementWritesPS(QuadOut IN) : COLOR {
+    float4x4 w = M;
+    w._12_21.y = 0.95;
+    w._33_44[0] = 0.05;
+    toQuarter(w._13_31.x);
+    w._22_11.x *= 0.5;
+    w._34_43.x++;
+    return IN.UV.x < 0.5 ? float4(w._21, w._33, w._13, w._22) : float4(w._12, w._11, w._31, w._34 - 1.0);
+}
 technique Pairs < string Script = "Pass=p;"; > {
     pass p < string Script = "Draw=Buffer;"; > {
         ZEnable = false;
@@ -95,6 +105,14 @@ technique Writes < string Script = "Pass=p;"; > {
         PixelShader = compile ps_3_0 WritesPS();
     }
 }
+technique ElementWrites < string Script = "Pass=p;"; > {
+    pass p < string Script = "Draw=Buffer;"; > {
+        ZEnable = false;
+        CullMode = None;
+        VertexShader = compile vs_3_0 QuadVS();
+        PixelShader = compile ps_3_0 ElementWritesPS();
+    }
+}
 )";
 
 using Rgba = std::array<float, 4>;
@@ -126,6 +144,9 @@ TEST(MatrixSwizzles, ReadAndWriteTheElementsFxcDid) {
         {"Chains", {0.55f, 0.90f, 0.60f, 0.20f}, {0.50f, 0.20f, 0.25f, 0.10f}},
         {"Calls", {0.10f, 0.25f, 0.30f, 0.05f}, {0.45f, 0.275f, 0.15f, 0.40f}},
         {"Writes", {0.30f, 0.90f, 0.10f, 0.60f}, {0.05f, 0.95f, 0.85f, 0.70f}},
+        // One element of a swizzle written: `_21`, `_33`, `_13` (an `out` argument), `_22` (`*=`), `_34`
+        // (`++`); the rest as M holds them.
+        {"ElementWrites", {0.95f, 0.05f, 0.25f, 0.30f}, {0.20f, 0.10f, 0.90f, 0.35f}},
     };
     for (const Halves& halves : expected) {
         SCOPED_TRACE(halves.technique);
