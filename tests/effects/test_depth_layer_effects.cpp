@@ -470,8 +470,9 @@ TEST_F(DepthLayers, MidpointMapIsTheMeanOfTheLayers) {
 
 // [SECTION] CullClosedOnly
 
-// A back-face map pass (CullMode = CW culls the faces towards the light) with and without the annotation.
-std::string backFaceMapEffect(bool closedOnly) {
+// A light pass into a map of the nearest surface's light depth (blended with Min: no depth target decides
+// what is kept), with the pass annotation `annotation` and the cull mode `cullMode`.
+std::string lightMapEffect(const std::string& annotation, const char* cullMode) {
     return std::string(R"(
 float4x4 WorldLightViewProjection : WorldViewProjection < string frustum = "light0"; >;
 float4 Far = {1, 1, 1, 1};
@@ -483,11 +484,11 @@ float4 PS(Out i) : COLOR { return float4(i.Z.x / i.Z.y, 0, 0, 1); }
 technique t < string Script = "Pass=p;"; >
 {
     pass p < string Script = "RenderColorTarget0=Map; RenderDepthStencilTarget=MapDepth; RenderPort=light0;"
-                             "ClearSetColor=Far; Clear=Color; Draw=Geometry;";
-             bool CullClosedOnly = )") +
-           (closedOnly ? "true" : "false") + R"(; >
+                             "ClearSetColor=Far; Clear=Color; Draw=Geometry;"; )") +
+           annotation + R"(; >
     {
-        CullMode = CW;
+        CullMode = )" +
+           cullMode + R"(;
         ZEnable = false;
         AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; BlendOp = Min;
         VertexShader = compile vs_3_0 VS();
@@ -495,6 +496,11 @@ technique t < string Script = "Pass=p;"; >
     }
 }
 )";
+}
+
+// A back-face map pass (CullMode = CW culls the faces towards the light) with and without the annotation.
+std::string backFaceMapEffect(bool closedOnly) {
+    return lightMapEffect(std::string("bool CullClosedOnly = ") + (closedOnly ? "true" : "false"), "CW");
 }
 
 TEST_F(DepthLayers, CullClosedOnlyKeepsOpenObjectsInABackFacePass) {
@@ -539,32 +545,9 @@ TEST_F(DepthLayers, BackFaceMapKeepsOpenObjectsFrontFacesInTheirOwnChannel) {
 
 // [SECTION] CastersOnly
 
-// The nearest surface's light depth (blended with Min: no depth target decides what is kept), drawn with and
-// without the annotation.
+// Every surface's light depth drawn, with and without the annotation.
 std::string casterMapEffect(bool castersOnly) {
-    return std::string(R"(
-float4x4 WorldLightViewProjection : WorldViewProjection < string frustum = "light0"; >;
-float4 Far = {1, 1, 1, 1};
-texture Map : RENDERCOLORTARGET < float2 Dimensions = {64, 64}; string Format = "R32F"; >;
-texture MapDepth : RENDERDEPTHSTENCILTARGET < float2 Dimensions = {64, 64}; string Format = "D24S8"; >;
-struct Out { float4 Position : POSITION; float2 Z : TEXCOORD0; };
-Out VS(float4 position : POSITION) { Out o; o.Position = mul(float4(position.xyz, 1), WorldLightViewProjection); o.Z = o.Position.zw; return o; }
-float4 PS(Out i) : COLOR { return float4(i.Z.x / i.Z.y, 0, 0, 1); }
-technique t < string Script = "Pass=p;"; >
-{
-    pass p < string Script = "RenderColorTarget0=Map; RenderDepthStencilTarget=MapDepth; RenderPort=light0;"
-                             "ClearSetColor=Far; Clear=Color; Draw=Geometry;";
-             bool CastersOnly = )") +
-           (castersOnly ? "true" : "false") + R"(; >
-    {
-        CullMode = None;
-        ZEnable = false;
-        AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; BlendOp = Min;
-        VertexShader = compile vs_3_0 VS();
-        PixelShader = compile ps_3_0 PS();
-    }
-}
-)";
+    return lightMapEffect(std::string("bool CastersOnly = ") + (castersOnly ? "true" : "false"), "None");
 }
 
 TEST_F(DepthLayers, CastersOnlyLeavesTheScenesNonCastersOutOfALightPass) {
