@@ -589,48 +589,41 @@ technique Textured { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = 
     EXPECT_EQ(selected("Technique=Technique?Simple10:Textured10;"), -1);
 }
 
-TEST(EffectCompiler, AnUnknownLeaveOutConditionIsALocatedError) {
+// An invalid pass annotation the runtime acts on is an error at the annotation, on the pass's line (6),
+// whose message names it.
+void expectPassAnnotationError(const char* annotation, DiagId id, const char* name) {
     DiagnosticList diags;
-    auto effect = parseEffectSource(R"(
+    auto effect = parseEffectSource(
+        std::string(R"(
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 float4 PS() : COLOR { return float4(1, 1, 1, 1); }
 technique t
 {
-    pass p < string LeaveOutWhen = "Sometimes"; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
+    pass p < )") +
+            annotation + R"(; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
 }
 )",
-                                    "leave_out.fx", ParseOptions{}, diags);
+        "annotation.fx", ParseOptions{}, diags);
     ASSERT_TRUE(effect) << diags.str();
     EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
     ASSERT_TRUE(diags.hasErrors());
     const Diagnostic& error = diags.items().back();
-    EXPECT_EQ(error.id, DiagId::LeaveOutWhenInvalid);
-    EXPECT_EQ(error.loc.file, "leave_out.fx");
+    EXPECT_EQ(error.id, id);
+    EXPECT_EQ(error.loc.file, "annotation.fx");
     EXPECT_EQ(error.loc.line, 6);
-    EXPECT_NE(error.message.find("LeaveOutWhen"), std::string::npos);
+    EXPECT_NE(error.message.find(name), std::string::npos) << error.message;
+}
+
+TEST(EffectCompiler, AnUnknownLeaveOutConditionIsALocatedError) {
+    expectPassAnnotationError(R"(string LeaveOutWhen = "Sometimes")", DiagId::LeaveOutWhenInvalid,
+                              "LeaveOutWhen");
 }
 
 // CastersOnly is a bool the compiler resolves into CompiledPass::castersOnly: a string is an error at the
 // annotation, never read as false without a word.
 TEST(EffectCompiler, AStringCastersOnlyIsALocatedError) {
-    DiagnosticList diags;
-    auto effect = parseEffectSource(R"(
-float4 VS(float4 p : POSITION) : POSITION { return p; }
-float4 PS() : COLOR { return float4(1, 1, 1, 1); }
-technique t
-{
-    pass p < string CastersOnly = "true"; > { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); }
-}
-)",
-                                    "casters.fx", ParseOptions{}, diags);
-    ASSERT_TRUE(effect) << diags.str();
-    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, diags));
-    ASSERT_TRUE(diags.hasErrors());
-    const Diagnostic& error = diags.items().back();
-    EXPECT_EQ(error.id, DiagId::AnnotationNumberExpected);
-    EXPECT_EQ(error.loc.file, "casters.fx");
-    EXPECT_EQ(error.loc.line, 6);
-    EXPECT_NE(error.message.find("CastersOnly"), std::string::npos);
+    expectPassAnnotationError(R"(string CastersOnly = "true")", DiagId::AnnotationNumberExpected,
+                              "CastersOnly");
 }
 
 // SPIRV-Cross's own words never reach the user alone: its failure names the shader of the effect and, for a
