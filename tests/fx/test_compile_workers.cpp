@@ -218,41 +218,40 @@ TEST(CompileWorkers, AWorkerThatCannotBeExecutedIsAnErrorNotAHang) {
                              "/README.md' (exec: " + std::strerror(EACCES) + ")");
 }
 
-// A worker that reads its request's frame header and exits with status 3 without answering: the status is
-// the error's value, at the shader function, under its own id.
-TEST(CompileWorkers, AWorkerThatExitsWithoutAnsweringIsAnErrorNamingItsStatus) {
-    const shadowfx::test::ScratchDirectory scratch("exiting_worker");
+// The first error of compiling kGood through a worker script that reads its request's frame header and
+// exits with `status` without answering.
+fx::Diagnostic firstErrorOfAWorkerExitingWith(const char* name, int status) {
+    const shadowfx::test::ScratchDirectory scratch(name);
     const std::string worker = (scratch / "worker.sh").string();
-    std::ofstream(worker) << "#!/bin/sh\nhead -c " << fx::kFrameHeaderBytes << " >/dev/null\nexit 3\n";
+    std::ofstream(worker) << "#!/bin/sh\nhead -c " << fx::kFrameHeaderBytes << " >/dev/null\nexit " << status
+                          << "\n";
     std::filesystem::permissions(worker, std::filesystem::perms::owner_all);
     fx::CompileWorkers workers(fx::CompileWorkerOptions{worker, 1, 20000, 2048});
     Compiled compiled = compileSource(kGood, &workers);
     EXPECT_EQ(compiled.effect, nullptr);
-    ASSERT_TRUE(compiled.diagnostics.hasErrors());
-    const fx::Diagnostic& d = compiled.diagnostics.items()[0];
-    EXPECT_EQ(d.id, fx::DiagId::HlslCompilerExited) << compiled.diagnostics.str();
-    EXPECT_EQ(d.message, "the HLSL compiler's worker exited with status 3 on this shader without answering");
-    EXPECT_TRUE(d.loc.valid());
+    EXPECT_TRUE(compiled.diagnostics.hasErrors());
+    if (compiled.diagnostics.items().empty()) return {};
+    const fx::Diagnostic d = compiled.diagnostics.items()[0];
+    EXPECT_TRUE(d.loc.valid()) << compiled.diagnostics.str();
+    return d;
 }
 
-// A worker that exits with the sanitizer status (a sanitized worker's report, which this script does not
-// print) is that finding, under its own id, with the status as its value; never an ordinary exit.
+// An exit without an answer: the status is the error's value, at the shader function, under its own id.
+TEST(CompileWorkers, AWorkerThatExitsWithoutAnsweringIsAnErrorNamingItsStatus) {
+    const fx::Diagnostic d = firstErrorOfAWorkerExitingWith("exiting_worker", 3);
+    EXPECT_EQ(d.id, fx::DiagId::HlslCompilerExited);
+    EXPECT_EQ(d.message, "the HLSL compiler's worker exited with status 3 on this shader without answering");
+}
+
+// The sanitizer status (a sanitized worker's report, which this script does not print) is that finding,
+// under its own id, with the status as its value; never an ordinary exit.
 TEST(CompileWorkers, AWorkerThatStopsOnASanitizerReportIsThatErrorNamingItsStatus) {
-    const shadowfx::test::ScratchDirectory scratch("sanitizer_report_worker");
-    const std::string worker = (scratch / "worker.sh").string();
-    std::ofstream(worker) << "#!/bin/sh\nhead -c " << fx::kFrameHeaderBytes << " >/dev/null\nexit "
-                          << fx::kWorkerSanitizerExitStatus << "\n";
-    std::filesystem::permissions(worker, std::filesystem::perms::owner_all);
-    fx::CompileWorkers workers(fx::CompileWorkerOptions{worker, 1, 20000, 2048});
-    Compiled compiled = compileSource(kGood, &workers);
-    EXPECT_EQ(compiled.effect, nullptr);
-    ASSERT_TRUE(compiled.diagnostics.hasErrors());
-    const fx::Diagnostic& d = compiled.diagnostics.items()[0];
-    EXPECT_EQ(d.id, fx::DiagId::CompileWorkerSanitizerReport) << compiled.diagnostics.str();
+    const fx::Diagnostic d =
+        firstErrorOfAWorkerExitingWith("sanitizer_report_worker", fx::kWorkerSanitizerExitStatus);
+    EXPECT_EQ(d.id, fx::DiagId::CompileWorkerSanitizerReport);
     EXPECT_EQ(d.message,
               "the HLSL compiler's worker process stopped on a sanitizer report (exit status 86); the "
               "report is on standard error");
-    EXPECT_TRUE(d.loc.valid());
 }
 
 // tests/data/glslang_crashes/: HLSL that crashes glslang. In-process each still kills the process (a
