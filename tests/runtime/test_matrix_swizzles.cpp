@@ -65,54 +65,22 @@ float4 ElementWritesPS(QuadOut IN) : COLOR {
     w._34_43.x++;
     return IN.UV.x < 0.5 ? float4(w._21, w._33, w._13, w._22) : float4(w._12, w._11, w._31, w._34 - 1.0);
 }
-technique Pairs < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 PairsPS();
+// Each technique draws the whole frame with one pixel shader.
+#define FULL_FRAME(name, pixelShader) \
+    technique name < string Script = "Pass=p;"; > { \
+        pass p < string Script = "Draw=Buffer;"; > { \
+            ZEnable = false; \
+            CullMode = None; \
+            VertexShader = compile vs_3_0 QuadVS(); \
+            PixelShader = compile ps_3_0 pixelShader(); \
+        } \
     }
-}
-technique TriplesAndQuads < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 TriplesAndQuadsPS();
-    }
-}
-technique Chains < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 ChainsPS();
-    }
-}
-technique Calls < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 CallsPS();
-    }
-}
-technique Writes < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 WritesPS();
-    }
-}
-technique ElementWrites < string Script = "Pass=p;"; > {
-    pass p < string Script = "Draw=Buffer;"; > {
-        ZEnable = false;
-        CullMode = None;
-        VertexShader = compile vs_3_0 QuadVS();
-        PixelShader = compile ps_3_0 ElementWritesPS();
-    }
-}
+FULL_FRAME(Pairs, PairsPS)
+FULL_FRAME(TriplesAndQuads, TriplesAndQuadsPS)
+FULL_FRAME(Chains, ChainsPS)
+FULL_FRAME(Calls, CallsPS)
+FULL_FRAME(Writes, WritesPS)
+FULL_FRAME(ElementWrites, ElementWritesPS)
 )";
 
 using Rgba = std::array<float, 4>;
