@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 13,
-              "the enum lengths below were pinned at format version 13: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 14,
+              "the enum lengths below were pinned at format version 14: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 36);
 static_assert(enumLength<UniformBinding::Source>() == 2);
@@ -145,7 +145,7 @@ static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
 static_assert(sizeof(SemanticBinding) == 12);
-static_assert(sizeof(ParameterInfo) == 368);
+static_assert(sizeof(ParameterInfo) == 408);
 static_assert(sizeof(EffectProvenance) == 112);
 static_assert(sizeof(CompiledEffect) == 400);
 #endif
@@ -311,7 +311,8 @@ void fields(A& a, SemanticBinding& x) {
 template <class A>
 void fields(A& a, ParameterInfo& x) {
     a(x.name, x.type, x.semantic, x.standard, x.isStatic, x.isShared, x.loc, x.light);
-    a(x.hasParameterization, x.parameterization, x.parameterizationLoc, x.annotations);
+    a(x.hasParameterization, x.parameterization, x.parameterizationLoc, x.viewOf, x.elementCount);
+    a(x.imageSize, x.imageFormat, x.annotations);
 }
 template <class A>
 void fields(A& a, EffectProvenance& x) {

@@ -73,6 +73,15 @@ public:
             const int light = parameter.standard.light;
             if (light < -1 || (light >= 0 && static_cast<size_t>(light) >= mEffect.lights.size()))
                 return Corruption{DiagId::CompiledEffectParameterLightOutOfRange, {parameter.name}};
+            // The runtime binds a view's resource in its place, and makes buffers and images of these sizes.
+            if (parameter.viewOf && (*parameter.viewOf >= mParameters ||
+                                     !(mEffect.parameters[*parameter.viewOf].type.isBuffer() ||
+                                       mEffect.parameters[*parameter.viewOf].type.isImage())))
+                return Corruption{DiagId::CompiledEffectParameterViewOutOfRange, {parameter.name}};
+            const int* size = parameter.imageSize;
+            if (parameter.elementCount < 1 || parameter.elementCount > (1u << 28) || size[0] < 1 ||
+                size[0] > 16384 || size[1] < 1 || size[1] > 16384 || size[2] < 1 || size[2] > 2048)
+                return Corruption{DiagId::CompiledEffectParameterStorageSizeOutOfRange, {parameter.name}};
         }
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters)

@@ -374,6 +374,20 @@ struct ParameterInfo {
     bool hasParameterization = false;
     std::string parameterization;  // "" if the annotation is not a string
     SourceLoc parameterizationLoc;
+    // What the runtime makes for a buffer or read-write texture at load (docs/d3d10.md, "Compute shaders
+    // and read-write resources"), resolved and checked here so that it reads no annotation by name.
+    // `string ViewOf = "...";`: the CompiledEffect::parameters index of the buffer or read-write texture
+    // whose contents this parameter reads (nullopt: its own).
+    std::optional<size_t> viewOf;
+    // A StructuredBuffer's, ByteAddressBuffer's (and their read-write, append and consume forms') or an
+    // RWBuffer's `int ElementCount = N;`: the elements it holds from load on (1 without it).
+    uint32_t elementCount = 1;
+    // An RWTexture's `int Width`, `Height` (64 without them; 1 for an RWTexture1D's height) and the `Depth`
+    // of an RWTexture3D or `ArraySize` of an RWTexture2DArray (1; 1 for the other kinds).
+    int imageSize[3] = {64, 64, 1};
+    // An RWTexture's or RWBuffer's texels: the format the code of the first pass using it declares
+    // (glslang's, from the element type; ImageBinding::format). nullopt where no pass uses it.
+    std::optional<TextureFormat> imageFormat;
     Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
 };
 

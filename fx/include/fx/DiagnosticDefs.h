@@ -912,6 +912,12 @@ FX_DIAGNOSTIC(CompiledEffectParameterLightOutOfRange, Error,
               "the compiled effect file is corrupt: parameter '{0}' is bound to a light out of range")
 FX_DIAGNOSTIC(CompiledEffectClipDistancesOutOfRange, Error,
               "the compiled effect file is corrupt: pass '{0}': a stage writes clip distances out of range")
+FX_DIAGNOSTIC(CompiledEffectParameterViewOutOfRange, Error,
+              "the compiled effect file is corrupt: parameter '{0}' is a view of no buffer or read-write "
+              "texture")
+FX_DIAGNOSTIC(CompiledEffectParameterStorageSizeOutOfRange, Error,
+              "the compiled effect file is corrupt: parameter '{0}': an element count or image size out of "
+              "range")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,
