@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in fuzz/ in the sanitized build, build-asan/ (clang; configured by
 # scripts/configure-sanitized.sh, shared with scripts/test-sanitized.sh, which builds them already), and runs
-# each for SECONDS (default 60) on one core, one after the other. Corpora grow in build-asan/corpus/TARGET/ (seeded from effects/,
-# tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
+# each for SECONDS (default 60) on one core, as many targets at a time as there are cores. Corpora grow in
+# build-asan/corpus/TARGET/ (seeded from effects/, tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
 # any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
 # input. It runs every target before it exits. A finding's lines of the log (the sanitizer's or libFuzzer's
@@ -60,9 +60,12 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
 }
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LP_NUM_THREADS=1
-status=0
-phase_start
-for target in "${targets[@]}"; do
+
+# fuzz_one TARGET: runs one target and writes what CI's log shows of it to build-asan/TARGET.report; its
+# status is the target's verdict. Each target runs on one core, so the targets run as many at a time as
+# there are cores (each still fuzzes for the full SECONDS); their reports are printed in the targets' order.
+fuzz_one() {
+  local target="$1" verdict=0 work log fuzzer_status findings executed finding
   seed "$target"
   mkdir -p "build-asan/artifacts/$target"
   # Run in an empty folder: the scene loader resolves mesh paths there, not in the repository.
@@ -78,12 +81,12 @@ for target in "${targets[@]}"; do
   grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+== ?ERROR|SUMMARY|terminate called|  what\(\))' "$log" ||
     echo "$target: no statistics in $log"
   if [ "$fuzzer_status" -ne 0 ]; then
-    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; status=1
+    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; verdict=1
   fi
   findings=$(find "build-asan/artifacts/$target" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
     -o -name 'timeout-*' -o -name 'oom-*' -o -name 'slow-unit-*' \) | sort)
   if [ -n "$findings" ]; then
-    echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; status=1
+    echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; verdict=1
     # Where the artifacts are out of reach (a CI machine), the log alone must let a developer reproduce
     # the finding: each input's first 4 KiB, base64 (`base64 -d > input`, then run the target on it).
     for finding in $findings; do
@@ -93,10 +96,27 @@ for target in "${targets[@]}"; do
   fi
   executed=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -1)
   if [ "${executed:-0}" -eq 0 ]; then
-    echo "$target: ran no input (log: build-asan/$target.log)"; status=1
+    echo "$target: ran no input (log: build-asan/$target.log)"; verdict=1
   fi
   echo "corpus: $(ls "build-asan/corpus/$target" | wc -l) inputs"
   rm -rf "$work"
+  return "$verdict"
+}
+
+status=0
+phase_start
+declare -A job_target=()
+finish_one() {  # waits for any running target; a target's non-zero verdict fails the run
+  local pid=""
+  wait -n -p pid || status=1
+  unset "job_target[$pid]"
+}
+for target in "${targets[@]}"; do
+  [ ${#job_target[@]} -ge "$(nproc)" ] && finish_one
+  fuzz_one "$target" >"build-asan/$target.report" 2>&1 &
+  job_target[$!]="$target"
 done
+while [ ${#job_target[@]} -gt 0 ]; do finish_one; done
+for target in "${targets[@]}"; do cat "build-asan/$target.report"; done
 phase_end "fuzz (${#targets[@]} targets x ${seconds} s)" "$status"
 exit $status
