@@ -114,6 +114,18 @@ texture AtlasDepth : RENDERDEPTHSTENCILTARGET
     string UIWidget = "None";
 >;
 
+// The depth target read texel by texel, for `hardware_casters`: each tap compares its own depth
+// (shadowmap.fxh's ShadowCompareTaps).
+sampler AtlasDepthPointSampler = sampler_state
+{
+    Texture = <AtlasDepth>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MinFilter = POINT;
+    MagFilter = POINT;
+    MipFilter = NONE;
+};
+
 // The atlas sampler for the D3D11 form, which samples a texture through a separate sampler object (a point
 // mip filter with MaxLOD 0 reads level 0, as MipFilter = NONE does).
 SamplerState AtlasPoint
@@ -153,6 +165,14 @@ float CascadeShadow(int k, float3 world, float3 normal)
 {
     return ShadowTestTaps(ShadowAtlasSampler, CascadeRects[k], AtlasSize * CascadeRects[k].zw,
                           CascadeTaps(k, world, normal));
+}
+
+// CascadeShadow compared in hardware with the depth target (`hardware_casters`, whose map passes write no
+// colour).
+float CascadeShadowCompared(int k, float3 world, float3 normal)
+{
+    return ShadowCompareTaps(AtlasDepthPointSampler, CascadeRects[k], AtlasSize * CascadeRects[k].zw,
+                             CascadeTaps(k, world, normal));
 }
 
 // CascadeShadow in the D3D11 form: Texture2D.Sample through a SamplerState.
@@ -215,6 +235,18 @@ float4 CascadePS(SceneVertexOutput IN, uniform bool blend) : COLOR
     return CascadeColor(IN, choice.k, shadow);
 }
 
+// CascadePS on the depth target (CascadeShadowCompared).
+float4 CascadeComparedPS(SceneVertexOutput IN, uniform bool blend) : COLOR
+{
+    float3 world = IN.LP.xyz;
+    float3 normal = normalize(IN.WNormal);
+    CascadeChoice choice = ChooseCascade(world, blend);
+    float shadow = CascadeShadowCompared(choice.k, world, normal);
+    if (choice.nextWeight > 0.0)
+        shadow = lerp(shadow, CascadeShadowCompared(choice.k + 1, world, normal), choice.nextWeight);
+    return CascadeColor(IN, choice.k, shadow);
+}
+
 float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
 {
     float3 world = IN.LP.xyz;
@@ -244,6 +276,27 @@ float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
         PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
     }
 
+// The camera's pass, shaded by `pixelShader` (a compile call's arguments).
+#define CASCADE_SCENE_PASS(pixelShader)                                                                     \
+    pass RenderScene                                                                                        \
+    <                                                                                                       \
+        string Script = "RenderColorTarget0=;"                                                              \
+                        "RenderDepthStencilTarget=;"                                                        \
+                        "RenderPort=;"                                                                      \
+                        "ClearSetColor=ClearColor;"                                                         \
+                        "ClearSetDepth=ClearDepth;"                                                         \
+                        "Clear=Color;"                                                                      \
+                        "Clear=Depth;"                                                                      \
+                        "Draw=Geometry;";                                                                   \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        VertexShader = compile vs_3_0 RenderSceneVS(WorldToWorld);                                          \
+        PixelShader = compile ps_3_0 pixelShader;                                                           \
+    }
+
 #define CASCADE_PASSES(blend)                                                                               \
     pass ClearAtlas                                                                                         \
     <                                                                                                       \
@@ -261,24 +314,33 @@ float4 Cascade11PS(SceneVertexOutput IN, uniform bool blend) : SV_Target
     CASCADE_PASS(Cascade1, "RenderPort=light0.cascade1;")                                                   \
     CASCADE_PASS(Cascade2, "RenderPort=light0.cascade2;")                                                   \
     CASCADE_PASS(Cascade3, "RenderPort=light0.cascade3;")                                                   \
-    pass RenderScene                                                                                        \
+    CASCADE_SCENE_PASS(CascadePS(blend))
+
+// The same cascades as depth-only maps of the casters alone, the closed ones' faces towards the light
+// (shadowscene.fxh's CASTER_DEPTH_PASS), each tap compared in hardware (CascadeComparedPS): only the depth
+// target is cleared.
+#define CASCADE_CASTER_PASS(name, port)                                                                     \
+    CASTER_DEPTH_PASS(name, "RenderColorTarget0=ShadowAtlas;"                                               \
+                            "RenderDepthStencilTarget=AtlasDepth;"                                          \
+                            port                                                                            \
+                            "Draw=Geometry;")
+
+#define CASCADE_CASTER_PASSES(blend)                                                                        \
+    pass ClearAtlas                                                                                         \
     <                                                                                                       \
-        string Script = "RenderColorTarget0=;"                                                              \
-                        "RenderDepthStencilTarget=;"                                                        \
-                        "RenderPort=;"                                                                      \
-                        "ClearSetColor=ClearColor;"                                                         \
+        string Script = "RenderColorTarget0=ShadowAtlas;"                                                   \
+                        "RenderDepthStencilTarget=AtlasDepth;"                                              \
+                        "RenderPort=light0;"                                                                \
                         "ClearSetDepth=ClearDepth;"                                                         \
-                        "Clear=Color;"                                                                      \
-                        "Clear=Depth;"                                                                      \
-                        "Draw=Geometry;";                                                                   \
+                        "Clear=Depth;";                                                                     \
     >                                                                                                       \
     {                                                                                                       \
-        CullMode = CCW;                                                                                     \
-        ZEnable = true;                                                                                     \
-        ZWriteEnable = true;                                                                                \
-        VertexShader = compile vs_3_0 RenderSceneVS(WorldToWorld);                                          \
-        PixelShader = compile ps_3_0 CascadePS(blend);                                                      \
-    }
+    }                                                                                                       \
+    CASCADE_CASTER_PASS(Cascade0, "RenderPort=light0.cascade0;")                                            \
+    CASCADE_CASTER_PASS(Cascade1, "RenderPort=light0.cascade1;")                                            \
+    CASCADE_CASTER_PASS(Cascade2, "RenderPort=light0.cascade2;")                                            \
+    CASCADE_CASTER_PASS(Cascade3, "RenderPort=light0.cascade3;")                                            \
+    CASCADE_SCENE_PASS(CascadeComparedPS(blend))
 
 // The same passes in the D3D11 form.
 #define CASCADE_PASS11(name, port)                                                                          \
@@ -321,6 +383,20 @@ technique blended
 >
 {
     CASCADE_PASSES(true)
+}
+
+// `blended` on depth-only cascades of the casters alone (CASCADE_CASTER_PASSES): the closed casters' faces
+// towards the light, each tap compared in hardware; a fraction of the map passes where a ground that casts
+// nothing covers the atlas.
+technique hardware_casters
+<
+    string Script = CASCADE_SCRIPT;
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.1;  // measured 0.037 % on dual-l, 0.049 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    CASCADE_CASTER_PASSES(true)
 }
 
 // `blended` in the D3D11 form: the same image, the same expectations and known limitations.

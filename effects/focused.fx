@@ -7,6 +7,7 @@
 // The adaptive depth bias (lightspace.fxh's TangentPlanePS): a focused map's texels stretch over a low
 // sun's ground farther than the capped receiver-plane bias reaches.
 #define LIGHTSPACE_SCENE_PS TangentPlanePS
+#define LIGHTSPACE_HARDWARE_SCENE_PS TangentPlaneHardwarePS
 #include "include/lightspace.fxh"
 
 // Pancaking (Scherzer 2005 §4.1): the map's depth range spans the receivers only; casters before them are
@@ -33,4 +34,18 @@ technique bilinear
 >
 {
     LIGHTSPACE_PASSES
+}
+
+// `bilinear`'s fit and adaptive bias on a depth-only map of the casters alone, the closed ones' faces towards
+// the light (lightspace.fxh, LIGHTSPACE_CASTER_PASSES), each tap compared in hardware
+// (TangentPlaneHardwarePS): a fraction of the map pass where a ground that casts nothing covers the map.
+technique hardware_casters
+<
+    string Script = "Pass=RenderShadowDepth; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.08;  // measured 0.013 % on dual-l, 0.033 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_CASTER_PASSES
 }

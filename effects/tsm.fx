@@ -41,3 +41,17 @@ technique hardware
 {
     LIGHTSPACE_HARDWARE_PASSES
 }
+
+// `hardware`'s map drawn from the casters alone, the closed ones' faces towards the light (lightspace.fxh,
+// LIGHTSPACE_CASTER_PASSES): `hardware`'s images where every object casts (the built-in scenes), a fraction
+// of its map pass where a ground that casts nothing covers the map.
+technique hardware_casters
+<
+    string Script = "Pass=RenderShadowDepth; Pass=RenderScene;";
+    string ExpectScenes = "dual-l,teapot";
+    float ExpectMisclassifiedBelow = 0.12;  // measured 0.026 % on dual-l, 0.057 % on teapot (hard truth)
+    int ExpectMapSize = 1024;
+>
+{
+    LIGHTSPACE_CASTER_PASSES
+}

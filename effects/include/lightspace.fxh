@@ -95,6 +95,17 @@ sampler ShadowDepthSampler = sampler_state
     MipFilter = NONE;
 };
 
+// The depth target read texel by texel: each of TangentPlaneHardwarePS's taps compares its own depth.
+sampler ShadowDepthPointSampler = sampler_state
+{
+    Texture = <ShadowDepth>;
+    AddressU = CLAMP;
+    AddressV = CLAMP;
+    MinFilter = POINT;
+    MagFilter = POINT;
+    MipFilter = NONE;
+};
+
 // [SECTION] Shaders
 // SlopeBias times the receiver plane's depth change across one texel, from the screen derivatives of its
 // map position and depth (receiver-plane depth bias, Isidoro 2006): exact for any parameterization, where a
@@ -153,6 +164,15 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
     return ShadeOrVisibility(IN, shadow);
 }
 
+// TangentPlanePS's taps compared with the depth target in hardware (ShadowDepthPointSampler).
+float4 TangentPlaneHardwarePS(SceneVertexOutput IN) : COLOR
+{
+    TangentPlaneTaps taps = TangentPlaneBilinearTaps(LightViewProjectionMatrix, IN.LP, normalize(IN.WNormal),
+                                                     ShadowMapSize, ConstantBias(IN));
+    float shadow = ShadowCompareTaps(ShadowDepthPointSampler, float4(0.0, 0.0, 1.0, 1.0), ShadowMapSize, taps);
+    return ShadeOrVisibility(IN, shadow);
+}
+
 // [SECTION] Passes
 // The shadow map from light0's port (the parameterization's matrices), then the scene from the camera. The
 // map pass clamps depth instead of clipping (DepthClipEnable = false): with LightPancaking the fit's depth
@@ -205,7 +225,12 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         PixelShader = compile ps_3_0 LIGHTSPACE_SCENE_PS();                                                 \
     }
 
-// The scene pass of the depth-only maps below: the receiver's biased depth compared in hardware (HardwarePS).
+// The scene pass of the depth-only maps below: the receiver's depth compared in hardware with
+// LIGHTSPACE_HARDWARE_SCENE_PS (HardwarePS unless the effect defines its own first: focused.fx's
+// TangentPlaneHardwarePS, the hardware form of its LIGHTSPACE_SCENE_PS).
+#ifndef LIGHTSPACE_HARDWARE_SCENE_PS
+#define LIGHTSPACE_HARDWARE_SCENE_PS HardwarePS
+#endif
 #define LIGHTSPACE_HARDWARE_SCENE_PASS                                                                      \
     pass RenderScene                                                                                        \
     <                                                                                                       \
@@ -223,7 +248,7 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
         ZEnable = true;                                                                                     \
         ZWriteEnable = true;                                                                                \
         VertexShader = compile vs_3_0 RenderSceneVS(mul(LightViewMatrix, LightProjectionMatrix));           \
-        PixelShader = compile ps_3_0 HardwarePS();                                                          \
+        PixelShader = compile ps_3_0 LIGHTSPACE_HARDWARE_SCENE_PS();                                        \
     }
 
 // A depth-only map: the map pass writes the depth target alone (ColorWriteEnable = 0, no R32F colour target
@@ -251,34 +276,16 @@ float4 TangentPlanePS(SceneVertexOutput IN) : COLOR
     }                                                                                                       \
     LIGHTSPACE_HARDWARE_SCENE_PASS
 
-// The same depth-only map drawn from the casters alone: the objects the scene says cast shadows
-// (CastersOnly; a ground that only receives no longer covers the map, as osgShadow's casters mask leaves it
-// out) and, of the closed ones, the faces towards the light (CullMode = CCW with CullClosedOnly: open meshes
-// drawn whole). With the light outside every closed caster the nearest surface along a light ray is a face
-// towards it, so the map is `hardware`'s less the non-casters, for a fraction of its rasterization
-// (docs/results/2026-12-06-plain-shadow-map.md).
+// The same depth-only map drawn from the casters alone, the faces of the closed ones towards the light
+// (shadowscene.fxh's CASTER_DEPTH_PASS): `hardware`'s map less the objects that cast nothing, for a fraction
+// of its rasterization (docs/results/2026-12-06-plain-shadow-map.md).
 #define LIGHTSPACE_CASTER_PASSES                                                                            \
-    pass RenderShadowDepth                                                                                  \
-    <                                                                                                       \
-        float FilterReachTexels = 2;                                                                        \
-        bool CastersOnly = true;                                                                            \
-        bool CullClosedOnly = true;                                                                         \
-        string Script = "RenderColorTarget0=ShadowMap;"                                                     \
-                        "RenderDepthStencilTarget=ShadowDepth;"                                             \
-                        "RenderPort=light0;"                                                                \
-                        "ClearSetDepth=ClearDepth;"                                                         \
-                        "Clear=Depth;"                                                                      \
-                        "Draw=Geometry;";                                                                   \
-    >                                                                                                       \
-    {                                                                                                       \
-        CullMode = CCW;                                                                                     \
-        ZEnable = true;                                                                                     \
-        ZWriteEnable = true;                                                                                \
-        ColorWriteEnable = 0;                                                                               \
-        DepthClipEnable = false;                                                                            \
-        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
-        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
-    }                                                                                                       \
+    CASTER_DEPTH_PASS(RenderShadowDepth, "RenderColorTarget0=ShadowMap;"                                    \
+                                         "RenderDepthStencilTarget=ShadowDepth;"                            \
+                                         "RenderPort=light0;"                                               \
+                                         "ClearSetDepth=ClearDepth;"                                        \
+                                         "Clear=Depth;"                                                     \
+                                         "Draw=Geometry;")                                                  \
     LIGHTSPACE_HARDWARE_SCENE_PASS
 
 #endif

@@ -169,6 +169,19 @@ float ShadowTestTaps(sampler2D shadowMap, float4 rect, float2 tileSize, TangentP
     return lerp(lerp(s00, s10, taps.weight.x), lerp(s01, s11, taps.weight.x), taps.weight.y);
 }
 
+// ShadowTestTaps on a depth target: each tap compared in hardware by `depthSampler`, a point-filtered
+// sampler of a RENDERDEPTHSTENCILTARGET texture (tex2D with the depth in z returns the comparison).
+float ShadowCompareTaps(sampler2D depthSampler, float4 rect, float2 tileSize, TangentPlaneTaps taps)
+{
+    float2 scale = rect.zw / tileSize;
+    float2 uv = rect.xy + taps.first * scale;
+    float s00 = tex2D(depthSampler, float3(uv, taps.depths.x)).x;
+    float s10 = tex2D(depthSampler, float3(uv + float2(scale.x, 0.0), taps.depths.y)).x;
+    float s01 = tex2D(depthSampler, float3(uv + float2(0.0, scale.y), taps.depths.z)).x;
+    float s11 = tex2D(depthSampler, float3(uv + scale, taps.depths.w)).x;
+    return lerp(lerp(s00, s10, taps.weight.x), lerp(s01, s11, taps.weight.x), taps.weight.y);
+}
+
 // Bilinear percentage-closer filtering (Lehőcz 2007, "Percentage closer filtering"): the four nearest texels
 // are compared with `depth` and the results are weighted by the fractional texel position of `uv`.
 float ShadowTestBilinear(sampler2D shadowMap, float2 uv, float depth, float2 mapSize)

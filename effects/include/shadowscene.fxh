@@ -42,6 +42,33 @@ float4 RenderDepthPS(DepthVertexOutput IN) : COLOR
     return float4(LightDepth(IN), 0, 0, 1);
 }
 
+// A depth-only map pass of the casters alone, named `name`, whose Script is `script` (its targets, port and
+// clears, then "Draw=Geometry;"): the objects the scene says cast shadows (CastersOnly; a ground that only
+// receives no longer covers the map, as osgShadow's casters mask leaves it out) and, of the closed ones, the
+// faces towards the light (CullMode = CCW with CullClosedOnly: open meshes drawn whole). With the light
+// outside every closed caster the nearest surface along a light ray is a face towards it, so the map is
+// that of every object's both faces less the non-casters, for a fraction of its rasterization
+// (docs/results/2026-12-06-plain-shadow-map.md). Depth is clamped, not clipped (DepthClipEnable = false:
+// casters before a pancaked depth range land on its near plane), and FilterReachTexels = 2 lets leave-out
+// cull the casters beyond the one texel a 2x2 bilinear test reads past a receiver's own.
+#define CASTER_DEPTH_PASS(name, script)                                                                     \
+    pass name                                                                                               \
+    <                                                                                                       \
+        float FilterReachTexels = 2;                                                                        \
+        bool CastersOnly = true;                                                                            \
+        bool CullClosedOnly = true;                                                                         \
+        string Script = script;                                                                             \
+    >                                                                                                       \
+    {                                                                                                       \
+        CullMode = CCW;                                                                                     \
+        ZEnable = true;                                                                                     \
+        ZWriteEnable = true;                                                                                \
+        ColorWriteEnable = 0;                                                                               \
+        DepthClipEnable = false;                                                                            \
+        VertexShader = compile vs_3_0 RenderDepthVS(mul(WorldMatrix, mul(LightViewMatrix, LightProjectionMatrix))); \
+        PixelShader = compile ps_3_0 RenderDepthPS();                                                       \
+    }
+
 struct SceneVertexOutput
 {
     float4 HPosition : POSITION;
