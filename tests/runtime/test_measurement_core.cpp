@@ -1,5 +1,8 @@
 // The measurement core the shadowfx tools share (runtime/measure): the diagnostics log, number formats,
 // the non-finite checks and the compiled variants of an effect.
+#include "effects/EffectHarness.h"
+
+#include <runtime/BuiltinScenes.h>
 #include <runtime/DiagnosticLog.h>
 #include <runtime/NonFiniteScan.h>
 #include <report/NumberFormat.h>
@@ -58,6 +61,41 @@ TEST(NonFiniteScan, MatrixWithNanOrInfIsNotFinite) {
     EXPECT_FALSE(runtime::isFinite(m));
     m[2][3] = std::numeric_limits<float>::infinity();
     EXPECT_FALSE(runtime::isFinite(m));
+}
+
+// The scan reads every texture into one buffer, the larger first here: the smaller one's infinite texel is
+// found at its own coordinates, and nothing of the larger one's samples is read as the smaller one's.
+TEST(NonFiniteScan, FindsTheInfiniteTexelOfASmallerTargetReadAfterALargerOne) {
+    shadowfx::test::sharedContext();
+    const std::string source = R"(float Divisor = 0.0;
+texture Large : RENDERCOLORTARGET < float2 Dimensions = {64, 32}; string Format = "A32B32G32R32F"; >;
+texture Small : RENDERCOLORTARGET < float2 Dimensions = {4, 2}; string Format = "R32F"; >;
+struct Quad { float4 Position : POSITION; float2 UV : TEXCOORD0; };
+Quad VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Quad o; o.Position = p; o.UV = uv; return o; }
+float4 FinitePS(float2 uv : TEXCOORD0) : COLOR { return float4(uv, 1, 1); }
+float4 CornerPS(float2 uv : TEXCOORD0) : COLOR { return uv.x > 0.75 && uv.y > 0.5 ? 1.0 / Divisor : 0.5; }
+technique t {
+    pass large < string Script = "RenderColorTarget0=Large; Draw=Buffer;"; >
+    { ZEnable = false; VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 FinitePS(); }
+    pass small < string Script = "RenderColorTarget0=Small; Draw=Buffer;"; >
+    { ZEnable = false; VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 CornerPS(); }
+})";
+    auto renderer = shadowfx::test::loadEffect(source, false, "non_finite.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("boxes");
+    ASSERT_TRUE(shadowfx::test::render(*renderer, scene, 16, 16, "", {"Large", "Small"}));
+    const std::optional<runtime::NonFiniteTexels> found =
+        runtime::findNonFiniteTexels(*renderer, runtime::TextureScan::RenderTargets);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->texture, "Small");
+    EXPECT_EQ(found->count, 1u);
+    EXPECT_EQ(found->x, 3);
+    EXPECT_EQ(found->y, 1);
+
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setParameterFromText("Divisor", "2", diagnostics)) << diagnostics.str();
+    ASSERT_TRUE(shadowfx::test::render(*renderer, scene, 16, 16, "", {"Large", "Small"}));
+    EXPECT_FALSE(runtime::findNonFiniteTexels(*renderer, runtime::TextureScan::RenderTargets));
 }
 
 TEST(ShadowMeasurement, VisibilityVariantChangesTheFragmentShaderOfAnEffectThatExposesIt) {

@@ -70,19 +70,29 @@ bool Image::writePng(const std::string& path, std::string& error) const {
 
 namespace {
 
-Image readTexture(const GpuTexture& texture, int level, int face, bool asFloat) {
+// `floatStorage`: where float samples go instead of the image (null: into the image).
+Image readTexture(const GpuTexture& texture, int level, int face, bool asFloat,
+                  std::vector<float>* floatStorage = nullptr) {
     const GlTextureFormat& format = texture.glFormat();
     int width = std::max(texture.width() >> level, 1);
     int height = std::max(texture.height() >> level, 1);
     int channels = format.isDepth ? 1 : format.channels;
     bool floatOutput = asFloat || format.isFloat || format.isDepth;
-    Image image =
-        floatOutput ? Image::makeFloats(width, height, channels) : Image::makeBytes(width, height, channels);
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.channels = channels;
+    image.isFloat = floatOutput;
+    const size_t samples = size_t(width) * size_t(height) * size_t(channels);
+    std::vector<float>& floats = floatStorage ? *floatStorage : image.floats;
+    if (floatOutput)
+        floats.resize(samples);
+    else
+        image.bytes.assign(samples, 0);
     GLenum pixelFormat = format.isDepth ? GL_DEPTH_COMPONENT : format.pixelFormat;
     GLenum type = floatOutput ? GL_FLOAT : GL_UNSIGNED_BYTE;
-    void* data =
-        floatOutput ? static_cast<void*>(image.floats.data()) : static_cast<void*>(image.bytes.data());
-    size_t bufferSize = floatOutput ? image.floats.size() * sizeof(float) : image.bytes.size();
+    void* data = floatOutput ? static_cast<void*>(floats.data()) : static_cast<void*>(image.bytes.data());
+    size_t bufferSize = floatOutput ? floats.size() * sizeof(float) : image.bytes.size();
     // glGetTextureSubImage reads a single cube face; glGetTexImage would need the face target bound.
     gl::GetTextureSubImage(texture.id(), level, 0, 0, texture.isCube() ? face : 0, width, height, 1,
                            pixelFormat, type, GLsizei(bufferSize), data);
@@ -97,6 +107,10 @@ Image readColorTarget(const GpuTexture& texture, int level, int face) {
 
 Image readFloatTexture(const GpuTexture& texture, int level, int face) {
     return readTexture(texture, level, face, true);
+}
+
+Image readFloatTexture(const GpuTexture& texture, std::vector<float>& floats, int level, int face) {
+    return readTexture(texture, level, face, true, &floats);
 }
 
 Image readFramebufferColor(int index, int width, int height) {

@@ -268,10 +268,11 @@ Outcome runCase(EffectRenderer& renderer, bool exposesVisibility, const std::str
             return outcome;
         }
         if (!exposesVisibility) continue;
-        visibilities.push_back(visibilityFromFrame(renderer.readFrame()));
+        const FrameImage rendered = renderer.readFrame();
+        visibilities.push_back(visibilityFromFrame(rendered));
         if (frame.receiverCount > 0)
-            errorImage = runtime::errorImage(renderer.readFrame(), frame.visibility, visibilities.back(),
-                                             frame.receivers);
+            errorImage =
+                runtime::errorImage(rendered, frame.visibility, visibilities.back(), frame.receivers);
     }
     scoreFrames(outcome, truth, visibilities);
     return outcome;

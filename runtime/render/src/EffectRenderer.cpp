@@ -375,15 +375,22 @@ bool EffectRenderer::blitFrameTo(uint32_t framebuffer) const {
 
 std::optional<std::vector<float>> EffectRenderer::readTarget(std::string_view textureName, int* width,
                                                              int* height, int* channels, int level) const {
+    std::vector<float> texels;
+    if (!readTarget(textureName, texels, width, height, channels, level)) return std::nullopt;
+    return texels;
+}
+
+bool EffectRenderer::readTarget(std::string_view textureName, std::vector<float>& texels, int* width,
+                                int* height, int* channels, int level) const {
     const std::optional<size_t> index = findParameter(textureName);
-    if (!index) return std::nullopt;
+    if (!index) return false;
     const GpuTexture* texture = mImpl->textures->find(*index);
-    if (!texture || level < 0 || level >= texture->mipLevels()) return std::nullopt;
-    const Image image = readFloatTexture(*texture, level);
+    if (!texture || level < 0 || level >= texture->mipLevels()) return false;
+    const Image image = readFloatTexture(*texture, texels, level);
     if (width) *width = image.width;
     if (height) *height = image.height;
     if (channels) *channels = image.channels;
-    return image.floats;
+    return true;
 }
 
 bool writePng(const FrameImage& frame, const std::string& path, std::string& error) {

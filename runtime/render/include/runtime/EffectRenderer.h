@@ -173,6 +173,10 @@ public:
     // views; nullopt if the parameter is not an allocated texture or has no such level.
     std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
                                                  int* channels, int level = 0) const;
+    // The same into `texels`, whose allocation is reused where large enough (a scan over every texture of
+    // every frame); false where the other gives nullopt.
+    bool readTarget(std::string_view textureName, std::vector<float>& texels, int* width, int* height,
+                    int* channels, int level = 0) const;
 
 private:
     explicit EffectRenderer(std::unique_ptr<EffectResources> resources);
