@@ -73,6 +73,10 @@ private:
     void resourceShape(const Parameter& p, TextureDesc& t);
     void samplers();
     void storageBindings();
+    void storageResources();
+    // The texel format of each image parameter a pass uses (ParameterInfo::imageFormat), once the stages
+    // compiled.
+    void imageFormats();
     void applySamplerState(const StateAssignment& a, BaseType samplerType, SamplerDesc& s,
                            bool& hasComparison);
     // The D3D9 sampler-register states of every pass (`MinFilter[0] = LINEAR;`), once its stages compiled.

@@ -381,6 +381,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     structTable();
     initialValues();
     parameterInfo();
+    storageResources();
     textures();
     samplers();
     storageBindings();
@@ -426,6 +427,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
         mFailed = true;
     lowerTextureFunctions();
     finishPendingStages();
+    imageFormats();
     resolveStreamOutputs();
     for (CompiledTechnique& technique : mOut->techniques)
         for (CompiledPass& pass : technique.passes) {

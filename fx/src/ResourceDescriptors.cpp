@@ -8,6 +8,7 @@
 
 #include <fx/InstancedPass.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -18,6 +19,24 @@ namespace {
 
 const char* multisampleKeyword(BaseType type) {
     return type == BaseType::Texture2DMSArray ? "Texture2DMSArray" : "Texture2DMS";
+}
+
+// The textures shadowfx makes for images, by the format qualifier glslang gives their element type.
+std::optional<TextureFormat> imageTextureFormat(const std::string& qualifier) {
+    if (qualifier == "rgba32f") return TextureFormat::RGBA32F;
+    if (qualifier == "rgba16f") return TextureFormat::RGBA16F;
+    if (qualifier == "rg32f") return TextureFormat::RG32F;
+    if (qualifier == "rg16f") return TextureFormat::RG16F;
+    if (qualifier == "r32f") return TextureFormat::R32F;
+    if (qualifier == "r16f") return TextureFormat::R16F;
+    if (qualifier == "rgba8") return TextureFormat::RGBA8;
+    return std::nullopt;
+}
+
+// An image's size annotation (`int Width = 256;`): `absent` without one or for one that is not one number.
+int sizeAnnotation(const ParameterInfo& parameter, const char* name, int absent) {
+    const AnnotationValue* size = findAnnotation(parameter.annotations, name);
+    return size && size->value.data.size() == 1 ? static_cast<int>(size->value.data[0]) : absent;
 }
 
 }  // namespace
@@ -399,6 +418,73 @@ void Compiler::storageBindings() {
         if (p.type.base == BaseType::RWStructuredBuffer || p.type.base == BaseType::AppendStructuredBuffer ||
             p.type.base == BaseType::ConsumeStructuredBuffer)
             mCounterBindings[p.name] = take();
+}
+
+// What the runtime makes at load for each buffer and read-write texture, as the resources and views an FX11
+// application creates (docs/d3d10.md, "Compute shaders and read-write resources"), from the parameters'
+// annotations (ParameterInfo::viewOf, elementCount, imageSize). Each invalid one is an error at its
+// parameter.
+void Compiler::storageResources() {
+    for (ParameterInfo& parameter : mOut->parameters) {
+        if (const AnnotationValue* view = findAnnotation(parameter.annotations, "ViewOf")) {
+            const std::string& name = view->value.string;
+            auto viewed = std::find_if(mOut->parameters.begin(), mOut->parameters.end(),
+                                       [&name](const ParameterInfo& p) { return p.name == name; });
+            if (viewed == mOut->parameters.end() || !(viewed->type.isImage() || viewed->type.isBuffer()))
+                error(DiagId::ViewOfUnknownResource, parameter.loc, {parameter.name, name});
+            else
+                parameter.viewOf = static_cast<size_t>(viewed - mOut->parameters.begin());
+        }
+        const BaseType type = parameter.type.base;
+        if ((parameter.type.isBuffer() && type != BaseType::Buffer) || type == BaseType::RWBuffer) {
+            if (const AnnotationValue* count = findAnnotation(parameter.annotations, "ElementCount")) {
+                const std::vector<float>& data = count->value.data;
+                const double value = data.empty() ? 0.0 : data[0];
+                if (data.size() == 1 && value >= 1 && value <= double(1u << 28) &&
+                    value == static_cast<double>(static_cast<uint32_t>(value)))
+                    parameter.elementCount = static_cast<uint32_t>(value);
+                else
+                    error(DiagId::ElementCountInvalid, parameter.loc,
+                          {parameter.name, data.empty() ? "not a number" : std::to_string(value)});
+            }
+            continue;
+        }
+        if (!parameter.type.isImage()) continue;
+        const int width = sizeAnnotation(parameter, "Width", 64);
+        const int height = type == BaseType::RWTexture1D ? 1 : sizeAnnotation(parameter, "Height", 64);
+        const int depth = type == BaseType::RWTexture3D        ? sizeAnnotation(parameter, "Depth", 1)
+                          : type == BaseType::RWTexture2DArray ? sizeAnnotation(parameter, "ArraySize", 1)
+                                                               : 1;
+        const int most = type == BaseType::RWTexture3D ? 2048 : 16384;
+        if (width < 1 || height < 1 || depth < 1 || width > most || height > most || depth > 2048) {
+            std::string size = std::to_string(width);
+            if (type != BaseType::RWTexture1D) size += " x " + std::to_string(height);
+            if (type == BaseType::RWTexture3D || type == BaseType::RWTexture2DArray)
+                size += " x " + std::to_string(depth);
+            error(DiagId::ImageSizeOutOfRange, parameter.loc, {parameter.name, size});
+            continue;
+        }
+        parameter.imageSize[0] = width;
+        parameter.imageSize[1] = height;
+        parameter.imageSize[2] = depth;
+    }
+}
+
+void Compiler::imageFormats() {
+    std::set<size_t> seen;
+    for (const CompiledTechnique& technique : mOut->techniques)
+        for (const CompiledPass& pass : technique.passes)
+            for (const StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
+                for (const ImageBinding& image : stage->images) {
+                    if (image.parameter >= mOut->parameters.size() || !seen.insert(image.parameter).second)
+                        continue;
+                    ParameterInfo& parameter = mOut->parameters[image.parameter];
+                    parameter.imageFormat = imageTextureFormat(image.format);
+                    if (!parameter.imageFormat)
+                        error(DiagId::ImageFormatUnsupported, parameter.loc,
+                              {parameter.name, parameter.type.hlslName(), image.format});
+                }
 }
 
 // D3D10 (texture, sampler) pairs: units after the D3D9 samplers', one per pair a pass samples (the same

@@ -301,30 +301,5 @@ TEST(ComputeEffects, APassWithComputeAndGraphicsShadersDispatchesOneAndDrawsTheO
     expect(4);
 }
 
-// A volume no GL texture can have (no slices) is refused at the parameter when the renderer is created,
-// naming all three sides.
-TEST(ComputeEffects, AReadWriteVolumeWithoutSlicesIsALocatedError) {
-    sharedContext();
-    const std::string source =
-        R"(RWTexture3D<float4> Volume < int Width = 4; int Height = 4; int Depth = 0; >;
-[numthreads(1, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Volume[id] = 1; }
-technique11 Filled < string Script = "Pass=Fill;"; >
-{
-    pass Fill < string Script = "Dispatch=1;"; > { SetComputeShader(CompileShader(cs_5_0, Fill())); }
-}
-)";
-    fx::DiagnosticList diagnostics;
-    auto effect = fx::parseEffectSource(source, "volume.fx", fx::ParseOptions{}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<const fx::CompiledEffect> compiled =
-        fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
-    ASSERT_TRUE(compiled) << diagnostics.str();
-    EXPECT_FALSE(runtime::EffectRenderer::create(compiled, diagnostics));
-    ASSERT_EQ(countDiagnostics(diagnostics, fx::DiagId::ImageSizeOutOfRange), 1) << diagnostics.str();
-    const fx::Diagnostic& refused = diagnostics.items().back();
-    EXPECT_EQ(refused.loc.line, 1);
-    EXPECT_NE(refused.message.find("Volume is 4 x 4 x 0"), std::string::npos) << refused.message;
-}
-
 }  // namespace
 }  // namespace shadowfx::test

@@ -53,11 +53,10 @@ const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, 
 }  // namespace
 
 std::unique_ptr<StorageResources> StorageResources::create(const fx::CompiledEffect& effect,
-                                                           const ParameterLookup& findParameter,
                                                            fx::DiagnosticSink& diagnostics) {
     auto storage = std::unique_ptr<StorageResources>(new StorageResources(effect));
-    if (!storage->createDefaultBuffers(diagnostics) || !storage->createImages(findParameter, diagnostics))
-        return nullptr;
+    if (!storage->createDefaultBuffers(diagnostics)) return nullptr;
+    storage->createImages();
     return storage;
 }
 
@@ -81,23 +80,6 @@ size_t StorageResources::viewedResource(size_t parameter) const {
     return view == mResourceViews.end() ? parameter : view->second;
 }
 
-// `int ElementCount = N;` on a storage buffer (docs/d3d10.md, "Compute shaders and read-write resources"):
-// the elements it holds from load on, as the buffer an FX11 application creates for it; 1 without one.
-std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
-                                           fx::DiagnosticSink& diagnostics) {
-    const fx::AnnotationValue* count = fx::findAnnotation(parameter.annotations, "ElementCount");
-    if (!count) return 1;
-    const double value = count->value.data.empty() ? 0.0 : count->value.data[0];
-    if (count->value.data.size() != 1 || !(value >= 1 && value <= double(size_t(1) << 28)) ||
-        value != static_cast<double>(static_cast<size_t>(value))) {
-        diagnostics.report(
-            fx::DiagId::ElementCountInvalid, parameter.loc,
-            {parameter.name, count->value.data.empty() ? "not a number" : std::to_string(value)});
-        return std::nullopt;
-    }
-    return static_cast<size_t>(value);
-}
-
 // Zeros until the application sets them: what D3D10 reads from a resource slot with nothing bound.
 bool StorageResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
     for (size_t i = 0; i < mEffect->parameters.size(); ++i) {
@@ -114,10 +96,9 @@ bool StorageResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
             continue;
         }
         const fx::StorageBufferBinding* layout = storageLayout(*mEffect, i);
-        const std::optional<size_t> elements = declaredElementCount(mEffect->parameters[i], diagnostics);
-        if (!elements) return false;
+        const size_t elements = mEffect->parameters[i].elementCount;
         mBuffers[i] =
-            GpuBuffer::create(nullptr, *elements * (layout ? std::max<size_t>(layout->glStride, 4) : 16));
+            GpuBuffer::create(nullptr, elements * (layout ? std::max<size_t>(layout->glStride, 4) : 16));
         if (type.base == fx::BaseType::RWStructuredBuffer ||
             type.base == fx::BaseType::AppendStructuredBuffer ||
             type.base == fx::BaseType::ConsumeStructuredBuffer) {
@@ -161,13 +142,11 @@ bool StorageResources::set(size_t index, const void* bytes, size_t elements, siz
         if (elementBytes != layout->d3dStride)
             return refuse(fx::DiagId::SetBufferPackedElementSize, withSize(layout->d3dStride));
         // From D3D's packing to the GL block's (std430 aligns vectors and pads elements). A buffer with a
-        // counter keeps room for its ElementCount (validated at load), where the shaders append.
+        // counter keeps room for its ElementCount, where the shaders append.
         auto counter = mCounters.find(index);
-        const size_t room =
-            counter == mCounters.end()
-                ? elements
-                : std::max(elements,
-                           declaredElementCount(mEffect->parameters[index], diagnostics).value_or(0));
+        const size_t room = counter == mCounters.end()
+                                ? elements
+                                : std::max(elements, size_t{mEffect->parameters[index].elementCount});
         std::vector<uint8_t> packed(room * layout->glStride, 0);
         const auto* in = static_cast<const uint8_t*>(bytes);
         for (size_t e = 0; e < elements; ++e)

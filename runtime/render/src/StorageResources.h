@@ -16,28 +16,19 @@
 #include <runtime/GpuTexture.h>
 
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
-#include <string_view>
 
 namespace runtime {
 
-// A storage buffer's `int ElementCount = N;` (1 without it); nullopt, with a diagnostic at the parameter,
-// for a count outside 1..2^28.
-std::optional<size_t> declaredElementCount(const fx::ParameterInfo& parameter,
-                                           fx::DiagnosticSink& diagnostics);
-
 class StorageResources {
 public:
-    using ParameterLookup = std::function<std::optional<size_t>(std::string_view)>;
-
     // Every buffer at its declared size and every image a pass uses at its annotated size, in the format
-    // its code declares; the views resolved by `findParameter`. nullptr, with a diagnostic, for an element
-    // type, format, size or view shadowfx cannot make.
+    // its code declares, and the views: what the compiler resolved (ParameterInfo::elementCount,
+    // imageSize, imageFormat, viewOf). nullptr, with a diagnostic, for a Buffer<T> of an element type GL
+    // cannot hold.
     static std::unique_ptr<StorageResources> create(const fx::CompiledEffect& effect,
-                                                    const ParameterLookup& findParameter,
                                                     fx::DiagnosticSink& diagnostics);
 
     // The buffer, counter or image of a parameter (not of the resource it views: see viewedResource), or
@@ -64,7 +55,7 @@ private:
     explicit StorageResources(const fx::CompiledEffect& effect) : mEffect(&effect) {}
     bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
     // StorageImages.cpp.
-    bool createImages(const ParameterLookup& findParameter, fx::DiagnosticSink& diagnostics);
+    void createImages();
 
     const fx::CompiledEffect* mEffect;
     std::map<size_t, GpuBuffer> mBuffers;  // by parameter index; an RWBuffer's with its buffer texture

@@ -1,0 +1,157 @@
+// What the runtime makes at load for an effect's buffers and read-write textures, resolved by the compiler
+// from their annotations (fx::ParameterInfo::viewOf, elementCount, imageSize): carried by the compiled
+// effect and its file, and an invalid annotation a located compile error, with no GL context.
+#include <fx/CompiledEffectFile.h>
+#include <fx/EffectFile.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace fx {
+namespace {
+
+const char* const kStorage = R"(RWStructuredBuffer<float4> Cells < int ElementCount = 8; >;
+StructuredBuffer<float4> CellsView < string ViewOf = "Cells"; >;
+RWBuffer<float4> Values < int ElementCount = 5; >;
+Buffer<float4> ValuesView < string ViewOf = "Values"; >;
+RWTexture3D<float4> Volume < int Width = 4; int Height = 2; int Depth = 3; >;
+Texture3D VolumeView < string ViewOf = "Volume"; >;
+RWTexture1D<float4> Ramp < int Width = 16; int Height = 9; >;
+RWTexture2DArray<float4> Layers < int ArraySize = 6; >;
+RWByteAddressBuffer Plain;
+)";
+
+std::shared_ptr<CompiledEffect> compile(const std::string& source, DiagnosticList& diagnostics) {
+    std::shared_ptr<Effect> effect = parseEffectSource(source, "storage.fx", ParseOptions{}, diagnostics);
+    if (!effect) return nullptr;
+    return compileEffect(effect, CompileOptions{}, diagnostics);
+}
+
+size_t indexOf(const CompiledEffect& effect, const std::string& name) {
+    return static_cast<size_t>(effect.findParameter(name) - effect.parameters.data());
+}
+
+void expectResolved(const CompiledEffect& effect) {
+    const auto parameter = [&effect](const char* name) -> const ParameterInfo& {
+        return effect.parameters.at(indexOf(effect, name));
+    };
+    EXPECT_EQ(parameter("Cells").elementCount, 8u);
+    EXPECT_EQ(parameter("Values").elementCount, 5u);
+    EXPECT_EQ(parameter("Plain").elementCount, 1u);  // no ElementCount: one element
+    EXPECT_FALSE(parameter("Cells").viewOf);
+    EXPECT_EQ(parameter("CellsView").viewOf, indexOf(effect, "Cells"));
+    EXPECT_EQ(parameter("ValuesView").viewOf, indexOf(effect, "Values"));
+    EXPECT_EQ(parameter("VolumeView").viewOf, indexOf(effect, "Volume"));
+    const auto size = [&parameter](const char* name) {
+        const int* s = parameter(name).imageSize;
+        return std::to_string(s[0]) + "x" + std::to_string(s[1]) + "x" + std::to_string(s[2]);
+    };
+    EXPECT_EQ(size("Volume"), "4x2x3");
+    EXPECT_EQ(size("Ramp"), "16x1x1");     // a 1D texture has no height, whatever it says
+    EXPECT_EQ(size("Layers"), "64x64x6");  // 64 x 64 without Width and Height
+}
+
+TEST(StorageResourceAnnotations, TheCompiledEffectAndItsFileCarryViewsCountsAndSizes) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compile(kStorage, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    expectResolved(*compiled);
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "storage.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    expectResolved(*read);
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+}
+
+// The one error compiling `source` reports, as the CLI prints it.
+std::string compileError(const std::string& source, DiagId expected) {
+    DiagnosticList diagnostics;
+    EXPECT_FALSE(compile(source, diagnostics));
+    EXPECT_EQ(diagnostics.items().size(), 1u) << diagnostics.str();
+    if (diagnostics.items().empty()) return "";
+    EXPECT_EQ(diagnostics.items()[0].id, expected) << diagnostics.str();
+    return renderDiagnostic(diagnostics.items()[0], false);
+}
+
+// Each at the parameter that declares it, where the runtime reported it when it read the annotations.
+TEST(StorageResourceAnnotations, AnInvalidAnnotationIsALocatedCompileError) {
+    EXPECT_EQ(compileError("float Scale;\nStructuredBuffer<float4> Cells < string ViewOf = \"Scale\"; >;\n",
+                           DiagId::ViewOfUnknownResource),
+              "storage.fx:2:26: error: 'Cells' is a view of 'Scale', which is no buffer or read-write "
+              "texture parameter of the effect");
+    EXPECT_EQ(
+        compileError("Texture2D Lost < string ViewOf = \"Nowhere\"; >;\n", DiagId::ViewOfUnknownResource),
+        "storage.fx:1:11: error: 'Lost' is a view of 'Nowhere', which is no buffer or read-write "
+        "texture parameter of the effect");
+    EXPECT_EQ(compileError("\nRWStructuredBuffer<uint> Counts < int ElementCount = 0; >;\n",
+                           DiagId::ElementCountInvalid),
+              "storage.fx:2:26: error: ElementCount of 'Counts' is 0.000000; a storage buffer holds 1 to "
+              "268435456 elements");
+    EXPECT_EQ(compileError("RWBuffer<float> Values < string ElementCount = \"many\"; >;\n",
+                           DiagId::ElementCountInvalid),
+              "storage.fx:1:17: error: ElementCount of 'Values' is not a number; a storage buffer holds 1 to "
+              "268435456 elements");
+    EXPECT_EQ(compileError("RWTexture3D<float4> Volume < int Width = 4; int Height = 4; int Depth = 0; >;\n",
+                           DiagId::ImageSizeOutOfRange),
+              "storage.fx:1:21: error: invalid render-target size: Volume is 4 x 4 x 0");
+    EXPECT_EQ(compileError("RWTexture2D<float4> Wide < int Width = 20000; >;\n", DiagId::ImageSizeOutOfRange),
+              "storage.fx:1:21: error: invalid render-target size: Wide is 20000 x 64");
+}
+
+// An image's texel format is the one its code declares (glslang's, from the element type): float and unorm
+// images have one, an integer image is a compile error at the parameter, and an image no pass uses has none.
+TEST(StorageResourceAnnotations, AnImageHasTheFormatItsCodeDeclares) {
+    const std::string kernel = R"(
+[numthreads(1, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Field[id.xy] = 1; }
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Fill())); } }
+)";
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled =
+        compile("RWTexture2D<float2> Field;\nRWTexture2D<float4> Unused;" + kernel, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_EQ(compiled->findParameter("Field")->imageFormat, TextureFormat::RG32F);
+    EXPECT_FALSE(compiled->findParameter("Unused")->imageFormat);
+    const std::string error =
+        compileError("RWTexture2D<uint> Field;" + kernel, DiagId::ImageFormatUnsupported);
+    EXPECT_EQ(error.rfind("storage.fx:1:19: error: 'Field' (", 0), 0u) << error;
+    EXPECT_NE(error.find("is an image of format 'r32ui'"), std::string::npos) << error;
+}
+
+// A view of no buffer or read-write texture, or a size the compiler would have refused, in a file: corrupt,
+// refused before the runtime makes anything of it.
+TEST(StorageResourceAnnotations, AViewOrSizeOutOfRangeInAFileIsCorrupt) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compile(kStorage, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const auto readErrorId = [](const CompiledEffect& damaged) {
+        DiagnosticList errors;
+        EXPECT_FALSE(deserializeCompiledEffect(serializeCompiledEffect(damaged), "storage.sfxo", errors));
+        EXPECT_EQ(errors.items().size(), 1u) << errors.str();
+        return errors.items().empty() ? DiagId{} : errors.items()[0].id;
+    };
+    const size_t view = indexOf(*compiled, "CellsView");
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[view].viewOf = damaged.parameters.size();
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterViewOutOfRange);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[view].viewOf = indexOf(damaged, "VolumeView");  // a texture that is no image
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterViewOutOfRange);
+    }
+    for (int side = 0; side < 3; ++side) {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[indexOf(damaged, "Volume")].imageSize[side] = 0;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterStorageSizeOutOfRange);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[indexOf(damaged, "Cells")].elementCount = (1u << 28) + 1;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterStorageSizeOutOfRange);
+    }
+}
+
+}  // namespace
+}  // namespace fx
