@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in fuzz/ in the sanitized build, build-asan/ (clang; configured by
 # scripts/configure-sanitized.sh, shared with scripts/test-sanitized.sh, which builds them already), and runs
-# each for SECONDS (default 60) on one core, as many targets at a time as there are cores. Corpora grow in
+# each for SECONDS (default 60) on one core, as many targets at a time as there are cores (one at a time
+# for fuzz_compile_workers, whose workers are processes of their own). Corpora grow in
 # build-asan/corpus/TARGET/ (seeded from effects/, tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
 # any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
@@ -61,9 +62,8 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LP_NUM_THREADS=1
 
-# fuzz_one TARGET: runs one target and writes what CI's log shows of it to build-asan/TARGET.report; its
-# status is the target's verdict. Each target runs on one core, so the targets run as many at a time as
-# there are cores (each still fuzzes for the full SECONDS); their reports are printed in the targets' order.
+# fuzz_one TARGET: runs one target, prints what CI's log shows of it, and writes its verdict (0: no finding)
+# to build-asan/TARGET.verdict as its last step: a run that stopped early leaves none, which fails too.
 fuzz_one() {
   local target="$1" verdict=0 work log fuzzer_status findings executed finding
   seed "$target"
@@ -100,23 +100,35 @@ fuzz_one() {
   fi
   echo "corpus: $(ls "build-asan/corpus/$target" | wc -l) inputs"
   rm -rf "$work"
-  return "$verdict"
+  echo "$verdict" >"build-asan/$target.verdict"
+}
+
+# start TARGET LIMIT: fuzz_one in the background once fewer than LIMIT targets run, its output in
+# build-asan/TARGET.report (printed in the targets' order at the end). A command that fails inside it is
+# named there.
+start() {
+  while [ "$(jobs -rp | wc -l)" -ge "$2" ]; do wait -n || true; done
+  ( set -E; trap 'echo "$1: stopped at line $LINENO: $BASH_COMMAND"' ERR; fuzz_one "$1" ) \
+    >"build-asan/$1.report" 2>&1 &
 }
 
 status=0
 phase_start
-declare -A job_target=()
-finish_one() {  # waits for any running target; a target's non-zero verdict fails the run
-  local pid=""
-  wait -n -p pid || status=1
-  unset "job_target[$pid]"
-}
+for target in "${targets[@]}"; do rm -f "build-asan/$target.verdict"; done
+# Each target fuzzes on one core for the full SECONDS, as many at a time as there are cores. The
+# compile-worker target runs alone: its two workers are processes of their own, and each compile is held to
+# a time limit that a second fuzzer on the same cores could push it past, a finding of the machine's load.
 for target in "${targets[@]}"; do
-  [ ${#job_target[@]} -ge "$(nproc)" ] && finish_one
-  fuzz_one "$target" >"build-asan/$target.report" 2>&1 &
-  job_target[$!]="$target"
+  [ "$target" = fuzz_compile_workers ] || start "$target" "$(nproc)"
 done
-while [ ${#job_target[@]} -gt 0 ]; do finish_one; done
-for target in "${targets[@]}"; do cat "build-asan/$target.report"; done
+wait
+for target in "${targets[@]}"; do
+  [ "$target" != fuzz_compile_workers ] || start "$target" 1
+done
+wait
+for target in "${targets[@]}"; do
+  cat "build-asan/$target.report"
+  [ "$(cat "build-asan/$target.verdict" 2>/dev/null)" = 0 ] || status=1
+done
 phase_end "fuzz (${#targets[@]} targets x ${seconds} s)" "$status"
 exit $status
