@@ -109,8 +109,9 @@ Image readFloatTexture(const GpuTexture& texture, int level, int face) {
     return readTexture(texture, level, face, true);
 }
 
-Image readFloatTexture(const GpuTexture& texture, std::vector<float>& floats, int level, int face) {
-    return readTexture(texture, level, face, true, &floats);
+ImageShape readFloatTexture(const GpuTexture& texture, std::vector<float>& floats, int level, int face) {
+    const Image image = readTexture(texture, level, face, true, &floats);
+    return {image.width, image.height, image.channels};
 }
 
 Image readFramebufferColor(int index, int width, int height) {

@@ -386,7 +386,7 @@ bool EffectRenderer::readTarget(std::string_view textureName, std::vector<float>
     if (!index) return false;
     const GpuTexture* texture = mImpl->textures->find(*index);
     if (!texture || level < 0 || level >= texture->mipLevels()) return false;
-    const Image image = readFloatTexture(*texture, texels, level);
+    const ImageShape image = readFloatTexture(*texture, texels, level);
     if (width) *width = image.width;
     if (height) *height = image.height;
     if (channels) *channels = image.channels;

@@ -41,10 +41,16 @@ struct Image {
 Image readColorTarget(const GpuTexture& texture, int level = 0, int face = 0);
 // Same, always as floats (depth textures included).
 Image readFloatTexture(const GpuTexture& texture, int level = 0, int face = 0);
-// Same, with the samples in `floats` instead of the returned image (which has the level's size and
-// channels and no samples): `floats` is resized, its allocation reused where large enough, so that a
-// scan over many large textures and frames does not allocate and zero a fresh buffer for each.
-Image readFloatTexture(const GpuTexture& texture, std::vector<float>& floats, int level = 0, int face = 0);
+// A level's size and channels, where its samples went to a buffer of the caller's.
+struct ImageShape {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+};
+// Same, the samples into `floats`, resized, its allocation reused where large enough: a scan over many
+// large textures reads them all through one buffer instead of allocating and zeroing one for each.
+ImageShape readFloatTexture(const GpuTexture& texture, std::vector<float>& floats, int level = 0,
+                            int face = 0);
 // Reads colour attachment `index` of the bound read framebuffer: RGBA floats, width × height from (0, 0).
 Image readFramebufferColor(int index, int width, int height);
 // Reads the stencil values of the bound read framebuffer as 8-bit, one channel.

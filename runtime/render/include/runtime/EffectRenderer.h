@@ -173,8 +173,8 @@ public:
     // views; nullopt if the parameter is not an allocated texture or has no such level.
     std::optional<std::vector<float>> readTarget(std::string_view textureName, int* width, int* height,
                                                  int* channels, int level = 0) const;
-    // The same into `texels`, whose allocation is reused where large enough (a scan over every texture of
-    // every frame); false where the other gives nullopt.
+    // The same into `texels`, whose allocation is reused where large enough (a scan over every texture
+    // reads them all through one buffer); false where the other gives nullopt.
     bool readTarget(std::string_view textureName, std::vector<float>& texels, int* width, int* height,
                     int* channels, int level = 0) const;
 
