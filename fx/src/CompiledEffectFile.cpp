@@ -6,6 +6,7 @@
 // [SECTION] Reading and writing
 
 #include <fx/CompiledEffectFile.h>
+#include <fx/StorageLimits.h>
 
 #include "CompiledEffectFields.h"
 
@@ -78,10 +79,19 @@ public:
                                      !(mEffect.parameters[*parameter.viewOf].type.isBuffer() ||
                                        mEffect.parameters[*parameter.viewOf].type.isImage())))
                 return Corruption{DiagId::CompiledEffectParameterViewOutOfRange, {parameter.name}};
+            // The compiler's limits (StorageLimits.h): the runtime allocates what these say.
             const int* size = parameter.imageSize;
-            if (parameter.elementCount < 1 || parameter.elementCount > (1u << 28) || size[0] < 1 ||
-                size[0] > 16384 || size[1] < 1 || size[1] > 16384 || size[2] < 1 || size[2] > 2048)
+            const int mostSide =
+                parameter.type.base == BaseType::RWTexture3D ? kMostVolumeImageSide : kMostImageSide;
+            if (parameter.elementCount < 1 || parameter.elementCount > kMostStorageElements || size[0] < 1 ||
+                size[0] > mostSide || size[1] < 1 || size[1] > mostSide || size[2] < 1 ||
+                size[2] > kMostVolumeImageSide)
                 return Corruption{DiagId::CompiledEffectParameterStorageSizeOutOfRange, {parameter.name}};
+            // An image format only on an image, and only one an image can have: the runtime sizes texels by
+            // it.
+            if (parameter.imageFormat &&
+                (!parameter.type.isImage() || !isImageFormat(*parameter.imageFormat)))
+                return Corruption{DiagId::CompiledEffectParameterImageFormatInvalid, {parameter.name}};
         }
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters)

@@ -70,8 +70,9 @@ void Compiler::initialValues() {
 }
 
 // Annotations hold literals (a number, a string, a vector's initializer list): evaluated without
-// parameters and converted to the annotation's declared type. One that does not evaluate is left out
-// silently: the annotations the compiler acts on report their own errors.
+// parameters and converted to the annotation's declared type. One that does not evaluate (it names a
+// parameter) is left out silently, as if absent: an annotation the compiler acts on then takes its
+// default (an image's `Width`: 64).
 Annotations Compiler::annotationValues(const std::vector<Annotation>& annotations) {
     Annotations values;
     for (const Annotation& annotation : annotations) {

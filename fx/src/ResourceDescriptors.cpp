@@ -7,6 +7,7 @@
 #include "CaseBlindPath.h"
 
 #include <fx/InstancedPass.h>
+#include <fx/StorageLimits.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,9 +35,20 @@ std::optional<TextureFormat> imageTextureFormat(const std::string& qualifier) {
 }
 
 // An image's size annotation (`int Width = 256;`): `absent` without one or for one that is not one number.
-int sizeAnnotation(const ParameterInfo& parameter, const char* name, int absent) {
+// Kept as the annotation's float until its range is checked: an `int` annotation is folded, not clamped,
+// so `Width = 1e10` arrives as a float no `int` can hold.
+double sizeAnnotation(const ParameterInfo& parameter, const char* name, double absent) {
     const AnnotationValue* size = findAnnotation(parameter.annotations, name);
-    return size && size->value.data.size() == 1 ? static_cast<int>(size->value.data[0]) : absent;
+    return size && size->value.data.size() == 1 ? double(size->value.data[0]) : absent;
+}
+
+// A side as the error message shows it: a whole number as written, anything else as %g.
+std::string sideText(double side) {
+    if (side == std::floor(side) && std::fabs(side) < 1e15)
+        return std::to_string(static_cast<long long>(side));
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", side);
+    return text;
 }
 
 }  // namespace
@@ -440,7 +452,7 @@ void Compiler::storageResources() {
             if (const AnnotationValue* count = findAnnotation(parameter.annotations, "ElementCount")) {
                 const std::vector<float>& data = count->value.data;
                 const double value = data.empty() ? 0.0 : data[0];
-                if (data.size() == 1 && value >= 1 && value <= double(1u << 28) &&
+                if (data.size() == 1 && value >= 1 && value <= double(kMostStorageElements) &&
                     value == static_cast<double>(static_cast<uint32_t>(value)))
                     parameter.elementCount = static_cast<uint32_t>(value);
                 else
@@ -450,23 +462,27 @@ void Compiler::storageResources() {
             continue;
         }
         if (!parameter.type.isImage()) continue;
-        const int width = sizeAnnotation(parameter, "Width", 64);
-        const int height = type == BaseType::RWTexture1D ? 1 : sizeAnnotation(parameter, "Height", 64);
-        const int depth = type == BaseType::RWTexture3D        ? sizeAnnotation(parameter, "Depth", 1)
-                          : type == BaseType::RWTexture2DArray ? sizeAnnotation(parameter, "ArraySize", 1)
-                                                               : 1;
-        const int most = type == BaseType::RWTexture3D ? 2048 : 16384;
-        if (width < 1 || height < 1 || depth < 1 || width > most || height > most || depth > 2048) {
-            std::string size = std::to_string(width);
-            if (type != BaseType::RWTexture1D) size += " x " + std::to_string(height);
+        const double width = sizeAnnotation(parameter, "Width", 64);
+        const double height = type == BaseType::RWTexture1D ? 1 : sizeAnnotation(parameter, "Height", 64);
+        const double depth = type == BaseType::RWTexture3D        ? sizeAnnotation(parameter, "Depth", 1)
+                             : type == BaseType::RWTexture2DArray ? sizeAnnotation(parameter, "ArraySize", 1)
+                                                                  : 1;
+        const double most = type == BaseType::RWTexture3D ? kMostVolumeImageSide : kMostImageSide;
+        // Written so that NaN fails it too.
+        const auto inRange = [](double side, double largest) {
+            return side >= 1 && side <= largest && side == std::floor(side);
+        };
+        if (!inRange(width, most) || !inRange(height, most) || !inRange(depth, kMostVolumeImageSide)) {
+            std::string size = sideText(width);
+            if (type != BaseType::RWTexture1D) size += " x " + sideText(height);
             if (type == BaseType::RWTexture3D || type == BaseType::RWTexture2DArray)
-                size += " x " + std::to_string(depth);
+                size += " x " + sideText(depth);
             error(DiagId::ImageSizeOutOfRange, parameter.loc, {parameter.name, size});
             continue;
         }
-        parameter.imageSize[0] = width;
-        parameter.imageSize[1] = height;
-        parameter.imageSize[2] = depth;
+        parameter.imageSize[0] = static_cast<int>(width);
+        parameter.imageSize[1] = static_cast<int>(height);
+        parameter.imageSize[2] = static_cast<int>(depth);
     }
 }
 

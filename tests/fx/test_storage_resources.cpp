@@ -97,6 +97,12 @@ TEST(StorageResourceAnnotations, AnInvalidAnnotationIsALocatedCompileError) {
               "storage.fx:1:21: error: invalid render-target size: Volume is 4 x 4 x 0");
     EXPECT_EQ(compileError("RWTexture2D<float4> Wide < int Width = 20000; >;\n", DiagId::ImageSizeOutOfRange),
               "storage.fx:1:21: error: invalid render-target size: Wide is 20000 x 64");
+    // Beyond any int, and not whole: refused as the annotation's number, never converted first.
+    EXPECT_EQ(compileError("RWTexture2D<float4> Huge < int Width = 1e10; >;\n", DiagId::ImageSizeOutOfRange),
+              "storage.fx:1:21: error: invalid render-target size: Huge is 10000000000 x 64");
+    EXPECT_EQ(
+        compileError("RWTexture2D<float4> Half < float Height = 2.5; >;\n", DiagId::ImageSizeOutOfRange),
+        "storage.fx:1:21: error: invalid render-target size: Half is 64 x 2.5");
 }
 
 // An image's texel format is the one its code declares (glslang's, from the element type): float and unorm
@@ -118,8 +124,8 @@ technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Fill())); } }
     EXPECT_NE(error.find("is an image of format 'r32ui'"), std::string::npos) << error;
 }
 
-// A view of no buffer or read-write texture, or a size the compiler would have refused, in a file: corrupt,
-// refused before the runtime makes anything of it.
+// A view of no buffer or read-write texture, a size the compiler would have refused, or an image format no
+// image can have, in a file: corrupt, refused before the runtime makes anything of it.
 TEST(StorageResourceAnnotations, AViewOrSizeOutOfRangeInAFileIsCorrupt) {
     DiagnosticList diagnostics;
     std::shared_ptr<CompiledEffect> compiled = compile(kStorage, diagnostics);
@@ -150,6 +156,21 @@ TEST(StorageResourceAnnotations, AViewOrSizeOutOfRangeInAFileIsCorrupt) {
         CompiledEffect damaged = *compiled;
         damaged.parameters[indexOf(damaged, "Cells")].elementCount = (1u << 28) + 1;
         EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterStorageSizeOutOfRange);
+    }
+    {
+        CompiledEffect damaged = *compiled;  // a volume's sides stop at 2048, a 2D image's at 16384
+        damaged.parameters[indexOf(damaged, "Volume")].imageSize[0] = 2049;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterStorageSizeOutOfRange);
+    }
+    {
+        CompiledEffect damaged = *compiled;  // a structured buffer is no image
+        damaged.parameters[indexOf(damaged, "Cells")].imageFormat = TextureFormat::RGBA32F;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterImageFormatInvalid);
+    }
+    {
+        CompiledEffect damaged = *compiled;  // no image holds depth
+        damaged.parameters[indexOf(damaged, "Volume")].imageFormat = TextureFormat::D24S8;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterImageFormatInvalid);
     }
 }
 

@@ -918,6 +918,8 @@ FX_DIAGNOSTIC(CompiledEffectParameterViewOutOfRange, Error,
 FX_DIAGNOSTIC(CompiledEffectParameterStorageSizeOutOfRange, Error,
               "the compiled effect file is corrupt: parameter '{0}': an element count or image size out of "
               "range")
+FX_DIAGNOSTIC(CompiledEffectParameterImageFormatInvalid, Error,
+              "the compiled effect file is corrupt: parameter '{0}' has an image format it cannot have")
 
 // [SECTION] Effect pools (runtime/EffectPool.h, docs/api.md)
 FX_DIAGNOSTIC(PoolSharedTypeMismatch, Error,

@@ -1,6 +1,8 @@
 // StorageResources: see StorageResources.h. The images are made in StorageImages.cpp.
 #include "StorageResources.h"
 
+#include <fx/StorageLimits.h>
+
 #include <algorithm>
 #include <cstring>
 
@@ -127,7 +129,7 @@ bool StorageResources::set(size_t index, const void* bytes, size_t elements, siz
         args.push_back(std::to_string(elementSize));
         return args;
     };
-    if ((bytes == nullptr && elements > 0) || elements > (size_t(1) << 28) || elementBytes > 65536)
+    if ((bytes == nullptr && elements > 0) || elements > fx::kMostStorageElements || elementBytes > 65536)
         return refuse(fx::DiagId::SetBufferByteCount, what);
     const size_t total = elements * elementBytes;
     if (type.base == fx::BaseType::Buffer) {
