@@ -20,7 +20,7 @@
 #include <tuple>
 #include <utility>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_compute_effects {
 namespace {
 
 constexpr int kWidth = 160;
@@ -327,4 +327,4 @@ technique11 Filled < string Script = "Pass=Fill;"; >
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_compute_effects

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace test_measurement_core {
+
 namespace {
 
 fx::Diagnostic error(const std::string& message, int line) {
@@ -76,3 +78,4 @@ TEST(ShadowMeasurement, VisibilityVariantChangesTheFragmentShaderOfAnEffectThatE
 }
 
 }  // namespace
+}  // namespace test_measurement_core
