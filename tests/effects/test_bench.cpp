@@ -21,7 +21,7 @@
 #include <regex>
 #include <set>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_bench {
 namespace {
 
 using Json = nlohmann::json;
@@ -579,4 +579,4 @@ TEST(PassTimings, TimedFramesReportEveryPassWithItsDraws) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_bench

@@ -18,6 +18,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_check_command {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -450,3 +452,4 @@ TEST(CheckCommand, AHostFileDrawsTheApplicationsFrame) {
 }
 
 }  // namespace
+}  // namespace test_check_command

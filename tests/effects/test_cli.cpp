@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_cli {
+
 namespace {
 
 using shadowfx::test::kSource;
@@ -235,3 +237,4 @@ TEST(Cli, UnknownTechniqueIsAnError) {
 }
 
 }  // namespace
+}  // namespace test_cli

@@ -17,6 +17,8 @@
 #include <optional>
 #include <string>
 
+namespace test_compiled_effect_cli {
+
 namespace {
 
 using shadowfx::test::run;
@@ -214,3 +216,4 @@ technique main { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = comp
 }
 
 }  // namespace
+}  // namespace test_compiled_effect_cli

@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_compiled_effect_files {
 namespace {
 
 // Small frames and maps: llvmpipe renders every technique of every effect in seconds, and a byte
@@ -79,4 +79,4 @@ TEST(CompiledEffectFiles, ADamagedFileIsALocatedError) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_compiled_effect_files

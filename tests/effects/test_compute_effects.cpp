@@ -20,7 +20,7 @@
 #include <tuple>
 #include <utility>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_compute_effects {
 namespace {
 
 constexpr int kWidth = 160;
@@ -302,4 +302,4 @@ TEST(ComputeEffects, APassWithComputeAndGraphicsShadersDispatchesOneAndDrawsTheO
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_compute_effects

@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_conventions {
 namespace {
 
 runtime::Scene emptyScene() {
@@ -185,4 +185,4 @@ technique t < string Script = "RenderColorTarget0=LightPort; RenderPort=light0; 
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_conventions

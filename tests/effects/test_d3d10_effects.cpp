@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_d3d10_effects {
 namespace {
 
 constexpr int kWidth = 160;
@@ -974,4 +974,4 @@ technique11 Msaa < string Script = "Pass=Draw; Pass=Read;"; >
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_d3d10_effects

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_d3d10_state_arrays {
 namespace {
 
 constexpr int kWidth = 96;
@@ -66,4 +66,4 @@ TEST(D3d10StateArrays, AParameterIndexChoosesTheElementWhenThePassIsApplied) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_d3d10_state_arrays

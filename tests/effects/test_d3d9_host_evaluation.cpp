@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_d3d9_host_evaluation {
 namespace {
 
 // What the tests of host-evaluated functions render: the teapot, small. An object colour counts where it
@@ -590,4 +590,4 @@ TEST(D3d9HostEvaluation, LoopsTheHostCannotUnrollAreReportedAtTheCall) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_d3d9_host_evaluation

@@ -7,7 +7,7 @@
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_d3d9_lowering {
 namespace {
 
 // The scene's objects cover this share of the frame at least (the teapot at 64x48).
@@ -253,4 +253,4 @@ TEST(D3d9Lowering, CubeLookupInADirectionThatIsNotFinite) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_d3d9_lowering

@@ -30,7 +30,7 @@
 #include <ostream>
 #include <sstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_depth_layer_effects {
 namespace {
 
 constexpr int kWidth = 320;
@@ -735,4 +735,4 @@ TEST(AdaptiveBias, TangentPlaneDepthIsTheRayPlaneIntersectionAtTheTexelCentre) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_depth_layer_effects

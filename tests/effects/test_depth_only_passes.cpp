@@ -12,7 +12,7 @@
 
 #include <algorithm>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_depth_only_passes {
 namespace {
 
 struct Frame {
@@ -234,4 +234,4 @@ technique t < string Script = "Pass=Mark; Pass=Show;"; > {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_depth_only_passes

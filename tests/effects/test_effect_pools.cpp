@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_effect_pools {
+
 namespace {
 
 using shadowfx::test::countPixelsOfColour;
@@ -152,3 +154,4 @@ TEST(EffectPools, ASharedParameterOfAnotherTypeIsAnError) {
 }
 
 }  // namespace
+}  // namespace test_effect_pools

@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_exact_shadows {
 namespace {
 
 constexpr int kWidth = 320;
@@ -140,4 +140,4 @@ TEST(ExactShadows, AnOpenCasterShadowsWhicheverSideFacesTheLightWhereClosedOnesA
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_exact_shadows

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <map>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_filtering_effects {
 namespace {
 
 constexpr int kWidth = 320;  // the size the effects' bounds were measured at
@@ -367,4 +367,4 @@ technique t { pass p < string Script = "Draw=Buffer;"; > { VertexShader = compil
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_filtering_effects

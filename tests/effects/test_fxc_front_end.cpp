@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_fxc_front_end {
 namespace {
 
 // Fails on a blank or constant frame, and on one that lacks a channel: a colour mask read as red alone
@@ -180,4 +180,4 @@ TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_fxc_front_end

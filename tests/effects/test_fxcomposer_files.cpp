@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_fxcomposer_files {
 namespace {
 
 // The post-process pass reads the scene target through a sampler handed over as a `uniform` argument
@@ -120,4 +120,4 @@ TEST(FxComposerFiles, PlainLitEffectLightsWithoutShadows) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_fxcomposer_files

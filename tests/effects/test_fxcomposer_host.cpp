@@ -11,7 +11,7 @@
 #include <cmath>
 #include <filesystem>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_fxcomposer_host {
 namespace {
 
 constexpr int kWidth = 96;
@@ -302,4 +302,4 @@ TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_fxcomposer_host

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_host_files {
+
 namespace {
 
 using shadowfx::test::luminance;
@@ -170,3 +172,4 @@ TEST(HostFiles, NamesTheEffectLacksAreLocatedAtTheFile) {
 }
 
 }  // namespace
+}  // namespace test_host_files

@@ -15,7 +15,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_layered_targets {
 namespace {
 
 constexpr int kWidth = 96;
@@ -224,4 +224,4 @@ TEST(LayeredTargets, ThePixelShaderReadsTheSvPrimitiveIdTheGeometryShaderWrote) 
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_layered_targets

@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cstring>
 
+namespace test_light_parameterization_effects {
+
 namespace {
 
 using namespace runtime;
@@ -257,3 +259,4 @@ TEST(ParameterizationAnnotation, OneNameIsAccepted) {
 }
 
 }  // namespace
+}  // namespace test_light_parameterization_effects

@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <filesystem>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_single_technique_compile {
 namespace {
 
 constexpr int kWidth = 96;
@@ -144,4 +144,4 @@ TEST(SingleTechniqueCompileRoof, PeelCullCompiledAloneKeepsTheOpenRoofsShadow) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_single_technique_compile

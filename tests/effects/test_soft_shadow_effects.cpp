@@ -19,7 +19,7 @@
 #include <map>
 #include <memory>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_soft_shadow_effects {
 namespace {
 
 constexpr int kWidth = 320;  // the size check renders at
@@ -360,4 +360,4 @@ TEST(SoftShadowEffects, FractionalDiskEarlyOutIsTakenOutsideThePenumbra) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_soft_shadow_effects

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_stream_output_effects {
 namespace {
 
 constexpr int kWidth = 160;
@@ -182,4 +182,4 @@ TEST(StreamOutputEffects, ANullPixelShaderWithoutStreamOutputWritesDepthAndNoCol
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_stream_output_effects

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace test_stress_guards {
+
 namespace {
 
 bool finite(const glm::mat4& m) {
@@ -134,3 +136,4 @@ TEST(StressGuards, PixelsOutsideASpotConeAreNotReceivers) {
 }
 
 }  // namespace
+}  // namespace test_stress_guards

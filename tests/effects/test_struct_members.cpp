@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_struct_members {
+
 namespace {
 
 using shadowfx::test::countPixelsOfColour;
@@ -190,3 +192,4 @@ TEST(StructMembers, MissingMembersGiveInvalidHandlesThatDoNothing) {
 }
 
 }  // namespace
+}  // namespace test_struct_members

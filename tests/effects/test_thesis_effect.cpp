@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_thesis_effect {
 namespace {
 
 constexpr int kWidth = 320;
@@ -138,4 +138,4 @@ TEST_F(ThesisEffect, SettingAnUnknownParameterIsAnError) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_thesis_effect

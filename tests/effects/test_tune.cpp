@@ -17,7 +17,7 @@
 #include <iterator>
 #include <sstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_tune {
 namespace {
 
 using Json = nlohmann::json;
@@ -155,4 +155,4 @@ technique logged { pass P { VertexShader = compile vs_3_0 PositionVS(); PixelSha
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_tune

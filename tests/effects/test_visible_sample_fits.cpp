@@ -14,7 +14,7 @@
 
 #include <memory>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_visible_sample_fits {
 namespace {
 
 constexpr int kWidth = 320;
@@ -125,4 +125,4 @@ INSTANTIATE_TEST_SUITE_P(Effects, VisibleSampleFits,
                          });
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_visible_sample_fits

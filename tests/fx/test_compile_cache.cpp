@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fx {
+namespace fx::test_compile_cache {
 namespace {
 
 const char* kEffect = R"(float4 Tint = {1, 1, 1, 1};
@@ -66,4 +66,4 @@ TEST(CompileCache, HashSeparatesStageAndOptions) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_compile_cache

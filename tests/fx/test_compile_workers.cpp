@@ -25,6 +25,8 @@
 #include <fstream>
 #include <thread>
 
+namespace test_compile_workers {
+
 namespace {
 
 const std::string kSourceDir = SHADOWFX_SOURCE_DIR;
@@ -363,3 +365,4 @@ TEST(SpirvToGlsl, ASpirvCrossThrowIsAnErrorNotATerminate) {
 }
 
 }  // namespace
+}  // namespace test_compile_workers

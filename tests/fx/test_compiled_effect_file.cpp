@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace fx {
+namespace fx::test_compiled_effect_file {
 namespace {
 
 std::vector<std::string> shippedEffects() {
@@ -374,4 +374,4 @@ TEST_F(DamagedFile, TrailingBytesAreCorrupt) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_compiled_effect_file

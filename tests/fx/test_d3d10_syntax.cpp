@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <optional>
 
-namespace fx {
+namespace fx::test_d3d10_syntax {
 namespace {
 
 std::shared_ptr<const CompiledEffect> compile(const std::string& source, DiagnosticList& diagnostics) {
@@ -783,4 +783,4 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_d3d10_syntax

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace fx {
+namespace fx::test_diagnostic_table {
 namespace {
 
 constexpr DiagId kAllIds[] = {
@@ -109,4 +109,4 @@ TEST(DiagnosticTable, EveryIdIsDocumentedWithItsMessage) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_diagnostic_table

@@ -10,7 +10,7 @@
 
 #include <algorithm>
 
-namespace fx {
+namespace fx::test_effect_compiler {
 namespace {
 
 // The FX Composer listing of Lehőcz 2007 (page breaks repaired), with a hardware-shadow depth sampler added.
@@ -646,4 +646,4 @@ technique11 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_effect_compiler

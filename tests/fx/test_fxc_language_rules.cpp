@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace fx {
+namespace fx::test_fxc_language_rules {
 namespace {
 
 std::shared_ptr<const CompiledEffect> compile(const std::string& source, DiagnosticList& diagnostics) {
@@ -149,4 +149,4 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_fxc_language_rules

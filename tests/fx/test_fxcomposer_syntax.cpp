@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace fx {
+namespace fx::test_fxcomposer_syntax {
 namespace {
 
 // A small complete effect: one pass with both shaders.
@@ -359,4 +359,4 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_fxcomposer_syntax

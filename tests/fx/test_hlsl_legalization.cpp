@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace fx {
+namespace fx::test_hlsl_legalization {
 namespace {
 
 std::shared_ptr<Effect> parse(const std::string& source, DiagnosticList& diags) {
@@ -335,4 +335,4 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_hlsl_legalization

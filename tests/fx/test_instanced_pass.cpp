@@ -9,7 +9,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <gtest/gtest.h>
 
-namespace fx {
+namespace fx::test_instanced_pass {
 namespace {
 
 const char* kEffect = R"(
@@ -173,4 +173,4 @@ TEST(InstancedPass, RefusesAPassWithAGeometryShader) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_instanced_pass

@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace fx {
+namespace fx::test_limits {
 namespace {
 
 struct Result {
@@ -112,4 +112,4 @@ TEST(Limits, IncludeDepthAndSourceSizeAreOptions) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_limits

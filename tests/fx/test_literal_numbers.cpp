@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fx {
+namespace fx::test_literal_numbers {
 namespace {
 
 TEST(LiteralNumbers, ListsInEitherSpelling) {
@@ -24,4 +24,4 @@ TEST(LiteralNumbers, EveryWordWholeAndFinite) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_literal_numbers

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace test_malformed_corpus {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -242,3 +244,4 @@ TEST(MalformedCorpusFiles, EveryGoldenHasAnInput) {
 }
 
 }  // namespace
+}  // namespace test_malformed_corpus

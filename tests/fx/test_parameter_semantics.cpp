@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <string>
 
-namespace fx {
+namespace fx::test_parameter_semantics {
 namespace {
 
 std::shared_ptr<CompiledEffect> compile(const std::string& source, const std::string& name) {
@@ -169,4 +169,4 @@ technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Fill())); } }
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_parameter_semantics

@@ -5,6 +5,8 @@
 
 #include <map>
 
+namespace test_parse_diagnostics {
+
 using namespace fx;
 
 namespace {
@@ -170,3 +172,4 @@ TEST(ParseDiagnostics, FileNotFound) {
     ASSERT_EQ(diags.items().size(), 1u);
     EXPECT_EQ(diags.items()[0].id, DiagId::FileNotFound);
 }
+}  // namespace test_parse_diagnostics

@@ -6,6 +6,8 @@
 
 #include <map>
 
+namespace test_parser {
+
 using namespace fx;
 
 namespace {
@@ -626,3 +628,4 @@ TEST(Parser, MacroExpansionColumnsFallBack) {
     EXPECT_EQ(init.loc.line, 2);
     EXPECT_GE(init.loc.column, 11);
 }
+}  // namespace test_parser

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fx {
+namespace fx::test_pass_lowering {
 namespace {
 
 const char* kSource = R"(float4x4 WVP;
@@ -159,4 +159,4 @@ TEST(SemanticTables, FreeVertexInputNamesMatchTheMeshStreamsByPrefix) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_pass_lowering

@@ -6,6 +6,8 @@
 
 #include <map>
 
+namespace test_preprocessor {
+
 using namespace fx;
 
 namespace {
@@ -291,3 +293,4 @@ TEST(Preprocessor, TextAfterIncludeFileNameIsIgnoredWithWarning) {
     EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
     EXPECT_EQ(diags.items()[0].loc.str(), "main.fx:1:18");
 }
+}  // namespace test_preprocessor

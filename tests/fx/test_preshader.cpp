@@ -8,7 +8,7 @@
 #include <cmath>
 #include <map>
 
-namespace fx {
+namespace fx::test_preshader {
 namespace {
 
 Expr num(double v, bool integer = false) {
@@ -329,4 +329,4 @@ TEST(PreshaderProgram, RegistersKeptBetweenRunsGiveWhatFreshOnesGive) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_preshader

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_render_states {
+
 using namespace fx;
 
 TEST(RenderStates, CaseInsensitiveNamesAndAliases) {
@@ -54,3 +56,4 @@ TEST(RenderStates, EnumValueNames) {
     EXPECT_TRUE(equalsIgnoreCase("LessEqual", "LESSEQUAL"));
     EXPECT_FALSE(equalsIgnoreCase("Less", "LessEqual"));
 }
+}  // namespace test_render_states

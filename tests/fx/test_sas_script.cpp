@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_sas_script {
+
 using namespace fx;
 
 TEST(SasScript, AllCommands) {
@@ -149,3 +151,4 @@ TEST(SasScript, ClearFormsFxComposerTook) {
     EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
     EXPECT_EQ(diags.items()[0].loc.column, 27);
 }
+}  // namespace test_sas_script

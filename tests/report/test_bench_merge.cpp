@@ -12,7 +12,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_bench_merge {
 namespace {
 
 using report::Json;
@@ -235,4 +235,4 @@ TEST(BenchReport, WritesTheOutputsOfAMergeAndMarksAShard) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_bench_merge

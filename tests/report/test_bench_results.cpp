@@ -11,7 +11,7 @@
 
 #include <fstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_bench_results {
 namespace {
 
 using report::Json;
@@ -224,4 +224,4 @@ TEST(BenchResults, TheReportWriterWritesTheDocumentAsResultsJson) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_bench_results

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_bench_shard {
 namespace {
 
 TEST(BenchShard, ParsesKOfN) {
@@ -61,4 +61,4 @@ TEST(BenchShard, NeighbouringRunsGoToDifferentShards) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_bench_shard

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_conformance_report {
 namespace {
 
 using report::CheckOutcome;
@@ -98,4 +98,4 @@ TEST(ConformanceReport, JunitHasASuitePerEffectAndACasePerRow) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_conformance_report

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_error_time_plot {
 namespace {
 
 struct Rect {
@@ -112,4 +112,4 @@ TEST(ErrorTimePlot, PointsApartKeepTheirLabelsBesideThem) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_error_time_plot

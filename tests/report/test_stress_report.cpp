@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_stress_report {
 namespace {
 
 using report::StressCriterion;
@@ -180,4 +180,4 @@ TEST(StressReport, TheSamplingLimitedRiseIsTheCasesExcessOverItsOrdinary) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_stress_report

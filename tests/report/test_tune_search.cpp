@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_tune_search {
 namespace {
 
 using report::TuneParameter;
@@ -190,4 +190,4 @@ TEST(TuneSearch, ValuesAreSnappedOntoWhatTheEffectReads) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_tune_search

@@ -11,7 +11,7 @@
 #include <iterator>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_tune_surface_plot {
 namespace {
 
 size_t count(const std::string& text, const std::string& what) {
@@ -49,4 +49,4 @@ TEST(TuneSurfacePlot, OnePanelPerParameterAndOneMarkerPerSettingInEach) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_tune_surface_plot

@@ -22,6 +22,8 @@
 #include <filesystem>
 #include <set>
 
+namespace test_batching {
+
 namespace {
 
 using namespace runtime;
@@ -301,3 +303,4 @@ INSTANTIATE_TEST_SUITE_P(Effects, ShippedEffect, ::testing::ValuesIn(shippedEffe
                          });
 
 }  // namespace
+}  // namespace test_batching

@@ -14,7 +14,7 @@
 #include <filesystem>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_bench_run {
 namespace {
 
 runtime::BenchOptions tinyBench(const std::filesystem::path& out) {
@@ -126,4 +126,4 @@ TEST(BenchRun, OptionsThatCannotBeMeasuredAreUsageErrors) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_bench_run

@@ -13,6 +13,8 @@
 #include <chrono>
 #include <set>
 
+namespace test_builtin_scenes {
+
 using namespace runtime;
 
 namespace {
@@ -199,3 +201,4 @@ TEST(BuiltinScenes, MissingAssetNamesItsPackage) {
     EXPECT_NE(diagnostics.items()[0].message.find("no-such-model.obj"), std::string::npos);
     EXPECT_NE(diagnostics.items()[0].message.find("glmark2-data"), std::string::npos);
 }
+}  // namespace test_builtin_scenes

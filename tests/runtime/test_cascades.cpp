@@ -18,6 +18,8 @@
 #include <cmath>
 #include <cstring>
 
+namespace test_cascades {
+
 namespace {
 
 using namespace runtime;
@@ -313,3 +315,4 @@ TEST(Cascades, BadCascadeIndexIsAnErrorAtItsCommand) {
 }
 
 }  // namespace
+}  // namespace test_cascades

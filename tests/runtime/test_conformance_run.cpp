@@ -15,7 +15,7 @@
 #include <sstream>
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_conformance_run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -98,4 +98,4 @@ TEST(ConformanceRun, AFileWithoutTechniquesFailsAtItsFirstLine) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_conformance_run

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace test_context {
+
 using namespace runtime;
 
 namespace {
@@ -132,3 +134,4 @@ TEST(Context, DebugContextRoutesMessagesToTheSink) {
         << messages.back();
     setDebugSink(nullptr);
 }
+}  // namespace test_context

@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_dds_textures {
 namespace {
 
 class DdsTextures : public ::testing::Test {
@@ -356,4 +356,4 @@ technique11 t { pass p { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_dds_textures

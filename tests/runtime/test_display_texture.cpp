@@ -5,6 +5,8 @@
 
 #include <vector>
 
+namespace test_display_texture {
+
 namespace {
 
 TEST(DisplayTexture, ShadowMapDepthsSpanBlackToWhiteAndTheClearValueIsWhite) {
@@ -33,3 +35,4 @@ TEST(DisplayTexture, TooFewTexelsGiveAnEmptyImage) {
 }
 
 }  // namespace
+}  // namespace test_display_texture

@@ -13,7 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_effect_resources {
 namespace {
 
 const char* kEffect = R"(
@@ -312,4 +312,4 @@ TEST(SceneCache, TheBvhFollowsTheObjectsAndOnlyThem) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_effect_resources

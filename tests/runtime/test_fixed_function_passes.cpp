@@ -8,7 +8,7 @@
 #include <fx/EffectParser.h>
 #include <runtime/BuiltinScenes.h>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_fixed_function_passes {
 namespace {
 
 constexpr int kSize = 96;
@@ -324,4 +324,4 @@ TEST(FixedFunctionPasses, WhatIsNotGeneratedIsALocatedError) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_fixed_function_passes

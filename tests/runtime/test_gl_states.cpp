@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_gl_states {
+
 using namespace runtime;
 using fx::RenderStateId;
 using testsupport::Program;
@@ -358,3 +360,4 @@ TEST_F(GlStates, UnsetStatesReturnToDefaults) {
     EXPECT_EQ(func, GL_LEQUAL);
     EXPECT_EQ(gl::GetError(), GLenum(GL_NO_ERROR));
 }
+}  // namespace test_gl_states

@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <filesystem>
 
+namespace test_gpu_resources {
+
 using namespace runtime;
 using testsupport::Program;
 
@@ -351,3 +353,4 @@ TEST_F(GpuResources, RenderedImageSurvivesPngWithTopRowFirst) {
     EXPECT_EQ(loaded->pixel(3, 3), glm::vec4(0, 0, 0, 1));
     std::filesystem::remove(path);
 }
+}  // namespace test_gpu_resources

@@ -15,6 +15,8 @@
 
 #include <cmath>
 
+namespace test_ground_truth {
+
 namespace {
 
 constexpr int kWidth = 200;
@@ -174,3 +176,4 @@ TEST(ShadowRayCaster, SegmentQueriesAgreeWithTheBruteForceReference) {
 }
 
 }  // namespace
+}  // namespace test_ground_truth

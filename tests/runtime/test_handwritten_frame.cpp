@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+namespace test_handwritten_frame {
+
 namespace {
 
 using shadowfx::test::differingPixels;
@@ -67,3 +69,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, HandWrittenFrame, ::testing::Values("boxes", "t
                          });
 
 }  // namespace
+}  // namespace test_handwritten_frame

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace test_image_compare {
+
 namespace {
 
 runtime::FrameImage loadGolden() {
@@ -140,3 +142,4 @@ TEST(ImageCompare, ReadPngReportsAMissingFile) {
 }
 
 }  // namespace
+}  // namespace test_image_compare

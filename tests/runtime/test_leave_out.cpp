@@ -22,6 +22,8 @@
 #include <cstring>
 #include <random>
 
+namespace test_leave_out {
+
 namespace {
 
 using namespace runtime;
@@ -625,3 +627,4 @@ TEST(LeaveOut, PassProjectingWithOtherMatricesIsNotCulled) {
     EXPECT_EQ(differingPixels(culled.image, full.image), 0u);
     EXPECT_EQ(culled.stats.culled, 0);
 }
+}  // namespace test_leave_out

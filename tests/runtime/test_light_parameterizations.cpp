@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace test_light_parameterizations {
+
 using namespace runtime;
 
 namespace {
@@ -626,3 +628,4 @@ TEST(CascadedShadowMaps, SpotLightsUseTheFocusedWindowInEveryCascade) {
         EXPECT_EQ(cascade.projection, focused.projection);
     }
 }
+}  // namespace test_light_parameterizations

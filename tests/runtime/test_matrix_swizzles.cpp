@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_matrix_swizzles {
 namespace {
 
 const char* kEffect = R"(
@@ -127,4 +127,4 @@ TEST(MatrixSwizzles, ReadAndWriteTheElementsFxcDid) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_matrix_swizzles

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_measurement_core {
+
 namespace {
 
 fx::Diagnostic error(const std::string& message, int line) {
@@ -114,3 +116,4 @@ TEST(ShadowMeasurement, VisibilityVariantChangesTheFragmentShaderOfAnEffectThatE
 }
 
 }  // namespace
+}  // namespace test_measurement_core

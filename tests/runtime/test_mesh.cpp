@@ -11,6 +11,8 @@
 #include <optional>
 #include <tuple>
 
+namespace test_mesh {
+
 using namespace runtime;
 
 namespace {
@@ -284,3 +286,4 @@ TEST(Mesh, EmptyMeshBoundsAreZero) {
     expectNear(empty.boundsMax(), glm::vec3(0.0f), 0.0f);
     EXPECT_EQ(empty.triangleCount(), 0u);
 }
+}  // namespace test_mesh

@@ -18,6 +18,8 @@
 #include <algorithm>
 #include <map>
 
+namespace test_pass_api {
+
 namespace {
 
 using shadowfx::test::differingPixels;
@@ -728,3 +730,4 @@ TEST(PassApi, EndRestoresTheStateBeginFound) {
 }
 
 }  // namespace
+}  // namespace test_pass_api

@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_pass_sampler_states {
 namespace {
 
 constexpr int kSize = 48;  // three tiles of the 16x16 texture, one texel per pixel
@@ -172,4 +172,4 @@ TEST(PassSamplerStates, UnknownSamplerOrTextureIsALocatedError) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_pass_sampler_states

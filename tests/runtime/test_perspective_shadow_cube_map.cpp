@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace test_perspective_shadow_cube_map {
+
 using namespace runtime;
 
 namespace {
@@ -194,3 +196,4 @@ TEST(PerspectiveShadowCubeMap, SeedSceneWithTheLightInFront) {
                                 "behind");
     EXPECT_GE(details.facesUsed, 3);
 }
+}  // namespace test_perspective_shadow_cube_map

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+namespace test_perspective_shadow_map {
+
 using namespace runtime;
 
 namespace {
@@ -272,3 +274,4 @@ TEST(PerspectiveShadowMap, SpotLightsKeepTheUniformFit) {
     EXPECT_EQ(uniform.view, psm.view);
     EXPECT_EQ(uniform.projection, psm.projection);
 }
+}  // namespace test_perspective_shadow_map

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_point_states {
 namespace {
 
 const char* kEffect = R"(
@@ -136,4 +136,4 @@ TEST(PointStates, SpritesFromAParameterAreALocatedError) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_point_states

@@ -6,7 +6,7 @@
 #include <runtime/BuiltinScenes.h>
 #include <runtime/Scene.h>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_preshader_runs {
 namespace {
 
 const char* kEffect = R"(
@@ -57,4 +57,4 @@ TEST(PreshaderRuns, OnlyWhenAnInputChanged) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_preshader_runs

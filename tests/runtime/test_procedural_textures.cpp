@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_procedural_textures {
 namespace {
 
 // Draws one full-screen quad into the frame with `pixelShader` (a function `float4 PS(float2 uv :
@@ -445,4 +445,4 @@ float4 Background = {0.5, 0.5, 0.5, 0.5};
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_procedural_textures

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstring>
 
+namespace test_psm_cube_passes {
+
 namespace {
 
 using namespace runtime;
@@ -88,3 +90,4 @@ TEST(PsmCube, AStillFrameReusesTheCubeMap) {
     ASSERT_EQ(first.image.rgba.size(), second.image.rgba.size());
     EXPECT_EQ(std::memcmp(first.image.rgba.data(), second.image.rgba.data(), first.image.rgba.size()), 0);
 }
+}  // namespace test_psm_cube_passes

@@ -23,6 +23,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_runtime_modules {
+
 namespace {
 
 using shadowfx::test::ScratchDirectory;
@@ -164,3 +166,4 @@ TEST(RuntimeModules, SearchesTheEnvironmentsFolderAloneWhenSet) {
     EXPECT_NE(std::find(dirs.begin(), dirs.end(), std::string(SHADOWFX_BINARY_DIR) + "/modules"), dirs.end());
     if (previous) setenv("SHADOWFX_MODULE_DIR", saved.c_str(), 1);
 }
+}  // namespace test_runtime_modules

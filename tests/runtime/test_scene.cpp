@@ -10,6 +10,8 @@
 #include <cmath>
 #include <set>
 
+namespace test_scene {
+
 using namespace runtime;
 
 namespace {
@@ -335,3 +337,4 @@ TEST(Scene, BoxShadowIsVisibleOnThePlane) {
     // At least a square unit of visible shadow (16 samples at a 0.25 spacing).
     EXPECT_GE(visibleShadow, 16);
 }
+}  // namespace test_scene

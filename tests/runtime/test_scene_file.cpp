@@ -12,6 +12,8 @@
 #include <fstream>
 #include <set>
 
+namespace test_scene_file {
+
 using namespace runtime;
 namespace fs = std::filesystem;
 
@@ -365,3 +367,4 @@ TEST(SceneFiles, ExamplesLoad) {
         EXPECT_FALSE(scene->lights.empty());
     }
 }
+}  // namespace test_scene_file

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+namespace test_shadow_metrics {
+
 namespace {
 
 TEST(ShadowMetrics, KnownFalseShadowAndFalseLightCountsGiveTheirPercentages) {
@@ -197,3 +199,4 @@ TEST(ShadowMetrics, SamplingLimitedErrorComesFromTexelsStraddlingTheTruthsBounda
     const std::vector<uint8_t> none(gbuffer.pixelCount(), 0);
     EXPECT_EQ(runtime::samplingLimitedError(gbuffer, none, truth, camera, fit, 16), 0.0);
 }
+}  // namespace test_shadow_metrics

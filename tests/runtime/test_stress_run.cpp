@@ -11,7 +11,7 @@
 
 #include <string>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_stress_run {
 namespace {
 
 runtime::StressOptions ordinaryCase() {
@@ -60,4 +60,4 @@ TEST(StressRun, AUniformReferenceWithoutAnErrorStopsTheRun) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_stress_run

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+namespace test_trapezoidal_shadow_map {
+
 using namespace runtime;
 
 namespace {
@@ -212,3 +214,4 @@ TEST(TrapezoidalShadowMap, SpotLightsKeepTheUniformFit) {
     EXPECT_EQ(uniform.view, tsm.view);
     EXPECT_EQ(uniform.projection, tsm.projection);
 }
+}  // namespace test_trapezoidal_shadow_map

@@ -15,7 +15,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace shadowfx::test {
+namespace shadowfx::test::test_truth_cache {
 namespace {
 
 constexpr int kWidth = 24;
@@ -204,4 +204,4 @@ TEST_F(TruthCacheTest, BadEntriesAreRejectedWithTheirReasonAndCastAgain) {
 }
 
 }  // namespace
-}  // namespace shadowfx::test
+}  // namespace shadowfx::test::test_truth_cache

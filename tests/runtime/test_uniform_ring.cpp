@@ -9,6 +9,8 @@
 
 #include <cstring>
 
+namespace test_uniform_ring {
+
 namespace {
 
 using namespace runtime;
@@ -80,3 +82,4 @@ TEST(UniformRing, BlocksKeptFromTheLapBeforeAreWrittenAgain) {
 }
 
 }  // namespace
+}  // namespace test_uniform_ring

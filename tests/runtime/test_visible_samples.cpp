@@ -16,6 +16,8 @@
 #include <memory>
 #include <vector>
 
+namespace test_visible_samples {
+
 using namespace runtime;
 
 namespace {
@@ -222,3 +224,4 @@ TEST(VisibleSamples, FitsHoldEverySampleAndSpendTheMapOnThem) {
 }
 
 }  // namespace
+}  // namespace test_visible_samples
