@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace fx {
+namespace fx::test_storage_resources {
 namespace {
 
 const char* const kStorage = R"(RWStructuredBuffer<float4> Cells < int ElementCount = 8; >;
@@ -175,4 +175,4 @@ TEST(StorageResourceAnnotations, AViewOrSizeOutOfRangeInAFileIsCorrupt) {
 }
 
 }  // namespace
-}  // namespace fx
+}  // namespace fx::test_storage_resources
