@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/phase-times.sh
 seconds="${1:-60}"
-shift || true
+if [ $# -gt 0 ]; then shift; fi
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(fuzz_effect_parser fuzz_effect_compiler fuzz_compile_workers fuzz_sas_script fuzz_dds_file
@@ -105,9 +105,9 @@ fuzz_one() {
 
 # start TARGET LIMIT: fuzz_one in the background once fewer than LIMIT targets run, its output in
 # build-asan/TARGET.report (printed in the targets' order at the end). A command that fails inside it is
-# named there.
+# named there; a job that ended on such a command fails the run here, its missing verdict below.
 start() {
-  while [ "$(jobs -rp | wc -l)" -ge "$2" ]; do wait -n || true; done
+  while [ "$(jobs -rp | wc -l)" -ge "$2" ]; do wait -n || status=1; done
   ( set -E; trap 'echo "$1: stopped at line $LINENO: $BASH_COMMAND"' ERR; fuzz_one "$1" ) \
     >"build-asan/$1.report" 2>&1 &
 }
