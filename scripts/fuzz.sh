@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets in fuzz/ in the sanitized build, build-asan/ (clang; configured by
 # scripts/configure-sanitized.sh, shared with scripts/test-sanitized.sh, which builds them already), and runs
-# each for SECONDS (default 60) on one core, as many targets at a time as there are cores (one at a time
-# for fuzz_compile_workers, whose workers are processes of their own). Corpora grow in
+# each for SECONDS (default 60) on one core, one after the other (two at a time on a two-core machine ran
+# a quarter to two thirds of the inputs each: docs/testing.md, "Fuzzing"). Corpora grow in
 # build-asan/corpus/TARGET/ (seeded from effects/, tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
 # any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
@@ -61,11 +61,9 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
 }
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" LP_NUM_THREADS=1
-
-# fuzz_one TARGET: runs one target, prints what CI's log shows of it, and writes its verdict (0: no finding)
-# to build-asan/TARGET.verdict as its last step: a run that stopped early leaves none, which fails too.
-fuzz_one() {
-  local target="$1" verdict=0 work log fuzzer_status findings executed finding
+status=0
+phase_start
+for target in "${targets[@]}"; do
   seed "$target"
   mkdir -p "build-asan/artifacts/$target"
   # Run in an empty folder: the scene loader resolves mesh paths there, not in the repository.
@@ -81,12 +79,12 @@ fuzz_one() {
   grep -E '^(#[0-9]+.*DONE|stat::|==[0-9]+== ?ERROR|SUMMARY|terminate called|  what\(\))' "$log" ||
     echo "$target: no statistics in $log"
   if [ "$fuzzer_status" -ne 0 ]; then
-    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; verdict=1
+    echo "$target: the fuzzer exited with status $fuzzer_status (log: build-asan/$target.log)"; status=1
   fi
   findings=$(find "build-asan/artifacts/$target" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
     -o -name 'timeout-*' -o -name 'oom-*' -o -name 'slow-unit-*' \) | sort)
   if [ -n "$findings" ]; then
-    echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; verdict=1
+    echo "$target: findings in build-asan/artifacts/$target/:"; echo "$findings"; status=1
     # Where the artifacts are out of reach (a CI machine), the log alone must let a developer reproduce
     # the finding: each input's first 4 KiB, base64 (`base64 -d > input`, then run the target on it).
     for finding in $findings; do
@@ -96,39 +94,10 @@ fuzz_one() {
   fi
   executed=$(sed -n 's/^stat::number_of_executed_units: *\([0-9]*\).*/\1/p' "$log" | tail -1)
   if [ "${executed:-0}" -eq 0 ]; then
-    echo "$target: ran no input (log: build-asan/$target.log)"; verdict=1
+    echo "$target: ran no input (log: build-asan/$target.log)"; status=1
   fi
   echo "corpus: $(ls "build-asan/corpus/$target" | wc -l) inputs"
   rm -rf "$work"
-  echo "$verdict" >"build-asan/$target.verdict"
-}
-
-# start TARGET LIMIT: fuzz_one in the background once fewer than LIMIT targets run, its output in
-# build-asan/TARGET.report (printed in the targets' order at the end). A command that fails inside it is
-# named there; a job that ended on such a command fails the run here, its missing verdict below.
-start() {
-  while [ "$(jobs -rp | wc -l)" -ge "$2" ]; do wait -n || status=1; done
-  ( set -E; trap 'echo "$1: stopped at line $LINENO: $BASH_COMMAND"' ERR; fuzz_one "$1" ) \
-    >"build-asan/$1.report" 2>&1 &
-}
-
-status=0
-phase_start
-for target in "${targets[@]}"; do rm -f "build-asan/$target.verdict"; done
-# Each target fuzzes on one core for the full SECONDS, as many at a time as there are cores. The
-# compile-worker target runs alone: its two workers are processes of their own, and each compile is held to
-# a time limit that a second fuzzer on the same cores could push it past, a finding of the machine's load.
-for target in "${targets[@]}"; do
-  [ "$target" = fuzz_compile_workers ] || start "$target" "$(nproc)"
-done
-wait
-for target in "${targets[@]}"; do
-  [ "$target" != fuzz_compile_workers ] || start "$target" 1
-done
-wait
-for target in "${targets[@]}"; do
-  cat "build-asan/$target.report"
-  [ "$(cat "build-asan/$target.verdict" 2>/dev/null)" = 0 ] || status=1
 done
 phase_end "fuzz (${#targets[@]} targets x ${seconds} s)" "$status"
 exit $status
