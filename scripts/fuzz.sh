@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets in fuzz/ in the sanitized build, build-asan/ (clang; configured by
 # scripts/configure-sanitized.sh, shared with scripts/test-sanitized.sh, which builds them already), and runs
 # each for SECONDS (default 60) on one core, one after the other (two at a time on a two-core machine ran
-# a quarter to two thirds of the inputs each: docs/testing.md, "Fuzzing"). Corpora grow in
+# a quarter to two thirds of the inputs each: docs/testing.md, "Robustness"). Corpora grow in
 # build-asan/corpus/TARGET/ (seeded from effects/, tests/data/, fuzz/seeds/ and scenes/). The script fails when a fuzzer exits non-zero, when a target leaves
 # any finding in build-asan/artifacts/TARGET/ (crash-*, leak-*, timeout-*, oom-*, slow-unit-*; findings of
 # an earlier run stay there and keep failing until they are fixed and removed), or when a target ran no
