@@ -440,12 +440,13 @@ void Compiler::storageResources() {
     for (ParameterInfo& parameter : mOut->parameters) {
         if (const AnnotationValue* view = findAnnotation(parameter.annotations, "ViewOf")) {
             const std::string& name = view->value.string;
-            auto viewed = std::find_if(mOut->parameters.begin(), mOut->parameters.end(),
-                                       [&name](const ParameterInfo& p) { return p.name == name; });
-            if (viewed == mOut->parameters.end() || !(viewed->type.isImage() || viewed->type.isBuffer()))
+            const auto viewed = mIndex.find(name);
+            const TypeDesc* viewedType =
+                viewed == mIndex.end() ? nullptr : &mOut->parameters[viewed->second].type;
+            if (!viewedType || !(viewedType->isImage() || viewedType->isBuffer()))
                 error(DiagId::ViewOfUnknownResource, parameter.loc, {parameter.name, name});
             else
-                parameter.viewOf = static_cast<size_t>(viewed - mOut->parameters.begin());
+                parameter.viewOf = viewed->second;
         }
         const BaseType type = parameter.type.base;
         if ((parameter.type.isBuffer() && type != BaseType::Buffer) || type == BaseType::RWBuffer) {
