@@ -308,7 +308,7 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     outcome.status = fx::StageOutcome::Status::HlslFailed;
     outcome.messages = {{true, "a.fx", 3, 7, "'x' : undeclared identifier"}, {false, "", 0, 0, "w"}};
     outcome.program.glsl = "#version 450\n";
-    outcome.program.uniforms.push_back({"Bias", {}, 0, {}, 16, 4, 0, 0, false, false});
+    outcome.program.uniforms.push_back({"Bias", {}, 0, {}, 16, 4, 0, 0, false, false, {}});
     fx::SamplerBinding sampler;
     sampler.glslName = "ShadowMap";
     sampler.unit = 3;

@@ -121,7 +121,9 @@ TEST(InstancedPass, PerObjectMembersMoveToTheObjectRecord) {
         EXPECT_GE(field.offset, end);
         EXPECT_EQ(field.offset % (field.type.shape == Shape::Matrix || field.type.cols >= 3 ? 16 : 4), 0u);
         end = field.offset + field.size;
-        if (field.type.shape == Shape::Matrix) EXPECT_EQ(field.matrixStride, 16u);
+        if (field.type.shape == Shape::Matrix) {
+            EXPECT_EQ(field.matrixStride, 16u);
+        }
     }
     EXPECT_LE(end, variant->recordSize);
     const UniformBinding* skew = findMember(variant->record, "Skew");

@@ -191,7 +191,7 @@ public:
                         const DdsColor c = texel(face, 0, x, y, element);
                         out.insert(out.end(), {c.r, c.g, c.b, c.a});
                     }
-        out.resize(out.size() - std::min(truncateBy, out.size()));
+        out.erase(out.end() - static_cast<std::ptrdiff_t>(std::min(truncateBy, out.size())), out.end());
         std::ofstream file(path, std::ios::binary);
         file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
         return static_cast<bool>(file);

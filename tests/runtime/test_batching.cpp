@@ -133,7 +133,9 @@ TEST_P(BatchedFrames, SameImageFewerDraws) {
                 EXPECT_LE(pass.draws, static_cast<int>(distinctMeshes(scene))) << "one draw per mesh";
             }
         }
-        if (scene.name == "grid") EXPECT_LT(batched.stats.draws * 10, single.stats.draws);
+        if (scene.name == "grid") {
+            EXPECT_LT(batched.stats.draws * 10, single.stats.draws);
+        }
     }
 }
 

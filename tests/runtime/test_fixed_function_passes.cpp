@@ -175,7 +175,9 @@ TEST(FixedFunctionPasses, LightsAsAVertexShaderWouldLightThem) {
     int blueLit = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            if (!isBackground(blue, x, y)) EXPECT_LE(blue.pixel(x, y)[0], 1);
+            if (!isBackground(blue, x, y)) {
+                EXPECT_LE(blue.pixel(x, y)[0], 1);
+            }
             blueLit += blue.pixel(x, y)[2] == right.pixel(x, y)[0] && right.pixel(x, y)[0] > 100;
         }
     EXPECT_GT(blueLit, 20);

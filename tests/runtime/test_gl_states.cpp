@@ -49,8 +49,6 @@ RenderStateBlock withStates(std::initializer_list<std::pair<RenderStateId, doubl
     return block;
 }
 
-}  // namespace
-
 TEST_F(GlStates, DefaultsComeFromTheD3dTable) {
     RenderStateBlock block = RenderStateBlock::defaults();
     EXPECT_EQ(block.get(RenderStateId::CullMode), 3);  // CCW
@@ -360,4 +358,6 @@ TEST_F(GlStates, UnsetStatesReturnToDefaults) {
     EXPECT_EQ(func, GL_LEQUAL);
     EXPECT_EQ(gl::GetError(), GLenum(GL_NO_ERROR));
 }
+}  // namespace
+
 }  // namespace test_gl_states

@@ -52,8 +52,6 @@ layout(location = 0) out vec2 uv;
 void main() { gl_Position = inPosition; uv = inTexcoord; }
 )";
 
-}  // namespace
-
 TEST_F(GpuResources, EveryFormatAllocatesClearsAndReadsBack) {
     for (fx::TextureFormat format : kAllFormats) {
         SCOPED_TRACE("format " + std::to_string(int(format)));
@@ -353,4 +351,6 @@ TEST_F(GpuResources, RenderedImageSurvivesPngWithTopRowFirst) {
     EXPECT_EQ(loaded->pixel(3, 3), glm::vec4(0, 0, 0, 1));
     std::filesystem::remove(path);
 }
+}  // namespace
+
 }  // namespace test_gpu_resources

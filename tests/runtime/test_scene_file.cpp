@@ -76,8 +76,6 @@ double windingAgreement(const Mesh& mesh) {
            << list.str();
 }
 
-}  // namespace
-
 TEST_F(SceneFileTest, LoadsEveryField) {
     write("models/triangle.obj", kTriangleObj);
     const std::string path = write("scene.json", R"({
@@ -367,4 +365,6 @@ TEST(SceneFiles, ExamplesLoad) {
         EXPECT_FALSE(scene->lights.empty());
     }
 }
+}  // namespace
+
 }  // namespace test_scene_file

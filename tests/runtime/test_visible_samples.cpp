@@ -162,11 +162,15 @@ bool samplesInside(const std::vector<float>& positions, const glm::mat4& viewPro
 }
 
 // The map's area in world units across the light (orthographic fits: the inverse of the x and y scales).
-double mapArea(const LightFit& fit) {
-    const glm::mat4 m = fit.projection * fit.view;
+// The area of the light's map in world units², from its view and projection (a fit's or one cascade's).
+double mapArea(const glm::mat4& view, const glm::mat4& projection) {
+    const glm::mat4 m = projection * view;
     const double sx = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));
     const double sy = glm::length(glm::vec3(m[0][1], m[1][1], m[2][1]));
     return (2.0 / sx) * (2.0 / sy);
+}
+double mapArea(const LightFit& fit) {
+    return mapArea(fit.view, fit.projection);
 }
 
 TEST(VisibleSamples, FitsHoldEverySampleAndSpendTheMapOnThem) {
@@ -216,9 +220,8 @@ TEST(VisibleSamples, FitsHoldEverySampleAndSpendTheMapOnThem) {
             EXPECT_LT(mapArea(fitted), 0.1 * mapArea(unfitted));
         }
         if (method == LightParameterization::Cascaded) {
-            EXPECT_LT(
-                mapArea(LightFit{fitted.cascades.back().view, fitted.cascades.back().projection}),
-                0.1 * mapArea(LightFit{unfitted.cascades.back().view, unfitted.cascades.back().projection}));
+            EXPECT_LT(mapArea(fitted.cascades.back().view, fitted.cascades.back().projection),
+                      0.1 * mapArea(unfitted.cascades.back().view, unfitted.cascades.back().projection));
         }
     }
 }

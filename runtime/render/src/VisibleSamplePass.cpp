@@ -120,7 +120,7 @@ std::optional<VisibleSamples> VisibleSamplePass::run(
             const ConvexVolume frustum = frustumPlanes(viewProjection);
             bvh.query([&](const Aabb& box) { return overlapVolume(frustum, box); }, inFrustum);
         }
-        static const std::vector<fx::VertexInput> kInputs = {{"POSITION0", 0, 3}};
+        static const std::vector<fx::VertexInput> kInputs = {{"POSITION0", 0, 3, {}}};
         for (uint32_t index : inFrustum) {
             const SceneObject& object = scene.objects[index];
             if (!object.mesh) continue;
