@@ -1,6 +1,8 @@
 // HlslToSpirv: glslang's HLSL front end, configured as TOOLCHAIN.md prescribes (see HlslToSpirv.h).
 #include "HlslToSpirv.h"
 
+#include "MatrixSwizzles.h"
+
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -35,7 +37,8 @@ constexpr EShMessages kMessages = static_cast<EShMessages>(
 }  // namespace
 
 std::string hlslToSpirvOptionsKey() {
-    return "glslang-hlsl dx9 vulkan1.0 spv1.0 msgs=" + std::to_string(static_cast<int>(kMessages));
+    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes msgs=" +
+           std::to_string(static_cast<int>(kMessages));
 }
 
 std::vector<HlslMessage> parseGlslangLog(const std::string& log) {
@@ -133,263 +136,6 @@ public:
     }
 };
 
-// A swizzle of several matrix elements (`m._11_22`, `m._m00_m11`) is kept by glslang's HLSL front end as a
-// matrix swizzle node (a single element, or the elements of one of its vectors, become ordinary indexing
-// there), which its SPIR-V back end does not compile: it logs "Missing functionality: matrix swizzle" and
-// writes an element index in the swizzle's place, a constant (a known glslang defect). Each such read is
-// rewritten into what fxc compiled, a vector constructed from the single elements, each indexed the way the
-// front end indexes `m._12` (m[first selector][second selector]: glslang's matrices are HLSL's rows), so
-// `m._11_22` reads as `float2(m._11, m._22)`. The matrix operand then stands once per element, which reads
-// the same value only where evaluating it has no side effects; anything else (a call's result) is
-// evaluated once into a temporary first: `(t = f(), float2(t._11, t._22))`. A swizzle a write or an `out`
-// argument reaches is left as it is with a warning at it, not an error: the unit also holds code whose
-// value no output reads (a function D3DX ran on the host, a static only a compile argument uses), where
-// the constant changes nothing and fxc's effect still runs.
-class MatrixSwizzleRewriter : public glslang::TIntermTraverser {
-public:
-    // `unusedSymbolId`: above every symbol id of the tree, for the temporaries.
-    MatrixSwizzleRewriter(glslang::TIntermediate& intermediate, long long unusedSymbolId)
-        : glslang::TIntermTraverser(false, false, true),
-          intermediate(intermediate),
-          nextSymbolId(unusedSymbolId) {}
-
-    std::vector<HlslMessage> leftAsTheyAre;
-
-    // Post-order: a swizzle inside the matrix operand (an index) is rewritten before the swizzle around it.
-    bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
-        if (node->getOp() != glslang::EOpMatrixSwizzle) return true;
-        if (isWritten(node)) {
-            if (!writeOneElement(node)) warnAt(node, Reason::Written);
-            return true;
-        }
-        glslang::TIntermTyped* elements = readOfElements(node);
-        if (!elements || !replaceChild(getParentNode(), node, elements)) warnAt(node, Reason::NotRewritable);
-        return true;
-    }
-
-private:
-    glslang::TIntermediate& intermediate;
-    long long nextSymbolId;
-
-    // The swizzle's elements read from its matrix, the matrix evaluated once; nullptr where glslang has no
-    // constructor for their type.
-    glslang::TIntermTyped* readOfElements(glslang::TIntermBinary* swizzle) {
-        glslang::TIntermTyped* matrix = swizzle->getLeft();
-        if (isSideEffectFree(matrix)) return constructFromElements(swizzle, matrix);
-        const glslang::TSourceLoc& at = swizzle->getLoc();
-        const glslang::TType temporaryType(matrix->getBasicType(), glslang::EvqTemporary, 0,
-                                           matrix->getMatrixCols(), matrix->getMatrixRows());
-        const long long id = nextSymbolId++;
-        const auto temporary = [&] {
-            glslang::TIntermSymbol* symbol =
-                new glslang::TIntermSymbol(id, glslang::TString("swizzledMatrix"), temporaryType);
-            symbol->setLoc(at);
-            return symbol;
-        };
-        glslang::TIntermTyped* evaluation =
-            intermediate.addAssign(glslang::EOpAssign, temporary(), matrix, at);
-        glslang::TIntermTyped* elements = constructFromElements(swizzle, temporary());
-        if (!evaluation || !elements) return nullptr;
-        return intermediate.addComma(evaluation, elements, at);
-    }
-
-    // Symbols and constants combined by indexing, member selection, swizzles, arithmetic and constructors:
-    // evaluating it again reads the same value and changes nothing.
-    static bool isSideEffectFree(const TIntermNode* node) {
-        if (node->getAsSymbolNode() || node->getAsConstantUnion()) return true;
-        if (const glslang::TIntermBinary* binary = node->getAsBinaryNode()) {
-            if (binary->modifiesState()) return false;
-            // A vector swizzle's selectors are a sequence of constants.
-            return isSideEffectFree(binary->getLeft()) &&
-                   (binary->getOp() == glslang::EOpVectorSwizzle || isSideEffectFree(binary->getRight()));
-        }
-        if (const glslang::TIntermUnary* unary = node->getAsUnaryNode())
-            return !unary->modifiesState() && isSideEffectFree(unary->getOperand());
-        if (const glslang::TIntermAggregate* aggregate = node->getAsAggregate()) {
-            if (!aggregate->isConstructor()) return false;
-            for (const TIntermNode* operand : aggregate->getSequence())
-                if (!isSideEffectFree(operand)) return false;
-            return true;
-        }
-        return false;
-    }
-
-    // The vector of the swizzle's elements read from `matrix`, or nullptr for an element type glslang has no
-    // constructor for.
-    glslang::TIntermTyped* constructFromElements(glslang::TIntermBinary* swizzle,
-                                                 glslang::TIntermTyped* matrix) {
-        const glslang::TIntermSequence& selectors = swizzle->getRight()->getAsAggregate()->getSequence();
-        const glslang::TType& vectorType = swizzle->getType();
-        const glslang::TOperator construct = intermediate.mapTypeToConstructorOp(vectorType);
-        if (construct == glslang::EOpNull) return nullptr;
-        const glslang::TSourceLoc& at = swizzle->getLoc();
-        const glslang::TType columnType(matrix->getType(), 0);
-        const glslang::TType elementType(columnType, 0);
-        glslang::TIntermAggregate* vector = new glslang::TIntermAggregate;
-        for (size_t i = 0; i + 1 < selectors.size(); i += 2) {
-            glslang::TIntermTyped* column =
-                intermediate.addIndex(glslang::EOpIndexDirect, matrix, selectors[i]->getAsTyped(), at);
-            column->setType(columnType);
-            glslang::TIntermTyped* element =
-                intermediate.addIndex(glslang::EOpIndexDirect, column, selectors[i + 1]->getAsTyped(), at);
-            element->setType(elementType);
-            vector->getSequence().push_back(element);
-        }
-        return intermediate.setAggregateOperator(vector, construct, vectorType, at);
-    }
-
-    // Whether the swizzle's elements are written: the swizzle, or an element or vector swizzle of it
-    // (`m._11_22.x`, `m._11_22[0]`), is an assignment's target, incremented or decremented, or an `out`
-    // argument. A constructor put in its place could not be written (glslang would store through a value).
-    bool isWritten(const glslang::TIntermTyped* swizzle) const {
-        const TIntermNode* written = swizzle;
-        for (size_t i = path.size(); i-- > 0;) {
-            const TIntermNode* parent = path[i];
-            if (const glslang::TIntermBinary* binary = parent->getAsBinaryNode()) {
-                if (binary->getLeft() != written) return false;
-                if (binary->modifiesState()) return true;
-                const glslang::TOperator op = binary->getOp();
-                if (op != glslang::EOpIndexDirect && op != glslang::EOpIndexIndirect &&
-                    op != glslang::EOpVectorSwizzle)
-                    return false;
-                written = parent;
-                continue;
-            }
-            if (const glslang::TIntermUnary* unary = parent->getAsUnaryNode()) return unary->modifiesState();
-            if (const glslang::TIntermAggregate* aggregate = parent->getAsAggregate()) {
-                const glslang::TIntermSequence& operands = aggregate->getSequence();
-                for (size_t operand = 0; operand < operands.size(); ++operand)
-                    if (operands[operand] == written)
-                        return writesOperand(*aggregate, operand, aggregate->getQualifierList());
-            }
-            return false;
-        }
-        return false;
-    }
-
-    // A written swizzle whose element or vector swizzle picks one element by constants (`m._11_22.y = e;`,
-    // `m._11_22[1]++`, `f(m._11_22.x)` with an `out` parameter): that chain replaced by the element itself,
-    // `m[1][1]`, which can be written. False (nothing changed) for any other write.
-    bool writeOneElement(glslang::TIntermBinary* swizzle) {
-        glslang::TIntermTyped* matrix = swizzle->getLeft();
-        if (!isSideEffectFree(matrix)) return false;
-        const glslang::TIntermSequence& selectors = swizzle->getRight()->getAsAggregate()->getSequence();
-        std::vector<size_t> picked;  // into the swizzle's elements
-        for (size_t i = 0; i + 1 < selectors.size(); i += 2) picked.push_back(i / 2);
-        glslang::TIntermTyped* chain = swizzle;
-        size_t depth = path.size();
-        while (depth > 0) {
-            glslang::TIntermBinary* parent = path[depth - 1]->getAsBinaryNode();
-            if (!parent || parent->getLeft() != chain) break;
-            const glslang::TOperator op = parent->getOp();
-            std::vector<size_t> narrowed;
-            if (op == glslang::EOpVectorSwizzle) {
-                for (const TIntermNode* component : parent->getRight()->getAsAggregate()->getSequence())
-                    narrowed.push_back(component->getAsConstantUnion()->getConstArray()[0].getIConst());
-            } else if (op == glslang::EOpIndexDirect && parent->getRight()->getAsConstantUnion()) {
-                narrowed.push_back(parent->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst());
-            } else {
-                break;
-            }
-            for (size_t& n : narrowed) {
-                if (n >= picked.size()) return false;
-                n = picked[n];
-            }
-            picked = std::move(narrowed);
-            chain = parent;
-            --depth;
-        }
-        if (picked.size() != 1 || chain == swizzle || depth == 0) return false;
-        const glslang::TSourceLoc& at = swizzle->getLoc();
-        const glslang::TType columnType(matrix->getType(), 0);
-        glslang::TIntermTyped* column = intermediate.addIndex(glslang::EOpIndexDirect, matrix,
-                                                              selectors[2 * picked[0]]->getAsTyped(), at);
-        column->setType(columnType);
-        glslang::TIntermTyped* element = intermediate.addIndex(
-            glslang::EOpIndexDirect, column, selectors[2 * picked[0] + 1]->getAsTyped(), at);
-        element->setType(glslang::TType(columnType, 0));
-        return replaceChild(path[depth - 1], chain, element);
-    }
-
-    // Puts `to` where `parent` holds `from`; false where the parent is a node glslang gives no way to
-    // change (a loop's step expression).
-    bool replaceChild(TIntermNode* parent, glslang::TIntermTyped* from, glslang::TIntermTyped* to) {
-        if (!parent) return false;
-        if (glslang::TIntermBinary* binary = parent->getAsBinaryNode()) {
-            if (binary->getLeft() == from) {
-                binary->setLeft(to);
-                return true;
-            }
-            if (binary->getRight() != from) return false;
-            binary->setRight(to);
-            return true;
-        }
-        if (glslang::TIntermUnary* unary = parent->getAsUnaryNode()) {
-            unary->setOperand(to);
-            return true;
-        }
-        if (glslang::TIntermAggregate* aggregate = parent->getAsAggregate()) {
-            for (TIntermNode*& operand : aggregate->getSequence()) {
-                if (operand != from) continue;
-                operand = to;
-                return true;
-            }
-            return false;
-        }
-        if (glslang::TIntermSelection* selection = parent->getAsSelectionNode()) {
-            if (selection->getCondition() == from)
-                selection->setCondition(to);
-            else if (selection->getTrueBlock() == from)
-                selection->setTrueBlock(to);
-            else if (selection->getFalseBlock() == from)
-                selection->setFalseBlock(to);
-            else
-                return false;
-            return true;
-        }
-        if (glslang::TIntermBranch* branch = parent->getAsBranchNode()) {
-            if (branch->getExpression() != from) return false;
-            branch->setExpression(to);
-            return true;
-        }
-        return false;
-    }
-
-    // Whether the call writes its `i`th operand: an `out` or `inout` parameter of the effect's function,
-    // the whole-number part of `modf` and the exponent of `frexp`.
-    static bool writesOperand(const glslang::TIntermAggregate& call, size_t i,
-                              const glslang::TQualifierList& qualifiers) {
-        if (i < qualifiers.size() && (qualifiers[i] == glslang::EvqOut || qualifiers[i] == glslang::EvqInOut))
-            return true;
-        return i == 1 && (call.getOp() == glslang::EOpModf || call.getOp() == glslang::EOpFrexp);
-    }
-
-    enum class Reason {
-        Written,        // isWritten: the fix is the user's, through a vector variable
-        NotRewritable,  // no constructor for the element type, or a parent glslang gives no way to change
-    };
-
-    void warnAt(const glslang::TIntermBinary* swizzle, Reason reason) {
-        const glslang::TSourceLoc& at = swizzle->getLoc();
-        const std::string elements = std::to_string(swizzle->getType().getVectorSize());
-        const std::string example = swizzle->getType().getVectorSize() > 2 ? "_11_22_33" : "_11_22";
-        const std::string text =
-            reason == Reason::Written
-                ? "'.' : a swizzle of " + elements +
-                      " matrix elements written here compiles to a constant (glslang compiles it to an "
-                      "element index, not the elements fxc wrote; shadowfx rewrites the swizzles it reads): "
-                      "write a vector variable and assign it after, e.g. float" +
-                      elements + " v; f(v); m." + example + " = v;"
-                : "'.' : a swizzle of " + elements +
-                      " matrix elements is not rewritten here and reads a constant (glslang compiles it to "
-                      "an "
-                      "element index, not the elements fxc read): spell the elements one by one, e.g. float" +
-                      elements + "(m._11, m._22" + (swizzle->getType().getVectorSize() > 2 ? ", ..." : "") +
-                      ")";
-        leftAsTheyAre.push_back({false, at.getFilenameStr(), at.line, at.column, text});
-    }
-};
-
 }  // namespace
 
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
@@ -426,10 +172,9 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             syntaxTreeWarnings = std::move(truncations.found);
             HighestSymbolId symbols;
             program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
-            MatrixSwizzleRewriter matrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
-            program.getIntermediate(language)->getTreeRoot()->traverse(&matrixSwizzles);
-            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixSwizzles.leftAsTheyAre.begin(),
-                                      matrixSwizzles.leftAsTheyAre.end());
+            const std::vector<HlslMessage> swizzlesLeft =
+                detail::rewriteMatrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
+            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), swizzlesLeft.begin(), swizzlesLeft.end());
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;

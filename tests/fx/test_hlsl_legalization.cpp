@@ -288,15 +288,14 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_TRUE(compilesClean(effect));
 }
 
-// A swizzle written through an `out` argument still compiles to glslang's constant, with a warning at it
+// A swizzle of several elements incremented still compiles to glslang's constant, with a warning at it
 // (an error would refuse effects whose swizzle feeds nothing, such as a function D3DX ran on the host).
-TEST(HlslLegalization, AMatrixSwizzleAnOutArgumentWritesIsAWarningAtIt) {
+TEST(HlslLegalization, AMatrixSwizzleIncrementedIsAWarningAtIt) {
     DiagnosticList diags;
     auto written = parse(R"(float4x4 M;
-void halve(out float3 v) { v = 0.5; }
 float4 PS() : COLOR {
     float4x4 w = M;
-    halve(w._11_22_33);
+    w._11_22_33++;
     return w[0];
 }
 float4 VS(float4 p : POSITION) : POSITION { return p; }
@@ -305,18 +304,23 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
                          diags);
     ASSERT_TRUE(written) << diags.str();
     const Diagnostic warning =
-        compilesWithOneWarning(written, DiagId::HlslWarning, 5, "swizzle of 3 matrix elements written here");
-    EXPECT_NE(warning.message.find("float3 v; f(v); m._11_22_33 = v;"), std::string::npos) << warning.message;
+        compilesWithOneWarning(written, DiagId::HlslWarning, 4, "swizzle of 3 matrix elements written here");
+    EXPECT_NE(warning.message.find("float3 v = m._11_22_33; v++; m._11_22_33 = v;"), std::string::npos)
+        << warning.message;
 }
 
-// One element of the swizzle written (`w._11_22.x = e;`, `[1]`, an `out` argument, `++`): that element is
-// written (its value: MatrixSwizzles in tests/runtime/), no warning; glslang alone crashed on each.
-TEST(HlslLegalization, AWriteThroughOneElementOfAMatrixSwizzleCompilesClean) {
-    for (const char* write :
-         {"w._11_22.x = 0.5;", "w._11_22[1] = 0.5;", "halve(w._11_22.y);", "w._11_22.x++;"}) {
+// Elements of the swizzle written (`w._11_22.x = e;`, `[1]`, an `out` argument, `++`), several of them
+// through a vector swizzle (`w._11_22_33.zx = e;`, compound too) or whole through an `out` argument: those
+// elements are written (their values: MatrixSwizzles in tests/runtime/, MatrixSwizzleWrites in
+// tests/effects/), no warning; glslang alone crashed on each or wrote a constant.
+TEST(HlslLegalization, AWriteThroughAMatrixSwizzleCompilesClean) {
+    for (const char* write : {"w._11_22.x = 0.5;", "w._11_22[1] = 0.5;", "halve(w._11_22.y);",
+                              "w._11_22.x++;", "w._11_22_33.zx = 0.25;", "w._11_22_33.zx *= float2(2, 3);",
+                              "halve3(w._11_22_33);", "halve3(w._m00_m01_m02.zxy);"}) {
         DiagnosticList diags;
         auto written = parse(std::string(R"(float4x4 M;
 void halve(out float v) { v = 0.5; }
+void halve3(out float3 v) { v = 0.5; }
 float4 PS() : COLOR {
     float4x4 w = M;
     )") + write + R"(
