@@ -28,6 +28,14 @@ std::string hlslTypeName(const TypeDesc& type) {
     return (rowMajor ? "row_major " : "") + concrete.hlslName();
 }
 
+std::string hlslUniformTypeName(const TypeDesc& type) {
+    TypeDesc declared = type;
+    if (type.shape == Shape::Matrix &&
+        (type.base == BaseType::Int || type.base == BaseType::UInt || type.base == BaseType::Bool))
+        declared.rowMajor = true;
+    return hlslTypeName(declared);
+}
+
 TypeDesc float4Type() {
     TypeDesc t;
     t.base = BaseType::Float;

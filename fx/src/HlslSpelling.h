@@ -11,6 +11,11 @@ namespace fx {
 
 // HLSL spelling of a type for a declaration ("float4x4", "row_major float4x3", "sampler2D").
 std::string hlslTypeName(const TypeDesc& type);
+
+// The type of a uniform's declaration (a parameter in the $Global block): hlslTypeName, with an integer or
+// bool matrix declared row_major, whose rows are then contiguous in the block as the array of rows
+// shadowfx makes of it expects (IntegerMatrixArrays.h; the runtime fills the block by its reflection).
+std::string hlslUniformTypeName(const TypeDesc& type);
 TypeDesc float4Type();
 bool isNumericType(const TypeDesc& t);
 bool isSamplerType(const TypeDesc& t);

@@ -1,6 +1,7 @@
 // HlslToSpirv: glslang's HLSL front end, configured as TOOLCHAIN.md prescribes (see HlslToSpirv.h).
 #include "HlslToSpirv.h"
 
+#include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
 
 #include <glslang/Include/intermediate.h>
@@ -37,7 +38,7 @@ constexpr EShMessages kMessages = static_cast<EShMessages>(
 }  // namespace
 
 std::string hlslToSpirvOptionsKey() {
-    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes msgs=" +
+    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes int-matrix-rows msgs=" +
            std::to_string(static_cast<int>(kMessages));
 }
 
@@ -175,6 +176,17 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             const std::vector<HlslMessage> swizzlesLeft =
                 detail::rewriteMatrixSwizzles(*program.getIntermediate(language), symbols.highest + 1);
             syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), swizzlesLeft.begin(), swizzlesLeft.end());
+            HighestSymbolId afterSwizzles;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&afterSwizzles);
+            const std::vector<HlslMessage> matrixErrors = detail::splitIntegerMatrixOperations(
+                *program.getIntermediate(language), afterSwizzles.highest + 1);
+            syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixErrors.begin(), matrixErrors.end());
+            if (!matrixErrors.empty()) {
+                result.messages = parseGlslangLog(result.log);
+                result.messages.insert(result.messages.end(), syntaxTreeWarnings.begin(),
+                                       syntaxTreeWarnings.end());
+                return result;
+            }
             glslang::SpvOptions spvOptions;
             spvOptions.validate = false;
             spvOptions.disableOptimizer = true;

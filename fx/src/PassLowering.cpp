@@ -301,7 +301,7 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
                     }
                 } else if (isNumericType(p.type) && p.type.base != BaseType::String) {
                     // A plain global: it lands in the $Global block; the runtime fills it.
-                    hlsl += hlslTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
+                    hlsl += hlslUniformTypeName(p.type) + " " + p.name + arraySuffix(p.type) + ";\n";
                 } else if (p.type.base == BaseType::Struct && named.count(p.name)) {
                     // A struct-typed global (D3D10 effects keep lights and materials in cbuffers so): in
                     // the block too, zero as an application that never set it leaves it.

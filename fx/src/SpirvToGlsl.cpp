@@ -1,6 +1,7 @@
 // SpirvToGlsl: SPIRV-Cross GLSL backend and reflection (see SpirvToGlsl.h).
 #include "SpirvToGlsl.h"
 
+#include "IntegerMatrixArrays.h"
 #include "PassLowering.h"
 #include "SemanticTables.h"
 
@@ -14,7 +15,7 @@
 namespace fx {
 
 std::string spirvToGlslOptionsKey() {
-    return "spirv-cross glsl450 core novk pairs finite-cube user-main";
+    return "spirv-cross glsl450 core novk pairs finite-cube user-main int-matrix-rows";
 }
 
 namespace {
@@ -72,10 +73,42 @@ const spirv_cross::SPIRType& arrayElement(const spirv_cross::CompilerGLSL& compi
     return *element;
 }
 
+// Where a block member's matrix is: its stride between vectors, whether they are HLSL's columns, and the
+// stride of an array of such matrices (0 for one). An integer matrix is an array of its rows since
+// IntegerMatrixArrays: its rows' stride is its matrix stride, and an array of them is the outer array.
+struct MatrixPlacement {
+    uint32_t matrixStride = 0;
+    bool hlslColumnsContiguous = false;
+    uint32_t arrayStride = 0;
+};
+
+MatrixPlacement matrixPlacement(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::SPIRType& type,
+                                uint32_t member, const detail::IntegerMatrixLowering& lowered) {
+    const spirv_cross::SPIRType& memberType = compiler.get_type(type.member_types[member]);
+    MatrixPlacement placement;
+    if (const auto rows = lowered.members.find({type.self, member}); rows != lowered.members.end()) {
+        placement.matrixStride = rows->second.rowStride;
+        if (memberType.array.size() > 1)
+            placement.arrayStride = compiler.type_struct_member_array_stride(type, member);
+        return placement;
+    }
+    if (!memberType.array.empty())
+        placement.arrayStride = compiler.type_struct_member_array_stride(type, member);
+    if (memberType.columns > 1) {
+        placement.matrixStride = compiler.type_struct_member_matrix_stride(type, member);
+        // glslang declares HLSL column_major matrices RowMajor (the GLSL matrix is the HLSL one
+        // transposed, so its rows are HLSL's columns): RowMajor => HLSL columns contiguous.
+        placement.hlslColumnsContiguous =
+            compiler.has_member_decoration(type.self, member, spv::DecorationRowMajor);
+    }
+    return placement;
+}
+
 // The numeric members of one element of struct `type` as a uniform block lays them out, at `base` bytes
 // from the block member, named by `path` and their member names (UniformField).
 void structFields(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::SPIRType& type, uint32_t base,
-                  const std::string& path, std::vector<UniformField>& fields) {
+                  const std::string& path, const detail::IntegerMatrixLowering& lowered,
+                  std::vector<UniformField>& fields) {
     for (uint32_t i = 0; i < type.member_types.size(); ++i) {
         const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
         const uint32_t offset = base + compiler.type_struct_member_offset(type, i);
@@ -90,18 +123,17 @@ void structFields(const spirv_cross::CompilerGLSL& compiler, const spirv_cross::
             }
             for (uint32_t k = 0; k < count; ++k)
                 structFields(compiler, arrayElement(compiler, member), offset + k * stride,
-                             member.array.empty() ? name : name + "[" + std::to_string(k) + "]", fields);
+                             member.array.empty() ? name : name + "[" + std::to_string(k) + "]", lowered,
+                             fields);
             continue;
         }
         UniformField field;
         field.path = name;
         field.offset = offset;
-        if (!member.array.empty()) field.arrayStride = compiler.type_struct_member_array_stride(type, i);
-        if (member.columns > 1) {
-            field.matrixStride = compiler.type_struct_member_matrix_stride(type, i);
-            field.hlslColumnsContiguous =
-                compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
-        }
+        const MatrixPlacement placement = matrixPlacement(compiler, type, i, lowered);
+        field.arrayStride = placement.arrayStride;
+        field.matrixStride = placement.matrixStride;
+        field.hlslColumnsContiguous = placement.hlslColumnsContiguous;
         fields.push_back(std::move(field));
     }
 }
@@ -278,9 +310,15 @@ void renameUserMain(spirv_cross::CompilerGLSL& compiler, const std::vector<uint3
 
 }  // namespace
 
-bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
+bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, const CrossOptions& options,
                  StageProgram& program, std::string& error) {
     try {
+        std::vector<uint32_t> spirv = glslangSpirv;
+        const detail::IntegerMatrixLowering loweredMatrices = detail::lowerIntegerMatrices(spirv);
+        if (!loweredMatrices.error.empty()) {
+            error = loweredMatrices.error;
+            return false;
+        }
         spirv_cross::CompilerGLSL compiler(spirv);
         spirv_cross::CompilerGLSL::Options glsl;
         glsl.version = 450;
@@ -437,14 +475,10 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                 u.name = compiler.get_member_name(type.self, i);
                 u.offset = compiler.type_struct_member_offset(type, i);
                 u.size = static_cast<uint32_t>(compiler.get_declared_struct_member_size(type, i));
-                if (!member.array.empty()) u.arrayStride = compiler.type_struct_member_array_stride(type, i);
-                if (member.columns > 1) {
-                    u.matrixStride = compiler.type_struct_member_matrix_stride(type, i);
-                    // glslang declares HLSL column_major matrices RowMajor (the GLSL matrix is the HLSL
-                    // one transposed, so its rows are HLSL's columns): RowMajor => HLSL columns contiguous.
-                    u.hlslColumnsContiguous =
-                        compiler.has_member_decoration(type.self, i, spv::DecorationRowMajor);
-                }
+                const MatrixPlacement placement = matrixPlacement(compiler, type, i, loweredMatrices);
+                u.arrayStride = placement.arrayStride;
+                u.matrixStride = placement.matrixStride;
+                u.hlslColumnsContiguous = placement.hlslColumnsContiguous;
                 u.active =
                     std::any_of(active.begin(), active.end(),
                                 [i](const spirv_cross::BufferRange& range) { return range.index == i; });
@@ -453,7 +487,8 @@ bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const Cr
                     for (uint32_t dim : member.array) count *= std::max(dim, 1u);
                     for (uint32_t k = 0; k < count; ++k)
                         structFields(compiler, arrayElement(compiler, member), k * u.arrayStride,
-                                     member.array.empty() ? "" : "[" + std::to_string(k) + "]", u.fields);
+                                     member.array.empty() ? "" : "[" + std::to_string(k) + "]",
+                                     loweredMatrices, u.fields);
                 }
                 program.uniforms.push_back(u);
             }

@@ -152,7 +152,7 @@ bool WrapperBuilder::uniformArgument(const FunctionParam& p, size_t argIndex, st
         return fail(DiagId::UnknownIdentifier, unknown->loc, {unknown->text});
     std::string name = "fx_arg" + std::to_string(mArguments.size());
     mArguments.push_back(LoweredArgument{*expr, p.type, name});
-    globals += hlslTypeName(p.type) + " " + name + arraySuffix(p.type) + ";\n";
+    globals += hlslUniformTypeName(p.type) + " " + name + arraySuffix(p.type) + ";\n";
     value = name;
     return true;
 }

@@ -338,5 +338,77 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     }
 }
 
+// Integer and bool matrices (docs/legalization.md, "Integer and bool matrices"): element-wise operations,
+// comparisons and an int2x3 parameter compile into arrays of rows, which GLSL has (their values:
+// IntegerMatrices in tests/effects/); what cannot be computed row by row is an error where it stands.
+TEST(HlslLegalization, IntegerMatricesCompileIntoArraysOfRows) {
+    DiagnosticList diags;
+    auto effect = parse(R"(RWByteAddressBuffer Words;
+int2x3 Offsets = { 1, -2, 3, 4, 5, -6 };
+[numthreads(4, 1, 1)]
+void CS(uint i : SV_GroupIndex) {
+    int2x3 e = int2x3(i, 2, 3, 4, 5, 6) + Offsets;
+    e = (e == 0) ? e : (e << 2) ^ 1;
+    const bool2x3 negative = e < 0;
+    Words.Store(i * 4, e[1].z + (any(negative) ? 1u : 0u));
+}
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, CS())); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    DiagnosticList compileDiags;
+    auto compiled = compileEffect(effect, CompileOptions{}, compileDiags);
+    ASSERT_TRUE(compiled && compileDiags.items().empty()) << compileDiags.str();
+    const std::string& glsl = compiled->techniques[0].passes[0].compute.glsl;
+    EXPECT_NE(glsl.find("ivec3 Offsets[2];"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("imat"), std::string::npos) << glsl;
+    EXPECT_EQ(glsl.find("bmat"), std::string::npos) << glsl;
+}
+
+TEST(HlslLegalization, IntegerMatrixOperationsThatCannotBeSplitAreLocatedErrors) {
+    struct Case {
+        const char* declarations;
+        const char* statement;
+        DiagId id;
+        int column;  // 0: not checked (SPIRV-Cross's message stands at the pass's CompileShader)
+        const char* text;
+    };
+    for (const Case& c : {
+             Case{"RWByteAddressBuffer Words;", "Words.Store(0, transpose(int2x2(i, 1, 2, 3))[0].y);",
+                  DiagId::HlslError, 48, "transpose() of an integer or bool matrix is not supported"},
+             Case{"struct E { uint2x2 m; }; RWStructuredBuffer<E> Words;",
+                  "Words[i].m = uint2x2(i, 2, 3, 4);", DiagId::CrossCompileError, 0,
+                  "an integer or bool matrix in a structured buffer's element"},
+             Case{"RWByteAddressBuffer Words; struct S { int3x2 m; }; cbuffer Params { S s; }",
+                  "Words.Store(0, s.m[2].y + i);", DiagId::CrossCompileError, 0, "declare it row_major"},
+         }) {
+        DiagnosticList diags;
+        auto effect = parse(std::string(c.declarations) + R"(
+[numthreads(1, 1, 1)]
+void CS(uint i : SV_GroupIndex) {
+    )" + c.statement + R"(
+}
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, CS())); } }
+)",
+                            diags);
+        ASSERT_TRUE(effect) << diags.str();
+        DiagnosticList compileDiags;
+        EXPECT_FALSE(compileEffect(effect, CompileOptions{}, compileDiags) && !compileDiags.hasErrors())
+            << c.statement;
+        ASSERT_FALSE(compileDiags.items().empty()) << c.statement;
+        const Diagnostic& error = compileDiags.items().front();
+        EXPECT_EQ(error.id, c.id) << compileDiags.str();
+        EXPECT_EQ(error.severity, Severity::Error);
+        EXPECT_EQ(error.loc.file, "legal.fx");
+        // glslang places the call at its closing parenthesis; SPIRV-Cross's refusal is the shader's, at the
+        // technique's CompileShader.
+        EXPECT_EQ(error.loc.line, c.id == DiagId::HlslError ? 4 : 6) << compileDiags.str();
+        if (c.column) {
+            EXPECT_EQ(error.loc.column, c.column) << compileDiags.str();
+        }
+        EXPECT_NE(error.message.find(c.text), std::string::npos) << error.message;
+    }
+}
+
 }  // namespace
 }  // namespace fx::test_hlsl_legalization
