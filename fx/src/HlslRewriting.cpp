@@ -308,4 +308,47 @@ std::string bindCallArguments(const std::string& text, const std::set<std::strin
     return out;
 }
 
+std::string regroupMatrixInitializer(const std::string& declaration, const TypeDesc& type) {
+    if (type.shape != Shape::Matrix) return declaration;
+    size_t count = static_cast<size_t>(type.rows * type.cols);
+    for (int dim : type.arrayDims) count *= static_cast<size_t>(std::max(dim, 0));
+    const size_t open = declaration.find('{');
+    if (open == std::string::npos || declaration.find('=') > open) return declaration;
+    // The values: the text between commas outside parentheses and brackets, braces left out.
+    std::vector<std::string> values(1);
+    int braces = 0, nesting = 0;
+    size_t close = std::string::npos;
+    for (size_t i = open; i < declaration.size() && close == std::string::npos; ++i) {
+        const char c = declaration[i];
+        if (nesting == 0 && (c == '{' || c == '}')) {
+            braces += c == '{' ? 1 : -1;
+            if (braces == 0) close = i;
+            continue;
+        }
+        if (c == '(' || c == '[') ++nesting;
+        if (c == ')' || c == ']') --nesting;
+        if (c == ',' && nesting == 0)
+            values.emplace_back();
+        else
+            values.back() += c;
+    }
+    if (close == std::string::npos) return declaration;
+    // A trailing comma leaves blanks (and line breaks) after the last value.
+    std::string trailing;
+    if (values.back().find_first_not_of(" \t\r\n") == std::string::npos) {
+        trailing = values.back();
+        values.pop_back();
+    }
+    if (values.size() != count || values.size() == 1) return declaration;
+    const size_t perMatrix = static_cast<size_t>(type.rows * type.cols);
+    std::string list = "{";
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (i % perMatrix == 0 && !type.arrayDims.empty()) list += i == 0 ? "{" : "}, {";
+        list += values[i];
+        if ((i + 1) % perMatrix != 0) list += ",";
+    }
+    list += type.arrayDims.empty() ? "" : "}";
+    return declaration.substr(0, open) + list + trailing + "}" + declaration.substr(close + 1);
+}
+
 }  // namespace fx

@@ -3,6 +3,8 @@
 // uses collected. Private to fx.
 #pragma once
 
+#include <fx/Types.h>
+
 #include <functional>
 #include <map>
 #include <optional>
@@ -48,5 +50,14 @@ using CallBinder = std::function<std::optional<std::string>(const std::string& f
 // `binder`, innermost calls' arguments included. The line breaks of a left-out argument are kept.
 std::string bindCallArguments(const std::string& text, const std::set<std::string>& objects,
                               const CallBinder& binder);
+
+// fxc flattened a brace initializer completely, so a static array of matrices may list its rows in braces
+// without grouping them by matrix: `static const uint4x4 R[2] = { {1,0,0,0}, {0,1,0,0}, ... };` (eight
+// rows). glslang matches braces to the type's levels and refuses that (`cannot convert parameter 5 from
+// 'const float'`). For a declaration of a matrix or an array of matrices (`type`) whose initializer lists
+// exactly as many values as the matrices have elements, this returns the declaration with the values
+// regrouped one brace per matrix (`{ {16 values}, {16 values} }`), line breaks kept; any other
+// declaration unchanged (values that are vectors or constructors, `uint4x4(...)`, count otherwise).
+std::string regroupMatrixInitializer(const std::string& declaration, const TypeDesc& type);
 
 }  // namespace fx

@@ -1,6 +1,7 @@
 // HlslToSpirv: glslang's HLSL front end, configured as TOOLCHAIN.md prescribes (see HlslToSpirv.h).
 #include "HlslToSpirv.h"
 
+#include "BoolCompoundAssignments.h"
 #include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
 
@@ -38,7 +39,7 @@ constexpr EShMessages kMessages = static_cast<EShMessages>(
 }  // namespace
 
 std::string hlslToSpirvOptionsKey() {
-    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes int-matrix-rows msgs=" +
+    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes int-matrix-rows bool-assign msgs=" +
            std::to_string(static_cast<int>(kMessages));
 }
 
@@ -181,6 +182,10 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             const std::vector<HlslMessage> matrixErrors = detail::splitIntegerMatrixOperations(
                 *program.getIntermediate(language), afterSwizzles.highest + 1);
             syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixErrors.begin(), matrixErrors.end());
+            HighestSymbolId afterMatrices;
+            program.getIntermediate(language)->getTreeRoot()->traverse(&afterMatrices);
+            detail::rewriteBoolCompoundAssignments(*program.getIntermediate(language),
+                                                   afterMatrices.highest + 1);
             if (!matrixErrors.empty()) {
                 result.messages = parseGlslangLog(result.log);
                 result.messages.insert(result.messages.end(), syntaxTreeWarnings.begin(),

@@ -294,7 +294,8 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
                 if (p.isStatic) {
                     const SplitStatic split = splitStaticInitializer(effect, p);
                     if (split.declaration.empty()) {
-                        emitAt(hlsl, rewriteIntrinsics(p.hlslText, depth), p.hlslLoc);
+                        emitAt(hlsl, rewriteIntrinsics(regroupMatrixInitializer(p.hlslText, p.type), depth),
+                               p.hlslLoc);
                     } else {
                         emitAt(hlsl, split.declaration, p.hlslLoc);
                         emitAt(staticAssignments, rewriteIntrinsics(split.assignment, depth), p.hlslLoc);

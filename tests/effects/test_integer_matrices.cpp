@@ -1,8 +1,9 @@
 // Integer and bool matrices through the real pipeline (docs/legalization.md, "Integer and bool
-// matrices"): tests/data/d3d10/integer_matrices.fx computes with int2x3, uint2x4, bool2x3 and uint4x4 in a
-// compute shader on Mesa's GL, and this file computes the same words on the CPU, as HLSL defines each
-// operation (element by element, two's-complement wrap, arithmetic right shift of ints), and compares
-// them bit for bit. A blank frame (every word zero) fails.
+// matrices"; its static table lists rows in braces, "Static initializers", and it writes |= on a bool):
+// tests/data/d3d10/integer_matrices.fx computes with int2x3, uint2x4, bool2x3 and uint4x4 in a compute
+// shader on Mesa's GL, and this file computes the same words on the CPU, as HLSL defines each operation
+// (element by element, two's-complement wrap, arithmetic right shift of ints), and compares them bit for
+// bit. A blank frame (every word zero) fails.
 #include "EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -92,6 +93,8 @@ std::array<uint32_t, kWordsPerThread> threadWords(uint32_t i) {
         anyOffset |= e[r][col] == kOffsets[r][col];
     }
     flags |= (anyNegative ? 1u : 0u) << 6 | (allNonZero ? 1u : 0u) << 7 | (anyOffset ? 1u : 0u) << 8;
+    const bool big = ((e[0][0] > 8 || e[1][1] > 1) && i > 3) != ((i & 4) != 0);
+    flags |= (big ? 1u : 0u) << 9;
     const auto mixed = [](const std::array<uint32_t, 4>& row) {
         return row[0] ^ (row[1] * 7) ^ (row[2] * 13) ^ (row[3] * 17);
     };

@@ -1,9 +1,9 @@
 //--------------------------------------------------------------------------------------
-// Integer and bool matrices as the D3D11 BC6H/BC7 compute encoders use them: int2x3 endpoints quantized
+// Integer and bool matrices as texture-compression compute shaders use them: int2x3 endpoints quantized
 // by element-wise shifts, comparisons and selects through an inout parameter, bool2x3 masks, uint2x4
-// rows from a static table of uint4x4, bit operations, compound assignments, abs/min/max/clamp,
-// any/all, conversions, rows and elements indexed by constants and by variables, and an int2x3
-// parameter in the $Global block. Each of 64 threads writes eight words into a RWByteAddressBuffer; a
+// rows from a static table of uint4x4 (its rows in braces), bit operations, compound assignments,
+// abs/min/max/clamp, any/all, conversions, rows and elements indexed by constants and by variables, an
+// int2x3 parameter in the $Global block, and |=, &=, ^= on a bool. Each of 64 threads writes eight words into a RWByteAddressBuffer; a
 // pixel shader shows word k as the bytes of pixel (k % 128, k / 128). test_integer_matrices computes the
 // same words on the CPU and compares them bit for bit.
 //--------------------------------------------------------------------------------------
@@ -12,12 +12,13 @@ ByteAddressBuffer WordView < string ViewOf = "Words"; >;
 int2x3 Offsets = { 1, -2, 3, 4, 5, -6 };
 uint Precision = 5;
 
+// Rows in braces, not grouped by matrix: fxc flattened the list.
 static const uint4x4 Rotations[2] = {
-    uint4x4(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16),
-    uint4x4(0x100, 0x2000, 0x30000, 0x400000, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61),
+    {1, 2, 3, 4}, {5, 6, 7, 8}, {9, 10, 11, 12}, {13, 14, 15, 16},
+    {0x100, 0x2000, 0x30000, 0x400000}, {17, 19, 23, 29}, {31, 37, 41, 43}, {47, 53, 59, 61},
 };
 
-// BC6H's quantization: elements at zero stay, the others are scaled by a shift.
+// An endpoint quantization: elements at zero stay, the others are scaled by a shift.
 void Quantize(inout int2x3 endPoint, uint precision)
 {
     const int shift = asint(precision);
@@ -58,6 +59,11 @@ void Compute(uint i : SV_GroupIndex)
     flags |= (any(negative) ? 1u : 0u) << 6;
     flags |= (all(nonZero) ? 1u : 0u) << 7;
     flags |= (any(atOffsets) ? 1u : 0u) << 8;
+    bool big = e[0].x > 8;
+    big |= e[1].y > 1;
+    big &= i > 3;
+    big ^= (i & 4) != 0;
+    flags |= (big ? 1u : 0u) << 9;
 
     const uint at = i * 32;
     Words.Store(at + 0, RowSum(e[0]));
