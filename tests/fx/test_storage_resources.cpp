@@ -222,11 +222,16 @@ std::string declarationOf(const std::string& glsl, const std::string& name) {
 }
 
 // A pass's images take units in the order of their parameters, the same in every stage that declares one,
-// and the GLSL declares each at its unit: the runtime binds them there and sets no unit by name.
+// and the GLSL declares each at its unit: the runtime binds them there and sets no unit by name. (glslang
+// numbers the texture, the images and the buffer together, 1 and 3 for the images: the units replace its.)
 const char* const kTwoImages = R"(
+Texture2D Before;
 RWTexture2D<float4> Source;
+StructuredBuffer<float4> Data;
 RWTexture2D<float2> Target;
-[numthreads(1, 1, 1)] void Copy(uint3 id : SV_DispatchThreadID) { Target[id.xy] = Source[id.xy].xy; }
+[numthreads(1, 1, 1)] void Copy(uint3 id : SV_DispatchThreadID) {
+    Target[id.xy] = Source[id.xy].xy + Before.Load(int3(id.xy, 0)).xy + Data[0].xy;
+}
 technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Copy())); } }
 )";
 
@@ -261,7 +266,7 @@ TEST(StorageResourceAnnotations, AnImageUnitOrAPassReadOutOfRangeInAFileIsCorrup
     DiagnosticList diagnostics;
     std::shared_ptr<CompiledEffect> compiled = compile(kTwoImages, diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
-    ASSERT_EQ(compiled->techniques.at(0).passes.at(0).readParameters, (std::vector<size_t>{0, 1}));
+    ASSERT_EQ(compiled->techniques.at(0).passes.at(0).readParameters, (std::vector<size_t>{0, 1, 2, 3}));
     const auto readErrorId = [](const CompiledEffect& damaged) {
         DiagnosticList errors;
         EXPECT_FALSE(deserializeCompiledEffect(serializeCompiledEffect(damaged), "images.sfxo", errors));
@@ -273,7 +278,7 @@ TEST(StorageResourceAnnotations, AnImageUnitOrAPassReadOutOfRangeInAFileIsCorrup
         change(damaged.techniques[0].passes[0]);
         return damaged;
     };
-    for (const int unit : {-1, 2}) {
+    for (const int unit : {-1, 4}) {  // 4: as many as the effect has parameters
         EXPECT_EQ(readErrorId(damage([unit](CompiledPass& pass) { pass.compute.images[0].unit = unit; })),
                   DiagId::CompiledEffectImageUnitInvalid);
     }
@@ -286,7 +291,7 @@ TEST(StorageResourceAnnotations, AnImageUnitOrAPassReadOutOfRangeInAFileIsCorrup
                   pass.compute.images.back().unit = 1 - pass.compute.images[0].unit;
               })),
               DiagId::CompiledEffectImageUnitInvalid);
-    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.compute.images[0].parameter = 2; })),
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.compute.images[0].parameter = 4; })),
               DiagId::CompiledEffectImageWithoutParameter);
     EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) {
                   pass.readParameters = {1, 0};
@@ -296,7 +301,7 @@ TEST(StorageResourceAnnotations, AnImageUnitOrAPassReadOutOfRangeInAFileIsCorrup
                   pass.readParameters = {0, 0};
               })),
               DiagId::CompiledEffectPassReadsOutOfRange);
-    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.readParameters.push_back(2); })),
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.readParameters.push_back(4); })),
               DiagId::CompiledEffectPassReadsOutOfRange);
 }
 
