@@ -100,7 +100,7 @@ void writeProgram(Writer& w, const StageProgram& p) {
     for (const SamplerBinding& s : p.samplers) {
         w.str(s.glslName);
         w.u32(static_cast<uint32_t>(s.unit));
-        w.u32(s.depthCompare ? 1u : 0u);
+        w.u32((s.depthCompare ? 1u : 0u) | (s.read ? 2u : 0u));
         w.str(s.pairTexture);
         w.str(s.pairSampler);
     }
@@ -166,7 +166,9 @@ void readProgram(Reader& r, StageProgram& p) {
     for (SamplerBinding& s : p.samplers) {
         s.glslName = r.str();
         s.unit = r.i32();
-        s.depthCompare = r.u32() != 0;
+        const uint32_t flags = r.u32();
+        s.depthCompare = flags & 1u;
+        s.read = flags & 2u;
         s.pairTexture = r.str();
         s.pairSampler = r.str();
     }

@@ -17,7 +17,7 @@
 namespace fx {
 
 inline constexpr uint32_t kProtocolMagic = 0x57584653;  // "SFXW"
-inline constexpr uint32_t kProtocolVersion = 5;
+inline constexpr uint32_t kProtocolVersion = 6;
 inline constexpr uint32_t kFrameHeaderBytes = 16;
 inline constexpr uint32_t kMaxFramePayload = 256u << 20;
 

@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 14,
-              "the enum lengths below were pinned at format version 14: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 15,
+              "the enum lengths below were pinned at format version 15: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 36);
 static_assert(enumLength<UniformBinding::Source>() == 2);
@@ -124,7 +124,7 @@ static_assert(sizeof(SamplerBinding) == 144);
 static_assert(sizeof(StorageBufferBinding::Run) == 12);
 static_assert(sizeof(StorageBufferBinding) == 88);
 static_assert(sizeof(VertexInput) == 48);
-static_assert(sizeof(ImageBinding) == 72);
+static_assert(sizeof(ImageBinding) == 80);
 static_assert(sizeof(StageEffects) == 12);
 static_assert(sizeof(StageProgram) == 320);
 static_assert(sizeof(PreshaderProgram::Instruction::MemberComponents) == 14);
@@ -137,15 +137,16 @@ static_assert(sizeof(ScriptCommand::DispatchTerm) == 8);
 static_assert(sizeof(ScriptCommand) == 456);
 static_assert(sizeof(StreamOutElement) == 48);
 static_assert(sizeof(StreamOutput) == 80);
-static_assert(sizeof(CompiledPass) == 2216);
+static_assert(sizeof(CompiledPass) == 2240);
 static_assert(sizeof(CompiledTechnique) == 184);
-static_assert(sizeof(TextureDesc) == 2392);
+static_assert(sizeof(TextureDesc) == 2416);
 static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
 static_assert(sizeof(SemanticBinding) == 12);
-static_assert(sizeof(ParameterInfo) == 408);
+static_assert(sizeof(BufferTexel) == 8);
+static_assert(sizeof(ParameterInfo) == 416);
 static_assert(sizeof(EffectProvenance) == 112);
 static_assert(sizeof(CompiledEffect) == 400);
 #endif
@@ -190,7 +191,7 @@ template <class A>
 void fields(A& a, SamplerBinding& x) {
     a(x.glslName, x.unit, x.samplerParameter, x.depthCompare, x.pairTexture, x.pairSampler,
       x.textureParameter);
-    a(x.passSampler);
+    a(x.passSampler, x.read);
 }
 template <class A>
 void fields(A& a, StorageBufferBinding::Run& x) {
@@ -202,7 +203,7 @@ void fields(A& a, StorageBufferBinding& x) {
 }
 template <class A>
 void fields(A& a, ImageBinding& x) {
-    a(x.glslName, x.parameter, x.format);
+    a(x.glslName, x.parameter, x.format, x.unit);
 }
 template <class A>
 void fields(A& a, VertexStreamSlot& x) {
@@ -276,7 +277,7 @@ void fields(A& a, CompiledPass& x) {
     a(x.name, x.loc, x.cullClosedOnly, x.leaveOutWhen, x.filterReachTexels, x.castersOnly);
     a(x.vertex, x.fragment, x.geometry, x.hull, x.domain, x.compute, x.patchVertices, x.primitive);
     a(x.arguments, x.states, x.hasScript, x.script, x.annotations);
-    a(x.streamOut, x.drawAuto);
+    a(x.streamOut, x.drawAuto, x.readParameters);
 }
 template <class A>
 void fields(A& a, CompiledTechnique& x) {
@@ -309,10 +310,14 @@ void fields(A& a, SemanticBinding& x) {
     a(x.kind, x.inverse, x.transpose, x.byName, x.light);
 }
 template <class A>
+void fields(A& a, BufferTexel& x) {
+    a(x.component, x.components);
+}
+template <class A>
 void fields(A& a, ParameterInfo& x) {
     a(x.name, x.type, x.semantic, x.standard, x.isStatic, x.isShared, x.loc, x.light);
     a(x.hasParameterization, x.parameterization, x.parameterizationLoc, x.viewOf, x.elementCount);
-    a(x.imageSize, x.imageFormat, x.annotations);
+    a(x.imageSize, x.imageFormat, x.bufferTexel, x.annotations);
 }
 template <class A>
 void fields(A& a, EffectProvenance& x) {

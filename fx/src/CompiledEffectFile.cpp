@@ -16,6 +16,8 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace fx {
 
@@ -92,6 +94,16 @@ public:
             if (parameter.imageFormat &&
                 (!parameter.type.isImage() || !isImageFormat(*parameter.imageFormat)))
                 return Corruption{DiagId::CompiledEffectParameterImageFormatInvalid, {parameter.name}};
+            // A Buffer<T>'s texels and no other parameter's: the runtime makes its buffer texture by them.
+            const BufferTexel& texel = parameter.bufferTexel;
+            const bool texelValid =
+                parameter.type.base == BaseType::Buffer
+                    ? (texel.component == BaseType::Float || texel.component == BaseType::Int ||
+                       texel.component == BaseType::UInt) &&
+                          texel.components >= 1 && texel.components <= 4
+                    : texel.components == 0;
+            if (!texelValid)
+                return Corruption{DiagId::CompiledEffectParameterBufferTexelInvalid, {parameter.name}};
         }
         for (const TextureDesc& texture : mEffect.textures)
             if (texture.parameter >= mParameters)
@@ -153,6 +165,14 @@ private:
         for (const RenderStateSetting& state : pass.states)
             if (std::optional<DiagId> error = state.value.malformation(mParameters)) return inPass(*error);
         if (std::optional<Corruption> error = script(pass.script, 0)) return error;
+        // EffectVariable::isUsed searches the list: ascending, once each, parameters all.
+        for (size_t i = 0; i < pass.readParameters.size(); ++i)
+            if (pass.readParameters[i] >= mParameters ||
+                (i > 0 && pass.readParameters[i] <= pass.readParameters[i - 1]))
+                return inPass(DiagId::CompiledEffectPassReadsOutOfRange);
+        // One image unit per image parameter of the pass, below their count: the runtime binds each
+        // parameter's image at its unit.
+        std::vector<std::pair<size_t, int>> imageUnits;
         for (const StageProgram* stage :
              {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain, &pass.compute}) {
             for (const UniformBinding& uniform : stage->uniforms) {
@@ -173,6 +193,16 @@ private:
             for (const StorageBufferBinding& buffer : stage->storageBuffers)
                 if (buffer.parameter >= mParameters)
                     return inPass(DiagId::CompiledEffectStorageBufferWithoutParameter);
+            for (const ImageBinding& image : stage->images) {
+                if (image.parameter >= mParameters)
+                    return inPass(DiagId::CompiledEffectImageWithoutParameter);
+                if (image.unit < 0 || static_cast<size_t>(image.unit) >= mParameters)
+                    return inPass(DiagId::CompiledEffectImageUnitInvalid);
+                for (const auto& [parameter, unit] : imageUnits)
+                    if ((parameter == image.parameter) != (unit == image.unit))
+                        return inPass(DiagId::CompiledEffectImageUnitInvalid);
+                imageUnits.emplace_back(image.parameter, image.unit);
+            }
             // GL enables one clip plane per entry (GL_CLIP_DISTANCE0 + i), of which it guarantees 8.
             if (stage->effects.clipDistances < 0 || stage->effects.clipDistances > 8)
                 return inPass(DiagId::CompiledEffectClipDistancesOutOfRange);

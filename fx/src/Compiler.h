@@ -83,7 +83,12 @@ private:
     void passSamplerStates();
     void passSamplerStates(const Pass& source, CompiledPass& pass);
     void pointSprites(CompiledPass& pass);
+    // The units of a pass's D3D10 pairs and images, once every stage of the pass compiled, written into
+    // its stages' GLSL (layout(binding)) so that the runtime sets no unit by name.
     void assignPairUnits();
+    void assignImageUnits();
+    // Each pass's CompiledPass::readParameters, once its units and sampler states are known.
+    void passReads();
     void scripts();
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
     // Checks a script and resolves its operands (ScriptCommand::parameter, literal, light, dispatch, pass).

@@ -378,6 +378,45 @@ void Compiler::pointSprites(CompiledPass& pass) {
         readPointSpriteCoordinates(pass.fragment.glsl);
 }
 
+// What each pass reads, once, so that the runtime's EffectVariable::isUsed is a search of a list: the
+// parameters of the uniform-block members its code reads (SPIRV-Cross's active ranges), of the samplers it
+// reads and the textures they sample (SamplerBinding::read, from the SPIR-V), of its storage buffers and
+// images, and the inputs of its states' and compile arguments' programs.
+void Compiler::passReads() {
+    const size_t count = mOut->parameters.size();
+    for (CompiledTechnique& technique : mOut->techniques)
+        for (CompiledPass& pass : technique.passes) {
+            std::vector<bool> reads(count, false);
+            const auto mark = [&reads, count](size_t parameter) {
+                if (parameter < count) reads[parameter] = true;
+            };
+            for (const StageProgram* stage :
+                 {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute}) {
+                for (const UniformBinding& member : stage->uniforms)
+                    if (member.active && member.source == UniformBinding::Source::Parameter)
+                        mark(member.index);
+                for (const SamplerBinding& binding : stage->samplers) {
+                    if (!binding.read) continue;
+                    mark(binding.samplerParameter);
+                    if (binding.textureParameter) {
+                        mark(*binding.textureParameter);
+                    } else if (const SamplerDesc* desc = mOut->findSampler(binding.samplerParameter);
+                               desc && desc->texture) {
+                        mark(*desc->texture);
+                    }
+                }
+                for (const StorageBufferBinding& buffer : stage->storageBuffers) mark(buffer.parameter);
+                for (const ImageBinding& image : stage->images) mark(image.parameter);
+            }
+            for (const RenderStateSetting& setting : pass.states)
+                for (size_t parameter : setting.value.inputs()) mark(parameter);
+            for (const CompileArgument& argument : pass.arguments)
+                for (size_t parameter : argument.value.inputs()) mark(parameter);
+            for (size_t parameter = 0; parameter < count; ++parameter)
+                if (reads[parameter]) pass.readParameters.push_back(parameter);
+        }
+}
+
 std::unique_ptr<CompiledEffect> Compiler::run() {
     structTable();
     initialValues();
@@ -436,7 +475,9 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
             pointSprites(pass);
         }
     assignPairUnits();
+    assignImageUnits();
     passSamplerStates();
+    passReads();
     // A file without techniques compiles, as under fxc and D3DX: an effect pool's shared parameters,
     // declarations for other effects. Only running it needs a technique (the runtime says so).
     if (!found) error(DiagId::UnknownTechnique, SourceLoc{mEffect.path, 0, 0}, {mOptions.technique});

@@ -10,8 +10,6 @@
 #include "Compiler.h"
 #include "StateAssignments.h"
 
-#include <fx/StageReads.h>
-
 #include <algorithm>
 #include <set>
 
@@ -23,7 +21,7 @@ namespace {
 std::map<size_t, int> samplerRegisters(const Effect& effect, const StageProgram& stage) {
     std::set<size_t> used;
     for (const SamplerBinding& b : stage.samplers)
-        if (b.pairTexture.empty() && b.samplerParameter != kNoSampler && stageReads(stage, b.glslName))
+        if (b.pairTexture.empty() && b.samplerParameter != kNoSampler && b.read)
             used.insert(b.samplerParameter);
     std::map<size_t, int> registers;
     std::set<int> taken;

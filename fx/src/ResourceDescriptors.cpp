@@ -5,14 +5,19 @@
 #include "CaseFolding.h"
 
 #include "CaseBlindPath.h"
+#include "SpirvToGlsl.h"
 
 #include <fx/InstancedPass.h>
 #include <fx/StorageLimits.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
+#include <string_view>
+#include <utility>
 
 namespace fx::detail {
 
@@ -40,6 +45,25 @@ std::optional<TextureFormat> imageTextureFormat(const std::string& qualifier) {
 double sizeAnnotation(const ParameterInfo& parameter, const char* name, double absent) {
     const AnnotationValue* size = findAnnotation(parameter.annotations, name);
     return size && size->value.data.size() == 1 ? double(size->value.data[0]) : absent;
+}
+
+// A Buffer<T>'s texels from T as written between its angle brackets ("float4", "uint"; blanks ignored,
+// none: float4); nullopt for a T GL buffer textures cannot hold (doubles, halves, structs, 16-bit types).
+std::optional<BufferTexel> bufferTexel(const std::string& templateArgs) {
+    std::string t;
+    for (char c : templateArgs)
+        if (c != ' ' && c != '\t') t += c;
+    if (t.empty()) return BufferTexel{BaseType::Float, 4};
+    for (const auto& [name, component] : {std::pair<std::string_view, BaseType>{"float", BaseType::Float},
+                                          std::pair<std::string_view, BaseType>{"int", BaseType::Int},
+                                          std::pair<std::string_view, BaseType>{"uint", BaseType::UInt}}) {
+        if (t.rfind(name, 0) != 0) continue;
+        const std::string_view rest = std::string_view(t).substr(name.size());
+        if (rest.empty()) return BufferTexel{component, 1};
+        if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4')
+            return BufferTexel{component, rest[0] - '0'};
+    }
+    return std::nullopt;
 }
 
 // A side as the error message shows it: a whole number as written, anything else as %g.
@@ -434,8 +458,8 @@ void Compiler::storageBindings() {
 
 // What the runtime makes at load for each buffer and read-write texture, as the resources and views an FX11
 // application creates (docs/d3d10.md, "Compute shaders and read-write resources"), from the parameters'
-// annotations (ParameterInfo::viewOf, elementCount, imageSize). Each invalid one is an error at its
-// parameter.
+// annotations (ParameterInfo::viewOf, elementCount, imageSize) and a Buffer<T>'s T (bufferTexel). Each
+// invalid one is an error at its parameter.
 void Compiler::storageResources() {
     for (ParameterInfo& parameter : mOut->parameters) {
         if (const AnnotationValue* view = findAnnotation(parameter.annotations, "ViewOf")) {
@@ -449,6 +473,13 @@ void Compiler::storageResources() {
                 parameter.viewOf = viewed->second;
         }
         const BaseType type = parameter.type.base;
+        if (type == BaseType::Buffer) {
+            if (const std::optional<BufferTexel> texel = bufferTexel(parameter.type.templateArgs))
+                parameter.bufferTexel = *texel;
+            else
+                error(DiagId::BufferElementUnsupported, parameter.loc, {parameter.type.templateArgs});
+            continue;
+        }
         if ((parameter.type.isBuffer() && type != BaseType::Buffer) || type == BaseType::RWBuffer) {
             if (const AnnotationValue* count = findAnnotation(parameter.annotations, "ElementCount")) {
                 const std::vector<float>& data = count->value.data;
@@ -504,8 +535,8 @@ void Compiler::imageFormats() {
                 }
 }
 
-// D3D10 (texture, sampler) pairs: units after the D3D9 samplers', one per pair a pass samples (the same
-// in both stages, so that they link to one GL sampler unit).
+// D3D10 (texture, sampler) pairs and Buffer<T>s: units after the D3D9 samplers', one per pair a pass
+// samples (the same in every stage, so that they link to one GL sampler unit).
 void Compiler::assignPairUnits() {
     const int first = static_cast<int>(mSamplerUnits.size());
     for (CompiledTechnique& technique : mOut->techniques)
@@ -514,10 +545,37 @@ void Compiler::assignPairUnits() {
             for (StageProgram* stage :
                  {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
                 for (SamplerBinding& s : stage->samplers)
-                    if (!s.pairTexture.empty())
+                    if (!s.pairTexture.empty()) {
                         s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
                                      .first->second;
+                        declareBinding(stage->glsl, s.glslName, s.unit);
+                    }
         }
+}
+
+// Images (RWTexture1D/2D/3D/2DArray, RWBuffer): the pass's image parameters in ascending order take units
+// 0, 1, ..., a parameter the same in every stage. A texture function's fill pass numbers its own.
+void Compiler::assignImageUnits() {
+    const auto assign = [](CompiledPass& pass) {
+        const std::array<StageProgram*, 6> stages = {&pass.vertex,   &pass.hull,     &pass.domain,
+                                                     &pass.geometry, &pass.fragment, &pass.compute};
+        std::vector<size_t> parameters;
+        for (const StageProgram* stage : stages)
+            for (const ImageBinding& image : stage->images) parameters.push_back(image.parameter);
+        std::sort(parameters.begin(), parameters.end());
+        parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
+        for (StageProgram* stage : stages)
+            for (ImageBinding& image : stage->images) {
+                image.unit =
+                    static_cast<int>(std::lower_bound(parameters.begin(), parameters.end(), image.parameter) -
+                                     parameters.begin());
+                declareBinding(stage->glsl, image.glslName, image.unit);
+            }
+    };
+    for (CompiledTechnique& technique : mOut->techniques)
+        for (CompiledPass& pass : technique.passes) assign(pass);
+    for (TextureDesc& texture : mOut->textures)
+        if (texture.fill) assign(*texture.fill);
 }
 
 }  // namespace fx::detail

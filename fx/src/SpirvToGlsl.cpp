@@ -11,6 +11,7 @@
 #include <map>
 #include <regex>
 #include <string_view>
+#include <unordered_set>
 
 namespace fx {
 
@@ -339,6 +340,9 @@ bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, c
         // Texture2D.Load (texelFetch) samples with no sampler: GLSL still needs a combined one.
         const spirv_cross::VariableID loadSampler = compiler.build_dummy_sampler_for_combined_images();
         compiler.build_combined_image_samplers();
+        // What the entry point reaches: a declared sampler outside it is one the stage does not read. (The
+        // combined samplers built above are made for the samples the code takes, so all are read.)
+        const std::unordered_set<spirv_cross::VariableID> reached = compiler.get_active_interface_variables();
         program.samplers.clear();
         for (const spirv_cross::CombinedImageSampler& c : compiler.get_combined_image_samplers()) {
             std::string image = compiler.get_name(c.image_id);
@@ -383,6 +387,7 @@ bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, c
             SamplerBinding s;
             s.glslName = name;
             s.unit = binding;
+            s.read = reached.count(r.id) > 0;
             program.samplers.push_back(s);
         }
 
@@ -394,6 +399,7 @@ bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, c
             s.glslName = compiler.get_name(r.id);
             s.pairTexture = s.glslName;
             s.unit = -1;
+            s.read = reached.count(r.id) > 0;
             program.samplers.push_back(s);
         }
         program.storageBuffers.clear();
@@ -548,6 +554,43 @@ bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, c
     } catch (...) {  // every throw is a diagnostic, whatever SPIRV-Cross (or the allocator) throws
         error = "SPIRV-Cross threw an exception that is not a std::exception";
         return false;
+    }
+}
+
+void declareBinding(std::string& glsl, std::string_view name, int binding) {
+    const std::string qualifier = "binding = " + std::to_string(binding);
+    for (size_t start = 0; start < glsl.size();) {
+        size_t end = glsl.find('\n', start);
+        if (end == std::string::npos) end = glsl.size();
+        const std::string_view line(glsl.data() + start, end - start);
+        // `[layout(...) ]uniform [qualifiers ]type name[[N]];`: the name is the last word, before any array
+        // dimensions.
+        const bool declaration =
+            line.rfind("uniform ", 0) == 0 ||
+            (line.rfind("layout(", 0) == 0 && line.find(") uniform ") != std::string_view::npos);
+        if (declaration && line.size() > 1 && line.back() == ';') {
+            const size_t wordStart = line.rfind(' ') + 1;
+            std::string_view declared = line.substr(wordStart, line.size() - 1 - wordStart);
+            declared = declared.substr(0, declared.find('['));
+            if (declared == name) {
+                if (line.rfind("layout(", 0) != 0) {
+                    glsl.insert(start, "layout(" + qualifier + ") ");
+                    return;
+                }
+                const size_t close = line.find(')');
+                const std::string_view inside = line.substr(7, close - 7);
+                const size_t at = inside.find("binding = ");
+                if (at == std::string_view::npos) {
+                    glsl.insert(start + 7, qualifier + ", ");
+                    return;
+                }
+                size_t digits = at + 10;
+                while (digits < inside.size() && inside[digits] >= '0' && inside[digits] <= '9') ++digits;
+                glsl.replace(start + 7 + at, digits - at, qualifier);
+                return;
+            }
+        }
+        start = end + 1;
     }
 }
 

@@ -28,7 +28,7 @@ struct CrossOptions {
 
 // Fills `program.glsl`, `uniformBlockName/Binding/Size`, `uniforms` (name, offset, size, strides,
 // hlslColumnsContiguous; source/index/type are resolved by the caller), `samplers` (glslName, unit,
-// depthCompare) and `inputs` (vertex stage). Returns false with `error` set on failure.
+// depthCompare, read) and `inputs` (vertex stage). Returns false with `error` set on failure.
 bool spirvToGlsl(const std::vector<uint32_t>& spirv, ShaderStage stage, const CrossOptions& options,
                  StageProgram& program, std::string& error);
 
@@ -38,5 +38,11 @@ std::string spirvToGlslOptionsKey();
 // target 0, which GL takes from the output at location 0, index 1. glslang's HLSL has no attribute for the
 // index, so a fragment stage's location-1 output is redeclared in its GLSL.
 void declareDualSourceOutput(std::string& fragmentGlsl);
+
+// Declares the uniform `name` (a sampler or image SPIRV-Cross declared, on a line of its own) at `binding`
+// in `glsl`: a binding glslang gave it is replaced, other layout qualifiers (an image's format) kept. For
+// the units the effect compiler assigns once every stage of a pass is known (D3D10 pairs, images), so that
+// the runtime finds no uniform by name. A stage that does not declare `name` is left as it is.
+void declareBinding(std::string& glsl, std::string_view name, int binding);
 
 }  // namespace fx

@@ -313,6 +313,7 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     sampler.glslName = "ShadowMap";
     sampler.unit = 3;
     sampler.depthCompare = true;
+    sampler.read = false;  // declared, never read by the stage
     outcome.program.samplers.push_back(sampler);
     fx::SamplerBinding pair;  // a D3D10 (texture, sampler) pair
     pair.glslName = "fx_pair_Albedo_Linear";
@@ -332,6 +333,8 @@ TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
     EXPECT_FALSE(o->program.uniforms[0].hlslColumnsContiguous);
     EXPECT_TRUE(o->program.samplers[0].depthCompare);
     ASSERT_EQ(o->program.samplers.size(), 2u);
+    EXPECT_FALSE(o->program.samplers[0].read);
+    EXPECT_TRUE(o->program.samplers[1].read);
     EXPECT_EQ(o->program.samplers[1].pairTexture, "Albedo");
     EXPECT_EQ(o->program.samplers[1].pairSampler, "Linear");
     EXPECT_EQ(o->program.inputs[0].components, 2);

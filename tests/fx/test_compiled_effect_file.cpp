@@ -318,15 +318,16 @@ TEST_F(DamagedFile, ANewerFormatVersionIsNamed) {
     readError(bytes, DiagId::CompiledEffectOlderFormat);
 }
 
-// A file of the format before this one (its parameters' semantics and stages' effects left to the runtime)
-// is refused with the way out, never read with other meanings.
+// A file of the format before this one is refused with the way out, never read with other meanings: format
+// 14 left the units of D3D10 pairs and images, what a pass reads and a Buffer<T>'s texels to the runtime,
+// which found them by name and text.
 TEST_F(DamagedFile, TheFormatBeforeThisOneIsOlder) {
+    ASSERT_GT(kCompiledEffectFormatVersion, 14u);
     std::string bytes = mBytes;
-    bytes[8] = static_cast<char>(kCompiledEffectFormatVersion - 1);
+    bytes[8] = static_cast<char>(14);
     EXPECT_EQ(readError(bytes, DiagId::CompiledEffectOlderFormat),
-              "shadow.sfxo: error: the compiled effect file has format version " +
-                  std::to_string(kCompiledEffectFormatVersion - 1) +
-                  ", which this shadowfx no longer reads (it reads " +
+              "shadow.sfxo: error: the compiled effect file has format version 14, which this shadowfx no "
+              "longer reads (it reads " +
                   std::to_string(kCompiledEffectFormatVersion) + "): compile the effect again");
 }
 

@@ -707,7 +707,7 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
     EXPECT_EQ(old.addressU, 1);
 
     // Each (texture, sampler) pair the code samples is one GL sampler with the pair's texture, on a unit
-    // after the D3D9 samplers'.
+    // after the D3D9 samplers', which its GLSL declares: the runtime sets no unit by name.
     const CompiledPass& pass = compiled->techniques[0].passes[0];
     std::vector<const SamplerBinding*> pairs;
     for (const SamplerBinding& s : pass.fragment.samplers)
@@ -718,6 +718,11 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
         ASSERT_TRUE(s->textureParameter);
         EXPECT_EQ(compiled->parameters[*s->textureParameter].name, "Albedo");
         EXPECT_GE(s->unit, 1);
+        EXPECT_TRUE(s->read);
+        const std::string declaration =
+            "layout(binding = " + std::to_string(s->unit) + ") uniform sampler2D " + s->glslName + ";\n";
+        EXPECT_NE(pass.fragment.glsl.find(declaration), std::string::npos)
+            << declaration << pass.fragment.glsl;
     }
     EXPECT_NE(pairs[0]->unit, pairs[1]->unit);
 }

@@ -1,12 +1,15 @@
 // What the runtime makes at load for an effect's buffers and read-write textures, resolved by the compiler
-// from their annotations (fx::ParameterInfo::viewOf, elementCount, imageSize): carried by the compiled
-// effect and its file, and an invalid annotation a located compile error, with no GL context.
+// from their annotations and types (fx::ParameterInfo::viewOf, elementCount, imageSize, bufferTexel) and
+// the units of a pass's images (fx::ImageBinding::unit, declared in the GLSL): carried by the compiled
+// effect and its file, and an invalid annotation or type a located compile error, with no GL context.
 #include <fx/CompiledEffectFile.h>
 #include <fx/EffectFile.h>
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace fx::test_storage_resources {
 namespace {
@@ -20,6 +23,8 @@ Texture3D VolumeView < string ViewOf = "Volume"; >;
 RWTexture1D<float4> Ramp < int Width = 16; int Height = 9; >;
 RWTexture2DArray<float4> Layers < int ArraySize = 6; >;
 RWByteAddressBuffer Plain;
+Buffer<uint2> Indices;
+Buffer< int > Signed;
 )";
 
 std::shared_ptr<CompiledEffect> compile(const std::string& source, DiagnosticList& diagnostics) {
@@ -50,6 +55,19 @@ void expectResolved(const CompiledEffect& effect) {
     EXPECT_EQ(size("Volume"), "4x2x3");
     EXPECT_EQ(size("Ramp"), "16x1x1");     // a 1D texture has no height, whatever it says
     EXPECT_EQ(size("Layers"), "64x64x6");  // 64 x 64 without Width and Height
+    const auto texel = [&parameter](const char* name) {
+        const BufferTexel& t = parameter(name).bufferTexel;
+        return std::string(t.component == BaseType::Float  ? "float"
+                           : t.component == BaseType::Int  ? "int"
+                           : t.component == BaseType::UInt ? "uint"
+                                                           : "?") +
+               std::to_string(t.components);
+    };
+    EXPECT_EQ(texel("ValuesView"), "float4");
+    EXPECT_EQ(texel("Indices"), "uint2");
+    EXPECT_EQ(texel("Signed"), "int1");    // blanks inside the brackets ignored
+    EXPECT_EQ(texel("Values"), "float0");  // an RWBuffer is an image: no buffer texels
+    EXPECT_EQ(texel("Cells"), "float0");
 }
 
 TEST(StorageResourceAnnotations, TheCompiledEffectAndItsFileCarryViewsCountsAndSizes) {
@@ -103,6 +121,13 @@ TEST(StorageResourceAnnotations, AnInvalidAnnotationIsALocatedCompileError) {
     EXPECT_EQ(
         compileError("RWTexture2D<float4> Half < float Height = 2.5; >;\n", DiagId::ImageSizeOutOfRange),
         "storage.fx:1:21: error: invalid render-target size: Half is 64 x 2.5");
+    // A Buffer<T> of a T that GL buffer textures cannot hold, used or not (the runtime refused it at load).
+    EXPECT_EQ(compileError("\nBuffer<double2> Wide;\n", DiagId::BufferElementUnsupported),
+              "storage.fx:2:17: error: Buffer<double2>: GL buffer textures hold 32-bit float, int and uint "
+              "elements of 1 to 4 components");
+    EXPECT_EQ(compileError("Buffer<float5> Long;\n", DiagId::BufferElementUnsupported),
+              "storage.fx:1:16: error: Buffer<float5>: GL buffer textures hold 32-bit float, int and uint "
+              "elements of 1 to 4 components");
 }
 
 // An image's texel format is the one its code declares (glslang's, from the element type): float and unorm
@@ -172,6 +197,112 @@ TEST(StorageResourceAnnotations, AViewOrSizeOutOfRangeInAFileIsCorrupt) {
         damaged.parameters[indexOf(damaged, "Volume")].imageFormat = TextureFormat::D24S8;
         EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterImageFormatInvalid);
     }
+    // Buffer texels the runtime could not make a buffer texture of, or texels on no Buffer<T>.
+    for (const BufferTexel texel : {BufferTexel{BaseType::Float, 0}, BufferTexel{BaseType::UInt, 5},
+                                    BufferTexel{BaseType::Bool, 1}, BufferTexel{BaseType::Double, 2}}) {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[indexOf(damaged, "Indices")].bufferTexel = texel;
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterBufferTexelInvalid);
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[indexOf(damaged, "Cells")].bufferTexel = BufferTexel{BaseType::Float, 4};
+        EXPECT_EQ(readErrorId(damaged), DiagId::CompiledEffectParameterBufferTexelInvalid);
+    }
+}
+
+// The line of `glsl` that declares the uniform `name`, or "" where none does.
+std::string declarationOf(const std::string& glsl, const std::string& name) {
+    std::istringstream lines(glsl);
+    for (std::string line; std::getline(lines, line);)
+        if (line.find(" uniform ") != std::string::npos && line.size() > name.size() + 1 &&
+            line.compare(line.size() - name.size() - 2, name.size() + 2, " " + name + ";") == 0)
+            return line;
+    return "";
+}
+
+// A pass's images take units in the order of their parameters, the same in every stage that declares one,
+// and the GLSL declares each at its unit: the runtime binds them there and sets no unit by name. (glslang
+// numbers the texture, the images and the buffer together, 1 and 3 for the images: the units replace its.)
+const char* const kTwoImages = R"(
+Texture2D Before;
+RWTexture2D<float4> Source;
+StructuredBuffer<float4> Data;
+RWTexture2D<float2> Target;
+[numthreads(1, 1, 1)] void Copy(uint3 id : SV_DispatchThreadID) {
+    Target[id.xy] = Source[id.xy].xy + Before.Load(int3(id.xy, 0)).xy + Data[0].xy;
+}
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Copy())); } }
+)";
+
+TEST(StorageResourceAnnotations, APassDeclaresEachImageAtItsUnit) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compile(kTwoImages, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const StageProgram& stage = compiled->techniques.at(0).passes.at(0).compute;
+    ASSERT_EQ(stage.images.size(), 2u) << stage.glsl;
+    for (const ImageBinding& image : stage.images) {
+        const int unit = image.glslName == "Source" ? 0 : 1;  // Source is declared first
+        EXPECT_EQ(image.unit, unit) << image.glslName;
+        const std::string line = declarationOf(stage.glsl, image.glslName);
+        EXPECT_EQ(line.rfind("layout(", 0), 0u) << stage.glsl;
+        const std::string binding = "binding = " + std::to_string(unit);
+        EXPECT_TRUE(line.find(binding + ",") != std::string::npos ||
+                    line.find(binding + ")") != std::string::npos)
+            << line;
+        EXPECT_NE(line.find(image.format), std::string::npos) << line;
+    }
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "images.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    for (size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(read->techniques[0].passes[0].compute.images[i].unit, stage.images[i].unit);
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+}
+
+// An image unit the runtime would bind two parameters at, or out of range, an image of no parameter, and a
+// list of the parameters a pass reads that is out of order or names none: corrupt.
+TEST(StorageResourceAnnotations, AnImageUnitOrAPassReadOutOfRangeInAFileIsCorrupt) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<CompiledEffect> compiled = compile(kTwoImages, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    ASSERT_EQ(compiled->techniques.at(0).passes.at(0).readParameters, (std::vector<size_t>{0, 1, 2, 3}));
+    const auto readErrorId = [](const CompiledEffect& damaged) {
+        DiagnosticList errors;
+        EXPECT_FALSE(deserializeCompiledEffect(serializeCompiledEffect(damaged), "images.sfxo", errors));
+        EXPECT_EQ(errors.items().size(), 1u) << errors.str();
+        return errors.items().empty() ? DiagId{} : errors.items()[0].id;
+    };
+    const auto damage = [&compiled](const auto& change) {
+        CompiledEffect damaged = *compiled;
+        change(damaged.techniques[0].passes[0]);
+        return damaged;
+    };
+    for (const int unit : {-1, 4}) {  // 4: as many as the effect has parameters
+        EXPECT_EQ(readErrorId(damage([unit](CompiledPass& pass) { pass.compute.images[0].unit = unit; })),
+                  DiagId::CompiledEffectImageUnitInvalid);
+    }
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) {
+                  pass.compute.images[0].unit = pass.compute.images[1].unit;  // two parameters, one unit
+              })),
+              DiagId::CompiledEffectImageUnitInvalid);
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) {
+                  pass.compute.images.push_back(pass.compute.images[0]);  // one parameter at another unit
+                  pass.compute.images.back().unit = 1 - pass.compute.images[0].unit;
+              })),
+              DiagId::CompiledEffectImageUnitInvalid);
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.compute.images[0].parameter = 4; })),
+              DiagId::CompiledEffectImageWithoutParameter);
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) {
+                  pass.readParameters = {1, 0};
+              })),
+              DiagId::CompiledEffectPassReadsOutOfRange);
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) {
+                  pass.readParameters = {0, 0};
+              })),
+              DiagId::CompiledEffectPassReadsOutOfRange);
+    EXPECT_EQ(readErrorId(damage([](CompiledPass& pass) { pass.readParameters.push_back(4); })),
+              DiagId::CompiledEffectPassReadsOutOfRange);
 }
 
 }  // namespace

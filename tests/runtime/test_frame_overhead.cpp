@@ -266,6 +266,43 @@ TEST(FrameOverhead, HostFileDispatchFramesOnDualL) {
     EXPECT_EQ(overhead.allocations, 0u);
 }
 
+// A host file's scored frames (its visibility section, the effect compiled with SHADOWFX_VISIBILITY): whether
+// a frame is the shadow factor was read from the effect's definitions when the file was set, so the frames
+// look up no name. (They allocate: each reads its two frames back to divide them.)
+TEST(FrameOverhead, HostFileScoredFramesLookUpNoName) {
+    shadowfx::test::sharedContext();
+    fx::DiagnosticList diagnostics;
+    fx::ParseOptions parse;
+    parse.defines = {{"SHADOWFX_VISIBILITY", "1"}};
+    std::shared_ptr<const fx::CompiledEffect> compiled = fx::loadEffectFile(
+        shadowfx::test::sourcePath("tests/data/host/app_shadow.fx"), parse, {}, diagnostics);
+    std::shared_ptr<const fx::HostFile> host =
+        loadHostFile(shadowfx::test::sourcePath("tests/data/host/app_shadow.json"), diagnostics);
+    ASSERT_TRUE(compiled && host) << diagnostics.str();
+    const std::unique_ptr<EffectRenderer> renderer = EffectRenderer::create(compiled, diagnostics);
+    ASSERT_TRUE(renderer) << diagnostics.str();
+    const uint64_t settingBefore = nameLookups();
+    ASSERT_TRUE(renderer->setHostFile(host, diagnostics)) << diagnostics.str();
+    EXPECT_GT(nameLookups() - settingBefore, 0u) << "setting the file resolves its names";
+    const std::optional<Scene> scene = makeBuiltinScene("dual-l");
+    ASSERT_TRUE(scene);
+    FrameOptions options;
+    options.width = 128;
+    options.height = 96;
+    ASSERT_TRUE(renderer->render(*scene, options, diagnostics)) << diagnostics.str();
+    const uint64_t lookupsBefore = nameLookups();
+    for (int frame = 0; frame < 10; ++frame)
+        ASSERT_TRUE(renderer->render(*scene, options, diagnostics)) << diagnostics.str();
+    EXPECT_EQ(nameLookups() - lookupsBefore, 0u);
+    // The frames were scored: the shadow factor, grey, with shadow and light in it.
+    const FrameImage image = renderer->readFrame();
+    EXPECT_TRUE(shadowfx::test::notConstant(image));
+    bool grey = true;
+    for (size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+        grey = grey && image.rgba[i] == image.rgba[i + 1] && image.rgba[i] == image.rgba[i + 2];
+    EXPECT_TRUE(grey) << "a scored frame holds the shadow factor in every channel";
+}
+
 // The compiler classified every parameter's semantic (fx::SemanticBinding) and every stage's effects
 // (fx::StageEffects): creating a renderer reads neither from text.
 TEST(FrameOverhead, CreatingTheThesisRendererLooksUpNoName) {

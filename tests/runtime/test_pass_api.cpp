@@ -514,6 +514,56 @@ TEST(PassApi, SaysWhatEachPassReadsAndTouches) {
     EXPECT_NE(std::find(lines.begin(), lines.end(), "render states"), lines.end());
 }
 
+// What a pass reads is the compiler's list (fx::CompiledPass::readParameters), from each stage's SPIR-V:
+// a D3D9 sampler every stage declares (glslang keeps them all) is used where the code samples it, with its
+// texture; a D3D10 pair's texture and sampler where the pair is sampled; a read-write texture where a
+// compute pass declares it; a matrix where a uniform block member the code reads holds it.
+constexpr const char* kReadsEffect = R"(
+float4x4 WorldViewProjection : WorldViewProjection;
+texture Base;
+sampler2D BaseSampler = sampler_state { Texture = <Base>; };
+Texture2D Albedo;
+SamplerState Linear;
+RWTexture2D<float4> Field;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 Sampled(float2 uv : TEXCOORD0) : COLOR { return tex2D(BaseSampler, uv); }
+float4 Flat() : COLOR { return 1; }
+float4 Paired(float2 uv : TEXCOORD0) : SV_Target { return Albedo.Sample(Linear, uv); }
+[numthreads(1, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Field[id.xy] = 1; }
+technique d3d9 {
+    pass sampled { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Sampled(); }
+    pass flat { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 Flat(); }
+}
+technique11 d3d11 {
+    pass paired { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Paired())); }
+    pass fill { SetComputeShader(CompileShader(cs_5_0, Fill())); }
+}
+)";
+
+TEST(PassApi, APassUsesWhatItsCodeReads) {
+    std::unique_ptr<runtime::EffectRenderer> effect =
+        shadowfx::test::loadEffect(kReadsEffect, false, "reads.fx");
+    ASSERT_TRUE(effect);
+    runtime::EffectTechnique d3d9 = effect->technique("d3d9"), d3d11 = effect->technique("d3d11");
+    const runtime::EffectPass sampled = d3d9.pass("sampled"), flat = d3d9.pass("flat");
+    const runtime::EffectPass paired = d3d11.pass("paired"), fill = d3d11.pass("fill");
+    ASSERT_TRUE(sampled.isValid() && flat.isValid() && paired.isValid() && fill.isValid());
+    const auto uses = [&effect](const char* name, const runtime::EffectPass& pass) {
+        return effect->variable(name).isUsed(pass);
+    };
+    EXPECT_TRUE(uses("BaseSampler", sampled));
+    EXPECT_TRUE(uses("Base", sampled)) << "the sampler's texture";
+    EXPECT_FALSE(uses("BaseSampler", flat)) << "declared in its pixel stage, never sampled";
+    EXPECT_FALSE(uses("Base", flat));
+    EXPECT_TRUE(uses("Albedo", paired));
+    EXPECT_TRUE(uses("Linear", paired));
+    EXPECT_FALSE(uses("Albedo", sampled));
+    EXPECT_TRUE(uses("Field", fill));
+    EXPECT_FALSE(uses("Field", paired));
+    EXPECT_TRUE(uses("WorldViewProjection", flat));
+    EXPECT_FALSE(uses("WorldViewProjection", fill));
+}
+
 // [SECTION] Values and textures reach the GPU
 
 TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {

@@ -80,12 +80,16 @@ inline constexpr size_t kNoSampler = static_cast<size_t>(-1);
 
 struct SamplerBinding {
     std::string glslName;         // the sampler uniform in the GLSL
-    int unit = 0;                 // texture unit (layout(binding) in the GLSL, or set by name at link)
+    int unit = 0;                 // texture unit, declared in the GLSL (layout(binding))
     size_t samplerParameter = 0;  // CompiledEffect::parameters index of the effect's sampler
     bool depthCompare = false;    // a sampler2DShadow: the bound texture must compare
+    // Whether the stage's code reads it, from its SPIR-V (the variables its entry point reaches): glslang
+    // keeps every sampler the effect declares in every stage, read or not, and SPIRV-Cross declares them.
+    bool read = true;
     // D3D10's separate textures and samplers: GL's combined sampler for one (Texture2D, SamplerState)
     // pair the code samples with. The texture bound is `textureParameter`, not the sampler's own
-    // (SamplerDesc::texture); the unit is the pass's (assigned after both stages compiled).
+    // (SamplerDesc::texture); the unit is the pass's (assigned after both stages compiled, then written
+    // into each stage's GLSL).
     std::string pairTexture;  // the effect's texture and sampler names ("" if not a pair)
     std::string pairSampler;
     std::optional<size_t> textureParameter;  // CompiledEffect::parameters index of pairTexture
@@ -121,13 +125,15 @@ struct StorageBufferBinding {
 };
 
 // A D3D11 RWTexture1D/2D/3D/2DArray<T> or RWBuffer<T> a stage reads or writes: a GL image (image load/store).
-// The runtime binds the parameter's texture at the image unit of the pass's order of image parameters
-// (GpuProgram), with the format the GLSL declares, which glslang takes from T (docs/d3d10.md, "Compute
-// shaders and read-write resources").
+// The runtime binds the parameter's texture at `unit`, with the format the GLSL declares, which glslang
+// takes from T (docs/d3d10.md, "Compute shaders and read-write resources").
 struct ImageBinding {
     std::string glslName;  // the image uniform (the parameter's name)
     size_t parameter = 0;  // CompiledEffect::parameters index
     std::string format;    // GLSL's format qualifier: "rgba32f", "r32f", "rgba8", "r32ui", ...
+    // The image unit: the parameter's place among the pass's image parameters in ascending order (the same
+    // in every stage of the pass), declared in the GLSL (layout(binding)).
+    int unit = 0;
 };
 
 // A vertex shader input at its attribute location: the runtime feeds it the mesh stream the compiler chose
@@ -274,6 +280,10 @@ struct CompiledPass {
     bool hasScript = false;
     std::vector<ScriptCommand> script;  // the pass's Script annotation (no script: Draw=Geometry)
     Annotations annotations;            // every annotation of the pass, in source order
+    // The parameters the pass reads, ascending, once each (EffectVariable::isUsed): a uniform-block member
+    // its code reads (UniformBinding::active), a sampler or texture it samples, a storage buffer or image it
+    // declares, an input of a state's or compile argument's program.
+    std::vector<size_t> readParameters;
 };
 
 struct CompiledTechnique {
@@ -356,6 +366,13 @@ struct SamplerDesc {
     SourceLoc loc;
 };
 
+// A Buffer<T>'s texels, T resolved from its declaration (`Buffer<uint2>`; a Buffer without <T> reads
+// float4s): GL buffer textures hold 32-bit float, int and uint elements of 1 to 4 components.
+struct BufferTexel {
+    BaseType component = BaseType::Float;  // Float, Int or UInt
+    int components = 0;                    // 1 to 4 on a Buffer<T>; 0 on every other parameter
+};
+
 // An effect parameter as the runtime sees it: what it binds by semantic and the annotations it reads,
 // resolved at compile time.
 struct ParameterInfo {
@@ -388,6 +405,7 @@ struct ParameterInfo {
     // An RWTexture's or RWBuffer's texels: the format the code of the first pass using it declares
     // (glslang's, from the element type; ImageBinding::format). nullopt where no pass uses it.
     std::optional<TextureFormat> imageFormat;
+    BufferTexel bufferTexel;  // a Buffer<T>'s
     Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
 };
 

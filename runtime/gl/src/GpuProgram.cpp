@@ -265,15 +265,8 @@ std::unique_ptr<GpuProgram> GpuProgram::create(const fx::CompiledPass& pass, fx:
     const fx::StageProgram* linked[5] = {
         &pass.vertex, withPixel ? &pass.fragment : nullptr, withGeometry ? &pass.geometry : nullptr,
         withTessellation ? &pass.hull : nullptr, withTessellation ? &pass.domain : nullptr};
-    // D3D10 pairs carry no layout(binding): their units are the pass's (fx's assignPairUnits).
-    for (const fx::StageProgram* stage : linked)
-        if (stage)
-            for (const fx::SamplerBinding& s : stage->samplers)
-                if (!s.pairTexture.empty() && s.unit >= 0) {
-                    const GLint location = gl::GetUniformLocation(program->mProgram, s.glslName.c_str());
-                    if (location >= 0) gl::ProgramUniform1i(program->mProgram, location, s.unit);
-                }
-    program->bindResourceSlots(pass, linked, 5);
+    // Every sampler, image and storage block is declared at its unit or binding point in the GLSL
+    // (layout(binding)): the program is bound by no name.
     for (int i = 0; i < 5; ++i) {
         StageBlock& block = program->mBlocks[i];
         block.stage = linked[i];
@@ -309,51 +302,11 @@ std::unique_ptr<GpuProgram> GpuProgram::createCompute(const fx::CompiledPass& pa
         return nullptr;
     }
     program->mCompute = true;
-    const fx::StageProgram* linked[1] = {&pass.compute};
-    program->bindResourceSlots(pass, linked, 1);
     StageBlock& block = program->mBlocks[5];
     block.stage = &pass.compute;
     if (pass.compute.uniformBlockSize > 0 && pass.compute.uniformBlockBinding >= 0)
         block.data.assign(pass.compute.uniformBlockSize, 0);
     return program;
-}
-
-void GpuProgram::bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked,
-                                   size_t count) {
-    // Storage blocks are declared at their parameters' binding points in the GLSL itself.
-    const std::vector<size_t> images = imageParameters(pass);
-    for (size_t s = 0; s < count; ++s) {
-        if (!linked[s]) continue;
-        // An image uniform holds its unit as a sampler uniform does (glUniform1i).
-        for (const fx::ImageBinding& image : linked[s]->images) {
-            const GLint location = gl::GetUniformLocation(mProgram, image.glslName.c_str());
-            const auto at = std::find(images.begin(), images.end(), image.parameter);
-            if (location >= 0 && at != images.end())
-                gl::ProgramUniform1i(mProgram, location, static_cast<GLint>(at - images.begin()));
-        }
-    }
-}
-
-namespace {
-
-// The parameters behind one kind of binding across a pass's stages, ascending and once each: the order
-// that numbers their binding points.
-template <class Binding>
-std::vector<size_t> boundParameters(const fx::CompiledPass& pass,
-                                    std::vector<Binding> fx::StageProgram::*list) {
-    std::vector<size_t> parameters;
-    for (const fx::StageProgram* stage :
-         {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute})
-        for (const Binding& binding : stage->*list) parameters.push_back(binding.parameter);
-    std::sort(parameters.begin(), parameters.end());
-    parameters.erase(std::unique(parameters.begin(), parameters.end()), parameters.end());
-    return parameters;
-}
-
-}  // namespace
-
-std::vector<size_t> GpuProgram::imageParameters(const fx::CompiledPass& pass) {
-    return boundParameters(pass, &fx::StageProgram::images);
 }
 
 bool GpuProgram::pixelShaderHasSideEffects(const fx::StageProgram& pixel) {

@@ -28,8 +28,7 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
     r.uniformRing = std::make_unique<UniformRing>();  // texture functions draw with it
     r.textures = EffectTextures::create(*r.mCompiled, r.values.all(), *r.uniformRing, diagnostics);
     if (!r.textures) return nullptr;
-    r.storage = StorageResources::create(*r.mCompiled, diagnostics);
-    if (!r.storage) return nullptr;
+    r.storage = StorageResources::create(*r.mCompiled);
     r.quad = GpuMesh::makeFullScreenQuad();
     r.annotations = AnnotationTable(*r.mCompiled);
     return resources;

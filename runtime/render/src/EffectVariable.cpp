@@ -3,12 +3,10 @@
 #include <runtime/EffectVariable.h>
 
 #include "EffectResources.h"
-#include "PassUse.h"
 
 #include <runtime/EffectPass.h>
 
 #include <fx/RenderStates.h>
-#include <fx/StageReads.h>
 
 #include <algorithm>
 
@@ -238,22 +236,9 @@ bool EffectVariable::setTexture(GLuint name) {
 bool EffectVariable::isUsed(const EffectPass& pass) const {
     if (!isValid() || !pass.isValid() || pass.techniqueIndex() >= mResources->effect().techniques.size())
         return false;
-    const fx::CompiledPass& compiled =
-        mResources->effect().techniques[pass.techniqueIndex()].passes[pass.index()];
-    if (passValueReads(compiled, mResources->values.size())[mParameter]) return true;
-    for (const fx::StageProgram* stage : {&compiled.vertex, &compiled.hull, &compiled.domain,
-                                          &compiled.geometry, &compiled.fragment, &compiled.compute}) {
-        for (const fx::SamplerBinding& binding : stage->samplers) {
-            const fx::SamplerDesc* desc = mResources->effect().findSampler(binding.samplerParameter);
-            const bool names = binding.samplerParameter == mParameter ||
-                               binding.textureParameter == mParameter ||
-                               (!binding.textureParameter && desc && desc->texture == mParameter);
-            if (names && fx::stageReads(*stage, binding.glslName)) return true;
-        }
-        for (const fx::StorageBufferBinding& buffer : stage->storageBuffers)
-            if (buffer.parameter == mParameter) return true;
-    }
-    return false;
+    const std::vector<size_t>& reads =
+        mResources->effect().techniques[pass.techniqueIndex()].passes[pass.index()].readParameters;
+    return std::binary_search(reads.begin(), reads.end(), mParameter);
 }
 
 size_t EffectVariable::annotationCount() const {

@@ -11,6 +11,7 @@
 #include <runtime/Framebuffer.h>
 #include <runtime/GlDebug.h>
 #include <runtime/Image.h>
+#include <private/runtime/NameLookups.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -231,6 +232,11 @@ HostFrame::HostFrame(std::shared_ptr<const fx::HostFile> host, EffectRenderer& r
     if (mHost->visibility)
         for (const HostParameter& parameter : mHost->visibility->set)
             mVisibilitySet.push_back(resolve(parameter, renderer));
+    countNameLookup();  // the effect's definitions searched for SHADOWFX_VISIBILITY, here and never per frame
+    const auto& defines = renderer.effect().provenance.defines;
+    mScored = mHost->visibility && std::any_of(defines.begin(), defines.end(), [](const auto& define) {
+                  return define.first == "SHADOWFX_VISIBILITY";
+              });
     for (const HostStep& step : mHost->frame) {
         Step resolved;
         resolved.technique = renderer.technique(step.technique);
@@ -422,13 +428,9 @@ bool HostFrame::render(EffectResources& r, const Scene& scene, const FrameOption
         if (value.parameter->value.kind == HostValue::Kind::Constant)
             setComponents(value, value.parameter->value.numbers);
 
-    const auto& defines = r.effect().provenance.defines;
-    const bool scored = mHost->visibility &&
-                        std::any_of(defines.begin(), defines.end(),
-                                    [](const auto& define) { return define.first == "SHADOWFX_VISIBILITY"; });
     std::fill(mOverridden.begin(), mOverridden.end(), false);
     bool ok = true;
-    if (!scored) {
+    if (!mScored) {
         ok = drawSteps(r, scene, options, false, diagnostics);
     } else {
         // The shadow factor of an effect with no hook of its own: the frame with the visibility constants

@@ -74,6 +74,9 @@ private:
     std::vector<Value> mParameters;
     std::vector<Value> mVisibilitySet;
     std::vector<Step> mSteps;
+    // The file has a visibility section and the effect was compiled with SHADOWFX_VISIBILITY: each frame
+    // is the shadow factor. Read from the effect's provenance once, here, not per frame.
+    bool mScored = false;
     std::vector<std::string> mLightNames;  // every light the file names, once
     // Per mLightNames entry: the projection the file gives it (the last that names it), or null.
     std::vector<const fx::HostLightProjection*> mLightProjections;

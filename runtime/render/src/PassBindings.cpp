@@ -75,23 +75,25 @@ void bindPassStorageBuffers(EffectResources& resources, const fx::CompiledPass& 
 }
 
 // The textures behind the pass's images (RWTexture1D/2D/3D/2DArray, all layers) and the buffer textures
-// behind its RWBuffers on their image units, read-write.
+// behind its RWBuffers on their image units (fx::ImageBinding::unit, declared in the GLSL), read-write.
 void bindPassImages(EffectResources& resources, const fx::CompiledPass& pass) {
-    const std::vector<size_t> parameters = GpuProgram::imageParameters(pass);
-    for (size_t unit = 0; unit < parameters.size(); ++unit) {
-        const GpuTexture* image = resources.storage->image(parameters[unit]);
-        const GpuBuffer* buffer = resources.storage->buffer(parameters[unit]);
-        if (image) {
-            // A 3D texture's slices and an array's elements are all the image's (image3D, image2DArray).
-            const GLenum target = image->target();
-            const GLboolean layered = target == GL_TEXTURE_3D || target == GL_TEXTURE_2D_ARRAY;
-            gl::BindImageTexture(static_cast<GLuint>(unit), image->id(), 0, layered, 0, GL_READ_WRITE,
-                                 image->glFormat().internalFormat);
-        } else if (buffer && buffer->texture()) {  // RWBuffer<T>
-            gl::BindImageTexture(static_cast<GLuint>(unit), buffer->texture(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                                 buffer->texelFormat());
+    for (const fx::StageProgram* stage : stagesOf(pass))
+        for (const fx::ImageBinding& binding : stage->images) {
+            const GpuTexture* image = resources.storage->image(binding.parameter);
+            const GpuBuffer* buffer = resources.storage->buffer(binding.parameter);
+            const auto unit = static_cast<GLuint>(binding.unit);
+            if (image) {
+                // A 3D texture's slices and an array's elements are all the image's (image3D,
+                // image2DArray).
+                const GLenum target = image->target();
+                const GLboolean layered = target == GL_TEXTURE_3D || target == GL_TEXTURE_2D_ARRAY;
+                gl::BindImageTexture(unit, image->id(), 0, layered, 0, GL_READ_WRITE,
+                                     image->glFormat().internalFormat);
+            } else if (buffer && buffer->texture()) {  // RWBuffer<T>
+                gl::BindImageTexture(unit, buffer->texture(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                                     buffer->texelFormat());
+            }
         }
-    }
 }
 
 }  // namespace

@@ -10,34 +10,21 @@ namespace runtime {
 
 namespace {
 
-// A Buffer<T>'s texel: T's GL buffer-texture format and size. nullopt for a T GL cannot hold as texels
-// (doubles, structs, 16-bit types).
+// A Buffer<T>'s texel, as the compiler resolved T (fx::BufferTexel): its GL buffer-texture format and
+// size. The compiled effect's checks let through 32-bit float, int and uint texels of 1 to 4 components.
 struct TexelFormat {
     GLenum format;
     size_t bytes;
 };
-std::optional<TexelFormat> bufferTexelFormat(const std::string& templateArgs) {
-    std::string t;
-    for (char c : templateArgs)
-        if (c != ' ' && c != '\t') t += c;
-    if (t.empty()) t = "float4";  // Buffer without <T> reads float4s
-    static const struct {
-        const char* name;
-        GLenum formats[4];
-    } kTypes[] = {{"float", {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F}},
-                  {"int", {GL_R32I, GL_RG32I, GL_RGB32I, GL_RGBA32I}},
-                  {"uint", {GL_R32UI, GL_RG32UI, GL_RGB32UI, GL_RGBA32UI}}};
-    for (const auto& type : kTypes) {
-        const std::string name = type.name;
-        if (t.rfind(name, 0) != 0) continue;
-        const std::string rest = t.substr(name.size());
-        const int n = rest.empty()                                           ? 1
-                      : rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4' ? rest[0] - '0'
-                                                                             : 0;
-        if (n == 0) continue;
-        return TexelFormat{type.formats[n - 1], static_cast<size_t>(n) * 4};
-    }
-    return std::nullopt;
+TexelFormat bufferTexelFormat(const fx::BufferTexel& texel) {
+    static constexpr GLenum kFloat[4] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+    static constexpr GLenum kInt[4] = {GL_R32I, GL_RG32I, GL_RGB32I, GL_RGBA32I};
+    static constexpr GLenum kUInt[4] = {GL_R32UI, GL_RG32UI, GL_RGB32UI, GL_RGBA32UI};
+    const GLenum* formats = texel.component == fx::BaseType::Int    ? kInt
+                            : texel.component == fx::BaseType::UInt ? kUInt
+                                                                    : kFloat;
+    const size_t components = static_cast<size_t>(std::clamp(texel.components, 1, 4));
+    return TexelFormat{formats[components - 1], components * 4};
 }
 
 // The storage layout a pass's code gives a StructuredBuffer or ByteAddressBuffer (the first found; every
@@ -54,10 +41,9 @@ const fx::StorageBufferBinding* storageLayout(const fx::CompiledEffect& effect, 
 
 }  // namespace
 
-std::unique_ptr<StorageResources> StorageResources::create(const fx::CompiledEffect& effect,
-                                                           fx::DiagnosticSink& diagnostics) {
+std::unique_ptr<StorageResources> StorageResources::create(const fx::CompiledEffect& effect) {
     auto storage = std::unique_ptr<StorageResources>(new StorageResources(effect));
-    if (!storage->createDefaultBuffers(diagnostics)) return nullptr;
+    storage->createDefaultBuffers();
     storage->createImages();
     return storage;
 }
@@ -83,18 +69,13 @@ size_t StorageResources::viewedResource(size_t parameter) const {
 }
 
 // Zeros until the application sets them: what D3D10 reads from a resource slot with nothing bound.
-bool StorageResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
+void StorageResources::createDefaultBuffers() {
     for (size_t i = 0; i < mEffect->parameters.size(); ++i) {
         const fx::TypeDesc& type = mEffect->parameters[i].type;
         if (!type.isBuffer()) continue;
         if (type.base == fx::BaseType::Buffer) {
-            const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
-            if (!texel) {
-                diagnostics.report(fx::DiagId::BufferElementUnsupported, mEffect->parameters[i].loc,
-                                   {type.templateArgs});
-                return false;
-            }
-            mBuffers[i] = GpuBuffer::create(nullptr, texel->bytes, texel->format);
+            const TexelFormat texel = bufferTexelFormat(mEffect->parameters[i].bufferTexel);
+            mBuffers[i] = GpuBuffer::create(nullptr, texel.bytes, texel.format);
             continue;
         }
         const fx::StorageBufferBinding* layout = storageLayout(*mEffect, i);
@@ -108,7 +89,6 @@ bool StorageResources::createDefaultBuffers(fx::DiagnosticSink& diagnostics) {
             mCounters[i] = GpuBuffer::create(&zero, sizeof zero);
         }
     }
-    return true;
 }
 
 bool StorageResources::set(size_t index, const void* bytes, size_t elements, size_t elementBytes,
@@ -133,10 +113,10 @@ bool StorageResources::set(size_t index, const void* bytes, size_t elements, siz
         return refuse(fx::DiagId::SetBufferByteCount, what);
     const size_t total = elements * elementBytes;
     if (type.base == fx::BaseType::Buffer) {
-        const std::optional<TexelFormat> texel = bufferTexelFormat(type.templateArgs);
-        if (!texel || elementBytes != texel->bytes)
-            return refuse(fx::DiagId::SetBufferElementSize, withSize(texel ? texel->bytes : 0));
-        mBuffers[index] = GpuBuffer::create(bytes, total, texel->format);
+        const TexelFormat texel = bufferTexelFormat(mEffect->parameters[index].bufferTexel);
+        if (elementBytes != texel.bytes)
+            return refuse(fx::DiagId::SetBufferElementSize, withSize(texel.bytes));
+        mBuffers[index] = GpuBuffer::create(bytes, total, texel.format);
     } else if (type.base == fx::BaseType::ByteAddressBuffer) {
         if (total % 4 != 0) return refuse(fx::DiagId::SetBufferWholeWords, what);
         mBuffers[index] = GpuBuffer::create(bytes, total);

@@ -25,11 +25,9 @@ namespace runtime {
 class StorageResources {
 public:
     // Every buffer at its declared size and every image a pass uses at its annotated size, in the format
-    // its code declares, and the views: what the compiler resolved (ParameterInfo::elementCount,
-    // imageSize, imageFormat, viewOf). nullptr, with a diagnostic, for a Buffer<T> of an element type GL
-    // cannot hold.
-    static std::unique_ptr<StorageResources> create(const fx::CompiledEffect& effect,
-                                                    fx::DiagnosticSink& diagnostics);
+    // its code declares, a Buffer<T> in its texels' format, and the views: what the compiler resolved
+    // (ParameterInfo::elementCount, imageSize, imageFormat, bufferTexel, viewOf).
+    static std::unique_ptr<StorageResources> create(const fx::CompiledEffect& effect);
 
     // The buffer, counter or image of a parameter (not of the resource it views: see viewedResource), or
     // null where it has none.
@@ -53,7 +51,7 @@ public:
 
 private:
     explicit StorageResources(const fx::CompiledEffect& effect) : mEffect(&effect) {}
-    bool createDefaultBuffers(fx::DiagnosticSink& diagnostics);
+    void createDefaultBuffers();
     // StorageImages.cpp.
     void createImages();
 

@@ -126,3 +126,13 @@ FX_DIAGNOSTIC(CompiledEffectParameterStorageSizeOutOfRange, Error,
               "range")
 FX_DIAGNOSTIC(CompiledEffectParameterImageFormatInvalid, Error,
               "the compiled effect file is corrupt: parameter '{0}' has an image format it cannot have")
+FX_DIAGNOSTIC(CompiledEffectParameterBufferTexelInvalid, Error,
+              "the compiled effect file is corrupt: parameter '{0}' has buffer texels it cannot have")
+FX_DIAGNOSTIC(CompiledEffectPassReadsOutOfRange, Error,
+              "the compiled effect file is corrupt: pass '{0}': its list of the parameters it reads is "
+              "out of order or names no parameter")
+FX_DIAGNOSTIC(CompiledEffectImageWithoutParameter, Error,
+              "the compiled effect file is corrupt: pass '{0}': an image binding names no parameter")
+FX_DIAGNOSTIC(CompiledEffectImageUnitInvalid, Error,
+              "the compiled effect file is corrupt: pass '{0}': an image unit out of range or shared by two "
+              "parameters")

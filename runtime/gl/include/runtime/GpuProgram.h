@@ -81,10 +81,6 @@ public:
 
     bool hasShaders() const { return mProgram != 0; }
 
-    // The effect parameters behind the pass's images (RWTexture1D/2D/3D/2DArray, RWBuffer), ascending:
-    // parameter k is bound at image unit k in every program linked from the pass. (Storage blocks carry
-    // their binding points in their GLSL: fx::StorageBufferBinding::binding.)
-    static std::vector<size_t> imageParameters(const fx::CompiledPass& pass);
     // True for a compute pass's program: dispatched (glDispatchCompute), never drawn.
     bool isCompute() const { return mCompute; }
 
@@ -105,10 +101,8 @@ private:
         uint64_t uploadedLap = 0;       // the ring's lap when it was bound
     };
     GpuProgram() = default;
-    // Binds the pass's images to the units their parameters' order gives (imageParameters).
     // Binds each stage's block whose bytes changed or whose range is from an earlier lap of the ring.
     void bindStaleBlocks(UniformRing& ring);
-    void bindResourceSlots(const fx::CompiledPass& pass, const fx::StageProgram* const* linked, size_t count);
 
     GLuint mProgram = 0;
     StageBlock mBlocks[6];  // vertex, pixel, geometry, hull, domain, compute
