@@ -20,7 +20,7 @@ namespace runtime {
 
 // What compute() returns for given inputs, versioned: raise it with any change to the rays, the sampling or
 // the offsets, and every cached truth of an older version (runtime/TruthCache.h) is cast again.
-constexpr uint32_t kGroundTruthVersion = 1;
+constexpr uint32_t kGroundTruthVersion = 2;
 
 struct GroundTruthOptions {
     // Samples per pixel for area lights, rounded to a square (stratified sqrt x sqrt grid, jittered).
