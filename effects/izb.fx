@@ -6,7 +6,7 @@
 // 1. `ClearHeads`: every light-map texel's list of receivers is emptied.
 // 2. `Receivers`: the camera's view; each pixel stores its receiver's light position (NDC x, y and depth z),
 //    the visible point moved ReceiverOffset off its plane along the ray to the light, as the ray-cast
-//    truth starts its rays (docs/scoring.md, "Where a ray starts").
+//    truth starts its rays (docs/scoring.md, "The ground truth").
 // 3. `Build`: each pixel's receiver (node index = pixel index) is copied into its node and pushed onto the
 //    list of the texel it projects to (an atomic exchange on that texel's head).
 // 4. `Occlude`: the casters from the light, conservatively rasterized (each triangle enlarged by half a
@@ -156,7 +156,7 @@ ReceiverPixel ReceiverVS(VertexFormat IN)
 }
 
 // The receiver moved `height` off its plane, reached along its ray to the light, as the ray-cast truth starts
-// its rays (docs/scoring.md, "Where a ray starts"): along the ray its light x, y stay, so its shadow's edges
+// its rays (docs/scoring.md, "The ground truth"): along the ray its light x, y stay, so its shadow's edges
 // stay where the casters put them (a move along the normal shifts them by height / tan(elevation)); where
 // the light grazes the surface (N.L < 0.1) the normal makes up what the ray's ten heights lack.
 float3 OffPlaneTowardsLight(float3 world, float3 normal, float3 toLight, float height)
