@@ -305,9 +305,9 @@ TEST(CheckCommand, NanInARenderTargetFails) {
 }
 
 TEST(CheckCommand, AValueCloseToItsBoundIsAQualityWarningThatDoesNotFail) {
-    // main measures 0.063 % on teapot (llvmpipe): above 80% of a 0.07 bound, below the bound.
+    // main measures 0.076 % on teapot (llvmpipe): above 80% of a 0.09 bound, below the bound.
     const EffectCopy copy("warning", "float ExpectMisclassifiedBelow = 0.095;",
-                          "float ExpectMisclassifiedBelow = 0.07;");
+                          "float ExpectMisclassifiedBelow = 0.09;");
     const fs::path junit = copy.dir() / "junit.xml";
     const RunResult result = run("check " + copy.effect() +
                                  " --technique main --scenes teapot --backend egl --junit " + junit.string());

@@ -131,6 +131,48 @@ TEST_F(GroundTruthSquare, HardShadowMatchesTheClosedFormAwayFromTheOutline) {
     EXPECT_GT(compared - shadowed, 1000u);
 }
 
+// A light 45 degrees up moves the square's shadow off its footprint; the rays' start, however far off the
+// plane (here 5e-2 of the scene's radius, 0.42: about six pixels of ground), must not move the
+// outline: every pixel more than a pixel from it is classified as the closed form says. A start lifted along
+// the normal moved the outline by the lift / tan(elevation) into the shadow, so that a map's exact shadow
+// scored false shadow along each edge.
+TEST_F(GroundTruthSquare, TheRaysStartLeavesASlantedShadowsOutlineWhereItIs) {
+    runtime::Light light = scene.lights[0];
+    light.direction = glm::vec3(-1.0f, -1.0f, -0.3f);
+    const glm::vec3 toLight = -glm::normalize(light.direction);
+    // The point of y = 1 straight towards the light from a point of the plane.
+    auto inSlantedShadow = [&](const glm::vec3& p) { return inSquareShadow(p + toLight / toLight.y); };
+    runtime::GroundTruthOptions options;
+    options.normalOffset = 5e-2f;
+    const runtime::GroundTruth truth = runtime::ShadowRayCaster(scene).compute(gbuffer, light, options);
+    size_t compared = 0, shadowed = 0, wrong = 0;
+    for (int y = 1; y + 1 < kHeight; ++y) {
+        for (int x = 1; x + 1 < kWidth; ++x) {
+            const size_t i = gbuffer.index(x, y);
+            if (gbuffer.objectId[i] != 1) continue;
+            const bool expected = inSlantedShadow(gbuffer.position[i]);
+            bool nearOutline = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const size_t j = gbuffer.index(x + dx, y + dy);
+                    nearOutline = nearOutline || gbuffer.objectId[j] != 1 ||
+                                  inSlantedShadow(gbuffer.position[j]) != expected;
+                }
+            if (nearOutline) continue;
+            ++compared;
+            shadowed += expected;
+            const bool rayShadowed = truth.visibility[i] == 0.0f;
+            if (rayShadowed != expected && ++wrong <= 5)
+                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << gbuffer.position[i].x << ", "
+                              << gbuffer.position[i].z << "): ray cast says "
+                              << (rayShadowed ? "shadow" : "lit");
+        }
+    }
+    EXPECT_EQ(wrong, 0u) << "of " << compared;
+    EXPECT_GT(shadowed, 100u);
+    EXPECT_GT(compared - shadowed, 1000u);
+}
+
 TEST_F(GroundTruthSquare, AreaLightGivesUmbraPenumbraAndRecordsItsSamples) {
     runtime::Light light = scene.lights[0];
     // A directional light's disk sits two scene radii (~17 units) away: radius 4 gives a ~0.5-unit penumbra.

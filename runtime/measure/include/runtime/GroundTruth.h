@@ -20,15 +20,16 @@ namespace runtime {
 
 // What compute() returns for given inputs, versioned: raise it with any change to the rays, the sampling or
 // the offsets, and every cached truth of an older version (runtime/TruthCache.h) is cast again.
-constexpr uint32_t kGroundTruthVersion = 1;
+constexpr uint32_t kGroundTruthVersion = 2;
 
 struct GroundTruthOptions {
     // Samples per pixel for area lights, rounded to a square (stratified sqrt x sqrt grid, jittered).
     int areaSamples = 256;
-    // Ray origins move this far along the surface normal (towards the light's side) before tracing, as a
-    // fraction of the scene's bounding radius. The G-buffer's positions are rasterizer-interpolated float32
-    // points on their triangles, so their distance from the triangle's plane is ~1e-7 of the coordinates;
-    // 1e-4 of the radius is far above that and far below any feature of the scenes (a 10-unit scene: 1 mm).
+    // Ray origins start this far off the receiver's plane (on the light's side), as a fraction of the
+    // scene's bounding radius, reached along the ray so that no shadow edge moves (EmbreeRayCaster.cpp).
+    // The G-buffer's positions are rasterizer-interpolated float32 points on their triangles, so their
+    // distance from the triangle's plane is ~1e-7 of the coordinates; 1e-4 of the radius is far above that
+    // and far below any feature of the scenes (a 10-unit scene: 1 mm).
     float normalOffset = 1e-4f;
     int threads = 0;  // 0 = std::thread::hardware_concurrency()
 };
