@@ -29,6 +29,10 @@
 
 namespace runtime {
 
+// The file's helpers in a namespace named after it: in a unity build (SHADOWFX_UNITY_LIBS) this file shares
+// its translation unit with others of the library, and its safeName (which replaces '.') would be ambiguous
+// with GoldenImages.cpp's runtime::safeName (which keeps it).
+namespace bench_run {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -197,8 +201,10 @@ glm::vec3 directionAtAngleToView(const Camera& camera, float degrees) {
 }
 
 }  // namespace
+}  // namespace bench_run
 
 BenchResult runBench(const BenchOptions& o, const BenchLog& log) {
+    using namespace bench_run;
     const auto note = [&](const std::string& text) {
         if (log.note) log.note(text);
     };

@@ -33,8 +33,10 @@ bool expandRange(const std::string& item, std::vector<std::string>& out, std::st
     const size_t first = item.find(':');
     const size_t second = item.find(':', first + 1);
     const std::optional<double> start = number(item.substr(0, first));
+    // number("") is nullopt, as a missing STOP must be; a conditional nullopt here instead reads to GCC, once
+    // inlined beside the other files of a unity batch, as maybe uninitialized where *stop is read below.
     const std::optional<double> stop =
-        second == std::string::npos ? std::nullopt : number(item.substr(first + 1, second - first - 1));
+        number(second == std::string::npos ? std::string() : item.substr(first + 1, second - first - 1));
     std::string step = second == std::string::npos ? "" : item.substr(second + 1);
     const bool multiply = !step.empty() && (step[0] == 'x' || step[0] == '*');
     if (!step.empty() && (multiply || step[0] == '+')) step.erase(0, 1);

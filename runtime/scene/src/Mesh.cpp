@@ -7,6 +7,8 @@
 // normals: a generator only says which vertices form a face.
 #include <runtime/Mesh.h>
 
+#include "TangentFrame.h"
+
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -15,10 +17,6 @@
 
 namespace runtime {
 
-namespace {
-
-// Tangent with handedness, as effects expect it: xyz = direction of increasing u, w = sign such that
-// w * cross(N, T) is the direction of increasing v (D3DX's convention for TANGENT / BINORMAL).
 glm::vec4 tangentFrame(const glm::vec3& normal, const glm::vec3& dPdu, const glm::vec3& dPdv) {
     glm::vec3 t = dPdu - normal * glm::dot(normal, dPdu);  // Gram-Schmidt: keep it in the tangent plane
     if (glm::dot(t, t) < 1e-12f) {
@@ -29,6 +27,8 @@ glm::vec4 tangentFrame(const glm::vec3& normal, const glm::vec3& dPdu, const glm
     float w = glm::dot(glm::cross(normal, t), dPdv) < 0.0f ? -1.0f : 1.0f;
     return glm::vec4(t, w);
 }
+
+namespace {
 
 class MeshBuilder {
 public:

@@ -15,6 +15,7 @@
 
 #include <runtime/Mesh.h>
 
+#include "TangentFrame.h"
 #include "TeapotData.h"
 
 #include <algorithm>
@@ -129,16 +130,6 @@ std::vector<Patch> expandPatches() {
 // z-up (Newell's frame) to y-up; a rotation about x, so it keeps windings and the teapot's spout at +x.
 glm::vec3 toYUp(const glm::vec3& p) {
     return glm::vec3(p.x, p.z, -p.y);
-}
-
-glm::vec4 tangentFrame(const glm::vec3& normal, const glm::vec3& dPdu, const glm::vec3& dPdv) {
-    glm::vec3 t = dPdu - normal * glm::dot(normal, dPdu);
-    if (glm::dot(t, t) < 1e-12f) {
-        t = std::abs(normal.y) < 0.9f ? glm::cross(glm::vec3(0, 1, 0), normal) : glm::vec3(1, 0, 0);
-    }
-    t = glm::normalize(t);
-    float w = glm::dot(glm::cross(normal, t), dPdv) < 0.0f ? -1.0f : 1.0f;
-    return glm::vec4(t, w);
 }
 
 }  // namespace
