@@ -3,6 +3,7 @@
 // whole matrix swizzles and a vector swizzle to `out` and `inout` parameters, on a float4x4 and an int2x3,
 // in a compute shader on Mesa's GL; this file computes the same words on the CPU, as HLSL copies an
 // argument in and out through its swizzle, and compares them bit for bit. A blank frame fails.
+#include "ComputedWords.h"
 #include "EffectHarness.h"
 
 #include <runtime/BuiltinScenes.h>
@@ -73,28 +74,13 @@ std::array<uint32_t, kWordsWritten> threadWords(uint32_t i) {
 }
 
 TEST(MatrixSwizzleWrites, WritesThroughSwizzlesAndOutArgumentsReachTheElementsHlslNames) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/matrix_swizzle_writes.fx"), true);
-    ASSERT_TRUE(renderer);
-    auto teapot = runtime::makeBuiltinScene("teapot", nullptr);  // not drawn: the words are the buffer's
-    ASSERT_TRUE(teapot);
-    ASSERT_TRUE(render(*renderer, *teapot, kWidth, kHeight));
-    const runtime::FrameImage frame = renderer->readFrame();
-    int wrong = 0, nonZero = 0;
-    for (uint32_t thread = 0; thread < kThreads; ++thread) {
-        const std::array<uint32_t, kWordsWritten> expected = threadWords(thread);
-        for (int k = 0; k < kWordsWritten; ++k) {
-            const int index = static_cast<int>(thread) * kWordsPerThread + k;
-            const uint8_t* p = frame.pixel(index % kWidth, index / kWidth);
-            const uint32_t word = p[0] | p[1] << 8 | p[2] << 16 | static_cast<uint32_t>(p[3]) << 24;
-            nonZero += word != 0;
-            if (word == expected[k]) continue;
-            if (++wrong <= 8)
-                ADD_FAILURE() << "thread " << thread << ", word " << k << ": GL computed 0x" << std::hex
-                              << word << ", the CPU 0x" << expected[k] << std::dec;
-        }
-    }
-    EXPECT_EQ(wrong, 0);
-    EXPECT_GT(nonZero, kThreads * kWordsWritten / 2);
+    const std::optional<runtime::FrameImage> frame =
+        computedFrame("tests/data/d3d10/matrix_swizzle_writes.fx", kWidth, kHeight);
+    ASSERT_TRUE(frame);
+    const ComputedWords words =
+        compareComputedWords(*frame, kWidth, kThreads, kWordsPerThread, kWordsWritten, threadWords);
+    EXPECT_EQ(words.wrong, 0);
+    EXPECT_GT(words.nonZero, kThreads * kWordsWritten / 2);
 }
 
 }  // namespace

@@ -58,6 +58,39 @@ protected:
         ASSERT_TRUE(rendered) << diagnostics.str();
         gbuffer = std::move(*rendered);
     }
+    // The plane's pixels more than a pixel from the outline `inShadow` draws (a neighbour across it, or on
+    // the square, is skipped), each ray-cast shadow compared with `inShadow`; the first five that differ are
+    // reported as failures.
+    struct PlaneComparison {
+        size_t compared = 0, shadowed = 0, wrong = 0;
+    };
+    template <typename InShadow>
+    PlaneComparison compareThePlane(const runtime::GroundTruth& truth, InShadow inShadow) const {
+        PlaneComparison c;
+        for (int y = 1; y + 1 < kHeight; ++y) {
+            for (int x = 1; x + 1 < kWidth; ++x) {
+                const size_t i = gbuffer.index(x, y);
+                if (gbuffer.objectId[i] != 1) continue;
+                const bool expected = inShadow(gbuffer.position[i]);
+                bool nearOutline = false;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const size_t j = gbuffer.index(x + dx, y + dy);
+                        nearOutline = nearOutline || gbuffer.objectId[j] != 1 ||
+                                      inShadow(gbuffer.position[j]) != expected;
+                    }
+                if (nearOutline) continue;
+                ++c.compared;
+                c.shadowed += expected;
+                const bool rayShadowed = truth.visibility[i] == 0.0f;
+                if (rayShadowed != expected && ++c.wrong <= 5)
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << gbuffer.position[i].x << ", "
+                                  << gbuffer.position[i].z << "): ray cast says "
+                                  << (rayShadowed ? "shadow" : "lit");
+            }
+        }
+        return c;
+    }
     runtime::Scene scene;
     runtime::GBuffer gbuffer;
 };
@@ -94,41 +127,21 @@ TEST_F(GroundTruthSquare, HardShadowMatchesTheClosedFormAwayFromTheOutline) {
     const runtime::GroundTruth truth = caster.compute(gbuffer, scene.lights[0]);
     EXPECT_FALSE(truth.soft);
     EXPECT_EQ(truth.samplesPerPixel, 1);
-    size_t compared = 0, shadowed = 0, wrong = 0;
-    for (int y = 1; y + 1 < kHeight; ++y) {
-        for (int x = 1; x + 1 < kWidth; ++x) {
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
             const size_t i = gbuffer.index(x, y);
             if (!gbuffer.covered(i)) {
                 EXPECT_EQ(truth.visibility[i], -1.0f);
-                continue;
-            }
-            if (gbuffer.objectId[i] == 2) {  // the square's top: nothing above it
+            } else if (gbuffer.objectId[i] == 2) {  // the square's top: nothing above it
                 EXPECT_EQ(truth.visibility[i], 1.0f) << "square pixel (" << x << ", " << y << ")";
-                continue;
             }
-            // Skip pixels within a pixel of the outline: a neighbour on the other side of it (or on the
-            // square).
-            const bool expected = inSquareShadow(gbuffer.position[i]);
-            bool nearOutline = false;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const size_t j = gbuffer.index(x + dx, y + dy);
-                    nearOutline = nearOutline || gbuffer.objectId[j] != 1 ||
-                                  inSquareShadow(gbuffer.position[j]) != expected;
-                }
-            if (nearOutline) continue;
-            ++compared;
-            shadowed += expected;
-            const bool rayShadowed = truth.visibility[i] == 0.0f;
-            if (rayShadowed != expected && ++wrong <= 5)
-                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << gbuffer.position[i].x << ", "
-                              << gbuffer.position[i].z << "): ray cast says "
-                              << (rayShadowed ? "shadow" : "lit");
         }
     }
-    EXPECT_EQ(wrong, 0u) << "of " << compared;
-    EXPECT_GT(shadowed, 100u) << "the square's shadow (partly hidden behind the square) should be visible";
-    EXPECT_GT(compared - shadowed, 1000u);
+    const PlaneComparison plane = compareThePlane(truth, inSquareShadow);
+    EXPECT_EQ(plane.wrong, 0u) << "of " << plane.compared;
+    EXPECT_GT(plane.shadowed, 100u)
+        << "the square's shadow (partly hidden behind the square) should be visible";
+    EXPECT_GT(plane.compared - plane.shadowed, 1000u);
 }
 
 // A light 45 degrees up moves the square's shadow off its footprint; the rays' start, however far off the
@@ -145,32 +158,10 @@ TEST_F(GroundTruthSquare, TheRaysStartLeavesASlantedShadowsOutlineWhereItIs) {
     runtime::GroundTruthOptions options;
     options.normalOffset = 5e-2f;
     const runtime::GroundTruth truth = runtime::ShadowRayCaster(scene).compute(gbuffer, light, options);
-    size_t compared = 0, shadowed = 0, wrong = 0;
-    for (int y = 1; y + 1 < kHeight; ++y) {
-        for (int x = 1; x + 1 < kWidth; ++x) {
-            const size_t i = gbuffer.index(x, y);
-            if (gbuffer.objectId[i] != 1) continue;
-            const bool expected = inSlantedShadow(gbuffer.position[i]);
-            bool nearOutline = false;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const size_t j = gbuffer.index(x + dx, y + dy);
-                    nearOutline = nearOutline || gbuffer.objectId[j] != 1 ||
-                                  inSlantedShadow(gbuffer.position[j]) != expected;
-                }
-            if (nearOutline) continue;
-            ++compared;
-            shadowed += expected;
-            const bool rayShadowed = truth.visibility[i] == 0.0f;
-            if (rayShadowed != expected && ++wrong <= 5)
-                ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << gbuffer.position[i].x << ", "
-                              << gbuffer.position[i].z << "): ray cast says "
-                              << (rayShadowed ? "shadow" : "lit");
-        }
-    }
-    EXPECT_EQ(wrong, 0u) << "of " << compared;
-    EXPECT_GT(shadowed, 100u);
-    EXPECT_GT(compared - shadowed, 1000u);
+    const PlaneComparison plane = compareThePlane(truth, inSlantedShadow);
+    EXPECT_EQ(plane.wrong, 0u) << "of " << plane.compared;
+    EXPECT_GT(plane.shadowed, 100u);
+    EXPECT_GT(plane.compared - plane.shadowed, 1000u);
 }
 
 TEST_F(GroundTruthSquare, AreaLightGivesUmbraPenumbraAndRecordsItsSamples) {
