@@ -170,8 +170,9 @@ private:
             if (pass.readParameters[i] >= mParameters ||
                 (i > 0 && pass.readParameters[i] <= pass.readParameters[i - 1]))
                 return inPass(DiagId::CompiledEffectPassReadsOutOfRange);
-        // One image unit per image parameter of the pass, below their count: the runtime binds each
-        // parameter's image at its unit.
+        // One image unit per image parameter of the pass, below the effect's parameter count (a bound on
+        // the pass's image parameters; a unit is only ever handed to GL): the runtime binds each parameter's
+        // image at its unit.
         std::vector<std::pair<size_t, int>> imageUnits;
         for (const StageProgram* stage :
              {&pass.vertex, &pass.fragment, &pass.geometry, &pass.hull, &pass.domain, &pass.compute}) {

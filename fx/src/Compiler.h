@@ -22,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,7 @@ private:
     // its stages' GLSL (layout(binding)) so that the runtime sets no unit by name.
     void assignPairUnits();
     void assignImageUnits();
+    void unboundResource(const std::string& name);
     // Each pass's CompiledPass::readParameters, once its units and sampler states are known.
     void passReads();
     void scripts();
@@ -173,6 +175,7 @@ private:
     std::unique_ptr<CompiledEffect> mOut;
     std::map<std::string, size_t> mIndex;  // parameter name -> index
     std::map<std::string, int> mSamplerUnits;
+    std::set<std::string> mUnboundResources;  // reported by unboundResource()
     // Storage-block parameters' binding points, and their counters' (storageBindings()).
     std::map<std::string, int> mStorageBindings;
     std::map<std::string, int> mCounterBindings;

@@ -115,6 +115,23 @@ bool isElementWiseAggregate(TOperator op) {
     return op == glslang::EOpMin || op == glslang::EOpMax || op == glslang::EOpClamp || op == glslang::EOpMix;
 }
 
+// Whether `expression` reads the variable that `assigned` (a variable, or an element or member of one)
+// writes: true where the variable cannot be told, so that the caller evaluates the expression once, first.
+bool readsAssignedVariable(TIntermTyped* expression, TIntermTyped* assigned) {
+    TIntermTyped* base = assigned;
+    while (TIntermBinary* access = base->getAsBinaryNode()) base = access->getLeft();
+    const glslang::TIntermSymbol* variable = base->getAsSymbolNode();
+    if (!variable) return true;
+    struct Reads : glslang::TIntermTraverser {
+        long long id = 0;
+        bool found = false;
+        void visitSymbol(glslang::TIntermSymbol* symbol) override { found = found || symbol->getId() == id; }
+    } reads;
+    reads.id = variable->getId();
+    expression->traverse(&reads);
+    return reads.found;
+}
+
 class IntegerMatrixSplitter : public glslang::TIntermTraverser {
 public:
     IntegerMatrixSplitter(glslang::TIntermediate& intermediate, long long unusedSymbolId)
@@ -158,6 +175,9 @@ public:
                 return true;
             }
             std::vector<TIntermTyped*> evaluations;
+            // HLSL evaluates the right side before it writes: one that reads the matrix would see the rows
+            // written before its own (m *= m._11).
+            if (readsAssignedVariable(right, left)) right = evaluatedOnce(right, evaluations);
             const std::vector<TIntermTyped*> rightRows = rowsOf(right, left->getType(), evaluations);
             TIntermTyped* sequence = nullptr;
             for (size_t i = 0; i < rightRows.size(); ++i) {
@@ -421,6 +441,10 @@ private:
         std::vector<TIntermTyped*> rows;
         if (operands.size() == 1 && operands[0]->getAsTyped()->getType().isMatrix()) {
             TIntermTyped* source = operands[0]->getAsTyped();
+            if (source->getType().getMatrixCols() < rowCount || source->getType().getMatrixRows() < columns) {
+                errorAt(node, "a matrix made from a smaller matrix");  // fxc refuses it too (X3017)
+                return;
+            }
             std::vector<TIntermTyped*> evaluations;
             const std::vector<TIntermTyped*> sourceRows = rowsOf(source, source->getType(), evaluations);
             for (int i = 0; i < rowCount; ++i) {

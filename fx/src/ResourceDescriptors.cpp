@@ -535,6 +535,15 @@ void Compiler::imageFormats() {
                 }
 }
 
+// A resource the GLSL declares under another name than the effect's: its unit cannot be written into the
+// GLSL, and a unit glslang chose would bind another resource there. Reported once, at the parameter.
+void Compiler::unboundResource(const std::string& name) {
+    if (!mUnboundResources.insert(name).second) return;
+    const auto at = mIndex.find(name);
+    error(DiagId::ResourceRenamedInGlsl, at != mIndex.end() ? mOut->parameters[at->second].loc : SourceLoc{},
+          {name});
+}
+
 // D3D10 (texture, sampler) pairs and Buffer<T>s: units after the D3D9 samplers', one per pair a pass
 // samples (the same in every stage, so that they link to one GL sampler unit).
 void Compiler::assignPairUnits() {
@@ -548,7 +557,7 @@ void Compiler::assignPairUnits() {
                     if (!s.pairTexture.empty()) {
                         s.unit = units.try_emplace(s.glslName, first + static_cast<int>(units.size()))
                                      .first->second;
-                        declareBinding(stage->glsl, s.glslName, s.unit);
+                        if (!declareBinding(stage->glsl, s.glslName, s.unit)) unboundResource(s.glslName);
                     }
         }
 }
@@ -556,7 +565,7 @@ void Compiler::assignPairUnits() {
 // Images (RWTexture1D/2D/3D/2DArray, RWBuffer): the pass's image parameters in ascending order take units
 // 0, 1, ..., a parameter the same in every stage. A texture function's fill pass numbers its own.
 void Compiler::assignImageUnits() {
-    const auto assign = [](CompiledPass& pass) {
+    const auto assign = [this](CompiledPass& pass) {
         const std::array<StageProgram*, 6> stages = {&pass.vertex,   &pass.hull,     &pass.domain,
                                                      &pass.geometry, &pass.fragment, &pass.compute};
         std::vector<size_t> parameters;
@@ -569,7 +578,7 @@ void Compiler::assignImageUnits() {
                 image.unit =
                     static_cast<int>(std::lower_bound(parameters.begin(), parameters.end(), image.parameter) -
                                      parameters.begin());
-                declareBinding(stage->glsl, image.glslName, image.unit);
+                if (!declareBinding(stage->glsl, image.glslName, image.unit)) unboundResource(image.glslName);
             }
     };
     for (CompiledTechnique& technique : mOut->techniques)

@@ -557,7 +557,7 @@ bool spirvToGlsl(const std::vector<uint32_t>& glslangSpirv, ShaderStage stage, c
     }
 }
 
-void declareBinding(std::string& glsl, std::string_view name, int binding) {
+bool declareBinding(std::string& glsl, std::string_view name, int binding) {
     const std::string qualifier = "binding = " + std::to_string(binding);
     for (size_t start = 0; start < glsl.size();) {
         size_t end = glsl.find('\n', start);
@@ -575,23 +575,24 @@ void declareBinding(std::string& glsl, std::string_view name, int binding) {
             if (declared == name) {
                 if (line.rfind("layout(", 0) != 0) {
                     glsl.insert(start, "layout(" + qualifier + ") ");
-                    return;
+                    return true;
                 }
                 const size_t close = line.find(')');
                 const std::string_view inside = line.substr(7, close - 7);
                 const size_t at = inside.find("binding = ");
                 if (at == std::string_view::npos) {
                     glsl.insert(start + 7, qualifier + ", ");
-                    return;
+                    return true;
                 }
                 size_t digits = at + 10;
                 while (digits < inside.size() && inside[digits] >= '0' && inside[digits] <= '9') ++digits;
                 glsl.replace(start + 7 + at, digits - at, qualifier);
-                return;
+                return true;
             }
         }
         start = end + 1;
     }
+    return false;
 }
 
 void declareDualSourceOutput(std::string& fragmentGlsl) {

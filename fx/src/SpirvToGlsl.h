@@ -42,7 +42,8 @@ void declareDualSourceOutput(std::string& fragmentGlsl);
 // Declares the uniform `name` (a sampler or image SPIRV-Cross declared, on a line of its own) at `binding`
 // in `glsl`: a binding glslang gave it is replaced, other layout qualifiers (an image's format) kept. For
 // the units the effect compiler assigns once every stage of a pass is known (D3D10 pairs, images), so that
-// the runtime finds no uniform by name. A stage that does not declare `name` is left as it is.
-void declareBinding(std::string& glsl, std::string_view name, int binding);
+// the runtime finds no uniform by name. False where `glsl` declares no uniform `name` (SPIRV-Cross renames a
+// name GLSL reserves, `output`, or one with "__"): the stage is left as it is.
+bool declareBinding(std::string& glsl, std::string_view name, int binding);
 
 }  // namespace fx

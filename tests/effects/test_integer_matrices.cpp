@@ -77,6 +77,8 @@ std::array<uint32_t, kWordsPerThread> threadWords(uint32_t i) {
     const Int2x3 n = elementWise(a, [&](int32_t v, int r, int c) { return negative[r][c] ? -v : ~v; });
     Uint2x4 m = {kRotations[i & 1][i % 4], kRotations[(i + 1) & 1][(i >> 2) % 4]};
     m = elementWise(m, [&](uint32_t v, int, int) { return (v ^ (v << (i % 7))) + 3; });
+    const uint32_t first = m[0][0];  // HLSL reads m._m00 once, before it writes a row
+    m = elementWise(m, [&](uint32_t v, int, int) { return v ^ first; });
     const Uint2x3 s = elementWise(e, [](int32_t v, int, int) { return v >= 0 ? 0u : 1u; });
     const Uint2x3 c = elementWise(a, [&](int32_t v, int r, int col) {
         const uint32_t u = bits(v);

@@ -376,6 +376,8 @@ TEST(HlslLegalization, IntegerMatrixOperationsThatCannotBeSplitAreLocatedErrors)
     for (const Case& c : {
              Case{"RWByteAddressBuffer Words;", "Words.Store(0, transpose(int2x2(i, 1, 2, 3))[0].y);",
                   DiagId::HlslError, 48, "transpose() of an integer or bool matrix is not supported"},
+             Case{"RWByteAddressBuffer Words;", "Words.Store(0, ((int3x3)int2x2(i, 1, 2, 3))[2].z);",
+                  DiagId::HlslError, 0, "a matrix made from a smaller matrix is not supported"},
              Case{"struct E { uint2x2 m; }; RWStructuredBuffer<E> Words;",
                   "Words[i].m = uint2x2(i, 2, 3, 4);", DiagId::CrossCompileError, 0,
                   "an integer or bool matrix in a structured buffer's element"},

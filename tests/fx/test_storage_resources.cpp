@@ -221,6 +221,24 @@ std::string declarationOf(const std::string& glsl, const std::string& name) {
     return "";
 }
 
+// A resource whose name GLSL reserves is declared under another name by SPIRV-Cross ('_output'): its unit
+// cannot be written into the GLSL, and the unit glslang numbered would bind another resource there, so the
+// compile fails at the parameter instead.
+TEST(StorageResourceAnnotations, AResourceGlslRenamesIsALocatedCompileError) {
+    const std::string kernel = R"(
+[numthreads(1, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { output[id.xy] = 1; }
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, Fill())); } }
+)";
+    const std::string error =
+        compileError("\nRWTexture2D<float4> output;" + kernel, DiagId::ResourceRenamedInGlsl);
+    EXPECT_EQ(error.rfind("storage.fx:2:21: error: 'output' is a name GLSL reserves", 0), 0u) << error;
+    DiagnosticList diagnostics;
+    EXPECT_TRUE(compile(
+        "\nRWTexture2D<float4> produced;" + std::string(kernel).replace(kernel.find("output"), 6, "produced"),
+        diagnostics))
+        << diagnostics.str();
+}
+
 // A pass's images take units in the order of their parameters, the same in every stage that declares one,
 // and the GLSL declares each at its unit: the runtime binds them there and sets no unit by name. (glslang
 // numbers the texture, the images and the buffer together, 1 and 3 for the images: the units replace its.)

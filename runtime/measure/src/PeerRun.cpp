@@ -20,7 +20,8 @@ std::string shellQuoted(const std::string& text) {
     return quoted + "'";
 }
 
-std::string safeName(std::string text) {
+// Letters, digits, - and _ kept, anything else _ (GoldenImages.h's safeName also keeps .).
+std::string peerFileName(std::string text) {
     for (char& c : text)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
     return text;
@@ -66,7 +67,7 @@ std::optional<PeerResult> runPeerProgram(const PeerRequest& request, const std::
                                          const std::string& label, int height,
                                          const std::filesystem::path& workDir, std::string& error) {
     const std::string base =
-        safeName(request.technique + "_" + label + "_" + std::to_string(request.mapSize));
+        peerFileName(request.technique + "_" + label + "_" + std::to_string(request.mapSize));
     const std::filesystem::path frame = workDir / (base + ".pgm");
     const std::filesystem::path json = workDir / (base + ".json");
     const std::filesystem::path log = workDir / (base + ".log");

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------------------
 // Integer and bool matrices as texture-compression compute shaders use them: int2x3 endpoints quantized
 // by element-wise shifts, comparisons and selects through an inout parameter, bool2x3 masks, uint2x4
-// rows from a static table of uint4x4 (its rows in braces), bit operations, compound assignments,
+// rows from a static table of uint4x4 (its rows in braces), bit operations, compound assignments (one whose right side reads the matrix),
 // abs/min/max/clamp, any/all, conversions, rows and elements indexed by constants and by variables, an
 // int2x3 parameter in the $Global block, and |=, &=, ^= on a bool. Each of 64 threads writes eight words into a RWByteAddressBuffer; a
 // pixel shader shows word k as the bytes of pixel (k % 128, k / 128). test_integer_matrices computes the
@@ -47,6 +47,7 @@ void Compute(uint i : SV_GroupIndex)
     uint2x4 m = uint2x4(Rotations[i & 1][i % 4], Rotations[(i + 1) & 1][(i >> 2) % 4]);
     m = m ^ (m << (i % 7));
     m += 3;
+    m ^= m._m00;  // the right side read before any row is written
     const uint2x3 s = e >= 0 ? 0 : 1;
     const uint2x3 c = clamp((uint2x3)a, 2, 40) + (min(s, 1) << 4) + max((uint2x3)a, 9);
     const int2x3 mirrored = Mirrored(e);

@@ -83,6 +83,10 @@ FX_DIAGNOSTIC(ElementCountInvalid, Error,
               "ElementCount of '{0}' is {1}; a storage buffer holds 1 to 268435456 elements")
 FX_DIAGNOSTIC(ViewOfUnknownResource, Error,
               "'{0}' is a view of '{1}', which is no buffer or read-write texture parameter of the effect")
+FX_DIAGNOSTIC(
+    ResourceRenamedInGlsl, Error,
+    "'{0}' is a name GLSL reserves or changes (a keyword such as 'output', or '__' in it), so its unit "
+    "cannot be declared in the generated GLSL: rename the resource")
 FX_DIAGNOSTIC(ImageFormatUnsupported, Error,
               "'{0}' ({1}) is an image of format '{2}'; shadowfx makes float and unorm images (float1, 2, 4 "
               "elements, unorm4)")
