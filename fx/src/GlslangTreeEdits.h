@@ -12,6 +12,11 @@ namespace fx::detail {
 // gives no way to change (a loop's step expression) or holds no `from`.
 bool replaceChild(TIntermNode* parent, glslang::TIntermTyped* from, glslang::TIntermTyped* to);
 
+// Whether replaceChild(parent, from, ...) would succeed: asked before an edit that changes `from` itself.
+inline bool canReplaceChild(TIntermNode* parent, glslang::TIntermTyped* from) {
+    return replaceChild(parent, from, from);  // `from` in its own place: nothing changes
+}
+
 // Symbols and constants combined by indexing, member selection, swizzles, arithmetic and constructors:
 // evaluating it again reads the same value and changes nothing.
 bool isSideEffectFree(const TIntermNode* node);

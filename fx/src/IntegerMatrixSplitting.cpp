@@ -3,6 +3,7 @@
 
 #include "GlslangTreeEdits.h"
 
+#include <algorithm>
 #include <string>
 
 namespace fx::detail {
@@ -362,7 +363,11 @@ private:
         if (TIntermAggregate* built = operand->getAsAggregate();
             built && built->isConstructor() && operand->getType().isMatrix() &&
             static_cast<int>(built->getSequence().size()) == count &&
-            built->getSequence()[0]->getAsTyped()->getType().isVector()) {
+            std::all_of(built->getSequence().begin(), built->getSequence().end(), [&](TIntermNode* row) {
+                const TType& type = row->getAsTyped()->getType();  // a whole row, not vectors of mixed sizes
+                return type.isVector() && type.getVectorSize() == operand->getType().getMatrixRows() &&
+                       type.getBasicType() == operand->getBasicType();
+            })) {
             for (TIntermNode* row : built->getSequence()) rows.push_back(row->getAsTyped());
             return rows;
         }

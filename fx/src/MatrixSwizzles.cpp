@@ -245,7 +245,9 @@ private:
     // Every argument of `call` that is written and is a swizzle of several matrix elements (or a chain of
     // vector swizzles and constant indices on one) passed through a temporary, as writeElements says.
     bool passElements(glslang::TIntermAggregate* call, TIntermNode* aboveCall) {
-        if (!aboveCall) return false;
+        // The operands below are replaced by temporaries whose copies back follow the call: a call that
+        // cannot be replaced by that sequence (a loop's step) must keep its operands.
+        if (!canReplaceChild(aboveCall, call)) return false;
         const glslang::TSourceLoc& at = call->getLoc();
         glslang::TIntermSequence& operands = call->getSequence();
         std::vector<glslang::TIntermTyped*> before, after;

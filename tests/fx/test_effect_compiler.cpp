@@ -1,17 +1,19 @@
 // End-to-end: effect text -> parser -> EffectCompiler -> GLSL + reflection; every GLSL program is also
 // compiled by glslang as GLSL 4.50 (a GL-free sanity check).
+#include "Glsl450.h"
+
 #include <fx/CompileCache.h>
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 namespace fx::test_effect_compiler {
 namespace {
+
+using test::compilesAsGlsl450;
 
 // The FX Composer listing of Lehőcz 2007 (page breaks repaired), with a hardware-shadow depth sampler added.
 const char* kThesis = R"(float Script : STANDARDSGLOBAL <
@@ -113,20 +115,6 @@ std::unique_ptr<CompiledEffect> compile(const std::string& source, DiagnosticLis
     CompileOptions options;
     options.cache = cache;
     return compileEffect(effect, options, diags);
-}
-
-::testing::AssertionResult compilesAsGlsl450(const StageProgram& p) {
-    glslang::InitializeProcess();
-    EShLanguage lang = p.stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-    glslang::TShader shader(lang);
-    const char* text = p.glsl.c_str();
-    shader.setStrings(&text, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 450);
-    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-    shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
-    if (shader.parse(GetDefaultResources(), 450, ECoreProfile, true, false, EShMsgDefault))
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << shader.getInfoLog() << "\n" << p.glsl;
 }
 
 const UniformBinding* findUniform(const StageProgram& p, const std::string& name) {

@@ -1,6 +1,8 @@
 // HlslLegalization: fxc's HLSL that glslang refuses, rewritten on the lexer's tokens before glslang reads
 // it; each rewrite checked in the text glslang gets and through glslang itself (the frames: the effects
 // tests' FxcFrontEnd.ImplicitConversions).
+#include "Glsl450.h"
+
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 
@@ -363,6 +365,26 @@ technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, CS())); } }
     EXPECT_NE(glsl.find("ivec3 Offsets[2];"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("imat"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("bmat"), std::string::npos) << glsl;
+}
+
+// A matrix built from vectors that are not its rows (a float2x3 from a float4 and a float2) is compared
+// element by element from its elements, not from those vectors taken as rows (which wrote invalid SPIR-V).
+TEST(HlslLegalization, AMatrixBuiltFromVectorsOfOtherSizesComparesByElement) {
+    DiagnosticList diags;
+    auto effect = parse(R"(float2x3 M;
+float4 PS(float2 uv : TEXCOORD0) : COLOR {
+    const bool2x3 equal = float2x3(float4(uv, 1, 2), float2(3, 4)) == M;
+    return equal[1].z ? 1 : 0;
+}
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    DiagnosticList compileDiags;
+    const std::unique_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, compileDiags);
+    ASSERT_TRUE(compiled) << compileDiags.str();
+    EXPECT_TRUE(test::compilesAsGlsl450(compiled->techniques[0].passes[0].fragment));
 }
 
 TEST(HlslLegalization, IntegerMatrixOperationsThatCannotBeSplitAreLocatedErrors) {

@@ -1,16 +1,18 @@
 // The instanced variant of a compiled pass (fx/InstancedPass.h): per-object members move from the
 // uniform blocks into the object record, read by the instance's object index in both stages; the variant
 // is valid GLSL 4.50; a pass it cannot express is refused, never rewritten half-way.
+#include "Glsl450.h"
+
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <fx/InstancedPass.h>
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
 #include <gtest/gtest.h>
 
 namespace fx::test_instanced_pass {
 namespace {
+
+using test::compilesAsGlsl450;
 
 const char* kEffect = R"(
 float4x4 WorldViewProjection : WorldViewProjection;
@@ -62,20 +64,6 @@ std::vector<bool> flags(const CompiledEffect& effect, std::initializer_list<cons
     for (size_t i = 0; i < effect.parameters.size(); ++i)
         for (const char* name : names) out[i] = out[i] || effect.parameters[i].name == name;
     return out;
-}
-
-::testing::AssertionResult compilesAsGlsl450(const StageProgram& p) {
-    glslang::InitializeProcess();
-    EShLanguage lang = p.stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-    glslang::TShader shader(lang);
-    const char* text = p.glsl.c_str();
-    shader.setStrings(&text, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 450);
-    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-    shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
-    if (shader.parse(GetDefaultResources(), 450, ECoreProfile, true, false, EShMsgDefault))
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << shader.getInfoLog() << "\n" << p.glsl;
 }
 
 const UniformBinding* findMember(const std::vector<UniformBinding>& members, const std::string& name) {
