@@ -332,19 +332,19 @@ void Compiler::applySamplerState(const StateAssignment& a, BaseType samplerType,
         }
         return;
     }
-    std::vector<float> value;
-    if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
-        auto e = findEnumValue(info.domain, a.value.text);
-        if (!e) {
-            error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
-            return;
+    // Empty where the value is in error (reported).
+    const std::vector<float> value = [&]() -> std::vector<float> {
+        if (a.value.kind == Expr::Kind::Identifier && !mIndex.count(a.value.text)) {
+            auto e = findEnumValue(info.domain, a.value.text);
+            if (!e) {
+                error(DiagId::UnknownStateValue, a.value.loc, {a.value.text, a.name, ""});
+                return {};
+            }
+            return {static_cast<float>(*e)};
         }
-        value = {static_cast<float>(*e)};
-    } else if (auto v = eval(a.value, nullptr)) {
-        value = v->data;
-    } else {
-        return;
-    }
+        if (auto v = eval(a.value, nullptr)) return v->data;
+        return {};
+    }();
     if (value.empty()) return;
     int n = static_cast<int>(value[0]);
     switch (*id) {
