@@ -114,10 +114,12 @@ SourceLoc Compiler::userLocation(const HlslMessage& m, const LoweredStage& lower
 
 void Compiler::reportHlslMessages(const std::vector<HlslMessage>& messages, const LoweredStage& lowered) {
     // After glslang's first error its parser recovers with generic follow-ons at column 1 ("'declaration'
-    // : Expected", "'' : Could not perform requested binary operation") that only repeat the first one.
+    // : Expected", "'expression' : Expected", "'' : Could not perform requested binary operation") that
+    // only repeat the first one.
     bool hadError = false;
     auto isFollowOn = [](const std::string& text) {
         return text.rfind("'declaration' : Expected", 0) == 0 ||
+               text.rfind("'expression' : Expected", 0) == 0 ||
                text.rfind("'function call arguments' : Expected", 0) == 0 || text.rfind("'' : ", 0) == 0;
     };
     // mul()'s truncation of its vector is said once, as mul()'s.

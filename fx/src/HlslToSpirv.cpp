@@ -4,6 +4,8 @@
 #include "BoolCompoundAssignments.h"
 #include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
+#include "MulOperands.h"
+#include "PostfixOperands.h"
 
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -39,7 +41,7 @@ constexpr EShMessages kMessages = static_cast<EShMessages>(
 }  // namespace
 
 std::string hlslToSpirvOptionsKey() {
-    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes int-matrix-rows bool-assign msgs=" +
+    return "glslang-hlsl dx9 vulkan1.0 spv1.0 swizzle-writes int-matrix-rows bool-assign prefix-steps msgs=" +
            std::to_string(static_cast<int>(kMessages));
 }
 
@@ -138,6 +140,22 @@ public:
     }
 };
 
+// Parses `source` into `shader` (whose stage is set) with the settings every unit is compiled with.
+bool parseHlsl(glslang::TShader& shader, const std::string& source, const std::string& entryPoint) {
+    const EShLanguage language = shader.getStage();
+    const char* text = source.c_str();
+    shader.setStrings(&text, 1);
+    shader.setEntryPoint(entryPoint.c_str());
+    shader.setSourceEntryPoint(entryPoint.c_str());
+    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    // Bindings are assigned later by SpirvToGlsl; auto-mapping keeps Vulkan rules satisfied meanwhile.
+    shader.setAutoMapBindings(true);
+    shader.setAutoMapLocations(true);
+    return shader.parse(GetDefaultResources(), 100, false, kMessages);
+}
+
 }  // namespace
 
 HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stage,
@@ -150,19 +168,20 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
                            : stage == ShaderStage::Hull     ? EShLangTessControl
                            : stage == ShaderStage::Domain   ? EShLangTessEvaluation
                                                             : EShLangCompute;
+    // Text glslang's front end would crash on is refused or checked before it parses the real text.
+    result.messages = detail::mulCallsGlslangCannotCompile(source);
+    if (!result.messages.empty()) return result;
+    const detail::PostfixRewrite postfix = detail::rewritePostfixOperators(source);
+    if (postfix.checkText) {
+        glslang::TShader check(language);
+        if (!parseHlsl(check, *postfix.checkText, entryPoint)) {
+            result.log = check.getInfoLog();
+            result.messages = parseGlslangLog(result.log);
+            return result;
+        }
+    }
     glslang::TShader shader(language);
-    const char* text = source.c_str();
-    shader.setStrings(&text, 1);
-    shader.setEntryPoint(entryPoint.c_str());
-    shader.setSourceEntryPoint(entryPoint.c_str());
-    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    // Bindings are assigned later by SpirvToGlsl; auto-mapping keeps Vulkan rules satisfied meanwhile.
-    shader.setAutoMapBindings(true);
-    shader.setAutoMapLocations(true);
-
-    bool parsed = shader.parse(GetDefaultResources(), 100, false, kMessages);
+    bool parsed = parseHlsl(shader, postfix.text, entryPoint);
     std::vector<HlslMessage> syntaxTreeWarnings;
     result.log = shader.getInfoLog();
     if (parsed) {

@@ -1,0 +1,172 @@
+// PostfixOperands: see PostfixOperands.h.
+#include "PostfixOperands.h"
+
+#include "Lexer.h"
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+namespace fx::detail {
+
+namespace {
+
+// Words that end no operand: an operator written after them is a prefix one, a parenthesis after them
+// opens no call.
+bool isStatementKeyword(const Token& token) {
+    static const std::set<std::string> keywords = {"return",   "if",      "else", "while",   "for",
+                                                   "do",       "switch",  "case", "default", "break",
+                                                   "continue", "discard", "in",   "out",     "inout"};
+    return token.kind == Token::Kind::Identifier && keywords.count(token.text) != 0;
+}
+
+bool isOperandWord(const Token& token) {
+    return (token.kind == Token::Kind::Identifier && !isStatementKeyword(token)) ||
+           token.kind == Token::Kind::Number;
+}
+
+bool isIncrement(const Token& token) {
+    return token.kind == Token::Kind::Punct && (token.text == "++" || token.text == "--");
+}
+
+struct Brackets {
+    std::vector<long> match;      // the index of the bracket closing or opening this one, -1 otherwise
+    std::vector<long> enclosing;  // the index of the innermost bracket open at a token, -1 at the top
+};
+
+Brackets matchBrackets(const std::vector<Token>& tokens) {
+    Brackets brackets{std::vector<long>(tokens.size(), -1), std::vector<long>(tokens.size(), -1)};
+    std::vector<long> open;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+        const Token& token = tokens[i];
+        brackets.enclosing[i] = open.empty() ? -1 : open.back();
+        if (token.is("(") || token.is("[") || token.is("{")) {
+            open.push_back(static_cast<long>(i));
+        } else if (token.is(")") || token.is("]") || token.is("}")) {
+            const char* opening = token.is(")") ? "(" : token.is("]") ? "[" : "{";
+            if (open.empty() || !tokens[open.back()].is(opening)) continue;  // unbalanced: glslang reports it
+            brackets.match[i] = open.back();
+            brackets.match[open.back()] = static_cast<long>(i);
+            open.pop_back();
+            brackets.enclosing[i] = open.empty() ? -1 : open.back();
+        }
+    }
+    return brackets;
+}
+
+// The first token of the postfix expression that the postfix operator at `op` applies to (a name, literal,
+// constructor or parenthesized expression followed by members, indices, calls and postfix operators), or -1
+// where the text before `op` is no operand.
+long operandStart(const std::vector<Token>& tokens, const Brackets& brackets,
+                  const std::vector<bool>& postfix, long op) {
+    long j = op - 1;
+    while (j >= 0) {
+        const Token& token = tokens[j];
+        if (isIncrement(token) && postfix[j]) {
+            --j;
+        } else if (token.is("]")) {
+            j = brackets.match[j] - 1;
+            if (j < -1) return -1;
+        } else if (token.is(")")) {
+            const long open = brackets.match[j];
+            if (open < 0) return -1;
+            if (open == 0 || !isOperandWord(tokens[open - 1])) return open;  // a parenthesized expression
+            j = open - 1;                                                    // a call or a constructor
+        } else if (isOperandWord(token)) {
+            if (j >= 2 && (tokens[j - 1].is(".") || tokens[j - 1].is("::"))) {
+                j -= 2;
+            } else {
+                return j;
+            }
+        } else {
+            return -1;
+        }
+    }
+    return -1;
+}
+
+// Whether the value of the postfix expression from `start` to the operator at `op` is discarded: the
+// expression is a statement of its own, or a for loop's step.
+bool valueDiscarded(const std::vector<Token>& tokens, const Brackets& brackets, long start, long op) {
+    if (start == 0 || static_cast<size_t>(op + 1) >= tokens.size()) return false;
+    const Token& before = tokens[start - 1];
+    const Token& after = tokens[op + 1];
+    const long scope = brackets.enclosing[op];
+    if (scope > 0 && tokens[scope].is("(")) {
+        return tokens[scope - 1].is("for") && before.is(";") && brackets.match[scope] == op + 1;
+    }
+    if (!after.is(";")) return false;
+    if (before.is(";") || before.is("{") || before.is("}") || before.is("else") || before.is("do"))
+        return true;
+    if (!before.is(")")) return false;
+    const long header = brackets.match[start - 1];
+    return header > 0 &&
+           (tokens[header - 1].is("if") || tokens[header - 1].is("while") || tokens[header - 1].is("for"));
+}
+
+struct Edit {
+    size_t offset;
+    size_t erase;
+    std::string insert;
+};
+
+std::string applyEdits(const std::string& text, std::vector<Edit> edits) {
+    std::stable_sort(edits.begin(), edits.end(),
+                     [](const Edit& a, const Edit& b) { return a.offset < b.offset; });
+    std::string out;
+    size_t at = 0;
+    for (const Edit& edit : edits) {
+        out.append(text, at, edit.offset - at);
+        out += edit.insert;
+        at = edit.offset + edit.erase;
+    }
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
+}  // namespace
+
+PostfixRewrite rewritePostfixOperators(const std::string& text) {
+    if (text.find("++") == std::string::npos && text.find("--") == std::string::npos) return {text, {}};
+    SourceMap sourceMap;
+    DiagnosticList lexerMessages;  // the effect's own lexing reported these already
+    const std::vector<Token> tokens = lexEffect(text, "", {}, sourceMap, lexerMessages);
+    const Brackets brackets = matchBrackets(tokens);
+
+    // A `++` is postfix after an operand, unless an operand follows it (`if (c) ++x`).
+    std::vector<bool> postfix(tokens.size(), false);
+    for (size_t i = 1; i + 1 < tokens.size(); ++i) {
+        if (!isIncrement(tokens[i])) continue;
+        const Token& before = tokens[i - 1];
+        const Token& after = tokens[i + 1];
+        const bool afterOperand = isOperandWord(before) || before.is(")") || before.is("]") ||
+                                  (isIncrement(before) && postfix[i - 1]);
+        const bool beforeOperand = isOperandWord(after) || after.is("(");
+        postfix[i] = afterOperand && !beforeOperand;
+    }
+
+    std::vector<Edit> discarded, used;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+        if (!postfix[i]) continue;
+        const long op = static_cast<long>(i);
+        const long start = operandStart(tokens, brackets, postfix, op);
+        if (start < 0) continue;  // no operand: glslang reports the syntax error
+        // `x++;` -> ` ++x  ;`; `x++.y` -> ` (++x).y`, which increments what `x++` does (not `x.y`). The
+        // space keeps `a+x++` from becoming `a+++x`.
+        if (valueDiscarded(tokens, brackets, start, op)) {
+            discarded.push_back({tokens[start].begin, 0, " " + tokens[i].text});
+            discarded.push_back({tokens[i].begin, 2, "  "});
+        } else {
+            used.push_back({tokens[start].begin, 0, " (" + tokens[i].text});
+            used.push_back({tokens[i].begin, 2, ")"});
+        }
+    }
+    PostfixRewrite rewrite{applyEdits(text, discarded), {}};
+    if (!used.empty()) {
+        used.insert(used.end(), discarded.begin(), discarded.end());
+        rewrite.checkText = applyEdits(text, used);
+    }
+    return rewrite;
+}
+
+}  // namespace fx::detail
