@@ -37,10 +37,7 @@ seed() {  # seed TARGET: fills an empty corpus from the checked-in inputs
   [ -n "$(ls -A "$dir")" ] && return 0
   case "$1" in
     fuzz_effect_parser | fuzz_effect_compiler | fuzz_compile_workers)
-      # tests/data/glslang_crashes/ crash glslang: a finding for fuzz_effect_compiler on its first input.
-      local skip='^$'
-      [ "$1" = fuzz_effect_compiler ] && skip='^tests/data/glslang_crashes/'
-      find effects tests/data fuzz/seeds -name '*.fx' -o -name '*.fxh' | grep -v "$skip" | while read -r f; do
+      find effects tests/data fuzz/seeds -name '*.fx' -o -name '*.fxh' | while read -r f; do
         [ "$(stat -c %s "$f")" -le 65536 ] && cp "$f" "$dir/$(echo "$f" | tr / _)"
       done ;;
     fuzz_sas_script)  # the value of every Script annotation

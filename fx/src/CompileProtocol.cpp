@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -345,6 +346,10 @@ int serveCompileRequests(int fd, bool (*jobLeftNoFinding)()) {
     // For the tests of the time limit and of a worker killed mid-request only: a unit containing this
     // marker makes the worker hang instead of compiling.
     const char* hangMarker = std::getenv("SHADOWFX_COMPILE_WORKER_TEST_HANG");
+    // For the tests of a crash of the HLSL compiler only: a unit containing this marker makes the worker
+    // die of SIGSEGV, as glslang does on text it crashes on (the compiler refuses every such text it
+    // knows before glslang sees it, so no real one is left to test with).
+    const char* crashMarker = std::getenv("SHADOWFX_COMPILE_WORKER_TEST_CRASH");
     for (;;) {
         char header[kFrameHeaderBytes];
         if (!receiveAll(fd, header, sizeof header)) return 0;  // the compiler closed the stream: done
@@ -356,6 +361,8 @@ int serveCompileRequests(int fd, bool (*jobLeftNoFinding)()) {
         if (!job) return 2;
         if (hangMarker && *hangMarker && job->hlsl.find(hangMarker) != std::string::npos)
             for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+        if (crashMarker && *crashMarker && job->hlsl.find(crashMarker) != std::string::npos)
+            std::raise(SIGSEGV);
         std::string reply = frame(FrameKind::Reply, encodeOutcome(compileStageInProcess(*job)));
         if (jobLeftNoFinding && !jobLeftNoFinding()) return kWorkerSanitizerExitStatus;
         if (!sendAll(fd, reply.data(), reply.size())) return 2;

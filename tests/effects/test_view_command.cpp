@@ -1,6 +1,8 @@
 // `shadowfx view` in a real window: starts its own Xvfb on a free display, runs the viewer for a few
 // frames with --screenshot, and checks the image. Skipped where Xvfb is not installed
 // (scripts/install-deps.sh installs it, so CI runs it).
+#include "WorkerCrashHook.h"
+
 #include <gtest/gtest.h>
 
 #include <stb/stb_image.h>
@@ -161,9 +163,9 @@ std::string colourEffect(const std::string& body) {
 }
 const std::string kRed = colourEffect("    return float4(1, 0, 0, 1);");
 const std::string kGreen = colourEffect("    return float4(0, 1, 0, 1);");
-// The half-typed line glslang 12 crashes on (tests/data/glslang_crashes/normalize_postdecrement.fx).
-const std::string kCrashes =
-    colourEffect("    float3 Nn = normalize(IN.WorldNorm--);\n    return float4(Nn, 1);");
+// The worker dies of SIGSEGV on its pixel shader under the crash hook, as glslang does on text it crashes on.
+const std::string kCrashes = colourEffect(std::string("    float ") + shadowfx::test::kWorkerCrashMarker +
+                                          " = 1;\n    return float4(0, 0, 1, 1);");
 
 void saveLikeAnEditor(const fs::path& path, const std::string& text) {
     const fs::path temporary = path.string() + ".tmp~";
@@ -257,6 +259,7 @@ TEST(ViewCommand, ASaveThatCrashesTheHlslCompilerKeepsTheLastGoodEffectAndAFixRe
     ASSERT_TRUE(xvfbInstalled()) << "Xvfb is not installed (xvfb, which scripts/install-deps.sh installs)";
     XvfbServer server;
     ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+    const shadowfx::test::WorkerCrashHook hook;  // the viewers started below inherit it
     const fs::path dir = fs::temp_directory_path() / ("shadowfx_view_crash_" + std::to_string(getpid()));
     fs::create_directories(dir);
     const fs::path effect = dir / "edit.fx";

@@ -8,6 +8,7 @@
 
 #include "CompileProtocol.h"
 #include "ScratchDirectory.h"
+#include "WorkerCrashHook.h"
 #include "SpirvToGlsl.h"
 
 #include <gtest/gtest.h>
@@ -99,14 +100,15 @@ TEST(CompileWorkers, TheWorkerExecutableIsFound) {
     EXPECT_GE(workers.maxWorkers(), 1);
 }
 
-TEST(CompileWorkers, ACrashInGlslangIsALocatedErrorAtTheShaderFunction) {
+TEST(CompileWorkers, ACrashOfTheHlslCompilerIsALocatedErrorAtTheShaderFunction) {
+    const shadowfx::test::WorkerCrashHook hook;  // before the workers start: they read it once
     fx::CompileWorkers workers;
-    Compiled crashed = compileFile("tests/data/glslang_crashes/normalize_postdecrement.fx", &workers);
+    Compiled crashed = compileFile("tests/data/worker_crash.fx", &workers);
     EXPECT_EQ(crashed.effect, nullptr);
     ASSERT_EQ(crashed.diagnostics.errorCount(), 1u) << crashed.diagnostics.str();
     const fx::Diagnostic& d = crashed.diagnostics.items()[0];
     EXPECT_EQ(d.id, fx::DiagId::HlslCompilerCrashed);
-    EXPECT_EQ(d.loc.str(), "tests/data/glslang_crashes/normalize_postdecrement.fx:17:8");  // PS's name
+    EXPECT_EQ(d.loc.str(), "tests/data/worker_crash.fx:9:8");  // PS's name
     EXPECT_EQ(d.message, "the HLSL compiler crashed on this shader (signal 11)");
     EXPECT_GE(workers.replacedWorkers(), 1u);
 
@@ -254,38 +256,6 @@ TEST(CompileWorkers, AWorkerThatStopsOnASanitizerReportIsThatErrorNamingItsStatu
     EXPECT_EQ(d.message,
               "the HLSL compiler's worker process stopped on a sanitizer report (exit status 86); the "
               "report is on standard error");
-}
-
-// tests/data/glslang_crashes/: HLSL that crashes glslang. In-process each still kills the process (a
-// glslang that no longer crashes fails here, and the reproducer can go); through the workers each is an
-// error at its shader function.
-std::vector<std::string> glslangCrashes() {
-    std::vector<std::string> paths;
-    for (const auto& e : std::filesystem::directory_iterator(kSourceDir + "/tests/data/glslang_crashes"))
-        if (e.path().extension() == ".fx")
-            paths.push_back("tests/data/glslang_crashes/" + e.path().filename().string());
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
-
-TEST(GlslangCrashes, EachCrashesInProcessAndIsAnErrorThroughTheWorkers) {
-    const std::vector<std::string> paths = glslangCrashes();
-    ASSERT_FALSE(paths.empty());
-    fx::CompileWorkers workers(fx::CompileWorkerOptions{"", 2, 20000, 2048});
-    for (const std::string& path : paths) {
-        Compiled compiled = compileFile(path, &workers);
-        EXPECT_EQ(compiled.effect, nullptr) << path;
-        bool crashed = false;
-        for (const fx::Diagnostic& d : compiled.diagnostics.items())
-            crashed = crashed || (d.id == fx::DiagId::HlslCompilerCrashed && d.loc.valid());
-        EXPECT_TRUE(crashed) << path << "\n" << compiled.diagnostics.str();
-    }
-    GTEST_FLAG_SET(death_test_style, "threadsafe");
-    for (const std::string& path : paths)
-        EXPECT_EXIT(
-            compileFile(path, nullptr, fx::CompileIsolation::InProcess);
-            std::exit(0), [](int status) { return !WIFEXITED(status) || WEXITSTATUS(status) != 0; }, "")
-            << path << " no longer crashes glslang in-process";
 }
 
 TEST(CompileProtocol, JobsAndOutcomesSurviveTheRoundTrip) {
