@@ -172,6 +172,8 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
     result.messages = detail::mulCallsGlslangCannotCompile(source);
     if (!result.messages.empty()) return result;
     const detail::PostfixRewrite postfix = detail::rewritePostfixOperators(source);
+    result.messages = postfix.errors;
+    if (!result.messages.empty()) return result;
     if (postfix.checkText) {
         glslang::TShader check(language);
         if (!parseHlsl(check, *postfix.checkText, entryPoint)) {

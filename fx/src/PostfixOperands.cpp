@@ -4,6 +4,7 @@
 #include "Lexer.h"
 
 #include <algorithm>
+#include <regex>
 #include <set>
 #include <vector>
 
@@ -14,16 +15,44 @@ namespace {
 // Words that end no operand: an operator written after them is a prefix one, a parenthesis after them
 // opens no call.
 bool isStatementKeyword(const Token& token) {
-    static const std::set<std::string> keywords = {"return",   "if",      "else", "while",   "for",
-                                                   "do",       "switch",  "case", "default", "break",
-                                                   "continue", "discard", "in",   "out",     "inout"};
+    static const std::set<std::string> keywords = {"return",  "if",    "else",     "while",
+                                                   "for",     "do",    "switch",   "case",
+                                                   "default", "break", "continue", "discard"};
     return token.kind == Token::Kind::Identifier && keywords.count(token.text) != 0;
 }
 
+// A name, number or string literal: what a postfix operator after it applies to.
 bool isOperandWord(const Token& token) {
     return (token.kind == Token::Kind::Identifier && !isStatementKeyword(token)) ||
-           token.kind == Token::Kind::Number;
+           token.kind == Token::Kind::Number || token.kind == Token::Kind::String;
 }
+
+// HLSL's scalar, vector and matrix type names, `vector` and `matrix`, and the names `struct` and
+// `typedef` declare in the text: what a cast `(T)` names.
+class TypeNames {
+public:
+    explicit TypeNames(const std::vector<Token>& tokens) {
+        for (size_t i = 0; i + 1 < tokens.size(); ++i) {
+            if (tokens[i].is("struct") && tokens[i + 1].kind == Token::Kind::Identifier)
+                mDeclared.insert(tokens[i + 1].text);
+            if (!tokens[i].is("typedef")) continue;
+            size_t end = i + 1;
+            while (end < tokens.size() && !tokens[end].is(";") && !tokens[end].is("[")) ++end;
+            if (end > i + 1 && tokens[end - 1].kind == Token::Kind::Identifier)
+                mDeclared.insert(tokens[end - 1].text);
+        }
+    }
+    bool contains(const Token& token) const {
+        static const std::regex builtin(
+            "(float|half|double|int|uint|bool|dword|min16float|min10float|min16int|min12int|min16uint)"
+            "([1-4](x[1-4])?)?|vector|matrix");
+        return token.kind == Token::Kind::Identifier &&
+               (mDeclared.count(token.text) || std::regex_match(token.text, builtin));
+    }
+
+private:
+    std::set<std::string> mDeclared;
+};
 
 bool isIncrement(const Token& token) {
     return token.kind == Token::Kind::Punct && (token.text == "++" || token.text == "--");
@@ -70,8 +99,16 @@ long operandStart(const std::vector<Token>& tokens, const Brackets& brackets,
         } else if (token.is(")")) {
             const long open = brackets.match[j];
             if (open < 0) return -1;
-            if (open == 0 || !isOperandWord(tokens[open - 1])) return open;  // a parenthesized expression
-            j = open - 1;                                                    // a call or a constructor
+            if (open > 0 && tokens[open - 1].is(">")) {  // a template type's constructor: vector<bool, 4>(q)
+                long angle = open - 2;
+                while (angle >= 0 && !tokens[angle].is("<")) --angle;
+                if (angle < 1) return -1;
+                j = angle - 1;
+            } else if (open > 0 && isOperandWord(tokens[open - 1])) {
+                j = open - 1;  // a call or a constructor
+            } else {
+                return open;  // a parenthesized expression
+            }
         } else if (isOperandWord(token)) {
             if (j >= 2 && (tokens[j - 1].is(".") || tokens[j - 1].is("::"))) {
                 j -= 2;
@@ -127,30 +164,61 @@ std::string applyEdits(const std::string& text, std::vector<Edit> edits) {
 }  // namespace
 
 PostfixRewrite rewritePostfixOperators(const std::string& text) {
-    if (text.find("++") == std::string::npos && text.find("--") == std::string::npos) return {text, {}};
+    if (text.find("++") == std::string::npos && text.find("--") == std::string::npos) return {text, {}, {}};
     SourceMap sourceMap;
     DiagnosticList lexerMessages;  // the effect's own lexing reported these already
     const std::vector<Token> tokens = lexEffect(text, "", {}, sourceMap, lexerMessages);
     const Brackets brackets = matchBrackets(tokens);
 
-    // A `++` is postfix after an operand, unless an operand follows it (`if (c) ++x`).
+    // Which `++` glslang reads as postfix: every one after an operand (whatever follows it), except after
+    // the `)` of a statement's header (`if (c) ++x`) or of a cast (`(float)++x`) and after an attribute's
+    // `]` (`[unroll] ++i`).
+    const TypeNames typeNames(tokens);
+    const auto isCast = [&](long open, long close) {
+        if (close - open < 2 || !typeNames.contains(tokens[open + 1])) return false;
+        for (long k = open + 2; k < close; ++k)
+            if (!(tokens[k].is("<") || tokens[k].is(">") || tokens[k].is(",") || tokens[k].is("[") ||
+                  tokens[k].is("]") || tokens[k].kind == Token::Kind::Number ||
+                  typeNames.contains(tokens[k])))
+                return false;
+        return true;
+    };
     std::vector<bool> postfix(tokens.size(), false);
-    for (size_t i = 1; i + 1 < tokens.size(); ++i) {
+    for (size_t i = 1; i < tokens.size(); ++i) {
         if (!isIncrement(tokens[i])) continue;
         const Token& before = tokens[i - 1];
-        const Token& after = tokens[i + 1];
-        const bool afterOperand = isOperandWord(before) || before.is(")") || before.is("]") ||
-                                  (isIncrement(before) && postfix[i - 1]);
-        const bool beforeOperand = isOperandWord(after) || after.is("(");
-        postfix[i] = afterOperand && !beforeOperand;
+        const long open = brackets.match[i - 1];
+        if (isOperandWord(before)) {
+            postfix[i] = true;
+        } else if (isIncrement(before)) {
+            postfix[i] = postfix[i - 1];
+        } else if (before.is(")")) {
+            const bool header = open > 0 && (tokens[open - 1].is("if") || tokens[open - 1].is("while") ||
+                                             tokens[open - 1].is("for") || tokens[open - 1].is("switch"));
+            const bool callOrConstructor =
+                open > 0 && (isOperandWord(tokens[open - 1]) || tokens[open - 1].is(">"));
+            postfix[i] = open < 0 || callOrConstructor || !(header || isCast(open, static_cast<long>(i) - 1));
+        } else if (before.is("]")) {
+            const bool attribute =
+                open == 0 || (open > 0 && (tokens[open - 1].is(";") || tokens[open - 1].is("{") ||
+                                           tokens[open - 1].is("}") || tokens[open - 1].is("]") ||
+                                           tokens[open - 1].is(":")));
+            postfix[i] = !attribute;
+        }
     }
 
+    PostfixRewrite rewrite;
     std::vector<Edit> discarded, used;
     for (size_t i = 0; i < tokens.size(); ++i) {
         if (!postfix[i]) continue;
         const long op = static_cast<long>(i);
         const long start = operandStart(tokens, brackets, postfix, op);
-        if (start < 0) continue;  // no operand: glslang reports the syntax error
+        if (start < 0) {  // glslang could read something else as the operand: said here, not given to it
+            rewrite.errors.push_back(
+                {true, tokens[i].loc.file, tokens[i].loc.line, tokens[i].ppColumn,
+                 "'" + tokens[i].text + "' : no operand of this postfix operator that shadowfx can find"});
+            continue;
+        }
         // `x++;` -> ` ++x  ;`; `x++.y` -> ` (++x).y`, which increments what `x++` does (not `x.y`). The
         // space keeps `a+x++` from becoming `a+++x`.
         if (valueDiscarded(tokens, brackets, start, op)) {
@@ -161,7 +229,7 @@ PostfixRewrite rewritePostfixOperators(const std::string& text) {
             used.push_back({tokens[i].begin, 2, ")"});
         }
     }
-    PostfixRewrite rewrite{applyEdits(text, discarded), {}};
+    rewrite.text = applyEdits(text, discarded);
     if (!used.empty()) {
         used.insert(used.end(), discarded.begin(), discarded.end());
         rewrite.checkText = applyEdits(text, used);

@@ -6,8 +6,11 @@
 // to fx.
 #pragma once
 
+#include "HlslToSpirv.h"
+
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fx::detail {
 
@@ -20,9 +23,13 @@ struct PostfixRewrite {
     // glslang parses this without errors exactly when their operands are sound, and only then is `text`
     // safe to parse.
     std::optional<std::string> checkText;
+    // A postfix operator whose operand the rewrite cannot find (unbalanced brackets, say): an error at it,
+    // since glslang might read an operand there that it then crashes on. Neither text is parsed then.
+    std::vector<HlslMessage> errors;
 };
 
-// For HLSL `text` (preprocessed, `#line` directives allowed). Line breaks are kept, so line numbers hold.
+// For HLSL `text`, preprocessed: no comments (their words would count), `#line` directives allowed. Line
+// breaks are kept, so line numbers hold.
 PostfixRewrite rewritePostfixOperators(const std::string& text);
 
 }  // namespace fx::detail

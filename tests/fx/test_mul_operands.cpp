@@ -12,8 +12,8 @@ namespace {
 
 const std::string kDeclarations =
     "#line 1 \"t.fx\"\n"
-    "float4x4 m; float3x3 n; float1 a; int1x3 r; typedef half3x1 Column; Column c;\n"
-    "struct S { float1 depth; float3 normal; };\n"
+    "float4x4 m; float3x3 n; float1 a, b = 2; int1x3 r; typedef half3x1 Column; Column c;\n"
+    "struct S { float1 depth, height; float3 normal; };\n"
     "vector<float, 1> w; matrix<float, 4, 1> k; float1 f() { return 1; }\n";
 
 std::vector<HlslMessage> check(const std::string& body) {
@@ -23,22 +23,28 @@ std::vector<HlslMessage> check(const std::string& body) {
 
 TEST(MulOperands, EachOperandOfOneDimensionIsRefusedAtItsCall) {
     for (const char* body :
-         {"return mul(a, m)[0];", "return mul(n, s.depth).xyzz;", "return mul(r, n)[0];",
-          "return mul(c, 1).xxxx;", "return mul(w, m);", "return mul(m, k).xxxx;", "return mul(f(), m);",
-          "return mul(float1(2), m);", "return mul((float3x1)n, m);"}) {
+         {"return mul(a, m)[0];", "return mul(b, m)[0];", "return mul(n, s.depth).xyzz;",
+          "return mul(s.height * 2, n).xyzz;", "return mul(r, n)[0];", "return mul(c, 1).xxxx;",
+          "return mul(w, m);", "return mul(m, k).xxxx;", "return mul(f(), m);", "return mul(float1(2), m);",
+          "return mul((float3x1)n, m);", "return mul(((a)), m);"}) {
         SCOPED_TRACE(body);
         const std::vector<HlslMessage> errors = check(body);
         ASSERT_EQ(errors.size(), 1u);
         EXPECT_TRUE(errors[0].error);
         EXPECT_EQ(errors[0].file, "t.fx");
         EXPECT_EQ(errors[0].line, 5);
+        EXPECT_EQ(errors[0].column, static_cast<int>(std::string(body).find("mul(")) + 1);
+        EXPECT_EQ(errors[0].column, static_cast<int>(std::string(body).find("mul(")) + 1);
         EXPECT_EQ(errors[0].text.rfind("'mul' : an operand has a dimension of one", 0), 0u) << errors[0].text;
     }
 }
 
+// A name of one dimension inside a constructor's or a call's arguments, a struct's member of that name read
+// as a variable (a local of another type), operands of full size.
 TEST(MulOperands, OperandsOfFullSizeAreLeftToGlslang) {
-    EXPECT_TRUE(check("return mul(float4(s.normal, 1), m) + mul(s.normal, n).xyzz + mul(2, m)[1] + "
-                      "mul(m, m)[0] + a.x;")
+    EXPECT_TRUE(check("float4 depth = 1;\n"
+                      "return mul(float4(s.normal, a), m) + mul(s.normal, n).xyzz + mul(2, m)[1] + "
+                      "mul(m, m)[0] + mul(depth, m) + mul(float4(f(), 0, 0, 1), m) + mul(m[0], m) + a.x;")
                     .empty());
 }
 

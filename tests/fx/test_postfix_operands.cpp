@@ -92,9 +92,12 @@ bool hasErrorOnLine(const HlslCompileResult& result, int line) {
 // Each of these crashed glslang's HLSL front end (a null node read by the expression around the postfix
 // operator): now each is an error on its line, in this process.
 TEST(PostfixOperands, OperandsGlslangCannotIncrementAreErrorsWhereTheValueIsUsed) {
-    for (const char* body : {"return undeclared++;", "return float--;", "return 1 + v()++;",
-                             "return sin(float3(1, 1, 1)--).xyzz;", "return float4(int++, 1, 1, 1);",
-                             "S s; s.a = 0; return s++.a;", "return undeclared++.x;"}) {
+    for (const char* body :
+         {"return undeclared++;", "return float--;", "return 1 + v()++;",
+          "return sin(float3(1, 1, 1)--).xyzz;", "return float4(int++, 1, 1, 1);",
+          "S s; s.a = 0; return s++.a;", "return undeclared++.x;", "return undeclared++ y;",
+          "return v()++ 1;", "S s; return (s)++ 1;", "return (v())++ 1;", "return \"a\"++;",
+          "return \"a\".x++;", "float4 q = 0; return vector<bool, 4>(q)++;", "float4 q = 0; return q)++;"}) {
         SCOPED_TRACE(body);
         const HlslCompileResult result = compileFragment(body);
         EXPECT_FALSE(result.success);
@@ -114,11 +117,13 @@ TEST(PostfixOperands, StatementsGlslangWouldDropAreErrors) {
     }
 }
 
+// Prefix operators after a cast, a statement's header and an attribute stay prefix operators.
 TEST(PostfixOperands, SoundOperandsCompileWhereverTheyStand) {
     const HlslCompileResult result = compileFragment(
         "float4 c = 0; int i = 0; float a[3] = {1, 2, 3};\n"
         "for (int k = 0; k < 3; k++) c.x += a[i++];\n"
         "c.y = c.x--; c.zw = float2(i--, c.x++);\n"
+        "c.x += (float)++i + (float2)--c.y; if (i > 0) ++i; [unroll] for (int j = 0; j < 2;) ++j;\n"
         "return c;");
     EXPECT_TRUE(result.success) << result.log;
 }
