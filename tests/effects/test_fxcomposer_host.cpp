@@ -119,6 +119,26 @@ TEST(FxComposerHost, PostEffectProcessesTheSceneTheHostDrawsAtScriptExternal) {
     EXPECT_EQ(inverted.pixel(0, 0)[0], 255);
 }
 
+// FX Composer's "preprocess" effects: a technique without passes whose script clears colour and depth to
+// the effect's values, then lets the host draw the scene. The depth clear looked for the draw after it in
+// the frame's plan, found the host's, and read it as a draw of a pass the technique does not have.
+TEST(FxComposerHost, TechniqueWithoutPassesClearsToItsColourUnderTheHostsScene) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/preprocess_clear.fx");
+    ASSERT_TRUE(loaded.renderer);
+    ASSERT_EQ(loaded.renderer->effect().techniques.size(), 1u);
+    ASSERT_TRUE(loaded.renderer->effect().techniques[0].passes.empty());
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));                  // the host's scene over the clear
+    const uint8_t* sky = frame.pixel(kWidth - 1, 0);  // above the ground plane: the effect's Backdrop
+    EXPECT_EQ(sky[0], 0);
+    EXPECT_NEAR(sky[1], 128, 1);
+    EXPECT_EQ(sky[2], 255);
+    const double covered = coverage(frame);  // the host's background nowhere, the scene drawn on the clear
+    EXPECT_GT(covered, 0.99);
+}
+
 // The host's material lights by the mesh's normals: a plane facing a directional light is one flat colour
 // (with positions read as normals, as a lost stream binding once did, its shade would follow its pixels'
 // positions), and turning the light away from the plane darkens it.

@@ -528,6 +528,10 @@ bool FrameExecutor::clearsDepthAlone() {
     for (size_t i = mNextOp; i < mPlan.ops.size() && mPlan.ops[i].pass == mCurrentPass; ++i) {
         const PlannedOp& op = mPlan.ops[i];
         if (!op.isDraw()) continue;
+        // The host's scene (ScriptExternal) is drawn by no pass: its op's pass is only the last one begun, 0
+        // in a technique without passes (FX Composer's "preprocess" clears), and there is no depth-only
+        // program to share a framebuffer with.
+        if (op.hostScene) return false;
         if (op.leftOut != LeftOut::No && mOptions.leaveOut) return false;
         const fx::CompiledPass& pass = technique.passes[mCurrentPass];
         if (pass.streamOut || pass.drawAuto >= 0) return false;

@@ -101,6 +101,7 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
     PlannedOp& op = mPlan.add();
     op.kind = PlannedOp::Kind::DrawGeometry;
     op.pass = mPass;
+    op.hostScene = true;
     colorTargets(op.writes);
     op.reads = op.writes;
     if (mDepth != kNone) {

@@ -54,6 +54,7 @@ struct PlannedOp {
     enum class Kind { ClearColor, ClearDepth, ClearStencil, DrawGeometry, DrawBuffer };
     Kind kind = Kind::ClearColor;
     size_t pass = 0;             // the pass's index in its technique
+    bool hostScene = false;      // the host's scene drawn at ScriptExternal, by none of the passes' programs
     bool lightPort = false;      // RenderPort names a light
     std::vector<int> writes;     // targets it changes
     std::vector<int> reads;      // sampled textures, and a draw's bound targets (blending, depth test)
