@@ -20,60 +20,19 @@ import json
 import os
 import pathlib
 import re
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
+
+from png_pixels import read_png
 
 BLANK_BELOW = 8
 
 
 def png_colours(path):
-    """Distinct RGB colours of an 8-bit PNG (alpha ignored, as `shadowfx check` judges a frame)."""
-    data = pathlib.Path(path).read_bytes()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError(f"{path}: not a PNG")
-    pos, idat, header = 8, [], None
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat.append(body)
-        pos += 12 + length
-    width, height, depth, colour_type, _, _, interlace = header
-    channels = {0: 1, 2: 3, 4: 2, 6: 4}.get(colour_type)
-    if depth != 8 or channels is None or interlace:
-        raise ValueError(f"{path}: only 8-bit, non-interlaced, non-palette PNGs are read")
-    raw = zlib.decompress(b"".join(idat))
-    stride = width * channels
-    previous = bytearray(stride)
-    colours = set()
-    for row in range(height):
-        start = row * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):
-            left = line[i - channels] if i >= channels else 0
-            up = previous[i]
-            corner = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + left) & 255
-            elif kind == 2:
-                line[i] = (line[i] + up) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (left + up) // 2) & 255
-            elif kind == 4:
-                p = left + up - corner
-                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
-                predictor = left if pa <= pb and pa <= pc else (up if pb <= pc else corner)
-                line[i] = (line[i] + predictor) & 255
-        colour_width = 3 if channels >= 3 else 1
-        for i in range(0, stride, channels):
-            colours.add(bytes(line[i:i + colour_width]))
-        previous = line
-    return len(colours)
+    """Distinct RGB colours of a frame `shadowfx render` wrote (alpha ignored, as `shadowfx check` judges a
+    frame)."""
+    return len({pixel[:3] for row in read_png(pathlib.Path(path)) for pixel in row})
 
 
 def first_error(text, root):
