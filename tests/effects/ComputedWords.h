@@ -57,4 +57,18 @@ ComputedWords compareComputedWords(const runtime::FrameImage& frame, int width, 
     return words;
 }
 
+// The words the effect at `path` computed for `threads` threads (the first `wordsCompared` of each) equal
+// the CPU's `expectedWords(thread)` bit for bit, and the frame is no blank one: more than half of them are
+// not zero.
+template <typename ExpectedWords>
+void expectComputedWords(const std::string& path, int width, int height, int threads, int wordsPerThread,
+                         int wordsCompared, ExpectedWords expectedWords) {
+    const std::optional<runtime::FrameImage> frame = computedFrame(path, width, height);
+    ASSERT_TRUE(frame);
+    const ComputedWords words =
+        compareComputedWords(*frame, width, threads, wordsPerThread, wordsCompared, expectedWords);
+    EXPECT_EQ(words.wrong, 0);
+    EXPECT_GT(words.nonZero, threads * wordsCompared / 2);
+}
+
 }  // namespace shadowfx::test
