@@ -22,7 +22,7 @@ namespace {
 constexpr int kWidth = 200;
 constexpr int kHeight = 150;
 
-runtime::Scene squareOverPlane() {
+runtime::Scene squareOverPlane(float height) {
     runtime::Scene scene;
     scene.name = "square-over-plane";
     runtime::SceneObject plane;
@@ -32,7 +32,7 @@ runtime::Scene squareOverPlane() {
     runtime::SceneObject square;
     square.name = "square";
     square.mesh = std::make_shared<runtime::Mesh>(runtime::makePlane(2.0f, 2.0f));
-    square.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    square.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, height, 0.0f));
     scene.objects.push_back(square);
     scene.camera.position = glm::vec3(1.5f, 7.0f, -6.0f);
     scene.camera.target = glm::vec3(0.0f);
@@ -51,7 +51,7 @@ class GroundTruthSquare : public ::testing::Test {
 protected:
     void SetUp() override {
         testsupport::sharedContext();
-        scene = squareOverPlane();
+        scene = squareOverPlane(squareHeight());
         fx::DiagnosticList diagnostics;
         std::optional<runtime::GBuffer> rendered =
             runtime::renderGBuffer(scene, kWidth, kHeight, diagnostics);
@@ -91,8 +91,16 @@ protected:
         }
         return c;
     }
+    virtual float squareHeight() const { return 1.0f; }
     runtime::Scene scene;
     runtime::GBuffer gbuffer;
+};
+
+// The square 0.3 above the plane: its shadow under a light 4 degrees up falls on the plane (1 above, it
+// would fall 14 away, past the plane's edge).
+class GroundTruthLowSquare : public GroundTruthSquare {
+protected:
+    float squareHeight() const override { return 0.3f; }
 };
 
 TEST_F(GroundTruthSquare, GBufferPositionsLieOnTheCameraRayThroughEachPixelCentre) {
@@ -164,6 +172,28 @@ TEST_F(GroundTruthSquare, TheRaysStartLeavesASlantedShadowsOutlineWhereItIs) {
     EXPECT_GT(plane.compared - plane.shadowed, 1000u);
 }
 
+// A light 4 degrees up meets the plane at N.L = 0.07, below the cosine (0.1) at which the rays' start stops
+// walking along the ray (10 times the offset at most) and the normal makes up the rest of the height: that
+// part moves the outline by (1 - 10 N.L) offset / tan(elevation), 4.3 offsets. At the default offset (1e-4
+// of the scene's radius, 8.5e-4 units here) that is 3.7e-3 units, a twentieth of a pixel, inside the pixel
+// the comparison leaves out around the outline. A start lifted along the normal alone would move it 3.3
+// times as far.
+TEST_F(GroundTruthLowSquare, TheRaysStartUnderAGrazingLightLeavesTheOutlineWhereItIs) {
+    runtime::Light light = scene.lights[0];
+    const float elevation = glm::radians(4.0f);
+    light.direction = -glm::vec3(std::cos(elevation), std::sin(elevation), 0.0f);
+    const glm::vec3 toLight = -light.direction;
+    ASSERT_LT(toLight.y, 0.1f);
+    auto inGrazingShadow = [&](const glm::vec3& p) {
+        return inSquareShadow(p + toLight * (0.3f / toLight.y));
+    };
+    const runtime::GroundTruth truth = runtime::ShadowRayCaster(scene).compute(gbuffer, light, {});
+    const PlaneComparison plane = compareThePlane(truth, inGrazingShadow);
+    EXPECT_EQ(plane.wrong, 0u) << "of " << plane.compared;
+    EXPECT_GT(plane.shadowed, 100u) << "the square's shadow, 4.3 units towards -x, should be in view";
+    EXPECT_GT(plane.compared - plane.shadowed, 1000u);
+}
+
 TEST_F(GroundTruthSquare, AreaLightGivesUmbraPenumbraAndRecordsItsSamples) {
     runtime::Light light = scene.lights[0];
     // A directional light's disk sits two scene radii (~17 units) away: radius 4 gives a ~0.5-unit penumbra.
@@ -197,7 +227,7 @@ TEST_F(GroundTruthSquare, AreaLightGivesUmbraPenumbraAndRecordsItsSamples) {
 }
 
 TEST(ShadowRayCaster, SegmentQueriesAgreeWithTheBruteForceReference) {
-    runtime::Scene scene = squareOverPlane();
+    runtime::Scene scene = squareOverPlane(1.0f);
     const runtime::ShadowRayCaster caster(scene);
     for (float x = -2.0f; x <= 2.0f; x += 0.37f) {
         for (float z = -2.0f; z <= 2.0f; z += 0.41f) {
