@@ -169,9 +169,10 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
                            : stage == ShaderStage::Domain   ? EShLangTessEvaluation
                                                             : EShLangCompute;
     // Text glslang's front end would crash on is refused or checked before it parses the real text.
-    result.messages = detail::mulCallsGlslangCannotCompile(source);
+    const std::vector<detail::Token> tokens = detail::lexHlslUnit(source);
+    result.messages = detail::mulCallsGlslangCannotCompile(tokens);
     if (!result.messages.empty()) return result;
-    const detail::PostfixRewrite postfix = detail::rewritePostfixOperators(source);
+    const detail::PostfixRewrite postfix = detail::rewritePostfixOperators(source, tokens);
     result.messages = postfix.errors;
     if (!result.messages.empty()) return result;
     if (postfix.checkText) {

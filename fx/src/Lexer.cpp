@@ -380,4 +380,10 @@ void spellKeywordsAsHlsl(std::vector<Token>& tokens, std::string& text) {
     }
 }
 
+std::vector<Token> lexHlslUnit(const std::string& text) {
+    SourceMap sourceMap;
+    DiagnosticList reportedWithTheEffect;
+    return lexEffect(text, "", {}, sourceMap, reportedWithTheEffect);
+}
+
 }  // namespace fx::detail

@@ -34,6 +34,10 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                              const std::map<std::string, std::string>& files, SourceMap& sourceMap,
                              DiagnosticSink& diagnostics);
 
+// Lexes a generated HLSL unit (preprocessed text with `#line` directives, as compileHlslToSpirv receives
+// it), for the checks made before glslang parses it. Tokens carry the file and line of `#line`, and the
+// column in the unit's line (`ppColumn`); what the lexer would report was reported as the effect's.
+std::vector<Token> lexHlslUnit(const std::string& text);
 // fxc read the effect keywords in any case (`Technique`, `PASS`, `Compile`, `Matrix`, `VERTEXSHADER`;
 // strict mode only warned, X3086 "alternate cases ... are deprecated"): spells them as HLSL does, in the
 // tokens and in `text` alike (same length, so token offsets stay valid), so that both the effect parser and

@@ -1,9 +1,8 @@
 // MulOperands: see MulOperands.h.
 #include "MulOperands.h"
 
-#include "Lexer.h"
+#include "TypeNames.h"
 
-#include <regex>
 #include <set>
 
 namespace fx::detail {
@@ -12,11 +11,10 @@ namespace {
 
 // `float1`, `int1x3`, `half4x1`, ...: the scalar types of HLSL with a dimension of one.
 bool isOneDimensionTypeName(const std::string& word) {
-    if (word.empty() || (word.back() != '1' && word.find("1x") == std::string::npos)) return false;
-    static const std::regex name(
-        "(float|half|double|int|uint|bool|dword|min16float|min10float|min16int|min12int|min16uint)"
-        "(1|1x[1-4]|[1-4]x1)");
-    return std::regex_match(word, name);
+    TypeDesc type;
+    if (!parseScalarTypeName(word, type)) return false;
+    return (type.shape == Shape::Vector && type.cols == 1) ||
+           (type.shape == Shape::Matrix && (type.rows == 1 || type.cols == 1));
 }
 
 // The index past a type of one dimension starting at `i` (`float1`, `vector<float, 1>`,
@@ -121,12 +119,8 @@ bool argumentOfOneDimension(const std::vector<Token>& tokens, size_t begin, size
 
 }  // namespace
 
-std::vector<HlslMessage> mulCallsGlslangCannotCompile(const std::string& text) {
+std::vector<HlslMessage> mulCallsGlslangCannotCompile(const std::vector<Token>& tokens) {
     std::vector<HlslMessage> errors;
-    if (text.find("mul") == std::string::npos) return errors;
-    SourceMap sourceMap;
-    DiagnosticList lexerMessages;  // the effect's own lexing reported these already
-    const std::vector<Token> tokens = lexEffect(text, "", {}, sourceMap, lexerMessages);
     const OneDimensionNames names = declaredNames(tokens);
 
     for (size_t i = 0; i + 1 < tokens.size(); ++i) {

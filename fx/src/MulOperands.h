@@ -10,14 +10,15 @@
 #pragma once
 
 #include "HlslToSpirv.h"
+#include "Lexer.h"
 
 #include <string>
 #include <vector>
 
 namespace fx::detail {
 
-// An error for each such call of mul() in HLSL `text` (preprocessed, `#line` directives allowed), at the
-// call's file and line and quoting `mul` (the column is recovered from the quote).
-std::vector<HlslMessage> mulCallsGlslangCannotCompile(const std::string& text);
+// An error for each such call of mul() in the `tokens` of an HLSL unit (lexHlslUnit), at the call's file,
+// line and column.
+std::vector<HlslMessage> mulCallsGlslangCannotCompile(const std::vector<Token>& tokens);
 
 }  // namespace fx::detail

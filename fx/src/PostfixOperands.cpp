@@ -1,10 +1,9 @@
 // PostfixOperands: see PostfixOperands.h.
 #include "PostfixOperands.h"
 
-#include "Lexer.h"
+#include "TypeNames.h"
 
 #include <algorithm>
-#include <regex>
 #include <set>
 #include <vector>
 
@@ -43,11 +42,10 @@ public:
         }
     }
     bool contains(const Token& token) const {
-        static const std::regex builtin(
-            "(float|half|double|int|uint|bool|dword|min16float|min10float|min16int|min12int|min16uint)"
-            "([1-4](x[1-4])?)?|vector|matrix");
+        TypeDesc scalar;
         return token.kind == Token::Kind::Identifier &&
-               (mDeclared.count(token.text) || std::regex_match(token.text, builtin));
+               (mDeclared.count(token.text) || token.text == "vector" || token.text == "matrix" ||
+                parseScalarTypeName(token.text, scalar));
     }
 
 private:
@@ -163,11 +161,7 @@ std::string applyEdits(const std::string& text, std::vector<Edit> edits) {
 
 }  // namespace
 
-PostfixRewrite rewritePostfixOperators(const std::string& text) {
-    if (text.find("++") == std::string::npos && text.find("--") == std::string::npos) return {text, {}, {}};
-    SourceMap sourceMap;
-    DiagnosticList lexerMessages;  // the effect's own lexing reported these already
-    const std::vector<Token> tokens = lexEffect(text, "", {}, sourceMap, lexerMessages);
+PostfixRewrite rewritePostfixOperators(const std::string& text, const std::vector<Token>& tokens) {
     const Brackets brackets = matchBrackets(tokens);
 
     // Which `++` glslang reads as postfix: every one after an operand (whatever follows it), except after

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "HlslToSpirv.h"
+#include "Lexer.h"
 
 #include <optional>
 #include <string>
@@ -28,8 +29,8 @@ struct PostfixRewrite {
     std::vector<HlslMessage> errors;
 };
 
-// For HLSL `text`, preprocessed: no comments (their words would count), `#line` directives allowed. Line
-// breaks are kept, so line numbers hold.
-PostfixRewrite rewritePostfixOperators(const std::string& text);
+// For HLSL `text`, preprocessed: no comments (their words would count), `#line` directives allowed, and its
+// `tokens` (lexHlslUnit). Line breaks are kept, so line numbers hold.
+PostfixRewrite rewritePostfixOperators(const std::string& text, const std::vector<Token>& tokens);
 
 }  // namespace fx::detail

@@ -12,7 +12,7 @@ bool parseScalarTypeName(const std::string& name, TypeDesc& type) {
         {"bool", BaseType::Bool},      {"int", BaseType::Int},         {"uint", BaseType::UInt},
         {"dword", BaseType::UInt},     {"half", BaseType::Half},       {"float", BaseType::Float},
         {"double", BaseType::Double},  {"min16float", BaseType::Half}, {"min16int", BaseType::Int},
-        {"min16uint", BaseType::UInt},
+        {"min16uint", BaseType::UInt}, {"min10float", BaseType::Half}, {"min12int", BaseType::Int},
     };
     for (const auto& [spelling, base] : kScalars) {
         size_t len = std::strlen(spelling);

@@ -17,8 +17,8 @@ const std::string kDeclarations =
     "vector<float, 1> w; matrix<float, 4, 1> k; float1 f() { return 1; }\n";
 
 std::vector<HlslMessage> check(const std::string& body) {
-    return detail::mulCallsGlslangCannotCompile(kDeclarations + "float4 PS(S s) : SV_Target {\n" + body +
-                                                "\n}\n");
+    return detail::mulCallsGlslangCannotCompile(
+        detail::lexHlslUnit(kDeclarations + "float4 PS(S s) : SV_Target {\n" + body + "\n}\n"));
 }
 
 TEST(MulOperands, EachOperandOfOneDimensionIsRefusedAtItsCall) {

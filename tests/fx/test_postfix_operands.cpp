@@ -12,6 +12,10 @@
 namespace fx::test_postfix_operands {
 namespace {
 
+detail::PostfixRewrite rewriteText(const std::string& text) {
+    return detail::rewritePostfixOperators(text, detail::lexHlslUnit(text));
+}
+
 size_t lines(const std::string& text) {
     return static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
 }
@@ -20,7 +24,7 @@ size_t lines(const std::string& text) {
 TEST(PostfixOperands, TextWithoutPostfixOperatorsIsReturnedAsIs) {
     for (const char* text : {"float4 PS() : SV_Target { return 1; } // ---- a ruler\n",
                              "void f(inout int n, bool c) { if (c) ++n; n = -(--n) + ++n; }\n"}) {
-        const detail::PostfixRewrite rewrite = detail::rewritePostfixOperators(text);
+        const detail::PostfixRewrite rewrite = rewriteText(text);
         EXPECT_EQ(rewrite.text, text);
         EXPECT_FALSE(rewrite.checkText);
     }
@@ -35,7 +39,7 @@ TEST(PostfixOperands, StatementsAndLoopStepsBecomePrefixOperators) {
         "    if (n > 0) v[n - 1]++; else n--;\n"
         "    do n++; while (n < 4);\n"
         "}\n";
-    const detail::PostfixRewrite rewrite = detail::rewritePostfixOperators(text);
+    const detail::PostfixRewrite rewrite = rewriteText(text);
     EXPECT_EQ(rewrite.text,
               "#line 7 \"a.fx\"\n"
               "void f(inout int n, inout float4 v[2]) {\n"
@@ -56,7 +60,7 @@ TEST(PostfixOperands, UsedValuesAreCheckedInPrefixFormOnTheSameLines) {
         "    return\n"
         "        f(s.m[1]--, 2);\n"
         "}\n";
-    const detail::PostfixRewrite rewrite = detail::rewritePostfixOperators(text);
+    const detail::PostfixRewrite rewrite = rewriteText(text);
     EXPECT_EQ(rewrite.text, text);
     ASSERT_TRUE(rewrite.checkText);
     EXPECT_EQ(*rewrite.checkText,
@@ -71,7 +75,7 @@ TEST(PostfixOperands, UsedValuesAreCheckedInPrefixFormOnTheSameLines) {
 // A for loop's condition uses its value; a loop step of two expressions is checked too.
 TEST(PostfixOperands, LoopConditionsAndCommaStepsAreChecked) {
     const detail::PostfixRewrite rewrite =
-        detail::rewritePostfixOperators("void f(int n) { for (int i = 0; n--; i++, n++) { } }\n");
+        rewriteText("void f(int n) { for (int i = 0; n--; i++, n++) { } }\n");
     ASSERT_TRUE(rewrite.checkText);
     EXPECT_EQ(*rewrite.checkText, "void f(int n) { for (int i = 0;  (--n);  (++i),  (++n)) { } }\n");
 }
