@@ -89,10 +89,10 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 15,
-              "the enum lengths below were pinned at format version 15: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 16,
+              "the enum lengths below were pinned at format version 16: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
-static_assert(enumLength<SemanticKind>() == 36);
+static_assert(enumLength<SemanticKind>() == 37);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
 static_assert(enumLength<LeaveOutCondition>() == 3);
@@ -144,9 +144,9 @@ static_assert(sizeof(SamplerDesc) == 128);
 static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
-static_assert(sizeof(SemanticBinding) == 12);
+static_assert(sizeof(SemanticBinding) == 16);
 static_assert(sizeof(BufferTexel) == 8);
-static_assert(sizeof(ParameterInfo) == 416);
+static_assert(sizeof(ParameterInfo) == 424);
 static_assert(sizeof(EffectProvenance) == 112);
 static_assert(sizeof(CompiledEffect) == 400);
 #endif
@@ -307,7 +307,7 @@ void fields(A& a, StructInfo& x) {
 }
 template <class A>
 void fields(A& a, SemanticBinding& x) {
-    a(x.kind, x.inverse, x.transpose, x.byName, x.light);
+    a(x.kind, x.inverse, x.transpose, x.byName, x.eachLight, x.viewSpace, x.towardsLight, x.light);
 }
 template <class A>
 void fields(A& a, BufferTexel& x) {

@@ -42,6 +42,7 @@ constexpr std::pair<const char*, SemanticKind> kOtherSemantics[] = {
     {"MaterialDiffuse", SemanticKind::ObjectColor},
     {"DiffuseColor", SemanticKind::ObjectColor},
     {"Ambient", SemanticKind::Ambient},
+    {"LightCount", SemanticKind::LightCount},
     {"SceneHasClosedObjects", SemanticKind::SceneHasClosedObjects},
     {"CascadeViewProjection", SemanticKind::CascadeViewProjection},
     {"CascadeAtlasRects", SemanticKind::CascadeAtlasRects},
@@ -86,6 +87,7 @@ constexpr const char* kKindNames[] = {
     "LightAreaRadius",
     "Diffuse",
     "Ambient",
+    "LightCount",
     "SceneHasClosedObjects",
     "CascadeViewProjection",
     "CascadeAtlasRects",
@@ -148,7 +150,7 @@ bool classifyBound(std::string_view semantic, SemanticBinding& binding) {
 }
 
 // `name` without its scope prefix (g_, m_, g before a capital) and Hungarian type prefix (m, mat, mtx,
-// v, vec, f before a capital), underscores removed, in capitals.
+// v, vec, f, n, i before a capital), underscores removed, in capitals.
 std::string conventionalStem(std::string_view name) {
     std::string text(name);
     const auto capitalAt = [&text](size_t i) {
@@ -159,7 +161,7 @@ std::string conventionalStem(std::string_view name) {
     } else if (text.size() > 1 && text[0] == 'g' && capitalAt(1)) {
         text.erase(0, 1);
     }
-    for (std::string_view hungarian : {"mtx", "mat", "vec", "m", "v", "f"}) {
+    for (std::string_view hungarian : {"mtx", "mat", "vec", "m", "v", "f", "n", "i"}) {
         if (text.rfind(hungarian, 0) == 0 && capitalAt(hungarian.size())) {
             text.erase(0, hungarian.size());
             break;
@@ -178,10 +180,13 @@ bool isBoundSemantic(SemanticKind kind) {
 }
 
 std::string semanticBindingName(const SemanticBinding& binding) {
-    const std::string name = kKindNames[static_cast<size_t>(binding.kind)];
+    std::string name = kKindNames[static_cast<size_t>(binding.kind)];
     if (binding.inverse && binding.transpose) return name + "InverseTranspose";
     if (binding.transpose) return name + "Transpose";
     if (binding.inverse) return name + "Inverse";
+    if (binding.eachLight) name += " of each light";
+    if (binding.viewSpace) name += " in view space";
+    if (binding.towardsLight) name += ", towards the light";
     return name;
 }
 
@@ -196,12 +201,12 @@ std::vector<std::string> standardSemanticNames() {
     return names;
 }
 
-std::string conventionalSemantic(const ParameterInfo& parameter) {
-    if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return "";
+ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool hasInitializer) {
+    if (!parameter.semantic.empty() || parameter.isStatic || !parameter.type.isNumeric()) return {};
     std::string stem = conventionalStem(parameter.name);
     const TypeDesc& type = parameter.type;
     if (type.shape == Shape::Matrix) {
-        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return "";
+        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return {};
         if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
         std::string modifier;
         if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||
@@ -231,34 +236,96 @@ std::string conventionalSemantic(const ParameterInfo& parameter) {
             {"MVP", "WorldViewProjection"},
         };
         for (const auto& [text, semantic] : kMatrixNames)
-            if (stem == text) return semantic + modifier;
-        return "";
+            if (stem == text) return {semantic + modifier};
+        return {};
     }
-    const bool isVector = type.shape == Shape::Vector && type.cols >= 3 && type.arrayDims.empty();
-    if (isVector) {
-        static const std::pair<const char*, const char*> kVectorNames[] = {
-            {"EYEPOS", "CameraPosition"},         {"EYEPOSW", "CameraPosition"},
-            {"EYEPOSITION", "CameraPosition"},    {"EYEPOSITIONW", "CameraPosition"},
-            {"EYEPT", "CameraPosition"},          {"EYE", "CameraPosition"},
-            {"CAMERAPOS", "CameraPosition"},      {"CAMERAPOSW", "CameraPosition"},
-            {"CAMERAPOSITION", "CameraPosition"}, {"CAMPOS", "CameraPosition"},
-            {"VIEWPOS", "CameraPosition"},        {"VIEWPOSITION", "CameraPosition"},
-            {"VIEWERPOS", "CameraPosition"},      {"LIGHTDIR", "LightDirection"},
-            {"LIGHTDIRW", "LightDirection"},      {"LIGHTDIRECTION", "LightDirection"},
-            {"LIGHTPOS", "LightPosition"},        {"LIGHTPOSW", "LightPosition"},
-            {"LIGHTPOSITION", "LightPosition"},
+    // One level of array: a light property per light (SemanticBinding::eachLight).
+    const bool isArray = !type.arrayDims.empty();
+    if (type.shape == Shape::Vector && type.cols >= 3 && type.arrayDims.size() <= 1) {
+        struct VectorName {
+            const char* stem;
+            const char* semantic;
+            bool viewSpace;
+            bool lightProperty;  // may be an array, one element per light
         };
-        for (const auto& [text, semantic] : kVectorNames)
-            if (stem == text) return semantic;
-        return "";
+        static const VectorName kVectorNames[] = {
+            {"EYEPOS", "CameraPosition", false, false},
+            {"EYEPOSW", "CameraPosition", false, false},
+            {"EYEPOSITION", "CameraPosition", false, false},
+            {"EYEPOSITIONW", "CameraPosition", false, false},
+            {"EYEPT", "CameraPosition", false, false},
+            {"EYE", "CameraPosition", false, false},
+            {"CAMERAPOS", "CameraPosition", false, false},
+            {"CAMERAPOSW", "CameraPosition", false, false},
+            {"CAMERAPOSITION", "CameraPosition", false, false},
+            {"CAMPOS", "CameraPosition", false, false},
+            {"VIEWPOS", "CameraPosition", false, false},
+            {"VIEWPOSITION", "CameraPosition", false, false},
+            {"VIEWERPOS", "CameraPosition", false, false},
+            {"LIGHTDIR", "LightDirection", false, true},
+            {"LIGHTDIRW", "LightDirection", false, true},
+            {"LIGHTDIRECTION", "LightDirection", false, true},
+            {"WORLDLIGHTDIR", "LightDirection", false, true},
+            {"WORLDSPACELIGHTDIR", "LightDirection", false, true},
+            {"VIEWSPACELIGHTDIR", "LightDirection", true, true},
+            {"VIEWLIGHTDIR", "LightDirection", true, true},
+            {"LIGHTDIRVIEW", "LightDirection", true, true},
+            {"LIGHTDIRV", "LightDirection", true, true},
+            {"LIGHTPOS", "LightPosition", false, true},
+            {"LIGHTPOSW", "LightPosition", false, true},
+            {"LIGHTPOSITION", "LightPosition", false, true},
+            {"WORLDLIGHTPOS", "LightPosition", false, true},
+            {"VIEWSPACELIGHTPOS", "LightPosition", true, true},
+            {"VIEWLIGHTPOS", "LightPosition", true, true},
+            {"LIGHTPOSVIEW", "LightPosition", true, true},
+            {"LIGHTPOSV", "LightPosition", true, true},
+        };
+        // A light's properties and the colours only where the effect gives no value of its own: an
+        // application set them, and D3D leaves them zero (no light, a black object) until it does. A
+        // camera's position is the camera's whatever the effect's placeholder.
+        for (const VectorName& name : kVectorNames)
+            if (stem == name.stem && (!isArray || name.lightProperty) &&
+                !(name.lightProperty && hasInitializer))
+                return {name.semantic, name.viewSpace};
+        if (hasInitializer) return {};
+        static const std::pair<const char*, const char*> kColorNames[] = {
+            {"LIGHTCOLOR", "LightColor"},
+            {"LIGHTCOLOUR", "LightColor"},
+            {"LIGHTCOL", "LightColor"},
+            {"LIGHTDIFFUSE", "LightColor"},
+            {"LIGHTDIFFUSECOLOR", "LightColor"},
+            {"AMBIENT", "Ambient"},
+            {"AMBIENTCOLOR", "Ambient"},
+            {"AMBIENTCOLOUR", "Ambient"},
+            {"AMBIENTLIGHT", "Ambient"},
+            {"LIGHTAMBIENT", "Ambient"},
+            {"LIGHTAMBIENTCOLOR", "Ambient"},
+            {"MATERIALDIFFUSE", "Diffuse"},
+            {"MATERIALDIFFUSECOLOR", "Diffuse"},
+            {"MATERIALCOLOR", "Diffuse"},
+            {"MATERIALCOLOUR", "Diffuse"},
+            {"MATDIFFUSE", "Diffuse"},
+            {"DIFFUSECOLOR", "Diffuse"},
+            {"DIFFUSECOLOUR", "Diffuse"},
+            {"MATERIALAMBIENT", "Diffuse"},
+            {"MATERIALAMBIENTCOLOR", "Diffuse"},
+            {"MATAMBIENT", "Diffuse"},
+            {"DIFFUSE", "Diffuse"},
+            {"MATCOLOR", "Diffuse"},
+        };
+        for (const auto& [text, semantic] : kColorNames)
+            if (stem == text && (!isArray || std::string_view(semantic) == "LightColor")) return {semantic};
+        return {};
     }
-    if (type.shape == Shape::Scalar && type.arrayDims.empty() &&
-        (stem == "TIME" || stem == "TOTALTIME" || stem == "APPTIME"))
-        return "Time";
-    return "";
+    if (type.shape != Shape::Scalar || isArray) return {};
+    if (stem == "TIME" || stem == "TOTALTIME" || stem == "APPTIME") return {"Time"};
+    if (!hasInitializer && (stem == "NUMLIGHTS" || stem == "LIGHTCOUNT" || stem == "NUMACTIVELIGHTS"))
+        return {"LightCount"};
+    return {};
 }
 
-SemanticBinding classifySemantic(const ParameterInfo& parameter, std::string& lightName) {
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer,
+                                 std::string& lightName) {
     SemanticBinding binding;
     lightName.clear();
     const std::string upperSemantic = upperCase(parameter.semantic);
@@ -271,8 +338,14 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, std::string& li
     // The runtime writes numbers into parameters it may change.
     if (parameter.isStatic || !parameter.type.isNumeric()) return binding;
     binding.byName = parameter.semantic.empty();
-    const std::string semantic = binding.byName ? conventionalSemantic(parameter) : parameter.semantic;
+    std::string semantic = parameter.semantic;
+    if (binding.byName) {
+        const ConventionalSemantic conventional = conventionalSemantic(parameter, hasInitializer);
+        semantic = conventional.semantic;
+        binding.viewSpace = conventional.viewSpace;
+    }
     if (semantic.empty() || !classifyBound(semantic, binding)) return SemanticBinding{};
+    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection;
 
     const SemanticKind kind = binding.kind;
     const bool isCascadeProperty =
@@ -283,8 +356,14 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, std::string& li
                                  kind == SemanticKind::LightAreaRadius || isCascadeProperty;
     // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
     // LightPosition/LightDirection/LightColor and the cascades default to light0.
-    if (!parameter.light.empty() ||
-        (isLightProperty && (upperCase(semantic).rfind("LIGHT", 0) == 0 || isCascadeProperty))) {
+    const bool spellsLight = upperCase(semantic).rfind("LIGHT", 0) == 0;
+    // An array of a light's property without a light named: one element per light of the scene.
+    if (parameter.light.empty() && isLightProperty && !isCascadeProperty && spellsLight &&
+        !parameter.type.arrayDims.empty()) {
+        binding.eachLight = true;
+        return binding;
+    }
+    if (!parameter.light.empty() || (isLightProperty && (spellsLight || isCascadeProperty))) {
         lightName = parameter.light.empty() ? "light0" : parameter.light;
         if (binding.kind == SemanticKind::ObjectColor) binding.kind = SemanticKind::LightColor;
     }

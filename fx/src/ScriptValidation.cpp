@@ -205,9 +205,12 @@ void Compiler::scripts() {
     // The parameters' lights first, so that their indices do not depend on which scripts compile; what
     // each parameter's semantic gives it, with them.
     std::string semanticLight;
-    for (ParameterInfo& parameter : mOut->parameters) {
+    for (size_t i = 0; i < mOut->parameters.size(); ++i) {
+        ParameterInfo& parameter = mOut->parameters[i];
         if (!parameter.light.empty()) lightIndex(parameter.light);
-        parameter.standard = classifySemantic(parameter, semanticLight);
+        // CompiledEffect::parameters has Effect::parameters' indices.
+        const bool hasInitializer = mEffect.parameters[i].initializer.has_value();
+        parameter.standard = classifySemantic(parameter, hasInitializer, semanticLight);
         if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
     }
     for (const Parameter& p : mEffect.parameters) {

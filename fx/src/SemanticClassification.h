@@ -11,16 +11,23 @@ namespace fx {
 // What the runtime gives `parameter`, with SemanticBinding::light left at -1: `lightName` is set to the
 // light whose value it is (its `frustum`/`Object` annotation, or light0 for a light property written
 // without one), "" for none; the caller turns it into the index of CompiledEffect::lights.
-SemanticBinding classifySemantic(const ParameterInfo& parameter, std::string& lightName);
+// `hasInitializer`: the effect gives the parameter a value (a colour named by convention is then its own).
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, std::string& lightName);
 
 // The semantic a parameter written without one is read as, from its name: FX11 and D3DX applications set
 // parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`, `matView`, `g_vEyePt`,
 // `g_fTime`), so an effect written for them has no semantics to bind by; these conventional names are read
 // as the semantic they spell, where the parameter's type fits it (a matrix for a matrix name, a vector for
-// a position or direction, a scalar for a time). Prefixes `g_`/`g`/`m_` and Hungarian
-// `m`/`mat`/`mtx`/`v`/`vec`/`f` go, then underscores and case; suffixes `Matrix`, `Inv`/`Inverse`,
-// `IT`/`InvTranspose`/`InverseTranspose`, a leading `Inv`; a world-space `W` on a position. "" for none
-// (a parameter with a semantic keeps it, and parameters named otherwise stay the user's).
-std::string conventionalSemantic(const ParameterInfo& parameter);
+// a position, direction or colour, a scalar for a time or a light count). Prefixes `g_`/`g`/`m_` and
+// Hungarian `m`/`mat`/`mtx`/`v`/`vec`/`f`/`n`/`i` go, then underscores and case; suffixes `Matrix`,
+// `Inv`/`Inverse`, `IT`/`InvTranspose`/`InverseTranspose`, a leading `Inv`; a world-space `W` on a
+// position. A light's properties, colours and light counts are read so only without an initializer
+// (`hasInitializer`): a value the effect gives is its own. An empty semantic for none (a parameter with a
+// semantic keeps it, and parameters named otherwise stay the user's).
+struct ConventionalSemantic {
+    std::string semantic;
+    bool viewSpace = false;  // a light's position or direction in view space (SemanticBinding::viewSpace)
+};
+ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool hasInitializer);
 
 }  // namespace fx

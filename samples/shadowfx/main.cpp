@@ -216,9 +216,12 @@ int infoCommand(const Arguments& args) {
     for (const fx::ParameterInfo& p : compiled->parameters) {
         if (p.isStatic) continue;
         std::cout << "  " << p.type.hlslName() << " " << p.name;
+        for (int dimension : p.type.arrayDims) std::cout << "[" << dimension << "]";
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
         if (!p.semantic.empty() && p.type.isNumeric() && p.standard.kind == fx::SemanticKind::None)
             std::cout << "  (not bound by shadowfx: keeps its default value)";
+        if (p.standard.byName)
+            std::cout << "  (bound by its name as " << fx::semanticBindingName(p.standard) << ")";
         std::cout << "\n";
     }
     std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";

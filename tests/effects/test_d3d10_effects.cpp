@@ -799,6 +799,113 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
 }
 
+// An effect in the style of the DirectX SDK's samples, whose application set the lights and the material
+// by name (BasicHLSL's g_LightDir[3], g_LightDiffuse[3], g_MaterialDiffuseColor, ...), none with an
+// initializer, beside twins that read the same values through semantics. A D3D sample's light direction
+// points towards the light (`dot(N, g_LightDir)`); the LightDirection semantic points away from it.
+const char* kApplicationSetLights = R"(
+float4x4 g_mWorld;
+float4x4 g_mView;
+float4x4 g_mWorldViewProjection;
+float4 g_MaterialDiffuseColor;
+float4 g_MaterialAmbientColor;
+float4 g_LightAmbient;
+int g_nNumLights;
+float3 g_LightDir[3];
+float4 g_LightDiffuse[3];
+float3 g_vLightDirView;
+float4 SemDiffuse : Diffuse;
+float4 SemAmbient : Ambient;
+float3 Sun : LightDirection < string Object = "light0"; >;
+float4 SunColour : LightColor < string Object = "light0"; >;
+float3 Fill : LightDirection < string Object = "light1"; >;
+float4 FillColour : LightColor < string Object = "light1"; >;
+
+struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
+Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
+    float3 diffuse = 0;
+    for (int i = 0; i < g_nNumLights; i++)
+        diffuse += g_LightDiffuse[i].rgb * max(0, dot(normal, g_LightDir[i]));
+    o.colour = float4(g_MaterialDiffuseColor.rgb * diffuse + g_MaterialAmbientColor.rgb * g_LightAmbient.rgb, 1);
+    return o;
+}
+Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
+    float3 diffuse = SunColour.rgb * max(0, dot(normal, -Sun)) + FillColour.rgb * max(0, dot(normal, -Fill));
+    o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
+    return o;
+}
+Lit ViewSpaceByName(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(mul(n, (float3x3)g_mWorld), (float3x3)g_mView));
+    o.colour = float4(max(0, dot(normal, g_vLightDirView)).xxx, 1);
+    return o;
+}
+Lit ViewSpaceBySemantic(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(mul(n, (float3x3)g_mWorld), (float3x3)g_mView));
+    o.colour = float4(max(0, dot(normal, mul(-Sun, (float3x3)g_mView))).xxx, 1);
+    return o;
+}
+float4 Colour(Lit i) : SV_Target { return i.colour; }
+technique10 Named { pass { SetVertexShader(CompileShader(vs_4_0, ByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+technique10 ViewNamed { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+technique10 ViewSemantic { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceBySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+)";
+
+// Frames equal up to one step of 8 bits in any channel (the twins add the same terms in another order).
+::testing::AssertionResult nearlyEqual(const runtime::FrameImage& a, const runtime::FrameImage& b) {
+    if (a.rgba.size() != b.rgba.size()) return ::testing::AssertionFailure() << "sizes differ";
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        if (std::abs(int(a.rgba[i]) - int(b.rgba[i])) > 1)
+            return ::testing::AssertionFailure()
+                   << "byte " << i << ": " << int(a.rgba[i]) << " vs " << int(b.rgba[i]);
+    return ::testing::AssertionSuccess();
+}
+
+TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
+    auto renderer = loadEffect(kApplicationSetLights, false, "application_lights.fx");
+    ASSERT_TRUE(renderer);
+    runtime::Scene twoLights = scene("teapot");
+    ASSERT_EQ(twoLights.lights.size(), 1u);
+    runtime::Light fill;
+    fill.name = "light1";
+    fill.direction = glm::normalize(glm::vec3(0.8f, -0.2f, 0.6f));
+    fill.color = glm::vec3(0.2f, 0.5f, 0.9f);
+    twoLights.lights.push_back(fill);
+
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Semantic"));
+    const runtime::FrameImage bySemantic = renderer->readFrame();
+    ASSERT_TRUE(notConstant(bySemantic));
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Named"));
+    const runtime::FrameImage byName = renderer->readFrame();
+    EXPECT_TRUE(nearlyEqual(byName, bySemantic));
+    // Without the application's values the frame is black on the clear colour: a lit frame has shades.
+    std::set<uint32_t> colours;
+    for (size_t i = 0; i + 3 < byName.rgba.size(); i += 4)
+        colours.insert(uint32_t(byName.rgba[i]) << 16 | uint32_t(byName.rgba[i + 1]) << 8 |
+                       byName.rgba[i + 2]);
+    EXPECT_GT(colours.size(), 50u);
+
+    // The second light is element 1 and g_nNumLights counts it: with the scene's one light, another frame.
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Named"));
+    EXPECT_FALSE(nearlyEqual(renderer->readFrame(), byName));
+
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "ViewSemantic"));
+    const runtime::FrameImage viewBySemantic = renderer->readFrame();
+    ASSERT_TRUE(notConstant(viewBySemantic));
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "ViewNamed"));
+    EXPECT_TRUE(nearlyEqual(renderer->readFrame(), viewBySemantic));
+}
+
 // [SECTION] Input layouts, stream output, blending and sample counts
 
 // Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.

@@ -94,6 +94,68 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_EQ(effect->lights[1], "sun");
 }
 
+// What D3D samples' applications set by name besides matrices: lights (one per array element), their
+// number, the material and the ambient light, only where the effect gives no value of its own.
+TEST(ParameterSemantics, ApplicationSetLightsAndColoursAreReadByNameWithoutAnInitializer) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+float3 g_LightDir[3];
+float4 g_LightDiffuse[3];
+int g_nNumLights;
+float4 g_MaterialDiffuseColor;
+float4 g_MaterialAmbientColor;
+float4 g_LightAmbient;
+float3 g_vLightDirView;
+float3 g_vLightPosView;
+float3 LightDirection;
+float3 gLightDir = {0, 1, 0};
+float4 DiffuseColor = {1, 0, 0, 1};
+int NumLights = 2;
+float3 Dirs[2] : LightDirection;
+float3 Positions[2] : Position;
+float4 VS(float4 p : POSITION) : POSITION {
+    return p + float4(g_LightDir[2] + g_vLightDirView + g_vLightPosView + LightDirection + gLightDir +
+                      Dirs[1] + Positions[1], g_nNumLights + NumLights) + g_LightDiffuse[1] +
+           g_MaterialDiffuseColor + g_MaterialAmbientColor + g_LightAmbient + DiffuseColor;
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                           "application.fx");
+    ASSERT_TRUE(effect);
+    const SemanticBinding& directions = standard(*effect, "g_LightDir");
+    EXPECT_EQ(directions.kind, SemanticKind::LightDirection);
+    EXPECT_TRUE(directions.byName && directions.eachLight && directions.towardsLight &&
+                !directions.viewSpace);
+    EXPECT_EQ(directions.light, -1);
+    EXPECT_EQ(semanticBindingName(directions), "LightDirection of each light, towards the light");
+    const SemanticBinding& colours = standard(*effect, "g_LightDiffuse");
+    EXPECT_EQ(colours.kind, SemanticKind::LightColor);
+    EXPECT_TRUE(colours.eachLight && !colours.towardsLight);
+    EXPECT_EQ(standard(*effect, "g_nNumLights").kind, SemanticKind::LightCount);
+    EXPECT_EQ(standard(*effect, "g_MaterialDiffuseColor").kind, SemanticKind::ObjectColor);
+    EXPECT_EQ(standard(*effect, "g_MaterialAmbientColor").kind, SemanticKind::ObjectColor);
+    EXPECT_EQ(standard(*effect, "g_LightAmbient").kind, SemanticKind::Ambient);
+    const SemanticBinding& inView = standard(*effect, "g_vLightDirView");
+    EXPECT_EQ(inView.kind, SemanticKind::LightDirection);
+    EXPECT_TRUE(inView.viewSpace && inView.towardsLight && !inView.eachLight);
+    EXPECT_EQ(inView.light, lightIndex(*effect, "light0"));
+    const SemanticBinding& positionInView = standard(*effect, "g_vLightPosView");
+    EXPECT_EQ(positionInView.kind, SemanticKind::LightPosition);
+    EXPECT_TRUE(positionInView.viewSpace && !positionInView.towardsLight);
+    EXPECT_TRUE(standard(*effect, "LightDirection").towardsLight);
+
+    // An initializer is the effect's own value: these stay the effect's.
+    for (const char* own : {"gLightDir", "DiffuseColor", "NumLights"})
+        EXPECT_EQ(standard(*effect, own).kind, SemanticKind::None) << own;
+
+    // Written as a semantic: an array of a light's property is one element per light, pointing as the
+    // semantic does; an array of the object's Position is nobody's.
+    const SemanticBinding& semanticArray = standard(*effect, "Dirs");
+    EXPECT_EQ(semanticArray.kind, SemanticKind::LightDirection);
+    EXPECT_TRUE(semanticArray.eachLight && !semanticArray.towardsLight && !semanticArray.byName);
+    EXPECT_FALSE(standard(*effect, "Positions").eachLight);
+    EXPECT_EQ(standard(*effect, "Positions").light, -1);
+}
+
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
     for (const std::string& name : standardSemanticNames()) {
         SCOPED_TRACE(name);

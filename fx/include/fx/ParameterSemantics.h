@@ -30,6 +30,7 @@ enum class SemanticKind {
     LightAreaRadius,
     ObjectColor,
     Ambient,
+    LightCount,  // how many lights the scene has (at most the length of the effect's per-light arrays)
     SceneHasClosedObjects,
     CascadeViewProjection,  // a light's cascades (arrays, one element per cascade)
     CascadeAtlasRects,
@@ -60,6 +61,16 @@ struct SemanticBinding {
     bool transpose = false;
     // Read from the parameter's name (`gWorldViewProj`): it was written without a semantic.
     bool byName = false;
+    // A light property of an array without a light annotation (`float3 g_LightDir[3]`): element k is the
+    // scene's k-th light, zero past the last one; `light` stays -1.
+    bool eachLight = false;
+    // A light's position or direction in the view space of the render port (`g_ViewSpaceLightDir`), not
+    // in world space.
+    bool viewSpace = false;
+    // A light direction that points from the scene towards the light, as the D3D samples that set one by
+    // name use it (`dot(N, g_LightDir)`); the LightDirection semantic, as SAS's Direction, points from
+    // the light into the scene.
+    bool towardsLight = false;
     // CompiledEffect::lights index of the light whose matrices or properties the value is (a `frustum` or
     // `Object` annotation, or light0 for a light property without one); -1: the render port's or the
     // object's.
@@ -68,7 +79,8 @@ struct SemanticBinding {
 
 // True for the kinds the runtime writes a value for (neither None, a tunable nor StandardsGlobal).
 bool isBoundSemantic(SemanticKind kind);
-// The semantic as the docs spell it, with a matrix's suffix ("WorldViewProjectionInverse"); "" for None.
+// The semantic as the docs spell it, with a matrix's suffix ("WorldViewProjectionInverse") or what a
+// light property's flags say ("LightDirection of each light in view space"); "" for None.
 std::string semanticBindingName(const SemanticBinding& binding);
 // Every semantic the runtime gives a value or reads, as the docs spell them (shadowfx info lists them).
 std::vector<std::string> standardSemanticNames();

@@ -96,10 +96,15 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         const bool isLightProperty =
             standard.kind == Kind::LightPosition || standard.kind == Kind::LightDirection ||
             standard.kind == Kind::LightColor || standard.kind == Kind::LightAreaRadius;
-        if (isLightProperty && standard.light < 0) continue;
+        if (isLightProperty && standard.light < 0 && !standard.eachLight) continue;
         Binding binding{i, standard.kind};
         binding.inverse = standard.inverse;
         binding.transpose = standard.transpose;
+        binding.eachLight = standard.eachLight;
+        binding.viewSpace = standard.viewSpace;
+        binding.towardsLight = standard.towardsLight;
+        if (standard.eachLight && !parameter.type.arrayDims.empty())
+            mLightCountLimit = std::min(mLightCountLimit, parameter.type.arrayDims.front());
         // CompiledEffect::lights took the first slots in order: the compiler's index is the slot.
         binding.lightSlot = standard.light;
         mBindings.push_back(binding);
@@ -307,6 +312,38 @@ void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) con
     }
 }
 
+// Element k is the property of the scene's light k (a position in world space, or the port's view space
+// where the binding says so; a directional light's position is where its view is placed); elements past
+// the scene's last light are zero, so a loop over them adds no light.
+void SemanticBinder::storeEachLight(const Binding& binding, const RenderPortView& port,
+                                    fx::Value& value) const {
+    const int count = value.type.arrayDims.empty() ? 1 : value.type.arrayDims.front();
+    std::vector<float> elements(static_cast<size_t>(count) * 4, 0.0f);
+    for (int k = 0; k < count && static_cast<size_t>(k) < mScene->lights.size(); ++k) {
+        const Light& light = mScene->lights[static_cast<size_t>(k)];
+        glm::vec4 element(0.0f);
+        switch (binding.kind) {
+            case Kind::LightPosition:
+                element = glm::vec4(light.position, 1.0f);
+                break;
+            case Kind::LightDirection:
+                element = glm::vec4(binding.towardsLight ? -light.direction : light.direction, 0.0f);
+                break;
+            case Kind::LightColor:
+                element = glm::vec4(light.color, 1.0f);
+                break;
+            case Kind::LightAreaRadius:
+                element = glm::vec4(light.areaRadius);
+                break;
+            default:
+                break;
+        }
+        if (binding.viewSpace) element = port.view * element;
+        std::copy_n(&element[0], 4, elements.begin() + k * 4);
+    }
+    storeElements(value, elements, 1, 4);
+}
+
 bool SemanticBinder::isBound(size_t parameter) const {
     return std::any_of(mBindings.begin(), mBindings.end(),
                        [parameter](const Binding& b) { return b.active && b.parameter == parameter; });
@@ -393,6 +430,10 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
                            float time, const glm::mat4& world, fx::Value& value) const {
     glm::mat4 view = port.view;
     glm::mat4 projection = port.projection;
+    if (binding.eachLight) {
+        storeEachLight(binding, port, value);
+        return;
+    }
     if (binding.light) {
         view = binding.lightView;
         projection = binding.lightProjection;
@@ -451,12 +492,16 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             const glm::vec3 position = light.type == Light::Type::Directional
                                            ? glm::vec3(glm::inverse(binding.lightView)[3])
                                            : light.position;
-            storeVector(value, glm::vec4(position, 1.0f));
+            storeVector(
+                value, binding.viewSpace ? port.view * glm::vec4(position, 1.0f) : glm::vec4(position, 1.0f));
             return;
         }
-        case Kind::LightDirection:
-            storeVector(value, glm::vec4(binding.light->direction, 0.0f));
+        case Kind::LightDirection: {
+            const glm::vec4 direction(
+                binding.towardsLight ? -binding.light->direction : binding.light->direction, 0.0f);
+            storeVector(value, binding.viewSpace ? port.view * direction : direction);
             return;
+        }
         case Kind::LightColor:
             storeVector(value, glm::vec4(binding.light->color, 1.0f));
             return;
@@ -468,6 +513,10 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             return;
         case Kind::Ambient:
             storeVector(value, glm::vec4(mScene->ambient, 1.0f));
+            return;
+        case Kind::LightCount:
+            storeVector(value, glm::vec4(static_cast<float>(
+                                   std::min(static_cast<int>(mScene->lights.size()), mLightCountLimit))));
             return;
         case Kind::SceneHasClosedObjects:
             storeVector(value, glm::vec4(mHasClosedObjects ? 1.0f : 0.0f));

@@ -8,8 +8,9 @@
 // Position/LightPosition, Direction/LightDirection and LightColor, LightAreaRadius/LightSize (the light's
 // areaRadius in world units, for soft-shadow filters) (light named by an Object/frustum annotation, default
 // light0); Diffuse/MaterialDiffuse (the object's colour; with an Object annotation, the light's colour) and
-// Ambient (the scene's ambient light). A light matrix may also carry `string Parameterization = "Uniform" |
-// "Focused" | "LiSPSM" | "TSM";` (runtime/LightParameterization.h): that light's matrices, for every
+// Ambient (the scene's ambient light), LightCount (the scene's lights, at most the shortest per-light
+// array). A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" |
+// "TSM";` (runtime/LightParameterization.h): that light's matrices, for every
 // parameter and for RenderPort=lightN, are then the provider's fit, with tunables from the parameters with
 // semantics LiSPSMNScale, LiSPSMNOpt (a string), LiSPSMDepthExtent, LiSPSMMiddleVector, LightPancaking,
 // TSMFocus, PSMSlideBack, PSMMaxWarpRatio, CascadeCount, CascadeSplitLambda, CascadeBlend and
@@ -22,7 +23,9 @@
 // cube frame whose dominant axis picks a point's face). Scene-driven choices: SceneHasClosedObjects (true
 // if any object's mesh is closed: a second depth layer can matter) and LightAreaRadius (0 = no soft-shadow
 // filter needed). A parameter without a semantic whose name follows D3D applications' conventions
-// (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`) is bound as the semantic it spells. The compiler
+// (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`; without an initializer also lights, colours and
+// the light count: `g_LightDir[3]`, `g_MaterialDiffuseColor`, `g_nNumLights`) is bound as the semantic it
+// spells; an array of a light's property holds one element per light of the scene. The compiler
 // classifies each parameter (fx::ParameterInfo::standard, fx/ParameterSemantics.h): the binder reads no
 // semantic's text.
 #pragma once
@@ -36,6 +39,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -147,7 +151,10 @@ private:
         Kind kind;
         bool inverse = false;
         bool transpose = false;
-        int lightSlot = -1;  // frustum/Object annotation (matrices), or the light of a light property
+        int lightSlot = -1;         // frustum/Object annotation (matrices), or the light of a light property
+        bool eachLight = false;     // fx::SemanticBinding::eachLight: element k is the scene's light k
+        bool viewSpace = false;     // fx::SemanticBinding::viewSpace
+        bool towardsLight = false;  // fx::SemanticBinding::towardsLight: a direction negated
         // Per frame (prepare()): the slot's light, null where the binding is not written this frame.
         const Light* light = nullptr;
         bool active = true;
@@ -180,6 +187,7 @@ private:
     };
     const FittedLight& fittedLight(const Light& light);
     void storeCascades(const Binding& binding, fx::Value& value) const;
+    void storeEachLight(const Binding& binding, const RenderPortView& port, fx::Value& value) const;
 
     const std::vector<fx::ParameterInfo>& mParameters;
     const Scene* mScene = nullptr;
@@ -189,6 +197,9 @@ private:
     std::vector<FitInput> mFitInputs;
     std::vector<FittedLight> mFittedLights;  // one per light any parameter names, fitted once per frame
     bool mHasClosedObjects = false;
+    // LightCount's most: the fewest elements of the effect's per-light arrays (a loop over that many
+    // lights indexes no element past their ends), or no limit without such arrays.
+    int mLightCountLimit = std::numeric_limits<int>::max();
     std::vector<Binding> mBindings;
     std::vector<size_t> mObjectBindings;  // indices in mBindings of those that depend on the object
     std::vector<size_t> mFrameBindings;   // of those whose value is the frame's (ResetPulse)
