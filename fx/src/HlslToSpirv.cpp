@@ -2,6 +2,7 @@
 #include "HlslToSpirv.h"
 
 #include "BoolCompoundAssignments.h"
+#include "ElementWiseProducts.h"
 #include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
 #include "MulOperands.h"
@@ -194,6 +195,8 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
+            const std::vector<HlslMessage> productErrors =
+                detail::makeStarProductsElementWise(*program.getIntermediate(language), tokens);
             HighestSymbolId symbols;
             program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
             const std::vector<HlslMessage> swizzlesLeft =
@@ -201,8 +204,9 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), swizzlesLeft.begin(), swizzlesLeft.end());
             HighestSymbolId afterSwizzles;
             program.getIntermediate(language)->getTreeRoot()->traverse(&afterSwizzles);
-            const std::vector<HlslMessage> matrixErrors = detail::splitIntegerMatrixOperations(
+            std::vector<HlslMessage> matrixErrors = detail::splitIntegerMatrixOperations(
                 *program.getIntermediate(language), afterSwizzles.highest + 1);
+            matrixErrors.insert(matrixErrors.begin(), productErrors.begin(), productErrors.end());
             syntaxTreeWarnings.insert(syntaxTreeWarnings.end(), matrixErrors.begin(), matrixErrors.end());
             HighestSymbolId afterMatrices;
             program.getIntermediate(language)->getTreeRoot()->traverse(&afterMatrices);

@@ -387,6 +387,35 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_TRUE(test::compilesAsGlsl450(compiled->techniques[0].passes[0].fragment));
 }
 
+// HLSL's `*` multiplies matrices element by element; one of matrices of different shapes, or of a vector
+// and a matrix, which glslang reads as a product and fxc truncated first, is an error at the operator.
+TEST(HlslLegalization, AStarProductOfDifferentShapesIsAnErrorAtTheOperator) {
+    for (const char* statement :
+         {"float2x2 m = M23 * M32;", "float3 v = V * M33;", "float2x3 m = M23; m *= M22;"}) {
+        DiagnosticList diags;
+        auto effect = parse(std::string(R"(float2x3 M23; float3x2 M32; float3x3 M33; float2x2 M22; float3 V;
+float4 PS() : SV_Target {
+    )") + statement + R"(
+    return 1;
+}
+technique10 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                            diags);
+        ASSERT_TRUE(effect) << diags.str();
+        DiagnosticList compileDiags;
+        EXPECT_FALSE(compileEffect(effect, CompileOptions{}, compileDiags) && !compileDiags.hasErrors())
+            << statement;
+        ASSERT_FALSE(compileDiags.items().empty()) << statement;
+        const Diagnostic& error = compileDiags.items().front();
+        EXPECT_EQ(error.id, DiagId::HlslError) << compileDiags.str();
+        EXPECT_EQ(error.loc.file, "legal.fx");
+        EXPECT_EQ(error.loc.line, 3) << compileDiags.str();
+        EXPECT_EQ(error.loc.column, static_cast<int>(std::string(statement).find('*')) + 5)
+            << compileDiags.str();
+        EXPECT_NE(error.message.find("element by element"), std::string::npos) << error.message;
+    }
+}
+
 TEST(HlslLegalization, IntegerMatrixOperationsThatCannotBeSplitAreLocatedErrors) {
     struct Case {
         const char* declarations;

@@ -1,0 +1,58 @@
+// HLSL's `*` of two matrices multiplies them element by element (`m * n`, `m *= n`), of float and integer
+// matrices alike, while mul() is their product; glslang's HLSL front end read `*` as a product until
+// shadowfx rewrote it (docs/legalization.md, "Element-wise products"). A pixel shader checks each result
+// against the values HLSL defines and draws yellow where every check holds: red for the element-wise
+// products, green for mul(). A blank frame, or either check failing, has no yellow pixel.
+#include "EffectHarness.h"
+
+#include <runtime/BuiltinScenes.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace shadowfx::test::test_element_wise_products {
+namespace {
+
+const char* kProducts = R"(
+float4x4 Wvp : WorldViewProjection;
+float3x3 A = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+float3x3 B = {2, 3, 5, 7, 11, 13, 17, 19, 23};
+int2x2 I = {1, -2, 3, 4};
+int2x2 J = {5, 6, -7, 8};
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, Wvp); }
+float4 PS() : SV_Target {
+    float3x3 e = A * B;
+    float3x3 f = A;
+    f *= B;
+    int2x2 k = I * J;
+    int2x2 l = I;
+    l *= J;
+    bool elementWise = e[0][1] == 6 && e[1][2] == 78 && e[2][0] == 119 && f[2][2] == 207 && f[0][0] == 2 &&
+                       k[0][1] == -12 && k[1][0] == -21 && l[1][1] == 32;
+    // mul(A, B)[0][1] = 1*3 + 2*11 + 3*19; [2][0] = 7*2 + 8*7 + 9*17.
+    float3x3 p = mul(A, B);
+    bool product = p[0][1] == 82 && p[2][0] == 223;
+    return float4(elementWise ? 1 : 0, product ? 1 : 0, 0, 1);
+}
+technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+
+TEST(ElementWiseProducts, StarMultipliesMatricesElementByElementAndMulIsTheirProduct) {
+    auto renderer = loadEffect(kProducts, false, "products.fx");
+    ASSERT_TRUE(renderer);
+    auto scene = runtime::makeBuiltinScene("teapot", nullptr);
+    ASSERT_TRUE(scene);
+    constexpr int kWidth = 96, kHeight = 72;
+    ASSERT_TRUE(render(*renderer, *scene, kWidth, kHeight));
+    const runtime::FrameImage frame = renderer->readFrame();
+    const int yellow = countPixelsOfColour(frame, kWidth, kHeight, 255, 255, 0);
+    EXPECT_GT(yellow, kWidth * kHeight / 50);
+    // Nothing the object covers fails a check (red or green alone, or black).
+    EXPECT_EQ(countPixelsOfColour(frame, kWidth, kHeight, 0, 255, 0), 0);
+    EXPECT_EQ(countPixelsOfColour(frame, kWidth, kHeight, 255, 0, 0), 0);
+    EXPECT_EQ(countPixelsOfColour(frame, kWidth, kHeight, 0, 0, 0), 0);
+}
+
+}  // namespace
+}  // namespace shadowfx::test::test_element_wise_products
