@@ -8,6 +8,7 @@
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 
@@ -231,15 +232,18 @@ technique t { pass p { VertexShader = compile vs_1_1 VS(); PixelShader = null; }
 }
 
 // FXCOMPOSER_RESETPULSE is true in the first frame after the effect is created and after reset(), false
-// in the others: a script's LoopByCount reads it before the frame's first pass (the red clear runs only
-// then) and a shader reads it as a uniform (the left half green in a reset frame, blue in the others).
+// in the others: a script's LoopByCount reads it before the frame's first pass (the clear pass runs only
+// then) and a shader reads it as a uniform (the left half green in a reset frame, blue in the others). The
+// clear pass draws ClearTint, changed to yellow after the first frame: the right half stays the red of the
+// last reset frame (a scene effect's frame is kept), yellow after reset().
 TEST(FxComposerHost, ResetPulseIsTrueInTheFirstFrameAndAfterReset) {
     auto renderer = loadEffect(R"(bool bReset : FXCOMPOSER_RESETPULSE;
+float4 ClearTint = {1, 0, 0, 1};
 float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "standard";
     string ScriptOutput = "color"; string Script = "Technique=Main;"; > = 0.8;
 struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
 Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
-float4 ClearPS(Q i) : COLOR { return float4(1, 0, 0, 1); }
+float4 ClearPS(Q i) : COLOR { return ClearTint; }
 float4 MarkPS(Q i) : COLOR {
     clip(0.5 - i.UV.x);
     return bReset ? float4(0, 1, 0, 1) : float4(0, 0, 1, 1);
@@ -255,28 +259,98 @@ technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=
                                false);
     ASSERT_TRUE(renderer);
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
-    const auto expectFrame = [&](bool resetFrame) {
+    const auto expectFrame = [&](bool resetFrame, std::array<int, 3> right) {
         ASSERT_TRUE(render(*renderer, scene, kWidth, kHeight));
         const runtime::FrameImage frame = renderer->readFrame();
         const uint8_t* left = frame.pixel(kWidth / 4, kHeight / 2);
-        const uint8_t* right = frame.pixel(3 * kWidth / 4, kHeight / 2);
+        const uint8_t* rightPixel = frame.pixel(3 * kWidth / 4, kHeight / 2);
         EXPECT_EQ(left[0], 0);
         EXPECT_EQ(left[1], resetFrame ? 255 : 0);
         EXPECT_EQ(left[2], resetFrame ? 0 : 255);
-        if (resetFrame) {
-            EXPECT_EQ(right[0], 255);
-            EXPECT_EQ(right[1], 0);
-            EXPECT_EQ(right[2], 0);
-        } else {
-            EXPECT_TRUE(isBackground(right));
-        }
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(rightPixel[c], right[c]) << "channel " << c;
     };
-    expectFrame(true);
-    expectFrame(false);
-    expectFrame(false);
+    constexpr std::array<int, 3> kRed{255, 0, 0}, kYellow{255, 255, 0};
+    expectFrame(true, kRed);
+    renderer->setParameter(*renderer->findParameter("ClearTint"), fx::Value::vector({1, 1, 0, 1}));
+    expectFrame(false, kRed);
+    expectFrame(false, kRed);
     renderer->reset();
-    expectFrame(true);
-    expectFrame(false);
+    expectFrame(true, kYellow);
+    expectFrame(false, kYellow);
+}
+
+// A scene effect that paints into the frame over many frames and clears it only on a reset (NVIDIA's
+// paint_brush.fx): the host clears nothing before its frames after the first, so a stroke painted in one
+// frame is still there in the next, on the canvas the reset drew, as FX Composer kept the frame for it. A
+// frame of a new size starts on the host's background again; a material effect's frames always do.
+TEST(FxComposerHost, SceneEffectKeepsWhatItPaintedInTheFrameUntilAResetOrANewSize) {
+    const auto paintEffect = [](const std::string& scriptClass) {
+        return R"(bool bReset : FXCOMPOSER_RESETPULSE;
+float2 BrushPos = {0.25, 0.5};
+float Script : STANDARDSGLOBAL < string ScriptClass = ")" +
+               scriptClass + R"("; string ScriptOrder = "standard";
+    string ScriptOutput = "color"; string Script = "Technique=Main;"; > = 0.8;
+struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
+Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
+float4 CanvasPS(Q i) : COLOR { return float4(1, 1, 1, 1); }
+float4 SplatPS(Q i) : COLOR { return float4(0, 0, 1, length(i.UV - BrushPos) < 0.15 ? 1 : 0); }
+technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
+    "LoopByCount=bReset; Pass=revert; LoopEnd=; Pass=splat;"; > {
+    pass revert < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 CanvasPS(); ZEnable = false; }
+    pass splat < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
+        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
+}
+)";
+    };
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    const auto isWhite = [](const uint8_t* p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; };
+    const auto isPaint = [](const uint8_t* p) { return p[0] == 0 && p[1] == 0 && p[2] == 255; };
+    // The frame's corner (canvas), the first stroke (left) and the second (right), at a width x height frame.
+    struct Frame {
+        const uint8_t *corner, *left, *right;
+    };
+    const auto paintFrame = [&](runtime::EffectRenderer& renderer, float brushX, int width, int height,
+                                runtime::FrameImage& image) -> Frame {
+        renderer.setParameter(*renderer.findParameter("BrushPos"), fx::Value::vector({brushX, 0.5f}));
+        EXPECT_TRUE(render(renderer, scene, width, height));
+        image = renderer.readFrame();
+        EXPECT_TRUE(notConstant(image));
+        return {image.pixel(1, 1), image.pixel(width / 4, height / 2),
+                image.pixel(3 * width / 4, height / 2)};
+    };
+
+    auto scenePaint = loadEffect(paintEffect("scene"), false);
+    ASSERT_TRUE(scenePaint);
+    runtime::FrameImage image;
+    Frame frame = paintFrame(*scenePaint, 0.25f, kWidth, kHeight, image);  // the reset frame
+    EXPECT_TRUE(isWhite(frame.corner));
+    EXPECT_TRUE(isPaint(frame.left));
+    EXPECT_TRUE(isWhite(frame.right));
+    frame = paintFrame(*scenePaint, 0.75f, kWidth, kHeight, image);
+    EXPECT_TRUE(isWhite(frame.corner));
+    EXPECT_TRUE(isPaint(frame.left)) << "the stroke of the frame before is gone";
+    EXPECT_TRUE(isPaint(frame.right));
+    // A new size: new frame targets, cleared by the host; no reset, so no canvas.
+    frame = paintFrame(*scenePaint, 0.75f, kWidth / 2, kHeight / 2, image);
+    EXPECT_TRUE(isBackground(frame.corner));
+    EXPECT_TRUE(isBackground(frame.left));
+    EXPECT_TRUE(isPaint(frame.right));
+    scenePaint->reset();
+    frame = paintFrame(*scenePaint, 0.75f, kWidth / 2, kHeight / 2, image);
+    EXPECT_TRUE(isWhite(frame.corner));
+    EXPECT_TRUE(isWhite(frame.left));
+    EXPECT_TRUE(isPaint(frame.right));
+
+    // A material effect's frame starts on the host's background in every frame.
+    auto objectPaint = loadEffect(paintEffect("object"), false);
+    ASSERT_TRUE(objectPaint);
+    paintFrame(*objectPaint, 0.25f, kWidth, kHeight, image);
+    frame = paintFrame(*objectPaint, 0.75f, kWidth, kHeight, image);
+    EXPECT_TRUE(isBackground(frame.corner));
+    EXPECT_TRUE(isBackground(frame.left));
+    EXPECT_TRUE(isPaint(frame.right));
 }
 
 // Every effect written in FX Composer's or the DirectX SDK's style (tests/data/fxcomposer/, the encoded

@@ -225,7 +225,8 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     }
 
     // The frame's own values, before a Technique= selector or the script (and its dry run) reads them.
-    mImpl->binder->setResetPulse(mImpl->resetPending);
+    const bool resetFrame = mImpl->resetPending;
+    mImpl->binder->setResetPulse(resetFrame);
     mImpl->resetPending = false;
     mImpl->values.bindSemantics(*mImpl->binder, RenderPortView{}, nullptr, options.time,
                                 SemanticBinder::Scope::PerFrame, nullptr);
@@ -260,7 +261,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     // Render targets are allocated once an operation that runs needs them (below); the frame's own now.
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
-    mImpl->textures->ensureFrame(options.width, options.height, &neededTargets);
+    const bool newFrameTargets = mImpl->textures->ensureFrame(options.width, options.height, &neededTargets);
+    // A scene effect's frame as it left it, unless this frame starts a picture (EffectResources::keepsFrame).
+    const bool keepFrame = mImpl->keepsFrame && !resetFrame && !newFrameTargets;
     if (rebased) mImpl->sceneCache.update(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).
@@ -297,7 +300,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
         plan.beginRecording();
         PlanRecorder recorder(*mImpl, frameScene, options, binder, uses, techniqueIndex, body, plan,
                               diagnostics);
-        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
+        ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, keepFrame,
                                mImpl->frameScratch.scriptLoops, recorder, dryRunDiagnostics);
         plan.finishRecording();
         // FrameOptions::outputTargets, found by name again only when the names change.
@@ -331,7 +334,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
 
     FrameExecutor executor(*mImpl, frameScene, options, diagnostics, frameStats, techniqueIndex, binder, uses,
                            plan);
-    const bool ran = ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount,
+    const bool ran = ScriptInterpreter::run(*technique, mImpl->effect().maxScriptLoopCount, keepFrame,
                                             mImpl->frameScratch.scriptLoops, executor, diagnostics);
     executor.finish();
     frameStats.preshaderRuns = preshaderRuns() - runsBefore;

@@ -365,14 +365,16 @@ bool EffectTextures::createFileTextures(const std::vector<fx::Value>& values, Un
     return true;
 }
 
-void EffectTextures::ensureFrame(int width, int height, const std::vector<bool>* needed) {
-    if (mFrameColor.width() != width || mFrameColor.height() != height) {
+bool EffectTextures::ensureFrame(int width, int height, const std::vector<bool>* needed) {
+    const bool made = mFrameColor.width() != width || mFrameColor.height() != height;
+    if (made) {
         if (mFrameColor) mFramebuffers.evict(mFrameColor);
         if (mFrameDepth) mFramebuffers.evict(mFrameDepth);
         mFrameColor = GpuTexture::create2D(fx::TextureFormat::RGBA8, width, height);
         mFrameDepth = GpuTexture::create2D(fx::TextureFormat::D24S8, width, height);
     }
     ensureRenderTargets(width, height, needed);
+    return made;
 }
 
 void EffectTextures::ensureRenderTargets(int width, int height, const std::vector<bool>* needed) {

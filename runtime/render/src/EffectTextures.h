@@ -45,7 +45,8 @@ public:
 
     // (Re)allocates the frame's colour and depth targets at width x height and the render targets sized by
     // it. `needed`: the render targets to allocate (null: all); others already allocated are still resized.
-    void ensureFrame(int width, int height, const std::vector<bool>* needed = nullptr);
+    // True when the frame's targets were made anew (the first frame, a new size): they hold no picture.
+    bool ensureFrame(int width, int height, const std::vector<bool>* needed = nullptr);
     // The render targets alone, for a frame of width x height (the application's viewport, EffectPass.h).
     void ensureRenderTargets(int width, int height, const std::vector<bool>* needed = nullptr);
     // EffectRenderer::setTexture: a read texture's texels replaced. False, with a diagnostic, for a

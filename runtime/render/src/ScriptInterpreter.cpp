@@ -90,10 +90,10 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
     return false;
 }
 
-bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopCount, ScriptLoopStack& loops,
-                            ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
+bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopCount, bool keepFrame,
+                            ScriptLoopStack& loops, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     loops.clear();
-    if (!clearsFrame(technique)) {
+    if (!keepFrame && !clearsFrame(technique)) {
         // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
         // clears to the host background, as in FX Composer.
         static const fx::Value kBackground =
