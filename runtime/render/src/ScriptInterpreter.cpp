@@ -93,17 +93,19 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
 bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopCount, bool keepFrame,
                             ScriptLoopStack& loops, ScriptTarget& target, fx::DiagnosticSink& diagnostics) {
     loops.clear();
-    if (!keepFrame && !clearsFrame(technique)) {
-        // The host's clear (HostScene.h). The clear values stay set: a later Clear without ClearSet*
-        // clears to the host background, as in FX Composer.
+    if (!clearsFrame(technique)) {
+        // The host's clear values (HostScene.h), set in every frame: a later Clear without ClearSet*
+        // clears to the host background, as in FX Composer, in a kept frame too. The host's clear itself
+        // only where the frame is not kept.
         static const fx::Value kBackground =
             fx::Value::vector({kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a});
         target.setClearColor(kBackground);
         target.setClearDepth(1.0f);
         target.setClearStencil(0);
-        for (Command::ClearWhat what :
-             {Command::ClearWhat::Color, Command::ClearWhat::Depth, Command::ClearWhat::Stencil})
-            target.clear(what);
+        if (!keepFrame)
+            for (Command::ClearWhat what :
+                 {Command::ClearWhat::Color, Command::ClearWhat::Depth, Command::ClearWhat::Stencil})
+                target.clear(what);
     }
     if (technique.hasScript)
         return runCommands(technique.script, technique, nullptr, maxLoopCount, loops, target, diagnostics);
