@@ -24,6 +24,11 @@ std::string typeName(const TType& type) {
     return type.getVectorSize() > 1 ? base + std::to_string(type.getVectorSize()) : base;
 }
 
+// Whether `a` stands before `b` in the same file of the unit.
+bool before(const glslang::TSourceLoc& a, const glslang::TSourceLoc& b) {
+    return a.string == b.string && (a.line < b.line || (a.line == b.line && a.column < b.column));
+}
+
 class StarProducts : public glslang::TIntermTraverser {
 public:
     explicit StarProducts(std::set<Place> stars)
@@ -40,6 +45,10 @@ public:
         if (!ofMatrices && !withVector) return true;
         const glslang::TSourceLoc& at = node->getLoc();
         if (mStars.count(Place{at.getFilenameStr(), at.line, at.column}) == 0) return true;  // a mul()
+        // A `*` stands between its operands; mul(a, b) is built with its operands swapped, so one of them
+        // stands on the far side of the call's place. This keeps a mul() that happens to share a `*`'s
+        // place (a function's copies, generated code behind its own #line) a product.
+        if (before(at, node->getLeft()->getLoc()) || before(node->getRight()->getLoc(), at)) return true;
         const TType& left = node->getLeft()->getType();
         const TType& right = node->getRight()->getType();
         // A product of two matrices of one shape is one of square matrices, whose result has that shape too.

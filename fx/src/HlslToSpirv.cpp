@@ -195,8 +195,10 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
-            const std::vector<HlslMessage> productErrors =
-                detail::makeStarProductsElementWise(*program.getIntermediate(language), tokens);
+            // The places of the text glslang parsed: the postfix rewrite may have moved a line's tokens.
+            const std::vector<HlslMessage> productErrors = detail::makeStarProductsElementWise(
+                *program.getIntermediate(language),
+                postfix.text == source ? tokens : detail::lexHlslUnit(postfix.text));
             HighestSymbolId symbols;
             program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
             const std::vector<HlslMessage> swizzlesLeft =

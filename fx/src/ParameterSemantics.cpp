@@ -359,7 +359,7 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
     const bool spellsLight = upperCase(semantic).rfind("LIGHT", 0) == 0;
     // An array of a light's property without a light named: one element per light of the scene.
     if (parameter.light.empty() && isLightProperty && !isCascadeProperty && spellsLight &&
-        !parameter.type.arrayDims.empty()) {
+        parameter.type.arrayDims.size() == 1) {
         binding.eachLight = true;
         return binding;
     }

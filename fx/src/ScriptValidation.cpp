@@ -213,6 +213,16 @@ void Compiler::scripts() {
         parameter.standard = classifySemantic(parameter, hasInitializer, semanticLight);
         if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
     }
+    // A light count read by its name indexes per-light arrays, and the runtime keeps it within the
+    // shortest one it fills: without such an array it would count lights into arrays of unknown length,
+    // so it is not bound. A LightCount semantic is what its author asked for.
+    const bool hasPerLightArray =
+        std::any_of(mOut->parameters.begin(), mOut->parameters.end(),
+                    [](const ParameterInfo& parameter) { return parameter.standard.eachLight; });
+    if (!hasPerLightArray)
+        for (ParameterInfo& parameter : mOut->parameters)
+            if (parameter.standard.kind == SemanticKind::LightCount && parameter.standard.byName)
+                parameter.standard = SemanticBinding{};
     for (const Parameter& p : mEffect.parameters) {
         if (upperCase(p.semantic) != "STANDARDSGLOBAL") continue;
         mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);

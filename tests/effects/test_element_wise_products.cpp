@@ -25,11 +25,14 @@ float4 PS() : SV_Target {
     float3x3 e = A * B;
     float3x3 f = A;
     f *= B;
+    // A postfix step before the `*` on its line: glslang parses it as a prefix one, which moves the line.
+    float3x3 g = A;
+    for (int i = 0; i < 1; i++) g = g * B;
     int2x2 k = I * J;
     int2x2 l = I;
     l *= J;
     bool elementWise = e[0][1] == 6 && e[1][2] == 78 && e[2][0] == 119 && f[2][2] == 207 && f[0][0] == 2 &&
-                       k[0][1] == -12 && k[1][0] == -21 && l[1][1] == 32;
+                       g[1][2] == 78 && k[0][1] == -12 && k[1][0] == -21 && l[1][1] == 32;
     // mul(A, B)[0][1] = 1*3 + 2*11 + 3*19; [2][0] = 7*2 + 8*7 + 9*17.
     float3x3 p = mul(A, B);
     bool product = p[0][1] == 82 && p[2][0] == 223;

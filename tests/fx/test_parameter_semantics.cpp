@@ -154,6 +154,21 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_TRUE(semanticArray.eachLight && !semanticArray.towardsLight && !semanticArray.byName);
     EXPECT_FALSE(standard(*effect, "Positions").eachLight);
     EXPECT_EQ(standard(*effect, "Positions").light, -1);
+
+    // A light count without a per-light array to keep it within, and an array of arrays, stay unbound
+    // by the count and the elements.
+    const std::shared_ptr<CompiledEffect> single = compile(R"(
+int g_nNumLights;
+float3 g_LightDir;
+float3 Grid[2][3] : LightDirection;
+float4 VS(float4 p : POSITION) : POSITION { return p + float4(g_LightDir + Grid[1][2], g_nNumLights); }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                           "single.fx");
+    ASSERT_TRUE(single);
+    EXPECT_EQ(standard(*single, "g_nNumLights").kind, SemanticKind::None);
+    EXPECT_EQ(standard(*single, "g_LightDir").kind, SemanticKind::LightDirection);
+    EXPECT_FALSE(standard(*single, "Grid").eachLight);
 }
 
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {

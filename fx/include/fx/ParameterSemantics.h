@@ -61,8 +61,8 @@ struct SemanticBinding {
     bool transpose = false;
     // Read from the parameter's name (`gWorldViewProj`): it was written without a semantic.
     bool byName = false;
-    // A light property of an array without a light annotation (`float3 g_LightDir[3]`): element k is the
-    // scene's k-th light, zero past the last one; `light` stays -1.
+    // A light property of a one-dimensional array without a light annotation (`float3 g_LightDir[3]`):
+    // element k is the scene's k-th light, zero past the last one; `light` stays -1.
     bool eachLight = false;
     // A light's position or direction in the view space of the render port (`g_ViewSpaceLightDir`), not
     // in world space.

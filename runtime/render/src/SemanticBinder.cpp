@@ -312,9 +312,10 @@ void SemanticBinder::storeCascades(const Binding& binding, fx::Value& value) con
     }
 }
 
-// Element k is the property of the scene's light k (a position in world space, or the port's view space
-// where the binding says so; a directional light's position is where its view is placed); elements past
-// the scene's last light are zero, so a loop over them adds no light.
+// Element k is the property of the scene's light k (in world space, or the port's view space where the
+// binding says so). A position is the light's as the scene gives it, also a directional light's (the
+// single LightPosition binding gives the eye of the light's fitted view instead: it is bound with the
+// light's matrices). Elements past the scene's last light are zero, so a loop over them adds no light.
 void SemanticBinder::storeEachLight(const Binding& binding, const RenderPortView& port,
                                     fx::Value& value) const {
     const int count = value.type.arrayDims.empty() ? 1 : value.type.arrayDims.front();
