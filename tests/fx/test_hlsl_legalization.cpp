@@ -387,31 +387,40 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_TRUE(test::compilesAsGlsl450(compiled->techniques[0].passes[0].fragment));
 }
 
+// Parses and compiles `source`, which must parse and must not compile: its first diagnostic, an error in
+// legal.fx.
+Diagnostic firstCompileError(const std::string& source) {
+    DiagnosticList diags;
+    auto effect = parse(source, diags);
+    EXPECT_TRUE(effect) << diags.str();
+    if (!effect) return {};
+    DiagnosticList compileDiags;
+    EXPECT_FALSE(compileEffect(effect, CompileOptions{}, compileDiags) && !compileDiags.hasErrors())
+        << source;
+    EXPECT_FALSE(compileDiags.items().empty()) << source;
+    if (compileDiags.items().empty()) return {};
+    const Diagnostic error = compileDiags.items().front();
+    EXPECT_EQ(error.severity, Severity::Error) << compileDiags.str();
+    EXPECT_EQ(error.loc.file, "legal.fx") << compileDiags.str();
+    return error;
+}
+
 // HLSL's `*` multiplies matrices element by element; one of matrices of different shapes, or of a vector
 // and a matrix, which glslang reads as a product and fxc truncated first, is an error at the operator.
 TEST(HlslLegalization, AStarProductOfDifferentShapesIsAnErrorAtTheOperator) {
     for (const char* statement :
          {"float2x2 m = M23 * M32;", "float3 v = V * M33;", "float2x3 m = M23; m *= M22;"}) {
-        DiagnosticList diags;
-        auto effect = parse(std::string(R"(float2x3 M23; float3x2 M32; float3x3 M33; float2x2 M22; float3 V;
+        const Diagnostic error =
+            firstCompileError(std::string(R"(float2x3 M23; float3x2 M32; float3x3 M33; float2x2 M22; float3 V;
 float4 PS() : SV_Target {
     )") + statement + R"(
     return 1;
 }
 technique10 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
-)",
-                            diags);
-        ASSERT_TRUE(effect) << diags.str();
-        DiagnosticList compileDiags;
-        EXPECT_FALSE(compileEffect(effect, CompileOptions{}, compileDiags) && !compileDiags.hasErrors())
-            << statement;
-        ASSERT_FALSE(compileDiags.items().empty()) << statement;
-        const Diagnostic& error = compileDiags.items().front();
-        EXPECT_EQ(error.id, DiagId::HlslError) << compileDiags.str();
-        EXPECT_EQ(error.loc.file, "legal.fx");
-        EXPECT_EQ(error.loc.line, 3) << compileDiags.str();
-        EXPECT_EQ(error.loc.column, static_cast<int>(std::string(statement).find('*')) + 5)
-            << compileDiags.str();
+)");
+        EXPECT_EQ(error.id, DiagId::HlslError) << error.message;
+        EXPECT_EQ(error.loc.line, 3) << error.message;
+        EXPECT_EQ(error.loc.column, static_cast<int>(std::string(statement).find('*')) + 5) << error.message;
         EXPECT_NE(error.message.find("element by element"), std::string::npos) << error.message;
     }
 }
@@ -435,29 +444,19 @@ TEST(HlslLegalization, IntegerMatrixOperationsThatCannotBeSplitAreLocatedErrors)
              Case{"RWByteAddressBuffer Words; struct S { int3x2 m; }; cbuffer Params { S s; }",
                   "Words.Store(0, s.m[2].y + i);", DiagId::CrossCompileError, 0, "declare it row_major"},
          }) {
-        DiagnosticList diags;
-        auto effect = parse(std::string(c.declarations) + R"(
+        const Diagnostic error = firstCompileError(std::string(c.declarations) + R"(
 [numthreads(1, 1, 1)]
 void CS(uint i : SV_GroupIndex) {
     )" + c.statement + R"(
 }
 technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, CS())); } }
-)",
-                            diags);
-        ASSERT_TRUE(effect) << diags.str();
-        DiagnosticList compileDiags;
-        EXPECT_FALSE(compileEffect(effect, CompileOptions{}, compileDiags) && !compileDiags.hasErrors())
-            << c.statement;
-        ASSERT_FALSE(compileDiags.items().empty()) << c.statement;
-        const Diagnostic& error = compileDiags.items().front();
-        EXPECT_EQ(error.id, c.id) << compileDiags.str();
-        EXPECT_EQ(error.severity, Severity::Error);
-        EXPECT_EQ(error.loc.file, "legal.fx");
+)");
+        EXPECT_EQ(error.id, c.id) << error.message;
         // glslang places the call at its closing parenthesis; SPIRV-Cross's refusal is the shader's, at the
         // technique's CompileShader.
-        EXPECT_EQ(error.loc.line, c.id == DiagId::HlslError ? 4 : 6) << compileDiags.str();
+        EXPECT_EQ(error.loc.line, c.id == DiagId::HlslError ? 4 : 6) << error.message;
         if (c.column) {
-            EXPECT_EQ(error.loc.column, c.column) << compileDiags.str();
+            EXPECT_EQ(error.loc.column, c.column) << error.message;
         }
         EXPECT_NE(error.message.find(c.text), std::string::npos) << error.message;
     }
