@@ -275,6 +275,13 @@ technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=
     expectFrame(false, kRed);
     expectFrame(false, kRed);
     renderer->reset();
+    // A frame that cannot run (no such technique) leaves the reset to the next frame that does.
+    fx::DiagnosticList refused;
+    runtime::FrameOptions unknownTechnique;
+    unknownTechnique.width = kWidth;
+    unknownTechnique.height = kHeight;
+    unknownTechnique.technique = "NoSuchTechnique";
+    EXPECT_FALSE(renderer->render(scene, unknownTechnique, refused));
     expectFrame(true, kYellow);
     expectFrame(false, kYellow);
 }

@@ -237,7 +237,11 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     if (!choice.valid || choice.requested != options.technique) {
         const fx::CompiledTechnique* chosen = ScriptInterpreter::selectTechnique(
             mImpl->effect(), options.technique, mImpl->values.all(), diagnostics);
-        if (!chosen) return false;
+        if (!chosen) {
+            // No frame ran: the reset is still the next frame's.
+            mImpl->resetPending = resetFrame;
+            return false;
+        }
         choice.technique = static_cast<size_t>(chosen - mImpl->effect().techniques.data());
         choice.requested = options.technique;
         choice.valid = !ScriptInterpreter::selectionReadsParameters(mImpl->effect(), options.technique);
