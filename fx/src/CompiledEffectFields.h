@@ -327,7 +327,7 @@ template <class A>
 void fields(A& a, CompiledEffect& x) {
     a(x.provenance, x.path, x.parameters, x.initialValues, x.structs, x.textures, x.samplers, x.passSamplers);
     a(x.techniques);
-    a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.lights, x.maxScriptLoopCount);
+    a(x.refusedTechniques, x.hasGlobalScript, x.globalScript, x.sceneClass, x.lights, x.maxScriptLoopCount);
 }
 
 }  // namespace fx::detail

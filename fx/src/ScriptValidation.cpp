@@ -227,6 +227,9 @@ void Compiler::scripts() {
         if (upperCase(p.semantic) != "STANDARDSGLOBAL") continue;
         mOut->globalScript = script(p.annotations, mOut->hasGlobalScript);
         validateScript(mOut->globalScript, nullptr);
+        for (const Annotation& a : p.annotations)
+            if (equalsIgnoreCase(a.name, "ScriptClass") && a.value.kind == Expr::Kind::String)
+                mOut->sceneClass = equalsIgnoreCase(a.value.text, "scene");
     }
 }
 

@@ -444,6 +444,9 @@ struct CompiledEffect {
     std::vector<CompiledTechnique> techniques;
     std::vector<RefusedTechnique> refusedTechniques;  // left out by the parser or the compiler
     bool hasGlobalScript = false;
+    // The STANDARDSGLOBAL parameter's `ScriptClass = "scene"`: FX Composer handed such an effect the frame
+    // as it left it in the last frame (the runtime's host clears it only in a frame that starts a picture).
+    bool sceneClass = false;
     std::vector<ScriptCommand> globalScript;  // the STANDARDSGLOBAL parameter's Script
     // Every light the effect names, once each, as written: the parameters' `frustum`/`Object`
     // annotations and the light0 of a light property without one, in parameter order, then the scripts'

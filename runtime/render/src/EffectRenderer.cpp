@@ -266,8 +266,9 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     std::vector<bool>& neededTargets = mImpl->frameScratch.neededTargets;
     neededTargets.assign(mImpl->values.size(), false);
     const bool newFrameTargets = mImpl->textures->ensureFrame(options.width, options.height, &neededTargets);
-    // A scene effect's frame as it left it, unless this frame starts a picture (EffectResources::keepsFrame).
-    const bool keepFrame = mImpl->keepsFrame && !resetFrame && !newFrameTargets;
+    // A scene effect's frame as it left it, unless this frame starts a picture
+    // (fx::CompiledEffect::sceneClass).
+    const bool keepFrame = mImpl->effect().sceneClass && !resetFrame && !newFrameTargets;
     if (rebased) mImpl->sceneCache.update(frameScene);  // else the scene's cache, stamped above
     // Fits to what the camera sees find this frame's samples first (a pre-pass and a read-back: no frame
     // of latency).

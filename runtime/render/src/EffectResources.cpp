@@ -1,7 +1,6 @@
 // EffectResources: see EffectResources.h.
 #include "EffectResources.h"
 
-#include <fx/RenderStates.h>
 #include <private/runtime/NameLookups.h>
 
 #include <algorithm>
@@ -32,11 +31,6 @@ std::unique_ptr<EffectResources> EffectResources::create(std::shared_ptr<const f
     r.storage = StorageResources::create(*r.mCompiled);
     r.quad = GpuMesh::makeFullScreenQuad();
     r.annotations = AnnotationTable(*r.mCompiled);
-    for (const fx::ParameterInfo& parameter : parameters) {
-        if (parameter.standard.kind != fx::SemanticKind::StandardsGlobal) continue;
-        const fx::AnnotationValue* scriptClass = fx::findAnnotation(parameter.annotations, "ScriptClass");
-        r.keepsFrame = scriptClass && fx::equalsIgnoreCase(scriptClass->value.string, "scene");
-    }
     return resources;
 }
 

@@ -124,11 +124,6 @@ public:
     // The next frame is a reset frame (FXCOMPOSER_RESETPULSE reads true in it): the first one after the
     // effect is created, and the first after EffectRenderer::reset().
     bool resetPending = true;
-    // A scene effect (the STANDARDSGLOBAL parameter's `ScriptClass = "scene"`): FX Composer handed it the
-    // frame as the effect left it in the last frame, and cleared nothing before it (NVIDIA's paint_brush.fx
-    // paints over many frames). The host's clear (HostScene.h) then runs only in a frame that starts a
-    // picture: a reset frame, or one whose frame targets were made anew. Resolved at load.
-    bool keepsFrame = false;
     // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.
     SceneCache sceneCache;
     // The culling volumes' visible lists, kept while the scene and the volume stand still.

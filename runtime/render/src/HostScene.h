@@ -3,7 +3,7 @@
 // - the background: before a technique whose scripts do not clear the frame's colour target, the host
 //   clears colour to kHostBackground, depth to 1 and stencil to 0 (FX Composer cleared its viewport
 //   before drawing "object" class materials); before a "scene" class effect only in a frame that starts a
-//   picture, since FX Composer handed such an effect the frame it left (EffectResources::keepsFrame);
+//   picture, since FX Composer handed such an effect the frame it left (fx::CompiledEffect::sceneClass);
 // - `ScriptExternal=color`: where a scene or post-process script says so, the host draws the scene into
 //   the current targets with its default material (HostScenePainter).
 // docs/fxcomposer.md documents both for effect authors.

@@ -73,7 +73,7 @@ public:
     // Runs the technique's script (or, without one, every pass in order), each pass's script (or, without
     // one, Draw=Geometry). Before a technique whose scripts never clear the frame's colour target, the host
     // clears the frame (HostScene.h), unless `keepFrame`: the frame holds what a scene effect left in it in
-    // the last frame, which FX Composer kept for it (EffectResources::keepsFrame). A LoopByCount over
+    // the last frame, which FX Composer kept for it (fx::CompiledEffect::sceneClass). A LoopByCount over
     // `maxLoopCount` iterations (the effect's CompiledEffect::maxScriptLoopCount) is reported and the script
     // stops, never a hang. Returns false if the script could not run to its end. `loops` is the caller's kept
     // stack (emptied first).

@@ -103,7 +103,7 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
         binding.eachLight = standard.eachLight;
         binding.viewSpace = standard.viewSpace;
         binding.towardsLight = standard.towardsLight;
-        if (standard.eachLight && !parameter.type.arrayDims.empty())
+        if (standard.eachLight)  // a one-dimensional array (fx::SemanticBinding::eachLight)
             mLightCountLimit = std::min(mLightCountLimit, parameter.type.arrayDims.front());
         // CompiledEffect::lights took the first slots in order: the compiler's index is the slot.
         binding.lightSlot = standard.light;
