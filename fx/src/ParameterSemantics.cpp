@@ -173,18 +173,45 @@ std::string conventionalStem(std::string_view name) {
     return stem;
 }
 
+// The number of a numbered light's property, taken out of its stem: XNA's `DIRLIGHT1DIRECTION`, `LIGHT2POS`,
+// `LIGHTDIR0`; -1 where the stem names no numbered light. A `DIR`, `DIRECTIONAL`, `POINT` or `SPOT` before
+// `LIGHT` goes too (`DIRLIGHT1DIRECTION` becomes `LIGHTDIRECTION`).
+int takeLightNumber(std::string& stem) {
+    const size_t light = stem.find("LIGHT");
+    if (light == std::string::npos) return -1;
+    const auto isDigit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+    size_t first = light + 5, last = first;
+    while (last < stem.size() && isDigit(stem[last])) ++last;
+    if (last == first) {
+        last = stem.size();
+        first = last;
+        while (first > light + 5 && isDigit(stem[first - 1])) --first;
+    }
+    // One or two digits: a longer number is not a light's.
+    if (last == first || last - first > 2) return -1;
+    const int number = std::stoi(stem.substr(first, last - first));
+    stem.erase(first, last - first);
+    for (std::string_view kind : {"DIRECTIONAL", "DIR", "POINT", "SPOT"})
+        if (stem.compare(0, kind.size(), kind) == 0 && stem.compare(kind.size(), 5, "LIGHT") == 0) {
+            stem.erase(0, kind.size());
+            break;
+        }
+    return number;
+}
+
 }  // namespace
 
 bool isBoundSemantic(SemanticKind kind) {
     return kind != SemanticKind::None && kind < SemanticKind::LispsmNScale;
 }
 
-std::string semanticBindingName(const SemanticBinding& binding) {
+std::string semanticBindingName(const SemanticBinding& binding, std::string_view lightName) {
     std::string name = kKindNames[static_cast<size_t>(binding.kind)];
     if (binding.inverse && binding.transpose) return name + "InverseTranspose";
     if (binding.transpose) return name + "Transpose";
     if (binding.inverse) return name + "Inverse";
     if (binding.eachLight) name += " of each light";
+    if (!lightName.empty()) name += " of " + std::string(lightName);
     if (binding.viewSpace) name += " in view space";
     if (binding.towardsLight) name += ", towards the light";
     return name;
@@ -242,6 +269,8 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
     // One level of array: a light property per light (SemanticBinding::eachLight).
     const bool isArray = !type.arrayDims.empty();
     if (type.shape == Shape::Vector && type.cols >= 3 && type.arrayDims.size() <= 1) {
+        // A numbered light's property is one light's, never an array's.
+        const int lightNumber = isArray ? -1 : takeLightNumber(stem);
         struct VectorName {
             const char* stem;
             const char* semantic;
@@ -285,8 +314,8 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
         // camera's position is the camera's whatever the effect's placeholder.
         for (const VectorName& name : kVectorNames)
             if (stem == name.stem && (!isArray || name.lightProperty) &&
-                !(name.lightProperty && hasInitializer))
-                return {name.semantic, name.viewSpace};
+                (lightNumber < 0 || name.lightProperty) && !(name.lightProperty && hasInitializer))
+                return {name.semantic, name.viewSpace, name.lightProperty ? lightNumber : -1};
         if (hasInitializer) return {};
         static const std::pair<const char*, const char*> kColorNames[] = {
             {"LIGHTCOLOR", "LightColor"},
@@ -294,10 +323,13 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
             {"LIGHTCOL", "LightColor"},
             {"LIGHTDIFFUSE", "LightColor"},
             {"LIGHTDIFFUSECOLOR", "LightColor"},
+            {"LIGHTSPECULAR", "LightColor"},
+            {"LIGHTSPECULARCOLOR", "LightColor"},
             {"AMBIENT", "Ambient"},
             {"AMBIENTCOLOR", "Ambient"},
             {"AMBIENTCOLOUR", "Ambient"},
             {"AMBIENTLIGHT", "Ambient"},
+            {"AMBIENTLIGHTCOLOR", "Ambient"},
             {"LIGHTAMBIENT", "Ambient"},
             {"LIGHTAMBIENTCOLOR", "Ambient"},
             {"MATERIALDIFFUSE", "Diffuse"},
@@ -313,8 +345,11 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
             {"DIFFUSE", "Diffuse"},
             {"MATCOLOR", "Diffuse"},
         };
-        for (const auto& [text, semantic] : kColorNames)
-            if (stem == text && (!isArray || std::string_view(semantic) == "LightColor")) return {semantic};
+        for (const auto& [text, semantic] : kColorNames) {
+            const bool isLightColor = std::string_view(semantic) == "LightColor";
+            if (stem == text && (!isArray || isLightColor) && (lightNumber < 0 || isLightColor))
+                return {semantic, false, lightNumber};
+        }
         return {};
     }
     if (type.shape != Shape::Scalar || isArray) return {};
@@ -324,7 +359,7 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
     return {};
 }
 
-SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer,
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, int firstLightNumber,
                                  std::string& lightName) {
     SemanticBinding binding;
     lightName.clear();
@@ -339,13 +374,17 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
     if (parameter.isStatic || !parameter.type.isNumeric()) return binding;
     binding.byName = parameter.semantic.empty();
     std::string semantic = parameter.semantic;
+    int lightNumber = -1;
     if (binding.byName) {
         const ConventionalSemantic conventional = conventionalSemantic(parameter, hasInitializer);
         semantic = conventional.semantic;
         binding.viewSpace = conventional.viewSpace;
+        lightNumber = conventional.lightNumber;
     }
     if (semantic.empty() || !classifyBound(semantic, binding)) return SemanticBinding{};
-    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection;
+    // The D3D samples' one light direction points towards the light; a numbered light's, as XNA's
+    // DirectionalLight::Direction and D3D9's D3DLIGHT9::Direction, the way the light travels.
+    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection && lightNumber < 0;
 
     const SemanticKind kind = binding.kind;
     const bool isCascadeProperty =
@@ -363,7 +402,9 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
         binding.eachLight = true;
         return binding;
     }
-    if (!parameter.light.empty() || (isLightProperty && (spellsLight || isCascadeProperty))) {
+    if (lightNumber >= 0) {
+        lightName = "light" + std::to_string(lightNumber - firstLightNumber);
+    } else if (!parameter.light.empty() || (isLightProperty && (spellsLight || isCascadeProperty))) {
         lightName = parameter.light.empty() ? "light0" : parameter.light;
         if (binding.kind == SemanticKind::ObjectColor) binding.kind = SemanticKind::LightColor;
     }

@@ -204,13 +204,19 @@ void Compiler::resolveTechniqueSelection() {
 void Compiler::scripts() {
     // The parameters' lights first, so that their indices do not depend on which scripts compile; what
     // each parameter's semantic gives it, with them.
+    // CompiledEffect::parameters has Effect::parameters' indices.
+    const auto hasInitializer = [this](size_t i) { return mEffect.parameters[i].initializer.has_value(); };
+    // Numbered lights read by their names count from the lowest number the effect gives one.
+    int firstLightNumber = -1;
+    for (size_t i = 0; i < mOut->parameters.size(); ++i) {
+        const int number = conventionalSemantic(mOut->parameters[i], hasInitializer(i)).lightNumber;
+        if (number >= 0 && (firstLightNumber < 0 || number < firstLightNumber)) firstLightNumber = number;
+    }
     std::string semanticLight;
     for (size_t i = 0; i < mOut->parameters.size(); ++i) {
         ParameterInfo& parameter = mOut->parameters[i];
         if (!parameter.light.empty()) lightIndex(parameter.light);
-        // CompiledEffect::parameters has Effect::parameters' indices.
-        const bool hasInitializer = mEffect.parameters[i].initializer.has_value();
-        parameter.standard = classifySemantic(parameter, hasInitializer, semanticLight);
+        parameter.standard = classifySemantic(parameter, hasInitializer(i), firstLightNumber, semanticLight);
         if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
     }
     // A light count read by its name indexes per-light arrays, and the runtime keeps it within the

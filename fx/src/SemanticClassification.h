@@ -12,7 +12,11 @@ namespace fx {
 // light whose value it is (its `frustum`/`Object` annotation, or light0 for a light property written
 // without one), "" for none; the caller turns it into the index of CompiledEffect::lights.
 // `hasInitializer`: the effect gives the parameter a value (a colour named by convention is then its own).
-SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, std::string& lightName);
+// A numbered light's property read by its name (ConventionalSemantic::lightNumber) is light n's, n counted
+// from `firstLightNumber`, the lowest number the effect's names give (an effect that numbers from 1 means
+// its first light by Light1).
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, int firstLightNumber,
+                                 std::string& lightName);
 
 // The semantic a parameter written without one is read as, from its name: FX11 and D3DX applications set
 // parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`, `matView`, `g_vEyePt`,
@@ -22,11 +26,14 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
 // Hungarian `m`/`mat`/`mtx`/`v`/`vec`/`f`/`n`/`i` go, then underscores and case; suffixes `Matrix`,
 // `Inv`/`Inverse`, `IT`/`InvTranspose`/`InverseTranspose`, a leading `Inv`; a world-space `W` on a
 // position. A light's properties, colours and light counts are read so only without an initializer
-// (`hasInitializer`): a value the effect gives is its own. An empty semantic for none (a parameter with a
-// semantic keeps it, and parameters named otherwise stay the user's).
+// (`hasInitializer`): a value the effect gives is its own. A light's property may carry the light's number
+// after `Light` or at the end, as XNA's and MonoGame's stock effects and fixed-function-style effects number
+// their lights (`DirLight1Direction`, `DirLight1DiffuseColor`, `g_vLight2Pos`, `LightDir0`). An empty
+// semantic for none (a parameter with a semantic keeps it, and parameters named otherwise stay the user's).
 struct ConventionalSemantic {
     std::string semantic;
     bool viewSpace = false;  // a light's position or direction in view space (SemanticBinding::viewSpace)
+    int lightNumber = -1;    // the number of the light a light's property names, -1 for none
 };
 ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool hasInitializer);
 

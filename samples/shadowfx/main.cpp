@@ -220,8 +220,14 @@ int infoCommand(const Arguments& args) {
         if (!p.semantic.empty()) std::cout << " : " << p.semantic;
         if (!p.semantic.empty() && p.type.isNumeric() && p.standard.kind == fx::SemanticKind::None)
             std::cout << "  (not bound by shadowfx: keeps its default value)";
-        if (p.standard.byName)
-            std::cout << "  (bound by its name as " << fx::semanticBindingName(p.standard) << ")";
+        if (p.standard.byName) {
+            const int light = p.standard.light;
+            std::cout << "  (bound by its name as "
+                      << fx::semanticBindingName(
+                             p.standard,
+                             light >= 0 ? compiled->lights[static_cast<size_t>(light)] : std::string())
+                      << ")";
+        }
         std::cout << "\n";
     }
     std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";

@@ -2,7 +2,8 @@
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
 // (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
 // function, a shadow-map depth sampler passed as a compile argument or on to other functions, a `for`
-// variable read after its loop, and a cube-map lookup in a direction that is not finite. Minimal effects
+// variable read after its loop, a cube-map lookup in a direction that is not finite, and samplers that no
+// texture is given to. Minimal effects
 // written for these tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
@@ -250,6 +251,33 @@ TEST(D3d9Lowering, CubeLookupInADirectionThatIsNotFinite) {
     auto renderer = loadEffect(kCubeLookupNotFinite, false, "cube_not_finite.fx");
     ASSERT_TRUE(renderer);
     expectObjectsInColour(*renderer, 128, 128, 128);
+}
+
+// XNA's and MonoGame's stock effects declare bare samplers (`sampler2D Texture : register(s0);`) whose
+// texture only their application sets: each reads the neutral white texture of its kind, as an effect's
+// texture without contents does, so the material's colour shows through.
+constexpr const char* kBareSamplers = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+sampler2D Texture : register(s0);
+samplerCUBE Environment : register(s1);
+struct VsOut { float4 Position : POSITION; float2 Uv : TEXCOORD0; float3 Normal : TEXCOORD1; };
+VsOut VS(float3 p : POSITION, float3 n : NORMAL, float2 uv : TEXCOORD0) {
+    VsOut o;
+    o.Position = mul(float4(p, 1), WorldViewProj);
+    o.Uv = uv;
+    o.Normal = n;
+    return o;
+}
+float4 PS(float2 Uv : TEXCOORD0, float3 Normal : TEXCOORD1) : COLOR {
+    return float4(tex2D(Texture, Uv).rgb * float3(0.2, 0.4, 0.6) + texCUBE(Environment, Normal).rgb * 0.2, 1);
+}
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(D3d9Lowering, BareSamplersWithoutATextureReadWhite) {
+    auto renderer = loadEffect(kBareSamplers, false, "bare_samplers.fx");
+    ASSERT_TRUE(renderer);
+    expectObjectsInColour(*renderer, 102, 153, 204);
 }
 
 }  // namespace

@@ -80,6 +80,13 @@ TEST(FxComposerHost, LightNamedPointLight0FollowsTheScenesLight0) {
     ASSERT_TRUE(scene.findLight("SPOTLIGHT0"));
     ASSERT_TRUE(scene.findLight("DirectionalLight0"));
     EXPECT_EQ(scene.findLight("Light7"), nullptr);
+    // "lightN" that no light is named is the N-th light, whatever the scene named it.
+    scene.lights[0].name = "sun";
+    EXPECT_EQ(scene.findLight("light0"), &scene.lights[0]);
+    EXPECT_EQ(scene.findLight("PointLight0"), &scene.lights[0]);
+    EXPECT_EQ(scene.findLight("light1"), nullptr);
+    EXPECT_EQ(scene.findLight("light00x"), nullptr);
+    scene.lights[0].name = "light0";
     ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
     const runtime::FrameImage first = loaded.renderer->readFrame();
     scene.lights[0].position = -scene.lights[0].position;

@@ -171,6 +171,56 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_FALSE(standard(*single, "Grid").eachLight);
 }
 
+// XNA's and MonoGame's stock effects, and effects in the style of D3D9's fixed-function lights, number
+// their lights in the name; the numbers count from the lowest one the effect uses.
+TEST(ParameterSemantics, NumberedLightsAreReadByNameAsTheSceneLightsInOrder) {
+    const std::shared_ptr<CompiledEffect> xna = compile(R"(
+float3 DirLight0Direction;
+float3 DirLight0DiffuseColor;
+float3 DirLight0SpecularColor;
+float3 DirLight2Direction;
+float3 AmbientLightColor;
+float3 DirLight1Direction = {0, -1, 0};
+float4 VS(float4 p : POSITION) : POSITION {
+    return p + float4(DirLight0Direction + DirLight0DiffuseColor + DirLight0SpecularColor + DirLight2Direction +
+                      AmbientLightColor + DirLight1Direction, 0);
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                        "xna.fx");
+    ASSERT_TRUE(xna);
+    const SemanticBinding& first = standard(*xna, "DirLight0Direction");
+    EXPECT_EQ(first.kind, SemanticKind::LightDirection);
+    // As XNA's DirectionalLight::Direction: the way the light travels, as the semantic points.
+    EXPECT_TRUE(first.byName && !first.towardsLight && !first.eachLight);
+    EXPECT_EQ(first.light, lightIndex(*xna, "light0"));
+    EXPECT_EQ(standard(*xna, "DirLight0DiffuseColor").kind, SemanticKind::LightColor);
+    EXPECT_EQ(standard(*xna, "DirLight0SpecularColor").light, lightIndex(*xna, "light0"));
+    const SemanticBinding& third = standard(*xna, "DirLight2Direction");
+    EXPECT_EQ(third.light, lightIndex(*xna, "light2"));
+    EXPECT_EQ(semanticBindingName(third, "light2"), "LightDirection of light2");
+    EXPECT_EQ(standard(*xna, "AmbientLightColor").kind, SemanticKind::Ambient);
+    EXPECT_EQ(standard(*xna, "DirLight1Direction").kind, SemanticKind::None);  // the effect's own value
+
+    const std::shared_ptr<CompiledEffect> fromOne = compile(R"(
+float3 g_vLight1Pos;
+float4 g_vLight2Color;
+float3 LightDir3;
+float3 Light123Pos;
+float4 VS(float4 p : POSITION) : POSITION {
+    return p + float4(g_vLight1Pos + g_vLight2Color.rgb + LightDir3 + Light123Pos, 0);
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                            "from_one.fx");
+    ASSERT_TRUE(fromOne);
+    EXPECT_EQ(standard(*fromOne, "g_vLight1Pos").kind, SemanticKind::LightPosition);
+    EXPECT_EQ(standard(*fromOne, "g_vLight1Pos").light, lightIndex(*fromOne, "light0"));
+    EXPECT_EQ(standard(*fromOne, "g_vLight2Color").light, lightIndex(*fromOne, "light1"));
+    EXPECT_EQ(standard(*fromOne, "LightDir3").light, lightIndex(*fromOne, "light2"));
+    EXPECT_EQ(standard(*fromOne, "Light123Pos").kind, SemanticKind::None);  // no light's number
+}
+
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
     for (const std::string& name : standardSemanticNames()) {
         SCOPED_TRACE(name);

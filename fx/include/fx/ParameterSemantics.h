@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fx {
@@ -80,8 +81,9 @@ struct SemanticBinding {
 // True for the kinds the runtime writes a value for (neither None, a tunable nor StandardsGlobal).
 bool isBoundSemantic(SemanticKind kind);
 // The semantic as the docs spell it, with a matrix's suffix ("WorldViewProjectionInverse") or what a
-// light property's flags say ("LightDirection of each light in view space"); "" for None.
-std::string semanticBindingName(const SemanticBinding& binding);
+// light property's flags say ("LightDirection of each light in view space"), and the light it is read
+// from where `lightName` is given ("LightColor of light1"); "" for None.
+std::string semanticBindingName(const SemanticBinding& binding, std::string_view lightName = {});
 // Every semantic the runtime gives a value or reads, as the docs spell them (shadowfx info lists them).
 std::vector<std::string> standardSemanticNames();
 

@@ -47,10 +47,16 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
                                                        std::shared_ptr<EffectPool> pool) {
     std::unique_ptr<EffectResources> resources = EffectResources::create(std::move(effect), diagnostics);
     if (!resources || !resources->pool.join(std::move(pool), *resources, diagnostics)) return nullptr;
+    const std::vector<std::string>& lights = resources->effect().lights;
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
-        if (parameter.standard.byName)
-            diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc,
-                               {parameter.name, fx::semanticBindingName(parameter.standard)});
+        if (parameter.standard.byName) {
+            const int light = parameter.standard.light;
+            diagnostics.report(
+                fx::DiagId::ParameterBoundByName, parameter.loc,
+                {parameter.name,
+                 fx::semanticBindingName(parameter.standard,
+                                         light >= 0 ? lights[static_cast<size_t>(light)] : std::string())});
+        }
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
             parameter.standard.kind == fx::SemanticKind::None)

@@ -243,6 +243,15 @@ const GpuTexture* EffectTextures::find(size_t parameter) const {
     return it == mTextures.end() ? nullptr : &it->second;
 }
 
+const GpuTexture& EffectTextures::neutralFor(fx::BaseType samplerType) {
+    const fx::BaseType type = samplerType == fx::BaseType::SamplerCube ? fx::BaseType::TextureCube
+                              : samplerType == fx::BaseType::Sampler3D ? fx::BaseType::Texture3D
+                                                                       : fx::BaseType::Texture2D;
+    auto it = mNeutralTextures.find(type);
+    if (it == mNeutralTextures.end()) it = mNeutralTextures.emplace(type, makeNeutralTexture(type)).first;
+    return it->second;
+}
+
 bool EffectTextures::bindTargets(const RenderTargets& targets, FramebufferFault& fault) {
     if (!mFramebuffers.bind(targets, fault)) return false;
     for (const RenderTargetAttachment& color : targets.colors)

@@ -40,6 +40,10 @@ public:
 
     // A parameter's texture, or null where it has none (a render target the frames so far did not need).
     const GpuTexture* find(size_t parameter) const;
+    // The neutral white texture a sampler of `samplerType` reads where nothing gives it a texture (a bare
+    // `sampler2D Texture : register(s0);` whose texture only its application set), as an effect's texture
+    // without contents is white: 2D, cube or volume.
+    const GpuTexture& neutralFor(fx::BaseType samplerType);
     const GpuTexture& frameColor() const { return mFrameColor; }
     const GpuTexture& frameDepth() const { return mFrameDepth; }
 
@@ -92,6 +96,7 @@ private:
     GpuTexture mFrameDepth;
     std::set<const GpuTexture*> mStaleMipChains;  // mipmapped targets written since their chain was made
     std::map<size_t, ApplicationTexture> mApplicationTextures;  // by texture parameter index
+    std::map<fx::BaseType, GpuTexture> mNeutralTextures;        // neutralFor's, made on first use
 };
 
 // A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.

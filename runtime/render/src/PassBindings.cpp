@@ -40,6 +40,11 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
             gl::BindTexture(texture->target(), texture->id());
         } else if (buffer && buffer->texture()) {
             gl::BindTexture(GL_TEXTURE_BUFFER, buffer->texture());  // Buffer<T>
+        } else if (!textureParameter && !binding.depthCompare) {
+            // A sampler that no texture is given to: what its application would have bound, white.
+            const GpuTexture& neutral = resources.textures->neutralFor(
+                resources.effect().parameters[binding.samplerParameter].type.base);
+            gl::BindTexture(neutral.target(), neutral.id());
         } else {
             gl::BindTexture(GL_TEXTURE_2D, 0);
         }

@@ -223,6 +223,17 @@ const Light* Scene::findLight(std::string_view lightName) const {
             if (rest.size() > 5 && sameIgnoringCase(rest.substr(0, 5), "light")) return findLight(rest);
         }
     }
+    // "lightN" that no light is named: the N-th light, whatever the scene named it (effects number their
+    // lights; a scene file may name its lights "sun" and "lamp").
+    if (lightName.size() > 5 && sameIgnoringCase(lightName.substr(0, 5), "light")) {
+        const std::string_view digits = lightName.substr(5);
+        if (digits.size() <= 2 && std::all_of(digits.begin(), digits.end(), [](char c) {
+                return std::isdigit(static_cast<unsigned char>(c)) != 0;
+            })) {
+            const size_t n = static_cast<size_t>(std::stoi(std::string(digits)));
+            if (n < lights.size()) return &lights[n];
+        }
+    }
     return nullptr;
 }
 
