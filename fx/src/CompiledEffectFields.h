@@ -89,10 +89,10 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 16,
-              "the enum lengths below were pinned at format version 16: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 17,
+              "the enum lengths below were pinned at format version 17: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
-static_assert(enumLength<SemanticKind>() == 37);
+static_assert(enumLength<SemanticKind>() == 39);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
 static_assert(enumLength<LeaveOutCondition>() == 3);

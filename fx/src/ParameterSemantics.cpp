@@ -48,6 +48,8 @@ constexpr std::pair<const char*, SemanticKind> kOtherSemantics[] = {
     {"CascadeAtlasRects", SemanticKind::CascadeAtlasRects},
     {"CascadeSplitDepths", SemanticKind::CascadeSplitDepths},
     {"CubeFaceSelect", SemanticKind::CubeFaceSelect},
+    {"WorldMatrixArray", SemanticKind::WorldMatrixArray},
+    {"BonePalette", SemanticKind::BonePalette},
     {"FXCOMPOSER_RESETPULSE", SemanticKind::ResetPulse},
 };
 // Read by the light fits, whatever the parameter's type (LiSPSMNOpt is a string).
@@ -93,6 +95,8 @@ constexpr const char* kKindNames[] = {
     "CascadeAtlasRects",
     "CascadeSplitDepths",
     "CubeFaceSelect",
+    "WorldMatrixArray",
+    "BonePalette",
     "FXCOMPOSER_RESETPULSE",
     "LiSPSMNScale",
     "LiSPSMNOpt",
@@ -233,7 +237,17 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
     std::string stem = conventionalStem(parameter.name);
     const TypeDesc& type = parameter.type;
     if (type.shape == Shape::Matrix) {
-        if (type.rows < 3 || type.cols < 3 || !type.arrayDims.empty()) return {};
+        if (type.rows < 3 || type.cols < 3 || type.arrayDims.size() > 1) return {};
+        // A skinning palette only its application fills: the mesh drawn as modelled.
+        if (!type.arrayDims.empty()) {
+            if (hasInitializer) return {};
+            for (std::string_view world : {"WORLDMATRIXARRAY", "WORLDMATRICES", "WORLDPALETTE"})
+                if (stem == world) return {"WorldMatrixArray"};
+            for (std::string_view bones : {"BONES", "BONETRANSFORMS", "BONEMATRICES", "BONEPALETTE",
+                                           "MATRIXPALETTE", "PALETTE", "SKINNINGMATRICES", "SKINMATRICES"})
+                if (stem == bones) return {"BonePalette"};
+            return {};
+        }
         if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
         std::string modifier;
         if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||

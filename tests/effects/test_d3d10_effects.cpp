@@ -929,6 +929,66 @@ TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
     EXPECT_TRUE(nearlyEqual(renderer->readFrame(), viewBySemantic));
 }
 
+// Skinning palettes only the application fills, on meshes without skin: the DirectX SDK's SkinnedMesh
+// (WORLDMATRIXARRAY: bones placed in the world; NumBones - 1 weights read, the last one 1 minus their sum)
+// and XNA's SkinnedEffect (`Bones`, then World; the weights read as they are) draw each object as modelled,
+// where it stands, as the plain transform does.
+const char* kSkinningPalettes = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+float4x4 ViewProj : ViewProjection;
+float4x4 World;
+float4x3 mWorldMatrixArray[26] : WORLDMATRIXARRAY;
+float4x3 Bones[72];
+struct Drawn { float4 pos : POSITION; float4 colour : COLOR0; };
+Drawn Plain(float4 p : POSITION) {
+    Drawn o = { mul(p, WorldViewProj), float4(1, 0, 0, 1) };
+    return o;
+}
+Drawn SdkSkin(float4 p : POSITION, float4 weights : BLENDWEIGHT, float4 indices : BLENDINDICES,
+              uniform int NumBones) {
+    int4 index = (int4)indices;
+    float3 position = 0;
+    float last = 0;
+    for (int i = 0; i < NumBones - 1; i++) {
+        last += weights[i];
+        position += mul(p, mWorldMatrixArray[index[i]]) * weights[i];
+    }
+    position += mul(p, mWorldMatrixArray[index[NumBones - 1]]) * (1 - last);
+    Drawn o = { mul(float4(position, 1), ViewProj), float4(1, 0, 0, 1) };
+    return o;
+}
+Drawn XnaSkin(float4 p : POSITION, int4 indices : BLENDINDICES0, float4 weights : BLENDWEIGHT0) {
+    float4x3 skinning = 0;
+    for (int i = 0; i < 2; i++) skinning += Bones[indices[i]] * weights[i];
+    Drawn o = { mul(mul(float4(mul(p, skinning), 1), World), ViewProj), float4(1, 0, 0, 1) };
+    return o;
+}
+float4 Colour(float4 c : COLOR0) : COLOR { return c; }
+technique Plain { pass { VertexShader = compile vs_3_0 Plain(); PixelShader = compile ps_3_0 Colour(); } }
+technique Sdk { pass { VertexShader = compile vs_3_0 SdkSkin(3); PixelShader = compile ps_3_0 Colour(); } }
+technique Xna { pass { VertexShader = compile vs_3_0 XnaSkin(); PixelShader = compile ps_3_0 Colour(); } }
+)";
+
+TEST(D3d10Effects, SkinningPalettesAnApplicationSetDrawTheMeshAsModelled) {
+    auto renderer = loadEffect(kSkinningPalettes, false, "skinning_palettes.fx");
+    ASSERT_TRUE(renderer);
+    const fx::ParameterInfo* bones = renderer->effect().findParameter("Bones");
+    ASSERT_TRUE(bones);
+    EXPECT_EQ(bones->standard.kind, fx::SemanticKind::BonePalette);
+    // The boxes stand apart, each with its own World: every element of the SDK's palette is the object's.
+    const runtime::Scene boxes = scene("boxes");
+    ASSERT_TRUE(render(*renderer, boxes, kWidth, kHeight, "Plain"));
+    const size_t plain = countRedGreen(renderer->readFrame()).red;
+    ASSERT_GT(plain, 1000u);
+    for (const char* technique : {"Sdk", "Xna"}) {
+        ASSERT_TRUE(render(*renderer, boxes, kWidth, kHeight, technique));
+        const runtime::FrameImage frame = renderer->readFrame();
+        const size_t red = countRedGreen(frame).red;
+        // The same coverage, up to edge pixels the differently rounded products move.
+        EXPECT_NEAR(double(red), double(plain), plain * 0.01) << technique;
+    }
+}
+
 // [SECTION] Input layouts, stream output, blending and sample counts
 
 // Loads an effect file keeping the diagnostics of parsing, compiling and creating its renderer.

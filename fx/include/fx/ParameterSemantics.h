@@ -37,6 +37,11 @@ enum class SemanticKind {
     CascadeAtlasRects,
     CascadeSplitDepths,
     CubeFaceSelect,
+    // Skinning palettes (arrays of matrices) of a mesh drawn as modelled: every element the object's World
+    // (the DirectX SDK's WORLDMATRIXARRAY, bones already placed in the world), or every element the
+    // identity (bones a World transform follows, XNA's `Bones`).
+    WorldMatrixArray,
+    BonePalette,
     // FX Composer's reset pulse: true in the first frame after the effect is created or reset, false in
     // the others.
     ResetPulse,

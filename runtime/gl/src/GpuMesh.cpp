@@ -19,6 +19,11 @@ std::array<float, 4> defaultVertexValue(fx::VertexStream stream) {
             return {1, 0, 0, 1};
         case fx::VertexStream::Binormal:
             return {0, 0, -1, 0};  // cross((0,1,0), (1,0,0)) * 1
+        // A mesh without skin: every vertex on bone 0 (BLENDINDICES 0) with all its weight, drawn as
+        // modelled under a palette of identities or of World (whether a skinning shader reads weights
+        // 0..n-1 or n-1 of them and the rest as 1 minus their sum).
+        case fx::VertexStream::BlendWeight:
+            return {1, 0, 0, 0};
         default:
             return {0, 0, 0, 0};
     }

@@ -352,7 +352,7 @@ bool SemanticBinder::isBound(size_t parameter) const {
 
 bool SemanticBinder::dependsOnObject(Kind kind) {
     return kind == Kind::World || kind == Kind::WorldView || kind == Kind::WorldViewProjection ||
-           kind == Kind::ObjectId || kind == Kind::ObjectColor;
+           kind == Kind::WorldMatrixArray || kind == Kind::ObjectId || kind == Kind::ObjectColor;
 }
 
 bool SemanticBinder::isPerObject(size_t parameter) const {
@@ -471,6 +471,13 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
         case Kind::WorldViewProjection:
             matrix = projection * view * world;
             break;
+        case Kind::WorldMatrixArray:
+        case Kind::BonePalette: {
+            const glm::mat4 element = binding.kind == Kind::WorldMatrixArray ? world : glm::mat4(1.0f);
+            storeElements(value, std::vector<float>(glm::value_ptr(element), glm::value_ptr(element) + 16), 4,
+                          4);
+            return;
+        }
         case Kind::ViewportPixelSize:
             storeVector(value, glm::vec4(port.viewportSize, 0.0f, 0.0f));
             return;
