@@ -238,15 +238,15 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
     const TypeDesc& type = parameter.type;
     if (type.shape == Shape::Matrix) {
         if (type.rows < 3 || type.cols < 3 || type.arrayDims.size() > 1) return {};
-        // A skinning palette only its application fills: the mesh drawn as modelled.
+        // A skinning palette only its application fills (`Bones`, `g_mConstBoneWorld`, `amPalette`,
+        // `g_mWorldMatrixArray`): the mesh drawn as modelled, where the object stands when the name says
+        // its bones are placed in the world.
         if (!type.arrayDims.empty()) {
-            if (hasInitializer) return {};
-            for (std::string_view world : {"WORLDMATRIXARRAY", "WORLDMATRICES", "WORLDPALETTE"})
-                if (stem == world) return {"WorldMatrixArray"};
-            for (std::string_view bones : {"BONES", "BONETRANSFORMS", "BONEMATRICES", "BONEPALETTE",
-                                           "MATRIXPALETTE", "PALETTE", "SKINNINGMATRICES", "SKINMATRICES"})
-                if (stem == bones) return {"BonePalette"};
-            return {};
+            const auto has = [&stem](const char* word) { return stem.find(word) != std::string::npos; };
+            const bool palette = has("BONE") || has("PALETTE") || has("SKIN") || stem == "WORLDMATRIXARRAY" ||
+                                 stem == "WORLDMATRICES";
+            if (!palette || hasInitializer) return {};
+            return {has("WORLD") ? "WorldMatrixArray" : "BonePalette"};
         }
         if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
         std::string modifier;

@@ -81,8 +81,10 @@ std::optional<int> vertexStreamByName(const std::string& semantic) {
         return locationOf(VertexStream::Binormal, index);
     if (startsWith(name, "TAN")) return locationOf(VertexStream::Tangent, index);
     if (startsWith(name, "COL")) return locationOf(VertexStream::Color, index);
-    if (startsWith(name, "BLENDIND")) return locationOf(VertexStream::BlendIndices, index);
-    if (startsWith(name, "BLEND")) return locationOf(VertexStream::BlendWeight, index);
+    if (startsWith(name, "BLENDIND") || startsWith(name, "BONE") || startsWith(name, "JOINT"))
+        return locationOf(VertexStream::BlendIndices, index);
+    if (startsWith(name, "BLEND") || startsWith(name, "WEIGHT"))
+        return locationOf(VertexStream::BlendWeight, index);
     return std::nullopt;
 }
 

@@ -221,6 +221,35 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_EQ(standard(*fromOne, "Light123Pos").kind, SemanticKind::None);  // no light's number
 }
 
+// Arrays of matrices an application fills with its bones: placed in the world where the name says so.
+TEST(ParameterSemantics, SkinningPalettesAreReadByName) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+float4x3 Bones[72];
+float4x4 g_mConstBoneWorld[255];
+float4x3 amPalette[26];
+float4x3 g_mWorldMatrixArray[26];
+float4x4 g_mTreeMatrices[50];
+float4x3 SkinBones[2] = {1,0,0, 0,1,0, 0,0,1, 0,0,0, 1,0,0, 0,1,0, 0,0,1, 0,0,0};
+float4x4 Palette : WorldMatrixArray;
+float4 VS(float4 p : POSITION) : POSITION {
+    return float4(mul(p, Bones[1]) + mul(p, amPalette[1]) + mul(p, g_mWorldMatrixArray[1]) +
+                  mul(p, SkinBones[1]), 1) + mul(p, g_mConstBoneWorld[1]) + mul(p, g_mTreeMatrices[1]) +
+           mul(p, Palette);
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                           "palettes.fx");
+    ASSERT_TRUE(effect);
+    EXPECT_EQ(standard(*effect, "Bones").kind, SemanticKind::BonePalette);
+    EXPECT_EQ(standard(*effect, "amPalette").kind, SemanticKind::BonePalette);
+    EXPECT_EQ(standard(*effect, "g_mConstBoneWorld").kind, SemanticKind::WorldMatrixArray);
+    EXPECT_EQ(standard(*effect, "g_mWorldMatrixArray").kind, SemanticKind::WorldMatrixArray);
+    EXPECT_EQ(standard(*effect, "g_mTreeMatrices").kind, SemanticKind::None);  // instances, not bones
+    EXPECT_EQ(standard(*effect, "SkinBones").kind, SemanticKind::None);        // the effect's own value
+    EXPECT_EQ(standard(*effect, "Palette").kind, SemanticKind::WorldMatrixArray);
+    EXPECT_FALSE(standard(*effect, "Palette").byName);
+}
+
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
     for (const std::string& name : standardSemanticNames()) {
         SCOPED_TRACE(name);

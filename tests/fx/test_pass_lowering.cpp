@@ -146,6 +146,9 @@ TEST(SemanticTables, FreeVertexInputNamesMatchTheMeshStreamsByPrefix) {
     EXPECT_EQ(vertexStreamByName("BINORM"), 13);
     EXPECT_EQ(vertexStreamByName("BLENDWEIGHTS"), 14);
     EXPECT_EQ(vertexStreamByName("BLENDIND"), 15);
+    EXPECT_EQ(vertexStreamByName("WEIGHTS"), 14);  // the SDK's Skinning10
+    EXPECT_EQ(vertexStreamByName("BONES"), 15);
+    EXPECT_EQ(vertexStreamByName("JOINTS"), 15);
     EXPECT_FALSE(vertexStreamByName("TEXTURE8"));  // the mesh has no ninth UV stream
     EXPECT_FALSE(vertexStreamByName("POS1"));
     EXPECT_FALSE(vertexStreamByName("INST0"));
