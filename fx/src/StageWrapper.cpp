@@ -182,6 +182,14 @@ std::string unmatchedVertexInput(const Field& f) {
 
 }  // namespace
 
+// A matrix-typed vertex input is a per-instance transform (XNA's `float4x4 instanceTransform :
+// BLENDWEIGHT` or `: TEXCOORD1`, the SDK's `mTransform`): its columns take consecutive semantic indices, of
+// which the meshes here hold one at most, so it reads the identity whatever its names. Inputs captured by
+// stream output are the capture's.
+bool WrapperBuilder::readsIdentity(const Field& f) const {
+    return f.column >= 0 && !mStreamOut.capturedInputs;
+}
+
 std::optional<int> WrapperBuilder::inputAttribute(const std::string& semantic) const {
     if (!mStreamOut.capturedInputs) return vertexInputAttribute(semantic);
     const std::vector<std::string>& captured = *mStreamOut.capturedInputs;
@@ -201,6 +209,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             systemValues.insert(f.semantic);
             continue;
         }
+        if (readsIdentity(f)) continue;
         const std::optional<int> location = inputAttribute(f.semantic);
         if (!location) continue;
         if (!f.type.arrayDims.empty()) return fail(DiagId::VertexInputNestedTooDeeply, f.loc, {f.semantic});
@@ -225,6 +234,11 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
         if (f.semantic == "SV_VERTEXID" || f.semantic == "SV_INSTANCEID") {
             const std::string id = f.semantic == "SV_VERTEXID" ? "fx_vertexId" : "fx_instanceId";
             body += "    " + f.lvalue + " = " + narrowTo(f, "uint4(" + id + ", 0, 0, 0)") + ";\n";
+            continue;
+        }
+        if (readsIdentity(f)) {
+            if (f.column == 0) mDiagnostics.report(DiagId::VertexInputMatrixIdentity, f.loc, {f.semantic});
+            body += assignField(f, unmatchedVertexInput(f));
             continue;
         }
         const std::optional<int> location = inputAttribute(f.semantic);

@@ -113,6 +113,8 @@ private:
     // The attribute location feeding a vertex input: the capture's element (StageStreamOut::capturedInputs)
     // or the mesh stream its name points to; nullopt where it reads a constant.
     std::optional<int> inputAttribute(const std::string& semantic) const;
+    // Whether a vertex input field reads the identity matrix's column rather than an attribute.
+    bool readsIdentity(const Field& f) const;
 };
 
 }  // namespace fx

@@ -2,8 +2,8 @@
 // a pixel-shader input the vertex shader does not write (it reads 0), an array-typed input semantic
 // (TEXCOORD1..n), a literal bool compile argument, a static initialized by a call of the effect's own
 // function, a shadow-map depth sampler passed as a compile argument or on to other functions, a `for`
-// variable read after its loop, a cube-map lookup in a direction that is not finite, and samplers that no
-// texture is given to. Minimal effects
+// variable read after its loop, a cube-map lookup in a direction that is not finite, samplers that no
+// texture is given to, and per-instance transforms. Minimal effects
 // written for these tests, checked by pixels.
 #include "EffectHarness.h"
 #include <runtime/BuiltinScenes.h>
@@ -278,6 +278,27 @@ TEST(D3d9Lowering, BareSamplersWithoutATextureReadWhite) {
     auto renderer = loadEffect(kBareSamplers, false, "bare_samplers.fx");
     ASSERT_TRUE(renderer);
     expectObjectsInColour(*renderer, 102, 153, 204);
+}
+
+// XNA's hardware instancing reads each instance's transform from a per-instance stream, as a matrix
+// input over consecutive semantic indices (`: BLENDWEIGHT` in XNA 4, `: TEXCOORD1` in XNA 3): the meshes
+// here hold no such streams, so it reads the identity and each object stands where its World puts it.
+constexpr const char* kInstanceTransforms = R"(
+float4x4 World;
+float4x4 ViewProjection : ViewProjection;
+float4 Place(float4 p, float4x4 instance) { return mul(mul(mul(p, transpose(instance)), World), ViewProjection); }
+float4 Xna4(float4 p : POSITION0, float4x4 instance : BLENDWEIGHT) : POSITION { return Place(p, instance); }
+float4 Xna3(float4 p : POSITION0, float4x4 instance : TEXCOORD1) : POSITION { return Place(p, instance); }
+float4 Red() : COLOR { return float4(1, 0, 0, 1); }
+technique Xna4 { pass { VertexShader = compile vs_3_0 Xna4(); PixelShader = compile ps_3_0 Red(); } }
+technique Xna3 { pass { VertexShader = compile vs_3_0 Xna3(); PixelShader = compile ps_3_0 Red(); } }
+)";
+
+TEST(D3d9Lowering, AMatrixVertexInputIsAnInstanceTransformThatReadsTheIdentity) {
+    auto renderer = loadEffect(kInstanceTransforms, false, "instance_transforms.fx");
+    ASSERT_TRUE(renderer);
+    expectObjectsInColour(*renderer, 255, 0, 0, "Xna4");
+    expectObjectsInColour(*renderer, 255, 0, 0, "Xna3");
 }
 
 }  // namespace

@@ -25,6 +25,9 @@ FX_DIAGNOSTIC(CompileWorkerNotFound, Warning,
 FX_DIAGNOSTIC(UnknownIdentifier, Error, "unknown identifier '{0}'")
 FX_DIAGNOSTIC(VertexInputConstant, Note,
               "vertex input '{0}' matches no mesh stream by its name; it reads the constant {1}")
+FX_DIAGNOSTIC(VertexInputMatrixIdentity, Note,
+              "vertex input '{0}' is a matrix, which no mesh stream holds (a per-instance transform, which "
+              "each object's World carries here); it reads the identity matrix")
 // glslang's "mul() matrix size mismatch" said as fxc said it: both truncate the larger operand.
 FX_DIAGNOSTIC(ImplicitTruncation, Warning,
               "implicit truncation of vector type (fxc's X3206): mul() of a vector and a matrix that differ "
