@@ -211,9 +211,13 @@ bool isBoundSemantic(SemanticKind kind) {
 
 std::string semanticBindingName(const SemanticBinding& binding, std::string_view lightName) {
     std::string name = kKindNames[static_cast<size_t>(binding.kind)];
-    if (binding.inverse && binding.transpose) return name + "InverseTranspose";
-    if (binding.transpose) return name + "Transpose";
-    if (binding.inverse) return name + "Inverse";
+    if (binding.inverse && binding.transpose) {
+        name += "InverseTranspose";
+    } else if (binding.transpose) {
+        name += "Transpose";
+    } else if (binding.inverse) {
+        name += "Inverse";
+    }
     if (binding.eachLight) name += " of each light";
     if (!lightName.empty()) name += " of " + std::string(lightName);
     if (binding.viewSpace) name += " in view space";
@@ -373,8 +377,26 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
     return {};
 }
 
-SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, int firstLightNumber,
-                                 std::string& lightName) {
+LightNumbering lightNumbering(const std::vector<ParameterInfo>& parameters,
+                              const std::vector<bool>& hasInitializer) {
+    LightNumbering numbering;
+    int lowest = -1;
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        const ParameterInfo& parameter = parameters[i];
+        if (!parameter.light.empty() || !parameter.type.arrayDims.empty()) continue;  // not numbered by name
+        const ConventionalSemantic conventional = conventionalSemantic(parameter, hasInitializer[i]);
+        if (conventional.lightNumber >= 0) {
+            if (lowest < 0 || conventional.lightNumber < lowest) lowest = conventional.lightNumber;
+        } else if (conventional.semantic.rfind("Light", 0) == 0 && conventional.semantic != "LightCount") {
+            numbering.afterUnnumbered = true;
+        }
+    }
+    numbering.first = std::max(lowest, 0);
+    return numbering;
+}
+
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer,
+                                 const LightNumbering& numbering, std::string& lightName) {
     SemanticBinding binding;
     lightName.clear();
     const std::string upperSemantic = upperCase(parameter.semantic);
@@ -396,9 +418,11 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
         lightNumber = conventional.lightNumber;
     }
     if (semantic.empty() || !classifyBound(semantic, binding)) return SemanticBinding{};
-    // The D3D samples' one light direction points towards the light; a numbered light's, as XNA's
-    // DirectionalLight::Direction and D3D9's D3DLIGHT9::Direction, the way the light travels.
-    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection && lightNumber < 0;
+    // The D3D samples' light direction points towards the light; a numbered light's, as XNA's
+    // DirectionalLight::Direction and D3D9's D3DLIGHT9::Direction, the way the light travels, unless the
+    // effect numbers its lights after an unnumbered one (LightNumbering).
+    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection &&
+                           (lightNumber < 0 || numbering.afterUnnumbered);
 
     const SemanticKind kind = binding.kind;
     const bool isCascadeProperty =
@@ -416,8 +440,8 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
         binding.eachLight = true;
         return binding;
     }
-    if (lightNumber >= 0) {
-        lightName = "light" + std::to_string(lightNumber - firstLightNumber);
+    if (lightNumber >= 0 && parameter.light.empty()) {
+        lightName = "light" + std::to_string(numbering.sceneLight(lightNumber));
     } else if (!parameter.light.empty() || (isLightProperty && (spellsLight || isCascadeProperty))) {
         lightName = parameter.light.empty() ? "light0" : parameter.light;
         if (binding.kind == SemanticKind::ObjectColor) binding.kind = SemanticKind::LightColor;

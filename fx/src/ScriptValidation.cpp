@@ -205,18 +205,15 @@ void Compiler::scripts() {
     // The parameters' lights first, so that their indices do not depend on which scripts compile; what
     // each parameter's semantic gives it, with them.
     // CompiledEffect::parameters has Effect::parameters' indices.
-    const auto hasInitializer = [this](size_t i) { return mEffect.parameters[i].initializer.has_value(); };
-    // Numbered lights read by their names count from the lowest number the effect gives one.
-    int firstLightNumber = -1;
-    for (size_t i = 0; i < mOut->parameters.size(); ++i) {
-        const int number = conventionalSemantic(mOut->parameters[i], hasInitializer(i)).lightNumber;
-        if (number >= 0 && (firstLightNumber < 0 || number < firstLightNumber)) firstLightNumber = number;
-    }
+    std::vector<bool> hasInitializer(mOut->parameters.size());
+    for (size_t i = 0; i < hasInitializer.size(); ++i)
+        hasInitializer[i] = mEffect.parameters[i].initializer.has_value();
+    const LightNumbering numbering = lightNumbering(mOut->parameters, hasInitializer);
     std::string semanticLight;
     for (size_t i = 0; i < mOut->parameters.size(); ++i) {
         ParameterInfo& parameter = mOut->parameters[i];
         if (!parameter.light.empty()) lightIndex(parameter.light);
-        parameter.standard = classifySemantic(parameter, hasInitializer(i), firstLightNumber, semanticLight);
+        parameter.standard = classifySemantic(parameter, hasInitializer[i], numbering, semanticLight);
         if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
     }
     // A light count read by its name indexes per-light arrays, and the runtime keeps it within the

@@ -5,6 +5,7 @@
 #include <fx/CompiledEffect.h>
 
 #include <string>
+#include <vector>
 
 namespace fx {
 
@@ -12,11 +13,23 @@ namespace fx {
 // light whose value it is (its `frustum`/`Object` annotation, or light0 for a light property written
 // without one), "" for none; the caller turns it into the index of CompiledEffect::lights.
 // `hasInitializer`: the effect gives the parameter a value (a colour named by convention is then its own).
-// A numbered light's property read by its name (ConventionalSemantic::lightNumber) is light n's, n counted
-// from `firstLightNumber`, the lowest number the effect's names give (an effect that numbers from 1 means
-// its first light by Light1).
-SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer, int firstLightNumber,
-                                 std::string& lightName);
+// How an effect numbers the lights whose properties its names carry (ConventionalSemantic::lightNumber):
+// the lowest number is its first numbered light (an effect that numbers from 1 means its first light by
+// Light1), the scene's light0, or light1 where the effect also reads unnumbered light properties by name
+// (`g_LightDir` beside `g_LightDir2`: the unnumbered ones are light0's). Numbered directions point the way
+// the light travels (XNA's, D3D9's), unless unnumbered ones beside them point towards it (the D3D samples').
+struct LightNumbering {
+    int first = 0;
+    bool afterUnnumbered = false;
+    int sceneLight(int number) const { return number - first + (afterUnnumbered ? 1 : 0); }
+};
+// The numbering of the effect's parameters; `hasInitializer[i]` as for classifySemantic.
+LightNumbering lightNumbering(const std::vector<ParameterInfo>& parameters,
+                              const std::vector<bool>& hasInitializer);
+// A numbered light's property read by its name is the light `numbering` says, unless an annotation names
+// its light.
+SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitializer,
+                                 const LightNumbering& numbering, std::string& lightName);
 
 // The semantic a parameter written without one is read as, from its name: FX11 and D3DX applications set
 // parameters by name (`gWorldViewProj`, `g_mWorldViewProjection`, `World`, `matView`, `g_vEyePt`,

@@ -820,13 +820,6 @@ float3 Sun : LightDirection < string Object = "light0"; >;
 float4 SunColour : LightColor < string Object = "light0"; >;
 float3 Fill : LightDirection < string Object = "light1"; >;
 float4 FillColour : LightColor < string Object = "light1"; >;
-// XNA's and MonoGame's stock effects number their lights; their directions point the way the light travels.
-float4 DiffuseColor;
-float3 AmbientLightColor;
-float3 DirLight0Direction;
-float3 DirLight0DiffuseColor;
-float3 DirLight1Direction;
-float3 DirLight1DiffuseColor;
 
 struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
 Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
@@ -847,15 +840,6 @@ Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
     o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
     return o;
 }
-Lit ByNumberedName(float3 p : POSITION, float3 n : NORMAL) {
-    Lit o;
-    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
-    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
-    float3 diffuse = DirLight0DiffuseColor * max(0, dot(normal, -DirLight0Direction)) +
-                     DirLight1DiffuseColor * max(0, dot(normal, -DirLight1Direction));
-    o.colour = float4(DiffuseColor.rgb * diffuse + DiffuseColor.rgb * AmbientLightColor, 1);
-    return o;
-}
 Lit ViewSpaceByName(float3 p : POSITION, float3 n : NORMAL) {
     Lit o;
     o.pos = mul(float4(p, 1), g_mWorldViewProjection);
@@ -873,9 +857,48 @@ Lit ViewSpaceBySemantic(float3 p : POSITION, float3 n : NORMAL) {
 float4 Colour(Lit i) : SV_Target { return i.colour; }
 technique10 Named { pass { SetVertexShader(CompileShader(vs_4_0, ByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
-technique10 Numbered { pass { SetVertexShader(CompileShader(vs_4_0, ByNumberedName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 technique10 ViewNamed { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 technique10 ViewSemantic { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceBySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+)";
+
+// XNA's and MonoGame's stock effects number their lights (DirLight0Direction, DirLight1DiffuseColor, ...),
+// their directions pointing the way the light travels, beside a twin that reads them through semantics.
+const char* kNumberedLights = R"(
+float4x4 World;
+float4x4 WorldViewProj;
+float4 DiffuseColor;
+float3 AmbientLightColor;
+float3 DirLight0Direction;
+float3 DirLight0DiffuseColor;
+float3 DirLight1Direction;
+float3 DirLight1DiffuseColor;
+float4 SemDiffuse : Diffuse;
+float4 SemAmbient : Ambient;
+float3 Sun : LightDirection < string Object = "light0"; >;
+float4 SunColour : LightColor < string Object = "light0"; >;
+float3 Fill : LightDirection < string Object = "light1"; >;
+float4 FillColour : LightColor < string Object = "light1"; >;
+struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
+Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), WorldViewProj);
+    float3 normal = normalize(mul(n, (float3x3)World));
+    float3 diffuse = DirLight0DiffuseColor * max(0, dot(normal, -DirLight0Direction)) +
+                     DirLight1DiffuseColor * max(0, dot(normal, -DirLight1Direction));
+    o.colour = float4(DiffuseColor.rgb * diffuse + DiffuseColor.rgb * AmbientLightColor, 1);
+    return o;
+}
+Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), WorldViewProj);
+    float3 normal = normalize(mul(n, (float3x3)World));
+    float3 diffuse = SunColour.rgb * max(0, dot(normal, -Sun)) + FillColour.rgb * max(0, dot(normal, -Fill));
+    o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
+    return o;
+}
+float4 Colour(Lit i) : SV_Target { return i.colour; }
+technique10 Numbered { pass { SetVertexShader(CompileShader(vs_4_0, ByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 )";
 
 // Frames equal up to one step of 8 bits in any channel (the twins add the same terms in another order).
@@ -886,6 +909,28 @@ technique10 ViewSemantic { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpac
             return ::testing::AssertionFailure()
                    << "byte " << i << ": " << int(a.rgba[i]) << " vs " << int(b.rgba[i]);
     return ::testing::AssertionSuccess();
+}
+
+TEST(D3d10Effects, NumberedLightsAnApplicationSetByNameAreTheScenes) {
+    auto renderer = loadEffect(kNumberedLights, false, "numbered_lights.fx");
+    ASSERT_TRUE(renderer);
+    runtime::Scene twoLights = scene("teapot");
+    ASSERT_EQ(twoLights.lights.size(), 1u);
+    runtime::Light fill;
+    fill.name = "light1";
+    fill.direction = glm::normalize(glm::vec3(0.8f, -0.2f, 0.6f));
+    fill.color = glm::vec3(0.2f, 0.5f, 0.9f);
+    twoLights.lights.push_back(fill);
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Semantic"));
+    const runtime::FrameImage bySemantic = renderer->readFrame();
+    ASSERT_TRUE(notConstant(bySemantic));
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Numbered"));
+    EXPECT_TRUE(nearlyEqual(renderer->readFrame(), bySemantic));
+    // DirLight1 is the scene's second light, whatever a scene that numbers none of its lights calls it.
+    twoLights.lights[0].name = "sun";
+    twoLights.lights[1].name = "fill";
+    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Numbered"));
+    EXPECT_TRUE(nearlyEqual(renderer->readFrame(), bySemantic));
 }
 
 TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
@@ -911,12 +956,6 @@ TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
         colours.insert(uint32_t(byName.rgba[i]) << 16 | uint32_t(byName.rgba[i + 1]) << 8 |
                        byName.rgba[i + 2]);
     EXPECT_GT(colours.size(), 50u);
-
-    // XNA's numbered lights: DirLight1 is the scene's second light, whatever the scene calls it.
-    twoLights.lights[1].name = "fill";
-    ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Numbered"));
-    EXPECT_TRUE(nearlyEqual(renderer->readFrame(), bySemantic));
-    twoLights.lights[1].name = "light1";
 
     // The second light is element 1 and g_nNumLights counts it: with the scene's one light, another frame.
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Named"));

@@ -86,6 +86,14 @@ TEST(FxComposerHost, LightNamedPointLight0FollowsTheScenesLight0) {
     EXPECT_EQ(scene.findLight("PointLight0"), &scene.lights[0]);
     EXPECT_EQ(scene.findLight("light1"), nullptr);
     EXPECT_EQ(scene.findLight("light00x"), nullptr);
+    // A scene that names its lights light1 and light2 means those names: light0 is none of them.
+    runtime::Scene fromOne = scene;
+    fromOne.lights[0].name = "light1";
+    fromOne.lights.push_back(scene.lights[0]);
+    fromOne.lights[1].name = "light2";
+    EXPECT_EQ(fromOne.findLight("light0"), nullptr);
+    EXPECT_EQ(fromOne.findLight("light1"), &fromOne.lights[0]);
+    EXPECT_EQ(fromOne.findLight("light2"), &fromOne.lights[1]);
     scene.lights[0].name = "light0";
     ASSERT_TRUE(render(*loaded.renderer, scene, kWidth, kHeight));
     const runtime::FrameImage first = loaded.renderer->readFrame();

@@ -219,6 +219,33 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_EQ(standard(*fromOne, "g_vLight2Color").light, lightIndex(*fromOne, "light1"));
     EXPECT_EQ(standard(*fromOne, "LightDir3").light, lightIndex(*fromOne, "light2"));
     EXPECT_EQ(standard(*fromOne, "Light123Pos").kind, SemanticKind::None);  // no light's number
+
+    // Beside unnumbered light properties (light0's), numbered ones follow from light1 and point as the
+    // unnumbered ones do, towards the light; a light an annotation names is that light.
+    const std::shared_ptr<CompiledEffect> mixed = compile(R"(
+float3 g_LightDir;
+float3 g_LightDir2;
+float4 g_LightDiffuse2;
+float3 Light3Pos < string Object = "sun"; >;
+float4 VS(float4 p : POSITION) : POSITION {
+    return p + float4(g_LightDir + g_LightDir2 + g_LightDiffuse2.rgb + Light3Pos, 0);
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                          "mixed.fx");
+    ASSERT_TRUE(mixed);
+    EXPECT_EQ(standard(*mixed, "g_LightDir").light, lightIndex(*mixed, "light0"));
+    const SemanticBinding& second = standard(*mixed, "g_LightDir2");
+    EXPECT_EQ(second.light, lightIndex(*mixed, "light1"));
+    EXPECT_TRUE(second.towardsLight);
+    EXPECT_EQ(standard(*mixed, "g_LightDiffuse2").light, lightIndex(*mixed, "light1"));
+    EXPECT_EQ(standard(*mixed, "Light3Pos").light, lightIndex(*mixed, "sun"));
+    EXPECT_EQ(semanticBindingName(standard(*mixed, "g_LightDir2"), "light1"),
+              "LightDirection of light1, towards the light");
+    SemanticBinding inverse;
+    inverse.kind = SemanticKind::ViewProjection;
+    inverse.inverse = true;
+    EXPECT_EQ(semanticBindingName(inverse, "light1"), "ViewProjectionInverse of light1");
 }
 
 // Arrays of matrices an application fills with its bones: placed in the world where the name says so.

@@ -621,6 +621,60 @@ TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {
     gl::DeleteTextures(1, &albedo);
 }
 
+// XNA's and MonoGame's stock effects declare their texture as a bare sampler, `sampler2D Texture :
+// register(s0);`, and their applications set it through the sampler: white until then.
+const char* kBareSampler = R"(
+float4x4 WorldViewProj : WorldViewProjection;
+sampler2D Texture : register(s0);
+struct VsOut { float4 pos : POSITION; float2 uv : TEXCOORD0; };
+VsOut VS(float3 p : POSITION, float2 uv : TEXCOORD0) {
+    VsOut o = { mul(float4(p, 1), WorldViewProj), uv };
+    return o;
+}
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(Texture, uv) * float4(0.5, 0.5, 0.5, 1); }
+technique Textured { pass { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)";
+
+TEST(PassApi, AnApplicationSetsABareSamplersTexture) {
+    std::unique_ptr<runtime::EffectRenderer> effect =
+        shadowfx::test::loadEffect(kBareSampler, false, "bare_sampler.fx");
+    ASSERT_TRUE(effect);
+    ApplicationTarget target(8, 8);
+    GLuint texture = 0;
+    const uint8_t texel[4] = {255, 128, 64, 255};
+    gl::GenTextures(1, &texture);
+    gl::BindTexture(GL_TEXTURE_2D, texture);
+    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
+    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    ASSERT_TRUE(effect->variableBySemantic("WorldViewProjection").setMatrix(glm::mat4(1.0f)));
+
+    runtime::Mesh quad;  // a clockwise full-screen quad, D3D's front face
+    quad.positions = {{-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, {-1, -1, 0.5f}};
+    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    ApplicationMesh mesh(quad);
+    const runtime::EffectPass pass = effect->technique("Textured").pass(0);
+    const auto drawn = [&]() {
+        fx::DiagnosticList diagnostics;
+        target.clear();
+        EXPECT_TRUE(effect->technique("Textured").begin());
+        EXPECT_TRUE(pass.apply(&diagnostics)) << diagnostics.str();
+        mesh.bind(pass);
+        mesh.draw();
+        effect->technique("Textured").end();
+        const runtime::FrameImage image = target.read();
+        return std::vector<int>(image.pixel(4, 4), image.pixel(4, 4) + 3);
+    };
+    EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));  // the neutral white texture, halved
+    ASSERT_TRUE(effect->variable("Texture").setTexture(texture));
+    EXPECT_EQ(drawn(), (std::vector<int>{128, 64, 32}));
+    ASSERT_TRUE(effect->variable("Texture").setTexture(0));
+    EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));
+    gl::BindVertexArray(0);
+    gl::DeleteTextures(1, &texture);
+}
+
 // [SECTION] State saved and restored
 
 // Every value of the state a pass may touch, read back with plain GL queries (not GlStateSnapshot, which

@@ -70,6 +70,11 @@ GpuTexture makeNeutralTexture(fx::BaseType type, int elements = 1, int samples =
         for (int layer = 0; layer < texture.layers(); ++layer) texture.uploadLayerRGBA32F(one, 0, layer);
         return texture;
     }
+    if (type == fx::BaseType::Texture1D) {
+        GpuTexture texture = GpuTexture::create1D(fx::TextureFormat::RGBA8, 1);
+        gl::ClearTexImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+        return texture;
+    }
     if (type == fx::BaseType::Texture3D) {
         const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
         GpuTexture texture = GpuTexture::create3D(fx::TextureFormat::RGBA8, 1, 1, 1);
@@ -246,6 +251,7 @@ const GpuTexture* EffectTextures::find(size_t parameter) const {
 const GpuTexture& EffectTextures::neutralFor(fx::BaseType samplerType) {
     const fx::BaseType type = samplerType == fx::BaseType::SamplerCube ? fx::BaseType::TextureCube
                               : samplerType == fx::BaseType::Sampler3D ? fx::BaseType::Texture3D
+                              : samplerType == fx::BaseType::Sampler1D ? fx::BaseType::Texture1D
                                                                        : fx::BaseType::Texture2D;
     auto it = mNeutralTextures.find(type);
     if (it == mNeutralTextures.end()) it = mNeutralTextures.emplace(type, makeNeutralTexture(type)).first;

@@ -41,6 +41,16 @@ std::optional<GLenum> textureTarget(fx::BaseType type) {
             return GL_TEXTURE_2D_MULTISAMPLE;
         case fx::BaseType::Texture2DMSArray:
             return GL_TEXTURE_2D_MULTISAMPLE_ARRAY;
+        // A sampler without a texture of its own (`sampler2D Texture : register(s0);`).
+        case fx::BaseType::Sampler:
+        case fx::BaseType::Sampler2D:
+            return GL_TEXTURE_2D;
+        case fx::BaseType::Sampler1D:
+            return GL_TEXTURE_1D;
+        case fx::BaseType::Sampler3D:
+            return GL_TEXTURE_3D;
+        case fx::BaseType::SamplerCube:
+            return GL_TEXTURE_CUBE_MAP;
         default:
             return std::nullopt;
     }
@@ -225,9 +235,15 @@ std::span<const float> EffectVariable::components() const {
 
 bool EffectVariable::setTexture(GLuint name) {
     if (!isValid() || !isWhole()) return false;
-    const std::optional<GLenum> target = textureTarget(mResources->parameterInfo()[mParameter].type.base);
+    // A sampler with a texture of its own (`sampler_state { Texture = <T>; }`) passes it on to T, as
+    // setting T does; a bare sampler, whose texture only its application gave it, takes it itself.
+    size_t parameter = mParameter;
+    if (const fx::SamplerDesc* sampler = mResources->effect().findSampler(mParameter);
+        sampler && sampler->texture)
+        parameter = *sampler->texture;
+    const std::optional<GLenum> target = textureTarget(mResources->parameterInfo()[parameter].type.base);
     if (!target) return false;
-    mResources->setApplicationTexture(mParameter, name, *target);
+    mResources->setApplicationTexture(parameter, name, *target);
     return true;
 }
 

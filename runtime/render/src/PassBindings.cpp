@@ -19,8 +19,9 @@ void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage
                                                        : desc                   ? desc->texture
                                                                                 : std::nullopt;
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
-        const EffectTextures::ApplicationTexture* application =
-            textureParameter ? resources.textures->applicationTexture(*textureParameter) : nullptr;
+        // A bare sampler's texture is the application's under the sampler's own index (EffectVariable).
+        const EffectTextures::ApplicationTexture* application = resources.textures->applicationTexture(
+            textureParameter ? *textureParameter : binding.samplerParameter);
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
             // A view of a read-write texture (`string ViewOf`) samples the image's texture.

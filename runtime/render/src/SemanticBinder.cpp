@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <span>
 #include <cstring>
 #include <cmath>
 #include <optional>
@@ -49,7 +50,7 @@ void storeVector(fx::Value& value, const glm::vec4& v) {
 // Fills every element of an array parameter (or the one element of a plain one) from `elements`, each
 // `rows` x `cols` floats in HLSL row order and converted to the parameter's element shape like store();
 // elements past the source's end repeat its last one.
-void storeElements(fx::Value& value, const std::vector<float>& elements, int rows, int cols) {
+void storeElements(fx::Value& value, std::span<const float> elements, int rows, int cols) {
     fx::Value element;
     element.type = value.type;
     element.type.arrayDims.clear();
@@ -474,8 +475,7 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
         case Kind::WorldMatrixArray:
         case Kind::BonePalette: {
             const glm::mat4 element = binding.kind == Kind::WorldMatrixArray ? world : glm::mat4(1.0f);
-            storeElements(value, std::vector<float>(glm::value_ptr(element), glm::value_ptr(element) + 16), 4,
-                          4);
+            storeElements(value, std::span<const float>(glm::value_ptr(element), 16), 4, 4);
             return;
         }
         case Kind::ViewportPixelSize:

@@ -223,17 +223,22 @@ const Light* Scene::findLight(std::string_view lightName) const {
             if (rest.size() > 5 && sameIgnoringCase(rest.substr(0, 5), "light")) return findLight(rest);
         }
     }
-    // "lightN" that no light is named: the N-th light, whatever the scene named it (effects number their
-    // lights; a scene file may name its lights "sun" and "lamp").
-    if (lightName.size() > 5 && sameIgnoringCase(lightName.substr(0, 5), "light")) {
-        const std::string_view digits = lightName.substr(5);
-        if (digits.size() <= 2 && std::all_of(digits.begin(), digits.end(), [](char c) {
-                return std::isdigit(static_cast<unsigned char>(c)) != 0;
-            })) {
-            const size_t n = static_cast<size_t>(std::stoi(std::string(digits)));
-            if (n < lights.size()) return &lights[n];
-        }
-    }
+    // "lightN" in a scene that names none of its lights so: the N-th light (effects number their lights; a
+    // scene file may name its lights "sun" and "lamp"). A scene that names some "lightK" means those names:
+    // falling back there could make two numbers one light.
+    const auto lightNumber = [](std::string_view name) -> int {
+        if (name.size() < 6 || name.size() > 7 || !sameIgnoringCase(name.substr(0, 5), "light")) return -1;
+        const std::string_view digits = name.substr(5);
+        if (!std::all_of(digits.begin(), digits.end(),
+                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
+            return -1;
+        return std::stoi(std::string(digits));
+    };
+    const int n = lightNumber(lightName);
+    const bool namesNumbers = std::any_of(lights.begin(), lights.end(),
+                                          [&](const Light& light) { return lightNumber(light.name) >= 0; });
+    if (n >= 0 && !namesNumbers && static_cast<size_t>(n) < lights.size())
+        return &lights[static_cast<size_t>(n)];
     return nullptr;
 }
 

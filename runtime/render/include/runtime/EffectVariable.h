@@ -118,8 +118,10 @@ public:
     // [SECTION] Textures
     // Samples the application's GL texture `name` wherever the effect samples this texture parameter (its
     // GL target follows the parameter's type: GL_TEXTURE_2D for Texture2D, ...). The application keeps it
-    // alive while the effect may draw with it; 0 gives the parameter back its own texture. False for a
-    // variable that is not a texture.
+    // alive while the effect may draw with it; 0 gives the parameter back its own texture. On a sampler:
+    // its texture's (`sampler_state { Texture = <T>; }` sets T), or, for a bare sampler that no texture is
+    // given to (`sampler2D Texture : register(s0);`, XNA's and MonoGame's), the sampler's own, in place of
+    // the neutral white texture. False for a variable that is neither.
     bool setTexture(GLuint name);
 
     // [SECTION] Use and annotations

@@ -79,7 +79,7 @@ struct Scene {
     Bounds bounds() const;        // explicitBounds if set, else objectBounds()
     Bounds objectBounds() const;  // of all objects in world space
     // The light an effect names: by name, then ignoring case, then without a Point/Spot/Directional/Dir
-    // prefix, then "lightN" as the N-th light; null for none.
+    // prefix, then "lightN" as the N-th light where no light is named "lightK"; null for none.
     const Light* findLight(std::string_view lightName) const;
     size_t triangleCount() const;
     // The whole configuration moved by `offset`: objects, camera, lights and explicit bounds.
