@@ -57,10 +57,8 @@ public:
             node->setOp(op == glslang::EOpMatrixTimesMatrix ? glslang::EOpMul : glslang::EOpMulAssign);
             return true;
         }
-        errors.push_back({true, at.getFilenameStr(), at.line, at.column,
-                          "'*' : HLSL multiplies a '" + typeName(left) + "' and a '" + typeName(right) +
-                              "' element by element, which shadowfx does not do for operands of different "
-                              "shapes; write mul() for their product, or give both one shape"});
+        errors.push_back(
+            {true, at.getFilenameStr(), at.line, at.column, elementWiseProductOfShapesMessage(left, right)});
         return true;
     }
 
@@ -69,6 +67,12 @@ private:
 };
 
 }  // namespace
+
+std::string elementWiseProductOfShapesMessage(const glslang::TType& left, const glslang::TType& right) {
+    return "'*' : HLSL multiplies a '" + typeName(left) + "' and a '" + typeName(right) +
+           "' element by element, which shadowfx does not do for operands of different shapes; write mul() "
+           "for their product, or give both one shape";
+}
 
 std::vector<HlslMessage> makeStarProductsElementWise(glslang::TIntermediate& intermediate,
                                                      const std::vector<Token>& tokens) {

@@ -14,9 +14,14 @@
 
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include <string>
 #include <vector>
 
 namespace fx::detail {
+
+// The error at a `*` that glslang reads as a product of a `left` and a `right` of different shapes, or of a
+// vector and a matrix.
+std::string elementWiseProductOfShapesMessage(const glslang::TType& left, const glslang::TType& right);
 
 // Rewrites the tree of `intermediate` (see above), whose text `tokens` are (lexHlslUnit). Returns an error
 // for each `*` left a product.

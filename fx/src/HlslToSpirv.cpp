@@ -2,6 +2,7 @@
 #include "HlslToSpirv.h"
 
 #include "BoolCompoundAssignments.h"
+#include "ConstantMatrixProducts.h"
 #include "ElementWiseProducts.h"
 #include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
@@ -15,6 +16,8 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <algorithm>
+#include <functional>
+#include <memory>
 #include <mutex>
 #include <regex>
 #include <set>
@@ -184,21 +187,43 @@ HlslCompileResult compileHlslToSpirv(const std::string& source, ShaderStage stag
             return result;
         }
     }
-    glslang::TShader shader(language);
-    bool parsed = parseHlsl(shader, postfix.text, entryPoint);
+    auto shader = std::make_unique<glslang::TShader>(language);
+    std::string text = postfix.text;
+    bool parsed = parseHlsl(*shader, text, entryPoint);
+    if (parsed) {
+        const detail::ParseUnit parseCopy = [&](const std::string& copy,
+                                                const std::function<void(glslang::TIntermediate&)>& read) {
+            glslang::TShader copyShader(language);
+            parseHlsl(copyShader, copy, entryPoint);
+            if (!copyShader.getIntermediate()->getTreeRoot()) return false;
+            read(*copyShader.getIntermediate());
+            return true;
+        };
+        const detail::ConstantProductRewrite products = detail::rewriteConstantMatrixProducts(
+            *shader->getIntermediate(), text, postfix.text == source ? tokens : detail::lexHlslUnit(text),
+            parseCopy);
+        if (!products.errors.empty()) {
+            result.messages = products.errors;
+            return result;
+        }
+        if (products.text) {
+            text = *products.text;
+            shader = std::make_unique<glslang::TShader>(language);
+            parsed = parseHlsl(*shader, text, entryPoint);
+        }
+    }
     std::vector<HlslMessage> syntaxTreeWarnings;
-    result.log = shader.getInfoLog();
+    result.log = shader->getInfoLog();
     if (parsed) {
         glslang::TProgram program;
-        program.addShader(&shader);
+        program.addShader(shader.get());
         if (program.link(kMessages) && program.mapIO()) {
             TruncationFinder truncations;
             program.getIntermediate(language)->getTreeRoot()->traverse(&truncations);
             syntaxTreeWarnings = std::move(truncations.found);
             // The places of the text glslang parsed: the postfix rewrite may have moved a line's tokens.
             const std::vector<HlslMessage> productErrors = detail::makeStarProductsElementWise(
-                *program.getIntermediate(language),
-                postfix.text == source ? tokens : detail::lexHlslUnit(postfix.text));
+                *program.getIntermediate(language), text == source ? tokens : detail::lexHlslUnit(text));
             HighestSymbolId symbols;
             program.getIntermediate(language)->getTreeRoot()->traverse(&symbols);
             const std::vector<HlslMessage> swizzlesLeft =

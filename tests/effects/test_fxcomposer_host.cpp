@@ -375,6 +375,82 @@ technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=
     EXPECT_TRUE(isPaint(frame.right));
 }
 
+// A frame that runs another technique than the frame before starts a picture, as a reset does: the host
+// clears it and FXCOMPOSER_RESETPULSE is true in it, so the new technique is not handed the old one's
+// strokes. Main paints a white canvas over the frame on the pulse, Other a green one over the left half
+// only (the right half then shows what the host handed it); both paint a blue stroke at BrushPos.
+TEST(FxComposerHost, AFrameOfAnotherTechniqueStartsAPictureAsAResetDoes) {
+    auto renderer = loadEffect(R"(bool bReset : FXCOMPOSER_RESETPULSE;
+float2 BrushPos = {0.75, 0.5};
+float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "standard";
+    string ScriptOutput = "color"; > = 0.8;
+struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
+Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
+float4 CanvasPS(Q i) : COLOR { return float4(1, 1, 1, 1); }
+float4 LeftCanvasPS(Q i) : COLOR { clip(0.5 - i.UV.x); return float4(0, 1, 0, 1); }
+float4 SplatPS(Q i) : COLOR { return float4(0, 0, 1, length(i.UV - BrushPos) < 0.15 ? 1 : 0); }
+technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
+    "LoopByCount=bReset; Pass=canvas; LoopEnd=; Pass=splat;"; > {
+    pass canvas < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 CanvasPS(); ZEnable = false; }
+    pass splat < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
+        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
+}
+technique Other < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
+    "LoopByCount=bReset; Pass=canvas; LoopEnd=; Pass=splat;"; > {
+    pass canvas < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 LeftCanvasPS(); ZEnable = false; }
+    pass splat < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
+        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
+}
+)",
+                               false);
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    const auto isWhite = [](const uint8_t* p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; };
+    const auto isGreen = [](const uint8_t* p) { return p[0] == 0 && p[1] == 255 && p[2] == 0; };
+    const auto isPaint = [](const uint8_t* p) { return p[0] == 0 && p[1] == 0 && p[2] == 255; };
+    // The frame's top corners and the strokes' places, left and right.
+    struct Frame {
+        const uint8_t *leftCorner, *rightCorner, *left, *right;
+    };
+    runtime::FrameImage image;
+    const auto paintFrame = [&](const std::string& technique, float brushX) -> Frame {
+        renderer->setParameter(*renderer->findParameter("BrushPos"), fx::Value::vector({brushX, 0.5f}));
+        EXPECT_TRUE(render(*renderer, scene, kWidth, kHeight, technique));
+        image = renderer->readFrame();
+        EXPECT_TRUE(notConstant(image));
+        return {image.pixel(1, 1), image.pixel(kWidth - 2, 1), image.pixel(kWidth / 4, kHeight / 2),
+                image.pixel(3 * kWidth / 4, kHeight / 2)};
+    };
+
+    Frame frame = paintFrame("Main", 0.75f);  // the first frame: a reset frame
+    EXPECT_TRUE(isWhite(frame.leftCorner));
+    EXPECT_TRUE(isWhite(frame.left));
+    EXPECT_TRUE(isPaint(frame.right));
+    // Another technique: cleared (the right half on the host's background, Main's stroke gone) and the
+    // pulse true (Other's canvas on the left half).
+    frame = paintFrame("Other", 0.25f);
+    EXPECT_TRUE(isGreen(frame.leftCorner)) << "no reset pulse in the first frame of another technique";
+    EXPECT_TRUE(isPaint(frame.left));
+    EXPECT_TRUE(isBackground(frame.rightCorner)) << "the new technique was handed the old one's frame";
+    EXPECT_TRUE(isBackground(frame.right)) << "the old technique's stroke is still there";
+    // The same technique again: its frame kept, no pulse (the left stroke not painted over).
+    frame = paintFrame("Other", 0.75f);
+    EXPECT_TRUE(isGreen(frame.leftCorner));
+    EXPECT_TRUE(isPaint(frame.left));
+    EXPECT_TRUE(isPaint(frame.right));
+    EXPECT_TRUE(isBackground(frame.rightCorner));
+    // Back to the first: a new picture on its canvas, Other's strokes gone.
+    frame = paintFrame("Main", 0.75f);
+    EXPECT_TRUE(isWhite(frame.leftCorner));
+    EXPECT_TRUE(isWhite(frame.left));
+    EXPECT_TRUE(isWhite(frame.rightCorner));
+    EXPECT_TRUE(isPaint(frame.right));
+}
+
 // Every effect written in FX Composer's or the DirectX SDK's style (tests/data/fxcomposer/, the encoded
 // copies included) compiles without errors and draws a frame that is not blank with every technique.
 TEST(FxComposerHost, EveryFxComposerStyleEffectDrawsANonBlankFrameWithEveryTechnique) {

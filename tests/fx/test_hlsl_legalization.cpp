@@ -409,9 +409,12 @@ Diagnostic firstCompileError(const std::string& source) {
 // and a matrix, which glslang reads as a product and fxc truncated first, is an error at the operator.
 TEST(HlslLegalization, AStarProductOfDifferentShapesIsAnErrorAtTheOperator) {
     for (const char* statement :
-         {"float2x2 m = M23 * M32;", "float3 v = V * M33;", "float2x3 m = M23; m *= M22;"}) {
+         {"float2x2 m = M23 * M32;", "float3 v = V * M33;", "float2x3 m = M23; m *= M22;",
+          // Constants, whose product glslang computes while it parses.
+          "float2x2 m = C23 * float3x2(1, 2, 3, 4, 5, 6);", "float3 v = float3(1, 2, 3) * C33;"}) {
         const Diagnostic error =
             firstCompileError(std::string(R"(float2x3 M23; float3x2 M32; float3x3 M33; float2x2 M22; float3 V;
+static const float2x3 C23 = {1, 2, 3, 4, 5, 6}; static const float3x3 C33 = {1, 2, 3, 4, 5, 6, 7, 8, 9};
 float4 PS() : SV_Target {
     )") + statement + R"(
     return 1;
@@ -419,7 +422,7 @@ float4 PS() : SV_Target {
 technique10 t { pass p { SetPixelShader(CompileShader(ps_4_0, PS())); } }
 )");
         EXPECT_EQ(error.id, DiagId::HlslError) << error.message;
-        EXPECT_EQ(error.loc.line, 3) << error.message;
+        EXPECT_EQ(error.loc.line, 4) << error.message;
         EXPECT_EQ(error.loc.column, static_cast<int>(std::string(statement).find('*')) + 5) << error.message;
         EXPECT_NE(error.message.find("element by element"), std::string::npos) << error.message;
     }

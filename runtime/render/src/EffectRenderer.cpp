@@ -231,7 +231,7 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     }
 
     // The frame's own values, before a Technique= selector or the script (and its dry run) reads them.
-    const bool resetFrame = mImpl->resetPending;
+    bool resetFrame = mImpl->resetPending;
     mImpl->binder->setResetPulse(resetFrame);
     mImpl->resetPending = false;
     mImpl->values.bindSemantics(*mImpl->binder, RenderPortView{}, nullptr, options.time,
@@ -255,6 +255,16 @@ bool EffectRenderer::render(const Scene& scene, const FrameOptions& options, fx:
     const size_t techniqueIndex = choice.technique;
     const fx::CompiledTechnique* technique = &mImpl->effect().techniques[techniqueIndex];
     SemanticBinder& binder = *mImpl->binder;
+    // A frame of another technique than the frame before starts a picture, as FX Composer started one when
+    // the technique changed: it is a reset frame (cleared, FXCOMPOSER_RESETPULSE true for its script and
+    // shaders; a Technique= selector read the pulse before the change was known).
+    if (!resetFrame && mImpl->lastTechnique && *mImpl->lastTechnique != techniqueIndex) {
+        resetFrame = true;
+        binder.setResetPulse(true);
+        mImpl->values.bindSemantics(binder, RenderPortView{}, nullptr, options.time,
+                                    SemanticBinder::Scope::PerFrame, nullptr);
+    }
+    mImpl->lastTechnique = techniqueIndex;
 
     // KHR_debug messages (debug contexts) and GL errors found while the frame runs go to the caller's sink.
     setDebugSink([&diagnostics](std::string message) {

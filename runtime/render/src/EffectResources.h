@@ -124,6 +124,8 @@ public:
     // The next frame is a reset frame (FXCOMPOSER_RESETPULSE reads true in it): the first one after the
     // effect is created, and the first after EffectRenderer::reset().
     bool resetPending = true;
+    // The technique the last frame ran: a frame that runs another starts a picture as a reset frame does.
+    std::optional<size_t> lastTechnique;
     // The scene as last rendered: its bounds and BVH, rebuilt only when its objects change.
     SceneCache sceneCache;
     // The culling volumes' visible lists, kept while the scene and the volume stand still.

@@ -148,7 +148,8 @@ public:
     // FXCOMPOSER_RESETPULSE semantic read true in it and false in the frames after (effects clear what
     // they accumulate over frames then), and the host clears the frame before a scene effect, which it
     // otherwise hands the frame as the effect left it (docs/fxcomposer.md). The first frame after create()
-    // is a reset frame too; a frame of another size than the one before also starts on the background.
+    // is a reset frame too, and so is one that runs another technique than the frame before; a frame of
+    // another size than the one before also starts on the background.
     void reset();
 
     // Renders one frame of `scene`. Returns false (with diagnostics) if the technique does not exist or a
