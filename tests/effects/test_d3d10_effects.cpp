@@ -911,16 +911,22 @@ technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic()
     return ::testing::AssertionSuccess();
 }
 
-TEST(D3d10Effects, NumberedLightsAnApplicationSetByNameAreTheScenes) {
-    auto renderer = loadEffect(kNumberedLights, false, "numbered_lights.fx");
-    ASSERT_TRUE(renderer);
+// The teapot scene's sun, light0, and a bluish fill light from the side, light1.
+runtime::Scene teapotWithFill() {
     runtime::Scene twoLights = scene("teapot");
-    ASSERT_EQ(twoLights.lights.size(), 1u);
+    EXPECT_EQ(twoLights.lights.size(), 1u);
     runtime::Light fill;
     fill.name = "light1";
     fill.direction = glm::normalize(glm::vec3(0.8f, -0.2f, 0.6f));
     fill.color = glm::vec3(0.2f, 0.5f, 0.9f);
     twoLights.lights.push_back(fill);
+    return twoLights;
+}
+
+TEST(D3d10Effects, NumberedLightsAnApplicationSetByNameAreTheScenes) {
+    auto renderer = loadEffect(kNumberedLights, false, "numbered_lights.fx");
+    ASSERT_TRUE(renderer);
+    runtime::Scene twoLights = teapotWithFill();
     ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Semantic"));
     const runtime::FrameImage bySemantic = renderer->readFrame();
     ASSERT_TRUE(notConstant(bySemantic));
@@ -936,13 +942,7 @@ TEST(D3d10Effects, NumberedLightsAnApplicationSetByNameAreTheScenes) {
 TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
     auto renderer = loadEffect(kApplicationSetLights, false, "application_lights.fx");
     ASSERT_TRUE(renderer);
-    runtime::Scene twoLights = scene("teapot");
-    ASSERT_EQ(twoLights.lights.size(), 1u);
-    runtime::Light fill;
-    fill.name = "light1";
-    fill.direction = glm::normalize(glm::vec3(0.8f, -0.2f, 0.6f));
-    fill.color = glm::vec3(0.2f, 0.5f, 0.9f);
-    twoLights.lights.push_back(fill);
+    runtime::Scene twoLights = teapotWithFill();
 
     ASSERT_TRUE(render(*renderer, twoLights, kWidth, kHeight, "Semantic"));
     const runtime::FrameImage bySemantic = renderer->readFrame();

@@ -566,17 +566,32 @@ TEST(PassApi, APassUsesWhatItsCodeReads) {
 
 // [SECTION] Values and textures reach the GPU
 
+// A clockwise full-screen quad, D3D's front face, its texture coordinates 0 to 1 from the top left.
+runtime::Mesh fullScreenQuad() {
+    runtime::Mesh quad;
+    quad.positions = {{-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, {-1, -1, 0.5f}};
+    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    return quad;
+}
+
+// The application's own texture: one texel of (1, 0.5, 0.25). The caller deletes it.
+GLuint applicationTexel() {
+    GLuint texture = 0;
+    const uint8_t texel[4] = {255, 128, 64, 255};
+    gl::GenTextures(1, &texture);
+    gl::BindTexture(GL_TEXTURE_2D, texture);
+    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
+    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
 TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {
     auto effect = loadPalette();
     ASSERT_TRUE(effect);
     ApplicationTarget target(8, 8);
-    GLuint albedo = 0;  // the application's texture: one texel of (1, 0.5, 0.25)
-    const uint8_t texel[4] = {255, 128, 64, 255};
-    gl::GenTextures(1, &albedo);
-    gl::BindTexture(GL_TEXTURE_2D, albedo);
-    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
-    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
-    gl::BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint albedo = applicationTexel();
 
     ASSERT_TRUE(effect->variableBySemantic("WorldViewProjection").setMatrix(glm::mat4(1.0f)));
     runtime::EffectVariable palette = effect->variable("Palette");
@@ -586,11 +601,7 @@ TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {
     EXPECT_EQ(palette.element(1).value().data, (std::vector<float>{0.25f, 1.0f, 1.0f, 1.0f}));
     ASSERT_TRUE(effect->variable("Albedo").setTexture(albedo));
 
-    runtime::Mesh quad;  // a clockwise full-screen quad, D3D's front face
-    quad.positions = {{-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, {-1, -1, 0.5f}};
-    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    ApplicationMesh mesh(quad);
+    ApplicationMesh mesh(fullScreenQuad());
     const runtime::EffectPass pass = effect->technique("Plain").pass(0);
     fx::DiagnosticList diagnostics;
     target.clear();
@@ -640,20 +651,10 @@ TEST(PassApi, AnApplicationSetsABareSamplersTexture) {
         shadowfx::test::loadEffect(kBareSampler, false, "bare_sampler.fx");
     ASSERT_TRUE(effect);
     ApplicationTarget target(8, 8);
-    GLuint texture = 0;
-    const uint8_t texel[4] = {255, 128, 64, 255};
-    gl::GenTextures(1, &texture);
-    gl::BindTexture(GL_TEXTURE_2D, texture);
-    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
-    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
-    gl::BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint texture = applicationTexel();
     ASSERT_TRUE(effect->variableBySemantic("WorldViewProjection").setMatrix(glm::mat4(1.0f)));
 
-    runtime::Mesh quad;  // a clockwise full-screen quad, D3D's front face
-    quad.positions = {{-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}, {-1, -1, 0.5f}};
-    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    ApplicationMesh mesh(quad);
+    ApplicationMesh mesh(fullScreenQuad());
     const runtime::EffectPass pass = effect->technique("Textured").pass(0);
     const auto drawn = [&]() {
         fx::DiagnosticList diagnostics;
