@@ -799,14 +799,35 @@ TEST(D3d10Effects, ParametersWithoutSemanticsBindByTheirConventionalNames) {
     EXPECT_TRUE(renderer->readFrame().rgba == bySemantic.rgba);
 }
 
+// The twin the by-name techniques below are compared with: the same lighting read through semantics, the
+// sun light0 and the fill light1 (LightDirection points away from the light).
+const std::string kSemanticLights = R"(
+float4x4 g_mWorld;
+float4x4 g_mWorldViewProjection;
+float4 SemDiffuse : Diffuse;
+float4 SemAmbient : Ambient;
+float3 Sun : LightDirection < string Object = "light0"; >;
+float4 SunColour : LightColor < string Object = "light0"; >;
+float3 Fill : LightDirection < string Object = "light1"; >;
+float4 FillColour : LightColor < string Object = "light1"; >;
+struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
+Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
+    Lit o;
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
+    float3 diffuse = SunColour.rgb * max(0, dot(normal, -Sun)) + FillColour.rgb * max(0, dot(normal, -Fill));
+    o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
+    return o;
+}
+float4 Colour(Lit i) : SV_Target { return i.colour; }
+technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
+)";
+
 // An effect in the style of the DirectX SDK's samples, whose application set the lights and the material
 // by name (BasicHLSL's g_LightDir[3], g_LightDiffuse[3], g_MaterialDiffuseColor, ...), none with an
-// initializer, beside twins that read the same values through semantics. A D3D sample's light direction
-// points towards the light (`dot(N, g_LightDir)`); the LightDirection semantic points away from it.
-const char* kApplicationSetLights = R"(
-float4x4 g_mWorld;
+// initializer. A D3D sample's light direction points towards the light (`dot(N, g_LightDir)`).
+const std::string kApplicationSetLights = kSemanticLights + R"(
 float4x4 g_mView;
-float4x4 g_mWorldViewProjection;
 float4 g_MaterialDiffuseColor;
 float4 g_MaterialAmbientColor;
 float4 g_LightAmbient;
@@ -814,14 +835,6 @@ int g_nNumLights;
 float3 g_LightDir[3];
 float4 g_LightDiffuse[3];
 float3 g_vLightDirView;
-float4 SemDiffuse : Diffuse;
-float4 SemAmbient : Ambient;
-float3 Sun : LightDirection < string Object = "light0"; >;
-float4 SunColour : LightColor < string Object = "light0"; >;
-float3 Fill : LightDirection < string Object = "light1"; >;
-float4 FillColour : LightColor < string Object = "light1"; >;
-
-struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
 Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
     Lit o;
     o.pos = mul(float4(p, 1), g_mWorldViewProjection);
@@ -830,14 +843,6 @@ Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
     for (int i = 0; i < g_nNumLights; i++)
         diffuse += g_LightDiffuse[i].rgb * max(0, dot(normal, g_LightDir[i]));
     o.colour = float4(g_MaterialDiffuseColor.rgb * diffuse + g_MaterialAmbientColor.rgb * g_LightAmbient.rgb, 1);
-    return o;
-}
-Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
-    Lit o;
-    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
-    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
-    float3 diffuse = SunColour.rgb * max(0, dot(normal, -Sun)) + FillColour.rgb * max(0, dot(normal, -Fill));
-    o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
     return o;
 }
 Lit ViewSpaceByName(float3 p : POSITION, float3 n : NORMAL) {
@@ -854,51 +859,30 @@ Lit ViewSpaceBySemantic(float3 p : POSITION, float3 n : NORMAL) {
     o.colour = float4(max(0, dot(normal, mul(-Sun, (float3x3)g_mView))).xxx, 1);
     return o;
 }
-float4 Colour(Lit i) : SV_Target { return i.colour; }
 technique10 Named { pass { SetVertexShader(CompileShader(vs_4_0, ByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
-technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 technique10 ViewNamed { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 technique10 ViewSemantic { pass { SetVertexShader(CompileShader(vs_4_0, ViewSpaceBySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 )";
 
 // XNA's and MonoGame's stock effects number their lights (DirLight0Direction, DirLight1DiffuseColor, ...),
-// their directions pointing the way the light travels, beside a twin that reads them through semantics.
-const char* kNumberedLights = R"(
-float4x4 World;
-float4x4 WorldViewProj;
+// their directions pointing the way the light travels.
+const std::string kNumberedLights = kSemanticLights + R"(
 float4 DiffuseColor;
 float3 AmbientLightColor;
 float3 DirLight0Direction;
 float3 DirLight0DiffuseColor;
 float3 DirLight1Direction;
 float3 DirLight1DiffuseColor;
-float4 SemDiffuse : Diffuse;
-float4 SemAmbient : Ambient;
-float3 Sun : LightDirection < string Object = "light0"; >;
-float4 SunColour : LightColor < string Object = "light0"; >;
-float3 Fill : LightDirection < string Object = "light1"; >;
-float4 FillColour : LightColor < string Object = "light1"; >;
-struct Lit { float4 pos : SV_Position; float4 colour : COLOR0; };
 Lit ByName(float3 p : POSITION, float3 n : NORMAL) {
     Lit o;
-    o.pos = mul(float4(p, 1), WorldViewProj);
-    float3 normal = normalize(mul(n, (float3x3)World));
+    o.pos = mul(float4(p, 1), g_mWorldViewProjection);
+    float3 normal = normalize(mul(n, (float3x3)g_mWorld));
     float3 diffuse = DirLight0DiffuseColor * max(0, dot(normal, -DirLight0Direction)) +
                      DirLight1DiffuseColor * max(0, dot(normal, -DirLight1Direction));
     o.colour = float4(DiffuseColor.rgb * diffuse + DiffuseColor.rgb * AmbientLightColor, 1);
     return o;
 }
-Lit BySemantic(float3 p : POSITION, float3 n : NORMAL) {
-    Lit o;
-    o.pos = mul(float4(p, 1), WorldViewProj);
-    float3 normal = normalize(mul(n, (float3x3)World));
-    float3 diffuse = SunColour.rgb * max(0, dot(normal, -Sun)) + FillColour.rgb * max(0, dot(normal, -Fill));
-    o.colour = float4(SemDiffuse.rgb * diffuse + SemDiffuse.rgb * SemAmbient.rgb, 1);
-    return o;
-}
-float4 Colour(Lit i) : SV_Target { return i.colour; }
 technique10 Numbered { pass { SetVertexShader(CompileShader(vs_4_0, ByName())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
-technique10 Semantic { pass { SetVertexShader(CompileShader(vs_4_0, BySemantic())); SetPixelShader(CompileShader(ps_4_0, Colour())); } }
 )";
 
 // Frames equal up to one step of 8 bits in any channel (the twins add the same terms in another order).

@@ -301,30 +301,50 @@ technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=
     expectFrame(false, kYellow);
 }
 
+// NVIDIA's paint_brush.fx in miniature: the reset pulse, the brush's place, the effect's STANDARDSGLOBAL
+// annotations and its techniques after the shaders they share: a full-screen quad, a white canvas, a green
+// one over the left half, and a blue stroke around BrushPos.
+std::string paintingEffect(const std::string& brushPos, const std::string& standardsGlobal,
+                           const std::string& techniques) {
+    return "bool bReset : FXCOMPOSER_RESETPULSE;\nfloat2 BrushPos = {" + brushPos +
+           "};\nfloat Script : STANDARDSGLOBAL < " + standardsGlobal + R"( > = 0.8;
+struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
+Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
+float4 CanvasPS(Q i) : COLOR { return float4(1, 1, 1, 1); }
+float4 LeftCanvasPS(Q i) : COLOR { clip(0.5 - i.UV.x); return float4(0, 1, 0, 1); }
+float4 SplatPS(Q i) : COLOR { return float4(0, 0, 1, length(i.UV - BrushPos) < 0.15 ? 1 : 0); }
+)" + techniques;
+}
+
+// A painting technique: its canvas pass (pixel shader `canvas`) on the reset pulse, then the stroke.
+std::string paintingTechnique(const std::string& name, const std::string& canvasPass,
+                              const std::string& canvas) {
+    return "technique " + name + R"( < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
+    "LoopByCount=bReset; Pass=)" +
+           canvasPass + R"(; LoopEnd=; Pass=splat;"; > {
+    pass )" +
+           canvasPass +
+           R"( < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 )" +
+           canvas + R"((); ZEnable = false; }
+    pass splat < string Script = "Draw=Buffer;"; > {
+        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
+        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
+}
+)";
+}
+
 // A scene effect that paints into the frame over many frames and clears it only on a reset (NVIDIA's
 // paint_brush.fx): the host clears nothing before its frames after the first, so a stroke painted in one
 // frame is still there in the next, on the canvas the reset drew, as FX Composer kept the frame for it. A
 // frame of a new size starts on the host's background again; a material effect's frames always do.
 TEST(FxComposerHost, SceneEffectKeepsWhatItPaintedInTheFrameUntilAResetOrANewSize) {
     const auto paintEffect = [](const std::string& scriptClass) {
-        return R"(bool bReset : FXCOMPOSER_RESETPULSE;
-float2 BrushPos = {0.25, 0.5};
-float Script : STANDARDSGLOBAL < string ScriptClass = ")" +
-               scriptClass + R"("; string ScriptOrder = "standard";
-    string ScriptOutput = "color"; string Script = "Technique=Main;"; > = 0.8;
-struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
-Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
-float4 CanvasPS(Q i) : COLOR { return float4(1, 1, 1, 1); }
-float4 SplatPS(Q i) : COLOR { return float4(0, 0, 1, length(i.UV - BrushPos) < 0.15 ? 1 : 0); }
-technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
-    "LoopByCount=bReset; Pass=revert; LoopEnd=; Pass=splat;"; > {
-    pass revert < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 CanvasPS(); ZEnable = false; }
-    pass splat < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
-        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
-}
-)";
+        return paintingEffect("0.25, 0.5",
+                              "string ScriptClass = \"" + scriptClass +
+                                  "\"; string ScriptOrder = \"standard\"; string ScriptOutput = \"color\"; "
+                                  "string Script = \"Technique=Main;\";",
+                              paintingTechnique("Main", "revert", "CanvasPS"));
     };
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
     const auto isWhite = [](const uint8_t* p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; };
@@ -380,33 +400,13 @@ technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=
 // strokes. Main paints a white canvas over the frame on the pulse, Other a green one over the left half
 // only (the right half then shows what the host handed it); both paint a blue stroke at BrushPos.
 TEST(FxComposerHost, AFrameOfAnotherTechniqueStartsAPictureAsAResetDoes) {
-    auto renderer = loadEffect(R"(bool bReset : FXCOMPOSER_RESETPULSE;
-float2 BrushPos = {0.75, 0.5};
-float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "standard";
-    string ScriptOutput = "color"; > = 0.8;
-struct Q { float4 Pos : POSITION; float2 UV : TEXCOORD0; };
-Q QuadVS(float3 p : POSITION, float3 uv : TEXCOORD0) { Q o; o.Pos = float4(p, 1); o.UV = uv.xy; return o; }
-float4 CanvasPS(Q i) : COLOR { return float4(1, 1, 1, 1); }
-float4 LeftCanvasPS(Q i) : COLOR { clip(0.5 - i.UV.x); return float4(0, 1, 0, 1); }
-float4 SplatPS(Q i) : COLOR { return float4(0, 0, 1, length(i.UV - BrushPos) < 0.15 ? 1 : 0); }
-technique Main < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
-    "LoopByCount=bReset; Pass=canvas; LoopEnd=; Pass=splat;"; > {
-    pass canvas < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 CanvasPS(); ZEnable = false; }
-    pass splat < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
-        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
-}
-technique Other < string Script = "RenderColorTarget0=; RenderDepthStencilTarget=;"
-    "LoopByCount=bReset; Pass=canvas; LoopEnd=; Pass=splat;"; > {
-    pass canvas < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 LeftCanvasPS(); ZEnable = false; }
-    pass splat < string Script = "Draw=Buffer;"; > {
-        VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 SplatPS(); ZEnable = false;
-        AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; }
-}
-)",
-                               false);
+    auto renderer =
+        loadEffect(paintingEffect("0.75, 0.5",
+                                  "string ScriptClass = \"scene\"; string ScriptOrder = \"standard\"; "
+                                  "string ScriptOutput = \"color\";",
+                                  paintingTechnique("Main", "canvas", "CanvasPS") +
+                                      paintingTechnique("Other", "canvas", "LeftCanvasPS")),
+                   false);
     ASSERT_TRUE(renderer);
     const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
     const auto isWhite = [](const uint8_t* p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; };
