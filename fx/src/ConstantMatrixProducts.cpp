@@ -19,13 +19,6 @@ using glslang::TType;
 // types are read from.
 constexpr const char* kProductsOutsideFunctions = "fx_constant_matrix_products";
 
-// A place in the unit as glslang's source locations give it (ElementWiseProducts.cpp).
-using Place = std::tuple<std::string, int, int>;
-
-Place placeOf(const Token& token) {
-    return Place{token.loc.file, token.loc.line, token.ppColumn};
-}
-
 // Words that end no operand: a `-` after them is a prefix one, a parenthesis after them opens no call.
 bool isStatementKeyword(const Token& token) {
     static const std::set<std::string> keywords = {"return",   "if",      "else", "while",   "for",
@@ -267,18 +260,12 @@ struct FoldedStar {
 
 class BinaryPlaces : public glslang::TIntermTraverser {
 public:
-    std::set<Place> places;
+    std::set<SourcePlace> places;
     bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
-        const glslang::TSourceLoc& at = node->getLoc();
-        places.insert(Place{at.getFilenameStr(), at.line, at.column});
+        places.insert(placeOf(node->getLoc()));
         return true;
     }
 };
-
-// Whether `a` stands before `b` in the same file of the unit.
-bool before(const glslang::TSourceLoc& a, const glslang::TSourceLoc& b) {
-    return a.string == b.string && (a.line < b.line || (a.line == b.line && a.column < b.column));
-}
 
 // HLSL's name of the matrix type `type`, or "" for a type this rewrite does not spell (bool matrices,
 // which `*` converts, and 16-bit ones).
@@ -296,17 +283,12 @@ std::string hlslMatrixName(const TType& type) {
 
 class ProductReader : public glslang::TIntermTraverser {
 public:
-    ProductReader(std::vector<FoldedStar>& stars, std::map<Place, size_t> places)
+    ProductReader(std::vector<FoldedStar>& stars, std::map<SourcePlace, size_t> places)
         : mStars(stars), mPlaces(std::move(places)) {}
 
     bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
-        const glslang::TSourceLoc& at = node->getLoc();
-        const auto found = mPlaces.find(Place{at.getFilenameStr(), at.line, at.column});
-        // mul() builds its product with the operands swapped (ElementWiseProducts.cpp): one that shares a
-        // `*`'s place in generated code is no `*`.
-        if (found == mPlaces.end() || before(at, node->getLeft()->getLoc()) ||
-            before(node->getRight()->getLoc(), at))
-            return true;
+        const auto found = mPlaces.find(placeOf(node->getLoc()));
+        if (found == mPlaces.end() || !standsBetweenItsOperands(*node)) return true;  // a mul()
         FoldedStar& star = mStars[found->second];
         const glslang::TOperator op = node->getOp();
         const bool withVector = op == glslang::EOpMatrixTimesVector || op == glslang::EOpVectorTimesMatrix;
@@ -325,7 +307,7 @@ public:
 
 private:
     std::vector<FoldedStar>& mStars;
-    std::map<Place, size_t> mPlaces;
+    std::map<SourcePlace, size_t> mPlaces;
 };
 
 // The text of tokens `first`..`last` on one line.
@@ -466,7 +448,7 @@ ConstantProductRewrite rewriteConstantMatrixProducts(glslang::TIntermediate& par
         from = offset;
     }
     copy.append(text, from, std::string::npos);
-    std::map<Place, size_t> copyPlaces;
+    std::map<SourcePlace, size_t> copyPlaces;
     for (const Token& token : lexHlslUnit(copy)) {
         const auto found = productAtOffset.find(token.begin);
         if (found != productAtOffset.end()) copyPlaces[placeOf(token)] = found->second;

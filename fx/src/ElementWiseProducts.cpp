@@ -12,10 +12,6 @@ using glslang::TIntermBinary;
 using glslang::TOperator;
 using glslang::TType;
 
-// A place in the unit as glslang's source locations give it: the file of the unit's `#line`, the line that
-// `#line` numbers, and the column in the unit's own line.
-using Place = std::tuple<std::string, int, int>;
-
 std::string typeName(const TType& type) {
     const std::string base = type.getBasicTypeString().c_str();
     // glslang's matrix columns are HLSL's rows (HlslToSpirv.h).
@@ -24,14 +20,9 @@ std::string typeName(const TType& type) {
     return type.getVectorSize() > 1 ? base + std::to_string(type.getVectorSize()) : base;
 }
 
-// Whether `a` stands before `b` in the same file of the unit.
-bool before(const glslang::TSourceLoc& a, const glslang::TSourceLoc& b) {
-    return a.string == b.string && (a.line < b.line || (a.line == b.line && a.column < b.column));
-}
-
 class StarProducts : public glslang::TIntermTraverser {
 public:
-    explicit StarProducts(std::set<Place> stars)
+    explicit StarProducts(std::set<SourcePlace> stars)
         : TIntermTraverser(false, false, true), mStars(std::move(stars)) {}
 
     std::vector<HlslMessage> errors;
@@ -44,11 +35,7 @@ public:
                                 op == glslang::EOpVectorTimesMatrixAssign;
         if (!ofMatrices && !withVector) return true;
         const glslang::TSourceLoc& at = node->getLoc();
-        if (mStars.count(Place{at.getFilenameStr(), at.line, at.column}) == 0) return true;  // a mul()
-        // A `*` stands between its operands; mul(a, b) is built with its operands swapped, so one of them
-        // stands on the far side of the call's place. This keeps a mul() that happens to share a `*`'s
-        // place (a function's copies, generated code behind its own #line) a product.
-        if (before(at, node->getLeft()->getLoc()) || before(node->getRight()->getLoc(), at)) return true;
+        if (mStars.count(placeOf(at)) == 0 || !standsBetweenItsOperands(*node)) return true;  // a mul()
         const TType& left = node->getLeft()->getType();
         const TType& right = node->getRight()->getType();
         // A product of two matrices of one shape is one of square matrices, whose result has that shape too.
@@ -63,10 +50,28 @@ public:
     }
 
 private:
-    std::set<Place> mStars;
+    std::set<SourcePlace> mStars;
 };
 
+// Whether `a` stands before `b` in the same file of the unit.
+bool before(const glslang::TSourceLoc& a, const glslang::TSourceLoc& b) {
+    return a.string == b.string && (a.line < b.line || (a.line == b.line && a.column < b.column));
+}
+
 }  // namespace
+
+SourcePlace placeOf(const Token& token) {
+    return SourcePlace{token.loc.file, token.loc.line, token.ppColumn};
+}
+
+SourcePlace placeOf(const glslang::TSourceLoc& loc) {
+    return SourcePlace{loc.getFilenameStr(), loc.line, loc.column};
+}
+
+bool standsBetweenItsOperands(const glslang::TIntermBinary& node) {
+    const glslang::TSourceLoc& at = node.getLoc();
+    return !before(at, node.getLeft()->getLoc()) && !before(node.getRight()->getLoc(), at);
+}
 
 std::string elementWiseProductOfShapesMessage(const glslang::TType& left, const glslang::TType& right) {
     return "'*' : HLSL multiplies a '" + typeName(left) + "' and a '" + typeName(right) +
@@ -76,10 +81,10 @@ std::string elementWiseProductOfShapesMessage(const glslang::TType& left, const 
 
 std::vector<HlslMessage> makeStarProductsElementWise(glslang::TIntermediate& intermediate,
                                                      const std::vector<Token>& tokens) {
-    std::set<Place> stars;
+    std::set<SourcePlace> stars;
     for (const Token& token : tokens)
         if (token.kind == Token::Kind::Punct && (token.text == "*" || token.text == "*="))
-            stars.insert(Place{token.loc.file, token.loc.line, token.ppColumn});
+            stars.insert(placeOf(token));
     if (stars.empty()) return {};
     StarProducts products(std::move(stars));
     intermediate.getTreeRoot()->traverse(&products);

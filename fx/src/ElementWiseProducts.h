@@ -15,9 +15,22 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace fx::detail {
+
+// A place in the unit as glslang's source locations give it: the file of the unit's `#line`, the line that
+// `#line` numbers, and the column in the unit's own line. A token's and a node's places compare equal
+// where glslang built the node at the token.
+using SourcePlace = std::tuple<std::string, int, int>;
+SourcePlace placeOf(const Token& token);
+SourcePlace placeOf(const glslang::TSourceLoc& loc);
+
+// Whether a product node stands between its operands, as a `*` does; mul(a, b) is built with its operands
+// swapped, so one of them stands on the far side of the call's place. This keeps a mul() that happens to
+// share a `*`'s place (a function's copies, generated code behind its own #line) a product.
+bool standsBetweenItsOperands(const glslang::TIntermBinary& node);
 
 // The error at a `*` that glslang reads as a product of a `left` and a `right` of different shapes, or of a
 // vector and a matrix.
