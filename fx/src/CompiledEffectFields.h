@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 17,
-              "the enum lengths below were pinned at format version 17: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 18,
+              "the enum lengths below were pinned at format version 18: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 39);
 static_assert(enumLength<UniformBinding::Source>() == 2);
@@ -191,7 +191,7 @@ template <class A>
 void fields(A& a, SamplerBinding& x) {
     a(x.glslName, x.unit, x.samplerParameter, x.depthCompare, x.pairTexture, x.pairSampler,
       x.textureParameter);
-    a(x.passSampler, x.read);
+    a(x.passSampler, x.read, x.hostPicture);
 }
 template <class A>
 void fields(A& a, StorageBufferBinding::Run& x) {

@@ -83,6 +83,8 @@ private:
     // The D3D9 sampler-register states of every pass (`MinFilter[0] = LINEAR;`), once its stages compiled.
     void passSamplerStates();
     void passSamplerStates(const Pass& source, CompiledPass& pass);
+    // SamplerBinding::hostPicture of the full-screen passes' samplers, once their sampler states are known.
+    void hostPictureSamplers();
     void pointSprites(CompiledPass& pass);
     // The units of a pass's D3D10 pairs and images, once every stage of the pass compiled, written into
     // its stages' GLSL (layout(binding)) so that the runtime sets no unit by name.
@@ -199,6 +201,8 @@ private:
     std::vector<PendingStage> mPending;
     // The passes that set sampler-register states, by where they stand in mOut.
     std::vector<std::pair<PassSlot, const Pass*>> mSamplerRegisterPasses;
+    // The passes that draw D3D9's full-screen quad (Pass::drawsScreenQuad), by where they stand in mOut.
+    std::vector<PassSlot> mScreenQuadPasses;
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;
 };

@@ -348,6 +348,7 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                                    RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3})
             pass.states.push_back(RenderStateSetting{mask, 0.0, {}, p.loc});
     if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
+    if (p.drawsScreenQuad) mScreenQuadPasses.push_back(slot);
     passAnnotations(p, pass);
     pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
@@ -454,6 +455,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
                           [index](const PendingStage& stage) { return stage.slot.technique == index; });
             std::erase_if(mSamplerRegisterPasses,
                           [index](const auto& p) { return p.first.technique == index; });
+            std::erase_if(mScreenQuadPasses, [index](const PassSlot& p) { return p.technique == index; });
             std::erase_if(mStreamOutRequests,
                           [index](const StreamOutRequest& r) { return r.slot.technique == index; });
             invalid.emplace_back(&t, std::move(mTechniqueUnsupported));
@@ -477,6 +479,7 @@ std::unique_ptr<CompiledEffect> Compiler::run() {
     assignPairUnits();
     assignImageUnits();
     passSamplerStates();
+    hostPictureSamplers();
     passReads();
     // A file without techniques compiles, as under fxc and D3DX: an effect pool's shared parameters,
     // declarations for other effects. Only running it needs a technique (the runtime says so).

@@ -281,6 +281,73 @@ TEST(FixedFunctionPasses, PixelShaderAloneDrawsAFullScreenQuad) {
     }
 }
 
+// The DirectX SDK's post-processing passes and SpriteBatch's pixel shaders sample a texture their
+// application bound: the scene it had rendered, or the sprite. The effect gives those samplers nothing;
+// the host binds its picture of the scene there (the host background, the objects in their colours), and
+// the application's own texture where it gave one. A sampler with a texture of the effect's keeps it.
+const char* kPostProcess = R"(
+texture g_txSrcColor;
+sampler2D g_samSrcColor = sampler_state { Texture = <g_txSrcColor>; MinFilter = Point; MagFilter = Point; };
+sampler2D Sprite : register(s1);
+texture Noise < string Procedural = "noise"; >;
+sampler2D NoiseSampler = sampler_state { Texture = <Noise>; };
+float4 InvertPS(float2 uv : TEXCOORD0) : COLOR0 { return float4(1 - tex2D(g_samSrcColor, uv).rgb, 1); }
+float4 SwizzlePS(float2 uv : TEXCOORD0) : COLOR0 { return float4(tex2D(Sprite, uv).bgr, 1); }
+float4 NoisePS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(NoiseSampler, uv); }
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 SceneVS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProjection); }
+technique Invert { pass p { VertexShader = null; PixelShader = compile ps_2_0 InvertPS(); } }
+technique Swizzle { pass p { PixelShader = compile ps_2_0 SwizzlePS(); } }
+technique Noise { pass p { PixelShader = compile ps_2_0 NoisePS(); } }
+technique Scene { pass p { VertexShader = compile vs_2_0 SceneVS(); PixelShader = compile ps_2_0 InvertPS(); } }
+)";
+
+TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGivesNoTexture) {
+    fx::DiagnosticList diagnostics;
+    auto parsed = fx::parseEffectSource(kPostProcess, "post_process.fx", {}, diagnostics);
+    ASSERT_TRUE(parsed) << diagnostics.str();
+    auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const auto readsHostPicture = [&](const std::string& technique) {
+        const fx::CompiledTechnique* t = compiled->findTechnique(technique);
+        EXPECT_TRUE(t && t->passes.size() == 1 && t->passes[0].fragment.samplers.size() >= 1) << technique;
+        int marked = 0;
+        for (const fx::SamplerBinding& binding : t->passes[0].fragment.samplers)
+            marked += binding.read && binding.hostPicture;
+        return marked;
+    };
+    EXPECT_EQ(readsHostPicture("Invert"), 1);   // a texture without contents
+    EXPECT_EQ(readsHostPicture("Swizzle"), 1);  // a bare sampler
+    EXPECT_EQ(readsHostPicture("Noise"), 0);    // the effect's own texture
+    EXPECT_EQ(readsHostPicture("Scene"), 0);    // not a full-screen pass
+
+    auto renderer = loadEffect(kPostProcess, false, "post_process.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage inverted = frame(*renderer, "Invert");
+    const runtime::FrameImage swizzled = frame(*renderer, "Swizzle");
+    ASSERT_TRUE(notConstant(inverted));
+    // Where no object is, the host background (64, 72, 96), inverted and swizzled.
+    EXPECT_EQ(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159),
+              countPixelsOfColour(swizzled, kSize, kSize, 96, 72, 64));
+    EXPECT_GT(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159), kSize * kSize / 4);
+    EXPECT_LT(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159), kSize * kSize * 9 / 10);
+    // Both passes read one picture: every pixel of one is the other's, inverted and swizzled.
+    int differing = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x)
+            for (int c = 0; c < 3; ++c)
+                differing += std::abs(255 - inverted.pixel(x, y)[c] - swizzled.pixel(x, y)[2 - c]) > 1;
+    EXPECT_EQ(differing, 0);
+
+    // The application's texels win: the frame is their colour, inverted.
+    runtime::TextureData red;
+    red.width = red.height = 1;
+    red.rgba = {1.0f, 0.0f, 0.0f, 1.0f};
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("g_txSrcColor"), red, diagnostics))
+        << diagnostics.str();
+    EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Invert"), kSize, kSize, 0, 255, 255), kSize * kSize);
+}
+
 // Compiles `passBody` as the one pass of an effect; returns the diagnostics.
 fx::DiagnosticList compileDiagnostics(const std::string& passBody) {
     fx::DiagnosticList diagnostics;

@@ -286,6 +286,24 @@ const EffectTextures::ApplicationTexture* EffectTextures::applicationTexture(siz
     return found == mApplicationTextures.end() ? nullptr : &found->second;
 }
 
+bool EffectTextures::givenByApplication(size_t parameter) const {
+    return mApplicationTextures.count(parameter) || mSetByApplication.count(parameter);
+}
+
+RenderTargets EffectTextures::hostPictureTargets(int width, int height) {
+    if (mHostPicture.width() != width || mHostPicture.height() != height) {
+        if (mHostPicture) mFramebuffers.evict(mHostPicture);
+        if (mHostPictureDepth) mFramebuffers.evict(mHostPictureDepth);
+        mHostPicture = GpuTexture::create2D(fx::TextureFormat::RGBA8, width, height);
+        mHostPicture.setLabel("host picture");
+        mHostPictureDepth = GpuTexture::create2D(fx::TextureFormat::D24S8, width, height);
+    }
+    RenderTargets targets;
+    targets.colors[0].texture = &mHostPicture;
+    targets.depth.texture = &mHostPictureDepth;
+    return targets;
+}
+
 void EffectTextures::uploadFrameColor(const uint8_t* rgba8) {
     mFrameColor.uploadRGBA8(rgba8);
 }
@@ -449,6 +467,7 @@ bool EffectTextures::set(size_t index, const TextureData& data, fx::DiagnosticSi
     texture.generateMipmaps();
     texture.setLabel(mEffect->parameters[index].name);
     replace(index, std::move(texture));
+    mSetByApplication.insert(index);
     return true;
 }
 

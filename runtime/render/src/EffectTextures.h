@@ -66,6 +66,11 @@ public:
     void setApplicationTexture(size_t parameter, GLuint name, GLenum target);
     // The application's texture for a parameter, or null where it gave none.
     const ApplicationTexture* applicationTexture(size_t parameter) const;
+    // Whether the application gave the parameter a texture: its own GL texture or texels (set()).
+    bool givenByApplication(size_t parameter) const;
+    // The host's picture of the scene that full-screen passes' samplers read (SamplerBinding::hostPicture):
+    // a colour and a depth target of width x height, made or resized here. The caller paints them.
+    RenderTargets hostPictureTargets(int width, int height);
     // Host files write their shadow ratio into the frame's colour target.
     void uploadFrameColor(const uint8_t* rgba8);
 
@@ -97,6 +102,9 @@ private:
     std::set<const GpuTexture*> mStaleMipChains;  // mipmapped targets written since their chain was made
     std::map<size_t, ApplicationTexture> mApplicationTextures;  // by texture parameter index
     std::map<fx::BaseType, GpuTexture> mNeutralTextures;        // neutralFor's, made on first use
+    std::set<size_t> mSetByApplication;  // read textures whose texels the application gave (set())
+    GpuTexture mHostPicture;             // hostPictureTargets', made on first use
+    GpuTexture mHostPictureDepth;
 };
 
 // A render target's size for a frame of width x height: its Dimensions, or its ViewPortRatio of the frame.

@@ -205,6 +205,7 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         }
     }
     binding.program = program;
+    if (readsHostPicture(mResources, pass)) binding.hostPicture = hostPicture();
     {
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
         FramebufferFault fault;
@@ -325,6 +326,32 @@ void FrameExecutor::drawScene(const fx::ScriptCommand&) {
         ++mStats.draws;
         mStats.triangles += mesh.indexCount() / 3;
     }
+}
+
+const GpuTexture* FrameExecutor::hostPicture() {
+    if (mHostPicture) return mHostPicture;
+    PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    const GpuTexture& frame = mResources.textures->frameColor();
+    const RenderTargets targets = mResources.textures->hostPictureTargets(frame.width(), frame.height());
+    FramebufferFault fault;
+    if (!bindPassTargets(mResources, targets, fault)) return nullptr;
+    applyRenderStates(RenderStateBlock::defaults());
+    ClearRequest clear;
+    clear.color = {kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a};
+    clear.depth = 1.0f;
+    clear.stencil = 0;
+    FramebufferCache::clear(clear);
+    RenderPortView camera;
+    if (portMatrices(mScene, mBinder, mOptions, "", -1, -1, camera))
+        for (const SceneObject& object : mScene.objects) {
+            if (!object.mesh) continue;
+            GpuMesh& mesh = mResources.gpuMesh(object.mesh);
+            mResources.hostScene.draw(mScene, object, camera.view, camera.projection, mesh);
+            ++mStats.draws;
+            mStats.triangles += mesh.indexCount() / 3;
+        }
+    mHostPicture = targets.colors[0].texture;
+    return mHostPicture;
 }
 
 void FrameExecutor::setLoopIndex(const std::string& name, int parameter, int index) {

@@ -94,6 +94,11 @@ private:
                   const SceneObject* object, GpuMesh& mesh);
     void drawCapture(const fx::CompiledPass& pass, size_t passIndex, GpuProgram& program, const PassUse& use);
     void countDraw(const GpuMesh& mesh, int objects);
+    // The host's picture of the scene that full-screen passes read (SamplerBinding::hostPicture): the
+    // scene from the camera with the host's default material over the host background, painted at the
+    // frame's size when a pass first reads it in the frame. Null if its targets cannot be bound (never
+    // expected).
+    const GpuTexture* hostPicture();
     // FrameOptions::batching: the pass's instanced variant for its current per-object parameters, or null
     // where it is drawn object by object.
     BatchedPass* batchedPass(const fx::CompiledPass& pass, size_t passIndex, const PassUse& use);
@@ -129,6 +134,7 @@ private:
     using Batch = EffectResources::FrameScratch::Batch;
     std::vector<Batch>& mBatches;
     RenderTargets mTargets;
+    const GpuTexture* mHostPicture = nullptr;  // painted this frame (hostPicture())
     RenderPortView mPort;
     bool mLightPort = false;
     const Light* mPortLight = nullptr;

@@ -10,18 +10,27 @@ namespace runtime {
 
 namespace {
 
+// The texture parameter a sampler binding samples: a D3D10 pair's own texture (sampled through the
+// sampler's states), else the sampler's; none for a bare sampler.
+std::optional<size_t> sampledTexture(const EffectResources& resources, const fx::SamplerBinding& binding) {
+    if (binding.textureParameter) return binding.textureParameter;
+    const fx::SamplerDesc* desc = resources.effect().findSampler(binding.samplerParameter);
+    return desc ? desc->texture : std::nullopt;
+}
+
 void bindStageTextures(EffectResources& resources, const fx::StageProgram& stage,
-                       const RenderTargets& drawing) {
+                       const RenderTargets& drawing, const GpuTexture* hostPicture) {
     for (const fx::SamplerBinding& binding : stage.samplers) {
-        const fx::SamplerDesc* desc = resources.effect().findSampler(binding.samplerParameter);
-        // A D3D10 pair samples its own texture through the sampler's states.
-        const std::optional<size_t> textureParameter = binding.textureParameter ? binding.textureParameter
-                                                       : desc                   ? desc->texture
-                                                                                : std::nullopt;
+        const std::optional<size_t> textureParameter = sampledTexture(resources, binding);
         gl::ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(binding.unit));
         // A bare sampler's texture is the application's under the sampler's own index (EffectVariable).
-        const EffectTextures::ApplicationTexture* application = resources.textures->applicationTexture(
-            textureParameter ? *textureParameter : binding.samplerParameter);
+        const size_t given = textureParameter.value_or(binding.samplerParameter);
+        if (binding.hostPicture && hostPicture && !resources.textures->givenByApplication(given)) {
+            gl::BindTexture(hostPicture->target(), hostPicture->id());
+            resources.samplers.bind(binding);
+            continue;
+        }
+        const EffectTextures::ApplicationTexture* application = resources.textures->applicationTexture(given);
         const GpuTexture* texture = nullptr;
         if (textureParameter) {
             // A view of a read-write texture (`string ViewOf`) samples the image's texture.
@@ -57,12 +66,14 @@ std::array<const fx::StageProgram*, 6> stagesOf(const fx::CompiledPass& pass) {
     return {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment, &pass.compute};
 }
 
-// Every stage's sampled textures (an application's GL texture where it set one, else the effect's texture
-// or Buffer<T>, else none) and sampler objects. A mipmapped render target written since its chain was
+// Every stage's sampled textures (the host's picture for the samplers that read it where the application
+// gave them nothing, else an application's GL texture where it set one, else the effect's texture or
+// Buffer<T>, else none) and sampler objects. A mipmapped render target written since its chain was
 // built gets its chain first, unless `drawing` renders into it.
-void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass,
-                      const RenderTargets& drawing) {
-    for (const fx::StageProgram* stage : stagesOf(pass)) bindStageTextures(resources, *stage, drawing);
+void bindPassTextures(EffectResources& resources, const fx::CompiledPass& pass, const RenderTargets& drawing,
+                      const GpuTexture* hostPicture) {
+    for (const fx::StageProgram* stage : stagesOf(pass))
+        bindStageTextures(resources, *stage, drawing, hostPicture);
 }
 
 // The buffers behind the pass's StructuredBuffer and ByteAddressBuffer blocks, and the counters of its
@@ -127,7 +138,7 @@ bool bindPass(EffectResources& resources, size_t technique, size_t pass, const P
                           binding.depthBits);
     }
     if (!program || !program->hasShaders()) return true;
-    bindPassTextures(resources, compiled, drawing);
+    bindPassTextures(resources, compiled, drawing, binding.hostPicture);
     bindPassStorageBuffers(resources, compiled);
     bindPassImages(resources, compiled);
     program->bind();
@@ -152,6 +163,16 @@ void commitPassValues(EffectResources& resources, size_t technique, size_t pass,
     if (!program || !program->hasShaders()) return;
     evaluatePassArguments(resources, technique, pass, nullptr, arguments, diagnostics);
     uploadPassValues(resources, *program, arguments);
+}
+
+bool readsHostPicture(const EffectResources& resources, const fx::CompiledPass& pass) {
+    for (const fx::SamplerBinding& binding : pass.fragment.samplers) {
+        if (!binding.hostPicture) continue;
+        const std::optional<size_t> texture = sampledTexture(resources, binding);
+        // A bare sampler's texture is the application's under the sampler's own index (EffectVariable).
+        if (!resources.textures->givenByApplication(texture.value_or(binding.samplerParameter))) return true;
+    }
+    return false;
 }
 
 int depthBiasBits(const GpuTexture* texture) {

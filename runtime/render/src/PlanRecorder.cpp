@@ -2,6 +2,7 @@
 #include "PlanRecorder.h"
 
 #include <runtime/IntersectionBody.h>
+#include "PassBindings.h"
 #include "RenderPort.h"
 
 #include <algorithm>
@@ -113,6 +114,25 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
     op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
 }
 
+// What the host's picture of the scene (FrameExecutor::hostPicture) shows: the objects, the camera and the
+// first light of HostScenePainter's lighting.
+uint64_t PlanRecorder::hostPictureSignature() const {
+    uint64_t h = hashCombine(0x486f737450696374ull, mResources.sceneCache.stamp());  // "HostPict"
+    RenderPortView camera;
+    if (portMatrices(mScene, mBinder, mOptions, "", -1, -1, camera)) {
+        h = hashBytes(h, &camera.view, sizeof(camera.view));
+        h = hashBytes(h, &camera.projection, sizeof(camera.projection));
+    }
+    if (!mScene.lights.empty()) {
+        const Light& light = mScene.lights.front();
+        h = hashBytes(h, &light.position, sizeof(light.position));
+        h = hashBytes(h, &light.direction, sizeof(light.direction));
+        h = hashBytes(h, &light.color, sizeof(light.color));
+        h = hashCombine(h, static_cast<uint64_t>(light.type));
+    }
+    return h;
+}
+
 void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) {
     const size_t index = passIndex(pass);
     const GpuProgram* program = mResources.programs->program(mTechnique, index);
@@ -186,6 +206,7 @@ void PlanRecorder::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWha
     for (size_t p : use.perPassParameters)
         h = hashBytes(hashCombine(h, p), mValues[p].data.data(), mValues[p].data.size() * sizeof(float));
     if (op.kind == PlannedOp::Kind::DrawGeometry) h = hashCombine(h, mResources.sceneCache.stamp());
+    if (readsHostPicture(mResources, pass)) h = hashCombine(h, hostPictureSignature());
     for (const fx::StageProgram* stage :
          {&pass.vertex, &pass.hull, &pass.domain, &pass.geometry, &pass.fragment})
         if (!stage->storageBuffers.empty() || !stage->images.empty())

@@ -55,6 +55,7 @@ private:
     bool sceneSaysSkip(const fx::CompiledPass& pass) const;
     static float receiverPadTexels(const fx::CompiledPass& pass);
     glm::mat4 cascadeSlice() const;
+    uint64_t hostPictureSignature() const;
     // The bound colour targets, into `targets` (its storage kept).
     void colorTargets(std::vector<int>& targets) const;
     glm::vec2 targetSize() const;
