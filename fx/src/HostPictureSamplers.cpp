@@ -7,17 +7,22 @@
 // a pixel shader handed to XNA's and MonoGame's SpriteBatch, the sprite's texture to register s0. The
 // effect itself gives such a sampler nothing: no file, no render target, no texture function. Drawn on
 // its own, the pass samples the runtime's neutral white and the frame is one colour; drawn by the host,
-// the sampler reads the host's picture of the scene, as its application's would have.
+// the sampler reads the host's picture of the scene, as its application's would have. A view of a
+// read-write texture (`string ViewOf`) has contents: what the effect's compute passes write.
 #include "Compiler.h"
+
+#include <set>
 
 namespace fx::detail {
 
 void Compiler::hostPictureSamplers() {
+    std::set<size_t> noted;  // each sampler once, at its first full-screen pass
     for (const PassSlot& slot : mScreenQuadPasses) {
         if (slot.technique >= mOut->techniques.size() ||
             slot.pass >= mOut->techniques[slot.technique].passes.size())
             continue;
-        for (SamplerBinding& binding : mOut->techniques[slot.technique].passes[slot.pass].fragment.samplers) {
+        CompiledPass& pass = mOut->techniques[slot.technique].passes[slot.pass];
+        for (SamplerBinding& binding : pass.fragment.samplers) {
             if (!binding.read || binding.depthCompare || binding.samplerParameter == kNoSampler) continue;
             // The picture is a 2D texture: a cube or volume sampler keeps its neutral texture.
             const BaseType samplerType = mOut->parameters[binding.samplerParameter].type.base;
@@ -35,8 +40,13 @@ void Compiler::hostPictureSamplers() {
             }
             const TextureDesc* desc = mOut->findTexture(*texture);
             binding.hostPicture = desc && desc->kind == TextureDesc::Kind::Runtime &&
-                                  desc->resourceName.empty() && desc->type == BaseType::Texture2D;
+                                  desc->type == BaseType::Texture2D && !mOut->parameters[*texture].viewOf;
         }
+        for (const SamplerBinding& binding : pass.fragment.samplers)
+            if (binding.hostPicture && noted.insert(binding.samplerParameter).second) {
+                const ParameterInfo& sampler = mOut->parameters[binding.samplerParameter];
+                mDiagnostics.report(DiagId::SamplerReadsHostPicture, sampler.loc, {sampler.name, pass.name});
+            }
     }
 }
 

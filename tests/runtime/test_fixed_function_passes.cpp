@@ -7,6 +7,7 @@
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/BuiltinScenes.h>
+#include <runtime/GlApi.h>
 
 namespace shadowfx::test::test_fixed_function_passes {
 namespace {
@@ -125,17 +126,23 @@ std::pair<int, int> drawnOfColour(const runtime::FrameImage& image, int r, int g
     return {matching, drawn};
 }
 
-// Pixels of `a` and `b` whose channels differ by more than `tolerance`.
-int differingPixels(const runtime::FrameImage& a, const runtime::FrameImage& b, int tolerance) {
+// Pixels where a channel of `a`, as `map` reads it (the pixel, the channel), and the same channel of `b`
+// differ by more than `tolerance`.
+template <class Map>
+int differingPixels(const runtime::FrameImage& a, const runtime::FrameImage& b, int tolerance, Map map) {
     int count = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x)
             for (int c = 0; c < 3; ++c)
-                if (std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]) > tolerance) {
+                if (std::abs(map(a.pixel(x, y), c) - b.pixel(x, y)[c]) > tolerance) {
                     ++count;
                     break;
                 }
     return count;
+}
+
+int differingPixels(const runtime::FrameImage& a, const runtime::FrameImage& b, int tolerance) {
+    return differingPixels(a, b, tolerance, [](const uint8_t* p, int c) { return int(p[c]); });
 }
 
 TEST(FixedFunctionPasses, LightsAsAVertexShaderWouldLightThem) {
@@ -283,23 +290,36 @@ TEST(FixedFunctionPasses, PixelShaderAloneDrawsAFullScreenQuad) {
 
 // The DirectX SDK's post-processing passes and SpriteBatch's pixel shaders sample a texture their
 // application bound: the scene it had rendered, or the sprite. The effect gives those samplers nothing;
-// the host binds its picture of the scene there (the host background, the objects in their colours), and
-// the application's own texture where it gave one. A sampler with a texture of the effect's keeps it.
+// the host binds its picture of the scene there, the frame the host draws at `ScriptExternal=color`
+// (technique HostScene), and the application's own texture where it gave one. A sampler with a texture
+// of the effect's keeps it: a file's, a texture function's, or a read-write texture's view that a compute
+// pass fills.
 const char* kPostProcess = R"(
 texture g_txSrcColor;
 sampler2D g_samSrcColor = sampler_state { Texture = <g_txSrcColor>; MinFilter = Point; MagFilter = Point; };
 sampler2D Sprite : register(s1);
 texture Noise < string Procedural = "noise"; >;
 sampler2D NoiseSampler = sampler_state { Texture = <Noise>; };
+RWTexture2D<float4> Field < int Width = 8; int Height = 8; >;
+Texture2D FieldView < string ViewOf = "Field"; >;
+sampler2D FieldSampler = sampler_state { Texture = <FieldView>; MinFilter = Point; MagFilter = Point; };
 float4 InvertPS(float2 uv : TEXCOORD0) : COLOR0 { return float4(1 - tex2D(g_samSrcColor, uv).rgb, 1); }
 float4 SwizzlePS(float2 uv : TEXCOORD0) : COLOR0 { return float4(tex2D(Sprite, uv).bgr, 1); }
 float4 NoisePS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(NoiseSampler, uv); }
+[numthreads(8, 8, 1)]
+void FillCS(uint3 id : SV_DispatchThreadID) { Field[id.xy] = float4(1, 0, 1, 1); }
+float4 FieldPS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(FieldSampler, uv); }
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 float4 SceneVS(float3 p : POSITION) : POSITION { return mul(float4(p, 1), WorldViewProjection); }
 technique Invert { pass p { VertexShader = null; PixelShader = compile ps_2_0 InvertPS(); } }
 technique Swizzle { pass p { PixelShader = compile ps_2_0 SwizzlePS(); } }
 technique Noise { pass p { PixelShader = compile ps_2_0 NoisePS(); } }
+technique Field < string Script = "Pass=Fill; Pass=Show;"; > {
+    pass Fill < string Script = "Dispatch=1,1;"; > { ComputeShader = compile cs_5_0 FillCS(); }
+    pass Show { PixelShader = compile ps_3_0 FieldPS(); }
+}
 technique Scene { pass p { VertexShader = compile vs_2_0 SceneVS(); PixelShader = compile ps_2_0 InvertPS(); } }
+technique HostScene < string Script = "ScriptExternal=color;"; > { }
 )";
 
 TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGivesNoTexture) {
@@ -308,38 +328,65 @@ TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGiv
     ASSERT_TRUE(parsed) << diagnostics.str();
     auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
+    // The samplers of the technique's last pass that the compiler marks; -1 where it has no such pass.
     const auto readsHostPicture = [&](const std::string& technique) {
         const fx::CompiledTechnique* t = compiled->findTechnique(technique);
-        EXPECT_TRUE(t && t->passes.size() == 1 && t->passes[0].fragment.samplers.size() >= 1) << technique;
+        if (!t || t->passes.empty() || t->passes.back().fragment.samplers.empty()) {
+            ADD_FAILURE() << technique << ": no pass that samples";
+            return -1;
+        }
         int marked = 0;
-        for (const fx::SamplerBinding& binding : t->passes[0].fragment.samplers)
+        for (const fx::SamplerBinding& binding : t->passes.back().fragment.samplers)
             marked += binding.read && binding.hostPicture;
         return marked;
     };
     EXPECT_EQ(readsHostPicture("Invert"), 1);   // a texture without contents
     EXPECT_EQ(readsHostPicture("Swizzle"), 1);  // a bare sampler
     EXPECT_EQ(readsHostPicture("Noise"), 0);    // the effect's own texture
+    EXPECT_EQ(readsHostPicture("Field"), 0);    // a view of what a compute pass writes
     EXPECT_EQ(readsHostPicture("Scene"), 0);    // not a full-screen pass
+    // A note at each such sampler says so.
+    EXPECT_EQ(countDiagnostics(diagnostics, fx::DiagId::SamplerReadsHostPicture), 2) << diagnostics.str();
 
     auto renderer = loadEffect(kPostProcess, false, "post_process.fx");
     ASSERT_TRUE(renderer);
-    const runtime::FrameImage inverted = frame(*renderer, "Invert");
-    const runtime::FrameImage swizzled = frame(*renderer, "Swizzle");
-    ASSERT_TRUE(notConstant(inverted));
-    // Where no object is, the host background (64, 72, 96), inverted and swizzled.
-    EXPECT_EQ(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159),
-              countPixelsOfColour(swizzled, kSize, kSize, 96, 72, 64));
-    EXPECT_GT(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159), kSize * kSize / 4);
-    EXPECT_LT(countPixelsOfColour(inverted, kSize, kSize, 191, 183, 159), kSize * kSize * 9 / 10);
-    // Both passes read one picture: every pixel of one is the other's, inverted and swizzled.
-    int differing = 0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x)
-            for (int c = 0; c < 3; ++c)
-                differing += std::abs(255 - inverted.pixel(x, y)[c] - swizzled.pixel(x, y)[2 - c]) > 1;
-    EXPECT_EQ(differing, 0);
+    const runtime::FrameImage host = frame(*renderer, "HostScene");
+    ASSERT_TRUE(notConstant(host));
+    // The teapot scene over the host background (64, 72, 96), which covers part of the frame.
+    EXPECT_GT(countPixelsOfColour(host, kSize, kSize, 64, 72, 96), kSize * kSize / 4);
+    EXPECT_LT(countPixelsOfColour(host, kSize, kSize, 64, 72, 96), kSize * kSize * 9 / 10);
+    const auto inverse = [](const uint8_t* p, int c) { return 255 - p[c]; };
+    const auto swizzle = [](const uint8_t* p, int c) { return int(p[2 - c]); };
+    EXPECT_EQ(differingPixels(frame(*renderer, "Invert"), host, 1, inverse), 0);
+    EXPECT_EQ(differingPixels(frame(*renderer, "Swizzle"), host, 1, swizzle), 0);
+    // The effect's own textures: noise, and the compute pass's magenta.
+    EXPECT_GT(differingPixels(frame(*renderer, "Noise"), host, 1), kSize * kSize / 2);
+    EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Field"), kSize, kSize, 255, 0, 255), kSize * kSize);
+    // Leave-out draws the same frame as a frame drawn in full.
+    {
+        fx::DiagnosticList drawn;
+        runtime::FrameOptions options;
+        options.width = options.height = kSize;
+        options.technique = "Invert";
+        options.leaveOut = false;
+        ASSERT_TRUE(renderer->render(teapot(), options, drawn)) << drawn.str();
+        EXPECT_EQ(differingPixels(renderer->readFrame(), host, 1, inverse), 0);
+    }
 
-    // The application's texels win: the frame is their colour, inverted.
+    // The application's texture wins, a GL texture of its own given to the sampler or texels given to the
+    // texture, until it takes it back.
+    GLuint blue = 0;
+    const uint8_t texel[4] = {0, 0, 255, 255};
+    gl::GenTextures(1, &blue);
+    gl::BindTexture(GL_TEXTURE_2D, blue);
+    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
+    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    ASSERT_TRUE(renderer->variable("Sprite").setTexture(blue));
+    EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Swizzle"), kSize, kSize, 255, 0, 0), kSize * kSize);
+    ASSERT_TRUE(renderer->variable("Sprite").setTexture(0));
+    EXPECT_EQ(differingPixels(frame(*renderer, "Swizzle"), host, 1, swizzle), 0);
+    gl::DeleteTextures(1, &blue);
     runtime::TextureData red;
     red.width = red.height = 1;
     red.rgba = {1.0f, 0.0f, 0.0f, 1.0f};

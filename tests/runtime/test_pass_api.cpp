@@ -633,7 +633,8 @@ TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {
 }
 
 // XNA's and MonoGame's stock effects declare their texture as a bare sampler, `sampler2D Texture :
-// register(s0);`, and their applications set it through the sampler: white until then.
+// register(s0);`, and their applications set it through the sampler: white until then, also in a pass
+// with a pixel shader alone (SpriteBatch's), which reads the host's picture only when render() draws it.
 const char* kBareSampler = R"(
 float4x4 WorldViewProj : WorldViewProjection;
 sampler2D Texture : register(s0);
@@ -644,6 +645,7 @@ VsOut VS(float3 p : POSITION, float2 uv : TEXCOORD0) {
 }
 float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(Texture, uv) * float4(0.5, 0.5, 0.5, 1); }
 technique Textured { pass { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+technique Sprite { pass { PixelShader = compile ps_3_0 PS(); } }
 )";
 
 TEST(PassApi, AnApplicationSetsABareSamplersTexture) {
@@ -655,23 +657,26 @@ TEST(PassApi, AnApplicationSetsABareSamplersTexture) {
     ASSERT_TRUE(effect->variableBySemantic("WorldViewProjection").setMatrix(glm::mat4(1.0f)));
 
     ApplicationMesh mesh(fullScreenQuad());
-    const runtime::EffectPass pass = effect->technique("Textured").pass(0);
-    const auto drawn = [&]() {
-        fx::DiagnosticList diagnostics;
-        target.clear();
-        EXPECT_TRUE(effect->technique("Textured").begin());
-        EXPECT_TRUE(pass.apply(&diagnostics)) << diagnostics.str();
-        mesh.bind(pass);
-        mesh.draw();
-        effect->technique("Textured").end();
-        const runtime::FrameImage image = target.read();
-        return std::vector<int>(image.pixel(4, 4), image.pixel(4, 4) + 3);
-    };
-    EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));  // the neutral white texture, halved
-    ASSERT_TRUE(effect->variable("Texture").setTexture(texture));
-    EXPECT_EQ(drawn(), (std::vector<int>{128, 64, 32}));
-    ASSERT_TRUE(effect->variable("Texture").setTexture(0));
-    EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));
+    for (const char* technique : {"Textured", "Sprite"}) {
+        SCOPED_TRACE(technique);
+        const runtime::EffectPass pass = effect->technique(technique).pass(0);
+        const auto drawn = [&]() {
+            fx::DiagnosticList diagnostics;
+            target.clear();
+            EXPECT_TRUE(effect->technique(technique).begin());
+            EXPECT_TRUE(pass.apply(&diagnostics)) << diagnostics.str();
+            mesh.bind(pass);
+            mesh.draw();
+            effect->technique(technique).end();
+            const runtime::FrameImage image = target.read();
+            return std::vector<int>(image.pixel(4, 4), image.pixel(4, 4) + 3);
+        };
+        EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));  // the neutral white texture, halved
+        ASSERT_TRUE(effect->variable("Texture").setTexture(texture));
+        EXPECT_EQ(drawn(), (std::vector<int>{128, 64, 32}));
+        ASSERT_TRUE(effect->variable("Texture").setTexture(0));
+        EXPECT_EQ(drawn(), (std::vector<int>{128, 128, 128}));
+    }
     gl::BindVertexArray(0);
     gl::DeleteTextures(1, &texture);
 }

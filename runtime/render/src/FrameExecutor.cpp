@@ -205,7 +205,8 @@ void FrameExecutor::draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWh
         }
     }
     binding.program = program;
-    if (readsHostPicture(mResources, pass)) binding.hostPicture = hostPicture();
+    // The vertex-only variant has no pixel stage to read it.
+    if (!vertexOnly && readsHostPicture(mResources, pass)) binding.hostPicture = hostPicture();
     {
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
         FramebufferFault fault;

@@ -62,6 +62,9 @@ void HostScenePainter::draw(const Scene& scene, const SceneObject& object, const
                             const glm::mat4& projection, GpuMesh& mesh) {
     if (!ready()) return;
     gl::UseProgram(mProgram);
+    // The last pass's program may have enabled clip distances, which this program does not write (GL
+    // leaves such a clip undefined); GpuProgram::bind sets them again for the next pass.
+    for (GLenum i = 0; i < 8; ++i) gl::Disable(GL_CLIP_DISTANCE0 + i);
     const glm::mat4 viewProjection = projection * view;
     gl::UniformMatrix4fv(mLocations[0], 1, GL_FALSE, glm::value_ptr(object.world));
     gl::UniformMatrix4fv(mLocations[1], 1, GL_FALSE, glm::value_ptr(viewProjection));

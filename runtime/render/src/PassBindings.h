@@ -71,11 +71,10 @@ void commitPassValues(EffectResources& resources, size_t technique, size_t pass,
 // DepthBias's depth bits for a depth target of `texture` (RenderStateApplier.h): 2^-bits for UNORM depth;
 // for D32F the resolvable difference is 2^-24 for depths in [0.5, 1), so 32-bit float depth counts as 24
 // bits; 24 without one.
+int depthBiasBits(const GpuTexture* texture);
 // Whether a sampler of the pass reads the host's picture: one marked SamplerBinding::hostPicture whose
 // texture the application did not give.
 bool readsHostPicture(const EffectResources& resources, const fx::CompiledPass& pass);
-
-int depthBiasBits(const GpuTexture* texture);
 // What applying `pass` writes to the context besides its targets (GlStateSnapshot.h).
 GlStateMask passStateMask(const fx::CompiledPass& pass);
 

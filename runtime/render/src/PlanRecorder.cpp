@@ -114,10 +114,12 @@ void PlanRecorder::drawScene(const fx::ScriptCommand&) {
     op.signature = hashBytes(h, &mPort.projection, sizeof(mPort.projection));
 }
 
-// What the host's picture of the scene (FrameExecutor::hostPicture) shows: the objects, the camera and the
-// first light of HostScenePainter's lighting.
+// What the host's picture of the scene (FrameExecutor::hostPicture) shows: the objects, the camera, the
+// first light of HostScenePainter's lighting, and its size (the frame's).
 uint64_t PlanRecorder::hostPictureSignature() const {
     uint64_t h = hashCombine(0x486f737450696374ull, mResources.sceneCache.stamp());  // "HostPict"
+    h = hashCombine(h, (static_cast<uint64_t>(static_cast<uint32_t>(mOptions.width)) << 32) |
+                           static_cast<uint32_t>(mOptions.height));
     RenderPortView camera;
     if (portMatrices(mScene, mBinder, mOptions, "", -1, -1, camera)) {
         h = hashBytes(h, &camera.view, sizeof(camera.view));

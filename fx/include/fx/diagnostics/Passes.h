@@ -28,6 +28,9 @@ FX_DIAGNOSTIC(VertexInputConstant, Note,
 FX_DIAGNOSTIC(VertexInputMatrixIdentity, Note,
               "vertex input '{0}' is a matrix, which no mesh stream holds (a per-instance transform, which "
               "each object's World carries here); it reads the identity matrix")
+FX_DIAGNOSTIC(SamplerReadsHostPicture, Note,
+              "sampler '{0}' of the full-screen pass '{1}' has no texture in the effect (its application "
+              "bound one); drawn by a host, it reads the host's picture of the scene")
 // glslang's "mul() matrix size mismatch" said as fxc said it: both truncate the larger operand.
 FX_DIAGNOSTIC(ImplicitTruncation, Warning,
               "implicit truncation of vector type (fxc's X3206): mul() of a vector and a matrix that differ "
