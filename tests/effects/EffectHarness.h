@@ -5,11 +5,14 @@
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/EffectRenderer.h>
+#include <runtime/GlApi.h>
 #include <runtime/GlContext.h>
 #include <runtime/Scene.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -140,6 +143,17 @@ inline bool render(runtime::EffectRenderer& renderer, const runtime::Scene& scen
 }
 
 // Luminance in [0, 1] of an 8-bit RGBA pixel.
+// An application's own GL texture: one texel of `rgba`. The caller deletes it.
+inline GLuint applicationTexel(const std::array<uint8_t, 4>& rgba = {255, 128, 64, 255}) {
+    GLuint texture = 0;
+    gl::GenTextures(1, &texture);
+    gl::BindTexture(GL_TEXTURE_2D, texture);
+    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
+    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
 inline float luminance(const uint8_t* p) {
     return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f;
 }

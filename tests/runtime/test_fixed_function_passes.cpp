@@ -375,13 +375,7 @@ TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGiv
 
     // The application's texture wins, a GL texture of its own given to the sampler or texels given to the
     // texture, until it takes it back.
-    GLuint blue = 0;
-    const uint8_t texel[4] = {0, 0, 255, 255};
-    gl::GenTextures(1, &blue);
-    gl::BindTexture(GL_TEXTURE_2D, blue);
-    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
-    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
-    gl::BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint blue = applicationTexel({0, 0, 255, 255});
     ASSERT_TRUE(renderer->variable("Sprite").setTexture(blue));
     EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Swizzle"), kSize, kSize, 255, 0, 0), kSize * kSize);
     ASSERT_TRUE(renderer->variable("Sprite").setTexture(0));

@@ -22,6 +22,7 @@ namespace test_pass_api {
 
 namespace {
 
+using shadowfx::test::applicationTexel;
 using shadowfx::test::differingPixels;
 using shadowfx::test::notConstant;
 using shadowfx::test::sharedContext;
@@ -573,18 +574,6 @@ runtime::Mesh fullScreenQuad() {
     quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     quad.indices = {0, 1, 2, 0, 2, 3};
     return quad;
-}
-
-// The application's own texture: one texel of (1, 0.5, 0.25). The caller deletes it.
-GLuint applicationTexel() {
-    GLuint texture = 0;
-    const uint8_t texel[4] = {255, 128, 64, 255};
-    gl::GenTextures(1, &texture);
-    gl::BindTexture(GL_TEXTURE_2D, texture);
-    gl::TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, 1, 1);
-    gl::TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
-    gl::BindTexture(GL_TEXTURE_2D, 0);
-    return texture;
 }
 
 TEST(PassApi, ArrayElementsAndApplicationTexturesReachTheDraw) {

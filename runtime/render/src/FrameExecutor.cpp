@@ -319,11 +319,15 @@ void FrameExecutor::drawScene(const fx::ScriptCommand&) {
     if (leftOut(nextOp(PlannedOp::Kind::DrawGeometry, mCurrentPass))) return;
     if (!bindTargets(true)) return;
     PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
+    paintHostScene(mPort.view, mPort.projection);
+}
+
+void FrameExecutor::paintHostScene(const glm::mat4& view, const glm::mat4& projection) {
     applyRenderStates(RenderStateBlock::defaults());
     for (const SceneObject& object : mScene.objects) {
         if (!object.mesh) continue;
         GpuMesh& mesh = mResources.gpuMesh(object.mesh);
-        mResources.hostScene.draw(mScene, object, mPort.view, mPort.projection, mesh);
+        mResources.hostScene.draw(mScene, object, view, projection, mesh);
         ++mStats.draws;
         mStats.triangles += mesh.indexCount() / 3;
     }
@@ -336,7 +340,6 @@ const GpuTexture* FrameExecutor::hostPicture() {
     const RenderTargets targets = mResources.textures->hostPictureTargets(frame.width(), frame.height());
     FramebufferFault fault;
     if (!bindPassTargets(mResources, targets, fault)) return nullptr;
-    applyRenderStates(RenderStateBlock::defaults());
     ClearRequest clear;
     clear.color = {kHostBackground.r, kHostBackground.g, kHostBackground.b, kHostBackground.a};
     clear.depth = 1.0f;
@@ -344,13 +347,7 @@ const GpuTexture* FrameExecutor::hostPicture() {
     FramebufferCache::clear(clear);
     RenderPortView camera;
     if (portMatrices(mScene, mBinder, mOptions, "", -1, -1, camera))
-        for (const SceneObject& object : mScene.objects) {
-            if (!object.mesh) continue;
-            GpuMesh& mesh = mResources.gpuMesh(object.mesh);
-            mResources.hostScene.draw(mScene, object, camera.view, camera.projection, mesh);
-            ++mStats.draws;
-            mStats.triangles += mesh.indexCount() / 3;
-        }
+        paintHostScene(camera.view, camera.projection);
     mHostPicture = targets.colors[0].texture;
     return mHostPicture;
 }

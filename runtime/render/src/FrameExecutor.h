@@ -99,6 +99,8 @@ private:
     // frame's size when a pass first reads it in the frame. Null if its targets cannot be bound (never
     // expected).
     const GpuTexture* hostPicture();
+    // Every object with the host's default material and D3D's default states into the bound targets.
+    void paintHostScene(const glm::mat4& view, const glm::mat4& projection);
     // FrameOptions::batching: the pass's instanced variant for its current per-object parameters, or null
     // where it is drawn object by object.
     BatchedPass* batchedPass(const fx::CompiledPass& pass, size_t passIndex, const PassUse& use);
