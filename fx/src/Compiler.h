@@ -134,6 +134,9 @@ private:
     void resolveReflection(StageProgram& program, const CompiledPass& pass);
     void resolveStructFields(UniformBinding& u) const;
     const Expr* shaderExpr(const StateAssignment& s);
+    // The vertex shader `compile` names hands its input position to the rasterizer unchanged
+    // (PositionPassThrough.h); false where the name is overloaded.
+    bool vertexShaderPassesPosition(const Expr& compile) const;
     CompiledPass compilePass(const Pass& p, PassSlot slot);
     // [SECTION] Compute passes (ComputePass.cpp)
     // Compiles the compute stage of a pass that sets a compute shader. True where the pass is a compute
@@ -201,7 +204,8 @@ private:
     std::vector<PendingStage> mPending;
     // The passes that set sampler-register states, by where they stand in mOut.
     std::vector<std::pair<PassSlot, const Pass*>> mSamplerRegisterPasses;
-    // The passes that draw D3D9's full-screen quad (Pass::drawsScreenQuad), by where they stand in mOut.
+    // The passes that draw the full-screen quad (Pass::drawsScreenQuad, or a vertex shader that passes the
+    // position through), by where they stand in mOut.
     std::vector<PassSlot> mScreenQuadPasses;
     std::vector<StageJob> mJobs;
     std::map<uint64_t, size_t> mJobByKey;

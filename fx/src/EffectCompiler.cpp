@@ -9,6 +9,7 @@
 #include "FixedFunctionPass.h"
 #include "MacroNoteSink.h"
 #include "PointSprites.h"
+#include "PositionPassThrough.h"
 #include "StateAssignments.h"
 #include "TechniqueSupport.h"
 
@@ -224,6 +225,16 @@ const Expr* Compiler::shaderExpr(const StateAssignment& s) {
     return nullptr;
 }
 
+bool Compiler::vertexShaderPassesPosition(const Expr& compile) const {
+    const FunctionDecl* shader = nullptr;
+    for (const FunctionDecl* f : mEffect.findFunctions(compile.text)) {
+        if (!f->hasBody) continue;
+        if (shader) return false;  // overloads: which one the arguments choose is glslang's to say
+        shader = f;
+    }
+    return shader && passesPositionThrough(mEffect, *shader);
+}
+
 CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     CompiledPass pass;
     mPassArguments.clear();
@@ -243,14 +254,18 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     const StateAssignment* hull = nullptr;
     const StateAssignment* domain = nullptr;
     const StateAssignment* geometry = nullptr;
+    bool geometryStage = false;  // a geometry shader, not NULL
     for (const StateAssignment& s : p.states) {
         const std::optional<RenderStateId> id = findRenderState(s.name);
         if (id == RenderStateId::GeometryShader) {
             geometry = &s;
-            if (const Expr* call = streamOutCall(s))
+            geometryStage = false;
+            if (const Expr* call = streamOutCall(s)) {
                 streamOutStage(*call, p, pass, slot);
-            else if (const Expr* compile = shaderExpr(s))
-                compileStage(*compile, ShaderStage::Geometry, pass, slot);
+                geometryStage = true;
+            } else if (const Expr* compile = shaderExpr(s)) {
+                geometryStage = compileStage(*compile, ShaderStage::Geometry, pass, slot);
+            }
         } else if (id == RenderStateId::HullShader || id == RenderStateId::DomainShader) {
             const bool set = !(s.value.kind == Expr::Kind::Identifier && s.value.text == "NULL") &&
                              !(s.value.kind == Expr::Kind::Number && s.value.number == 0);
@@ -272,9 +287,19 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
     // The vertex shader before the pixel shader, whose inputs it may leave unwritten; a pass drawing a
     // capture (DrawAuto) feeds it the capture's elements.
     drawAutoSource(p, pass);
+    const Expr* vertexCompile = nullptr;
     for (const StateAssignment& s : p.states)
         if (findRenderState(s.name) == RenderStateId::VertexShader)
-            if (const Expr* compile = shaderExpr(s)) compileStage(*compile, ShaderStage::Vertex, pass, slot);
+            if (const Expr* compile = shaderExpr(s)) {
+                compileStage(*compile, ShaderStage::Vertex, pass, slot);
+                vertexCompile = compile;
+            }
+    // A vertex shader that hands its input position straight to the rasterizer drew its application's
+    // screen quad (the DirectX SDK's D3D10 post-processing `QuadVS`): the pass draws the runtime's, as a
+    // D3D9 pass with a pixel shader alone does, and its samplers may read the host's picture.
+    const bool drawsScreenQuad =
+        p.drawsScreenQuad || (vertexCompile && !geometryStage && !hull && pass.drawAuto < 0 &&
+                              vertexShaderPassesPosition(*vertexCompile));
     // Point sprites gave the pixel shader's texture coordinates the position in the sprite, whether the
     // vertex shader wrote them or not: they stay inputs, which pointSprites() then reads from gl_PointCoord.
     bool sprites = false;
@@ -348,11 +373,11 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                                    RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3})
             pass.states.push_back(RenderStateSetting{mask, 0.0, {}, p.loc});
     if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
-    if (p.drawsScreenQuad) mScreenQuadPasses.push_back(slot);
+    if (drawsScreenQuad) mScreenQuadPasses.push_back(slot);
     passAnnotations(p, pass);
     pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
-    if (p.drawsScreenQuad && !pass.hasScript) {
+    if (drawsScreenQuad && !pass.hasScript) {
         ScriptCommand draw{};
         draw.kind = ScriptCommand::Kind::Draw;
         draw.draw = ScriptCommand::DrawWhat::Buffer;

@@ -1,7 +1,8 @@
 // Compiler: which samplers of a full-screen pass read the host's picture of the scene
 // (SamplerBinding::hostPicture).
 //
-// A D3D9 pass with a pixel shader alone (FixedFunctionPass.cpp's screen quad) was a post-processing pass:
+// A D3D9 pass with a pixel shader alone (FixedFunctionPass.cpp's screen quad), or one whose vertex shader
+// hands the position through unchanged (PositionPassThrough.h), was a post-processing pass:
 // its application rendered the scene into a texture of its own and bound that texture to the shader's
 // sampler before drawing the quad over the whole target (the DirectX SDK's post-process samples), or, for
 // a pixel shader handed to XNA's and MonoGame's SpriteBatch, the sprite's texture to register s0. The
@@ -16,7 +17,7 @@
 namespace fx::detail {
 
 void Compiler::hostPictureSamplers() {
-    std::set<size_t> noted;  // each sampler once, at its first full-screen pass
+    std::set<size_t> noted;  // each sampler or pair's texture once, at its first full-screen pass
     for (const PassSlot& slot : mScreenQuadPasses) {
         if (slot.technique >= mOut->techniques.size() ||
             slot.pass >= mOut->techniques[slot.technique].passes.size())
@@ -42,11 +43,20 @@ void Compiler::hostPictureSamplers() {
             binding.hostPicture = desc && desc->kind == TextureDesc::Kind::Runtime &&
                                   desc->type == BaseType::Texture2D && !mOut->parameters[*texture].viewOf;
         }
-        for (const SamplerBinding& binding : pass.fragment.samplers)
-            if (binding.hostPicture && noted.insert(binding.samplerParameter).second) {
-                const ParameterInfo& sampler = mOut->parameters[binding.samplerParameter];
-                mDiagnostics.report(DiagId::SamplerReadsHostPicture, sampler.loc, {sampler.name, pass.name});
+        // A D3D10 pair is named by its texture: one SamplerState may sample several textures.
+        for (const SamplerBinding& binding : pass.fragment.samplers) {
+            if (!binding.hostPicture) continue;
+            const ParameterInfo& sampler = mOut->parameters[binding.samplerParameter];
+            if (binding.pairTexture.empty() || !binding.textureParameter) {
+                if (noted.insert(binding.samplerParameter).second)
+                    mDiagnostics.report(DiagId::SamplerReadsHostPicture, sampler.loc,
+                                        {sampler.name, pass.name});
+            } else if (noted.insert(*binding.textureParameter).second) {
+                const ParameterInfo& texture = mOut->parameters[*binding.textureParameter];
+                mDiagnostics.report(DiagId::TextureReadsHostPicture, texture.loc,
+                                    {texture.name, sampler.name, pass.name});
             }
+        }
     }
 }
 

@@ -1,13 +1,16 @@
 // D3D9 fixed-function passes: a pass without shaders that sets transforms, lights, material, texture
 // stages and fog runs as D3D9 ran it, through generated stages (parse, compile, EffectRenderer on
 // llvmpipe); a vertex shader with the fixed-function pixel stage samples stage 0's texture; what the
-// generated pipeline does not offer is a located error.
+// generated pipeline does not offer is a located error. Full-screen passes (a D3D9 pixel shader alone, a
+// D3D10 pass-through vertex shader) read the host's picture.
 #include "effects/EffectHarness.h"
 
 #include <fx/EffectCompiler.h>
 #include <fx/EffectParser.h>
 #include <runtime/BuiltinScenes.h>
 #include <runtime/GlApi.h>
+
+#include <algorithm>
 
 namespace shadowfx::test::test_fixed_function_passes {
 namespace {
@@ -387,6 +390,106 @@ TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGiv
     ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("g_txSrcColor"), red, diagnostics))
         << diagnostics.str();
     EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Invert"), kSize, kSize, 0, 255, 255), kSize * kSize);
+}
+
+// A D3D10 post-processing pass has a vertex shader of its own that hands the application's clip-space
+// quad to the rasterizer unchanged (the DirectX SDK's `QuadVS`). The compiler reads such a shader's body:
+// the pass draws the runtime's quad, and its samplers without a texture read the host's picture, as a D3D9
+// pass with a pixel shader alone does. Any other vertex shader, or one feeding a geometry shader, draws the
+// scene's meshes.
+const char* kD3D10PostProcess = R"(
+Texture2D g_txScene;
+SamplerState PointSampler { Filter = MIN_MAG_MIP_POINT; AddressU = Clamp; AddressV = Clamp; };
+float4x4 g_mWorldViewProj;
+struct QuadVS_Input { float4 Pos : POSITION; float2 Tex : TEXCOORD0; };
+struct QuadVS_Output { float4 Pos : SV_POSITION; float2 Tex : TEXCOORD0; };
+QuadVS_Output QuadVS(QuadVS_Input Input) {
+    QuadVS_Output Output;
+    Output.Pos = Input.Pos;
+    Output.Tex = Input.Tex;
+    return Output;
+}
+struct FreeNamed { float3 Pos : POS; float2 Tex : TEXTURE0; };
+void WidenVS(FreeNamed In, out float4 oPos : SV_Position, out float2 oTex : TEXCOORD0) {
+    oTex = In.Tex;
+    oPos = float4(In.Pos.xy, 0, 1);
+}
+QuadVS_Output FlattenVS(QuadVS_Input Input) {
+    QuadVS_Output Output;
+    Output.Pos = Input.Pos;
+    Output.Pos.y = 0;
+    Output.Tex = Input.Tex;
+    return Output;
+}
+QuadVS_Output SceneVS(QuadVS_Input Input) {
+    QuadVS_Output Output;
+    Output.Pos = mul(Input.Pos, g_mWorldViewProj);
+    Output.Tex = Input.Tex;
+    return Output;
+}
+[maxvertexcount(3)]
+void SceneGS(triangle QuadVS_Output In[3], inout TriangleStream<QuadVS_Output> Out) {
+    for (int i = 0; i < 3; ++i) {
+        QuadVS_Output v = In[i];
+        v.Pos = mul(In[i].Pos, g_mWorldViewProj);
+        Out.Append(v);
+    }
+}
+float4 InvertPS(QuadVS_Output Input) : SV_TARGET {
+    return float4(1 - g_txScene.Sample(PointSampler, Input.Tex).rgb, 1);
+}
+#define PASS(vs, gs) pass p0 { SetVertexShader(CompileShader(vs_4_0, vs())); SetGeometryShader(gs); \
+    SetPixelShader(CompileShader(ps_4_0, InvertPS())); }
+technique10 Invert { PASS(QuadVS, NULL) }
+technique10 Widened { PASS(WidenVS, NULL) }
+technique10 Flattened { PASS(FlattenVS, NULL) }
+technique10 Scene { PASS(SceneVS, NULL) }
+technique10 Expanded { PASS(QuadVS, CompileShader(gs_4_0, SceneGS())) }
+technique HostScene < string Script = "ScriptExternal=color;"; > { }
+)";
+
+TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverTheHostsPicture) {
+    fx::DiagnosticList diagnostics;
+    auto parsed = fx::parseEffectSource(kD3D10PostProcess, "quad_vs.fx", {}, diagnostics);
+    ASSERT_TRUE(parsed) << diagnostics.str();
+    auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const auto drawsQuad = [&](const std::string& technique) {
+        const fx::CompiledTechnique* t = compiled->findTechnique(technique);
+        if (!t || t->passes.size() != 1) {
+            ADD_FAILURE() << technique << ": not one pass";
+            return false;
+        }
+        const fx::CompiledPass& pass = t->passes.front();
+        const bool buffer = pass.script.size() == 1 &&
+                            pass.script.front().kind == fx::ScriptCommand::Kind::Draw &&
+                            pass.script.front().draw == fx::ScriptCommand::DrawWhat::Buffer;
+        const bool picture = std::any_of(pass.fragment.samplers.begin(), pass.fragment.samplers.end(),
+                                         [](const fx::SamplerBinding& b) { return b.read && b.hostPicture; });
+        EXPECT_EQ(buffer, picture) << technique;
+        return buffer;
+    };
+    EXPECT_TRUE(drawsQuad("Invert"));      // the SDK's QuadVS
+    EXPECT_TRUE(drawsQuad("Widened"));     // free names, out parameters, xy completed by constants
+    EXPECT_FALSE(drawsQuad("Flattened"));  // a component written after the copy
+    EXPECT_FALSE(drawsQuad("Scene"));      // transformed
+    EXPECT_FALSE(drawsQuad("Expanded"));   // a geometry shader places the vertices
+    // The note names the pair's texture, at its declaration.
+    EXPECT_EQ(countDiagnostics(diagnostics, fx::DiagId::TextureReadsHostPicture), 1) << diagnostics.str();
+    EXPECT_NE(
+        diagnostics.str().find("quad_vs.fx:2:11: note: texture 'g_txScene', sampled through 'PointSampler'"),
+        std::string::npos)
+        << diagnostics.str();
+
+    auto renderer = loadEffect(kD3D10PostProcess, false, "quad_vs.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::FrameImage host = frame(*renderer, "HostScene");
+    ASSERT_TRUE(notConstant(host));
+    const auto inverse = [](const uint8_t* p, int c) { return 255 - p[c]; };
+    EXPECT_EQ(differingPixels(frame(*renderer, "Invert"), host, 1, inverse), 0);
+    EXPECT_EQ(differingPixels(frame(*renderer, "Widened"), host, 1, inverse), 0);
+    // The scene's meshes through the transforming shaders: the teapot, inverted white where it stands.
+    EXPECT_GT(differingPixels(frame(*renderer, "Scene"), host, 1, inverse), kSize * kSize / 2);
 }
 
 // Compiles `passBody` as the one pass of an effect; returns the diagnostics.

@@ -31,6 +31,10 @@ FX_DIAGNOSTIC(VertexInputMatrixIdentity, Note,
 FX_DIAGNOSTIC(SamplerReadsHostPicture, Note,
               "sampler '{0}' of the full-screen pass '{1}' has no texture in the effect (its application "
               "bound one); drawn by a host, it reads the host's picture of the scene")
+FX_DIAGNOSTIC(TextureReadsHostPicture, Note,
+              "texture '{0}', sampled through '{1}' in the full-screen pass '{2}', has no contents in the "
+              "effect (its application bound them); drawn by a host, it reads the host's picture of the "
+              "scene")
 // glslang's "mul() matrix size mismatch" said as fxc said it: both truncate the larger operand.
 FX_DIAGNOSTIC(ImplicitTruncation, Warning,
               "implicit truncation of vector type (fxc's X3206): mul() of a vector and a matrix that differ "
