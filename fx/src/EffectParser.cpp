@@ -20,6 +20,8 @@
 #include "UserFunctionInliner.h"
 
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -50,8 +52,24 @@ void Parser::parseEffect() {
     }
 }
 
+namespace {
+
+// The sampler type a D3D9 texture intrinsic reads (tex2Dlod, texCUBEbias, ...); Sampler for others.
+BaseType samplerReadBy(const std::string& intrinsic) {
+    static const std::pair<const char*, BaseType> kKinds[] = {{"texCUBE", BaseType::SamplerCube},
+                                                              {"tex3D", BaseType::Sampler3D},
+                                                              {"tex2D", BaseType::Sampler2D},
+                                                              {"tex1D", BaseType::Sampler1D}};
+    for (const auto& [prefix, kind] : kKinds)
+        if (intrinsic.rfind(prefix, 0) == 0) return kind;
+    return BaseType::Sampler;
+}
+
+}  // namespace
+
 void Parser::retypeSamplersOfTextureObjects() {
-    std::set<std::string> byObject, comparing, byIntrinsic;
+    std::set<std::string> byObject, comparing;
+    std::map<std::string, std::set<BaseType>> byIntrinsic;  // a sampler's name -> the kinds read from it
     for (size_t i = 0; i + 3 < mTokens.size(); ++i) {
         const Token& a = mTokens[i];
         if (a.is(".") && mTokens[i + 1].kind == Token::Kind::Identifier && mTokens[i + 2].is("(") &&
@@ -63,10 +81,15 @@ void Parser::retypeSamplersOfTextureObjects() {
         }
         if (a.kind == Token::Kind::Identifier && a.text.rfind("tex", 0) == 0 && mTokens[i + 1].is("(") &&
             mTokens[i + 2].kind == Token::Kind::Identifier)
-            byIntrinsic.insert(mTokens[i + 2].text);
+            byIntrinsic[mTokens[i + 2].text].insert(samplerReadBy(a.text));
     }
     for (Parameter& p : mEffect.parameters) {
-        if (p.type.base != BaseType::Sampler || byIntrinsic.count(p.name)) continue;
+        if (p.type.base != BaseType::Sampler) continue;
+        if (const auto read = byIntrinsic.find(p.name); read != byIntrinsic.end()) {
+            const BaseType kind = read->second.size() == 1 ? *read->second.begin() : BaseType::Sampler;
+            if (kind == BaseType::SamplerCube || kind == BaseType::Sampler3D) p.type.base = kind;
+            continue;
+        }
         if (comparing.count(p.name))
             p.type.base = BaseType::SamplerComparisonState;
         else if (byObject.count(p.name))

@@ -41,7 +41,10 @@ private:
     // fxc's D3D10 and later profiles read `sampler` as `SamplerState`: a `sampler` that the code passes to a
     // texture object's Sample or Gather methods (MonoGame's `sampler NameSampler : register(s0);` beside
     // `Texture2D Name`) is one, and glslang's D3D9 mode would take it for a combined sampler that
-    // SPIRV-Cross cannot pair with the texture. A sampler also read with tex2D() and its kin stays D3D9's.
+    // SPIRV-Cross cannot pair with the texture. A sampler also read with tex2D() and its kin stays D3D9's,
+    // of the kind its intrinsics read: D3D9's untyped `sampler` read by texCUBE or tex3D is a cube or volume
+    // sampler (D3D9 took the dimension from the instruction; glslang would read it as a 2D sampler), and so
+    // is its untyped texture (ResourceDescriptors.cpp).
     void retypeSamplersOfTextureObjects();
 
     // [SECTION] Tokens

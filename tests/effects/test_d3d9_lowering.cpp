@@ -280,6 +280,45 @@ TEST(D3d9Lowering, BareSamplersWithoutATextureReadWhite) {
     expectObjectsInColour(*renderer, 102, 153, 204);
 }
 
+// D3D9's untyped `sampler` took its dimension from the instruction that read it: the DirectX SDK's skybox
+// samples its untyped environment texture through an untyped sampler with texCUBE. Both are a cube here
+// (glslang would read the sampler as 2D, and the cube texture as an incomplete 2D one: black). The
+// skybox's vertex shader hands the screen quad's position through: the pass draws the quad.
+constexpr const char* kUntypedCube = R"(
+texture g_EnvironmentTexture;
+sampler EnvironmentSampler = sampler_state { Texture = (g_EnvironmentTexture); MinFilter = POINT; MagFilter = POINT; };
+struct SkyboxVS_Output { float4 Pos : POSITION; float3 Tex : TEXCOORD0; };
+SkyboxVS_Output SkyboxVS(float4 Pos : POSITION) {
+    SkyboxVS_Output Output;
+    Output.Pos = Pos;
+    Output.Tex = Pos.xyz;
+    return Output;
+}
+float4 SkyboxPS(SkyboxVS_Output Input) : COLOR {
+    return texCUBE(EnvironmentSampler, float3(Input.Tex.x > 0 ? 1 : -1, 0.1, 0.1));
+}
+technique Skybox { pass p0 { VertexShader = compile vs_2_0 SkyboxVS(); PixelShader = compile ps_2_0 SkyboxPS(); } }
+)";
+
+TEST(D3d9Lowering, AnUntypedSamplerReadByTexCubeIsACubeSampler) {
+    auto renderer = loadEffect(kUntypedCube, false, "untyped_cube.fx");
+    ASSERT_TRUE(renderer);
+    const std::optional<size_t> sampler = renderer->findParameter("EnvironmentSampler");
+    ASSERT_TRUE(sampler);
+    EXPECT_EQ(renderer->effect().parameters[*sampler].type.base, fx::BaseType::SamplerCube);
+    // Faces +X red and -X green, the others blue: the quad's right half looks along +X.
+    runtime::TextureData cube;
+    cube.width = cube.height = 1;
+    cube.rgba = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1};
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("g_EnvironmentTexture"), cube, diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 64, 48, "Skybox"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_EQ(countPixelsOfColour(frame, 64, 48, 255, 0, 0), 32 * 48);
+    EXPECT_EQ(countPixelsOfColour(frame, 64, 48, 0, 255, 0), 32 * 48);
+}
+
 // XNA's hardware instancing reads each instance's transform from a per-instance stream, as a matrix
 // input over consecutive semantic indices (`: BLENDWEIGHT` in XNA 4, `: TEXCOORD1` in XNA 3): the meshes
 // here hold no such streams, so it reads the identity and each object stands where its World puts it.
