@@ -36,6 +36,7 @@ METHODS = {
     "lispsm-wimmer": ("effects/lispsm.fx", "bilinear", ("NOpt=Wimmer2004",)),
     "lispsm-scherzer": ("effects/lispsm.fx", "bilinear", ("NOpt=Scherzer2005",)),
     "lispsm-lloyd": ("effects/lispsm.fx", "bilinear", ("NOpt=Lloyd2006",)),
+    "lispsm-visible": ("effects/lispsm.fx", "bilinear", ("FitVisible=true",)),
     "tsm": ("effects/tsm.fx", "bilinear", ()),
     "psm": ("effects/psm.fx", "bilinear", ()),
     "psm-cube": ("effects/psm_cube.fx", "bilinear", ()),
