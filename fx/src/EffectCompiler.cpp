@@ -294,12 +294,8 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                 compileStage(*compile, ShaderStage::Vertex, pass, slot);
                 vertexCompile = compile;
             }
-    // A vertex shader that hands its input position straight to the rasterizer drew its application's
-    // screen quad (the DirectX SDK's D3D10 post-processing `QuadVS`): the pass draws the runtime's, as a
-    // D3D9 pass with a pixel shader alone does, and its samplers may read the host's picture.
-    const bool drawsScreenQuad =
-        p.drawsScreenQuad || (vertexCompile && !geometryStage && !hull && pass.drawAuto < 0 &&
-                              vertexShaderPassesPosition(*vertexCompile));
+    const bool positionPassedThrough = vertexCompile && !geometryStage && !hull && pass.drawAuto < 0 &&
+                                       vertexShaderPassesPosition(*vertexCompile);
     // Point sprites gave the pixel shader's texture coordinates the position in the sprite, whether the
     // vertex shader wrote them or not: they stay inputs, which pointSprites() then reads from gl_PointCoord.
     bool sprites = false;
@@ -373,10 +369,15 @@ CompiledPass Compiler::compilePass(const Pass& p, PassSlot slot) {
                                    RenderStateId::ColorWriteEnable2, RenderStateId::ColorWriteEnable3})
             pass.states.push_back(RenderStateSetting{mask, 0.0, {}, p.loc});
     if (setsSamplerRegisters) mSamplerRegisterPasses.emplace_back(slot, &p);
-    if (drawsScreenQuad) mScreenQuadPasses.push_back(slot);
     passAnnotations(p, pass);
     pass.annotations = annotationValues(p.annotations);
     pass.script = script(p.annotations, pass.hasScript);
+    // A vertex shader that hands its input position straight to the rasterizer drew its application's
+    // screen quad (the DirectX SDK's D3D10 post-processing `QuadVS`): the pass draws the runtime's, as a
+    // D3D9 pass with a pixel shader alone does, and its samplers may read the host's picture. Not where
+    // the pass's own script says what it draws and renders into (FX Composer's ScreenQuadVS passes).
+    const bool drawsScreenQuad = p.drawsScreenQuad || (positionPassedThrough && !pass.hasScript);
+    if (drawsScreenQuad) mScreenQuadPasses.push_back(slot);
     if (drawsScreenQuad && !pass.hasScript) {
         ScriptCommand draw{};
         draw.kind = ScriptCommand::Kind::Draw;

@@ -4,13 +4,16 @@
 // `Output.Pos = Input.Pos;`), where a D3D9 one had none: its application drew a screen quad in clip
 // space through it. The shader says nothing else about the quad, so the compiler reads its body: a
 // position that arrives unchanged is such a pass's mark. Read on the effect's own syntax tree, before
-// glslang's entry-point wrapper and copies hide it.
+// glslang's entry-point wrapper and copies hide it, one component at a time (HDAO's quad shader writes
+// `.x`, `.y`, `.z` and `.w` one by one).
 #include "PositionPassThrough.h"
 
 #include "CaseFolding.h"
 
 #include <fx/VertexStreams.h>
 
+#include <algorithm>
+#include <array>
 #include <optional>
 
 namespace fx::detail {
@@ -29,7 +32,7 @@ bool isPositionInput(const std::string& semantic) {
     return location == 0;
 }
 
-// The member of struct `name` that carries `semantic`'s kind of position, or null.
+// The member of struct `name` that carries the position (the rasterizer's, or the mesh's), or null.
 const StructMember* positionMember(const Effect& effect, const std::string& name, bool output) {
     const StructDecl* s = effect.findStruct(name);
     if (!s) return nullptr;
@@ -42,10 +45,35 @@ bool isIdentifier(const Expr& e, const std::string& name) {
     return e.kind == Expr::Kind::Identifier && e.text == name;
 }
 
-bool isMemberOf(const Expr& e, const std::string& base, const std::string& member) {
-    return e.kind == Expr::Kind::Member && e.text == member && e.args.size() == 1 &&
-           isIdentifier(e.args[0], base);
+// The variable an l-value expression writes (`o` of `o.Pos.xy`, `a` of `a[i].b`).
+const Expr& rootOf(const Expr& e) {
+    const Expr* root = &e;
+    while ((root->kind == Expr::Kind::Member || root->kind == Expr::Kind::Index) && !root->args.empty())
+        root = &root->args[0];
+    return *root;
 }
+
+// A swizzle's component indices (`xy`, `bgr`), or empty where `text` is none.
+std::vector<int> swizzle(const std::string& text) {
+    std::vector<int> out;
+    if (text.empty() || text.size() > 4) return {};
+    for (char c : text) {
+        const std::string xyzw = "xyzw", rgba = "rgba";
+        size_t at = xyzw.find(c);
+        if (at == std::string::npos) at = rgba.find(c);
+        if (at == std::string::npos) return {};
+        out.push_back(static_cast<int>(at));
+    }
+    return out;
+}
+
+// Where one component of the position comes from.
+struct Component {
+    enum class Kind { Unknown, Input, Constant };
+    Kind kind = Kind::Unknown;
+    int index = 0;       // Input: the input position's component
+    double value = 0.0;  // Constant
+};
 
 class PassThroughReader {
 public:
@@ -54,9 +82,9 @@ public:
             if (p.direction == FunctionParam::Direction::Out) {
                 if (p.type.base == BaseType::Struct) {
                     if (const StructMember* m = positionMember(effect, p.type.structName, true))
-                        mOutputs.push_back({p.name, m->name});
+                        mOutputs.push_back({p.name, m->name, 4});
                 } else if (isPositionOutput(p.semantic)) {
-                    mOutputs.push_back({p.name, ""});
+                    mOutputs.push_back({p.name, "", 4});
                 }
                 continue;
             }
@@ -67,6 +95,8 @@ public:
             } else if (isPositionInput(p.semantic)) {
                 mInputs.push_back({p.name, "", p.type.cols});
             }
+            // Any other input may carry the position's parts too: none of them may be written.
+            mInputBases.push_back(p.name);
         }
     }
 
@@ -76,96 +106,175 @@ public:
         using Kind = FunctionDecl::Statement::Kind;
         const FunctionDecl::Statement& last = body.back();
         if (last.kind != Kind::Return) return false;
+        const Expr* returned = nullptr;  // a position returned as the function's value
         if (last.hasValue) {
+            if (writesInput(last.value)) return false;
             if (isPositionOutput(function.returnSemantic)) {
-                mReturned = &last.value;
+                returned = &last.value;
             } else if (function.returnType.base == BaseType::Struct &&
                        last.value.kind == Expr::Kind::Identifier) {
                 const StructMember* m = positionMember(mEffect, function.returnType.structName, true);
                 if (!m) return false;
-                mOutputs.push_back({last.value.text, m->name});
+                mOutputs.push_back({last.value.text, m->name, 4});
             } else {
                 return false;
             }
         }
         // Exactly one place the position leaves by.
-        if (mOutputs.size() + (mReturned ? 1 : 0) != 1) return false;
+        if (mOutputs.size() + (returned ? 1 : 0) != 1) return false;
         for (size_t i = 0; i + 1 < body.size(); ++i) {
             const FunctionDecl::Statement& s = body[i];
             if (s.kind == Kind::Declare) {
-                if (!mOutputs.empty() && s.name == mOutputs.front().base) mWritten = nullptr;
+                if (isInputBase(s.name) || (s.hasValue && writesInput(s.value))) return false;
+                if (!mOutputs.empty() && s.name == mOutputs.front().base) mPosition = {};
                 continue;
             }
             if (s.kind != Kind::Assign || !write(s)) return false;
         }
-        const Expr* position = mReturned ? mReturned : mWritten;
-        return position && passedThrough(*position);
+        if (returned) {
+            const std::optional<std::vector<Component>> parts = components(*returned);
+            if (!parts || parts->size() != 4) return false;
+            std::copy(parts->begin(), parts->end(), mPosition.begin());
+        }
+        return passedThrough();
     }
 
 private:
     struct Place {
         std::string base;
         std::string member;  // "" for the whole variable
-        int cols = 0;        // an input's components
+        int cols = 0;
     };
 
-    // Records an assignment to the position output; false where one writes part of it (or the whole
-    // struct holding it), which this reader does not follow.
+    bool isInputBase(const std::string& name) const {
+        return std::find(mInputBases.begin(), mInputBases.end(), name) != mInputBases.end();
+    }
+
+    // Whether `e` hands an input to one of the effect's functions, which may write it (`inout`).
+    bool writesInput(const Expr& e) const {
+        if (e.kind == Expr::Kind::Call && !mEffect.findFunctions(e.text).empty())
+            for (const Expr& arg : e.args)
+                if (isInputBase(rootOf(arg).text) && rootOf(arg).kind == Expr::Kind::Identifier) return true;
+        for (const Expr& arg : e.args)
+            if (writesInput(arg)) return true;
+        return false;
+    }
+
+    bool isPosition(const Expr& e) const {
+        const Place& out = mOutputs.front();
+        if (out.member.empty()) return isIdentifier(e, out.base);
+        return e.kind == Expr::Kind::Member && e.text == out.member && e.args.size() == 1 &&
+               isIdentifier(e.args[0], out.base);
+    }
+
+    // Follows an assignment: false where it writes an input; what it writes of the position, component
+    // by component (a component it writes otherwise than from the input or a constant becomes Unknown).
     bool write(const FunctionDecl::Statement& s) {
+        const Expr& root = rootOf(s.target);
+        if (root.kind == Expr::Kind::Identifier && isInputBase(root.text)) return false;
+        if (writesInput(s.value)) return false;
         if (mOutputs.empty()) return true;
         const Place& out = mOutputs.front();
-        const bool whole = out.member.empty() ? isIdentifier(s.target, out.base)
-                                              : isMemberOf(s.target, out.base, out.member);
-        if (whole) {
-            if (s.op != "=") return false;
-            mWritten = &s.value;
-            return true;
+        std::vector<int> written;  // the position's components this statement writes
+        if (isPosition(s.target)) {
+            written = {0, 1, 2, 3};
+        } else if (s.target.kind == Expr::Kind::Member && s.target.args.size() == 1 &&
+                   isPosition(s.target.args[0])) {
+            written = swizzle(s.target.text);
+            if (written.empty()) return set({0, 1, 2, 3}, std::nullopt);
+        } else if (isIdentifier(root, out.base)) {
+            // The struct holding the position written whole (`o = (VSOut)0;`), a part of the position
+            // indexed (`o.Pos[0]`), or another member of the struct (`o.Tex = ...`).
+            const bool otherMember = !out.member.empty() && s.target.kind != Expr::Kind::Identifier &&
+                                     !writesPositionMember(s.target);
+            return otherMember || set({0, 1, 2, 3}, std::nullopt);
+        } else {
+            return true;  // another variable
         }
-        // Another variable, or another member of the struct holding the position, may be written; not
-        // the struct as a whole (`o = (VSOut)0;`) nor a part of the position (`o.Pos.z = 0;`).
-        const Expr* root = &s.target;
-        const Expr* rootMember = nullptr;  // the member of the root variable the target lies in
-        while ((root->kind == Expr::Kind::Member || root->kind == Expr::Kind::Index) && !root->args.empty()) {
-            if (root->kind == Expr::Kind::Member) rootMember = root;
-            root = &root->args[0];
+        if (s.op != "=") return set(written, std::nullopt);
+        return set(written, components(s.value));
+    }
+
+    // Whether an l-value under the position's struct reaches the position member.
+    bool writesPositionMember(const Expr& target) const {
+        for (const Expr* e = &target; !e->args.empty(); e = &e->args[0])
+            if (e->kind == Expr::Kind::Member && isPosition(*e)) return true;
+        return false;
+    }
+
+    // Gives `written` the components of `value` (one each, or one broadcast); Unknown without.
+    bool set(const std::vector<int>& written, const std::optional<std::vector<Component>>& value) {
+        for (size_t i = 0; i < written.size(); ++i) {
+            Component c;
+            if (value && value->size() == written.size())
+                c = (*value)[i];
+            else if (value && value->size() == 1)
+                c = value->front();
+            mPosition[static_cast<size_t>(written[i])] = c;
         }
-        if (!isIdentifier(*root, out.base)) return true;
-        return !out.member.empty() && rootMember && rootMember->text != out.member;
+        return true;
     }
 
     const Place* input(const Expr& e) const {
         for (const Place& in : mInputs)
-            if (in.member.empty() ? isIdentifier(e, in.base) : isMemberOf(e, in.base, in.member)) return &in;
+            if (in.member.empty() ? isIdentifier(e, in.base)
+                                  : e.kind == Expr::Kind::Member && e.text == in.member &&
+                                        e.args.size() == 1 && isIdentifier(e.args[0], in.base))
+                return &in;
         return nullptr;
     }
 
-    // The input position whole (a float4: HLSL widens no float3 to it), or its leading components
-    // completed by constants in a float4 constructor.
-    bool passedThrough(const Expr& e) const {
-        if (const Place* in = input(e)) return in->cols == 4;
-        if (e.kind != Expr::Kind::Call || e.text != "float4" || e.args.empty()) return false;
-        int components = 0;
-        const Expr& first = e.args[0];
-        if (const Place* in = input(first)) {
-            components = in->cols;
-        } else if (first.kind == Expr::Kind::Member && first.args.size() == 1 && input(first.args[0]) &&
-                   (first.text == "xy" || first.text == "xyz" || first.text == "rg" || first.text == "rgb")) {
-            components = static_cast<int>(first.text.size());
-        } else {
-            return false;
+    // Where each component of `e` comes from: the input position, its swizzle, a number, or a vector
+    // constructor of those; nullopt for anything else.
+    std::optional<std::vector<Component>> components(const Expr& e) const {
+        if (const Place* in = input(e)) {
+            std::vector<Component> out;
+            for (int i = 0; i < in->cols; ++i) out.push_back({Component::Kind::Input, i, 0.0});
+            return out;
         }
-        for (size_t i = 1; i < e.args.size(); ++i) {
-            if (e.args[i].kind != Expr::Kind::Number) return false;
-            ++components;
+        if (e.kind == Expr::Kind::Member && e.args.size() == 1) {
+            const Place* in = input(e.args[0]);
+            const std::vector<int> indices = swizzle(e.text);
+            if (!in || indices.empty()) return std::nullopt;
+            std::vector<Component> out;
+            for (int i : indices) {
+                if (i >= in->cols) return std::nullopt;
+                out.push_back({Component::Kind::Input, i, 0.0});
+            }
+            return out;
         }
-        return components == 4;
+        if (e.kind == Expr::Kind::Number)
+            return std::vector<Component>{{Component::Kind::Constant, 0, e.number}};
+        if (e.kind == Expr::Kind::Call && (e.text == "float2" || e.text == "float3" || e.text == "float4")) {
+            std::vector<Component> out;
+            for (const Expr& arg : e.args) {
+                const std::optional<std::vector<Component>> part = components(arg);
+                if (!part) return std::nullopt;
+                out.insert(out.end(), part->begin(), part->end());
+            }
+            if (out.size() != static_cast<size_t>(e.text.back() - '0')) return std::nullopt;
+            return out;
+        }
+        return std::nullopt;
+    }
+
+    // x and y the input's; z the input's or a depth in [0, 1]; w the input's or 1.
+    bool passedThrough() const {
+        const auto from = [this](size_t i) {
+            return mPosition[i].kind == Component::Kind::Input && mPosition[i].index == static_cast<int>(i);
+        };
+        const auto constant = [this](size_t i, double lo, double hi) {
+            return mPosition[i].kind == Component::Kind::Constant && mPosition[i].value >= lo &&
+                   mPosition[i].value <= hi;
+        };
+        return from(0) && from(1) && (from(2) || constant(2, 0.0, 1.0)) && (from(3) || constant(3, 1.0, 1.0));
     }
 
     const Effect& mEffect;
     std::vector<Place> mInputs;
+    std::vector<std::string> mInputBases;  // every varying input parameter's name
     std::vector<Place> mOutputs;
-    const Expr* mReturned = nullptr;  // a position returned as the function's value
-    const Expr* mWritten = nullptr;   // the last value written to the position output
+    std::array<Component, 4> mPosition{};  // the position output's components, as last written
 };
 
 }  // namespace

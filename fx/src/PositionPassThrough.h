@@ -7,13 +7,14 @@
 
 namespace fx::detail {
 
-// True when `function` writes its position output (a return value or `out` parameter with the semantic
-// SV_Position or POSITION, or such a member of the struct it returns) as its position input (POSITION, or
-// a free name fx/VertexStreams.h reads as one): the whole input, or its `xy`/`xyz` completed to a float4 by
-// constants (`float4(In.Pos, 1)`, `float4(In.Pos.xy, 0, 1)`), by the last write before the return. Only a
-// body the parser read as straight-line code (FunctionDecl::straightBody: declarations, assignments, one
-// return at the end) is judged; anything else, a branch or a call that may write the position, is not a
-// pass-through.
+// True when `function` last writes its position output (a return value or `out` parameter with the
+// semantic SV_Position or POSITION, or such a member of the struct it returns or of an `out` struct) with
+// x and y of its position input (POSITION, or a free name fx/VertexStreams.h reads as one), z the input's
+// or a constant in [0, 1] and w the input's or 1: whole, through float2/3/4 constructors of the input's
+// swizzles and numbers, or a component at a time; and writes no input on the way (none transformed in
+// place, none handed to one of the effect's functions). Only a body the parser read as straight-line code
+// (FunctionDecl::straightBody: declarations, assignments, one return at the end) is judged; anything
+// else, a branch or a call statement that may write the position, is not a pass-through.
 bool passesPositionThrough(const Effect& effect, const FunctionDecl& function);
 
 }  // namespace fx::detail

@@ -395,8 +395,8 @@ TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGiv
 // A D3D10 post-processing pass has a vertex shader of its own that hands the application's clip-space
 // quad to the rasterizer unchanged (the DirectX SDK's `QuadVS`). The compiler reads such a shader's body:
 // the pass draws the runtime's quad, and its samplers without a texture read the host's picture, as a D3D9
-// pass with a pixel shader alone does. Any other vertex shader, or one feeding a geometry shader, draws the
-// scene's meshes.
+// pass with a pixel shader alone does. Any other vertex shader, one feeding a geometry shader, or one in a
+// pass whose own script says what it draws, draws as it did.
 const char* kD3D10PostProcess = R"(
 Texture2D g_txScene;
 SamplerState PointSampler { Filter = MIN_MAG_MIP_POINT; AddressU = Clamp; AddressV = Clamp; };
@@ -413,6 +413,29 @@ struct FreeNamed { float3 Pos : POS; float2 Tex : TEXTURE0; };
 void WidenVS(FreeNamed In, out float4 oPos : SV_Position, out float2 oTex : TEXCOORD0) {
     oTex = In.Tex;
     oPos = float4(In.Pos.xy, 0, 1);
+}
+struct Float3Input { float3 Pos : POSITION; float2 Tex : TEXCOORD0; };
+QuadVS_Output ComponentsVS(Float3Input I) {
+    QuadVS_Output O;
+    O.Pos.x = I.Pos.x;
+    O.Pos.y = I.Pos.y;
+    O.Pos.z = I.Pos.z;
+    O.Pos.w = 1.0f;
+    O.Tex = I.Tex;
+    return O;
+}
+QuadVS_Output InPlaceVS(QuadVS_Input Input) {
+    Input.Pos = mul(Input.Pos, g_mWorldViewProj);
+    QuadVS_Output Output;
+    Output.Pos = Input.Pos;
+    Output.Tex = Input.Tex;
+    return Output;
+}
+QuadVS_Output HalveVS(Float3Input I) {
+    QuadVS_Output O;
+    O.Pos = float4(I.Pos.xy, 0, 2);
+    O.Tex = I.Tex;
+    return O;
 }
 QuadVS_Output FlattenVS(QuadVS_Input Input) {
     QuadVS_Output Output;
@@ -442,7 +465,14 @@ float4 InvertPS(QuadVS_Output Input) : SV_TARGET {
     SetPixelShader(CompileShader(ps_4_0, InvertPS())); }
 technique10 Invert { PASS(QuadVS, NULL) }
 technique10 Widened { PASS(WidenVS, NULL) }
+technique10 Components { PASS(ComponentsVS, NULL) }
 technique10 Flattened { PASS(FlattenVS, NULL) }
+technique10 InPlace { PASS(InPlaceVS, NULL) }
+technique10 Halved { PASS(HalveVS, NULL) }
+technique10 Scripted < string Script = "Pass=p0;"; > {
+    pass p0 < string Script = "Draw=Buffer;"; > { SetVertexShader(CompileShader(vs_4_0, QuadVS()));
+        SetGeometryShader(NULL); SetPixelShader(CompileShader(ps_4_0, InvertPS())); }
+}
 technique10 Scene { PASS(SceneVS, NULL) }
 technique10 Expanded { PASS(QuadVS, CompileShader(gs_4_0, SceneGS())) }
 technique HostScene < string Script = "ScriptExternal=color;"; > { }
@@ -454,11 +484,12 @@ TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverThe
     ASSERT_TRUE(parsed) << diagnostics.str();
     auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
-    const auto drawsQuad = [&](const std::string& technique) {
+    // Whether the technique's pass draws the quad (Draw=Buffer), and whether its sampler reads the picture.
+    const auto quadAndPicture = [&](const std::string& technique) {
         const fx::CompiledTechnique* t = compiled->findTechnique(technique);
         if (!t || t->passes.size() != 1) {
             ADD_FAILURE() << technique << ": not one pass";
-            return false;
+            return std::pair(false, false);
         }
         const fx::CompiledPass& pass = t->passes.front();
         const bool buffer = pass.script.size() == 1 &&
@@ -466,14 +497,20 @@ TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverThe
                             pass.script.front().draw == fx::ScriptCommand::DrawWhat::Buffer;
         const bool picture = std::any_of(pass.fragment.samplers.begin(), pass.fragment.samplers.end(),
                                          [](const fx::SamplerBinding& b) { return b.read && b.hostPicture; });
-        EXPECT_EQ(buffer, picture) << technique;
-        return buffer;
+        return std::pair(buffer, picture);
     };
-    EXPECT_TRUE(drawsQuad("Invert"));      // the SDK's QuadVS
-    EXPECT_TRUE(drawsQuad("Widened"));     // free names, out parameters, xy completed by constants
-    EXPECT_FALSE(drawsQuad("Flattened"));  // a component written after the copy
-    EXPECT_FALSE(drawsQuad("Scene"));      // transformed
-    EXPECT_FALSE(drawsQuad("Expanded"));   // a geometry shader places the vertices
+    const std::pair quad(true, true), meshes(false, false);
+    EXPECT_EQ(quadAndPicture("Invert"), quad);       // the SDK's QuadVS
+    EXPECT_EQ(quadAndPicture("Widened"), quad);      // free names, out parameters, xy completed by 0 and 1
+    EXPECT_EQ(quadAndPicture("Components"), quad);   // one component at a time (HDAO's)
+    EXPECT_EQ(quadAndPicture("Flattened"), meshes);  // a component written after the copy
+    EXPECT_EQ(quadAndPicture("InPlace"), meshes);    // the input transformed before the copy
+    EXPECT_EQ(quadAndPicture("Halved"), meshes);     // w = 2
+    EXPECT_EQ(quadAndPicture("Scene"), meshes);      // transformed
+    EXPECT_EQ(quadAndPicture("Expanded"), meshes);   // a geometry shader places the vertices
+    // Its own script draws the quad; the sampler is the effect's (FX Composer's passes render the scene into
+    // their textures).
+    EXPECT_EQ(quadAndPicture("Scripted"), std::pair(true, false));
     // The note names the pair's texture, at its declaration.
     EXPECT_EQ(countDiagnostics(diagnostics, fx::DiagId::TextureReadsHostPicture), 1) << diagnostics.str();
     EXPECT_NE(
@@ -488,8 +525,15 @@ TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverThe
     const auto inverse = [](const uint8_t* p, int c) { return 255 - p[c]; };
     EXPECT_EQ(differingPixels(frame(*renderer, "Invert"), host, 1, inverse), 0);
     EXPECT_EQ(differingPixels(frame(*renderer, "Widened"), host, 1, inverse), 0);
-    // The scene's meshes through the transforming shaders: the teapot, inverted white where it stands.
-    EXPECT_GT(differingPixels(frame(*renderer, "Scene"), host, 1, inverse), kSize * kSize / 2);
+    EXPECT_EQ(differingPixels(frame(*renderer, "Components"), host, 1, inverse), 0);
+    // The effect's texture without contents, white: black where the quad covers the frame.
+    EXPECT_EQ(countPixelsOfColour(frame(*renderer, "Scripted"), kSize, kSize, 0, 0, 0), kSize * kSize);
+    // The scene's meshes through the transforming shader, the effect's white texture inverted: black where
+    // they stand, the host background around them.
+    const runtime::FrameImage scene = frame(*renderer, "Scene");
+    EXPECT_GT(countPixelsOfColour(scene, kSize, kSize, 0, 0, 0), kSize * kSize / 10);
+    EXPECT_LT(countPixelsOfColour(scene, kSize, kSize, 0, 0, 0), kSize * kSize * 9 / 10);
+    EXPECT_GT(countPixelsOfColour(scene, kSize, kSize, 64, 72, 96), kSize * kSize / 10);
 }
 
 // Compiles `passBody` as the one pass of an effect; returns the diagnostics.
