@@ -171,7 +171,7 @@ float4 PS(float2 uv : TEXCOORD0) : SV_Target {
                          int2(c.x, 0)) + Tex.Load(int3(uv, 0), int2(c.y, 0));
     return c;
 }
-float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 VS(float4 p : POSITION) : SV_Position { return p * 2; }
 technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
 )",
                         diags);
