@@ -325,11 +325,16 @@ technique Scene { pass p { VertexShader = compile vs_2_0 SceneVS(); PixelShader 
 technique HostScene < string Script = "ScriptExternal=color;"; > { }
 )";
 
+// `source` parsed and compiled; null where either fails (the diagnostics say why).
+std::unique_ptr<fx::CompiledEffect> compileSource(const std::string& source, const std::string& path,
+                                                  fx::DiagnosticList& diagnostics) {
+    auto parsed = fx::parseEffectSource(source, path, {}, diagnostics);
+    return parsed ? fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics) : nullptr;
+}
+
 TEST(FixedFunctionPasses, AFullScreenPassSamplesTheHostsPictureWhereTheEffectGivesNoTexture) {
     fx::DiagnosticList diagnostics;
-    auto parsed = fx::parseEffectSource(kPostProcess, "post_process.fx", {}, diagnostics);
-    ASSERT_TRUE(parsed) << diagnostics.str();
-    auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    const auto compiled = compileSource(kPostProcess, "post_process.fx", diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
     // The samplers of the technique's last pass that the compiler marks; -1 where it has no such pass.
     const auto readsHostPicture = [&](const std::string& technique) {
@@ -480,9 +485,7 @@ technique HostScene < string Script = "ScriptExternal=color;"; > { }
 
 TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverTheHostsPicture) {
     fx::DiagnosticList diagnostics;
-    auto parsed = fx::parseEffectSource(kD3D10PostProcess, "quad_vs.fx", {}, diagnostics);
-    ASSERT_TRUE(parsed) << diagnostics.str();
-    auto compiled = fx::compileEffect(parsed, fx::CompileOptions{}, diagnostics);
+    const auto compiled = compileSource(kD3D10PostProcess, "quad_vs.fx", diagnostics);
     ASSERT_TRUE(compiled) << diagnostics.str();
     // Whether the technique's pass draws the quad (Draw=Buffer), and whether its sampler reads the picture.
     const auto quadAndPicture = [&](const std::string& technique) {
@@ -539,10 +542,8 @@ TEST(FixedFunctionPasses, AD3D10PassThroughVertexShaderDrawsTheScreenQuadOverThe
 // Compiles `passBody` as the one pass of an effect; returns the diagnostics.
 fx::DiagnosticList compileDiagnostics(const std::string& passBody) {
     fx::DiagnosticList diagnostics;
-    auto effect = fx::parseEffectSource(
-        "float4x4 World;\ntexture T;\nint Op = 4;\ntechnique t { pass p {\n" + passBody + "\n} }\n",
-        "fixed_function_errors.fx", {}, diagnostics);
-    if (effect) fx::compileEffect(effect, fx::CompileOptions{}, diagnostics);
+    compileSource("float4x4 World;\ntexture T;\nint Op = 4;\ntechnique t { pass p {\n" + passBody + "\n} }\n",
+                  "fixed_function_errors.fx", diagnostics);
     return diagnostics;
 }
 
