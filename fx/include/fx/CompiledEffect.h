@@ -97,7 +97,8 @@ struct SamplerBinding {
     // `Sampler[0] = (s);`): the states the sampler has in this pass, CompiledEffect::passSamplers' index
     // (-1: the sampler's own, SamplerDesc). `Texture[0] = <t>;` sets `textureParameter`.
     int passSampler = -1;
-    // A full-screen pass's sampler (a D3D9 pixel shader alone) that the effect gives no texture: no file,
+    // A full-screen pass's sampler (a D3D9 pixel shader alone, or a vertex shader that passes the position
+    // through: fx/src/PositionPassThrough.h) that the effect gives no texture: no file,
     // no render target, no texture function. What its application bound there was the scene it had
     // rendered (a post-processing pass, a SpriteBatch sprite), so a host that draws the pass binds its own
     // picture of the scene unless the application gave the texture (docs/fixed-function.md).
