@@ -77,14 +77,15 @@ struct Component {
 
 class PassThroughReader {
 public:
-    PassThroughReader(const Effect& effect, const FunctionDecl& function) : mEffect(effect) {
+    PassThroughReader(const Effect& effect, const FunctionDecl& function)
+        : mEffect(effect), mFunction(function) {
         for (const FunctionParam& p : function.params) {
             if (p.direction == FunctionParam::Direction::Out) {
                 if (p.type.base == BaseType::Struct) {
                     if (const StructMember* m = positionMember(effect, p.type.structName, true))
-                        mOutputs.push_back({p.name, m->name, 4});
+                        mOutputs.push_back({p.name, m->name});
                 } else if (isPositionOutput(p.semantic)) {
-                    mOutputs.push_back({p.name, "", 4});
+                    mOutputs.push_back({p.name, ""});
                 }
                 continue;
             }
@@ -100,7 +101,8 @@ public:
         }
     }
 
-    bool read(const FunctionDecl& function) {
+    bool read() {
+        const FunctionDecl& function = mFunction;
         const std::vector<FunctionDecl::Statement>& body = function.straightBody;
         if (mInputs.empty() || body.empty()) return false;
         using Kind = FunctionDecl::Statement::Kind;
@@ -115,7 +117,7 @@ public:
                        last.value.kind == Expr::Kind::Identifier) {
                 const StructMember* m = positionMember(mEffect, function.returnType.structName, true);
                 if (!m) return false;
-                mOutputs.push_back({last.value.text, m->name, 4});
+                mOutputs.push_back({last.value.text, m->name});
             } else {
                 return false;
             }
@@ -143,8 +145,15 @@ private:
     struct Place {
         std::string base;
         std::string member;  // "" for the whole variable
-        int cols = 0;
+        int cols = 0;        // an input's components
     };
+
+    // Whether `e` names the place: the variable, or its member.
+    static bool names(const Expr& e, const Place& place) {
+        if (place.member.empty()) return isIdentifier(e, place.base);
+        return e.kind == Expr::Kind::Member && e.text == place.member && e.args.size() == 1 &&
+               isIdentifier(e.args[0], place.base);
+    }
 
     bool isInputBase(const std::string& name) const {
         return std::find(mInputBases.begin(), mInputBases.end(), name) != mInputBases.end();
@@ -154,18 +163,15 @@ private:
     bool writesInput(const Expr& e) const {
         if (e.kind == Expr::Kind::Call && !mEffect.findFunctions(e.text).empty())
             for (const Expr& arg : e.args)
-                if (isInputBase(rootOf(arg).text) && rootOf(arg).kind == Expr::Kind::Identifier) return true;
+                if (const Expr& root = rootOf(arg);
+                    root.kind == Expr::Kind::Identifier && isInputBase(root.text))
+                    return true;
         for (const Expr& arg : e.args)
             if (writesInput(arg)) return true;
         return false;
     }
 
-    bool isPosition(const Expr& e) const {
-        const Place& out = mOutputs.front();
-        if (out.member.empty()) return isIdentifier(e, out.base);
-        return e.kind == Expr::Kind::Member && e.text == out.member && e.args.size() == 1 &&
-               isIdentifier(e.args[0], out.base);
-    }
+    bool isPosition(const Expr& e) const { return names(e, mOutputs.front()); }
 
     // Follows an assignment: false where it writes an input; what it writes of the position, component
     // by component (a component it writes otherwise than from the input or a constant becomes Unknown).
@@ -175,24 +181,29 @@ private:
         if (writesInput(s.value)) return false;
         if (mOutputs.empty()) return true;
         const Place& out = mOutputs.front();
-        std::vector<int> written;  // the position's components this statement writes
+        std::vector<int> written;     // the position's components this statement writes
+        bool followed = s.op == "=";  // whether the value written is read (else the components are Unknown)
         if (isPosition(s.target)) {
             written = {0, 1, 2, 3};
         } else if (s.target.kind == Expr::Kind::Member && s.target.args.size() == 1 &&
                    isPosition(s.target.args[0])) {
             written = swizzle(s.target.text);
-            if (written.empty()) return set({0, 1, 2, 3}, std::nullopt);
+            if (written.empty()) {  // not a swizzle
+                written = {0, 1, 2, 3};
+                followed = false;
+            }
         } else if (isIdentifier(root, out.base)) {
             // The struct holding the position written whole (`o = (VSOut)0;`), a part of the position
             // indexed (`o.Pos[0]`), or another member of the struct (`o.Tex = ...`).
             const bool otherMember = !out.member.empty() && s.target.kind != Expr::Kind::Identifier &&
                                      !writesPositionMember(s.target);
-            return otherMember || set({0, 1, 2, 3}, std::nullopt);
+            if (!otherMember) set({0, 1, 2, 3}, std::nullopt);
+            return true;
         } else {
             return true;  // another variable
         }
-        if (s.op != "=") return set(written, std::nullopt);
-        return set(written, components(s.value));
+        set(written, followed ? components(s.value) : std::nullopt);
+        return true;
     }
 
     // Whether an l-value under the position's struct reaches the position member.
@@ -203,7 +214,7 @@ private:
     }
 
     // Gives `written` the components of `value` (one each, or one broadcast); Unknown without.
-    bool set(const std::vector<int>& written, const std::optional<std::vector<Component>>& value) {
+    void set(const std::vector<int>& written, const std::optional<std::vector<Component>>& value) {
         for (size_t i = 0; i < written.size(); ++i) {
             Component c;
             if (value && value->size() == written.size())
@@ -212,15 +223,11 @@ private:
                 c = value->front();
             mPosition[static_cast<size_t>(written[i])] = c;
         }
-        return true;
     }
 
     const Place* input(const Expr& e) const {
         for (const Place& in : mInputs)
-            if (in.member.empty() ? isIdentifier(e, in.base)
-                                  : e.kind == Expr::Kind::Member && e.text == in.member &&
-                                        e.args.size() == 1 && isIdentifier(e.args[0], in.base))
-                return &in;
+            if (names(e, in)) return &in;
         return nullptr;
     }
 
@@ -271,6 +278,7 @@ private:
     }
 
     const Effect& mEffect;
+    const FunctionDecl& mFunction;
     std::vector<Place> mInputs;
     std::vector<std::string> mInputBases;  // every varying input parameter's name
     std::vector<Place> mOutputs;
@@ -280,8 +288,7 @@ private:
 }  // namespace
 
 bool passesPositionThrough(const Effect& effect, const FunctionDecl& function) {
-    PassThroughReader reader(effect, function);
-    return reader.read(function);
+    return PassThroughReader(effect, function).read();
 }
 
 }  // namespace fx::detail
