@@ -246,7 +246,8 @@ Expr Parser::parsePrimary() {
     }
     if (check("(")) {  // call or constructor
         e.kind = Expr::Kind::Call;
-        e.text = token.text;
+        // A bare `vector` or `matrix` is HLSL's float4 or float4x4 (`vector(1, 1, 1, 1)` as a blend factor).
+        e.text = token.text == "vector" ? "float4" : token.text == "matrix" ? "float4x4" : token.text;
         e.args = parseArguments();
         return e;
     }

@@ -604,6 +604,35 @@ technique11 T
     EXPECT_EQ(stateOf(b, RenderStateId::AlphaBlendEnable), 0.0);
 }
 
+TEST(D3d10Syntax, ABareVectorInAPassFunctionIsAFloat4) {
+    // Game projects' shared state headers pass `vector(1.f, 1.f, 1.f, 1.f)` as the blend factor: HLSL's
+    // bare `vector` is float4, and fxc evaluated it on the host as it evaluates float4(...).
+    DiagnosticList diagnostics;
+    auto compiled = compile(withTechniques(R"(
+BlendState BS_None { BlendEnable[0] = FALSE; };
+technique11 T
+{
+    pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+             SetBlendState(BS_None, vector(0.f, 1.f, 0.f, 1.f), 0xffffffff); }
+    pass Q { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS()));
+             SetBlendState(BS_None, mul(vector(1, 0, 0, 1), matrix(0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0,
+                                                                     0, 0, 0, 1)), 0xffffffff); }
+}
+)"),
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    EXPECT_EQ(stateOf(compiled->techniques[0].passes[0], RenderStateId::BlendFactor),
+              static_cast<double>(0xFF00FF00u));
+    // The row vector (1, 0, 0, 1) times the matrix that swaps x and z: blue, a program that reads nothing.
+    const std::vector<RenderStateSetting>& states = compiled->techniques[0].passes[1].states;
+    const auto factor = std::find_if(states.begin(), states.end(), [](const RenderStateSetting& s) {
+        return s.id == RenderStateId::BlendFactor;
+    });
+    ASSERT_NE(factor, states.end());
+    ASSERT_TRUE(factor->value.isConstant());
+    EXPECT_EQ(factor->value.constant().data, (std::vector<float>{0, 0, 1, 1}));
+}
+
 TEST(D3d10Syntax, BlendStatesBlendEachRenderTargetByItsOwnFields) {
     DiagnosticList diagnostics;
     auto compiled = compile(withTechniques(R"(
