@@ -4,6 +4,7 @@
 #include "CaseFolding.h"
 
 #include "HlslSpelling.h"
+#include "InstanceTransformRows.h"
 #include "SemanticTables.h"
 
 #include <algorithm>
@@ -190,6 +191,12 @@ bool WrapperBuilder::readsIdentity(const Field& f) const {
     return f.column >= 0 && !mStreamOut.capturedInputs;
 }
 
+int WrapperBuilder::instanceRow(const Field& f) const {
+    if (f.column >= 0 || mStreamOut.capturedInputs) return -1;
+    const auto row = mInstanceRows.find(f.lvalue);
+    return row == mInstanceRows.end() ? -1 : row->second;
+}
+
 std::optional<int> WrapperBuilder::inputAttribute(const std::string& semantic) const {
     if (!mStreamOut.capturedInputs) return vertexInputAttribute(semantic);
     const std::vector<std::string>& captured = *mStreamOut.capturedInputs;
@@ -209,7 +216,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             systemValues.insert(f.semantic);
             continue;
         }
-        if (readsIdentity(f)) continue;
+        if (readsIdentity(f) || instanceRow(f) >= 0) continue;
         const std::optional<int> location = inputAttribute(f.semantic);
         if (!location) continue;
         if (!f.type.arrayDims.empty()) return fail(DiagId::VertexInputNestedTooDeeply, f.loc, {f.semantic});
@@ -239,6 +246,15 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
         if (readsIdentity(f)) {
             if (f.column == 0) mDiagnostics.report(DiagId::VertexInputMatrixIdentity, f.loc, {f.semantic});
             body += assignField(f, unmatchedVertexInput(f));
+            continue;
+        }
+        if (const int row = instanceRow(f); row >= 0) {
+            std::string identityRow = "float4(";
+            for (int k = 0; k < 4; ++k) identityRow += std::string(k ? ", " : "") + (k == row ? "1" : "0");
+            identityRow += ")";
+            mDiagnostics.report(DiagId::VertexInputInstanceRow, f.loc,
+                                {f.semantic, std::to_string(row), identityRow});
+            body += assignField(f, identityRow);
             continue;
         }
         const std::optional<int> location = inputAttribute(f.semantic);
@@ -483,6 +499,16 @@ bool WrapperBuilder::build(std::string& globals, std::string& wrapper) {
     }
     std::string params, inputBody, members, outputBody;
     bool vertex = mStage == ShaderStage::Vertex;
+    if (vertex) {
+        for (const auto& [path, row] : detail::instanceTransformRows(mEffect, mFn)) {
+            const size_t dot = path.find('.');
+            const std::string base = path.substr(0, dot);
+            for (size_t i = 0; i < mFn.params.size(); ++i)
+                if (mFn.params[i].name == base)
+                    mInstanceRows["fx_p" + std::to_string(i) +
+                                  (dot == std::string::npos ? "" : path.substr(dot))] = row;
+        }
+    }
     if (!(vertex ? vertexInputs(inputs, params, inputBody) : pixelInputs(inputs, params, inputBody)))
         return false;
     if (!(vertex ? vertexOutputs(outputs, members, outputBody) : pixelOutputs(outputs, members, outputBody)))

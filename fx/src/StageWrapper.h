@@ -115,6 +115,11 @@ private:
     std::optional<int> inputAttribute(const std::string& semantic) const;
     // Whether a vertex input field reads the identity matrix's column rather than an attribute.
     bool readsIdentity(const Field& f) const;
+    // The row of a per-instance transform that a vertex input field is (fx/src/InstanceTransformRows.h),
+    // or -1; such an input reads the identity's row.
+    int instanceRow(const Field& f) const;
+    // The vertex shader's instance-transform rows by the wrapper's l-values (`fx_p0.vRight`).
+    std::map<std::string, int> mInstanceRows;
 };
 
 }  // namespace fx

@@ -1036,14 +1036,14 @@ std::vector<std::string> messagesOf(const fx::DiagnosticList& diagnostics, fx::D
     return out;
 }
 
-TEST(D3d10Effects, VertexInputsOfAnyNameRenderTheFrameOfTheD3d9Names) {
+TEST(D3d10Effects, VertexInputsOfAnyNameAndInstanceRowsRenderTheFrameOfTheD3d9Names) {
     fx::DiagnosticList diagnostics;
     auto renderer = loadKeeping(sourcePath("tests/data/d3d10/input_layout_names.fx"), diagnostics);
     ASSERT_TRUE(renderer) << diagnostics.str();
     // The inputs no stream fits are named once each, at their declarations.
     const std::vector<std::string> notes = messagesOf(diagnostics, fx::DiagId::VertexInputConstant);
     ASSERT_EQ(notes.size(), 2u) << diagnostics.str();
-    EXPECT_NE(notes[0].find("input_layout_names.fx:16:"), std::string::npos) << notes[0];
+    EXPECT_NE(notes[0].find("input_layout_names.fx:18:"), std::string::npos) << notes[0];
     EXPECT_NE(notes[0].find("vertex input 'INST0' matches no mesh stream by its name; it reads the constant "
                             "float4(0, 0, 0, 0)"),
               std::string::npos)
@@ -1051,12 +1051,20 @@ TEST(D3d10Effects, VertexInputsOfAnyNameRenderTheFrameOfTheD3d9Names) {
     const std::vector<std::string> matrices = messagesOf(diagnostics, fx::DiagId::VertexInputMatrixIdentity);
     ASSERT_EQ(matrices.size(), 1u) << diagnostics.str();
     EXPECT_NE(matrices[0].find("vertex input 'MTRANSFORM0' is a matrix"), std::string::npos) << matrices[0];
+    const std::vector<std::string> rows = messagesOf(diagnostics, fx::DiagId::VertexInputInstanceRow);
+    ASSERT_EQ(rows.size(), 4u) << diagnostics.str();
+    EXPECT_NE(rows[3].find("vertex input 'TEXCOORD4' is row 3 of a per-instance transform"),
+              std::string::npos)
+        << rows[3];
+    EXPECT_NE(rows[3].find("it reads the identity's row float4(0, 0, 0, 1)"), std::string::npos) << rows[3];
 
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Named"));
     const runtime::FrameImage named = renderer->readFrame();
     ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Layout"));
     const runtime::FrameImage layout = renderer->readFrame();
     EXPECT_TRUE(layout.rgba == named.rgba);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Rows"));
+    EXPECT_TRUE(renderer->readFrame().rgba == named.rgba);
     // The frame shows the streams: the normal's |x| in red and u in green vary over the teapot, blue is 0
     // (the background, the corner's colour, excepted).
     const uint8_t* background = layout.pixel(0, 0);

@@ -2,9 +2,11 @@
 // Vertex inputs by the names D3D10 applications gave their input layouts: "POS", "NORM", "TEXTURE0" are
 // matched to the mesh's position, normal and texture-coordinate streams; "INST0" (an instance stream the
 // scene has no data for) reads 0, a bool "VISIBLE" reads false (GL takes no bool attributes: a float
-// attribute converted), and a per-instance "mTransform" matrix reads the identity. Technique Layout
-// therefore draws exactly the frame of technique Named, which spells the D3D9 names: the normal in red,
-// u in green, and blue 0 unless a constant input went wrong.
+// attribute converted), and a per-instance "mTransform" matrix reads the identity. Technique Rows
+// assembles its per-instance transform from four float4 rows at TEXCOORD1..4, as game projects' instancing
+// layouts carry it: the rows read the identity's rows. Techniques Layout and Rows therefore draw exactly
+// the frame of technique Named, which spells the D3D9 names: the normal in red, u in green, and blue 0
+// unless a constant input went wrong.
 //--------------------------------------------------------------------------------------
 float4x4 g_mWorldViewProjection;
 
@@ -23,6 +25,17 @@ struct VS_INPUT_NAMED
     float3 Pos  : POSITION;
     float3 Norm : NORMAL;
     float2 Tex  : TEXCOORD0;
+};
+
+struct VS_INPUT_ROWS
+{
+    float3 vPosition    : POSITION;
+    float3 vNormal      : NORMAL;
+    float2 vTexUV       : TEXCOORD0;
+    float4 vRight       : TEXCOORD1;
+    float4 vUp          : TEXCOORD2;
+    float4 vLook        : TEXCOORD3;
+    float4 vTranslation : TEXCOORD4;
 };
 
 struct PS_INPUT
@@ -47,6 +60,16 @@ PS_INPUT NamedVS(VS_INPUT_NAMED input)
     return output;
 }
 
+PS_INPUT RowsVS(VS_INPUT_ROWS In)
+{
+    PS_INPUT Out = (PS_INPUT)0;
+    matrix TransformMatrix = matrix(In.vRight, In.vUp, In.vLook, In.vTranslation);
+    vector vPosition = mul(vector(In.vPosition, 1.f), TransformMatrix);
+    Out.Pos = mul(vPosition, g_mWorldViewProjection);
+    Out.Color = float4(abs(In.vNormal.x), In.vTexUV.x, 0, 1);
+    return Out;
+}
+
 float4 PS(PS_INPUT input) : SV_Target
 {
     return input.Color;
@@ -67,6 +90,16 @@ technique10 Named
     pass P0
     {
         SetVertexShader(CompileShader(vs_4_0, NamedVS()));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
+
+technique10 Rows
+{
+    pass P0
+    {
+        SetVertexShader(CompileShader(vs_4_0, RowsVS()));
         SetGeometryShader(NULL);
         SetPixelShader(CompileShader(ps_4_0, PS()));
     }

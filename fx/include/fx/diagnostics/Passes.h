@@ -28,6 +28,10 @@ FX_DIAGNOSTIC(VertexInputConstant, Note,
 FX_DIAGNOSTIC(VertexInputMatrixIdentity, Note,
               "vertex input '{0}' is a matrix, which no mesh stream holds (a per-instance transform, which "
               "each object's World carries here); it reads the identity matrix")
+FX_DIAGNOSTIC(
+    VertexInputInstanceRow, Note,
+    "vertex input '{0}' is row {1} of a per-instance transform the vertex shader assembles, which no "
+    "mesh stream holds (each object's World carries it here); it reads the identity's row {2}")
 FX_DIAGNOSTIC(SamplerReadsHostPicture, Note,
               "sampler '{0}' of the full-screen pass '{1}' has no texture in the effect (its application "
               "bound one); drawn by a host, it reads the host's picture of the scene")
