@@ -493,5 +493,36 @@ TEST(FxComposerHost, EncodedCopiesRenderTheOriginalsFrame) {
     }
 }
 
+// XNA-era games include a shared header whose placeholder technique has its pass commented out, and pick
+// their techniques by name: the default is the first technique that draws, with a note at the empty one.
+TEST(FxComposerHost, TheDefaultTechniqueIsTheFirstThatDraws) {
+    auto renderer = loadEffect(R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+technique CommonTechnique
+{
+/*  pass { VertexShader = compile vs_1_0 CommonVS(); } */
+}
+float4 VS(float4 p : POSITION0) : POSITION0 { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return float4(1, 0.5, 0.25, 1); }
+technique Draw { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)",
+                               false, "empty_first_technique.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene scene = *runtime::makeBuiltinScene("teapot");
+    fx::DiagnosticList diagnostics;
+    runtime::FrameOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    ASSERT_TRUE(renderer->render(scene, options, diagnostics)) << diagnostics.str();
+    EXPECT_EQ(countDiagnostics(diagnostics, fx::DiagId::EmptyTechniqueSkipped), 1) << diagnostics.str();
+    EXPECT_NE(
+        diagnostics.str().find("empty_first_technique.fx:3:11: note: technique 'CommonTechnique' has no "
+                               "passes and no script; the first technique that draws, 'Draw', runs"),
+        std::string::npos)
+        << diagnostics.str();
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 255, 128, 64), kWidth * kHeight / 10);
+}
+
 }  // namespace
 }  // namespace shadowfx::test::test_fxcomposer_host

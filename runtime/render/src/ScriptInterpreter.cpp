@@ -64,7 +64,18 @@ const fx::CompiledTechnique* ScriptInterpreter::selectTechnique(const fx::Compil
         if (chosen >= 0) return &effect.techniques[static_cast<size_t>(chosen)];
         break;
     }
-    return &effect.techniques.front();
+    // A technique with neither passes nor a script draws nothing (a shared header's placeholder, included
+    // first): the default is the first technique that draws, as the application would have chosen one by
+    // name.
+    const auto draws = [](const fx::CompiledTechnique& t) { return !t.passes.empty() || t.hasScript; };
+    const fx::CompiledTechnique& first = effect.techniques.front();
+    if (draws(first)) return &first;
+    for (const fx::CompiledTechnique& technique : effect.techniques)
+        if (draws(technique)) {
+            diagnostics.report(fx::DiagId::EmptyTechniqueSkipped, first.loc, {first.name, technique.name});
+            return &technique;
+        }
+    return &first;
 }
 
 bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {

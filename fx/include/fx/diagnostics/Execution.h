@@ -10,6 +10,8 @@ FX_DIAGNOSTIC(SampleCountReduced, Warning,
               "'{0}' has {1} samples per texel; this OpenGL holds at most {2}, which it gets instead")
 FX_DIAGNOSTIC(UnknownTechnique, Error, "effect has no technique named '{0}'")
 FX_DIAGNOSTIC(NoTechniques, Error, "the file has no techniques")
+FX_DIAGNOSTIC(EmptyTechniqueSkipped, Note,
+              "technique '{0}' has no passes and no script; the first technique that draws, '{1}', runs")
 FX_DIAGNOSTIC(UnknownParameter, Error, "effect has no parameter named '{0}'")
 // {1}: the GL driver's link log.
 FX_DIAGNOSTIC(LinkError, Error, "GL program link failed: pass '{0}': {1}")
