@@ -252,7 +252,21 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
             if (!palette || hasInitializer) return {};
             return {has("WORLD") ? "WorldMatrixArray" : "BonePalette"};
         }
-        if (!consumeSuffix(stem, "MATRIX")) consumeSuffix(stem, "MTX");
+        // `WorldMatrix`, `WorldMtx`, `WorldMat`, `WorldM`, and an engine's `MATRIX_WVP` semantic.
+        if (!consumeSuffix(stem, "MATRIX") && !consumeSuffix(stem, "MTX") && !consumeSuffix(stem, "MAT"))
+            consumeSuffix(stem, "M");
+        consumePrefix(stem, "MATRIX");
+        // A light's matrices by name (XNA's shadow-mapping sample's `LightViewProj`): the light's own.
+        int lightNumber = -1;
+        bool light = false;
+        if (stem.rfind("LIGHT", 0) == 0) {
+            lightNumber = takeLightNumber(stem);
+            light = true;
+            stem.erase(0, 5);
+            if (stem != "VIEW" && stem != "PROJ" && stem != "PROJECTION" && stem != "VIEWPROJ" &&
+                stem != "VIEWPROJECTION" && stem != "VP")
+                return {};
+        }
         std::string modifier;
         if (consumeSuffix(stem, "INVERSETRANSPOSE") || consumeSuffix(stem, "INVTRANSPOSE") ||
             consumeSuffix(stem, "INVTRANS") || consumeSuffix(stem, "IT")) {
@@ -281,7 +295,18 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
             {"MVP", "WorldViewProjection"},
         };
         for (const auto& [text, semantic] : kMatrixNames)
-            if (stem == text) return {semantic + modifier};
+            if (stem == text) return {semantic + modifier, false, lightNumber, light && lightNumber < 0};
+        return {};
+    }
+    // The render target's size in pixels, which the application sets (`DestinationDimensions`,
+    // `ScreenSize`): the viewport's whatever the effect's placeholder.
+    if (type.shape == Shape::Vector && type.cols == 2 && type.arrayDims.empty()) {
+        static const char* kViewportSizeNames[] = {
+            "VIEWPORTSIZE",          "VIEWPORTPIXELSIZE", "VIEWPORTDIMENSIONS", "SCREENSIZE",
+            "SCREENRESOLUTION",      "SCREENDIMENSIONS",  "RESOLUTION",         "RENDERTARGETSIZE",
+            "DESTINATIONDIMENSIONS", "DESTINATIONSIZE"};
+        for (const char* text : kViewportSizeNames)
+            if (stem == text) return {"ViewportPixelSize"};
         return {};
     }
     // One level of array: a light property per light (SemanticBinding::eachLight).
@@ -411,17 +436,34 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
     binding.byName = parameter.semantic.empty();
     std::string semantic = parameter.semantic;
     int lightNumber = -1;
+    bool firstLight = false;
+    SemanticBinding standard;
+    if (!binding.byName && !classifyBound(semantic, standard)) {
+        // A semantic no table spells (an engine's `MATRIX_WVP`, `WorldMatrix`, MTA's `LIGHTDIFFUSE`): read
+        // as a name would be.
+        ParameterInfo spelled = parameter;
+        spelled.name = parameter.semantic;
+        spelled.semantic.clear();
+        binding.byName = !conventionalSemantic(spelled, hasInitializer).semantic.empty();
+    }
     if (binding.byName) {
-        const ConventionalSemantic conventional = conventionalSemantic(parameter, hasInitializer);
+        ParameterInfo named = parameter;
+        if (!parameter.semantic.empty()) {
+            named.name = parameter.semantic;
+            named.semantic.clear();
+        }
+        const ConventionalSemantic conventional = conventionalSemantic(named, hasInitializer);
         semantic = conventional.semantic;
         binding.viewSpace = conventional.viewSpace;
         lightNumber = conventional.lightNumber;
+        firstLight = conventional.firstLight;
     }
     if (semantic.empty() || !classifyBound(semantic, binding)) return SemanticBinding{};
     // The D3D samples' light direction points towards the light; a numbered light's, as XNA's
     // DirectionalLight::Direction and D3D9's D3DLIGHT9::Direction, the way the light travels, unless the
     // effect numbers its lights after an unnumbered one (LightNumbering).
-    binding.towardsLight = binding.byName && binding.kind == SemanticKind::LightDirection &&
+    binding.towardsLight = binding.byName && parameter.semantic.empty() &&
+                           binding.kind == SemanticKind::LightDirection &&
                            (lightNumber < 0 || numbering.afterUnnumbered);
 
     const SemanticKind kind = binding.kind;
@@ -442,7 +484,8 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
     }
     if (lightNumber >= 0 && parameter.light.empty()) {
         lightName = "light" + std::to_string(numbering.sceneLight(lightNumber));
-    } else if (!parameter.light.empty() || (isLightProperty && (spellsLight || isCascadeProperty))) {
+    } else if (!parameter.light.empty() || firstLight ||
+               (isLightProperty && (spellsLight || isCascadeProperty))) {
         lightName = parameter.light.empty() ? "light0" : parameter.light;
         if (binding.kind == SemanticKind::ObjectColor) binding.kind = SemanticKind::LightColor;
     }

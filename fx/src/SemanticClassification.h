@@ -45,8 +45,9 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
 // semantic for none (a parameter with a semantic keeps it, and parameters named otherwise stay the user's).
 struct ConventionalSemantic {
     std::string semantic;
-    bool viewSpace = false;  // a light's position or direction in view space (SemanticBinding::viewSpace)
-    int lightNumber = -1;    // the number of the light a light's property names, -1 for none
+    bool viewSpace = false;   // a light's position or direction in view space (SemanticBinding::viewSpace)
+    int lightNumber = -1;     // the number of the light a light's property names, -1 for none
+    bool firstLight = false;  // a light's matrix by a name without a number (`LightViewProj`): light0's
 };
 ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool hasInitializer);
 

@@ -277,6 +277,51 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_FALSE(standard(*effect, "Palette").byName);
 }
 
+// Engines spell their own semantics (`MATRIX_WVP`, `WorldMatrix`, MTA's `LIGHTDIFFUSE`) and names (`WorldM`,
+// `ViewProjMat`, XNA's `LightViewProj`, `DestinationDimensions`): read as a name would be, where no standard
+// semantic is spelled. A semantic that spells nothing stays unbound.
+TEST(ParameterSemantics, EngineSpellingsOfSemanticsAndNamesAreReadAsNames) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+float4x4 mat : MATRIX_WVP;
+float4x4 matView : MATRIX_WV;
+float4x4 gWorld : WorldMatrix;
+float4 gSun : LIGHTDIFFUSE;
+float4x4 Odd : MATRIX_BONES;
+float4x4 WorldM;
+float4x4 ViewProjMat;
+float4x4 LightViewProj;
+float4x4 Light2View;
+float2 DestinationDimensions;
+float2 HalfPixel;
+float4 VS(float4 p : POSITION) : POSITION {
+    return mul(mul(mul(mul(mul(mul(mul(mul(p, mat), matView), gWorld), Odd), WorldM), ViewProjMat),
+                   LightViewProj), Light2View) + gSun + float4(DestinationDimensions + HalfPixel, 0, 0);
+}
+technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
+)",
+                                                           "spellings.fx");
+    ASSERT_TRUE(effect);
+    const SemanticBinding& wvp = standard(*effect, "mat");
+    EXPECT_EQ(wvp.kind, SemanticKind::WorldViewProjection);
+    EXPECT_TRUE(wvp.byName);
+    EXPECT_EQ(standard(*effect, "matView").kind, SemanticKind::WorldView);
+    EXPECT_EQ(standard(*effect, "gWorld").kind, SemanticKind::World);
+    const SemanticBinding& sun = standard(*effect, "gSun");
+    EXPECT_EQ(sun.kind, SemanticKind::LightColor);
+    EXPECT_EQ(sun.light, lightIndex(*effect, "light0"));
+    EXPECT_EQ(standard(*effect, "Odd").kind, SemanticKind::None);
+    EXPECT_EQ(standard(*effect, "WorldM").kind, SemanticKind::World);
+    EXPECT_EQ(standard(*effect, "ViewProjMat").kind, SemanticKind::ViewProjection);
+    EXPECT_EQ(standard(*effect, "ViewProjMat").light, -1);  // the camera's
+    const SemanticBinding& lightViewProj = standard(*effect, "LightViewProj");
+    EXPECT_EQ(lightViewProj.kind, SemanticKind::ViewProjection);
+    EXPECT_EQ(lightViewProj.light, lightIndex(*effect, "light0"));
+    EXPECT_EQ(standard(*effect, "Light2View").kind, SemanticKind::View);
+    EXPECT_EQ(standard(*effect, "Light2View").light, lightIndex(*effect, "light0"));  // the lowest number
+    EXPECT_EQ(standard(*effect, "DestinationDimensions").kind, SemanticKind::ViewportPixelSize);
+    EXPECT_EQ(standard(*effect, "HalfPixel").kind, SemanticKind::None);
+}
+
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
     for (const std::string& name : standardSemanticNames()) {
         SCOPED_TRACE(name);

@@ -51,11 +51,13 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
     for (const fx::ParameterInfo& parameter : resources->parameterInfo()) {
         if (parameter.standard.byName) {
             const int light = parameter.standard.light;
-            diagnostics.report(
-                fx::DiagId::ParameterBoundByName, parameter.loc,
-                {parameter.name,
-                 fx::semanticBindingName(parameter.standard,
-                                         light >= 0 ? lights[static_cast<size_t>(light)] : std::string())});
+            const std::string bound = fx::semanticBindingName(
+                parameter.standard, light >= 0 ? lights[static_cast<size_t>(light)] : std::string());
+            if (parameter.semantic.empty())
+                diagnostics.report(fx::DiagId::ParameterBoundByName, parameter.loc, {parameter.name, bound});
+            else
+                diagnostics.report(fx::DiagId::ParameterBoundBySpelling, parameter.loc,
+                                   {parameter.name, parameter.semantic, bound});
         }
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&

@@ -28,6 +28,9 @@ FX_DIAGNOSTIC(UnboundSemantic, Warning,
 FX_DIAGNOSTIC(ParameterBoundByName, Note,
               "parameter '{0}' has no semantic; bound as '{1}' by its name, as an application setting it by "
               "name would")
+FX_DIAGNOSTIC(ParameterBoundBySpelling, Note,
+              "parameter '{0}' has semantic '{1}', which is no standard semantic; bound as '{2}' by what it "
+              "spells, as its application would set it")
 FX_DIAGNOSTIC(ParameterNamesMissingLight, Note,
               "parameter '{0}' names light '{1}', which the scene does not have; it keeps its value")
 FX_DIAGNOSTIC(PassWithoutShaders, Warning, "pass '{0}' draws but has no vertex and pixel shader; skipped")
