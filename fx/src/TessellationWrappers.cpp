@@ -156,7 +156,7 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
     }
     if (!everyArgumentTaken(uniformIndex)) return false;
     if (!input) return fail(DiagId::HullInputPatchMissing, mFn.loc, {mFn.name});
-    if (input->patchSize != 3)
+    if (input->patchSize != 3 && input->patchSize != 4)
         return fail(DiagId::InputPatchSizeUnsupported, input->loc, {std::to_string(input->patchSize)});
     mPatchVertices = input->patchSize;
     if (mFn.returnType.base == BaseType::Void)
@@ -176,7 +176,8 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
     }
 
     // The patch-constant function's wrapper.
-    std::string pcfLocals, pcfBody, pcfArgs, pcfParams = "InputPatch<fx_HsInput, 3> fx_in";
+    std::string pcfLocals, pcfBody, pcfArgs,
+        pcfParams = "InputPatch<fx_HsInput, " + std::to_string(mPatchVertices) + "> fx_in";
     bool outputPatch = false;
     for (size_t i = 0; i < pcf->params.size(); ++i) {
         const FunctionParam& p = pcf->params[i];
@@ -219,12 +220,12 @@ bool WrapperBuilder::buildHull(std::string& globals, std::string& wrapper) {
             (equalsIgnoreCase(a.name, "patchconstantfunc") ? std::string("[patchconstantfunc(\"fx_pcf\")]")
                                                            : a.text) +
             "\n";
-    wrapper +=
-        "fx_HsOutput " + std::string(kWrapperEntryPoint) +
-        "(InputPatch<fx_HsInput, 3> fx_in, uint fx_id : SV_OutputControlPointID, uint fx_primitiveId : "
-        "SV_PrimitiveID)\n{\n    fx_HsOutput fx_out = (fx_HsOutput)0;\n" +
-        locals + body + "    fx_r = " + mFn.name + "(" + callArgs + ");\n" + outputBody +
-        "    return fx_out;\n}\n";
+    wrapper += "fx_HsOutput " + std::string(kWrapperEntryPoint) + "(InputPatch<fx_HsInput, " +
+               std::to_string(mPatchVertices) +
+               "> fx_in, uint fx_id : SV_OutputControlPointID, uint fx_primitiveId : "
+               "SV_PrimitiveID)\n{\n    fx_HsOutput fx_out = (fx_HsOutput)0;\n" +
+               locals + body + "    fx_r = " + mFn.name + "(" + callArgs + ");\n" + outputBody +
+               "    return fx_out;\n}\n";
     return true;
 }
 
@@ -261,9 +262,9 @@ bool WrapperBuilder::buildDomain(std::string& globals, std::string& wrapper) {
             if (!readControlPoints(p, arg, "fx_patch", varyings, locals, body)) return false;
             addParam("const OutputPatch<fx_DsPoint, " + std::to_string(p.patchSize) + "> fx_patch");
         } else if (semantic == "SV_DOMAINLOCATION") {
-            TypeDesc t = p.type;
-            addParam(hlslTypeName(t) + " fx_domain : SV_DomainLocation");
-            arg = "fx_domain";
+            // GL's tessellation coordinate has three components in every domain; a quad's reads two.
+            addParam("float3 fx_domain : SV_DomainLocation");
+            arg = p.type.cols == 2 ? "fx_domain.xy" : "fx_domain";
         } else if (semantic == "SV_PRIMITIVEID") {
             addParam("uint fx_primitiveId : SV_PrimitiveID");
             arg = "(" + hlslTypeName(p.type) + ")fx_primitiveId";

@@ -622,6 +622,8 @@ TEST(D3d10Effects, DomainLocationAndPatchConstantsReachTheDomainShader) {
 // Through VS -> HS -> DS -> PS at factor 1 the meshes come out as the plain pass draws them, back faces
 // culled by D3D10's default rasterizer state: the control points and their float3 POSITION link by
 // semantic, and the tessellator winds its triangles as the mesh does.
+// So does a quad domain (Frank Luna's D3D11 tessellation samples), each triangle a quad patch whose third
+// corner comes twice.
 TEST(D3d10Effects, TessellatedMeshAtFactorOneDrawsTheFrameOfThePlainPass) {
     auto renderer = loadEffect(sourcePath("tests/data/d3d10/tessellation.fx"), true);
     ASSERT_TRUE(renderer);
@@ -630,16 +632,19 @@ TEST(D3d10Effects, TessellatedMeshAtFactorOneDrawsTheFrameOfThePlainPass) {
     ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, "Plain"));
     const runtime::FrameImage plain = renderer->readFrame();
     ASSERT_TRUE(notConstant(plain));
-    ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, "Mesh"));
-    const runtime::FrameImage tessellated = renderer->readFrame();
-    size_t differing = 0;
-    for (size_t i = 0; i + 3 < plain.rgba.size(); i += 4)
-        for (int k = 0; k < 3; ++k)
-            if (std::abs(plain.rgba[i + k] - tessellated.rgba[i + k]) > 2) {
-                ++differing;
-                break;
-            }
-    EXPECT_LE(differing, static_cast<size_t>(kTessSize * kTessSize / 200));
+    for (const char* technique : {"Mesh", "QuadMesh"}) {
+        SCOPED_TRACE(technique);
+        ASSERT_TRUE(render(*renderer, scene("teapot"), kTessSize, kTessSize, technique));
+        const runtime::FrameImage tessellated = renderer->readFrame();
+        size_t differing = 0;
+        for (size_t i = 0; i + 3 < plain.rgba.size(); i += 4)
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(plain.rgba[i + k] - tessellated.rgba[i + k]) > 2) {
+                    ++differing;
+                    break;
+                }
+        EXPECT_LE(differing, static_cast<size_t>(kTessSize * kTessSize / 200));
+    }
 }
 
 // [SECTION] SAS scripts on the D3D11 form

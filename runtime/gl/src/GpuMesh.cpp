@@ -151,11 +151,18 @@ void GpuMesh::drawElements(int instances, int patchVertices, fx::CompiledPass::D
     GLenum mode = GL_TRIANGLES;
     size_t count = mIndexCount;
     bool derived = false;
+    if (patchVertices == 4) {
+        const auto& [buffer, indexCount] = derivedIndices(Derived::QuadPatches);
+        gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+        count = indexCount;
+        derived = true;
+    }
     if (patchVertices > 0) {
         gl::PatchParameteri(GL_PATCH_VERTICES, patchVertices);
         mode = GL_PATCHES;
     } else if (primitive == Primitive::Lines || primitive == Primitive::TrianglesAdjacency) {
-        const auto& [buffer, indexCount] = derivedIndices(primitive);
+        const auto& [buffer, indexCount] =
+            derivedIndices(primitive == Primitive::Lines ? Derived::Edges : Derived::Adjacency);
         gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
         mode = primitive == Primitive::Lines ? GL_LINES : GL_TRIANGLES_ADJACENCY;
         count = indexCount;
@@ -169,9 +176,10 @@ void GpuMesh::drawElements(int instances, int patchVertices, fx::CompiledPass::D
     if (derived) gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mIndexBuffer);  // VAO state: the triangles again
 }
 
-const std::pair<GLuint, size_t>& GpuMesh::derivedIndices(fx::CompiledPass::DrawPrimitive primitive) {
-    const bool lines = primitive == fx::CompiledPass::DrawPrimitive::Lines;
-    std::pair<GLuint, size_t>& derived = lines ? mEdgeIndices : mAdjacencyIndices;
+const std::pair<GLuint, size_t>& GpuMesh::derivedIndices(Derived kind) {
+    std::pair<GLuint, size_t>& derived = kind == Derived::Edges       ? mEdgeIndices
+                                         : kind == Derived::Adjacency ? mAdjacencyIndices
+                                                                      : mQuadPatchIndices;
     if (derived.first != 0) return derived;
     // Built from what the buffers hold (the Mesh is not kept): read back once, then kept with the mesh.
     std::vector<glm::vec3> positions(mVertexCount);
@@ -182,8 +190,15 @@ const std::pair<GLuint, size_t>& GpuMesh::derivedIndices(fx::CompiledPass::DrawP
     gl::BindBuffer(GL_ARRAY_BUFFER, 0);
     gl::GetBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(indices.size() * sizeof(uint32_t)),
                          indices.data());
-    const std::vector<uint32_t> list =
-        lines ? edgeIndices(positions, indices) : adjacencyIndices(positions, indices);
+    std::vector<uint32_t> list;
+    if (kind == Derived::Edges) {
+        list = edgeIndices(positions, indices);
+    } else if (kind == Derived::Adjacency) {
+        list = adjacencyIndices(positions, indices);
+    } else {
+        for (size_t t = 0; t + 2 < indices.size(); t += 3)
+            list.insert(list.end(), {indices[t], indices[t + 1], indices[t + 2], indices[t + 2]});
+    }
     gl::GenBuffers(1, &derived.first);
     gl::BindBuffer(GL_ELEMENT_ARRAY_BUFFER, derived.first);
     gl::BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(uint32_t)), list.data(),
@@ -198,7 +213,7 @@ void GpuMesh::release() {
         stream = {};
     }
     if (mIndexBuffer != 0) gl::DeleteBuffers(1, &mIndexBuffer);
-    for (std::pair<GLuint, size_t>* derived : {&mEdgeIndices, &mAdjacencyIndices}) {
+    for (std::pair<GLuint, size_t>* derived : {&mEdgeIndices, &mAdjacencyIndices, &mQuadPatchIndices}) {
         if (derived->first != 0) gl::DeleteBuffers(1, &derived->first);
         *derived = {0, 0};
     }
@@ -222,6 +237,7 @@ GpuMesh& GpuMesh::operator=(GpuMesh&& other) noexcept {
         mIndexBuffer = std::exchange(other.mIndexBuffer, 0);
         mEdgeIndices = std::exchange(other.mEdgeIndices, {0, 0});
         mAdjacencyIndices = std::exchange(other.mAdjacencyIndices, {0, 0});
+        mQuadPatchIndices = std::exchange(other.mQuadPatchIndices, {0, 0});
         mStreams = std::exchange(other.mStreams, {});
         mIndexCount = other.mIndexCount;
         mVertexCount = other.mVertexCount;

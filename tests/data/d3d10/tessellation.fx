@@ -9,7 +9,9 @@
 // `Corners`: the same triangle filled with half SV_DomainLocation plus half a patch constant (Tint) as its
 // colour: u adds red at the first corner, v green at the second, w blue at the third.
 // `Mesh`: the meshes themselves through VS -> HS -> DS -> PS, the control points carrying a float3
-// POSITION and a NORMAL; at factor 1 it draws the frame of `Plain`.
+// POSITION and a NORMAL; at factor 1 it draws the frame of `Plain`. `QuadMesh`: the same through a quad
+// domain, whose four control points a triangle gives with its third corner twice; the bilinear patch
+// collapses onto the triangle, so it draws that frame too.
 
 cbuffer Tessellation
 {
@@ -133,6 +135,46 @@ DsOut DSMesh(HsConstants c, float3 uvw : SV_DomainLocation, const OutputPatch<Hs
     return o;
 }
 
+struct QuadConstants
+{
+    float Edges[4] : SV_TessFactor;
+    float Inside[2] : SV_InsideTessFactor;
+};
+
+QuadConstants EveryQuad(InputPatch<VsOut, 4> patch)
+{
+    QuadConstants c;
+    c.Edges[0] = c.Edges[1] = c.Edges[2] = c.Edges[3] = TessFactor;
+    c.Inside[0] = c.Inside[1] = TessFactor;
+    return c;
+}
+
+[domain("quad")]
+[partitioning("integer")]
+[outputtopology("triangle_cw")]
+[outputcontrolpoints(4)]
+[patchconstantfunc("EveryQuad")]
+HsOut HSQuad(InputPatch<VsOut, 4> patch, uint i : SV_OutputControlPointID)
+{
+    HsOut o;
+    o.Position = patch[i].Position;
+    o.Normal = patch[i].Normal;
+    return o;
+}
+
+[domain("quad")]
+DsOut DSQuad(QuadConstants c, float2 uv : SV_DomainLocation, const OutputPatch<HsOut, 4> quad)
+{
+    DsOut o;
+    const float3 p = lerp(lerp(quad[0].Position, quad[1].Position, uv.x),
+                          lerp(quad[2].Position, quad[3].Position, uv.x), uv.y);
+    const float3 n = lerp(lerp(quad[0].Normal, quad[1].Normal, uv.x),
+                          lerp(quad[2].Normal, quad[3].Normal, uv.x), uv.y);
+    o.Position = mul(float4(p, 1), Wvp);
+    o.Color = normalize(n) * 0.5 + 0.5;
+    return o;
+}
+
 struct PlainOut
 {
     float4 Position : SV_Position;
@@ -223,6 +265,17 @@ technique11 Plain
     pass
     {
         SetVertexShader(CompileShader(vs_5_0, PlainVS()));
+        SetPixelShader(CompileShader(ps_5_0, PS()));
+    }
+}
+
+technique11 QuadMesh
+{
+    pass
+    {
+        SetVertexShader(CompileShader(vs_5_0, VS()));
+        SetHullShader(CompileShader(hs_5_0, HSQuad()));
+        SetDomainShader(CompileShader(ds_5_0, DSQuad()));
         SetPixelShader(CompileShader(ps_5_0, PS()));
     }
 }

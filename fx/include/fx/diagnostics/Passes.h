@@ -104,7 +104,8 @@ FX_DIAGNOSTIC(HullInputPatchMissing, Error,
               "hull shader '{0}' needs an input patch ('InputPatch<T, 3> patch')")
 FX_DIAGNOSTIC(InputPatchSizeUnsupported, Error,
               "an input patch of {0} control points is not supported: shadowfx draws a mesh's triangles as "
-              "patches, which 'InputPatch<T, 3>' takes")
+              "patches, which 'InputPatch<T, 3>' takes, or 'InputPatch<T, 4>' as quads with the third corner "
+              "twice")
 FX_DIAGNOSTIC(HullReturnsNoControlPoint, Error, "hull shader '{0}' must return its output control point")
 FX_DIAGNOSTIC(OutputPatchReadsUnwritten, Error,
               "the output patch '{0}' of '{1}' reads a semantic that hull shader '{2}' does not write")

@@ -43,7 +43,8 @@ public:
     // Binds the VAO, enables exactly the locations in `inputs` (feeding a mesh attribute or a default),
     // disables the locations enabled by the previous draw, and draws the triangle list. The program must
     // be current. `instances` > 1 draws that many instances in one call (gl_InstanceID 0..instances-1).
-    // `patchVertices` > 0 draws the triangles as GL_PATCHES of that many control points (tessellation);
+    // `patchVertices` 3 draws the triangles as GL_PATCHES (tessellation), 4 each triangle as a quad patch
+    // whose last corner is its third repeated (a quad domain's bilinear patch collapsed onto the triangle);
     // `primitive` draws the vertices as points, the unique edges as lines or the triangles with adjacency
     // instead (a geometry shader's input; the index buffers are built at the first such draw and kept).
     void draw(const std::vector<fx::VertexInput>& inputs, int instances = 1, int patchVertices = 0,
@@ -60,14 +61,17 @@ private:
     };
     void release();
     void drawElements(int instances, int patchVertices, fx::CompiledPass::DrawPrimitive primitive);
-    // The element buffer of lines or triangles with adjacency, built from the triangle list on first use.
-    const std::pair<GLuint, size_t>& derivedIndices(fx::CompiledPass::DrawPrimitive primitive);
+    // The element buffer of lines, triangles with adjacency or quad patches, built from the triangle list on
+    // first use.
+    enum class Derived { Edges, Adjacency, QuadPatches };
+    const std::pair<GLuint, size_t>& derivedIndices(Derived kind);
     void uploadStream(Stream stream, const float* data, int components);
 
     GLuint mVao = 0;
     GLuint mIndexBuffer = 0;
     std::pair<GLuint, size_t> mEdgeIndices{0, 0};       // GL_LINES: each welded edge once
     std::pair<GLuint, size_t> mAdjacencyIndices{0, 0};  // GL_TRIANGLES_ADJACENCY: 6 per triangle
+    std::pair<GLuint, size_t> mQuadPatchIndices{0, 0};  // GL_PATCHES of 4: a, b, c, c per triangle
     std::array<StreamBuffer, kStreamCount> mStreams{};
     size_t mIndexCount = 0;
     size_t mVertexCount = 0;
