@@ -4,7 +4,6 @@
 #include "SemanticIndex.h"
 
 #include <fx/RenderStates.h>
-#include <fx/VertexStreams.h>
 
 #include <algorithm>
 #include <cctype>
@@ -127,11 +126,15 @@ std::optional<int> customVaryingLocation(const Effect& effect, const std::string
         for (int k = 0; k < span; ++k)
             if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
                 tableUsed.insert(*location);
-        if (vertexInput || c.empty() || c.rfind("SV_", 0) == 0 || varyingLocation(c) || c == "POSITION0" ||
-            c == "VPOS" || c == "VPOS0" || c == "VFACE" || c.rfind("PSIZE", 0) == 0 ||
-            c.rfind("DEPTH", 0) == 0 || vertexInputLocation(c))
+        if (vertexInput || c.empty() || c.rfind("SV_", 0) == 0 || c == "POSITION0" || c == "VPOS" ||
+            c == "VPOS0" || c == "VFACE" || c.rfind("PSIZE", 0) == 0 || c.rfind("DEPTH", 0) == 0)
             return;
-        for (int k = 0; k < span; ++k) names.insert(name + std::to_string(first + k));
+        // Each element the table has no location for is free-named: `float3x3 Tangent : TANGENT0` is
+        // TANGENT0 (the table's) and TANGENT1..2, and a vertex-input name written as an output
+        // (`BLENDWEIGHT0`) is a varying like any other.
+        for (int k = 0; k < span; ++k)
+            if (!varyingLocation(name + std::to_string(first + k)))
+                names.insert(name + std::to_string(first + k));
     };
     for (const StructDecl& s : effect.structs)
         for (const StructMember& m : s.members) add(m.semantic, m.type, inputStructs.count(s.name) > 0);

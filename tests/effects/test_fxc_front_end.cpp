@@ -74,6 +74,18 @@ TEST(FxcFrontEnd, XnaSampleStyleEffect) {
     EXPECT_TRUE(drawsEveryChannel(loaded.renderer->readFrame()));
 }
 
+// A float3x3 vertex output under TANGENT0 (TANGENT0..2, one per column) and a float3 under BLENDWEIGHT0,
+// as XNA and MonoGame effects pass a tangent frame: the objects are (0.75, 0.5, 1), which only every column
+// and the weights crossing to the pixel shader draw (a column or the weights lost reads 0 there).
+TEST(FxcFrontEnd, MatrixAndVertexInputNamedVaryings) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/matrix_varyings.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    EXPECT_FALSE(loaded.diagnostics.hasErrors()) << loaded.diagnostics.str();
+    ASSERT_TRUE(render(*loaded.renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 191, 128, 255), 64 * 48 / 20);
+}
+
 // MonoGame's macros for OpenGL and Direct3D 9: a sampler block naming a texture nothing declares declares
 // it, and the teapot draws lit through it.
 TEST(FxcFrontEnd, MonoGameSamplerNamesItsTexture) {
