@@ -114,9 +114,16 @@ std::optional<int> customVaryingLocation(const Effect& effect, const std::string
         for (const Pass& pass : t.passes)
             for (const StateAssignment& state : pass.states) collectEntries(state.value, entries);
     const std::set<std::string> inputStructs = vertexInputOnlyStructs(effect, entries);
+    // SM4's PSIZE is user data between a vertex and a geometry shader (point-sprite particles carry each
+    // sprite's size to the geometry shader that expands it): a geometry shader's input names it a varying.
+    std::set<std::string> geometryInputStructs;
+    for (const FunctionDecl& f : effect.functions)
+        for (const FunctionParam& p : f.params)
+            if (!p.primitive.empty() && p.type.base == BaseType::Struct)
+                geometryInputStructs.insert(p.type.structName);
     std::set<std::string> names;
     std::set<int> tableUsed;
-    auto add = [&](const std::string& s, const TypeDesc& type, bool vertexInput) {
+    auto add = [&](const std::string& s, const TypeDesc& type, bool vertexInput, bool geometryInput) {
         const std::string c = canonicalSemantic(s);
         // A matrix or an array takes consecutive indices (gatherFields): every one of them is used.
         int span = type.shape == Shape::Matrix ? std::max(type.cols, 1) : 1;
@@ -127,7 +134,8 @@ std::optional<int> customVaryingLocation(const Effect& effect, const std::string
             if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
                 tableUsed.insert(*location);
         if (vertexInput || c.empty() || c.rfind("SV_", 0) == 0 || c == "POSITION0" || c == "VPOS" ||
-            c == "VPOS0" || c == "VFACE" || c.rfind("PSIZE", 0) == 0 || c.rfind("DEPTH", 0) == 0)
+            c == "VPOS0" || c == "VFACE" || (c.rfind("PSIZE", 0) == 0 && !geometryInput) ||
+            c.rfind("DEPTH", 0) == 0)
             return;
         // Each element the table has no location for is free-named: `float3x3 Tangent : TANGENT0` is
         // TANGENT0 (the table's) and TANGENT1..2, and a vertex-input name written as an output
@@ -137,13 +145,15 @@ std::optional<int> customVaryingLocation(const Effect& effect, const std::string
                 names.insert(name + std::to_string(first + k));
     };
     for (const StructDecl& s : effect.structs)
-        for (const StructMember& m : s.members) add(m.semantic, m.type, inputStructs.count(s.name) > 0);
+        for (const StructMember& m : s.members)
+            add(m.semantic, m.type, inputStructs.count(s.name) > 0, geometryInputStructs.count(s.name) > 0);
     for (const FunctionDecl& f : effect.functions) {
-        add(f.returnSemantic, f.returnType, false);
+        add(f.returnSemantic, f.returnType, false, false);
         for (const FunctionParam& p : f.params)
             add(p.semantic, p.type,
                 entries.vertex.count(f.name) && !entries.other.count(f.name) &&
-                    p.direction == FunctionParam::Direction::In);
+                    p.direction == FunctionParam::Direction::In,
+                !p.primitive.empty());
     }
     const std::string key = splitSemantic(canonicalSemantic(semantic)).first +
                             std::to_string(splitSemantic(canonicalSemantic(semantic)).second);

@@ -365,6 +365,35 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
                                    std::string& body) {
     bool position = false;
     std::set<int> used;
+    const auto varying = [&](int location, const Field& f) {
+        if (!used.insert(location).second) return;
+        std::string name = "fx_v" + std::to_string(location);
+        if (mStreamOut.captureOnly) {
+            // Captured and never linked to a later stage: the output keeps its declared type, so that
+            // transform feedback captures as many components as the declaration names.
+            TypeDesc t = f.type;
+            t.arrayDims.clear();
+            const bool integer = t.base != BaseType::Float && t.base != BaseType::Half;
+            mVaryingOutputs[location] = t;
+            members += "    [[vk::location(" + std::to_string(location) + ")]] " +
+                       (integer ? "nointerpolation " : "") + hlslTypeName(t) + " " + name + " : FX_V" +
+                       std::to_string(location) + ";\n";
+            body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
+            return;
+        }
+        mVaryingOutputs[location] = float4Type();
+        members += "    [[vk::location(" + std::to_string(location) + ")]] float4 " + name + " : FX_V" +
+                   std::to_string(location) + ";\n";
+        int n = std::clamp(f.type.cols, 1, 4);
+        std::string v = "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + fieldValue(f) + ")";
+        body += "    fx_out." + name + " = " +
+                (n == 4 ? v
+                        : "float4(" + v +
+                              (n == 1   ? ", 0, 0, 1)"
+                               : n == 2 ? ", 0, 1)"
+                                        : ", 1)")) +
+                ";\n";
+    };
     for (const Field& f : fields) {
         const std::string& s = f.semantic;
         if (s == "POSITION0" || s == "SV_POSITION") {
@@ -374,15 +403,17 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             // A hull shader's control points often carry a float3 POSITION.
             body +=
                 "    fx_out.fx_position = " + widenToFloat4(f.lvalue, std::clamp(f.type.cols, 1, 4)) + ";\n";
-        } else if (s == "PSIZE0") {
-            // gl_PointSize (glslang reads no PSIZE semantic, but takes SPIR-V's builtin by name); the runtime
-            // enables GL_PROGRAM_POINT_SIZE for a program that writes it (GpuProgram::bind).
-            if (!used.insert(2000).second) continue;
-            members += "    [[vk::builtin(\"PointSize\")]] float fx_psize : PSIZE;\n";
-            body += "    fx_out.fx_psize = " + fieldValue(f) +
-                    (f.type.cols > 1 || f.type.rows > 1 ? ".x" : "") + ";\n";
         } else if (s.rfind("PSIZE", 0) == 0) {
-            continue;  // PSIZE1..: D3D9 had one point size
+            // PSIZE0 is gl_PointSize (glslang reads no PSIZE semantic, but takes SPIR-V's builtin by name);
+            // the runtime enables GL_PROGRAM_POINT_SIZE for a program that writes it (GpuProgram::bind).
+            // PSIZE1..: D3D9 had one point size.
+            if (s == "PSIZE0" && used.insert(2000).second) {
+                members += "    [[vk::builtin(\"PointSize\")]] float fx_psize : PSIZE;\n";
+                body += "    fx_out.fx_psize = " + fieldValue(f) +
+                        (f.type.cols > 1 || f.type.rows > 1 ? ".x" : "") + ";\n";
+            }
+            // A geometry shader that reads it takes it as user data (SM4), through a varying.
+            if (const std::optional<int> location = customVaryingLocation(mEffect, s)) varying(*location, f);
         } else if (s.rfind("SV_CLIPDISTANCE", 0) == 0 || s.rfind("SV_CULLDISTANCE", 0) == 0) {
             // gl_ClipDistance / gl_CullDistance; the runtime enables the clip planes the program writes.
             const bool clip = s[3] == 'C' && s[4] == 'L';
@@ -396,34 +427,7 @@ bool WrapperBuilder::vertexOutputs(const std::vector<Field>& fields, std::string
             body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
         } else if (auto location =
                        varyingLocation(s) ? varyingLocation(s) : customVaryingLocation(mEffect, s)) {
-            if (!used.insert(*location).second) continue;
-            std::string name = "fx_v" + std::to_string(*location);
-            if (mStreamOut.captureOnly) {
-                // Captured and never linked to a later stage: the output keeps its declared type, so that
-                // transform feedback captures as many components as the declaration names.
-                TypeDesc t = f.type;
-                t.arrayDims.clear();
-                const bool integer = t.base != BaseType::Float && t.base != BaseType::Half;
-                mVaryingOutputs[*location] = t;
-                members += "    [[vk::location(" + std::to_string(*location) + ")]] " +
-                           (integer ? "nointerpolation " : "") + hlslTypeName(t) + " " + name + " : FX_V" +
-                           std::to_string(*location) + ";\n";
-                body += "    fx_out." + name + " = " + fieldValue(f) + ";\n";
-                continue;
-            }
-            mVaryingOutputs[*location] = float4Type();
-            members += "    [[vk::location(" + std::to_string(*location) + ")]] float4 " + name + " : FX_V" +
-                       std::to_string(*location) + ";\n";
-            int n = std::clamp(f.type.cols, 1, 4);
-            std::string v =
-                "(float" + (n == 1 ? std::string() : std::to_string(n)) + ")(" + fieldValue(f) + ")";
-            body += "    fx_out." + name + " = " +
-                    (n == 4 ? v
-                            : "float4(" + v +
-                                  (n == 1   ? ", 0, 0, 1)"
-                                   : n == 2 ? ", 0, 1)"
-                                            : ", 1)")) +
-                    ";\n";
+            varying(*location, f);
         } else {
             return fail(DiagId::VertexOutputSemanticUnsupported, f.loc, {s});
         }

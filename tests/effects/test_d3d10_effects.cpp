@@ -494,6 +494,18 @@ TEST(D3d10Effects, PointInputGeometryShaderExpandsEveryVertexIntoASprite) {
     EXPECT_EQ(misplaced, 0u);
 }
 
+// A value the vertex shader writes under PSIZE, read by the geometry shader as SM4 user data (FX11
+// point-sprite particles carry each sprite's size so): tests/data/d3d10/point_size_geometry.fx colours
+// each sprite with the size its geometry shader read, and draws nothing where it read 0.
+TEST(D3d10Effects, GeometryShaderReadsThePointSizeTheVertexShaderWrote) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/point_size_geometry.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Sprites"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    // Size (0.25, 0.75) as the colour (0.25, 0.75, 1).
+    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 64, 191, 255), kWidth * kHeight / 20);
+}
+
 // `triangleadj` input: the silhouette edges as seen from the light, pixel 3 t + i for edge i of triangle
 // t, against the same test computed here from the mesh with its own (brute-force) neighbour search.
 TEST(D3d10Effects, TriangleAdjacencyGeometryShaderFindsTheSilhouetteEdges) {
