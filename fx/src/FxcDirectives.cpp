@@ -4,12 +4,14 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <optional>
 
 namespace fx::detail {
 
 namespace {
 
 const char kMarker[] = "shadowfx_undefined_condition_call_";
+const char kDefinitionMarker[] = "shadowfx_macro_definition_";
 
 bool isIdentStart(char c) {
     return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
@@ -97,7 +99,74 @@ std::string parameterList(int arity) {
     return list;
 }
 
+// A #define's name, where it starts, and its parameter list and body with comments dropped and blanks
+// collapsed (two definitions with equal keys are the same definition); `logical` is the whole directive,
+// its continued lines joined.
+struct Definition {
+    std::string name;
+    size_t at = 0;
+    std::string key;
+};
+
+std::optional<Definition> definitionIn(const std::string& logical, size_t from) {
+    Definition d;
+    d.at = logical.find_first_not_of(" \t", from);
+    if (d.at == std::string::npos || !isIdentStart(logical[d.at])) return std::nullopt;
+    size_t end = d.at;
+    while (end < logical.size() && isIdentChar(logical[end])) ++end;
+    d.name = logical.substr(d.at, end - d.at);
+    bool blank = false, inBlockComment = false;
+    for (size_t i = end; i < logical.size(); ++i) {
+        if (inBlockComment) {
+            if (logical.compare(i, 2, "*/") == 0) inBlockComment = false, ++i, blank = true;
+            continue;
+        }
+        if (logical.compare(i, 2, "//") == 0) break;
+        if (logical.compare(i, 2, "/*") == 0) {
+            inBlockComment = true, ++i;
+            continue;
+        }
+        if (std::isspace(static_cast<unsigned char>(logical[i]))) {
+            blank = true;
+            continue;
+        }
+        if (blank && !d.key.empty()) d.key += ' ';
+        blank = false;
+        d.key += logical[i];
+    }
+    // `#define F(x) x` and `#define F (x) x` differ: only the first has parameters.
+    d.key.insert(0, end < logical.size() && logical[end] == '(' ? "function " : "object ");
+    return d;
+}
+
+// Takes the markers `#pragma <prefix>N` (N < count) out of glslang's output, calling `report(N)` for each.
+// The effect may spell such a directive itself: only a marker this pass wrote (one of its numbers, nothing
+// after it) is taken; any other line is the effect's pragma and stays.
+template <typename Report>
+void takeMarkers(std::string& preprocessed, const char* prefix, size_t count, Report report) {
+    const std::string directive = std::string("#pragma ") + prefix;
+    for (size_t at = preprocessed.find(directive); at != std::string::npos;
+         at = preprocessed.find(directive, at)) {
+        size_t end = preprocessed.find('\n', at);
+        if (end == std::string::npos) end = preprocessed.size();
+        const char* first = preprocessed.data() + at + directive.size();
+        const char* last = preprocessed.data() + end;
+        size_t number = 0;
+        const auto [stop, error] = std::from_chars(first, last, number);
+        if (error != std::errc() || stop != last || number >= count) {
+            at = end;
+            continue;
+        }
+        report(number);
+        preprocessed.erase(at, end - at);
+    }
+}
+
 }  // namespace
+
+void FxcDirectives::predefine(const std::string& name, const std::string& body) {
+    if (const std::optional<Definition> d = definitionIn(name + " " + body, 0)) mPredefined[d->name] = d->key;
+}
 
 std::string FxcDirectives::rewrite(const std::string& text, const std::string& file,
                                    DiagnosticSink& diagnostics) {
@@ -170,6 +239,30 @@ std::string FxcDirectives::rewrite(const std::string& text, const std::string& f
             resynchronize();
             continue;
         }
+        if (word == "define") {
+            // The whole directive, its continued lines joined (a '\\' and a '\r' before a line break are
+            // blanks).
+            std::string logical = line;
+            for (size_t k = index + 1; k < lines.size(); ++k) {
+                while (!logical.empty() && logical.back() == '\r') logical.pop_back();
+                if (logical.empty() || logical.back() != '\\') break;
+                logical.back() = ' ';
+                logical += lines[k];
+            }
+            if (const std::optional<Definition> d = definitionIn(logical, wordEnd)) {
+                // Marker 2 N + 1 where the macro is defined (it is undefined first), 2 N where it is not:
+                // in glslang's output, the order the definitions ran in.
+                added = true;
+                out += "#ifdef " + d->name + "\n#pragma " + kDefinitionMarker +
+                       std::to_string(2 * mDefinitions.size() + 1) + "\n#undef " + d->name +
+                       "\n#else\n#pragma " + kDefinitionMarker + std::to_string(2 * mDefinitions.size()) +
+                       "\n#endif\n#line " + std::to_string(number) + "\n";
+                mDefinitions.push_back(
+                    {SourceLoc{file, number, static_cast<int>(d->at) + 1}, d->name, d->key});
+            }
+            emit(line);
+            continue;
+        }
         if (word != "if" && word != "elif") {
             emit(line);
             continue;
@@ -210,24 +303,21 @@ std::string FxcDirectives::rewrite(const std::string& text, const std::string& f
 }
 
 void FxcDirectives::takeUndefinedCallMarkers(std::string& preprocessed, DiagnosticSink& diagnostics) const {
-    const std::string directive = std::string("#pragma ") + kMarker;
-    for (size_t at = preprocessed.find(directive); at != std::string::npos;
-         at = preprocessed.find(directive, at)) {
-        size_t end = preprocessed.find('\n', at);
-        if (end == std::string::npos) end = preprocessed.size();
-        // The effect may spell the directive itself: only a marker this pass wrote (one of its call
-        // numbers, nothing after it) is taken; any other line is the effect's pragma and stays.
-        const char* first = preprocessed.data() + at + directive.size();
-        const char* last = preprocessed.data() + end;
-        size_t number = 0;
-        const auto [stop, error] = std::from_chars(first, last, number);
-        if (error != std::errc() || stop != last || number >= mCalls.size()) {
-            at = end;
-            continue;
-        }
+    takeMarkers(preprocessed, kMarker, mCalls.size(), [&](size_t number) {
         diagnostics.report(DiagId::UndefinedConditionCall, mCalls[number].loc, {mCalls[number].name});
-        preprocessed.erase(at, end - at);
-    }
+    });
+}
+
+void FxcDirectives::takeRedefinitionMarkers(std::string& preprocessed, DiagnosticSink& diagnostics) const {
+    std::map<std::string, std::string> inForce = mPredefined;  // each defined macro's key
+    takeMarkers(preprocessed, kDefinitionMarker, 2 * mDefinitions.size(), [&](size_t number) {
+        const MacroDefinition& d = mDefinitions[number / 2];
+        const auto previous = inForce.find(d.name);
+        // A macro defined where shadowfx saw no definition (none is known to be the same) warns too.
+        if (number % 2 == 1 && (previous == inForce.end() || previous->second != d.key))
+            diagnostics.report(DiagId::MacroRedefined, d.loc, {d.name});
+        inForce[d.name] = d.key;
+    });
 }
 
 std::string FxcDirectives::undefineGlslangPredefines() {

@@ -328,6 +328,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     for (const auto& [name, value] : options.defines) preamble += "#define " + name + " " + value + "\n";
 
     FxcDirectives directives;
+    for (const auto& [name, value] : options.defines) directives.predefine(name, value);
     glslang::TShader shader(EShLangFragment);
     const std::string mainText = directives.rewrite(out.files[path], path, diagnostics);
     const char* strings[] = {mainText.c_str()};
@@ -418,6 +419,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     }
     if (!ok && !reported) diagnostics.report(DiagId::PreprocessingFailed, SourceLoc{path, 0, 0}, {});
     directives.takeUndefinedCallMarkers(text, diagnostics);
+    directives.takeRedefinitionMarkers(text, diagnostics);
     out.text = std::move(text);
     return ok && !reported;
 }

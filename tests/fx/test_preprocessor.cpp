@@ -279,6 +279,69 @@ float kept;
     for (const Diagnostic& d : diags.items()) EXPECT_NE(d.id, DiagId::UndefinedConditionCall) << d.message;
 }
 
+// fxc (X1519) and MonoGame warned about a macro defined again with another body and took the new one;
+// glslang stops with "Macro redefined". Each such #define warns at its name and wins, in the file and in an
+// include (before or after the file's own #define), over a command-line define too; the same body again, or
+// another body in a branch not taken, says nothing, and every line keeps its number.
+TEST(Preprocessor, MacroRedefinedWithAnotherBodyWarnsAndTheNewBodyWins) {
+    std::map<std::string, std::string> files = {{"inc.fxh", "#define SIZE 5\nfloat inInclude[SIZE];\n"},
+                                                {"first.fxh", "#define MODEL 1\n"}};
+    ParseOptions options = memoryOptions(files);
+    options.defines = {{"FROM_COMMAND_LINE", "1"}};
+    DiagnosticList diags;
+    auto effect = parseEffectSource(R"(#define SIZE 2
+#define SIZE 2 // the same body: no warning
+float two[SIZE];
+#define SIZE 3 /* another */
+float three[SIZE];
+#if 0
+#define SIZE 9
+#endif
+#include "inc.fxh"
+#define FROM_COMMAND_LINE 4
+#define LONG 1 + \
+  1
+#define LONG 1 + \
+  1 + 1
+float four[FROM_COMMAND_LINE];
+float last[LONG];
+#include "first.fxh"
+#define MODEL 2
+float model[MODEL];
+)",
+                                    "main.fx", options, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_TRUE(effect->findParameter("two") && effect->findParameter("three") &&
+                effect->findParameter("inInclude") && effect->findParameter("four") &&
+                effect->findParameter("last") && effect->findParameter("model"));
+    EXPECT_EQ(effect->findParameter("two")->type.arrayDims, std::vector<int>{2});
+    EXPECT_EQ(effect->findParameter("three")->type.arrayDims, std::vector<int>{3});
+    EXPECT_EQ(effect->findParameter("inInclude")->type.arrayDims, std::vector<int>{5});
+    EXPECT_EQ(effect->findParameter("four")->type.arrayDims, std::vector<int>{4});
+    EXPECT_EQ(effect->findParameter("last")->type.arrayDims, std::vector<int>{3});
+    EXPECT_EQ(effect->findParameter("model")->type.arrayDims, std::vector<int>{2});
+    EXPECT_EQ(effect->findParameter("three")->loc.line, 5);
+    EXPECT_EQ(effect->findParameter("inInclude")->loc.line, 2);
+    EXPECT_EQ(effect->findParameter("last")->loc.line, 16);
+    EXPECT_EQ(effect->findParameter("model")->loc.line, 19);
+    std::vector<std::string> warnings;
+    for (const Diagnostic& d : diags.items()) {
+        EXPECT_EQ(d.id, DiagId::MacroRedefined) << d.message;
+        EXPECT_EQ(d.severity, Severity::Warning);
+        warnings.push_back(d.loc.str() + " " + d.message);
+    }
+    EXPECT_EQ(warnings,
+              (std::vector<std::string>{
+                  "main.fx:4:9 macro 'SIZE' redefined with a different body: the new definition is used",
+                  "inc.fxh:1:9 macro 'SIZE' redefined with a different body: the new definition is used",
+                  "main.fx:10:9 macro 'FROM_COMMAND_LINE' redefined with a different body: the new "
+                  "definition is used",
+                  "main.fx:13:9 macro 'LONG' redefined with a different body: the new definition is "
+                  "used",
+                  "main.fx:18:9 macro 'MODEL' redefined with a different body: the new definition is "
+                  "used"}));
+}
+
 TEST(Preprocessor, TextAfterIncludeFileNameIsIgnoredWithWarning) {
     std::map<std::string, std::string> files = {{"a.fxh", "float fromA;\n"}, {"b.fxh", "float fromB;\n"}};
     DiagnosticList diags;

@@ -9,6 +9,8 @@ FX_DIAGNOSTIC(PreprocessorError, Error, "{0}")
 FX_DIAGNOSTIC(IncludeTrailingText, Warning, "text after the include file name is ignored: '{0}'")
 FX_DIAGNOSTIC(UndefinedConditionCall, Warning,
               "'{0}' is not a function-like macro here: its call in this condition reads as 0")
+FX_DIAGNOSTIC(MacroRedefined, Warning,
+              "macro '{0}' redefined with a different body: the new definition is used")
 FX_DIAGNOSTIC(SourceTooLarge, Error, "source exceeds {0} bytes")
 FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
