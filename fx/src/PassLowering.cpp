@@ -186,23 +186,33 @@ bool bindObjectArguments(const Effect& effect, const FunctionDecl& fn, const Exp
     return true;
 }
 
-// A depth sampler passed on to a function's sampler parameter (`float shadow(sampler2D s, float4 p) {
-// return tex2Dproj(s, p).r; }` called as `shadow(ShadowSampler, p)`, or with a compile argument the entry
-// point passes on): D3D9 inlined every call, so the lookups inside compared depth as the global's own do.
-// Each such callee is emitted again with the sampler bound in place of the parameter, once per callee and
-// sampler, before the first function that calls it; the call then names the copy.
-class DepthSamplerForwarding {
+// An effect object passed on to a function's parameter of its kind, which the unit declares again with
+// the object bound in place of the parameter (once per callee and objects, before the first function that
+// calls it; the call then names the copy):
+//   - a depth sampler passed to a sampler parameter (`float shadow(sampler2D s, float4 p) { return
+//     tex2Dproj(s, p).r; }` called as `shadow(ShadowSampler, p)`, or with a compile argument the entry
+//     point passes on): D3D9 inlined every call, so the lookups inside compared depth as the global's own;
+//   - an array of textures passed to a texture array parameter (`get(Texture2D g[3], float2 uv)` called as
+//     `get(GBuffer, uv)`): glslang copies the array into a temporary, which spirv-opt's legalization
+//     leaves as a load of the whole array, so SPIRV-Cross paired the copy's element with the sampler, an
+//     unnamed single sampler indexed as the array (the GL driver refused to link it); bound, the callee
+//     indexes the effect's array, as the entry point's own code does.
+class ObjectArgumentForwarding {
 public:
-    DepthSamplerForwarding(const Effect& effect, const std::set<std::string>& depth)
-        : mEffect(effect), mDepth(depth) {}
+    ObjectArgumentForwarding(const Effect& effect, const std::set<std::string>& depth,
+                             const std::set<std::string>& textureArrays)
+        : mEffect(effect), mDepth(depth) {
+        mObjects = depth;
+        mObjects.insert(textureArrays.begin(), textureArrays.end());
+    }
 
-    // `text` with its calls that pass a depth sampler on naming the copies, which are added to pending().
+    // `text` with its calls that pass an object on naming the copies, which are added to pending().
     std::string bindCalls(const std::string& text, int nesting = 0) {
-        if (mDepth.empty()) return text;
-        return bindCallArguments(text, mDepth,
+        if (mObjects.empty()) return text;
+        return bindCallArguments(text, mObjects,
                                  [this, nesting](const std::string& function, size_t argumentCount,
-                                                 const std::map<size_t, std::string>& samplers) {
-                                     return copyFor(function, argumentCount, samplers, nesting);
+                                                 const std::map<size_t, std::string>& objects) {
+                                     return copyFor(function, argumentCount, objects, nesting);
                                  });
     }
 
@@ -210,28 +220,35 @@ public:
     std::string takePending() { return std::exchange(mPending, {}); }
 
 private:
+    // Whether `p` takes the effect object named `object` as bound: a sampler parameter a depth sampler, a
+    // texture array parameter an array of its type and size.
+    bool takes(const FunctionParam& p, const std::string& object) const {
+        if (p.direction != FunctionParam::Direction::In) return false;
+        if (mDepth.count(object)) return isSamplerType(p.type) && p.type.arrayDims.empty();
+        const Parameter* textures = mEffect.findParameter(object);
+        return textures && p.type.isTexture() && p.type.base == textures->type.base &&
+               p.type.arrayDims == textures->type.arrayDims;
+    }
+
     std::optional<std::string> copyFor(const std::string& function, size_t argumentCount,
-                                       const std::map<size_t, std::string>& samplers, int nesting) {
+                                       const std::map<size_t, std::string>& objects, int nesting) {
         // HLSL has no recursion; this bounds a chain of calls all the same.
         constexpr int kMaxNesting = 16;
         if (nesting >= kMaxNesting) return std::nullopt;
         const FunctionDecl* callee = nullptr;
         for (const FunctionDecl& f : mEffect.functions) {
             if (f.name != function || !f.hasBody || f.params.size() != argumentCount) continue;
-            bool takesSamplers = true;
-            for (const auto& [index, sampler] : samplers) {
-                const FunctionParam& p = f.params[index];
-                takesSamplers = takesSamplers && isSamplerType(p.type) && p.type.arrayDims.empty() &&
-                                p.direction == FunctionParam::Direction::In;
-            }
-            if (takesSamplers) callee = &f;
+            bool takesObjects = true;
+            for (const auto& [index, object] : objects)
+                takesObjects = takesObjects && takes(f.params[index], object);
+            if (takesObjects) callee = &f;
         }
         if (!callee) return std::nullopt;
         std::string name = function + "_fx";
         std::map<std::string, std::string> bound;
-        for (const auto& [index, sampler] : samplers) {
-            name += "_" + std::to_string(index) + "_" + sampler;
-            bound[callee->params[index].name] = sampler;
+        for (const auto& [index, object] : objects) {
+            name += "_" + std::to_string(index) + "_" + object;
+            bound[callee->params[index].name] = object;
         }
         if (mCopied.count(name)) return name;
         const std::optional<std::string> text =
@@ -245,6 +262,7 @@ private:
 
     const Effect& mEffect;
     const std::set<std::string>& mDepth;
+    std::set<std::string> mObjects;  // the depth samplers and the arrays of textures
     std::set<std::string> mCopied;
     std::string mPending;
 };
@@ -278,7 +296,10 @@ EffectDeclarations emitEffectDeclarations(const Effect& effect, const std::set<s
     for (const VerbatimDecl& v : effect.verbatim) nameAll(v.hlslText);
     nameAll(wrapper);
     std::set<std::string> usedDepth;
-    DepthSamplerForwarding forwarding(effect, depth);
+    std::set<std::string> textureArrays;
+    for (const Parameter& p : effect.parameters)
+        if (p.type.isTexture() && !p.type.arrayDims.empty()) textureArrays.insert(p.name);
+    ObjectArgumentForwarding forwarding(effect, depth, textureArrays);
     EffectDeclarations out;
     std::string& hlsl = out.hlsl;
     std::string& staticAssignments = out.staticAssignments;

@@ -293,6 +293,34 @@ float4 Compare(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
     EXPECT_TRUE(isColor(third(others, 2), 0, 255, 255));
 }
 
+// An array of textures passed on from a function that itself takes a texture (the deferred renderers'
+// G-buffer helpers, `get(Texture2D g[3], float2 uv)`): the pass links (the GLSL indexed a single sampler
+// before) and the helper reads the array's element 0, red, beside the function's own texture, blue. The
+// runtime gives an array of textures one texture, which its element 0 samples.
+TEST(D3d10Effects, ATextureArrayPassedThroughFunctionsSamplesItsElement) {
+    auto renderer = loadEffect(R"(
+Texture2D Picture;
+Texture2D<half4> GBuffer[3];
+SamplerState Point { Filter = MIN_MAG_MIP_POINT; };
+float4 first(Texture2D<half4> g[3], float2 uv) { return g[0].Sample(Point, uv); }
+float4 blend(Texture2D t, float2 uv) { return t.Sample(Point, uv) + first(GBuffer, uv); }
+float4 Show(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target { return blend(Picture, uv); }
+)" + fullScreenTechniques({"Show"}),
+                               false, "texture_array_argument.fx");
+    ASSERT_TRUE(renderer);
+    const std::string& glsl = renderer->effect().techniques[0].passes[0].fragment.glsl;
+    EXPECT_NE(glsl.find("uniform sampler2D fx_pair_GBuffer_Point[3];"), std::string::npos) << glsl;
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Picture"), solidLayers(1, 1, {{0, 0, 1}}, 1),
+                                     diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("GBuffer"), solidLayers(1, 1, {{1, 0, 0}}, 1),
+                                     diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight, "Show"));
+    EXPECT_TRUE(isColor(third(renderer->readFrame(), 1), 255, 0, 255));
+}
+
 // [SECTION] Buffers
 
 TEST(D3d10Effects, BuffersSetThroughTheApiReachThePixelsAndUnsetOnesReadZero) {

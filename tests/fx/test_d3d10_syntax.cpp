@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 namespace fx::test_d3d10_syntax {
 namespace {
@@ -779,6 +780,32 @@ technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelSha
     EXPECT_EQ(pair.pairSampler, "Point");
     ASSERT_TRUE(pair.textureParameter);
     EXPECT_EQ(compiled->parameters[*pair.textureParameter].name, "Albedo");
+}
+
+// An array of textures handed on from a function that takes a texture of its own: the callee is declared
+// again with the effect's array in place of its parameter, so the pair is the array's, declared and
+// indexed as one (a single unnamed sampler indexed [0] before, which the GL driver refused to link).
+TEST(D3d10Syntax, TextureArraysPassedThroughFunctionsKeepTheirArrayShape) {
+    DiagnosticList diagnostics;
+    auto compiled = compile(R"(
+Texture2D Albedo;
+Texture2D GBuffer[3];
+SamplerState Point { Filter = MIN_MAG_MIP_POINT; };
+float4 Pick(Texture2D g[3], float2 uv, int i) { return g[0].Sample(Point, uv) + g[i].Sample(Point, uv); }
+float4 Outer(Texture2D t, float2 uv) { return t.Sample(Point, uv) * Pick(GBuffer, uv, int(uv.x)).z; }
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS(float4 p : SV_Position) : SV_Target { return Outer(Albedo, p.xy); }
+technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                            diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const CompiledPass& pass = compiled->techniques[0].passes[0];
+    std::set<std::string> textures;
+    for (const SamplerBinding& s : pass.fragment.samplers) textures.insert(s.pairTexture);
+    EXPECT_EQ(textures, (std::set<std::string>{"Albedo", "GBuffer"})) << pass.fragment.glsl;
+    EXPECT_NE(pass.fragment.glsl.find("uniform sampler2D fx_pair_GBuffer_Point[3];"), std::string::npos)
+        << pass.fragment.glsl;
+    EXPECT_NE(pass.fragment.glsl.find("fx_pair_GBuffer_Point[0]"), std::string::npos) << pass.fragment.glsl;
 }
 
 TEST(D3d10Syntax, ConstantBufferMembersAreParametersWithSemanticsAndAnnotations) {
