@@ -208,6 +208,9 @@ public:
             } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.isIdentifier(i + 1) &&
                        f.is(i + 2, "(")) {
                 rewriteVariableOffset(f, i - 1, edits);
+            } else if (t.is(".") && i > f.first() && f.isIdentifier(i - 1) && f.is(i + 1, "Length") &&
+                       !(i - 1 > f.first() && f.is(i - 2, "."))) {
+                rewriteLength(f, i - 1, edits);
             } else if (t.is("for") && f.is(i + 1, "(") && mIsTypeName(f.at(i + 2)) && f.isIdentifier(i + 3)) {
                 hoistLoopVariable(f, i, edits);
             } else if (f.isIdentifier(i) && f.is(i + 1, "(") && !mEffect.findFunctions(t.text).empty() &&
@@ -518,6 +521,38 @@ private:
                 a.params[k].type.arrayDims != b.params[k].type.arrayDims)
                 return false;
         return true;
+    }
+
+    // `T.Length` -> `fx_length_T()`: D3D10's size of a texture or buffer object, which fxc read as
+    // GetDimensions without a mip level (level 0's size) and glslang refuses ("unexpected operator on
+    // texture type"): a uint for Buffer and the 1D textures, uint2 for 2D and 1D arrays (the element count
+    // last), uint3 for 3D and 2D arrays.
+    void rewriteLength(const FunctionTokens& f, size_t receiver, std::vector<Edit>& edits) {
+        struct LengthShape {
+            const char* type;
+            const char* sizes;  // GetDimensions' outputs
+        };
+        static const std::map<BaseType, LengthShape> kShapes = {
+            {BaseType::Buffer, {"uint", "w"}},
+            {BaseType::RWBuffer, {"uint", "w"}},
+            {BaseType::Texture1D, {"uint", "w"}},
+            {BaseType::RWTexture1D, {"uint", "w"}},
+            {BaseType::Texture1DArray, {"uint2", "w, layers"}},
+            {BaseType::Texture2D, {"uint2", "w, h"}},
+            {BaseType::RWTexture2D, {"uint2", "w, h"}},
+            {BaseType::Texture2DArray, {"uint3", "w, h, layers"}},
+            {BaseType::RWTexture2DArray, {"uint3", "w, h, layers"}},
+            {BaseType::Texture3D, {"uint3", "w, h, d"}},
+            {BaseType::RWTexture3D, {"uint3", "w, h, d"}}};
+        const Parameter* texture = mEffect.findParameter(f.at(receiver).text);
+        if (!texture || !texture->type.arrayDims.empty() || !kShapes.count(texture->type.base)) return;
+        const LengthShape& shape = kShapes.at(texture->type.base);
+        const std::string name = "fx_length_" + texture->name;
+        edits.push_back({f.at(receiver).begin, f.at(receiver + 2).end, name + "()"});
+        if (!mNeeded.insert(name).second) return;
+        mAfterParameter[texture->name].push_back(
+            std::string(shape.type) + " " + name + "() { uint " + shape.sizes + "; " + texture->name +
+            ".GetDimensions(" + shape.sizes + "); return " + shape.type + "(" + shape.sizes + "); }");
     }
 
     template <typename Make>

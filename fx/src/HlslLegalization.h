@@ -10,6 +10,7 @@
 //   - `T.Sample(S, uv, offset)`, the offset not constant        -> `T.Sample(S, fx_offset_uv_T(uv, offset))`
 //     (SampleLevel, SampleBias, SampleGrad, SampleCmp, SampleCmpLevelZero alike; `T.Load(location,
 //     offset)` -> `T.Load(fx_offset_texel_int3_int2(location, offset))`)
+//   - `T.Length`, a texture's or buffer's size                 -> `fx_length_T()` (GetDimensions)
 //   - HLSL keywords used as names (`line`, `point`, `linear`)  -> `fx_line`, ...
 //   - a `for` variable read after its loop                     -> declared before the loop
 //   - a vector passed to a scalar parameter of the effect's    -> `F(fx_scalar_float(v))`, the vector's

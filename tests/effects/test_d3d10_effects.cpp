@@ -321,6 +321,47 @@ float4 Show(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target { return 
     EXPECT_TRUE(isColor(third(renderer->readFrame(), 1), 255, 0, 255));
 }
 
+// D3D10's `Length` property, each object's size as GetDimensions gives it without a mip level (glslang
+// refused it as an operator on a texture): left, a 5 x 3 Texture2D; middle, a 2 x 2 Texture2DArray of 3
+// elements; right, a 4-texel Texture1DArray of 2 elements and a Buffer of 7 elements. Each size is a
+// colour channel in 1/255 steps.
+TEST(D3d10Effects, LengthIsTheObjectsSizeInTexels) {
+    auto renderer = loadEffect(R"(
+Texture2D Picture;
+Texture2DArray Layers;
+Texture1DArray Strips;
+Buffer<float4> Items;
+float4 Sizes(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target
+{
+    float3 size = uv.x < 1.0 / 3 ? float3(Picture.Length.xy, 0)
+                : uv.x < 2.0 / 3 ? float3(Layers.Length)
+                                 : float3(Strips.Length, Items.Length);
+    return float4(size / 255, 1);
+}
+)" + fullScreenTechniques({"Sizes"}),
+                               false, "length.fx");
+    ASSERT_TRUE(renderer);
+    fx::DiagnosticList diagnostics;
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Picture"), solidLayers(5, 3, {{1, 0, 0}}, 1),
+                                     diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Layers"),
+                                     solidLayers(2, 2, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, 3), diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(renderer->setTexture(*renderer->findParameter("Strips"),
+                                     solidLayers(4, 1, {{1, 0, 0}, {0, 1, 1}}, 2), diagnostics))
+        << diagnostics.str();
+    const float items[7][4] = {};
+    ASSERT_TRUE(
+        renderer->setBuffer(*renderer->findParameter("Items"), items, 7, sizeof items[0], diagnostics))
+        << diagnostics.str();
+    ASSERT_TRUE(render(*renderer, scene("boxes"), kStripWidth, kStripHeight, "Sizes"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_TRUE(isColor(third(frame, 0), 5, 3, 0));
+    EXPECT_TRUE(isColor(third(frame, 1), 2, 2, 3));
+    EXPECT_TRUE(isColor(third(frame, 2), 4, 2, 7));
+}
+
 // [SECTION] Buffers
 
 TEST(D3d10Effects, BuffersSetThroughTheApiReachThePixelsAndUnsetOnesReadZero) {

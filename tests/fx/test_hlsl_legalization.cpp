@@ -186,6 +186,40 @@ technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
     EXPECT_TRUE(compilesClean(effect));
 }
 
+// `T.Length` of every object fxc defined it for compiles through glslang as a helper of the object's
+// shape (the pixels of the shapes read by a pixel shader: test_d3d10_effects); a local named `Length` and
+// a struct member of that name are left alone.
+TEST(HlslLegalization, LengthOfTexturesAndBuffersIsAGetDimensionsHelper) {
+    DiagnosticList diags;
+    auto effect = parse(R"(Texture1D Line;
+Texture3D Volume;
+RWTexture1D<float4> OutLine;
+RWTexture2D<float4> Out;
+RWTexture2DArray<float4> OutLayers;
+RWTexture3D<float4> OutVolume;
+RWBuffer<float> OutItems;
+struct Sized { uint Length; };
+[numthreads(1, 1, 1)]
+void CS(uint3 id : SV_DispatchThreadID) {
+    Sized s; s.Length = Line.Length;
+    uint Length = Volume.Length.z + s.Length;
+    Out[id.xy] = float4(Out.Length, OutLayers.Length.z, Length + OutVolume.Length.x);
+    OutLine[OutLine.Length - 1] = OutItems.Length;
+}
+technique11 t { pass p { SetComputeShader(CompileShader(cs_5_0, CS())); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const std::string& cs = function(*effect, "CS").hlslText;
+    EXPECT_TRUE(contains(cs, "s.Length = fx_length_Line();")) << cs;
+    EXPECT_TRUE(contains(cs, "uint Length = fx_length_Volume().z + s.Length;")) << cs;
+    EXPECT_TRUE(
+        contains(cs, "float4(fx_length_Out(), fx_length_OutLayers().z, Length + fx_length_OutVolume().x)"))
+        << cs;
+    EXPECT_TRUE(contains(cs, "OutLine[fx_length_OutLine() - 1] = fx_length_OutItems();")) << cs;
+    EXPECT_TRUE(compilesClean(effect));
+}
+
 // A rewrite leaves the columns before it on its line alone, and every line where it was: glslang's
 // message about what follows is at the user's line.
 TEST(HlslLegalization, GlslangMessagesAfterARewriteKeepTheirLine) {
