@@ -419,6 +419,39 @@ std::set<std::string> reachableFunctions(const Effect& effect, const std::string
 
 // [SECTION] lowerStage()
 
+namespace {
+
+// The function a compile expression compiles. fxc chose among overloads of one name by the compile
+// expression's arguments: `PS()` and `PS(0)` compile `float4 PS(VSOut)` and `float4 PS(VSOut, uniform int)`.
+// The first overload whose uniform parameters take the arguments (those with defaults may be left out);
+// with a single definition, the wrapper says what does not fit.
+const FunctionDecl* compiledFunction(const Effect& effect, const Expr& compile, DiagnosticSink& diagnostics) {
+    std::vector<const FunctionDecl*> overloads;
+    for (const FunctionDecl* f : effect.findFunctions(compile.text))
+        if (f->hasBody) overloads.push_back(f);
+    if (overloads.empty()) {
+        diagnostics.report(DiagId::MissingEntryPoint, compile.loc, {compile.text});
+        return nullptr;
+    }
+    if (overloads.size() == 1) return overloads.front();
+    std::string counts;
+    for (const FunctionDecl* f : overloads) {
+        size_t uniforms = 0, required = 0;
+        for (const FunctionParam& p : f->params)
+            if (p.isUniform) {
+                ++uniforms;
+                if (!p.defaultValue) required = uniforms;
+            }
+        if (compile.args.size() >= required && compile.args.size() <= uniforms) return f;
+        counts += (counts.empty() ? "" : ", ") + std::to_string(uniforms);
+    }
+    diagnostics.report(DiagId::CompileNoOverloadFits, compile.loc,
+                       {compile.text, std::to_string(compile.args.size()), counts});
+    return nullptr;
+}
+
+}  // namespace
+
 std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile, ShaderStage stage,
                                        std::vector<LoweredArgument>& arguments, DiagnosticSink& diagnostics,
                                        const std::map<int, TypeDesc>* previousOutputs,
@@ -436,16 +469,8 @@ std::optional<LoweredStage> lowerStage(const Effect& effect, const Expr& compile
         diagnostics.report(DiagId::UnsupportedProfile, compile.loc, {compile.profile});
         return std::nullopt;
     }
-    const FunctionDecl* fn = nullptr;
-    for (const FunctionDecl& f : effect.functions)
-        if (f.name == compile.text && f.hasBody) {
-            fn = &f;
-            break;
-        }
-    if (!fn) {
-        diagnostics.report(DiagId::MissingEntryPoint, compile.loc, {compile.text});
-        return std::nullopt;
-    }
+    const FunctionDecl* fn = compiledFunction(effect, compile, diagnostics);
+    if (!fn) return std::nullopt;
 
     LoweredStage out;
     out.stage = stage;

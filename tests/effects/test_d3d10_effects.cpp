@@ -18,6 +18,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -725,6 +726,41 @@ TEST(D3d10Effects, TessellatedMeshAtFactorOneDrawsTheFrameOfThePlainPass) {
                     break;
                 }
         EXPECT_LE(differing, static_cast<size_t>(kTessSize * kTessSize / 200));
+    }
+}
+
+// [SECTION] Compile expressions
+
+// Two pixel shaders of one name told apart by a uniform parameter, as the D3D11 book's texture viewer
+// has them: CompileShader(ps_5_0, Show()) compiles the overload without one, Show(1) and Show(2) the one
+// with; each technique draws its own colour (the first overload alone was taken before, and Show(1)
+// refused).
+TEST(D3d10Effects, CompileArgumentsChooseTheOverloadOfTheirUniformParameterCount) {
+    auto renderer = loadEffect(R"(
+float4 Show(float4 p : SV_Position, float2 uv : TEXCOORD0) : SV_Target { return float4(1, 1, 1, 1); }
+float4 Show(float4 p : SV_Position, float2 uv : TEXCOORD0, uniform int channel) : SV_Target
+{
+    float4 c = float4(0, 0, 0, 1);
+    c[channel] = 1;
+    return c;
+}
+)" + fullScreenTechniques({}) + R"(
+technique11 Whole < string Script = "Pass=p;"; > { pass p < string Script = "Draw=Buffer;"; > {
+    SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, Show())); SetDepthStencilState(NoDepth, 0); SetRasterizerState(NoCulling); } }
+technique11 Green < string Script = "Pass=p;"; > { pass p < string Script = "Draw=Buffer;"; > {
+    SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, Show(1))); SetDepthStencilState(NoDepth, 0); SetRasterizerState(NoCulling); } }
+technique11 Blue < string Script = "Pass=p;"; > { pass p < string Script = "Draw=Buffer;"; > {
+    SetVertexShader(CompileShader(vs_5_0, QuadVS())); SetPixelShader(CompileShader(ps_5_0, Show(2))); SetDepthStencilState(NoDepth, 0); SetRasterizerState(NoCulling); } }
+)",
+                               false, "overloads.fx");
+    ASSERT_TRUE(renderer);
+    const runtime::Scene boxes = scene("boxes");
+    const std::pair<const char*, std::array<int, 3>> expected[] = {
+        {"Whole", {255, 255, 255}}, {"Green", {0, 255, 0}}, {"Blue", {0, 0, 255}}};
+    for (const auto& [technique, color] : expected) {
+        SCOPED_TRACE(technique);
+        ASSERT_TRUE(render(*renderer, boxes, kStripWidth, kStripHeight, technique));
+        EXPECT_TRUE(isColor(third(renderer->readFrame(), 1), color[0], color[1], color[2]));
     }
 }
 

@@ -218,6 +218,9 @@ FX_DIAGNOSTIC(FixedFunctionStageOperation, Error,
 // Invalid compile expressions, one id per message.
 FX_DIAGNOSTIC(CompileTooManyArguments, Error,
               "invalid compile expression: '{0}' has {1} uniform parameter(s), {2} argument(s) given")
+FX_DIAGNOSTIC(CompileNoOverloadFits, Error,
+              "invalid compile expression: no overload of '{0}' takes {1} uniform argument(s) (its overloads "
+              "have {2} uniform parameter(s))")
 FX_DIAGNOSTIC(CompileArgumentMissing, Error,
               "invalid compile expression: no argument for uniform parameter '{0}' of '{1}'")
 FX_DIAGNOSTIC(CompileTextureArgumentNotTexture, Error,
