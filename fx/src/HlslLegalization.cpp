@@ -72,24 +72,6 @@ public:
         return mRange.last + 1;
     }
 
-    // The first and last token of each argument of the call whose '(' is at `open`; empty where the call
-    // has no arguments, is not closed, or has an empty argument.
-    std::vector<std::pair<size_t, size_t>> arguments(size_t open) const {
-        const size_t close = closing(open);
-        if (close > mRange.last || close == open + 1) return {};
-        std::vector<std::pair<size_t, size_t>> args;
-        size_t start = open + 1;
-        for (size_t i = open + 1; i <= close; ++i) {
-            if (is(i, "(") || is(i, "[")) i = closing(i);
-            if (is(i, ",") || i == close) {
-                if (i == start) return {};
-                args.push_back({start, i - 1});
-                start = i + 1;
-            }
-        }
-        return args;
-    }
-
     // After a postfix chain that starts at `i` (`.member`, `[index]`, `(arguments)`): the next token.
     size_t afterPostfix(size_t i) const {
         for (;;) {
@@ -213,9 +195,6 @@ public:
                 rewriteLength(f, i - 1, edits);
             } else if (t.is("for") && f.is(i + 1, "(") && mIsTypeName(f.at(i + 2)) && f.isIdentifier(i + 3)) {
                 hoistLoopVariable(f, i, edits);
-            } else if (f.isIdentifier(i) && f.is(i + 1, "(") && !mEffect.findFunctions(t.text).empty() &&
-                       !(i > f.first() && (f.is(i - 1, ".") || mIsTypeName(f.at(i - 1))))) {
-                truncateScalarArguments(f, i, edits);
             } else if (f.startsStatement(i)) {
                 rewriteLvalueConstructor(f, i, edits);
             }
@@ -436,7 +415,19 @@ private:
             return;
         const OffsetArguments& arguments = method->second;
         const TextureShape& shape = kShapes.at(texture->type.base);
-        const std::vector<std::pair<size_t, size_t>> args = f.arguments(receiver + 3);
+        // Each argument's first and last token.
+        const size_t open = receiver + 3, close = f.closing(open);
+        if (close > f.last() || close == open + 1) return;
+        std::vector<std::pair<size_t, size_t>> args;
+        size_t start = open + 1;
+        for (size_t i = open + 1; i <= close; ++i) {
+            if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
+            if (f.is(i, ",") || i == close) {
+                if (i == start) return;
+                args.push_back({start, i - 1});
+                start = i + 1;
+            }
+        }
         if (args.size() <= arguments.offset || args.size() > arguments.offset + 1 + arguments.trailing)
             return;
         const auto [offsetFirst, offsetLast] = args[arguments.offset];
@@ -479,48 +470,6 @@ private:
                                                  shape.coordinate + " uv, " + shape.offset + " o) { uint " +
                                                  shape.sizes + "; " + texture->name + ".GetDimensions(" +
                                                  shape.sizes + "); return uv + " + shape.step + "; }");
-    }
-
-    // `F(v, ...)` where F is one of the effect's functions, of one signature, whose parameter is a scalar
-    // -> `F(fx_scalar_float(v), ...)`: fxc passed a vector's first component with warning X3206; glslang
-    // finds no overload for a vector there. The helper takes a scalar or any vector of the base
-    // (HlslToSpirv's TruncationFinder warns where it takes a vector).
-    void truncateScalarArguments(const FunctionTokens& f, size_t name, std::vector<Edit>& edits) {
-        const FunctionDecl* callee = nullptr;
-        for (const FunctionDecl& d : mEffect.functions) {
-            if (d.name != f.at(name).text) continue;
-            if (callee && !sameSignature(*callee, d)) return;  // overloads: glslang chooses
-            callee = &d;
-        }
-        if (!callee) return;
-        const std::vector<std::pair<size_t, size_t>> args = f.arguments(name + 1);
-        if (args.size() > callee->params.size()) return;
-        for (size_t k = 0; k < args.size(); ++k) {
-            const FunctionParam& p = callee->params[k];
-            if (p.direction != FunctionParam::Direction::In || p.type.shape != Shape::Scalar ||
-                !p.type.arrayDims.empty() || !isNumericType(p.type))
-                continue;
-            const std::string base = hlslTypeName(p.type);
-            const std::string helper = std::string(kScalarArgumentHelperPrefix) + base;
-            edits.push_back({f.at(args[k].first).begin, f.at(args[k].first).begin, helper + "("});
-            edits.push_back({f.at(args[k].second).end, f.at(args[k].second).end, ")"});
-            need(helper, [&] {
-                std::string overloads = base + " " + helper + "(" + base + " v) { return v; }\n";
-                for (int n = 2; n <= 4; ++n)
-                    overloads +=
-                        base + " " + helper + "(" + base + std::to_string(n) + " v) { return v.x; }\n";
-                return overloads;
-            });
-        }
-    }
-
-    static bool sameSignature(const FunctionDecl& a, const FunctionDecl& b) {
-        if (a.params.size() != b.params.size()) return false;
-        for (size_t k = 0; k < a.params.size(); ++k)
-            if (hlslTypeName(a.params[k].type) != hlslTypeName(b.params[k].type) ||
-                a.params[k].type.arrayDims != b.params[k].type.arrayDims)
-                return false;
-        return true;
     }
 
     // `T.Length` -> `fx_length_T()`: D3D10's size of a texture or buffer object, which fxc read as

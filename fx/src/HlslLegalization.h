@@ -13,13 +13,9 @@
 //   - `T.Length`, a texture's or buffer's size                 -> `fx_length_T()` (GetDimensions)
 //   - HLSL keywords used as names (`line`, `point`, `linear`)  -> `fx_line`, ...
 //   - a `for` variable read after its loop                     -> declared before the loop
-//   - a vector passed to a scalar parameter of the effect's    -> `F(fx_scalar_float(v))`, the vector's
-//     own function `F` (of one signature)                        first component (fxc's X3206 warning:
-//                                                                 HlslToSpirv's TruncationFinder)
 // The helpers the rewrites call are added to the effect as verbatim declarations. fxc gave no warning
-// for any of these but the vector passed as a scalar (docs/legalization.md); the rewrites change no column
-// before the first one on a line, so glslang's later messages keep pointing at the user's text. Private to
-// fx.
+// for any of these (docs/legalization.md); the rewrites change no column before the first one on a line,
+// so glslang's later messages keep pointing at the user's text. Private to fx.
 #pragma once
 
 #include "Lexer.h"
@@ -31,10 +27,6 @@
 #include <vector>
 
 namespace fx::detail {
-
-// The name of the helpers that pass a scalar or a vector's first component to a scalar parameter, followed
-// by the parameter's type: "fx_scalar_float".
-constexpr const char* kScalarArgumentHelperPrefix = "fx_scalar_";
 
 // Where a function's definition lies in the lexer's tokens: FunctionDecl::hlslText is the text of
 // tokens first..last.

@@ -4,7 +4,6 @@
 #include "BoolCompoundAssignments.h"
 #include "ConstantMatrixProducts.h"
 #include "ElementWiseProducts.h"
-#include "HlslLegalization.h"
 #include "IntegerMatrixSplitting.h"
 #include "MatrixSwizzles.h"
 #include "MulOperands.h"
@@ -112,10 +111,6 @@ public:
     std::vector<HlslMessage> found;
 
     bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
-        if (node->getOp() == glslang::EOpFunctionCall) {
-            scalarArgument(node);
-            return true;
-        }
         if (!node->isConstructor() || node->getSequence().size() != 1) return true;
         const glslang::TIntermTyped* operand = node->getSequence()[0]->getAsTyped();
         const glslang::TType& to = node->getType();
@@ -128,12 +123,6 @@ public:
         const glslang::TSourceLoc& operandAt = operand->getLoc();
         if (at.line != operandAt.line || at.column != operandAt.column || at.string != operandAt.string)
             return true;
-        report(at, from, to);
-        return true;
-    }
-
-private:
-    void report(const glslang::TSourceLoc& at, const glslang::TType& from, const glslang::TType& to) {
         const auto name = [](const glslang::TType& type) {
             const std::string base = type.getBasicTypeString().c_str();
             return type.getVectorSize() > 1 ? base + std::to_string(type.getVectorSize()) : base;
@@ -141,17 +130,7 @@ private:
         found.push_back(
             {false, at.getFilenameStr(), at.line, at.column,
              std::string(kImplicitTruncationPrefix) + "'" + name(from) + "' to '" + name(to) + "'"});
-    }
-
-    // A vector the legalization passes to a scalar parameter through its helper (HlslLegalization.h's
-    // kScalarArgumentHelperPrefix), which stands where the argument stands.
-    void scalarArgument(glslang::TIntermAggregate* call) {
-        if (std::string(call->getName().c_str()).rfind(detail::kScalarArgumentHelperPrefix, 0) != 0 ||
-            call->getSequence().size() != 1)
-            return;
-        const glslang::TIntermTyped* argument = call->getSequence()[0]->getAsTyped();
-        if (argument && argument->getType().isVector() && argument->getType().getVectorSize() > 1)
-            report(call->getLoc(), argument->getType(), call->getType());
+        return true;
     }
 };
 

@@ -296,33 +296,6 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_NE(diags.str().find("'float4' to 'float'"), std::string::npos) << diags.str();
 }
 
-// A vector passed to a scalar parameter of the effect's own function: fxc passed its first component with
-// X3206, glslang found no overload. It goes through a helper that takes the first component, with the
-// warning at the argument; a scalar argument gets none, and an overloaded function is glslang's to choose.
-TEST(HlslLegalization, VectorPassedToAScalarParameterIsTruncatedAsFxc) {
-    DiagnosticList diags;
-    auto effect = parse(R"(float Bias = 0.1;
-float shadowTerm(float depth, float2 uv, int count) { return depth > Bias + uv.x ? 0.5 : count; }
-float pick(float v) { return v; }
-float pick(float2 v) { return v.y; }
-float4 PS(float4 screen : TEXCOORD0) : COLOR {
-    float4 depth = screen.z / screen.w;
-    float s = shadowTerm(depth, screen.xy, 1) + shadowTerm(screen.z, screen.xy, screen.w);
-    return float4(s, pick(screen.xy), pick(screen.x), 1);
-}
-float4 VS(float4 p : POSITION) : POSITION { return p; }
-technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
-)",
-                        diags);
-    ASSERT_TRUE(effect) << diags.str();
-    const std::string& text = function(*effect, "PS").hlslText;
-    EXPECT_TRUE(contains(text, "shadowTerm(fx_scalar_float(depth), screen.xy, fx_scalar_int(1))")) << text;
-    EXPECT_TRUE(contains(text, "pick(screen.xy)")) << text;
-    const Diagnostic warning =
-        compilesWithOneWarning(effect, DiagId::ImplicitVectorTruncation, 7, "'float4' to 'float'");
-    EXPECT_EQ(warning.loc.column, 26);
-}
-
 // A swizzle of several matrix elements (`M._11_22`) compiles under fxc; glslang's SPIR-V back end writes
 // a constant in its place unless the swizzle is rewritten into its elements: every read compiles clean,
 // of a matrix whose evaluation has no side effects (a parameter, an array element, a member, a product)
