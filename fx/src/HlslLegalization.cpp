@@ -495,6 +495,10 @@ private:
             {BaseType::RWTexture3D, {"uint3", "w, h, d"}}};
         const Parameter* texture = mEffect.findParameter(f.at(receiver).text);
         if (!texture || !texture->type.arrayDims.empty() || !kShapes.count(texture->type.base)) return;
+        // A parameter or local of the function by the same name hides the effect's texture; its size is
+        // not known here.
+        for (size_t i = f.first() + 1; i <= f.last(); ++i)
+            if (f.at(i).text == texture->name && (mIsTypeName(f.at(i - 1)) || f.is(i - 1, ">"))) return;
         const LengthShape& shape = kShapes.at(texture->type.base);
         const std::string name = "fx_length_" + texture->name;
         edits.push_back({f.at(receiver).begin, f.at(receiver + 2).end, name + "()"});
