@@ -3,7 +3,8 @@
 // A mesh holds no per-instance streams, so such rows read constants; read as the constant the input's name
 // would give (0, or TEXCOORDn's (0,0,0,1)), the four rows make a singular matrix and every vertex of the
 // object lands on one point. Told apart by how the shader uses them, whatever their names, they read the
-// identity's rows instead, as a matrix-typed per-instance input does.
+// identity's rows instead, as a matrix-typed per-instance input does. An input the meshes feed (a normal,
+// TEXCOORD0) is per-vertex data and keeps it: a matrix built of such inputs is no instance's transform.
 #include "InstanceTransformRows.h"
 
 #include <fx/VertexStreams.h>
@@ -46,7 +47,7 @@ private:
         for (const Expr& arg : e.args) visit(arg);
     }
 
-    // The path of a float4 vertex input other than the position (`In.vRight`, or a parameter `vRight`),
+    // The path of a float4 vertex input that no mesh stream feeds (`In.vRight`, or a parameter `vRight`),
     // where `e` is one.
     std::optional<std::string> float4Input(const Expr& e) const {
         std::string base, member;
@@ -62,14 +63,14 @@ private:
         for (const FunctionParam& p : mFunction.params) {
             if (p.name != base || p.isUniform || p.direction != FunctionParam::Direction::In) continue;
             if (member.empty()) {
-                if (!isRowType(p.type) || isPosition(p.semantic)) return std::nullopt;
+                if (!isRowType(p.type) || meshHolds(p.semantic)) return std::nullopt;
                 return base;
             }
             if (p.type.base != BaseType::Struct) return std::nullopt;
             const StructDecl* s = mEffect.findStruct(p.type.structName);
             if (!s) return std::nullopt;
             for (const StructMember& m : s->members)
-                if (m.name == member && isRowType(m.type) && !isPosition(m.semantic))
+                if (m.name == member && isRowType(m.type) && !meshHolds(m.semantic))
                     return base + "." + member;
             return std::nullopt;
         }
@@ -80,10 +81,24 @@ private:
         return t.shape == Shape::Vector && t.cols == 4 && t.arrayDims.empty();
     }
 
-    static bool isPosition(const std::string& semantic) {
+    // Whether the meshes hold the stream an input of this name reads: position, normal, texture
+    // coordinates 0, tangent and binormal. Such an input is per-vertex data, whatever the shader makes of it.
+    static bool meshHolds(const std::string& semantic) {
         std::optional<int> location = vertexInputLocation(semantic);
         if (!location) location = vertexStreamByName(semantic);
-        return location == 0;
+        const std::optional<VertexStreamSlot> slot = location ? vertexStreamAt(*location) : std::nullopt;
+        if (!slot) return false;
+        switch (slot->stream) {
+            case VertexStream::Position:
+            case VertexStream::Normal:
+            case VertexStream::Tangent:
+            case VertexStream::Binormal:
+                return true;
+            case VertexStream::Texcoord:
+                return slot->index == 0;
+            default:
+                return false;
+        }
     }
 
     const Effect& mEffect;

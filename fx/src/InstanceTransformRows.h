@@ -14,7 +14,7 @@ namespace fx::detail {
 // or `matrix(...)`): each such input of `function`, by its path in the function's terms (`In.vRight`; a
 // parameter's name where the input is a parameter of its own), and the row it is. Read on the straight-line
 // body (FunctionDecl::straightBody); empty for any other body, and where no constructor takes four float4
-// inputs other than the position.
+// inputs that no mesh stream feeds (TEXCOORD1 and up, COLOR, free names).
 std::map<std::string, int> instanceTransformRows(const Effect& effect, const FunctionDecl& function);
 
 }  // namespace fx::detail

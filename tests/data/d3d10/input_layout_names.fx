@@ -4,7 +4,8 @@
 // scene has no data for) reads 0, a bool "VISIBLE" reads false (GL takes no bool attributes: a float
 // attribute converted), and a per-instance "mTransform" matrix reads the identity. Technique Rows
 // assembles its per-instance transform from four float4 rows at TEXCOORD1..4, as game projects' instancing
-// layouts carry it: the rows read the identity's rows. Techniques Layout and Rows therefore draw exactly
+// layouts carry it: the rows read the identity's rows (technique Frame builds a matrix of the mesh's own
+// streams, which keep their data). Techniques Layout and Rows therefore draw exactly
 // the frame of technique Named, which spells the D3D9 names: the normal in red, u in green, and blue 0
 // unless a constant input went wrong.
 //--------------------------------------------------------------------------------------
@@ -70,6 +71,24 @@ PS_INPUT RowsVS(VS_INPUT_ROWS In)
     return Out;
 }
 
+struct VS_INPUT_FRAME
+{
+    float4 Position : POSITION;
+    float4 Normal   : NORMAL;
+    float4 Tangent  : TANGENT;
+    float4 Binormal : BINORMAL;
+    float4 Tex      : TEXCOORD0;
+};
+
+PS_INPUT FrameVS(VS_INPUT_FRAME In)
+{
+    PS_INPUT Out = (PS_INPUT)0;
+    float4x4 frame = float4x4(In.Tangent, In.Binormal, In.Normal, In.Tex);
+    Out.Pos = mul(float4(In.Position.xyz, 1), g_mWorldViewProjection);
+    Out.Color = abs(mul(float4(0, 0, 1, 0), frame));
+    return Out;
+}
+
 float4 PS(PS_INPUT input) : SV_Target
 {
     return input.Color;
@@ -100,6 +119,16 @@ technique10 Rows
     pass P0
     {
         SetVertexShader(CompileShader(vs_4_0, RowsVS()));
+        SetGeometryShader(NULL);
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
+
+technique10 Frame
+{
+    pass P0
+    {
+        SetVertexShader(CompileShader(vs_4_0, FrameVS()));
         SetGeometryShader(NULL);
         SetPixelShader(CompileShader(ps_4_0, PS()));
     }
