@@ -299,8 +299,9 @@ ConventionalSemantic conventionalSemantic(const ParameterInfo& parameter, bool h
         return {};
     }
     // The render target's size in pixels, which the application sets (`DestinationDimensions`,
-    // `ScreenSize`): the viewport's whatever the effect's placeholder.
+    // `ScreenSize`), where the effect gives no value of its own (a `Resolution` with one may be a map's).
     if (type.shape == Shape::Vector && type.cols == 2 && type.arrayDims.empty()) {
+        if (hasInitializer) return {};
         static const char* kViewportSizeNames[] = {
             "VIEWPORTSIZE",          "VIEWPORTPIXELSIZE", "VIEWPORTDIMENSIONS", "SCREENSIZE",
             "SCREENRESOLUTION",      "SCREENDIMENSIONS",  "RESOLUTION",         "RENDERTARGETSIZE",

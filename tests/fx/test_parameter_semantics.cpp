@@ -292,10 +292,11 @@ float4x4 ViewProjMat;
 float4x4 LightViewProj;
 float4x4 Light2View;
 float2 DestinationDimensions;
+float2 Resolution = {256, 256};
 float2 HalfPixel;
 float4 VS(float4 p : POSITION) : POSITION {
     return mul(mul(mul(mul(mul(mul(mul(mul(p, mat), matView), gWorld), Odd), WorldM), ViewProjMat),
-                   LightViewProj), Light2View) + gSun + float4(DestinationDimensions + HalfPixel, 0, 0);
+                   LightViewProj), Light2View) + gSun + float4(DestinationDimensions + Resolution + HalfPixel, 0, 0);
 }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
 )",
@@ -319,6 +320,7 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_EQ(standard(*effect, "Light2View").kind, SemanticKind::View);
     EXPECT_EQ(standard(*effect, "Light2View").light, lightIndex(*effect, "light0"));  // the lowest number
     EXPECT_EQ(standard(*effect, "DestinationDimensions").kind, SemanticKind::ViewportPixelSize);
+    EXPECT_EQ(standard(*effect, "Resolution").kind, SemanticKind::None);  // the effect's own value
     EXPECT_EQ(standard(*effect, "HalfPixel").kind, SemanticKind::None);
 }
 
