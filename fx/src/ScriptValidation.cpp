@@ -91,7 +91,8 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
             case ScriptCommand::Kind::Technique: {
                 // D3DX and FX Composer never failed an effect over its technique selector: names the
                 // effect lacks (its D3D10 twins, techniques a #define renamed) are skipped with a warning,
-                // and with none left the first technique runs (runtime/src/ScriptInterpreter.cpp).
+                // and with none left the first technique that draws runs
+                // (runtime/render/src/ScriptInterpreter.cpp).
                 const std::vector<std::string> names =
                     c.selectorCondition.empty() ? std::vector<std::string>{c.value} : c.selectorAlternatives;
                 bool any = false;
@@ -100,9 +101,17 @@ void Compiler::validateScript(std::vector<ScriptCommand>& commands, const Techni
                     if (!mEffect.findTechnique(name))
                         mDiagnostics.report(DiagId::ScriptUnknownTechnique, c.loc, {name});
                 }
-                if (!any && !mEffect.techniques.empty())
-                    mDiagnostics.report(DiagId::ScriptTechniqueFallback, c.loc,
-                                        {mEffect.techniques.front().name});
+                if (!any && !mEffect.techniques.empty()) {
+                    // The runtime's default: the first technique that draws (passes or a script).
+                    const auto draws = [](const Technique& t) {
+                        return !t.passes.empty() || t.annotation("Script");
+                    };
+                    const auto first =
+                        std::find_if(mEffect.techniques.begin(), mEffect.techniques.end(), draws);
+                    mDiagnostics.report(
+                        DiagId::ScriptTechniqueFallback, c.loc,
+                        {(first == mEffect.techniques.end() ? mEffect.techniques.front() : *first).name});
+                }
                 break;
             }
             case ScriptCommand::Kind::RenderPort:

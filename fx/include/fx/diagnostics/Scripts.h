@@ -7,7 +7,7 @@ FX_DIAGNOSTIC(ScriptUnknownTarget, Error,
 FX_DIAGNOSTIC(ScriptUnknownTechnique, Warning,
               "script names technique '{0}', which the effect does not have; skipped")
 FX_DIAGNOSTIC(ScriptTechniqueFallback, Warning,
-              "script names no technique the effect has; running its first technique, '{0}'")
+              "script names no technique the effect has; running the first technique that draws, '{0}'")
 FX_DIAGNOSTIC(ScriptUnbalancedLoop, Error, "LoopByCount without LoopEnd")
 FX_DIAGNOSTIC(ScriptLoopEndWithoutLoop, Error, "LoopEnd without LoopByCount")
 FX_DIAGNOSTIC(ScriptLoopIndexOutsideLoop, Error, "LoopGetIndex outside a loop")
