@@ -8,6 +8,7 @@
 
 #include <cctype>
 #include <iterator>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -438,22 +439,21 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
     std::string semantic = parameter.semantic;
     int lightNumber = -1;
     bool firstLight = false;
+    std::optional<ConventionalSemantic> read;
     SemanticBinding standard;
-    if (!binding.byName && !classifyBound(semantic, standard)) {
+    if (binding.byName) {
+        read = conventionalSemantic(parameter, hasInitializer);
+    } else if (!classifyBound(semantic, standard)) {
         // A semantic no table spells (an engine's `MATRIX_WVP`, `WorldMatrix`, MTA's `LIGHTDIFFUSE`): read
         // as a name would be.
         ParameterInfo spelled = parameter;
         spelled.name = parameter.semantic;
         spelled.semantic.clear();
-        binding.byName = !conventionalSemantic(spelled, hasInitializer).semantic.empty();
+        read = conventionalSemantic(spelled, hasInitializer);
+        binding.byName = !read->semantic.empty();
     }
     if (binding.byName) {
-        ParameterInfo named = parameter;
-        if (!parameter.semantic.empty()) {
-            named.name = parameter.semantic;
-            named.semantic.clear();
-        }
-        const ConventionalSemantic conventional = conventionalSemantic(named, hasInitializer);
+        const ConventionalSemantic& conventional = *read;
         semantic = conventional.semantic;
         binding.viewSpace = conventional.viewSpace;
         lightNumber = conventional.lightNumber;

@@ -171,12 +171,15 @@ std::optional<int> vertexInputAttribute(const std::string& semantic) {
 // What an input of a name no stream fits reads: 0, (0,0,0,1) for a position-like float4 (a w of 0 would
 // put it at infinity), and the identity's column for a matrix (a per-instance transform, which the
 // object's World already carries here).
+// Row or column k of the identity matrix: "float4(0, 1, 0, 0)" for k = 1.
+std::string identityVector(int k) {
+    std::string v = "float4(";
+    for (int i = 0; i < 4; ++i) v += std::string(i ? ", " : "") + (i == k ? "1" : "0");
+    return v + ")";
+}
+
 std::string unmatchedVertexInput(const Field& f) {
-    if (f.column >= 0) {
-        std::string v = "float4(";
-        for (int k = 0; k < 4; ++k) v += std::string(k ? ", " : "") + (k == f.column ? "1" : "0");
-        return v + ")";
-    }
+    if (f.column >= 0) return identityVector(f.column);
     if (f.type.cols == 4 && f.semantic.find("POS") != std::string::npos) return "float4(0, 0, 0, 1)";
     return "float4(0, 0, 0, 0)";
 }
@@ -249,9 +252,7 @@ bool WrapperBuilder::vertexInputs(const std::vector<Field>& fields, std::string&
             continue;
         }
         if (const int row = instanceRow(f); row >= 0) {
-            std::string identityRow = "float4(";
-            for (int k = 0; k < 4; ++k) identityRow += std::string(k ? ", " : "") + (k == row ? "1" : "0");
-            identityRow += ")";
+            const std::string identityRow = identityVector(row);
             mDiagnostics.report(DiagId::VertexInputInstanceRow, f.loc,
                                 {f.semantic, std::to_string(row), identityRow});
             body += assignField(f, identityRow);
