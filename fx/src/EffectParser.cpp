@@ -43,7 +43,7 @@ void Parser::parseEffect() {
     retypeSamplersOfTextureObjects();
     // What fxc accepted and glslang refuses, rewritten in the functions' text glslang will read.
     legalizeFunctions(
-        mTokens, mText, mFunctionRanges, [this](const Token& t) { return isTypeName(t); }, mEffect);
+        mTokens, mText, mFunctionRanges, [this](const Token& t) { return isTypeName(t); }, mEffect, mDiag);
     if (const auto& first = mRefusals.first(); mEffect.techniques.empty() && first) {
         try {
             error(first->refusal.allLeftOut, first->loc, {first->name});

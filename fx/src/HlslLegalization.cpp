@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace fx::detail {
@@ -70,6 +71,24 @@ public:
             }
         }
         return mRange.last + 1;
+    }
+
+    // The first and last token of each argument of the call whose '(' is at `open`; empty where the call
+    // has no arguments, is not closed, or has an empty argument.
+    std::vector<std::pair<size_t, size_t>> arguments(size_t open) const {
+        const size_t close = closing(open);
+        if (close > mRange.last || close == open + 1) return {};
+        std::vector<std::pair<size_t, size_t>> args;
+        size_t start = open + 1;
+        for (size_t i = open + 1; i <= close; ++i) {
+            if (is(i, "(") || is(i, "[")) i = closing(i);
+            if (is(i, ",") || i == close) {
+                if (i == start) return {};
+                args.push_back({start, i - 1});
+                start = i + 1;
+            }
+        }
+        return args;
     }
 
     // After a postfix chain that starts at `i` (`.member`, `[index]`, `(arguments)`): the next token.
@@ -167,8 +186,9 @@ std::string lvalueConstructorHelper(const std::string& base, int n) {
 // What the rewrites of one effect need and produce.
 class Legalizer {
 public:
-    Legalizer(const std::string& text, const std::function<bool(const Token&)>& isTypeName, Effect& effect)
-        : mText(text), mIsTypeName(isTypeName), mEffect(effect) {}
+    Legalizer(const std::string& text, const std::function<bool(const Token&)>& isTypeName, Effect& effect,
+              DiagnosticSink& diagnostics)
+        : mText(text), mIsTypeName(isTypeName), mEffect(effect), mDiagnostics(diagnostics) {}
 
     void rewriteLocally(const FunctionTokens& f, std::vector<Edit>& edits) {
         for (size_t i = f.first(); i <= f.last(); ++i) {
@@ -195,6 +215,9 @@ public:
                 rewriteLength(f, i - 1, edits);
             } else if (t.is("for") && f.is(i + 1, "(") && mIsTypeName(f.at(i + 2)) && f.isIdentifier(i + 3)) {
                 hoistLoopVariable(f, i, edits);
+            } else if (f.isIdentifier(i) && f.is(i + 1, "(") && !mEffect.findFunctions(t.text).empty() &&
+                       !(i > f.first() && (f.is(i - 1, ".") || mIsTypeName(f.at(i - 1))))) {
+                truncateVectorArguments(f, i, edits);
             } else if (f.startsStatement(i)) {
                 rewriteLvalueConstructor(f, i, edits);
             }
@@ -415,19 +438,7 @@ private:
             return;
         const OffsetArguments& arguments = method->second;
         const TextureShape& shape = kShapes.at(texture->type.base);
-        // Each argument's first and last token.
-        const size_t open = receiver + 3, close = f.closing(open);
-        if (close > f.last() || close == open + 1) return;
-        std::vector<std::pair<size_t, size_t>> args;
-        size_t start = open + 1;
-        for (size_t i = open + 1; i <= close; ++i) {
-            if (f.is(i, "(") || f.is(i, "[")) i = f.closing(i);
-            if (f.is(i, ",") || i == close) {
-                if (i == start) return;
-                args.push_back({start, i - 1});
-                start = i + 1;
-            }
-        }
+        const std::vector<std::pair<size_t, size_t>> args = f.arguments(receiver + 3);
         if (args.size() <= arguments.offset || args.size() > arguments.offset + 1 + arguments.trailing)
             return;
         const auto [offsetFirst, offsetLast] = args[arguments.offset];
@@ -470,6 +481,73 @@ private:
                                                  shape.coordinate + " uv, " + shape.offset + " o) { uint " +
                                                  shape.sizes + "; " + texture->name + ".GetDimensions(" +
                                                  shape.sizes + "); return uv + " + shape.step + "; }");
+    }
+
+    // `F(v, ...)` where F is one of the effect's functions, of one signature, whose `in` parameter there is a
+    // scalar, and `v` a vector -> `F(v.x, ...)`, with fxc's warning X3206: fxc passed the first component,
+    // glslang finds no overload. Only where the argument is evidently a vector: a swizzle of two or more
+    // components, or a name the calling function (before the call) or the effect declares with a vector
+    // type. Any other argument is left to glslang, so a line's columns move only where fxc would have
+    // truncated.
+    void truncateVectorArguments(const FunctionTokens& f, size_t name, std::vector<Edit>& edits) {
+        const std::vector<const FunctionDecl*> overloads = mEffect.findFunctions(f.at(name).text);
+        const auto signature = [](const FunctionDecl& d) {
+            std::string s;
+            for (const FunctionParam& p : d.params)
+                s += hlslTypeName(p.type) + arraySuffix(p.type) + static_cast<char>('0' + int(p.direction)) +
+                     ",";
+            return s;
+        };
+        for (const FunctionDecl* d : overloads)
+            if (signature(*d) != signature(*overloads.front())) return;  // overloads: glslang chooses
+        const FunctionDecl& callee = *overloads.front();
+        const std::vector<std::pair<size_t, size_t>> args = f.arguments(name + 1);
+        if (args.size() > callee.params.size()) return;
+        for (size_t k = 0; k < args.size(); ++k) {
+            const FunctionParam& p = callee.params[k];
+            if (p.direction != FunctionParam::Direction::In || p.isUniform || p.type.shape != Shape::Scalar ||
+                !p.type.arrayDims.empty() || !isNumericType(p.type))
+                continue;
+            const std::optional<std::string> vector = vectorOf(f, args[k].first, args[k].second, name);
+            if (!vector) continue;
+            const Token& last = f.at(args[k].second);
+            edits.push_back({last.end, last.end, ".x"});
+            mDiagnostics.report(DiagId::ImplicitVectorTruncation, f.at(args[k].first).loc,
+                                {"'" + *vector + "' to '" + hlslTypeName(p.type) + "'"});
+        }
+    }
+
+    // The vector type of the argument made of tokens first..last, where it is evidently one (see above).
+    std::optional<std::string> vectorOf(const FunctionTokens& f, size_t first, size_t last,
+                                        size_t call) const {
+        const Token& t = f.at(first);
+        if (t.kind != Token::Kind::Identifier) return std::nullopt;
+        if (last == first + 2 && f.is(first + 1, ".") && f.isIdentifier(last)) {
+            const std::string& swizzle = f.at(last).text;
+            const bool components = swizzle.size() >= 2 && swizzle.size() <= 4 &&
+                                    (swizzle.find_first_not_of("xyzw") == std::string::npos ||
+                                     swizzle.find_first_not_of("rgba") == std::string::npos);
+            const std::optional<std::string> swizzled = vectorOf(f, first, first, call);
+            std::string base;
+            int size = 0;
+            if (!components || !swizzled || !vectorTypeName(*swizzled, base, size)) return std::nullopt;
+            return base + std::to_string(swizzle.size());
+        }
+        if (last != first) return std::nullopt;
+        // The nearest declaration before the call: `T name` (a parameter or a local).
+        for (size_t i = call; i-- > f.first() + 1;) {
+            if (!f.is(i, t.text.c_str()) || !f.isIdentifier(i) || !mIsTypeName(f.at(i - 1))) continue;
+            std::string base;
+            int size = 0;
+            if (f.is(i + 1, "[") || !vectorTypeName(f.at(i - 1).text, base, size) || size < 2)
+                return std::nullopt;
+            return f.at(i - 1).text;
+        }
+        const Parameter* global = mEffect.findParameter(t.text);
+        if (global && global->type.shape == Shape::Vector && global->type.arrayDims.empty() &&
+            isNumericType(global->type))
+            return hlslTypeName(global->type);
+        return std::nullopt;
     }
 
     // `T.Length` -> `fx_length_T()`: D3D10's size of a texture or buffer object, which fxc read as
@@ -516,6 +594,7 @@ private:
     const std::string& mText;  // the preprocessed text the tokens' offsets are into
     const std::function<bool(const Token&)>& mIsTypeName;
     Effect& mEffect;
+    DiagnosticSink& mDiagnostics;
     std::set<std::string> mNeeded;
     std::vector<std::string> mHelpers;
     std::map<std::string, std::vector<std::string>> mAfterParameter;
@@ -527,8 +606,9 @@ private:
 
 void legalizeFunctions(const std::vector<Token>& tokens, const std::string& text,
                        const std::vector<FunctionTokenRange>& ranges,
-                       const std::function<bool(const Token&)>& isTypeName, Effect& effect) {
-    Legalizer legalizer(text, isTypeName, effect);
+                       const std::function<bool(const Token&)>& isTypeName, Effect& effect,
+                       DiagnosticSink& diagnostics) {
+    Legalizer legalizer(text, isTypeName, effect, diagnostics);
     std::set<std::string> written;
     for (const FunctionTokenRange& range : ranges) written.merge(legalizer.writtenUniforms({tokens, range}));
     for (const FunctionTokenRange& range : ranges) {

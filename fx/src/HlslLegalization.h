@@ -13,13 +13,16 @@
 //   - `T.Length`, a texture's or buffer's size                 -> `fx_length_T()` (GetDimensions)
 //   - HLSL keywords used as names (`line`, `point`, `linear`)  -> `fx_line`, ...
 //   - a `for` variable read after its loop                     -> declared before the loop
+//   - a vector passed to a scalar parameter of the effect's    -> `F(v.x)`, with fxc's warning X3206
+//     own function, `F(v)`                                        (reported to `diagnostics`)
 // The helpers the rewrites call are added to the effect as verbatim declarations. fxc gave no warning
-// for any of these (docs/legalization.md); the rewrites change no column before the first one on a line,
-// so glslang's later messages keep pointing at the user's text. Private to fx.
+// for any of these but the truncation (docs/legalization.md); the rewrites change no column before the first
+// one on a line, so glslang's later messages keep pointing at the user's text. Private to fx.
 #pragma once
 
 #include "Lexer.h"
 
+#include <fx/Diagnostics.h>
 #include <fx/Effect.h>
 
 #include <functional>
@@ -41,6 +44,7 @@ struct FunctionTokenRange {
 // `isTypeName` says whether a token names a type (scalar, vector, matrix, object, struct or typedef).
 void legalizeFunctions(const std::vector<Token>& tokens, const std::string& text,
                        const std::vector<FunctionTokenRange>& ranges,
-                       const std::function<bool(const Token&)>& isTypeName, Effect& effect);
+                       const std::function<bool(const Token&)>& isTypeName, Effect& effect,
+                       DiagnosticSink& diagnostics);
 
 }  // namespace fx::detail

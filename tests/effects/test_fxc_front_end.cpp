@@ -133,6 +133,25 @@ TEST(FxcFrontEnd, ImplicitConversionsGlslangRefuses) {
     EXPECT_NEAR(brightest[2], brightest[0] / 4.0, 8.0);
 }
 
+// A vector passed to a scalar parameter of the effect's own function (a local, a swizzle, a parameter):
+// each call receives the first component, with fxc's warning X3206 at the argument; the objects are
+// (1, 0.5, 0.25), which any other component would change.
+TEST(FxcFrontEnd, VectorArgumentsOfScalarParametersPassTheirFirstComponent) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/fxcomposer/scalar_arguments.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    std::vector<int> columns;
+    for (const fx::Diagnostic& d : loaded.diagnostics.items()) {
+        EXPECT_EQ(d.id, fx::DiagId::ImplicitVectorTruncation) << loaded.diagnostics.str();
+        EXPECT_EQ(d.loc.line, 22);
+        columns.push_back(d.loc.column);
+    }
+    EXPECT_EQ(columns, (std::vector<int>{25, 42, 63})) << loaded.diagnostics.str();
+    ASSERT_TRUE(render(*loaded.renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 255, 128, 64), 64 * 48 / 20);
+}
+
 // Offsets from a loop in Sample, SampleLevel, SampleBias, SampleGrad, SampleCmp, SampleCmpLevelZero and
 // Load (GLSL takes constant offsets only; the driver refused to link the pass) and an `unsigned int`
 // counter: the Shift columns left of the middle average red and green, none right of it; a method whose

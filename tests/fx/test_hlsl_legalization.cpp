@@ -296,6 +296,36 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_NE(diags.str().find("'float4' to 'float'"), std::string::npos) << diags.str();
 }
 
+// A vector where the effect's own function takes a scalar is truncated only where the argument is
+// evidently a vector; scalars, overloaded functions, `out` parameters, struct members and the function's
+// own declaration are left as written (glslang's overload resolution takes them).
+TEST(HlslLegalization, OnlyEvidentVectorsArePassedTruncated) {
+    DiagnosticList diags;
+    auto effect = parse(R"(struct S { float4 v; };
+float one(float x) { return x; }
+float two(float x) { return x; }
+float2 two(float2 x) { return x; }
+void put(out float x, float4 v) { x = v.y; }
+float4 PS(float4 c : COLOR0) : COLOR {
+    S s; s.v = c; float k = 2; float4 v = c; float got;
+    put(got, v);
+    return float4(one(k), two(v.xy).x, one(s.v), got) * one(v);
+}
+technique t { pass p { PixelShader = compile ps_3_0 PS(); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    ASSERT_EQ(diags.items().size(), 1u) << diags.str();
+    EXPECT_EQ(diags.items().front().id, DiagId::ImplicitVectorTruncation);
+    EXPECT_EQ(diags.items().front().loc.line, 9);
+    EXPECT_EQ(diags.items().front().loc.column, 61);
+    const std::string& text = function(*effect, "PS").hlslText;
+    EXPECT_TRUE(contains(text, "one(v.x)")) << text;
+    EXPECT_TRUE(contains(text, "one(k)")) << text;
+    EXPECT_TRUE(contains(text, "two(v.xy)")) << text;
+    EXPECT_TRUE(contains(text, "put(got, v)")) << text;
+}
+
 // A swizzle of several matrix elements (`M._11_22`) compiles under fxc; glslang's SPIR-V back end writes
 // a constant in its place unless the swizzle is rewritten into its elements: every read compiles clean,
 // of a matrix whose evaluation has no side effects (a parameter, an array element, a member, a product)
