@@ -89,10 +89,10 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 18,
-              "the enum lengths below were pinned at format version 18: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 19,
+              "the enum lengths below were pinned at format version 19: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
-static_assert(enumLength<SemanticKind>() == 39);
+static_assert(enumLength<SemanticKind>() == 40);
 static_assert(enumLength<UniformBinding::Source>() == 2);
 static_assert(enumLength<VertexStream>() == 8);
 static_assert(enumLength<LeaveOutCondition>() == 3);
@@ -145,8 +145,9 @@ static_assert(sizeof(RefusedTechnique) == 136);
 static_assert(sizeof(StructMemberInfo) == 176);
 static_assert(sizeof(StructInfo) == 56);
 static_assert(sizeof(SemanticBinding) == 16);
+static_assert(sizeof(MemberBinding) == 168);
 static_assert(sizeof(BufferTexel) == 8);
-static_assert(sizeof(ParameterInfo) == 424);
+static_assert(sizeof(ParameterInfo) == 448);
 static_assert(sizeof(EffectProvenance) == 112);
 static_assert(sizeof(CompiledEffect) == 400);
 #endif
@@ -314,10 +315,14 @@ void fields(A& a, BufferTexel& x) {
     a(x.component, x.components);
 }
 template <class A>
+void fields(A& a, MemberBinding& x) {
+    a(x.member, x.type, x.firstComponent, x.elementStride, x.standard);
+}
+template <class A>
 void fields(A& a, ParameterInfo& x) {
     a(x.name, x.type, x.semantic, x.standard, x.isStatic, x.isShared, x.loc, x.light);
     a(x.hasParameterization, x.parameterization, x.parameterizationLoc, x.viewOf, x.elementCount);
-    a(x.imageSize, x.imageFormat, x.bufferTexel, x.annotations);
+    a(x.imageSize, x.imageFormat, x.bufferTexel, x.annotations, x.memberBindings);
 }
 template <class A>
 void fields(A& a, EffectProvenance& x) {

@@ -58,6 +58,24 @@ class Checks {
 public:
     explicit Checks(const CompiledEffect& effect) : mEffect(effect), mParameters(effect.parameters.size()) {}
 
+    // A member of a struct parameter's element, numeric, within the element; a light in range, or each
+    // light in the elements of a one-dimensional array.
+    bool memberBindingFits(const ParameterInfo& parameter, const MemberBinding& member) const {
+        const TypeDesc& type = parameter.type;
+        if (type.base != BaseType::Struct || type.arrayDims.size() > 1 || !member.type.isNumeric() ||
+            !member.type.arrayDims.empty())
+            return false;
+        TypeDesc element = type;
+        element.arrayDims.clear();
+        const size_t elementCount = mEffect.componentCount(element);
+        const size_t end = size_t(member.firstComponent) + mEffect.componentCount(member.type);
+        if (end > elementCount || member.elementStride != (type.arrayDims.empty() ? 0 : elementCount))
+            return false;
+        const int light = member.standard.light;
+        if (light < -1 || (light >= 0 && static_cast<size_t>(light) >= mEffect.lights.size())) return false;
+        return !member.standard.eachLight || !type.arrayDims.empty();
+    }
+
     std::optional<Corruption> run() {
         if (mEffect.initialValues.size() != mParameters)
             return Corruption{DiagId::CompiledEffectInitialValueCount};
@@ -76,6 +94,10 @@ public:
             const int light = parameter.standard.light;
             if (light < -1 || (light >= 0 && static_cast<size_t>(light) >= mEffect.lights.size()))
                 return Corruption{DiagId::CompiledEffectParameterLightOutOfRange, {parameter.name}};
+            // The runtime writes each bound member into its place in every element of the value.
+            for (const MemberBinding& member : parameter.memberBindings)
+                if (!memberBindingFits(parameter, member))
+                    return Corruption{DiagId::CompiledEffectMemberBindingOutOfRange, {parameter.name}};
             // The runtime binds a view's resource in its place, and makes buffers and images of these sizes.
             if (parameter.viewOf && (*parameter.viewOf >= mParameters ||
                                      !(mEffect.parameters[*parameter.viewOf].type.isBuffer() ||

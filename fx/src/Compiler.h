@@ -94,6 +94,9 @@ private:
     // Each pass's CompiledPass::readParameters, once its units and sampler states are known.
     void passReads();
     void scripts();
+    // ParameterInfo::memberBindings of the light and material structs without a semantic, and the
+    // constants of their members in their initial values, once the parameters' semantics are classified.
+    void structMemberBindings(const std::vector<bool>& hasInitializer);
     std::vector<ScriptCommand> script(const std::vector<Annotation>& annotations, bool& has);
     // Checks a script and resolves its operands (ScriptCommand::parameter, literal, light, dispatch, pass).
     void validateScript(std::vector<ScriptCommand>& commands, const Technique* technique);

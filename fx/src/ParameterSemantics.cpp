@@ -39,6 +39,7 @@ constexpr std::pair<const char*, SemanticKind> kOtherSemantics[] = {
     {"LightColor", SemanticKind::LightColor},
     {"LightAreaRadius", SemanticKind::LightAreaRadius},
     {"LightSize", SemanticKind::LightAreaRadius},
+    {"LightRange", SemanticKind::LightRange},
     {"Diffuse", SemanticKind::ObjectColor},
     {"MaterialDiffuse", SemanticKind::ObjectColor},
     {"DiffuseColor", SemanticKind::ObjectColor},
@@ -88,6 +89,7 @@ constexpr const char* kKindNames[] = {
     "LightDirection",
     "LightColor",
     "LightAreaRadius",
+    "LightRange",
     "Diffuse",
     "Ambient",
     "LightCount",
@@ -473,7 +475,8 @@ SemanticBinding classifySemantic(const ParameterInfo& parameter, bool hasInitial
         kind == SemanticKind::CascadeSplitDepths || kind == SemanticKind::CubeFaceSelect;
     const bool isLightProperty = kind == SemanticKind::LightPosition ||
                                  kind == SemanticKind::LightDirection || kind == SemanticKind::LightColor ||
-                                 kind == SemanticKind::LightAreaRadius || isCascadeProperty;
+                                 kind == SemanticKind::LightAreaRadius || kind == SemanticKind::LightRange ||
+                                 isCascadeProperty;
     // Position/Direction/Diffuse without a light annotation are the object's, not a light's; only
     // LightPosition/LightDirection/LightColor and the cascades default to light0.
     const bool spellsLight = upperCase(semantic).rfind("LIGHT", 0) == 0;

@@ -225,12 +225,16 @@ void Compiler::scripts() {
         parameter.standard = classifySemantic(parameter, hasInitializer[i], numbering, semanticLight);
         if (!semanticLight.empty()) parameter.standard.light = lightIndex(semanticLight);
     }
+    structMemberBindings(hasInitializer);
     // A light count read by its name indexes per-light arrays, and the runtime keeps it within the
     // shortest one it fills: without such an array it would count lights into arrays of unknown length,
     // so it is not bound. A LightCount semantic is what its author asked for.
     const bool hasPerLightArray =
-        std::any_of(mOut->parameters.begin(), mOut->parameters.end(),
-                    [](const ParameterInfo& parameter) { return parameter.standard.eachLight; });
+        std::any_of(mOut->parameters.begin(), mOut->parameters.end(), [](const ParameterInfo& parameter) {
+            return parameter.standard.eachLight ||
+                   std::any_of(parameter.memberBindings.begin(), parameter.memberBindings.end(),
+                               [](const MemberBinding& member) { return member.standard.eachLight; });
+        });
     if (!hasPerLightArray)
         for (ParameterInfo& parameter : mOut->parameters)
             if (parameter.standard.kind == SemanticKind::LightCount && parameter.standard.byName)

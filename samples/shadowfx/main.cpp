@@ -228,6 +228,13 @@ int infoCommand(const Arguments& args) {
                              light >= 0 ? compiled->lights[static_cast<size_t>(light)] : std::string())
                       << ")";
         }
+        for (const fx::MemberBinding& member : p.memberBindings) {
+            const int light = member.standard.light;
+            std::cout << "\n    ." << member.member << " bound by its name as "
+                      << fx::semanticBindingName(
+                             member.standard,
+                             light >= 0 ? compiled->lights[static_cast<size_t>(light)] : std::string());
+        }
         std::cout << "\n";
     }
     std::cout << "semantics shadowfx binds (case-insensitive; docs/effect-format.md):\n ";

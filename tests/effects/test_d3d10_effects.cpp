@@ -1074,6 +1074,62 @@ TEST(D3d10Effects, LightsAndMaterialsAnApplicationSetByNameAreTheScenes) {
     EXPECT_TRUE(nearlyEqual(renderer->readFrame(), viewBySemantic));
 }
 
+// Luna's lights and material in structs (tests/data/d3d10/struct_lights.fx): each member bound by its name
+// in its struct's context, so that his lighting lights the teapot; unbound, every member is zero and every
+// pixel of the teapot black.
+const fx::MemberBinding* memberBinding(const fx::CompiledEffect& effect, const std::string& parameter,
+                                       const std::string& member) {
+    const fx::ParameterInfo* info = effect.findParameter(parameter);
+    if (!info) return nullptr;
+    for (const fx::MemberBinding& binding : info->memberBindings)
+        if (binding.member == member) return &binding;
+    return nullptr;
+}
+
+double summedLuminance(const runtime::FrameImage& frame) {
+    double sum = 0.0;
+    for (size_t i = 0; i + 3 < frame.rgba.size(); i += 4) sum += luminance(&frame.rgba[i]);
+    return sum;
+}
+
+TEST(D3d10Effects, LightsAndMaterialsInStructsBindByTheirMembersNames) {
+    LoadedEffect loaded = loadEffectWithDiagnostics(sourcePath("tests/data/d3d10/struct_lights.fx"));
+    ASSERT_TRUE(loaded.renderer);
+    const fx::CompiledEffect& effect = loaded.renderer->effect();
+    const fx::MemberBinding* materialDiffuse = memberBinding(effect, "gMaterial", "Diffuse");
+    ASSERT_TRUE(materialDiffuse);
+    EXPECT_EQ(materialDiffuse->standard.kind, fx::SemanticKind::ObjectColor);
+    const fx::MemberBinding* lightDiffuse = memberBinding(effect, "gDirLights", "Diffuse");
+    ASSERT_TRUE(lightDiffuse);
+    EXPECT_EQ(lightDiffuse->standard.kind, fx::SemanticKind::LightColor);
+    EXPECT_TRUE(lightDiffuse->standard.eachLight);
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::MemberBoundByName),
+              static_cast<int>(effect.findParameter("gDirLights")->memberBindings.size() +
+                               effect.findParameter("gPointLight")->memberBindings.size() +
+                               effect.findParameter("gMaterial")->memberBindings.size()));
+
+    ASSERT_TRUE(render(*loaded.renderer, scene("teapot"), kWidth, kHeight, "DirectionalOnly"));
+    const runtime::FrameImage lit = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(lit));
+    // Shaded: many colours, and lit pixels as bright as a white light on the teapot's grey makes them
+    // (a frame with the members unbound has the clear colour and black).
+    std::set<uint32_t> colours;
+    size_t bright = 0;
+    for (size_t i = 0; i + 3 < lit.rgba.size(); i += 4) {
+        colours.insert(uint32_t(lit.rgba[i]) << 16 | uint32_t(lit.rgba[i + 1]) << 8 | lit.rgba[i + 2]);
+        bright += luminance(&lit.rgba[i]) > 0.6f;
+    }
+    EXPECT_GT(colours.size(), 50u);
+    EXPECT_GT(bright, lit.rgba.size() / 4 / 50);
+
+    // Element 1 is the scene's second light: the fill light adds to the frame.
+    ASSERT_TRUE(render(*loaded.renderer, teapotWithFill(), kWidth, kHeight, "DirectionalOnly"));
+    EXPECT_GT(summedLuminance(loaded.renderer->readFrame()), summedLuminance(lit) * 1.02);
+    // The point light reaches the teapot from the sun's eye, its range covering the scene, unattenuated.
+    ASSERT_TRUE(render(*loaded.renderer, scene("teapot"), kWidth, kHeight, "WithPointLight"));
+    EXPECT_GT(summedLuminance(loaded.renderer->readFrame()), summedLuminance(lit) * 1.02);
+}
+
 // Skinning palettes only the application fills, on meshes without skin: the DirectX SDK's SkinnedMesh
 // (WORLDMATRIXARRAY: bones placed in the world; NumBones - 1 weights read, the last one 1 minus their sum)
 // and XNA's SkinnedEffect (`Bones`, then World; the weights read as they are) draw each object as modelled,

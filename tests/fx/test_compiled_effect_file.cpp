@@ -236,6 +236,55 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     }
 }
 
+// The members of a light struct bound by their names survive the file; one bound outside its parameter's
+// value, or to a light out of range, is a corrupt file (the runtime writes it into its place in the value).
+TEST(CompiledEffectFile, StructMemberBindingsRoundTrip) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+struct PointLight { float4 Diffuse; float3 Position; float Range; };
+struct DirectionalLight { float4 Diffuse; float3 Direction; float pad; };
+cbuffer PerFrame { PointLight gLight; DirectionalLight gDirLights[2]; };
+float4 PS() : SV_Target { return gLight.Diffuse * gLight.Range + gDirLights[1].Diffuse + gLight.Position.x; }
+technique11 t { pass p { SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                                                       "members.fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "members.sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+    const std::vector<MemberBinding>& members = read->findParameter("gLight")->memberBindings;
+    ASSERT_EQ(members.size(), 3u);
+    EXPECT_EQ(members[2].member, "Range");
+    EXPECT_EQ(members[2].standard.kind, SemanticKind::LightRange);
+    EXPECT_EQ(members[2].firstComponent, 7u);
+    EXPECT_EQ(read->findParameter("gDirLights")->memberBindings.size(), 2u);
+
+    const size_t light = static_cast<size_t>(read->findParameter("gLight") - read->parameters.data());
+    const auto refused = [](const CompiledEffect& damaged) {
+        return readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectMemberBindingOutOfRange)
+                   .find("parameter 'gLight' binds a member outside its value or to a light out of range") !=
+               std::string::npos;
+    };
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[light].memberBindings[2].firstComponent = 8;
+        EXPECT_TRUE(refused(damaged));
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[light].memberBindings[0].standard.light = static_cast<int>(damaged.lights.size());
+        EXPECT_TRUE(refused(damaged));
+    }
+    {
+        CompiledEffect damaged = *compiled;
+        damaged.parameters[light].memberBindings[0].standard.eachLight = true;  // one light, no array
+        EXPECT_TRUE(refused(damaged));
+    }
+}
+
 // Stream output (the capture a pass makes and the DrawAuto pass that draws it) survives the file.
 TEST(CompiledEffectFile, StreamOutputRoundTrips) {
     DiagnosticList diagnostics;

@@ -324,6 +324,92 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); } }
     EXPECT_EQ(standard(*effect, "HalfPixel").kind, SemanticKind::None);
 }
 
+// Lights and materials held in structs, as Luna's D3D11 book effects and many engines keep them: each
+// member bound by its name in its struct's context (a light's Diffuse is its colour, a material's the
+// object's), the members only an application chooses given neutral values in the initial value. A struct
+// with a semantic, or of no light or material, stays the user's.
+const MemberBinding* memberBinding(const CompiledEffect& effect, const std::string& parameter,
+                                   const std::string& member) {
+    const ParameterInfo* info = effect.findParameter(parameter);
+    EXPECT_TRUE(info) << parameter;
+    if (!info) return nullptr;
+    for (const MemberBinding& binding : info->memberBindings)
+        if (binding.member == member) return &binding;
+    return nullptr;
+}
+
+TEST(ParameterSemantics, MembersOfLightAndMaterialStructsBindByTheirNames) {
+    const std::shared_ptr<CompiledEffect> effect = compile(R"(
+struct DirectionalLight { float4 Ambient; float4 Diffuse; float4 Specular; float3 Direction; float pad; };
+struct SpotLight { float4 Ambient; float4 Diffuse; float4 Specular; float3 Position; float Range;
+                   float3 Direction; float Spot; float3 Att; float pad; };
+struct Material { float4 Ambient; float4 Diffuse; float4 Specular; float4 Reflect; };
+struct Params { float3 Color; float Shininess; };
+struct Wave { float3 Direction; float Speed; };
+cbuffer cbPerFrame { DirectionalLight gDirLights[3]; SpotLight gSpotLight; Params gMtrl; Wave gWave; };
+cbuffer cbPerObject { Material gMaterial; };
+Material Tagged : MaterialDiffuse;
+float4 PS() : SV_Target {
+    return gDirLights[1].Diffuse + gDirLights[0].Ambient + gSpotLight.Ambient + gSpotLight.Diffuse *
+           gSpotLight.Range * gSpotLight.Spot + float4(gSpotLight.Att + gSpotLight.Position +
+           gSpotLight.Direction + gMtrl.Color + gWave.Direction, gMtrl.Shininess + gWave.Speed) +
+           gMaterial.Diffuse + gMaterial.Ambient + gMaterial.Specular + gMaterial.Reflect + Tagged.Diffuse;
+}
+technique11 t { pass p { SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)",
+                                                           "struct_members.fx");
+    ASSERT_TRUE(effect);
+    // An array of lights: element k is the scene's light k; the scene's ambient once, in the first light
+    // struct.
+    const MemberBinding* diffuse = memberBinding(*effect, "gDirLights", "Diffuse");
+    ASSERT_TRUE(diffuse);
+    EXPECT_EQ(diffuse->standard.kind, SemanticKind::LightColor);
+    EXPECT_TRUE(diffuse->standard.eachLight);
+    EXPECT_EQ(diffuse->firstComponent, 4u);
+    EXPECT_EQ(diffuse->elementStride, 16u);
+    ASSERT_TRUE(memberBinding(*effect, "gDirLights", "Specular"));
+    EXPECT_EQ(memberBinding(*effect, "gDirLights", "Specular")->standard.kind, SemanticKind::LightColor);
+    const MemberBinding* ambient = memberBinding(*effect, "gDirLights", "Ambient");
+    ASSERT_TRUE(ambient);
+    EXPECT_EQ(ambient->standard.kind, SemanticKind::Ambient);
+    EXPECT_FALSE(ambient->standard.eachLight);  // element 0's alone
+    const MemberBinding* direction = memberBinding(*effect, "gDirLights", "Direction");
+    ASSERT_TRUE(direction);
+    EXPECT_EQ(direction->standard.kind, SemanticKind::LightDirection);
+    EXPECT_FALSE(direction->standard.towardsLight);  // Luna's light vector is -Direction
+    EXPECT_FALSE(memberBinding(*effect, "gDirLights", "pad"));
+    // One light: light0's; its ambient is the first struct's already.
+    const MemberBinding* position = memberBinding(*effect, "gSpotLight", "Position");
+    ASSERT_TRUE(position);
+    EXPECT_EQ(position->standard.kind, SemanticKind::LightPosition);
+    EXPECT_EQ(position->standard.light, lightIndex(*effect, "light0"));
+    ASSERT_TRUE(memberBinding(*effect, "gSpotLight", "Range"));
+    EXPECT_EQ(memberBinding(*effect, "gSpotLight", "Range")->standard.kind, SemanticKind::LightRange);
+    EXPECT_FALSE(memberBinding(*effect, "gSpotLight", "Ambient"));
+    // Members only an application chooses: no attenuation, a modest spot exponent, in the initial value.
+    const size_t spot = effect->findParameter("gSpotLight") - effect->parameters.data();
+    const std::vector<float>& spotValue = effect->initialValues[spot].data;
+    ASSERT_EQ(spotValue.size(), 24u);
+    EXPECT_EQ(spotValue[19], 8.0f);  // Spot
+    EXPECT_EQ(std::vector<float>(spotValue.begin() + 20, spotValue.begin() + 23),
+              (std::vector<float>{1.0f, 0.0f, 0.0f}));  // Att
+    // A material: the object's colour, a white highlight with its power in Specular.w (Luna's), no
+    // reflection.
+    EXPECT_EQ(memberBinding(*effect, "gMaterial", "Diffuse")->standard.kind, SemanticKind::ObjectColor);
+    EXPECT_EQ(memberBinding(*effect, "gMaterial", "Ambient")->standard.kind, SemanticKind::ObjectColor);
+    EXPECT_FALSE(memberBinding(*effect, "gMaterial", "Specular"));
+    const size_t material = effect->findParameter("gMaterial") - effect->parameters.data();
+    EXPECT_EQ(effect->initialValues[material].data,
+              (std::vector<float>{0, 0, 0, 0, 0, 0, 0, 0, 0.5f, 0.5f, 0.5f, 16.0f, 0, 0, 0, 0}));
+    // A struct named as a material by its parameter; its power by name.
+    EXPECT_EQ(memberBinding(*effect, "gMtrl", "Color")->standard.kind, SemanticKind::ObjectColor);
+    const size_t mtrl = effect->findParameter("gMtrl") - effect->parameters.data();
+    EXPECT_EQ(effect->initialValues[mtrl].data[3], 16.0f);
+    // Neither a light nor a material, or a semantic of its own: the user's.
+    EXPECT_TRUE(effect->findParameter("gWave")->memberBindings.empty());
+    EXPECT_TRUE(effect->findParameter("Tagged")->memberBindings.empty());
+}
+
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
     for (const std::string& name : standardSemanticNames()) {
         SCOPED_TRACE(name);

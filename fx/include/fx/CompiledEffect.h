@@ -379,6 +379,17 @@ struct BufferTexel {
     int components = 0;                    // 1 to 4 on a Buffer<T>; 0 on every other parameter
 };
 
+// A member of a struct parameter bound by its name, as an application setting a light or a material held
+// in a struct would set it (docs/effect-format.md, "Conventional names"): Luna's `DirectionalLight
+// gDirLights[3]` with its `Diffuse` and `Direction`, a `Material`'s `Diffuse`.
+struct MemberBinding {
+    std::string member;           // the member's name ("Diffuse")
+    TypeDesc type;                // the member's type (numeric, no array)
+    uint32_t firstComponent = 0;  // of the member in the parameter's value (in element 0 of an array)
+    uint32_t elementStride = 0;   // the numbers of one element of an array parameter (0: no array)
+    SemanticBinding standard;     // what the runtime gives it; eachLight: element k is the scene's light k
+};
+
 // An effect parameter as the runtime sees it: what it binds by semantic and the annotations it reads,
 // resolved at compile time.
 struct ParameterInfo {
@@ -413,6 +424,9 @@ struct ParameterInfo {
     std::optional<TextureFormat> imageFormat;
     BufferTexel bufferTexel;  // a Buffer<T>'s
     Annotations annotations;  // every annotation of the parameter, in source order (UIName, UIMin, ...)
+    // A light or material struct without a semantic: its members bound by their names (`standard` is
+    // None then).
+    std::vector<MemberBinding> memberBindings;
 };
 
 // A struct that parameters have as their type, directly or through members of other structs. Its value

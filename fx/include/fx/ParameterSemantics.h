@@ -29,6 +29,7 @@ enum class SemanticKind {
     LightDirection,
     LightColor,
     LightAreaRadius,
+    LightRange,  // the distance from the light past the scene's farthest point: a point light's reach
     ObjectColor,
     Ambient,
     LightCount,  // how many lights the scene has (at most the length of the effect's per-light arrays)

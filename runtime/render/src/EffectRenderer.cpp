@@ -59,6 +59,16 @@ std::unique_ptr<EffectRenderer> EffectRenderer::create(std::shared_ptr<const fx:
                 diagnostics.report(fx::DiagId::ParameterBoundBySpelling, parameter.loc,
                                    {parameter.name, parameter.semantic, bound});
         }
+        for (const fx::MemberBinding& member : parameter.memberBindings) {
+            const int light = member.standard.light;
+            const bool material = member.standard.kind == fx::SemanticKind::ObjectColor;
+            diagnostics.report(
+                fx::DiagId::MemberBoundByName, parameter.loc,
+                {member.member, parameter.name,
+                 fx::semanticBindingName(member.standard,
+                                         light >= 0 ? lights[static_cast<size_t>(light)] : std::string()),
+                 material ? "material" : "light"});
+        }
         // A semantic nothing reads looks bound in the source while the value silently stays the default.
         if (!parameter.semantic.empty() && !parameter.isStatic && parameter.type.isNumeric() &&
             parameter.standard.kind == fx::SemanticKind::None)

@@ -91,24 +91,9 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
             input.method = parseLightParameterization(parameter.parameterization);
         }
         if (input.tunable != Kind::None || input.parameterizationSlot >= 0) mFitInputs.push_back(input);
-        // The compiler binds numbers the runtime may change only; a light property without a light (a
-        // plain Position or Direction) is the object's, which nothing supplies.
-        if (!fx::isBoundSemantic(standard.kind)) continue;
-        const bool isLightProperty =
-            standard.kind == Kind::LightPosition || standard.kind == Kind::LightDirection ||
-            standard.kind == Kind::LightColor || standard.kind == Kind::LightAreaRadius;
-        if (isLightProperty && standard.light < 0 && !standard.eachLight) continue;
-        Binding binding{i, standard.kind};
-        binding.inverse = standard.inverse;
-        binding.transpose = standard.transpose;
-        binding.eachLight = standard.eachLight;
-        binding.viewSpace = standard.viewSpace;
-        binding.towardsLight = standard.towardsLight;
-        if (standard.eachLight)  // a one-dimensional array (fx::SemanticBinding::eachLight)
-            mLightCountLimit = std::min(mLightCountLimit, parameter.type.arrayDims.front());
-        // CompiledEffect::lights took the first slots in order: the compiler's index is the slot.
-        binding.lightSlot = standard.light;
-        mBindings.push_back(binding);
+        addBinding(i, standard, nullptr);
+        for (const fx::MemberBinding& member : parameter.memberBindings)
+            addBinding(i, member.standard, &member);
     }
     for (size_t b = 0; b < mBindings.size(); ++b) {
         if (mBindings[b].kind == Kind::ResetPulse) {
@@ -117,6 +102,29 @@ SemanticBinder::SemanticBinder(const std::vector<fx::ParameterInfo>& parameters,
             (dependsOnObject(mBindings[b].kind) ? mObjectBindings : mPortBindings).push_back(b);
         }
     }
+}
+
+void SemanticBinder::addBinding(size_t parameter, const fx::SemanticBinding& standard,
+                                const fx::MemberBinding* member) {
+    // The compiler binds numbers the runtime may change only; a light property without a light (a
+    // plain Position or Direction) is the object's, which nothing supplies.
+    if (!fx::isBoundSemantic(standard.kind)) return;
+    const bool isLightProperty = standard.kind == Kind::LightPosition ||
+                                 standard.kind == Kind::LightDirection || standard.kind == Kind::LightColor ||
+                                 standard.kind == Kind::LightAreaRadius || standard.kind == Kind::LightRange;
+    if (isLightProperty && standard.light < 0 && !standard.eachLight) return;
+    Binding binding{parameter, standard.kind};
+    binding.inverse = standard.inverse;
+    binding.transpose = standard.transpose;
+    binding.eachLight = standard.eachLight;
+    binding.viewSpace = standard.viewSpace;
+    binding.towardsLight = standard.towardsLight;
+    if (standard.eachLight)  // a one-dimensional array (fx::SemanticBinding::eachLight)
+        mLightCountLimit = std::min(mLightCountLimit, mParameters[parameter].type.arrayDims.front());
+    // CompiledEffect::lights took the first slots in order: the compiler's index is the slot.
+    binding.lightSlot = standard.light;
+    binding.member = member;
+    mBindings.push_back(binding);
 }
 
 int SemanticBinder::lightSlot(std::string_view lightName) {
@@ -337,6 +345,9 @@ void SemanticBinder::storeEachLight(const Binding& binding, const RenderPortView
             case Kind::LightAreaRadius:
                 element = glm::vec4(light.areaRadius);
                 break;
+            case Kind::LightRange:
+                element = glm::vec4(lightRange(light.position));
+                break;
             default:
                 break;
         }
@@ -344,6 +355,19 @@ void SemanticBinder::storeEachLight(const Binding& binding, const RenderPortView
         std::copy_n(&element[0], 4, elements.begin() + k * 4);
     }
     storeElements(value, elements, 1, 4);
+}
+
+// A directional light's position is the eye of its fitted view: bound with the light's matrices.
+glm::vec3 SemanticBinder::lightPosition(const Binding& binding) const {
+    const Light& light = *binding.light;
+    return light.type == Light::Type::Directional ? glm::vec3(glm::inverse(binding.lightView)[3])
+                                                  : light.position;
+}
+
+// From `position` past the farthest point of the scene's bounding sphere: a point light that far reaches
+// every object.
+float SemanticBinder::lightRange(const glm::vec3& position) const {
+    return glm::length(position - mSceneBounds.center()) + mSceneBounds.radius();
 }
 
 bool SemanticBinder::isBound(size_t parameter) const {
@@ -414,7 +438,11 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
         if (used && !(*used)[binding.parameter]) return;
         fx::Value& value = values[binding.parameter];
         if (stamps) mPrevious.assign(value.data.begin(), value.data.end());
-        write(binding, port, object, time, world, value);
+        if (binding.member) {
+            writeMember(binding, port, object, time, world, value);
+        } else {
+            write(binding, port, object, time, world, value);
+        }
         if (stamps && value.data != mPrevious) stamps->touch(binding.parameter);
     };
     if (scope == Scope::All) {
@@ -426,6 +454,26 @@ void SemanticBinder::bind(const RenderPortView& port, const SceneObject* object,
                                           : scope == Scope::PerFrame ? mFrameBindings
                                                                      : mPortBindings;
     for (size_t b : bindings) bindOne(mBindings[b]);
+}
+
+// The member's value, as write() gives a parameter of its type (an array of it where each element is a
+// light's), copied into its place in each element of the struct's value; a binding not of each light
+// writes the first element alone (the ambient of a light array's first light).
+void SemanticBinder::writeMember(const Binding& binding, const RenderPortView& port,
+                                 const SceneObject* object, float time, const glm::mat4& world,
+                                 fx::Value& value) const {
+    const fx::MemberBinding& member = *binding.member;
+    mMemberValue.type = member.type;
+    mMemberValue.type.arrayDims = binding.eachLight ? value.type.arrayDims : std::vector<int>{};
+    write(binding, port, object, time, world, mMemberValue);
+    const size_t count = static_cast<size_t>(member.type.componentCount());
+    const size_t elements = count > 0 ? mMemberValue.data.size() / count : 0;
+    for (size_t e = 0; e < elements; ++e) {
+        const size_t at = member.firstComponent + e * member.elementStride;
+        if (at + count > value.data.size()) break;
+        std::copy_n(mMemberValue.data.begin() + static_cast<std::ptrdiff_t>(e * count), count,
+                    value.data.begin() + static_cast<std::ptrdiff_t>(at));
+    }
 }
 
 void SemanticBinder::write(const Binding& binding, const RenderPortView& port, const SceneObject* object,
@@ -496,10 +544,7 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             storeVector(value, glm::vec4(object ? static_cast<float>(object->id) : 0.0f));
             return;
         case Kind::LightPosition: {
-            const Light& light = *binding.light;
-            const glm::vec3 position = light.type == Light::Type::Directional
-                                           ? glm::vec3(glm::inverse(binding.lightView)[3])
-                                           : light.position;
+            const glm::vec3 position = lightPosition(binding);
             storeVector(
                 value, binding.viewSpace ? port.view * glm::vec4(position, 1.0f) : glm::vec4(position, 1.0f));
             return;
@@ -515,6 +560,9 @@ void SemanticBinder::write(const Binding& binding, const RenderPortView& port, c
             return;
         case Kind::LightAreaRadius:
             storeVector(value, glm::vec4(binding.light->areaRadius));
+            return;
+        case Kind::LightRange:
+            storeVector(value, glm::vec4(lightRange(lightPosition(binding))));
             return;
         case Kind::ObjectColor:
             storeVector(value, glm::vec4(object ? object->color : glm::vec3(1.0f), 1.0f));

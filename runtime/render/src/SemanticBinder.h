@@ -6,7 +6,8 @@
 // projection instead of the current render port's. Other semantics: ViewportPixelSize, Time,
 // CameraPosition, ObjectId, FXCOMPOSER_RESETPULSE (true in a reset frame); light properties
 // Position/LightPosition, Direction/LightDirection and LightColor, LightAreaRadius/LightSize (the light's
-// areaRadius in world units, for soft-shadow filters) (light named by an Object/frustum annotation, default
+// areaRadius in world units, for soft-shadow filters), LightRange (from the light past the scene's
+// farthest point) (light named by an Object/frustum annotation, default
 // light0); Diffuse/MaterialDiffuse (the object's colour; with an Object annotation, the light's colour) and
 // Ambient (the scene's ambient light), LightCount (the scene's lights, at most the shortest per-light
 // array). A light matrix may also carry `string Parameterization = "Uniform" | "Focused" | "LiSPSM" |
@@ -25,7 +26,9 @@
 // filter needed). A parameter without a semantic whose name follows D3D applications' conventions
 // (`gWorldViewProj`, `g_mWorld`, `matView`, `gEyePosW`; without an initializer also lights, colours and
 // the light count: `g_LightDir[3]`, `g_MaterialDiffuseColor`, `g_nNumLights`) is bound as the semantic it
-// spells; an array of a light's property holds one element per light of the scene. The compiler
+// spells; an array of a light's property holds one element per light of the scene. The members of a
+// light or material struct without a semantic (fx::ParameterInfo::memberBindings) are bound as their
+// names spell in the struct's context, each written into its place in the struct's value. The compiler
 // classifies each parameter (fx::ParameterInfo::standard, fx/ParameterSemantics.h): the binder reads no
 // semantic's text.
 #pragma once
@@ -155,6 +158,8 @@ private:
         bool eachLight = false;     // fx::SemanticBinding::eachLight: element k is the scene's light k
         bool viewSpace = false;     // fx::SemanticBinding::viewSpace
         bool towardsLight = false;  // fx::SemanticBinding::towardsLight: a direction negated
+        // A member of a struct parameter (fx::ParameterInfo::memberBindings), null for the parameter.
+        const fx::MemberBinding* member = nullptr;
         // Per frame (prepare()): the slot's light, null where the binding is not written this frame.
         const Light* light = nullptr;
         bool active = true;
@@ -175,8 +180,13 @@ private:
         std::optional<LispsmN> lispsmN;
     };
     static bool dependsOnObject(Kind kind);
+    void addBinding(size_t parameter, const fx::SemanticBinding& standard, const fx::MemberBinding* member);
     void write(const Binding& binding, const RenderPortView& port, const SceneObject* object, float time,
                const glm::mat4& world, fx::Value& value) const;
+    void writeMember(const Binding& binding, const RenderPortView& port, const SceneObject* object,
+                     float time, const glm::mat4& world, fx::Value& value) const;
+    glm::vec3 lightPosition(const Binding& binding) const;
+    float lightRange(const glm::vec3& position) const;
 
     void resolveLights(const Scene& scene);
 
@@ -213,6 +223,7 @@ private:
     std::vector<std::string> mResolvedLightNames;
     bool mResolved = false;
     mutable std::vector<float> mPrevious;  // bind(): a value before it is written, to see whether it changed
+    mutable fx::Value mMemberValue;        // writeMember(): the member's value before it is copied in place
 };
 
 }  // namespace runtime

@@ -116,6 +116,9 @@ FX_DIAGNOSTIC(
     "more than 4 components)")
 FX_DIAGNOSTIC(CompiledEffectParameterLightOutOfRange, Error,
               "the compiled effect file is corrupt: parameter '{0}' is bound to a light out of range")
+FX_DIAGNOSTIC(CompiledEffectMemberBindingOutOfRange, Error,
+              "the compiled effect file is corrupt: parameter '{0}' binds a member outside its value or to "
+              "a light out of range")
 FX_DIAGNOSTIC(CompiledEffectClipDistancesOutOfRange, Error,
               "the compiled effect file is corrupt: pass '{0}': a stage writes clip distances out of range")
 FX_DIAGNOSTIC(CompiledEffectParameterViewOutOfRange, Error,

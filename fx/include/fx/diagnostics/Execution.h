@@ -31,6 +31,9 @@ FX_DIAGNOSTIC(ParameterBoundByName, Note,
 FX_DIAGNOSTIC(ParameterBoundBySpelling, Note,
               "parameter '{0}' has semantic '{1}', which is no standard semantic; bound as '{2}' by what it "
               "spells, as its application would set it")
+FX_DIAGNOSTIC(MemberBoundByName, Note,
+              "member '{0}' of struct parameter '{1}' has no semantic; bound as '{2}' by its name in a {3} "
+              "struct, as an application setting it would")
 FX_DIAGNOSTIC(ParameterNamesMissingLight, Note,
               "parameter '{0}' names light '{1}', which the scene does not have; it keeps its value")
 FX_DIAGNOSTIC(PassWithoutShaders, Warning, "pass '{0}' draws but has no vertex and pixel shader; skipped")
