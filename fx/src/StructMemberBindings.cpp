@@ -10,6 +10,7 @@
 #include "CaseFolding.h"
 #include "Compiler.h"
 
+#include <algorithm>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -107,8 +108,11 @@ void Compiler::structMemberBindings(const std::vector<bool>& hasInitializer) {
             continue;
         const StructRole role = structRole(parameter);
         const StructInfo* info = mOut->findStruct(type.structName);
-        // An array of materials has no object to take its colours from.
-        if (role == StructRole::None || !info || (role == StructRole::Material && !type.arrayDims.empty()))
+        // An array of materials has no object to take its colours from; a member with a semantic says its
+        // struct is set by semantics (EffectVariable::memberBySemantic), as its author chose.
+        if (role == StructRole::None || !info || (role == StructRole::Material && !type.arrayDims.empty()) ||
+            std::any_of(info->members.begin(), info->members.end(),
+                        [](const StructMemberInfo& member) { return !member.semantic.empty(); }))
             continue;
         TypeDesc elementType = type;
         elementType.arrayDims.clear();

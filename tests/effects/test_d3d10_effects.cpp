@@ -884,13 +884,14 @@ TEST(D3d10Effects, EffectsInTheStylesOfForeignCodeRenderEveryTechnique) {
 }
 
 // A struct-typed cbuffer member no application set reads zero, as in D3D10: the object is drawn in the
-// grey the code adds to it, not in colours from stray block contents.
+// grey the code adds to it, not in colours from stray block contents. (A light's or a material's struct
+// is bound by its members' names: LightsAndMaterialsInStructsBindByTheirMembersNames.)
 TEST(D3d10Effects, StructMembersOfConstantBuffersReadZeroUntilSet) {
     auto renderer = loadEffect(R"(
-struct Material { float4 Diffuse; float4 Specular; };
-cbuffer cbPerObject { float4x4 gWorldViewProj; Material gMaterial; float4 gTint = float4(0, 0, 1, 1); };
+struct Surface { float4 Diffuse; float4 Specular; };
+cbuffer cbPerObject { float4x4 gWorldViewProj; Surface gSurface; float4 gTint = float4(0, 0, 1, 1); };
 float4 VS(float3 p : POSITION) : SV_Position { return mul(float4(p, 1), gWorldViewProj); }
-float4 PS() : SV_Target { return gMaterial.Diffuse + gMaterial.Specular + float4(0.5, 0.5, 0, 1) + gTint; }
+float4 PS() : SV_Target { return gSurface.Diffuse + gSurface.Specular + float4(0.5, 0.5, 0, 1) + gTint; }
 technique11 T { pass { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
 )",
                                false, "material.fx");

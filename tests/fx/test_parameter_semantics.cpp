@@ -346,14 +346,15 @@ struct SpotLight { float4 Ambient; float4 Diffuse; float4 Specular; float3 Posit
 struct Material { float4 Ambient; float4 Diffuse; float4 Specular; float4 Reflect; };
 struct Params { float3 Color; float Shininess; };
 struct Wave { float3 Direction; float Speed; };
+struct MaterialBySemantic { float4 Tint : DIFFUSE; float4 Diffuse; };
 cbuffer cbPerFrame { DirectionalLight gDirLights[3]; SpotLight gSpotLight; Params gMtrl; Wave gWave; };
-cbuffer cbPerObject { Material gMaterial; };
+cbuffer cbPerObject { Material gMaterial; MaterialBySemantic gOwn; };
 Material Tagged : MaterialDiffuse;
 float4 PS() : SV_Target {
     return gDirLights[1].Diffuse + gDirLights[0].Ambient + gSpotLight.Ambient + gSpotLight.Diffuse *
            gSpotLight.Range * gSpotLight.Spot + float4(gSpotLight.Att + gSpotLight.Position +
            gSpotLight.Direction + gMtrl.Color + gWave.Direction, gMtrl.Shininess + gWave.Speed) +
-           gMaterial.Diffuse + gMaterial.Ambient + gMaterial.Specular + gMaterial.Reflect + Tagged.Diffuse;
+           gMaterial.Diffuse + gMaterial.Ambient + gMaterial.Specular + gMaterial.Reflect + Tagged.Diffuse + gOwn.Diffuse;
 }
 technique11 t { pass p { SetPixelShader(CompileShader(ps_5_0, PS())); } }
 )",
@@ -408,6 +409,7 @@ technique11 t { pass p { SetPixelShader(CompileShader(ps_5_0, PS())); } }
     // Neither a light nor a material, or a semantic of its own: the user's.
     EXPECT_TRUE(effect->findParameter("gWave")->memberBindings.empty());
     EXPECT_TRUE(effect->findParameter("Tagged")->memberBindings.empty());
+    EXPECT_TRUE(effect->findParameter("gOwn")->memberBindings.empty());  // its members have semantics
 }
 
 TEST(ParameterSemantics, EveryListedNameClassifiesAsItself) {
