@@ -4,9 +4,10 @@
 // in structs (`DirectionalLight gDirLights[3]`, `Material gMaterial`) that their application fills member
 // by member; the struct parameter has no semantic, and none of its members has one. Read by the members'
 // names in the struct's context (a light's `Diffuse` is the light's colour, a material's the object's),
-// the members the scene gives are bound (docs/effect-format.md, "Conventional names"), and the members
-// that only an application's choice gives (a point light's attenuation, a material's specular power) get
-// a neutral value in the parameter's initial value: Luna's lighting then lights the object as his demos do.
+// the members the scene gives are bound (docs/effect-format.md, "What the runtime provides"), and the
+// members that only an application's choice gives (a point light's attenuation, a material's specular
+// power) get a neutral value in the parameter's initial value: Luna's lighting then lights the object as
+// his demos do.
 #include "CaseFolding.h"
 #include "Compiler.h"
 

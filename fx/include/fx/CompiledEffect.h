@@ -380,7 +380,7 @@ struct BufferTexel {
 };
 
 // A member of a struct parameter bound by its name, as an application setting a light or a material held
-// in a struct would set it (docs/effect-format.md, "Conventional names"): Luna's `DirectionalLight
+// in a struct would set it (docs/effect-format.md, "What the runtime provides"): Luna's `DirectionalLight
 // gDirLights[3]` with its `Diffuse` and `Direction`, a `Material`'s `Diffuse`.
 struct MemberBinding {
     std::string member;           // the member's name ("Diffuse")
