@@ -16,6 +16,7 @@
 
 #include "ConstantFolding.h"
 #include "MacroNoteSink.h"
+#include "SemanticTables.h"
 #include "TypeNames.h"
 #include "UserFunctionInliner.h"
 
@@ -41,6 +42,7 @@ void Parser::parseEffect() {
         return;
     }
     retypeSamplersOfTextureObjects();
+    positionBesideSvPosition();
     // What fxc accepted and glslang refuses, rewritten in the functions' text glslang will read.
     legalizeFunctions(
         mTokens, mText, mFunctionRanges, [this](const Token& t) { return isTypeName(t); }, mEffect, mDiag);
@@ -66,6 +68,20 @@ BaseType samplerReadBy(const std::string& intrinsic) {
 }
 
 }  // namespace
+
+void Parser::positionBesideSvPosition() {
+    for (StructDecl& s : mEffect.structs) {
+        const auto svPosition = std::find_if(s.members.begin(), s.members.end(), [](const StructMember& m) {
+            return canonicalSemantic(m.semantic) == "SV_POSITION";
+        });
+        if (svPosition == s.members.end()) continue;
+        for (StructMember& m : s.members) {
+            if (canonicalSemantic(m.semantic) != "POSITION0") continue;
+            mDiag.report(DiagId::PositionBesideSvPosition, m.loc, {m.name, svPosition->name});
+            m.semantic = kPositionBesideSvPosition;
+        }
+    }
+}
 
 void Parser::retypeSamplersOfTextureObjects() {
     std::set<std::string> byObject, comparing;

@@ -46,6 +46,11 @@ private:
     // sampler (D3D9 took the dimension from the instruction; glslang would read it as a 2D sampler), and so
     // is its untyped texture (ResourceDescriptors.cpp).
     void retypeSamplersOfTextureObjects();
+    // A struct with both an SV_Position and a POSITION member (Frank Luna's `float4 PosH : SV_POSITION;
+    // float3 PosW : POSITION;`): under D3D10 the second is user data, which the vertex shader writes and
+    // the pixel shader reads like a TEXCOORD. Its semantic becomes a free name that every stage's wrapper
+    // takes as a varying; a POSITION alone stays the position (D3D9's, and fxc's legacy mapping).
+    void positionBesideSvPosition();
 
     // [SECTION] Tokens
 

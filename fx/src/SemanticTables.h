@@ -14,6 +14,9 @@ namespace fx {
 // Varying locations shared by both stages: TEXCOORDn -> n, COLORn -> 8+n, NORMAL 10, TANGENT 11,
 // BINORMAL 12, FOG 13. Returns nullopt for semantics that are not varyings (POSITION, PSIZE, VPOS...).
 std::optional<int> varyingLocation(const std::string& semantic);
+// The semantic a POSITION member takes where its struct also has an SV_Position one (the parser's
+// positionBesideSvPosition): a free name, so a varying in every stage.
+constexpr const char* kPositionBesideSvPosition = "FX_POSITION";
 // "texcoord" -> "TEXCOORD0", "COLOR" -> "COLOR0", "SV_Position" -> "SV_POSITION".
 std::string canonicalSemantic(const std::string& semantic);
 // Splits "TEXCOORD3" into ("TEXCOORD", 3); no trailing digits -> index 0.

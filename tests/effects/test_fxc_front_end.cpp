@@ -189,6 +189,19 @@ TEST(FxcFrontEnd, VaryingArraysUnderOneFreeName) {
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 64, 244, 128), 64 * 48 / 20);
 }
 
+// A POSITION member beside an SV_POSITION one is user data between the stages, with a note: the objects
+// are the (0.25, 0.5, 0.75) the vertex shader wrote, not the fragment's position.
+TEST(FxcFrontEnd, PositionBesideSvPositionIsAVarying) {
+    LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/d3d10/position_beside_sv_position.fx");
+    ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
+    EXPECT_EQ(countDiagnostics(loaded.diagnostics, fx::DiagId::PositionBesideSvPosition), 1)
+        << loaded.diagnostics.str();
+    ASSERT_TRUE(render(*loaded.renderer, *runtime::makeBuiltinScene("teapot"), 64, 48));
+    const runtime::FrameImage frame = loaded.renderer->readFrame();
+    ASSERT_TRUE(notConstant(frame));
+    EXPECT_GE(countPixelsOfColour(frame, 64, 48, 64, 128, 191), 64 * 48 / 20);
+}
+
 // ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
 // warnings, and the pass (named `P0`, scripted `Pass=p0`) draws into the frame.
 TEST(FxcFrontEnd, ScriptCommandsFxComposerTolerated) {

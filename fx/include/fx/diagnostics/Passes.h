@@ -32,6 +32,9 @@ FX_DIAGNOSTIC(
     VertexInputInstanceRow, Note,
     "vertex input '{0}' is row {1} of a per-instance transform the vertex shader assembles, which no "
     "mesh stream holds (each object's World carries it here); it reads the identity's row {2}")
+FX_DIAGNOSTIC(PositionBesideSvPosition, Note,
+              "'{0}' is read as user data between the stages, as under D3D10: its struct's SV_Position "
+              "member '{1}' is the position")
 FX_DIAGNOSTIC(SamplerReadsHostPicture, Note,
               "sampler '{0}' of the full-screen pass '{1}' has no texture in the effect (its application "
               "bound one); drawn by a host, it reads the host's picture of the scene")
