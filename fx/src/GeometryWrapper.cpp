@@ -89,10 +89,12 @@ bool WrapperBuilder::streamElement(const FunctionParam& stream) {
                                    : varyingLocation(semantic) ? varyingLocation(semantic)
                                                                : customVaryingLocation(mEffect, semantic)) {
             const bool integer = m.type.base != BaseType::Float && m.type.base != BaseType::Half;
-            // Captured only, nothing interpolates it; GLSL still wants an integer output flat.
-            const std::string interpolation = integer && m.interpolation.empty() && mStreamOut.captureOnly
-                                                  ? "nointerpolation"
-                                                  : m.interpolation;
+            // Captured only, nothing interpolates it; GLSL still wants an integer output flat. An instance
+            // ID is flat whatever it says, as D3D10 passes integers.
+            const std::string interpolation =
+                integer && m.interpolation.empty() && (mStreamOut.captureOnly || semantic == "SV_INSTANCEID")
+                    ? "nointerpolation"
+                    : m.interpolation;
             if (integer && interpolation.empty())
                 return fail(DiagId::GeometryIntegerOutputInterpolated, m.loc, {m.name});
             const std::string at = std::to_string(*location);

@@ -133,9 +133,11 @@ std::optional<int> customVaryingLocation(const Effect& effect, const std::string
         for (int k = 0; k < span; ++k)
             if (const std::optional<int> location = varyingLocation(name + std::to_string(first + k)))
                 tableUsed.insert(*location);
-        if (vertexInput || c.empty() || c.rfind("SV_", 0) == 0 || c == "POSITION0" || c == "VPOS" ||
-            c == "VPOS0" || c == "VFACE" || (c.rfind("PSIZE", 0) == 0 && !geometryInput) ||
-            c.rfind("DEPTH", 0) == 0)
+        // SV_InstanceID a vertex shader writes is user data to the stages after it, as in D3D10 (a
+        // vertex input SV_InstanceID stays the draw's instance, gl_InstanceID).
+        if (vertexInput || c.empty() || (c.rfind("SV_", 0) == 0 && c != "SV_INSTANCEID") ||
+            c == "POSITION0" || c == "VPOS" || c == "VPOS0" || c == "VFACE" ||
+            (c.rfind("PSIZE", 0) == 0 && !geometryInput) || c.rfind("DEPTH", 0) == 0)
             return;
         // Each element the table has no location for is free-named: `float3x3 Tangent : TANGENT0` is
         // TANGENT0 (the table's) and TANGENT1..2, and a vertex-input name written as an output

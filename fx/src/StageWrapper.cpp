@@ -340,7 +340,10 @@ bool WrapperBuilder::pixelInputs(const std::vector<Field>& fields, std::string& 
                 source = widenToFloat4(source, written->second.cols);
             }
             varyings.insert(*location);
-            if (!f.interpolation.empty()) interpolation[*location] = f.interpolation;
+            // An instance ID an earlier stage wrote is an integer: flat, as D3D10 passes integers.
+            const bool instance = s == "SV_INSTANCEID" && f.interpolation.empty();
+            if (!f.interpolation.empty() || instance)
+                interpolation[*location] = instance ? "nointerpolation" : f.interpolation;
             body += assignField(f, source);
         } else {
             return fail(DiagId::PixelInputSemanticUnsupported, f.loc, {f.semantic});

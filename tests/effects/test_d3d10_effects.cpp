@@ -576,6 +576,19 @@ TEST(D3d10Effects, GeometryShaderReadsThePointSizeTheVertexShaderWrote) {
     EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 64, 191, 255), kWidth * kHeight / 20);
 }
 
+// An instance ID the vertex shader writes under SV_InstanceID, read by the geometry shader and, written on
+// by it, by the pixel shader (FX11 trail effects carry it so): tests/data/d3d10/instance_id_geometry.fx
+// draws a quad per vertex only where the geometry shader read the vertex shader's value, coloured by what
+// the pixel shader read.
+TEST(D3d10Effects, InstanceIdTheVertexShaderWroteReachesTheGeometryAndPixelShaders) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/instance_id_geometry.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Trail"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    // Read 6 as the colour (6 / 8, 1, 0.25).
+    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 191, 255, 64), kWidth * kHeight / 20);
+}
+
 // `triangleadj` input: the silhouette edges as seen from the light, pixel 3 t + i for edge i of triangle
 // t, against the same test computed here from the mesh with its own (brute-force) neighbour search.
 TEST(D3d10Effects, TriangleAdjacencyGeometryShaderFindsTheSilhouetteEdges) {
