@@ -218,6 +218,9 @@ public:
             } else if (f.isIdentifier(i) && f.is(i + 1, "(") && !mEffect.findFunctions(t.text).empty() &&
                        !(i > f.first() && (f.is(i - 1, ".") || mIsTypeName(f.at(i - 1))))) {
                 truncateVectorArguments(f, i, edits);
+            } else if (mIsTypeName(t) && f.isIdentifier(i + 1) && !mIsTypeName(f.at(i + 1)) &&
+                       f.is(i + 2, "{")) {
+                rewriteBraceInitializer(f, i, edits);
             } else if (f.startsStatement(i)) {
                 rewriteLvalueConstructor(f, i, edits);
             }
@@ -375,6 +378,26 @@ private:
         const Token& type = f.at(loop + 2);
         edits.push_back({f.at(start).begin, f.at(start).begin, type.text + " " + name + "; "});
         edits.push_back({type.begin, type.end, ""});
+    }
+
+    // C++'s brace initialization of a local, which fxc accepted: `float x{};` -> `float x = (float)0;`
+    // (zero, as `{}` value-initializes), `float3 v{1, 2, 3}` -> `float3 v = float3(1, 2, 3)` and, for a
+    // struct or a list with braces inside, `S s{a, b}` -> `S s = {a, b}`. The braces are replaced token by
+    // token, so that a line break inside them stays.
+    void rewriteBraceInitializer(const FunctionTokens& f, size_t type, std::vector<Edit>& edits) const {
+        const size_t open = type + 2, close = f.closing(open);
+        if (close > f.last() || !(f.is(close + 1, ";") || f.is(close + 1, ","))) return;
+        const Token& name = f.at(type + 1);
+        const std::string& spelling = f.at(type).text;
+        if (close == open + 1) {
+            edits.push_back({name.end, f.at(close).end, " = (" + spelling + ")0"});
+            return;
+        }
+        TypeDesc numeric;
+        bool constructor = parseScalarTypeName(spelling, numeric);
+        for (size_t i = open + 1; i < close; ++i) constructor = constructor && !f.is(i, "{");
+        edits.push_back({name.end, f.at(open).end, constructor ? " = " + spelling + "(" : " = {"});
+        edits.push_back({f.at(close).begin, f.at(close).end, constructor ? ")" : "}"});
     }
 
     void rewriteLvalueConstructor(const FunctionTokens& f, size_t i, std::vector<Edit>& edits) {

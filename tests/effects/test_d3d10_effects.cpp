@@ -589,6 +589,16 @@ TEST(D3d10Effects, InstanceIdTheVertexShaderWroteReachesTheGeometryAndPixelShade
     EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 191, 255, 64), kWidth * kHeight / 20);
 }
 
+// Locals brace-initialized as C++ does (`float rim{};`, `float3 v{...}`, `Pair p{...}`), which FX11
+// games' fxc builds accepted: tests/data/d3d10/brace_initializers.fx colours the object with all three.
+TEST(D3d10Effects, BraceInitializedLocalsTakeTheirValues) {
+    auto renderer = loadEffect(sourcePath("tests/data/d3d10/brace_initializers.fx"), true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Braces"));
+    const runtime::FrameImage frame = renderer->readFrame();
+    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 64, 128, 191), kWidth * kHeight / 50);
+}
+
 // `triangleadj` input: the silhouette edges as seen from the light, pixel 3 t + i for edge i of triangle
 // t, against the same test computed here from the mesh with its own (brute-force) neighbour search.
 TEST(D3d10Effects, TriangleAdjacencyGeometryShaderFindsTheSilhouetteEdges) {

@@ -117,6 +117,40 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
     EXPECT_TRUE(compilesClean(effect));
 }
 
+// C++'s brace initialization of locals (FX11 games' `float rim{};`): zero for `{}`, a constructor for a
+// numeric type's list, an initializer list for a struct's; the frame of each value:
+// D3d10Effects.BraceInitializedLocalsTakeTheirValues.
+TEST(HlslLegalization, BraceInitializedLocalsAreZeroOrTheirList) {
+    DiagnosticList diags;
+    auto effect = parse(R"(struct Pair { float a; float b; };
+float4 PS() : SV_Target {
+    float rim{};
+    int2 n{};
+    float3 v{1, 2,
+             3};
+    Pair p{rim, v.y};
+    return float4(rim + n.x, v.x, p.b, 1);
+}
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                        diags);
+    ASSERT_TRUE(effect) << diags.str();
+    const std::string& ps = function(*effect, "PS").hlslText;
+    EXPECT_TRUE(contains(ps, "float rim = (float)0;")) << ps;
+    EXPECT_TRUE(contains(ps, "int2 n = (int2)0;")) << ps;
+    EXPECT_TRUE(contains(ps, "float3 v = float3(1, 2, 3);")) << ps;
+    EXPECT_TRUE(contains(ps, "Pair p = {rim, v.y};")) << ps;
+    // The list's line break stays: what follows keeps its line.
+    const size_t list = ps.find("float3 v"), after = ps.find("Pair p");
+    ASSERT_LT(list, after) << ps;
+    EXPECT_EQ(std::count(ps.begin() + static_cast<std::ptrdiff_t>(list),
+                         ps.begin() + static_cast<std::ptrdiff_t>(after), '\n'),
+              2)
+        << ps;
+    EXPECT_TRUE(compilesClean(effect));
+}
+
 // fxc's backward-compatibility mode, which D3DX9 compiled effects in, let a shader write a uniform: each
 // shader works on its own copy, read by every function it calls.
 TEST(HlslLegalization, AShaderWritingAUniformWorksOnItsOwnCopy) {
