@@ -262,7 +262,7 @@ void fields(A& a, ScriptCommand::DispatchTerm& x) {
 template <class A>
 void fields(A& a, ScriptCommand& x) {
     a(x.kind, x.index, x.pass, x.value, x.cascade, x.loc, x.selectorCondition, x.selectorTrue);
-    a(x.selectorFalse, x.selectorAlternatives, x.clear, x.draw);
+    a(x.selectorFalse, x.selectorAlternatives, x.clear, x.clearTarget, x.draw);
     a(x.parameter, x.literal, x.light, x.dispatch, x.technique, x.techniqueIfFalse, x.selectorParameter);
 }
 template <class A>

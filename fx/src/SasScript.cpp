@@ -115,13 +115,29 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                         // Every form FX Composer took: Color (also Color0..3), Depth, Stencil, the
                         // combinations DepthStencil and All, and lists joined by '|' or '+'; one
                         // command for each buffer.
-                        std::vector<ScriptCommand::ClearWhat> what;
+                        // 3ds Max's `Clear=SV_TARGETn`: colour target n alone (SV_TARGET0..7, fxc's
+                        // targets; a script binds RenderColorTarget0..3 here, beyond them nothing is
+                        // cleared, with a warning).
+                        std::vector<std::pair<ScriptCommand::ClearWhat, int>> what;
                         size_t from = 0;
                         while (ok && from <= value.size()) {
                             size_t bar = value.find_first_of("|+,", from);
                             if (bar == std::string::npos) bar = value.size();
                             std::string word = trim(std::string_view(value).substr(from, bar - from));
                             from = bar + 1;
+                            if (word.size() >= 9 && word.size() <= 10 &&
+                                equalsIgnoreCase(word.substr(0, 9), "SV_TARGET") &&
+                                (word.size() == 9 || (word[9] >= '0' && word[9] <= '7'))) {
+                                const int target = word.size() == 9 ? 0 : word[9] - '0';
+                                constexpr int kBound = 4;  // RenderColorTarget0..3
+                                if (target < kBound)
+                                    what.push_back({ScriptCommand::ClearWhat::Color, target});
+                                else
+                                    diagnostics.report(DiagId::ScriptClearTargetBeyond, loc,
+                                                       {name + "=" + word, std::to_string(target),
+                                                        std::to_string(kBound), std::to_string(kBound - 1)});
+                                continue;
+                            }
                             // FX Composer's `Clear=Depth0;`: the one depth-stencil buffer.
                             if (word.size() > 1 && word.back() == '0' &&
                                 !equalsIgnoreCase(word.substr(0, word.size() - 1), "Color"))
@@ -133,21 +149,26 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                             const bool all = equalsIgnoreCase(word, "All");
                             const bool depthStencil = equalsIgnoreCase(word, "DepthStencil") ||
                                                       equalsIgnoreCase(word, "Depth_Stencil");
-                            if (color || all) what.push_back(ScriptCommand::ClearWhat::Color);
+                            if (color || all) what.push_back({ScriptCommand::ClearWhat::Color, -1});
                             if (equalsIgnoreCase(word, "Depth") || equalsIgnoreCase(word, "ZBuffer") || all ||
                                 depthStencil)
-                                what.push_back(ScriptCommand::ClearWhat::Depth);
+                                what.push_back({ScriptCommand::ClearWhat::Depth, -1});
                             if (equalsIgnoreCase(word, "Stencil") || all || depthStencil)
-                                what.push_back(ScriptCommand::ClearWhat::Stencil);
+                                what.push_back({ScriptCommand::ClearWhat::Stencil, -1});
                             if (!color && !all && !depthStencil && !equalsIgnoreCase(word, "Depth") &&
                                 !equalsIgnoreCase(word, "ZBuffer") && !equalsIgnoreCase(word, "Stencil"))
                                 ok = false, invalid(DiagId::ScriptClearInvalid);
                         }
-                        if (!ok) break;
-                        command.clear = what.front();
+                        if (!ok || what.empty()) {  // nothing left to clear: no command
+                            ok = false;
+                            break;
+                        }
+                        command.clear = what.front().first;
+                        command.clearTarget = what.front().second;
                         for (size_t k = 1; k < what.size(); ++k) {
                             ScriptCommand more = command;
-                            more.clear = what[k];
+                            more.clear = what[k].first;
+                            more.clearTarget = what[k].second;
                             commands.push_back(command);
                             command = more;
                         }

@@ -69,6 +69,34 @@ TEST(FxComposerFiles, NvidiaStylePostProcessEffectRunsBothPasses) {
     EXPECT_EQ(textureWarnings, 2) << diagnostics.str();
 }
 
+// 3ds Max's `Clear=SV_TARGETn` clears colour target n alone: tests/data/fxcomposer/clear_each_target.fx
+// clears its two targets to red and to green, draws the object blue into both and shows them side by side;
+// around the object, red on the left and green on the right.
+TEST(FxComposerFiles, ClearOfANamedTargetClearsThatTargetAlone) {
+    auto renderer = loadEffect("tests/data/fxcomposer/clear_each_target.fx", true);
+    ASSERT_TRUE(renderer);
+    ASSERT_TRUE(render(*renderer, *runtime::makeBuiltinScene("teapot"), 96, 64));
+    const runtime::FrameImage frame = renderer->readFrame();
+    int red = 0, green = 0, blue = 0, other = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 96; ++x) {
+            const uint8_t* p = frame.pixel(x, y);
+            const bool left = x < 48;
+            if (p[0] == 255 && p[1] == 0 && p[2] == 0 && left)
+                ++red;
+            else if (p[0] == 0 && p[1] == 255 && p[2] == 0 && !left)
+                ++green;
+            else if (p[0] == 0 && p[1] == 0 && p[2] == 255)
+                ++blue;
+            else
+                ++other;
+        }
+    EXPECT_GT(red, 48 * 64 / 4);
+    EXPECT_GT(green, 48 * 64 / 4);
+    EXPECT_GT(blue, 0);
+    EXPECT_EQ(other, 0);
+}
+
 // Every effect shipped in effects/ parses, compiles, links on the GL driver and renders a frame that is
 // not blank, with every technique.
 TEST(FxComposerFiles, EveryShippedEffectLinksAndRendersEveryTechnique) {

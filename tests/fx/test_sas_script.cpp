@@ -151,4 +151,30 @@ TEST(SasScript, ClearFormsFxComposerTook) {
     EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
     EXPECT_EQ(diags.items()[0].loc.column, 27);
 }
+
+// 3ds Max's `Clear=SV_TARGETn` (case-blind): a colour clear of target n alone; beyond the four targets a
+// script binds, a warning at the command and nothing cleared.
+TEST(SasScript, ClearNamesATargetAs3dsMaxDoes) {
+    DiagnosticList diags;
+    auto commands = parseSasScript("Clear=SV_TARGET0;Clear=sv_target3|Depth;Clear=SV_Target5;Clear=Color;",
+                                   SourceLoc{"s.fx", 2, 1}, diags);
+    EXPECT_FALSE(diags.hasErrors()) << diags.str();
+    ASSERT_EQ(commands.size(), 4u);
+    EXPECT_EQ(commands[0].clear, ScriptCommand::ClearWhat::Color);
+    EXPECT_EQ(commands[0].clearTarget, 0);
+    EXPECT_EQ(commands[1].clear, ScriptCommand::ClearWhat::Color);
+    EXPECT_EQ(commands[1].clearTarget, 3);
+    EXPECT_EQ(commands[2].clear, ScriptCommand::ClearWhat::Depth);
+    EXPECT_EQ(commands[3].clearTarget, -1);  // every bound target
+    ASSERT_EQ(diags.items().size(), 1u);
+    EXPECT_EQ(diags.items()[0].id, DiagId::ScriptClearTargetBeyond);
+    EXPECT_EQ(diags.items()[0].loc.column, 41);
+    EXPECT_NE(diags.str().find("'Clear=SV_Target5': colour target 5 is beyond the 4"), std::string::npos)
+        << diags.str();
+    for (const char* bad : {"Clear=SV_TARGET8;", "Clear=SV_TARGETS;", "Clear=SV_TARGET01;"}) {
+        DiagnosticList errors;
+        EXPECT_TRUE(parseSasScript(bad, SourceLoc{"s.fx", 2, 1}, errors).empty()) << bad;
+        EXPECT_TRUE(errors.hasErrors()) << bad;
+    }
+}
 }  // namespace test_sas_script

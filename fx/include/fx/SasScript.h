@@ -24,7 +24,7 @@ struct ScriptCommand {
         ClearSetColor,             // ClearSetColor=float4Param
         ClearSetDepth,             // ClearSetDepth=floatParam
         ClearSetStencil,           // ClearSetStencil=intParam
-        Clear,                     // Clear=Color|Depth|Stencil
+        Clear,                     // Clear=Color|Depth|Stencil|SV_TARGETn
         Draw,                      // Draw=Geometry|Buffer
         RenderPort,                // RenderPort=light0 (empty = the camera), RenderPort=light0.cascade2
         LoopByCount,               // LoopByCount=intParam (or a literal count)
@@ -60,7 +60,9 @@ struct ScriptCommand {
     std::string selectorFalse;                      // the second alternative ("" if there is one)
     std::vector<std::string> selectorAlternatives;  // every name after '?', in order
     ClearWhat clear = ClearWhat::Color;             // Clear
-    DrawWhat draw = DrawWhat::Geometry;             // Draw
+    // Clear=SV_TARGETn (3ds Max's scripts name the target): colour target n alone; -1: every bound one.
+    int clearTarget = -1;
+    DrawWhat draw = DrawWhat::Geometry;  // Draw
 
     // The operands, resolved by the compiler against the compiled effect (fx/CompiledEffect.h), so that
     // the runtime looks up no name and parses no literal, at load or per frame. -1 where there is none.

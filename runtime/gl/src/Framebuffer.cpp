@@ -160,7 +160,7 @@ void FramebufferCache::bindDefault() {
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void FramebufferCache::clear(const ClearRequest& request) {
+void FramebufferCache::clear(const ClearRequest& request, int colorTarget) {
     // Clearing a GL_NONE draw buffer or a missing depth/stencil attachment is a no-op in GL, so the bound
     // framebuffer's layout need not be known here.
     if (request.color) {
@@ -168,7 +168,7 @@ void FramebufferCache::clear(const ClearRequest& request) {
         for (int i = 0; i < 4; ++i) {
             gl::GetBooleani_v(GL_COLOR_WRITEMASK, GLuint(i), saved[i]);
             gl::ColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            gl::ClearBufferfv(GL_COLOR, i, request.color->data());
+            if (colorTarget < 0 || colorTarget == i) gl::ClearBufferfv(GL_COLOR, i, request.color->data());
         }
         for (int i = 0; i < 4; ++i)
             gl::ColorMaski(GLuint(i), saved[i][0], saved[i][1], saved[i][2], saved[i][3]);

@@ -104,7 +104,7 @@ void FrameExecutor::setClearColor(const fx::Value& color) {
     if (color.data.size() == 1) mClearColor = {color.data[0], color.data[0], color.data[0], color.data[0]};
 }
 
-void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
+void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what, int colorTarget) {
     const PlannedOp::Kind kind = what == fx::ScriptCommand::ClearWhat::Color ? PlannedOp::Kind::ClearColor
                                  : what == fx::ScriptCommand::ClearWhat::Depth
                                      ? PlannedOp::Kind::ClearDepth
@@ -124,8 +124,9 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
     switch (what) {
         case fx::ScriptCommand::ClearWhat::Color:
             request.color = mClearColor;
-            for (const auto& color : mTargets.colors)
-                if (color.texture) texels += texelCount(*color.texture);
+            for (size_t i = 0; i < mTargets.colors.size(); ++i)
+                if (mTargets.colors[i].texture && (colorTarget < 0 || i == static_cast<size_t>(colorTarget)))
+                    texels += texelCount(*mTargets.colors[i].texture);
             break;
         case fx::ScriptCommand::ClearWhat::Depth:
             request.depth = mClearDepth;
@@ -143,7 +144,7 @@ void FrameExecutor::clear(fx::ScriptCommand::ClearWhat what) {
     }
     {
         PassTimer::Scope glTime(mTimer, &FrameCpuTime::glNs);
-        FramebufferCache::clear(request);
+        FramebufferCache::clear(request, colorTarget);
     }
     if (tileOnly) gl::Disable(GL_SCISSOR_TEST);  // every pass's states set it anew (RenderStateApplier)
     ++mStats.clears;

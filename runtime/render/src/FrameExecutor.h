@@ -43,7 +43,7 @@ public:
     void setClearColor(const fx::Value& color) override;
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
-    void clear(fx::ScriptCommand::ClearWhat what) override;
+    void clear(fx::ScriptCommand::ClearWhat what, int colorTarget) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
     // Dispatch=x,y,z (ComputeDispatch.h): outside the plan, which has no operation for it.
     void dispatch(const fx::CompiledPass& pass, const std::array<uint32_t, 3>& groups,

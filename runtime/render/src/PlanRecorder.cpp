@@ -62,7 +62,7 @@ void PlanRecorder::setRenderPort(const std::string& light, int lightSlot, int ca
     portMatrices(mScene, mBinder, mOptions, light, lightSlot, cascade, mPort);
 }
 
-void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
+void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what, int colorTarget) {
     PlannedOp& op = mPlan.add();
     op.pass = mPass;
     op.lightPort = mLightPort;
@@ -71,7 +71,13 @@ void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what) {
         case fx::ScriptCommand::ClearWhat::Color:
             op.kind = PlannedOp::Kind::ClearColor;
             colorTargets(op.writes);
-            value = hashBytes(0, mClearColor.data(), mClearColor.size() * sizeof(float));
+            if (colorTarget >= 0) {  // Clear=SV_TARGETn: that target alone
+                const int target = mColors[static_cast<size_t>(colorTarget)];
+                op.writes.clear();
+                if (target != kNone) op.writes.push_back(target);
+            }
+            value = hashCombine(hashBytes(0, mClearColor.data(), mClearColor.size() * sizeof(float)),
+                                static_cast<uint64_t>(colorTarget + 1));
             break;
         case fx::ScriptCommand::ClearWhat::Depth:
             op.kind = PlannedOp::Kind::ClearDepth;

@@ -38,7 +38,7 @@ public:
     }
     void setClearDepth(float depth) override { mClearDepth = depth; }
     void setClearStencil(int stencil) override { mClearStencil = stencil; }
-    void clear(fx::ScriptCommand::ClearWhat what) override;
+    void clear(fx::ScriptCommand::ClearWhat what, int colorTarget) override;
     void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) override;
     // A dispatch draws nothing: no operation of the plan (what it writes reaches draws through
     // StorageResources::dispatches).

@@ -86,7 +86,7 @@ bool ScriptInterpreter::clearsFrame(const fx::CompiledTechnique& technique) {
             if (command.kind == Command::Kind::RenderColorTarget && command.index == 0)
                 frameBound = command.value.empty();
             if (command.kind == Command::Kind::Clear && command.clear == Command::ClearWhat::Color &&
-                frameBound)
+                command.clearTarget <= 0 && frameBound)
                 return true;
             if (command.kind == Command::Kind::Pass && depth == 0)
                 if (const fx::CompiledPass* pass = passOf(technique, command);
@@ -116,7 +116,7 @@ bool ScriptInterpreter::run(const fx::CompiledTechnique& technique, int maxLoopC
         if (!keepFrame)
             for (Command::ClearWhat what :
                  {Command::ClearWhat::Color, Command::ClearWhat::Depth, Command::ClearWhat::Stencil})
-                target.clear(what);
+                target.clear(what, -1);
     }
     if (technique.hasScript)
         return runCommands(technique.script, technique, nullptr, maxLoopCount, loops, target, diagnostics);
@@ -179,7 +179,7 @@ bool ScriptInterpreter::runCommands(const std::vector<Command>& commands,
                 break;
             }
             case Command::Kind::Clear:
-                target.clear(command.clear);
+                target.clear(command.clear, command.clearTarget);
                 break;
             case Command::Kind::Draw:
                 if (!pass) {

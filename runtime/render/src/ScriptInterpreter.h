@@ -32,7 +32,8 @@ public:
     virtual void setClearColor(const fx::Value& color) = 0;
     virtual void setClearDepth(float depth) = 0;
     virtual void setClearStencil(int stencil) = 0;
-    virtual void clear(fx::ScriptCommand::ClearWhat what) = 0;
+    // `colorTarget` >= 0: a colour clear of that target alone (Clear=SV_TARGETn); -1: every bound one.
+    virtual void clear(fx::ScriptCommand::ClearWhat what, int colorTarget) = 0;
     virtual void draw(const fx::CompiledPass& pass, fx::ScriptCommand::DrawWhat what) = 0;
     // Dispatch=x,y,z in a compute pass's script (ComputeDispatch.h); `loc` is the command's.
     virtual void dispatch(const fx::CompiledPass& pass, const std::array<uint32_t, 3>& groups,

@@ -15,6 +15,9 @@ FX_DIAGNOSTIC(ScriptLoopIndexOutsideLoop, Error, "LoopGetIndex outside a loop")
 FX_DIAGNOSTIC(ScriptValueMissing, Error, "invalid script command '{0}': expected '=' and a value")
 FX_DIAGNOSTIC(ScriptClearInvalid, Error,
               "invalid script command '{0}': expected Color, Depth, Stencil, DepthStencil or All")
+FX_DIAGNOSTIC(ScriptClearTargetBeyond, Warning,
+              "script command '{0}': colour target {1} is beyond the {2} a script binds "
+              "(RenderColorTarget0..{3}); nothing is cleared")
 FX_DIAGNOSTIC(ScriptDrawInvalid, Error, "invalid script command '{0}': expected Geometry or Buffer")
 FX_DIAGNOSTIC(ScriptValueEmpty, Error, "invalid script command '{0}': expected a value")
 FX_DIAGNOSTIC(ScriptTechniqueNameExpected, Error, "invalid script command '{0}': expected a technique name")

@@ -89,8 +89,9 @@ public:
 
     // D3D9 Clear on the currently bound targets: ignores ColorWriteEnable, ZWriteEnable and
     // StencilWriteMask (all write masks are opened for the clear and restored after), honours the scissor
-    // test like D3D9 does when ScissorTestEnable is set.
-    static void clear(const ClearRequest& request);
+    // test like D3D9 does when ScissorTestEnable is set. `colorTarget` >= 0: the colour clear is that
+    // draw buffer's alone (a script's Clear=SV_TARGETn).
+    static void clear(const ClearRequest& request, int colorTarget = -1);
 
     void evict(const GpuTexture& texture);  // drops every FBO that uses it
     void clearCache();
