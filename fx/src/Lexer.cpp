@@ -1,5 +1,6 @@
 // Lexer: preprocessed text -> tokens with the user's locations.
 #include "Lexer.h"
+#include "StringEscapes.h"
 
 #include <fx/RenderStates.h>
 
@@ -256,8 +257,11 @@ std::vector<Token> lexEffect(const std::string& text, const std::string& mainPat
                     break;
                 }
                 if (s == '\\' && pos + 1 < n && text[pos + 1] != '\n') {
-                    char e = text[pos + 1];
-                    token.text += e == 'n' ? '\n' : e == 't' ? '\t' : e == 'r' ? '\r' : e == '0' ? '\0' : e;
+                    // An unknown escape keeps its backslash, as fxc kept it (`"C:\Users\Desktop"`, a
+                    // Windows path); the preprocessor warned about it (StringEscapes.h).
+                    const char e = text[pos + 1];
+                    const std::optional<char> decoded = decodeEscape(e);
+                    token.text += decoded ? std::string(1, *decoded) : std::string{'\\', e};
                     pos += 2;
                     continue;
                 }

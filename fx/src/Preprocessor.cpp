@@ -4,6 +4,7 @@
 #include "CaseBlindPath.h"
 #include "FxcDirectives.h"
 #include "SourceText.h"
+#include "StringEscapes.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -267,7 +268,9 @@ private:
             if (forGlslang == mGlslangTexts.end())
                 forGlslang =
                     mGlslangTexts
-                        .emplace(candidate, mDirectives.rewrite(stored->second, candidate, mDiagnostics))
+                        .emplace(candidate, mDirectives.rewrite(
+                                                hideStringEscapes(stored->second, candidate, mDiagnostics),
+                                                candidate, mDiagnostics))
                         .first;
             bool seen = false;
             for (const std::string& file : mOut.includedFiles) seen = seen || file == candidate;
@@ -330,7 +333,8 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
     FxcDirectives directives;
     for (const auto& [name, value] : options.defines) directives.predefine(name, value);
     glslang::TShader shader(EShLangFragment);
-    const std::string mainText = directives.rewrite(out.files[path], path, diagnostics);
+    const std::string mainText =
+        directives.rewrite(hideStringEscapes(out.files[path], path, diagnostics), path, diagnostics);
     const char* strings[] = {mainText.c_str()};
     const int lengths[] = {static_cast<int>(mainText.size())};
     const char* names[] = {path.c_str()};
@@ -418,6 +422,7 @@ bool preprocessEffect(const std::string& bytes, const std::string& path, const P
         diagnostics.report(DiagId::IncludeCaseMismatch, loc, {mismatch.header, mismatch.found});
     }
     if (!ok && !reported) diagnostics.report(DiagId::PreprocessingFailed, SourceLoc{path, 0, 0}, {});
+    restoreStringEscapes(text);
     directives.takeUndefinedCallMarkers(text, diagnostics);
     directives.takeRedefinitionMarkers(text, diagnostics);
     out.text = std::move(text);

@@ -79,6 +79,30 @@ TEST(Preprocessor, IncludeDirectories) {
     EXPECT_EQ(effect->findParameter("shared1")->loc.file, "/sys/inc/shared.fxh");
 }
 
+// A Windows path with a backslash left unescaped (`\D`), in a #define's string and in an annotation's: a
+// warning at that backslash, which stays a character, and every other escape read once (`\\`, `\"`),
+// as fxc read them. tests/data/fxcomposer/max_texture_paths.fx.
+TEST(Preprocessor, UnknownEscapeInAStringKeepsItsBackslashWithAWarning) {
+    DiagnosticList diags;
+    const std::string path = std::string(SHADOWFX_SOURCE_DIR) + "/tests/data/fxcomposer/max_texture_paths.fx";
+    auto effect = parseEffectFile(path, ParseOptions{}, diags);
+    ASSERT_TRUE(effect) << diags.str();
+    EXPECT_FALSE(diags.hasErrors()) << diags.str();
+    const Parameter* texture = effect->findParameter("BaseTexture");
+    ASSERT_TRUE(texture && texture->annotation("ResourceName") && texture->annotation("Folder") &&
+                texture->annotation("Quoted"));
+    EXPECT_EQ(texture->annotation("ResourceName")->value.text, "C:\\Users\\max\\Desktop\\maps\\base.tga");
+    EXPECT_EQ(texture->annotation("Folder")->value.text, "maps\\detail");
+    EXPECT_EQ(texture->annotation("Quoted")->value.text, "a\"b\\c");
+    // One warning per unknown escape, at its backslash: `\D` on line 3, `\d` on line 5.
+    std::vector<std::pair<int, int>> places;
+    for (const Diagnostic& d : diags.items()) {
+        EXPECT_EQ(d.severity, Severity::Warning) << diags.str();
+        if (d.id == DiagId::UnknownEscapeSequence) places.push_back({d.loc.line, d.loc.column});
+    }
+    EXPECT_EQ(places, (std::vector<std::pair<int, int>>{{3, 33}, {5, 76}})) << diags.str();
+}
+
 TEST(Preprocessor, IncludesFromDisk) {
     ParseOptions options;
     DiagnosticList diags;

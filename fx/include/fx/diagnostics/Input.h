@@ -15,6 +15,8 @@ FX_DIAGNOSTIC(SourceTooLarge, Error, "source exceeds {0} bytes")
 FX_DIAGNOSTIC(PreprocessingFailed, Error, "preprocessing failed")
 FX_DIAGNOSTIC(InvalidCharacter, Error, "invalid character '{0}'")
 FX_DIAGNOSTIC(UnterminatedString, Error, "unterminated string literal")
+FX_DIAGNOSTIC(UnknownEscapeSequence, Warning,
+              "unknown escape sequence '\\{0}' in a string: the backslash is kept, as fxc kept it")
 // Attached to a diagnostic at a macro's use (Diagnostic::notes), at the macro's #define.
 FX_DIAGNOSTIC(InMacroExpansion, Note, "in expansion of macro '{0}' defined here")
 FX_DIAGNOSTIC(TooManyTokens, Error, "effect too large: more than {0} tokens after preprocessing")
