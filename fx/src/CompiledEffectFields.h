@@ -89,8 +89,8 @@ template <class E>
 constexpr int enumLength() {
     return static_cast<int>(EnumLimit<E>::kLast) + 1;
 }
-static_assert(kCompiledEffectFormatVersion == 19,
-              "the enum lengths below were pinned at format version 19: re-pin them with the new version");
+static_assert(kCompiledEffectFormatVersion == 20,
+              "the enum lengths below were pinned at format version 20: re-pin them with the new version");
 static_assert(enumLength<ShaderStage>() == 6);
 static_assert(enumLength<SemanticKind>() == 40);
 static_assert(enumLength<UniformBinding::Source>() == 2);

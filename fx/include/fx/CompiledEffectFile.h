@@ -26,7 +26,7 @@ namespace fx {
 
 // Raised whenever the content changes shape (a field added, removed or reordered) or an enum stored by
 // number changes its list (fx/src/CompiledEffectFields.h pins their lengths to this version).
-inline constexpr uint32_t kCompiledEffectFormatVersion = 19;
+inline constexpr uint32_t kCompiledEffectFormatVersion = 20;
 
 // Whether `bytes` begin with the compiled effect magic: how loaders tell a .sfxo from an .fx source,
 // whatever the file's name.
