@@ -70,7 +70,14 @@ BaseType samplerReadBy(const std::string& intrinsic) {
 }  // namespace
 
 void Parser::positionBesideSvPosition() {
+    // A vertex input's POSITION is the mesh's (or a DrawAuto capture's) position, and a stream's element
+    // is captured by its semantics as a stream-output declaration names them: both keep POSITION.
+    std::set<std::string> kept = vertexInputStructs(mEffect);
+    for (const FunctionDecl& f : mEffect.functions)
+        for (const FunctionParam& p : f.params)
+            if (!p.stream.empty()) kept.insert(p.type.structName);
     for (StructDecl& s : mEffect.structs) {
+        if (kept.count(s.name)) continue;
         const auto svPosition = std::find_if(s.members.begin(), s.members.end(), [](const StructMember& m) {
             return canonicalSemantic(m.semantic) == "SV_POSITION";
         });

@@ -49,7 +49,8 @@ private:
     // A struct with both an SV_Position and a POSITION member (Frank Luna's `float4 PosH : SV_POSITION;
     // float3 PosW : POSITION;`): under D3D10 the second is user data, which the vertex shader writes and
     // the pixel shader reads like a TEXCOORD. Its semantic becomes a free name that every stage's wrapper
-    // takes as a varying; a POSITION alone stays the position (D3D9's, and fxc's legacy mapping).
+    // takes as a varying; a POSITION alone stays the position (D3D9's, and fxc's legacy mapping). A
+    // vertex shader's input struct and a geometry shader's stream element keep their POSITION.
     void positionBesideSvPosition();
 
     // [SECTION] Tokens

@@ -106,13 +106,33 @@ std::set<std::string> vertexInputOnlyStructs(const Effect& effect, const Entries
 // the effect uses, in the order of their sorted names over the whole effect, so that every stage of every
 // pass agrees. An array or a matrix takes one name per element (`Points[16] : POINTS` is POINTS0..15).
 // A vertex shader's inputs are attributes, not varyings: a name that only ever stands there takes none.
-std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
+namespace {
+
+Entries effectEntries(const Effect& effect) {
     Entries entries;
     for (const Parameter& p : effect.parameters)
         if (p.initializer) collectEntries(*p.initializer, entries);
     for (const Technique& t : effect.techniques)
         for (const Pass& pass : t.passes)
             for (const StateAssignment& state : pass.states) collectEntries(state.value, entries);
+    return entries;
+}
+
+}  // namespace
+
+std::set<std::string> vertexInputStructs(const Effect& effect) {
+    const Entries entries = effectEntries(effect);
+    std::set<std::string> inputs;
+    for (const FunctionDecl& f : effect.functions)
+        for (const FunctionParam& p : f.params)
+            if (p.type.base == BaseType::Struct && p.direction == FunctionParam::Direction::In &&
+                entries.vertex.count(f.name))
+                inputs.insert(p.type.structName);
+    return inputs;
+}
+
+std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic) {
+    const Entries entries = effectEntries(effect);
     const std::set<std::string> inputStructs = vertexInputOnlyStructs(effect, entries);
     // SM4's PSIZE is user data between a vertex and a geometry shader (point-sprite particles carry each
     // sprite's size to the geometry shader that expands it): a geometry shader's input names it a varying.

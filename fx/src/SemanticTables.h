@@ -5,6 +5,7 @@
 #include <fx/Effect.h>
 
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -30,5 +31,8 @@ std::optional<std::string> vertexInputDefault(const std::string& semantic);
 // pass agrees. An array or a matrix takes one name per element; a name that only ever stands as a vertex
 // shader's input (an attribute) takes none.
 std::optional<int> customVaryingLocation(const Effect& effect, const std::string& semantic);
+// The structs some vertex shader of the effect takes as an input (a pass's or a shader variable's compile
+// expression with a vs_ profile).
+std::set<std::string> vertexInputStructs(const Effect& effect);
 
 }  // namespace fx

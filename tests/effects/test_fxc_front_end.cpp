@@ -190,7 +190,8 @@ TEST(FxcFrontEnd, VaryingArraysUnderOneFreeName) {
 }
 
 // A POSITION member beside an SV_POSITION one is user data between the stages, with a note: the objects
-// are the (0.25, 0.5, 0.75) the vertex shader wrote, not the fragment's position.
+// are the (0.25, 0.5, 0.75) the vertex shader wrote, not the fragment's position. A vertex shader's input
+// struct keeps its POSITION: the mesh is drawn.
 TEST(FxcFrontEnd, PositionBesideSvPositionIsAVarying) {
     LoadedEffect loaded = loadEffectWithDiagnostics("tests/data/d3d10/position_beside_sv_position.fx");
     ASSERT_TRUE(loaded.renderer) << loaded.diagnostics.str();
@@ -200,6 +201,8 @@ TEST(FxcFrontEnd, PositionBesideSvPositionIsAVarying) {
     const runtime::FrameImage frame = loaded.renderer->readFrame();
     ASSERT_TRUE(notConstant(frame));
     EXPECT_GE(countPixelsOfColour(frame, 64, 48, 64, 128, 191), 64 * 48 / 20);
+    ASSERT_TRUE(render(*loaded.renderer, *runtime::makeBuiltinScene("teapot"), 64, 48, "MeshInput"));
+    EXPECT_GE(countPixelsOfColour(loaded.renderer->readFrame(), 64, 48, 191, 128, 64), 64 * 48 / 20);
 }
 
 // ClearSetColor naming no parameter, `Clear=` and RenderColorTarget0 naming a plain texture: three
