@@ -96,9 +96,13 @@ def standin(name, kind):
 
 def warnings(tool, effect):
     with tempfile.TemporaryDirectory() as scratch:
-        result = subprocess.run([tool, "render", str(effect), "--scene", "teapot", "--out",
-                                 str(pathlib.Path(scratch) / "frame.png")],
-                                capture_output=True, text=True, timeout=300)
+        try:
+            result = subprocess.run([tool, "render", str(effect), "--scene", "teapot", "--out",
+                                     str(pathlib.Path(scratch) / "frame.png")],
+                                    capture_output=True, text=True, timeout=300)
+        except subprocess.TimeoutExpired:
+            print(f"{effect}: render timed out; no stand-ins", file=sys.stderr)
+            return ""
     return result.stdout + result.stderr
 
 
@@ -115,15 +119,20 @@ def main(tool, root, effects):
                 break
             for file, kind in wanted.items():
                 data = standin(file, kind)
-                if data is None:
+                # The loader reads a Windows path's backslashes as slashes; nothing outside the copy.
+                target = (effect.parent / file.replace("\\", "/")).resolve()
+                if data is None or not target.is_relative_to(pathlib.Path(root).resolve()):
                     print(f"{name}: no stand-in for '{file}' as a {kind} texture", file=sys.stderr)
                     continue
-                target = effect.parent / file
                 target.parent.mkdir(parents=True, exist_ok=True)
                 target.write_bytes(data)
                 written[file] = kind
+        else:
+            text = warnings(tool, effect)
         for file, kind in sorted(written.items()):
             print(f"{name}: {file} ({kind})")
+        for file in sorted(set(MISSING.findall(text)) | {m for m, _ in WRONG_KIND.findall(text)}):
+            print(f"{name}: '{file}' still not loaded", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -172,6 +172,10 @@ private:
             if (!parameters) return Corruption{DiagId::CompiledEffectScriptParameterOutOfRange};
             if (!within(command.light, mEffect.lights.size()))
                 return Corruption{DiagId::CompiledEffectScriptLightOutOfRange};
+            if (command.clearTarget < -1 || command.clearTarget >= kScriptColorTargets ||
+                (command.clearTarget >= 0 && (command.kind != ScriptCommand::Kind::Clear ||
+                                              command.clear != ScriptCommand::ClearWhat::Color)))
+                return Corruption{DiagId::CompiledEffectScriptClearTargetOutOfRange};
             if (!within(command.technique, mEffect.techniques.size()) ||
                 !within(command.techniqueIfFalse, mEffect.techniques.size()))
                 return Corruption{DiagId::CompiledEffectScriptTechniqueOutOfRange};

@@ -557,9 +557,15 @@ private:
             return base + std::to_string(swizzle.size());
         }
         if (last != first) return std::nullopt;
-        // The nearest declaration before the call: `T name` (a parameter or a local).
+        // The nearest declaration before the call in a scope that encloses it: `T name` (a parameter or a
+        // local); one inside a block closed before the call is another variable.
+        int closedBlocks = 0;
         for (size_t i = call; i-- > f.first() + 1;) {
-            if (!f.is(i, t.text.c_str()) || !f.isIdentifier(i) || !mIsTypeName(f.at(i - 1))) continue;
+            if (f.is(i, "}")) ++closedBlocks;
+            if (f.is(i, "{") && closedBlocks > 0) --closedBlocks;
+            if (closedBlocks > 0 || !f.is(i, t.text.c_str()) || !f.isIdentifier(i) ||
+                !mIsTypeName(f.at(i - 1)))
+                continue;
             std::string base;
             int size = 0;
             if (f.is(i + 1, "[") || !vectorTypeName(f.at(i - 1).text, base, size) || size < 2)

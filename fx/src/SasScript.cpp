@@ -129,13 +129,13 @@ std::vector<ScriptCommand> parseSasScript(const Expr& script, DiagnosticSink& di
                                 equalsIgnoreCase(word.substr(0, 9), "SV_TARGET") &&
                                 (word.size() == 9 || (word[9] >= '0' && word[9] <= '7'))) {
                                 const int target = word.size() == 9 ? 0 : word[9] - '0';
-                                constexpr int kBound = 4;  // RenderColorTarget0..3
-                                if (target < kBound)
+                                if (target < kScriptColorTargets)
                                     what.push_back({ScriptCommand::ClearWhat::Color, target});
                                 else
                                     diagnostics.report(DiagId::ScriptClearTargetBeyond, loc,
                                                        {name + "=" + word, std::to_string(target),
-                                                        std::to_string(kBound), std::to_string(kBound - 1)});
+                                                        std::to_string(kScriptColorTargets),
+                                                        std::to_string(kScriptColorTargets - 1)});
                                 continue;
                             }
                             // FX Composer's `Clear=Depth0;`: the one depth-stencil buffer.

@@ -180,6 +180,15 @@ technique t < string Script = "ClearSetColor=Background; Clear=Color; RenderPort
                       .find("a script names a light out of range"),
                   std::string::npos);
     }
+    for (int target : {4, 0x10000000, -2}) {
+        CompiledEffect damaged = *compiled;
+        damaged.techniques[0].script[0].clearTarget = target;
+        EXPECT_NE(
+            readError(serializeCompiledEffect(damaged), DiagId::CompiledEffectScriptClearTargetOutOfRange)
+                .find("a script clears a colour target out of range"),
+            std::string::npos)
+            << target;
+    }
 }
 
 // What the runtime binds and enables by, resolved by the compiler (each parameter's semantic with its

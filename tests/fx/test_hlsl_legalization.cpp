@@ -331,8 +331,9 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 }
 
 // A vector where the effect's own function takes a scalar is truncated only where the argument is
-// evidently a vector; scalars, overloaded functions, `out` parameters, struct members and the function's
-// own declaration are left as written (glslang's overload resolution takes them).
+// evidently a vector; scalars (also one a closed block's vector shadowed), overloaded functions, `out`
+// parameters, struct members and the function's own declaration are left as written (glslang's overload
+// resolution takes them).
 TEST(HlslLegalization, OnlyEvidentVectorsArePassedTruncated) {
     DiagnosticList diags;
     auto effect = parse(R"(struct S { float4 v; };
@@ -342,6 +343,7 @@ float2 two(float2 x) { return x; }
 void put(out float x, float4 v) { x = v.y; }
 float4 PS(float4 c : COLOR0) : COLOR {
     S s; s.v = c; float k = 2; float4 v = c; float got;
+    for (int i = 0; i < 2; i++) { float4 k = c; got = k.x; }
     put(got, v);
     return float4(one(k), two(v.xy).x, one(s.v), got) * one(v);
 }
@@ -351,7 +353,7 @@ technique t { pass p { PixelShader = compile ps_3_0 PS(); } }
     ASSERT_TRUE(effect) << diags.str();
     ASSERT_EQ(diags.items().size(), 1u) << diags.str();
     EXPECT_EQ(diags.items().front().id, DiagId::ImplicitVectorTruncation);
-    EXPECT_EQ(diags.items().front().loc.line, 9);
+    EXPECT_EQ(diags.items().front().loc.line, 10);
     EXPECT_EQ(diags.items().front().loc.column, 61);
     const std::string& text = function(*effect, "PS").hlslText;
     EXPECT_TRUE(contains(text, "one(v.x)")) << text;

@@ -15,6 +15,9 @@ namespace fx {
 
 struct Expr;  // fx/Effect.h: the annotation a script is parsed from
 
+// The colour targets a script binds: RenderColorTarget0..3, D3D9's simultaneous render targets.
+inline constexpr int kScriptColorTargets = 4;
+
 struct ScriptCommand {
     enum class Kind {
         Technique,                 // STANDARDSGLOBAL: Technique=Name or Technique=Param?A:B
@@ -60,7 +63,8 @@ struct ScriptCommand {
     std::string selectorFalse;                      // the second alternative ("" if there is one)
     std::vector<std::string> selectorAlternatives;  // every name after '?', in order
     ClearWhat clear = ClearWhat::Color;             // Clear
-    // Clear=SV_TARGETn (3ds Max's scripts name the target): colour target n alone; -1: every bound one.
+    // Clear=SV_TARGETn (3ds Max's scripts name the target): colour target n alone, below
+    // kScriptColorTargets; -1: every bound one.
     int clearTarget = -1;
     DrawWhat draw = DrawWhat::Geometry;  // Draw
 

@@ -71,7 +71,8 @@ void PlanRecorder::clear(fx::ScriptCommand::ClearWhat what, int colorTarget) {
         case fx::ScriptCommand::ClearWhat::Color:
             op.kind = PlannedOp::Kind::ClearColor;
             colorTargets(op.writes);
-            if (colorTarget >= 0) {  // Clear=SV_TARGETn: that target alone
+            // Clear=SV_TARGETn: that target alone (the compiled file's reader keeps n below the targets).
+            if (colorTarget >= 0 && colorTarget < RenderTargets::kMaxColorTargets) {
                 const int target = mColors[static_cast<size_t>(colorTarget)];
                 op.writes.clear();
                 if (target != kNone) op.writes.push_back(target);

@@ -108,6 +108,8 @@ FX_DIAGNOSTIC(CompiledEffectScriptParameterOutOfRange, Error,
               "the compiled effect file is corrupt: a script names a parameter out of range")
 FX_DIAGNOSTIC(CompiledEffectScriptLightOutOfRange, Error,
               "the compiled effect file is corrupt: a script names a light out of range")
+FX_DIAGNOSTIC(CompiledEffectScriptClearTargetOutOfRange, Error,
+              "the compiled effect file is corrupt: a script clears a colour target out of range")
 FX_DIAGNOSTIC(CompiledEffectScriptTechniqueOutOfRange, Error,
               "the compiled effect file is corrupt: a script names a technique out of range")
 FX_DIAGNOSTIC(
