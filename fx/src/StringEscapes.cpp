@@ -5,8 +5,8 @@ namespace fx::detail {
 
 namespace {
 
-// Control bytes, which effects' strings do not hold in practice (one that did would read a backslash or a
-// quote there); outside strings the character check refuses them.
+// Control bytes, which effects' strings do not hold in practice: one in a string is refused here, as the
+// character check refuses it outside strings.
 constexpr char kBackslash = '\x01';
 constexpr char kQuote = '\x02';
 
@@ -64,7 +64,13 @@ std::string hideStringEscapes(const std::string& text, const std::string& file, 
             continue;
         }
         if (state == State::String) {
-            if (c == '"') {
+            if (c == kBackslash || c == kQuote) {
+                // The placeholders' own bytes in the user's string would come back as '\\' or '"'.
+                diagnostics.report(DiagId::InvalidCharacter,
+                                   SourceLoc{file, line, static_cast<int>(i - lineBegin) + 1},
+                                   {c == kBackslash ? "\\x01" : "\\x02"});
+                out[i] = ' ';
+            } else if (c == '"') {
                 state = State::Code;
             } else if (c == '\\' && i + 1 < out.size() && out[i + 1] != '\n' && out[i + 1] != '\r') {
                 const char e = out[i + 1];

@@ -103,6 +103,21 @@ TEST(Preprocessor, UnknownEscapeInAStringKeepsItsBackslashWithAWarning) {
     EXPECT_EQ(places, (std::vector<std::pair<int, int>>{{3, 33}, {5, 76}})) << diags.str();
 }
 
+// A raw control byte 0x01 or 0x02 in a string (the bytes that stand for a backslash and a quote while
+// glslang reads the text) is an invalid character at its place, not a backslash or a quote.
+TEST(Preprocessor, ControlBytesInAStringAreInvalidCharacters) {
+    DiagnosticList diags;
+    parseEffectSource(std::string("string A = \"ab\x02"
+                                  "cd\";\nstring B = \"x\x01"
+                                  "ny\";\n"),
+                      "bytes.fx", ParseOptions{}, diags);
+    std::vector<std::pair<int, int>> places;
+    for (const Diagnostic& d : diags.items())
+        if (d.id == DiagId::InvalidCharacter) places.push_back({d.loc.line, d.loc.column});
+    EXPECT_EQ(places, (std::vector<std::pair<int, int>>{{1, 15}, {2, 14}})) << diags.str();
+    EXPECT_TRUE(diags.hasErrors());
+}
+
 TEST(Preprocessor, IncludesFromDisk) {
     ParseOptions options;
     DiagnosticList diags;
