@@ -40,6 +40,15 @@ runtime::Scene scene(const char* name) {
     return std::move(*s);
 }
 
+// The pixels of colour (r, g, b) in the frame that `technique` of the test effect at `path` draws on the
+// teapot; 0 where the effect does not load or render.
+int pixelsOfColourDrawn(const char* path, const char* technique, int r, int g, int b) {
+    auto renderer = loadEffect(sourcePath(path), true);
+    EXPECT_TRUE(renderer) << path;
+    if (!renderer || !render(*renderer, scene("teapot"), kWidth, kHeight, technique)) return 0;
+    return countPixelsOfColour(renderer->readFrame(), kWidth, kHeight, r, g, b);
+}
+
 struct Counts {
     size_t red = 0, green = 0;
 };
@@ -568,12 +577,9 @@ TEST(D3d10Effects, PointInputGeometryShaderExpandsEveryVertexIntoASprite) {
 // point-sprite particles carry each sprite's size so): tests/data/d3d10/point_size_geometry.fx colours
 // each sprite with the size its geometry shader read, and draws nothing where it read 0.
 TEST(D3d10Effects, GeometryShaderReadsThePointSizeTheVertexShaderWrote) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/point_size_geometry.fx"), true);
-    ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Sprites"));
-    const runtime::FrameImage frame = renderer->readFrame();
     // Size (0.25, 0.75) as the colour (0.25, 0.75, 1).
-    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 64, 191, 255), kWidth * kHeight / 20);
+    EXPECT_GT(pixelsOfColourDrawn("tests/data/d3d10/point_size_geometry.fx", "Sprites", 64, 191, 255),
+              kWidth * kHeight / 20);
 }
 
 // An instance ID the vertex shader writes under SV_InstanceID, read by the geometry shader and, written on
@@ -581,22 +587,16 @@ TEST(D3d10Effects, GeometryShaderReadsThePointSizeTheVertexShaderWrote) {
 // draws a quad per vertex only where the geometry shader read the vertex shader's value, coloured by what
 // the pixel shader read.
 TEST(D3d10Effects, InstanceIdTheVertexShaderWroteReachesTheGeometryAndPixelShaders) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/instance_id_geometry.fx"), true);
-    ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Trail"));
-    const runtime::FrameImage frame = renderer->readFrame();
     // Read 6 as the colour (6 / 8, 1, 0.25).
-    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 191, 255, 64), kWidth * kHeight / 20);
+    EXPECT_GT(pixelsOfColourDrawn("tests/data/d3d10/instance_id_geometry.fx", "Trail", 191, 255, 64),
+              kWidth * kHeight / 20);
 }
 
 // Locals brace-initialized as C++ does (`float rim{};`, `float3 v{...}`, `Pair p{...}`), which FX11
 // games' fxc builds accepted: tests/data/d3d10/brace_initializers.fx colours the object with all three.
 TEST(D3d10Effects, BraceInitializedLocalsTakeTheirValues) {
-    auto renderer = loadEffect(sourcePath("tests/data/d3d10/brace_initializers.fx"), true);
-    ASSERT_TRUE(renderer);
-    ASSERT_TRUE(render(*renderer, scene("teapot"), kWidth, kHeight, "Braces"));
-    const runtime::FrameImage frame = renderer->readFrame();
-    EXPECT_GT(countPixelsOfColour(frame, kWidth, kHeight, 64, 128, 191), kWidth * kHeight / 50);
+    EXPECT_GT(pixelsOfColourDrawn("tests/data/d3d10/brace_initializers.fx", "Braces", 64, 128, 191),
+              kWidth * kHeight / 50);
 }
 
 // `triangleadj` input: the silhouette edges as seen from the light, pixel 3 t + i for edge i of triangle
