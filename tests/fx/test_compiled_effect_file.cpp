@@ -26,6 +26,21 @@ std::shared_ptr<CompiledEffect> compileShipped(const std::string& path, Diagnost
     return loadEffectFile(path, ParseOptions{}, CompileOptions{}, diagnostics);
 }
 
+// `source` (named NAME.fx) compiled into `compiled`, and its file (NAME.sfxo) read back into `read`, which
+// serializes to the same bytes.
+void compileAndReadBack(const char* source, const std::string& name,
+                        std::shared_ptr<CompiledEffect>& compiled, std::unique_ptr<CompiledEffect>& read) {
+    DiagnosticList diagnostics;
+    std::shared_ptr<Effect> effect = parseEffectSource(source, name + ".fx", ParseOptions{}, diagnostics);
+    ASSERT_TRUE(effect) << diagnostics.str();
+    compiled = compileEffect(effect, CompileOptions{}, diagnostics);
+    ASSERT_TRUE(compiled) << diagnostics.str();
+    const std::string bytes = serializeCompiledEffect(*compiled);
+    read = deserializeCompiledEffect(bytes, name + ".sfxo", diagnostics);
+    ASSERT_TRUE(read) << diagnostics.str();
+    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+}
+
 // The one error a read of `bytes` reports, as the CLI prints it.
 std::string readError(std::string_view bytes, DiagId expected) {
     DiagnosticList diagnostics;
@@ -96,21 +111,16 @@ technique PassClamps { pass p { VertexShader = compile vs_3_0 VS(); PixelShader 
 // without their names being looked up again, and gives the compiled program's value.
 TEST(CompiledEffectFile, PreshaderIntrinsicsRoundTrip) {
     DiagnosticList diagnostics;
-    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+    std::shared_ptr<CompiledEffect> compiled;
+    std::unique_ptr<CompiledEffect> read;
+    ASSERT_NO_FATAL_FAILURE(compileAndReadBack(R"(
 float Bias = 0.125;
 float4 VS(float4 p : POSITION) : POSITION { return p; }
 float4 PS() : COLOR { return 1; }
 technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
     DepthBias = max(Bias, 0.25) * sqrt(4.0) + abs(-Bias); } }
 )",
-                                                       "bias.fx", ParseOptions{}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
-    ASSERT_TRUE(compiled) << diagnostics.str();
-    const std::string bytes = serializeCompiledEffect(*compiled);
-    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "bias.sfxo", diagnostics);
-    ASSERT_TRUE(read) << diagnostics.str();
-    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+                                               "bias", compiled, read));
     const RenderStateSetting& state = read->techniques.at(0).passes.at(0).states.at(0);
     ASSERT_FALSE(state.constant);
     std::vector<Value> values = read->initialValues;
@@ -126,7 +136,9 @@ technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = co
 // program read from the file picks the same numbers.
 TEST(CompiledEffectFile, MembersRoundTripAsComponents) {
     DiagnosticList diagnostics;
-    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+    std::shared_ptr<CompiledEffect> compiled;
+    std::unique_ptr<CompiledEffect> read;
+    ASSERT_NO_FATAL_FAILURE(compileAndReadBack(R"(
 float4 Offset = {1, 2, 3, 4};
 float4x4 Shift = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
 float4 VS(float4 p : POSITION) : POSITION { return p; }
@@ -134,14 +146,7 @@ float4 PS() : COLOR { return 1; }
 technique Biased { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS();
     DepthBias = Offset.wy.x + Shift._m12 * Shift._23_11.y + Offset.b; } }
 )",
-                                                       "members.fx", ParseOptions{}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
-    ASSERT_TRUE(compiled) << diagnostics.str();
-    const std::string bytes = serializeCompiledEffect(*compiled);
-    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "members.sfxo", diagnostics);
-    ASSERT_TRUE(read) << diagnostics.str();
-    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+                                               "members", compiled, read));
     const RenderStateSetting& state = read->techniques.at(0).passes.at(0).states.at(0);
     ASSERT_FALSE(state.constant);
     const std::optional<Value> value = state.value.run(read->initialValues, &diagnostics);
@@ -195,8 +200,9 @@ technique t < string Script = "ClearSetColor=Background; Clear=Color; RenderPort
 // light, each stage's effects), survives the file; a light out of range, a kind out of the enum or more
 // clip distances than GL has planes is a corrupt file.
 TEST(CompiledEffectFile, SemanticsAndStageEffectsRoundTrip) {
-    DiagnosticList diagnostics;
-    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+    std::shared_ptr<CompiledEffect> compiled;
+    std::unique_ptr<CompiledEffect> read;
+    ASSERT_NO_FATAL_FAILURE(compileAndReadBack(R"(
 float4x4 gWorldViewProj;
 float4x4 SunMatrix : ViewProjectionInverse < string frustum = "sun"; >;
 struct VOut { float4 Pos : POSITION; float4 Colour : COLOR0; float2 Clip : SV_ClipDistance0; };
@@ -204,14 +210,7 @@ VOut VS(float4 p : POSITION) { VOut o; o.Pos = mul(mul(p, gWorldViewProj), SunMa
 float4 PS(float4 c : COLOR0) : COLOR { clip(c.x - 0.5); return c; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
-                                                       "resolved.fx", ParseOptions{}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
-    ASSERT_TRUE(compiled) << diagnostics.str();
-    const std::string bytes = serializeCompiledEffect(*compiled);
-    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "resolved.sfxo", diagnostics);
-    ASSERT_TRUE(read) << diagnostics.str();
-    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+                                               "resolved", compiled, read));
     const SemanticBinding& sun = read->findParameter("SunMatrix")->standard;
     EXPECT_EQ(sun.kind, SemanticKind::ViewProjection);
     EXPECT_TRUE(sun.inverse && !sun.transpose && !sun.byName);
@@ -248,22 +247,16 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 // The members of a light struct bound by their names survive the file; one bound outside its parameter's
 // value, or to a light out of range, is a corrupt file (the runtime writes it into its place in the value).
 TEST(CompiledEffectFile, StructMemberBindingsRoundTrip) {
-    DiagnosticList diagnostics;
-    std::shared_ptr<Effect> effect = parseEffectSource(R"(
+    std::shared_ptr<CompiledEffect> compiled;
+    std::unique_ptr<CompiledEffect> read;
+    ASSERT_NO_FATAL_FAILURE(compileAndReadBack(R"(
 struct PointLight { float4 Diffuse; float3 Position; float Range; };
 struct DirectionalLight { float4 Diffuse; float3 Direction; float pad; };
 cbuffer PerFrame { PointLight gLight; DirectionalLight gDirLights[2]; };
 float4 PS() : SV_Target { return gLight.Diffuse * gLight.Range + gDirLights[1].Diffuse + gLight.Position.x; }
 technique11 t { pass p { SetPixelShader(CompileShader(ps_5_0, PS())); } }
 )",
-                                                       "members.fx", ParseOptions{}, diagnostics);
-    ASSERT_TRUE(effect) << diagnostics.str();
-    std::shared_ptr<CompiledEffect> compiled = compileEffect(effect, CompileOptions{}, diagnostics);
-    ASSERT_TRUE(compiled) << diagnostics.str();
-    const std::string bytes = serializeCompiledEffect(*compiled);
-    std::unique_ptr<CompiledEffect> read = deserializeCompiledEffect(bytes, "members.sfxo", diagnostics);
-    ASSERT_TRUE(read) << diagnostics.str();
-    EXPECT_EQ(serializeCompiledEffect(*read), bytes);
+                                               "members", compiled, read));
     const std::vector<MemberBinding>& members = read->findParameter("gLight")->memberBindings;
     ASSERT_EQ(members.size(), 3u);
     EXPECT_EQ(members[2].member, "Range");
